@@ -1,0 +1,40 @@
+#include <iomanip>
+#include <iostream>
+#include <memory>
+
+#include "apps/commands.h"
+#include "drop_tests/campaign.h"
+
+namespace touchdown::app {
+
+void AddCampaignCommand(CLI::App& app) {
+  auto scenario_path = std::make_shared<std::string>();
+  auto out_dir = std::make_shared<std::string>();
+  CLI::App* cmd = app.add_subcommand("campaign", "Run a list of drops from a scenario YAML; write tables, traces, plots");
+  cmd->add_option("scenario", *scenario_path, "campaign scenario YAML (e.g. data/scenarios/sutoh2017_single_footpad.yaml)")
+      ->required();
+  cmd->add_option("--out", *out_dir, "output directory (replaced when the run completes)")->required();
+  cmd->callback([scenario_path, out_dir] {
+    const drop::CampaignScenario scenario = drop::LoadCampaignScenario(*scenario_path);
+    const drop::CampaignResult result = drop::RunCampaign(scenario);
+    drop::WriteCampaignOutputs(result, *out_dir);
+    std::cout << std::left << std::setw(28) << "drop" << std::right << std::setw(12) << "depth [mm]" << std::setw(14)
+              << "peak F [N]" << std::setw(14) << "t_rest [ms]" << "\n";
+    for (size_t i = 0; i < result.drops.size(); ++i) {
+      const auto& r = result.drops[i].result;
+      std::cout << std::left << std::setw(28) << scenario.cases[i].drop_id << std::right << std::fixed
+                << std::setprecision(2) << std::setw(12) << r.final_penetration_m * 1e3 << std::setw(14)
+                << r.peak_force_N << std::setw(14) << r.time_to_rest_s * 1e3 << "\n";
+    }
+    for (const drop::CheckOutcome& c : drop::EvaluateChecks(result)) {
+      std::cout << c.check.name << " at " << c.check.speed_m_s << " m/s: simulated " << std::setprecision(2)
+                << c.simulated;
+      if (c.check.paper_experiment > 0) std::cout << "   paper experiment " << c.check.paper_experiment;
+      if (c.check.paper_rft > 0) std::cout << "   paper RFT " << c.check.paper_rft;
+      std::cout << "\n";
+    }
+    std::cout << "wrote " << *out_dir << "/ (summary.csv, summary.json, traces/, plots/, scenario_resolved.yaml)\n";
+  });
+}
+
+}  // namespace touchdown::app

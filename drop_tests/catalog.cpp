@@ -1,0 +1,155 @@
+#include "drop_tests/catalog.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+
+#include "drop_tests/yaml_fields.h"
+#include "rft/input_error.h"
+
+namespace touchdown::drop {
+
+namespace fs = std::filesystem;
+
+namespace {
+constexpr double kMm = 1e-3;
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+std::vector<geom::ProfilePoint> ReadProfileTable(const YamlFields& f) {
+  std::vector<geom::ProfilePoint> points;
+  const YAML::Node list = f.node()["points_mm"];
+  if (!list.IsSequence() || list.size() < 2) f.Fail("points_mm", "must be a list of at least two [x, u] pairs");
+  for (size_t i = 0; i < list.size(); ++i) {
+    const std::string path = "points_mm[" + std::to_string(i) + "]";
+    double x = 0, u = 0;
+    if (!list[i].IsSequence() || list[i].size() != 2 || !YAML::convert<double>::decode(list[i][0], x) ||
+        !YAML::convert<double>::decode(list[i][1], u) || !std::isfinite(x) || !std::isfinite(u))
+      f.Fail(path, "must be a pair of finite numbers [x_mm, u_mm]");
+    points.push_back({x * kMm, u * kMm});
+  }
+  return points;
+}
+
+// The geometry factories name the field but not the file: add the file and profile path.
+template <typename Build>
+geom::AxisymmetricProfile Guarded(const YamlFields& f, Build build) {
+  try {
+    return build();
+  } catch (const InputError& e) {
+    throw MakeInputError(f.file(), f.prefix(), e.what());
+  }
+}
+
+geom::AxisymmetricProfile ReadProfile(const YamlFields& f) {
+  const std::string shape = f.String("shape");
+  const double r = f.Positive("radius_mm") * kMm;
+  const double h = f.Positive("thickness_mm") * kMm;
+  const int segments = f.Has("segments") ? f.PositiveInt("segments") : 400;
+  if (shape == "flat") {
+    f.RequireOnly({"shape", "radius_mm", "thickness_mm"});
+    return Guarded(f, [&] { return geom::MakeFlatProfile(r, h); });
+  }
+  if (shape == "chamfer") {
+    f.RequireOnly({"shape", "radius_mm", "thickness_mm", "chamfer_mm"});
+    const double c = f.Positive("chamfer_mm") * kMm;
+    return Guarded(f, [&] { return geom::MakeChamferProfile(r, h, c); });
+  }
+  if (shape == "exponential") {
+    // u = a0 (exp(a1 x) - 1): give a0 directly, or the rim height u(r) that fixes it.
+    f.RequireOnly({"shape", "radius_mm", "thickness_mm", "a0_mm", "rim_height_mm", "a1_per_mm", "segments"});
+    const double a1 = f.Positive("a1_per_mm") / kMm;
+    if (f.Has("a0_mm") == f.Has("rim_height_mm")) f.Fail("a0_mm", "give exactly one of a0_mm and rim_height_mm");
+    const double a0 = f.Has("a0_mm") ? f.Positive("a0_mm") * kMm : f.Positive("rim_height_mm") * kMm / std::expm1(a1 * r);
+    return Guarded(f, [&] { return geom::MakeExponentialProfile(r, h, a0, a1, segments); });
+  }
+  if (shape == "spherical_cap") {
+    f.RequireOnly({"shape", "radius_mm", "thickness_mm", "sphere_radius_mm", "segments"});
+    const double R = f.Positive("sphere_radius_mm") * kMm;
+    return Guarded(f, [&] { return geom::MakeSphericalCapProfile(r, h, R, segments); });
+  }
+  if (shape == "cone") {
+    f.RequireOnly({"shape", "radius_mm", "thickness_mm", "half_angle_deg"});
+    const double half_angle = f.Positive("half_angle_deg") * kDeg;
+    return Guarded(f, [&] { return geom::MakeConeProfile(r, h, half_angle); });
+  }
+  if (shape == "table") {
+    f.RequireOnly({"shape", "radius_mm", "thickness_mm", "points_mm"});
+    std::vector<geom::ProfilePoint> points = ReadProfileTable(f);
+    if (std::abs(points.back().x_m - r) > 1e-12) f.Fail("points_mm", "last point must be at the rim, x = radius_mm");
+    return Guarded(f, [&] { return geom::MakeTabulatedProfile(std::move(points), h); });
+  }
+  f.Fail("shape", "unknown shape '" + shape + "' (flat, chamfer, exponential, spherical_cap, cone, table)");
+}
+}  // namespace
+
+std::string DataDirectory() {
+  if (const char* env = std::getenv("TOUCHDOWN_DATA_DIR"); env && *env) return env;
+  return TOUCHDOWN_DATA_DIR;
+}
+
+std::string ResolveCatalogFile(const std::string& kind, const std::string& name_or_path) {
+  if (name_or_path.empty()) throw MakeInputError("", kind, "empty name");
+  const bool is_path = name_or_path.find('/') != std::string::npos ||
+                       name_or_path.ends_with(".yaml") || name_or_path.ends_with(".yml");
+  const std::string path = is_path ? name_or_path : DataDirectory() + "/" + kind + "/" + name_or_path + ".yaml";
+  if (!fs::is_regular_file(path)) {
+    if (is_path) throw MakeInputError(path, "", "file not found");
+    std::string known;
+    std::error_code ec;
+    for (const auto& entry : fs::directory_iterator(DataDirectory() + "/" + kind, ec))
+      if (entry.path().extension() == ".yaml") known += (known.empty() ? "" : ", ") + entry.path().stem().string();
+    throw MakeInputError("", kind, "unknown name '" + name_or_path + "' (known: " + known + ")");
+  }
+  return path;
+}
+
+PadSpec LoadPad(const std::string& name_or_path) {
+  const std::string path = ResolveCatalogFile("pads", name_or_path);
+  const YamlFields f = YamlFields::LoadFile(path);
+  f.RequireSchemaVersion(1);
+  f.RequireOnly({"schema_version", "name", "kind", "mass_kg", "profile", "description", "provenance"});
+  const std::string kind = f.StringOr("kind", "axisymmetric");
+  if (kind != "axisymmetric") f.Fail("kind", "unknown pad kind '" + kind + "' (axisymmetric)");
+  PadSpec pad;
+  pad.source = path;
+  pad.name = f.StringOr("name", fs::path(path).stem().string());
+  pad.mass_kg = f.Positive("mass_kg");
+  pad.profile = ReadProfile(f.Child("profile"));
+  geom::ValidateProfile(pad.profile, path);
+  return pad;
+}
+
+rft::SoilParameters LoadSoil(const std::string& name_or_path) {
+  const std::string path = ResolveCatalogFile("soils", name_or_path);
+  const YamlFields f = YamlFields::LoadFile(path);
+  f.RequireSchemaVersion(1);
+  f.RequireOnly({"schema_version", "name", "description", "atmosphere", "zeta_N_cm3", "bulk_density_kg_m3",
+                 "internal_friction_angle_deg", "reference_gravity_m_s2", "provenance"});
+  rft::SoilParameters soil;
+  soil.name = f.StringOr("name", fs::path(path).stem().string());
+  soil.atmosphere = f.StringOr("atmosphere", "vacuum");
+  if (soil.atmosphere != "vacuum" && soil.atmosphere != "air")
+    f.Fail("atmosphere", "must be 'vacuum' or 'air', got '" + soil.atmosphere + "'");
+  soil.reference_gravity_m_s2 = f.PositiveOr("reference_gravity_m_s2", 9.81);
+  if (f.Has("bulk_density_kg_m3")) soil.bulk_density_kg_m3 = f.Positive("bulk_density_kg_m3");
+  if (f.Has("internal_friction_angle_deg")) {
+    const double phi = f.Positive("internal_friction_angle_deg");
+    if (phi >= 90.0) f.Fail("internal_friction_angle_deg", "must be below 90");
+    soil.internal_friction_angle_rad = phi * kDeg;
+  }
+  if (!f.Has("zeta_N_cm3")) f.Fail("zeta_N_cm3", "missing (a number, or 'agarwal2023' to derive it)");
+  if (f.node()["zeta_N_cm3"].IsScalar() && f.node()["zeta_N_cm3"].Scalar() == "agarwal2023") {
+    if (soil.bulk_density_kg_m3 == 0.0 || soil.internal_friction_angle_rad == 0.0)
+      f.Fail("zeta_N_cm3", "'agarwal2023' needs bulk_density_kg_m3 and internal_friction_angle_deg");
+    soil.zeta_N_m3 = rft::AgarwalScalingXi(soil.bulk_density_kg_m3, soil.reference_gravity_m_s2,
+                                           std::tan(soil.internal_friction_angle_rad));
+  } else {
+    soil.zeta_N_m3 = f.Positive("zeta_N_cm3") * 1e6;
+  }
+  return soil;
+}
+
+}  // namespace touchdown::drop

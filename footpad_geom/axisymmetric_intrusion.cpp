@@ -1,0 +1,57 @@
+#include "footpad_geom/axisymmetric_intrusion.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace touchdown::geom {
+
+namespace {
+constexpr double kPi = std::numbers::pi;
+
+// Fraction T in [0, 1] of a piece (u0 -> u0 + du, du >= 0) that lies below depth d.
+double SubmergedFraction(double u0, double du, double depth_m) {
+  if (depth_m <= u0) return 0.0;
+  if (du <= 0.0 || depth_m >= u0 + du) return 1.0;
+  return (depth_m - u0) / du;
+}
+}  // namespace
+
+AxisymmetricIntrusion::AxisymmetricIntrusion(const AxisymmetricProfile& profile,
+                                             const rft::StressLaw2D& law)
+    : radius_m_(profile.radius_m()), thickness_m_(profile.thickness_m()) {
+  for (size_t i = 1; i < profile.points.size(); ++i) {
+    const ProfilePoint& a = profile.points[i - 1];
+    const ProfilePoint& b = profile.points[i];
+    Piece p{a.x_m, a.u_m, b.x_m - a.x_m, b.u_m - a.u_m, 0.0, 0.0};
+    p.length = std::hypot(p.dx, p.du);
+    // Attack angle of the piece; for straight-down motion the law is even in beta.
+    p.alpha_z = law.Alpha(std::atan2(p.du, p.dx), kPi / 2).z;
+    pieces_.push_back(p);
+  }
+}
+
+double AxisymmetricIntrusion::VerticalForce(double depth_m, double zeta_N_m3) const {
+  double sum = 0.0;
+  for (const Piece& p : pieces_) {
+    const double T = SubmergedFraction(p.u0, p.du, depth_m);
+    if (T == 0.0) break;  // u never decreases outward: no deeper piece follows
+    // integral_0^T (a + b t)(c + e t) dt with depth a + b t and radius c + e t
+    const double a = depth_m - p.u0, b = -p.du, c = p.x0, e = p.dx;
+    const double integral = a * c * T + (a * e + b * c) * T * T / 2 + b * e * T * T * T / 3;
+    sum += p.alpha_z * 2 * kPi * p.length * integral;
+  }
+  return zeta_N_m3 * sum;
+}
+
+double AxisymmetricIntrusion::SubmergedArea(double depth_m) const {
+  double area = 0.0;
+  for (const Piece& p : pieces_) {
+    const double T = SubmergedFraction(p.u0, p.du, depth_m);
+    if (T == 0.0) break;
+    area += 2 * kPi * p.length * (p.x0 * T + p.dx * T * T / 2);
+  }
+  return area;
+}
+
+}  // namespace touchdown::geom

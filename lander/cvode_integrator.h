@@ -1,0 +1,86 @@
+#pragma once
+// A generic wrapper around SUNDIALS CVODE. It owns every SUNDIALS object (context, vector,
+// matrix, linear solver, integrator memory) and knows nothing about footpads or landers:
+// the model is a right-hand side and optional root functions (house style: Chrono's
+// ChIntegrable vs ChTimestepper). No SUNDIALS type appears in this header.
+//
+// Exceptions thrown by the callbacks never cross CVODE's C frames: they are caught in the
+// callback, CVODE is told the evaluation failed, and the exception is re-thrown once
+// CVode() has returned.
+#include <Eigen/Core>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace touchdown::integ {
+
+using RhsFunction = std::function<void(double t, Eigen::Ref<const Eigen::VectorXd> y,
+                                       Eigen::Ref<Eigen::VectorXd> ydot)>;
+using RootFunction = std::function<void(double t, Eigen::Ref<const Eigen::VectorXd> y,
+                                        Eigen::Ref<Eigen::VectorXd> g)>;
+
+struct IntegratorOptions {
+  double rtol = 1e-10;
+  double atol = 1e-12;
+  double max_step = 0.0;       // [s]; 0 = no limit
+  long max_num_steps = 200000;  // per call to AdvanceTo
+  bool stiff = false;          // BDF + dense Newton when true, Adams + fixed point otherwise
+  // Ceres-style validity check; fills *error and returns false on a bad option.
+  bool IsValid(std::string* error) const;
+};
+
+// Root functions are only tracked in the given directions: +1 rising, -1 falling, 0 both.
+struct RootSpec {
+  int count = 0;
+  RootFunction function;
+  std::vector<int> directions;
+};
+
+enum class AdvanceStatus { kReachedTime, kFoundRoot };
+
+struct AdvanceResult {
+  AdvanceStatus status = AdvanceStatus::kReachedTime;
+  double t = 0.0;
+  std::vector<int> roots_found;  // per root function: +1/-1 crossed, 0 not
+};
+
+struct IntegratorSummary {
+  long steps = 0;
+  long rhs_evaluations = 0;
+  long root_evaluations = 0;
+  long error_test_failures = 0;
+};
+
+// Raised when CVODE fails (too much work, convergence failure, non-finite state): the
+// message carries CVODE's own reason.
+class IntegrationFailure : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+class CvodeIntegrator {
+ public:
+  CvodeIntegrator(int state_size, RhsFunction rhs, const IntegratorOptions& options,
+                  RootSpec roots = {});
+  ~CvodeIntegrator();
+  CvodeIntegrator(const CvodeIntegrator&) = delete;
+  CvodeIntegrator& operator=(const CvodeIntegrator&) = delete;
+
+  // (Re)starts the integration at t0 from y0; also after a discontinuity of the model.
+  void Reset(double t0, const Eigen::VectorXd& y0);
+  // Integrates towards t_out and stops there or at the first root, whichever comes first.
+  AdvanceResult AdvanceTo(double t_out);
+  // Time and state after the last Reset or AdvanceTo (at a root: the root's time).
+  double time() const { return t_; }
+  const Eigen::VectorXd& state() const { return y_; }
+  IntegratorSummary summary() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  Eigen::VectorXd y_;
+  double t_ = 0.0;
+};
+
+}  // namespace touchdown::integ

@@ -1,0 +1,30 @@
+#pragma once
+// Fixed parameters of a granular bed (model data, never per-step state). SI inside.
+#include <string>
+
+namespace touchdown::rft {
+
+struct SoilParameters {
+  std::string name;
+  // RFT scaling factor zeta [N/m^3]: vertical stress per unit depth on a horizontal plate
+  // pushed straight down, at the gravity `reference_gravity_m_s2` it was measured at.
+  double zeta_N_m3 = 0.0;
+  double reference_gravity_m_s2 = 9.81;
+  double bulk_density_kg_m3 = 0.0;        // [kg/m^3], 0 when unknown
+  double internal_friction_angle_rad = 0.0;  // [rad], 0 when unknown
+  std::string atmosphere = "vacuum";      // "vacuum" or "air"
+
+  // RFT stresses scale with the lithostatic pressure rho g z (Agarwal et al. 2023,
+  // xi = rho g f(mu)), so zeta scales linearly with gravity.
+  double ZetaAtGravity(double gravity_m_s2) const {
+    return zeta_N_m3 * gravity_m_s2 / reference_gravity_m_s2;
+  }
+};
+
+// Agarwal, Goldman & Kamrin (PNAS 2023) material scaling of the vertical plate stress per
+// unit depth: xi_n = rho g (894 mu^3 - 386 mu^2 + 89 mu), mu the internal friction coefficient.
+inline double AgarwalScalingXi(double bulk_density_kg_m3, double gravity_m_s2, double mu) {
+  return bulk_density_kg_m3 * gravity_m_s2 * (894.0 * mu * mu * mu - 386.0 * mu * mu + 89.0 * mu);
+}
+
+}  // namespace touchdown::rft

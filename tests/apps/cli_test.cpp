@@ -1,0 +1,154 @@
+// The touchdown executable as a user meets it: JSON of one drop, a campaign's outputs, and
+// every bad input answered by one line on stderr, exit status 2 and no partial output.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <sys/wait.h>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CliRun {
+  int status = -1;
+  std::string out, err;
+};
+
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("touchdown_cli_" + std::to_string(::getpid()) + "_" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  CliRun Touchdown(const std::string& args) {
+    const std::string out = (dir_ / "stdout").string(), err = (dir_ / "stderr").string();
+    const std::string command = std::string(TOUCHDOWN_BINARY) + " " + args + " >" + out + " 2>" + err;
+    const int raw = std::system(command.c_str());
+    CliRun r;
+    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    r.out = Slurp(out);
+    r.err = Slurp(err);
+    return r;
+  }
+  static std::string Slurp(const fs::path& p) {
+    std::ifstream in(p);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+  }
+  std::string Write(const std::string& name, const std::string& text) {
+    std::ofstream(dir_ / name) << text;
+    return (dir_ / name).string();
+  }
+  fs::path dir_;
+};
+
+TEST_F(Cli, DropPrintsJsonWithTheContractedKeys) {
+  const std::string trace = (dir_ / "t.csv").string();
+  const CliRun r = Touchdown("drop --pad flat --soil fjs1_lp --speed 1.0 --trace " + trace);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  for (const char* key : {"final_penetration_m", "peak_force_N", "time_to_rest_s", "max_deceleration_m_s2",
+                          "impact_energy_J", "dissipated_energy_J"})
+    EXPECT_TRUE(j.contains(key)) << key;
+  EXPECT_NEAR(j["impact_energy_J"].get<double>(), 0.5 * 1.6 * 1.0, 1e-9);
+  const std::string csv = Slurp(trace);
+  EXPECT_EQ(csv.substr(0, csv.find('\n')), "t_s,penetration_m,velocity_m_s,force_N");
+}
+
+TEST_F(Cli, MassGravityAndZetaOverridesApply) {
+  const CliRun base = Touchdown("drop --pad flat --soil fjs1_lp --speed 1.0");
+  const CliRun heavy = Touchdown("drop --pad flat --soil fjs1_lp --speed 1.0 --mass 3.2 --zeta 4");
+  ASSERT_EQ(base.status, 0);
+  ASSERT_EQ(heavy.status, 0) << heavy.err;
+  const auto b = nlohmann::json::parse(base.out), h = nlohmann::json::parse(heavy.out);
+  EXPECT_DOUBLE_EQ(h["pad_mass_kg"].get<double>(), 3.2);
+  EXPECT_NEAR(h["zeta_N_cm3"].get<double>(), 4.0, 1e-12);
+  const CliRun moon = Touchdown("drop --pad flat --soil fjs1_lp --speed 1.0 --gravity 1.62");
+  ASSERT_EQ(moon.status, 0) << moon.err;
+  const auto m = nlohmann::json::parse(moon.out);
+  EXPECT_NEAR(m["zeta_N_cm3"].get<double>(), b["zeta_N_cm3"].get<double>() * 1.62 / 9.81, 1e-9);
+}
+
+TEST_F(Cli, CampaignWritesTablesTracesPlotsAndResolvedScenario) {
+  const fs::path out = dir_ / "campaign";
+  const CliRun r = Touchdown(std::string("campaign ") + TOUCHDOWN_SOURCE_DIR +
+                          "/data/scenarios/sutoh2017_single_footpad.yaml --out " + out.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(fs::is_regular_file(out / "summary.csv"));
+  EXPECT_TRUE(fs::is_regular_file(out / "summary.json"));
+  EXPECT_TRUE(fs::is_regular_file(out / "scenario_resolved.yaml"));
+  EXPECT_TRUE(fs::is_regular_file(out / "traces" / "flat_fjs1_lp_v1.00.csv"));
+  for (const char* png : {"fig3_time_histories.png", "fig4_peaks.png", "fig6_force_penetration.png"}) {
+    ASSERT_TRUE(fs::is_regular_file(out / "plots" / png)) << png;
+    EXPECT_GT(fs::file_size(out / "plots" / png), 5000u) << png;
+  }
+  std::ifstream csv(out / "summary.csv");
+  int rows = 0;
+  for (std::string line; std::getline(csv, line);) ++rows;
+  EXPECT_EQ(rows, 13);  // header + 12 drops
+  EXPECT_NE(r.out.find("curved_over_flat_penetration_lp"), std::string::npos);
+}
+
+struct BadInput {
+  const char* name;
+  std::string args;      // may contain {dir}
+  std::string expected;  // fragment of the one stderr line
+};
+
+class CliBadInput : public Cli, public ::testing::WithParamInterface<BadInput> {};
+
+std::string Expand(std::string s, const std::string& dir) {
+  for (size_t p; (p = s.find("{dir}")) != std::string::npos;) s.replace(p, 5, dir);
+  return s;
+}
+
+TEST_P(CliBadInput, OneLineExitTwoNoOutput) {
+  Write("bad_scenario.yaml", "drops:\n  - {pad: flat, soil: fjs1_lp, impact_speeds_m_s: [1.0, -2]}\n");
+  Write("unknown_pad_scenario.yaml", "drops:\n  - {pad: hexagon, soil: fjs1_lp, impact_speeds_m_s: 1.0}\n");
+  Write("malformed.yaml", "drops: [ {pad: flat\n");
+  Write("zero_area_pad.yaml", "mass_kg: 1\nprofile: {shape: flat, radius_mm: 0, thickness_mm: 16}\n");
+  Write("zero_area_scenario.yaml",
+        "drops:\n  - {pad: " + (dir_ / "zero_area_pad.yaml").string() + ", soil: fjs1_lp, impact_speeds_m_s: 1}\n");
+  const CliRun r = Touchdown(Expand(GetParam().args, dir_.string()));
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find(Expand(GetParam().expected, dir_.string())), std::string::npos) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  EXPECT_FALSE(fs::exists(dir_ / "out")) << "partial output directory left behind";
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, CliBadInput,
+    ::testing::Values(
+        BadInput{"UnknownPad", "drop --pad hexagon --soil fjs1_lp --speed 1", "pads: unknown name 'hexagon'"},
+        BadInput{"UnknownSoil", "drop --pad flat --soil mud --speed 1", "soils: unknown name 'mud'"},
+        BadInput{"MissingPadFile", "drop --pad {dir}/nope.yaml --soil fjs1_lp --speed 1", "{dir}/nope.yaml: file not found"},
+        BadInput{"NegativeSpeed", "drop --pad flat --soil fjs1_lp --speed -1", "impact_speed_m_s: must be >= 0"},
+        BadInput{"NanSpeed", "drop --pad flat --soil fjs1_lp --speed nan", "impact_speed_m_s"},
+        BadInput{"InfiniteMass", "drop --pad flat --soil fjs1_lp --speed 1 --mass inf", "mass_kg: must be positive and finite"},
+        BadInput{"ZeroGravity", "drop --pad flat --soil fjs1_lp --speed 1 --gravity 0", "gravity_m_s2"},
+        BadInput{"NegativeZeta", "drop --pad flat --soil fjs1_lp --speed 1 --zeta -3", "zeta_N_cm3"},
+        BadInput{"TextSpeed", "drop --pad flat --soil fjs1_lp --speed fast", "speed"},
+        BadInput{"ZeroAreaPad", "drop --pad {dir}/zero_area_pad.yaml --soil fjs1_lp --speed 1",
+                 "zero_area_pad.yaml: profile.radius_mm: must be positive, got '0'"},
+        BadInput{"MissingScenario", "campaign {dir}/none.yaml --out {dir}/out", "none.yaml: file not found"},
+        BadInput{"MalformedScenario", "campaign {dir}/malformed.yaml --out {dir}/out", "malformed.yaml: malformed YAML"},
+        BadInput{"NegativeSpeedInScenario", "campaign {dir}/bad_scenario.yaml --out {dir}/out",
+                 "bad_scenario.yaml: drops[0].impact_speeds_m_s[1]: must be >= 0, got '-2'"},
+        BadInput{"UnknownPadInScenario", "campaign {dir}/unknown_pad_scenario.yaml --out {dir}/out",
+                 "unknown_pad_scenario.yaml: drops[0].pad: pads: unknown name 'hexagon'"},
+        BadInput{"ZeroAreaPadInScenario", "campaign {dir}/zero_area_scenario.yaml --out {dir}/out",
+                 "profile.radius_mm: must be positive"},
+        BadInput{"MissingOut", "campaign {dir}/bad_scenario.yaml", "--out is required"}),
+    [](const auto& info) { return std::string(info.param.name); });
+
+}  // namespace

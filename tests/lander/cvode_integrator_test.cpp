@@ -1,0 +1,96 @@
+// The generic CVODE wrapper: accuracy on closed forms, root-finding, option checks, and
+// exceptions carried across the C callbacks.
+#include "lander/cvode_integrator.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace touchdown::integ {
+namespace {
+
+TEST(CvodeIntegrator, HarmonicOscillatorMatchesClosedForm) {
+  for (bool stiff : {false, true}) {
+    IntegratorOptions options;
+    options.stiff = stiff;
+    CvodeIntegrator integ(2, [](double, Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::VectorXd> d) {
+      d[0] = y[1];
+      d[1] = -4.0 * y[0];
+    }, options);
+    integ.Reset(0.0, Eigen::Vector2d(1.0, 0.0));
+    integ.AdvanceTo(3.0);
+    EXPECT_NEAR(integ.state()[0], std::cos(6.0), 1e-8) << "stiff " << stiff;
+    EXPECT_NEAR(integ.state()[1], -2.0 * std::sin(6.0), 1e-8);
+    EXPECT_GT(integ.summary().steps, 0);
+  }
+}
+
+TEST(CvodeIntegrator, FindsRootOfFreeFallExactly) {
+  // Fall from 1 m: the ground is reached at t = sqrt(2 / g).
+  RootSpec roots{1, [](double, Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::VectorXd> g) { g[0] = y[0]; },
+                 {-1}};
+  CvodeIntegrator integ(2, [](double, Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::VectorXd> d) {
+    d[0] = y[1];
+    d[1] = -9.81;
+  }, IntegratorOptions{}, roots);
+  integ.Reset(0.0, Eigen::Vector2d(1.0, 0.0));
+  const AdvanceResult r = integ.AdvanceTo(10.0);
+  ASSERT_EQ(r.status, AdvanceStatus::kFoundRoot);
+  EXPECT_EQ(r.roots_found[0], -1);
+  EXPECT_NEAR(r.t, std::sqrt(2.0 / 9.81), 1e-9);
+  EXPECT_NEAR(integ.time(), r.t, 0.0);
+}
+
+TEST(CvodeIntegrator, RootDirectionFilters) {
+  // sin(t) rises through 0 at 2 pi, falls at pi; only the rising crossing is asked for.
+  RootSpec roots{1, [](double, Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::VectorXd> g) { g[0] = y[0]; },
+                 {+1}};
+  CvodeIntegrator integ(2, [](double, Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::VectorXd> d) {
+    d[0] = y[1];
+    d[1] = -y[0];
+  }, IntegratorOptions{}, roots);
+  integ.Reset(0.0, Eigen::Vector2d(0.0, 1.0));
+  const AdvanceResult r = integ.AdvanceTo(10.0);
+  ASSERT_EQ(r.status, AdvanceStatus::kFoundRoot);
+  EXPECT_NEAR(r.t, 2 * M_PI, 1e-7);
+}
+
+TEST(CvodeIntegrator, ExceptionInRightHandSideIsRethrownAfterCvodeReturns) {
+  CvodeIntegrator integ(1, [](double t, Eigen::Ref<const Eigen::VectorXd>, Eigen::Ref<Eigen::VectorXd> d) {
+    if (t > 0.5) throw std::domain_error("model refused");
+    d[0] = 1.0;
+  }, IntegratorOptions{});
+  integ.Reset(0.0, Eigen::VectorXd::Zero(1));
+  EXPECT_THROW(integ.AdvanceTo(1.0), std::domain_error);
+}
+
+TEST(CvodeIntegrator, SolverFailureComesBackWithReason) {
+  IntegratorOptions options;
+  options.max_num_steps = 5;
+  CvodeIntegrator integ(1, [](double, Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::VectorXd> d) {
+    d[0] = -1000.0 * y[0] + std::sin(1000.0 * y[0]);
+  }, options);
+  integ.Reset(0.0, Eigen::VectorXd::Ones(1));
+  try {
+    integ.AdvanceTo(100.0);
+    FAIL() << "expected IntegrationFailure";
+  } catch (const IntegrationFailure& e) {
+    EXPECT_NE(std::string(e.what()).find("CV_TOO_MUCH_WORK"), std::string::npos) << e.what();
+  }
+}
+
+TEST(CvodeIntegrator, OptionsAreValidated) {
+  std::string why;
+  IntegratorOptions bad;
+  bad.rtol = 0.0;
+  EXPECT_FALSE(bad.IsValid(&why));
+  EXPECT_NE(why.find("rtol"), std::string::npos);
+  bad = {};
+  bad.atol = -1;
+  EXPECT_FALSE(bad.IsValid(&why));
+  EXPECT_TRUE(IntegratorOptions{}.IsValid(&why));
+  EXPECT_THROW(CvodeIntegrator(1, [](double, auto, auto) {}, bad), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace touchdown::integ

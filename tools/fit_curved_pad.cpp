@@ -1,0 +1,47 @@
+// Chooses the curved pad's exponential profile u = a0 (exp(a1 x) - 1), which the paper does
+// not print. Assumption: the curve rises from the lowest point to the top of the pad at the
+// rim (u(r) = h, no vertical wall), which fixes a0 = h / (exp(a1 r) - 1). The one free
+// parameter a1 is fitted so that the RFT curved/flat penetration ratio equals the paper's
+// simulated 2.0 (flat pad, same zeta, 1.6 kg at 1.0 m/s on fjs1_lp in vacuum).
+//
+//   fit_curved_pad [target_ratio=2.0] [speed_m_s=1.0] [soil=fjs1_lp]
+// prints a0_mm and a1_per_mm for data/pads/curved.yaml.
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "drop_tests/pad_drop.h"
+
+using namespace touchdown;
+
+int main(int argc, char** argv) {
+  const double target = argc > 1 ? std::stod(argv[1]) : 2.0;
+  const double speed = argc > 2 ? std::stod(argv[2]) : 1.0;
+  const std::string soil_name = argc > 3 ? argv[3] : "fjs1_lp";
+  const drop::PadSpec flat = drop::LoadPad("flat");
+  const rft::SoilParameters soil = drop::LoadSoil(soil_name);
+  drop::DropConditions c;
+  c.impact_speed_m_s = speed;
+  const double flat_depth = drop::RunPadDrop(flat, soil, c).result.final_penetration_m;
+  const double r = flat.profile.radius_m(), h = flat.profile.thickness_m();
+
+  auto ratio = [&](double a1) {
+    drop::PadSpec curved = flat;
+    curved.profile = geom::MakeExponentialProfile(r, h, h / std::expm1(a1 * r), a1, 400);
+    return drop::RunPadDrop(curved, soil, c).result.final_penetration_m / flat_depth;
+  };
+  // The ratio falls as a1 grows (the pad flattens towards a rounded-edge flat pad).
+  double lo = 1.0, hi = 2000.0;  // [1/m]
+  if (!(ratio(lo) > target && ratio(hi) < target)) {
+    std::fprintf(stderr, "target ratio %.3f not bracketed: %.3f .. %.3f\n", target, ratio(lo), ratio(hi));
+    return 1;
+  }
+  for (int i = 0; i < 60; ++i) {
+    const double mid = std::sqrt(lo * hi);
+    (ratio(mid) > target ? lo : hi) = mid;
+  }
+  const double a1 = std::sqrt(lo * hi);
+  std::printf("a1_per_mm: %.6f\na0_mm: %.6f\nratio: %.4f\nflat_depth_mm: %.4f\n", a1 * 1e-3,
+              h / std::expm1(a1 * r) * 1e3, ratio(a1), flat_depth * 1e3);
+  return 0;
+}
