@@ -29,17 +29,28 @@ AxisymmetricIntrusion::AxisymmetricIntrusion(const AxisymmetricProfile& profile,
     p.alpha_z = law.Alpha(std::atan2(p.du, p.dx), kPi / 2).z;
     pieces_.push_back(p);
   }
+  // A wholly submerged piece contributes alpha 2 pi L [(d - u0)(x0 + dx/2) - du x0/2 - du dx/3].
+  slope_sum_.assign(1, 0.0);
+  offset_sum_.assign(1, 0.0);
+  for (const Piece& p : pieces_) {
+    const double w = p.alpha_z * 2 * kPi * p.length, mean_x = p.x0 + p.dx / 2;
+    slope_sum_.push_back(slope_sum_.back() + w * mean_x);
+    offset_sum_.push_back(offset_sum_.back() + w * (-p.u0 * mean_x - p.du * p.x0 / 2 - p.du * p.dx / 3));
+    top_u_.push_back(p.u0 + p.du);
+  }
 }
 
 double AxisymmetricIntrusion::VerticalForce(double depth_m, double zeta_N_m3) const {
-  double sum = 0.0;
-  for (const Piece& p : pieces_) {
+  if (!(depth_m > 0.0)) return 0.0;
+  // Pieces [0, k) lie wholly below the surface; piece k (if any) is cut by it; none after.
+  const size_t k = std::upper_bound(top_u_.begin(), top_u_.end(), depth_m) - top_u_.begin();
+  double sum = slope_sum_[k] * depth_m + offset_sum_[k];
+  if (k < pieces_.size()) {
+    const Piece& p = pieces_[k];
     const double T = SubmergedFraction(p.u0, p.du, depth_m);
-    if (T == 0.0) break;  // u never decreases outward: no deeper piece follows
     // integral_0^T (a + b t)(c + e t) dt with depth a + b t and radius c + e t
     const double a = depth_m - p.u0, b = -p.du, c = p.x0, e = p.dx;
-    const double integral = a * c * T + (a * e + b * c) * T * T / 2 + b * e * T * T * T / 3;
-    sum += p.alpha_z * 2 * kPi * p.length * integral;
+    sum += p.alpha_z * 2 * kPi * p.length * (a * c * T + (a * e + b * c) * T * T / 2 + b * e * T * T * T / 3);
   }
   return zeta_N_m3 * sum;
 }

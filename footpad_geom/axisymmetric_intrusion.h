@@ -8,7 +8,9 @@
 // wall's normal is perpendicular to the motion and is kept, as in the paper's integral.
 // For d > h the profile lies between depths d - h and d, which is the paper's d > h rule; the
 // top face trails and carries nothing. On each straight piece the integrand is a polynomial
-// in arc length, so the integral is exact for the polyline.
+// in arc length, so the integral is exact for the polyline; F_z(d) is then a cubic in d
+// between consecutive profile heights. Pieces wholly below the surface add a term linear in
+// d, kept as prefix sums, so one evaluation costs a binary search plus one partial piece.
 #include <vector>
 
 #include "footpad_geom/axisymmetric_profile.h"
@@ -32,6 +34,9 @@ class AxisymmetricIntrusion {
     double x0, u0, dx, du, length, alpha_z;
   };
   std::vector<Piece> pieces_;
+  std::vector<double> top_u_;     // u at the upper end of each piece (never decreasing)
+  std::vector<double> slope_sum_;  // prefix sums over whole pieces: F/zeta = slope * d + offset
+  std::vector<double> offset_sum_;
   double radius_m_;
   double thickness_m_;
 };

@@ -1,0 +1,42 @@
+#pragma once
+// The resultant soil force and moment on a rigid pad: the sum, over surface elements below the
+// free surface that lead the motion, of a 3D stress law times depth times area.
+//
+// Contract (shared by footpad_geom, lander and drop_tests):
+//  - Elements are in the pad frame B, whose origin is the reference point; the pose gives
+//    R_WB and p_WB (the reference point in W); the twist gives v_WB_W (velocity of the
+//    reference point) and w_WB_W (angular velocity), both in W, z up.
+//  - Each triangle is transformed by the pose and clipped exactly against the ground by its
+//    vertex depths; depth is integrated exactly over the submerged polygon (depth is linear on
+//    a triangle), so a triangle crossing the surface contributes continuously.
+//  - An element leads when n . v >= 0 with v = v_WB + w x r at its centroid (faces parallel to
+//    the motion count, as the side wall does in the paper's axisymmetric integral).
+//  - Moments are about the reference point (the origin of B), expressed in W.
+//  - No allocation inside the element loop.
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include "rft/ground.h"
+#include "rft/stress_law_3d.h"
+#include "rft/surface_elements.h"
+
+namespace touchdown::rft {
+
+struct PadKinematics {
+  Eigen::Matrix3d R_WB = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d p_WB = Eigen::Vector3d::Zero();    // reference point [m]
+  Eigen::Vector3d v_WB_W = Eigen::Vector3d::Zero();  // velocity of the reference point [m/s]
+  Eigen::Vector3d w_WB_W = Eigen::Vector3d::Zero();  // angular velocity [rad/s]
+};
+
+struct ContactWrench {
+  Eigen::Vector3d force_W = Eigen::Vector3d::Zero();   // soil on pad [N]
+  Eigen::Vector3d moment_W = Eigen::Vector3d::Zero();  // about the reference point [N m]
+  double submerged_area_m2 = 0.0;                      // all elements below the surface
+  int leading_elements = 0;                            // submerged and leading
+};
+
+ContactWrench ComputeContactWrench(const SurfaceElements& elements, const PadKinematics& kinematics,
+                                   const GroundSurface& ground, const StressLaw3D& law);
+
+}  // namespace touchdown::rft
