@@ -14,6 +14,16 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "touchdown 0.1.0");
   touchdown::app::AddDropCommand(app);
   touchdown::app::AddCampaignCommand(app);
+  touchdown::app::AddForceCommand(app);
+  touchdown::app::AddSweepCommand(app);
+  touchdown::app::AddExportCommand(app);
+  touchdown::app::AddMergeCommand(app);
+  touchdown::app::AddCompareCommand(app);
+  touchdown::app::AddCalibrateCommand(app);
+  touchdown::app::AddTradeCommand(app);
+  touchdown::app::AddLanderCommand(app);
+  touchdown::app::AddSynthCommand(app);
+  touchdown::app::AddDiagnoseCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

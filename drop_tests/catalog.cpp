@@ -8,6 +8,9 @@
 #include <sstream>
 
 #include "drop_tests/yaml_fields.h"
+#include "footpad_geom/mesh_io.h"
+#include "footpad_geom/pad_body_builder.h"
+#include "footpad_geom/revolve.h"
 #include "rft/input_error.h"
 
 namespace touchdown::drop {
@@ -83,6 +86,98 @@ geom::AxisymmetricProfile ReadProfile(const YamlFields& f) {
   }
   f.Fail("shape", "unknown shape '" + shape + "' (flat, chamfer, exponential, spherical_cap, cone, table)");
 }
+
+Eigen::Vector3d ReadPointMm(const YamlFields& f, const std::string& key) {
+  const YAML::Node list = f.node()[key];
+  Eigen::Vector3d p;
+  if (!list.IsSequence() || list.size() != 3) f.Fail(key, "must be a list of three numbers [x, y, z] in mm");
+  for (int i = 0; i < 3; ++i)
+    if (!YAML::convert<double>::decode(list[i], p(i)) || !std::isfinite(p(i)))
+      f.Fail(key, "must be a list of three finite numbers [x, y, z] in mm");
+  return p * kMm;
+}
+
+// The optional explicit inertia and centre of mass, shared by both pad kinds.
+void ReadMassDistribution(const YamlFields& f, geom::PadMassModel& mass) {
+  if (f.Has("inertia_kg_m2")) {
+    const YamlFields i = f.Child("inertia_kg_m2");
+    i.RequireOnly({"ixx", "iyy", "izz", "ixy", "ixz", "iyz"});
+    auto product = [&](const char* key) { return i.Has(key) ? i.Number(key) : 0.0; };
+    Eigen::Matrix3d m;
+    m << i.Positive("ixx"), product("ixy"), product("ixz"),  //
+        product("ixy"), i.Positive("iyy"), product("iyz"),   //
+        product("ixz"), product("iyz"), i.Positive("izz");
+    mass.inertia_com_kg_m2 = m;
+  }
+  if (f.Has("center_of_mass_mm")) {
+    if (!f.Has("inertia_kg_m2")) f.Fail("center_of_mass_mm", "needs inertia_kg_m2 (about that centre) as well");
+    mass.center_of_mass_m = ReadPointMm(f, "center_of_mass_mm");
+  }
+}
+
+// Builds the body; the builder names the field, the YAML file is added here.
+template <typename Build>
+geom::PadBody GuardedBody(const YamlFields& f, Build build) {
+  try {
+    return build();
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    throw MakeInputError(what.starts_with(f.file()) ? "" : f.file(), "", what);
+  }
+}
+
+void LoadAxisymmetricPad(const YamlFields& f, PadSpec& pad) {
+  pad.mass_kg = f.Positive("mass_kg");
+  pad.profile = ReadProfile(f.Child("profile"));
+  geom::ValidateProfile(pad.profile, f.file());
+  const int segments = f.Has("angular_segments") ? f.PositiveInt("angular_segments") : geom::kDefaultAngularSegments;
+  if (segments < 6) f.Fail("angular_segments", "must be at least 6, got " + std::to_string(segments));
+  const Eigen::Vector3d reference =
+      f.Has("reference_point_mm") ? ReadPointMm(f, "reference_point_mm")
+                                  : Eigen::Vector3d(0.0, 0.0, pad.profile.thickness_m());
+  geom::PadMassModel mass;
+  mass.mass_kg = pad.mass_kg;
+  ReadMassDistribution(f, mass);
+  pad.body = GuardedBody(f, [&] {
+    return geom::MakePadBody(geom::RevolveProfileToMesh(pad.profile, segments), mass, reference, f.file());
+  });
+}
+
+void LoadMeshPad(const YamlFields& f, PadSpec& pad) {
+  const YamlFields m = f.Child("mesh");
+  m.RequireOnly({"file", "unit", "remesh_edge_mm"});
+  fs::path file = m.String("file");
+  if (file.is_relative()) file = fs::path(f.file()).parent_path() / file;  // relative to the YAML file
+  pad.mesh_file = file.lexically_normal().string();
+  geom::MeshLoadOptions options;
+  options.unit = geom::ParseLengthUnit(m.String("unit"), f.file(), m.Path("unit"));
+  if (m.Has("remesh_edge_mm")) options.remesh_edge_m = m.Positive("remesh_edge_mm") * kMm;
+  geom::TriangleMesh mesh;
+  try {
+    mesh = geom::LoadTriangleMesh(pad.mesh_file, options).mesh;
+  } catch (const InputError& e) {
+    throw MakeInputError(f.file(), m.Path("file"), e.what());
+  }
+
+  geom::PadMassModel mass;
+  if (f.Has("mass_kg") == f.Has("density_kg_m3")) f.Fail("mass_kg", "give exactly one of mass_kg and density_kg_m3");
+  if (f.Has("mass_kg")) mass.mass_kg = f.Positive("mass_kg");
+  if (f.Has("density_kg_m3")) mass.density_kg_m3 = f.Positive("density_kg_m3");
+  ReadMassDistribution(f, mass);
+  Eigen::Vector3d reference;
+  if (f.Has("reference_point_mm")) {
+    reference = ReadPointMm(f, "reference_point_mm");
+  } else {
+    Eigen::Vector3d lo = mesh.vertices.front(), hi = lo;
+    for (const Eigen::Vector3d& v : mesh.vertices) {
+      lo = lo.cwiseMin(v);
+      hi = hi.cwiseMax(v);
+    }
+    reference = Eigen::Vector3d(0.5 * (lo.x() + hi.x()), 0.5 * (lo.y() + hi.y()), hi.z());
+  }
+  pad.body = GuardedBody(f, [&] { return geom::MakePadBody(mesh, mass, reference, f.file()); });
+  pad.mass_kg = pad.body.mass_kg;
+}
 }  // namespace
 
 std::string DataDirectory() {
@@ -110,15 +205,21 @@ PadSpec LoadPad(const std::string& name_or_path) {
   const std::string path = ResolveCatalogFile("pads", name_or_path);
   const YamlFields f = YamlFields::LoadFile(path);
   f.RequireSchemaVersion(1);
-  f.RequireOnly({"schema_version", "name", "kind", "mass_kg", "profile", "description", "provenance"});
-  const std::string kind = f.StringOr("kind", "axisymmetric");
-  if (kind != "axisymmetric") f.Fail("kind", "unknown pad kind '" + kind + "' (axisymmetric)");
   PadSpec pad;
   pad.source = path;
+  pad.kind = f.StringOr("kind", "axisymmetric");
   pad.name = f.StringOr("name", fs::path(path).stem().string());
-  pad.mass_kg = f.Positive("mass_kg");
-  pad.profile = ReadProfile(f.Child("profile"));
-  geom::ValidateProfile(pad.profile, path);
+  if (pad.kind == "axisymmetric") {
+    f.RequireOnly({"schema_version", "name", "kind", "mass_kg", "profile", "description", "provenance",
+                   "angular_segments", "reference_point_mm", "inertia_kg_m2", "center_of_mass_mm"});
+    LoadAxisymmetricPad(f, pad);
+  } else if (pad.kind == "mesh") {
+    f.RequireOnly({"schema_version", "name", "kind", "mesh", "mass_kg", "density_kg_m3", "description",
+                   "provenance", "reference_point_mm", "inertia_kg_m2", "center_of_mass_mm"});
+    LoadMeshPad(f, pad);
+  } else {
+    f.Fail("kind", "unknown pad kind '" + pad.kind + "' (axisymmetric, mesh)");
+  }
   return pad;
 }
 

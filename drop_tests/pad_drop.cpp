@@ -24,22 +24,34 @@ void ValidateConditions(const DropConditions& c, const std::string& context) {
   if (!(c.gravity_m_s2 > 0.0 && std::isfinite(c.gravity_m_s2))) bad("gravity_m_s2", c.gravity_m_s2, "positive and finite");
   if (c.zeta_N_m3 && !(*c.zeta_N_m3 > 0.0 && std::isfinite(*c.zeta_N_m3)))
     bad("zeta_N_cm3", *c.zeta_N_m3 / 1e6, "positive and finite");
+  if (c.atmosphere && *c.atmosphere != "vacuum" && *c.atmosphere != "air")
+    throw MakeInputError(context, "atmosphere", "must be vacuum or air, got '" + *c.atmosphere + "'");
 }
 
 PadDrop RunPadDrop(const PadSpec& pad, const rft::SoilParameters& soil, const DropConditions& conditions,
                    const RigDropOptions& options) {
   ValidateConditions(conditions, pad.name + " on " + soil.name);
+  // The rig drop integrates the exact axisymmetric profile; a mesh pad needs the 3D contact
+  // wrench (rft/contact_wrench.h) and the free-pad dynamics.
+  if (!pad.is_axisymmetric())
+    throw MakeInputError(pad.source, "", "rig drop of mesh pads needs the 3D contact; use --free");
   PadDrop drop{pad, soil, conditions, conditions.mass_kg.value_or(pad.mass_kg), 0.0, {}};
   rft::SoilParameters effective = soil;
   if (conditions.zeta_N_m3) effective.zeta_N_m3 = *conditions.zeta_N_m3;
+  if (conditions.atmosphere) drop.soil.atmosphere = *conditions.atmosphere;
   drop.zeta_effective_N_m3 = effective.ZetaAtGravity(conditions.gravity_m_s2);
 
   const geom::AxisymmetricIntrusion intrusion(pad.profile, rft::Li2013Law{});
-  const double zeta = drop.zeta_effective_N_m3;
-  const VerticalResistance resistance = [&intrusion, zeta](double depth_m, double) {
-    return intrusion.VerticalForce(depth_m, zeta);
-  };
-  drop.result = RunRigDrop({drop.mass_kg, conditions.gravity_m_s2, conditions.impact_speed_m_s}, resistance, options);
+  // With no effect terms this is exactly the quasi-static RFT force F_z(d; zeta).
+  SoilResponseInputs inputs{drop.zeta_effective_N_m3, soil.bulk_density_kg_m3, drop.soil.atmosphere == "air",
+                            conditions.effects};
+  std::optional<EffectSoilResponse> response;
+  try {
+    response.emplace(intrusion, inputs);
+  } catch (const InputError& e) {
+    throw MakeInputError(soil.name, "", e.what());
+  }
+  drop.result = RunRigDrop({drop.mass_kg, conditions.gravity_m_s2, conditions.impact_speed_m_s}, *response, options);
   return drop;
 }
 

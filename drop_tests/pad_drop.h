@@ -6,6 +6,7 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include "drop_tests/catalog.h"
+#include "drop_tests/effects.h"
 #include "drop_tests/rig_drop.h"
 
 namespace touchdown::drop {
@@ -15,6 +16,8 @@ struct DropConditions {
   std::optional<double> mass_kg;        // default: the pad's mass
   double gravity_m_s2 = 9.81;
   std::optional<double> zeta_N_m3;      // overrides the soil's zeta (at its reference gravity)
+  std::optional<std::string> atmosphere;  // "vacuum" or "air"; default: the soil's
+  EffectTerms effects;                  // default: none (quasi-static RFT)
 };
 
 struct PadDrop {

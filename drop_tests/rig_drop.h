@@ -4,6 +4,15 @@
 // no rebound. Once the pad stops, it stays as long as the soil can carry its weight
 // (F(d) >= m g, the quasi-static capacity at that depth), and the reaction is then m g.
 //
+// With grains carried along (added mass m_a(d), see drop_tests/effects.h) the pad and its
+// entrained grains obey d/dt((m + m_a) v) = m g - F, that is
+//   (m + m_a) dv/dt = m g - F(d, v) - v^2 dm_a/dd,
+// the grains' own weight being carried by the bed. The load cell between pad and soil then
+// reads F_c = m (g - dv/dt) = F + m_a dv/dt + v^2 dm_a/dd, which is what the trace records.
+// Energy: d/dt(KE_pad + KE_grains) = m g v - F v - v^3 m_a' / 2, so the dissipated energy is
+// the work of F plus the inelastic accretion loss v^3 m_a' / 2 (grains picked up at rest);
+// at the stop it equals the impact energy plus the weight's work, as without added mass.
+//
 // Phases, each a CVODE run whose end is found by root-finding, not by step-size luck:
 //   approach   free flight from a small clearance to touchdown (root: penetration = 0);
 //   stroke     penetration until the pad stops (root: velocity = 0, falling);
@@ -20,6 +29,31 @@ namespace touchdown::drop {
 // Soil reaction on the pad [N, upward] at lowest-point depth d [m] while the pad moves
 // down at speed v [m/s] (v > 0). Quasi-static RFT ignores v.
 using VerticalResistance = std::function<double(double depth_m, double speed_down_m_s)>;
+
+// A vertical soil response for the rig: the soil's reaction and the grains it entrains.
+class VerticalSoilResponse {
+ public:
+  virtual ~VerticalSoilResponse() = default;
+  // Soil reaction on the pad [N, upward] at lowest-point depth d > 0 [m], moving down at v >= 0.
+  virtual double Force(double depth_m, double speed_down_m_s) const = 0;
+  // Mass of grains moving with the pad [kg]; must be continuous with m_a(0) = 0, so a pad
+  // touching down never sees an infinite force.
+  virtual double AddedMass(double /*depth_m*/) const { return 0.0; }
+  // dm_a/dd [kg/m], finite.
+  virtual double AddedMassSlope(double /*depth_m*/) const { return 0.0; }
+  // Quasi-static capacity at rest [N]: the largest weight the soil carries at depth d.
+  virtual double StaticCapacity(double depth_m) const { return Force(depth_m, 0.0); }
+};
+
+// Adapts a VerticalResistance (no added mass) to the interface.
+class FunctionSoilResponse final : public VerticalSoilResponse {
+ public:
+  explicit FunctionSoilResponse(VerticalResistance f) : f_(std::move(f)) {}
+  double Force(double depth_m, double speed_down_m_s) const override { return f_(depth_m, speed_down_m_s); }
+
+ private:
+  VerticalResistance f_;
+};
 
 struct RigDropOptions {
   double sample_rate_hz = 1000.0;       // the rig's 1 kHz
@@ -52,14 +86,22 @@ struct RigDropResult {
   double dissipated_energy_J = 0.0;      // integral of F v dt over the stroke
   double mean_conversion_rate_W = 0.0;   // impact energy / time to rest (paper's dE/dt)
   double rest_creep_m = 0.0;             // sinkage during the rest phase
+  double accretion_loss_J = 0.0;         // part of dissipated_energy_J: grains picked up (added mass)
   std::vector<DropSample> trace;
   integ::IntegratorSummary solver;
 };
 
-// Pure model: the state derivative of the rig during the stroke, y = [d, v, W].
+// Pure model: the state derivative of the rig during the stroke, y = [d, v, W, W_accretion].
+void RigStrokeDerivative(const RigDropInput& in, const VerticalSoilResponse& response,
+                         const Eigen::Ref<const Eigen::VectorXd>& y, Eigen::Ref<Eigen::VectorXd> ydot);
 void RigStrokeDerivative(const RigDropInput& in, const VerticalResistance& resistance,
                          const Eigen::Ref<const Eigen::VectorXd>& y, Eigen::Ref<Eigen::VectorXd> ydot);
+// The load-cell force F_c = m (g - dv/dt) at a stroke state [N].
+double RigContactForce(const RigDropInput& in, const VerticalSoilResponse& response, double depth_m,
+                       double speed_down_m_s);
 
+RigDropResult RunRigDrop(const RigDropInput& input, const VerticalSoilResponse& response,
+                         const RigDropOptions& options = {});
 RigDropResult RunRigDrop(const RigDropInput& input, const VerticalResistance& resistance,
                          const RigDropOptions& options = {});
 

@@ -23,8 +23,9 @@ AxisymmetricIntrusion::AxisymmetricIntrusion(const AxisymmetricProfile& profile,
   for (size_t i = 1; i < profile.points.size(); ++i) {
     const ProfilePoint& a = profile.points[i - 1];
     const ProfilePoint& b = profile.points[i];
-    Piece p{a.x_m, a.u_m, b.x_m - a.x_m, b.u_m - a.u_m, 0.0, 0.0};
+    Piece p{a.x_m, a.u_m, b.x_m - a.x_m, b.u_m - a.u_m, 0.0, 0.0, 0.0};
     p.length = std::hypot(p.dx, p.du);
+    p.cos_beta = p.dx / p.length;
     // Attack angle of the piece; for straight-down motion the law is even in beta.
     p.alpha_z = law.Alpha(std::atan2(p.du, p.dx), kPi / 2).z;
     pieces_.push_back(p);
@@ -37,6 +38,11 @@ AxisymmetricIntrusion::AxisymmetricIntrusion(const AxisymmetricProfile& profile,
     slope_sum_.push_back(slope_sum_.back() + w * mean_x);
     offset_sum_.push_back(offset_sum_.back() + w * (-p.u0 * mean_x - p.du * p.x0 / 2 - p.du * p.dx / 3));
     top_u_.push_back(p.u0 + p.du);
+  }
+  for (int k = 0; k < 4; ++k) {
+    cos_sum_[k].assign(1, 0.0);
+    for (const Piece& p : pieces_)
+      cos_sum_[k].push_back(cos_sum_[k].back() + std::pow(p.cos_beta, k) * kPi * p.length * (2 * p.x0 + p.dx));
   }
 }
 
@@ -63,6 +69,73 @@ double AxisymmetricIntrusion::SubmergedArea(double depth_m) const {
     area += 2 * kPi * p.length * (p.x0 * T + p.dx * T * T / 2);
   }
   return area;
+}
+
+double AxisymmetricIntrusion::CosinePowerIntegral(double depth_m, int k) const {
+  if (!(depth_m > 0.0)) return 0.0;
+  const size_t n = std::upper_bound(top_u_.begin(), top_u_.end(), depth_m) - top_u_.begin();
+  auto weight = [k](double c) { return k == 0 ? 1.0 : k == 1 ? c : k == 2 ? c * c : c * c * c; };
+  if (k < 0 || k > 3) {  // rare: a direct sum
+    double sum = 0.0;
+    for (const Piece& p : pieces_) {
+      const double T = SubmergedFraction(p.u0, p.du, depth_m);
+      if (T == 0.0) break;
+      sum += std::pow(p.cos_beta, k) * 2 * kPi * p.length * (p.x0 * T + p.dx * T * T / 2);
+    }
+    return sum;
+  }
+  double sum = cos_sum_[k][n];
+  if (n < pieces_.size()) {
+    const Piece& p = pieces_[n];
+    const double T = SubmergedFraction(p.u0, p.du, depth_m);
+    sum += weight(p.cos_beta) * 2 * kPi * p.length * (p.x0 * T + p.dx * T * T / 2);
+  }
+  return sum;
+}
+
+double AxisymmetricIntrusion::FootprintRadius(double depth_m) const {
+  if (!(depth_m > 0.0)) return 0.0;
+  const size_t k = std::upper_bound(top_u_.begin(), top_u_.end(), depth_m) - top_u_.begin();
+  if (k >= pieces_.size()) return radius_m_;
+  const Piece& p = pieces_[k];
+  return p.x0 + p.dx * SubmergedFraction(p.u0, p.du, depth_m);
+}
+
+double AxisymmetricIntrusion::FootprintRadiusSlope(double depth_m) const {
+  if (!(depth_m > 0.0)) return 0.0;
+  const size_t k = std::upper_bound(top_u_.begin(), top_u_.end(), depth_m) - top_u_.begin();
+  if (k >= pieces_.size()) return 0.0;
+  const Piece& p = pieces_[k];
+  return p.du > 0.0 ? p.dx / p.du : 0.0;
+}
+
+double AxisymmetricIntrusion::PowerLawVerticalForce(double depth_m, double zeta_N_m3, double exponent,
+                                                    double z_ref_m) const {
+  if (!(depth_m > 0.0)) return 0.0;
+  const double p1 = exponent + 1, p2 = exponent + 2;
+  double sum = 0.0;
+  for (const Piece& p : pieces_) {
+    const double T = SubmergedFraction(p.u0, p.du, depth_m);
+    if (T == 0.0) break;
+    const double w = p.alpha_z * 2 * kPi * p.length;
+    const double z0 = depth_m - p.u0;  // depth of the piece's lower end (> 0)
+    if (p.du == 0.0) {
+      // Horizontal piece: constant depth, radius linear in t.
+      sum += w * std::pow(z0, exponent) * (p.x0 * T + p.dx * T * T / 2);
+      continue;
+    }
+    // Along the piece z = z0 - du t, x = x0 + dx t; with t = (z0 - z) / du:
+    // integral_0^T z^p x dt = (1/du) integral_{z1}^{z0} z^p (x0 + dx (z0 - z) / du) dz.
+    const double z1 = z0 - p.du * T;
+    const double A = p.x0 + p.dx * z0 / p.du, B = -p.dx / p.du;
+    auto primitive = [&](double z) {
+      if (z <= 0.0) return 0.0;
+      const double zp1 = std::pow(z, p1);
+      return A * zp1 / p1 + B * zp1 * z / p2;
+    };
+    sum += w * (primitive(z0) - primitive(z1)) / p.du;
+  }
+  return zeta_N_m3 * std::pow(z_ref_m, 1.0 - exponent) * sum;
 }
 
 }  // namespace touchdown::geom

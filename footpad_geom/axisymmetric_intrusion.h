@@ -26,17 +26,35 @@ class AxisymmetricIntrusion {
   double VerticalForce(double depth_m, double zeta_N_m3) const;
   // Area of the pad surface below the free surface [m^2].
   double SubmergedArea(double depth_m) const;
+
+  // Additions for speed-dependent effect terms (drop_tests/effects.h). For straight-down motion
+  // an element of attack angle beta has v.n = v cos(beta) (n the outward normal, v down).
+  // Integral of cos^k(beta) dA over the submerged leading surface [m^2], k = 0..3; k = 0 is
+  // SubmergedArea, k = 2 weights a normal stress c (v.n), k = 3 the vertical part of lambda (v.n)^2.
+  double CosinePowerIntegral(double depth_m, int k) const;
+  // Radius of the submerged footprint [m]: the radius at which the profile crosses the free
+  // surface (the rim once the bottom is under). 0 at d <= 0; a flat pad jumps to r at d = 0+.
+  double FootprintRadius(double depth_m) const;
+  // d(FootprintRadius)/d(depth) [-]: dx/du of the piece cut by the surface; 0 on the side wall
+  // and on a flat bottom (where the footprint is already whole).
+  double FootprintRadiusSlope(double depth_m) const;
+  // Vertical force for the depth power law sigma = zeta alpha z_ref (z / z_ref)^p [N]: exact on
+  // every straight piece (the integrand z^p times a radius linear in z integrates in closed
+  // form). p = 1 gives VerticalForce. Costs one or two pow() per submerged piece.
+  double PowerLawVerticalForce(double depth_m, double zeta_N_m3, double exponent, double z_ref_m) const;
   double radius_m() const { return radius_m_; }
   double thickness_m() const { return thickness_m_; }
 
  private:
   struct Piece {
     double x0, u0, dx, du, length, alpha_z;
+    double cos_beta;  // dx / length
   };
   std::vector<Piece> pieces_;
   std::vector<double> top_u_;     // u at the upper end of each piece (never decreasing)
   std::vector<double> slope_sum_;  // prefix sums over whole pieces: F/zeta = slope * d + offset
   std::vector<double> offset_sum_;
+  std::vector<double> cos_sum_[4];  // prefix sums over whole pieces of cos^k(beta) times their area
   double radius_m_;
   double thickness_m_;
 };

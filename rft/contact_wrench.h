@@ -9,8 +9,13 @@
 //  - Each triangle is transformed by the pose and clipped exactly against the ground by its
 //    vertex depths; depth is integrated exactly over the submerged polygon (depth is linear on
 //    a triangle), so a triangle crossing the surface contributes continuously.
-//  - An element leads when n . v >= 0 with v = v_WB + w x r at its centroid (faces parallel to
-//    the motion count, as the side wall does in the paper's axisymmetric integral).
+//  - An element leads when n . v >= 0 with v = v_WB + w x r at the depth-weighted centroid of
+//    its submerged part (faces parallel to the motion count, as the side wall does in the
+//    paper's axisymmetric integral; see contact_wrench.cpp for why that point). A face that
+//    turns away from the motion fades out smoothly over n.v/|v| in [-0.02, 0] rather than at
+//    once, so the force is Lipschitz in the velocity (see kTrailingBand).
+//  - The law's DynamicStress (if any) is integrated over the submerged area, not over depth.
+//  - A pad at rest (v = 0 at an element) gets no RFT stress there: the law needs a direction.
 //  - Moments are about the reference point (the origin of B), expressed in W.
 //  - No allocation inside the element loop.
 #include <Eigen/Core>

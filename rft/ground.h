@@ -21,6 +21,10 @@ class PlaneGround final : public GroundSurface {
   explicit PlaneGround(double height_at_origin_m = 0.0, double slope_x = 0.0, double slope_y = 0.0)
       : h0_(height_at_origin_m), sx_(slope_x), sy_(slope_y) {}
   double Height(double x_m, double y_m) const override { return h0_ + sx_ * x_m + sy_ * y_m; }
+  // The plane's coefficients (ComputeContactWrench uses them to get depths in the pad frame).
+  double height_at_origin_m() const { return h0_; }
+  double slope_x() const { return sx_; }
+  double slope_y() const { return sy_; }
 
  private:
   double h0_, sx_, sy_;

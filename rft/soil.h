@@ -14,6 +14,18 @@ struct SoilParameters {
   double internal_friction_angle_rad = 0.0;  // [rad], 0 when unknown
   std::string atmosphere = "vacuum";      // "vacuum" or "air"
 
+  // 3D laws (rft/stress_law_3d_factory.h). All defaulted, so 2D users are unaffected.
+  std::string rft_law_3d = "li2013";  // preferred 3D law: "li2013" or "agarwal2023"
+  // Intruder-surface friction coefficient mu_surf [-] of Agarwal et al. 2023 (only that law).
+  // 0.4 is an assumption (a typical sand-on-metal value), not a measured pad value.
+  double surface_friction_coefficient = 0.4;
+  // Dynamic RFT (Agarwal et al., Sci. Adv. 2021): adds lambda rho_c (v.n)^2 [Pa] on leading
+  // elements. lambda [-] (order one; 1.0 is an assumption until fitted), rho_c [kg/m^3]
+  // (0 = use bulk_density_kg_m3).
+  bool dynamic_term = false;
+  double dynamic_lambda = 1.0;
+  double dynamic_density_kg_m3 = 0.0;
+
   // RFT stresses scale with the lithostatic pressure rho g z (Agarwal et al. 2023,
   // xi = rho g f(mu)), so zeta scales linearly with gravity.
   double ZetaAtGravity(double gravity_m_s2) const {

@@ -8,6 +8,8 @@ packages=(
   libgtest-dev libbenchmark-dev
   libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
   gnuplot-nox
+  libsqlite3-dev sqlite3 libopenmpi-dev openmpi-bin libboost-dev
+  clang libclang-rt-14-dev
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -64,6 +64,22 @@ TEST_F(Cli, DropPrintsJsonWithTheContractedKeys) {
   EXPECT_EQ(csv.substr(0, csv.find('\n')), "t_s,penetration_m,velocity_m_s,force_N");
 }
 
+TEST_F(Cli, ForceOfFlatPadMatchesTheClosedForm) {
+  // Straight down: zeta (pi r^2 d + 0.128 pi r d^2), the revolved mesh within 0.5 % of it.
+  const CliRun r = Touchdown("force --pad flat --soil fjs1_lp --depth 0.005");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  const double zeta = 3.4810783e6, radius = 0.05, d = 0.005;
+  const double closed = zeta * (M_PI * radius * radius * d + 0.1284 * M_PI * radius * d * d);
+  EXPECT_NEAR(j["force_N"][2].get<double>(), closed, 5e-3 * closed);
+  EXPECT_NEAR(j["force_N"][0].get<double>(), 0.0, 1e-9);
+  EXPECT_GT(j["leading_elements"].get<int>(), 0);
+  // Tilted and moving sideways: a horizontal force opposing the motion appears.
+  const CliRun t = Touchdown("force --pad flat --soil fjs1_lp --depth 0.005 --tilt-deg 10 --velocity 0.5,0,-1");
+  ASSERT_EQ(t.status, 0) << t.err;
+  EXPECT_LT(nlohmann::json::parse(t.out)["force_N"][0].get<double>(), 0.0);
+}
+
 TEST_F(Cli, MassGravityAndZetaOverridesApply) {
   const CliRun base = Touchdown("drop --pad flat --soil fjs1_lp --speed 1.0");
   const CliRun heavy = Touchdown("drop --pad flat --soil fjs1_lp --speed 1.0 --mass 3.2 --zeta 4");
@@ -148,7 +164,12 @@ INSTANTIATE_TEST_SUITE_P(
                  "unknown_pad_scenario.yaml: drops[0].pad: pads: unknown name 'hexagon'"},
         BadInput{"ZeroAreaPadInScenario", "campaign {dir}/zero_area_scenario.yaml --out {dir}/out",
                  "profile.radius_mm: must be positive"},
-        BadInput{"MissingOut", "campaign {dir}/bad_scenario.yaml", "--out is required"}),
+        BadInput{"MissingOut", "campaign {dir}/bad_scenario.yaml", "--out is required"},
+        BadInput{"ForceBadTiltAxis", "force --pad flat --soil fjs1_lp --depth 0.01 --tilt-axis z", "tilt_axis: must be x or y"},
+        BadInput{"ForceNanDepth", "force --pad flat --soil fjs1_lp --depth nan", "depth_m"},
+        BadInput{"ForceNoMotion", "force --pad flat --soil fjs1_lp --depth 0.01 --velocity 0,0,0",
+                 "the pad must move"},
+        BadInput{"ForceUnknownLaw", "force --pad flat --soil fjs1_lp --depth 0.01 --law bekker", "bekker"}),
     [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "drop_tests/pad_drop.h"
 #include "rft/input_error.h"
 
 namespace touchdown::drop {
@@ -155,6 +156,141 @@ TEST_F(CatalogFiles, TabulatedProfileFromUserFile) {
   EXPECT_EQ(pad.name, "ring");
   ASSERT_EQ(pad.profile.points.size(), 4u);  // + the side wall
   EXPECT_NEAR(pad.profile.points.back().u_m, 0.010, 1e-12);
+}
+
+// --- Pad bodies and mesh pads (kind: mesh) ---
+
+// Sum of n dA over a closed surface: zero (divergence theorem).
+double VectorAreaNorm(const rft::SurfaceElements& e) {
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  for (int i = 0; i < e.size(); ++i) sum += e.area_m2(i) * e.n_B.col(i);
+  return sum.norm();
+}
+
+TEST_F(CatalogFiles, EveryBundledPadHasABody) {
+  const double r = 0.05, h = 0.016, pi = std::acos(-1.0);
+  for (const char* name : {"flat", "c4", "curved", "hex"}) {
+    SCOPED_TRACE(name);
+    const PadSpec pad = LoadPad(name);
+    EXPECT_EQ(pad.is_axisymmetric(), std::string(name) != "hex");
+    EXPECT_EQ(pad.kind, pad.is_axisymmetric() ? "axisymmetric" : "mesh");
+    EXPECT_DOUBLE_EQ(pad.body.mass_kg, 1.6);
+    EXPECT_DOUBLE_EQ(pad.mass_kg, 1.6);
+    // Reference point at the top centre: the lowest point 16 mm below it, on the axis.
+    EXPECT_NEAR(pad.body.lowest_z_B, -h, 1e-12);
+    EXPECT_NEAR(pad.body.com_B.head<2>().norm(), 0.0, 1e-9);
+    EXPECT_LT(pad.body.com_B.z(), 0.0);
+    EXPECT_GT(pad.body.surface.size(), 1000);
+    EXPECT_LT(VectorAreaNorm(pad.body.surface), 1e-12);
+  }
+  // The flat pad's revolved surface is the cylinder's, to the angular discretisation error.
+  const PadSpec flat = LoadPad("flat");
+  EXPECT_NEAR(flat.body.surface.area_m2.sum() / (2 * pi * r * r + 2 * pi * r * h), 1.0, 1e-3);
+  EXPECT_NEAR(flat.body.com_B.z(), -h / 2, 1e-12);
+  EXPECT_NEAR(flat.body.inertia_com_B(2, 2) / (1.6 * r * r / 2), 1.0, 1e-3);
+  // The hexagonal prism: 2 hexagons of circumradius 50 mm and six 50 x 16 mm sides.
+  const PadSpec hex = LoadPad("hex");
+  EXPECT_TRUE(hex.profile.points.empty());
+  EXPECT_NEAR(hex.body.surface.area_m2.sum(), 2 * 1.5 * std::sqrt(3.0) * r * r + 6 * r * h, 1e-9);
+  EXPECT_NEAR(hex.body.com_B.z(), -h / 2, 1e-9);
+}
+
+TEST_F(CatalogFiles, AxisymmetricPadBodyOptions) {
+  const PadSpec pad = LoadPad(Write("coarse.yaml",
+                                    "mass_kg: 2\nangular_segments: 12\nreference_point_mm: [0, 0, 0]\n"
+                                    "profile: {shape: flat, radius_mm: 50, thickness_mm: 16}\n"));
+  EXPECT_NEAR(pad.body.lowest_z_B, 0.0, 1e-15);
+  EXPECT_NEAR(pad.body.com_B.z(), 0.008, 1e-12);
+  const double hexagon_ring = 12;  // rim ring of 12: area of the inscribed 12-gon
+  EXPECT_NEAR(pad.body.surface.area_m2.sum(),
+              2 * 0.5 * hexagon_ring * 0.05 * 0.05 * std::sin(2 * std::acos(-1.0) / 12) +
+                  12 * 2 * 0.05 * std::sin(std::acos(-1.0) / 12) * 0.016,
+              1e-12);
+}
+
+class MeshPads : public CatalogFiles {
+ protected:
+  void SetUp() override {
+    CatalogFiles::SetUp();
+    fs::create_directories(dir_ / "meshes");
+    // A 100 x 100 x 20 mm box as quads (OFF), and the same box without its top.
+    const std::string vertices = "0 0 0\n100 0 0\n100 100 0\n0 100 0\n0 0 20\n100 0 20\n100 100 20\n0 100 20\n";
+    const std::string sides = "4 0 3 2 1\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n";
+    Write("meshes/box.off", "OFF\n8 6 0\n" + vertices + sides + "4 4 5 6 7\n");
+    Write("meshes/open_box.off", "OFF\n8 5 0\n" + vertices + sides);
+  }
+};
+
+TEST_F(MeshPads, MeshPadFromUserFile) {
+  const PadSpec pad = LoadPad(Write("box.yaml",
+                                    "name: box\nkind: mesh\nmesh: {file: meshes/box.off, unit: mm}\n"
+                                    "density_kg_m3: 1000\n"));
+  EXPECT_EQ(pad.name, "box");
+  EXPECT_FALSE(pad.is_axisymmetric());
+  EXPECT_EQ(pad.mesh_file, (dir_ / "meshes/box.off").lexically_normal().string());
+  EXPECT_NEAR(pad.mass_kg, 0.2, 1e-12);  // 0.1 x 0.1 x 0.02 m^3 of 1000 kg/m^3
+  // Default reference point: top centre of the bounding box.
+  EXPECT_TRUE(pad.body.com_B.isApprox(Eigen::Vector3d(0, 0, -0.01), 1e-9));
+  EXPECT_NEAR(pad.body.lowest_z_B, -0.02, 1e-15);
+  EXPECT_NEAR(pad.body.inertia_com_B(2, 2), 0.2 * (0.01 + 0.01) / 12, 1e-12);
+  EXPECT_EQ(pad.body.surface.size(), 12);
+
+  const PadSpec given = LoadPad(Write("given.yaml",
+                                      "kind: mesh\nmesh: {file: meshes/box.off, unit: mm, remesh_edge_mm: 10}\n"
+                                      "mass_kg: 1.2\nreference_point_mm: [50, 50, 0]\n"
+                                      "inertia_kg_m2: {ixx: 0.002, iyy: 0.002, izz: 0.003, ixy: -0.0001}\n"
+                                      "center_of_mass_mm: [50, 50, 5]\n"));
+  EXPECT_DOUBLE_EQ(given.mass_kg, 1.2);
+  EXPECT_TRUE(given.body.com_B.isApprox(Eigen::Vector3d(0, 0, 0.005), 1e-12));
+  EXPECT_DOUBLE_EQ(given.body.inertia_com_B(0, 1), -0.0001);
+  EXPECT_DOUBLE_EQ(given.body.inertia_com_B(1, 0), -0.0001);
+  EXPECT_GT(given.body.surface.size(), 12);  // remeshed
+}
+
+TEST_F(MeshPads, BadMeshPadsGiveOneClearError) {
+  const std::string head = "kind: mesh\n";
+  const std::string good_mesh = "mesh: {file: meshes/box.off, unit: mm}\n";
+  const struct {
+    std::string yaml, expected;
+  } cases[] = {
+      {head + "mesh: {file: meshes/none.stl, unit: mm}\nmass_kg: 1\n",
+       "pad.yaml: mesh.file: " + (dir_ / "meshes/none.stl").string() + ": mesh file not found"},
+      {head + "mesh: {file: meshes/box.off, unit: inch}\nmass_kg: 1\n",
+       "pad.yaml: mesh.unit: unknown length unit 'inch' (mm, m)"},
+      {head + "mesh: {file: meshes/open_box.off, unit: mm}\nmass_kg: 1\n",
+       "open_box.off: 4 border edges, mesh is not closed"},
+      {head + good_mesh + "mass_kg: 1\ndensity_kg_m3: 1000\n", "mass_kg: give exactly one of mass_kg and density_kg_m3"},
+      {head + good_mesh, "mass_kg: give exactly one of mass_kg and density_kg_m3"},
+      {head + "mass_kg: 1\n", "mesh"},
+      {head + "mesh: {file: meshes/box.off, unit: mm, scale: 2}\nmass_kg: 1\n", "mesh.scale: unknown field"},
+      {head + good_mesh + "mass_kg: 1\nreference_point_mm: [0, 0]\n", "reference_point_mm: must be a list of three"},
+      {head + good_mesh + "mass_kg: 1\ninertia_kg_m2: {ixx: 0.001, iyy: 0.001, izz: 0.003}\n",
+       "inertia_kg_m2: is not a rigid body's inertia"},
+      {head + good_mesh + "mass_kg: 1\ncenter_of_mass_mm: [0, 0, 0]\n", "center_of_mass_mm: needs inertia_kg_m2"},
+      {head + good_mesh + "mass_kg: 1\nprofile: {shape: flat}\n", "profile: unknown field"},
+      {"mass_kg: 1\nangular_segments: 3\nprofile: {shape: flat, radius_mm: 50, thickness_mm: 16}\n",
+       "angular_segments: must be at least 6, got 3"},
+      {"kind: banana\nmass_kg: 1\n", "kind: unknown pad kind 'banana' (axisymmetric, mesh)"},
+  };
+  for (const auto& c : cases) {
+    const std::string message = PadError(c.yaml);
+    EXPECT_NE(message.find("pad.yaml"), std::string::npos) << message;
+    EXPECT_NE(message.find(c.expected), std::string::npos) << c.yaml << " -> " << message;
+  }
+}
+
+TEST_F(CatalogFiles, RigDropOfAMeshPadIsRefused) {
+  const PadSpec hex = LoadPad("hex");
+  DropConditions conditions;
+  conditions.impact_speed_m_s = 1.0;
+  try {
+    RunPadDrop(hex, LoadSoil("fjs1_lp"), conditions);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("hex.yaml: rig drop of mesh pads needs the 3D contact; use --free"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 }  // namespace

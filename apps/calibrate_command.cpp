@@ -1,0 +1,49 @@
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+
+#include "apps/commands.h"
+#include "drop_tests/calibrate.h"
+
+namespace touchdown::app {
+
+namespace {
+struct CalibrateArgs {
+  std::string measured, param = "zeta", per = "soil", out, atmosphere = "all";
+  double confidence = 0.95;
+};
+}  // namespace
+
+void AddCalibrateCommand(CLI::App& app) {
+  auto args = std::make_shared<CalibrateArgs>();
+  CLI::App* cmd = app.add_subcommand("calibrate", "Fit zeta to measured drops (least squares of force on penetration)");
+  cmd->add_option("measured", args->measured, "measured dataset directory")->required();
+  cmd->add_option("--param", args->param, "parameter to fit (zeta)")->check(CLI::IsMember({"zeta"}));
+  cmd->add_option("--per", args->per, "soil: one zeta per soil (default); all: one zeta for every soil")
+      ->check(CLI::IsMember({"soil", "all"}));
+  cmd->add_option("--atmosphere", args->atmosphere, "use only drops in vacuum, air, or all (default)")
+      ->check(CLI::IsMember({"vacuum", "air", "all"}));
+  cmd->add_option("--confidence", args->confidence, "confidence level of the interval (default 0.95)")
+      ->check(CLI::Range(0.5, 0.9999));
+  cmd->add_option("--out", args->out, "model file to write (MODEL.yaml)")->required();
+  cmd->callback([args] {
+    const drop::Dataset measured = drop::ReadDataset(args->measured);
+    drop::CalibrationOptions options;
+    options.per_soil = args->per == "soil";
+    options.atmosphere = args->atmosphere == "all" ? "" : args->atmosphere;
+    options.confidence = args->confidence;
+    const std::vector<drop::ZetaFit> fits = drop::CalibrateZeta(measured, options);
+    const drop::ModelFile model =
+        drop::CalibrationModel(fits, measured, std::filesystem::path(args->out).stem().string());
+    drop::WriteModelFile(model, args->out);
+    for (const drop::ZetaFit& f : fits)
+      std::cout << f.group << ": zeta = " << std::fixed << std::setprecision(4) << f.zeta_N_m3 / 1e6 << " N/cm^3, "
+                << std::setprecision(0) << 100 * options.confidence << " % interval [" << std::setprecision(4)
+                << f.low_N_m3 / 1e6 << ", " << f.high_N_m3 / 1e6 << "] from " << f.drops << " drops, " << f.samples
+                << " samples, residual RMS " << std::setprecision(3) << f.residual_rms_N << " N\n";
+    std::cout << "wrote " << args->out << "\n";
+  });
+}
+
+}  // namespace touchdown::app

@@ -1,0 +1,65 @@
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <nlohmann/json.hpp>
+
+#include "apps/commands.h"
+#include "drop_tests/compare.h"
+#include "rft/input_error.h"
+
+namespace touchdown::app {
+
+namespace {
+struct CompareArgs {
+  std::string measured, simulated, model, out;
+};
+}  // namespace
+
+void AddCompareCommand(CLI::App& app) {
+  auto args = std::make_shared<CompareArgs>();
+  CLI::App* cmd = app.add_subcommand("compare", "Compare measured drops with simulated ones (errors, NRMSE, plots)");
+  cmd->add_option("measured", args->measured, "measured dataset directory (drops.csv + traces)")->required();
+  auto* sim = cmd->add_option("--simulated", args->simulated,
+                              "simulated dataset directory to join on the drop conditions (default: simulate here)");
+  cmd->add_option("--model", args->model, "model file to simulate with (per-soil zeta)")->excludes(sim);
+  cmd->add_option("--out", args->out, "output directory (replaced when complete)")->required();
+  cmd->callback([args] {
+    const drop::Dataset measured = drop::ReadDataset(args->measured);
+    drop::Dataset simulated;
+    std::vector<const drop::DatasetDrop*> partners;
+    std::string from;
+    const bool simulate_here = args->simulated.empty();
+    if (simulate_here) {
+      std::optional<drop::ModelFile> model;
+      if (!args->model.empty()) model = drop::LoadModelFile(args->model);
+      simulated = drop::SimulateMeasuredDrops(measured, model);
+      for (const drop::DatasetDrop& d : simulated.drops) partners.push_back(&d);
+      from = model ? "model " + args->model : "catalogue soils";
+    } else {
+      simulated = drop::ReadDataset(args->simulated);
+      partners = drop::JoinOnConditions(measured, simulated);
+      from = "dataset " + args->simulated;
+    }
+    drop::Comparison c = drop::CompareDrops(measured, partners);
+    c.simulated_from = from;
+    drop::WriteComparison(c, measured, simulated, partners, simulate_here, args->out);
+    std::cout << std::left << std::setw(24) << "drop" << std::right << std::setw(14) << "depth err" << std::setw(14)
+              << "peak F err" << std::setw(14) << "NRMSE(t)" << std::setw(14) << "NRMSE(d)" << "\n";
+    auto pct = [](double v) {
+      std::ostringstream s;
+      s << std::fixed << std::setprecision(1) << 100.0 * v << " %";
+      return s.str();
+    };
+    for (const drop::DropComparison& d : c.drops)
+      std::cout << std::left << std::setw(24) << d.drop_id << std::right << std::setw(14)
+                << pct(d.final_penetration_rel_error) << std::setw(14) << pct(d.peak_force_rel_error) << std::setw(14)
+                << pct(d.force_nrmse_time.value) << std::setw(14) << pct(d.force_nrmse_penetration.value) << "\n";
+    std::cout << "mean |depth err| " << pct(c.final_penetration_rel_error) << ", mean |peak F err| "
+              << pct(c.peak_force_rel_error) << ", mean force NRMSE " << pct(c.force_nrmse) << " (time), "
+              << pct(c.force_nrmse_penetration) << " (penetration)\nwrote " << args->out
+              << "/ (summary.json, per_drop.csv, plots/)\n";
+  });
+}
+
+}  // namespace touchdown::app

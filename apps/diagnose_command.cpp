@@ -1,0 +1,47 @@
+// touchdown diagnose MEASURED_DIR [--model MODEL.yaml] --out DIR: the model-gap workflow
+// (drop_tests/diagnose.h, docs/model_gap.md).
+#include <iostream>
+#include <memory>
+#include <thread>
+
+#include "apps/commands.h"
+#include "drop_tests/diagnose.h"
+
+namespace touchdown::app {
+
+namespace {
+struct DiagnoseArgs {
+  std::string measured, model, out;
+  int threads = 0;
+  bool no_pairs = false;
+};
+}  // namespace
+
+void AddDiagnoseCommand(CLI::App& app) {
+  auto args = std::make_shared<DiagnoseArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "diagnose", "Find where simulation and measurement disagree, name the missing effect, show the gap shrink");
+  cmd->add_option("measured", args->measured, "measured dataset directory (drops.csv + traces)")->required();
+  cmd->add_option("--model", args->model, "model file whose zeta per soil starts the calibration");
+  cmd->add_option("--out", args->out, "output directory (replaced when complete)")->required();
+  cmd->add_option("--threads", args->threads, "threads (default: all cores)");
+  cmd->add_flag("--no-pairs", args->no_pairs, "do not try pairs of effects");
+  cmd->callback([args] {
+    drop::DiagnoseOptions o;
+    o.threads = args->threads > 0 ? args->threads : std::max(1u, std::thread::hardware_concurrency());
+    o.try_pairs = !args->no_pairs;
+    if (!args->model.empty()) o.start_model = drop::LoadModelFile(args->model);
+    const drop::Dataset ds = drop::ReadDataset(args->measured);
+    const drop::Diagnosis d = drop::RunDiagnosis(ds, o);
+    drop::WriteDiagnosis(d, ds, args->out);
+    const nlohmann::json j = drop::DiagnosisJson(d);
+    std::cout << nlohmann::json{{"named_effect", j["named_effect"]},     {"decision", j["decision"]},
+                                {"gap_before", j["gap_before"]["force_nrmse"]}, {"gap_after", j["gap_after"]["force_nrmse"]},
+                                {"gap_reduction", j["gap_reduction"]}, {"seconds", j["seconds"]},
+                                {"out", args->out}}
+                     .dump(2)
+              << std::endl;
+  });
+}
+
+}  // namespace touchdown::app

@@ -1,0 +1,28 @@
+#include <iostream>
+#include <memory>
+
+#include "apps/commands.h"
+#include "drop_tests/sweep_export.h"
+
+namespace touchdown::app {
+
+void AddExportCommand(CLI::App& app) {
+  auto dir = std::make_shared<std::string>();
+  auto to = std::make_shared<std::string>();
+  auto options = std::make_shared<drop::ExportOptions>();
+  CLI::App* cmd = app.add_subcommand("export", "Write a sweep's results (DIR/results.sqlite) in the dataset format");
+  cmd->add_option("dir", *dir, "sweep output directory")->required();
+  cmd->add_option("--to", *to, "dataset directory to write (replaced when complete)")->required();
+  cmd->add_flag("--full-traces", options->full_traces,
+                "simulate every drop again for its full 1 kHz trace (default: stored traces; re-simulated if none)");
+  cmd->add_option("--threads", options->threads, "threads for re-simulated traces (default: every core)");
+  cmd->callback([dir, to, options] {
+    const drop::ExportSummary s = drop::ExportSweep(*dir, *to, *options);
+    std::cout << "exported " << s.exported << " drops to " << *to << "/ (drops.csv, traces/)";
+    if (s.resimulated > 0) std::cout << "; " << s.resimulated << " traces simulated again";
+    if (s.failed > 0) std::cout << "; " << s.failed << " failed drops listed in failed.csv";
+    std::cout << "\n";
+  });
+}
+
+}  // namespace touchdown::app

@@ -1,0 +1,92 @@
+// touchdown force: the quasi-static soil wrench on a pad held at a depth, tilt and rigid motion.
+#include <cmath>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <numbers>
+#include <sstream>
+
+#include "apps/commands.h"
+#include "drop_tests/catalog.h"
+#include "drop_tests/pad_pose.h"
+#include "rft/contact_wrench.h"
+#include "rft/input_error.h"
+#include "rft/stress_law_3d_factory.h"
+
+namespace touchdown::app {
+
+namespace {
+struct ForceArgs {
+  std::string pad, soil, law = "li2013", tilt_axis = "x";
+  double depth_m = 0.0, tilt_deg = 0.0, gravity_m_s2 = 9.81;
+  std::vector<double> velocity{0.0, 0.0, -1.0}, omega{0.0, 0.0, 0.0};
+  std::optional<double> zeta_N_cm3;
+};
+
+Eigen::Vector3d Vector3(const std::vector<double>& v, const std::string& field) {
+  for (double c : v)
+    if (!std::isfinite(c)) throw MakeInputError("command line", field, "components must be finite");
+  return {v[0], v[1], v[2]};
+}
+
+void RequireFinite(double v, const std::string& field, bool positive) {
+  if (!std::isfinite(v) || (positive && !(v > 0.0))) {
+    std::ostringstream s;
+    s << "must be " << (positive ? "positive and " : "") << "finite, got " << v;
+    throw MakeInputError("command line", field, s.str());
+  }
+}
+}  // namespace
+
+void AddForceCommand(CLI::App& app) {
+  auto a = std::make_shared<ForceArgs>();
+  CLI::App* cmd = app.add_subcommand("force", "Quasi-static soil force and moment on a pad at a depth, tilt and motion");
+  cmd->add_option("--pad", a->pad, "pad name from data/pads or a pad YAML file")->required();
+  cmd->add_option("--soil", a->soil, "soil name from data/soils or a soil YAML file")->required();
+  cmd->add_option("--depth", a->depth_m, "depth of the pad's lowest point below the level surface [m]")->required();
+  cmd->add_option("--tilt-deg", a->tilt_deg, "tilt of the pad about --tilt-axis [deg]");
+  cmd->add_option("--tilt-axis", a->tilt_axis, "x or y (axes of the world frame, z up)");
+  cmd->add_option("--velocity", a->velocity, "rigid velocity of the reference point VX,VY,VZ [m/s] (default 0,0,-1)")
+      ->expected(3)->delimiter(',');
+  cmd->add_option("--omega", a->omega, "angular velocity WX,WY,WZ [rad/s]")->expected(3)->delimiter(',');
+  cmd->add_option("--law", a->law, "li2013 (Treers et al. 2021 3D decomposition) or agarwal2023");
+  cmd->add_option("--zeta", a->zeta_N_cm3, "override the soil's zeta [N/cm^3] (li2013)");
+  cmd->add_option("--gravity", a->gravity_m_s2, "gravity [m/s^2] the soil stresses scale with (default 9.81)");
+  cmd->callback([a] {
+    RequireFinite(a->depth_m, "depth_m", false);
+    RequireFinite(a->tilt_deg, "tilt_deg", false);
+    RequireFinite(a->gravity_m_s2, "gravity_m_s2", true);
+    if (a->zeta_N_cm3) RequireFinite(*a->zeta_N_cm3, "zeta_N_cm3", true);
+    rft::PadKinematics k;
+    k.v_WB_W = Vector3(a->velocity, "velocity");
+    k.w_WB_W = Vector3(a->omega, "omega");
+    if (k.v_WB_W.norm() == 0.0 && k.w_WB_W.norm() == 0.0)
+      throw MakeInputError("command line", "velocity", "the pad must move (RFT needs a direction of motion)");
+    k.R_WB = drop::TiltRotation(a->tilt_axis, a->tilt_deg * std::numbers::pi / 180.0);
+    const drop::PadSpec pad = drop::LoadPad(a->pad);
+    rft::SoilParameters soil = drop::LoadSoil(a->soil);
+    if (a->zeta_N_cm3) soil.zeta_N_m3 = *a->zeta_N_cm3 * 1e6;
+    const std::unique_ptr<rft::StressLaw3D> law = rft::MakeStressLaw3D(a->law, soil, a->gravity_m_s2);
+    k.p_WB = drop::PlaceAtDepth(pad.body, k.R_WB, a->depth_m);
+    const rft::ContactWrench w = rft::ComputeContactWrench(pad.body.surface, k, rft::PlaneGround(), *law);
+    const nlohmann::json out{
+        {"pad", pad.name},
+        {"soil", soil.name},
+        {"law", std::string(law->name())},
+        {"depth_m", a->depth_m},
+        {"tilt_deg", a->tilt_deg},
+        {"tilt_axis", a->tilt_axis},
+        {"velocity_m_s", a->velocity},
+        {"omega_rad_s", a->omega},
+        {"reference_point_m", {k.p_WB.x(), k.p_WB.y(), k.p_WB.z()}},
+        {"force_N", {w.force_W.x(), w.force_W.y(), w.force_W.z()}},
+        {"moment_Nm", {w.moment_W.x(), w.moment_W.y(), w.moment_W.z()}},
+        {"submerged_area_m2", w.submerged_area_m2},
+        {"leading_elements", w.leading_elements},
+        {"surface_elements", pad.body.surface.size()},
+    };
+    std::cout << out.dump(2) << std::endl;
+  });
+}
+
+}  // namespace touchdown::app

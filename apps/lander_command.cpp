@@ -1,0 +1,32 @@
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "apps/commands.h"
+#include "drop_tests/lander_scenario.h"
+
+namespace touchdown::app {
+
+namespace {
+struct LanderArgs {
+  std::string scenario, out;
+};
+}  // namespace
+
+void AddLanderCommand(CLI::App& app) {
+  auto args = std::make_shared<LanderArgs>();
+  CLI::App* cmd = app.add_subcommand("lander", "A four-legged lander drop with ball-jointed footpads");
+  cmd->add_option("scenario", args->scenario, "lander scenario YAML (e.g. data/scenarios/lander_case_A.yaml)")
+      ->required();
+  cmd->add_option("--out", args->out, "output directory (summary.json, trace.csv, events.csv, plots/, "
+                                      "scenario_resolved.yaml), written complete or not at all")
+      ->required();
+  cmd->callback([args] {
+    const drop::LanderScenario scenario = drop::LoadLanderScenario(args->scenario);
+    const drop::LanderRun run = drop::RunLanderScenario(scenario);
+    drop::WriteLanderOutputs(run, args->out);
+    std::cout << drop::LanderSummaryJson(run).dump(2) << std::endl;
+  });
+}
+
+}  // namespace touchdown::app

@@ -1,0 +1,57 @@
+#include <iomanip>
+#include <iostream>
+#include <memory>
+
+#include "apps/commands.h"
+#include "drop_tests/sweep.h"
+#include "drop_tests/sweep_mpi.h"
+#include "rft/input_error.h"
+
+namespace touchdown::app {
+
+namespace {
+struct SweepArgs {
+  std::string sweep, out, shard, model, progress = "auto";
+  int threads = 0;
+  int batch = 512;
+};
+}  // namespace
+
+void AddSweepCommand(CLI::App& app) {
+  auto args = std::make_shared<SweepArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "sweep", "Run a sweep of drops (grids, random samples) into DIR/results.sqlite; restartable; threads, MPI, shards");
+  cmd->add_option("sweep", args->sweep, "sweep YAML (e.g. data/sweeps/pad_speed_grid.yaml)")->required();
+  cmd->add_option("--out", args->out, "output directory; a restart with the same command finishes the missing drops")
+      ->required();
+  cmd->add_option("--threads", args->threads, "worker threads per process (default: every core)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--shard", args->shard, "I/N: run only drops with index mod N == I (job arrays; combine with merge)");
+  cmd->add_option("--model", args->model, "model file (MODEL.yaml) with per-soil zeta overrides");
+  cmd->add_option("--progress", args->progress, "auto (bar on a terminal, else lines), bar, lines or none")
+      ->check(CLI::IsMember({"auto", "bar", "lines", "none"}));
+  cmd->add_option("--batch", args->batch, "drops per database transaction (default 512)")->check(CLI::PositiveNumber);
+  cmd->callback([args] {
+    drop::SweepRunOptions options;
+    options.threads = args->threads;
+    if (!args->shard.empty()) options.shard = drop::ParseShard(args->shard);
+    options.batch_size = static_cast<size_t>(args->batch);
+    options.progress = args->progress == "bar"     ? drop::ProgressMode::kBar
+                       : args->progress == "lines" ? drop::ProgressMode::kLines
+                       : args->progress == "none"  ? drop::ProgressMode::kNone
+                                                   : drop::ProgressMode::kAuto;
+    const drop::SweepPlan plan = drop::LoadSweepPlan(args->sweep, args->model);
+    int rank = 0;
+    const drop::SweepRunSummary s = drop::LaunchedByMpirun() ? drop::RunSweepMpi(plan, args->out, options, &rank)
+                                                             : drop::RunSweep(plan, args->out, options);
+    if (rank != 0) return;
+    std::cout << "sweep " << plan.name << ": " << s.in_shard << " drops"
+              << (options.shard.count > 1 ? " in shard " + options.shard.Text() : std::string()) << " of "
+              << s.total << "; " << s.already_done << " already done, " << s.computed << " run now on " << s.ranks
+              << " rank(s) x " << s.threads << " thread(s) in " << std::fixed << std::setprecision(2) << s.seconds
+              << " s (" << std::setprecision(0) << (s.seconds > 0 ? s.computed / s.seconds : 0.0) << " drops/s); "
+              << s.failed << " failed\nwrote " << drop::ResultsDbPath(args->out) << "\n";
+  });
+}
+
+}  // namespace touchdown::app

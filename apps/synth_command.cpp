@@ -1,0 +1,33 @@
+// touchdown synth SPEC.yaml --out DATASET_DIR: a measured-like SYNTHETIC dataset (drop_tests/synth.h).
+#include <iostream>
+#include <memory>
+
+#include "apps/commands.h"
+#include "drop_tests/synth.h"
+
+namespace touchdown::app {
+
+namespace {
+struct SynthArgs {
+  std::string spec, out;
+};
+}  // namespace
+
+void AddSynthCommand(CLI::App& app) {
+  auto args = std::make_shared<SynthArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "synth", "Make a SYNTHETIC measured-like dataset (noise, drift, quantisation; optionally a hidden effect)");
+  cmd->add_option("spec", args->spec, "synth spec YAML (see docs/model_gap.md)")->required();
+  cmd->add_option("--out", args->out, "dataset directory to write (replaced when complete)")->required();
+  cmd->callback([args] {
+    const drop::SynthSpec spec = drop::LoadSynthSpec(args->spec);
+    const drop::Dataset ds = drop::Synthesize(spec);
+    drop::WriteSyntheticDataset(spec, ds, args->out);
+    std::cout << "wrote SYNTHETIC dataset " << args->out << " (" << ds.drops.size() << " drops"
+              << (spec.hidden_effect ? ", hidden effect " + spec.hidden_effect->id
+                                     : spec.floor ? std::string(", hidden floor_stiffening") : std::string())
+              << ")" << std::endl;
+  });
+}
+
+}  // namespace touchdown::app

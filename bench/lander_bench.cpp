@@ -1,0 +1,33 @@
+// A case-A lander drop (the paper's Table II, LP under all four pads): 1 s of simulated time
+// from release 10 cm above the bed, four meshed pads of about 2k triangles each (data/landers,
+// 64 segments around the rim). Target: faster than 50x real time on one core, i.e. under 20 ms
+// per iteration. The counter `realtime_factor` reports simulated seconds per wall second.
+#include <benchmark/benchmark.h>
+
+#include "drop_tests/lander_scenario.h"
+
+namespace {
+
+using namespace touchdown;
+
+void BM_LanderCaseA_1s(benchmark::State& state) {
+  const drop::LanderScenario scenario =
+      drop::LoadLanderScenario(drop::ResolveCatalogFile("scenarios", "lander_case_A"));
+  drop::LanderScenario run = scenario;
+  run.options.duration_s = 1.0;
+  const drop::LanderSetup setup = drop::BuildLanderSetup(run);
+  long steps = 0;
+  for (auto _ : state) {
+    const lander::LanderRunResult r = lander::SimulateLander(setup.model, setup.terrain, setup.initial, run.options);
+    benchmark::DoNotOptimize(r.final_penetration_m[0]);
+    steps = r.solver.steps;
+  }
+  state.counters["triangles_per_pad"] = setup.model.legs[0].pad->surface.size();
+  state.counters["solver_steps"] = static_cast<double>(steps);
+  state.counters["realtime_factor"] =
+      benchmark::Counter(run.options.duration_s * state.iterations(), benchmark::Counter::kIsRate);
+}
+
+BENCHMARK(BM_LanderCaseA_1s)->Unit(benchmark::kMillisecond)->MinTime(2.0);
+
+}  // namespace

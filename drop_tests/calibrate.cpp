@@ -1,0 +1,142 @@
+#include "drop_tests/calibrate.h"
+
+#include <boost/math/distributions/students_t.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <memory>
+
+#include "drop_tests/catalog.h"
+#include "footpad_geom/axisymmetric_intrusion.h"
+#include "rft/input_error.h"
+#include "rft/stress_law.h"
+
+namespace touchdown::drop {
+
+namespace fs = std::filesystem;
+
+std::vector<size_t> LoadingStrokeIndices(const DatasetTrace& trace) {
+  std::vector<size_t> out;
+  if (trace.size() == 0) return out;
+  const size_t deepest = static_cast<size_t>(
+      std::max_element(trace.penetration_m.begin(), trace.penetration_m.end()) - trace.penetration_m.begin());
+  for (size_t i = 0; i <= deepest; ++i)
+    if (trace.penetration_m[i] > 0.0) out.push_back(i);
+  return out;
+}
+
+ZetaFit FitZeta(const std::vector<StrokeSamples>& drops, double confidence) {
+  ZetaFit fit;
+  double sxx = 0.0, sxy = 0.0;
+  for (const StrokeSamples& d : drops) {
+    for (size_t i = 0; i < d.x.size(); ++i) sxx += d.x[i] * d.x[i], sxy += d.x[i] * d.force_N[i];
+    fit.samples += static_cast<long>(d.x.size());
+    fit.drops += d.x.empty() ? 0 : 1;
+  }
+  if (!(sxx > 0.0) || fit.samples < 2) throw InputError("calibrate: fewer than two loading-stroke samples to fit");
+  fit.zeta_N_m3 = sxy / sxx;
+  double sse = 0.0, score_sq = 0.0;
+  for (const StrokeSamples& d : drops) {
+    double score = 0.0;
+    for (size_t i = 0; i < d.x.size(); ++i) {
+      const double e = d.force_N[i] - fit.zeta_N_m3 * d.x[i];
+      sse += e * e;
+      score += d.x[i] * e;
+    }
+    score_sq += score * score;
+  }
+  fit.residual_rms_N = std::sqrt(sse / fit.samples);
+  if (fit.drops >= 2) {
+    const double g = fit.drops;
+    fit.standard_error_N_m3 = std::sqrt(g / (g - 1.0) * score_sq) / sxx;
+    fit.degrees_of_freedom = g - 1.0;
+    fit.method = "least squares of force on the quasi-static RFT force per unit zeta over the loading strokes; "
+                 "cluster-robust standard error (drops as clusters), Student t with drops - 1 dof";
+  } else {
+    fit.standard_error_N_m3 = std::sqrt(sse / (fit.samples - 1.0) / sxx);
+    fit.degrees_of_freedom = fit.samples - 1.0;
+    fit.method = "least squares of force on the quasi-static RFT force per unit zeta over the loading stroke; "
+                 "i.i.d. standard error (one drop), Student t with samples - 1 dof";
+  }
+  const boost::math::students_t t(fit.degrees_of_freedom);
+  const double q = boost::math::quantile(t, 0.5 + confidence / 2.0);
+  fit.low_N_m3 = fit.zeta_N_m3 - q * fit.standard_error_N_m3;
+  fit.high_N_m3 = fit.zeta_N_m3 + q * fit.standard_error_N_m3;
+  return fit;
+}
+
+std::vector<ZetaFit> CalibrateZeta(const Dataset& measured, const CalibrationOptions& options) {
+  if (!(options.confidence > 0.0 && options.confidence < 1.0))
+    throw MakeInputError("", "confidence", "must be between 0 and 1");
+  std::map<std::string, std::unique_ptr<geom::AxisymmetricIntrusion>> pads;
+  std::map<std::string, rft::SoilParameters> soils;
+  std::map<std::string, std::vector<StrokeSamples>> groups;
+  std::map<std::string, std::vector<std::pair<std::string, double>>> group_soils;
+  for (const DatasetDrop& d : measured.drops) {
+    if (!options.atmosphere.empty() && d.atmosphere != options.atmosphere) continue;
+    const std::string pad_ref = measured.PadReference(d), soil_ref = measured.SoilReference(d);
+    if (!pads.count(pad_ref)) {
+      const PadSpec pad = LoadPad(pad_ref);
+      pads.emplace(pad_ref, std::make_unique<geom::AxisymmetricIntrusion>(pad.profile, rft::Li2013Law{}));
+    }
+    if (!soils.count(soil_ref)) soils.emplace(soil_ref, LoadSoil(soil_ref));
+    const geom::AxisymmetricIntrusion& intrusion = *pads.at(pad_ref);
+    const rft::SoilParameters& soil = soils.at(soil_ref);
+    const double gravity_scale = d.gravity_m_s2 / soil.reference_gravity_m_s2;
+    StrokeSamples s;
+    for (size_t i : LoadingStrokeIndices(d.trace)) {
+      s.x.push_back(gravity_scale * intrusion.VerticalForce(d.trace.penetration_m[i], 1.0));
+      s.force_N.push_back(d.trace.force_N[i]);
+    }
+    const std::string group = options.per_soil ? soil.name : "all";
+    groups[group].push_back(std::move(s));
+    auto& names = group_soils[group];
+    const std::pair<std::string, double> entry{soil.name, soil.reference_gravity_m_s2};
+    if (std::find(names.begin(), names.end(), entry) == names.end()) names.push_back(entry);
+  }
+  if (groups.empty())
+    throw MakeInputError(measured.directory, "", "no drops to calibrate on" +
+                                                     (options.atmosphere.empty() ? std::string()
+                                                                                 : " in " + options.atmosphere));
+  std::vector<ZetaFit> fits;
+  for (const auto& [group, samples] : groups) {
+    ZetaFit fit;
+    try {
+      fit = FitZeta(samples, options.confidence);
+    } catch (const InputError& e) {
+      throw MakeInputError(measured.directory, "soil " + group, e.what());
+    }
+    fit.group = group;
+    for (const auto& [soil_name, g_ref] : group_soils.at(group)) {
+      fit.soils.push_back(soil_name);
+      fit.reference_gravities_m_s2.push_back(g_ref);
+    }
+    fit.confidence = options.confidence;
+    fits.push_back(fit);
+  }
+  return fits;
+}
+
+ModelFile CalibrationModel(const std::vector<ZetaFit>& fits, const Dataset& measured, const std::string& name) {
+  ModelFile m;
+  m.name = name;
+  m.description = "zeta calibrated by touchdown calibrate on " + fs::absolute(measured.directory).string();
+  for (const ZetaFit& f : fits)
+    for (size_t k = 0; k < f.soils.size(); ++k) {
+      const std::string& soil_name = f.soils[k];
+      SoilOverride o;
+      o.zeta_N_m3 = f.zeta_N_m3;
+      o.reference_gravity_m_s2 = f.reference_gravities_m_s2[k];
+      o.confidence = f.confidence;
+      o.zeta_low_N_m3 = f.low_N_m3;
+      o.zeta_high_N_m3 = f.high_N_m3;
+      SoilFit fit{f.method, f.drops, f.samples, f.residual_rms_N, fs::absolute(measured.directory).string()};
+      o.fit = fit;
+      m.soils[soil_name] = o;
+    }
+  return m;
+}
+
+}  // namespace touchdown::drop

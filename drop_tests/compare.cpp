@@ -1,0 +1,294 @@
+#include "drop_tests/compare.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+
+#include "drop_tests/atomic_file.h"
+#include "drop_tests/compare_gnuplot.h"
+#include "drop_tests/dataset_csv.h"
+#include "drop_tests/pad_drop.h"
+#include "rft/input_error.h"
+
+namespace touchdown::drop {
+
+namespace fs = std::filesystem;
+
+namespace {
+bool Close(double a, double b) { return std::abs(a - b) <= 1e-9 * std::max({1.0, std::abs(a), std::abs(b)}); }
+
+double ExtraOrZero(const Dataset& ds, const DatasetDrop& d, const std::string& column) {
+  return ds.ExtraNumber(d, column).value_or(0.0);
+}
+
+double Mean(const std::vector<double>& v) {
+  double s = 0.0;
+  size_t n = 0;
+  for (double x : v)
+    if (std::isfinite(x)) s += x, ++n;
+  return n ? s / n : std::nan("");
+}
+
+double RelError(double simulated, double measured) {
+  return measured != 0.0 ? (simulated - measured) / measured : std::nan("");
+}
+
+nlohmann::json Number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+}  // namespace
+
+double InterpolateClamped(const std::vector<double>& xs, const std::vector<double>& ys, double x) {
+  if (xs.empty()) return std::nan("");
+  if (x <= xs.front()) return ys.front();
+  if (x >= xs.back()) return ys.back();
+  const size_t k = static_cast<size_t>(std::upper_bound(xs.begin(), xs.end(), x) - xs.begin());
+  const double w = (x - xs[k - 1]) / (xs[k] - xs[k - 1]);
+  return ys[k - 1] + w * (ys[k] - ys[k - 1]);
+}
+
+NrmseResult ForceNrmseTime(const DatasetTrace& m, const DatasetTrace& s) {
+  NrmseResult r;
+  r.samples = m.size();
+  if (m.size() == 0 || s.size() == 0) return {std::nan(""), r.samples, 0};
+  const double peak = *std::max_element(m.force_N.begin(), m.force_N.end());
+  double sum = 0.0;
+  for (size_t i = 0; i < m.size(); ++i) {
+    // Before touchdown the pad is in the air (no force); after the simulated trace, at rest.
+    const double f_sim = m.t_s[i] < 0.0 ? 0.0 : InterpolateClamped(s.t_s, s.force_N, m.t_s[i]);
+    sum += (f_sim - m.force_N[i]) * (f_sim - m.force_N[i]);
+    ++r.used;
+  }
+  r.value = peak > 0.0 ? std::sqrt(sum / r.used) / peak : std::nan("");
+  return r;
+}
+
+NrmseResult ForceNrmsePenetration(const DatasetTrace& m, const DatasetTrace& s) {
+  NrmseResult r;
+  if (m.size() == 0 || s.size() == 0) return {std::nan(""), 0, 0};
+  const double peak = *std::max_element(m.force_N.begin(), m.force_N.end());
+  // The simulated stroke as a strictly increasing F(d): up to its deepest sample.
+  std::vector<double> ds, fs;
+  const size_t s_end = static_cast<size_t>(std::max_element(s.penetration_m.begin(), s.penetration_m.end()) -
+                                           s.penetration_m.begin());
+  for (size_t i = 0; i <= s_end; ++i)
+    if (s.penetration_m[i] >= 0.0 && (ds.empty() || s.penetration_m[i] > ds.back())) {
+      ds.push_back(s.penetration_m[i]);
+      fs.push_back(s.force_N[i]);
+    }
+  const size_t m_end = static_cast<size_t>(std::max_element(m.penetration_m.begin(), m.penetration_m.end()) -
+                                           m.penetration_m.begin());
+  double sum = 0.0;
+  for (size_t i = 0; i <= m_end; ++i) {
+    const double d = m.penetration_m[i];
+    if (!(d > 0.0)) continue;
+    ++r.samples;
+    if (ds.size() < 2 || d > ds.back()) continue;  // beyond the simulated stroke
+    const double f_sim = InterpolateClamped(ds, fs, d);
+    sum += (f_sim - m.force_N[i]) * (f_sim - m.force_N[i]);
+    ++r.used;
+  }
+  r.value = r.used > 0 && peak > 0.0 ? std::sqrt(sum / r.used) / peak : std::nan("");
+  return r;
+}
+
+Dataset SimulateMeasuredDrops(const Dataset& measured, const std::optional<ModelFile>& model) {
+  Dataset out;
+  out.extra_columns = {"zeta_N_cm3", "time_to_rest_s", "mean_conversion_rate_W"};
+  std::map<std::string, PadSpec> pads;
+  std::map<std::string, rft::SoilParameters> soils;
+  const std::string file = (fs::path(measured.directory) / "drops.csv").string();
+  for (const DatasetDrop& m : measured.drops) {
+    for (const char* column : {"tilt_deg", "horizontal_speed_m_s"})
+      if (ExtraOrZero(measured, m, column) != 0.0)
+        throw MakeInputError(file, "drop " + m.drop_id + ", column " + column,
+                             "non-zero values need the 6-DOF free drop, not in this build");
+    const std::string pad_ref = measured.PadReference(m), soil_ref = measured.SoilReference(m);
+    if (!pads.count(pad_ref)) pads.emplace(pad_ref, LoadPad(pad_ref));
+    if (!soils.count(soil_ref)) soils.emplace(soil_ref, model ? ApplyModel(*model, LoadSoil(soil_ref)) : LoadSoil(soil_ref));
+    DropConditions c;
+    c.impact_speed_m_s = m.impact_speed_m_s;
+    c.mass_kg = m.pad_mass_kg;
+    c.gravity_m_s2 = m.gravity_m_s2;
+    const PadDrop d = RunPadDrop(pads.at(pad_ref), soils.at(soil_ref), c);
+    DatasetDrop s;
+    s.drop_id = m.drop_id;
+    s.pad = m.pad;
+    s.soil = m.soil;
+    s.atmosphere = m.atmosphere;
+    s.impact_speed_m_s = m.impact_speed_m_s;
+    s.pad_mass_kg = m.pad_mass_kg;
+    s.gravity_m_s2 = m.gravity_m_s2;
+    s.trace_file = "traces/" + m.drop_id + ".csv";
+    s.final_penetration_m = d.result.final_penetration_m;
+    s.peak_force_N = d.result.peak_force_N;
+    s.extra = {FormatNumber(d.zeta_effective_N_m3 / 1e6), FormatNumber(d.result.time_to_rest_s),
+               FormatNumber(d.result.mean_conversion_rate_W)};
+    s.trace.extra_columns = {"velocity_m_s"};
+    s.trace.extra.resize(1);
+    for (const DropSample& p : d.result.trace) {
+      s.trace.t_s.push_back(p.t_s);
+      s.trace.penetration_m.push_back(p.penetration_m);
+      s.trace.force_N.push_back(p.force_N);
+      s.trace.extra[0].push_back(p.velocity_m_s);
+    }
+    out.drops.push_back(std::move(s));
+  }
+  return out;
+}
+
+std::vector<const DatasetDrop*> JoinOnConditions(const Dataset& measured, const Dataset& simulated) {
+  std::vector<const DatasetDrop*> partners;
+  for (const DatasetDrop& m : measured.drops) {
+    const DatasetDrop* match = nullptr;
+    for (const DatasetDrop& s : simulated.drops) {
+      if (s.pad != m.pad || s.soil != m.soil || s.atmosphere != m.atmosphere) continue;
+      if (!Close(s.impact_speed_m_s, m.impact_speed_m_s) || !Close(s.pad_mass_kg, m.pad_mass_kg) ||
+          !Close(s.gravity_m_s2, m.gravity_m_s2))
+        continue;
+      bool same = true;
+      for (const char* column : {"tilt_deg", "horizontal_speed_m_s"})
+        same &= Close(ExtraOrZero(simulated, s, column), ExtraOrZero(measured, m, column));
+      if (same) {
+        match = &s;
+        break;
+      }
+    }
+    if (!match)
+      throw MakeInputError((fs::path(measured.directory) / "drops.csv").string(), "drop " + m.drop_id,
+                           "no simulated drop in " + simulated.directory + " with the same pad, soil, atmosphere, "
+                           "impact speed, mass and gravity");
+    partners.push_back(match);
+  }
+  return partners;
+}
+
+Comparison CompareDrops(const Dataset& measured, const std::vector<const DatasetDrop*>& partners) {
+  Comparison c;
+  std::vector<double> pen, peak, pen_signed, peak_signed, nrmse_t, nrmse_d;
+  for (size_t i = 0; i < measured.drops.size(); ++i) {
+    const DatasetDrop& m = measured.drops[i];
+    const DatasetDrop& s = *partners[i];
+    DropComparison d;
+    d.drop_id = m.drop_id;
+    d.simulated_id = s.drop_id;
+    d.pad = m.pad;
+    d.soil = m.soil;
+    d.atmosphere = m.atmosphere;
+    d.impact_speed_m_s = m.impact_speed_m_s;
+    d.measured_final_penetration_m = m.FinalPenetration();
+    d.simulated_final_penetration_m = s.FinalPenetration();
+    d.measured_peak_force_N = m.PeakForce();
+    d.simulated_peak_force_N = s.PeakForce();
+    d.final_penetration_rel_error = RelError(d.simulated_final_penetration_m, d.measured_final_penetration_m);
+    d.peak_force_rel_error = RelError(d.simulated_peak_force_N, d.measured_peak_force_N);
+    d.force_nrmse_time = ForceNrmseTime(m.trace, s.trace);
+    d.force_nrmse_penetration = ForceNrmsePenetration(m.trace, s.trace);
+    pen.push_back(std::abs(d.final_penetration_rel_error));
+    peak.push_back(std::abs(d.peak_force_rel_error));
+    pen_signed.push_back(d.final_penetration_rel_error);
+    peak_signed.push_back(d.peak_force_rel_error);
+    nrmse_t.push_back(d.force_nrmse_time.value);
+    nrmse_d.push_back(d.force_nrmse_penetration.value);
+    c.drops.push_back(std::move(d));
+  }
+  c.final_penetration_rel_error = Mean(pen);
+  c.peak_force_rel_error = Mean(peak);
+  c.final_penetration_bias = Mean(pen_signed);
+  c.peak_force_bias = Mean(peak_signed);
+  c.force_nrmse = Mean(nrmse_t);
+  c.force_nrmse_penetration = Mean(nrmse_d);
+  return c;
+}
+
+nlohmann::json ComparisonJson(const Comparison& c) {
+  nlohmann::json drops = nlohmann::json::array();
+  for (const DropComparison& d : c.drops)
+    drops.push_back({{"drop_id", d.drop_id},
+                     {"simulated_id", d.simulated_id},
+                     {"pad", d.pad},
+                     {"soil", d.soil},
+                     {"atmosphere", d.atmosphere},
+                     {"impact_speed_m_s", d.impact_speed_m_s},
+                     {"measured_final_penetration_m", Number(d.measured_final_penetration_m)},
+                     {"simulated_final_penetration_m", Number(d.simulated_final_penetration_m)},
+                     {"final_penetration_rel_error", Number(d.final_penetration_rel_error)},
+                     {"measured_peak_force_N", Number(d.measured_peak_force_N)},
+                     {"simulated_peak_force_N", Number(d.simulated_peak_force_N)},
+                     {"peak_force_rel_error", Number(d.peak_force_rel_error)},
+                     {"force_nrmse_time", Number(d.force_nrmse_time.value)},
+                     {"force_nrmse_penetration", Number(d.force_nrmse_penetration.value)},
+                     {"penetration_samples", d.force_nrmse_penetration.samples},
+                     {"penetration_samples_used", d.force_nrmse_penetration.used}});
+  return {{"drops_compared", c.drops.size()},
+          {"simulated_from", c.simulated_from},
+          {"final_penetration_rel_error", Number(c.final_penetration_rel_error)},
+          {"peak_force_rel_error", Number(c.peak_force_rel_error)},
+          {"force_nrmse", Number(c.force_nrmse)},
+          {"force_nrmse_penetration", Number(c.force_nrmse_penetration)},
+          {"final_penetration_bias", Number(c.final_penetration_bias)},
+          {"peak_force_bias", Number(c.peak_force_bias)},
+          {"definitions",
+           {{"final_penetration_rel_error", "mean over drops of |d_sim - d_meas| / d_meas"},
+            {"peak_force_rel_error", "mean over drops of |F_sim - F_meas| / F_meas"},
+            {"force_nrmse", "mean over drops of sqrt(mean_i (F_sim(t_i) - F_i)^2) / max_i F_i, "
+                            "over all measured samples i (F_sim interpolated in time)"},
+            {"force_nrmse_penetration", "mean over drops of sqrt(mean_i (F_sim(d_i) - F_i)^2) / max_i F_i, "
+                                        "over the measured loading stroke where the simulated stroke reaches"},
+            {"bias", "signed means of the relative errors (simulated - measured) / measured"}}},
+          {"drops", drops}};
+}
+
+void WriteComparison(const Comparison& c, const Dataset& measured, const Dataset& simulated,
+                     const std::vector<const DatasetDrop*>& partners, bool write_simulated, const std::string& out_dir) {
+  const nlohmann::json summary = ComparisonJson(c);
+  WriteStagedDirectory(out_dir, [&](const std::string& staging) {
+    const fs::path dir = staging;
+    WriteFileAtomically((dir / "summary.json").string(), [&](std::ostream& out) { out << summary.dump(2) << '\n'; });
+    WriteFileAtomically((dir / "per_drop.csv").string(), [&](std::ostream& out) {
+      out << "drop_id,simulated_id,pad,soil,atmosphere,impact_speed_m_s,measured_final_penetration_m,"
+             "simulated_final_penetration_m,final_penetration_rel_error,measured_peak_force_N,simulated_peak_force_N,"
+             "peak_force_rel_error,force_nrmse_time,force_nrmse_penetration\n";
+      for (const DropComparison& d : c.drops)
+        out << d.drop_id << ',' << d.simulated_id << ',' << d.pad << ',' << d.soil << ',' << d.atmosphere << ','
+            << FormatNumber(d.impact_speed_m_s) << ',' << FormatNumber(d.measured_final_penetration_m) << ','
+            << FormatNumber(d.simulated_final_penetration_m) << ',' << FormatNumber(d.final_penetration_rel_error)
+            << ',' << FormatNumber(d.measured_peak_force_N) << ',' << FormatNumber(d.simulated_peak_force_N) << ','
+            << FormatNumber(d.peak_force_rel_error) << ',' << FormatNumber(d.force_nrmse_time.value) << ','
+            << FormatNumber(d.force_nrmse_penetration.value) << '\n';
+    });
+    // Plot data: each pair's traces copied beside the script, so the plots re-render anywhere.
+    fs::create_directories(dir / "plots" / "data");
+    std::string gp = "set terminal pngcairo size 1100,450 font 'sans,10'\nset termoption noenhanced\n"
+                     "set datafile separator ','\nset grid\nset key top right\n";
+    for (size_t i = 0; i < measured.drops.size(); ++i) {
+      const DatasetDrop& m = measured.drops[i];
+      const DatasetDrop& s = *partners[i];
+      for (const auto& [tag, drop] : {std::pair<const char*, const DatasetDrop*>{"measured", &m}, {"simulated", &s}})
+        WriteFileAtomically((dir / "plots" / "data" / (m.drop_id + "_" + tag + ".csv")).string(), [&](std::ostream& out) {
+          out << "t_s,penetration_m,force_N\n";
+          for (size_t k = 0; k < drop->trace.size(); ++k)
+            out << FormatNumber(drop->trace.t_s[k]) << ',' << FormatNumber(drop->trace.penetration_m[k]) << ','
+                << FormatNumber(drop->trace.force_N[k]) << '\n';
+        });
+      const std::string meas = GnuplotQuote("plots/data/" + m.drop_id + "_measured.csv");
+      const std::string sim = GnuplotQuote("plots/data/" + m.drop_id + "_simulated.csv");
+      gp += "set output " + GnuplotQuote("plots/" + m.drop_id + ".png") + "\nset multiplot layout 1,2 title " +
+            GnuplotQuote(m.drop_id + ": " + m.pad + " on " + m.soil + " (" + m.atmosphere + "), " +
+                         FormatNumber(m.impact_speed_m_s) + " m/s") +
+            "\nset xlabel 't [ms]'\nset ylabel 'force [N]'\nplot " + meas +
+            " using ($1*1000):3 skip 1 with points pt 7 ps 0.4 title 'measured', " + sim +
+            " using ($1*1000):3 skip 1 with lines lw 2 title 'simulated'\n"
+            "set xlabel 'penetration [mm]'\nplot " + meas + " using ($2*1000):3 skip 1 with points pt 7 ps 0.4 title "
+            "'measured', " + sim + " using ($2*1000):3 skip 1 with lines lw 2 title 'simulated'\nunset multiplot\n";
+    }
+    WriteFileAtomically((dir / "plots" / "compare.gp").string(), [&](std::ostream& out) { out << gp; });
+    if (write_simulated) {
+      WriteDataset(simulated, (dir / "simulated").string());
+    }
+    RunGnuplot(staging, "plots/compare.gp");
+  });
+}
+
+}  // namespace touchdown::drop

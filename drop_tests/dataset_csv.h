@@ -1,0 +1,39 @@
+#pragma once
+// Plain comma-separated tables as the dataset format uses them: a header line, then rows of
+// cells; no quoting (names and paths in a dataset contain no commas). Numbers are written in
+// the shortest form that reads back to the same double (std::to_chars), so a write-read round
+// trip is exact. Every error names the file, the 1-based line and the column.
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace touchdown::drop {
+
+struct CsvTable {
+  std::string file;
+  std::vector<std::string> header;
+  std::vector<std::vector<std::string>> rows;
+  std::vector<int> row_lines;  // the file line of each row (1-based; the header is line 1)
+
+  // Index of `column` in the header, or -1.
+  int Find(const std::string& column) const;
+  // Index of a required column; throws InputError naming the file and the column if missing.
+  int Require(const std::string& column) const;
+  // The cell as a finite double; throws InputError naming file, line and column otherwise.
+  double Number(size_t row, int column) const;
+  [[noreturn]] void Fail(size_t row, int column, const std::string& message) const;
+};
+
+// Reads the whole file; every row must have as many cells as the header. Blank lines at the
+// end are allowed, "\r\n" line ends too.
+CsvTable ReadCsv(const std::string& path);
+// Shortest decimal that parses back to exactly `value`.
+std::string FormatNumber(double value);
+// Strict parse of a whole cell into a finite double (false on anything else).
+bool ParseNumber(const std::string& cell, double* value);
+
+// Fills a fresh staging directory beside `directory` and renames it into place (replacing an
+// older one) only when `fill` returns; on an exception the staging directory is removed.
+void WriteStagedDirectory(const std::string& directory, const std::function<void(const std::string& staging)>& fill);
+
+}  // namespace touchdown::drop

@@ -1,0 +1,174 @@
+#include "drop_tests/free_drop.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include "drop_tests/pad_pose.h"
+#include "rft/contact_wrench.h"
+
+namespace touchdown::drop {
+
+namespace {
+// State layout: centre of mass p_WC, attitude quaternion q_WB (w, x, y, z), velocity v_WC,
+// body-frame angular velocity w_B, work done against the soil.
+enum : int { kP = 0, kQ = 3, kV = 7, kW = 10, kWork = 13, kSize = 14 };
+
+struct Pose {
+  Eigen::Matrix3d R_WB;
+  Eigen::Vector3d p_WC, p_WB, v_WC, w_B, w_W, v_WB;
+};
+
+Pose PoseOf(const geom::PadBody& body, const Eigen::Ref<const Eigen::VectorXd>& y) {
+  Pose s;
+  const Eigen::Quaterniond q(y[kQ], y[kQ + 1], y[kQ + 2], y[kQ + 3]);
+  s.R_WB = q.normalized().toRotationMatrix();
+  s.p_WC = y.segment<3>(kP);
+  s.v_WC = y.segment<3>(kV);
+  s.w_B = y.segment<3>(kW);
+  s.w_W = s.R_WB * s.w_B;
+  s.p_WB = s.p_WC - s.R_WB * body.com_B;
+  s.v_WB = s.v_WC + s.w_W.cross(s.p_WB - s.p_WC);
+  return s;
+}
+
+double Depth(const geom::PadBody& body, const rft::GroundSurface& ground, const Pose& s) {
+  // Depth of the deepest vertex below the surface (vertical, as RFT measures it).
+  double deepest = -INFINITY;
+  for (const Eigen::Matrix3Xd* v : {&body.surface.p0_B, &body.surface.p1_B, &body.surface.p2_B})
+    for (int i = 0; i < v->cols(); ++i) deepest = std::max(deepest, ground.Depth(s.p_WB + s.R_WB * v->col(i)));
+  return deepest;
+}
+
+// Radius of the pad about its centre of mass: spin times it is a speed.
+double BodyRadius(const geom::PadBody& body) {
+  double r = 0.0;
+  for (const Eigen::Matrix3Xd* v : {&body.surface.p0_B, &body.surface.p1_B, &body.surface.p2_B})
+    r = std::max(r, (v->colwise() - body.com_B).colwise().norm().maxCoeff());
+  return r;
+}
+}  // namespace
+
+FreeDropResult RunFreeDrop(const geom::PadBody& body, const rft::StressLaw3D& law, const rft::GroundSurface& ground,
+                           const FreeDropInput& in, const FreeDropOptions& options) {
+  if (!(body.mass_kg > 0.0) || body.surface.size() == 0) throw std::invalid_argument("RunFreeDrop: empty pad body");
+  if (!(in.gravity_m_s2 > 0.0) || !(in.impact_speed_m_s >= 0.0) || !std::isfinite(in.horizontal_speed_m_s) ||
+      !std::isfinite(in.tilt_rad) || !in.omega_W.allFinite())
+    throw std::invalid_argument("RunFreeDrop: invalid input");
+  const double m = body.mass_kg, g = in.gravity_m_s2;
+  const Eigen::Matrix3d I = body.inertia_com_B, I_inv = I.inverse();
+  const double radius = BodyRadius(body);
+
+  auto wrench_at = [&](const Pose& s) {
+    rft::PadKinematics k{s.R_WB, s.p_WB, s.v_WB, s.w_W};
+    return rft::ComputeContactWrench(body.surface, k, ground, law);
+  };
+  auto rhs = [&](double, Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::VectorXd> ydot) {
+    const Pose s = PoseOf(body, y);
+    const bool moving = s.v_WB.squaredNorm() + s.w_W.squaredNorm() * radius * radius > 0.0;
+    const rft::ContactWrench w = moving ? wrench_at(s) : rft::ContactWrench{};
+    const Eigen::Vector3d M_C = w.moment_W + (s.p_WB - s.p_WC).cross(w.force_W);
+    ydot.segment<3>(kP) = s.v_WC;
+    const Eigen::Vector4d q = y.segment<4>(kQ);
+    const Eigen::Vector3d& wb = s.w_B;
+    ydot.segment<4>(kQ) << -0.5 * (q[1] * wb.x() + q[2] * wb.y() + q[3] * wb.z()),
+        0.5 * (q[0] * wb.x() + q[2] * wb.z() - q[3] * wb.y()), 0.5 * (q[0] * wb.y() + q[3] * wb.x() - q[1] * wb.z()),
+        0.5 * (q[0] * wb.z() + q[1] * wb.y() - q[2] * wb.x());
+    ydot.segment<3>(kV) = w.force_W / m - Eigen::Vector3d(0.0, 0.0, g);
+    ydot.segment<3>(kW) = I_inv * (s.R_WB.transpose() * M_C - wb.cross(I * wb));
+    ydot[kWork] = -(w.force_W.dot(s.v_WB) + w.moment_W.dot(s.w_W));
+  };
+  const double rest_speed = options.rest_speed_m_s;
+  integ::RootSpec roots;
+  roots.count = 2;  // [0] touchdown (depth rises through 0), [1] rest (speed falls below threshold)
+  roots.directions = {+1, -1};
+  roots.function = [&](double, Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::VectorXd> gv) {
+    const Pose s = PoseOf(body, y);
+    gv[0] = Depth(body, ground, s);
+    gv[1] = s.v_WC.squaredNorm() + s.w_W.squaredNorm() * radius * radius - rest_speed * rest_speed;
+  };
+  integ::CvodeIntegrator integrator(kSize, rhs, options.integrator, roots);
+
+  // Release: tilted, lowest point `clearance` above the surface, speed chosen to reach the
+  // requested vertical impact speed at touchdown.
+  const double v_td = in.impact_speed_m_s;
+  const double clearance = std::min(options.approach_clearance_m, v_td * v_td / (4.0 * g));
+  const Eigen::Matrix3d R0 = TiltRotation(in.tilt_axis, in.tilt_rad);
+  const Eigen::Quaterniond q0(R0);
+  Eigen::VectorXd y = Eigen::VectorXd::Zero(kSize);
+  y.segment<3>(kP) = PlaceAtDepth(body, R0, -clearance) + R0 * body.com_B;
+  y.segment<4>(kQ) << q0.w(), q0.x(), q0.y(), q0.z();
+  y.segment<3>(kV) << in.horizontal_speed_m_s, 0.0, -std::sqrt(std::max(v_td * v_td - 2.0 * g * clearance, 0.0));
+  y.segment<3>(kW) = R0.transpose() * in.omega_W;
+  if (clearance > 0.0) {
+    integrator.Reset(0.0, y);
+    const integ::AdvanceResult r = integrator.AdvanceTo(10.0 * std::sqrt(2.0 * clearance / g) + 1.0);
+    if (r.status != integ::AdvanceStatus::kFoundRoot || r.roots_found[0] == 0)
+      throw integ::IntegrationFailure("touchdown was not reached during the approach");
+    y = integrator.state();
+  }
+  y[kWork] = 0.0;
+  integrator.Reset(0.0, y);
+
+  FreeDropResult result;
+  const Pose s0 = PoseOf(body, y);
+  const double z_C0 = s0.p_WC.z();
+  const Eigen::Vector2d xy_C0 = s0.p_WC.head<2>();
+  result.impact_energy_J = 0.5 * m * s0.v_WC.squaredNorm() + 0.5 * s0.w_B.dot(I * s0.w_B);
+  result.touchdown_tilt_deg = TiltFromVertical(s0.R_WB) * 180.0 / std::numbers::pi;
+  auto record = [&](double t, const Eigen::VectorXd& state) {
+    const Pose s = PoseOf(body, state);
+    const bool moving = s.v_WB.squaredNorm() + s.w_W.squaredNorm() * radius * radius > 0.0;
+    // At rest the soil carries the weight: report the static reaction, as the rig drop does.
+    const Eigen::Vector3d f = moving ? wrench_at(s).force_W : Eigen::Vector3d(0.0, 0.0, m * g);
+    result.trace.push_back({t, std::max(Depth(body, ground, s), 0.0), -s.v_WC.z(), f.z(), f.x(),
+                            s.p_WC.x() - xy_C0.x(), TiltFromVertical(s.R_WB) * 180.0 / std::numbers::pi});
+    result.peak_force_N = std::max(result.peak_force_N, f.z());
+    if (moving) result.max_deceleration_m_s2 = std::max(result.max_deceleration_m_s2, f.z() / m - g);
+  };
+  record(0.0, y);
+
+  // Stroke: sample at the output rate until the rest event with enough static capacity.
+  const double dt = 1.0 / options.sample_rate_hz;
+  double t_rest = -1.0;
+  long k = 1;
+  while (t_rest < 0.0) {
+    const double t_out = k * dt;
+    if (t_out > options.max_duration_s)
+      throw integ::IntegrationFailure("the pad did not come to rest within " + std::to_string(options.max_duration_s) +
+                                      " s");
+    const integ::AdvanceResult r = integrator.AdvanceTo(t_out);
+    if (r.status == integ::AdvanceStatus::kReachedTime) {
+      record(t_out, integrator.state());
+      ++k;
+      continue;
+    }
+    if (r.roots_found[1] == 0) continue;  // a touchdown re-crossing: go on to the same output time
+    // Slow enough: rest if pushing straight down meets at least the weight.
+    Eigen::VectorXd s = integrator.state();
+    Pose probe = PoseOf(body, s);
+    rft::PadKinematics down{probe.R_WB, probe.p_WB, Eigen::Vector3d(0.0, 0.0, -1.0), Eigen::Vector3d::Zero()};
+    const double capacity = rft::ComputeContactWrench(body.surface, down, ground, law).force_W.z();
+    if (capacity >= m * g) {
+      t_rest = r.t;
+      result.final_kinetic_energy_J = 0.5 * m * probe.v_WC.squaredNorm() + 0.5 * probe.w_B.dot(I * probe.w_B);
+      s.segment<3>(kV).setZero();
+      s.segment<3>(kW).setZero();
+      record(t_rest, s);
+      y = s;
+    }
+  }
+  const Pose end = PoseOf(body, y);
+  result.time_to_rest_s = t_rest;
+  result.final_penetration_m = std::max(Depth(body, ground, end), 0.0);
+  result.dissipated_energy_J = y[kWork];
+  result.gravity_work_J = m * g * (z_C0 - end.p_WC.z());
+  result.final_tilt_deg = TiltFromVertical(end.R_WB) * 180.0 / std::numbers::pi;
+  result.horizontal_travel_m = (end.p_WC.head<2>() - xy_C0).norm();
+  result.solver = integrator.summary();
+  return result;
+}
+
+}  // namespace touchdown::drop

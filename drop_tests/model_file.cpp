@@ -1,0 +1,127 @@
+#include "drop_tests/model_file.h"
+
+#include <filesystem>
+
+#include "drop_tests/atomic_file.h"
+#include "drop_tests/dataset_csv.h"
+#include "drop_tests/effects.h"
+#include "drop_tests/yaml_fields.h"
+#include "rft/input_error.h"
+
+namespace touchdown::drop {
+
+namespace {
+constexpr double kNcm3 = 1e6;  // N/cm^3 -> N/m^3
+
+SoilOverride ReadOverride(const YamlFields& f) {
+  f.RequireOnly({"zeta_N_cm3", "reference_gravity_m_s2", "zeta_interval_N_cm3", "confidence", "fit"});
+  SoilOverride o;
+  o.zeta_N_m3 = f.Positive("zeta_N_cm3") * kNcm3;
+  o.reference_gravity_m_s2 = f.PositiveOr("reference_gravity_m_s2", 9.81);
+  if (f.Has("zeta_interval_N_cm3")) {
+    const YAML::Node n = f.node()["zeta_interval_N_cm3"];
+    double lo = 0, hi = 0;
+    if (!n.IsSequence() || n.size() != 2 || !YAML::convert<double>::decode(n[0], lo) ||
+        !YAML::convert<double>::decode(n[1], hi) || !std::isfinite(lo) || !std::isfinite(hi) || !(lo <= hi))
+      f.Fail("zeta_interval_N_cm3", "must be [low, high] with low <= high");
+    o.zeta_low_N_m3 = lo * kNcm3;
+    o.zeta_high_N_m3 = hi * kNcm3;
+  }
+  if (f.Has("confidence")) {
+    o.confidence = f.Positive("confidence");
+    if (o.confidence >= 1.0) f.Fail("confidence", "must be below 1");
+  }
+  if (f.Has("fit")) {
+    const YamlFields fit = f.Child("fit");
+    fit.RequireOnly({"method", "drops", "samples", "residual_rms_N", "dataset"});
+    SoilFit s;
+    s.method = fit.StringOr("method", "");
+    if (fit.Has("drops")) s.drops = fit.PositiveInt("drops");
+    if (fit.Has("samples")) s.samples = fit.PositiveInt("samples");
+    if (fit.Has("residual_rms_N")) s.residual_rms_N = fit.NonNegative("residual_rms_N");
+    s.dataset = fit.StringOr("dataset", "");
+    o.fit = s;
+  }
+  return o;
+}
+}  // namespace
+
+ModelFile LoadModelFile(const std::string& path) {
+  const YamlFields f = YamlFields::LoadFile(path);
+  f.RequireSchemaVersion(1);
+  f.RequireOnly({"schema_version", "type", "name", "description", "soils", "effects", "provenance"});
+  if (f.String("type") != "model") f.Fail("type", "must be 'model', got '" + f.String("type") + "'");
+  ModelFile m;
+  m.source = path;
+  m.name = f.StringOr("name", std::filesystem::path(path).stem().string());
+  m.description = f.StringOr("description", "");
+  if (f.Has("soils")) {
+    const YamlFields soils = f.Child("soils");
+    for (const auto& item : soils.node()) {
+      const std::string name = item.first.Scalar();
+      m.soils[name] = ReadOverride(soils.Child(name));
+    }
+  }
+  if (f.Has("effects")) {
+    if (!f.node()["effects"].IsMap()) f.Fail("effects", "must be a mapping of effect terms");
+    m.effects = f.node()["effects"];
+    ParseEffects(f.Child("effects"));  // issue 6: validates ids, parameters and ranges (drop_tests/effects.h)
+  }
+  if (f.Has("provenance")) m.provenance = f.node()["provenance"];
+  return m;
+}
+
+void WriteModelFile(const ModelFile& m, const std::string& path) {
+  YAML::Emitter y;
+  y.SetDoublePrecision(10);
+  y << YAML::BeginMap << YAML::Key << "schema_version" << YAML::Value << 1 << YAML::Key << "type" << YAML::Value
+    << "model";
+  if (!m.name.empty()) y << YAML::Key << "name" << YAML::Value << m.name;
+  if (!m.description.empty()) y << YAML::Key << "description" << YAML::Value << m.description;
+  y << YAML::Key << "soils" << YAML::Value << YAML::BeginMap;
+  for (const auto& [name, o] : m.soils) {
+    y << YAML::Key << name << YAML::Value << YAML::BeginMap << YAML::Key << "zeta_N_cm3" << YAML::Value
+      << o.zeta_N_m3 / kNcm3 << YAML::Key << "reference_gravity_m_s2" << YAML::Value << o.reference_gravity_m_s2;
+    if (o.zeta_low_N_m3 && o.zeta_high_N_m3)
+      y << YAML::Key << "zeta_interval_N_cm3" << YAML::Value << YAML::Flow << YAML::BeginSeq
+        << *o.zeta_low_N_m3 / kNcm3 << *o.zeta_high_N_m3 / kNcm3 << YAML::EndSeq << YAML::Key << "confidence"
+        << YAML::Value << o.confidence;
+    if (o.fit) {
+      y << YAML::Key << "fit" << YAML::Value << YAML::BeginMap << YAML::Key << "method" << YAML::Value << o.fit->method
+        << YAML::Key << "drops" << YAML::Value << o.fit->drops << YAML::Key << "samples" << YAML::Value
+        << o.fit->samples << YAML::Key << "residual_rms_N" << YAML::Value << o.fit->residual_rms_N;
+      if (!o.fit->dataset.empty()) y << YAML::Key << "dataset" << YAML::Value << o.fit->dataset;
+      y << YAML::EndMap;
+    }
+    y << YAML::EndMap;
+  }
+  y << YAML::EndMap;
+  y << YAML::Key << "effects" << YAML::Value;
+  if (m.HasEffects()) y << m.effects;
+  else y << YAML::Flow << YAML::BeginMap << YAML::EndMap;
+  if (m.provenance && !m.provenance.IsNull()) y << YAML::Key << "provenance" << YAML::Value << m.provenance;
+  y << YAML::EndMap;
+  WriteFileAtomically(path, [&](std::ostream& out) { out << y.c_str() << '\n'; });
+}
+
+rft::SoilParameters ApplyModel(const ModelFile& m, const rft::SoilParameters& soil) {
+  if (m.HasEffects())
+    throw MakeInputError(m.source, "effects",
+                         "effect terms are not supported by this touchdown build (only per-soil zeta overrides)");
+  rft::SoilParameters out = soil;
+  const auto it = m.soils.find(soil.name);
+  if (it == m.soils.end()) return out;
+  // The model's zeta holds at its own reference gravity; the soil keeps its reference.
+  out.zeta_N_m3 = it->second.zeta_N_m3 * soil.reference_gravity_m_s2 / it->second.reference_gravity_m_s2;
+  return out;
+}
+
+std::string ModelDigestText(const ModelFile& m) {
+  std::string s = "model:" + m.name + ";";
+  for (const auto& [name, o] : m.soils)
+    s += name + "=" + FormatNumber(o.zeta_N_m3) + "@" + FormatNumber(o.reference_gravity_m_s2) + ";";
+  if (m.HasEffects()) s += "effects:" + YAML::Dump(m.effects);
+  return s;
+}
+
+}  // namespace touchdown::drop

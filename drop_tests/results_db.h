@@ -1,0 +1,87 @@
+#pragma once
+// The SQLite database of a sweep (DIR/results.sqlite): one row per drop with all its
+// parameters and summary metrics, plus optional traces, written in transactions.
+//
+//   meta(key, value)   sweep name, digest of the plan, total drops, shard, format version
+//   drops(drop_index PRIMARY KEY, drop_id, status 'ok'|'failed', failure, pad, soil,
+//         atmosphere, impact_speed_m_s, pad_mass_kg, gravity_m_s2, tilt_deg,
+//         horizontal_speed_m_s, zeta_N_cm3, final_penetration_m, peak_force_N,
+//         time_to_rest_s, max_deceleration_m_s2, impact_energy_J, gravity_work_J,
+//         dissipated_energy_J, mean_conversion_rate_W, rest_creep_m, solver_steps)
+//   traces(drop_index PRIMARY KEY, samples, data BLOB of float64 [t, d, v, F] per sample)
+//
+// A batch of drops and their traces go in one transaction (WAL journal), so a process killed
+// at any moment leaves every drop either fully written or absent; a restart computes only the
+// absent ones. Doubles are stored as 8-byte IEEE values, so rows compare bit for bit.
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "drop_tests/rig_drop.h"
+
+struct sqlite3;
+
+namespace touchdown::drop {
+
+inline constexpr int kResultsDbVersion = 1;
+
+// One drop as stored. Metrics are NaN (NULL in SQL) for a failed drop.
+struct DropRecord {
+  int64_t index = 0;
+  std::string drop_id;
+  bool ok = false;
+  std::string failure;  // the reason, for a failed drop
+  std::string pad, soil, atmosphere;
+  double impact_speed_m_s = 0.0, pad_mass_kg = 0.0, gravity_m_s2 = 0.0;
+  double tilt_deg = 0.0, horizontal_speed_m_s = 0.0;
+  double zeta_N_cm3 = 0.0;  // as used, at the drop's gravity
+  double final_penetration_m = 0.0, peak_force_N = 0.0, time_to_rest_s = 0.0, max_deceleration_m_s2 = 0.0;
+  double impact_energy_J = 0.0, gravity_work_J = 0.0, dissipated_energy_J = 0.0, mean_conversion_rate_W = 0.0;
+  double rest_creep_m = 0.0;
+  int64_t solver_steps = 0;
+  std::vector<DropSample> trace;  // empty unless stored
+};
+
+// Bitwise equality of every field (NaN equals NaN of the same bits).
+bool SameRecord(const DropRecord& a, const DropRecord& b, bool compare_traces = true);
+
+// Byte serialisation of records, for sending between MPI ranks.
+std::string SerializeRecords(const std::vector<DropRecord>& records);
+std::vector<DropRecord> DeserializeRecords(const std::string& bytes);
+
+class ResultsDb {
+ public:
+  // Opens (creating if needed) the database file. Throws std::runtime_error on SQLite errors.
+  explicit ResultsDb(const std::string& path);
+  ~ResultsDb();
+  ResultsDb(const ResultsDb&) = delete;
+  ResultsDb& operator=(const ResultsDb&) = delete;
+
+  const std::string& path() const { return path_; }
+  std::map<std::string, std::string> Meta() const;
+  // Writes the meta rows in one transaction (only keys given; others kept).
+  void SetMeta(const std::map<std::string, std::string>& meta);
+  // Inserts the records (and their traces) in one transaction. An index already present
+  // must hold an identical record (a merge of overlapping shards); otherwise it throws.
+  void Insert(const std::vector<DropRecord>& records);
+  int64_t Count() const;
+  int64_t CountFailed() const;
+  // done[i] = 1 for every stored drop index i < total.
+  std::vector<uint8_t> DoneMask(int64_t total) const;
+  // Every record in index order; traces when asked.
+  void ForEach(const std::function<void(const DropRecord&)>& visit, bool with_traces) const;
+  std::vector<DropRecord> ReadAll(bool with_traces) const;
+
+ private:
+  void Exec(const std::string& sql) const;
+  std::string path_;
+  sqlite3* db_ = nullptr;
+};
+
+// The database file of a sweep output directory.
+std::string ResultsDbPath(const std::string& out_dir);
+
+}  // namespace touchdown::drop

@@ -1,0 +1,141 @@
+#include "drop_tests/sweep_export.h"
+
+#include <filesystem>
+
+#include "drop_tests/atomic_file.h"
+#include "drop_tests/dataset_csv.h"
+#include "drop_tests/sweep.h"
+#include "drop_tests/sweep_drop.h"
+#include "drop_tests/sweep_engine.h"
+#include "rft/input_error.h"
+
+namespace touchdown::drop {
+
+namespace fs = std::filesystem;
+
+namespace {
+const std::vector<std::string> kExtraColumns = {
+    "tilt_deg",        "horizontal_speed_m_s", "zeta_N_cm3",          "time_to_rest_s",
+    "max_deceleration_m_s2", "impact_energy_J", "gravity_work_J",     "dissipated_energy_J",
+    "mean_conversion_rate_W", "rest_creep_m",   "solver_steps"};
+
+// The plan the database was written from, reloaded from its sweep file and checked.
+SweepPlan ReloadPlan(const std::string& db_path, const std::map<std::string, std::string>& meta) {
+  const auto source = meta.find("source");
+  const auto model = meta.find("model");
+  if (source == meta.end() || !fs::is_regular_file(source->second))
+    throw MakeInputError(db_path, "source",
+                         "traces must be simulated again but the sweep file is gone; run the sweep with traces: full");
+  SweepPlan plan = LoadSweepPlan(source->second, "");
+  if (!plan.model && model != meta.end() && !model->second.empty()) plan = LoadSweepPlan(source->second, model->second);
+  if (PlanDigest(plan) != meta.at("plan_digest"))
+    throw MakeInputError(db_path, "plan_digest",
+                         "the sweep file " + source->second + " (or a pad, soil or model) changed since the sweep ran");
+  return plan;
+}
+}  // namespace
+
+Dataset SweepToDataset(const std::string& sweep_dir, const ExportOptions& options, ExportSummary* summary_out,
+                       std::vector<DropRecord>* failed_out) {
+  const std::string db_path = ResultsDbPath(sweep_dir);
+  if (!fs::is_regular_file(db_path)) throw MakeInputError(db_path, "", "no sweep results here");
+  const ResultsDb db(db_path);
+  const std::map<std::string, std::string> meta = db.Meta();
+  if (meta.empty()) throw MakeInputError(db_path, "", "not a sweep results database (no meta)");
+  std::vector<DropRecord> records = db.ReadAll(/*with_traces=*/true);
+  ExportSummary summary;
+
+  std::vector<int64_t> again;
+  for (const DropRecord& r : records)
+    if (r.ok && (options.full_traces || r.trace.empty())) again.push_back(r.index);
+  std::optional<SweepPlan> plan;
+  if (!again.empty()) {
+    plan = ReloadPlan(db_path, meta);
+    std::map<int64_t, size_t> position;
+    for (size_t i = 0; i < records.size(); ++i) position[records[i].index] = i;
+    // Full traces, recomputed on threads; the summaries must match the stored ones bit for bit.
+    SweepPlan full = *plan;
+    full.traces = TraceStorage::kFull;
+    const SweepModels full_models(full);
+    DropEngine engine(full_models, again, options.threads > 0 ? options.threads : DefaultThreads());
+    while (!engine.Finished())
+      for (DropRecord& r : engine.Take(1024, 1.0)) {
+        DropRecord& stored = records[position.at(r.index)];
+        if (!SameRecord(stored, r, /*compare_traces=*/false))
+          throw std::runtime_error("drop " + r.drop_id + " does not reproduce its stored results");
+        stored.trace = std::move(r.trace);
+        ++summary.resimulated;
+      }
+  }
+
+  Dataset ds;
+  ds.directory = "";
+  ds.extra_columns = kExtraColumns;
+  for (DropRecord& r : records) {
+    if (!r.ok) {
+      ++summary.failed;
+      if (failed_out) failed_out->push_back(r);
+      continue;
+    }
+    DatasetDrop d;
+    d.drop_id = r.drop_id;
+    d.pad = r.pad;
+    d.soil = r.soil;
+    // A pad or soil from a file (not a catalogue name) is written as its absolute path.
+    if (plan) {
+      for (const PadSpec& p : plan->pads)
+        if (p.name == r.pad && !p.source.empty()) {
+          try {
+            if (fs::equivalent(ResolveCatalogFile("pads", r.pad), p.source)) break;
+          } catch (const std::exception&) {
+          }
+          d.pad = fs::absolute(p.source).string();
+        }
+    }
+    d.atmosphere = r.atmosphere;
+    d.impact_speed_m_s = r.impact_speed_m_s;
+    d.pad_mass_kg = r.pad_mass_kg;
+    d.gravity_m_s2 = r.gravity_m_s2;
+    d.trace_file = "traces/" + r.drop_id + ".csv";
+    d.final_penetration_m = r.final_penetration_m;
+    d.peak_force_N = r.peak_force_N;
+    for (double v : {r.tilt_deg, r.horizontal_speed_m_s, r.zeta_N_cm3, r.time_to_rest_s, r.max_deceleration_m_s2,
+                     r.impact_energy_J, r.gravity_work_J, r.dissipated_energy_J, r.mean_conversion_rate_W,
+                     r.rest_creep_m})
+      d.extra.push_back(FormatNumber(v));
+    d.extra.push_back(std::to_string(r.solver_steps));
+    d.trace.extra_columns = {"velocity_m_s"};
+    d.trace.extra.resize(1);
+    for (const DropSample& s : r.trace) {
+      d.trace.t_s.push_back(s.t_s);
+      d.trace.penetration_m.push_back(s.penetration_m);
+      d.trace.force_N.push_back(s.force_N);
+      d.trace.extra[0].push_back(s.velocity_m_s);
+    }
+    ds.drops.push_back(std::move(d));
+    ++summary.exported;
+  }
+  if (summary_out) *summary_out = summary;
+  return ds;
+}
+
+ExportSummary ExportSweep(const std::string& sweep_dir, const std::string& dataset_dir, const ExportOptions& options) {
+  ExportSummary summary;
+  std::vector<DropRecord> failed;
+  const Dataset ds = SweepToDataset(sweep_dir, options, &summary, &failed);
+  if (ds.drops.empty()) throw MakeInputError(sweep_dir, "", "no successful drops to export");
+  WriteDataset(ds, dataset_dir);
+  if (!failed.empty())
+    WriteFileAtomically((fs::path(dataset_dir) / "failed.csv").string(), [&](std::ostream& out) {
+      out << "drop_id,reason\n";
+      for (const DropRecord& r : failed) {
+        std::string reason = r.failure;
+        for (char& c : reason)
+          if (c == ',' || c == '\n' || c == '\r') c = ' ';
+        out << r.drop_id << ',' << reason << '\n';
+      }
+    });
+  return summary;
+}
+
+}  // namespace touchdown::drop

@@ -1,0 +1,33 @@
+#pragma once
+// `touchdown export DIR --to DATASET_DIR`: a sweep's results as a dataset (dataset.h), so a
+// simulated sweep can be compared with measured drops like any other dataset.
+//
+// drops.csv gets the required columns, final_penetration_m and peak_force_N, and the further
+// parameters and metrics as extra columns (tilt_deg, horizontal_speed_m_s, zeta_N_cm3,
+// time_to_rest_s, ...); each trace t_s,penetration_m,force_N,velocity_m_s. Traces are those
+// stored in the database; drops stored without one (traces: none), or every drop with
+// `full_traces`, are simulated again from the sweep file (checked against the database's
+// digest), which reproduces them bit for bit. Failed drops have no trace: they are listed in
+// failed.csv (drop_id,reason) beside drops.csv and left out of drops.csv.
+#include <string>
+
+#include "drop_tests/dataset.h"
+#include "drop_tests/results_db.h"
+
+namespace touchdown::drop {
+
+struct ExportOptions {
+  bool full_traces = false;  // simulate every drop again for its full trace
+  int threads = 0;
+};
+
+struct ExportSummary {
+  int64_t exported = 0, failed = 0, resimulated = 0;
+};
+
+// The dataset in memory (traces included).
+Dataset SweepToDataset(const std::string& sweep_dir, const ExportOptions& options, ExportSummary* summary = nullptr,
+                       std::vector<DropRecord>* failed = nullptr);
+ExportSummary ExportSweep(const std::string& sweep_dir, const std::string& dataset_dir, const ExportOptions& options);
+
+}  // namespace touchdown::drop

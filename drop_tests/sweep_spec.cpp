@@ -1,0 +1,352 @@
+#include "drop_tests/sweep_spec.h"
+
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+
+#include "drop_tests/dataset_csv.h"
+#include "drop_tests/sweep_drop.h"
+#include "drop_tests/yaml_fields.h"
+#include "rft/input_error.h"
+
+namespace touchdown::drop {
+
+namespace fs = std::filesystem;
+
+namespace {
+constexpr double kDeg = std::numbers::pi / 180.0;
+constexpr SweepParam kAll[kSweepParamCount] = {SweepParam::kPad,     SweepParam::kSoil, SweepParam::kImpactSpeed,
+                                               SweepParam::kMass,    SweepParam::kGravity, SweepParam::kTilt,
+                                               SweepParam::kHorizontalSpeed, SweepParam::kZeta};
+
+std::optional<SweepParam> ParamFromKey(const std::string& key) {
+  for (SweepParam p : kAll)
+    if (key == SweepParamKey(p)) return p;
+  return std::nullopt;
+}
+
+bool IsName(SweepParam p) { return p == SweepParam::kPad || p == SweepParam::kSoil; }
+
+double ToSi(SweepParam p, double v) {
+  if (p == SweepParam::kTilt) return v * kDeg;
+  if (p == SweepParam::kZeta) return v * 1e6;
+  return v;
+}
+
+// Range rules per parameter, checked on every value a file can produce (fixed, grid, random bounds).
+void CheckValue(SweepParam p, double v, const std::string& file, const std::string& path) {
+  auto fail = [&](const std::string& rule) {
+    throw MakeInputError(file, path, "must be " + rule + ", got " + FormatNumber(v));
+  };
+  if (!std::isfinite(v)) fail("finite");
+  switch (p) {
+    case SweepParam::kImpactSpeed: if (v < 0.0) fail(">= 0"); break;
+    case SweepParam::kMass:
+    case SweepParam::kGravity:
+    case SweepParam::kZeta: if (!(v > 0.0)) fail("positive"); break;
+    case SweepParam::kTilt:
+      if (!(std::abs(v) < 90.0)) fail("between -90 and 90");
+      [[fallthrough]];
+    case SweepParam::kHorizontalSpeed:
+      if (v != 0.0 && !FreeDropAvailable())
+        throw MakeInputError(file, path,
+                             "non-zero values need the 6-DOF free drop, which this build does not have yet "
+                             "(the rig drop is vertical: use 0), got " + FormatNumber(v));
+      break;
+    default: break;
+  }
+}
+
+class Loader {
+ public:
+  Loader(SweepPlan& plan, const std::string& base) : plan_(plan), base_(base) {}
+
+  // A pad/soil name to an index into plan.pads / plan.soils (loaded once).
+  double NameIndex(SweepParam p, const YAML::Node& n, const YamlFields& f, const std::string& path) {
+    if (!n.IsScalar() || n.Scalar().empty())
+      throw MakeInputError(f.file(), path, "must be a pad/soil name or YAML path");
+    std::string ref = n.Scalar();
+    const bool is_path = ref.find('/') != std::string::npos || ref.ends_with(".yaml") || ref.ends_with(".yml");
+    if (is_path && fs::path(ref).is_relative()) ref = (fs::path(base_) / ref).lexically_normal().string();
+    try {
+      if (p == SweepParam::kPad) {
+        for (size_t i = 0; i < pad_refs_.size(); ++i)
+          if (pad_refs_[i] == ref) return static_cast<double>(i);
+        PadSpec pad = LoadPad(ref);
+        // The rig drop integrates an axisymmetric profile; mesh pads need the 3D free drop.
+        if (pad.profile.points.empty())
+          throw MakeInputError(pad.source, "", "a mesh pad needs the 6-DOF free drop, not in sweeps yet");
+        plan_.pads.push_back(std::move(pad));
+        pad_refs_.push_back(ref);
+        return static_cast<double>(plan_.pads.size() - 1);
+      }
+      for (size_t i = 0; i < soil_refs_.size(); ++i)
+        if (soil_refs_[i] == ref) return static_cast<double>(i);
+      plan_.soils.push_back(LoadSoil(ref));
+      soil_refs_.push_back(ref);
+      return static_cast<double>(plan_.soils.size() - 1);
+    } catch (const InputError& e) {
+      throw MakeInputError(f.file(), path, e.what());
+    }
+  }
+
+  double Scalar(SweepParam p, const YAML::Node& n, const YamlFields& f, const std::string& path) {
+    if (IsName(p)) return NameIndex(p, n, f, path);
+    double v = 0.0;
+    if (!n.IsScalar() || !YAML::convert<double>::decode(n, v))
+      throw MakeInputError(f.file(), path, "must be a number");
+    CheckValue(p, v, f.file(), path);
+    return ToSi(p, v);
+  }
+
+  std::vector<double> List(SweepParam p, const YAML::Node& n, const YamlFields& f, const std::string& path) {
+    std::vector<double> out;
+    if (!n.IsSequence() || n.size() == 0) throw MakeInputError(f.file(), path, "must be a non-empty list");
+    for (size_t i = 0; i < n.size(); ++i) out.push_back(Scalar(p, n[i], f, path + "[" + std::to_string(i) + "]"));
+    return out;
+  }
+
+ private:
+  SweepPlan& plan_;
+  std::string base_;
+  std::vector<std::string> pad_refs_, soil_refs_;
+};
+
+const char* TraceStorageName(TraceStorage t) {
+  return t == TraceStorage::kNone ? "none" : t == TraceStorage::kFull ? "full" : "decimated";
+}
+}  // namespace
+
+const char* SweepParamKey(SweepParam p) {
+  switch (p) {
+    case SweepParam::kPad: return "pad";
+    case SweepParam::kSoil: return "soil";
+    case SweepParam::kImpactSpeed: return "impact_speed_m_s";
+    case SweepParam::kMass: return "pad_mass_kg";
+    case SweepParam::kGravity: return "gravity_m_s2";
+    case SweepParam::kTilt: return "tilt_deg";
+    case SweepParam::kHorizontalSpeed: return "horizontal_speed_m_s";
+    case SweepParam::kZeta: return "zeta_N_cm3";
+  }
+  return "?";
+}
+
+uint64_t Fnv1a64(const std::string& text) {
+  uint64_t h = 1469598103934665603ull;
+  for (unsigned char c : text) {
+    h ^= c;
+    h *= 1099511628211ull;
+  }
+  return h;
+}
+
+double CounterUniform(uint64_t seed, uint64_t sample, uint64_t stream) {
+  auto mix = [](uint64_t z) {  // splitmix64 finaliser
+    z += 0x9e3779b97f4a7c15ull;
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    return z ^ (z >> 31);
+  };
+  const uint64_t z = mix(mix(mix(seed) ^ sample) ^ (stream * 0x632be59bd9b4e019ull));
+  return static_cast<double>(z >> 11) * 0x1.0p-53;
+}
+
+int64_t SweepPlan::size() const {
+  int64_t n = samples;
+  for (const SweepAxis& a : grid) n *= static_cast<int64_t>(a.values.size());
+  return n;
+}
+
+SweepDropParams SweepPlan::DropAt(int64_t index) const {
+  double value[kSweepParamCount] = {};
+  bool set[kSweepParamCount] = {};
+  for (int p = 0; p < kSweepParamCount; ++p)
+    if (fixed[p]) value[p] = *fixed[p], set[p] = true;
+  int64_t g = index / samples;
+  const uint64_t s = static_cast<uint64_t>(index % samples);
+  for (size_t k = grid.size(); k-- > 0;) {  // the last-listed axis varies fastest
+    const int64_t n = static_cast<int64_t>(grid[k].values.size());
+    value[static_cast<int>(grid[k].param)] = grid[k].values[g % n];
+    set[static_cast<int>(grid[k].param)] = true;
+    g /= n;
+  }
+  for (const SweepRandom& r : random) {
+    const double u = CounterUniform(seed, s, static_cast<uint64_t>(r.param));
+    double v;
+    if (r.choice) {
+      const size_t pick = std::min(r.values.size() - 1, static_cast<size_t>(u * r.values.size()));
+      v = r.values[pick];
+    } else {
+      v = r.low + (r.high - r.low) * u;
+    }
+    value[static_cast<int>(r.param)] = v;
+    set[static_cast<int>(r.param)] = true;
+  }
+  auto at = [&](SweepParam p) { return value[static_cast<int>(p)]; };
+  auto has = [&](SweepParam p) { return set[static_cast<int>(p)]; };
+  SweepDropParams d;
+  d.index = index;
+  d.pad = static_cast<int>(at(SweepParam::kPad));
+  d.soil = static_cast<int>(at(SweepParam::kSoil));
+  d.impact_speed_m_s = at(SweepParam::kImpactSpeed);
+  if (has(SweepParam::kMass)) d.mass_kg = at(SweepParam::kMass);
+  if (has(SweepParam::kGravity)) d.gravity_m_s2 = at(SweepParam::kGravity);
+  if (has(SweepParam::kTilt)) d.tilt_rad = at(SweepParam::kTilt);
+  if (has(SweepParam::kHorizontalSpeed)) d.horizontal_speed_m_s = at(SweepParam::kHorizontalSpeed);
+  if (has(SweepParam::kZeta)) d.zeta_N_m3 = at(SweepParam::kZeta);
+  return d;
+}
+
+std::string SweepPlan::DropId(int64_t index) const {
+  const int width = std::max<int>(1, static_cast<int>(std::to_string(std::max<int64_t>(size() - 1, 0)).size()));
+  std::string digits = std::to_string(index);
+  if (static_cast<int>(digits.size()) < width) digits.insert(0, width - digits.size(), '0');
+  return "d" + digits;
+}
+
+std::string SweepPlan::DigestText() const {
+  std::string s = "sweep-v1;samples=" + std::to_string(samples) + ";seed=" + std::to_string(seed) +
+                  ";traces=" + TraceStorageName(traces) + ";max=" + std::to_string(trace_max_samples) +
+                  ";rest=" + FormatNumber(rig.rest_duration_s) + ";rate=" + FormatNumber(rig.sample_rate_hz) + ";";
+  for (const PadSpec& p : pads) {
+    s += "pad:" + p.name + ":" + FormatNumber(p.mass_kg) + ":" + FormatNumber(p.profile.thickness_m()) + ":";
+    for (const auto& pt : p.profile.points) s += FormatNumber(pt.x_m) + "/" + FormatNumber(pt.u_m) + ",";
+    s += ";";
+  }
+  for (const rft::SoilParameters& soil : soils)
+    s += "soil:" + soil.name + ":" + soil.atmosphere + ":" + FormatNumber(soil.zeta_N_m3) + ":" +
+         FormatNumber(soil.reference_gravity_m_s2) + ";";
+  for (int p = 0; p < kSweepParamCount; ++p)
+    if (fixed[p]) s += std::string("fixed:") + SweepParamKey(kAll[p]) + "=" + FormatNumber(*fixed[p]) + ";";
+  for (const SweepAxis& a : grid) {
+    s += std::string("grid:") + SweepParamKey(a.param) + "=";
+    for (double v : a.values) s += FormatNumber(v) + ",";
+    s += ";";
+  }
+  for (const SweepRandom& r : random) {
+    s += std::string("random:") + SweepParamKey(r.param) + (r.choice ? "=choice:" : "=uniform:") +
+         FormatNumber(r.low) + ":" + FormatNumber(r.high) + ":";
+    for (double v : r.values) s += FormatNumber(v) + ",";
+    s += ";";
+  }
+  if (model) s += ModelDigestText(*model);
+  return s;
+}
+
+SweepPlan LoadSweepPlan(const std::string& path, const std::string& model_override) {
+  const YamlFields f = YamlFields::LoadFile(path);
+  f.RequireSchemaVersion(1);
+  f.RequireOnly({"schema_version", "type", "name", "description", "model", "traces", "trace_max_samples",
+                 "rest_duration_s", "fixed", "grid", "random", "lander", "provenance"});
+  if (f.String("type") != "sweep") f.Fail("type", "must be 'sweep', got '" + f.String("type") + "'");
+  const std::string base = fs::path(path).parent_path().string();
+  SweepPlan plan;
+  plan.source = path;
+  plan.name = f.StringOr("name", fs::path(path).stem().string());
+  if (f.Has("lander"))
+    f.Fail("lander", "lander scenario parameters are reserved for the lander sweeps and not implemented yet");
+  const std::string traces = f.StringOr("traces", "decimated");
+  if (traces == "none") plan.traces = TraceStorage::kNone;
+  else if (traces == "full") plan.traces = TraceStorage::kFull;
+  else if (traces == "decimated") plan.traces = TraceStorage::kDecimated;
+  else f.Fail("traces", "must be none, decimated or full, got '" + traces + "'");
+  if (f.Has("trace_max_samples")) plan.trace_max_samples = f.PositiveInt("trace_max_samples");
+  if (plan.trace_max_samples < 3) f.Fail("trace_max_samples", "must be at least 3");
+  plan.rig.rest_duration_s = f.Has("rest_duration_s") ? f.NonNegative("rest_duration_s") : 0.0;
+  if (plan.rig.rest_duration_s > 60.0) f.Fail("rest_duration_s", "must be at most 60 s");
+
+  // The model first: the soils are loaded through it.
+  std::string model_path;
+  if (f.Has("model")) {
+    if (!model_override.empty()) f.Fail("model", "given both here and with --model; keep one");
+    model_path = f.String("model");
+    if (fs::path(model_path).is_relative()) model_path = (fs::path(base) / model_path).lexically_normal().string();
+  } else {
+    model_path = model_override;
+  }
+  if (!model_path.empty()) plan.model = LoadModelFile(model_path);
+
+  Loader loader(plan, base);
+  bool seen[kSweepParamCount] = {};
+  auto claim = [&](const YamlFields& block, const std::string& key) -> SweepParam {
+    const std::optional<SweepParam> p = ParamFromKey(key);
+    if (!p) block.Fail(key, "unknown parameter (pad, soil, impact_speed_m_s, pad_mass_kg, gravity_m_s2, tilt_deg, "
+                            "horizontal_speed_m_s, zeta_N_cm3)");
+    if (seen[static_cast<int>(*p)]) block.Fail(key, "set in more than one of fixed, grid and random");
+    seen[static_cast<int>(*p)] = true;
+    return *p;
+  };
+  if (f.Has("fixed")) {
+    const YamlFields block = f.Child("fixed");
+    for (const auto& item : block.node()) {
+      const std::string key = item.first.Scalar();
+      const SweepParam p = claim(block, key);
+      plan.fixed[static_cast<int>(p)] = loader.Scalar(p, item.second, block, block.Path(key));
+    }
+  }
+  if (f.Has("grid")) {
+    const YamlFields block = f.Child("grid");
+    for (const auto& item : block.node()) {
+      const std::string key = item.first.Scalar();
+      const SweepParam p = claim(block, key);
+      SweepAxis axis{p, {}};
+      if (item.second.IsMap() && !IsName(p)) {
+        const YamlFields range = block.Child(key);
+        range.RequireOnly({"from", "to", "count"});
+        const double from = range.Number("from"), to = range.Number("to");
+        const int count = range.PositiveInt("count");
+        if (count < 2 && from != to) range.Fail("count", "must be at least 2 when from != to");
+        for (int i = 0; i < count; ++i) {
+          // Ends exact: from and to appear as written.
+          const double v = i == count - 1 ? to : from + (to - from) * i / (count - 1 > 0 ? count - 1 : 1);
+          CheckValue(p, v, f.file(), range.Path(i == count - 1 ? "to" : "from"));
+          axis.values.push_back(ToSi(p, v));
+        }
+      } else {
+        axis.values = loader.List(p, item.second, block, block.Path(key));
+      }
+      plan.grid.push_back(std::move(axis));
+    }
+  }
+  if (f.Has("random")) {
+    const YamlFields block = f.Child("random");
+    plan.samples = block.PositiveInt("samples");
+    if (!block.Has("seed")) block.Fail("seed", "missing (random samples need a seed to be reproducible)");
+    const double seed = block.Number("seed");
+    if (seed < 0 || seed != std::floor(seed) || seed > 9.0e15) block.Fail("seed", "must be a whole number >= 0");
+    plan.seed = static_cast<uint64_t>(seed);
+    for (const auto& item : block.node()) {
+      const std::string key = item.first.Scalar();
+      if (key == "samples" || key == "seed") continue;
+      const SweepParam p = claim(block, key);
+      const YamlFields spec = block.Child(key);
+      spec.RequireOnly({"uniform", "choice"});
+      SweepRandom r;
+      r.param = p;
+      if (spec.Has("uniform") == spec.Has("choice")) spec.Fail("uniform", "give exactly one of uniform and choice");
+      if (spec.Has("choice")) {
+        r.choice = true;
+        r.values = loader.List(p, spec.node()["choice"], spec, spec.Path("choice"));
+      } else {
+        if (IsName(p)) spec.Fail("uniform", "pads and soils take `choice`, not `uniform`");
+        const YAML::Node u = spec.node()["uniform"];
+        if (!u.IsSequence() || u.size() != 2) spec.Fail("uniform", "must be [low, high]");
+        const double lo = loader.Scalar(p, u[0], spec, spec.Path("uniform") + "[0]");
+        const double hi = loader.Scalar(p, u[1], spec, spec.Path("uniform") + "[1]");
+        if (!(lo < hi)) spec.Fail("uniform", "needs low < high");
+        r.low = lo;
+        r.high = hi;
+      }
+      plan.random.push_back(std::move(r));
+    }
+  }
+  for (SweepParam required : {SweepParam::kPad, SweepParam::kSoil, SweepParam::kImpactSpeed})
+    if (!seen[static_cast<int>(required)])
+      f.Fail(SweepParamKey(required), "not set in fixed, grid or random");
+  if (plan.size() <= 0 || plan.size() > (int64_t{1} << 40)) f.Fail("grid", "the sweep has too many drops");
+  if (plan.model)
+    for (rft::SoilParameters& soil : plan.soils) soil = ApplyModel(*plan.model, soil);
+  return plan;
+}
+
+}  // namespace touchdown::drop

@@ -1,0 +1,100 @@
+#pragma once
+// A sweep file (SWEEP.yaml) defines a set of drops by fixed values, grids (cartesian products)
+// and seeded random samples over the drop parameters:
+//
+//   schema_version: 1
+//   type: sweep
+//   name: pad_trade
+//   model: model.yaml            # optional model file (relative paths: to this file)
+//   traces: decimated            # none | decimated | full  (stored in the results database)
+//   trace_max_samples: 64        # for `decimated`: at most this many samples per drop
+//   rest_duration_s: 0           # time simulated after the stop (0: summaries only)
+//   fixed:  {soil: fjs1_lp, gravity_m_s2: 9.81}
+//   grid:   {pad: [flat, c4, curved], impact_speed_m_s: {from: 0.5, to: 2.0, count: 7}}
+//   random: {samples: 100, seed: 7, pad_mass_kg: {uniform: [1.2, 2.0]}, soil: {choice: [fjs1_lp, fjs1_cp]}}
+//   lander: {...}                # reserved for lander scenario parameters: not implemented yet
+//
+// Parameters: pad, soil (catalogue names or YAML paths), impact_speed_m_s, pad_mass_kg
+// (default: each pad's mass), gravity_m_s2 (default 9.81), tilt_deg and horizontal_speed_m_s
+// (default 0; non-zero values need the 6-DOF free drop, see sweep_drop.h), zeta_N_cm3
+// (default: the soil's, or the model's). Each parameter is set in at most one block.
+//
+// Drop i is grid point g = i / S and random sample s = i % S (S = samples, 1 without random);
+// the grid's first-listed parameter varies slowest. Random sample s draws the same values at
+// every grid point (common random numbers, so pads are compared under identical conditions),
+// from a counter-based generator keyed by (seed, s, parameter): any drop's parameters follow
+// from its index alone, independent of threads, ranks or shards.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "drop_tests/catalog.h"
+#include "drop_tests/model_file.h"
+#include "drop_tests/rig_drop.h"
+
+namespace touchdown::drop {
+
+enum class SweepParam { kPad, kSoil, kImpactSpeed, kMass, kGravity, kTilt, kHorizontalSpeed, kZeta };
+inline constexpr int kSweepParamCount = 8;
+const char* SweepParamKey(SweepParam p);  // the YAML key, e.g. "impact_speed_m_s"
+
+enum class TraceStorage { kNone, kDecimated, kFull };
+
+// The parameters of one drop, in SI units; pad and soil as indices into SweepPlan::pads/soils.
+struct SweepDropParams {
+  int64_t index = 0;
+  int pad = 0;
+  int soil = 0;
+  double impact_speed_m_s = 0.0;
+  std::optional<double> mass_kg;  // default: the pad's
+  double gravity_m_s2 = 9.81;
+  double tilt_rad = 0.0;
+  double horizontal_speed_m_s = 0.0;
+  std::optional<double> zeta_N_m3;  // at the soil's reference gravity; default: the soil's
+};
+
+struct SweepAxis {  // a grid dimension
+  SweepParam param;
+  std::vector<double> values;  // SI; pad/soil: indices
+};
+
+struct SweepRandom {  // a random parameter
+  SweepParam param;
+  bool choice = false;         // choose uniformly among `values`, else uniform on [low, high)
+  double low = 0.0, high = 0.0;
+  std::vector<double> values;  // SI; pad/soil: indices
+};
+
+struct SweepPlan {
+  std::string name;
+  std::string source;  // the sweep file
+  std::optional<ModelFile> model;
+  std::vector<PadSpec> pads;
+  std::vector<rft::SoilParameters> soils;  // with the model applied
+  std::optional<double> fixed[kSweepParamCount];
+  std::vector<SweepAxis> grid;
+  std::vector<SweepRandom> random;
+  int64_t samples = 1;
+  uint64_t seed = 0;
+  TraceStorage traces = TraceStorage::kDecimated;
+  int trace_max_samples = 64;
+  RigDropOptions rig;  // rest_duration_s from the file
+
+  int64_t size() const;
+  SweepDropParams DropAt(int64_t index) const;
+  std::string DropId(int64_t index) const;  // "d" + zero-padded index
+  // A text that changes whenever anything that shapes a result changes (parameters, pads,
+  // soils, model, options); the results database records its hash.
+  std::string DigestText() const;
+};
+
+// Loads and validates the whole sweep (pads, soils, model, every value) before anything runs.
+// `model_override` (from --model) replaces the file's `model:`; giving both is an error.
+SweepPlan LoadSweepPlan(const std::string& path, const std::string& model_override = "");
+// 64-bit FNV-1a, for digests.
+uint64_t Fnv1a64(const std::string& text);
+// Counter-based uniform draw in [0, 1) from (seed, sample, stream): splitmix64 mixing.
+double CounterUniform(uint64_t seed, uint64_t sample, uint64_t stream);
+
+}  // namespace touchdown::drop

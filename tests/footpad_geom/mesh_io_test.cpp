@@ -1,0 +1,265 @@
+// Pad meshes from files: the four formats, units, the writer, and one clear error per defect.
+#include "footpad_geom/mesh_io.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <cstring>
+
+#include "footpad_geom/mass_properties.h"
+#include "footpad_geom/revolve.h"
+#include "rft/input_error.h"
+#include "tests/footpad_geom/mesh_test_shapes.h"
+
+namespace touchdown::geom {
+namespace {
+
+using testing::BoxSoup;
+using testing::TriangulatedBox;
+
+std::string Fmt(double v) {
+  char s[64];
+  std::snprintf(s, sizeof s, "%.17g", v);
+  return s;
+}
+
+std::string AsciiStl(const TriangleMesh& m) {
+  std::string t = "solid cube\n";
+  for (const auto& tri : m.triangles) {
+    t += " facet normal 0 0 0\n  outer loop\n";
+    for (int i : tri) {
+      const auto& v = m.vertices[i];
+      t += "   vertex " + Fmt(v.x()) + " " + Fmt(v.y()) + " " + Fmt(v.z()) + "\n";
+    }
+    t += "  endloop\n endfacet\n";
+  }
+  return t + "endsolid cube\n";
+}
+
+std::string BinaryStl(const TriangleMesh& m) {
+  std::string b(80, 'x');  // header; must not start with "solid"
+  auto put = [&](const void* p, std::size_t n) { b.append(static_cast<const char*>(p), n); };
+  const std::uint32_t n = static_cast<std::uint32_t>(m.triangles.size());
+  put(&n, 4);
+  for (const auto& tri : m.triangles) {
+    const float normal[3] = {0, 0, 0};
+    put(normal, 12);
+    for (int i : tri) {
+      const float v[3] = {float(m.vertices[i].x()), float(m.vertices[i].y()), float(m.vertices[i].z())};
+      put(v, 12);
+    }
+    const std::uint16_t attribute = 0;
+    put(&attribute, 2);
+  }
+  return b;
+}
+
+std::string Obj(const PolygonSoup& s) {
+  std::string t = "# cube\n";
+  for (const auto& v : s.vertices) t += "v " + Fmt(v.x()) + " " + Fmt(v.y()) + " " + Fmt(v.z()) + "\n";
+  for (const auto& f : s.faces) {
+    t += 'f';
+    for (int i : f) {
+      t += ' ';
+      t += std::to_string(i + 1);
+    }
+    t += '\n';
+  }
+  return t;
+}
+
+std::string AsciiPly(const TriangleMesh& m) {
+  std::string t = "ply\nformat ascii 1.0\nelement vertex " + std::to_string(m.vertices.size()) +
+                  "\nproperty double x\nproperty double y\nproperty double z\nelement face " +
+                  std::to_string(m.triangles.size()) + "\nproperty list uchar int vertex_indices\nend_header\n";
+  for (const auto& v : m.vertices) t += Fmt(v.x()) + " " + Fmt(v.y()) + " " + Fmt(v.z()) + "\n";
+  for (const auto& tri : m.triangles)
+    t += "3 " + std::to_string(tri[0]) + " " + std::to_string(tri[1]) + " " + std::to_string(tri[2]) + "\n";
+  return t;
+}
+
+// The message of the InputError that preparing `soup` raises, or "(no error)".
+std::string DefectOf(const PolygonSoup& soup) {
+  try {
+    PrepareTriangleMesh(soup, "pad.stl");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+class MeshFiles : public testing::TempDirTest {
+ protected:
+  std::string LoadError(const std::string& path, const MeshLoadOptions& options = {}) {
+    try {
+      LoadTriangleMesh(path, options);
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "(no error)";
+  }
+};
+
+TEST_F(MeshFiles, AllFourFormatsReadTheSameCube) {
+  const PolygonSoup quads = BoxSoup(1, 1, 1);
+  const TriangleMesh triangles = testing::ToTriangles(quads);
+  struct Case {
+    std::string file, bytes;
+    int triangulated;
+  };
+  const Case cases[] = {
+      {"ascii.stl", AsciiStl(triangles), 0}, {"binary.stl", BinaryStl(triangles), 0},
+      {"quads.off", testing::OffText(quads), 6}, {"quads.obj", Obj(quads), 6},
+      {"ascii.ply", AsciiPly(triangles), 0},   {"UPPER.STL", BinaryStl(triangles), 0},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.file);
+    const PreparedMesh m = LoadTriangleMesh(Write(c.file, c.bytes), {LengthUnit::kMetre, 0.0});
+    EXPECT_EQ(m.mesh.vertices.size(), 8u);  // STL's per-facet copies merged
+    EXPECT_EQ(m.mesh.triangles.size(), 12u);
+    EXPECT_EQ(m.triangulated_faces, c.triangulated);
+    EXPECT_FALSE(m.reoriented);
+    const VolumeProperties vp = ComputeVolumeProperties(m.mesh);
+    EXPECT_NEAR(vp.volume_m3, 1.0, 1e-12);
+    EXPECT_TRUE(vp.centroid_m.isApprox(Eigen::Vector3d(0.5, 0.5, 0.5), 1e-12));
+  }
+}
+
+TEST_F(MeshFiles, MillimetresBecomeMetres) {
+  const std::string path = Write("box.off", testing::OffText(BoxSoup(100, 50, 16)));
+  const PreparedMesh mm = LoadTriangleMesh(path, {LengthUnit::kMillimetre, 0.0});
+  EXPECT_NEAR(ComputeVolumeProperties(mm.mesh).volume_m3, 0.1 * 0.05 * 0.016, 1e-15);
+  const PreparedMesh m = LoadTriangleMesh(path, {LengthUnit::kMetre, 0.0});
+  EXPECT_NEAR(ComputeVolumeProperties(m.mesh).volume_m3, 100.0 * 50 * 16, 1e-9);
+  EXPECT_EQ(ParseLengthUnit("mm", "f", "unit"), LengthUnit::kMillimetre);
+  EXPECT_EQ(ParseLengthUnit("m", "f", "unit"), LengthUnit::kMetre);
+  try {
+    ParseLengthUnit("inch", "pad.yaml", "mesh.unit");
+    ADD_FAILURE() << "no error for an unknown unit";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "pad.yaml: mesh.unit: unknown length unit 'inch' (mm, m)");
+  }
+}
+
+TEST_F(MeshFiles, WriterRoundTripsEveryFormat) {
+  const TriangleMesh pad = RevolveProfileToMesh(MakeChamferProfile(0.05, 0.016, 0.004), 32);
+  const double volume = ComputeVolumeProperties(pad).volume_m3;
+  for (const char* name : {"pad.stl", "pad.off", "pad.obj", "pad.ply"}) {
+    for (bool ascii : {false, true}) {
+      SCOPED_TRACE(std::string(name) + (ascii ? " ascii" : " binary"));
+      const std::string path = (dir_ / name).string();
+      WriteTriangleMesh(pad, path, 1000.0, ascii);  // in mm
+      const PreparedMesh back = LoadTriangleMesh(path, {LengthUnit::kMillimetre, 0.0});
+      EXPECT_EQ(back.mesh.triangles.size(), pad.triangles.size());
+      EXPECT_FALSE(back.reoriented);
+      // Binary STL stores float32 coordinates.
+      EXPECT_NEAR(ComputeVolumeProperties(back.mesh).volume_m3, volume, 1e-6 * volume);
+    }
+  }
+}
+
+TEST_F(MeshFiles, FileProblemsNameTheFile) {
+  EXPECT_EQ(LoadError((dir_ / "none.stl").string()), (dir_ / "none.stl").string() + ": mesh file not found");
+  const std::string xyz = Write("pad.xyz", "1 2 3\n");
+  EXPECT_EQ(LoadError(xyz), xyz + ": unknown mesh format '.xyz' (.stl, .off, .obj, .ply)");
+  const std::string garbage = Write("garbage.off", "this is not a mesh\n");
+  EXPECT_NE(LoadError(garbage).find("garbage.off: could not be read as off"), std::string::npos) << LoadError(garbage);
+  const std::string short_stl = Write("short.stl", std::string(90, 'x'));
+  EXPECT_NE(LoadError(short_stl).find("short.stl: could not be read as stl"), std::string::npos);
+  PolygonSoup open = BoxSoup(1, 1, 1);
+  open.faces.pop_back();
+  const std::string open_path = Write("open.off", testing::OffText(open));
+  EXPECT_EQ(LoadError(open_path), open_path + ": 4 border edges, mesh is not closed");
+}
+
+TEST(MeshDefects, OpenMeshIsRefused) {
+  PolygonSoup soup = TriangulatedBox();
+  soup.faces.pop_back();
+  EXPECT_EQ(DefectOf(soup), "pad.stl: 3 border edges, mesh is not closed");
+}
+
+TEST(MeshDefects, InvertedMeshIsReorientedOutward) {
+  PolygonSoup soup = TriangulatedBox();
+  for (auto& f : soup.faces) std::swap(f[1], f[2]);
+  const PreparedMesh m = PrepareTriangleMesh(soup, "pad.stl");
+  EXPECT_TRUE(m.reoriented);
+  EXPECT_NEAR(ComputeVolumeProperties(m.mesh).volume_m3, 1.0, 1e-12);
+  // A few faces flipped (inconsistent orientation) is repaired the same way.
+  PolygonSoup mixed = TriangulatedBox();
+  for (int i : {0, 3, 7}) std::swap(mixed.faces[i][1], mixed.faces[i][2]);
+  const PreparedMesh fixed = PrepareTriangleMesh(mixed, "pad.stl");
+  EXPECT_TRUE(fixed.reoriented);
+  EXPECT_NEAR(ComputeVolumeProperties(fixed.mesh).volume_m3, 1.0, 1e-12);
+  // A correct mesh is left alone.
+  EXPECT_FALSE(PrepareTriangleMesh(TriangulatedBox(), "pad.stl").reoriented);
+}
+
+TEST(MeshDefects, MoebiusBandIsNotOrientable) {
+  PolygonSoup band;
+  const int n = 16;
+  const double pi = std::numbers::pi;
+  for (int i = 0; i < n; ++i) {
+    const double t = 2 * pi * i / n;
+    const Eigen::Vector3d centre(std::cos(t), std::sin(t), 0.0);
+    const Eigen::Vector3d d(std::cos(t / 2) * std::cos(t), std::cos(t / 2) * std::sin(t), std::sin(t / 2));
+    band.vertices.push_back(centre + 0.3 * d);  // a_i = 2 i
+    band.vertices.push_back(centre - 0.3 * d);  // b_i = 2 i + 1
+  }
+  for (int i = 0; i < n; ++i) {
+    const int a = 2 * i, b = 2 * i + 1;
+    // After a full turn the band has flipped over: a_n = b_0, b_n = a_0.
+    const int a1 = i + 1 < n ? 2 * (i + 1) : 1, b1 = i + 1 < n ? 2 * (i + 1) + 1 : 0;
+    band.faces.push_back({a, b, b1});
+    band.faces.push_back({a, b1, a1});
+  }
+  EXPECT_NE(DefectOf(band).find("pad.stl: mesh is not orientable"), std::string::npos) << DefectOf(band);
+}
+
+TEST(MeshDefects, SelfIntersectionIsRefused) {
+  const PolygonSoup two = testing::Union(TriangulatedBox(), TriangulatedBox(1, 1, 1, {0.5, 0.5, 0.5}));
+  const std::string message = DefectOf(two);
+  EXPECT_NE(message.find("pad.stl: mesh intersects itself ("), std::string::npos) << message;
+  // Two separate boxes are a valid (two-piece) pad.
+  EXPECT_EQ(DefectOf(testing::Union(TriangulatedBox(), TriangulatedBox(1, 1, 1, {2, 0, 0}))), "(no error)");
+}
+
+TEST(MeshDefects, ZeroAreaFaceIsRefused) {
+  // A cube whose edge v0-v1 carries its midpoint v8; the front face is split into the
+  // collinear triangle (v0, v8, v1) and two proper ones. Closed, oriented, but degenerate.
+  PolygonSoup soup = BoxSoup(1, 1, 1);
+  soup.vertices.push_back({0.5, 0.0, 0.0});
+  soup.faces = {{8, 0, 3}, {8, 3, 2}, {8, 2, 1}, {0, 8, 1}, {0, 1, 5}, {0, 5, 4},
+                {4, 5, 6, 7}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+  EXPECT_EQ(DefectOf(soup), "pad.stl: 1 degenerate face (zero area)");
+}
+
+TEST(MeshDefects, RepeatedVertexFaceIsRefused) {
+  PolygonSoup soup = TriangulatedBox();
+  soup.vertices.push_back(soup.vertices[1]);  // an STL-style copy of v1, merged on reading
+  soup.faces.push_back({0, 1, 8});
+  EXPECT_EQ(DefectOf(soup), "pad.stl: 1 degenerate face (fewer than three distinct vertices)");
+}
+
+TEST(MeshDefects, NonManifoldEdgesAndVerticesAreRefused) {
+  const PolygonSoup edge = testing::Union(TriangulatedBox(), TriangulatedBox(1, 1, 1, {1, 1, 0}));
+  EXPECT_EQ(DefectOf(edge), "pad.stl: 1 edge shared by more than two faces, mesh is not manifold");
+  const PolygonSoup corner = testing::Union(TriangulatedBox(), TriangulatedBox(1, 1, 1, {1, 1, 1}));
+  EXPECT_NE(DefectOf(corner).find("pad.stl: 1 non-manifold vertex"), std::string::npos) << DefectOf(corner);
+}
+
+TEST(MeshDefects, PolygonFacesAreTriangulated) {
+  const PreparedMesh m = PrepareTriangleMesh(BoxSoup(2, 3, 4), "box.off");
+  EXPECT_EQ(m.triangulated_faces, 6);
+  EXPECT_EQ(m.mesh.triangles.size(), 12u);
+  EXPECT_NEAR(ComputeVolumeProperties(m.mesh).volume_m3, 24.0, 1e-12);
+}
+
+TEST(MeshDefects, EmptyAndDanglingIndicesAreRefused) {
+  EXPECT_EQ(DefectOf(PolygonSoup{}), "pad.stl: mesh has no faces");
+  PolygonSoup soup = TriangulatedBox();
+  soup.faces.push_back({0, 1, 42});
+  EXPECT_EQ(DefectOf(soup), "pad.stl: a face refers to vertex 42, which does not exist");
+}
+
+}  // namespace
+}  // namespace touchdown::geom
