@@ -22,4 +22,21 @@ void WriteFileAtomically(const std::string& path, const std::function<void(std::
   std::filesystem::rename(temporary, path);
 }
 
+void WriteStagedDirectory(const std::string& directory, const std::function<void(const std::string& staging)>& fill) {
+  namespace fs = std::filesystem;
+  const fs::path target = fs::absolute(directory);
+  const fs::path staging = target.string() + ".partial-" + std::to_string(::getpid());
+  fs::remove_all(staging);
+  fs::create_directories(staging);
+  try {
+    fill(staging.string());
+    fs::remove_all(target);
+    fs::rename(staging, target);
+  } catch (...) {
+    std::error_code ec;
+    fs::remove_all(staging, ec);
+    throw;
+  }
+}
+
 }  // namespace touchdown::drop

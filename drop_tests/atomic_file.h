@@ -9,4 +9,8 @@ namespace touchdown::drop {
 
 void WriteFileAtomically(const std::string& path, const std::function<void(std::ostream&)>& write);
 
+// An output directory the same way: `fill` writes into a staging directory beside `directory`,
+// which replaces `directory` only when `fill` returns; on an exception it is removed.
+void WriteStagedDirectory(const std::string& directory, const std::function<void(const std::string& staging)>& fill);
+
 }  // namespace touchdown::drop

@@ -153,11 +153,9 @@ std::vector<CheckOutcome> EvaluateChecks(const CampaignResult& r) {
 }
 
 void WriteCampaignOutputs(const CampaignResult& r, const std::string& out_dir) {
-  const fs::path target = fs::absolute(out_dir);
-  const fs::path staging = target.string() + ".partial-" + std::to_string(::getpid());
-  fs::remove_all(staging);
-  fs::create_directories(staging / "traces");
-  try {
+  WriteStagedDirectory(out_dir, [&](const std::string& staging_dir) {
+    const fs::path staging = staging_dir;
+    fs::create_directories(staging / "traces");
     nlohmann::json drops = nlohmann::json::array();
     for (size_t i = 0; i < r.drops.size(); ++i) {
       const std::string id = r.scenario.cases[i].drop_id;
@@ -195,12 +193,7 @@ void WriteCampaignOutputs(const CampaignResult& r, const std::string& out_dir) {
     WriteFileAtomically((staging / "summary.json").string(), [&](std::ostream& out) { out << summary.dump(2) << '\n'; });
     WriteResolvedScenario(r.scenario, (staging / "scenario_resolved.yaml").string());
     WriteCampaignPlots(r, staging.string());
-    fs::remove_all(target);
-    fs::rename(staging, target);
-  } catch (...) {
-    fs::remove_all(staging);
-    throw;
-  }
+  });
 }
 
 }  // namespace touchdown::drop

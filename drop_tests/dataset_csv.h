@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "drop_tests/atomic_file.h"
+
 namespace touchdown::drop {
 
 struct CsvTable {
@@ -32,8 +34,5 @@ std::string FormatNumber(double value);
 // Strict parse of a whole cell into a finite double (false on anything else).
 bool ParseNumber(const std::string& cell, double* value);
 
-// Fills a fresh staging directory beside `directory` and renames it into place (replacing an
-// older one) only when `fill` returns; on an exception the staging directory is removed.
-void WriteStagedDirectory(const std::string& directory, const std::function<void(const std::string& staging)>& fill);
 
 }  // namespace touchdown::drop

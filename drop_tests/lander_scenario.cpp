@@ -528,11 +528,8 @@ void WriteResolvedLanderScenario(const LanderScenario& s, const std::string& pat
 }
 
 void WriteLanderOutputs(const LanderRun& run, const std::string& out_dir) {
-  const fs::path target = fs::absolute(out_dir);
-  const fs::path staging = target.string() + ".partial-" + std::to_string(::getpid());
-  fs::remove_all(staging);
-  fs::create_directories(staging);
-  try {
+  WriteStagedDirectory(out_dir, [&](const std::string& staging_dir) {
+    const fs::path staging = staging_dir;
     WriteLanderTraceCsv(run, (staging / "trace.csv").string());
     WriteFileAtomically((staging / "events.csv").string(), [&](std::ostream& out) {
       out << "t_s,event,pad\n" << std::setprecision(12);
@@ -543,12 +540,7 @@ void WriteLanderOutputs(const LanderRun& run, const std::string& out_dir) {
                         [&](std::ostream& out) { out << LanderSummaryJson(run).dump(2) << '\n'; });
     WriteResolvedLanderScenario(run.scenario, (staging / "scenario_resolved.yaml").string());
     WriteLanderPlots(run, staging.string());
-    fs::remove_all(target);
-    fs::rename(staging, target);
-  } catch (...) {
-    fs::remove_all(staging);
-    throw;
-  }
+  });
 }
 
 }  // namespace touchdown::drop
