@@ -35,7 +35,10 @@ PadDrop RunPadDrop(const PadSpec& pad, const rft::SoilParameters& soil, const Dr
   // wrench (rft/contact_wrench.h) and the free-pad dynamics.
   if (!pad.is_axisymmetric())
     throw MakeInputError(pad.source, "", "rig drop of mesh pads needs the 3D contact; use --free");
-  PadDrop drop{pad, soil, conditions, conditions.mass_kg.value_or(pad.mass_kg), 0.0, {}};
+  // The record keeps the pad's description but not its 3D body (megabytes for a fine mesh,
+  // unused by the rig drop): copying it per drop would cost more than the drop itself.
+  PadSpec described{pad.name, pad.source, pad.kind, pad.profile, pad.mass_kg, {}, pad.mesh_file};
+  PadDrop drop{std::move(described), soil, conditions, conditions.mass_kg.value_or(pad.mass_kg), 0.0, {}};
   rft::SoilParameters effective = soil;
   if (conditions.zeta_N_m3) effective.zeta_N_m3 = *conditions.zeta_N_m3;
   if (conditions.atmosphere) drop.soil.atmosphere = *conditions.atmosphere;

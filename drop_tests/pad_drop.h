@@ -21,7 +21,7 @@ struct DropConditions {
 };
 
 struct PadDrop {
-  PadSpec pad;
+  PadSpec pad;  // as loaded, without its 3D body (the rig drop does not use it)
   rft::SoilParameters soil;
   DropConditions conditions;
   double mass_kg = 0.0;          // resolved

@@ -139,7 +139,9 @@ RigDropResult RunRigDrop(const RigDropInput& in, const VerticalSoilResponse& res
   result.gravity_work_J = weight * y[kDepth];
   result.mean_conversion_rate_W = t_stop > 0.0 ? result.impact_energy_J / t_stop : 0.0;
 
-  // Rest: the soil carries the weight; integrate on to show nothing creeps.
+  // Rest: the soil carries the weight; integrate on to show nothing creeps. Reset restarts
+  // CVODE's counters, so the stroke's are kept first.
+  const integ::IntegratorSummary stroke = integrator.summary();
   resting = true;
   integrator.Reset(t_stop, y);
   const double t_end = t_stop + options.rest_duration_s;
@@ -151,6 +153,10 @@ RigDropResult RunRigDrop(const RigDropInput& in, const VerticalSoilResponse& res
   if (t_end > integrator.time()) integrator.AdvanceTo(t_end);
   result.rest_creep_m = integrator.state()[kDepth] - result.final_penetration_m;
   result.solver = integrator.summary();
+  result.solver.steps += stroke.steps;
+  result.solver.rhs_evaluations += stroke.rhs_evaluations;
+  result.solver.root_evaluations += stroke.root_evaluations;
+  result.solver.error_test_failures += stroke.error_test_failures;
   return result;
 }
 
