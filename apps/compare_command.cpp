@@ -22,7 +22,7 @@ void AddCompareCommand(CLI::App& app) {
   cmd->add_option("measured", args->measured, "measured dataset directory (drops.csv + traces)")->required();
   auto* sim = cmd->add_option("--simulated", args->simulated,
                               "simulated dataset directory to join on the drop conditions (default: simulate here)");
-  cmd->add_option("--model", args->model, "model file to simulate with (per-soil zeta)")->excludes(sim);
+  cmd->add_option("--model", args->model, "model file to simulate with (per-soil zeta and effect terms)")->excludes(sim);
   cmd->add_option("--out", args->out, "output directory (replaced when complete)")->required();
   cmd->callback([args] {
     const drop::Dataset measured = drop::ReadDataset(args->measured);

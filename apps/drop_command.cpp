@@ -1,3 +1,4 @@
+#include <cmath>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -5,11 +6,9 @@
 #include <numbers>
 
 #include "apps/commands.h"
-#include "drop_tests/free_drop_output.h"
 #include "drop_tests/model_file.h"
 #include "drop_tests/pad_drop.h"
 #include "rft/input_error.h"
-#include "rft/stress_law_3d_factory.h"
 
 namespace touchdown::app {
 
@@ -25,41 +24,6 @@ struct DropArgs {
   std::string tilt_axis = "x", law = "li2013";
   std::vector<double> omega{0.0, 0.0, 0.0};
 };
-
-// A free pad of another mass keeps its shape and uniform density: inertia scales with the mass.
-geom::PadBody WithMass(geom::PadBody body, double mass_kg) {
-  body.inertia_com_B *= mass_kg / body.mass_kg;
-  body.mass_kg = mass_kg;
-  return body;
-}
-
-void RunFree(const DropArgs& a, const drop::DropConditions& c, const drop::PadSpec& pad,
-             const rft::SoilParameters& soil) {
-  for (double v : {a.tilt_deg, a.horizontal_speed_m_s, a.omega[0], a.omega[1], a.omega[2]})
-    if (!std::isfinite(v)) throw MakeInputError("command line", "--free", "tilt, horizontal speed and omega must be finite");
-  rft::SoilParameters effective = soil;
-  if (c.zeta_N_m3) effective.zeta_N_m3 = *c.zeta_N_m3;
-  const auto law = rft::MakeStressLaw3D(a.law, effective, c.gravity_m_s2);
-  drop::FreeDropInput in;
-  in.impact_speed_m_s = c.impact_speed_m_s;
-  in.horizontal_speed_m_s = a.horizontal_speed_m_s;
-  in.tilt_rad = a.tilt_deg * std::numbers::pi / 180.0;
-  in.tilt_axis = a.tilt_axis;
-  in.omega_W = Eigen::Vector3d(a.omega[0], a.omega[1], a.omega[2]);
-  in.gravity_m_s2 = c.gravity_m_s2;
-  const geom::PadBody body = WithMass(pad.body, c.mass_kg.value_or(pad.body.mass_kg));
-  const drop::FreeDropResult r = drop::RunFreeDrop(body, *law, rft::PlaneGround(), in);
-  if (!a.trace.empty()) drop::WriteFreeDropTraceCsv(r, a.trace);
-  nlohmann::json j = drop::FreeDropJson(r);
-  j["pad"] = pad.name;
-  j["soil"] = soil.name;
-  j["law"] = std::string(law->name());
-  j["impact_speed_m_s"] = c.impact_speed_m_s;
-  j["horizontal_speed_m_s"] = a.horizontal_speed_m_s;
-  j["pad_mass_kg"] = body.mass_kg;
-  j["gravity_m_s2"] = c.gravity_m_s2;
-  std::cout << j.dump(2) << std::endl;
-}
 }  // namespace
 
 void AddDropCommand(CLI::App& app) {
@@ -72,7 +36,8 @@ void AddDropCommand(CLI::App& app) {
   cmd->add_option("--gravity", args->gravity_m_s2, "gravity [m/s^2] (default 9.81)");
   cmd->add_option("--zeta", args->zeta_N_cm3, "override the soil's RFT scaling factor zeta [N/cm^3]");
   cmd->add_option("--trace", args->trace, "write the trace CSV (t_s,penetration_m,velocity_m_s,force_N)");
-  cmd->add_option("--model", args->model, "model file (MODEL.yaml, e.g. from calibrate): per-soil zeta overrides");
+  cmd->add_option("--model", args->model,
+                  "model file (MODEL.yaml, from calibrate or diagnose): per-soil zeta overrides and effect terms");
   cmd->add_flag("--free", args->free, "a free 6-DOF pad (3D contact) instead of the rig's vertical rod");
   cmd->add_option("--tilt-deg", args->tilt_deg, "--free: initial tilt [deg] about --tilt-axis");
   cmd->add_option("--tilt-axis", args->tilt_axis, "--free: x or y");
@@ -86,13 +51,32 @@ void AddDropCommand(CLI::App& app) {
     c.mass_kg = args->mass_kg;
     c.gravity_m_s2 = args->gravity_m_s2;
     if (args->zeta_N_cm3) c.zeta_N_m3 = *args->zeta_N_cm3 * 1e6;
+    for (double v : {args->tilt_deg, args->horizontal_speed_m_s, args->omega[0], args->omega[1], args->omega[2]})
+      if (!std::isfinite(v))
+        throw MakeInputError("command line", "--free", "tilt, horizontal speed and omega must be finite");
+    if (args->free) {
+      c.free = true;
+      c.tilt_rad = args->tilt_deg * std::numbers::pi / 180.0;
+      c.tilt_axis = args->tilt_axis;
+      c.horizontal_speed_m_s = args->horizontal_speed_m_s;
+      c.omega_W = Eigen::Vector3d(args->omega[0], args->omega[1], args->omega[2]);
+      c.law_3d = args->law;
+    } else if (args->tilt_deg != 0.0 || args->horizontal_speed_m_s != 0.0 ||
+               args->omega != std::vector<double>{0.0, 0.0, 0.0}) {
+      throw MakeInputError("command line", "--free",
+                           "--tilt-deg, --horizontal-speed and --omega need --free (the rig drop is vertical)");
+    }
     drop::ValidateConditions(c, "command line");
     const drop::PadSpec pad = drop::LoadPad(args->pad);
     rft::SoilParameters soil = drop::LoadSoil(args->soil);
-    if (!args->model.empty()) soil = drop::ApplyModel(drop::LoadModelFile(args->model), soil);
-    if (args->free) return RunFree(*args, c, pad, soil);
-    const drop::PadDrop result = drop::RunPadDrop(pad, soil, c);
-    if (!args->trace.empty()) drop::WriteTraceCsv(result.result, args->trace);
+    if (!args->model.empty()) {
+      const drop::ModelFile model = drop::LoadModelFile(args->model);
+      soil = drop::ApplyModel(model, soil);
+      c.effects = drop::ModelEffectTerms(model);
+      c.effects_source = args->model;
+    }
+    const drop::PadDrop result = drop::SimulateDrop(pad, soil, c, {});
+    if (!args->trace.empty()) drop::WriteTraceCsv(result, args->trace);
     std::cout << drop::SummaryJson(result).dump(2) << std::endl;
   });
 }

@@ -9,7 +9,7 @@ namespace touchdown::app {
 
 namespace {
 struct LanderArgs {
-  std::string scenario, out;
+  std::string scenario, out, model;
 };
 }  // namespace
 
@@ -21,11 +21,16 @@ void AddLanderCommand(CLI::App& app) {
   cmd->add_option("--out", args->out, "output directory (summary.json, trace.csv, events.csv, plots/, "
                                       "scenario_resolved.yaml), written complete or not at all")
       ->required();
+  cmd->add_option("--model", args->model,
+                  "model file (MODEL.yaml): zeta per soil and the effect terms with a 3D form (inertial_drag, "
+                  "rate_damping, gas_cushion on beds in air); others are refused");
   cmd->callback([args] {
-    const drop::LanderScenario scenario = drop::LoadLanderScenario(args->scenario);
+    drop::LanderScenario scenario = drop::LoadLanderScenario(args->scenario);
+    if (!args->model.empty()) scenario.model = drop::LoadModelFile(args->model);
     const drop::LanderRun run = drop::RunLanderScenario(scenario);
     drop::WriteLanderOutputs(run, args->out);
-    std::cout << drop::LanderSummaryJson(run).dump(2) << std::endl;
+    const nlohmann::json j = drop::LanderSummaryJson(run);
+    std::cout << j.dump(2) << std::endl;
   });
 }
 

@@ -1,3 +1,4 @@
+#include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -14,6 +15,7 @@ struct SweepArgs {
   std::string sweep, out, shard, model, progress = "auto";
   int threads = 0;
   int batch = 512;
+  double max_drop_wall_time_s = 0.0;  // only when given; else the sweep file's (default 60 s)
 };
 }  // namespace
 
@@ -25,13 +27,20 @@ void AddSweepCommand(CLI::App& app) {
   cmd->add_option("--out", args->out, "output directory; a restart with the same command finishes the missing drops")
       ->required();
   cmd->add_option("--threads", args->threads, "worker threads per process (default: every core)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(CLI::Range(0, 4096));
   cmd->add_option("--shard", args->shard, "I/N: run only drops with index mod N == I (job arrays; combine with merge)");
   cmd->add_option("--model", args->model, "model file (MODEL.yaml) with per-soil zeta overrides");
   cmd->add_option("--progress", args->progress, "auto (bar on a terminal, else lines), bar, lines or none")
       ->check(CLI::IsMember({"auto", "bar", "lines", "none"}));
   cmd->add_option("--batch", args->batch, "drops per database transaction (default 512)")->check(CLI::PositiveNumber);
-  cmd->callback([args] {
+  CLI::Option* max_wall =
+      cmd->add_option("--max-drop-wall-time", args->max_drop_wall_time_s,
+                      "wall-clock limit per drop in seconds, 0 = none (default: the sweep file's "
+                      "max_drop_wall_time_s, else 60); a drop over it is recorded as failed");
+  cmd->callback([args, max_wall] {
+    const bool max_wall_given = max_wall->count() > 0;
+    if (max_wall_given && !(std::isfinite(args->max_drop_wall_time_s) && args->max_drop_wall_time_s >= 0.0))
+      throw InputError("--max-drop-wall-time: must be a finite number of seconds >= 0 (0: no limit)");
     drop::SweepRunOptions options;
     options.threads = args->threads;
     if (!args->shard.empty()) options.shard = drop::ParseShard(args->shard);
@@ -40,7 +49,8 @@ void AddSweepCommand(CLI::App& app) {
                        : args->progress == "lines" ? drop::ProgressMode::kLines
                        : args->progress == "none"  ? drop::ProgressMode::kNone
                                                    : drop::ProgressMode::kAuto;
-    const drop::SweepPlan plan = drop::LoadSweepPlan(args->sweep, args->model);
+    drop::SweepPlan plan = drop::LoadSweepPlan(args->sweep, args->model);
+    if (max_wall_given) plan.rig.integrator.max_wall_time_s = args->max_drop_wall_time_s;
     int rank = 0;
     const drop::SweepRunSummary s = drop::LaunchedByMpirun() ? drop::RunSweepMpi(plan, args->out, options, &rank)
                                                              : drop::RunSweep(plan, args->out, options);

@@ -20,11 +20,20 @@ namespace fs = std::filesystem;
 namespace {
 constexpr double kMm = 1e-3;
 constexpr double kDeg = std::numbers::pi / 180.0;
+// Resolution caps, so a hand-written 1e9 is refused at load time instead of exhausting memory
+// (or hanging the profile simplification, which is quadratic in the profile's points). The
+// revolved mesh has about 0.5 N^2 triangles for N angular segments (~8k at the default 128,
+// ~500k at 1024); 10000 profile pieces resolve any curve a pad drawing can specify.
+constexpr int kMaxAngularSegments = 1024;
+constexpr int kMaxProfileSegments = 10000;
 
 std::vector<geom::ProfilePoint> ReadProfileTable(const YamlFields& f) {
   std::vector<geom::ProfilePoint> points;
   const YAML::Node list = f.node()["points_mm"];
   if (!list.IsSequence() || list.size() < 2) f.Fail("points_mm", "must be a list of at least two [x, u] pairs");
+  if (list.size() > static_cast<size_t>(kMaxProfileSegments) + 1)
+    f.Fail("points_mm", "must have at most " + std::to_string(kMaxProfileSegments + 1) + " points, got " +
+                            std::to_string(list.size()));
   for (size_t i = 0; i < list.size(); ++i) {
     const std::string path = "points_mm[" + std::to_string(i) + "]";
     double x = 0, u = 0;
@@ -51,6 +60,8 @@ geom::AxisymmetricProfile ReadProfile(const YamlFields& f) {
   const double r = f.Positive("radius_mm") * kMm;
   const double h = f.Positive("thickness_mm") * kMm;
   const int segments = f.Has("segments") ? f.PositiveInt("segments") : 400;
+  if (segments > kMaxProfileSegments)
+    f.Fail("segments", "must be at most " + std::to_string(kMaxProfileSegments) + ", got " + std::to_string(segments));
   if (shape == "flat") {
     f.RequireOnly({"shape", "radius_mm", "thickness_mm"});
     return Guarded(f, [&] { return geom::MakeFlatProfile(r, h); });
@@ -132,6 +143,9 @@ void LoadAxisymmetricPad(const YamlFields& f, PadSpec& pad) {
   geom::ValidateProfile(pad.profile, f.file());
   const int segments = f.Has("angular_segments") ? f.PositiveInt("angular_segments") : geom::kDefaultAngularSegments;
   if (segments < 6) f.Fail("angular_segments", "must be at least 6, got " + std::to_string(segments));
+  if (segments > kMaxAngularSegments)
+    f.Fail("angular_segments", "must be at most " + std::to_string(kMaxAngularSegments) + ", got " +
+                                   std::to_string(segments));
   const Eigen::Vector3d reference =
       f.Has("reference_point_mm") ? ReadPointMm(f, "reference_point_mm")
                                   : Eigen::Vector3d(0.0, 0.0, pad.profile.thickness_m());

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <numbers>
 #include <nlohmann/json.hpp>
 
 #include "drop_tests/atomic_file.h"
@@ -55,8 +56,9 @@ NrmseResult ForceNrmseTime(const DatasetTrace& m, const DatasetTrace& s) {
   const double peak = *std::max_element(m.force_N.begin(), m.force_N.end());
   double sum = 0.0;
   for (size_t i = 0; i < m.size(); ++i) {
-    // Before touchdown the pad is in the air (no force); after the simulated trace, at rest.
-    const double f_sim = m.t_s[i] < 0.0 ? 0.0 : InterpolateClamped(s.t_s, s.force_N, m.t_s[i]);
+    // Before the simulated trace begins (its touchdown: t = 0, or -dt with a sensor offset) the
+    // pad is in the air (no force); after it ends, at rest.
+    const double f_sim = m.t_s[i] < s.t_s.front() ? 0.0 : InterpolateClamped(s.t_s, s.force_N, m.t_s[i]);
     sum += (f_sim - m.force_N[i]) * (f_sim - m.force_N[i]);
     ++r.used;
   }
@@ -95,23 +97,29 @@ NrmseResult ForceNrmsePenetration(const DatasetTrace& m, const DatasetTrace& s) 
 
 Dataset SimulateMeasuredDrops(const Dataset& measured, const std::optional<ModelFile>& model) {
   Dataset out;
-  out.extra_columns = {"zeta_N_cm3", "time_to_rest_s", "mean_conversion_rate_W"};
+  out.extra_columns = {"tilt_deg",       "horizontal_speed_m_s",   "zeta_N_cm3",    "time_to_rest_s",
+                       "mean_conversion_rate_W", "final_tilt_deg", "horizontal_travel_m"};
   std::map<std::string, PadSpec> pads;
   std::map<std::string, rft::SoilParameters> soils;
   const std::string file = (fs::path(measured.directory) / "drops.csv").string();
+  const EffectTerms effects = model ? ModelEffectTerms(*model) : EffectTerms{};
+  const std::string effects_source = model ? model->source : "";
   for (const DatasetDrop& m : measured.drops) {
-    for (const char* column : {"tilt_deg", "horizontal_speed_m_s"})
-      if (ExtraOrZero(measured, m, column) != 0.0)
-        throw MakeInputError(file, "drop " + m.drop_id + ", column " + column,
-                             "non-zero values need the 6-DOF free drop, not in this build");
     const std::string pad_ref = measured.PadReference(m), soil_ref = measured.SoilReference(m);
     if (!pads.count(pad_ref)) pads.emplace(pad_ref, LoadPad(pad_ref));
     if (!soils.count(soil_ref)) soils.emplace(soil_ref, model ? ApplyModel(*model, LoadSoil(soil_ref)) : LoadSoil(soil_ref));
-    DropConditions c;
-    c.impact_speed_m_s = m.impact_speed_m_s;
-    c.mass_kg = m.pad_mass_kg;
-    c.gravity_m_s2 = m.gravity_m_s2;
-    const PadDrop d = RunPadDrop(pads.at(pad_ref), soils.at(soil_ref), c);
+    // The drop's own conditions, atmosphere included (gas_cushion acts on the drops in air);
+    // a tilt or a horizontal speed makes it a free 6-DOF drop (tilt about x, travel along +x).
+    DropRow row;
+    row.impact_speed_m_s = m.impact_speed_m_s;
+    row.mass_kg = m.pad_mass_kg;
+    row.gravity_m_s2 = m.gravity_m_s2;
+    row.atmosphere = m.atmosphere;
+    const double tilt_deg = ExtraOrZero(measured, m, "tilt_deg");
+    row.tilt_rad = tilt_deg * std::numbers::pi / 180.0;
+    row.horizontal_speed_m_s = ExtraOrZero(measured, m, "horizontal_speed_m_s");
+    const DropConditions c = DropConditionsFor(row, effects, effects_source, file + ": drop " + m.drop_id);
+    const PadDrop d = SimulateDrop(pads.at(pad_ref), soils.at(soil_ref), c, {});
     DatasetDrop s;
     s.drop_id = m.drop_id;
     s.pad = m.pad;
@@ -121,15 +129,23 @@ Dataset SimulateMeasuredDrops(const Dataset& measured, const std::optional<Model
     s.pad_mass_kg = m.pad_mass_kg;
     s.gravity_m_s2 = m.gravity_m_s2;
     s.trace_file = "traces/" + m.drop_id + ".csv";
-    s.final_penetration_m = d.result.final_penetration_m;
+    // What the rig would record (effects.h RecordedAt): with a sensor_offset the recorded time
+    // runs dt behind the true one (t_rec = t - dt) and the recorded penetration reads dz more.
+    const double dz = c.effects.sensor_dz_m, dt = c.effects.sensor_dt_s;
+    s.final_penetration_m = d.result.final_penetration_m + dz;
     s.peak_force_N = d.result.peak_force_N;
-    s.extra = {FormatNumber(d.zeta_effective_N_m3 / 1e6), FormatNumber(d.result.time_to_rest_s),
-               FormatNumber(d.result.mean_conversion_rate_W)};
+    s.extra = {FormatNumber(tilt_deg),
+               FormatNumber(row.horizontal_speed_m_s),
+               FormatNumber(d.zeta_effective_N_m3 / 1e6),
+               FormatNumber(d.result.time_to_rest_s),
+               FormatNumber(d.result.mean_conversion_rate_W),
+               FormatNumber(d.free ? d.free->final_tilt_deg : 0.0),
+               FormatNumber(d.free ? d.free->horizontal_travel_m : 0.0)};
     s.trace.extra_columns = {"velocity_m_s"};
     s.trace.extra.resize(1);
     for (const DropSample& p : d.result.trace) {
-      s.trace.t_s.push_back(p.t_s);
-      s.trace.penetration_m.push_back(p.penetration_m);
+      s.trace.t_s.push_back(p.t_s - dt);
+      s.trace.penetration_m.push_back(p.penetration_m + dz);
       s.trace.force_N.push_back(p.force_N);
       s.trace.extra[0].push_back(p.velocity_m_s);
     }
@@ -266,7 +282,7 @@ void WriteComparison(const Comparison& c, const Dataset& measured, const Dataset
       const DatasetDrop& m = measured.drops[i];
       const DatasetDrop& s = *partners[i];
       for (const auto& [tag, drop] : {std::pair<const char*, const DatasetDrop*>{"measured", &m}, {"simulated", &s}})
-        WriteFileAtomically((dir / "plots" / "data" / (m.drop_id + "_" + tag + ".csv")).string(), [&](std::ostream& out) {
+        WriteFileAtomically((dir / "plots" / "data" / (m.drop_id + "_" + tag + ".csv")).string(), [&, drop = drop](std::ostream& out) {
           out << "t_s,penetration_m,force_N\n";
           for (size_t k = 0; k < drop->trace.size(); ++k)
             out << FormatNumber(drop->trace.t_s[k]) << ',' << FormatNumber(drop->trace.penetration_m[k]) << ','

@@ -63,9 +63,13 @@ struct Comparison {
   std::string simulated_from;                // "model <file>", "catalogue soils" or "dataset <dir>"
 };
 
-// Simulates every measured drop with its own pad, soil, speed, mass and gravity (soils through
-// `model` when given) on the rig at 1 kHz; returns a dataset with the same drop ids.
-// Throws InputError for drops the rig cannot represent (non-zero tilt_deg/horizontal_speed_m_s).
+// Simulates every measured drop with its own pad, soil, atmosphere, speed, mass and gravity
+// (DropConditionsFor + SimulateDrop, drop_tests/pad_drop.h) at 1 kHz, under `model` when given:
+// its zeta per soil and its effects (gas_cushion on the drops in air only). A drop with a
+// non-zero tilt_deg or horizontal_speed_m_s column is a free 6-DOF drop (tilt about x, travel
+// along +x; only effects with a 3D form). A sensor_offset is applied as the rig records: the
+// simulated trace's time shifted by -dt, its penetration by +dz (effects.h RecordedAt), so it
+// compares with the measured record. Returns a dataset with the same drop ids.
 Dataset SimulateMeasuredDrops(const Dataset& measured, const std::optional<ModelFile>& model);
 // For each measured drop the first simulated drop with the same conditions (pad, soil,
 // atmosphere, impact speed, mass, gravity, and tilt_deg/horizontal_speed_m_s where given, 0

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <unordered_set>
 #include <unistd.h>
 
 #include "rft/input_error.h"
@@ -74,12 +75,12 @@ CsvTable ReadCsv(const std::string& path) {
       throw MakeInputError(path, "line " + std::to_string(number), "data after a blank line");
     std::vector<std::string> cells = SplitCells(line);
     if (t.header.empty()) {
+      std::unordered_set<std::string> seen;  // not pairwise: a header may have many columns
       for (size_t i = 0; i < cells.size(); ++i) {
         if (cells[i].empty())
           throw MakeInputError(path, "line 1, column " + std::to_string(i + 1), "empty column name");
-        for (size_t j = 0; j < i; ++j)
-          if (cells[j] == cells[i])
-            throw MakeInputError(path, "line 1, column " + std::to_string(i + 1), "duplicate column '" + cells[i] + "'");
+        if (!seen.insert(cells[i]).second)
+          throw MakeInputError(path, "line 1, column " + std::to_string(i + 1), "duplicate column '" + cells[i] + "'");
       }
       t.header = std::move(cells);
       continue;

@@ -344,6 +344,20 @@ FitResult FitCandidate(const FitProblem& p, const std::vector<std::string>& ids,
   out.parameters = n;
   out.bic = out.samples * std::log(std::max(out.rss, 1e-300) / out.samples) + n * std::log(double(out.samples));
   out.simulations = obj.simulations;
+  // The force residual in newtons per soil (the unweighted force rows are (F_sim - F) / max F).
+  out.residual_rms_N.assign(L.soils, 0.0);
+  out.force_samples.assign(L.soils, 0);
+  for (size_t c = 0; c < obj.train().size(); ++c) {
+    const FitDrop& d = p.drops[obj.train()[c]];
+    const long o = obj.offsets()[c], n = static_cast<long>(d.trace->size());
+    for (long i = 0; i < n; ++i) {
+      const double e = unweighted[o + 2 * i] * d.force_scale_N;
+      out.residual_rms_N[d.soil] += e * e;
+    }
+    out.force_samples[d.soil] += n;
+  }
+  for (int s = 0; s < L.soils; ++s)
+    out.residual_rms_N[s] = out.force_samples[s] > 0 ? std::sqrt(out.residual_rms_N[s] / out.force_samples[s]) : 0.0;
 
   // Cluster-robust covariance (drops as clusters), CR1 small-sample factor G / (G - 1).
   const Eigen::MatrixXd A = J.transpose() * J;

@@ -70,6 +70,12 @@ struct FitResult {
   long samples = 0;        // residual count (training)
   int parameters = 0;
   double bic = 0.0;        // samples ln(rss / samples) + parameters ln(samples)
+  // Per soil (index as FitProblem::soils): the RMS force residual of the fitted model,
+  // sqrt(mean_i (F_sim(t_i) - F_i)^2) [N] over every measured sample i of the soil's training
+  // drops (F_sim as recorded, sensor_offset included), and how many samples that is. What a model
+  // file's fit.residual_rms_N and fit.samples record.
+  std::vector<double> residual_rms_N;
+  std::vector<long> force_samples;
   int iterations = 0;
   long simulations = 0;
   bool converged = false;

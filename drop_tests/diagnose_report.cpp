@@ -142,10 +142,13 @@ void WriteDiagnosis(const Diagnosis& d, const Dataset& ds, const std::string& ou
       o.zeta_low_N_m3 = e.low;
       o.zeta_high_N_m3 = e.high;
       SoilFit fit;
-      fit.method = "touchdown diagnose: Levenberg-Marquardt on force and penetration against time, training drops";
+      fit.method = "touchdown diagnose: Levenberg-Marquardt on force and penetration against time, training drops; "
+                   "residual_rms_N: force residual over the soil's training samples";
       fit.drops = 0;
       for (const FitDrop& f : d.problem.drops) fit.drops += f.train && f.soil == static_cast<int>(s);
-      fit.samples = after.fit.samples;
+      // The fitted model's own residual on this soil's training drops (force against time, N).
+      fit.samples = after.fit.force_samples[s];
+      fit.residual_rms_N = after.fit.residual_rms_N[s];
       fit.dataset = ds.directory;
       o.fit = fit;
       model.soils[d.problem.soils[s].name] = o;

@@ -10,6 +10,7 @@
 
 #include "drop_tests/yaml_fields.h"
 #include "rft/input_error.h"
+#include "rft/stress_law_3d_factory.h"
 
 namespace touchdown::drop {
 
@@ -93,6 +94,64 @@ EffectTerms MakeEffectTerms(const std::vector<Effect>& effects, const std::strin
   return t;
 }
 
+std::vector<std::string> ActiveEffects(const EffectTerms& t) {
+  std::vector<std::string> out;
+  if (t.inertial_lambda != 0.0) out.push_back("inertial_drag");
+  if (t.damping_c_N_s_m3 != 0.0) out.push_back("rate_damping");
+  if (t.added_mass_ca != 0.0) out.push_back("added_mass");
+  if (t.compaction_k_kg_m3 != 0.0) out.push_back("compaction_peak");
+  if (t.depth_exponent && *t.depth_exponent != 1.0) out.push_back("depth_exponent");
+  if (t.gas_chi != 0.0 || t.gas_c_N_s_m3 != 0.0) out.push_back("gas_cushion");
+  if (t.HasSensorOffset()) out.push_back("sensor_offset");
+  return out;
+}
+
+std::vector<std::pair<std::string, std::string>> EffectsNotApplied(const EffectTerms& t, bool in_air) {
+  std::vector<std::pair<std::string, std::string>> out;
+  for (const std::string& id : ActiveEffects(t)) {
+    if (id == "sensor_offset")
+      out.emplace_back(id, "a measurement effect, not physics: the simulated drop is the true one; `compare` "
+                           "applies it to the simulated traces it compares with recorded ones");
+    else if (id == "gas_cushion" && !in_air)
+      out.emplace_back(id, "acts only on drops in air; this drop is in vacuum");
+  }
+  return out;
+}
+
+std::optional<std::string> No3DFormReason(const std::string& id) {
+  if (id == "added_mass")
+    return "has no 3D form yet: the entrained cone of grains is defined for an axisymmetric pad moving straight "
+           "down (the rig drop), not for a tilted or sliding pad";
+  if (id == "compaction_peak")
+    return "has no 3D form yet: its decay exp(-d/d_c) follows the pad's penetration d, which a per-element 3D "
+           "stress law does not see";
+  if (id == "depth_exponent")
+    return "has no 3D form yet: the 3D contact integrates stresses linear in depth exactly over each triangle "
+           "(rft/contact_wrench.h); a power law in depth needs a new integration there";
+  return std::nullopt;
+}
+
+std::unique_ptr<rft::StressLaw3D> MakeEffectLaw3D(std::string_view law, const rft::SoilParameters& soil,
+                                                  double gravity_m_s2, const EffectTerms& t, bool in_air,
+                                                  const std::string& model_source) {
+  for (const std::string& id : ActiveEffects(t))
+    if (const std::optional<std::string> why = No3DFormReason(id))
+      throw MakeInputError(model_source.empty() ? "model" : model_source, "effects." + id,
+                           *why + "; the free drop and the lander cannot apply it (the rig drop can)");
+  rft::EffectTerms3D terms;
+  terms.inertial_lambda = t.inertial_lambda;
+  terms.inertial_density_kg_m3 = soil.bulk_density_kg_m3;
+  terms.damping_c_N_s_m3 = t.damping_c_N_s_m3;
+  if (in_air) {
+    terms.gas_chi = t.gas_chi;
+    terms.gas_c_N_s_m3 = t.gas_c_N_s_m3;
+  }
+  if (terms.inertial_lambda > 0.0 && !(soil.bulk_density_kg_m3 > 0.0))
+    throw MakeInputError(soil.name, "bulk_density_kg_m3",
+                         "the soil must state its bulk density for inertial_drag (model " + model_source + ")");
+  return rft::MakeStressLaw3D(law, soil, gravity_m_s2, terms);
+}
+
 std::vector<Effect> ParseEffects(const YamlFields& f) {
   std::vector<Effect> out;
   for (const auto& item : f.node()) {
@@ -167,7 +226,8 @@ EffectSoilResponse::EffectSoilResponse(const geom::AxisymmetricIntrusion& pad, c
 }
 
 double EffectSoilResponse::QuasiStaticForce(double d) const {
-  if (in_.terms.depth_exponent)
+  // p = 1 is the linear law itself: computed as such, so a neutral depth_exponent changes nothing.
+  if (in_.terms.depth_exponent && *in_.terms.depth_exponent != 1.0)
     return pad_.PowerLawVerticalForce(d, zeta_qs_, *in_.terms.depth_exponent, in_.terms.depth_reference_m);
   return pad_.VerticalForce(d, zeta_qs_);
 }

@@ -27,12 +27,23 @@
 //
 // Every velocity term vanishes at rest, so the static capacity is the quasi-static force (with
 // the depth law and the gas cushion applied).
+//
+// In 3D (free drop, lander: the per-element contact of rft/contact_wrench.h) the terms with a
+// per-element form are StressLaw3D decorators (MakeEffectLaw3D below): inertial_drag
+// (rft/dynamic_term.h), rate_damping (rft/rate_damping_term.h) and gas_cushion
+// (rft/gas_cushion_term.h, beds in air only). added_mass, compaction_peak and depth_exponent have
+// no 3D form yet and are refused there; sensor_offset never changes the physics.
+#include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 #include "drop_tests/rig_drop.h"
 #include "footpad_geom/axisymmetric_intrusion.h"
+#include "rft/soil.h"
+#include "rft/stress_law_3d.h"
 
 namespace YAML {
 class Node;
@@ -93,6 +104,25 @@ struct EffectTerms {
 
 // Throws InputError (naming `context`) on a value outside its range or a repeated id.
 EffectTerms MakeEffectTerms(const std::vector<Effect>& effects, const std::string& context = "");
+
+// The effects that act (parameters not all neutral: c = 0, p = 1, chi = c_g = 0, ...), by id in
+// library order. A listed effect with neutral parameters changes nothing and is not active.
+std::vector<std::string> ActiveEffects(const EffectTerms& terms);
+// The active effects a drop does not apply to its physics, with the reason: sensor_offset always
+// (measurement only: `compare` applies it to the simulated traces it compares with measured
+// ones), gas_cushion when the drop is not in air.
+std::vector<std::pair<std::string, std::string>> EffectsNotApplied(const EffectTerms& terms, bool in_air);
+// Why an effect has no per-element 3D form (free drop, lander), or nullopt if it has one (or,
+// like sensor_offset, does not change the physics).
+std::optional<std::string> No3DFormReason(const std::string& id);
+
+// The 3D stress law `law` of `soil` (zeta as given, scaled to gravity) with the active effect
+// terms that have a 3D form: inertial_drag (rho = the soil's bulk density, as in the rig),
+// rate_damping, and gas_cushion when `in_air`. Throws InputError naming `model_source`, the
+// field effects.<id> and the reason when an active effect has no 3D form (No3DFormReason).
+std::unique_ptr<rft::StressLaw3D> MakeEffectLaw3D(std::string_view law, const rft::SoilParameters& soil,
+                                                  double gravity_m_s2, const EffectTerms& terms, bool in_air,
+                                                  const std::string& model_source);
 
 // The `effects:` mapping of a model file: {id: {param_key: value, ...}, ...}; optional
 // `interval_95` mappings ({key: [low, high]}) are informational and checked for shape.

@@ -8,6 +8,7 @@
 
 #include "drop_tests/pad_pose.h"
 #include "rft/contact_wrench.h"
+#include "rft/deepest_point.h"
 
 namespace touchdown::drop {
 
@@ -35,25 +36,18 @@ Pose PoseOf(const geom::PadBody& body, const Eigen::Ref<const Eigen::VectorXd>& 
 }
 
 double Depth(const geom::PadBody& body, const rft::GroundSurface& ground, const Pose& s) {
-  // Depth of the deepest vertex below the surface (vertical, as RFT measures it).
-  double deepest = -INFINITY;
-  for (const Eigen::Matrix3Xd* v : {&body.surface.p0_B, &body.surface.p1_B, &body.surface.p2_B})
-    for (int i = 0; i < v->cols(); ++i) deepest = std::max(deepest, ground.Depth(s.p_WB + s.R_WB * v->col(i)));
-  return deepest;
+  return rft::DeepestVertexDepth(body.vertices_B, s.R_WB, s.p_WB, ground);
 }
 
 // Radius of the pad about its centre of mass: spin times it is a speed.
 double BodyRadius(const geom::PadBody& body) {
-  double r = 0.0;
-  for (const Eigen::Matrix3Xd* v : {&body.surface.p0_B, &body.surface.p1_B, &body.surface.p2_B})
-    r = std::max(r, (v->colwise() - body.com_B).colwise().norm().maxCoeff());
-  return r;
+  return body.vertices_B.cols() > 0 ? (body.vertices_B.colwise() - body.com_B).colwise().norm().maxCoeff() : 0.0;
 }
 }  // namespace
 
 FreeDropResult RunFreeDrop(const geom::PadBody& body, const rft::StressLaw3D& law, const rft::GroundSurface& ground,
                            const FreeDropInput& in, const FreeDropOptions& options) {
-  if (!(body.mass_kg > 0.0) || body.surface.size() == 0) throw std::invalid_argument("RunFreeDrop: empty pad body");
+  if (!(body.mass_kg > 0.0) || body.surface.size() == 0 || body.vertices_B.cols() == 0) throw std::invalid_argument("RunFreeDrop: empty pad body");
   if (!(in.gravity_m_s2 > 0.0) || !(in.impact_speed_m_s >= 0.0) || !std::isfinite(in.horizontal_speed_m_s) ||
       !std::isfinite(in.tilt_rad) || !in.omega_W.allFinite())
     throw std::invalid_argument("RunFreeDrop: invalid input");
@@ -146,10 +140,12 @@ FreeDropResult RunFreeDrop(const geom::PadBody& body, const rft::StressLaw3D& la
       continue;
     }
     if (r.roots_found[1] == 0) continue;  // a touchdown re-crossing: go on to the same output time
-    // Slow enough: rest if pushing straight down meets at least the weight.
+    // Slow enough: rest if pushing straight down meets at least the weight. The probe moves at
+    // 1 um/s: quasi-static RFT depends on the direction only, and speed-dependent terms (dynamic
+    // term, damping effects) must not count as static capacity.
     Eigen::VectorXd s = integrator.state();
     Pose probe = PoseOf(body, s);
-    rft::PadKinematics down{probe.R_WB, probe.p_WB, Eigen::Vector3d(0.0, 0.0, -1.0), Eigen::Vector3d::Zero()};
+    rft::PadKinematics down{probe.R_WB, probe.p_WB, Eigen::Vector3d(0.0, 0.0, -1e-6), Eigen::Vector3d::Zero()};
     const double capacity = rft::ComputeContactWrench(body.surface, down, ground, law).force_W.z();
     if (capacity >= m * g) {
       t_rest = r.t;

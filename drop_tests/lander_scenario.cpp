@@ -11,6 +11,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "drop_tests/atomic_file.h"
+#include "drop_tests/dataset_csv.h"  // FormatNumber
 #include "drop_tests/lander_plots.h"
 #include "drop_tests/yaml_fields.h"
 #include "rft/input_error.h"
@@ -246,6 +247,14 @@ LanderScenario LoadLanderScenario(const std::string& path) {
     sim.RequireOnly({"duration_s", "sample_rate_hz", "capture_speed_m_s", "rtol", "atol", "max_step_s", "stiff"});
     if (sim.Has("duration_s")) s.options.duration_s = sim.Positive("duration_s");
     if (sim.Has("sample_rate_hz")) s.options.sample_rate_hz = sim.Positive("sample_rate_hz");
+    // Resolution caps (the trace keeps duration x rate samples; a hand-written 1e9 must not
+    // exhaust memory or run for days).
+    if (s.options.duration_s > 600.0)
+      sim.Fail("duration_s", "must be at most 600 s, got " + FormatNumber(s.options.duration_s));
+    if (s.options.sample_rate_hz > 1e6)
+      sim.Fail("sample_rate_hz", "must be at most 1e6 Hz, got " + FormatNumber(s.options.sample_rate_hz));
+    if (s.options.duration_s * s.options.sample_rate_hz > 1e7)
+      sim.Fail("sample_rate_hz", "duration_s x sample_rate_hz must be at most 1e7 trace samples");
     if (sim.Has("capture_speed_m_s")) s.options.capture_speed_m_s = sim.NonNegative("capture_speed_m_s");
     if (sim.Has("rtol")) s.options.integrator.rtol = sim.Positive("rtol");
     if (sim.Has("atol")) s.options.integrator.atol = sim.Positive("atol");
@@ -334,8 +343,8 @@ LanderSetup BuildLanderSetup(const LanderScenario& sc) {
     out.terrain.patches.push_back(patch);
   }
   for (const std::string& name : soil_names)
-    out.terrain.soils.push_back({name, std::shared_ptr<const rft::StressLaw3D>(
-                                           rft::MakeStressLaw3D(sc.ground.law, LoadSoil(name), g))});
+    out.terrain.soils.push_back({name, std::shared_ptr<const rft::StressLaw3D>(MakeModelStressLaw3D(
+                                           sc.ground.law, LoadSoil(name), g, sc.model ? &*sc.model : nullptr))});
   return out;
 }
 
@@ -395,6 +404,7 @@ nlohmann::json LanderSummaryJson(const LanderRun& run) {
                                          2.0 * run.scenario.gravity_m_s2 * *run.scenario.initial.drop_height_m);
   else
     j["touchdown_speed_m_s"] = *run.scenario.initial.touchdown_speed_m_s;
+  if (run.scenario.model) j["model"] = ModelEffectsJson(*run.scenario.model);
   if (!run.scenario.paper_ground_case.empty()) j["paper_ground_case"] = run.scenario.paper_ground_case;
   if (run.scenario.paper) {
     const double within = run.scenario.paper->roll_pitch_within_deg;
@@ -489,12 +499,14 @@ void WriteResolvedLanderScenario(const LanderScenario& s, const std::string& pat
   const LanderSetup setup = BuildLanderSetup(s);
   y << YAML::Key << "soils" << YAML::Value << YAML::BeginSeq;
   for (const lander::TerrainSoil& soil : setup.terrain.soils) {
-    const rft::SoilParameters p = LoadSoil(soil.name);
+    const rft::SoilParameters p = s.model ? ApplyModel(*s.model, LoadSoil(soil.name)) : LoadSoil(soil.name);
     y << YAML::BeginMap << YAML::Key << "name" << YAML::Value << p.name << YAML::Key << "zeta_N_cm3_at_gravity"
       << YAML::Value << p.ZetaAtGravity(s.gravity_m_s2) / 1e6 << YAML::Key << "atmosphere" << YAML::Value
-      << p.atmosphere << YAML::EndMap;
+      << p.atmosphere << YAML::Key << "law_3d" << YAML::Value << std::string(soil.law->name()) << YAML::EndMap;
   }
-  y << YAML::EndSeq << YAML::Key << "patches" << YAML::Value << YAML::BeginSeq;
+  y << YAML::EndSeq;
+  if (s.model) y << YAML::Key << "model" << YAML::Value << s.model->source;
+  y << YAML::Key << "patches" << YAML::Value << YAML::BeginSeq;
   for (const lander::SoilPatch& p : setup.terrain.patches) {
     y << YAML::BeginMap << YAML::Key << "name" << YAML::Value << p.name << YAML::Key << "soil" << YAML::Value
       << setup.terrain.soils[p.soil].name << YAML::Key << "polygon_m" << YAML::Value << YAML::BeginSeq;

@@ -14,6 +14,7 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include "drop_tests/catalog.h"
+#include "drop_tests/model_file.h"
 #include "lander/lander_simulation.h"
 
 namespace touchdown::drop {
@@ -79,6 +80,9 @@ struct LanderScenario {
   lander::LanderRunOptions options;
   std::optional<LanderPaperCheck> paper;
   std::string paper_ground_case;  // e.g. "CP LP LP LP" (Table II), informational
+  // `touchdown lander --model`: zeta per soil and the effect terms with a 3D form, for every soil
+  // of the ground (drop_tests/model_file.h MakeModelStressLaw3D). Not part of the scenario file.
+  std::optional<ModelFile> model;
 };
 
 struct LanderSetup {

@@ -1,6 +1,7 @@
 #include "drop_tests/model_file.h"
 
 #include <filesystem>
+#include <nlohmann/json.hpp>
 
 #include "drop_tests/atomic_file.h"
 #include "drop_tests/dataset_csv.h"
@@ -105,15 +106,37 @@ void WriteModelFile(const ModelFile& m, const std::string& path) {
 }
 
 rft::SoilParameters ApplyModel(const ModelFile& m, const rft::SoilParameters& soil) {
-  if (m.HasEffects())
-    throw MakeInputError(m.source, "effects",
-                         "effect terms are not supported by this touchdown build (only per-soil zeta overrides)");
   rft::SoilParameters out = soil;
   const auto it = m.soils.find(soil.name);
   if (it == m.soils.end()) return out;
   // The model's zeta holds at its own reference gravity; the soil keeps its reference.
   out.zeta_N_m3 = it->second.zeta_N_m3 * soil.reference_gravity_m_s2 / it->second.reference_gravity_m_s2;
   return out;
+}
+
+std::vector<Effect> ModelEffects(const ModelFile& m) {
+  if (!m.HasEffects()) return {};
+  return ParseEffects(YamlFields(m.effects, m.source.empty() ? std::string("model ") + m.name : m.source, "effects"));
+}
+
+EffectTerms ModelEffectTerms(const ModelFile& m) {
+  return MakeEffectTerms(ModelEffects(m), m.source.empty() ? "model " + m.name : m.source);
+}
+
+std::unique_ptr<rft::StressLaw3D> MakeModelStressLaw3D(std::string_view law, const rft::SoilParameters& soil,
+                                                       double gravity_m_s2, const ModelFile* model) {
+  if (!model) return MakeEffectLaw3D(law, soil, gravity_m_s2, EffectTerms{}, soil.atmosphere == "air", "");
+  return MakeEffectLaw3D(law, ApplyModel(*model, soil), gravity_m_s2, ModelEffectTerms(*model),
+                         soil.atmosphere == "air", model->source.empty() ? "model " + model->name : model->source);
+}
+
+nlohmann::json ModelEffectsJson(const ModelFile& m) {
+  const EffectTerms terms = ModelEffectTerms(m);
+  nlohmann::json applied = nlohmann::json::array(), skipped = nlohmann::json::object();
+  for (const auto& [id, why] : EffectsNotApplied(terms, /*in_air=*/true)) skipped[id] = why;
+  for (const std::string& id : ActiveEffects(terms))
+    if (!skipped.contains(id)) applied.push_back(id == "gas_cushion" ? "gas_cushion (soils in air only)" : id);
+  return {{"file", m.source}, {"effects", applied}, {"effects_not_applied", skipped}};
 }
 
 std::string ModelDigestText(const ModelFile& m) {

@@ -12,19 +12,32 @@
 //       zeta_interval_N_cm3: [3.52, 3.70]   # optional confidence interval
 //       confidence: 0.95
 //       fit: {method: ..., drops: 6, samples: 240, residual_rms_N: 4.1, dataset: ...}   # optional record
-//   effects: {}                 # reserved: effect terms beyond quasi-static RFT (issue 6)
+//   effects:                    # effect terms beyond quasi-static RFT (drop_tests/effects.h)
+//     inertial_drag: {lambda: 2.1, interval_95: {lambda: [1.8, 2.4]}}
 //   provenance: ...             # free text/mapping, kept
 //
-// `effects` is kept as raw YAML so that later code can read its own terms from it; until
-// effect terms exist, ApplyModel refuses a model whose `effects` is not empty rather than
-// silently running without them.
+// `effects` is kept as raw YAML (written back unchanged) and validated on load; ModelEffectTerms
+// gives its terms. Where they act:
+//   rig drops (`drop`, `sweep`, `compare`, `calibrate`'s users): every effect, through
+//     DropConditions::effects (drop_tests/pad_drop.h); gas_cushion only on drops in air (the
+//     drop's atmosphere: the dataset row's in `compare`, else the soil's);
+//   free drops and the lander (3D contact): the effects with a per-element 3D form
+//     (MakeModelStressLaw3D below); the others are refused naming the file and the effect;
+//   sensor_offset (measurement only) never changes a simulated drop: `compare` applies it to
+//     the simulated traces it compares with recorded ones (what the rig would record), and
+//     `drop` reports it as not applied.
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 
+#include <nlohmann/json_fwd.hpp>
 #include <yaml-cpp/yaml.h>
 
+#include "drop_tests/effects.h"
 #include "rft/soil.h"
+#include "rft/stress_law_3d.h"
 
 namespace touchdown::drop {
 
@@ -59,9 +72,21 @@ struct ModelFile {
 ModelFile LoadModelFile(const std::string& path);
 void WriteModelFile(const ModelFile& model, const std::string& path);
 // The soil as the model sees it: its zeta replaced when the model has an override (converted to
-// the soil's own reference gravity). Throws InputError if the model carries effect terms this
-// build cannot apply.
+// the soil's own reference gravity). Effect terms are not part of the soil: see ModelEffectTerms.
 rft::SoilParameters ApplyModel(const ModelFile& model, const rft::SoilParameters& soil);
+// The model's effects (validated; none when `effects` is empty) and their flattened terms.
+// Throws InputError naming the model file and field.
+std::vector<Effect> ModelEffects(const ModelFile& model);
+EffectTerms ModelEffectTerms(const ModelFile& model);
+// The 3D stress law of `soil` under `model` (may be null: the soil as it is): zeta override
+// (ApplyModel) and the effect terms with a 3D form (MakeEffectLaw3D; gas_cushion only when the
+// soil's atmosphere is air). Throws InputError naming the model file and effect when an active
+// effect has no 3D form.
+std::unique_ptr<rft::StressLaw3D> MakeModelStressLaw3D(std::string_view law, const rft::SoilParameters& soil,
+                                                       double gravity_m_s2, const ModelFile* model);
+// The model as a 3D run (lander) reports it: {file, effects: [ids applied], effects_not_applied:
+// {id: reason}}; gas_cushion is applied on the soils in air only (said so in its entry).
+nlohmann::json ModelEffectsJson(const ModelFile& model);
 // A short digest of everything ApplyModel uses, for sweep databases to detect a changed model.
 std::string ModelDigestText(const ModelFile& model);
 

@@ -2,6 +2,7 @@
 
 #include <sqlite3.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -10,11 +11,44 @@
 namespace touchdown::drop {
 
 namespace {
+// The numeric columns of a record, in table order: the format-1 metrics, then (format 2) the
+// free drop's and the lander's. One list drives the schema, binding, reading, comparing and
+// the MPI serialisation, so a new column cannot be forgotten in one of them.
+constexpr const char* kNumberColumns1[] = {
+    "impact_speed_m_s", "pad_mass_kg",         "gravity_m_s2",     "tilt_deg",          "horizontal_speed_m_s",
+    "zeta_N_cm3",       "final_penetration_m", "peak_force_N",     "time_to_rest_s",    "max_deceleration_m_s2",
+    "impact_energy_J",  "gravity_work_J",      "dissipated_energy_J", "mean_conversion_rate_W", "rest_creep_m"};
+constexpr const char* kNumberColumns2[] = {
+    "final_tilt_deg", "horizontal_travel_m", "roll_deg", "pitch_deg", "pad1_final_penetration_m",
+    "pad2_final_penetration_m", "pad3_final_penetration_m", "pad4_final_penetration_m", "final_roll_deg",
+    "final_pitch_deg", "tipped_over"};
+constexpr size_t kNumbers1 = std::size(kNumberColumns1), kNumbers2 = std::size(kNumberColumns2);
+
+template <typename R>  // DropRecord or const DropRecord
+auto Numbers1(R& r) {
+  return std::array{&r.impact_speed_m_s, &r.pad_mass_kg,       &r.gravity_m_s2,   &r.tilt_deg,
+                    &r.horizontal_speed_m_s, &r.zeta_N_cm3,   &r.final_penetration_m, &r.peak_force_N,
+                    &r.time_to_rest_s, &r.max_deceleration_m_s2, &r.impact_energy_J, &r.gravity_work_J,
+                    &r.dissipated_energy_J, &r.mean_conversion_rate_W, &r.rest_creep_m};
+}
+template <typename R>
+auto Numbers2(R& r) {
+  return std::array{&r.final_tilt_deg, &r.horizontal_travel_m, &r.roll_deg, &r.pitch_deg,
+                    &r.pad_final_penetration_m[0], &r.pad_final_penetration_m[1], &r.pad_final_penetration_m[2],
+                    &r.pad_final_penetration_m[3], &r.final_roll_deg, &r.final_pitch_deg, &r.tipped_over};
+}
+static_assert(std::tuple_size_v<decltype(Numbers1(std::declval<DropRecord&>()))> == kNumbers1);
+static_assert(std::tuple_size_v<decltype(Numbers2(std::declval<DropRecord&>()))> == kNumbers2);
+
 // The drops columns after drop_index, in the order of the INSERT statement.
-constexpr const char* kColumns =
-    "drop_id, status, failure, pad, soil, atmosphere, impact_speed_m_s, pad_mass_kg, gravity_m_s2, tilt_deg, "
-    "horizontal_speed_m_s, zeta_N_cm3, final_penetration_m, peak_force_N, time_to_rest_s, max_deceleration_m_s2, "
-    "impact_energy_J, gravity_work_J, dissipated_energy_J, mean_conversion_rate_W, rest_creep_m, solver_steps";
+std::string Columns() {
+  std::string c = "drop_id, status, failure, pad, soil, atmosphere";
+  for (const char* n : kNumberColumns1) c += std::string(", ") + n;
+  c += ", solver_steps, drop_kind";
+  for (const char* n : kNumberColumns2) c += std::string(", ") + n;
+  return c;
+}
+constexpr int kColumnCount = 6 + static_cast<int>(kNumbers1) + 2 + static_cast<int>(kNumbers2);  // after drop_index
 
 class Statement {
  public:
@@ -59,11 +93,10 @@ void BindRecord(Statement& st, const DropRecord& r) {
   st.Text(i++, r.pad);
   st.Text(i++, r.soil);
   st.Text(i++, r.atmosphere);
-  for (double v : {r.impact_speed_m_s, r.pad_mass_kg, r.gravity_m_s2, r.tilt_deg, r.horizontal_speed_m_s, r.zeta_N_cm3,
-                   r.final_penetration_m, r.peak_force_N, r.time_to_rest_s, r.max_deceleration_m_s2, r.impact_energy_J,
-                   r.gravity_work_J, r.dissipated_energy_J, r.mean_conversion_rate_W, r.rest_creep_m})
-    st.Real(i++, v);
+  for (const double* v : Numbers1(r)) st.Real(i++, *v);
   st.Int(i++, r.solver_steps);
+  st.Text(i++, r.kind);
+  for (const double* v : Numbers2(r)) st.Real(i++, *v);
 }
 
 DropRecord ReadRecord(Statement& st) {
@@ -76,12 +109,11 @@ DropRecord ReadRecord(Statement& st) {
   r.pad = st.ColumnText(i++);
   r.soil = st.ColumnText(i++);
   r.atmosphere = st.ColumnText(i++);
-  for (double* v : {&r.impact_speed_m_s, &r.pad_mass_kg, &r.gravity_m_s2, &r.tilt_deg, &r.horizontal_speed_m_s,
-                    &r.zeta_N_cm3, &r.final_penetration_m, &r.peak_force_N, &r.time_to_rest_s,
-                    &r.max_deceleration_m_s2, &r.impact_energy_J, &r.gravity_work_J, &r.dissipated_energy_J,
-                    &r.mean_conversion_rate_W, &r.rest_creep_m})
-    *v = st.ColumnReal(i++);
+  for (double* v : Numbers1(r)) *v = st.ColumnReal(i++);
   r.solver_steps = sqlite3_column_int64(st.get(), i++);
+  r.kind = st.ColumnText(i++);
+  if (r.kind.empty()) r.kind = "rig";  // a format-1 row read through the added columns
+  for (double* v : Numbers2(r)) *v = st.ColumnReal(i++);
   return r;
 }
 
@@ -126,18 +158,14 @@ static_assert(sizeof(DropSample) == 4 * sizeof(double), "traces are stored as 4 
 }  // namespace
 
 bool SameRecord(const DropRecord& a, const DropRecord& b, bool compare_traces) {
-  const double da[] = {a.impact_speed_m_s, a.pad_mass_kg, a.gravity_m_s2, a.tilt_deg, a.horizontal_speed_m_s,
-                       a.zeta_N_cm3, a.final_penetration_m, a.peak_force_N, a.time_to_rest_s, a.max_deceleration_m_s2,
-                       a.impact_energy_J, a.gravity_work_J, a.dissipated_energy_J, a.mean_conversion_rate_W,
-                       a.rest_creep_m};
-  const double db[] = {b.impact_speed_m_s, b.pad_mass_kg, b.gravity_m_s2, b.tilt_deg, b.horizontal_speed_m_s,
-                       b.zeta_N_cm3, b.final_penetration_m, b.peak_force_N, b.time_to_rest_s, b.max_deceleration_m_s2,
-                       b.impact_energy_J, b.gravity_work_J, b.dissipated_energy_J, b.mean_conversion_rate_W,
-                       b.rest_creep_m};
-  for (size_t i = 0; i < std::size(da); ++i)
-    if (!SameBits(da[i], db[i])) return false;
-  if (a.index != b.index || a.drop_id != b.drop_id || a.ok != b.ok || a.failure != b.failure || a.pad != b.pad ||
-      a.soil != b.soil || a.atmosphere != b.atmosphere || a.solver_steps != b.solver_steps)
+  const auto a1 = Numbers1(a), b1 = Numbers1(b);
+  for (size_t i = 0; i < a1.size(); ++i)
+    if (!SameBits(*a1[i], *b1[i])) return false;
+  const auto a2 = Numbers2(a), b2 = Numbers2(b);
+  for (size_t i = 0; i < a2.size(); ++i)
+    if (!SameBits(*a2[i], *b2[i])) return false;
+  if (a.index != b.index || a.drop_id != b.drop_id || a.ok != b.ok || a.failure != b.failure || a.kind != b.kind ||
+      a.pad != b.pad || a.soil != b.soil || a.atmosphere != b.atmosphere || a.solver_steps != b.solver_steps)
     return false;
   if (!compare_traces) return true;
   return a.trace.size() == b.trace.size() &&
@@ -151,12 +179,9 @@ std::string SerializeRecords(const std::vector<DropRecord>& records) {
     Put(out, r.index);
     PutString(out, r.drop_id);
     Put<uint8_t>(out, r.ok ? 1 : 0);
-    for (const std::string* s : {&r.failure, &r.pad, &r.soil, &r.atmosphere}) PutString(out, *s);
-    for (double v : {r.impact_speed_m_s, r.pad_mass_kg, r.gravity_m_s2, r.tilt_deg, r.horizontal_speed_m_s,
-                     r.zeta_N_cm3, r.final_penetration_m, r.peak_force_N, r.time_to_rest_s, r.max_deceleration_m_s2,
-                     r.impact_energy_J, r.gravity_work_J, r.dissipated_energy_J, r.mean_conversion_rate_W,
-                     r.rest_creep_m})
-      Put(out, v);
+    for (const std::string* s : {&r.failure, &r.kind, &r.pad, &r.soil, &r.atmosphere}) PutString(out, *s);
+    for (const double* v : Numbers1(r)) Put(out, *v);
+    for (const double* v : Numbers2(r)) Put(out, *v);
     Put(out, r.solver_steps);
     Put<uint64_t>(out, r.trace.size());
     out.append(reinterpret_cast<const char*>(r.trace.data()), r.trace.size() * sizeof(DropSample));
@@ -171,12 +196,9 @@ std::vector<DropRecord> DeserializeRecords(const std::string& bytes) {
     r.index = in.Get<int64_t>();
     r.drop_id = in.GetString();
     r.ok = in.Get<uint8_t>() != 0;
-    for (std::string* s : {&r.failure, &r.pad, &r.soil, &r.atmosphere}) *s = in.GetString();
-    for (double* v : {&r.impact_speed_m_s, &r.pad_mass_kg, &r.gravity_m_s2, &r.tilt_deg, &r.horizontal_speed_m_s,
-                      &r.zeta_N_cm3, &r.final_penetration_m, &r.peak_force_N, &r.time_to_rest_s,
-                      &r.max_deceleration_m_s2, &r.impact_energy_J, &r.gravity_work_J, &r.dissipated_energy_J,
-                      &r.mean_conversion_rate_W, &r.rest_creep_m})
-      *v = in.Get<double>();
+    for (std::string* s : {&r.failure, &r.kind, &r.pad, &r.soil, &r.atmosphere}) *s = in.GetString();
+    for (double* v : Numbers1(r)) *v = in.Get<double>();
+    for (double* v : Numbers2(r)) *v = in.Get<double>();
     r.solver_steps = in.Get<int64_t>();
     r.trace.resize(in.Get<uint64_t>());
     for (DropSample& s : r.trace) s = in.Get<DropSample>();
@@ -200,16 +222,26 @@ ResultsDb::ResultsDb(const std::string& path) : path_(path) {
   // (only an OS crash may lose the last ones, never half of one).
   Exec("PRAGMA journal_mode=WAL");
   Exec("PRAGMA synchronous=NORMAL");
-  Exec(std::string("CREATE TABLE IF NOT EXISTS meta(key TEXT PRIMARY KEY, value TEXT NOT NULL);"
-                   "CREATE TABLE IF NOT EXISTS drops(drop_index INTEGER PRIMARY KEY, drop_id TEXT NOT NULL, "
-                   "status TEXT NOT NULL, failure TEXT NOT NULL, pad TEXT NOT NULL, soil TEXT NOT NULL, "
-                   "atmosphere TEXT NOT NULL, impact_speed_m_s REAL, pad_mass_kg REAL, gravity_m_s2 REAL, "
-                   "tilt_deg REAL, horizontal_speed_m_s REAL, zeta_N_cm3 REAL, final_penetration_m REAL, "
-                   "peak_force_N REAL, time_to_rest_s REAL, max_deceleration_m_s2 REAL, impact_energy_J REAL, "
-                   "gravity_work_J REAL, dissipated_energy_J REAL, mean_conversion_rate_W REAL, rest_creep_m REAL, "
-                   "solver_steps INTEGER);"
-                   "CREATE TABLE IF NOT EXISTS traces(drop_index INTEGER PRIMARY KEY, samples INTEGER NOT NULL, "
-                   "data BLOB NOT NULL);"));
+  std::string drops = "CREATE TABLE IF NOT EXISTS drops(drop_index INTEGER PRIMARY KEY, drop_id TEXT NOT NULL, "
+                      "status TEXT NOT NULL, failure TEXT NOT NULL, pad TEXT NOT NULL, soil TEXT NOT NULL, "
+                      "atmosphere TEXT NOT NULL";
+  for (const char* n : kNumberColumns1) drops += std::string(", ") + n + " REAL";
+  drops += ", solver_steps INTEGER, drop_kind TEXT NOT NULL DEFAULT 'rig'";
+  for (const char* n : kNumberColumns2) drops += std::string(", ") + n + " REAL";
+  Exec("CREATE TABLE IF NOT EXISTS meta(key TEXT PRIMARY KEY, value TEXT NOT NULL);" + drops +
+       ");CREATE TABLE IF NOT EXISTS traces(drop_index INTEGER PRIMARY KEY, samples INTEGER NOT NULL, "
+       "data BLOB NOT NULL);");
+  // A format-1 database (no format-2 columns) gets them added, NULL, so it can still be read
+  // (export, merge); `sweep` refuses to resume it (format_version in meta).
+  std::vector<std::string> present;
+  {
+    Statement info(db_, "PRAGMA table_info(drops)");
+    while (info.Step() == SQLITE_ROW) present.push_back(info.ColumnText(1));
+  }
+  auto has = [&](const std::string& c) { return std::find(present.begin(), present.end(), c) != present.end(); };
+  if (!has("drop_kind")) Exec("ALTER TABLE drops ADD COLUMN drop_kind TEXT NOT NULL DEFAULT 'rig'");
+  for (const char* n : kNumberColumns2)
+    if (!has(n)) Exec(std::string("ALTER TABLE drops ADD COLUMN ") + n + " REAL");
 }
 
 ResultsDb::~ResultsDb() { sqlite3_close(db_); }
@@ -251,15 +283,16 @@ void ResultsDb::Insert(const std::vector<DropRecord>& records) {
   if (records.empty()) return;
   Exec("BEGIN IMMEDIATE");
   try {
-    Statement drop(db_, std::string("INSERT INTO drops(drop_index, ") + kColumns +
-                            ") VALUES(?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?)");
+    std::string marks = "?";
+    for (int i = 0; i < kColumnCount; ++i) marks += ",?";
+    Statement drop(db_, "INSERT INTO drops(drop_index, " + Columns() + ") VALUES(" + marks + ")");
     Statement trace(db_, "INSERT INTO traces(drop_index, samples, data) VALUES(?,?,?)");
     for (const DropRecord& r : records) {
       drop.Reset();
       BindRecord(drop, r);
       const int rc = drop.Step();
       if (rc == SQLITE_CONSTRAINT) {  // already stored: must be the same drop, bit for bit
-        Statement old(db_, std::string("SELECT drop_index, ") + kColumns + " FROM drops WHERE drop_index = ?");
+        Statement old(db_, "SELECT drop_index, " + Columns() + " FROM drops WHERE drop_index = ?");
         old.Int(1, r.index);
         if (old.Step() != SQLITE_ROW || !SameRecord(ReadRecord(old), r, false))
           throw std::runtime_error(path_ + ": drop " + r.drop_id + " is already stored with different results");
@@ -305,8 +338,8 @@ std::vector<uint8_t> ResultsDb::DoneMask(int64_t total) const {
 }
 
 void ResultsDb::ForEach(const std::function<void(const DropRecord&)>& visit, bool with_traces) const {
-  const int n_columns = 23;
-  Statement st(db_, std::string("SELECT d.drop_index, ") + kColumns +
+  const int n_columns = 1 + kColumnCount;
+  Statement st(db_, "SELECT d.drop_index, " + Columns() +
                         (with_traces ? ", t.data FROM drops d LEFT JOIN traces t ON t.drop_index = d.drop_index"
                                      : " FROM drops d") +
                         " ORDER BY d.drop_index");

@@ -7,13 +7,18 @@
 //         atmosphere, impact_speed_m_s, pad_mass_kg, gravity_m_s2, tilt_deg,
 //         horizontal_speed_m_s, zeta_N_cm3, final_penetration_m, peak_force_N,
 //         time_to_rest_s, max_deceleration_m_s2, impact_energy_J, gravity_work_J,
-//         dissipated_energy_J, mean_conversion_rate_W, rest_creep_m, solver_steps)
+//         dissipated_energy_J, mean_conversion_rate_W, rest_creep_m, solver_steps,
+//         [format 2:] drop_kind 'rig'|'free'|'lander', final_tilt_deg, horizontal_travel_m,
+//         roll_deg, pitch_deg, pad1..pad4_final_penetration_m, final_roll_deg,
+//         final_pitch_deg, tipped_over)
 //   traces(drop_index PRIMARY KEY, samples, data BLOB of float64 [t, d, v, F] per sample)
 //
 // A batch of drops and their traces go in one transaction (WAL journal), so a process killed
 // at any moment leaves every drop either fully written or absent; a restart computes only the
 // absent ones. Doubles are stored as 8-byte IEEE values, so rows compare bit for bit.
+#include <array>
 #include <cstdint>
+#include <limits>
 #include <functional>
 #include <map>
 #include <memory>
@@ -26,14 +31,17 @@ struct sqlite3;
 
 namespace touchdown::drop {
 
-inline constexpr int kResultsDbVersion = 1;
+// 2: drop_kind, the free drop's final tilt and horizontal travel, the lander columns.
+inline constexpr int kResultsDbVersion = 2;
 
-// One drop as stored. Metrics are NaN (NULL in SQL) for a failed drop.
+// One drop as stored. Metrics are NaN (NULL in SQL) for a failed drop, and for quantities a kind
+// of drop does not have.
 struct DropRecord {
   int64_t index = 0;
   std::string drop_id;
   bool ok = false;
   std::string failure;  // the reason, for a failed drop
+  std::string kind = "rig";  // "rig" (vertical rod), "free" (6-DOF pad) or "lander"
   std::string pad, soil, atmosphere;
   double impact_speed_m_s = 0.0, pad_mass_kg = 0.0, gravity_m_s2 = 0.0;
   double tilt_deg = 0.0, horizontal_speed_m_s = 0.0;
@@ -42,6 +50,20 @@ struct DropRecord {
   double impact_energy_J = 0.0, gravity_work_J = 0.0, dissipated_energy_J = 0.0, mean_conversion_rate_W = 0.0;
   double rest_creep_m = 0.0;
   int64_t solver_steps = 0;
+  // Pad (rig: 0, 0) or lander body: tilt from the vertical at rest, horizontal travel of the
+  // centre of mass from touchdown to rest (lander: to the end of the run).
+  double final_tilt_deg = 0.0, horizontal_travel_m = 0.0;
+  // Lander drops only (NaN otherwise): the initial attitude (aerospace roll and pitch), each pad's
+  // final penetration (pads clockwise from above, pad 1 front-left), the final attitude, and
+  // whether it tipped over (1) or not (0).
+  double roll_deg = std::numeric_limits<double>::quiet_NaN(), pitch_deg = std::numeric_limits<double>::quiet_NaN();
+  std::array<double, 4> pad_final_penetration_m{std::numeric_limits<double>::quiet_NaN(),
+                                                std::numeric_limits<double>::quiet_NaN(),
+                                                std::numeric_limits<double>::quiet_NaN(),
+                                                std::numeric_limits<double>::quiet_NaN()};
+  double final_roll_deg = std::numeric_limits<double>::quiet_NaN();
+  double final_pitch_deg = std::numeric_limits<double>::quiet_NaN();
+  double tipped_over = std::numeric_limits<double>::quiet_NaN();
   std::vector<DropSample> trace;  // empty unless stored
 };
 

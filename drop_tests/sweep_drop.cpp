@@ -1,26 +1,38 @@
 #include "drop_tests/sweep_drop.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <algorithm>
 
+#include "drop_tests/lander_scenario.h"
+#include "drop_tests/pad_drop.h"
 #include "footpad_geom/axisymmetric_intrusion.h"
 #include "rft/stress_law.h"
 
 namespace touchdown::drop {
 
 namespace {
-// zeta at the drop's gravity [N/m^3], computed exactly as RunPadDrop does.
-double EffectiveZeta(const SweepPlan& plan, const SweepDropParams& p) {
-  rft::SoilParameters effective = plan.soils[p.soil];
-  if (p.zeta_N_m3) effective.zeta_N_m3 = *p.zeta_N_m3;
-  return effective.ZetaAtGravity(p.gravity_m_s2);
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+// The sweep point as a drop row (the atmosphere is the soil's), under the model's effects.
+DropConditions ConditionsOf(const SweepModels& models, const SweepDropParams& p) {
+  DropRow row;
+  row.impact_speed_m_s = p.impact_speed_m_s;
+  row.mass_kg = p.mass_kg;
+  row.gravity_m_s2 = p.gravity_m_s2;
+  row.zeta_N_m3 = p.zeta_N_m3;
+  row.tilt_rad = p.tilt_rad;
+  row.horizontal_speed_m_s = p.horizontal_speed_m_s;
+  const SweepPlan& plan = models.plan();
+  return DropConditionsFor(row, models.effects(), plan.model ? plan.model->source : "",
+                           plan.source + ": drop " + plan.DropId(p.index));
 }
 
-DropRecord Describe(const SweepPlan& plan, const SweepDropParams& p) {
+DropRecord Describe(const SweepPlan& plan, const SweepDropParams& p, const DropConditions& c) {
   DropRecord r;
   r.index = p.index;
   r.drop_id = plan.DropId(p.index);
+  r.kind = c.IsFree() ? "free" : "rig";
   const PadSpec& pad = plan.pads[p.pad];
   const rft::SoilParameters& soil = plan.soils[p.soil];
   r.pad = pad.name;
@@ -29,9 +41,9 @@ DropRecord Describe(const SweepPlan& plan, const SweepDropParams& p) {
   r.impact_speed_m_s = p.impact_speed_m_s;
   r.pad_mass_kg = p.mass_kg.value_or(pad.mass_kg);
   r.gravity_m_s2 = p.gravity_m_s2;
-  r.tilt_deg = p.tilt_rad * 180.0 / std::numbers::pi;
+  r.tilt_deg = p.tilt_rad / kDeg;
   r.horizontal_speed_m_s = p.horizontal_speed_m_s;
-  r.zeta_N_cm3 = EffectiveZeta(plan, p) / 1e6;
+  r.zeta_N_cm3 = EffectiveZeta(soil, c) / 1e6;
   return r;
 }
 
@@ -40,31 +52,128 @@ void MarkFailed(DropRecord& r, const std::string& reason) {
   r.failure = reason.empty() ? "unknown failure" : reason;
   for (double* v : {&r.final_penetration_m, &r.peak_force_N, &r.time_to_rest_s, &r.max_deceleration_m_s2,
                     &r.impact_energy_J, &r.gravity_work_J, &r.dissipated_energy_J, &r.mean_conversion_rate_W,
-                    &r.rest_creep_m})
+                    &r.rest_creep_m, &r.final_tilt_deg, &r.horizontal_travel_m, &r.final_roll_deg, &r.final_pitch_deg,
+                    &r.tipped_over})
     *v = std::nan("");
+  r.pad_final_penetration_m.fill(std::nan(""));
   r.trace.clear();
 }
 
-RigDropResult RunRigSweepDrop(const SweepModels& models, const SweepDropParams& p, const DropRecord& r) {
-  const geom::AxisymmetricIntrusion& intrusion = models.intrusion(p.pad);
-  const double zeta = EffectiveZeta(models.plan(), p);
-  const VerticalResistance resistance = [&intrusion, zeta](double depth_m, double) {
-    return intrusion.VerticalForce(depth_m, zeta);
-  };
-  return RunRigDrop({r.pad_mass_kg, r.gravity_m_s2, r.impact_speed_m_s}, resistance, models.plan().rig);
+DropRecord SimulatePadSweepDrop(const SweepModels& models, const SweepDropParams& p, TraceStorage storage) {
+  const SweepPlan& plan = models.plan();
+  const DropConditions c = ConditionsOf(models, p);
+  DropRecord r = Describe(plan, p, c);
+  try {
+    DropRunOptions options;
+    options.rig = plan.rig;
+    options.free.sample_rate_hz = plan.rig.sample_rate_hz;
+    options.free.integrator.max_wall_time_s = plan.rig.integrator.max_wall_time_s;
+    options.intrusion = &models.intrusion(p.pad);
+    const PadDrop drop = SimulateDrop(plan.pads[p.pad], plan.soils[p.soil], c, options);
+    const RigDropResult& d = drop.result;
+    r.ok = true;
+    r.final_penetration_m = d.final_penetration_m;
+    r.peak_force_N = d.peak_force_N;
+    r.time_to_rest_s = d.time_to_rest_s;
+    r.max_deceleration_m_s2 = d.max_deceleration_m_s2;
+    r.impact_energy_J = d.impact_energy_J;
+    r.gravity_work_J = d.gravity_work_J;
+    r.dissipated_energy_J = d.dissipated_energy_J;
+    r.mean_conversion_rate_W = d.mean_conversion_rate_W;
+    r.rest_creep_m = d.rest_creep_m;
+    r.solver_steps = d.solver.steps;
+    // The rig stays level on its rod and does not travel.
+    r.final_tilt_deg = drop.free ? drop.free->final_tilt_deg : 0.0;
+    r.horizontal_travel_m = drop.free ? drop.free->horizontal_travel_m : 0.0;
+    if (storage == TraceStorage::kFull) r.trace = d.trace;
+    else if (storage == TraceStorage::kDecimated) r.trace = DecimateTrace(d.trace, plan.trace_max_samples);
+  } catch (const std::exception& e) {
+    MarkFailed(r, e.what());
+  }
+  return r;
 }
 
-// The 6-DOF free drop (tilted or sliding pads) goes here once it exists.
-RigDropResult RunFreeSweepDrop(const SweepModels&, const SweepDropParams&, const DropRecord&) {
-  throw std::runtime_error("the 6-DOF free drop is not available in this build");
+// One lander run: the plan's scenario with the drop's parameters.
+DropRecord SimulateLanderSweepDrop(const SweepModels& models, const SweepDropParams& p) {
+  const SweepPlan& plan = models.plan();
+  LanderScenario sc = *plan.lander;  // the model is already in it (LoadSweepPlan)
+  if (p.Given(SweepParam::kGravity)) sc.gravity_m_s2 = p.gravity_m_s2;
+  if (p.Given(SweepParam::kSoil)) sc.ground.default_soil = plan.soil_refs[p.soil];
+  if (p.Given(SweepParam::kImpactSpeed)) {
+    sc.initial.drop_height_m.reset();
+    sc.initial.release_vertical_speed_m_s = 0.0;
+    sc.initial.touchdown_speed_m_s = p.impact_speed_m_s;
+  }
+  if (p.Given(SweepParam::kHorizontalSpeed)) sc.initial.horizontal_velocity_m_s = Eigen::Vector2d(p.horizontal_speed_m_s, 0.0);
+  if (p.Given(SweepParam::kRoll)) sc.initial.roll_rad = p.roll_rad;
+  if (p.Given(SweepParam::kPitch)) sc.initial.pitch_rad = p.pitch_rad;
+  if (plan.rig.integrator.max_wall_time_s > 0.0)
+    sc.options.integrator.max_wall_time_s = plan.rig.integrator.max_wall_time_s;
+
+  DropRecord r;
+  r.index = p.index;
+  r.drop_id = plan.DropId(p.index);
+  r.kind = "lander";
+  const rft::SoilParameters& soil = p.Given(SweepParam::kSoil) ? plan.soils[p.soil] : models.lander_soil();
+  r.pad = sc.lander.pad.name;
+  r.soil = soil.name;
+  r.atmosphere = soil.atmosphere;
+  r.impact_speed_m_s = sc.initial.drop_height_m
+                           ? std::sqrt(std::pow(sc.initial.release_vertical_speed_m_s, 2) +
+                                       2.0 * sc.gravity_m_s2 * *sc.initial.drop_height_m)
+                           : *sc.initial.touchdown_speed_m_s;
+  r.pad_mass_kg = sc.lander.pad.body.mass_kg;
+  r.gravity_m_s2 = sc.gravity_m_s2;
+  r.roll_deg = sc.initial.roll_rad / kDeg;
+  r.pitch_deg = sc.initial.pitch_rad / kDeg;
+  // Body z from the vertical after roll and pitch (z_W component cos(roll) cos(pitch)).
+  r.tilt_deg = std::acos(std::clamp(std::cos(sc.initial.roll_rad) * std::cos(sc.initial.pitch_rad), -1.0, 1.0)) / kDeg;
+  r.horizontal_speed_m_s = sc.initial.horizontal_velocity_m_s.norm();
+  r.zeta_N_cm3 = soil.ZetaAtGravity(sc.gravity_m_s2) / 1e6;
+  try {
+    const LanderRun run = RunLanderScenario(sc);
+    const lander::LanderRunResult& l = run.result;
+    r.ok = true;
+    for (int i = 0; i < lander::kNumLegs; ++i) r.pad_final_penetration_m[i] = l.final_penetration_m[i];
+    r.final_penetration_m = *std::max_element(l.final_penetration_m.begin(), l.final_penetration_m.end());
+    r.peak_force_N = *std::max_element(l.peak_pad_force_N.begin(), l.peak_pad_force_N.end());
+    r.max_deceleration_m_s2 = l.max_body_deceleration_m_s2;
+    r.dissipated_energy_J = l.dissipated_J;
+    r.rest_creep_m = std::nan("");
+    r.final_roll_deg = l.final_attitude.roll_rad / kDeg;
+    r.final_pitch_deg = l.final_attitude.pitch_rad / kDeg;
+    r.final_tilt_deg = l.final_attitude.tilt_rad / kDeg;
+    r.tipped_over = l.tipped_over ? 1.0 : 0.0;
+    r.solver_steps = l.solver.steps;
+    r.time_to_rest_s = l.rest_time_s && l.first_touchdown_s ? *l.rest_time_s - *l.first_touchdown_s : std::nan("");
+    // At the first touchdown (an event, so a trace sample): kinetic energy, potential energy and
+    // position, for the impact energy, the weight's work and the horizontal travel.
+    r.impact_energy_J = r.gravity_work_J = r.horizontal_travel_m = r.mean_conversion_rate_W = std::nan("");
+    if (l.first_touchdown_s && !l.trace.empty()) {
+      const auto td = std::find_if(l.trace.begin(), l.trace.end(),
+                                   [&](const lander::LanderSample& s) { return s.t_s >= *l.first_touchdown_s; });
+      if (td != l.trace.end()) {
+        r.impact_energy_J = td->kinetic_J;
+        r.gravity_work_J = td->potential_J - l.final_potential_J;
+        r.horizontal_travel_m = (l.trace.back().p_WB.head<2>() - td->p_WB.head<2>()).norm();
+        if (r.time_to_rest_s > 0.0) r.mean_conversion_rate_W = r.impact_energy_J / r.time_to_rest_s;
+      }
+    }
+  } catch (const std::exception& e) {
+    MarkFailed(r, e.what());
+  }
+  return r;
 }
 }  // namespace
-
-bool FreeDropAvailable() { return false; }
 
 SweepModels::SweepModels(const SweepPlan& plan) : plan_(plan) {
   for (const PadSpec& pad : plan.pads)
     intrusions_.push_back(std::make_unique<geom::AxisymmetricIntrusion>(pad.profile, rft::Li2013Law{}));
+  if (plan.model) effects_ = ModelEffectTerms(*plan.model);
+  if (plan.lander) {
+    lander_soil_ = LoadSoil(plan.lander->ground.default_soil);
+    if (plan.model) lander_soil_ = ApplyModel(*plan.model, lander_soil_);
+  }
 }
 
 SweepModels::~SweepModels() = default;
@@ -96,27 +205,8 @@ DropRecord SimulateSweepDrop(const SweepModels& models, int64_t index) {
 DropRecord SimulateSweepDrop(const SweepModels& models, int64_t index, TraceStorage storage) {
   const SweepPlan& plan = models.plan();
   const SweepDropParams p = plan.DropAt(index);
-  DropRecord r = Describe(plan, p);
-  try {
-    const bool rig = p.tilt_rad == 0.0 && p.horizontal_speed_m_s == 0.0;
-    const RigDropResult d = rig ? RunRigSweepDrop(models, p, r) : RunFreeSweepDrop(models, p, r);
-    r.ok = true;
-    r.final_penetration_m = d.final_penetration_m;
-    r.peak_force_N = d.peak_force_N;
-    r.time_to_rest_s = d.time_to_rest_s;
-    r.max_deceleration_m_s2 = d.max_deceleration_m_s2;
-    r.impact_energy_J = d.impact_energy_J;
-    r.gravity_work_J = d.gravity_work_J;
-    r.dissipated_energy_J = d.dissipated_energy_J;
-    r.mean_conversion_rate_W = d.mean_conversion_rate_W;
-    r.rest_creep_m = d.rest_creep_m;
-    r.solver_steps = d.solver.steps;
-    if (storage == TraceStorage::kFull) r.trace = d.trace;
-    else if (storage == TraceStorage::kDecimated) r.trace = DecimateTrace(d.trace, plan.trace_max_samples);
-  } catch (const std::exception& e) {
-    MarkFailed(r, e.what());
-  }
-  return r;
+  if (plan.lander) return SimulateLanderSweepDrop(models, p);
+  return SimulatePadSweepDrop(models, p, storage);
 }
 
 }  // namespace touchdown::drop

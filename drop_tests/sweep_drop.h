@@ -1,18 +1,22 @@
 #pragma once
 // Simulating one drop of a sweep. Everything that is the same for many drops (pads loaded,
-// soils with the model applied, the pads' RFT intrusion tables) is built once in
-// SweepModels; SimulateSweepDrop is then a pure function of (models, index) that may run on
-// any thread. The kind of drop is chosen per drop:
+// soils with the model applied, the model's effect terms, the pads' RFT intrusion tables) is
+// built once in SweepModels; SimulateSweepDrop is then a pure function of (models, index) that
+// may run on any thread. The kind of drop is chosen per drop:
 //
-//   rig drop   tilt = 0 and horizontal speed = 0: the paper's vertical rod (RunRigDrop)
-//   free drop  otherwise: the 6-DOF free drop, not in this build yet
-//
-// Adding the free drop means implementing RunFreeSweepDrop in sweep_drop.cpp and making
-// FreeDropAvailable() return true; the sweep file already accepts tilt_deg and
-// horizontal_speed_m_s and rejects non-zero values while it is false.
+//   rig drop     tilt = 0 and horizontal speed = 0: the paper's vertical rod (RunRigDrop)
+//   free drop    otherwise: the 6-DOF free pad (drop_tests/free_drop.h, RunFreeDrop), tilted
+//                about the world x axis, sliding along +x; its final tilt and horizontal travel
+//                are recorded (final_tilt_deg, horizontal_travel_m). Seconds per drop when tilted.
+//   lander drop  a lander sweep (SweepPlan::lander): the scenario with the drop's parameters,
+//                one whole lander run (seconds), recorded as its summary (pad penetrations,
+//                final roll and pitch, tipped over).
+// Both pad kinds go through DropConditionsFor + SimulateDrop (drop_tests/pad_drop.h), as
+// `compare` does, with the model's effects (all on the rig; those with a 3D form on free pads).
 #include <memory>
 #include <vector>
 
+#include "drop_tests/effects.h"
 #include "drop_tests/results_db.h"
 #include "drop_tests/sweep_spec.h"
 
@@ -22,18 +26,22 @@ class AxisymmetricIntrusion;
 
 namespace touchdown::drop {
 
-bool FreeDropAvailable();
-
 class SweepModels {
  public:
   explicit SweepModels(const SweepPlan& plan);
   ~SweepModels();
   const SweepPlan& plan() const { return plan_; }
   const geom::AxisymmetricIntrusion& intrusion(int pad) const { return *intrusions_[pad]; }
+  const EffectTerms& effects() const { return effects_; }
+  // A lander sweep: the scenario's default soil with the model applied (for drops that do not
+  // set `soil`).
+  const rft::SoilParameters& lander_soil() const { return lander_soil_; }
 
  private:
   const SweepPlan& plan_;
   std::vector<std::unique_ptr<geom::AxisymmetricIntrusion>> intrusions_;
+  EffectTerms effects_;  // the model's, parsed once
+  rft::SoilParameters lander_soil_;
 };
 
 // Runs drop `index` and returns its record. A drop that fails (the integrator gives up, the pad

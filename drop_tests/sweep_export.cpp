@@ -1,6 +1,7 @@
 #include "drop_tests/sweep_export.h"
 
 #include <filesystem>
+#include <map>
 
 #include "drop_tests/atomic_file.h"
 #include "drop_tests/dataset_csv.h"
@@ -17,7 +18,8 @@ namespace {
 const std::vector<std::string> kExtraColumns = {
     "tilt_deg",        "horizontal_speed_m_s", "zeta_N_cm3",          "time_to_rest_s",
     "max_deceleration_m_s2", "impact_energy_J", "gravity_work_J",     "dissipated_energy_J",
-    "mean_conversion_rate_W", "rest_creep_m",   "solver_steps"};
+    "mean_conversion_rate_W", "rest_creep_m",   "solver_steps",       "final_tilt_deg",
+    "horizontal_travel_m"};
 
 // The plan the database was written from, reloaded from its sweep file and checked.
 SweepPlan ReloadPlan(const std::string& db_path, const std::map<std::string, std::string>& meta) {
@@ -44,6 +46,12 @@ Dataset SweepToDataset(const std::string& sweep_dir, const ExportOptions& option
   if (meta.empty()) throw MakeInputError(db_path, "", "not a sweep results database (no meta)");
   std::vector<DropRecord> records = db.ReadAll(/*with_traces=*/true);
   ExportSummary summary;
+  for (const DropRecord& r : records)
+    if (r.kind == "lander")
+      throw MakeInputError(db_path, "drop " + r.drop_id,
+                           "a lander sweep has no single-pad traces to export as a dataset; its summaries are in "
+                           "the drops table (pad1..pad4_final_penetration_m, final_roll_deg, final_pitch_deg, "
+                           "tipped_over)");
 
   std::vector<int64_t> again;
   for (const DropRecord& r : records)
@@ -68,6 +76,33 @@ Dataset SweepToDataset(const std::string& sweep_dir, const ExportOptions& option
       }
   }
 
+  // Pads and soils loaded from files (not catalogue names) are written as their absolute paths,
+  // which needs the plan's files: reloaded (and checked) when a stored name is not a catalogue one.
+  auto in_catalogue = [](const std::string& kind, const std::string& name, const std::string& source) {
+    try {
+      const std::string catalogued = ResolveCatalogFile(kind, name);  // throws when not a catalogue name
+      return source.empty() || fs::equivalent(catalogued, source);
+    } catch (const std::exception&) {
+      return false;
+    }
+  };
+  if (!plan)
+    for (const DropRecord& r : records)
+      if (r.ok && (!in_catalogue("pads", r.pad, "") || !in_catalogue("soils", r.soil, ""))) {
+        plan = ReloadPlan(db_path, meta);
+        break;
+      }
+  std::map<std::string, std::string> pad_files, soil_files;  // name -> path, for non-catalogue ones
+  if (plan) {
+    for (const PadSpec& p : plan->pads)
+      if (!in_catalogue("pads", p.name, p.source)) pad_files[p.name] = fs::absolute(p.source).string();
+    for (size_t i = 0; i < plan->soils.size() && i < plan->soil_refs.size(); ++i) {
+      const std::string source = ResolveCatalogFile("soils", plan->soil_refs[i]);
+      if (!in_catalogue("soils", plan->soils[i].name, source))
+        soil_files[plan->soils[i].name] = fs::absolute(source).string();
+    }
+  }
+
   Dataset ds;
   ds.directory = "";
   ds.extra_columns = kExtraColumns;
@@ -82,16 +117,8 @@ Dataset SweepToDataset(const std::string& sweep_dir, const ExportOptions& option
     d.pad = r.pad;
     d.soil = r.soil;
     // A pad or soil from a file (not a catalogue name) is written as its absolute path.
-    if (plan) {
-      for (const PadSpec& p : plan->pads)
-        if (p.name == r.pad && !p.source.empty()) {
-          try {
-            if (fs::equivalent(ResolveCatalogFile("pads", r.pad), p.source)) break;
-          } catch (const std::exception&) {
-          }
-          d.pad = fs::absolute(p.source).string();
-        }
-    }
+    if (const auto it = pad_files.find(r.pad); it != pad_files.end()) d.pad = it->second;
+    if (const auto it = soil_files.find(r.soil); it != soil_files.end()) d.soil = it->second;
     d.atmosphere = r.atmosphere;
     d.impact_speed_m_s = r.impact_speed_m_s;
     d.pad_mass_kg = r.pad_mass_kg;
@@ -104,6 +131,8 @@ Dataset SweepToDataset(const std::string& sweep_dir, const ExportOptions& option
                      r.rest_creep_m})
       d.extra.push_back(FormatNumber(v));
     d.extra.push_back(std::to_string(r.solver_steps));
+    d.extra.push_back(FormatNumber(r.final_tilt_deg));
+    d.extra.push_back(FormatNumber(r.horizontal_travel_m));
     d.trace.extra_columns = {"velocity_m_s"};
     d.trace.extra.resize(1);
     for (const DropSample& s : r.trace) {

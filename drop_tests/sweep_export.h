@@ -4,7 +4,9 @@
 //
 // drops.csv gets the required columns, final_penetration_m and peak_force_N, and the further
 // parameters and metrics as extra columns (tilt_deg, horizontal_speed_m_s, zeta_N_cm3,
-// time_to_rest_s, ...); each trace t_s,penetration_m,force_N,velocity_m_s. Traces are those
+// time_to_rest_s, ..., final_tilt_deg, horizontal_travel_m: 0 for rig drops); each trace
+// t_s,penetration_m,force_N,velocity_m_s. A lander sweep is refused: its drops are not single-pad
+// drops (read its results.sqlite). Traces are those
 // stored in the database; drops stored without one (traces: none), or every drop with
 // `full_traces`, are simulated again from the sweep file (checked against the database's
 // digest), which reproduces them bit for bit. Failed drops have no trace: they are listed in

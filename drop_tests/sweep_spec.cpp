@@ -1,8 +1,12 @@
 #include "drop_tests/sweep_spec.h"
 
+#include <cinttypes>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <numbers>
+#include <sstream>
 
 #include "drop_tests/dataset_csv.h"
 #include "drop_tests/sweep_drop.h"
@@ -15,9 +19,12 @@ namespace fs = std::filesystem;
 
 namespace {
 constexpr double kDeg = std::numbers::pi / 180.0;
+constexpr int kMaxGridCount = 100000;            // values of one `{from, to, count}` axis
+constexpr int64_t kMaxSweepDrops = int64_t{1} << 40;
 constexpr SweepParam kAll[kSweepParamCount] = {SweepParam::kPad,     SweepParam::kSoil, SweepParam::kImpactSpeed,
                                                SweepParam::kMass,    SweepParam::kGravity, SweepParam::kTilt,
-                                               SweepParam::kHorizontalSpeed, SweepParam::kZeta};
+                                               SweepParam::kHorizontalSpeed, SweepParam::kZeta, SweepParam::kRoll,
+                                               SweepParam::kPitch};
 
 std::optional<SweepParam> ParamFromKey(const std::string& key) {
   for (SweepParam p : kAll)
@@ -28,7 +35,7 @@ std::optional<SweepParam> ParamFromKey(const std::string& key) {
 bool IsName(SweepParam p) { return p == SweepParam::kPad || p == SweepParam::kSoil; }
 
 double ToSi(SweepParam p, double v) {
-  if (p == SweepParam::kTilt) return v * kDeg;
+  if (p == SweepParam::kTilt || p == SweepParam::kRoll || p == SweepParam::kPitch) return v * kDeg;
   if (p == SweepParam::kZeta) return v * 1e6;
   return v;
 }
@@ -46,12 +53,10 @@ void CheckValue(SweepParam p, double v, const std::string& file, const std::stri
     case SweepParam::kZeta: if (!(v > 0.0)) fail("positive"); break;
     case SweepParam::kTilt:
       if (!(std::abs(v) < 90.0)) fail("between -90 and 90");
-      [[fallthrough]];
-    case SweepParam::kHorizontalSpeed:
-      if (v != 0.0 && !FreeDropAvailable())
-        throw MakeInputError(file, path,
-                             "non-zero values need the 6-DOF free drop, which this build does not have yet "
-                             "(the rig drop is vertical: use 0), got " + FormatNumber(v));
+      break;
+    case SweepParam::kRoll:
+    case SweepParam::kPitch:
+      if (!(std::abs(v) < 80.0)) fail("between -80 and 80");
       break;
     default: break;
   }
@@ -73,9 +78,9 @@ class Loader {
         for (size_t i = 0; i < pad_refs_.size(); ++i)
           if (pad_refs_[i] == ref) return static_cast<double>(i);
         PadSpec pad = LoadPad(ref);
-        // The rig drop integrates an axisymmetric profile; mesh pads need the 3D free drop.
+        // Level drops run on the rig, which integrates an axisymmetric profile.
         if (pad.profile.points.empty())
-          throw MakeInputError(pad.source, "", "a mesh pad needs the 6-DOF free drop, not in sweeps yet");
+          throw MakeInputError(pad.source, "", "a mesh pad has no profile for the rig drop: sweeps take axisymmetric pads");
         plan_.pads.push_back(std::move(pad));
         pad_refs_.push_back(ref);
         return static_cast<double>(plan_.pads.size() - 1);
@@ -83,6 +88,7 @@ class Loader {
       for (size_t i = 0; i < soil_refs_.size(); ++i)
         if (soil_refs_[i] == ref) return static_cast<double>(i);
       plan_.soils.push_back(LoadSoil(ref));
+      plan_.soil_refs.push_back(ref);
       soil_refs_.push_back(ref);
       return static_cast<double>(plan_.soils.size() - 1);
     } catch (const InputError& e) {
@@ -112,6 +118,19 @@ class Loader {
   std::vector<std::string> pad_refs_, soil_refs_;
 };
 
+std::string FileText(const std::string& path) {
+  if (path.empty()) return "";
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+bool IsLanderParam(SweepParam p) { return p == SweepParam::kRoll || p == SweepParam::kPitch; }
+bool IsSinglePadOnly(SweepParam p) {
+  return p == SweepParam::kPad || p == SweepParam::kMass || p == SweepParam::kTilt || p == SweepParam::kZeta;
+}
+
 const char* TraceStorageName(TraceStorage t) {
   return t == TraceStorage::kNone ? "none" : t == TraceStorage::kFull ? "full" : "decimated";
 }
@@ -127,6 +146,8 @@ const char* SweepParamKey(SweepParam p) {
     case SweepParam::kTilt: return "tilt_deg";
     case SweepParam::kHorizontalSpeed: return "horizontal_speed_m_s";
     case SweepParam::kZeta: return "zeta_N_cm3";
+    case SweepParam::kRoll: return "roll_deg";
+    case SweepParam::kPitch: return "pitch_deg";
   }
   return "?";
 }
@@ -194,6 +215,10 @@ SweepDropParams SweepPlan::DropAt(int64_t index) const {
   if (has(SweepParam::kTilt)) d.tilt_rad = at(SweepParam::kTilt);
   if (has(SweepParam::kHorizontalSpeed)) d.horizontal_speed_m_s = at(SweepParam::kHorizontalSpeed);
   if (has(SweepParam::kZeta)) d.zeta_N_m3 = at(SweepParam::kZeta);
+  if (has(SweepParam::kRoll)) d.roll_rad = at(SweepParam::kRoll);
+  if (has(SweepParam::kPitch)) d.pitch_rad = at(SweepParam::kPitch);
+  for (SweepParam p : kAll)
+    if (has(p)) d.given |= 1u << static_cast<int>(p);
   return d;
 }
 
@@ -230,6 +255,7 @@ std::string SweepPlan::DigestText() const {
     s += ";";
   }
   if (model) s += ModelDigestText(*model);
+  if (lander) s += "lander:" + lander->name + ":" + lander_digest + ";";
   return s;
 }
 
@@ -237,15 +263,39 @@ SweepPlan LoadSweepPlan(const std::string& path, const std::string& model_overri
   const YamlFields f = YamlFields::LoadFile(path);
   f.RequireSchemaVersion(1);
   f.RequireOnly({"schema_version", "type", "name", "description", "model", "traces", "trace_max_samples",
-                 "rest_duration_s", "fixed", "grid", "random", "lander", "provenance"});
+                 "rest_duration_s", "max_drop_wall_time_s", "fixed", "grid", "random", "lander", "provenance"});
   if (f.String("type") != "sweep") f.Fail("type", "must be 'sweep', got '" + f.String("type") + "'");
   const std::string base = fs::path(path).parent_path().string();
   SweepPlan plan;
   plan.source = path;
   plan.name = f.StringOr("name", fs::path(path).stem().string());
-  if (f.Has("lander"))
-    f.Fail("lander", "lander scenario parameters are reserved for the lander sweeps and not implemented yet");
-  const std::string traces = f.StringOr("traces", "decimated");
+  if (f.Has("lander")) {
+    const YamlFields l = f.Child("lander");
+    l.RequireOnly({"scenario"});
+    std::string ref = l.String("scenario");
+    const bool is_path = ref.find('/') != std::string::npos || ref.ends_with(".yaml") || ref.ends_with(".yml");
+    if (is_path && fs::path(ref).is_relative()) ref = (fs::path(base) / ref).lexically_normal().string();
+    try {
+      plan.lander = LoadLanderScenario(ResolveCatalogFile("scenarios", ref));
+    } catch (const InputError& e) {
+      l.Fail("scenario", e.what());
+    }
+    // The digest covers every file the scenario reads: scenario, lander, pad (and mesh), soils.
+    const LanderSpec& spec = plan.lander->lander;
+    std::string files = FileText(plan.lander->source) + '\0' + FileText(spec.source) + '\0' +
+                        FileText(spec.pad.source) + '\0' + FileText(spec.pad.mesh_file);
+    files += '\0' + FileText(ResolveCatalogFile("soils", plan.lander->ground.default_soil));
+    for (const LanderPatchSpec& patch : plan.lander->ground.patches)
+      files += '\0' + FileText(ResolveCatalogFile("soils", patch.soil));
+    char hex[17];
+    std::snprintf(hex, sizeof hex, "%016" PRIx64, Fnv1a64(files));
+    plan.lander_digest = hex;
+    for (const char* key : {"rest_duration_s", "trace_max_samples"})
+      if (f.Has(key)) f.Fail(key, "a lander sweep runs the scenario's simulation options; remove it");
+    if (f.Has("traces") && f.String("traces") != "none")
+      f.Fail("traces", "a lander sweep stores summaries only (traces: none); run `touchdown lander` for a trace");
+  }
+  const std::string traces = f.StringOr("traces", plan.lander ? "none" : "decimated");
   if (traces == "none") plan.traces = TraceStorage::kNone;
   else if (traces == "full") plan.traces = TraceStorage::kFull;
   else if (traces == "decimated") plan.traces = TraceStorage::kDecimated;
@@ -254,6 +304,8 @@ SweepPlan LoadSweepPlan(const std::string& path, const std::string& model_overri
   if (plan.trace_max_samples < 3) f.Fail("trace_max_samples", "must be at least 3");
   plan.rig.rest_duration_s = f.Has("rest_duration_s") ? f.NonNegative("rest_duration_s") : 0.0;
   if (plan.rig.rest_duration_s > 60.0) f.Fail("rest_duration_s", "must be at most 60 s");
+  plan.rig.integrator.max_wall_time_s =
+      f.Has("max_drop_wall_time_s") ? f.NonNegative("max_drop_wall_time_s") : kDefaultMaxDropWallTimeS;
 
   // The model first: the soils are loaded through it.
   std::string model_path;
@@ -271,8 +323,13 @@ SweepPlan LoadSweepPlan(const std::string& path, const std::string& model_overri
   auto claim = [&](const YamlFields& block, const std::string& key) -> SweepParam {
     const std::optional<SweepParam> p = ParamFromKey(key);
     if (!p) block.Fail(key, "unknown parameter (pad, soil, impact_speed_m_s, pad_mass_kg, gravity_m_s2, tilt_deg, "
-                            "horizontal_speed_m_s, zeta_N_cm3)");
+                            "horizontal_speed_m_s, zeta_N_cm3; lander sweeps: roll_deg, pitch_deg)");
     if (seen[static_cast<int>(*p)]) block.Fail(key, "set in more than one of fixed, grid and random");
+    if (plan.lander && IsSinglePadOnly(*p))
+      block.Fail(key, "a single-pad parameter; a lander sweep varies impact_speed_m_s, horizontal_speed_m_s, "
+                      "roll_deg, pitch_deg, gravity_m_s2 and soil");
+    if (!plan.lander && IsLanderParam(*p))
+      block.Fail(key, "a lander parameter: it needs a `lander: {scenario: ...}` block (single pads take tilt_deg)");
     seen[static_cast<int>(*p)] = true;
     return *p;
   };
@@ -296,6 +353,8 @@ SweepPlan LoadSweepPlan(const std::string& path, const std::string& model_overri
         const double from = range.Number("from"), to = range.Number("to");
         const int count = range.PositiveInt("count");
         if (count < 2 && from != to) range.Fail("count", "must be at least 2 when from != to");
+        if (count > kMaxGridCount)
+          range.Fail("count", "must be at most " + std::to_string(kMaxGridCount) + ", got " + std::to_string(count));
         for (int i = 0; i < count; ++i) {
           // Ends exact: from and to appear as written.
           const double v = i == count - 1 ? to : from + (to - from) * i / (count - 1 > 0 ? count - 1 : 1);
@@ -340,12 +399,48 @@ SweepPlan LoadSweepPlan(const std::string& path, const std::string& model_overri
       plan.random.push_back(std::move(r));
     }
   }
-  for (SweepParam required : {SweepParam::kPad, SweepParam::kSoil, SweepParam::kImpactSpeed})
-    if (!seen[static_cast<int>(required)])
-      f.Fail(SweepParamKey(required), "not set in fixed, grid or random");
-  if (plan.size() <= 0 || plan.size() > (int64_t{1} << 40)) f.Fail("grid", "the sweep has too many drops");
+  if (!plan.lander)
+    for (SweepParam required : {SweepParam::kPad, SweepParam::kSoil, SweepParam::kImpactSpeed})
+      if (!seen[static_cast<int>(required)])
+        f.Fail(SweepParamKey(required), "not set in fixed, grid or random");
+  // Counted in floating point first: the int64 product could overflow.
+  double drops = static_cast<double>(plan.samples);
+  for (const SweepAxis& a : plan.grid) drops *= static_cast<double>(a.values.size());
+  if (!(drops <= static_cast<double>(kMaxSweepDrops)) || plan.size() <= 0)
+    f.Fail("grid", "the sweep has too many drops (" + FormatNumber(drops) + ", at most 2^40)");
   if (plan.model)
     for (rft::SoilParameters& soil : plan.soils) soil = ApplyModel(*plan.model, soil);
+
+  // Effects without a 3D form cannot run on free drops or landers: refused now, not drop by drop.
+  const ModelFile* model = plan.model ? &*plan.model : nullptr;
+  if (plan.lander) {
+    plan.lander->model = plan.model;
+    try {
+      BuildLanderSetup(*plan.lander);  // the scenario's own soils under the model
+      for (const std::string& ref : plan.soil_refs)
+        MakeModelStressLaw3D(plan.lander->ground.law, LoadSoil(ref), plan.lander->gravity_m_s2, model);
+    } catch (const InputError& e) {
+      f.Fail("lander", e.what());
+    }
+  } else if (model) {
+    auto may_be_non_zero = [&](SweepParam p) {
+      const int i = static_cast<int>(p);
+      if (plan.fixed[i] && *plan.fixed[i] != 0.0) return true;
+      for (const SweepAxis& a : plan.grid)
+        if (a.param == p)
+          for (double v : a.values)
+            if (v != 0.0) return true;
+      for (const SweepRandom& r : plan.random)
+        if (r.param == p) return true;
+      return false;
+    };
+    if (may_be_non_zero(SweepParam::kTilt) || may_be_non_zero(SweepParam::kHorizontalSpeed))
+      for (const std::string& id : ActiveEffects(ModelEffectTerms(*model)))
+        if (const std::optional<std::string> why = No3DFormReason(id))
+          throw MakeInputError(model->source, "effects." + id,
+                               *why + "; this sweep has free drops (non-zero tilt_deg or horizontal_speed_m_s), "
+                                      "which cannot apply it");
+  }
   return plan;
 }
 

@@ -9,15 +9,32 @@
 //   traces: decimated            # none | decimated | full  (stored in the results database)
 //   trace_max_samples: 64        # for `decimated`: at most this many samples per drop
 //   rest_duration_s: 0           # time simulated after the stop (0: summaries only)
+//   max_drop_wall_time_s: 60     # wall-clock limit per drop (0: none); a drop over it is
+//                                # recorded as failed with the reason (`sweep --max-drop-wall-time`)
 //   fixed:  {soil: fjs1_lp, gravity_m_s2: 9.81}
 //   grid:   {pad: [flat, c4, curved], impact_speed_m_s: {from: 0.5, to: 2.0, count: 7}}
 //   random: {samples: 100, seed: 7, pad_mass_kg: {uniform: [1.2, 2.0]}, soil: {choice: [fjs1_lp, fjs1_cp]}}
-//   lander: {...}                # reserved for lander scenario parameters: not implemented yet
 //
 // Parameters: pad, soil (catalogue names or YAML paths), impact_speed_m_s, pad_mass_kg
 // (default: each pad's mass), gravity_m_s2 (default 9.81), tilt_deg and horizontal_speed_m_s
-// (default 0; non-zero values need the 6-DOF free drop, see sweep_drop.h), zeta_N_cm3
-// (default: the soil's, or the model's). Each parameter is set in at most one block.
+// (default 0; a drop with either non-zero is a free 6-DOF drop: tilt about the world x axis,
+// horizontal speed along +x, see sweep_drop.h), zeta_N_cm3 (default: the soil's, or the
+// model's). Each parameter is set in at most one block.
+//
+// A lander sweep names a lander scenario instead of pads (data/scenarios/lander_case_A.yaml style,
+// drop_tests/lander_scenario.h) and varies some of its parameters; each drop is a whole lander run:
+//
+//   lander: {scenario: lander_case_A}   # a name in data/scenarios or a path (relative: to this file)
+//   traces: none                        # lander sweeps store summaries only (the default for them)
+//   grid:   {impact_speed_m_s: [1.0, 1.4], pitch_deg: [0, 2]}
+//
+// Lander parameters, each defaulting to the scenario's value: impact_speed_m_s (the first pad's
+// vertical touchdown speed; replaces the scenario's drop height), horizontal_speed_m_s (body
+// velocity along world +x, y = 0), roll_deg and pitch_deg (initial attitude, aerospace signs as in
+// the scenario), gravity_m_s2 and soil (the ground's default soil; soil patches keep theirs).
+// pad, pad_mass_kg, tilt_deg and zeta_N_cm3 are single-pad parameters and refused there; roll_deg
+// and pitch_deg are refused in single-pad sweeps. The model (`model:`/--model) applies to the
+// lander's soils as in `touchdown lander --model`.
 //
 // Drop i is grid point g = i / S and random sample s = i % S (S = samples, 1 without random);
 // the grid's first-listed parameter varies slowest. Random sample s draws the same values at
@@ -30,13 +47,14 @@
 #include <vector>
 
 #include "drop_tests/catalog.h"
+#include "drop_tests/lander_scenario.h"
 #include "drop_tests/model_file.h"
 #include "drop_tests/rig_drop.h"
 
 namespace touchdown::drop {
 
-enum class SweepParam { kPad, kSoil, kImpactSpeed, kMass, kGravity, kTilt, kHorizontalSpeed, kZeta };
-inline constexpr int kSweepParamCount = 8;
+enum class SweepParam { kPad, kSoil, kImpactSpeed, kMass, kGravity, kTilt, kHorizontalSpeed, kZeta, kRoll, kPitch };
+inline constexpr int kSweepParamCount = 10;
 const char* SweepParamKey(SweepParam p);  // the YAML key, e.g. "impact_speed_m_s"
 
 enum class TraceStorage { kNone, kDecimated, kFull };
@@ -52,6 +70,9 @@ struct SweepDropParams {
   double tilt_rad = 0.0;
   double horizontal_speed_m_s = 0.0;
   std::optional<double> zeta_N_m3;  // at the soil's reference gravity; default: the soil's
+  double roll_rad = 0.0, pitch_rad = 0.0;  // lander sweeps
+  uint32_t given = 0;  // bit p set when parameter p was set by the sweep (else: its default)
+  bool Given(SweepParam p) const { return (given >> static_cast<int>(p)) & 1u; }
 };
 
 struct SweepAxis {  // a grid dimension
@@ -72,6 +93,9 @@ struct SweepPlan {
   std::optional<ModelFile> model;
   std::vector<PadSpec> pads;
   std::vector<rft::SoilParameters> soils;  // with the model applied
+  std::vector<std::string> soil_refs;      // as resolved from the file (name or path), per soil
+  std::optional<LanderScenario> lander;    // a lander sweep: the scenario every drop starts from
+  std::string lander_digest;               // digest of the scenario, lander, pad (and mesh) files
   std::optional<double> fixed[kSweepParamCount];
   std::vector<SweepAxis> grid;
   std::vector<SweepRandom> random;
@@ -79,7 +103,7 @@ struct SweepPlan {
   uint64_t seed = 0;
   TraceStorage traces = TraceStorage::kDecimated;
   int trace_max_samples = 64;
-  RigDropOptions rig;  // rest_duration_s from the file
+  RigDropOptions rig;  // rest_duration_s and integrator.max_wall_time_s from the file
 
   int64_t size() const;
   SweepDropParams DropAt(int64_t index) const;
@@ -91,6 +115,9 @@ struct SweepPlan {
 
 // Loads and validates the whole sweep (pads, soils, model, every value) before anything runs.
 // `model_override` (from --model) replaces the file's `model:`; giving both is an error.
+// The per-drop wall-clock limit is not part of DigestText: it decides whether a drop finishes,
+// never what a finished drop computes, so a restart may change it.
+inline constexpr double kDefaultMaxDropWallTimeS = 60.0;
 SweepPlan LoadSweepPlan(const std::string& path, const std::string& model_override = "");
 // 64-bit FNV-1a, for digests.
 uint64_t Fnv1a64(const std::string& text);

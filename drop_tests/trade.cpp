@@ -102,7 +102,7 @@ void WriteTradeOutputs(const std::vector<TradeRow>& rows, const std::string& out
   for (auto& [key, list] : series) {
     std::sort(list.begin(), list.end(), [](auto a, auto b) { return a->impact_speed_m_s < b->impact_speed_m_s; });
     const std::string file = "plots/data/" + key.first + "__" + key.second + ".csv";
-    WriteFileAtomically((dir / file).string(), [&](std::ostream& out) {
+    WriteFileAtomically((dir / file).string(), [&, &list = list](std::ostream& out) {
       for (const TradeRow* r : list)
         out << FormatNumber(r->impact_speed_m_s) << ',' << FormatNumber(r->final_penetration_m) << ','
             << FormatNumber(r->peak_force_N) << ',' << FormatNumber(r->mean_conversion_rate_W) << '\n';
@@ -114,7 +114,7 @@ void WriteTradeOutputs(const std::vector<TradeRow>& rows, const std::string& out
   for (auto& [key, list] : fronts) {
     std::sort(list.begin(), list.end(), [](auto a, auto b) { return a->final_penetration_m < b->final_penetration_m; });
     const std::string file = "plots/data/front_" + std::to_string(k++) + ".csv";
-    WriteFileAtomically((dir / file).string(), [&](std::ostream& out) {
+    WriteFileAtomically((dir / file).string(), [&, &list = list](std::ostream& out) {
       for (const TradeRow* r : list)
         out << FormatNumber(r->final_penetration_m) << ',' << FormatNumber(r->peak_force_N) << ',' << r->pad << '\n';
     });

@@ -15,10 +15,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <iterator>
 #include <unordered_map>
 
+#include "footpad_geom/mesh_readers.h"
 #include "footpad_geom/mesh_remesh.h"
 #include "rft/input_error.h"
 
@@ -32,6 +34,9 @@ using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_3;
 using Mesh = CGAL::Surface_mesh<Point>;
 using Polygon = std::vector<std::size_t>;
+
+// Remeshing cap: about 90 MB of pad body and seconds per contact evaluation.
+constexpr double kMaxRemeshTriangles = 500000.0;
 
 InputError Defect(const std::string& source, const std::string& what) {
   return MakeInputError(source, "", what);
@@ -212,41 +217,58 @@ PreparedMesh LoadTriangleMesh(const std::string& path, const MeshLoadOptions& op
   if (!(options.remesh_edge_m >= 0.0) || !std::isfinite(options.remesh_edge_m))
     throw Defect(path, "remesh edge length must be >= 0 and finite");
 
-  std::vector<Point> points;
-  std::vector<Polygon> polygons;
-  bool read = false;
-  try {
-    // The format comes from the extension (any case); CGAL's readers tell binary from ASCII
-    // STL and PLY themselves.
-    const std::string format = ext.substr(1);
-    const auto np = CGAL::parameters::verbose(false);
-    if (format == "stl")
-      read = CGAL::IO::read_STL(path, points, polygons, np);
-    else if (format == "off")
-      read = CGAL::IO::read_OFF(path, points, polygons, np);
-    else if (format == "obj")
-      read = CGAL::IO::read_OBJ(path, points, polygons, np);
-    else
-      read = CGAL::IO::read_PLY(path, points, polygons, np);
-  } catch (const std::exception&) {
-    read = false;
-  }
-  if (!read) throw Defect(path, "could not be read as " + Lower(ext.substr(1)) + " (malformed file)");
-
-  const double scale = MetresPerUnit(options.unit);
+  // OFF and PLY go through touchdown's bounded readers (mesh_readers.h): CGAL's trust the
+  // counts in the file. STL and OBJ are read by CGAL, which grows its arrays as it reads.
+  const std::string format = ext.substr(1);
   PolygonSoup soup;
-  soup.vertices.reserve(points.size());
-  for (const Point& p : points) soup.vertices.emplace_back(p.x() * scale, p.y() * scale, p.z() * scale);
-  for (Polygon& p : polygons) {
-    std::vector<int> f;
-    for (std::size_t i : p) {
-      if (i >= points.size()) throw Defect(path, "a face refers to vertex " + std::to_string(i) + ", which does not exist");
-      f.push_back(static_cast<int>(i));
+  if (format == "off") {
+    soup = ReadOffSoup(path);
+  } else if (format == "ply") {
+    soup = ReadPlySoup(path);
+  } else {
+    if (format == "stl") CheckBinaryStlCoordinates(path);
+    std::vector<Point> points;
+    std::vector<Polygon> polygons;
+    bool read = false;
+    try {
+      const auto np = CGAL::parameters::verbose(false);
+      read = format == "stl" ? CGAL::IO::read_STL(path, points, polygons, np)
+                             : CGAL::IO::read_OBJ(path, points, polygons, np);
+    } catch (const std::exception&) {
+      read = false;
     }
-    soup.faces.push_back(std::move(f));
+    if (!read) throw Defect(path, "could not be read as " + format + " (malformed file)");
+    soup.vertices.reserve(points.size());
+    for (const Point& p : points) soup.vertices.emplace_back(p.x(), p.y(), p.z());
+    for (Polygon& p : polygons) {
+      std::vector<int> f;
+      for (std::size_t i : p) {
+        if (i >= points.size()) throw Defect(path, "a face refers to vertex " + std::to_string(i) + ", which does not exist");
+        f.push_back(static_cast<int>(i));
+      }
+      soup.faces.push_back(std::move(f));
+    }
   }
+  const double scale = MetresPerUnit(options.unit);
+  for (Eigen::Vector3d& v : soup.vertices) v *= scale;
   PreparedMesh prepared = PrepareTriangleMesh(std::move(soup), path);
   if (options.remesh_edge_m > 0.0) {
+    // Refuse a target edge that would make an absurd number of triangles (a hand-written
+    // 1e-9 would otherwise exhaust memory): an even mesh of edge e has about
+    // area / (sqrt(3)/4 e^2) triangles.
+    double area = 0.0;
+    for (const auto& t : prepared.mesh.triangles) {
+      const Eigen::Vector3d& a = prepared.mesh.vertices[t[0]];
+      area += 0.5 * (prepared.mesh.vertices[t[1]] - a).cross(prepared.mesh.vertices[t[2]] - a).norm();
+    }
+    const double estimate = area / (std::sqrt(3.0) / 4.0 * options.remesh_edge_m * options.remesh_edge_m);
+    if (!(estimate <= kMaxRemeshTriangles)) {
+      char text[160];
+      std::snprintf(text, sizeof text,
+                    "remesh edge length %.6g mm would make about %.3g triangles (at most %.0f): use a longer edge",
+                    options.remesh_edge_m * 1e3, estimate, kMaxRemeshTriangles);
+      throw Defect(path, text);
+    }
     const PreparedMesh remeshed =
         PrepareTriangleMesh(ToPolygonSoup(RemeshIsotropic(prepared.mesh, options.remesh_edge_m)), path + " (remeshed)");
     prepared.mesh = remeshed.mesh;

@@ -11,6 +11,7 @@ namespace touchdown::geom {
 
 struct PadBody {
   rft::SurfaceElements surface;                            // closed, outward normals
+  Eigen::Matrix3Xd vertices_B;                             // the mesh's vertices, each once [m]
   double mass_kg = 0.0;
   Eigen::Vector3d com_B = Eigen::Vector3d::Zero();         // centre of mass [m]
   Eigen::Matrix3d inertia_com_B = Eigen::Matrix3d::Zero();  // about the centre of mass, B axes [kg m^2]

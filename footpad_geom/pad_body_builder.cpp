@@ -3,6 +3,7 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -70,9 +71,14 @@ PadBody MakePadBody(const TriangleMesh& mesh, const PadMassModel& mass, const Ei
       throw MakeInputError(source, "center_of_mass", "needs the inertia about it (inertia_kg_m2) as well");
     body.inertia_com_B = density * vp.inertia_per_density_m5;
   }
-  double lowest = std::numeric_limits<double>::infinity();
-  for (const Eigen::Vector3d& v : mesh.vertices) lowest = std::min(lowest, v.z() - reference_point_m.z());
-  body.lowest_z_B = lowest;
+  // Only vertices of some triangle: a stray vertex of the file is not part of the surface.
+  std::vector<char> used(mesh.vertices.size(), 0);
+  for (const auto& t : mesh.triangles)
+    for (int i : t) used[static_cast<size_t>(i)] = 1;
+  body.vertices_B.resize(3, static_cast<int>(std::count(used.begin(), used.end(), 1)));
+  for (size_t k = 0, c = 0; k < mesh.vertices.size(); ++k)
+    if (used[k]) body.vertices_B.col(static_cast<int>(c++)) = mesh.vertices[k] - reference_point_m;
+  body.lowest_z_B = body.vertices_B.cols() > 0 ? body.vertices_B.row(2).minCoeff() : 0.0;
   return body;
 }
 

@@ -7,7 +7,9 @@
 #include <sunmatrix/sunmatrix_dense.h>
 #include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
 
+#include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <exception>
 #include <sstream>
 #include <utility>
@@ -23,6 +25,8 @@ bool IntegratorOptions::IsValid(std::string* error) const {
   if (!(atol > 0.0 && std::isfinite(atol))) return fail("atol must be positive and finite");
   if (!(max_step >= 0.0 && std::isfinite(max_step))) return fail("max_step must be >= 0");
   if (max_num_steps <= 0) return fail("max_num_steps must be positive");
+  if (!(max_wall_time_s >= 0.0 && std::isfinite(max_wall_time_s)))
+    return fail("max_wall_time_s must be >= 0 and finite");
   return true;
 }
 
@@ -39,6 +43,20 @@ struct CvodeIntegrator::Impl {
   std::exception_ptr pending;  // exception caught inside a C callback
   std::string last_error;      // CVODE's own message for the last failure
   bool initialised = false;
+  double max_wall_time_s = 0.0;  // 0: no limit
+  std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now();
+
+  // True (and the failure pending) once the wall-clock budget is spent. Called first in every
+  // callback: returning -1 there makes CVode return at once, and AdvanceTo re-throws.
+  bool OutOfTime() {
+    if (max_wall_time_s <= 0.0) return false;
+    const std::chrono::duration<double> used = std::chrono::steady_clock::now() - started;
+    if (used.count() <= max_wall_time_s) return false;
+    std::ostringstream s;
+    s << "wall-clock limit exceeded: more than " << max_wall_time_s << " s (max_wall_time_s)";
+    pending = std::make_exception_ptr(IntegrationFailure(s.str()));
+    return true;
+  }
 
   ~Impl() {
     if (cvode) CVodeFree(&cvode);
@@ -52,6 +70,7 @@ struct CvodeIntegrator::Impl {
   static int Rhs(realtype t, N_Vector y, N_Vector ydot, void* user) {
     auto* self = static_cast<Impl*>(user);
     try {
+      if (self->OutOfTime()) return -1;
       Eigen::Map<const Eigen::VectorXd> ym(N_VGetArrayPointer(y), self->n);
       Eigen::Map<Eigen::VectorXd> dm(N_VGetArrayPointer(ydot), self->n);
       self->rhs(t, ym, dm);
@@ -66,6 +85,7 @@ struct CvodeIntegrator::Impl {
   static int Roots(realtype t, N_Vector y, realtype* g, void* user) {
     auto* self = static_cast<Impl*>(user);
     try {
+      if (self->OutOfTime()) return -1;
       Eigen::Map<const Eigen::VectorXd> ym(N_VGetArrayPointer(y), self->n);
       Eigen::Map<Eigen::VectorXd> gm(g, self->roots.count);
       self->roots.function(t, ym, gm);
@@ -86,7 +106,10 @@ struct CvodeIntegrator::Impl {
   void Check(int flag, const char* what) const {
     if (flag < 0) {
       std::ostringstream s;
-      s << what << " failed: " << CVodeGetReturnFlagName(flag);
+      // CVodeGetReturnFlagName returns a malloc'd string the caller owns (found by LeakSanitizer).
+      char* name = CVodeGetReturnFlagName(flag);
+      s << what << " failed: " << (name ? name : "unknown flag");
+      std::free(name);
       if (!last_error.empty()) s << " (" << last_error << ")";
       throw IntegrationFailure(s.str());
     }
@@ -106,6 +129,8 @@ CvodeIntegrator::CvodeIntegrator(int state_size, RhsFunction rhs, const Integrat
   m.n = state_size;
   m.rhs = std::move(rhs);
   m.roots = std::move(roots);
+  m.max_wall_time_s = options.max_wall_time_s;
+  m.started = std::chrono::steady_clock::now();
   if (SUNContext_Create(nullptr, &m.context) != 0) throw IntegrationFailure("SUNContext_Create failed");
   m.y = N_VNew_Serial(state_size, m.context);
   N_VConst(0.0, m.y);
@@ -174,6 +199,11 @@ IntegratorSummary CvodeIntegrator::summary() const {
   CVodeGetNumRhsEvals(impl_->cvode, &s.rhs_evaluations);
   CVodeGetNumGEvals(impl_->cvode, &s.root_evaluations);
   CVodeGetNumErrTestFails(impl_->cvode, &s.error_test_failures);
+  CVodeGetNumNonlinSolvConvFails(impl_->cvode, &s.nonlinear_convergence_failures);
+  if (impl_->linear_solver) {
+    CVodeGetNumJacEvals(impl_->cvode, &s.jacobian_evaluations);
+    CVodeGetNumLinRhsEvals(impl_->cvode, &s.jacobian_rhs_evaluations);
+  }
   return s;
 }
 

@@ -26,6 +26,11 @@ struct IntegratorOptions {
   double max_step = 0.0;       // [s]; 0 = no limit
   long max_num_steps = 200000;  // per call to AdvanceTo
   bool stiff = false;          // BDF + dense Newton when true, Adams + fixed point otherwise
+  // Wall-clock budget [s] for the integrator's whole life (construction, every Reset and
+  // AdvanceTo: one drop); 0 = none. Checked in every right-hand-side and root evaluation, so a
+  // stiff or chattering model cannot hang a sweep: the advance then fails with an
+  // IntegrationFailure saying the limit was exceeded.
+  double max_wall_time_s = 0.0;
   // Ceres-style validity check; fills *error and returns false on a bad option.
   bool IsValid(std::string* error) const;
 };
@@ -50,10 +55,13 @@ struct IntegratorSummary {
   long rhs_evaluations = 0;
   long root_evaluations = 0;
   long error_test_failures = 0;
+  long jacobian_evaluations = 0;        // stiff mode only
+  long jacobian_rhs_evaluations = 0;    // right-hand sides spent on difference-quotient Jacobians
+  long nonlinear_convergence_failures = 0;
 };
 
-// Raised when CVODE fails (too much work, convergence failure, non-finite state): the
-// message carries CVODE's own reason.
+// Raised when CVODE fails (too much work, convergence failure, non-finite state, the
+// wall-clock limit): the message carries CVODE's own reason.
 class IntegrationFailure : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "rft/deepest_point.h"
+
 namespace touchdown::lander {
 
 namespace {
@@ -22,9 +24,7 @@ Eigen::Quaterniond QuatAt(const Eigen::Ref<const Eigen::VectorXd>& y, int i) {
   return Eigen::Quaterniond(y[i], y[i + 1], y[i + 2], y[i + 3]).normalized();
 }
 
-// Speed below which a pad is treated as at rest when its soil wrench is evaluated: the RFT
-// stress direction then comes from the release direction (the limit v -> 0+).
-constexpr double kRestSpeed = 1e-12;
+
 // Probe speed for quasi-static wrenches: small enough that a speed-dependent (dynamic) term
 // is negligible, large enough to stay far from underflow.
 constexpr double kProbeSpeed = 1e-6;
@@ -98,10 +98,7 @@ LanderPose ComputePose(const LanderModel& model, const StateLayout& L, const Eig
 }
 
 double PadDepth(const LanderModel& model, const Terrain& terrain, int leg, const PadFrame& pad) {
-  const Eigen::Matrix3Xd& v = model.legs[leg].vertices_P;
-  double depth = -std::numeric_limits<double>::infinity();
-  for (int k = 0; k < v.cols(); ++k) depth = std::max(depth, terrain.surface->Depth(pad.p_WJ + pad.R_WP * v.col(k)));
-  return depth;
+  return rft::DeepestVertexDepth(model.legs[leg].vertices_P, pad.R_WP, pad.p_WJ, *terrain.surface);
 }
 
 rft::ContactWrench QuasiStaticWrench(const LanderModel& model, const Terrain& terrain, int leg, const PadFrame& pad,
@@ -152,12 +149,13 @@ void Assemble(const LanderModel& model, const StateLayout& L, const Terrain& ter
     w = rft::ContactWrench{};
     if (modes.pad[i] == PadMode::kFree && PadDepth(model, terrain, i, f) > 0.0) {
       rft::PadKinematics k{f.R_WP, f.p_WJ, f.v_WJ_W, f.w_WP_W};
-      if (f.v_WJ_W.norm() + f.w_WP_W.norm() * PadRadius(leg) < kRestSpeed) {
-        k.v_WB_W = kProbeSpeed * modes.release_direction[i];
-        k.w_WB_W.setZero();
-      }
+      const double speed = f.v_WJ_W.norm() + f.w_WP_W.norm() * PadRadius(leg);
       const int soil = terrain.SoilAt(f.p_WJ.x(), f.p_WJ.y());
       w = rft::ComputeContactWrench(leg.pad->surface, k, *terrain.surface, *terrain.soils[soil].law);
+      if (speed < kSoilRampSpeed) {
+        w.force_W *= speed / kSoilRampSpeed;
+        w.moment_W *= speed / kSoilRampSpeed;
+      }
       e->dissipation_W -= w.force_W.dot(f.v_WJ_W) + w.moment_W.dot(f.w_WP_W);
     }
     const Eigen::Vector3d F = m * g + w.force_W - m * bias_C;

@@ -50,6 +50,15 @@ struct StateLayout {
 };
 
 enum class PadMode { kFree, kHeld };
+
+// Below this speed (joint centre plus spin times pad radius) a free pad's soil wrench is scaled
+// by speed / kSoilRampSpeed. Why: quasi-static RFT depends on the direction of motion only, so at
+// v -> 0 the force keeps its full size while its direction follows rounding noise (a pad whose
+// capture was undone sits at |v| ~ 1e-11 with a horizontal part that turns its support into
+// sideways drag and back: a discontinuity no integrator steps through - it failed case B). The
+// ramp makes the force continuous through v = 0 and changes nothing above 0.1 mm/s; a pad that
+// slows below it is offered a capture (lander_simulation.h), so no creep results.
+inline constexpr double kSoilRampSpeed = 1e-4;
 enum class StrokeMode { kFree, kLocked, kBottomed };  // crushable absorbers only
 
 // Discrete state of the hybrid system, changed only at events.
@@ -57,10 +66,6 @@ struct LanderModes {
   std::array<PadMode, kNumLegs> pad{PadMode::kFree, PadMode::kFree, PadMode::kFree, PadMode::kFree};
   std::array<StrokeMode, kNumLegs> stroke{StrokeMode::kLocked, StrokeMode::kLocked, StrokeMode::kLocked,
                                           StrokeMode::kLocked};
-  // Direction a pad starts to move in when it leaves the held mode at zero velocity (the
-  // limit v -> 0+ of the RFT stress direction); unit vector in W.
-  std::array<Eigen::Vector3d, kNumLegs> release_direction{
-      Eigen::Vector3d(0, 0, -1), Eigen::Vector3d(0, 0, -1), Eigen::Vector3d(0, 0, -1), Eigen::Vector3d(0, 0, -1)};
 };
 
 struct PadFrame {

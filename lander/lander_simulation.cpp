@@ -9,7 +9,9 @@
 namespace touchdown::lander {
 
 namespace {
-// Root functions per pad: [0] depth (touchdown, rising); [1..3] capture / release (falling).
+// Root functions per pad: [0] depth (touchdown, rising); free pad: [1] sink rate, [2] / [3] speed
+// below the capture speed / the soil ramp speed while submerged (capture); held pad: [1..3] lift /
+// sink / slide (release); all but [0] falling.
 constexpr int kPadRoots = 4;
 // Per leg: [0..1] crushable absorber events (falling).
 constexpr int kLegRoots = 2;
@@ -124,6 +126,11 @@ LanderRunResult SimulateLander(const LanderModel& model, const Terrain& terrain,
       g[PadRoot(i, 0)] = PadDepth(model, terrain, i, f);
       if (modes.pad[i] == PadMode::kFree) {
         g[PadRoot(i, 1)] = -f.v_WJ_W.z();  // sink rate
+        // Slow capture: a submerged pad whose joint centre has slowed below the capture speed.
+        g[PadRoot(i, 2)] = g[PadRoot(i, 0)] > 0.0 ? f.v_WJ_W.norm() - options.capture_speed_m_s : 1.0;
+        // ... and again at the soil's ramp speed, where a pad whose earlier capture was undone
+        // has slowed down once more.
+        g[PadRoot(i, 3)] = g[PadRoot(i, 0)] > 0.0 ? f.v_WJ_W.norm() - kSoilRampSpeed : 1.0;
       } else {
         const HoldCheck h = CheckHold(model, terrain, i, f, root_eval.soil[i]);
         g[PadRoot(i, 1)] = h.lift;
@@ -201,16 +208,15 @@ LanderRunResult SimulateLander(const LanderModel& model, const Terrain& terrain,
       }
       if (worst < 0) return;
       modes.pad[worst] = PadMode::kFree;
+      const double m_check = std::min({worst_check.lift, worst_check.sink, worst_check.slide});
       if (fresh[worst]) {
         // The capture cannot hold: undo it (the pad goes on moving under RFT).
         s.segment(L.nq, L.nu) = before.segment(L.nq, L.nu);
         s[L.work()] = before[L.work()] + ProjectOntoConstraints(model, L, modes, s);
       } else {
-        const double m = std::min({worst_check.lift, worst_check.sink, worst_check.slide});
-        const char* kind = m == worst_check.lift ? "release_liftoff" : m == worst_check.sink ? "release_sink" : "release_slide";
-        modes.release_direction[worst] = m == worst_check.lift   ? Eigen::Vector3d(0, 0, 1)
-                                         : m == worst_check.sink ? Eigen::Vector3d(0, 0, -1)
-                                                                 : worst_check.slide_direction;
+        const char* kind = m_check == worst_check.lift   ? "release_liftoff"
+                           : m_check == worst_check.sink ? "release_sink"
+                                                         : "release_slide";
         result.events.push_back({t, kind, worst});
       }
     }
@@ -262,26 +268,21 @@ LanderRunResult SimulateLander(const LanderModel& model, const Terrain& terrain,
     std::array<bool, kNumLegs> fresh{};
     for (int i = 0; i < kNumLegs; ++i) {
       const PadFrame& f = pose.pads[i];
-      if (modes.pad[i] == PadMode::kFree && found[PadRoot(i, 1)] != 0 && PadDepth(model, terrain, i, f) > 0.0 &&
-          f.v_WJ_W.head<2>().norm() <= options.capture_speed_m_s) {
+      const bool stops_sinking = found[PadRoot(i, 1)] != 0 && f.v_WJ_W.head<2>().norm() <= options.capture_speed_m_s;
+      const bool slowed_down = found[PadRoot(i, 2)] != 0 || found[PadRoot(i, 3)] != 0;
+      if (modes.pad[i] == PadMode::kFree && (stops_sinking || slowed_down) && PadDepth(model, terrain, i, f) > 0.0) {
         modes.pad[i] = PadMode::kHeld;
         fresh[i] = changed = true;
       } else if (modes.pad[i] == PadMode::kHeld &&
                  (found[PadRoot(i, 1)] != 0 || found[PadRoot(i, 2)] != 0 || found[PadRoot(i, 3)] != 0)) {
         // The reaction left the capacity: the pad starts to move in the direction the load
         // pushes it (lift-off up, sinking down, sliding along the horizontal load).
-        LanderEvaluation e;
-        EvaluateLander(model, L, terrain, modes, y, &e);
-        const HoldCheck h = CheckHold(model, terrain, i, f, e.soil[i]);
         modes.pad[i] = PadMode::kFree;
         if (found[PadRoot(i, 1)] != 0) {
-          modes.release_direction[i] = Eigen::Vector3d(0, 0, 1);
           result.events.push_back({t, "release_liftoff", i});
         } else if (found[PadRoot(i, 2)] != 0) {
-          modes.release_direction[i] = Eigen::Vector3d(0, 0, -1);
           result.events.push_back({t, "release_sink", i});
         } else {
-          modes.release_direction[i] = h.slide_direction.norm() > 0 ? h.slide_direction : Eigen::Vector3d(1, 0, 0);
           result.events.push_back({t, "release_slide", i});
         }
         changed = true;
@@ -303,6 +304,15 @@ LanderRunResult SimulateLander(const LanderModel& model, const Terrain& terrain,
       }
     }
     if (!changed) continue;
+    // A capture is offered to every slow submerged pad at once: the pads share the body's load,
+    // so one pad alone may fail its hold check (and be released) where all of them together hold.
+    if (std::any_of(fresh.begin(), fresh.end(), [](bool b) { return b; }))
+      for (int i = 0; i < kNumLegs; ++i)
+        if (modes.pad[i] == PadMode::kFree && PadDepth(model, terrain, i, pose.pads[i]) > 0.0 &&
+            pose.pads[i].v_WJ_W.norm() <= options.capture_speed_m_s) {
+          modes.pad[i] = PadMode::kHeld;
+          fresh[i] = true;
+        }
     NormalizeQuaternions(L, y);
     // Pads kinematically stopped by the others' holds are held too.
     for (int pass = 0; pass < kNumLegs; ++pass) {

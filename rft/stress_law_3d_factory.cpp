@@ -7,8 +7,10 @@
 
 #include "rft/agarwal2023.h"
 #include "rft/dynamic_term.h"
+#include "rft/gas_cushion_term.h"
 #include "rft/input_error.h"
 #include "rft/li2013_3d.h"
+#include "rft/rate_damping_term.h"
 
 namespace touchdown::rft {
 
@@ -65,6 +67,34 @@ std::unique_ptr<StressLaw3D> MakeStressLaw3D(std::string_view law, const SoilPar
   Require(std::isfinite(rho_c) && rho_c > 0.0, soil, "dynamic_density_kg_m3",
           "the dynamic term needs a density (dynamic_density_kg_m3 or bulk_density_kg_m3)", rho_c);
   return std::make_unique<DynamicTermLaw>(std::move(quasi_static), soil.dynamic_lambda, rho_c);
+}
+
+std::unique_ptr<StressLaw3D> MakeStressLaw3D(std::string_view law, const SoilParameters& soil, double gravity_m_s2,
+                                             const EffectTerms3D& terms) {
+  Require(std::isfinite(terms.inertial_lambda) && terms.inertial_lambda >= 0.0, soil, "inertial_drag.lambda",
+          "must be non-negative", terms.inertial_lambda);
+  Require(std::isfinite(terms.damping_c_N_s_m3) && terms.damping_c_N_s_m3 >= 0.0, soil, "rate_damping.c_N_s_m3",
+          "must be non-negative", terms.damping_c_N_s_m3);
+  Require(std::isfinite(terms.gas_chi) && terms.gas_chi >= 0.0 && terms.gas_chi < 1.0, soil, "gas_cushion.chi",
+          "must be in [0, 1)", terms.gas_chi);
+  Require(std::isfinite(terms.gas_c_N_s_m3) && terms.gas_c_N_s_m3 >= 0.0, soil, "gas_cushion.c_g_N_s_m3",
+          "must be non-negative", terms.gas_c_N_s_m3);
+  SoilParameters base = soil;
+  const bool inertial = terms.inertial_lambda > 0.0;
+  if (inertial) base.dynamic_term = false;  // the model's inertial term replaces the soil's own
+  std::unique_ptr<StressLaw3D> out = MakeStressLaw3D(law, base, gravity_m_s2);
+  // DynamicTermLaw replaces its inner law's dynamic stress, so it goes innermost; the other
+  // decorators add theirs to their inner law's.
+  if (inertial) {
+    const double rho = terms.inertial_density_kg_m3 > 0.0 ? terms.inertial_density_kg_m3 : soil.bulk_density_kg_m3;
+    Require(std::isfinite(rho) && rho > 0.0, soil, "bulk_density_kg_m3",
+            "inertial_drag needs the soil's bulk density", rho);
+    out = std::make_unique<DynamicTermLaw>(std::move(out), terms.inertial_lambda, rho);
+  }
+  if (terms.gas_chi > 0.0 || terms.gas_c_N_s_m3 > 0.0)
+    out = std::make_unique<GasCushionLaw>(std::move(out), terms.gas_chi, terms.gas_c_N_s_m3);
+  if (terms.damping_c_N_s_m3 > 0.0) out = std::make_unique<RateDampingLaw>(std::move(out), terms.damping_c_N_s_m3);
+  return out;
 }
 
 }  // namespace touchdown::rft

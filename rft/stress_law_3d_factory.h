@@ -16,4 +16,25 @@ namespace touchdown::rft {
 std::unique_ptr<StressLaw3D> MakeStressLaw3D(std::string_view law, const SoilParameters& soil,
                                              double gravity_m_s2);
 
+// Effect terms that have a per-element 3D form (the effect library, drop_tests/effects.h), as
+// decorators around the law above:
+//   inertial_lambda > 0  DynamicTermLaw (rft/dynamic_term.h), lambda rho (v.n)^2 on leading
+//                        elements with rho = inertial_density_kg_m3 (0: the soil's bulk density);
+//                        it replaces the soil's own dynamic_term;
+//   damping_c_N_s_m3     RateDampingLaw (rft/rate_damping_term.h), c (v.n) on leading elements;
+//   gas_chi, gas_c       GasCushionLaw (rft/gas_cushion_term.h), stress per depth x (1 - chi)
+//                        plus c_g (v.n); the caller passes them only for a bed in air.
+// A term whose parameters are all 0 adds no decorator, so the law is exactly the one above.
+struct EffectTerms3D {
+  double inertial_lambda = 0.0;          // [-]
+  double inertial_density_kg_m3 = 0.0;   // [kg/m^3]
+  double damping_c_N_s_m3 = 0.0;         // [N s/m^3]
+  double gas_chi = 0.0;                  // [-], in [0, 1)
+  double gas_c_N_s_m3 = 0.0;             // [N s/m^3]
+};
+// Throws InputError naming the soil when a term's value is invalid or the inertial term has no
+// density.
+std::unique_ptr<StressLaw3D> MakeStressLaw3D(std::string_view law, const SoilParameters& soil,
+                                             double gravity_m_s2, const EffectTerms3D& terms);
+
 }  // namespace touchdown::rft

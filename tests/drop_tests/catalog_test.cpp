@@ -271,6 +271,20 @@ TEST_F(MeshPads, BadMeshPadsGiveOneClearError) {
       {"mass_kg: 1\nangular_segments: 3\nprofile: {shape: flat, radius_mm: 50, thickness_mm: 16}\n",
        "angular_segments: must be at least 6, got 3"},
       {"kind: banana\nmass_kg: 1\n", "kind: unknown pad kind 'banana' (axisymmetric, mesh)"},
+      // Resolution caps (issue 7): a hand-written 1e9 is refused at load, not run out of memory.
+      {"mass_kg: 1\nangular_segments: 1000000000\nprofile: {shape: flat, radius_mm: 50, thickness_mm: 16}\n",
+       "angular_segments: must be at most 1024, got 1000000000"},
+      {"mass_kg: 1\nprofile: {shape: spherical_cap, radius_mm: 50, thickness_mm: 16, sphere_radius_mm: 100, "
+       "segments: 1000000000}\n",
+       "profile.segments: must be at most 10000, got 1000000000"},
+      {"mass_kg: 1\nprofile: {shape: table, radius_mm: 50, thickness_mm: 16, points_mm: [" + [] {
+         std::string points;
+         for (int i = 0; i <= 10001; ++i) points += (i ? ", [" : "[") + std::to_string(50.0 * i / 10001) + ", 0]";
+         return points;
+       }() + "]}\n",
+       "profile.points_mm: must have at most 10001 points, got 10002"},
+      {head + "mesh: {file: meshes/box.off, unit: mm, remesh_edge_mm: 0.000001}\nmass_kg: 1\n",
+       "remesh edge length 1e-06 mm would make about"},
   };
   for (const auto& c : cases) {
     const std::string message = PadError(c.yaml);

@@ -1,5 +1,5 @@
 // Model files: written and read back, applied to soils with the gravity scaling, and refused
-// (with the file and field named) when malformed or carrying effects this build cannot apply.
+// (with the file and field named) when malformed or carrying unknown or out-of-range effects.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -93,7 +93,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadModel{"ReversedInterval", "type: model\nsoils: {fjs1_lp: {zeta_N_cm3: 3, zeta_interval_N_cm3: [4, 2]}}\n",
                  "zeta_interval_N_cm3"},
         BadModel{"UnknownField", "type: model\nsoil: {}\n", "soil: unknown field"},
-        BadModel{"Effects", "type: model\neffects: {rate_damping: {c_N_s_m3: 100}}\n", "effects: effect terms"}),
+        BadModel{"UnknownEffect", "type: model\neffects: {air_drag: {k: 1}}\n", "effects.air_drag: unknown effect"},
+        BadModel{"EffectOutOfRange", "type: model\neffects: {gas_cushion: {chi: 1.5, c_g_N_s_m3: 0}}\n",
+                 "effects.gas_cushion.chi: must be in [0, 0.95]"}),
     [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace

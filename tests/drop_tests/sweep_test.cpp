@@ -209,13 +209,16 @@ TEST_P(SweepBadFile, RefusedNamingFileAndField) {
 INSTANTIATE_TEST_SUITE_P(
     Cases, SweepBadFile,
     ::testing::Values(
-        BadSweep{"TiltNeedsFreeDrop", "fixed: {pad: flat, soil: fjs1_lp, impact_speed_m_s: 1, tilt_deg: 5}\n",
-                 "fixed.tilt_deg: non-zero values need the 6-DOF free drop"},
-        BadSweep{"HorizontalSpeedNeedsFreeDrop",
-                 "fixed: {pad: flat, soil: fjs1_lp, impact_speed_m_s: 1}\ngrid: {horizontal_speed_m_s: [0, 0.5]}\n",
-                 "grid.horizontal_speed_m_s[1]: non-zero values need the 6-DOF free drop"},
-        BadSweep{"LanderNotYet", "fixed: {pad: flat, soil: fjs1_lp, impact_speed_m_s: 1}\nlander: {legs: 4}\n",
-                 "lander: lander scenario parameters are reserved"},
+        BadSweep{"TiltOutOfRange", "fixed: {pad: flat, soil: fjs1_lp, impact_speed_m_s: 1, tilt_deg: 95}\n",
+                 "fixed.tilt_deg: must be between -90 and 90"},
+        BadSweep{"RollNeedsALander", "fixed: {pad: flat, soil: fjs1_lp, impact_speed_m_s: 1}\ngrid: {roll_deg: [0, 2]}\n",
+                 "grid.roll_deg: a lander parameter"},
+        BadSweep{"LanderBlockFields", "lander: {legs: 4}\n", "lander.legs: unknown field"},
+        BadSweep{"LanderUnknownScenario", "lander: {scenario: no_such_case}\n", "lander.scenario: "},
+        BadSweep{"LanderTakesNoPad", "lander: {scenario: lander_case_A}\ngrid: {pad: [flat, c4]}\n",
+                 "grid.pad: a single-pad parameter"},
+        BadSweep{"LanderStoresNoTraces", "lander: {scenario: lander_case_A}\ntraces: full\n",
+                 "traces: a lander sweep stores summaries only"},
         BadSweep{"TwiceSet", "fixed: {pad: flat, soil: fjs1_lp, impact_speed_m_s: 1}\ngrid: {pad: [flat, c4]}\n",
                  "grid.pad: set in more than one of fixed, grid and random"},
         BadSweep{"UnknownParameter", "fixed: {pad: flat, soil: fjs1_lp, impact_speed_m_s: 1, speed: 2}\n",
@@ -435,6 +438,59 @@ TEST(ResultsDbSerialisation, RecordsSurviveTheMpiMessageFormat) {
   const std::vector<DropRecord> back = DeserializeRecords(SerializeRecords({r, r}));
   ASSERT_EQ(back.size(), 2u);
   EXPECT_TRUE(SameRecord(back[1], r));
+}
+
+
+// ---- Hardening (issue 7) ----
+
+TEST_F(Sweep, GridCountsAndDropTotalsAreCappedAtLoad) {
+  // A hand-written count of 1e9 would allocate 8 GB of grid values.
+  const std::string base = "schema_version: 1\ntype: sweep\nfixed: {pad: flat, soil: fjs1_lp}\n";
+  try {
+    LoadSweepPlan(Write("count.yaml", base + "grid: {impact_speed_m_s: {from: 0.5, to: 2, count: 1000000000}}\n"));
+    ADD_FAILURE() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("grid.impact_speed_m_s.count: must be at most 100000, got 1000000000"),
+              std::string::npos)
+        << e.what();
+  }
+  // 1e5 speeds x 1e5 masses x 1e5 gravities x 1e9 samples overflows int64: refused, counted in doubles.
+  try {
+    LoadSweepPlan(Write("many.yaml", base + "grid:\n  impact_speed_m_s: {from: 0.5, to: 2, count: 100000}\n"
+                                            "  pad_mass_kg: {from: 1, to: 2, count: 100000}\n"
+                                            "  gravity_m_s2: {from: 1, to: 10, count: 100000}\n"
+                                            "random: {samples: 1000000000, seed: 1, zeta_N_cm3: {uniform: [1, 5]}}\n"));
+    ADD_FAILURE() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("grid: the sweep has too many drops (1e+24, at most 2^40)"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+TEST_F(Sweep, DropOverItsWallClockLimitIsRecordedAsFailedWithTheReason) {
+  const std::string body = "schema_version: 1\ntype: sweep\nfixed: {pad: flat, soil: fjs1_lp}\n"
+                           "grid: {impact_speed_m_s: [0.7, 1.5]}\n";
+  SweepPlan plan = LoadSweepPlan(Write("s.yaml", body));
+  EXPECT_EQ(plan.rig.integrator.max_wall_time_s, 60.0);  // the default
+  EXPECT_EQ(LoadSweepPlan(Write("none.yaml", "max_drop_wall_time_s: 0\n" + body)).rig.integrator.max_wall_time_s, 0.0);
+  EXPECT_THROW(LoadSweepPlan(Write("neg.yaml", "max_drop_wall_time_s: -1\n" + body)), InputError);
+  // The limit decides whether a drop finishes, never what it computes: not in the digest.
+  const std::string digest = plan.DigestText();
+  plan.rig.integrator.max_wall_time_s = 1e-9;
+  EXPECT_EQ(plan.DigestText(), digest);
+  const std::vector<DropRecord> records = RunSweepInMemory(plan, 2);
+  ASSERT_EQ(records.size(), 2u);
+  for (const DropRecord& r : records) {
+    EXPECT_FALSE(r.ok);
+    EXPECT_NE(r.failure.find("wall-clock limit exceeded"), std::string::npos) << r.failure;
+  }
+  // Through the command line: --max-drop-wall-time overrides the file; the run itself succeeds.
+  const CliResult cli = Touchdown("sweep " + (dir_ / "s.yaml").string() + " --out " + (dir_ / "cli").string() +
+                                  " --max-drop-wall-time 1e-9 --threads 1 --progress lines");
+  ASSERT_EQ(cli.status, 0) << cli.err;
+  EXPECT_NE(cli.out.find("2 failed"), std::string::npos) << cli.out;
+  EXPECT_NE(cli.err.find("failed: wall-clock limit exceeded"), std::string::npos) << cli.err;
 }
 
 }  // namespace

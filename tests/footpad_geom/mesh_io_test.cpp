@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 
@@ -259,6 +260,117 @@ TEST(MeshDefects, EmptyAndDanglingIndicesAreRefused) {
   PolygonSoup soup = TriangulatedBox();
   soup.faces.push_back({0, 1, 42});
   EXPECT_EQ(DefectOf(soup), "pad.stl: a face refers to vertex 42, which does not exist");
+}
+
+// ---- Regressions found by fuzzing (tests/fuzz/mesh_*): a count written in a file must never
+// size an allocation, and every malformed file is one clear InputError.
+
+std::string BigEndian32(std::int32_t v) {
+  std::string b(4, '\0');
+  for (int i = 0; i < 4; ++i) b[i] = static_cast<char>((static_cast<std::uint32_t>(v) >> (24 - 8 * i)) & 0xff);
+  return b;
+}
+
+TEST_F(MeshFiles, DeclaredCountsNeverSizeAnAllocation) {
+  const struct {
+    std::string file, bytes, expected;
+  } cases[] = {
+      // CGAL's OFF reader resized to 1e9 points and faces before reading one.
+      {"huge.off", "OFF\n1000000000 1000000000 0\n0 0 0\n",
+       "could not be read as off (file ends after 1 of 1000000000 vertices)"},
+      // ... and each face to its declared corner count.
+      {"huge_face.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n1000000000 0 1 2\n",
+       "could not be read as off (line 6: a face must start with its number of vertices"},
+      {"huge_binary.off", "OFF BINARY\n" + BigEndian32(1000000000) + BigEndian32(1) + BigEndian32(0),
+       "could not be read as off (declares 1000000000 vertices but the file is too short for them)"},
+      // CGAL's PLY reader resized each list to its declared length (here 2^31 - 1 indices).
+      {"huge_list.ply",
+       std::string("ply\nformat binary_little_endian 1.0\nelement vertex 0\nproperty float x\nproperty float y\n"
+                   "property float z\nelement face 1\nproperty list uint int vertex_indices\nend_header\n") +
+           std::string("\xff\xff\xff\x7f", 4),
+       "could not be read as ply (element 'face' item 0: bad list length)"},
+      {"huge_element.ply",
+       "ply\nformat ascii 1.0\nelement vertex 4000000000\nproperty float x\nproperty float y\nproperty float z\n"
+       "end_header\n0 0 0\n",
+       "could not be read as ply (element 'vertex' declares 4000000000 items but the file is too short for them)"},
+      {"float_count.ply",
+       "ply\nformat ascii 1.0\nelement face 1\nproperty list float int vertex_indices\nend_header\n1e30 0 1 2\n",
+       "could not be read as ply (line 4: a list length must have an integer type)"},
+      {"no_header.ply", "ply\nformat ascii 1.0\nelement vertex 1\n", "could not be read as ply (no end_header)"},
+      {"skel.off", "SKEL\n1 0\n0 0 0\n", "could not be read as off (unsupported OFF variant 'SKEL'"},
+      {"homogeneous.off", "4OFF\n1 0 0\n0 0 0 1\n", "could not be read as off (unsupported OFF variant '4OFF'"},
+      {"text_index.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 one 2\n",
+       "could not be read as off (line 6: not a vertex index: 'one')"},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.file);
+    const std::string path = Write(c.file, c.bytes);
+    EXPECT_EQ(LoadError(path).rfind(path + ": " + c.expected, 0), 0u) << LoadError(path);
+  }
+}
+
+TEST_F(MeshFiles, BinaryStlWithANonFiniteCoordinateIsRefused) {
+  // CGAL's STL reader keys points in a std::map, which cannot order NaN: the bad point was
+  // silently merged into another one.
+  std::string b(80, ' ');
+  const std::uint32_t n = 1;
+  b.append(reinterpret_cast<const char*>(&n), 4);
+  const float values[12] = {0, 0, 0, std::nanf(""), 0, 0, 1, 0, 0, 0, 1, 0};
+  b.append(reinterpret_cast<const char*>(values), sizeof values);
+  b.append(2, '\0');
+  const std::string path = Write("nan.stl", b);
+  EXPECT_EQ(LoadError(path), path + ": could not be read as stl (facet 0 has a non-finite vertex coordinate)");
+}
+
+TEST_F(MeshFiles, OffAndPlyVariantsStillRead) {
+  const PolygonSoup quads = BoxSoup(1, 1, 1);
+  std::string coff = "COFF\n# with colours\n8 6 0\n";
+  for (const auto& v : quads.vertices) coff += Fmt(v.x()) + " " + Fmt(v.y()) + " " + Fmt(v.z()) + " 255 0 0 255\n";
+  for (const auto& f : quads.faces)
+    coff += "4 " + std::to_string(f[0]) + " " + std::to_string(f[1]) + " " + std::to_string(f[2]) + " " +
+            std::to_string(f[3]) + " 0.5 0.5 0.5\n";
+  std::string one_line = "OFF 8 6 0\n";  // the counts on the header line
+  for (const auto& v : quads.vertices) one_line += Fmt(v.x()) + " " + Fmt(v.y()) + " " + Fmt(v.z()) + "\n";
+  for (const auto& f : quads.faces)
+    one_line += "4 " + std::to_string(f[0]) + " " + std::to_string(f[1]) + " " + std::to_string(f[2]) + " " +
+                std::to_string(f[3]) + "\n";
+  // Big-endian PLY: doubles, an extra vertex property, uint indices and an extra element.
+  std::string ply =
+      "ply\nformat binary_big_endian 1.0\ncomment test\nelement vertex 8\nproperty double x\nproperty double y\n"
+      "property double z\nproperty uchar red\nelement face 6\nproperty list int uint vertex_index\n"
+      "element edge 0\nproperty int vertex1\nend_header\n";
+  auto be = [&](const void* p, std::size_t size) {
+    const char* c = static_cast<const char*>(p);
+    for (std::size_t i = size; i-- > 0;) ply += c[i];
+  };
+  for (const auto& v : quads.vertices) {
+    for (int k = 0; k < 3; ++k) be(&v[k], 8);
+    ply += '\x07';
+  }
+  for (const auto& f : quads.faces) {
+    const std::int32_t four = 4;
+    be(&four, 4);
+    for (int i : f) {
+      const std::uint32_t u = static_cast<std::uint32_t>(i);
+      be(&u, 4);
+    }
+  }
+  for (const auto& [name, bytes] : {std::pair<std::string, std::string>{"colours.off", coff},
+                                    {"one_line.off", one_line}, {"big_endian.ply", ply}}) {
+    SCOPED_TRACE(name);
+    const PreparedMesh m = LoadTriangleMesh(Write(name, bytes), {LengthUnit::kMetre, 0.0});
+    EXPECT_EQ(m.mesh.triangles.size(), 12u);
+    EXPECT_NEAR(ComputeVolumeProperties(m.mesh).volume_m3, 1.0, 1e-12);
+  }
+}
+
+TEST_F(MeshFiles, RemeshingToAnAbsurdEdgeIsRefused) {
+  // A hand-written 1e-6 mm edge would mean ~1e16 triangles: refused before remeshing.
+  const std::string path = Write("box.off", testing::OffText(BoxSoup(100, 100, 16)));
+  const std::string message = LoadError(path, {LengthUnit::kMillimetre, 1e-9});
+  EXPECT_NE(message.find(path + ": remesh edge length 1e-06 mm would make about"), std::string::npos) << message;
+  EXPECT_NE(message.find("(at most 500000): use a longer edge"), std::string::npos) << message;
+  EXPECT_EQ(LoadError(path, {LengthUnit::kMillimetre, 0.01}), "(no error)");
 }
 
 }  // namespace

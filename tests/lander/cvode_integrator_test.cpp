@@ -4,7 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
+#include <limits>
+#include <thread>
 
 namespace touchdown::integ {
 namespace {
@@ -77,6 +80,63 @@ TEST(CvodeIntegrator, SolverFailureComesBackWithReason) {
   } catch (const IntegrationFailure& e) {
     EXPECT_NE(std::string(e.what()).find("CV_TOO_MUCH_WORK"), std::string::npos) << e.what();
   }
+}
+
+TEST(CvodeIntegrator, WallClockLimitFailsTheAdvanceWithItsReason) {
+  // A right-hand side that costs 2 ms per evaluation and a 50 ms budget: the advance must stop
+  // with an IntegrationFailure naming the limit, well before the 10^4 s it was asked for.
+  IntegratorOptions options;
+  options.max_wall_time_s = 0.05;
+  options.max_num_steps = 100000000;
+  CvodeIntegrator integ(1, [](double, Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::VectorXd> d) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    d[0] = std::cos(y[0]);
+  }, options);
+  integ.Reset(0.0, Eigen::VectorXd::Zero(1));
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    integ.AdvanceTo(1e4);
+    FAIL() << "expected IntegrationFailure";
+  } catch (const IntegrationFailure& e) {
+    EXPECT_NE(std::string(e.what()).find("wall-clock limit exceeded"), std::string::npos) << e.what();
+  }
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
+}
+
+TEST(CvodeIntegrator, WallClockLimitIsCheckedInRootFunctionsToo) {
+  // A cheap right-hand side, a slow root function, and steps capped at 1 ms so that reaching
+  // t = 1000 s takes a million root evaluations.
+  IntegratorOptions options;
+  options.max_wall_time_s = 0.05;
+  options.max_num_steps = 100000000;
+  options.max_step = 1e-3;
+  RootSpec roots;
+  roots.count = 1;
+  roots.function = [](double, Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::VectorXd> g) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    g[0] = y[0] + 1.0;  // never crosses
+  };
+  CvodeIntegrator integ(1, [](double, Eigen::Ref<const Eigen::VectorXd>, Eigen::Ref<Eigen::VectorXd> d) {
+    d[0] = 1.0;
+  }, options, roots);
+  integ.Reset(0.0, Eigen::VectorXd::Zero(1));
+  try {
+    integ.AdvanceTo(1e3);
+    FAIL() << "expected IntegrationFailure";
+  } catch (const IntegrationFailure& e) {
+    EXPECT_NE(std::string(e.what()).find("wall-clock limit exceeded"), std::string::npos) << e.what();
+  }
+}
+
+TEST(CvodeIntegrator, NoWallClockLimitByDefault) {
+  IntegratorOptions options;
+  EXPECT_EQ(options.max_wall_time_s, 0.0);
+  options.max_wall_time_s = -1.0;
+  std::string why;
+  EXPECT_FALSE(options.IsValid(&why));
+  EXPECT_NE(why.find("max_wall_time_s"), std::string::npos);
+  options.max_wall_time_s = std::numeric_limits<double>::infinity();
+  EXPECT_FALSE(options.IsValid(&why));
 }
 
 TEST(CvodeIntegrator, OptionsAreValidated) {

@@ -65,9 +65,7 @@ TEST(LanderDrop, RigidLanderLandingFlatMatchesSinglePadWithAQuarterOfTheMass) {
   EXPECT_NEAR(lander_depth / single.final_penetration_m, 1.0, 0.02);
 }
 
-// DISABLED: fails with CV_ERR_FAILURE (error test fails repeatedly near t = 0.16 s) in the
-// asymmetric cases B and C, at a pad capture/release mode switch; open defect of issue 4.
-TEST(LanderDrop, DISABLED_EnergyIsConservedWithDissipationAsAState) {
+TEST(LanderDrop, EnergyIsConservedWithDissipationAsAState) {
   for (const char* name : {"lander_case_A", "lander_case_B", "lander_case_C"}) {
     const lander::LanderRunResult& r = CaseRun(name).result;
     const double final_energy = r.final_kinetic_J + r.final_potential_J + r.dissipated_J;
@@ -77,9 +75,7 @@ TEST(LanderDrop, DISABLED_EnergyIsConservedWithDissipationAsAState) {
   }
 }
 
-// DISABLED: fails with CV_ERR_FAILURE (error test fails repeatedly near t = 0.16 s) in the
-// asymmetric cases B and C, at a pad capture/release mode switch; open defect of issue 4.
-TEST(LanderDrop, DISABLED_ClosePackedPadsSinkLessAndTiltTheBodyTheRightWay) {
+TEST(LanderDrop, ClosePackedPadsSinkLessAndTiltTheBodyTheRightWay) {
   const LanderRun& a = CaseRun("lander_case_A");
   const LanderRun& b = CaseRun("lander_case_B");
   const LanderRun& c = CaseRun("lander_case_C");
@@ -91,12 +87,18 @@ TEST(LanderDrop, DISABLED_ClosePackedPadsSinkLessAndTiltTheBodyTheRightWay) {
   for (int i = 1; i < 4; ++i) EXPECT_LT(db[0], db[i]);
   EXPECT_GT(b.result.final_attitude.roll_rad, 0.0);
   EXPECT_GT(b.result.final_attitude.pitch_rad, 0.0);
-  // C: pads 1 and 2 (front) on CP sink less; nose up, no roll (mirror symmetry about x-z).
+  // C: pads 1 and 2 (front) on CP sink less; nose up, no roll (mirror symmetry about x-z). The
+  // symmetry holds only to the mesh's: a revolved mesh splits its quads along one diagonal, so
+  // it is chiral and its mirror image is a different mesh (the pads also pick up a small spin
+  // about their axes). Measured between pads 1 and 2: 1.6e-3 relative (0.018 mm) and 5e-4 deg of
+  // roll at 16 segments, 1e-3 at 24 - so a bound of 5e-3 relative and 0.01 deg, not rounding level.
   EXPECT_EQ(c.soil_under_pad[1], "fjs1_cp");
   EXPECT_LT(std::max(dc[0], dc[1]), std::min(dc[2], dc[3]));
-  EXPECT_NEAR(dc[0], dc[1], 1e-9);
+  EXPECT_NEAR(dc[0], dc[1], 5e-3 * dc[0]);
+  EXPECT_NEAR(dc[2], dc[3], 5e-3 * dc[2]);
   EXPECT_GT(c.result.final_attitude.pitch_rad, 0.0);
-  EXPECT_NEAR(c.result.final_attitude.roll_rad, 0.0, 1e-9);
+  EXPECT_NEAR(c.result.final_attitude.roll_rad, 0.0, 0.01 * kDeg);
+  EXPECT_GT(c.result.final_attitude.pitch_rad, 10.0 * std::abs(c.result.final_attitude.roll_rad));
   for (const LanderRun* run : {&a, &b, &c}) {
     const auto& d = run->result.final_penetration_m;
     std::printf("[ %s ] depths %.2f %.2f %.2f %.2f mm, roll %+.3f deg, pitch %+.3f deg (paper, vacuum: within +-0.5)\n",

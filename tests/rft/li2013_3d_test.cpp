@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -25,6 +26,25 @@ TEST(RftTreers, AlgebraicAlphaEqualsLiFit) {
       EXPECT_NEAR(a.z, ref.z, 1e-13) << b << " " << g;
       EXPECT_NEAR(a.x, ref.x, 1e-13) << b << " " << g;
     }
+}
+
+// The law uses tabulated weights: they must match the closed forms everywhere, between the nodes
+// too, and keep the exact end values. f1 is matched to 1e-11; f23 to 3.1e-8 (measured), its
+// worst near s = 0 where the atanh argument b2 s - b3 approaches -0.974 and the fourth derivative,
+// which sets the cubic Hermite error h^4 f / 384, reaches ~4e7.
+TEST(RftTreers, TabulatedWeightsMatchTheClosedForms) {
+  double worst1 = 0.0, worst23 = 0.0;
+  for (int i = 0; i <= 100000; ++i) {
+    const double s = i / 100000.0 + 3.7e-7 * (i % 7);  // off the nodes as well
+    worst1 = std::max(worst1, std::abs(TreersLateralWeightTabulated(s) - TreersLateralWeight(s)));
+    worst23 = std::max(worst23, std::abs(TreersInPlaneWeightTabulated(s) - TreersInPlaneWeight(s)));
+  }
+  EXPECT_LT(worst1, 1e-11);
+  EXPECT_LT(worst23, 5e-8);
+  EXPECT_EQ(TreersLateralWeightTabulated(0.0), 0.0);
+  EXPECT_EQ(TreersInPlaneWeightTabulated(1.0), 1.0);
+  EXPECT_EQ(TreersInPlaneWeightTabulated(-1.0), 0.0);
+  EXPECT_EQ(TreersLateralWeightTabulated(2.0), 1.0);
 }
 
 TEST(RftTreers, SpeedWeightsAreNormalised) {

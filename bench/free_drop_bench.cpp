@@ -1,0 +1,62 @@
+// A free 6-DOF pad drop (3D contact) with a meshed pad of about 5k triangles: the flat pad revolved
+// at 96 rim segments. Target: under 50 ms per drop on one core (issue 3). Counters report the
+// mesh size and the integrator's work so a slow case shows why it is slow.
+#include <benchmark/benchmark.h>
+
+#include <numbers>
+
+#include "drop_tests/catalog.h"
+#include "drop_tests/free_drop.h"
+#include "footpad_geom/revolve.h"
+#include "rft/stress_law_3d_factory.h"
+
+namespace {
+
+using namespace touchdown;
+
+constexpr int kRimSegments = 96;  // about 5k triangles for the flat pad
+
+void RunFreeDrop(benchmark::State& state, const char* pad_name, double tilt_deg, double horizontal_m_s,
+                 double spin_rad_s) {
+  const drop::PadSpec pad = drop::LoadPad(pad_name);
+  const geom::PadBody body = geom::RevolveProfileToBody(pad.profile, kRimSegments, pad.mass_kg,
+                                                        Eigen::Vector3d(0.0, 0.0, pad.profile.thickness_m()));
+  const rft::SoilParameters soil = drop::LoadSoil("fjs1_lp");
+  const auto law = rft::MakeStressLaw3D("li2013", soil, 9.81);
+  const rft::PlaneGround ground;
+  drop::FreeDropInput in;
+  in.impact_speed_m_s = 1.0;
+  in.tilt_rad = tilt_deg * std::numbers::pi / 180.0;
+  in.horizontal_speed_m_s = horizontal_m_s;
+  in.omega_W = Eigen::Vector3d(0.0, 0.0, spin_rad_s);
+  drop::FreeDropResult r;
+  const drop::FreeDropOptions opt;  // the defaults `touchdown drop --free` uses
+  for (auto _ : state) {
+    r = drop::RunFreeDrop(body, *law, ground, in, opt);
+    benchmark::DoNotOptimize(r.final_penetration_m);
+  }
+  state.counters["triangles"] = body.surface.size();
+  state.counters["steps"] = r.solver.steps;
+  state.counters["rhs"] = r.solver.rhs_evaluations;
+  state.counters["err_fails"] = r.solver.error_test_failures;
+  state.counters["jac"] = r.solver.jacobian_evaluations;
+  state.counters["jac_rhs"] = r.solver.jacobian_rhs_evaluations;
+  state.counters["conv_fails"] = r.solver.nonlinear_convergence_failures;
+  state.counters["roots"] = r.solver.root_evaluations;
+  state.counters["depth_mm"] = r.final_penetration_m * 1e3;
+  state.counters["tilt_deg"] = r.final_tilt_deg;
+}
+
+void BM_FreeDropFlatVertical(benchmark::State& s) { RunFreeDrop(s, "flat", 0.0, 0.0, 0.0); }
+void BM_FreeDropFlatTilted5(benchmark::State& s) { RunFreeDrop(s, "flat", 5.0, 0.0, 0.0); }
+void BM_FreeDropFlatSideways(benchmark::State& s) { RunFreeDrop(s, "flat", 0.0, 0.5, 0.0); }
+void BM_FreeDropCurvedTiltedSideways(benchmark::State& s) { RunFreeDrop(s, "curved", 10.0, 0.3, 0.0); }
+void BM_FreeDropFlatSpinning(benchmark::State& s) { RunFreeDrop(s, "flat", 5.0, 0.3, 3.0); }
+
+BENCHMARK(BM_FreeDropFlatVertical)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FreeDropFlatTilted5)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FreeDropFlatSideways)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FreeDropCurvedTiltedSideways)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FreeDropFlatSpinning)->Unit(benchmark::kMillisecond);
+
+}  // namespace

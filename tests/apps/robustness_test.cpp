@@ -1,0 +1,416 @@
+// The robustness table (issue 7): every bad input we know of, and a few extreme but legal ones,
+// run through the touchdown executable exactly as a user would; docs/robustness.md is the
+// rendered table. The test fails when a case crashes (a signal), exits with a status other
+// than 0 (ran), 2 (input refused) or 3 (integration failed), prints more than one line on a
+// refusal, or when the rendered table differs from docs/robustness.md.
+//
+// To regenerate the document after a deliberate change (a new case, a reworded message):
+//   TOUCHDOWN_UPDATE_DOCS=1 build/tests/apps_hardening_tests --gtest_filter=Robustness.*
+// Outputs are normalised so the table is the same on every machine and in every build
+// (sanitizers included): the cases run in a scratch directory with relative paths, the data
+// directory prints as DATA, and numbers are rounded to three significant digits.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <nlohmann/json.hpp>
+#include <regex>
+#include <string>
+#include <vector>
+
+#include "tests/apps/robustness_cli.h"
+
+namespace touchdown::testing_cli {
+namespace {
+
+struct Case {
+  std::string input;   // which input the case is about
+  std::string what;    // the case, in a few words
+  std::string args;    // touchdown arguments, run in the scratch directory
+  std::vector<std::pair<std::string, std::string>> files = {};  // written there first
+};
+
+// ---- inputs -------------------------------------------------------------------------------
+
+const std::string kFlatProfile = "profile: {shape: flat, radius_mm: 50, thickness_mm: 16}\n";
+
+std::string Pad(const std::string& body) { return "schema_version: 1\nmass_kg: 1.6\n" + body; }
+
+// A 10 x 10 x 5 mm box, as OFF (quads), with optional extra faces or an offset copy.
+std::string BoxOff(bool inverted = false, bool second_box = false) {
+  std::string v = "0 0 0\n10 0 0\n10 10 0\n0 10 0\n0 0 5\n10 0 5\n10 10 5\n0 10 5\n";
+  std::vector<std::string> quads = {"0 3 2 1", "4 5 6 7", "0 1 5 4", "1 2 6 5", "2 3 7 6", "3 0 4 7"};
+  if (inverted)
+    quads = {"1 2 3 0", "7 6 5 4", "4 5 1 0", "5 6 2 1", "6 7 3 2", "7 4 0 3"};
+  int nv = 8, nf = 6;
+  std::string f;
+  for (const std::string& q : quads) f += "4 " + q + "\n";
+  if (second_box) {  // the same box shifted by (5, 5, 2): the two intersect
+    v += "5 5 2\n15 5 2\n15 15 2\n5 15 2\n5 5 7\n15 5 7\n15 15 7\n5 15 7\n";
+    for (const std::string& q : quads) {
+      int a, b, c, d;
+      std::sscanf(q.c_str(), "%d %d %d %d", &a, &b, &c, &d);
+      f += "4 " + std::to_string(a + 8) + " " + std::to_string(b + 8) + " " + std::to_string(c + 8) + " " +
+           std::to_string(d + 8) + "\n";
+    }
+    nv = 16;
+    nf = 12;
+  }
+  return "OFF\n" + std::to_string(nv) + " " + std::to_string(nf) + " 0\n" + v + f;
+}
+
+std::string MeshPad(const std::string& file, const std::string& extra = "") {
+  return "schema_version: 1\nkind: mesh\nmesh: {file: " + file + ", unit: mm" + extra + "}\nmass_kg: 0.5\n";
+}
+
+// An ASCII STL of the box with its last facet left out.
+std::string OpenBoxStl() {
+  const double v[8][3] = {{0, 0, 0}, {10, 0, 0}, {10, 10, 0}, {0, 10, 0}, {0, 0, 5}, {10, 0, 5}, {10, 10, 5}, {0, 10, 5}};
+  const int t[11][3] = {{0, 3, 2}, {0, 2, 1}, {4, 5, 6}, {4, 6, 7}, {0, 1, 5}, {0, 5, 4},
+                        {1, 2, 6}, {1, 6, 5}, {2, 3, 7}, {2, 7, 6}, {3, 0, 4}};
+  std::string s = "solid open\n";
+  for (const auto& tri : t) {
+    s += "facet normal 0 0 0\nouter loop\n";
+    for (int i : tri) {
+      char line[96];
+      std::snprintf(line, sizeof line, "vertex %g %g %g\n", v[i][0], v[i][1], v[i][2]);
+      s += line;
+    }
+    s += "endloop\nendfacet\n";
+  }
+  return s + "endsolid open\n";
+}
+
+// A binary STL: one facet whose first coordinate is NaN.
+std::string NanStl() {
+  std::string b(80, ' ');
+  const uint32_t n = 1;
+  b.append(reinterpret_cast<const char*>(&n), 4);
+  const float values[12] = {0, 0, 0, std::nanf(""), 0, 0, 1, 0, 0, 0, 1, 0};
+  b.append(reinterpret_cast<const char*>(values), sizeof values);
+  return b + std::string(2, '\0');
+}
+
+const std::string kHugeListPly =
+    std::string("ply\nformat binary_little_endian 1.0\nelement vertex 0\nproperty float x\nproperty float y\n"
+                "property float z\nelement face 1\nproperty list uint int vertex_indices\nend_header\n") +
+    std::string("\xff\xff\xff\x7f", 4);
+
+std::string Soil(const std::string& body) { return "schema_version: 1\nname: test_soil\n" + body; }
+
+std::string Sweep(const std::string& body) { return "schema_version: 1\ntype: sweep\n" + body; }
+const std::string kSweepBase = "fixed: {pad: flat, soil: fjs1_lp}\n";
+
+std::string Lander(const std::string& body) { return "schema_version: 1\ntype: lander\n" + body; }
+const std::string kLanderGround = "ground: {soil: fjs1_lp}\n";
+const std::string kLanderInitial = "initial: {drop_height_m: 0.1}\n";
+
+std::string Model(const std::string& body) { return "schema_version: 1\ntype: model\n" + body; }
+
+const std::string kDropsHeader = "drop_id,pad,soil,atmosphere,impact_speed_m_s,pad_mass_kg,gravity_m_s2,trace\n";
+const std::string kGoodTrace = "t_s,penetration_m,force_N\n0,0,0\n0.001,0.0005,30\n0.002,0.0009,60\n0.003,0.001,20\n";
+
+// A dataset directory `name` with drops.csv `drops` and trace t.csv `trace`.
+std::vector<std::pair<std::string, std::string>> Dataset(const std::string& name, const std::string& drops,
+                                                         const std::string& trace = kGoodTrace) {
+  return {{name + "/drops.csv", drops}, {name + "/t.csv", trace}};
+}
+
+std::string Calibrate(const std::string& name) { return "calibrate " + name + " --param zeta --out " + name + ".yaml"; }
+
+std::vector<Case> Cases() {
+  std::vector<Case> c;
+  // Pad YAML.
+  c.push_back({"pad YAML", "unknown field (typo)", "drop --pad typo.yaml --soil fjs1_lp --speed 1",
+               {{"typo.yaml", Pad(kFlatProfile + "angular_segmnts: 64\n")}}});
+  c.push_back({"pad YAML", "negative radius", "drop --pad neg_radius.yaml --soil fjs1_lp --speed 1",
+               {{"neg_radius.yaml", Pad("profile: {shape: flat, radius_mm: -50, thickness_mm: 16}\n")}}});
+  c.push_back({"pad YAML", "angular_segments 1e9", "drop --pad segments.yaml --soil fjs1_lp --speed 1",
+               {{"segments.yaml", Pad(kFlatProfile + "angular_segments: 1000000000\n")}}});
+  c.push_back({"pad YAML", "profile segments 1e9", "drop --pad profile_segments.yaml --soil fjs1_lp --speed 1",
+               {{"profile_segments.yaml",
+                 Pad("profile: {shape: exponential, radius_mm: 50, thickness_mm: 16, a0_mm: 4, a1_per_mm: 0.0319, "
+                     "segments: 1000000000}\n")}}});
+  c.push_back({"pad YAML", "unknown profile shape", "drop --pad shape.yaml --soil fjs1_lp --speed 1",
+               {{"shape.yaml", Pad("profile: {shape: hexagon, radius_mm: 50, thickness_mm: 16}\n")}}});
+  c.push_back({"pad YAML", "malformed YAML (unclosed brace)", "drop --pad malformed.yaml --soil fjs1_lp --speed 1",
+               {{"malformed.yaml", Pad("profile: {shape: flat, radius_mm: 50\n")}}});
+  c.push_back({"pad YAML", "unsupported schema version", "drop --pad schema.yaml --soil fjs1_lp --speed 1",
+               {{"schema.yaml", "schema_version: 2\nmass_kg: 1.6\n" + kFlatProfile}}});
+  c.push_back({"pad YAML", "table profile point not a pair", "drop --pad table.yaml --soil fjs1_lp --speed 1",
+               {{"table.yaml", Pad("profile: {shape: table, radius_mm: 50, thickness_mm: 16, "
+                                   "points_mm: [[0, 0], [50]]}\n")}}});
+  c.push_back({"pad YAML", "mass .nan", "drop --pad nan_mass.yaml --soil fjs1_lp --speed 1",
+               {{"nan_mass.yaml", "mass_kg: .nan\n" + kFlatProfile}}});
+  c.push_back({"pad YAML", "empty file", "drop --pad empty.yaml --soil fjs1_lp --speed 1", {{"empty.yaml", ""}}});
+  c.push_back({"pad YAML", "top level is a list", "drop --pad list.yaml --soil fjs1_lp --speed 1",
+               {{"list.yaml", "- mass_kg: 1.6\n"}}});
+  c.push_back({"pad YAML", "missing file", "drop --pad nowhere.yaml --soil fjs1_lp --speed 1"});
+  c.push_back({"pad YAML", "unknown catalogue name", "drop --pad hexagon --soil fjs1_lp --speed 1"});
+  c.push_back({"pad YAML", "mesh pad on the rig (vertical rod)", "drop --pad hex --soil fjs1_lp --speed 1"});
+  // Meshes (through a mesh pad YAML and `force`).
+  const std::string force = " --soil fjs1_lp --depth 0.002";
+  c.push_back({"mesh", "remesh_edge_mm 1e-6 (about 1e15 triangles)", "force --pad remesh.yaml" + force,
+               {{"remesh.yaml", MeshPad("box.off", ", remesh_edge_mm: 0.000001")}, {"box.off", BoxOff()}}});
+  c.push_back({"mesh", "mesh file missing", "force --pad no_mesh.yaml" + force,
+               {{"no_mesh.yaml", MeshPad("missing.stl")}}});
+  c.push_back({"mesh", "STL with a facet missing (open)", "force --pad open.yaml" + force,
+               {{"open.yaml", MeshPad("open.stl")}, {"open.stl", OpenBoxStl()}}});
+  c.push_back({"mesh", "binary STL with a NaN coordinate", "force --pad nan_stl.yaml" + force,
+               {{"nan_stl.yaml", MeshPad("nan.stl")}, {"nan.stl", NanStl()}}});
+  c.push_back({"mesh", "OFF declaring 1e9 vertices and faces", "force --pad huge_off.yaml" + force,
+               {{"huge_off.yaml", MeshPad("huge.off")}, {"huge.off", "OFF\n1000000000 1000000000 0\n0 0 0\n"}}});
+  c.push_back({"mesh", "OFF face declaring 1e9 corners", "force --pad huge_face.yaml" + force,
+               {{"huge_face.yaml", MeshPad("huge_face.off")},
+                {"huge_face.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n1000000000 0 1 2\n"}}});
+  c.push_back({"mesh", "PLY list declaring 2^31 indices", "force --pad huge_ply.yaml" + force,
+               {{"huge_ply.yaml", MeshPad("huge.ply")}, {"huge.ply", kHugeListPly}}});
+  c.push_back({"mesh", "OBJ face index out of range", "force --pad bad_obj.yaml" + force,
+               {{"bad_obj.yaml", MeshPad("bad.obj")},
+                {"bad.obj", "v 0 0 0\nv 10 0 0\nv 0 10 0\nv 0 0 10\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 9\n"}}});
+  c.push_back({"mesh", "two intersecting boxes", "force --pad intersect.yaml" + force,
+               {{"intersect.yaml", MeshPad("two_boxes.off")}, {"two_boxes.off", BoxOff(false, true)}}});
+  c.push_back({"mesh", "inside-out box (reoriented)", "force --pad inverted.yaml" + force,
+               {{"inverted.yaml", MeshPad("inverted.off")}, {"inverted.off", BoxOff(true)}}});
+  c.push_back({"mesh", "unknown format .3mf", "force --pad threemf.yaml" + force,
+               {{"threemf.yaml", MeshPad("pad.3mf")}, {"pad.3mf", "not a mesh"}}});
+  c.push_back({"mesh", "unknown unit", "force --pad inch.yaml" + force,
+               {{"inch.yaml", "kind: mesh\nmesh: {file: box.off, unit: inch}\nmass_kg: 0.5\n"}, {"box.off", BoxOff()}}});
+  // Soil YAML.
+  const std::string with_soil = "drop --pad flat --speed 1 --soil ";
+  c.push_back({"soil YAML", "negative zeta", with_soil + "neg_zeta.yaml", {{"neg_zeta.yaml", Soil("zeta_N_cm3: -3\n")}}});
+  c.push_back({"soil YAML", "zeta missing", with_soil + "no_zeta.yaml", {{"no_zeta.yaml", Soil("atmosphere: vacuum\n")}}});
+  c.push_back({"soil YAML", "unknown atmosphere", with_soil + "water.yaml",
+               {{"water.yaml", Soil("zeta_N_cm3: 3\natmosphere: water\n")}}});
+  c.push_back({"soil YAML", "friction angle 95 deg", with_soil + "phi.yaml",
+               {{"phi.yaml", Soil("zeta_N_cm3: 3\ninternal_friction_angle_deg: 95\n")}}});
+  c.push_back({"soil YAML", "agarwal2023 without density", with_soil + "agarwal.yaml",
+               {{"agarwal.yaml", Soil("zeta_N_cm3: agarwal2023\ninternal_friction_angle_deg: 37\n")}}});
+  // Campaign scenario YAML.
+  c.push_back({"scenario YAML", "drops is not a list", "campaign not_list.yaml --out out_c1",
+               {{"not_list.yaml", "drops: 5\n"}}});
+  c.push_back({"scenario YAML", "impact speed is text", "campaign text_speed.yaml --out out_c2",
+               {{"text_speed.yaml", "drops:\n  - {pad: flat, soil: fjs1_lp, impact_speeds_m_s: [fast]}\n"}}});
+  c.push_back({"scenario YAML", "negative speed in a list", "campaign neg_speed.yaml --out out_c3",
+               {{"neg_speed.yaml", "drops:\n  - {pad: flat, soil: fjs1_lp, impact_speeds_m_s: [1.0, -2]}\n"}}});
+  // Sweep YAML.
+  const std::string sweep_run = " --threads 1 --progress lines --out ";
+  c.push_back({"sweep YAML", "grid count 1e9", "sweep count.yaml" + sweep_run + "out_w1",
+               {{"count.yaml", Sweep(kSweepBase + "grid: {impact_speed_m_s: {from: 0.5, to: 2, count: 1000000000}}\n")}}});
+  c.push_back({"sweep YAML", "2^40 drops and more", "sweep many.yaml" + sweep_run + "out_w2",
+               {{"many.yaml", Sweep(kSweepBase + "grid: {impact_speed_m_s: {from: 0.5, to: 2, count: 100000}}\n"
+                                                 "random: {samples: 1000000000, seed: 1, pad_mass_kg: {uniform: [1, 2]}}\n")}}});
+  c.push_back({"sweep YAML", "random samples without a seed", "sweep seed.yaml" + sweep_run + "out_w3",
+               {{"seed.yaml", Sweep(kSweepBase + "random: {samples: 3, impact_speed_m_s: {uniform: [0.5, 2]}}\n")}}});
+  c.push_back({"sweep YAML", "parameter set twice", "sweep twice.yaml" + sweep_run + "out_w4",
+               {{"twice.yaml", Sweep(kSweepBase + "grid: {pad: [flat, c4], impact_speed_m_s: [1]}\n")}}});
+  c.push_back({"sweep YAML", "unknown parameter", "sweep unknown.yaml" + sweep_run + "out_w5",
+               {{"unknown.yaml", Sweep(kSweepBase + "grid: {impact_velocity: [1]}\n")}}});
+  c.push_back({"sweep YAML", "uniform with low > high", "sweep uniform.yaml" + sweep_run + "out_w6",
+               {{"uniform.yaml", Sweep(kSweepBase + "random: {samples: 2, seed: 1, impact_speed_m_s: {uniform: [2, 1]}}\n")}}});
+  c.push_back({"sweep YAML", "negative wall-clock limit", "sweep wall.yaml" + sweep_run + "out_w7",
+               {{"wall.yaml", Sweep("max_drop_wall_time_s: -1\n" + kSweepBase + "grid: {impact_speed_m_s: [1]}\n")}}});
+  c.push_back({"sweep YAML", "trace_max_samples 2", "sweep trace_max.yaml" + sweep_run + "out_w8",
+               {{"trace_max.yaml", Sweep("trace_max_samples: 2\n" + kSweepBase + "grid: {impact_speed_m_s: [1]}\n")}}});
+  c.push_back({"sweep YAML", "zeta 1e-6: the pad never stops (drop recorded as failed)",
+               "sweep soft.yaml" + sweep_run + "out_w9",
+               {{"soft.yaml", Sweep(kSweepBase + "grid: {impact_speed_m_s: [1], zeta_N_cm3: [0.000001, 3.5]}\n")}}});
+  c.push_back({"sweep YAML", "--max-drop-wall-time 1e-9: every drop over its limit",
+               "sweep limit.yaml --max-drop-wall-time 1e-9" + sweep_run + "out_w10",
+               {{"limit.yaml", Sweep(kSweepBase + "grid: {impact_speed_m_s: [0.7, 1.5]}\n")}}});
+  // Lander scenario YAML.
+  c.push_back({"lander YAML", "unknown lander", "lander no_lander.yaml --out out_l1",
+               {{"no_lander.yaml", Lander("lander: apollo\n" + kLanderGround + kLanderInitial)}}});
+  c.push_back({"lander YAML", "slope 95 deg", "lander slope.yaml --out out_l2",
+               {{"slope.yaml", Lander("lander: sutoh2017_lander\nground: {soil: fjs1_lp, slope_deg: 95}\n" +
+                                      kLanderInitial)}}});
+  c.push_back({"lander YAML", "drop height and touchdown speed both given", "lander both.yaml --out out_l3",
+               {{"both.yaml", Lander("lander: sutoh2017_lander\n" + kLanderGround +
+                                     "initial: {drop_height_m: 0.1, touchdown_speed_m_s: 1}\n")}}});
+  c.push_back({"lander YAML", "simulation duration 1e9 s", "lander long.yaml --out out_l4",
+               {{"long.yaml", Lander("lander: sutoh2017_lander\n" + kLanderGround + kLanderInitial +
+                                     "simulation: {duration_s: 1000000000}\n")}}});
+  c.push_back({"lander YAML", "pitch 85 deg", "lander pitch.yaml --out out_l5",
+               {{"pitch.yaml", Lander("lander: sutoh2017_lander\n" + kLanderGround +
+                                      "initial: {drop_height_m: 0.1, pitch_deg: 85}\n")}}});
+  // Model YAML.
+  const std::string with_model = "drop --pad flat --soil fjs1_lp --speed 1 --model ";
+  c.push_back({"model YAML", "wrong type", with_model + "m_type.yaml", {{"m_type.yaml", "type: sweep\n"}}});
+  c.push_back({"model YAML", "reversed zeta interval", with_model + "m_interval.yaml",
+               {{"m_interval.yaml", Model("soils: {fjs1_lp: {zeta_N_cm3: 3, zeta_interval_N_cm3: [4, 2]}}\n")}}});
+  c.push_back({"model YAML", "confidence 1.5", with_model + "m_confidence.yaml",
+               {{"m_confidence.yaml", Model("soils: {fjs1_lp: {zeta_N_cm3: 3, confidence: 1.5}}\n")}}});
+  c.push_back({"model YAML", "unknown effect", with_model + "m_effect.yaml",
+               {{"m_effect.yaml", Model("effects: {magic_damping: {c: 1}}\n")}}});
+  // Dataset CSV (through `calibrate`).
+  const std::string row = "d0,flat,fjs1_lp,vacuum,1.0,1.6,9.81,t.csv\n";
+  {
+    auto add = [&](const std::string& what, const std::string& name,
+                   std::vector<std::pair<std::string, std::string>> files) {
+      c.push_back({"dataset CSV", what, Calibrate(name), std::move(files)});
+    };
+    add("missing column", "ds_column",
+        Dataset("ds_column", "drop_id,pad,soil,atmosphere,impact_speed_m_s,pad_mass_kg,trace\nd0,flat,fjs1_lp,vacuum,1,1.6,t.csv\n"));
+    add("non-numeric speed", "ds_text", Dataset("ds_text", kDropsHeader + "d0,flat,fjs1_lp,vacuum,fast,1.6,9.81,t.csv\n"));
+    add("duplicate drop id", "ds_dup", Dataset("ds_dup", kDropsHeader + row + row));
+    add("unknown pad", "ds_pad", Dataset("ds_pad", kDropsHeader + "d0,hexagon,fjs1_lp,vacuum,1,1.6,9.81,t.csv\n"));
+    add("trace file missing", "ds_trace", {{"ds_trace/drops.csv", kDropsHeader + row}});
+    add("row with a missing cell", "ds_cells", Dataset("ds_cells", kDropsHeader + "d0,flat,fjs1_lp,vacuum,1,1.6,t.csv\n"));
+    add("negative mass", "ds_mass", Dataset("ds_mass", kDropsHeader + "d0,flat,fjs1_lp,vacuum,1,-1.6,9.81,t.csv\n"));
+    add("trace time not increasing", "ds_time",
+        Dataset("ds_time", kDropsHeader + row, "t_s,penetration_m,force_N\n0,0,0\n0.002,0.001,10\n0.001,0.002,20\n"));
+    add("trace with a duplicate column", "ds_dupcol",
+        Dataset("ds_dupcol", kDropsHeader + row, "t_s,penetration_m,force_N,t_s\n0,0,0,0\n"));
+    add("trace number 1e999", "ds_overflow",
+        Dataset("ds_overflow", kDropsHeader + row, "t_s,penetration_m,force_N\n0,0,0\n0.001,1e999,5\n"));
+    add("data after a blank line", "ds_blank", Dataset("ds_blank", kDropsHeader + row + "\n" + row));
+    add("empty drops.csv", "ds_empty", Dataset("ds_empty", ""));
+  }
+  // Command-line flags.
+  c.push_back({"CLI flag", "speed is text", "drop --pad flat --soil fjs1_lp --speed fast"});
+  c.push_back({"CLI flag", "misspelt option", "drop --pad flat --soil fjs1_lp --sped 1"});
+  c.push_back({"CLI flag", "required option missing", "drop --soil fjs1_lp --speed 1"});
+  c.push_back({"CLI flag", "unknown command", "fly --to moon"});
+  c.push_back({"CLI flag", "infinite gravity", "drop --pad flat --soil fjs1_lp --speed 1 --gravity inf"});
+  c.push_back({"CLI flag", "sweep --max-drop-wall-time -5", "sweep soft.yaml --max-drop-wall-time -5 --out out_f4"});
+  c.push_back({"CLI flag", "sweep --threads -1", "sweep count.yaml --threads -1 --out out_f1"});
+  c.push_back({"CLI flag", "sweep --shard 3/2", "sweep soft.yaml --shard 3/2 --out out_f2"});
+  c.push_back({"CLI flag", "sweep --max-drop-wall-time nan", "sweep soft.yaml --max-drop-wall-time nan --out out_f3"});
+  // Extreme but legal inputs.
+  const std::string rig = "drop --pad flat --soil fjs1_lp ";
+  c.push_back({"extreme", "10 m/s impact", rig + "--speed 10"});
+  c.push_back({"extreme", "100 m/s impact", rig + "--speed 100"});
+  c.push_back({"extreme", "placed at 0 m/s", rig + "--speed 0"});
+  c.push_back({"extreme", "1 g of mass", rig + "--speed 1 --mass 0.001"});
+  c.push_back({"extreme", "zeta 100 N/cm^3", rig + "--speed 1 --zeta 100"});
+  c.push_back({"extreme", "zeta 1e-6 N/cm^3 (never stops)", rig + "--speed 1 --zeta 0.000001"});
+  c.push_back({"extreme", "lunar gravity 1.62", rig + "--speed 1 --gravity 1.62"});
+  c.push_back({"extreme", "Martian gravity 3.71", rig + "--speed 1 --gravity 3.71"});
+  c.push_back({"extreme", "curved pad, 10 m/s, lunar gravity", "drop --pad curved --soil fjs1_lp --speed 10 --gravity 1.62"});
+  c.push_back({"extreme", "pad edge-on (tilt 90 deg), 5 mm deep", "force --pad flat --soil fjs1_lp --depth 0.005 --tilt-deg 90"});
+  c.push_back({"extreme", "pad nearly edge-on (tilt 89 deg), 5 mm deep",
+               "force --pad flat --soil fjs1_lp --depth 0.005 --tilt-deg 89"});
+  c.push_back({"extreme", "pad buried 1 m deep", "force --pad flat --soil fjs1_lp --depth 1"});
+  c.push_back({"extreme", "pad 1 cm above the surface (depth -0.01)", "force --pad flat --soil fjs1_lp --depth -0.01"});
+  return c;
+}
+
+// ---- rendering ----------------------------------------------------------------------------
+
+std::string Sig(double v) {
+  if (v == 0.0) v = 0.0;  // no "-0"
+  char s[32];
+  std::snprintf(s, sizeof s, "%.3g", v);
+  return s;
+}
+
+std::string Replace(std::string s, const std::string& from, const std::string& to) {
+  if (from.empty()) return s;
+  for (size_t p = 0; (p = s.find(from, p)) != std::string::npos; p += to.size()) s.replace(p, from.size(), to);
+  return s;
+}
+
+std::string FirstLine(const std::string& s) { return s.substr(0, s.find('\n')); }
+
+// What a successful run produced, in one line.
+std::string Outcome(const std::string& args, const CliRun& r) {
+  const std::string command = args.substr(0, args.find(' '));
+  try {
+    if (command == "drop") {
+      const auto j = nlohmann::json::parse(r.out);
+      return "final penetration " + Sig(j["final_penetration_m"].get<double>() * 1e3) + " mm, peak force " +
+             Sig(j["peak_force_N"].get<double>()) + " N, at rest after " +
+             Sig(j["time_to_rest_s"].get<double>() * 1e3) + " ms";
+    }
+    if (command == "force") {
+      const auto j = nlohmann::json::parse(r.out);
+      double f[3], scale = 0.0;
+      for (int k = 0; k < 3; ++k) scale = std::max(scale, std::abs(f[k] = j["force_N"][k].get<double>()));
+      // Components at round-off level (1e-9 of the largest) depend on the compiler's operation
+      // order: shown as 0 so the table is the same in every build.
+      for (double& v : f)
+        if (std::abs(v) <= 1e-9 * scale) v = 0.0;
+      return "force (" + Sig(f[0]) + ", " + Sig(f[1]) + ", " + Sig(f[2]) + ") N on " +
+             Sig(j["submerged_area_m2"].get<double>() * 1e4) + " cm^2";
+    }
+  } catch (const std::exception& e) {
+    return std::string("(unexpected output: ") + e.what() + ")";
+  }
+  if (command == "sweep") {
+    std::smatch m;
+    const std::regex totals(R"(: (\d+) drops.*; (\d+) failed)");
+    if (!std::regex_search(r.out, m, totals)) return "(no sweep summary)";
+    std::string text = m[1].str() + " drops, " + m[2].str() + " failed";
+    const std::regex failure(R"(failed: ([^\n]*))");
+    if (std::regex_search(r.err, m, failure)) text += "; first: " + m[1].str();
+    return text;
+  }
+  return "ok";
+}
+
+std::string Cell(std::string s) {
+  s = Replace(s, "|", "\\|");
+  return s.empty() ? "(nothing)" : s;
+}
+
+}  // namespace
+
+TEST(Robustness, TableOfBadInputsMatchesDocs) {
+  Sandbox box("robustness");
+  const std::vector<Case> cases = Cases();
+  ASSERT_GE(cases.size(), 40u);
+  std::string table =
+      "| # | input | case | command | exit | what touchdown says or computes |\n"
+      "|---|---|---|---|---|---|\n";
+  int n = 0;
+  for (const Case& c : cases) {
+    ++n;
+    SCOPED_TRACE(c.what);
+    for (const auto& [name, bytes] : c.files) box.Write(name, bytes);
+    const CliRun r = box.Touchdown(c.args);
+    // A crash is never an answer; neither is an unexpected status or a multi-line refusal.
+    EXPECT_EQ(r.signal, 0) << "touchdown " << c.args << " crashed: " << r.err;
+    EXPECT_TRUE(r.status == 0 || r.status == 2 || r.status == 3)
+        << "touchdown " << c.args << " exited with " << r.status << ": " << r.err;
+    std::string result;
+    if (r.status == 0) {
+      result = Outcome(c.args, r);
+    } else {
+      EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+      EXPECT_TRUE(r.out.empty()) << r.out;
+      result = FirstLine(r.err);
+    }
+    result = Replace(Replace(result, box.dir().string() + "/", ""), box.dir().string(), ".");
+    result = Replace(result, DataDir(), "DATA");
+    const std::string status = r.signal ? "signal " + std::to_string(r.signal) : std::to_string(r.status);
+    table += "| " + std::to_string(n) + " | " + c.input + " | " + Cell(c.what) + " | `touchdown " + c.args + "` | " +
+             status + " | " + Cell(result) + " |\n";
+  }
+
+  const std::string doc =
+      "# Robustness: bad and extreme inputs\n\n"
+      "Generated by `tests/apps/robustness_test.cpp` (do not edit by hand): each row runs the `touchdown`\n"
+      "executable on one input, in a scratch directory holding the files the case writes (pads, soils,\n"
+      "scenarios, sweeps, models, datasets and meshes, named as in the command). Exit status 0: it ran\n"
+      "(the result is summarised); 2: the input was refused with the one line shown on stderr and nothing\n"
+      "was written; 3: the integrator failed and says why. No case may crash, hang or print a partial\n"
+      "result. Numbers are rounded to three significant digits; DATA is the bundled `data/` directory.\n"
+      "Regenerate after a deliberate change with\n"
+      "`TOUCHDOWN_UPDATE_DOCS=1 build/tests/apps_hardening_tests --gtest_filter=Robustness.*`;\n"
+      "the test fails while this file and the table differ.\n\n"
+      "Fuzzing (`tools/run_fuzzers.sh`, one libFuzzer target per parser) covers the inputs no table can\n"
+      "list; see the README's Hardening section.\n\n" +
+      table;
+  const fs::path path = fs::path(TOUCHDOWN_SOURCE_DIR) / "docs" / "robustness.md";
+  const char* update = std::getenv("TOUCHDOWN_UPDATE_DOCS");
+  if (update && std::string(update) == "1") {
+    std::ofstream(path, std::ios::binary) << doc;
+    GTEST_SKIP() << "rewrote " << path.string();
+  }
+  EXPECT_EQ(Slurp(path), doc) << "docs/robustness.md is out of date: rerun with TOUCHDOWN_UPDATE_DOCS=1 "
+                                 "(and review the diff)";
+}
+
+}  // namespace touchdown::testing_cli

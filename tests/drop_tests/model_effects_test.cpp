@@ -1,0 +1,315 @@
+// A model file's effect terms in every simulation that reads it: rig drops (drop, sweep,
+// compare), the free pad and the lander (3D contact: the terms with a per-element form, the
+// others refused naming the file and the effect), and the model.yaml `diagnose` writes,
+// round-tripped through `drop` and `compare` (with its fit record's residual).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "drop_tests/compare.h"
+#include "drop_tests/diagnose.h"
+#include "drop_tests/lander_scenario.h"
+#include "drop_tests/model_file.h"
+#include "drop_tests/pad_drop.h"
+#include "drop_tests/synth.h"
+#include "rft/input_error.h"
+
+namespace touchdown::drop {
+namespace {
+
+namespace fs = std::filesystem;
+
+class ModelEffects : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("touchdown_model_effects_" + std::to_string(::getpid()) + "_" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  // A model file with the given `effects:` body (YAML flow mapping).
+  std::string Model(const std::string& name, const std::string& effects) {
+    const fs::path p = dir_ / (name + ".yaml");
+    std::ofstream(p) << "schema_version: 1\ntype: model\nname: " << name << "\neffects: " << effects << "\n";
+    return p.string();
+  }
+  static std::string Slurp(const fs::path& p) {
+    std::ifstream in(p);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+  }
+  // Runs the touchdown binary; returns the exit status, stdout and stderr.
+  int Touchdown(const std::string& args, std::string* out, std::string* err = nullptr) {
+    const fs::path o = dir_ / "stdout", e = dir_ / "stderr";
+    const int raw = std::system((std::string(TOUCHDOWN_BINARY) + " " + args + " >" + o.string() + " 2>" + e.string()).c_str());
+    *out = Slurp(o);
+    if (err) *err = Slurp(e);
+    return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  }
+
+  // A rig drop of `pad` on loose FJS-1 at 1.2 m/s in `atmosphere`, under the model at `path`.
+  static PadDrop RigDrop(const std::string& path, const std::string& atmosphere = "air", const std::string& pad = "flat") {
+    DropConditions c;
+    c.impact_speed_m_s = 1.2;
+    c.atmosphere = atmosphere;
+    rft::SoilParameters soil = LoadSoil("fjs1_lp");
+    if (!path.empty()) {
+      const ModelFile m = LoadModelFile(path);
+      soil = ApplyModel(m, soil);
+      c.effects = ModelEffectTerms(m);
+      c.effects_source = path;
+    }
+    return RunPadDrop(LoadPad(pad), soil, c);
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(ModelEffects, EachEffectChangesTheRigDropTheWayItsFormSays) {
+  const PadDrop base = RigDrop(""), base_vacuum = RigDrop("", "vacuum");
+  const double d0 = base.result.final_penetration_m;
+  // The force 1 ms after touchdown: speed terms (and the compaction transient) show there.
+  const double f0 = base.result.trace[1].force_N;
+  struct Case {
+    const char* effects;
+    int depth;  // -1 shallower, +1 deeper than quasi-static RFT
+    bool higher_early_force;
+  };
+  for (const Case& c : {Case{"{inertial_drag: {lambda: 3}}", -1, true}, Case{"{rate_damping: {c_N_s_m3: 20000}}", -1, true},
+                        Case{"{added_mass: {c_a: 3}}", -1, false}, Case{"{compaction_peak: {k_c_kg_m3: 30000, d_c_mm: 3}}", -1, true},
+                        Case{"{depth_exponent: {p: 1.4}}", +1, false}, Case{"{gas_cushion: {chi: 0.3, c_g_N_s_m3: 0}}", +1, false}}) {
+    const PadDrop d = RigDrop(Model("m", c.effects));
+    const double depth = d.result.final_penetration_m;
+    if (c.depth < 0) {
+      EXPECT_LT(depth, 0.98 * d0) << c.effects;
+    } else {
+      EXPECT_GT(depth, 1.02 * d0) << c.effects;
+    }
+    if (c.higher_early_force) {
+      EXPECT_GT(d.result.trace[1].force_N, 1.05 * f0) << c.effects;
+    }
+  }
+  // The gas cushion acts in air only: a vacuum drop is exactly quasi-static RFT.
+  const PadDrop vacuum = RigDrop(Model("gas", "{gas_cushion: {chi: 0.3, c_g_N_s_m3: 8000}}"), "vacuum");
+  EXPECT_EQ(vacuum.result.final_penetration_m, base_vacuum.result.final_penetration_m);
+  const nlohmann::json j = SummaryJson(vacuum);
+  EXPECT_TRUE(j["effects"].empty()) << j.dump();
+  EXPECT_TRUE(j["effects_not_applied"].contains("gas_cushion")) << j.dump();
+  // The sensor offset is a measurement effect: the simulated drop is the true one.
+  const PadDrop sensor = RigDrop(Model("sensor", "{sensor_offset: {dz_mm: 1, dt_ms: 2}}"));
+  EXPECT_EQ(sensor.result.final_penetration_m, d0);
+  EXPECT_TRUE(SummaryJson(sensor)["effects_not_applied"].contains("sensor_offset"));
+}
+
+TEST_F(ModelEffects, NeutralParametersReproduceTheBaseDropExactly) {
+  const std::string neutral = Model(
+      "neutral",
+      "{inertial_drag: {lambda: 0}, rate_damping: {c_N_s_m3: 0}, added_mass: {c_a: 0}, "
+      "compaction_peak: {k_c_kg_m3: 0, d_c_mm: 3}, depth_exponent: {p: 1}, gas_cushion: {chi: 0, c_g_N_s_m3: 0}, "
+      "sensor_offset: {dz_mm: 0, dt_ms: 0}}");
+  EXPECT_TRUE(ActiveEffects(ModelEffectTerms(LoadModelFile(neutral))).empty());
+  for (const char* pad : {"flat", "curved"}) {
+    const RigDropResult a = RigDrop("", "air", pad).result, b = RigDrop(neutral, "air", pad).result;
+    ASSERT_EQ(a.trace.size(), b.trace.size()) << pad;
+    for (size_t i = 0; i < a.trace.size(); ++i) {
+      EXPECT_EQ(a.trace[i].penetration_m, b.trace[i].penetration_m) << pad << " sample " << i;
+      EXPECT_EQ(a.trace[i].force_N, b.trace[i].force_N) << pad << " sample " << i;
+    }
+  }
+}
+
+TEST_F(ModelEffects, FreeVerticalDropWithEffectsMatchesTheRigDrop) {
+  // A level flat pad dropped straight down as a free body is the rig drop with the 3D contact:
+  // inertial_drag (the dynamic term) and rate_damping (its decorator) act on the bottom face,
+  // the rig's I3 and I2 on the profile. Both reduce the penetration alike.
+  const std::string model = Model("drag", "{inertial_drag: {lambda: 2}, rate_damping: {c_N_s_m3: 15000}}");
+  const ModelFile m = LoadModelFile(model);
+  const PadSpec pad = LoadPad("flat");
+  const rft::SoilParameters soil = ApplyModel(m, LoadSoil("fjs1_lp"));
+  DropConditions c;
+  c.impact_speed_m_s = 1.0;
+  c.effects = ModelEffectTerms(m);
+  c.effects_source = model;
+  const PadDrop rig = RunPadDrop(pad, soil, c);
+  c.free = true;
+  const PadDrop free = SimulateDrop(pad, soil, c, {});
+  ASSERT_TRUE(free.free.has_value());
+  EXPECT_EQ(free.law_3d, "li2013+dynamic+rate_damping");
+  const double d = rig.result.final_penetration_m;
+  EXPECT_NEAR(free.result.final_penetration_m, d, 5e-3 * d);
+  EXPECT_NEAR(free.result.peak_force_N, rig.result.peak_force_N, 5e-3 * rig.result.peak_force_N);
+  DropConditions plain = c;
+  plain.effects = {};
+  EXPECT_LT(d, 0.95 * RunPadDrop(pad, soil, plain).result.final_penetration_m);
+}
+
+TEST_F(ModelEffects, EffectsWithoutA3DFormAreRefusedOnFreeDropsAndLanders) {
+  const PadSpec pad = LoadPad("flat");
+  for (const char* id : {"added_mass", "compaction_peak", "depth_exponent"}) {
+    const std::string effects = std::string(id) == "added_mass"        ? "{added_mass: {c_a: 1}}"
+                                : std::string(id) == "compaction_peak" ? "{compaction_peak: {k_c_kg_m3: 1000, d_c_mm: 2}}"
+                                                                       : "{depth_exponent: {p: 1.2}}";
+    const std::string path = Model(id, effects);
+    const ModelFile m = LoadModelFile(path);
+    DropConditions c;
+    c.impact_speed_m_s = 1.0;
+    c.free = true;
+    c.effects = ModelEffectTerms(m);
+    c.effects_source = path;
+    try {
+      SimulateDrop(pad, LoadSoil("fjs1_lp"), c, {});
+      ADD_FAILURE() << id << " accepted on a free drop";
+    } catch (const InputError& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find(path + ": effects." + id + ": has no 3D form"), std::string::npos) << what;
+    }
+    LanderScenario s = LoadLanderScenario(std::string(TOUCHDOWN_SOURCE_DIR) + "/data/scenarios/lander_case_A.yaml");
+    s.model = m;
+    EXPECT_THROW(BuildLanderSetup(s), InputError) << id;
+  }
+  // The CLI: one line naming the file and the effect, exit status 2.
+  std::string out, err;
+  EXPECT_EQ(Touchdown("drop --pad flat --soil fjs1_lp --speed 1 --free --model " + Model("am", "{added_mass: {c_a: 1}}"),
+                      &out, &err),
+            2);
+  EXPECT_NE(err.find("effects.added_mass: has no 3D form"), std::string::npos) << err;
+  EXPECT_TRUE(out.empty()) << out;
+}
+
+TEST_F(ModelEffects, LanderSoilsCarryTheModelsTerms) {
+  LanderScenario s = LoadLanderScenario(std::string(TOUCHDOWN_SOURCE_DIR) + "/data/scenarios/lander_case_A.yaml");
+  s.model = LoadModelFile(Model("lander", "{inertial_drag: {lambda: 1.5}, sensor_offset: {dz_mm: 1, dt_ms: 0}}"));
+  const LanderSetup setup = BuildLanderSetup(s);
+  ASSERT_EQ(setup.terrain.soils.size(), 1u);
+  EXPECT_EQ(setup.terrain.soils[0].law->name(), "li2013+dynamic");
+  const Eigen::Vector3d down(0, 0, -1);
+  EXPECT_NEAR(setup.terrain.soils[0].law->DynamicStress(down, 2.0 * down).z(),
+              1.5 * LoadSoil("fjs1_lp").bulk_density_kg_m3 * 4.0, 1e-9);
+  // gas_cushion only where the bed is in air (fjs1_lp is a vacuum bed).
+  s.model = LoadModelFile(Model("gas", "{gas_cushion: {chi: 0.3, c_g_N_s_m3: 5000}}"));
+  EXPECT_EQ(BuildLanderSetup(s).terrain.soils[0].law->name(), "li2013");
+  rft::SoilParameters air = LoadSoil("fjs1_lp");
+  air.atmosphere = "air";
+  EXPECT_EQ(MakeModelStressLaw3D("li2013", air, 9.81, &*s.model)->name(), "li2013+gas_cushion");
+}
+
+// compare --model with a sensor_offset: the simulated traces are shifted as the rig records them
+// (time by -dt, penetration by +dz), so a noise-free record with that offset hidden is matched.
+TEST_F(ModelEffects, CompareAppliesTheSensorOffsetToTheSimulatedTraces) {
+  SynthSpec spec;
+  spec.name = "offset";
+  spec.source = "offset.yaml";
+  spec.rest_duration_s = 0.01;
+  for (double v : {0.8, 1.4}) spec.drops.push_back({"flat", "fjs1_lp", "vacuum", v, std::nullopt, 9.81, 0});
+  spec.noise = SynthNoise{0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+  spec.hidden_effect = Effect{"sensor_offset", {0.001, 0.004}};
+  Dataset measured = Synthesize(spec);
+  measured.directory = dir_.string();
+  const std::string model_path = Model("offset", "{sensor_offset: {dz_mm: 1, dt_ms: 4}}");
+  auto compared = [&](const std::optional<ModelFile>& model) {
+    const Dataset simulated = SimulateMeasuredDrops(measured, model);
+    std::vector<const DatasetDrop*> partners;
+    for (const DatasetDrop& s : simulated.drops) partners.push_back(&s);
+    return CompareDrops(measured, partners);
+  };
+  const Comparison with = compared(LoadModelFile(model_path)), without = compared(std::nullopt);
+  std::printf("[ sensor offset ] force NRMSE %.2e with the offset, %.2e without; depth error %.2e / %.2e\n",
+              with.force_nrmse, without.force_nrmse, with.final_penetration_rel_error,
+              without.final_penetration_rel_error);
+  EXPECT_LT(with.force_nrmse, 5e-3);
+  EXPECT_GT(without.force_nrmse, 10 * with.force_nrmse);
+  EXPECT_LT(with.final_penetration_rel_error, 1e-3);
+  EXPECT_GT(without.final_penetration_rel_error, 0.05);
+}
+
+// diagnose on a small synthetic dataset with hidden rate damping writes DIR/model.yaml; that
+// file drives `drop` and `compare` to the diagnosis's own numbers, and its fit record carries the
+// fitted model's force residual in newtons.
+TEST_F(ModelEffects, DiagnosedModelFileRoundTripsThroughDropAndCompare) {
+  SynthSpec spec;
+  spec.name = "roundtrip";
+  spec.source = "roundtrip.yaml";
+  spec.seed = 5;
+  spec.rest_duration_s = 0.008;
+  for (const char* atm : {"air", "vacuum"})
+    for (double v : {0.8, 1.2, 1.6}) spec.drops.push_back({"flat", "fjs1_lp", atm, v, std::nullopt, 9.81, 0});
+  spec.noise = SynthNoise{0.5, 1e-5, 1.0, 2e-5, 0.1, 5e-6};
+  spec.hidden_effect = Effect{"rate_damping", {15000.0}};
+  Dataset ds = Synthesize(spec);
+  ds.directory = (dir_ / "measured").string();
+  WriteDataset(ds, ds.directory);
+  const Dataset measured = ReadDataset(ds.directory);
+  DiagnoseOptions o;
+  o.threads = 2;
+  o.permutations = 100;
+  o.try_pairs = false;
+  const Diagnosis d = RunDiagnosis(measured, o);
+  ASSERT_EQ(d.named_effect, "rate_damping") << d.decision;
+  WriteDiagnosis(d, measured, (dir_ / "diagnosis").string());
+  const std::string model_path = (dir_ / "diagnosis" / "model.yaml").string();
+  const ModelFile model = LoadModelFile(model_path);
+  const CandidateScore& w = d.candidates[d.winner];
+
+  // drop --model: the CLI's drop is the in-process drop under the fitted model, to the last bit.
+  std::string out;
+  ASSERT_EQ(Touchdown("drop --pad flat --soil fjs1_lp --speed 1.2 --model " + model_path, &out), 0);
+  const nlohmann::json j = nlohmann::json::parse(out);
+  EXPECT_EQ(j["effects"], nlohmann::json::array({"rate_damping"}));
+  DropConditions c;
+  c.impact_speed_m_s = 1.2;
+  c.effects = ModelEffectTerms(model);
+  const PadDrop in_process = RunPadDrop(LoadPad("flat"), ApplyModel(model, LoadSoil("fjs1_lp")), c);
+  EXPECT_EQ(j["final_penetration_m"].get<double>(), in_process.result.final_penetration_m);
+  EXPECT_NEAR(c.effects.damping_c_N_s_m3, w.fit.effects[0].values[0], 1e-6 * w.fit.effects[0].values[0]);
+
+  // compare --model: per drop the force NRMSE of the diagnosis's augmented model.
+  const Dataset simulated = SimulateMeasuredDrops(measured, model);
+  std::vector<const DatasetDrop*> partners;
+  for (const DatasetDrop& s : simulated.drops) partners.push_back(&s);
+  const Comparison cmp = CompareDrops(measured, partners);
+  double held = 0.0, n_held = 0.0;
+  for (size_t i = 0; i < d.problem.drops.size(); ++i) {
+    EXPECT_NEAR(cmp.drops[d.problem.drops[i].dataset_index].force_nrmse_time.value, w.gaps[i].force_nrmse,
+                0.02 * w.gaps[i].force_nrmse + 1e-4)
+        << d.problem.drops[i].drop_id;
+    if (!d.problem.drops[i].train) held += cmp.drops[d.problem.drops[i].dataset_index].force_nrmse_time.value, n_held += 1;
+  }
+  EXPECT_NEAR(held / n_held, w.held_out.force_nrmse, 0.02 * w.held_out.force_nrmse);
+
+  // fit.residual_rms_N: the fitted model's force residual over the training samples, in newtons,
+  // recomputed here from compare's simulated traces.
+  const SoilOverride& o_lp = model.soils.at("fjs1_lp");
+  ASSERT_TRUE(o_lp.fit.has_value());
+  double sum = 0.0;
+  long samples = 0;
+  for (const FitDrop& f : d.problem.drops) {
+    if (!f.train) continue;
+    const DatasetTrace& m = measured.drops[f.dataset_index].trace;
+    const DatasetTrace& s = simulated.drops[f.dataset_index].trace;
+    for (size_t i = 0; i < m.size(); ++i) {
+      const double f_sim = m.t_s[i] < s.t_s.front() ? 0.0 : InterpolateClamped(s.t_s, s.force_N, m.t_s[i]);
+      sum += (f_sim - m.force_N[i]) * (f_sim - m.force_N[i]);
+      ++samples;
+    }
+  }
+  const double rms = std::sqrt(sum / samples);
+  std::printf("[ residual ] fit.residual_rms_N %.4f N (recomputed %.4f N) over %ld samples; load-cell noise 0.5 N\n",
+              o_lp.fit->residual_rms_N, rms, o_lp.fit->samples);
+  EXPECT_EQ(o_lp.fit->samples, samples);
+  EXPECT_GT(o_lp.fit->residual_rms_N, 0.0);
+  EXPECT_NEAR(o_lp.fit->residual_rms_N, rms, 0.03 * rms);
+  EXPECT_NEAR(o_lp.fit->residual_rms_N, w.fit.residual_rms_N[0], 1e-6 * rms);
+}
+
+}  // namespace
+}  // namespace touchdown::drop
