@@ -147,12 +147,12 @@ TEST(Determinism, ShortLanderDropTwiceIsBitIdentical) {
   box.Write("lander.yaml",
             "schema_version: 1\ntype: lander\nlander: sutoh2017_lander\ngravity_m_s2: 1.62\n"
             "ground: {soil: fjs1_lp, slope_deg: 5}\ninitial: {touchdown_speed_m_s: 1.0, roll_deg: 2}\n"
-            "simulation: {duration_s: 0.05}\n");
+            "simulation: {duration_s: 0.03}\n");  // 30 ms of pad contact: seconds even under ASan
   for (const char* out : {"one", "two"}) {
     const CliRun r = box.Touchdown(std::string("lander lander.yaml --out ") + out);
-    ASSERT_TRUE(r.status == 0 || r.status == 3) << r.err;
+    ASSERT_EQ(r.status, 0) << r.err;
   }
-  if (fs::exists(box.dir() / "one")) ExpectSameTree(box.dir() / "one", box.dir() / "two", ".png");
+  ExpectSameTree(box.dir() / "one", box.dir() / "two", ".png");
 }
 
 TEST(Determinism, SweepIsBitIdenticalForThreadsShardsAndMerge) {
