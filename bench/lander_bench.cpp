@@ -16,14 +16,18 @@ void BM_LanderCaseA_1s(benchmark::State& state) {
   drop::LanderScenario run = scenario;
   run.options.duration_s = 1.0;
   const drop::LanderSetup setup = drop::BuildLanderSetup(run);
-  long steps = 0;
+  lander::LanderRunResult last;
   for (auto _ : state) {
     const lander::LanderRunResult r = lander::SimulateLander(setup.model, setup.terrain, setup.initial, run.options);
     benchmark::DoNotOptimize(r.final_penetration_m[0]);
-    steps = r.solver.steps;
+    last = r;
   }
   state.counters["triangles_per_pad"] = setup.model.legs[0].pad->surface.size();
-  state.counters["solver_steps"] = static_cast<double>(steps);
+  state.counters["solver_steps"] = static_cast<double>(last.solver.steps);
+  state.counters["rhs_evals"] = static_cast<double>(last.solver.rhs_evaluations);
+  state.counters["jac_rhs_evals"] = static_cast<double>(last.solver.jacobian_rhs_evaluations);
+  state.counters["root_evals"] = static_cast<double>(last.solver.root_evaluations);
+  state.counters["rest_time_s"] = last.rest_time_s.value_or(-1.0);
   state.counters["realtime_factor"] =
       benchmark::Counter(run.options.duration_s * state.iterations(), benchmark::Counter::kIsRate);
 }

@@ -230,6 +230,9 @@ LanderRunResult SimulateLander(const LanderModel& model, const Terrain& terrain,
     totals.rhs_evaluations += s.rhs_evaluations;
     totals.root_evaluations += s.root_evaluations;
     totals.error_test_failures += s.error_test_failures;
+    totals.jacobian_evaluations += s.jacobian_evaluations;
+    totals.jacobian_rhs_evaluations += s.jacobian_rhs_evaluations;
+    totals.nonlinear_convergence_failures += s.nonlinear_convergence_failures;
   };
   const double dt = 1.0 / options.sample_rate_hz;
   double t = 0.0;
