@@ -29,6 +29,7 @@ rft::SurfaceElements MakeSurfaceElements(const TriangleMesh& mesh, const Eigen::
     e.area_m2(i) = 0.5 * norm;
     e.n_B.col(i) = norm > 0.0 ? Eigen::Vector3d(twice_area / norm) : Eigen::Vector3d::Zero();
   }
+  e.UpdateBounds();
   return e;
 }
 

@@ -29,7 +29,11 @@ Eigen::Quaterniond QuatAt(const Eigen::Ref<const Eigen::VectorXd>& y, int i) {
 // is negligible, large enough to stay far from underflow.
 constexpr double kProbeSpeed = 1e-6;
 
-double PadRadius(const Leg& leg) { return leg.vertices_P.size() ? leg.vertices_P.colwise().norm().maxCoeff() : 0.0; }
+double PadRadius(const Leg& leg) {
+  const rft::SurfaceElements& s = leg.pad->surface;
+  if (s.HasBounds()) return s.max_vertex_radius_m;  // model data: measured once
+  return leg.vertices_P.size() ? leg.vertices_P.colwise().norm().maxCoeff() : 0.0;
+}
 
 // Linear-velocity Jacobian of the pad CoM (3 x nu) and of the joint centre, and their bias.
 void PadJacobians(const StateLayout& L, int i, const PadFrame& pf, const Eigen::Vector3d& w_B,

@@ -347,9 +347,13 @@ LanderRunResult SimulateLander(const LanderModel& model, const Terrain& terrain,
     if (all_held && options.stop_at_rest) {
       result.rest_time_s = t;
       result.events.push_back({t, "rest", -1});
-      // Static from here on: the loads no longer change, so the holds stay valid. Sample the
-      // remaining time without integrating.
-      for (; k * dt <= options.duration_s + 1e-12; ++k) record(k * dt, y);
+      // Static from here on: the loads no longer change, so the holds stay valid. The remaining
+      // samples repeat the one just recorded from this state (same state, same evaluation).
+      const LanderSample at_rest = result.trace.back();
+      for (; k * dt <= options.duration_s + 1e-12; ++k) {
+        result.trace.push_back(at_rest);
+        result.trace.back().t_s = k * dt;
+      }
       t = options.duration_s;
       break;
     }

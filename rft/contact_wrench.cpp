@@ -19,8 +19,21 @@ constexpr double kParallelTolerance = 1e-9;
 // band makes the force Lipschitz in the velocity; faces parallel to the motion still lead fully.
 constexpr double kTrailingBand = 0.02;
 
-// Relative speed below which a rotation counts as translation (see `spinning` below).
-constexpr double kNegligibleSpin = 1e-12;
+// Relative speed below which a rotation counts as translation (see `spinning` below). A pad
+// dropped straight down picks up an angular velocity of rounding size (1e-11 rad/s measured on
+// the lander's pads in case A) from the rounding in its moment; as the pad slows to a few cm/s
+// near its stop, 1e-12 |v| would call that a spin and send it down the per-element path (2/3
+// of the law evaluations of a case-A landing). A real rotation moves element velocities by far
+// more than 1e-9 |v|; below it the stress, Lipschitz in the direction of v, changes by less
+// than 1e-9 relative (1e-9 / kTrailingBand for a face in the trailing band).
+constexpr double kNegligibleSpin = 1e-9;
+
+// A block of elements is skipped when its box lies at least this far above the ground [m]. The
+// box bound is >= every vertex depth computed in the loop (the same affine form, monotone
+// rounding), so the margin only guards against a compiler contracting the two differently: a
+// skipped block would have contributed nothing, and the sum is bit-identical with or without
+// the bounds.
+constexpr double kCullMargin = 1e-12;
 
 // Normals closer than this (1-norm) count as equal for reusing the stress of the previous element
 // in pure translation: the two triangles of a planar quad get normals that differ by rounding
@@ -141,13 +154,27 @@ ContactWrench ComputeContactWrench(const SurfaceElements& elements, const PadKin
   // as translation (the run path, several times cheaper): a level pad dropped straight down picks
   // up an angular velocity of order 1e-16 rad/s from rounding in its moment, and the stress,
   // Lipschitz in the velocity with constant ~ 1 / kTrailingBand, then moves by < 1e-10.
+  const bool bounded = elements.HasBounds();
   bool spinning = !w0.isZero(0.0);
   if (spinning) {
     double r2 = 0.0;
-    for (const Eigen::Matrix3Xd* p : {&elements.p0_B, &elements.p1_B, &elements.p2_B})
-      r2 = std::max(r2, p->colwise().squaredNorm().maxCoeff());
+    if (bounded) {
+      r2 = elements.max_vertex_radius_m * elements.max_vertex_radius_m;
+    } else {
+      for (const Eigen::Matrix3Xd* p : {&elements.p0_B, &elements.p1_B, &elements.p2_B})
+        r2 = std::max(r2, p->colwise().squaredNorm().maxCoeff());
+    }
     spinning = w0.squaredNorm() * r2 > kNegligibleSpin * kNegligibleSpin * v0.squaredNorm();
   }
+  // Over a plane, a block whose box is wholly above the ground is skipped (see kCullMargin).
+  const bool cull = bounded && plane != nullptr;
+  auto block_above_ground = [&](int b) {
+    const double* lo = elements.block_min_B.data() + 3 * b;
+    const double* hi = elements.block_max_B.data() + 3 * b;
+    const double deepest = depth0 + (gx > 0.0 ? gx * hi[0] : gx * lo[0]) + (gy > 0.0 ? gy * hi[1] : gy * lo[1]) +
+                           (gz > 0.0 ? gz * hi[2] : gz * lo[2]);
+    return deepest < -kCullMargin;
+  };
 
   Eigen::Vector3d force = Eigen::Vector3d::Zero(), moment = Eigen::Vector3d::Zero();
   double submerged_area = 0.0;
@@ -186,6 +213,10 @@ ContactWrench ComputeContactWrench(const SurfaceElements& elements, const PadKin
   };
 
   for (int e = 0; e < count; ++e) {
+    if (cull && e % SurfaceElements::kBlockSize == 0 && block_above_ground(e / SurfaceElements::kBlockSize)) {
+      e += SurfaceElements::kBlockSize - 1;
+      continue;
+    }
     const Vec p[3] = {Load(p0 + 3 * e), Load(p1 + 3 * e), Load(p2 + 3 * e)};
     double d[3];
     if (plane != nullptr) {

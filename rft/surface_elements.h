@@ -12,14 +12,29 @@ struct SurfaceElements {
   Eigen::Matrix3Xd n_B;               // unit outward normals
   Eigen::VectorXd area_m2;            // triangle areas [m^2]
 
+  // Derived bounds, filled by UpdateBounds() once the arrays above are final (model data, like
+  // them). The contact sum uses them to skip whole blocks of kBlockSize consecutive elements
+  // that lie above the ground, and to tell a spinning pad from a translating one without a pass
+  // over the vertices. Not filled (or stale in size): the contact visits every element and
+  // measures the radius itself; the result is the same either way.
+  static constexpr int kBlockSize = 32;
+  Eigen::Matrix3Xd block_min_B, block_max_B;  // axis-aligned box of each block's vertices [m]
+  double max_vertex_radius_m = -1.0;          // largest |p_B| over all vertices [m]; < 0: unknown
+
   int size() const { return static_cast<int>(area_m2.size()); }
+  int block_count() const { return (size() + kBlockSize - 1) / kBlockSize; }
+  bool HasBounds() const { return max_vertex_radius_m >= 0.0 && block_min_B.cols() == block_count(); }
   void Resize(int n) {
     p0_B.resize(3, n);
     p1_B.resize(3, n);
     p2_B.resize(3, n);
     n_B.resize(3, n);
     area_m2.resize(n);
+    block_min_B.resize(3, 0);
+    block_max_B.resize(3, 0);
+    max_vertex_radius_m = -1.0;
   }
+  void UpdateBounds();
 };
 
 }  // namespace touchdown::rft

@@ -3,6 +3,7 @@
 // in results.sqlite with its own columns, reproducible, and exported where it is a pad drop.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -170,7 +171,9 @@ grid: {impact_speed_m_s: [1.0, 1.4]}
     EXPECT_EQ(r.roll_deg, 0.0);
     for (double d : r.pad_final_penetration_m) EXPECT_NEAR(d, r.pad_final_penetration_m[0], 1e-9);
     EXPECT_GT(r.pad_final_penetration_m[0], 1e-3);
-    EXPECT_EQ(r.final_penetration_m, r.pad_final_penetration_m[0]);
+    // The drop's penetration is its deepest pad's (the four agree to 1e-9 m, not bit for bit).
+    EXPECT_EQ(r.final_penetration_m,
+              *std::max_element(r.pad_final_penetration_m.begin(), r.pad_final_penetration_m.end()));
     EXPECT_GT(r.impact_energy_J, 0.0);
     EXPECT_GT(r.time_to_rest_s, 0.0);
   }

@@ -1,0 +1,96 @@
+// SurfaceElements::UpdateBounds and the contact sum's use of it: block boxes that skip emerged
+// elements and the stored radius that tells spin from translation must leave every wrench bit for
+// bit as the plain element loop computes it, over level and sloped ground, tilted, sliding and
+// spinning pads, from first contact to full burial.
+#include "rft/surface_elements.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "rft/contact_wrench.h"
+#include "rft/li2013_3d.h"
+#include "tests/rft/pad_meshes.h"
+
+namespace touchdown::rft {
+namespace {
+
+using testing::FlatProfile;
+using testing::MakeBox;
+using testing::MakeRevolvedPad;
+using testing::RotX;
+using testing::RotZ;
+
+TEST(RftSurfaceElements, BoundsEncloseEveryBlockAndTheRadiusIsTheFarthestVertex) {
+  SurfaceElements pad = MakeRevolvedPad(FlatProfile(0.0275, 0.01, 3), 40);
+  EXPECT_FALSE(pad.HasBounds());
+  pad.UpdateBounds();
+  ASSERT_TRUE(pad.HasBounds());
+  EXPECT_EQ(pad.block_count(), (pad.size() + SurfaceElements::kBlockSize - 1) / SurfaceElements::kBlockSize);
+  double r_max = 0.0;
+  for (int e = 0; e < pad.size(); ++e) {
+    const int b = e / SurfaceElements::kBlockSize;
+    for (const Eigen::Matrix3Xd* p : {&pad.p0_B, &pad.p1_B, &pad.p2_B}) {
+      EXPECT_TRUE((p->col(e).array() >= pad.block_min_B.col(b).array()).all());
+      EXPECT_TRUE((p->col(e).array() <= pad.block_max_B.col(b).array()).all());
+      r_max = std::max(r_max, p->col(e).norm());
+    }
+  }
+  EXPECT_NEAR(pad.max_vertex_radius_m, r_max, 1e-15);
+  // A pad's elements are laid out ring by ring: its rims and bottom make thin boxes.
+  pad.Resize(3);
+  EXPECT_FALSE(pad.HasBounds());  // resizing drops bounds that no longer fit
+}
+
+TEST(RftSurfaceElements, BoundedContactIsBitIdenticalToThePlainLoop) {
+  const Li2013TreersLaw law(3.48e6);
+  for (const bool box : {false, true}) {
+    const SurfaceElements plain = box ? MakeBox(Eigen::Vector3d(-0.03, -0.02, 0), Eigen::Vector3d(0.03, 0.02, 0.012), 6)
+                                      : MakeRevolvedPad(FlatProfile(0.0275, 0.01, 4), 48);
+    SurfaceElements bounded = plain;
+    bounded.UpdateBounds();
+    for (const double slope : {0.0, 0.2}) {
+      const PlaneGround ground(0.0, slope, -0.5 * slope);
+      for (const double tilt : {0.0, 0.15, 0.6})
+        for (const double depth : {0.0005, 0.004, 0.011, 0.03})
+          for (const double spin : {0.0, 1e-13, 2.0}) {
+            PadKinematics k;
+            k.R_WB = RotZ(0.3) * RotX(tilt);
+            k.p_WB = Eigen::Vector3d(0.01, -0.02, -depth);
+            k.v_WB_W = Eigen::Vector3d(0.3, 0.1, -1.0);
+            k.w_WB_W = Eigen::Vector3d(0.5, -1.0, 0.2) * spin;
+            const ContactWrench a = ComputeContactWrench(plain, k, ground, law);
+            const ContactWrench b = ComputeContactWrench(bounded, k, ground, law);
+            const std::string where = "box " + std::to_string(box) + " slope " + std::to_string(slope) + " tilt " +
+                                      std::to_string(tilt) + " depth " + std::to_string(depth) + " spin " +
+                                      std::to_string(spin);
+            EXPECT_EQ(a.force_W, b.force_W) << where;
+            EXPECT_EQ(a.moment_W, b.moment_W) << where;
+            EXPECT_EQ(a.submerged_area_m2, b.submerged_area_m2) << where;
+            EXPECT_EQ(a.leading_elements, b.leading_elements) << where;
+          }
+    }
+  }
+}
+
+TEST(RftSurfaceElements, SpinBelowOneBillionthOfTheSpeedCountsAsTranslation) {
+  // A rounding-size spin (as a pad dropped straight down picks up) takes the translation path:
+  // the wrench equals the pure translation's to 1e-9 relative.
+  SurfaceElements pad = MakeRevolvedPad(FlatProfile(0.0275, 0.01, 3), 64);
+  pad.UpdateBounds();
+  const Li2013TreersLaw law(3.48e6);
+  const PlaneGround ground;
+  PadKinematics k;
+  k.p_WB = Eigen::Vector3d(0, 0, -0.008);
+  k.v_WB_W = Eigen::Vector3d(0, 0, -0.02);  // slowing down near the stop
+  const ContactWrench still = ComputeContactWrench(pad, k, ground, law);
+  k.w_WB_W = Eigen::Vector3d(1e-11, -2e-11, 0.0);  // |w| r / |v| ~ 3e-11
+  const ContactWrench noise = ComputeContactWrench(pad, k, ground, law);
+  EXPECT_EQ(still.force_W, noise.force_W);
+  k.w_WB_W = Eigen::Vector3d(1e-3, 0.0, 0.0);  // a real rotation: the per-element path
+  const ContactWrench turning = ComputeContactWrench(pad, k, ground, law);
+  EXPECT_GT((turning.moment_W - still.moment_W).norm(), 1e-9 * still.force_W.norm() * 0.0275);
+}
+
+}  // namespace
+}  // namespace touchdown::rft
