@@ -10,12 +10,25 @@
 #include "drop_tests/atomic_file.h"
 #include "drop_tests/compare_gnuplot.h"
 #include "drop_tests/dataset_csv.h"
+#include "rft/input_error.h"
 
 namespace touchdown::drop {
 
 namespace fs = std::filesystem;
 
+void CheckTradePlan(const SweepPlan& plan) {
+  if (plan.lander)
+    throw MakeInputError(plan.source, "lander",
+                         "trade compares footpads dropped on their own (pad: [...]); a lander sweep runs one pad "
+                         "design on four legs. Run it with `touchdown sweep` and read its summaries with "
+                         "`touchdown export`");
+}
+
 std::vector<TradeRow> TradeTable(const std::vector<DropRecord>& records) {
+  for (const DropRecord& r : records)
+    if (r.kind == "lander")
+      throw MakeInputError("drop " + r.drop_id, "drop_kind",
+                           "a lander drop; trade tabulates single-pad drops only");
   std::map<std::tuple<std::string, double, std::string>, TradeRow> rows;  // (soil, speed, pad)
   for (const DropRecord& r : records) {
     TradeRow& row = rows[{r.soil, r.impact_speed_m_s, r.pad}];
