@@ -79,6 +79,12 @@ std::vector<ZetaFit> CalibrateZeta(const Dataset& measured, const CalibrationOpt
     const std::string pad_ref = measured.PadReference(d), soil_ref = measured.SoilReference(d);
     if (!pads.count(pad_ref)) {
       const PadSpec pad = LoadPad(pad_ref);
+      // The fit's regressor is the profile integral F(d; zeta = 1); a mesh pad has none.
+      if (!pad.is_axisymmetric())
+        throw MakeInputError((std::filesystem::path(measured.directory) / "drops.csv").string(),
+                             "drop " + d.drop_id + ", pad",
+                             "'" + d.pad + "' is a mesh pad (" + pad.source +
+                                 "); calibrate fits zeta on axisymmetric pads only (profile integral)");
       pads.emplace(pad_ref, std::make_unique<geom::AxisymmetricIntrusion>(pad.profile, rft::Li2013Law{}));
     }
     if (!soils.count(soil_ref)) soils.emplace(soil_ref, LoadSoil(soil_ref));
