@@ -120,7 +120,9 @@ class Loader {
         set.soil[i] = static_cast<int>(NameIndex(SweepParam::kSoil, n[i], f, path + "[" + std::to_string(i) + "]"));
     } else {
       throw MakeInputError(f.file(), path, "must be a ground case of the paper's Table II (A, B or C) or a list of "
-                                           "four soils (pads 1..4, clockwise from front-left)");
+                                           "four soils (pads 1..4, clockwise from front-left), got " +
+                                           (n.IsSequence() ? "a list of " + std::to_string(n.size())
+                                                           : std::string("a mapping")));
     }
     for (size_t i = 0; i < plan_.pad_soil_sets.size(); ++i)
       if (plan_.pad_soil_sets[i].label == set.label && plan_.pad_soil_sets[i].soil == set.soil)
