@@ -22,7 +22,23 @@ std::vector<size_t> LoadingStrokeIndices(const DatasetTrace& trace) {
   if (trace.size() == 0) return out;
   const size_t deepest = static_cast<size_t>(
       std::max_element(trace.penetration_m.begin(), trace.penetration_m.end()) - trace.penetration_m.begin());
-  for (size_t i = 0; i <= deepest; ++i)
+  // The stroke ends where the pad stops: the force falls from the soil's capacity F(d) to the
+  // weight carried at rest. With noise on the penetration a rest sample may be the deepest one;
+  // without this cut the rest samples (force m g against F(d) in the regressor) would pull zeta
+  // down (the shipped synthetic dataset: 1.1 instead of 3.48 N/cm^3). Looked for in the deeper
+  // half of the stroke only, so an impact transient at shallow depth does not end it.
+  size_t end = deepest;
+  const double half_depth = 0.5 * trace.penetration_m[deepest];
+  double peak = 0.0;
+  for (size_t i = 0; i <= deepest; ++i) {
+    if (trace.penetration_m[i] < half_depth) continue;
+    if (peak > 0.0 && trace.force_N[i] < 0.5 * peak) {
+      end = i - 1;
+      break;
+    }
+    peak = std::max(peak, trace.force_N[i]);
+  }
+  for (size_t i = 0; i <= end; ++i)
     if (trace.penetration_m[i] > 0.0) out.push_back(i);
   return out;
 }

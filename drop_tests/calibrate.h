@@ -52,7 +52,9 @@ struct StrokeSamples {
   std::vector<double> x;  // (g/g_ref) phi(d_i) [N per N/m^3]
   std::vector<double> force_N;
 };
-// Indices of a trace's loading stroke: samples with penetration > 0 up to the deepest one.
+// Indices of a trace's loading stroke: samples with penetration > 0 up to the deepest one, or
+// up to the stop when the force falls there (in the deeper half of the stroke) below half of
+// its largest value so far: the rest phase carries only the weight.
 std::vector<size_t> LoadingStrokeIndices(const DatasetTrace& trace);
 
 // Closed-form fit of zeta over drops (clusters) of samples; see the header comment.
