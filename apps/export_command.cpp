@@ -18,7 +18,8 @@ void AddExportCommand(CLI::App& app) {
   cmd->add_option("--threads", options->threads, "threads for re-simulated traces (default: every core)");
   cmd->callback([dir, to, options] {
     const drop::ExportSummary s = drop::ExportSweep(*dir, *to, *options);
-    std::cout << "exported " << s.exported << " drops to " << *to << "/ (drops.csv, traces/)";
+    std::cout << "exported " << s.exported << (s.lander ? " lander drops" : " drops") << " to " << *to
+              << (s.lander ? "/ (lander_drops.csv)" : "/ (drops.csv, traces/)");
     if (s.resimulated > 0) std::cout << "; " << s.resimulated << " traces simulated again";
     if (s.failed > 0) std::cout << "; " << s.failed << " failed drops listed in failed.csv";
     std::cout << "\n";

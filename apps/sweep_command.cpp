@@ -23,7 +23,7 @@ void AddSweepCommand(CLI::App& app) {
   auto args = std::make_shared<SweepArgs>();
   CLI::App* cmd = app.add_subcommand(
       "sweep", "Run a sweep of drops (grids, random samples) into DIR/results.sqlite; restartable; threads, MPI, shards");
-  cmd->add_option("sweep", args->sweep, "sweep YAML (e.g. data/sweeps/pad_speed_grid.yaml)")->required();
+  cmd->add_option("sweep", args->sweep, "sweep YAML (e.g. data/sweeps/pad_trade.yaml)")->required();
   cmd->add_option("--out", args->out, "output directory; a restart with the same command finishes the missing drops")
       ->required();
   cmd->add_option("--threads", args->threads, "worker threads per process (default: every core)")

@@ -25,6 +25,7 @@ void AddTradeCommand(CLI::App& app) {
   cmd->add_option("--model", args->model, "model file with per-soil zeta overrides");
   cmd->callback([args] {
     const drop::SweepPlan plan = drop::LoadSweepPlan(args->sweep, args->model);
+    drop::CheckTradePlan(plan);  // before anything runs or is written
     drop::SweepRunOptions options;
     options.threads = args->threads;
     options.progress = drop::ProgressMode::kNone;

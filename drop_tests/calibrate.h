@@ -3,13 +3,17 @@
 // least squares of force against penetration over the loading strokes.
 //
 // Quasi-static RFT is linear in zeta: on the loading stroke F(d) = zeta_ref (g / g_ref) phi(d),
-// phi(d) = F_RFT(d; zeta = 1) of the drop's pad (footpad_geom/axisymmetric_intrusion.h) and
-// g_ref the soil's reference gravity. With x_i = (g / g_ref) phi(d_i) the fit is closed-form:
+// phi(d) = F_RFT(d; zeta = 1) of the drop's pad, straight down (an axisymmetric pad: the profile
+// integral, footpad_geom/axisymmetric_intrusion.h; a mesh pad: the 3D contact, Li 2013 in 3D, on
+// the level pad, as its free drop feels it; a mesh pad on a soil whose rft_law_3d is not li2013
+// is refused), and g_ref the soil's reference gravity. With x_i = (g / g_ref) phi(d_i) the fit is
+// closed-form:
 //
 //   zeta = sum x_i F_i / sum x_i^2,   residuals e_i = F_i - zeta x_i,
 //
-// over every measured sample with d_i > 0 up to the drop's deepest sample (the loading stroke;
-// the rest phase, where the reaction is the weight, is not RFT's law).
+// over every measured sample with d_i > 0 up to the drop's deepest sample or its stop (the
+// loading stroke, LoadingStrokeIndices; the rest phase, where the reaction is the weight, is not
+// RFT's law).
 //
 // Confidence interval (two-sided, `confidence`, default 95 %): samples within one drop are not
 // independent (a sensor offset or a model gap moves a whole curve), so the standard error is
@@ -52,7 +56,9 @@ struct StrokeSamples {
   std::vector<double> x;  // (g/g_ref) phi(d_i) [N per N/m^3]
   std::vector<double> force_N;
 };
-// Indices of a trace's loading stroke: samples with penetration > 0 up to the deepest one.
+// Indices of a trace's loading stroke: samples with penetration > 0 up to the deepest one, or
+// up to the stop when the force falls there (in the deeper half of the stroke) below half of
+// its largest value so far: the rest phase carries only the weight.
 std::vector<size_t> LoadingStrokeIndices(const DatasetTrace& trace);
 
 // Closed-form fit of zeta over drops (clusters) of samples; see the header comment.

@@ -118,7 +118,8 @@ Dataset SimulateMeasuredDrops(const Dataset& measured, const std::optional<Model
     const double tilt_deg = ExtraOrZero(measured, m, "tilt_deg");
     row.tilt_rad = tilt_deg * std::numbers::pi / 180.0;
     row.horizontal_speed_m_s = ExtraOrZero(measured, m, "horizontal_speed_m_s");
-    const DropConditions c = DropConditionsFor(row, effects, effects_source, file + ": drop " + m.drop_id);
+    DropConditions c = DropConditionsFor(row, effects, effects_source, file + ": drop " + m.drop_id);
+    c.free = !pads.at(pad_ref).is_axisymmetric();  // a mesh pad has no rig profile: the free pad, straight down
     const PadDrop d = SimulateDrop(pads.at(pad_ref), soils.at(soil_ref), c, {});
     DatasetDrop s;
     s.drop_id = m.drop_id;

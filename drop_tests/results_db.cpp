@@ -23,6 +23,9 @@ constexpr const char* kNumberColumns2[] = {
     "pad2_final_penetration_m", "pad3_final_penetration_m", "pad4_final_penetration_m", "final_roll_deg",
     "final_pitch_deg", "tipped_over"};
 constexpr size_t kNumbers1 = std::size(kNumberColumns1), kNumbers2 = std::size(kNumberColumns2);
+// Format 3: text columns after the numbers.
+constexpr const char* kTextColumns3[] = {"pad1_soil", "pad2_soil", "pad3_soil", "pad4_soil", "ground_case"};
+constexpr size_t kTexts3 = std::size(kTextColumns3);
 
 template <typename R>  // DropRecord or const DropRecord
 auto Numbers1(R& r) {
@@ -39,6 +42,11 @@ auto Numbers2(R& r) {
 }
 static_assert(std::tuple_size_v<decltype(Numbers1(std::declval<DropRecord&>()))> == kNumbers1);
 static_assert(std::tuple_size_v<decltype(Numbers2(std::declval<DropRecord&>()))> == kNumbers2);
+template <typename R>
+auto Texts3(R& r) {
+  return std::array{&r.pad_soil[0], &r.pad_soil[1], &r.pad_soil[2], &r.pad_soil[3], &r.ground_case};
+}
+static_assert(std::tuple_size_v<decltype(Texts3(std::declval<DropRecord&>()))> == kTexts3);
 
 // The drops columns after drop_index, in the order of the INSERT statement.
 std::string Columns() {
@@ -46,9 +54,11 @@ std::string Columns() {
   for (const char* n : kNumberColumns1) c += std::string(", ") + n;
   c += ", solver_steps, drop_kind";
   for (const char* n : kNumberColumns2) c += std::string(", ") + n;
+  for (const char* n : kTextColumns3) c += std::string(", ") + n;
   return c;
 }
-constexpr int kColumnCount = 6 + static_cast<int>(kNumbers1) + 2 + static_cast<int>(kNumbers2);  // after drop_index
+constexpr int kColumnCount =
+    6 + static_cast<int>(kNumbers1) + 2 + static_cast<int>(kNumbers2) + static_cast<int>(kTexts3);  // after drop_index
 
 class Statement {
  public:
@@ -97,6 +107,7 @@ void BindRecord(Statement& st, const DropRecord& r) {
   st.Int(i++, r.solver_steps);
   st.Text(i++, r.kind);
   for (const double* v : Numbers2(r)) st.Real(i++, *v);
+  for (const std::string* t : Texts3(r)) st.Text(i++, *t);
 }
 
 DropRecord ReadRecord(Statement& st) {
@@ -114,6 +125,7 @@ DropRecord ReadRecord(Statement& st) {
   r.kind = st.ColumnText(i++);
   if (r.kind.empty()) r.kind = "rig";  // a format-1 row read through the added columns
   for (double* v : Numbers2(r)) *v = st.ColumnReal(i++);
+  for (std::string* t : Texts3(r)) *t = st.ColumnText(i++);
   return r;
 }
 
@@ -165,7 +177,8 @@ bool SameRecord(const DropRecord& a, const DropRecord& b, bool compare_traces) {
   for (size_t i = 0; i < a2.size(); ++i)
     if (!SameBits(*a2[i], *b2[i])) return false;
   if (a.index != b.index || a.drop_id != b.drop_id || a.ok != b.ok || a.failure != b.failure || a.kind != b.kind ||
-      a.pad != b.pad || a.soil != b.soil || a.atmosphere != b.atmosphere || a.solver_steps != b.solver_steps)
+      a.pad != b.pad || a.soil != b.soil || a.atmosphere != b.atmosphere || a.solver_steps != b.solver_steps ||
+      a.pad_soil != b.pad_soil || a.ground_case != b.ground_case)
     return false;
   if (!compare_traces) return true;
   return a.trace.size() == b.trace.size() &&
@@ -182,6 +195,7 @@ std::string SerializeRecords(const std::vector<DropRecord>& records) {
     for (const std::string* s : {&r.failure, &r.kind, &r.pad, &r.soil, &r.atmosphere}) PutString(out, *s);
     for (const double* v : Numbers1(r)) Put(out, *v);
     for (const double* v : Numbers2(r)) Put(out, *v);
+    for (const std::string* t : Texts3(r)) PutString(out, *t);
     Put(out, r.solver_steps);
     Put<uint64_t>(out, r.trace.size());
     out.append(reinterpret_cast<const char*>(r.trace.data()), r.trace.size() * sizeof(DropSample));
@@ -199,6 +213,7 @@ std::vector<DropRecord> DeserializeRecords(const std::string& bytes) {
     for (std::string* s : {&r.failure, &r.kind, &r.pad, &r.soil, &r.atmosphere}) *s = in.GetString();
     for (double* v : Numbers1(r)) *v = in.Get<double>();
     for (double* v : Numbers2(r)) *v = in.Get<double>();
+    for (std::string* t : Texts3(r)) *t = in.GetString();
     r.solver_steps = in.Get<int64_t>();
     r.trace.resize(in.Get<uint64_t>());
     for (DropSample& s : r.trace) s = in.Get<DropSample>();
@@ -228,10 +243,11 @@ ResultsDb::ResultsDb(const std::string& path) : path_(path) {
   for (const char* n : kNumberColumns1) drops += std::string(", ") + n + " REAL";
   drops += ", solver_steps INTEGER, drop_kind TEXT NOT NULL DEFAULT 'rig'";
   for (const char* n : kNumberColumns2) drops += std::string(", ") + n + " REAL";
+  for (const char* n : kTextColumns3) drops += std::string(", ") + n + " TEXT NOT NULL DEFAULT ''";
   Exec("CREATE TABLE IF NOT EXISTS meta(key TEXT PRIMARY KEY, value TEXT NOT NULL);" + drops +
        ");CREATE TABLE IF NOT EXISTS traces(drop_index INTEGER PRIMARY KEY, samples INTEGER NOT NULL, "
        "data BLOB NOT NULL);");
-  // A format-1 database (no format-2 columns) gets them added, NULL, so it can still be read
+  // A format-1 or -2 database (no format-2 or -3 columns) gets them added, NULL or '', so it can still be read
   // (export, merge); `sweep` refuses to resume it (format_version in meta).
   std::vector<std::string> present;
   {
@@ -242,6 +258,8 @@ ResultsDb::ResultsDb(const std::string& path) : path_(path) {
   if (!has("drop_kind")) Exec("ALTER TABLE drops ADD COLUMN drop_kind TEXT NOT NULL DEFAULT 'rig'");
   for (const char* n : kNumberColumns2)
     if (!has(n)) Exec(std::string("ALTER TABLE drops ADD COLUMN ") + n + " REAL");
+  for (const char* n : kTextColumns3)
+    if (!has(n)) Exec(std::string("ALTER TABLE drops ADD COLUMN ") + n + " TEXT NOT NULL DEFAULT ''");
 }
 
 ResultsDb::~ResultsDb() { sqlite3_close(db_); }

@@ -10,7 +10,8 @@
 //         dissipated_energy_J, mean_conversion_rate_W, rest_creep_m, solver_steps,
 //         [format 2:] drop_kind 'rig'|'free'|'lander', final_tilt_deg, horizontal_travel_m,
 //         roll_deg, pitch_deg, pad1..pad4_final_penetration_m, final_roll_deg,
-//         final_pitch_deg, tipped_over)
+//         final_pitch_deg, tipped_over,
+//         [format 3:] pad1_soil..pad4_soil, ground_case)
 //   traces(drop_index PRIMARY KEY, samples, data BLOB of float64 [t, d, v, F] per sample)
 //
 // A batch of drops and their traces go in one transaction (WAL journal), so a process killed
@@ -32,7 +33,8 @@ struct sqlite3;
 namespace touchdown::drop {
 
 // 2: drop_kind, the free drop's final tilt and horizontal travel, the lander columns.
-inline constexpr int kResultsDbVersion = 2;
+// 3: the soil under each lander pad (pad1_soil..pad4_soil) and the paper's ground case.
+inline constexpr int kResultsDbVersion = 3;
 
 // One drop as stored. Metrics are NaN (NULL in SQL) for a failed drop, and for quantities a kind
 // of drop does not have.
@@ -64,6 +66,11 @@ struct DropRecord {
   double final_roll_deg = std::numeric_limits<double>::quiet_NaN();
   double final_pitch_deg = std::numeric_limits<double>::quiet_NaN();
   double tipped_over = std::numeric_limits<double>::quiet_NaN();
+  // Lander drops only ("" otherwise): the soil under each pad's ball joint at release (soil names,
+  // pads clockwise from pad 1 front-left) and the paper's Table II ground case they make ("A",
+  // "B", "C"; "" for another combination).
+  std::array<std::string, 4> pad_soil;
+  std::string ground_case;
   std::vector<DropSample> trace;  // empty unless stored
 };
 

@@ -24,8 +24,12 @@ DropConditions ConditionsOf(const SweepModels& models, const SweepDropParams& p)
   row.tilt_rad = p.tilt_rad;
   row.horizontal_speed_m_s = p.horizontal_speed_m_s;
   const SweepPlan& plan = models.plan();
-  return DropConditionsFor(row, models.effects(), plan.model ? plan.model->source : "",
-                           plan.source + ": drop " + plan.DropId(p.index));
+  DropConditions c = DropConditionsFor(row, models.effects(), plan.model ? plan.model->source : "",
+                                       plan.source + ": drop " + plan.DropId(p.index));
+  // A mesh pad has no profile for the rig's integral: the free 6-DOF pad, level and straight
+  // down unless tilted or sliding.
+  c.free = !plan.pads[p.pad].is_axisymmetric();
+  return c;
 }
 
 DropRecord Describe(const SweepPlan& plan, const SweepDropParams& p, const DropConditions& c) {
@@ -68,7 +72,7 @@ DropRecord SimulatePadSweepDrop(const SweepModels& models, const SweepDropParams
     options.rig = plan.rig;
     options.free.sample_rate_hz = plan.rig.sample_rate_hz;
     options.free.integrator.max_wall_time_s = plan.rig.integrator.max_wall_time_s;
-    options.intrusion = &models.intrusion(p.pad);
+    options.intrusion = models.has_intrusion(p.pad) ? &models.intrusion(p.pad) : nullptr;
     const PadDrop drop = SimulateDrop(plan.pads[p.pad], plan.soils[p.soil], c, options);
     const RigDropResult& d = drop.result;
     r.ok = true;
@@ -107,6 +111,18 @@ DropRecord SimulateLanderSweepDrop(const SweepModels& models, const SweepDropPar
   if (p.Given(SweepParam::kHorizontalSpeed)) sc.initial.horizontal_velocity_m_s = Eigen::Vector2d(p.horizontal_speed_m_s, 0.0);
   if (p.Given(SweepParam::kRoll)) sc.initial.roll_rad = p.roll_rad;
   if (p.Given(SweepParam::kPitch)) sc.initial.pitch_rad = p.pitch_rad;
+  if (p.Given(SweepParam::kPadSoils)) {
+    // The scenario's patches give way to one square under each pad whose soil is not the ground's.
+    sc.ground.patches.clear();
+    const PadSoilSet& set = plan.pad_soil_sets[p.pad_soils];
+    for (int i = 0; i < lander::kNumLegs; ++i) {
+      const std::string& ref = plan.soil_refs[set.soil[i]];
+      if (ref == sc.ground.default_soil) continue;
+      // (pad, half width): resolved below the pad's joint at release by BuildLanderSetup.
+      sc.ground.patches.push_back(
+          {"pad_soils_under_pad_" + std::to_string(i + 1), ref, {Eigen::Vector2d(i + 1, plan.pad_patch_half_width_m)}});
+    }
+  }
   if (plan.rig.integrator.max_wall_time_s > 0.0)
     sc.options.integrator.max_wall_time_s = plan.rig.integrator.max_wall_time_s;
 
@@ -131,6 +147,14 @@ DropRecord SimulateLanderSweepDrop(const SweepModels& models, const SweepDropPar
   r.horizontal_speed_m_s = sc.initial.horizontal_velocity_m_s.norm();
   r.zeta_N_cm3 = soil.ZetaAtGravity(sc.gravity_m_s2) / 1e6;
   try {
+    {  // the soil under each pad's joint at release, as the ground was built
+      const LanderSetup setup = BuildLanderSetup(sc);
+      for (int i = 0; i < lander::kNumLegs; ++i) {
+        const Eigen::Vector3d c = setup.initial.p_WB + setup.initial.R_WB * setup.model.legs[i].joint_B;
+        r.pad_soil[i] = models.SoilName(setup.terrain.soils[setup.terrain.SoilAt(c.x(), c.y())].name);
+      }
+      r.ground_case = PaperGroundCase(r.pad_soil);
+    }
     const LanderRun run = RunLanderScenario(sc);
     const lander::LanderRunResult& l = run.result;
     r.ok = true;
@@ -167,13 +191,24 @@ DropRecord SimulateLanderSweepDrop(const SweepModels& models, const SweepDropPar
 }  // namespace
 
 SweepModels::SweepModels(const SweepPlan& plan) : plan_(plan) {
-  for (const PadSpec& pad : plan.pads)
-    intrusions_.push_back(std::make_unique<geom::AxisymmetricIntrusion>(pad.profile, rft::Li2013Law{}));
+  for (const PadSpec& pad : plan.pads)  // none for a mesh pad: its drops are free drops
+    intrusions_.push_back(pad.is_axisymmetric()
+                              ? std::make_unique<geom::AxisymmetricIntrusion>(pad.profile, rft::Li2013Law{})
+                              : nullptr);
   if (plan.model) effects_ = ModelEffectTerms(*plan.model);
   if (plan.lander) {
     lander_soil_ = LoadSoil(plan.lander->ground.default_soil);
     if (plan.model) lander_soil_ = ApplyModel(*plan.model, lander_soil_);
+    // Soil names of every reference a lander drop's ground may hold (loaded once, not per drop).
+    soil_names_[plan.lander->ground.default_soil] = LoadSoil(plan.lander->ground.default_soil).name;
+    for (const LanderPatchSpec& patch : plan.lander->ground.patches) soil_names_[patch.soil] = LoadSoil(patch.soil).name;
+    for (size_t i = 0; i < plan.soil_refs.size(); ++i) soil_names_[plan.soil_refs[i]] = plan.soils[i].name;
   }
+}
+
+const std::string& SweepModels::SoilName(const std::string& ref) const {
+  const auto it = soil_names_.find(ref);
+  return it == soil_names_.end() ? ref : it->second;
 }
 
 SweepModels::~SweepModels() = default;

@@ -4,16 +4,19 @@
 // built once in SweepModels; SimulateSweepDrop is then a pure function of (models, index) that
 // may run on any thread. The kind of drop is chosen per drop:
 //
-//   rig drop     tilt = 0 and horizontal speed = 0: the paper's vertical rod (RunRigDrop)
-//   free drop    otherwise: the 6-DOF free pad (drop_tests/free_drop.h, RunFreeDrop), tilted
+//   rig drop     an axisymmetric pad, tilt = 0 and horizontal speed = 0: the paper's vertical rod (RunRigDrop)
+//   free drop    otherwise (a mesh pad always): the 6-DOF free pad (drop_tests/free_drop.h, RunFreeDrop), tilted
 //                about the world x axis, sliding along +x; its final tilt and horizontal travel
 //                are recorded (final_tilt_deg, horizontal_travel_m). Seconds per drop when tilted.
 //   lander drop  a lander sweep (SweepPlan::lander): the scenario with the drop's parameters,
 //                one whole lander run (seconds), recorded as its summary (pad penetrations,
-//                final roll and pitch, tipped over).
+//                final roll and pitch, tipped over) and the soil under each pad at release
+//                (pad1_soil..pad4_soil, with the paper's ground case when it is one).
 // Both pad kinds go through DropConditionsFor + SimulateDrop (drop_tests/pad_drop.h), as
 // `compare` does, with the model's effects (all on the rig; those with a 3D form on free pads).
+#include <map>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "drop_tests/effects.h"
@@ -31,17 +34,22 @@ class SweepModels {
   explicit SweepModels(const SweepPlan& plan);
   ~SweepModels();
   const SweepPlan& plan() const { return plan_; }
+  // The pad's profile integral; axisymmetric pads only (has_intrusion).
+  bool has_intrusion(int pad) const { return intrusions_[pad] != nullptr; }
   const geom::AxisymmetricIntrusion& intrusion(int pad) const { return *intrusions_[pad]; }
   const EffectTerms& effects() const { return effects_; }
   // A lander sweep: the scenario's default soil with the model applied (for drops that do not
   // set `soil`).
   const rft::SoilParameters& lander_soil() const { return lander_soil_; }
+  // A lander sweep: the soil name (as in the soil file) of a soil reference of its ground.
+  const std::string& SoilName(const std::string& ref) const;
 
  private:
   const SweepPlan& plan_;
   std::vector<std::unique_ptr<geom::AxisymmetricIntrusion>> intrusions_;
   EffectTerms effects_;  // the model's, parsed once
   rft::SoilParameters lander_soil_;
+  std::map<std::string, std::string> soil_names_;  // lander sweeps: soil reference -> name
 };
 
 // Runs drop `index` and returns its record. A drop that fails (the integrator gives up, the pad

@@ -1,5 +1,6 @@
 #include "drop_tests/sweep_export.h"
 
+#include <cmath>
 #include <filesystem>
 #include <map>
 
@@ -49,8 +50,8 @@ Dataset SweepToDataset(const std::string& sweep_dir, const ExportOptions& option
   for (const DropRecord& r : records)
     if (r.kind == "lander")
       throw MakeInputError(db_path, "drop " + r.drop_id,
-                           "a lander sweep has no single-pad traces to export as a dataset; its summaries are in "
-                           "the drops table (pad1..pad4_final_penetration_m, final_roll_deg, final_pitch_deg, "
+                           "a lander sweep has no single-pad traces to export as a dataset; `touchdown export` writes its "
+                           "summaries as lander_drops.csv (pad1..pad4_final_penetration_m, final_roll_deg, final_pitch_deg, "
                            "tipped_over)");
 
   std::vector<int64_t> again;
@@ -148,22 +149,91 @@ Dataset SweepToDataset(const std::string& sweep_dir, const ExportOptions& option
   return ds;
 }
 
+const std::vector<std::string> kLanderExportColumns = {
+    "drop_id",           "pad",          "soil",        "atmosphere",  "impact_speed_m_s",
+    "pad_mass_kg",       "gravity_m_s2", "horizontal_speed_m_s", "roll_deg", "pitch_deg",
+    "tilt_deg",          "ground_case",  "pad1_soil",   "pad2_soil",   "pad3_soil",
+    "pad4_soil",         "zeta_N_cm3",   "final_penetration_m", "peak_force_N",
+    "pad1_final_penetration_m", "pad2_final_penetration_m", "pad3_final_penetration_m",
+    "pad4_final_penetration_m", "final_roll_deg", "final_pitch_deg", "final_tilt_deg", "tipped_over",
+    "time_to_rest_s",    "max_deceleration_m_s2", "impact_energy_J", "gravity_work_J", "dissipated_energy_J",
+    "mean_conversion_rate_W", "horizontal_travel_m", "solver_steps"};
+
+namespace {
+void WriteFailedCsv(const std::vector<DropRecord>& failed, const std::string& path) {
+  WriteFileAtomically(path, [&](std::ostream& out) {
+    out << "drop_id,reason\n";
+    for (const DropRecord& r : failed) {
+      std::string reason = r.failure;
+      for (char& c : reason)
+        if (c == ',' || c == '\n' || c == '\r') c = ' ';
+      out << r.drop_id << ',' << reason << '\n';
+    }
+  });
+}
+
+// A lander sweep: its summaries as lander_drops.csv (successful drops) and failed.csv.
+ExportSummary ExportLanderSweep(const std::string& db_path, const std::vector<DropRecord>& records,
+                                const std::string& dataset_dir) {
+  ExportSummary summary;
+  summary.lander = true;
+  std::vector<DropRecord> failed;
+  for (const DropRecord& r : records) {
+    if (r.kind != "lander") throw MakeInputError(db_path, "drop " + r.drop_id, "a pad drop in a lander sweep");
+    if (!r.ok) {
+      failed.push_back(r);
+      continue;
+    }
+    for (const std::string* s : {&r.pad, &r.soil, &r.atmosphere, &r.pad_soil[0], &r.pad_soil[1], &r.pad_soil[2],
+                                 &r.pad_soil[3], &r.ground_case})
+      if (s->find_first_of(",\n\r") != std::string::npos)
+        throw MakeInputError(db_path, "drop " + r.drop_id, "a name contains a comma or line break: " + *s);
+    ++summary.exported;
+  }
+  if (summary.exported == 0) throw MakeInputError(db_path, "", "no successful drops to export");
+  summary.failed = static_cast<int64_t>(failed.size());
+  WriteStagedDirectory(dataset_dir, [&](const std::string& staging) {
+    WriteFileAtomically((fs::path(staging) / "lander_drops.csv").string(), [&](std::ostream& out) {
+      for (size_t i = 0; i < kLanderExportColumns.size(); ++i) out << (i ? "," : "") << kLanderExportColumns[i];
+      out << '\n';
+      for (const DropRecord& r : records) {
+        if (!r.ok) continue;
+        out << r.drop_id << ',' << r.pad << ',' << r.soil << ',' << r.atmosphere;
+        for (double v : {r.impact_speed_m_s, r.pad_mass_kg, r.gravity_m_s2, r.horizontal_speed_m_s, r.roll_deg,
+                         r.pitch_deg, r.tilt_deg})
+          out << ',' << FormatNumber(v);
+        out << ',' << r.ground_case;
+        for (const std::string& s : r.pad_soil) out << ',' << s;
+        for (double v : {r.zeta_N_cm3, r.final_penetration_m, r.peak_force_N, r.pad_final_penetration_m[0],
+                         r.pad_final_penetration_m[1], r.pad_final_penetration_m[2], r.pad_final_penetration_m[3],
+                         r.final_roll_deg, r.final_pitch_deg, r.final_tilt_deg, r.tipped_over, r.time_to_rest_s,
+                         r.max_deceleration_m_s2, r.impact_energy_J, r.gravity_work_J, r.dissipated_energy_J,
+                         r.mean_conversion_rate_W, r.horizontal_travel_m})
+          out << ',' << (std::isfinite(v) ? FormatNumber(v) : "");
+        out << ',' << r.solver_steps << '\n';
+      }
+    });
+    if (!failed.empty()) WriteFailedCsv(failed, (fs::path(staging) / "failed.csv").string());
+  });
+  return summary;
+}
+}  // namespace
+
 ExportSummary ExportSweep(const std::string& sweep_dir, const std::string& dataset_dir, const ExportOptions& options) {
+  {
+    const std::string db_path = ResultsDbPath(sweep_dir);
+    if (!fs::is_regular_file(db_path)) throw MakeInputError(db_path, "", "no sweep results here");
+    const ResultsDb db(db_path);
+    if (db.Meta().empty()) throw MakeInputError(db_path, "", "not a sweep results database (no meta)");
+    std::vector<DropRecord> records = db.ReadAll(/*with_traces=*/false);
+    if (!records.empty() && records.front().kind == "lander") return ExportLanderSweep(db_path, records, dataset_dir);
+  }
   ExportSummary summary;
   std::vector<DropRecord> failed;
   const Dataset ds = SweepToDataset(sweep_dir, options, &summary, &failed);
   if (ds.drops.empty()) throw MakeInputError(sweep_dir, "", "no successful drops to export");
   WriteDataset(ds, dataset_dir);
-  if (!failed.empty())
-    WriteFileAtomically((fs::path(dataset_dir) / "failed.csv").string(), [&](std::ostream& out) {
-      out << "drop_id,reason\n";
-      for (const DropRecord& r : failed) {
-        std::string reason = r.failure;
-        for (char& c : reason)
-          if (c == ',' || c == '\n' || c == '\r') c = ' ';
-        out << r.drop_id << ',' << reason << '\n';
-      }
-    });
+  if (!failed.empty()) WriteFailedCsv(failed, (fs::path(dataset_dir) / "failed.csv").string());
   return summary;
 }
 

@@ -5,13 +5,16 @@
 // drops.csv gets the required columns, final_penetration_m and peak_force_N, and the further
 // parameters and metrics as extra columns (tilt_deg, horizontal_speed_m_s, zeta_N_cm3,
 // time_to_rest_s, ..., final_tilt_deg, horizontal_travel_m: 0 for rig drops); each trace
-// t_s,penetration_m,force_N,velocity_m_s. A lander sweep is refused: its drops are not single-pad
-// drops (read its results.sqlite). Traces are those
+// t_s,penetration_m,force_N,velocity_m_s. A lander sweep's drops are not single-pad drops:
+// SweepToDataset refuses them, and ExportSweep writes DATASET_DIR/lander_drops.csv instead (one
+// row per successful lander drop: its parameters, the soil under each pad and the paper's ground
+// case, and the lander summary; kLanderExportColumns) with failed.csv beside it. Traces are those
 // stored in the database; drops stored without one (traces: none), or every drop with
 // `full_traces`, are simulated again from the sweep file (checked against the database's
 // digest), which reproduces them bit for bit. Failed drops have no trace: they are listed in
 // failed.csv (drop_id,reason) beside drops.csv and left out of drops.csv.
 #include <string>
+#include <vector>
 
 #include "drop_tests/dataset.h"
 #include "drop_tests/results_db.h"
@@ -25,7 +28,11 @@ struct ExportOptions {
 
 struct ExportSummary {
   int64_t exported = 0, failed = 0, resimulated = 0;
+  bool lander = false;  // a lander sweep: lander_drops.csv, no drops.csv
 };
+
+// The columns of lander_drops.csv, in order.
+extern const std::vector<std::string> kLanderExportColumns;
 
 // The dataset in memory (traces included).
 Dataset SweepToDataset(const std::string& sweep_dir, const ExportOptions& options, ExportSummary* summary = nullptr,

@@ -1,5 +1,6 @@
 #include "drop_tests/sweep_spec.h"
 
+#include <algorithm>
 #include <cinttypes>
 #include <cmath>
 #include <cstdio>
@@ -24,7 +25,7 @@ constexpr int64_t kMaxSweepDrops = int64_t{1} << 40;
 constexpr SweepParam kAll[kSweepParamCount] = {SweepParam::kPad,     SweepParam::kSoil, SweepParam::kImpactSpeed,
                                                SweepParam::kMass,    SweepParam::kGravity, SweepParam::kTilt,
                                                SweepParam::kHorizontalSpeed, SweepParam::kZeta, SweepParam::kRoll,
-                                               SweepParam::kPitch};
+                                               SweepParam::kPitch, SweepParam::kPadSoils};
 
 std::optional<SweepParam> ParamFromKey(const std::string& key) {
   for (SweepParam p : kAll)
@@ -32,7 +33,16 @@ std::optional<SweepParam> ParamFromKey(const std::string& key) {
   return std::nullopt;
 }
 
-bool IsName(SweepParam p) { return p == SweepParam::kPad || p == SweepParam::kSoil; }
+bool IsName(SweepParam p) { return p == SweepParam::kPad || p == SweepParam::kSoil || p == SweepParam::kPadSoils; }
+
+// Table II of Sutoh et al. 2017: the packing under pads 1..4 (clockwise from front-left).
+struct PaperCase {
+  const char* label;
+  std::array<const char*, 4> soils;
+};
+constexpr PaperCase kPaperCases[] = {{"A", {"fjs1_lp", "fjs1_lp", "fjs1_lp", "fjs1_lp"}},
+                                     {"B", {"fjs1_cp", "fjs1_lp", "fjs1_lp", "fjs1_lp"}},
+                                     {"C", {"fjs1_cp", "fjs1_cp", "fjs1_lp", "fjs1_lp"}}};
 
 double ToSi(SweepParam p, double v) {
   if (p == SweepParam::kTilt || p == SweepParam::kRoll || p == SweepParam::kPitch) return v * kDeg;
@@ -77,11 +87,8 @@ class Loader {
       if (p == SweepParam::kPad) {
         for (size_t i = 0; i < pad_refs_.size(); ++i)
           if (pad_refs_[i] == ref) return static_cast<double>(i);
-        PadSpec pad = LoadPad(ref);
-        // Level drops run on the rig, which integrates an axisymmetric profile.
-        if (pad.profile.points.empty())
-          throw MakeInputError(pad.source, "", "a mesh pad has no profile for the rig drop: sweeps take axisymmetric pads");
-        plan_.pads.push_back(std::move(pad));
+        // A mesh pad (no profile for the rig's integral) runs every drop as a free 6-DOF drop.
+        plan_.pads.push_back(LoadPad(ref));
         pad_refs_.push_back(ref);
         return static_cast<double>(plan_.pads.size() - 1);
       }
@@ -96,7 +103,36 @@ class Loader {
     }
   }
 
+  // A `pad_soils` value (a Table II letter or four soils) to an index into plan.pad_soil_sets.
+  double PadSoils(const YAML::Node& n, const YamlFields& f, const std::string& path) {
+    PadSoilSet set;
+    if (n.IsScalar()) {
+      const PaperCase* found = nullptr;
+      for (const PaperCase& c : kPaperCases)
+        if (n.Scalar() == c.label) found = &c;
+      if (!found)
+        throw MakeInputError(f.file(), path, "must be a ground case of the paper's Table II (A, B or C) or a list "
+                                             "of four soils, got '" + n.Scalar() + "'");
+      set.label = found->label;
+      for (int i = 0; i < 4; ++i) set.soil[i] = static_cast<int>(NameIndex(SweepParam::kSoil, YAML::Node(found->soils[i]), f, path));
+    } else if (n.IsSequence() && n.size() == 4) {
+      for (int i = 0; i < 4; ++i)
+        set.soil[i] = static_cast<int>(NameIndex(SweepParam::kSoil, n[i], f, path + "[" + std::to_string(i) + "]"));
+    } else {
+      throw MakeInputError(f.file(), path, "must be a ground case of the paper's Table II (A, B or C) or a list of "
+                                           "four soils (pads 1..4, clockwise from front-left), got " +
+                                           (n.IsSequence() ? "a list of " + std::to_string(n.size())
+                                                           : std::string("a mapping")));
+    }
+    for (size_t i = 0; i < plan_.pad_soil_sets.size(); ++i)
+      if (plan_.pad_soil_sets[i].label == set.label && plan_.pad_soil_sets[i].soil == set.soil)
+        return static_cast<double>(i);
+    plan_.pad_soil_sets.push_back(set);
+    return static_cast<double>(plan_.pad_soil_sets.size() - 1);
+  }
+
   double Scalar(SweepParam p, const YAML::Node& n, const YamlFields& f, const std::string& path) {
+    if (p == SweepParam::kPadSoils) return PadSoils(n, f, path);
     if (IsName(p)) return NameIndex(p, n, f, path);
     double v = 0.0;
     if (!n.IsScalar() || !YAML::convert<double>::decode(n, v))
@@ -126,7 +162,9 @@ std::string FileText(const std::string& path) {
   return text.str();
 }
 
-bool IsLanderParam(SweepParam p) { return p == SweepParam::kRoll || p == SweepParam::kPitch; }
+bool IsLanderParam(SweepParam p) {
+  return p == SweepParam::kRoll || p == SweepParam::kPitch || p == SweepParam::kPadSoils;
+}
 bool IsSinglePadOnly(SweepParam p) {
   return p == SweepParam::kPad || p == SweepParam::kMass || p == SweepParam::kTilt || p == SweepParam::kZeta;
 }
@@ -148,8 +186,15 @@ const char* SweepParamKey(SweepParam p) {
     case SweepParam::kZeta: return "zeta_N_cm3";
     case SweepParam::kRoll: return "roll_deg";
     case SweepParam::kPitch: return "pitch_deg";
+    case SweepParam::kPadSoils: return "pad_soils";
   }
   return "?";
+}
+
+std::string PaperGroundCase(const std::array<std::string, 4>& soil_names) {
+  for (const PaperCase& c : kPaperCases)
+    if (std::equal(soil_names.begin(), soil_names.end(), c.soils.begin())) return c.label;
+  return "";
 }
 
 uint64_t Fnv1a64(const std::string& text) {
@@ -217,6 +262,7 @@ SweepDropParams SweepPlan::DropAt(int64_t index) const {
   if (has(SweepParam::kZeta)) d.zeta_N_m3 = at(SweepParam::kZeta);
   if (has(SweepParam::kRoll)) d.roll_rad = at(SweepParam::kRoll);
   if (has(SweepParam::kPitch)) d.pitch_rad = at(SweepParam::kPitch);
+  if (has(SweepParam::kPadSoils)) d.pad_soils = static_cast<int>(at(SweepParam::kPadSoils));
   for (SweepParam p : kAll)
     if (has(p)) d.given |= 1u << static_cast<int>(p);
   return d;
@@ -234,10 +280,18 @@ std::string SweepPlan::DigestText() const {
                   ";traces=" + TraceStorageName(traces) + ";max=" + std::to_string(trace_max_samples) +
                   ";rest=" + FormatNumber(rig.rest_duration_s) + ";rate=" + FormatNumber(rig.sample_rate_hz) + ";";
   for (const PadSpec& p : pads) {
-    s += "pad:" + p.name + ":" + FormatNumber(p.mass_kg) + ":" + FormatNumber(p.profile.thickness_m()) + ":";
+    s += "pad:" + p.name + ":" + FormatNumber(p.mass_kg) + ":" +
+         (p.is_axisymmetric() ? FormatNumber(p.profile.thickness_m()) : std::string("mesh")) + ":";
     for (const auto& pt : p.profile.points) s += FormatNumber(pt.x_m) + "/" + FormatNumber(pt.u_m) + ",";
-    s += ";";
+    // The pad file (mesh, segments, inertia, reference point) and a mesh pad's mesh shape free drops.
+    char hex[17];
+    std::snprintf(hex, sizeof hex, "%016" PRIx64, Fnv1a64(FileText(p.source) + '\0' + FileText(p.mesh_file)));
+    s += std::string(":files=") + hex + ";";
   }
+  for (const PadSoilSet& set : pad_soil_sets)
+    s += "pad_soils:" + set.label + "=" + std::to_string(set.soil[0]) + "," + std::to_string(set.soil[1]) + "," +
+         std::to_string(set.soil[2]) + "," + std::to_string(set.soil[3]) + ";";
+  if (!pad_soil_sets.empty()) s += "pad_patch_half_width=" + FormatNumber(pad_patch_half_width_m) + ";";
   for (const rft::SoilParameters& soil : soils)
     s += "soil:" + soil.name + ":" + soil.atmosphere + ":" + FormatNumber(soil.zeta_N_m3) + ":" +
          FormatNumber(soil.reference_gravity_m_s2) + ";";
@@ -271,7 +325,7 @@ SweepPlan LoadSweepPlan(const std::string& path, const std::string& model_overri
   plan.name = f.StringOr("name", fs::path(path).stem().string());
   if (f.Has("lander")) {
     const YamlFields l = f.Child("lander");
-    l.RequireOnly({"scenario"});
+    l.RequireOnly({"scenario", "pad_patch_half_width_m"});
     std::string ref = l.String("scenario");
     const bool is_path = ref.find('/') != std::string::npos || ref.ends_with(".yaml") || ref.ends_with(".yml");
     if (is_path && fs::path(ref).is_relative()) ref = (fs::path(base) / ref).lexically_normal().string();
@@ -290,6 +344,15 @@ SweepPlan LoadSweepPlan(const std::string& path, const std::string& model_overri
     char hex[17];
     std::snprintf(hex, sizeof hex, "%016" PRIx64, Fnv1a64(files));
     plan.lander_digest = hex;
+    // The half width of the patches `pad_soils` lays under the pads: given, or the scenario's own
+    // under_pad patches' (unresolved there as (pad, half width)), or 0.08 m as the shipped scenarios.
+    for (const LanderPatchSpec& patch : plan.lander->ground.patches)
+      if (patch.polygon_W.size() == 1) plan.pad_patch_half_width_m = patch.polygon_W[0].y();
+    if (l.Has("pad_patch_half_width_m")) {
+      plan.pad_patch_half_width_m = l.Positive("pad_patch_half_width_m");
+      if (plan.pad_patch_half_width_m > 1.0)
+        l.Fail("pad_patch_half_width_m", "must be at most 1 m, got " + FormatNumber(plan.pad_patch_half_width_m));
+    }
     for (const char* key : {"rest_duration_s", "trace_max_samples"})
       if (f.Has(key)) f.Fail(key, "a lander sweep runs the scenario's simulation options; remove it");
     if (f.Has("traces") && f.String("traces") != "none")
@@ -323,13 +386,16 @@ SweepPlan LoadSweepPlan(const std::string& path, const std::string& model_overri
   auto claim = [&](const YamlFields& block, const std::string& key) -> SweepParam {
     const std::optional<SweepParam> p = ParamFromKey(key);
     if (!p) block.Fail(key, "unknown parameter (pad, soil, impact_speed_m_s, pad_mass_kg, gravity_m_s2, tilt_deg, "
-                            "horizontal_speed_m_s, zeta_N_cm3; lander sweeps: roll_deg, pitch_deg)");
+                            "horizontal_speed_m_s, zeta_N_cm3; lander sweeps: roll_deg, pitch_deg, pad_soils)");
     if (seen[static_cast<int>(*p)]) block.Fail(key, "set in more than one of fixed, grid and random");
     if (plan.lander && IsSinglePadOnly(*p))
       block.Fail(key, "a single-pad parameter; a lander sweep varies impact_speed_m_s, horizontal_speed_m_s, "
-                      "roll_deg, pitch_deg, gravity_m_s2 and soil");
+                      "roll_deg, pitch_deg, gravity_m_s2, soil and pad_soils");
     if (!plan.lander && IsLanderParam(*p))
       block.Fail(key, "a lander parameter: it needs a `lander: {scenario: ...}` block (single pads take tilt_deg)");
+    const SweepParam other = *p == SweepParam::kSoil ? SweepParam::kPadSoils : SweepParam::kSoil;
+    if ((*p == SweepParam::kSoil || *p == SweepParam::kPadSoils) && seen[static_cast<int>(other)])
+      block.Fail(key, "soil (the whole ground) and pad_soils (the soil under each pad) exclude each other; keep one");
     seen[static_cast<int>(*p)] = true;
     return *p;
   };
@@ -434,12 +500,17 @@ SweepPlan LoadSweepPlan(const std::string& path, const std::string& model_overri
         if (r.param == p) return true;
       return false;
     };
-    if (may_be_non_zero(SweepParam::kTilt) || may_be_non_zero(SweepParam::kHorizontalSpeed))
+    const PadSpec* mesh_pad = nullptr;
+    for (const PadSpec& pad : plan.pads)
+      if (!pad.is_axisymmetric() && !mesh_pad) mesh_pad = &pad;
+    if (may_be_non_zero(SweepParam::kTilt) || may_be_non_zero(SweepParam::kHorizontalSpeed) || mesh_pad)
       for (const std::string& id : ActiveEffects(ModelEffectTerms(*model)))
         if (const std::optional<std::string> why = No3DFormReason(id))
           throw MakeInputError(model->source, "effects." + id,
-                               *why + "; this sweep has free drops (non-zero tilt_deg or horizontal_speed_m_s), "
-                                      "which cannot apply it");
+                               *why + "; this sweep has free drops (" +
+                                   (mesh_pad ? "mesh pad " + mesh_pad->name + " from " + mesh_pad->source
+                                             : std::string("non-zero tilt_deg or horizontal_speed_m_s")) +
+                                   "), which cannot apply it");
   }
   return plan;
 }

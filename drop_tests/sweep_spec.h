@@ -31,16 +31,35 @@
 // Lander parameters, each defaulting to the scenario's value: impact_speed_m_s (the first pad's
 // vertical touchdown speed; replaces the scenario's drop height), horizontal_speed_m_s (body
 // velocity along world +x, y = 0), roll_deg and pitch_deg (initial attitude, aerospace signs as in
-// the scenario), gravity_m_s2 and soil (the ground's default soil; soil patches keep theirs).
-// pad, pad_mass_kg, tilt_deg and zeta_N_cm3 are single-pad parameters and refused there; roll_deg
-// and pitch_deg are refused in single-pad sweeps. The model (`model:`/--model) applies to the
-// lander's soils as in `touchdown lander --model`.
+// the scenario), gravity_m_s2, soil (the ground's default soil; soil patches keep theirs) and
+// pad_soils (the soil under each pad, pads numbered clockwise from pad 1 front-left as in the
+// scenarios). A pad_soils value is a ground case of the paper's Table II, `A` (LP LP LP LP), `B`
+// (CP LP LP LP) or `C` (CP CP LP LP) with LP = fjs1_lp and CP = fjs1_cp, or a list of four soils
+// (names or paths):
+//
+//   grid: {pad_soils: [A, B, C]}
+//   grid: {pad_soils: [[fjs1_cp, fjs1_lp, fjs1_lp, fjs1_lp], [fjs1_lp, fjs1_cp, fjs1_cp, fjs1_lp]]}
+//
+// It replaces the scenario's soil patches: the ground keeps the scenario's default soil, and each
+// pad whose soil differs from it gets a square patch of its soil centred below its ball joint at
+// release (half width `lander: {pad_patch_half_width_m}`, default: the scenario's own under_pad
+// patches' half width, else 0.08 m as in data/scenarios/lander_case_B.yaml), so `A`, `B`, `C`
+// on lander_case_A reproduce the scenarios lander_case_A, _B, _C. soil and pad_soils are
+// exclusive. pad, pad_mass_kg, tilt_deg and zeta_N_cm3 are single-pad parameters and refused
+// there; roll_deg, pitch_deg and pad_soils are refused in single-pad sweeps. The model
+// (`model:`/--model) applies to the lander's soils as in `touchdown lander --model`.
+//
+// Pads may be axisymmetric or `kind: mesh` (data/pads/hex.yaml). A mesh pad has no profile for
+// the rig's integral, so each of its drops is a free 6-DOF drop (drop_tests/free_drop.h), level
+// and straight down unless tilted or sliding; model effects without a 3D form are refused at load
+// when the sweep has a mesh pad.
 //
 // Drop i is grid point g = i / S and random sample s = i % S (S = samples, 1 without random);
 // the grid's first-listed parameter varies slowest. Random sample s draws the same values at
 // every grid point (common random numbers, so pads are compared under identical conditions),
 // from a counter-based generator keyed by (seed, s, parameter): any drop's parameters follow
 // from its index alone, independent of threads, ranks or shards.
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -53,8 +72,10 @@
 
 namespace touchdown::drop {
 
-enum class SweepParam { kPad, kSoil, kImpactSpeed, kMass, kGravity, kTilt, kHorizontalSpeed, kZeta, kRoll, kPitch };
-inline constexpr int kSweepParamCount = 10;
+enum class SweepParam {
+  kPad, kSoil, kImpactSpeed, kMass, kGravity, kTilt, kHorizontalSpeed, kZeta, kRoll, kPitch, kPadSoils
+};
+inline constexpr int kSweepParamCount = 11;
 const char* SweepParamKey(SweepParam p);  // the YAML key, e.g. "impact_speed_m_s"
 
 enum class TraceStorage { kNone, kDecimated, kFull };
@@ -71,6 +92,7 @@ struct SweepDropParams {
   double horizontal_speed_m_s = 0.0;
   std::optional<double> zeta_N_m3;  // at the soil's reference gravity; default: the soil's
   double roll_rad = 0.0, pitch_rad = 0.0;  // lander sweeps
+  int pad_soils = 0;  // lander sweeps: index into SweepPlan::pad_soil_sets
   uint32_t given = 0;  // bit p set when parameter p was set by the sweep (else: its default)
   bool Given(SweepParam p) const { return (given >> static_cast<int>(p)) & 1u; }
 };
@@ -87,6 +109,16 @@ struct SweepRandom {  // a random parameter
   std::vector<double> values;  // SI; pad/soil: indices
 };
 
+// The soils under a lander's four pads (a `pad_soils` value): indices into SweepPlan::soils,
+// pads clockwise from pad 1 (front-left).
+struct PadSoilSet {
+  std::string label;  // the Table II case ("A", "B", "C") when given by its letter, else ""
+  std::array<int, 4> soil{};
+};
+
+// The Table II case ("A", "B", "C") four soil names make (LP = fjs1_lp, CP = fjs1_cp), or "".
+std::string PaperGroundCase(const std::array<std::string, 4>& soil_names);
+
 struct SweepPlan {
   std::string name;
   std::string source;  // the sweep file
@@ -96,6 +128,8 @@ struct SweepPlan {
   std::vector<std::string> soil_refs;      // as resolved from the file (name or path), per soil
   std::optional<LanderScenario> lander;    // a lander sweep: the scenario every drop starts from
   std::string lander_digest;               // digest of the scenario, lander, pad (and mesh) files
+  std::vector<PadSoilSet> pad_soil_sets;    // the `pad_soils` values
+  double pad_patch_half_width_m = 0.08;     // of the patches `pad_soils` puts under the pads
   std::optional<double> fixed[kSweepParamCount];
   std::vector<SweepAxis> grid;
   std::vector<SweepRandom> random;

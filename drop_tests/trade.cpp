@@ -10,12 +10,25 @@
 #include "drop_tests/atomic_file.h"
 #include "drop_tests/compare_gnuplot.h"
 #include "drop_tests/dataset_csv.h"
+#include "rft/input_error.h"
 
 namespace touchdown::drop {
 
 namespace fs = std::filesystem;
 
+void CheckTradePlan(const SweepPlan& plan) {
+  if (plan.lander)
+    throw MakeInputError(plan.source, "lander",
+                         "trade compares footpads dropped on their own (pad: [...]); a lander sweep runs one pad "
+                         "design on four legs. Run it with `touchdown sweep` and read its summaries with "
+                         "`touchdown export`");
+}
+
 std::vector<TradeRow> TradeTable(const std::vector<DropRecord>& records) {
+  for (const DropRecord& r : records)
+    if (r.kind == "lander")
+      throw MakeInputError("drop " + r.drop_id, "drop_kind",
+                           "a lander drop; trade tabulates single-pad drops only");
   std::map<std::tuple<std::string, double, std::string>, TradeRow> rows;  // (soil, speed, pad)
   for (const DropRecord& r : records) {
     TradeRow& row = rows[{r.soil, r.impact_speed_m_s, r.pad}];
@@ -129,12 +142,12 @@ void WriteTradeOutputs(const std::vector<TradeRow>& rows, const std::string& out
   };
   std::string gp =
       "set datafile separator ','\nset termoption noenhanced\nset grid\nset key outside right\n"
-      "set terminal pngcairo size 1500,450 font 'sans,10'\nset output 'plots/trade.png'\n"
+      "set terminal pngcairo noenhanced size 1500,450 font 'sans,10'\nset output 'plots/trade.png'\n"
       "set multiplot layout 1,3 title 'Footpad trade study against impact speed'\nset xlabel 'impact speed [m/s]'\n"
       "set key off\nset ylabel 'final penetration [mm]'\n" + plot("1:($2*1000)") +
       "set ylabel 'peak force [N]'\n" + plot("1:3") + "set key outside right\nset ylabel 'energy-conversion rate [W]'\n" +
       plot("1:4") + "unset multiplot\n";
-  gp += "set terminal pngcairo size 900,650 font 'sans,10'\nset output 'plots/pareto.png'\n"
+  gp += "set terminal pngcairo noenhanced size 900,650 font 'sans,10'\nset output 'plots/pareto.png'\n"
         "set title 'Peak force against final penetration (lower-left is better); fronts per soil and speed'\n"
         "set xlabel 'final penetration [mm]'\nset ylabel 'peak force [N]'\nset key outside right\nplot ";
   for (size_t i = 0; i < series_files.size(); ++i)

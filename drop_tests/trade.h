@@ -18,6 +18,7 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include "drop_tests/results_db.h"
+#include "drop_tests/sweep_spec.h"
 
 namespace touchdown::drop {
 
@@ -29,7 +30,12 @@ struct TradeRow {
   bool pareto = false;
 };
 
-// Rows sorted by soil, speed, pad, with the Pareto flags set.
+// A trade study compares footpads dropped on their own; a lander sweep (one pad design on four
+// legs, whole-lander summaries) is refused with an InputError naming the sweep file and field.
+void CheckTradePlan(const SweepPlan& plan);
+
+// Rows sorted by soil, speed, pad, with the Pareto flags set. Lander records (drop_kind lander)
+// are refused (InputError).
 std::vector<TradeRow> TradeTable(const std::vector<DropRecord>& records);
 // Marks rows[i].pareto for rows of one condition (indices), by the rule above.
 void MarkParetoFront(std::vector<TradeRow>& rows, const std::vector<size_t>& condition);

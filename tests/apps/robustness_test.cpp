@@ -220,6 +220,17 @@ std::vector<Case> Cases() {
   c.push_back({"sweep YAML", "--max-drop-wall-time 1e-9: every drop over its limit",
                "sweep limit.yaml --max-drop-wall-time 1e-9" + sweep_run + "out_w10",
                {{"limit.yaml", Sweep(kSweepBase + "grid: {impact_speed_m_s: [0.7, 1.5]}\n")}}});
+  const std::string lander_sweep = "lander: {scenario: lander_case_A}\n";
+  c.push_back({"sweep YAML", "pad_soils case D (Table II has A, B, C)", "sweep case_d.yaml" + sweep_run + "out_w11",
+               {{"case_d.yaml", Sweep(lander_sweep + "grid: {pad_soils: [A, D]}\n")}}});
+  c.push_back({"sweep YAML", "pad_soils with three soils", "sweep three.yaml" + sweep_run + "out_w12",
+               {{"three.yaml", Sweep(lander_sweep + "grid: {pad_soils: [[fjs1_cp, fjs1_lp, fjs1_lp]]}\n")}}});
+  c.push_back({"sweep YAML", "soil and pad_soils both", "sweep both_soils.yaml" + sweep_run + "out_w13",
+               {{"both_soils.yaml", Sweep(lander_sweep + "fixed: {soil: fjs1_cp}\ngrid: {pad_soils: [A, B]}\n")}}});
+  c.push_back({"sweep YAML", "pad_soils in a single-pad sweep", "sweep pad_soils_pad.yaml" + sweep_run + "out_w14",
+               {{"pad_soils_pad.yaml", Sweep(kSweepBase + "grid: {impact_speed_m_s: [1], pad_soils: [A]}\n")}}});
+  c.push_back({"sweep YAML", "trade on a lander sweep", "trade trade_lander.yaml --out out_w15",
+               {{"trade_lander.yaml", Sweep(lander_sweep + "grid: {impact_speed_m_s: [1.0, 1.4]}\n")}}});
   // Lander scenario YAML.
   c.push_back({"lander YAML", "unknown lander", "lander no_lander.yaml --out out_l1",
                {{"no_lander.yaml", Lander("lander: apollo\n" + kLanderGround + kLanderInitial)}}});

@@ -5,11 +5,14 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "drop_tests/sweep_spec.h"
 #include "drop_tests/trade.h"
+#include "rft/input_error.h"
 
 namespace {
 
@@ -90,6 +93,35 @@ TEST(TradeCli, PaperPadsCurvedIsDeepestGentlestAndOnTheFront) {
     EXPECT_GT(fs::file_size(dir / "out" / "plots" / "trade.png"), 5000u);
     EXPECT_GT(fs::file_size(dir / "out" / "plots" / "pareto.png"), 5000u);
   }
+  fs::remove_all(dir);
+}
+
+TEST(TradeLander, LanderSweepIsRefusedBeforeAnythingRuns) {
+  // In the library: the plan (naming the sweep file and its lander field) and lander records.
+  const std::string sweep = std::string(TOUCHDOWN_SOURCE_DIR) + "/data/sweeps/lander_speed_soil.yaml";
+  try {
+    CheckTradePlan(LoadSweepPlan(sweep));
+    ADD_FAILURE() << "accepted a lander sweep";
+  } catch (const touchdown::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("lander_speed_soil.yaml: lander: trade compares footpads"), std::string::npos)
+        << e.what();
+  }
+  std::vector<DropRecord> records(1);
+  records[0].kind = "lander";
+  records[0].drop_id = "d0";
+  EXPECT_THROW(TradeTable(records), touchdown::InputError);
+  // From the CLI: exit status 2, one line naming the file, and no output directory.
+  const fs::path dir = fs::temp_directory_path() / ("touchdown_trade_lander_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string cmd = std::string(TOUCHDOWN_BINARY) + " trade " + sweep + " --out " + (dir / "out").string() +
+                          " >/dev/null 2>" + (dir / "err.txt").string();
+  const int raw = std::system(cmd.c_str());
+  EXPECT_TRUE(WIFEXITED(raw) && WEXITSTATUS(raw) == 2);
+  EXPECT_FALSE(fs::exists(dir / "out"));
+  std::ifstream err(dir / "err.txt");
+  const std::string text((std::istreambuf_iterator<char>(err)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("lander_speed_soil.yaml: lander: "), std::string::npos) << text;
   fs::remove_all(dir);
 }
 
