@@ -12,7 +12,7 @@
 //                one whole lander run (seconds), recorded as its summary (pad penetrations,
 //                final roll and pitch, tipped over).
 // Both pad kinds go through DropConditionsFor + SimulateDrop (drop_tests/pad_drop.h), as
-// `compare` does, with the model's effects (all on the rig; those with a 3D form on free pads).
+// `compare` does, with the model's effects (all of them, on free pads in their 3D form).
 #include <memory>
 #include <vector>
 

@@ -89,6 +89,25 @@ template <bool kAreaMoment>
   return s;
 }
 
+// d(submerged area)/d(d_k) of a triangle of area `area` for its three vertex depths (0 when all
+// are below: the whole triangle). One vertex i below: area f, f = d_i^2 / ((d_i - d_j)(d_i - d_k)),
+// df/dd_j = f / (d_i - d_j), df/dd_k = f / (d_i - d_k), df/dd_i = f (2 / d_i - 1/(d_i - d_j) -
+// 1/(d_i - d_k)); two below: area (1 - f) at the emerged vertex k, so minus those.
+inline void ClippedAreaGradient(double area, const double d[3], double grad[3]) {
+  grad[0] = grad[1] = grad[2] = 0.0;
+  const int below = (d[0] > 0.0) + (d[1] > 0.0) + (d[2] > 0.0);
+  if (below == 3 || below == 0) return;
+  const bool corner_below = below == 1;
+  const int i = corner_below ? (d[0] > 0.0 ? 0 : (d[1] > 0.0 ? 1 : 2)) : (d[0] <= 0.0 ? 0 : (d[1] <= 0.0 ? 1 : 2));
+  const int j = (i + 1) % 3, k = (i + 2) % 3;
+  if (d[i] == 0.0) return;  // the emerged corner vanishes: no area changes to first order
+  const double a = d[i] - d[j], b = d[i] - d[k];
+  const double f = area * d[i] * d[i] / (a * b), sign = corner_below ? 1.0 : -1.0;
+  grad[j] = sign * f / a;
+  grad[k] = sign * f / b;
+  grad[i] = sign * f * (2.0 / d[i] - 1.0 / a - 1.0 / b);
+}
+
 // ---- Depth law z_ref (z / z_ref)^p (StressLaw3D::depth_law, p != 1) ----------------------------
 //
 // The integrals int d^p dA and int d^p r dA over a triangle on which d >= 0 is linear. Cutting it
@@ -320,6 +339,12 @@ ContactWrench ContactWrenchImpl(const SurfaceElements& elements, const PadKinema
   // Compaction transient (area integrals, scaled at the end), penetration and footprint.
   Eigen::Vector3d compaction_force = Eigen::Vector3d::Zero(), compaction_moment = Eigen::Vector3d::Zero();
   double penetration = 0.0, footprint_area = 0.0, footprint_rate = 0.0;
+  Vec deepest_B{0.0, 0.0, 0.0};  // the deepest submerged vertex (penetration rate)
+  // Rate of every depth under the translation alone: g . v0 (g = (sx, sy, -1) over a plane; the
+  // vertical rate on any other ground).
+  const Eigen::Vector3d g_W = plane != nullptr ? Eigen::Vector3d(plane->slope_x(), plane->slope_y(), -1.0)
+                                               : Eigen::Vector3d(0.0, 0.0, -1.0);
+  const double depth_rate0 = g_W.dot(kinematics.v_WB_W);
   double run_depth = 0.0, run_area = 0.0;
   Vec run_depth_moment{0.0, 0.0, 0.0}, run_area_moment{0.0, 0.0, 0.0};
   auto flush = [&]() {
@@ -347,7 +372,8 @@ ContactWrench ContactWrenchImpl(const SurfaceElements& elements, const PadKinema
       for (int k = 0; k < 3; ++k) d[k] = ground.Depth(p_WB + rotate(p[k]));
     }
     if (d[0] <= 0.0 && d[1] <= 0.0 && d[2] <= 0.0) continue;
-    penetration = std::max(penetration, std::max(d[0], std::max(d[1], d[2])));
+    for (int k = 0; k < 3; ++k)
+      if (d[k] > penetration) penetration = d[k], deepest_B = p[k];
 
     const Vec n_B = Load(nb + 3 * e);
     if (!spinning) {
@@ -373,7 +399,8 @@ ContactWrench ContactWrenchImpl(const SurfaceElements& elements, const PadKinema
       if ((run_dynamic || run_compaction) && run_leads) {
         const Submerged s = Clip<kPower, true>(areas[e], d, p, exponent, depth_scale);
         submerged_area += s.area;
-        if (footprint && run_nz < 0.0) footprint_area -= run_nz * s.area, footprint_rate -= run_nz * s.area_rate;
+        if (footprint && run_nz < 0.0)
+          footprint_area -= run_nz * s.area, footprint_rate -= run_nz * s.area_rate * depth_rate0;
         if (!(s.depth_integral > 0.0)) continue;
         ++leading;
         run_depth += s.depth_integral;
@@ -383,7 +410,8 @@ ContactWrench ContactWrenchImpl(const SurfaceElements& elements, const PadKinema
       } else {
         const Submerged s = Clip<kPower, false>(areas[e], d, p, exponent, depth_scale);
         submerged_area += s.area;
-        if (footprint && run_nz < 0.0) footprint_area -= run_nz * s.area, footprint_rate -= run_nz * s.area_rate;
+        if (footprint && run_nz < 0.0)
+          footprint_area -= run_nz * s.area, footprint_rate -= run_nz * s.area_rate * depth_rate0;
         if (!run_leads || !(s.depth_integral > 0.0)) continue;
         ++leading;
         run_depth += s.depth_integral;
@@ -396,7 +424,16 @@ ContactWrench ContactWrenchImpl(const SurfaceElements& elements, const PadKinema
     const Submerged s = Clip<kPower, false>(areas[e], d, p, exponent, depth_scale);
     submerged_area += s.area;
     const Eigen::Vector3d n_W = rotate(n_B);
-    if (footprint && n_W.z() < 0.0) footprint_area -= n_W.z() * s.area, footprint_rate -= n_W.z() * s.area_rate;
+    if (footprint && n_W.z() < 0.0) {
+      // d/dt (-n_z a) with n rotating (dn/dt = w x n) and each vertex depth at its own rate.
+      double grad[3];
+      ClippedAreaGradient(areas[e], d, grad);
+      double area_dot = 0.0;
+      for (int k = 0; k < 3; ++k)
+        if (grad[k] != 0.0) area_dot += grad[k] * (depth_rate0 + g_W.dot(w0.cross(rotate(p[k]))));
+      footprint_area -= n_W.z() * s.area;
+      footprint_rate -= n_W.z() * area_dot + w0.cross(n_W).z() * s.area;
+    }
     if (!(s.depth_integral > 0.0)) continue;
     const Eigen::Vector3d depth_moment_W = rotate(s.depth_moment);
     const Eigen::Vector3d v_W = v0 + w0.cross(depth_moment_W / s.depth_integral);
@@ -434,8 +471,11 @@ ContactWrench ContactWrenchImpl(const SurfaceElements& elements, const PadKinema
   out.submerged_area_m2 = submerged_area;
   out.leading_elements = leading;
   out.penetration_m = penetration;
-  out.footprint_area_m2 = footprint_area;
-  out.footprint_area_rate_m = footprint_rate;
+  if (footprint) {
+    out.footprint_area_m2 = footprint_area;
+    out.footprint_area_rate_m2_s = footprint_rate;
+    out.penetration_rate_m_s = penetration > 0.0 ? depth_rate0 + g_W.dot(w0.cross(rotate(deepest_B))) : 0.0;
+  }
   return out;
 }
 }  // namespace

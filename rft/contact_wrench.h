@@ -46,11 +46,14 @@ struct ContactWrench {
   double submerged_area_m2 = 0.0;                      // all elements below the surface
   int leading_elements = 0;                            // submerged and leading
   double penetration_m = 0.0;  // deepest vertex depth of the submerged elements (0: none) [m]
-  // Only when the law has added mass (StressLaw3D::added_mass_density_kg_m3() > 0), else 0:
-  // the horizontal projection of the submerged downward-facing surface (n_z < 0) [m^2], and its
-  // derivative along a downward translation of the pad [m^2/m] (rft/entrained_mass.h).
+  // Only when the law has added mass (StressLaw3D::added_mass_density_kg_m3() > 0), else 0
+  // (rft/entrained_mass.h): the footprint, i.e. the horizontal projection of the submerged
+  // downward-facing surface (n_z < 0) [m^2], and its time derivative under the pad's motion
+  // [m^2/s] (vertex depth rates and the rotation of the normals; exact over a plane, the vertical
+  // rate on any other ground); the rate of the penetration (the deepest vertex) [m/s].
   double footprint_area_m2 = 0.0;
-  double footprint_area_rate_m = 0.0;
+  double footprint_area_rate_m2_s = 0.0;
+  double penetration_rate_m_s = 0.0;
 };
 
 ContactWrench ComputeContactWrench(const SurfaceElements& elements, const PadKinematics& kinematics,

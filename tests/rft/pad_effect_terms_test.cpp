@@ -297,7 +297,8 @@ TEST(RftCompactionPeak, PlateGetsKcV2AExpOfThePadDepth) {
 }
 
 // The footprint of a level revolved pad is the projected area of its submerged bottom (pi a^2 on
-// the polygon), and its rate along a downward translation matches a finite difference.
+// the polygon); its rate and the penetration rate match finite differences in time along the
+// motion, translating straight down (the rig's dA/dd v) and tilted, sliding and spinning.
 TEST(RftAddedMass, FootprintAndItsRateOnARevolvedPad) {
   const int sectors = 128;
   // A chamfered pad: flat to x = 0.04, 45-degree chamfer to (0.05, 0.01), wall to 0.016.
@@ -305,30 +306,50 @@ TEST(RftAddedMass, FootprintAndItsRateOnARevolvedPad) {
   const AddedMassLaw law(std::make_unique<Li2013TreersLaw>(2.0e6), 800.0);
   EXPECT_EQ(law.added_mass_density_kg_m3(), 800.0);
   const double poly = 0.5 * sectors * std::sin(2 * kPi / sectors);  // polygon area / radius^2
+  auto advanced = [](PadKinematics k, double dt) {  // the pose dt later (rigid motion)
+    k.p_WB += dt * k.v_WB_W;
+    const double angle = k.w_WB_W.norm() * dt;
+    if (angle != 0.0) k.R_WB = Eigen::AngleAxisd(angle, k.w_WB_W.normalized()).toRotationMatrix() * k.R_WB;
+    return k;
+  };
   for (const double d : {0.003, 0.007, 0.012}) {
     PadKinematics k;
     k.p_WB = Eigen::Vector3d(0.0, 0.0, -d);
-    k.v_WB_W = Eigen::Vector3d(0.0, 0.0, -1.0);
+    k.v_WB_W = Eigen::Vector3d(0.0, 0.0, -0.8);
     const ContactWrench w = ComputeContactWrench(pad, k, PlaneGround(), law);
     const double a = 0.04 + std::min(d, 0.01);  // footprint radius at the surface
     EXPECT_NEAR(w.footprint_area_m2, poly * a * a, 1e-12) << d;
-    const double h = 1e-7;
-    k.p_WB.z() = -(d + h);
-    const double up = ComputeContactWrench(pad, k, PlaneGround(), law).footprint_area_m2;
-    k.p_WB.z() = -(d - h);
-    const double dn = ComputeContactWrench(pad, k, PlaneGround(), law).footprint_area_m2;
-    EXPECT_NEAR(w.footprint_area_rate_m, (up - dn) / (2 * h), 1e-6 * std::max(w.footprint_area_rate_m, 1.0)) << d;
-    EXPECT_NEAR(w.footprint_area_rate_m, d < 0.01 ? poly * 2 * a : 0.0, 1e-9) << d;
+    EXPECT_NEAR(w.footprint_area_rate_m2_s, d < 0.01 ? 0.8 * poly * 2 * a : 0.0, 1e-9) << d;
+    EXPECT_NEAR(w.penetration_rate_m_s, 0.8, 1e-15);
     // The undecorated law leaves them at 0 (not computed).
     EXPECT_EQ(ComputeContactWrench(pad, k, PlaneGround(), law.inner()).footprint_area_m2, 0.0);
   }
+  for (const double d : {0.004, 0.009}) {
+    PadKinematics k;
+    k.R_WB = testing::RotX(0.12) * testing::RotY(-0.05);
+    k.p_WB = Eigen::Vector3d(0.0, 0.0, -d);
+    k.v_WB_W = Eigen::Vector3d(0.3, -0.1, -0.8);
+    k.w_WB_W = Eigen::Vector3d(1.5, -0.7, 0.4);
+    const ContactWrench w = ComputeContactWrench(pad, k, PlaneGround(), law);
+    const double h = 1e-7;
+    const ContactWrench up = ComputeContactWrench(pad, advanced(k, h), PlaneGround(), law);
+    const ContactWrench dn = ComputeContactWrench(pad, advanced(k, -h), PlaneGround(), law);
+    const double fd_area = (up.footprint_area_m2 - dn.footprint_area_m2) / (2 * h);
+    const double fd_depth = (up.penetration_m - dn.penetration_m) / (2 * h);
+    std::printf("[ footprint ] tilted, spinning, d %.3f m: dA/dt %.9e (finite difference %.9e), dd/dt %.9f (%.9f)\n",
+                d, w.footprint_area_rate_m2_s, fd_area, w.penetration_rate_m_s, fd_depth);
+    EXPECT_NEAR(w.footprint_area_rate_m2_s, fd_area, 1e-5 * std::abs(fd_area) + 1e-9) << d;
+    EXPECT_NEAR(w.penetration_rate_m_s, fd_depth, 1e-6) << d;
+  }
   // The cone: (c_a rho / 3) A min(d, a), growing continuously from 0.
-  const EntrainedMass e = EntrainedCone(800.0, 0.002, kPi * 0.04 * 0.04, 0.0);
-  EXPECT_NEAR(e.mass_kg, 800.0 / 3 * kPi * 0.04 * 0.04 * 0.002, 1e-15);
-  EXPECT_NEAR(e.slope_kg_m, 800.0 / 3 * kPi * 0.04 * 0.04, 1e-12);
-  const EntrainedMass whole = EntrainedCone(800.0, 0.05, kPi * 0.04 * 0.04, 0.0);
+  const double A = kPi * 0.04 * 0.04;
+  const EntrainedMass e = EntrainedCone(800.0, 0.002, 0.5, A, 0.0);
+  EXPECT_NEAR(e.mass_kg, 800.0 / 3 * A * 0.002, 1e-15);
+  EXPECT_NEAR(e.rate_kg_s, 800.0 / 3 * A * 0.5, 1e-12);
+  const EntrainedMass whole = EntrainedCone(800.0, 0.05, 0.5, A, 0.0);
   EXPECT_NEAR(whole.mass_kg, 800.0 * kPi / 3 * std::pow(0.04, 3), 1e-15);
-  EXPECT_EQ(EntrainedCone(800.0, 0.0, 1.0, 1.0).mass_kg, 0.0);
+  EXPECT_EQ(whole.rate_kg_s, 0.0);
+  EXPECT_EQ(EntrainedCone(800.0, 0.0, 1.0, 1.0, 1.0).mass_kg, 0.0);
 }
 
 TEST(RftPadEffectTerms, FactoryStacksThemOnlyWhenTheyAct) {
