@@ -257,10 +257,11 @@ template <bool kPower, bool kAreaMoment>
 //
 // Pad-level terms of the law (stress_law_3d.h): kPower selects the depth law's exact z^p
 // integration (p = 1 keeps the linear path, compiled separately, so the linear law runs exactly
-// as without it); `compaction` sums the CompactionStress area integrals apart and scales them by
+// as without it); kPadTerms compiles in the penetration, compaction and footprint bookkeeping
+// (off for laws without them: the plain contact pays nothing for it); `compaction` sums the CompactionStress area integrals apart and scales them by
 // exp(-z_pad / d_c) at the end; `footprint` sums the projected downward-facing area and its rate.
 namespace {
-template <bool kPower>
+template <bool kPower, bool kPadTerms>
 ContactWrench ContactWrenchImpl(const SurfaceElements& elements, const PadKinematics& kinematics,
                                 const GroundSurface& ground, const StressLaw3D& law, bool compaction,
                                 bool footprint) {
@@ -372,8 +373,10 @@ ContactWrench ContactWrenchImpl(const SurfaceElements& elements, const PadKinema
       for (int k = 0; k < 3; ++k) d[k] = ground.Depth(p_WB + rotate(p[k]));
     }
     if (d[0] <= 0.0 && d[1] <= 0.0 && d[2] <= 0.0) continue;
-    for (int k = 0; k < 3; ++k)
-      if (d[k] > penetration) penetration = d[k], deepest_B = p[k];
+    if constexpr (kPadTerms) {
+      for (int k = 0; k < 3; ++k)
+        if (d[k] > penetration) penetration = d[k], deepest_B = p[k];
+    }
 
     const Vec n_B = Load(nb + 3 * e);
     if (!spinning) {
@@ -390,7 +393,7 @@ ContactWrench ContactWrenchImpl(const SurfaceElements& elements, const PadKinema
           run_sigma = weight * law.StressPerDepth(n_W, v0);
           run_sigma_dyn = weight * law.DynamicStress(n_W, v0);
           run_dynamic = !is_zero(run_sigma_dyn);
-          if (compaction) {
+          if (kPadTerms && compaction) {
             run_sigma_comp = weight * law.CompactionStress(n_W, v0);
             run_compaction = !is_zero(run_sigma_comp);
           }
@@ -399,7 +402,7 @@ ContactWrench ContactWrenchImpl(const SurfaceElements& elements, const PadKinema
       if ((run_dynamic || run_compaction) && run_leads) {
         const Submerged s = Clip<kPower, true>(areas[e], d, p, exponent, depth_scale);
         submerged_area += s.area;
-        if (footprint && run_nz < 0.0)
+        if (kPadTerms && footprint && run_nz < 0.0)
           footprint_area -= run_nz * s.area, footprint_rate -= run_nz * s.area_rate * depth_rate0;
         if (!(s.depth_integral > 0.0)) continue;
         ++leading;
@@ -410,7 +413,7 @@ ContactWrench ContactWrenchImpl(const SurfaceElements& elements, const PadKinema
       } else {
         const Submerged s = Clip<kPower, false>(areas[e], d, p, exponent, depth_scale);
         submerged_area += s.area;
-        if (footprint && run_nz < 0.0)
+        if (kPadTerms && footprint && run_nz < 0.0)
           footprint_area -= run_nz * s.area, footprint_rate -= run_nz * s.area_rate * depth_rate0;
         if (!run_leads || !(s.depth_integral > 0.0)) continue;
         ++leading;
@@ -424,7 +427,7 @@ ContactWrench ContactWrenchImpl(const SurfaceElements& elements, const PadKinema
     const Submerged s = Clip<kPower, false>(areas[e], d, p, exponent, depth_scale);
     submerged_area += s.area;
     const Eigen::Vector3d n_W = rotate(n_B);
-    if (footprint && n_W.z() < 0.0) {
+    if (kPadTerms && footprint && n_W.z() < 0.0) {
       // d/dt (-n_z a) with n rotating (dn/dt = w x n) and each vertex depth at its own rate.
       double grad[3];
       ClippedAreaGradient(areas[e], d, grad);
@@ -444,7 +447,7 @@ ContactWrench ContactWrenchImpl(const SurfaceElements& elements, const PadKinema
     force += s.depth_integral * sigma;
     moment += depth_moment_W.cross(sigma);  // = r_W x (depth_integral sigma)
     const Eigen::Vector3d sigma_dyn = weight * law.DynamicStress(n_W, v_W);
-    const Eigen::Vector3d sigma_comp = compaction ? Eigen::Vector3d(weight * law.CompactionStress(n_W, v_W))
+    const Eigen::Vector3d sigma_comp = kPadTerms && compaction ? Eigen::Vector3d(weight * law.CompactionStress(n_W, v_W))
                                                   : Eigen::Vector3d::Zero();
     if (!is_zero(sigma_dyn) || !is_zero(sigma_comp)) {
       // Not proportional to depth: integrated over the submerged area, acting at its centroid.
@@ -461,7 +464,7 @@ ContactWrench ContactWrenchImpl(const SurfaceElements& elements, const PadKinema
     }
   }
   flush();
-  if (compaction) {
+  if (kPadTerms && compaction) {
     const double decay = std::exp(-penetration / law.compaction_decay_depth_m());
     force += decay * compaction_force;
     moment += decay * compaction_moment;
@@ -484,9 +487,13 @@ ContactWrench ComputeContactWrench(const SurfaceElements& elements, const PadKin
                                    const GroundSurface& ground, const StressLaw3D& law) {
   const bool compaction = law.has_compaction();
   const bool footprint = law.added_mass_density_kg_m3() > 0.0;
-  if (law.depth_law().exponent != 1.0)
-    return ContactWrenchImpl<true>(elements, kinematics, ground, law, compaction, footprint);
-  return ContactWrenchImpl<false>(elements, kinematics, ground, law, compaction, footprint);
+  const bool power = law.depth_law().exponent != 1.0;
+  if (compaction || footprint) {
+    return power ? ContactWrenchImpl<true, true>(elements, kinematics, ground, law, compaction, footprint)
+                 : ContactWrenchImpl<false, true>(elements, kinematics, ground, law, compaction, footprint);
+  }
+  return power ? ContactWrenchImpl<true, false>(elements, kinematics, ground, law, false, false)
+               : ContactWrenchImpl<false, false>(elements, kinematics, ground, law, false, false);
 }
 
 }  // namespace touchdown::rft

@@ -45,7 +45,9 @@ struct ContactWrench {
   Eigen::Vector3d moment_W = Eigen::Vector3d::Zero();  // about the reference point [N m]
   double submerged_area_m2 = 0.0;                      // all elements below the surface
   int leading_elements = 0;                            // submerged and leading
-  double penetration_m = 0.0;  // deepest vertex depth of the submerged elements (0: none) [m]
+  // Only when the law has compaction or added mass, else 0: the deepest vertex depth of the
+  // submerged elements (0: none) [m].
+  double penetration_m = 0.0;
   // Only when the law has added mass (StressLaw3D::added_mass_density_kg_m3() > 0), else 0
   // (rft/entrained_mass.h): the footprint, i.e. the horizontal projection of the submerged
   // downward-facing surface (n_z < 0) [m^2], and its time derivative under the pad's motion
