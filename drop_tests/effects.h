@@ -1,6 +1,7 @@
 #pragma once
 // The effect library: physically named terms that quasi-static RFT leaves out (physics.md,
-// section 4), each switchable in any axisymmetric rig drop and fitted by `touchdown diagnose`.
+// section 4), each switchable in every simulation (rig drops; free drops and the lander in its 3D
+// form, below) and fitted by `touchdown diagnose` on rig drops.
 // The ids are part of the interface (model files, diagnosis.json, the command line).
 //
 // For straight-down motion an element of attack angle beta has v.n = v cos(beta) (n outward,
