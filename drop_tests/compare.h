@@ -67,7 +67,7 @@ struct Comparison {
 // (DropConditionsFor + SimulateDrop, drop_tests/pad_drop.h) at 1 kHz, under `model` when given:
 // its zeta per soil and its effects (gas_cushion on the drops in air only). A drop with a
 // non-zero tilt_deg or horizontal_speed_m_s column is a free 6-DOF drop (tilt about x, travel
-// along +x; only effects with a 3D form). A sensor_offset is applied as the rig records: the
+// along +x; the effects in their 3D form). A sensor_offset is applied as the rig records: the
 // simulated trace's time shifted by -dt, its penetration by +dz (effects.h RecordedAt), so it
 // compares with the measured record. Returns a dataset with the same drop ids.
 Dataset SimulateMeasuredDrops(const Dataset& measured, const std::optional<ModelFile>& model);

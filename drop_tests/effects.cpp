@@ -118,37 +118,26 @@ std::vector<std::pair<std::string, std::string>> EffectsNotApplied(const EffectT
   return out;
 }
 
-std::optional<std::string> No3DFormReason(const std::string& id) {
-  if (id == "added_mass")
-    return "has no 3D form yet: the entrained cone of grains is defined for an axisymmetric pad moving straight "
-           "down (the rig drop), not for a tilted or sliding pad";
-  if (id == "compaction_peak")
-    return "has no 3D form yet: its decay exp(-d/d_c) follows the pad's penetration d, which a per-element 3D "
-           "stress law does not see";
-  if (id == "depth_exponent")
-    return "has no 3D form yet: the 3D contact integrates stresses linear in depth exactly over each triangle "
-           "(rft/contact_wrench.h); a power law in depth needs a new integration there";
-  return std::nullopt;
-}
-
 std::unique_ptr<rft::StressLaw3D> MakeEffectLaw3D(std::string_view law, const rft::SoilParameters& soil,
                                                   double gravity_m_s2, const EffectTerms& t, bool in_air,
                                                   const std::string& model_source) {
-  for (const std::string& id : ActiveEffects(t))
-    if (const std::optional<std::string> why = No3DFormReason(id))
-      throw MakeInputError(model_source.empty() ? "model" : model_source, "effects." + id,
-                           *why + "; the free drop and the lander cannot apply it (the rig drop can)");
   rft::EffectTerms3D terms;
   terms.inertial_lambda = t.inertial_lambda;
   terms.inertial_density_kg_m3 = soil.bulk_density_kg_m3;
   terms.damping_c_N_s_m3 = t.damping_c_N_s_m3;
+  if (t.depth_exponent) terms.depth_exponent = *t.depth_exponent;
+  terms.depth_reference_m = t.depth_reference_m;
+  terms.compaction_k_kg_m3 = t.compaction_k_kg_m3;
+  terms.compaction_depth_m = t.compaction_depth_m;
+  terms.added_mass_ca = t.added_mass_ca;
   if (in_air) {
     terms.gas_chi = t.gas_chi;
     terms.gas_c_N_s_m3 = t.gas_c_N_s_m3;
   }
-  if (terms.inertial_lambda > 0.0 && !(soil.bulk_density_kg_m3 > 0.0))
+  if ((terms.inertial_lambda > 0.0 || terms.added_mass_ca > 0.0) && !(soil.bulk_density_kg_m3 > 0.0))
     throw MakeInputError(soil.name, "bulk_density_kg_m3",
-                         "the soil must state its bulk density for inertial_drag (model " + model_source + ")");
+                         "the soil must state its bulk density for inertial_drag and added_mass (model " +
+                             model_source + ")");
   return rft::MakeStressLaw3D(law, soil, gravity_m_s2, terms);
 }
 

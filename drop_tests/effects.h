@@ -1,6 +1,7 @@
 #pragma once
 // The effect library: physically named terms that quasi-static RFT leaves out (physics.md,
-// section 4), each switchable in any axisymmetric rig drop and fitted by `touchdown diagnose`.
+// section 4), each switchable in every simulation (rig drops; free drops and the lander in its 3D
+// form, below) and fitted by `touchdown diagnose` on rig drops.
 // The ids are part of the interface (model files, diagnosis.json, the command line).
 //
 // For straight-down motion an element of attack angle beta has v.n = v cos(beta) (n outward,
@@ -28,11 +29,15 @@
 // Every velocity term vanishes at rest, so the static capacity is the quasi-static force (with
 // the depth law and the gas cushion applied).
 //
-// In 3D (free drop, lander: the per-element contact of rft/contact_wrench.h) the terms with a
-// per-element form are StressLaw3D decorators (MakeEffectLaw3D below): inertial_drag
-// (rft/dynamic_term.h), rate_damping (rft/rate_damping_term.h) and gas_cushion
-// (rft/gas_cushion_term.h, beds in air only). added_mass, compaction_peak and depth_exponent have
-// no 3D form yet and are refused there; sensor_offset never changes the physics.
+// In 3D (free drop, lander: the per-element contact of rft/contact_wrench.h) every physical term
+// is a StressLaw3D decorator (MakeEffectLaw3D below): inertial_drag (rft/dynamic_term.h),
+// rate_damping (rft/rate_damping_term.h), gas_cushion (rft/gas_cushion_term.h, beds in air only),
+// and the pad-level terms of rft/pad_effect_terms.h: depth_exponent (z^p integrated exactly per
+// triangle by the contact), compaction_peak (k_c (v.n)^2 per leading element, scaled by
+// exp(-z_pad/d_c) with the pad's penetration z_pad) and added_mass (the entrained cone of
+// rft/entrained_mass.h on the footprint, added to the pad's vertical inertia by the free drop and
+// the lander). For a level axisymmetric pad moving straight down each 3D form is the rig's.
+// sensor_offset never changes the physics.
 #include <memory>
 #include <optional>
 #include <string>
@@ -112,14 +117,11 @@ std::vector<std::string> ActiveEffects(const EffectTerms& terms);
 // (measurement only: `compare` applies it to the simulated traces it compares with measured
 // ones), gas_cushion when the drop is not in air.
 std::vector<std::pair<std::string, std::string>> EffectsNotApplied(const EffectTerms& terms, bool in_air);
-// Why an effect has no per-element 3D form (free drop, lander), or nullopt if it has one (or,
-// like sensor_offset, does not change the physics).
-std::optional<std::string> No3DFormReason(const std::string& id);
-
 // The 3D stress law `law` of `soil` (zeta as given, scaled to gravity) with the active effect
-// terms that have a 3D form: inertial_drag (rho = the soil's bulk density, as in the rig),
-// rate_damping, and gas_cushion when `in_air`. Throws InputError naming `model_source`, the
-// field effects.<id> and the reason when an active effect has no 3D form (No3DFormReason).
+// terms (rft/stress_law_3d_factory.h EffectTerms3D): inertial_drag and added_mass (rho = the
+// soil's bulk density, as in the rig), rate_damping, compaction_peak, depth_exponent, and
+// gas_cushion when `in_air`. Throws InputError naming the soil and `model_source` when an effect
+// needs the bulk density and the soil has none.
 std::unique_ptr<rft::StressLaw3D> MakeEffectLaw3D(std::string_view law, const rft::SoilParameters& soil,
                                                   double gravity_m_s2, const EffectTerms& terms, bool in_air,
                                                   const std::string& model_source);

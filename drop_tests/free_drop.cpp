@@ -9,6 +9,7 @@
 #include "drop_tests/pad_pose.h"
 #include "rft/contact_wrench.h"
 #include "rft/deepest_point.h"
+#include "rft/entrained_mass.h"
 
 namespace touchdown::drop {
 
@@ -59,6 +60,35 @@ FreeDropResult RunFreeDrop(const geom::PadBody& body, const rft::StressLaw3D& la
     rft::PadKinematics k{s.R_WB, s.p_WB, s.v_WB, s.w_W};
     return rft::ComputeContactWrench(body.surface, k, ground, law);
   };
+  // added_mass (rft/entrained_mass.h): the entrained cone moves with the centre of mass's vertical
+  // velocity v_z. Grains join at rest (dm_a/dt > 0) or leave with the pad's velocity (< 0), so
+  // m a_z + m_a a_z = F_z - m g - max(dm_a/dt, 0) v_z (the grains' weight rests on the bed); the
+  // kinetic energy lost, |dm_a/dt| v_z^2 / 2 (accretion, or carried off by shed grains), counts as
+  // dissipated with the soil's work. Horizontal motion and rotation keep the pad's own inertia:
+  // the cone is defined by the vertical stroke.
+  const double added_density = law.added_mass_density_kg_m3();
+  struct Vertical {
+    double a_z = 0.0;         // vertical acceleration of the centre of mass
+    double accretion_W = 0.0;  // accretion loss rate
+    double force_z = 0.0;     // vertical force on the pad from below: soil and entrained grains, m (a_z + g)
+  };
+  auto vertical = [&](const Pose& s, const rft::ContactWrench& w) {
+    Vertical out;
+    if (added_density > 0.0) {
+      const rft::EntrainedMass e = rft::EntrainedCone(added_density, w.penetration_m, w.penetration_rate_m_s,
+                                                      w.footprint_area_m2, w.footprint_area_rate_m2_s);
+      const double v_z = s.v_WC.z();
+      const double accretion = -std::max(e.rate_kg_s, 0.0) * v_z;  // upward while sinking
+      out.a_z = (w.force_W.z() - m * g + accretion) / (m + e.mass_kg);
+      out.accretion_W = 0.5 * std::abs(e.rate_kg_s) * v_z * v_z;
+      out.force_z = m * (out.a_z + g);
+      if (e.mass_kg == 0.0 && accretion == 0.0) out.force_z = w.force_W.z();
+    } else {
+      out.a_z = w.force_W.z() / m - g;
+      out.force_z = w.force_W.z();
+    }
+    return out;
+  };
   auto rhs = [&](double, Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::VectorXd> ydot) {
     const Pose s = PoseOf(body, y);
     const bool moving = s.v_WB.squaredNorm() + s.w_W.squaredNorm() * radius * radius > 0.0;
@@ -73,6 +103,11 @@ FreeDropResult RunFreeDrop(const geom::PadBody& body, const rft::StressLaw3D& la
     ydot.segment<3>(kV) = w.force_W / m - Eigen::Vector3d(0.0, 0.0, g);
     ydot.segment<3>(kW) = I_inv * (s.R_WB.transpose() * M_C - wb.cross(I * wb));
     ydot[kWork] = -(w.force_W.dot(s.v_WB) + w.moment_W.dot(s.w_W));
+    if (added_density > 0.0) {
+      const Vertical vz = vertical(s, w);
+      ydot[kV + 2] = vz.a_z;
+      ydot[kWork] += vz.accretion_W;
+    }
   };
   const double rest_speed = options.rest_speed_m_s;
   integ::RootSpec roots;
@@ -116,7 +151,12 @@ FreeDropResult RunFreeDrop(const geom::PadBody& body, const rft::StressLaw3D& la
     const Pose s = PoseOf(body, state);
     const bool moving = s.v_WB.squaredNorm() + s.w_W.squaredNorm() * radius * radius > 0.0;
     // At rest the soil carries the weight: report the static reaction, as the rig drop does.
-    const Eigen::Vector3d f = moving ? wrench_at(s).force_W : Eigen::Vector3d(0.0, 0.0, m * g);
+    Eigen::Vector3d f(0.0, 0.0, m * g);
+    if (moving) {
+      const rft::ContactWrench w = wrench_at(s);
+      f = w.force_W;
+      if (added_density > 0.0) f.z() = vertical(s, w).force_z;
+    }
     result.trace.push_back({t, std::max(Depth(body, ground, s), 0.0), -s.v_WC.z(), f.z(), f.x(),
                             s.p_WC.x() - xy_C0.x(), TiltFromVertical(s.R_WB) * 180.0 / std::numbers::pi});
     result.peak_force_N = std::max(result.peak_force_N, f.z());

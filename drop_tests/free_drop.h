@@ -12,6 +12,10 @@
 // RFT forces do not vanish as the speed does (they depend on its direction only), so the pad
 // reaches rest in finite time; the threshold only stops the integrator from chasing the
 // direction of a vanishing velocity.
+//
+// A law with added mass (StressLaw3D::added_mass_density_kg_m3, rft/entrained_mass.h) adds the
+// entrained cone to the vertical inertia of the centre of mass (see free_drop.cpp); its
+// accretion loss counts in dissipated_energy_J, so the energy balance closes as without it.
 #include <Eigen/Core>
 #include <string>
 #include <vector>
@@ -47,7 +51,9 @@ struct FreeDropSample {
   double t_s = 0.0;              // since touchdown
   double penetration_m = 0.0;    // depth of the lowest surface point
   double velocity_m_s = 0.0;     // centre of mass, downward
-  double force_N = 0.0;          // vertical soil force on the pad, upward
+  double force_N = 0.0;          // vertical soil force on the pad, upward (with the law's added mass: the
+                                 // force from below, soil and entrained grains, m (a_z + g), as the rig's
+                                 // load cell records it)
   double force_x_N = 0.0;        // horizontal soil force along x
   double horizontal_m = 0.0;     // centre-of-mass travel along x since touchdown
   double tilt_deg = 0.0;         // pad z axis from the vertical

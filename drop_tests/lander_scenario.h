@@ -80,7 +80,7 @@ struct LanderScenario {
   lander::LanderRunOptions options;
   std::optional<LanderPaperCheck> paper;
   std::string paper_ground_case;  // e.g. "CP LP LP LP" (Table II), informational
-  // `touchdown lander --model`: zeta per soil and the effect terms with a 3D form, for every soil
+  // `touchdown lander --model`: zeta per soil and the effect terms (3D forms), for every soil
   // of the ground (drop_tests/model_file.h MakeModelStressLaw3D). Not part of the scenario file.
   std::optional<ModelFile> model;
 };

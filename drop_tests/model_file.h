@@ -21,8 +21,8 @@
 //   rig drops (`drop`, `sweep`, `compare`, `calibrate`'s users): every effect, through
 //     DropConditions::effects (drop_tests/pad_drop.h); gas_cushion only on drops in air (the
 //     drop's atmosphere: the dataset row's in `compare`, else the soil's);
-//   free drops and the lander (3D contact): the effects with a per-element 3D form
-//     (MakeModelStressLaw3D below); the others are refused naming the file and the effect;
+//   free drops and the lander (3D contact): every physical effect, in its 3D form
+//     (MakeModelStressLaw3D below; drop_tests/effects.h); gas_cushion only on soils in air;
 //   sensor_offset (measurement only) never changes a simulated drop: `compare` applies it to
 //     the simulated traces it compares with recorded ones (what the rig would record), and
 //     `drop` reports it as not applied.
@@ -79,9 +79,9 @@ rft::SoilParameters ApplyModel(const ModelFile& model, const rft::SoilParameters
 std::vector<Effect> ModelEffects(const ModelFile& model);
 EffectTerms ModelEffectTerms(const ModelFile& model);
 // The 3D stress law of `soil` under `model` (may be null: the soil as it is): zeta override
-// (ApplyModel) and the effect terms with a 3D form (MakeEffectLaw3D; gas_cushion only when the
-// soil's atmosphere is air). Throws InputError naming the model file and effect when an active
-// effect has no 3D form.
+// (ApplyModel) and the effect terms in their 3D form (MakeEffectLaw3D; gas_cushion only when the
+// soil's atmosphere is air). Throws InputError naming the soil and the model file when an effect
+// needs the soil's bulk density and it has none.
 std::unique_ptr<rft::StressLaw3D> MakeModelStressLaw3D(std::string_view law, const rft::SoilParameters& soil,
                                                        double gravity_m_s2, const ModelFile* model);
 // The model as a 3D run (lander) reports it: {file, effects: [ids applied], effects_not_applied:

@@ -85,9 +85,9 @@ struct DropRunOptions {
   const geom::AxisymmetricIntrusion* intrusion = nullptr;
 };
 
-// Runs the drop: the rig for level, vertical drops, else the free pad (IsFree). Effects: all on
-// the rig; on the free pad those with a 3D form (MakeEffectLaw3D; the others are refused naming
-// the model file). A failing integration throws integ::IntegrationFailure.
+// Runs the drop: the rig for level, vertical drops, else the free pad (IsFree). Effects: all, on
+// the rig in their rig form, on the free pad in their 3D form (MakeEffectLaw3D). A failing
+// integration throws integ::IntegrationFailure.
 PadDrop SimulateDrop(const PadSpec& pad, const rft::SoilParameters& soil, const DropConditions& conditions,
                      const DropRunOptions& options);
 PadDrop RunPadDrop(const PadSpec& pad, const rft::SoilParameters& soil, const DropConditions& conditions,

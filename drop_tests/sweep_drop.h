@@ -13,7 +13,7 @@
 //                final roll and pitch, tipped over) and the soil under each pad at release
 //                (pad1_soil..pad4_soil, with the paper's ground case when it is one).
 // Both pad kinds go through DropConditionsFor + SimulateDrop (drop_tests/pad_drop.h), as
-// `compare` does, with the model's effects (all on the rig; those with a 3D form on free pads).
+// `compare` does, with the model's effects (all of them, on free pads in their 3D form).
 #include <map>
 #include <memory>
 #include <string>

@@ -477,7 +477,7 @@ SweepPlan LoadSweepPlan(const std::string& path, const std::string& model_overri
   if (plan.model)
     for (rft::SoilParameters& soil : plan.soils) soil = ApplyModel(*plan.model, soil);
 
-  // Effects without a 3D form cannot run on free drops or landers: refused now, not drop by drop.
+  // A lander sweep checks its model against the scenario's soils now, not drop by drop.
   const ModelFile* model = plan.model ? &*plan.model : nullptr;
   if (plan.lander) {
     plan.lander->model = plan.model;
@@ -488,29 +488,6 @@ SweepPlan LoadSweepPlan(const std::string& path, const std::string& model_overri
     } catch (const InputError& e) {
       f.Fail("lander", e.what());
     }
-  } else if (model) {
-    auto may_be_non_zero = [&](SweepParam p) {
-      const int i = static_cast<int>(p);
-      if (plan.fixed[i] && *plan.fixed[i] != 0.0) return true;
-      for (const SweepAxis& a : plan.grid)
-        if (a.param == p)
-          for (double v : a.values)
-            if (v != 0.0) return true;
-      for (const SweepRandom& r : plan.random)
-        if (r.param == p) return true;
-      return false;
-    };
-    const PadSpec* mesh_pad = nullptr;
-    for (const PadSpec& pad : plan.pads)
-      if (!pad.is_axisymmetric() && !mesh_pad) mesh_pad = &pad;
-    if (may_be_non_zero(SweepParam::kTilt) || may_be_non_zero(SweepParam::kHorizontalSpeed) || mesh_pad)
-      for (const std::string& id : ActiveEffects(ModelEffectTerms(*model)))
-        if (const std::optional<std::string> why = No3DFormReason(id))
-          throw MakeInputError(model->source, "effects." + id,
-                               *why + "; this sweep has free drops (" +
-                                   (mesh_pad ? "mesh pad " + mesh_pad->name + " from " + mesh_pad->source
-                                             : std::string("non-zero tilt_deg or horizontal_speed_m_s")) +
-                                   "), which cannot apply it");
   }
   return plan;
 }

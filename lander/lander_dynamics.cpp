@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "rft/deepest_point.h"
+#include "rft/entrained_mass.h"
 
 namespace touchdown::lander {
 
@@ -155,12 +156,29 @@ void Assemble(const LanderModel& model, const StateLayout& L, const Terrain& ter
       rft::PadKinematics k{f.R_WP, f.p_WJ, f.v_WJ_W, f.w_WP_W};
       const double speed = f.v_WJ_W.norm() + f.w_WP_W.norm() * PadRadius(leg);
       const int soil = terrain.SoilAt(f.p_WJ.x(), f.p_WJ.y());
-      w = rft::ComputeContactWrench(leg.pad->surface, k, *terrain.surface, *terrain.soils[soil].law);
+      const rft::StressLaw3D& law = *terrain.soils[soil].law;
+      w = rft::ComputeContactWrench(leg.pad->surface, k, *terrain.surface, law);
       if (speed < kSoilRampSpeed) {
         w.force_W *= speed / kSoilRampSpeed;
         w.moment_W *= speed / kSoilRampSpeed;
       }
       e->dissipation_W -= w.force_W.dot(f.v_WJ_W) + w.moment_W.dot(f.w_WP_W);
+      // added_mass (rft/entrained_mass.h): the entrained cone moves with the vertical velocity of
+      // the pad's centre of mass, as in the free drop: a mass m_a on the row e_z^T J_C, with the
+      // accretion force -max(dm_a/dt, 0) v_z (grains join at rest, leave with the pad) and the
+      // kinetic energy lost, |dm_a/dt| v_z^2 / 2.
+      if (law.added_mass_density_kg_m3() > 0.0) {
+        const rft::EntrainedMass ea =
+            rft::EntrainedCone(law.added_mass_density_kg_m3(), w.penetration_m, w.penetration_rate_m_s,
+                               w.footprint_area_m2, w.footprint_area_rate_m2_s);
+        const double v_z = (f.v_WJ_W + f.w_WP_W.cross(f.c_JC_W)).z();
+        const double force_z = -ea.mass_kg * bias_C.z() - std::max(ea.rate_kg_s, 0.0) * v_z;
+        for (int r = 0; r < L.nu; ++r) {  // M += m_a J_z^T J_z, Q += J_z^T force_z (no temporaries)
+          a->Q[r] += J_C(2, r) * force_z;
+          for (int c = 0; c < L.nu; ++c) a->M(r, c) += ea.mass_kg * J_C(2, r) * J_C(2, c);
+        }
+        e->dissipation_W += 0.5 * std::abs(ea.rate_kg_s) * v_z * v_z;
+      }
     }
     const Eigen::Vector3d F = m * g + w.force_W - m * bias_C;
     a->Q.noalias() += J_C.transpose() * F;

@@ -55,6 +55,7 @@ struct Submerged {
   Vec depth_moment{0.0, 0.0, 0.0};
   double area = 0.0;
   Vec area_moment{0.0, 0.0, 0.0};
+  double area_rate = 0.0;  // d area / d delta when every vertex depth grows by delta
 };
 
 // For f linear on a triangle of area A with vertex values f_i: int f dA = A (f0 + f1 + f2) / 3 and
@@ -89,14 +90,164 @@ template <bool kAreaMoment>
     const double tj = d[i] / (d[i] - d[j]), tk = d[i] / (d[i] - d[k]);
     AddTriangle<kAreaMoment>(tj * tk * area, d[i], 0.0, 0.0, p[i], p[i] + tj * (p[j] - p[i]),
                              p[i] + tk * (p[k] - p[i]), 1.0, s);
+    s.area_rate = 2.0 * tj * tk * area / d[i];  // area d_i^2 / ((d_i - d_j)(d_i - d_k))
   } else {  // below == 2
     const int k = d[0] <= 0.0 ? 0 : (d[1] <= 0.0 ? 1 : 2), i = (k + 1) % 3, j = (k + 2) % 3;
     const double si = d[k] / (d[k] - d[i]), sj = d[k] / (d[k] - d[j]);
     AddTriangle<kAreaMoment>(area, d[0], d[1], d[2], p[0], p[1], p[2], 1.0, s);
     AddTriangle<kAreaMoment>(si * sj * area, d[k], 0.0, 0.0, p[k], p[k] + si * (p[i] - p[k]),
                              p[k] + sj * (p[j] - p[k]), -1.0, s);
+    if (d[k] < 0.0) s.area_rate = -2.0 * si * sj * area / d[k];
   }
   return s;
+}
+
+// d(submerged area)/d(d_k) of a triangle of area `area` for its three vertex depths (0 when all
+// are below: the whole triangle). One vertex i below: area f, f = d_i^2 / ((d_i - d_j)(d_i - d_k)),
+// df/dd_j = f / (d_i - d_j), df/dd_k = f / (d_i - d_k), df/dd_i = f (2 / d_i - 1/(d_i - d_j) -
+// 1/(d_i - d_k)); two below: area (1 - f) at the emerged vertex k, so minus those.
+inline void ClippedAreaGradient(double area, const double d[3], double grad[3]) {
+  grad[0] = grad[1] = grad[2] = 0.0;
+  const int below = (d[0] > 0.0) + (d[1] > 0.0) + (d[2] > 0.0);
+  if (below == 3 || below == 0) return;
+  const bool corner_below = below == 1;
+  const int i = corner_below ? (d[0] > 0.0 ? 0 : (d[1] > 0.0 ? 1 : 2)) : (d[0] <= 0.0 ? 0 : (d[1] <= 0.0 ? 1 : 2));
+  const int j = (i + 1) % 3, k = (i + 2) % 3;
+  if (d[i] == 0.0) return;  // the emerged corner vanishes: no area changes to first order
+  const double a = d[i] - d[j], b = d[i] - d[k];
+  const double f = area * d[i] * d[i] / (a * b), sign = corner_below ? 1.0 : -1.0;
+  grad[j] = sign * f / a;
+  grad[k] = sign * f / b;
+  grad[i] = sign * f * (2.0 / d[i] - 1.0 / a - 1.0 / b);
+}
+
+// ---- Depth law z_ref (z / z_ref)^p (StressLaw3D::depth_law, p != 1) ----------------------------
+//
+// The integrals int d^p dA and int d^p r dA over a triangle on which d >= 0 is linear. Cutting it
+// at the middle vertex depth along the level line gives two "fans": triangles whose apex P0 has
+// depth alpha and whose opposite edge (midpoint M) has the one depth beta. On a fan of area A,
+// with s in [0, 1] from the apex to the edge, the level line at s has length ~ s and midpoint
+// P0 + s (M - P0), so dA = 2 A s ds and
+//   int d^p dA   = 2 A J1,                 J_k = int_0^1 (alpha + s (beta - alpha))^p s^k ds,
+//   int d^p r dA = 2 A (J1 P0 + J2 (M - P0)).
+// With t = alpha + s D, D = beta - alpha, J1 = D^-2 int_alpha^beta t^p (t - alpha) dt and
+// J2 = D^-3 int_alpha^beta t^p (t - alpha)^2 dt, in closed form. The closed forms cancel when D is
+// small against alpha (relative error ~ eps (beta / D)^3); there, |D| <= kFanQuadrature min(alpha,
+// beta), the integrand is analytic on s in [0, 1] with its branch point t = 0 at least
+// 1 / kFanQuadrature fan lengths away, and 8-point Gauss-Legendre is exact to about 1e-19
+// (Bernstein ellipse rho ~ 18: error ~ rho^-16). The closed forms are used elsewhere, where their
+// cancellation costs at most a factor ~ 3 / 0.2^3 = 375 eps ~ 1e-13 relative.
+constexpr double kFanQuadrature = 0.25;
+
+struct FanIntegrals {
+  double j1 = 0.0, j2 = 0.0;
+};
+
+inline FanIntegrals Fan(double alpha, double beta, double p) {
+  FanIntegrals out;
+  const double D = beta - alpha;
+  if (std::abs(D) <= kFanQuadrature * std::min(alpha, beta)) {
+    if (!(alpha > 0.0)) return out;  // alpha = beta = 0: no depth
+    // 8-point Gauss-Legendre on [0, 1].
+    static constexpr double kX[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267,
+                                     0.9602898564975363};
+    static constexpr double kW[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745,
+                                     0.1012285362903763};
+    for (int k = 0; k < 4; ++k) {
+      for (const double sign : {-1.0, 1.0}) {
+        const double s = 0.5 * (1.0 + sign * kX[k]), w = 0.5 * kW[k];
+        const double g = std::pow(alpha + s * D, p) * s * w;
+        out.j1 += g;
+        out.j2 += g * s;
+      }
+    }
+    return out;
+  }
+  const double p1 = p + 1.0, p2 = p + 2.0, p3 = p + 3.0;
+  // t^(p+1) at both ends; antiderivatives of t^p (t - alpha) and t^p (t - alpha)^2.
+  auto primitives = [&](double t, double* f1, double* f2) {
+    if (!(t > 0.0)) {
+      *f1 = *f2 = 0.0;
+      return;
+    }
+    const double tp1 = std::pow(t, p1), tp2 = tp1 * t, tp3 = tp2 * t;
+    *f1 = tp2 / p2 - alpha * tp1 / p1;
+    *f2 = tp3 / p3 - 2.0 * alpha * tp2 / p2 + alpha * alpha * tp1 / p1;
+  };
+  double a1, a2, b1, b2;
+  primitives(alpha, &a1, &a2);
+  primitives(beta, &b1, &b2);
+  out.j1 = (b1 - a1) / (D * D);
+  out.j2 = (b2 - a2) / (D * D * D);
+  return out;
+}
+
+// Adds a fan (apex P0 at depth alpha, opposite edge P1 P2 at depth beta, area A).
+inline void AddFan(double area, double alpha, double beta, Vec p0, Vec p1, Vec p2, double p, double& integral,
+                   Vec& moment) {
+  if (!(area > 0.0)) return;
+  const FanIntegrals j = Fan(alpha, beta, p);
+  const Vec m = 0.5 * (p1 + p2);
+  integral += 2.0 * area * j.j1;
+  moment = moment + (2.0 * area) * (j.j1 * p0 + j.j2 * (m - p0));
+}
+
+// A triangle with vertex depths d_i >= 0: split along the level line of the middle depth.
+inline void AddPowerTriangle(double area, double d0, double d1, double d2, Vec p0, Vec p1, Vec p2, double p,
+                             double& integral, Vec& moment) {
+  double d[3] = {d0, d1, d2};
+  Vec q[3] = {p0, p1, p2};
+  // Sort by depth: d[0] <= d[1] <= d[2].
+  if (d[1] < d[0]) std::swap(d[0], d[1]), std::swap(q[0], q[1]);
+  if (d[2] < d[1]) std::swap(d[1], d[2]), std::swap(q[1], q[2]);
+  if (d[1] < d[0]) std::swap(d[0], d[1]), std::swap(q[0], q[1]);
+  const double span = d[2] - d[0];
+  if (!(span > 0.0)) {  // uniform depth: a fan of equal depths
+    AddFan(area, d[0], d[0], q[0], q[1], q[2], p, integral, moment);
+    return;
+  }
+  const double t = (d[1] - d[0]) / span;  // the level line runs from q[1] to c on edge q[0] q[2]
+  const Vec c = q[0] + t * (q[2] - q[0]);
+  AddFan(t * area, d[0], d[1], q[0], q[1], c, p, integral, moment);
+  AddFan((1.0 - t) * area, d[2], d[1], q[2], q[1], c, p, integral, moment);
+}
+
+// int d^p dA and int d^p r dA over the submerged part of a triangle (clipped as in
+// ClipAndIntegrate), scaled by z_ref^(1 - p); the area terms as ClipAndIntegrate's.
+template <bool kAreaMoment>
+[[gnu::always_inline]] inline Submerged ClipAndIntegratePower(double area, const double d[3], const Vec p[3],
+                                                              double exponent, double scale) {
+  Submerged s = ClipAndIntegrate<kAreaMoment>(area, d, p);
+  double integral = 0.0;
+  Vec moment{0.0, 0.0, 0.0};
+  const int below = (d[0] > 0.0) + (d[1] > 0.0) + (d[2] > 0.0);
+  if (below == 3) {
+    AddPowerTriangle(area, d[0], d[1], d[2], p[0], p[1], p[2], exponent, integral, moment);
+  } else if (below == 1) {
+    const int i = d[0] > 0.0 ? 0 : (d[1] > 0.0 ? 1 : 2), j = (i + 1) % 3, k = (i + 2) % 3;
+    const double tj = d[i] / (d[i] - d[j]), tk = d[i] / (d[i] - d[k]);
+    AddFan(tj * tk * area, d[i], 0.0, p[i], p[i] + tj * (p[j] - p[i]), p[i] + tk * (p[k] - p[i]), exponent,
+           integral, moment);
+  } else {  // below == 2: the quadrilateral p_i p_j q_j q_i as two triangles with depths >= 0
+    const int k = d[0] <= 0.0 ? 0 : (d[1] <= 0.0 ? 1 : 2), i = (k + 1) % 3, j = (k + 2) % 3;
+    const double si = d[k] / (d[k] - d[i]), sj = d[k] / (d[k] - d[j]);
+    const Vec qi = p[k] + si * (p[i] - p[k]), qj = p[k] + sj * (p[j] - p[k]);
+    AddPowerTriangle((1.0 - sj) * area, d[i], d[j], 0.0, p[i], p[j], qj, exponent, integral, moment);
+    AddFan(sj * (1.0 - si) * area, d[i], 0.0, p[i], qj, qi, exponent, integral, moment);
+  }
+  s.depth_integral = scale * integral;
+  s.depth_moment = scale * moment;
+  return s;
+}
+
+template <bool kPower, bool kAreaMoment>
+[[gnu::always_inline]] inline Submerged Clip(double area, const double d[3], const Vec p[3], double exponent,
+                                             double scale) {
+  if constexpr (kPower) {
+    return ClipAndIntegratePower<kAreaMoment>(area, d, p, exponent, scale);
+  } else {
+    return ClipAndIntegrate<kAreaMoment>(area, d, p);
+  }
 }
 
 }  // namespace
@@ -116,11 +267,24 @@ template <bool kAreaMoment>
 // alone. Consecutive elements with equal normals (to kSameNormal: a flat bottom, a planar facet
 // split into many triangles) form a run: the law is called once per run and only the run's depth
 // integral and first moment are summed (the result is the same sum, grouped differently).
-ContactWrench ComputeContactWrench(const SurfaceElements& elements, const PadKinematics& kinematics,
-                                   const GroundSurface& ground, const StressLaw3D& law) {
+//
+// Pad-level terms of the law (stress_law_3d.h): kPower selects the depth law's exact z^p
+// integration (p = 1 keeps the linear path, compiled separately, so the linear law runs exactly
+// as without it); kPadTerms compiles in the penetration, compaction and footprint bookkeeping
+// (off for laws without them: the plain contact pays nothing for it); `compaction` sums the CompactionStress area integrals apart and scales them by
+// exp(-z_pad / d_c) at the end; `footprint` sums the projected downward-facing area and its rate.
+namespace {
+template <bool kPower, bool kPadTerms>
+ContactWrench ContactWrenchImpl(const SurfaceElements& elements, const PadKinematics& kinematics,
+                                const GroundSurface& ground, const StressLaw3D& law, bool compaction,
+                                bool footprint) {
   ContactWrench out;
   const int count = elements.size();
   if (count == 0) return out;
+  const DepthLaw depth_law = law.depth_law();
+  const double exponent = depth_law.exponent;
+  const double depth_scale = kPower ? std::pow(depth_law.reference_m, 1.0 - exponent) : 1.0;
+
   const Eigen::Matrix3d& R = kinematics.R_WB;
   const Eigen::Vector3d& p_WB = kinematics.p_WB;
 
@@ -195,9 +359,20 @@ ContactWrench ComputeContactWrench(const SurfaceElements& elements, const PadKin
 
   // The current run (pure translation): its normal, whether it leads, its stresses, and the
   // sums of depth integral / depth moment / area / area moment (in B) of its submerged parts.
-  bool run_open = false, run_leads = false, run_dynamic = false;
+  bool run_open = false, run_leads = false, run_dynamic = false, run_compaction = false;
   Vec run_n{0.0, 0.0, 0.0};
-  Eigen::Vector3d run_sigma = Eigen::Vector3d::Zero(), run_sigma_dyn = Eigen::Vector3d::Zero();
+  double run_nz = 0.0;  // z of the run's normal in W (footprint)
+  Eigen::Vector3d run_sigma = Eigen::Vector3d::Zero(), run_sigma_dyn = Eigen::Vector3d::Zero(),
+                  run_sigma_comp = Eigen::Vector3d::Zero();
+  // Compaction transient (area integrals, scaled at the end), penetration and footprint.
+  Eigen::Vector3d compaction_force = Eigen::Vector3d::Zero(), compaction_moment = Eigen::Vector3d::Zero();
+  double penetration = 0.0, footprint_area = 0.0, footprint_rate = 0.0;
+  Vec deepest_B{0.0, 0.0, 0.0};  // the deepest submerged vertex (penetration rate)
+  // Rate of every depth under the translation alone: g . v0 (g = (sx, sy, -1) over a plane; the
+  // vertical rate on any other ground).
+  const Eigen::Vector3d g_W = plane != nullptr ? Eigen::Vector3d(plane->slope_x(), plane->slope_y(), -1.0)
+                                               : Eigen::Vector3d(0.0, 0.0, -1.0);
+  const double depth_rate0 = g_W.dot(kinematics.v_WB_W);
   double run_depth = 0.0, run_area = 0.0;
   Vec run_depth_moment{0.0, 0.0, 0.0}, run_area_moment{0.0, 0.0, 0.0};
   auto flush = [&]() {
@@ -207,6 +382,10 @@ ContactWrench ComputeContactWrench(const SurfaceElements& elements, const PadKin
     if (run_dynamic) {
       force += run_area * run_sigma_dyn;
       moment += rotate(run_area_moment).cross(run_sigma_dyn);
+    }
+    if (run_compaction) {
+      compaction_force += run_area * run_sigma_comp;
+      compaction_moment += rotate(run_area_moment).cross(run_sigma_comp);
     }
     run_depth = run_area = 0.0;
     run_depth_moment = run_area_moment = Vec{0.0, 0.0, 0.0};
@@ -225,6 +404,10 @@ ContactWrench ComputeContactWrench(const SurfaceElements& elements, const PadKin
       for (int k = 0; k < 3; ++k) d[k] = ground.Depth(p_WB + rotate(p[k]));
     }
     if (d[0] <= 0.0 && d[1] <= 0.0 && d[2] <= 0.0) continue;
+    if constexpr (kPadTerms) {
+      for (int k = 0; k < 3; ++k)
+        if (d[k] > penetration) penetration = d[k], deepest_B = p[k];
+    }
 
     const Vec n_B = Load(nb + 3 * e);
     if (!spinning) {
@@ -234,17 +417,24 @@ ContactWrench ComputeContactWrench(const SurfaceElements& elements, const PadKin
         run_open = true;
         run_n = n_B;
         const Eigen::Vector3d n_W = rotate(n_B);
+        run_nz = n_W.z();
         const double weight = lead_weight(n_W, v0);
         run_leads = weight > 0.0;
         if (run_leads) {
           run_sigma = weight * law.StressPerDepth(n_W, v0);
           run_sigma_dyn = weight * law.DynamicStress(n_W, v0);
           run_dynamic = !is_zero(run_sigma_dyn);
+          if (kPadTerms && compaction) {
+            run_sigma_comp = weight * law.CompactionStress(n_W, v0);
+            run_compaction = !is_zero(run_sigma_comp);
+          }
         }
       }
-      if (run_dynamic && run_leads) {
-        const Submerged s = ClipAndIntegrate<true>(areas[e], d, p);
+      if ((run_dynamic || run_compaction) && run_leads) {
+        const Submerged s = Clip<kPower, true>(areas[e], d, p, exponent, depth_scale);
         submerged_area += s.area;
+        if (kPadTerms && footprint && run_nz < 0.0)
+          footprint_area -= run_nz * s.area, footprint_rate -= run_nz * s.area_rate * depth_rate0;
         if (!(s.depth_integral > 0.0)) continue;
         ++leading;
         run_depth += s.depth_integral;
@@ -252,8 +442,10 @@ ContactWrench ComputeContactWrench(const SurfaceElements& elements, const PadKin
         run_area += s.area;
         run_area_moment = run_area_moment + s.area_moment;
       } else {
-        const Submerged s = ClipAndIntegrate<false>(areas[e], d, p);
+        const Submerged s = Clip<kPower, false>(areas[e], d, p, exponent, depth_scale);
         submerged_area += s.area;
+        if (kPadTerms && footprint && run_nz < 0.0)
+          footprint_area -= run_nz * s.area, footprint_rate -= run_nz * s.area_rate * depth_rate0;
         if (!run_leads || !(s.depth_integral > 0.0)) continue;
         ++leading;
         run_depth += s.depth_integral;
@@ -263,12 +455,22 @@ ContactWrench ComputeContactWrench(const SurfaceElements& elements, const PadKin
     }
 
     // Rotating pad: each element has its own velocity.
-    const Submerged s = ClipAndIntegrate<false>(areas[e], d, p);
+    const Submerged s = Clip<kPower, false>(areas[e], d, p, exponent, depth_scale);
     submerged_area += s.area;
+    const Eigen::Vector3d n_W = rotate(n_B);
+    if (kPadTerms && footprint && n_W.z() < 0.0) {
+      // d/dt (-n_z a) with n rotating (dn/dt = w x n) and each vertex depth at its own rate.
+      double grad[3];
+      ClippedAreaGradient(areas[e], d, grad);
+      double area_dot = 0.0;
+      for (int k = 0; k < 3; ++k)
+        if (grad[k] != 0.0) area_dot += grad[k] * (depth_rate0 + g_W.dot(w0.cross(rotate(p[k]))));
+      footprint_area -= n_W.z() * s.area;
+      footprint_rate -= n_W.z() * area_dot + w0.cross(n_W).z() * s.area;
+    }
     if (!(s.depth_integral > 0.0)) continue;
     const Eigen::Vector3d depth_moment_W = rotate(s.depth_moment);
     const Eigen::Vector3d v_W = v0 + w0.cross(depth_moment_W / s.depth_integral);
-    const Eigen::Vector3d n_W = rotate(n_B);
     const double weight = lead_weight(n_W, v_W);
     if (!(weight > 0.0)) continue;
     ++leading;
@@ -276,19 +478,53 @@ ContactWrench ComputeContactWrench(const SurfaceElements& elements, const PadKin
     force += s.depth_integral * sigma;
     moment += depth_moment_W.cross(sigma);  // = r_W x (depth_integral sigma)
     const Eigen::Vector3d sigma_dyn = weight * law.DynamicStress(n_W, v_W);
-    if (!is_zero(sigma_dyn)) {
+    const Eigen::Vector3d sigma_comp = kPadTerms && compaction ? Eigen::Vector3d(weight * law.CompactionStress(n_W, v_W))
+                                                  : Eigen::Vector3d::Zero();
+    if (!is_zero(sigma_dyn) || !is_zero(sigma_comp)) {
       // Not proportional to depth: integrated over the submerged area, acting at its centroid.
       const Submerged sa = ClipAndIntegrate<true>(areas[e], d, p);
-      force += sa.area * sigma_dyn;
-      moment += rotate(sa.area_moment).cross(sigma_dyn);
+      const Eigen::Vector3d r_W = rotate(sa.area_moment);
+      if (!is_zero(sigma_dyn)) {
+        force += sa.area * sigma_dyn;
+        moment += r_W.cross(sigma_dyn);
+      }
+      if (!is_zero(sigma_comp)) {
+        compaction_force += sa.area * sigma_comp;
+        compaction_moment += r_W.cross(sigma_comp);
+      }
     }
   }
   flush();
+  if (kPadTerms && compaction) {
+    const double decay = std::exp(-penetration / law.compaction_decay_depth_m());
+    force += decay * compaction_force;
+    moment += decay * compaction_moment;
+  }
   out.force_W = force;
   out.moment_W = moment;
   out.submerged_area_m2 = submerged_area;
   out.leading_elements = leading;
+  out.penetration_m = penetration;
+  if (footprint) {
+    out.footprint_area_m2 = footprint_area;
+    out.footprint_area_rate_m2_s = footprint_rate;
+    out.penetration_rate_m_s = penetration > 0.0 ? depth_rate0 + g_W.dot(w0.cross(rotate(deepest_B))) : 0.0;
+  }
   return out;
+}
+}  // namespace
+
+ContactWrench ComputeContactWrench(const SurfaceElements& elements, const PadKinematics& kinematics,
+                                   const GroundSurface& ground, const StressLaw3D& law) {
+  const bool compaction = law.has_compaction();
+  const bool footprint = law.added_mass_density_kg_m3() > 0.0;
+  const bool power = law.depth_law().exponent != 1.0;
+  if (compaction || footprint) {
+    return power ? ContactWrenchImpl<true, true>(elements, kinematics, ground, law, compaction, footprint)
+                 : ContactWrenchImpl<false, true>(elements, kinematics, ground, law, compaction, footprint);
+  }
+  return power ? ContactWrenchImpl<true, false>(elements, kinematics, ground, law, false, false)
+               : ContactWrenchImpl<false, false>(elements, kinematics, ground, law, false, false);
 }
 
 }  // namespace touchdown::rft

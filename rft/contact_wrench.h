@@ -15,6 +15,12 @@
 //    turns away from the motion fades out smoothly over n.v/|v| in [-0.02, 0] rather than at
 //    once, so the force is Lipschitz in the velocity (see kTrailingBand).
 //  - The law's DynamicStress (if any) is integrated over the submerged area, not over depth.
+//  - The law's depth law (StressLaw3D::depth_law, the effect `depth_exponent`): for p != 1 the
+//    stress per depth is weighted by z_ref (z / z_ref)^p instead of z, integrated exactly over
+//    each clipped triangle (closed form, see contact_wrench.cpp); p = 1 takes the linear path.
+//  - The law's CompactionStress (effect `compaction_peak`) is integrated over the submerged area
+//    like DynamicStress, and its force and moment are scaled by exp(-z_pad / d_c), z_pad the
+//    pad's penetration (the deepest submerged vertex depth, = rft/deepest_point.h when in contact).
 //  - A pad at rest (v = 0 at an element) gets no RFT stress there: the law needs a direction.
 //  - Moments are about the reference point (the origin of B), expressed in W.
 //  - No allocation inside the element loop.
@@ -39,6 +45,17 @@ struct ContactWrench {
   Eigen::Vector3d moment_W = Eigen::Vector3d::Zero();  // about the reference point [N m]
   double submerged_area_m2 = 0.0;                      // all elements below the surface
   int leading_elements = 0;                            // submerged and leading
+  // Only when the law has compaction or added mass, else 0: the deepest vertex depth of the
+  // submerged elements (0: none) [m].
+  double penetration_m = 0.0;
+  // Only when the law has added mass (StressLaw3D::added_mass_density_kg_m3() > 0), else 0
+  // (rft/entrained_mass.h): the footprint, i.e. the horizontal projection of the submerged
+  // downward-facing surface (n_z < 0) [m^2], and its time derivative under the pad's motion
+  // [m^2/s] (vertex depth rates and the rotation of the normals; exact over a plane, the vertical
+  // rate on any other ground); the rate of the penetration (the deepest vertex) [m/s].
+  double footprint_area_m2 = 0.0;
+  double footprint_area_rate_m2_s = 0.0;
+  double penetration_rate_m_s = 0.0;
 };
 
 ContactWrench ComputeContactWrench(const SurfaceElements& elements, const PadKinematics& kinematics,

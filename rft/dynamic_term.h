@@ -27,6 +27,14 @@ class DynamicTermLaw final : public StressLaw3D {
     return quasi_static_->StressPerDepth(n_W, v_W);
   }
   Eigen::Vector3d DynamicStress(const Eigen::Vector3d& n_W, const Eigen::Vector3d& v_W) const override;
+  // The pad-level terms (depth law, compaction transient, added mass) are the wrapped law's.
+  DepthLaw depth_law() const override { return quasi_static_->depth_law(); }
+  Eigen::Vector3d CompactionStress(const Eigen::Vector3d& n_W, const Eigen::Vector3d& v_W) const override {
+    return quasi_static_->CompactionStress(n_W, v_W);
+  }
+  double compaction_decay_depth_m() const override { return quasi_static_->compaction_decay_depth_m(); }
+  bool has_compaction() const override { return quasi_static_->has_compaction(); }
+  double added_mass_density_kg_m3() const override { return quasi_static_->added_mass_density_kg_m3(); }
   const StressLaw3D& quasi_static() const { return *quasi_static_; }
   double lambda() const { return lambda_; }
   double rho_c_kg_m3() const { return rho_c_; }

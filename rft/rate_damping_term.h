@@ -28,6 +28,14 @@ class RateDampingLaw final : public StressLaw3D {
     return inner_->StressPerDepth(n_W, v_W);
   }
   Eigen::Vector3d DynamicStress(const Eigen::Vector3d& n_W, const Eigen::Vector3d& v_W) const override;
+  // The pad-level terms (depth law, compaction transient, added mass) are the wrapped law's.
+  DepthLaw depth_law() const override { return inner_->depth_law(); }
+  Eigen::Vector3d CompactionStress(const Eigen::Vector3d& n_W, const Eigen::Vector3d& v_W) const override {
+    return inner_->CompactionStress(n_W, v_W);
+  }
+  double compaction_decay_depth_m() const override { return inner_->compaction_decay_depth_m(); }
+  bool has_compaction() const override { return inner_->has_compaction(); }
+  double added_mass_density_kg_m3() const override { return inner_->added_mass_density_kg_m3(); }
   const StressLaw3D& inner() const { return *inner_; }
   double c_N_s_m3() const { return c_; }
 

@@ -10,6 +10,7 @@
 #include "rft/gas_cushion_term.h"
 #include "rft/input_error.h"
 #include "rft/li2013_3d.h"
+#include "rft/pad_effect_terms.h"
 #include "rft/rate_damping_term.h"
 
 namespace touchdown::rft {
@@ -79,6 +80,16 @@ std::unique_ptr<StressLaw3D> MakeStressLaw3D(std::string_view law, const SoilPar
           "must be in [0, 1)", terms.gas_chi);
   Require(std::isfinite(terms.gas_c_N_s_m3) && terms.gas_c_N_s_m3 >= 0.0, soil, "gas_cushion.c_g_N_s_m3",
           "must be non-negative", terms.gas_c_N_s_m3);
+  Require(std::isfinite(terms.depth_exponent) && terms.depth_exponent > 0.0, soil, "depth_exponent.p",
+          "must be positive", terms.depth_exponent);
+  Require(std::isfinite(terms.depth_reference_m) && terms.depth_reference_m > 0.0, soil, "depth_exponent.z_ref",
+          "must be positive", terms.depth_reference_m);
+  Require(std::isfinite(terms.compaction_k_kg_m3) && terms.compaction_k_kg_m3 >= 0.0, soil,
+          "compaction_peak.k_c_kg_m3", "must be non-negative", terms.compaction_k_kg_m3);
+  Require(std::isfinite(terms.compaction_depth_m) && terms.compaction_depth_m > 0.0, soil, "compaction_peak.d_c",
+          "must be positive", terms.compaction_depth_m);
+  Require(std::isfinite(terms.added_mass_ca) && terms.added_mass_ca >= 0.0, soil, "added_mass.c_a",
+          "must be non-negative", terms.added_mass_ca);
   SoilParameters base = soil;
   const bool inertial = terms.inertial_lambda > 0.0;
   if (inertial) base.dynamic_term = false;  // the model's inertial term replaces the soil's own
@@ -94,6 +105,16 @@ std::unique_ptr<StressLaw3D> MakeStressLaw3D(std::string_view law, const SoilPar
   if (terms.gas_chi > 0.0 || terms.gas_c_N_s_m3 > 0.0)
     out = std::make_unique<GasCushionLaw>(std::move(out), terms.gas_chi, terms.gas_c_N_s_m3);
   if (terms.damping_c_N_s_m3 > 0.0) out = std::make_unique<RateDampingLaw>(std::move(out), terms.damping_c_N_s_m3);
+  // The pad-level terms (rft/pad_effect_terms.h), each only when it acts.
+  if (terms.depth_exponent != 1.0)
+    out = std::make_unique<DepthExponentLaw>(std::move(out), terms.depth_exponent, terms.depth_reference_m);
+  if (terms.compaction_k_kg_m3 > 0.0)
+    out = std::make_unique<CompactionPeakLaw>(std::move(out), terms.compaction_k_kg_m3, terms.compaction_depth_m);
+  if (terms.added_mass_ca > 0.0) {
+    Require(std::isfinite(soil.bulk_density_kg_m3) && soil.bulk_density_kg_m3 > 0.0, soil, "bulk_density_kg_m3",
+            "added_mass needs the soil's bulk density", soil.bulk_density_kg_m3);
+    out = std::make_unique<AddedMassLaw>(std::move(out), terms.added_mass_ca * soil.bulk_density_kg_m3);
+  }
   return out;
 }
 
