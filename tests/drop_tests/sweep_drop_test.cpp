@@ -146,7 +146,7 @@ TEST_F(SweepDrop, MeshPadSweepAppliesEveryModelEffectInItsFreeDrops) {
   // change its stroke; the axisymmetric pad's rig drop takes the same effect.
   Write("mass.yaml", "schema_version: 1\ntype: model\neffects: {added_mass: {c_a: 1}}\n");
   auto run = [&](const std::string& name, const std::string& model_line) {
-    const SweepPlan plan = LoadSweepPlan(Write(name + ".yaml", "schema_version: 1\ntype: sweep\n" + model_line +
+    const SweepPlan plan = LoadSweepPlan(Write("sweep_" + name + ".yaml", "schema_version: 1\ntype: sweep\n" + model_line +
                                                                    "fixed: {soil: fjs1_lp, impact_speed_m_s: 1.0}\n"
                                                                    "grid: {pad: [flat, coarse_hex.yaml]}\n"));
     RunSweep(plan, Out(name), Quiet(1));
