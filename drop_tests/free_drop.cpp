@@ -37,7 +37,7 @@ Pose PoseOf(const geom::PadBody& body, const Eigen::Ref<const Eigen::VectorXd>& 
 }
 
 double Depth(const geom::PadBody& body, const rft::GroundSurface& ground, const Pose& s) {
-  return rft::DeepestVertexDepth(body.vertices_B, s.R_WB, s.p_WB, ground);
+  return rft::DeepestVertexDepth(geom::DeepestPointCandidates(body, ground), s.R_WB, s.p_WB, ground);
 }
 
 // Radius of the pad about its centre of mass: spin times it is a speed.

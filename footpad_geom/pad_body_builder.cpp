@@ -8,6 +8,7 @@
 #include <limits>
 #include <sstream>
 
+#include "footpad_geom/convex_hull.h"
 #include "footpad_geom/mass_properties.h"
 #include "rft/input_error.h"
 
@@ -79,6 +80,7 @@ PadBody MakePadBody(const TriangleMesh& mesh, const PadMassModel& mass, const Ei
   body.vertices_B.resize(3, static_cast<int>(std::count(used.begin(), used.end(), 1)));
   for (size_t k = 0, c = 0; k < mesh.vertices.size(); ++k)
     if (used[k]) body.vertices_B.col(static_cast<int>(c++)) = mesh.vertices[k] - reference_point_m;
+  body.hull_vertices_B = ConvexHullVertices(body.vertices_B);
   body.lowest_z_B = body.vertices_B.cols() > 0 ? body.vertices_B.row(2).minCoeff() : 0.0;
   return body;
 }

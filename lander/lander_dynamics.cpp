@@ -33,7 +33,7 @@ constexpr double kProbeSpeed = 1e-6;
 double PadRadius(const Leg& leg) {
   const rft::SurfaceElements& s = leg.pad->surface;
   if (s.HasBounds()) return s.max_vertex_radius_m;  // model data: measured once
-  return leg.vertices_P.size() ? leg.vertices_P.colwise().norm().maxCoeff() : 0.0;
+  return leg.pad->vertices_B.colwise().norm().maxCoeff();
 }
 
 // Linear-velocity Jacobian of the pad CoM (3 x nu) and of the joint centre, and their bias.
@@ -66,17 +66,8 @@ void FinishModel(LanderModel& model) {
     if (!leg.pad || !(leg.pad->mass_kg > 0.0) || leg.pad->surface.size() == 0)
       throw std::invalid_argument("lander: every leg needs a pad with mass and a surface");
     if ((leg.joint_B - leg.hip_B).norm() <= 0.0) throw std::invalid_argument("lander: leg of zero length");
-    const rft::SurfaceElements& s = leg.pad->surface;
-    std::vector<Eigen::Vector3d> v;
-    v.reserve(3 * s.size());
-    for (int k = 0; k < s.size(); ++k) v.insert(v.end(), {s.p0_B.col(k), s.p1_B.col(k), s.p2_B.col(k)});
-    auto less = [](const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
-      return std::lexicographical_compare(a.data(), a.data() + 3, b.data(), b.data() + 3);
-    };
-    std::sort(v.begin(), v.end(), less);
-    v.erase(std::unique(v.begin(), v.end()), v.end());
-    leg.vertices_P.resize(3, static_cast<int>(v.size()));
-    for (size_t k = 0; k < v.size(); ++k) leg.vertices_P.col(static_cast<int>(k)) = v[k];
+    if (leg.pad->vertices_B.cols() == 0)
+      throw std::invalid_argument("lander: every pad needs its vertices (geom::PadBody::vertices_B)");
   }
 }
 
@@ -103,7 +94,9 @@ LanderPose ComputePose(const LanderModel& model, const StateLayout& L, const Eig
 }
 
 double PadDepth(const LanderModel& model, const Terrain& terrain, int leg, const PadFrame& pad) {
-  return rft::DeepestVertexDepth(model.legs[leg].vertices_P, pad.R_WP, pad.p_WJ, *terrain.surface);
+  const geom::PadBody& body = *model.legs[leg].pad;
+  return rft::DeepestVertexDepth(geom::DeepestPointCandidates(body, *terrain.surface), pad.R_WP, pad.p_WJ,
+                                 *terrain.surface);
 }
 
 rft::ContactWrench QuasiStaticWrench(const LanderModel& model, const Terrain& terrain, int leg, const PadFrame& pad,

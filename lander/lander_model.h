@@ -52,9 +52,6 @@ struct Leg {
   std::optional<ShockAbsorber> absorber;
   std::optional<ConeLimit> cone;
   std::shared_ptr<const geom::PadBody> pad;           // pad frame origin = joint centre
-  // The pad's distinct surface vertices in P (filled by FinishModel): its lowest point for the
-  // touchdown events and the depth report.
-  Eigen::Matrix3Xd vertices_P;
   Eigen::Vector3d axis_B() const { return (joint_B - hip_B).normalized(); }
 };
 
@@ -72,7 +69,7 @@ struct LanderModel {
 };
 
 // Checks the model (throws std::invalid_argument on inconsistent data; the loader reports
-// user errors first) and fills the derived fields (Leg::vertices_P).
+// user errors first).
 void FinishModel(LanderModel& model);
 
 }  // namespace touchdown::lander
