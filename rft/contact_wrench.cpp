@@ -212,6 +212,21 @@ inline void AddPowerTriangle(double area, double d0, double d1, double d2, Vec p
   AddFan((1.0 - t) * area, d[2], d[1], q[2], q[1], c, p, integral, moment);
 }
 
+// The submerged area alone, as ClipAndIntegrate computes it (same operations, same bits): what a
+// trailing element contributes (submerged_area_m2) without its depth integrals.
+[[gnu::always_inline]] inline double SubmergedArea(double area, const double d[3]) {
+  const int below = (d[0] > 0.0) + (d[1] > 0.0) + (d[2] > 0.0);
+  if (below == 3) return area;
+  if (below == 1) {
+    const int i = d[0] > 0.0 ? 0 : (d[1] > 0.0 ? 1 : 2), j = (i + 1) % 3, k = (i + 2) % 3;
+    const double tj = d[i] / (d[i] - d[j]), tk = d[i] / (d[i] - d[k]);
+    return tj * tk * area;
+  }
+  const int k = d[0] <= 0.0 ? 0 : (d[1] <= 0.0 ? 1 : 2), i = (k + 1) % 3, j = (k + 2) % 3;
+  const double si = d[k] / (d[k] - d[i]), sj = d[k] / (d[k] - d[j]);
+  return area + -1.0 * (si * sj * area);
+}
+
 // int d^p dA and int d^p r dA over the submerged part of a triangle (clipped as in
 // ClipAndIntegrate), scaled by z_ref^(1 - p); the area terms as ClipAndIntegrate's.
 template <bool kAreaMoment>
@@ -442,6 +457,10 @@ ContactWrench ContactWrenchImpl(const SurfaceElements& elements, const PadKinema
         run_area += s.area;
         run_area_moment = run_area_moment + s.area_moment;
       } else {
+        if (!run_leads && !(kPadTerms && footprint && run_nz < 0.0)) {
+          submerged_area += SubmergedArea(areas[e], d);  // a trailing face: its area is all it adds
+          continue;
+        }
         const Submerged s = Clip<kPower, false>(areas[e], d, p, exponent, depth_scale);
         submerged_area += s.area;
         if (kPadTerms && footprint && run_nz < 0.0)
