@@ -57,6 +57,23 @@ TEST(CompareMetrics, StiffnessMismatchAgainstPenetrationHasAClosedForm) {
   EXPECT_NEAR(ForceNrmsePenetration(measured, simulated).value, (k_sim - k) * std::sqrt(mean_sq) / (k * d_max), 1e-12);
 }
 
+TEST(CompareMetrics, RestSamplesWithPenetrationNoiseAreNotPartOfTheStroke) {
+  // Stroke F = k d to 20 mm, then rest (force = the weight, 5 N) with +-0.05 mm of noise on the
+  // penetration, the deepest sample late in the rest. Only the stroke is compared against
+  // penetration: identical strokes give 0, where the rest samples (5 N against F_sim(d) ~ 200 N)
+  // would give about 0.9.
+  DatasetTrace measured = Linear(1e4, 0.02, 21);
+  DatasetTrace simulated = measured;
+  for (int i = 0; i < 40; ++i) {
+    measured.t_s.push_back(measured.t_s.back() + 1e-3);
+    measured.penetration_m.push_back(0.02 + (i % 2 == 0 ? -5e-5 : (i == 35 ? 6e-5 : 4e-5)));
+    measured.force_N.push_back(5.0);
+  }
+  const NrmseResult r = ForceNrmsePenetration(measured, simulated);
+  EXPECT_EQ(r.value, 0.0);
+  EXPECT_EQ(r.used, 20u);  // the stroke's samples with d > 0
+}
+
 TEST(CompareMetrics, SamplesBeyondTheSimulatedStrokeAreCountedNotCompared) {
   const DatasetTrace measured = Linear(1e4, 0.02, 21);
   const DatasetTrace simulated = Linear(1e4, 0.01, 11);
