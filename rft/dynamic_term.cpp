@@ -5,9 +5,7 @@
 namespace touchdown::rft {
 
 DynamicTermLaw::DynamicTermLaw(std::unique_ptr<StressLaw3D> quasi_static, double lambda, double rho_c_kg_m3)
-    : quasi_static_(std::move(quasi_static)), lambda_(lambda), rho_c_(rho_c_kg_m3) {
-  name_ = std::string(quasi_static_->name()) + "+dynamic";
-}
+    : ForwardingLaw3D(std::move(quasi_static), "dynamic"), lambda_(lambda), rho_c_(rho_c_kg_m3) {}
 
 Eigen::Vector3d DynamicTermLaw::DynamicStress(const Eigen::Vector3d& n, const Eigen::Vector3d& v) const {
   const double vn = n.dot(v);

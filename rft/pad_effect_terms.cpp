@@ -6,12 +6,6 @@
 
 namespace touchdown::rft {
 
-ForwardingLaw3D::ForwardingLaw3D(std::unique_ptr<StressLaw3D> inner, std::string_view suffix)
-    : inner_(std::move(inner)) {
-  if (!inner_) throw std::invalid_argument("ForwardingLaw3D: no law to wrap");
-  name_ = std::string(inner_->name()) + "+" + std::string(suffix);
-}
-
 DepthExponentLaw::DepthExponentLaw(std::unique_ptr<StressLaw3D> inner, double exponent, double reference_m)
     : ForwardingLaw3D(std::move(inner), "depth_exponent"), law_{exponent, reference_m} {
   if (!(std::isfinite(exponent) && exponent > 0.0 && std::isfinite(reference_m) && reference_m > 0.0))

@@ -19,37 +19,9 @@
 #include <string>
 #include <string_view>
 
-#include "rft/stress_law_3d.h"
+#include "rft/forwarding_law_3d.h"
 
 namespace touchdown::rft {
-
-// Forwards everything to the wrapped law; the decorators below override one term each.
-class ForwardingLaw3D : public StressLaw3D {
- public:
-  // Throws std::invalid_argument on a null law.
-  ForwardingLaw3D(std::unique_ptr<StressLaw3D> inner, std::string_view suffix);
-  std::string_view name() const override { return name_; }
-  Eigen::Vector3d StressPerDepth(const Eigen::Vector3d& n_W, const Eigen::Vector3d& v_W) const override {
-    return inner_->StressPerDepth(n_W, v_W);
-  }
-  Eigen::Vector3d DynamicStress(const Eigen::Vector3d& n_W, const Eigen::Vector3d& v_W) const override {
-    return inner_->DynamicStress(n_W, v_W);
-  }
-  DepthLaw depth_law() const override { return inner_->depth_law(); }
-  Eigen::Vector3d CompactionStress(const Eigen::Vector3d& n_W, const Eigen::Vector3d& v_W) const override {
-    return inner_->CompactionStress(n_W, v_W);
-  }
-  double compaction_decay_depth_m() const override { return inner_->compaction_decay_depth_m(); }
-  bool has_compaction() const override { return inner_->has_compaction(); }
-  double added_mass_density_kg_m3() const override { return inner_->added_mass_density_kg_m3(); }
-  const StressLaw3D& inner() const { return *inner_; }
-
- protected:
-  std::unique_ptr<StressLaw3D> inner_;
-
- private:
-  std::string name_;
-};
 
 class DepthExponentLaw final : public ForwardingLaw3D {
  public:

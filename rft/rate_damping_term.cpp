@@ -7,10 +7,8 @@
 namespace touchdown::rft {
 
 RateDampingLaw::RateDampingLaw(std::unique_ptr<StressLaw3D> inner, double c_N_s_m3)
-    : inner_(std::move(inner)), c_(c_N_s_m3) {
-  if (!inner_) throw std::invalid_argument("RateDampingLaw: no law to wrap");
+    : ForwardingLaw3D(std::move(inner), "rate_damping"), c_(c_N_s_m3) {
   if (!(std::isfinite(c_) && c_ >= 0.0)) throw std::invalid_argument("RateDampingLaw: c must be finite and >= 0");
-  name_ = std::string(inner_->name()) + "+rate_damping";
 }
 
 Eigen::Vector3d RateDampingLaw::DynamicStress(const Eigen::Vector3d& n, const Eigen::Vector3d& v) const {

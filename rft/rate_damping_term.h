@@ -15,34 +15,19 @@
 #include <string>
 #include <string_view>
 
-#include "rft/stress_law_3d.h"
+#include "rft/forwarding_law_3d.h"
 
 namespace touchdown::rft {
 
-class RateDampingLaw final : public StressLaw3D {
+class RateDampingLaw final : public ForwardingLaw3D {
  public:
   // Throws std::invalid_argument on a null law or a negative or non-finite c.
-  RateDampingLaw(std::unique_ptr<StressLaw3D> inner, double c_N_s_m3);
-  std::string_view name() const override { return name_; }  // e.g. "li2013+rate_damping"
-  Eigen::Vector3d StressPerDepth(const Eigen::Vector3d& n_W, const Eigen::Vector3d& v_W) const override {
-    return inner_->StressPerDepth(n_W, v_W);
-  }
+  RateDampingLaw(std::unique_ptr<StressLaw3D> inner, double c_N_s_m3);  // name e.g. "li2013+rate_damping"
   Eigen::Vector3d DynamicStress(const Eigen::Vector3d& n_W, const Eigen::Vector3d& v_W) const override;
-  // The pad-level terms (depth law, compaction transient, added mass) are the wrapped law's.
-  DepthLaw depth_law() const override { return inner_->depth_law(); }
-  Eigen::Vector3d CompactionStress(const Eigen::Vector3d& n_W, const Eigen::Vector3d& v_W) const override {
-    return inner_->CompactionStress(n_W, v_W);
-  }
-  double compaction_decay_depth_m() const override { return inner_->compaction_decay_depth_m(); }
-  bool has_compaction() const override { return inner_->has_compaction(); }
-  double added_mass_density_kg_m3() const override { return inner_->added_mass_density_kg_m3(); }
-  const StressLaw3D& inner() const { return *inner_; }
   double c_N_s_m3() const { return c_; }
 
  private:
-  std::unique_ptr<StressLaw3D> inner_;
   double c_;
-  std::string name_;
 };
 
 // -c (v.n) n on a leading element, 0 otherwise: the damping stress both RateDampingLaw and
