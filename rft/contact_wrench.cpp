@@ -1,6 +1,7 @@
 #include "rft/contact_wrench.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace touchdown::rft {
@@ -38,7 +39,7 @@ constexpr double kCullMargin = 1e-12;
 // Normals closer than this (1-norm) count as equal for reusing the stress of the previous element
 // in pure translation: the two triangles of a planar quad get normals that differ by rounding
 // only. The laws are continuous in n, so the reuse changes the stress by about this much.
-constexpr double kSameNormal = 1e-12;
+constexpr double kSameNormal = SurfaceElements::kSameNormal;
 
 struct Vec {
   double x, y, z;
@@ -98,6 +99,54 @@ template <bool kAreaMoment>
     AddTriangle<kAreaMoment>(si * sj * area, d[k], 0.0, 0.0, p[k], p[k] + si * (p[i] - p[k]),
                              p[k] + sj * (p[j] - p[k]), -1.0, s);
     if (d[k] < 0.0) s.area_rate = -2.0 * si * sj * area / d[k];
+  }
+  return s;
+}
+
+// The integrals of ClipAndIntegrate<true> over the part of a triangle where the depth d > 0 and an
+// affine function t >= 0 (vertex values d[k], t[k]): the triangle is clipped by both half-planes
+// (Sutherland-Hodgman, at most five corners) and fanned into triangles, each integrated exactly.
+// Used where a rotating element's leading boundary (t = 0) crosses it.
+inline Submerged ClipTwiceAndIntegrate(double area, const double d[3], const Vec p[3], const double t[3]) {
+  struct Corner {
+    Vec p;
+    double d, t;
+  };
+  Corner a[5], b[5];
+  int na = 3, nb = 0;
+  for (int k = 0; k < 3; ++k) a[k] = {p[k], d[k], t[k]};
+  auto clip = [](const Corner* in, int n, Corner* out, auto value) {
+    int m = 0;
+    for (int k = 0; k < n; ++k) {
+      const Corner& u = in[k];
+      const Corner& w = in[(k + 1) % n];
+      const double fu = value(u), fw = value(w);
+      if (fu >= 0.0) out[m++] = u;
+      if ((fu >= 0.0) != (fw >= 0.0)) {
+        const double s = fu / (fu - fw);
+        out[m++] = {u.p + s * (w.p - u.p), u.d + s * (w.d - u.d), u.t + s * (w.t - u.t)};
+      }
+    }
+    return m;
+  };
+  nb = clip(a, na, b, [](const Corner& c) { return c.d; });
+  na = clip(b, nb, a, [](const Corner& c) { return c.t; });
+  Submerged s;
+  if (na < 3) return s;
+  // Sub-triangle areas from the cross product, scaled so the fan of the whole triangle sums to
+  // `area` (the element's own area, as the other paths use).
+  auto twice_area = [](Vec u, Vec v, Vec w) {
+    const Vec e1 = v - u, e2 = w - u;
+    const double cx = e1.y * e2.z - e1.z * e2.y, cy = e1.z * e2.x - e1.x * e2.z, cz = e1.x * e2.y - e1.y * e2.x;
+    return std::sqrt(cx * cx + cy * cy + cz * cz);
+  };
+  const double whole = twice_area(p[0], p[1], p[2]);
+  if (!(whole > 0.0)) return s;
+  const double scale = area / whole;
+  for (int k = 1; k + 1 < na; ++k) {
+    const double sub = scale * twice_area(a[0].p, a[k].p, a[k + 1].p);
+    AddTriangle<true>(sub, std::max(a[0].d, 0.0), std::max(a[k].d, 0.0), std::max(a[k + 1].d, 0.0), a[0].p, a[k].p,
+                      a[k + 1].p, 1.0, s);
   }
   return s;
 }
@@ -329,6 +378,7 @@ ContactWrench ContactWrenchImpl(const SurfaceElements& elements, const PadKinema
   const double gx = g_B.x(), gy = g_B.y(), gz = g_B.z();
   const Eigen::Vector3d& v0 = kinematics.v_WB_W;
   const Eigen::Vector3d& w0 = kinematics.w_WB_W;
+  const Eigen::Vector3d u0_B = R.transpose() * v0, w0_B = R.transpose() * w0;  // for the leading boundary
   // Spin so slow that w x r changes no element's velocity by more than kNegligibleSpin |v| counts
   // as translation (the run path, several times cheaper): a level pad dropped straight down picks
   // up an angular velocity of order 1e-16 rad/s from rounding in its moment, and the stress,
@@ -406,6 +456,17 @@ ContactWrench ContactWrenchImpl(const SurfaceElements& elements, const PadKinema
     run_depth_moment = run_area_moment = Vec{0.0, 0.0, 0.0};
   };
 
+  // Stresses per normal class in translation (SurfaceElements::normal_class), on the stack.
+  struct ClassStress {
+    double nz;
+    bool leads, dynamic, compaction;
+    Eigen::Vector3d sigma, sigma_dyn, sigma_comp;
+  };
+  const bool classes = bounded && !spinning && elements.class_normal_B.cols() > 0;
+  std::array<bool, SurfaceElements::kMaxNormalClasses> class_done;
+  std::array<ClassStress, SurfaceElements::kMaxNormalClasses> class_stress;
+  if (classes) class_done.fill(false);
+
   for (int e = 0; e < count; ++e) {
     if (cull && e % SurfaceElements::kBlockSize == 0 && block_above_ground(e / SurfaceElements::kBlockSize)) {
       e += SurfaceElements::kBlockSize - 1;
@@ -431,17 +492,33 @@ ContactWrench ContactWrenchImpl(const SurfaceElements& elements, const PadKinema
         flush();
         run_open = true;
         run_n = n_B;
-        const Eigen::Vector3d n_W = rotate(n_B);
-        run_nz = n_W.z();
-        const double weight = lead_weight(n_W, v0);
-        run_leads = weight > 0.0;
-        if (run_leads) {
-          run_sigma = weight * law.StressPerDepth(n_W, v0);
-          run_sigma_dyn = weight * law.DynamicStress(n_W, v0);
-          run_dynamic = !is_zero(run_sigma_dyn);
-          if (kPadTerms && compaction) {
-            run_sigma_comp = weight * law.CompactionStress(n_W, v0);
-            run_compaction = !is_zero(run_sigma_comp);
+        const int cls = classes ? elements.normal_class[e] : -1;
+        if (cls >= 0 && class_done[cls]) {  // this normal's stresses are known from an earlier run
+          const ClassStress& c = class_stress[cls];
+          run_nz = c.nz;
+          run_leads = c.leads;
+          run_sigma = c.sigma;
+          run_sigma_dyn = c.sigma_dyn;
+          run_dynamic = c.dynamic;
+          run_sigma_comp = c.sigma_comp;
+          run_compaction = c.compaction;
+        } else {
+          const Eigen::Vector3d n_W = cls >= 0 ? rotate(Load(elements.class_normal_B.data() + 3 * cls)) : rotate(n_B);
+          run_nz = n_W.z();
+          const double weight = lead_weight(n_W, v0);
+          run_leads = weight > 0.0;
+          if (run_leads) {
+            run_sigma = weight * law.StressPerDepth(n_W, v0);
+            run_sigma_dyn = weight * law.DynamicStress(n_W, v0);
+            run_dynamic = !is_zero(run_sigma_dyn);
+            if (kPadTerms && compaction) {
+              run_sigma_comp = weight * law.CompactionStress(n_W, v0);
+              run_compaction = !is_zero(run_sigma_comp);
+            }
+          }
+          if (cls >= 0) {
+            class_done[cls] = true;
+            class_stress[cls] = {run_nz, run_leads, run_dynamic, run_compaction, run_sigma, run_sigma_dyn, run_sigma_comp};
           }
         }
       }
@@ -488,20 +565,45 @@ ContactWrench ContactWrenchImpl(const SurfaceElements& elements, const PadKinema
       footprint_rate -= n_W.z() * area_dot + w0.cross(n_W).z() * s.area;
     }
     if (!(s.depth_integral > 0.0)) continue;
-    const Eigen::Vector3d depth_moment_W = rotate(s.depth_moment);
-    const Eigen::Vector3d v_W = v0 + w0.cross(depth_moment_W / s.depth_integral);
+    Eigen::Vector3d depth_moment_W = rotate(s.depth_moment);
+    Eigen::Vector3d v_W = v0 + w0.cross(depth_moment_W / s.depth_integral);
+    // Where the element leads: t(r) = n.v(r) + kTrailingBand |v_c| >= 0, affine in r (v_c: the
+    // velocity at the submerged part's depth-weighted centroid). When t changes sign over the
+    // element (a rotating pad's leading boundary crosses it), only the part with t >= 0 carries
+    // stress, taken exactly, with the law at that part's own centroid. The centroid rule alone
+    // switched the whole element on or off as the boundary passed its centroid: a kink in the
+    // force per element, and thousands of small steps while a tilted pad rights itself.
+    double depth_integral = s.depth_integral;
+    bool straddles = false;
+    Submerged leading_part;
+    if constexpr (!kPower) {
+      const double a = n_B.x * u0_B.x() + n_B.y * u0_B.y() + n_B.z * u0_B.z() + kTrailingBand * v_W.norm();
+      const Eigen::Vector3d b(n_B.y * w0_B.z() - n_B.z * w0_B.y(), n_B.z * w0_B.x() - n_B.x * w0_B.z(),
+                              n_B.x * w0_B.y() - n_B.y * w0_B.x());  // n x w: n.(w x r) = r.(n x w)
+      double t[3];
+      for (int k = 0; k < 3; ++k) t[k] = a + b.x() * p[k].x + b.y() * p[k].y + b.z() * p[k].z;
+      if (t[0] < 0.0 && t[1] < 0.0 && t[2] < 0.0) continue;  // trails beyond the band everywhere
+      if (t[0] < 0.0 || t[1] < 0.0 || t[2] < 0.0) {
+        leading_part = ClipTwiceAndIntegrate(areas[e], d, p, t);
+        if (!(leading_part.depth_integral > 0.0)) continue;
+        straddles = true;
+        depth_integral = leading_part.depth_integral;
+        depth_moment_W = rotate(leading_part.depth_moment);
+        v_W = v0 + w0.cross(depth_moment_W / depth_integral);
+      }
+    }
     const double weight = lead_weight(n_W, v_W);
     if (!(weight > 0.0)) continue;
     ++leading;
     const Eigen::Vector3d sigma = weight * law.StressPerDepth(n_W, v_W);
-    force += s.depth_integral * sigma;
+    force += depth_integral * sigma;
     moment += depth_moment_W.cross(sigma);  // = r_W x (depth_integral sigma)
     const Eigen::Vector3d sigma_dyn = weight * law.DynamicStress(n_W, v_W);
     const Eigen::Vector3d sigma_comp = kPadTerms && compaction ? Eigen::Vector3d(weight * law.CompactionStress(n_W, v_W))
                                                   : Eigen::Vector3d::Zero();
     if (!is_zero(sigma_dyn) || !is_zero(sigma_comp)) {
       // Not proportional to depth: integrated over the submerged area, acting at its centroid.
-      const Submerged sa = ClipAndIntegrate<true>(areas[e], d, p);
+      const Submerged sa = straddles ? leading_part : ClipAndIntegrate<true>(areas[e], d, p);
       const Eigen::Vector3d r_W = rotate(sa.area_moment);
       if (!is_zero(sigma_dyn)) {
         force += sa.area * sigma_dyn;

@@ -20,10 +20,20 @@ struct SurfaceElements {
   static constexpr int kBlockSize = 32;
   Eigen::Matrix3Xd block_min_B, block_max_B;  // axis-aligned box of each block's vertices [m]
   double max_vertex_radius_m = -1.0;          // largest |p_B| over all vertices [m]; < 0: unknown
+  // Elements whose normals agree to kSameNormal share a class (at most kMaxNormalClasses; -1 for
+  // the rest): a pad translating evaluates the stress law once per class rather than once per run
+  // of consecutive equal normals (the side wall of a revolved pad repeats its 64 normals band after
+  // band). The law sees the class's normal, the first such element's.
+  static constexpr int kMaxNormalClasses = 256;
+  static constexpr double kSameNormal = 1e-12;  // 1-norm
+  Eigen::VectorXi normal_class;
+  Eigen::Matrix3Xd class_normal_B;
 
   int size() const { return static_cast<int>(area_m2.size()); }
   int block_count() const { return (size() + kBlockSize - 1) / kBlockSize; }
-  bool HasBounds() const { return max_vertex_radius_m >= 0.0 && block_min_B.cols() == block_count(); }
+  bool HasBounds() const {
+    return max_vertex_radius_m >= 0.0 && block_min_B.cols() == block_count() && normal_class.size() == size();
+  }
   void Resize(int n) {
     p0_B.resize(3, n);
     p1_B.resize(3, n);
@@ -33,6 +43,8 @@ struct SurfaceElements {
     block_min_B.resize(3, 0);
     block_max_B.resize(3, 0);
     max_vertex_radius_m = -1.0;
+    normal_class.resize(0);
+    class_normal_B.resize(3, 0);
   }
   void UpdateBounds();
 };

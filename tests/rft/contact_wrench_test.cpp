@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <vector>
 
@@ -181,6 +183,34 @@ TEST(RftContactWrench, ForceContinuousAsPadSinksThroughTriangleRows) {
     ++crossings;
   }
   EXPECT_GT(crossings, 20);
+}
+
+TEST(RftContactWrench, LeadingBoundaryOfARotatingPadSweepsSmoothlyAcrossElements) {
+  // A box of 8 x 8 quads per face, 5 mm deep, sinking slowly while it rolls about x: the bottom
+  // leads where v_z(y) = -v + w y < 0. Scanning v moves that boundary across the element rows.
+  // Each element's leading part is clipped exactly, so the vertical force changes by about the
+  // same amount per scan step; the centroid rule alone made a step of a whole element's share
+  // whenever the boundary crossed a centroid. Measured: largest step 1.74 N against a median of
+  // 3.9e-4 N with the centroid rule; 0.057 N against 0.027 N (2.1x) with the clip.
+  const SurfaceElements box = MakeBox(Eigen::Vector3d(-0.02, -0.02, 0), Eigen::Vector3d(0.02, 0.02, 0.01), 8);
+  const Li2013TreersLaw law(kZeta);
+  const PlaneGround ground;
+  const double w = 2.0;  // rad/s about +x: v_z(y) = -v + w y
+  std::vector<double> fz;
+  for (int i = 0; i <= 200; ++i) {
+    const double v = 0.005 + 0.015 * i / 200.0;  // the boundary y = v / w sweeps 2.5 .. 10 mm
+    PadKinematics k = Sinking(0.005, Eigen::Vector3d(0, 0, -v));
+    k.w_WB_W = Eigen::Vector3d(w, 0, 0);
+    fz.push_back(ComputeContactWrench(box, k, ground, law).force_W.z());
+  }
+  std::vector<double> steps;
+  for (size_t i = 1; i < fz.size(); ++i) steps.push_back(std::abs(fz[i] - fz[i - 1]));
+  std::vector<double> sorted = steps;
+  std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+  const double median = sorted[sorted.size() / 2];
+  ASSERT_GT(median, 0.0);
+  std::printf("[ steps ] max %.4g median %.4g ratio %.3g\n", *std::max_element(steps.begin(), steps.end()), median, *std::max_element(steps.begin(), steps.end()) / median);
+  EXPECT_LT(*std::max_element(steps.begin(), steps.end()), 4.0 * median);
 }
 
 TEST(RftContactWrench, TiltedPadForceConvergesWithRefinement) {
