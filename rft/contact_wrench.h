@@ -13,7 +13,10 @@
 //    its submerged part (faces parallel to the motion count, as the side wall does in the
 //    paper's axisymmetric integral; see contact_wrench.cpp for why that point). A face that
 //    turns away from the motion fades out smoothly over n.v/|v| in [-0.02, 0] rather than at
-//    once, so the force is Lipschitz in the velocity (see kTrailingBand).
+//    once, so the force is Lipschitz in the velocity (see kTrailingBand). On a rotating pad n.v
+//    varies over an element (affinely); where the leading boundary crosses it, only the part that
+//    leads is integrated (clipped exactly, as at the free surface), with the velocity at that
+//    part's own depth-weighted centroid, so the force varies continuously as the boundary moves.
 //  - The law's DynamicStress (if any) is integrated over the submerged area, not over depth.
 //  - The law's depth law (StressLaw3D::depth_law, the effect `depth_exponent`): for p != 1 the
 //    stress per depth is weighted by z_ref (z / z_ref)^p instead of z, integrated exactly over
