@@ -23,6 +23,8 @@ bool IntegratorOptions::IsValid(std::string* error) const {
   };
   if (!(rtol > 0.0 && rtol < 1.0)) return fail("rtol must be in (0, 1)");
   if (!(atol > 0.0 && std::isfinite(atol))) return fail("atol must be positive and finite");
+  for (double a : component_atol)
+    if (!(a > 0.0 && std::isfinite(a))) return fail("every component_atol must be positive and finite");
   if (!(max_step >= 0.0 && std::isfinite(max_step))) return fail("max_step must be >= 0");
   if (max_num_steps <= 0) return fail("max_num_steps must be positive");
   if (!(max_wall_time_s >= 0.0 && std::isfinite(max_wall_time_s)))
@@ -139,7 +141,19 @@ CvodeIntegrator::CvodeIntegrator(int state_size, RhsFunction rhs, const Integrat
   m.Check(CVodeSetErrHandlerFn(m.cvode, &Impl::ErrorHandler, &m), "CVodeSetErrHandlerFn");
   m.Check(CVodeInit(m.cvode, &Impl::Rhs, 0.0, m.y), "CVodeInit");
   m.Check(CVodeSetUserData(m.cvode, &m), "CVodeSetUserData");
-  m.Check(CVodeSStolerances(m.cvode, options.rtol, options.atol), "CVodeSStolerances");
+  if (options.component_atol.empty()) {
+    m.Check(CVodeSStolerances(m.cvode, options.rtol, options.atol), "CVodeSStolerances");
+  } else {
+    if (static_cast<int>(options.component_atol.size()) != state_size)
+      throw std::invalid_argument("CvodeIntegrator: component_atol has " + std::to_string(options.component_atol.size()) +
+                                  " entries for a state of " + std::to_string(state_size));
+    // CVODE copies the tolerance vector.
+    std::vector<double> atol = options.component_atol;
+    N_Vector a = N_VMake_Serial(state_size, atol.data(), m.context);
+    const int flag = CVodeSVtolerances(m.cvode, options.rtol, a);
+    N_VDestroy(a);
+    m.Check(flag, "CVodeSVtolerances");
+  }
   m.Check(CVodeSetMaxNumSteps(m.cvode, options.max_num_steps), "CVodeSetMaxNumSteps");
   if (options.max_step > 0) m.Check(CVodeSetMaxStep(m.cvode, options.max_step), "CVodeSetMaxStep");
   if (options.stiff) {
@@ -203,6 +217,19 @@ IntegratorSummary CvodeIntegrator::summary() const {
   if (impl_->linear_solver) {
     CVodeGetNumJacEvals(impl_->cvode, &s.jacobian_evaluations);
     CVodeGetNumLinRhsEvals(impl_->cvode, &s.jacobian_rhs_evaluations);
+  }
+  CVodeGetLastOrder(impl_->cvode, &s.last_order);
+  CVodeGetLastStep(impl_->cvode, &s.last_step_s);
+  // The state that limits the step: largest |local error| x error weight of the last step.
+  const int n = static_cast<int>(y_.size());
+  if (n > 0 && s.steps > 0) {
+    Eigen::VectorXd weights(n), errors(n);
+    N_Vector w = N_VMake_Serial(n, weights.data(), impl_->context);
+    N_Vector e = N_VMake_Serial(n, errors.data(), impl_->context);
+    if (CVodeGetErrWeights(impl_->cvode, w) == CV_SUCCESS && CVodeGetEstLocalErrors(impl_->cvode, e) == CV_SUCCESS)
+      (errors.cwiseAbs().cwiseProduct(weights)).maxCoeff(&s.limiting_component);
+    N_VDestroy(w);
+    N_VDestroy(e);
   }
   return s;
 }

@@ -31,6 +31,10 @@ struct IntegratorOptions {
   // stiff or chattering model cannot hang a sweep: the advance then fails with an
   // IntegrationFailure saying the limit was exceeded.
   double max_wall_time_s = 0.0;
+  // Absolute tolerance per state component (its size must be the state size); empty: `atol` for
+  // all. A model whose states have different scales (metres, radians per second, joules) needs
+  // one: a state that stays near zero by symmetry is otherwise resolved to `atol` in its own unit.
+  std::vector<double> component_atol;
   // Ceres-style validity check; fills *error and returns false on a bad option.
   bool IsValid(std::string* error) const;
 };
@@ -58,6 +62,11 @@ struct IntegratorSummary {
   long jacobian_evaluations = 0;        // stiff mode only
   long jacobian_rhs_evaluations = 0;    // right-hand sides spent on difference-quotient Jacobians
   long nonlinear_convergence_failures = 0;
+  // Where the integrator stands after its last step: method order, step size, and the state
+  // component with the largest weighted local error (the one that limits the step; -1: none yet).
+  int last_order = 0;
+  double last_step_s = 0.0;
+  int limiting_component = -1;
 };
 
 // Raised when CVODE fails (too much work, convergence failure, non-finite state, the

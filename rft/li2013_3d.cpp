@@ -135,57 +135,58 @@ Alpha2 Li2013AlphaFromSinCos(const Li2013Coefficients& c, double sb, double cb, 
 Li2013TreersLaw::Li2013TreersLaw(double zeta_N_m3, Li2013Coefficients coefficients, double alpha_y)
     : zeta_(zeta_N_m3), c_(coefficients), alpha_y_(alpha_y) {}
 
-Eigen::Vector3d Li2013TreersLaw::Decomposed(const Eigen::Vector3d& n, const Eigen::Vector3d& u, double e2x,
+Eigen::Vector3d Li2013TreersLaw::Decomposed(double sb, double cb, const Eigen::Vector3d& v, double e2x,
                                             double e2y) const {
-  // e2 = (e2x, e2y, 0), e1 = e2 x z = (e2y, -e2x, 0).
-  const double u1 = u.x() * e2y - u.y() * e2x;
-  const double u2 = u.x() * e2x + u.y() * e2y;
-  const double uz = u.z();
-  const double s23 = std::min(1.0, std::sqrt(u2 * u2 + uz * uz));
-  const double s1 = std::min(1.0, std::abs(u1));
-  double stress_e2 = 0.0, stress_z = 0.0, stress_e1 = 0.0;
-  if (s23 > 0.0) {
-    // beta is the angle of n in the e2-z plane plus pi/2, so sin(beta) = n.e2, cos(beta) = -n_z
-    // (a bottom face, n = -z, has beta = 0). n is projected onto the plane: it has an e1 part
-    // only inside the near-horizontal blend, where e2 comes from the velocity.
-    double sb = n.x() * e2x + n.y() * e2y, cb = -n.z();
-    const double norm = std::sqrt(sb * sb + cb * cb);
-    sb /= norm;
-    cb /= norm;
-    // gamma: direction of v23 from e2, positive moving down.
-    const double sg = -uz / s23, cg = u2 / s23;
-    const Alpha2 a = Li2013AlphaFromSinCos(c_, sb, cb, sg, cg);
-    const double w = TreersInPlaneWeightTabulated(s23);
+  // e2 = (e2x, e2y, 0), e1 = e2 x z = (e2y, -e2x, 0). Written for the force loop of a rotating pad,
+  // which calls it once per element: two square roots and one division, the weights' tables inline.
+  const double u1 = v.x() * e2y - v.y() * e2x;
+  const double u2 = v.x() * e2x + v.y() * e2y;
+  const double vz = v.z();
+  const double r23_sq = u2 * u2 + vz * vz;
+  double stress_e2 = 0.0, stress_z = 0.0, s1 = 1.0;
+  if (r23_sq > 0.0) {
+    // With r23 = |v23| and speed = |v|: s23 = r23 / speed, s1 = |u1| / speed, and gamma, the
+    // direction of v23 from e2 (positive moving down), has sin = -vz / r23, cos = u2 / r23.
+    const double r23 = std::sqrt(r23_sq), speed = std::sqrt(r23_sq + u1 * u1);
+    const double inv = 1.0 / (r23 * speed);
+    const double s23 = std::min(1.0, r23_sq * inv);
+    s1 = std::min(1.0, std::abs(u1) * r23 * inv);
+    const Alpha2 a = Li2013AlphaFromSinCos(c_, sb, cb, -vz * speed * inv, u2 * speed * inv);
+    const double w = InPlaneTable()(s23);
     stress_e2 = -w * a.x;  // alpha_x > 0 resists motion along +e2
     stress_z = w * a.z;    // alpha_z > 0 pushes up
   }
-  if (s1 > 0.0) stress_e1 = -TreersLateralWeightTabulated(s1) * alpha_y_ * (u1 > 0.0 ? 1.0 : -1.0);
+  const double stress_e1 = u1 == 0.0 ? 0.0 : -LateralTable()(s1) * alpha_y_ * (u1 > 0.0 ? 1.0 : -1.0);
   return zeta_ *
          Eigen::Vector3d(stress_e2 * e2x + stress_e1 * e2y, stress_e2 * e2y - stress_e1 * e2x, stress_z);
 }
 
 Eigen::Vector3d Li2013TreersLaw::StressPerDepth(const Eigen::Vector3d& n, const Eigen::Vector3d& v) const {
-  const double speed = v.norm();
-  if (!(speed > 0.0)) return Eigen::Vector3d::Zero();
-  const Eigen::Vector3d u = v / speed;
+  const double speed_sq = v.squaredNorm();
+  if (!(speed_sq > 0.0)) return Eigen::Vector3d::Zero();
   const double nh = std::sqrt(n.x() * n.x() + n.y() * n.y());
-  if (nh >= kHorizontalBand) return Decomposed(n, u, n.x() / nh, n.y() / nh);
+  // beta is the angle of n in the e2-z plane plus pi/2, so sin(beta) = n.e2, cos(beta) = -n_z (a
+  // bottom face, n = -z, has beta = 0). With e2 along n's horizontal part, n.e2 = nh and n lies in
+  // the plane (n is a unit vector).
+  if (nh >= kHorizontalBand) return Decomposed(nh, -n.z(), v, n.x() / nh, n.y() / nh);
 
   // Near-horizontal facet: e2 along the horizontal part of the velocity; for a vertical
   // velocity any horizontal e2 gives the same stress up to the facet's tilt, so take n's (or x).
-  const double uh = std::sqrt(u.x() * u.x() + u.y() * u.y());
+  // n then has an e1 part, so it is projected onto the e2-z plane.
+  const double uh = std::sqrt(v.x() * v.x() + v.y() * v.y());
   double ex = 1.0, ey = 0.0;
-  if (uh > 1e-12) {
-    ex = u.x() / uh;
-    ey = u.y() / uh;
+  if (uh > 1e-12 * std::sqrt(speed_sq)) {
+    ex = v.x() / uh;
+    ey = v.y() / uh;
   } else if (nh > 0.0) {
     ex = n.x() / nh;
     ey = n.y() / nh;
   }
-  const Eigen::Vector3d in_motion_plane = Decomposed(n, u, ex, ey);
+  const double sb = n.x() * ex + n.y() * ey, cb = -n.z(), norm = std::sqrt(sb * sb + cb * cb);
+  const Eigen::Vector3d in_motion_plane = Decomposed(sb / norm, cb / norm, v, ex, ey);
   if (nh == 0.0) return in_motion_plane;
   const double w = Smoothstep(nh / kHorizontalBand);
-  return w * Decomposed(n, u, n.x() / nh, n.y() / nh) + (1.0 - w) * in_motion_plane;
+  return w * Decomposed(nh, -n.z(), v, n.x() / nh, n.y() / nh) + (1.0 - w) * in_motion_plane;
 }
 
 }  // namespace touchdown::rft

@@ -55,8 +55,9 @@ class Li2013TreersLaw final : public StressLaw3D {
   double zeta_N_m3() const { return zeta_; }
 
  private:
-  // The decomposition with a given horizontal unit e2 = (e2x, e2y, 0); u = v / |v|.
-  Eigen::Vector3d Decomposed(const Eigen::Vector3d& n, const Eigen::Vector3d& u, double e2x,
+  // The decomposition with a given horizontal unit e2 = (e2x, e2y, 0), for a normal with attack
+  // angle beta in the e2-z plane (sin, cos) and a velocity v != 0.
+  Eigen::Vector3d Decomposed(double sin_beta, double cos_beta, const Eigen::Vector3d& v, double e2x,
                              double e2y) const;
   double zeta_;
   Li2013Coefficients c_;
