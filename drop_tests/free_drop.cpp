@@ -142,9 +142,13 @@ FreeDropResult RunFreeDrop(const geom::PadBody& body, const rft::StressLaw3D& la
   integ::RootSpec roots;
   roots.count = 2;  // [0] touchdown (depth rises through 0), [1] rest (speed falls below threshold)
   roots.directions = {+1, -1};
+  // Touchdown is looked for during the approach only: the stroke starts on the surface (depth 0 at
+  // t = 0, which CVODE would report as a root at its start), and a pad that bounces off the soil
+  // flies on in the same stroke.
+  bool approaching = true;
   roots.function = [&](double, Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::VectorXd> gv) {
     const Pose s = PoseOf(body, y);
-    gv[0] = Depth(body, ground, s);
+    gv[0] = approaching ? Depth(body, ground, s) : -1.0;
     gv[1] = s.v_WC.squaredNorm() + s.w_W.squaredNorm() * radius * radius - rest_speed * rest_speed;
   };
   integ::CvodeIntegrator integrator(kSize, rhs, WithScaledTolerances(options.integrator, body, in, radius), roots);
@@ -175,6 +179,7 @@ FreeDropResult RunFreeDrop(const geom::PadBody& body, const rft::StressLaw3D& la
       y[kP + 2] = std::nextafter(y[kP + 2], std::numeric_limits<double>::infinity());
   }
   y[kWork] = 0.0;
+  approaching = false;
   integrator.Reset(0.0, y);
 
   FreeDropResult result;
@@ -215,7 +220,7 @@ FreeDropResult RunFreeDrop(const geom::PadBody& body, const rft::StressLaw3D& la
       ++k;
       continue;
     }
-    if (r.roots_found[1] == 0) continue;  // a touchdown re-crossing: go on to the same output time
+    if (r.roots_found[1] == 0) continue;  // not the rest event: go on to the same output time
     // Slow enough: rest if pushing straight down meets at least the weight. The probe moves at
     // 1 um/s: quasi-static RFT depends on the direction only, and speed-dependent terms (dynamic
     // term, damping effects) must not count as static capacity.
