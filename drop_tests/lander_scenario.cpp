@@ -257,7 +257,10 @@ LanderScenario LoadLanderScenario(const std::string& path) {
       sim.Fail("sample_rate_hz", "duration_s x sample_rate_hz must be at most 1e7 trace samples");
     if (sim.Has("capture_speed_m_s")) s.options.capture_speed_m_s = sim.NonNegative("capture_speed_m_s");
     if (sim.Has("rtol")) s.options.integrator.rtol = sim.Positive("rtol");
-    if (sim.Has("atol")) s.options.integrator.atol = sim.Positive("atol");
+    if (sim.Has("atol")) {
+      s.options.integrator.atol = sim.Positive("atol");
+      s.options.scale_tolerances = false;
+    }
     if (sim.Has("max_step_s")) s.options.integrator.max_step = sim.Positive("max_step_s");
     if (sim.Has("stiff")) {
       const std::string v = sim.String("stiff");
@@ -533,8 +536,10 @@ void WriteResolvedLanderScenario(const LanderScenario& s, const std::string& pat
   y << YAML::Key << "simulation" << YAML::Value << YAML::BeginMap << YAML::Key << "duration_s" << YAML::Value
     << s.options.duration_s << YAML::Key << "sample_rate_hz" << YAML::Value << s.options.sample_rate_hz << YAML::Key
     << "capture_speed_m_s" << YAML::Value << s.options.capture_speed_m_s << YAML::Key << "rtol" << YAML::Value
-    << s.options.integrator.rtol << YAML::Key << "atol" << YAML::Value << s.options.integrator.atol << YAML::Key
-    << "stiff" << YAML::Value << s.options.integrator.stiff << YAML::EndMap;
+    << s.options.integrator.rtol;
+  // Without `atol` the absolute tolerances are rtol times each state's scale (lander_simulation.h).
+  if (!s.options.scale_tolerances) y << YAML::Key << "atol" << YAML::Value << s.options.integrator.atol;
+  y << YAML::Key << "stiff" << YAML::Value << s.options.integrator.stiff << YAML::EndMap;
   y << YAML::EndMap;
   WriteFileAtomically(path, [&](std::ostream& out) { out << y.c_str() << '\n'; });
 }

@@ -69,6 +69,45 @@ HoldCheck CheckHold(const LanderModel& model, const Terrain& terrain, int i, con
   }
   return h;
 }
+
+// The absolute tolerance of each state: rtol times the landing's scale for that state (unless the
+// options give component_atol or ask for the scalar atol). Why: states that stay near zero - a
+// pad's spin about its ball joint, the roll rate of a symmetric landing - were resolved to 1e-11
+// in their own unit, radians per second included (docs/lander_dynamics.md has the step counts).
+//   length L: the largest distance of a ball joint from the body's centre of mass; pad size l:
+//   the largest pad vertex distance from its joint; speed V: the initial speed plus sqrt(2 g L);
+//   angles 1 rad; angular speeds V / L (body) and V / l (pads); energy M V^2 / 2 + M g L.
+integ::IntegratorOptions ScaledTolerances(const LanderModel& model, const StateLayout& L,
+                                          const LanderInitialState& initial, const LanderRunOptions& options) {
+  integ::IntegratorOptions o = options.integrator;
+  if (!o.component_atol.empty() || !options.scale_tolerances) return o;
+  double length = 0.0, pad = 0.0;
+  for (const Leg& leg : model.legs) {
+    length = std::max(length, leg.joint_B.norm());
+    if (leg.pad->vertices_B.cols() > 0) pad = std::max(pad, leg.pad->vertices_B.colwise().norm().maxCoeff());
+  }
+  if (!(length > 0.0)) length = 1.0;
+  if (!(pad > 0.0)) pad = length;
+  const double g = model.gravity_m_s2;
+  const double V = initial.v_WB_W.norm() + std::sqrt(2.0 * g * length) + 1e-3;
+  const double M = model.TotalMass(), E = 0.5 * M * V * V + M * g * length;
+  const double r = o.rtol;
+  o.component_atol.assign(L.size, r);  // quaternions
+  for (int k = 0; k < 3; ++k) {
+    o.component_atol[L.p_B() + k] = r * length;
+    o.component_atol[L.v_B() + k] = r * V;
+    o.component_atol[L.w_B() + k] = r * V / length;
+    for (int i = 0; i < kNumLegs; ++i) o.component_atol[L.w_P(i) + k] = r * V / pad;
+  }
+  for (int i = 0; i < kNumLegs; ++i) {
+    if (L.stroke_slot[i] < 0) continue;
+    o.component_atol[L.stroke(i)] = r * length;
+    o.component_atol[L.stroke_rate(i)] = r * V;
+  }
+  o.component_atol[L.work()] = r * E;
+  return o;
+}
+
 }  // namespace
 
 double BodyHeightForClearance(const LanderModel& model, const Terrain& terrain, const LanderInitialState& state,
@@ -154,7 +193,7 @@ LanderRunResult SimulateLander(const LanderModel& model, const Terrain& terrain,
   roots.function = roots_fn;
   roots.directions.assign(kNumRoots, -1);
   for (int i = 0; i < kNumLegs; ++i) roots.directions[PadRoot(i, 0)] = +1;
-  integ::CvodeIntegrator integrator(L.size, rhs, options.integrator, roots);
+  integ::CvodeIntegrator integrator(L.size, rhs, ScaledTolerances(model, L, initial, options), roots);
 
   LanderRunResult result;
   Eigen::VectorXd y = Pack(model, L, initial);

@@ -107,6 +107,25 @@ TEST(LanderDrop, ClosePackedPadsSinkLessAndTiltTheBodyTheRightWay) {
   }
 }
 
+// The absolute tolerances are rtol times each state's scale (lander_simulation.cpp): case B then
+// lands as with the scalar atol of 1e-11 it replaced, in fewer steps (the old one resolved the
+// pads' rocking about their ball joints to 1e-11 rad/s).
+TEST(LanderDrop, ScaledTolerancesLandCaseBAsTheScalarOneInFewerSteps) {
+  const LanderRun& scaled = CaseRun("lander_case_B");
+  LanderScenario s = test::CoarseScenario("lander_case_B");
+  s.options.scale_tolerances = false;
+  const LanderRun scalar = RunLanderScenario(s);
+  ASSERT_TRUE(scaled.result.rest_time_s && scalar.result.rest_time_s);
+  std::printf("[ tolerances ] case B steps: scaled %ld, scalar atol 1e-11 %ld\n", scaled.result.solver.steps,
+              scalar.result.solver.steps);
+  for (int i = 0; i < 4; ++i)
+    EXPECT_NEAR(scaled.result.final_penetration_m[i], scalar.result.final_penetration_m[i],
+                1e-6 * scalar.result.final_penetration_m[i]);
+  EXPECT_NEAR(scaled.result.final_attitude.roll_rad, scalar.result.final_attitude.roll_rad, 1e-5 * kDeg);
+  EXPECT_NEAR(scaled.result.final_attitude.pitch_rad, scalar.result.final_attitude.pitch_rad, 1e-5 * kDeg);
+  EXPECT_LT(scaled.result.solver.steps, scalar.result.solver.steps);
+}
+
 LanderRun SlopeRun(double slope_deg, double sideways_m_s) {
   LanderScenario s = test::CoarseScenario("lander_case_A");
   s.ground.slope_rad = slope_deg * kDeg;
