@@ -409,16 +409,18 @@ ContactWrench ContactWrenchImpl(const SurfaceElements& elements, const PadKinema
   double submerged_area = 0.0;
   int leading = 0;
 
-  // Weight of the element with outward normal n_W and velocity v_W: 1 when it leads (see the
-  // header), 0 when it trails by more than kTrailingBand, a smooth step in between.
-  auto lead_weight = [](const Eigen::Vector3d& n_W, const Eigen::Vector3d& v_W) {
-    const double speed2 = v_W.squaredNorm();
-    if (!(speed2 > 0.0)) return 0.0;  // at rest: no direction, no RFT stress
-    const double c = n_W.dot(v_W) / std::sqrt(speed2);
+  // Weight of an element whose outward normal makes c = n.v / |v| with its velocity: 1 when it
+  // leads (see the header), 0 when it trails by more than kTrailingBand, a smooth step in between.
+  auto lead_weight_of = [](double c) {
     if (c >= -kParallelTolerance) return 1.0;
     if (c <= -kTrailingBand) return 0.0;
     const double t = (c + kTrailingBand) / (kTrailingBand - kParallelTolerance);
     return t * t * (3.0 - 2.0 * t);
+  };
+  auto lead_weight = [&](const Eigen::Vector3d& n_W, const Eigen::Vector3d& v_W) {
+    const double speed2 = v_W.squaredNorm();
+    if (!(speed2 > 0.0)) return 0.0;  // at rest: no direction, no RFT stress
+    return lead_weight_of(n_W.dot(v_W) / std::sqrt(speed2));
   };
   auto is_zero = [](const Eigen::Vector3d& a) { return a.x() == 0.0 && a.y() == 0.0 && a.z() == 0.0; };
 
@@ -466,6 +468,42 @@ ContactWrench ContactWrenchImpl(const SurfaceElements& elements, const PadKinema
   std::array<bool, SurfaceElements::kMaxNormalClasses> class_done;
   std::array<ClassStress, SurfaceElements::kMaxNormalClasses> class_stress;
   if (classes) class_done.fill(false);
+
+  // Rotating pads: a batch of leading elements waiting for their stresses (on the stack).
+  struct RotatingElement {
+    double weight, depth_integral, area;
+    Vec depth_moment, area_moment;  // in B
+  };
+  constexpr int kRotatingBatch = 64;
+  std::array<RotatingElement, kRotatingBatch> rotating;
+  std::array<double, 3 * kRotatingBatch> rotating_n, rotating_v, rotating_sigma;
+  int pending = 0;
+  const Vec u0b{u0_B.x(), u0_B.y(), u0_B.z()}, w0b{w0_B.x(), w0_B.y(), w0_B.z()};
+  const bool dynamic_terms = law.has_dynamic_stress(), area_terms = dynamic_terms || (kPadTerms && compaction);
+  Eigen::Matrix3d depth_moment_stress = Eigen::Matrix3d::Zero();  // sum of m_B sigma_W^T
+  auto drain_rotating = [&]() {
+    law.StressPerDepthBatch(rotating_n.data(), rotating_v.data(), pending, rotating_sigma.data());
+    for (int i = 0; i < pending; ++i) {
+      const RotatingElement& r = rotating[i];
+      const Eigen::Vector3d sigma = r.weight * Eigen::Map<const Eigen::Vector3d>(rotating_sigma.data() + 3 * i);
+      force += r.depth_integral * sigma;
+      depth_moment_stress += Eigen::Vector3d(r.depth_moment.x, r.depth_moment.y, r.depth_moment.z) * sigma.transpose();
+      if (!area_terms) continue;
+      const Eigen::Map<const Eigen::Vector3d> n_W(rotating_n.data() + 3 * i), v_W(rotating_v.data() + 3 * i);
+      const Eigen::Vector3d r_W = rotate(r.area_moment);
+      if (dynamic_terms) {
+        const Eigen::Vector3d sigma_dyn = r.weight * law.DynamicStress(n_W, v_W);
+        force += r.area * sigma_dyn;
+        moment += r_W.cross(sigma_dyn);
+      }
+      if (kPadTerms && compaction) {
+        const Eigen::Vector3d sigma_comp = r.weight * law.CompactionStress(n_W, v_W);
+        compaction_force += r.area * sigma_comp;
+        compaction_moment += r_W.cross(sigma_comp);
+      }
+    }
+    pending = 0;
+  };
 
   for (int e = 0; e < count; ++e) {
     if (cull && e % SurfaceElements::kBlockSize == 0 && block_above_ground(e / SurfaceElements::kBlockSize)) {
@@ -550,70 +588,84 @@ ContactWrench ContactWrenchImpl(const SurfaceElements& elements, const PadKinema
       continue;
     }
 
-    // Rotating pad: each element has its own velocity.
+    // Rotating pad: each element has its own velocity. Worked in B up to the law; the leading
+    // elements are buffered and their stresses evaluated in batches (drain_rotating).
     const Submerged s = Clip<kPower, false>(areas[e], d, p, exponent, depth_scale);
     submerged_area += s.area;
-    const Eigen::Vector3d n_W = rotate(n_B);
-    if (kPadTerms && footprint && n_W.z() < 0.0) {
-      // d/dt (-n_z a) with n rotating (dn/dt = w x n) and each vertex depth at its own rate.
-      double grad[3];
-      ClippedAreaGradient(areas[e], d, grad);
-      double area_dot = 0.0;
-      for (int k = 0; k < 3; ++k)
-        if (grad[k] != 0.0) area_dot += grad[k] * (depth_rate0 + g_W.dot(w0.cross(rotate(p[k]))));
-      footprint_area -= n_W.z() * s.area;
-      footprint_rate -= n_W.z() * area_dot + w0.cross(n_W).z() * s.area;
+    if (kPadTerms && footprint) {
+      const Eigen::Vector3d n_W = rotate(n_B);
+      if (n_W.z() < 0.0) {
+        // d/dt (-n_z a) with n rotating (dn/dt = w x n) and each vertex depth at its own rate.
+        double grad[3];
+        ClippedAreaGradient(areas[e], d, grad);
+        double area_dot = 0.0;
+        for (int k = 0; k < 3; ++k)
+          if (grad[k] != 0.0) area_dot += grad[k] * (depth_rate0 + g_W.dot(w0.cross(rotate(p[k]))));
+        footprint_area -= n_W.z() * s.area;
+        footprint_rate -= n_W.z() * area_dot + w0.cross(n_W).z() * s.area;
+      }
     }
     if (!(s.depth_integral > 0.0)) continue;
-    Eigen::Vector3d depth_moment_W = rotate(s.depth_moment);
-    Eigen::Vector3d v_W = v0 + w0.cross(depth_moment_W / s.depth_integral);
+    double depth_integral = s.depth_integral;
+    Vec depth_moment = s.depth_moment;
+    // Velocity at the depth-weighted centroid c: u0 + w0 x c, in B.
+    auto centroid_velocity = [&](double integral, const Vec& m) {
+      const Vec c = (1.0 / integral) * m;
+      return Vec{u0b.x + w0b.y * c.z - w0b.z * c.y, u0b.y + w0b.z * c.x - w0b.x * c.z,
+                 u0b.z + w0b.x * c.y - w0b.y * c.x};
+    };
+    Vec v_B = centroid_velocity(depth_integral, depth_moment);
+    double speed = std::sqrt(v_B.x * v_B.x + v_B.y * v_B.y + v_B.z * v_B.z);
     // Where the element leads: t(r) = n.v(r) + kTrailingBand |v_c| >= 0, affine in r (v_c: the
     // velocity at the submerged part's depth-weighted centroid). When t changes sign over the
     // element (a rotating pad's leading boundary crosses it), only the part with t >= 0 carries
     // stress, taken exactly, with the law at that part's own centroid. The centroid rule alone
     // switched the whole element on or off as the boundary passed its centroid: a kink in the
     // force per element, and thousands of small steps while a tilted pad rights itself.
-    double depth_integral = s.depth_integral;
     bool straddles = false;
     Submerged leading_part;
     if constexpr (!kPower) {
-      const double a = n_B.x * u0_B.x() + n_B.y * u0_B.y() + n_B.z * u0_B.z() + kTrailingBand * v_W.norm();
-      const Eigen::Vector3d b(n_B.y * w0_B.z() - n_B.z * w0_B.y(), n_B.z * w0_B.x() - n_B.x * w0_B.z(),
-                              n_B.x * w0_B.y() - n_B.y * w0_B.x());  // n x w: n.(w x r) = r.(n x w)
+      const double a = n_B.x * u0b.x + n_B.y * u0b.y + n_B.z * u0b.z + kTrailingBand * speed;
+      const Vec b{n_B.y * w0b.z - n_B.z * w0b.y, n_B.z * w0b.x - n_B.x * w0b.z,
+                  n_B.x * w0b.y - n_B.y * w0b.x};  // n x w: n.(w x r) = r.(n x w)
       double t[3];
-      for (int k = 0; k < 3; ++k) t[k] = a + b.x() * p[k].x + b.y() * p[k].y + b.z() * p[k].z;
+      for (int k = 0; k < 3; ++k) t[k] = a + b.x * p[k].x + b.y * p[k].y + b.z * p[k].z;
       if (t[0] < 0.0 && t[1] < 0.0 && t[2] < 0.0) continue;  // trails beyond the band everywhere
       if (t[0] < 0.0 || t[1] < 0.0 || t[2] < 0.0) {
         leading_part = ClipTwiceAndIntegrate(areas[e], d, p, t);
         if (!(leading_part.depth_integral > 0.0)) continue;
         straddles = true;
         depth_integral = leading_part.depth_integral;
-        depth_moment_W = rotate(leading_part.depth_moment);
-        v_W = v0 + w0.cross(depth_moment_W / depth_integral);
+        depth_moment = leading_part.depth_moment;
+        v_B = centroid_velocity(depth_integral, depth_moment);
+        speed = std::sqrt(v_B.x * v_B.x + v_B.y * v_B.y + v_B.z * v_B.z);
       }
     }
-    const double weight = lead_weight(n_W, v_W);
+    const double weight = speed > 0.0 ? lead_weight_of((n_B.x * v_B.x + n_B.y * v_B.y + n_B.z * v_B.z) / speed) : 0.0;
     if (!(weight > 0.0)) continue;
     ++leading;
-    const Eigen::Vector3d sigma = weight * law.StressPerDepth(n_W, v_W);
-    force += depth_integral * sigma;
-    moment += depth_moment_W.cross(sigma);  // = r_W x (depth_integral sigma)
-    const Eigen::Vector3d sigma_dyn = weight * law.DynamicStress(n_W, v_W);
-    const Eigen::Vector3d sigma_comp = kPadTerms && compaction ? Eigen::Vector3d(weight * law.CompactionStress(n_W, v_W))
-                                                  : Eigen::Vector3d::Zero();
-    if (!is_zero(sigma_dyn) || !is_zero(sigma_comp)) {
+    RotatingElement& r = rotating[pending];
+    const Eigen::Vector3d n_W = rotate(n_B), v_W = rotate(v_B);
+    for (int k = 0; k < 3; ++k) {
+      rotating_n[3 * pending + k] = n_W[k];
+      rotating_v[3 * pending + k] = v_W[k];
+    }
+    r.weight = weight;
+    r.depth_integral = depth_integral;
+    r.depth_moment = depth_moment;
+    if (area_terms) {
       // Not proportional to depth: integrated over the submerged area, acting at its centroid.
       const Submerged sa = straddles ? leading_part : ClipAndIntegrate<true>(areas[e], d, p);
-      const Eigen::Vector3d r_W = rotate(sa.area_moment);
-      if (!is_zero(sigma_dyn)) {
-        force += sa.area * sigma_dyn;
-        moment += r_W.cross(sigma_dyn);
-      }
-      if (!is_zero(sigma_comp)) {
-        compaction_force += sa.area * sigma_comp;
-        compaction_moment += r_W.cross(sigma_comp);
-      }
+      r.area = sa.area;
+      r.area_moment = sa.area_moment;
     }
+    if (++pending == kRotatingBatch) drain_rotating();
+  }
+  if (pending > 0) drain_rotating();
+  // Moments of the rotating elements: sum (R m_B) x sigma = eps_ijk (R S)_jk, S = sum m_B sigma^T.
+  {
+    const Eigen::Matrix3d P = R * depth_moment_stress;
+    moment += Eigen::Vector3d(P(1, 2) - P(2, 1), P(2, 0) - P(0, 2), P(0, 1) - P(1, 0));
   }
   flush();
   if (kPadTerms && compaction) {

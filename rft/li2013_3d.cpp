@@ -101,20 +101,26 @@ class HermiteTable {
   double slope_[kNodes + 1];
 };
 
-const HermiteTable& LateralTable() {
-  static const HermiteTable table(&TreersLateralWeight, &LateralWeightSlope);
-  return table;
-}
-const HermiteTable& InPlaneTable() {
-  static const HermiteTable table(&TreersInPlaneWeight, &InPlaneWeightSlope);
-  return table;
-}
+// Built at load time, after the constants above (same translation unit, in order): no guard to
+// test in the force loop.
+const HermiteTable kLateralTable(&TreersLateralWeight, &LateralWeightSlope);
+const HermiteTable kInPlaneTable(&TreersInPlaneWeight, &InPlaneWeightSlope);
+const HermiteTable& LateralTable() { return kLateralTable; }
+const HermiteTable& InPlaneTable() { return kInPlaneTable; }
+
+[[gnu::always_inline]] inline Alpha2 AlphaFromSinCos(const Li2013Coefficients& c, double sb, double cb, double sg,
+                                                     double cg);
 }  // namespace
 
 double TreersLateralWeightTabulated(double s1) { return LateralTable()(s1); }
 double TreersInPlaneWeightTabulated(double s23) { return InPlaneTable()(s23); }
 
 Alpha2 Li2013AlphaFromSinCos(const Li2013Coefficients& c, double sb, double cb, double sg, double cg) {
+  return AlphaFromSinCos(c, sb, cb, sg, cg);
+}
+
+namespace {
+Alpha2 AlphaFromSinCos(const Li2013Coefficients& c, double sb, double cb, double sg, double cg) {
   // Mirror rule for a velocity with a backward horizontal part (|gamma| > pi/2):
   // alpha(beta, gamma) = (alpha_z, -alpha_x)(-beta, pi - gamma).
   double mirror = 1.0;
@@ -131,11 +137,12 @@ Alpha2 Li2013AlphaFromSinCos(const Li2013Coefficients& c, double sb, double cb, 
   a.x = mirror * (c.C11 * cos_2b_plus_g + c.C01 * cg + c.Cm11 * cos_m2b_plus_g + c.D10 * s2b);
   return a;
 }
+}  // namespace
 
 Li2013TreersLaw::Li2013TreersLaw(double zeta_N_m3, Li2013Coefficients coefficients, double alpha_y)
     : zeta_(zeta_N_m3), c_(coefficients), alpha_y_(alpha_y) {}
 
-Eigen::Vector3d Li2013TreersLaw::Decomposed(double sb, double cb, const Eigen::Vector3d& v, double e2x,
+[[gnu::always_inline]] inline Eigen::Vector3d Li2013TreersLaw::Decomposed(double sb, double cb, const Eigen::Vector3d& v, double e2x,
                                             double e2y) const {
   // e2 = (e2x, e2y, 0), e1 = e2 x z = (e2y, -e2x, 0). Written for the force loop of a rotating pad,
   // which calls it once per element: two square roots and one division, the weights' tables inline.
@@ -151,7 +158,7 @@ Eigen::Vector3d Li2013TreersLaw::Decomposed(double sb, double cb, const Eigen::V
     const double inv = 1.0 / (r23 * speed);
     const double s23 = std::min(1.0, r23_sq * inv);
     s1 = std::min(1.0, std::abs(u1) * r23 * inv);
-    const Alpha2 a = Li2013AlphaFromSinCos(c_, sb, cb, -vz * speed * inv, u2 * speed * inv);
+    const Alpha2 a = AlphaFromSinCos(c_, sb, cb, -vz * speed * inv, u2 * speed * inv);
     const double w = InPlaneTable()(s23);
     stress_e2 = -w * a.x;  // alpha_x > 0 resists motion along +e2
     stress_z = w * a.z;    // alpha_z > 0 pushes up
@@ -187,6 +194,35 @@ Eigen::Vector3d Li2013TreersLaw::StressPerDepth(const Eigen::Vector3d& n, const 
   if (nh == 0.0) return in_motion_plane;
   const double w = Smoothstep(nh / kHorizontalBand);
   return w * Decomposed(nh, -n.z(), v, n.x() / nh, n.y() / nh) + (1.0 - w) * in_motion_plane;
+}
+
+void Li2013TreersLaw::StressPerDepthBatch(const double* n_W, const double* v_W, int count, double* sigma) const {
+  // The normal's part, e2 and beta, is kept while the normal repeats; near-horizontal facets (the
+  // blend of StressPerDepth) take the general path.
+  const double* last_n = nullptr;
+  bool plain = false;
+  double sb = 0.0, cb = 0.0, e2x = 0.0, e2y = 0.0;
+  for (int i = 0; i < count; ++i) {
+    const double* n = n_W + 3 * i;
+    const Eigen::Map<const Eigen::Vector3d> v(v_W + 3 * i);
+    Eigen::Map<Eigen::Vector3d> out(sigma + 3 * i);
+    if (last_n == nullptr || n[0] != last_n[0] || n[1] != last_n[1] || n[2] != last_n[2]) {
+      last_n = n;
+      const double nh = std::sqrt(n[0] * n[0] + n[1] * n[1]);
+      plain = nh >= kHorizontalBand;
+      if (plain) {
+        sb = nh;
+        cb = -n[2];
+        e2x = n[0] / nh;
+        e2y = n[1] / nh;
+      }
+    }
+    if (plain && v.squaredNorm() > 0.0) {
+      out = Decomposed(sb, cb, v, e2x, e2y);
+    } else {
+      out = StressPerDepth(Eigen::Map<const Eigen::Vector3d>(n), v);
+    }
+  }
 }
 
 }  // namespace touchdown::rft

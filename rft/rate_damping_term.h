@@ -24,6 +24,7 @@ class RateDampingLaw final : public ForwardingLaw3D {
   // Throws std::invalid_argument on a null law or a negative or non-finite c.
   RateDampingLaw(std::unique_ptr<StressLaw3D> inner, double c_N_s_m3);  // name e.g. "li2013+rate_damping"
   Eigen::Vector3d DynamicStress(const Eigen::Vector3d& n_W, const Eigen::Vector3d& v_W) const override;
+  bool has_dynamic_stress() const override { return true; }
   double c_N_s_m3() const { return c_; }
 
  private:

@@ -32,6 +32,19 @@ class StressLaw3D {
   virtual std::string_view name() const = 0;
   // Stress per unit depth [N/m^3] on a leading element (n . v >= 0). |v| > 0.
   virtual Eigen::Vector3d StressPerDepth(const Eigen::Vector3d& n_W, const Eigen::Vector3d& v_W) const = 0;
+  // StressPerDepth for `count` elements: normals n_W and velocities v_W (each 3 x count, packed
+  // x, y, z per element) give sigma (3 x count). Same values as StressPerDepth element by element;
+  // the force loop of a rotating pad calls this, so a law can do the work that depends on the
+  // normal alone once for consecutive elements that share it, and the loop pays one virtual call
+  // per batch. A law that overrides StressPerDepth of a law it wraps overrides this too.
+  virtual void StressPerDepthBatch(const double* n_W, const double* v_W, int count, double* sigma) const {
+    for (int i = 0; i < count; ++i)
+      Eigen::Map<Eigen::Vector3d>(sigma + 3 * i) = StressPerDepth(Eigen::Map<const Eigen::Vector3d>(n_W + 3 * i),
+                                                                  Eigen::Map<const Eigen::Vector3d>(v_W + 3 * i));
+  }
+  // Whether DynamicStress can be non-zero (the contact skips it otherwise). A law that overrides
+  // DynamicStress returns true.
+  virtual bool has_dynamic_stress() const { return false; }
   // Depth-independent stress [N/m^2] (dynamic RFT: lambda rho (v.n)^2 against n), 0 by default.
   virtual Eigen::Vector3d DynamicStress(const Eigen::Vector3d& /*n_W*/, const Eigen::Vector3d& /*v_W*/) const {
     return Eigen::Vector3d::Zero();
