@@ -474,22 +474,22 @@ ContactWrench ContactWrenchImpl(const SurfaceElements& elements, const PadKinema
     double weight, depth_integral, area;
     Vec depth_moment, area_moment;  // in B
   };
-  constexpr int kRotatingBatch = 64;
+  constexpr int kRotatingBatch = StressBatch::kCapacity;
   std::array<RotatingElement, kRotatingBatch> rotating;
-  std::array<double, 3 * kRotatingBatch> rotating_n, rotating_v, rotating_sigma;
-  int pending = 0;
+  StressBatch batch;
+  int& pending = batch.count;
   const Vec u0b{u0_B.x(), u0_B.y(), u0_B.z()}, w0b{w0_B.x(), w0_B.y(), w0_B.z()};
   const bool dynamic_terms = law.has_dynamic_stress(), area_terms = dynamic_terms || (kPadTerms && compaction);
   Eigen::Matrix3d depth_moment_stress = Eigen::Matrix3d::Zero();  // sum of m_B sigma_W^T
   auto drain_rotating = [&]() {
-    law.StressPerDepthBatch(rotating_n.data(), rotating_v.data(), pending, rotating_sigma.data());
+    law.StressPerDepthBatch(batch);
     for (int i = 0; i < pending; ++i) {
       const RotatingElement& r = rotating[i];
-      const Eigen::Vector3d sigma = r.weight * Eigen::Map<const Eigen::Vector3d>(rotating_sigma.data() + 3 * i);
+      const Eigen::Vector3d sigma = r.weight * Eigen::Vector3d(batch.sx[i], batch.sy[i], batch.sz[i]);
       force += r.depth_integral * sigma;
       depth_moment_stress += Eigen::Vector3d(r.depth_moment.x, r.depth_moment.y, r.depth_moment.z) * sigma.transpose();
       if (!area_terms) continue;
-      const Eigen::Map<const Eigen::Vector3d> n_W(rotating_n.data() + 3 * i), v_W(rotating_v.data() + 3 * i);
+      const Eigen::Vector3d n_W(batch.nx[i], batch.ny[i], batch.nz[i]), v_W(batch.vx[i], batch.vy[i], batch.vz[i]);
       const Eigen::Vector3d r_W = rotate(r.area_moment);
       if (dynamic_terms) {
         const Eigen::Vector3d sigma_dyn = r.weight * law.DynamicStress(n_W, v_W);
@@ -646,10 +646,12 @@ ContactWrench ContactWrenchImpl(const SurfaceElements& elements, const PadKinema
     ++leading;
     RotatingElement& r = rotating[pending];
     const Eigen::Vector3d n_W = rotate(n_B), v_W = rotate(v_B);
-    for (int k = 0; k < 3; ++k) {
-      rotating_n[3 * pending + k] = n_W[k];
-      rotating_v[3 * pending + k] = v_W[k];
-    }
+    batch.nx[pending] = n_W.x();
+    batch.ny[pending] = n_W.y();
+    batch.nz[pending] = n_W.z();
+    batch.vx[pending] = v_W.x();
+    batch.vy[pending] = v_W.y();
+    batch.vz[pending] = v_W.z();
     r.weight = weight;
     r.depth_integral = depth_integral;
     r.depth_moment = depth_moment;

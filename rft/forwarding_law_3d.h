@@ -20,9 +20,7 @@ class ForwardingLaw3D : public StressLaw3D {
   Eigen::Vector3d StressPerDepth(const Eigen::Vector3d& n_W, const Eigen::Vector3d& v_W) const override {
     return inner_->StressPerDepth(n_W, v_W);
   }
-  void StressPerDepthBatch(const double* n_W, const double* v_W, int count, double* sigma) const override {
-    inner_->StressPerDepthBatch(n_W, v_W, count, sigma);
-  }
+  void StressPerDepthBatch(StressBatch& batch) const override { inner_->StressPerDepthBatch(batch); }
   bool has_dynamic_stress() const override { return inner_->has_dynamic_stress(); }
   Eigen::Vector3d DynamicStress(const Eigen::Vector3d& n_W, const Eigen::Vector3d& v_W) const override {
     return inner_->DynamicStress(n_W, v_W);

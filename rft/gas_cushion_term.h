@@ -28,9 +28,13 @@ class GasCushionLaw final : public ForwardingLaw3D {
   }
   Eigen::Vector3d DynamicStress(const Eigen::Vector3d& n_W, const Eigen::Vector3d& v_W) const override;
   bool has_dynamic_stress() const override { return true; }
-  void StressPerDepthBatch(const double* n_W, const double* v_W, int count, double* sigma) const override {
-    inner_->StressPerDepthBatch(n_W, v_W, count, sigma);
-    for (int i = 0; i < 3 * count; ++i) sigma[i] *= 1.0 - chi_;
+  void StressPerDepthBatch(StressBatch& batch) const override {
+    inner_->StressPerDepthBatch(batch);
+    for (int i = 0; i < batch.count; ++i) {
+      batch.sx[i] *= 1.0 - chi_;
+      batch.sy[i] *= 1.0 - chi_;
+      batch.sz[i] *= 1.0 - chi_;
+    }
   }
   double chi() const { return chi_; }
   double c_g_N_s_m3() const { return c_g_; }

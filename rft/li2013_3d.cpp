@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace touchdown::rft {
@@ -85,6 +86,15 @@ class HermiteTable {
       value_[i] = f(s);
       slope_[i] = slope(s) / kNodes;  // per unit of the local coordinate t in [0, 1]
     }
+  }
+  // Branch-free (for the law's batch loop): s is clamped to [0, 1], where the end nodes hold f(0) = 0
+  // and f(1) = 1 exactly and the Hermite basis reproduces them exactly.
+  double Clamped(double s) const {
+    const double x = std::min(std::max(s, 0.0), 1.0) * kNodes;
+    const int i = std::min(static_cast<int>(x), kNodes - 1);
+    const double t = x - i, t2 = t * t, t3 = t2 * t;
+    return (2.0 * t3 - 3.0 * t2 + 1.0) * value_[i] + (t3 - 2.0 * t2 + t) * slope_[i] +
+           (3.0 * t2 - 2.0 * t3) * value_[i + 1] + (t3 - t2) * slope_[i + 1];
   }
   double operator()(double s) const {
     if (s <= 0.0) return 0.0;
@@ -196,32 +206,58 @@ Eigen::Vector3d Li2013TreersLaw::StressPerDepth(const Eigen::Vector3d& n, const 
   return w * Decomposed(nh, -n.z(), v, n.x() / nh, n.y() / nh) + (1.0 - w) * in_motion_plane;
 }
 
-void Li2013TreersLaw::StressPerDepthBatch(const double* n_W, const double* v_W, int count, double* sigma) const {
-  // The normal's part, e2 and beta, is kept while the normal repeats; near-horizontal facets (the
-  // blend of StressPerDepth) take the general path.
-  const double* last_n = nullptr;
-  bool plain = false;
-  double sb = 0.0, cb = 0.0, e2x = 0.0, e2y = 0.0;
+void Li2013TreersLaw::StressPerDepthBatch(StressBatch& b) const {
+  constexpr int kCap = StressBatch::kCapacity;
+  const int count = b.count;
+  // Pass 1, branch-free: the decomposition and Li's alphas (as Decomposed, with e2 along the
+  // normal's horizontal part); `general` marks the elements it does not cover.
+  alignas(64) double e2x[kCap], e2y[kCap], s23[kCap], s1[kCap], alpha_x[kCap], alpha_z[kCap], lateral_sign[kCap];
+  alignas(64) double general[kCap];  // 1: take the general path (a double: vectorises with the rest)
+  const Li2013Coefficients& c = c_;
   for (int i = 0; i < count; ++i) {
-    const double* n = n_W + 3 * i;
-    const Eigen::Map<const Eigen::Vector3d> v(v_W + 3 * i);
-    Eigen::Map<Eigen::Vector3d> out(sigma + 3 * i);
-    if (last_n == nullptr || n[0] != last_n[0] || n[1] != last_n[1] || n[2] != last_n[2]) {
-      last_n = n;
-      const double nh = std::sqrt(n[0] * n[0] + n[1] * n[1]);
-      plain = nh >= kHorizontalBand;
-      if (plain) {
-        sb = nh;
-        cb = -n[2];
-        e2x = n[0] / nh;
-        e2y = n[1] / nh;
-      }
-    }
-    if (plain && v.squaredNorm() > 0.0) {
-      out = Decomposed(sb, cb, v, e2x, e2y);
-    } else {
-      out = StressPerDepth(Eigen::Map<const Eigen::Vector3d>(n), v);
-    }
+    const double nx = b.nx[i], ny = b.ny[i], nz = b.nz[i], vx = b.vx[i], vy = b.vy[i], vz = b.vz[i];
+    const double nh = std::sqrt(nx * nx + ny * ny);
+    const double inv_nh = 1.0 / std::max(nh, kHorizontalBand);
+    const double ex = nx * inv_nh, ey = ny * inv_nh;
+    const double u1 = vx * ey - vy * ex, u2 = vx * ex + vy * ey;
+    const double r23_sq = u2 * u2 + vz * vz;
+    general[i] = static_cast<double>(nh < kHorizontalBand) + static_cast<double>(r23_sq <= 0.0);
+    const double r23 = std::sqrt(r23_sq), speed = std::sqrt(r23_sq + u1 * u1);
+    const double inv = 1.0 / std::max(r23 * speed, std::numeric_limits<double>::min());
+    s23[i] = std::min(1.0, r23_sq * inv);
+    s1[i] = std::min(1.0, std::abs(u1) * r23 * inv);
+    const double sg = -vz * speed * inv, cg_raw = u2 * speed * inv;
+    // Mirror rule (Li2013AlphaFromSinCos) as a sign.
+    const double mirror = std::copysign(1.0, cg_raw);
+    const double sb = mirror * nh, cb = -nz, cg = mirror * cg_raw;
+    const double s2b = 2.0 * sb * cb, c2b = cb * cb - sb * sb;
+    const double sin_2b_plus_g = s2b * cg + c2b * sg, sin_m2b_plus_g = c2b * sg - s2b * cg;
+    const double cos_2b_plus_g = c2b * cg - s2b * sg, cos_m2b_plus_g = c2b * cg + s2b * sg;
+    alpha_z[i] = c.A00 + c.A10 * c2b + c.B11 * sin_2b_plus_g + c.B01 * sg + c.Bm11 * sin_m2b_plus_g;
+    alpha_x[i] = mirror * (c.C11 * cos_2b_plus_g + c.C01 * cg + c.Cm11 * cos_m2b_plus_g + c.D10 * s2b);
+    lateral_sign[i] = static_cast<double>(u1 > 0.0) - static_cast<double>(u1 < 0.0);
+    e2x[i] = ex;
+    e2y[i] = ey;
+  }
+  // Pass 2: the weights from their tables, and the stress.
+  const HermiteTable& in_plane = InPlaneTable();
+  const HermiteTable& lateral = LateralTable();
+  for (int i = 0; i < count; ++i) {
+    const double w23 = in_plane.Clamped(s23[i]), w1 = lateral.Clamped(s1[i]);
+    const double stress_e2 = -w23 * alpha_x[i], stress_z = w23 * alpha_z[i];
+    const double stress_e1 = -w1 * alpha_y_ * lateral_sign[i];
+    b.sx[i] = zeta_ * (stress_e2 * e2x[i] + stress_e1 * e2y[i]);
+    b.sy[i] = zeta_ * (stress_e2 * e2y[i] - stress_e1 * e2x[i]);
+    b.sz[i] = zeta_ * stress_z;
+  }
+  // Pass 3: near-horizontal facets, pure lateral motion and rest, element by element.
+  for (int i = 0; i < count; ++i) {
+    if (general[i] == 0.0) continue;
+    const Eigen::Vector3d s =
+        StressPerDepth(Eigen::Vector3d(b.nx[i], b.ny[i], b.nz[i]), Eigen::Vector3d(b.vx[i], b.vy[i], b.vz[i]));
+    b.sx[i] = s.x();
+    b.sy[i] = s.y();
+    b.sz[i] = s.z();
   }
 }
 

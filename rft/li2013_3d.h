@@ -52,8 +52,9 @@ class Li2013TreersLaw final : public StressLaw3D {
                            double alpha_y = kTreersAlphaY);
   std::string_view name() const override { return "li2013"; }
   Eigen::Vector3d StressPerDepth(const Eigen::Vector3d& n_W, const Eigen::Vector3d& v_W) const override;
-  // Works out e2 and the attack angle once for consecutive elements with the same normal.
-  void StressPerDepthBatch(const double* n_W, const double* v_W, int count, double* sigma) const override;
+  // The common case (a facet more than 1 degree from horizontal, a velocity with a part in its
+  // e2-z plane) in branch-free passes over the batch; the others element by element.
+  void StressPerDepthBatch(StressBatch& batch) const override;
   double zeta_N_m3() const { return zeta_; }
 
  private:

@@ -26,21 +26,34 @@ struct DepthLaw {
   double reference_m = 0.01;  // z_ref [m], > 0
 };
 
+// Normals n_W, velocities v_W and the resulting stresses sigma of up to kCapacity elements, one
+// array per component (structure of arrays, so a law's batch loop can be vectorised).
+struct StressBatch {
+  static constexpr int kCapacity = 64;
+  int count = 0;
+  alignas(64) double nx[kCapacity], ny[kCapacity], nz[kCapacity];
+  alignas(64) double vx[kCapacity], vy[kCapacity], vz[kCapacity];
+  alignas(64) double sx[kCapacity], sy[kCapacity], sz[kCapacity];
+};
+
 class StressLaw3D {
  public:
   virtual ~StressLaw3D() = default;
   virtual std::string_view name() const = 0;
   // Stress per unit depth [N/m^3] on a leading element (n . v >= 0). |v| > 0.
   virtual Eigen::Vector3d StressPerDepth(const Eigen::Vector3d& n_W, const Eigen::Vector3d& v_W) const = 0;
-  // StressPerDepth for `count` elements: normals n_W and velocities v_W (each 3 x count, packed
-  // x, y, z per element) give sigma (3 x count). Same values as StressPerDepth element by element;
-  // the force loop of a rotating pad calls this, so a law can do the work that depends on the
-  // normal alone once for consecutive elements that share it, and the loop pays one virtual call
-  // per batch. A law that overrides StressPerDepth of a law it wraps overrides this too.
-  virtual void StressPerDepthBatch(const double* n_W, const double* v_W, int count, double* sigma) const {
-    for (int i = 0; i < count; ++i)
-      Eigen::Map<Eigen::Vector3d>(sigma + 3 * i) = StressPerDepth(Eigen::Map<const Eigen::Vector3d>(n_W + 3 * i),
-                                                                  Eigen::Map<const Eigen::Vector3d>(v_W + 3 * i));
+  // StressPerDepth for a batch of elements (StressBatch): the same values element by element. The
+  // force loop of a rotating pad calls this, so the loop pays one virtual call per batch and a law
+  // can work on many elements at once (Li2013TreersLaw does, in SIMD-friendly passes). A law that
+  // overrides StressPerDepth of a law it wraps overrides this too.
+  virtual void StressPerDepthBatch(StressBatch& batch) const {
+    for (int i = 0; i < batch.count; ++i) {
+      const Eigen::Vector3d s = StressPerDepth(Eigen::Vector3d(batch.nx[i], batch.ny[i], batch.nz[i]),
+                                               Eigen::Vector3d(batch.vx[i], batch.vy[i], batch.vz[i]));
+      batch.sx[i] = s.x();
+      batch.sy[i] = s.y();
+      batch.sz[i] = s.z();
+    }
   }
   // Whether DynamicStress can be non-zero (the contact skips it otherwise). A law that overrides
   // DynamicStress returns true.
