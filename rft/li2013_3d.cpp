@@ -206,51 +206,122 @@ Eigen::Vector3d Li2013TreersLaw::StressPerDepth(const Eigen::Vector3d& n, const 
   return w * Decomposed(nh, -n.z(), v, n.x() / nh, n.y() / nh) + (1.0 - w) * in_motion_plane;
 }
 
+namespace {
+// One element's decomposition for a given unit e2 and unit (sin, cos) of beta, without branches
+// (so that loops over a batch vectorise): Li's alphas (mirror rule included), the speed fractions
+// and the sign of the lateral motion. r23_sq <= 0 (no motion in the e2-z plane) is not covered.
+struct Lane {
+  double s23, s1, alpha_x, alpha_z, lateral_sign, r23_sq;
+};
+[[gnu::always_inline]] inline Lane DecomposeLane(const Li2013Coefficients& c, double sb, double cb, double ex,
+                                                 double ey, double vx, double vy, double vz) {
+  Lane l;
+  const double u1 = vx * ey - vy * ex, u2 = vx * ex + vy * ey;
+  l.r23_sq = u2 * u2 + vz * vz;
+  const double r23 = std::sqrt(l.r23_sq), speed = std::sqrt(l.r23_sq + u1 * u1);
+  const double inv = 1.0 / std::max(r23 * speed, std::numeric_limits<double>::min());
+  l.s23 = std::min(1.0, l.r23_sq * inv);
+  l.s1 = std::min(1.0, std::abs(u1) * r23 * inv);
+  const double sg = -vz * speed * inv, cg_raw = u2 * speed * inv;
+  const double mirror = std::copysign(1.0, cg_raw);  // the mirror rule of Li2013AlphaFromSinCos
+  const double sbm = mirror * sb, cg = mirror * cg_raw;
+  const double s2b = 2.0 * sbm * cb, c2b = cb * cb - sbm * sbm;
+  const double sin_2b_plus_g = s2b * cg + c2b * sg, sin_m2b_plus_g = c2b * sg - s2b * cg;
+  const double cos_2b_plus_g = c2b * cg - s2b * sg, cos_m2b_plus_g = c2b * cg + s2b * sg;
+  l.alpha_z = c.A00 + c.A10 * c2b + c.B11 * sin_2b_plus_g + c.B01 * sg + c.Bm11 * sin_m2b_plus_g;
+  l.alpha_x = mirror * (c.C11 * cos_2b_plus_g + c.C01 * cg + c.Cm11 * cos_m2b_plus_g + c.D10 * s2b);
+  l.lateral_sign = static_cast<double>(u1 > 0.0) - static_cast<double>(u1 < 0.0);
+  return l;
+}
+}  // namespace
+
 void Li2013TreersLaw::StressPerDepthBatch(StressBatch& b) const {
   constexpr int kCap = StressBatch::kCapacity;
   const int count = b.count;
-  // Pass 1, branch-free: the decomposition and Li's alphas (as Decomposed, with e2 along the
-  // normal's horizontal part); `general` marks the elements it does not cover.
-  alignas(64) double e2x[kCap], e2y[kCap], s23[kCap], s1[kCap], alpha_x[kCap], alpha_z[kCap], lateral_sign[kCap];
-  alignas(64) double general[kCap];  // 1: take the general path (a double: vectorises with the rest)
+  // StressPerDepth in passes over the batch. A: e2 along the normal's horizontal part (every facet
+  // more than 1 degree from horizontal has only this). B: e2 along the velocity's horizontal part,
+  // the near-horizontal facets' blend partner, computed only when the batch has such facets.
+  // `general` marks the elements neither covers (no motion in the e2-z plane, rest): they take
+  // StressPerDepth itself.
+  struct Lanes {
+    alignas(64) double e2x[kCap], e2y[kCap], s23[kCap], s1[kCap], alpha_x[kCap], alpha_z[kCap], sign[kCap];
+  };
+  Lanes a, bl;
+  alignas(64) double blend[kCap];    // weight of A: 1 above the band, smoothstep within it
+  alignas(64) double general[kCap];  // > 0: take StressPerDepth (a double: vectorises with the rest)
   const Li2013Coefficients& c = c_;
+  double near_count = 0.0;
   for (int i = 0; i < count; ++i) {
-    const double nx = b.nx[i], ny = b.ny[i], nz = b.nz[i], vx = b.vx[i], vy = b.vy[i], vz = b.vz[i];
+    const double nx = b.nx[i], ny = b.ny[i], nz = b.nz[i];
     const double nh = std::sqrt(nx * nx + ny * ny);
-    const double inv_nh = 1.0 / std::max(nh, kHorizontalBand);
+    const double inv_nh = 1.0 / std::max(nh, std::numeric_limits<double>::min());
     const double ex = nx * inv_nh, ey = ny * inv_nh;
-    const double u1 = vx * ey - vy * ex, u2 = vx * ex + vy * ey;
-    const double r23_sq = u2 * u2 + vz * vz;
-    general[i] = static_cast<double>(nh < kHorizontalBand) + static_cast<double>(r23_sq <= 0.0);
-    const double r23 = std::sqrt(r23_sq), speed = std::sqrt(r23_sq + u1 * u1);
-    const double inv = 1.0 / std::max(r23 * speed, std::numeric_limits<double>::min());
-    s23[i] = std::min(1.0, r23_sq * inv);
-    s1[i] = std::min(1.0, std::abs(u1) * r23 * inv);
-    const double sg = -vz * speed * inv, cg_raw = u2 * speed * inv;
-    // Mirror rule (Li2013AlphaFromSinCos) as a sign.
-    const double mirror = std::copysign(1.0, cg_raw);
-    const double sb = mirror * nh, cb = -nz, cg = mirror * cg_raw;
-    const double s2b = 2.0 * sb * cb, c2b = cb * cb - sb * sb;
-    const double sin_2b_plus_g = s2b * cg + c2b * sg, sin_m2b_plus_g = c2b * sg - s2b * cg;
-    const double cos_2b_plus_g = c2b * cg - s2b * sg, cos_m2b_plus_g = c2b * cg + s2b * sg;
-    alpha_z[i] = c.A00 + c.A10 * c2b + c.B11 * sin_2b_plus_g + c.B01 * sg + c.Bm11 * sin_m2b_plus_g;
-    alpha_x[i] = mirror * (c.C11 * cos_2b_plus_g + c.C01 * cg + c.Cm11 * cos_m2b_plus_g + c.D10 * s2b);
-    lateral_sign[i] = static_cast<double>(u1 > 0.0) - static_cast<double>(u1 < 0.0);
-    e2x[i] = ex;
-    e2y[i] = ey;
+    const Lane l = DecomposeLane(c, nh, -nz, ex, ey, b.vx[i], b.vy[i], b.vz[i]);
+    a.e2x[i] = ex;
+    a.e2y[i] = ey;
+    a.s23[i] = l.s23;
+    a.s1[i] = l.s1;
+    a.alpha_x[i] = l.alpha_x;
+    a.alpha_z[i] = l.alpha_z;
+    a.sign[i] = l.lateral_sign;
+    const double x = std::min(nh / kHorizontalBand, 1.0);
+    blend[i] = x * x * (3.0 - 2.0 * x);
+    general[i] = static_cast<double>(l.r23_sq <= 0.0);
+    near_count += static_cast<double>(nh < kHorizontalBand);
   }
-  // Pass 2: the weights from their tables, and the stress.
+  if (near_count > 0.0) {
+    for (int i = 0; i < count; ++i) {
+      const double nx = b.nx[i], ny = b.ny[i], nz = b.nz[i], vx = b.vx[i], vy = b.vy[i], vz = b.vz[i];
+      // e2: the velocity's horizontal direction; for a (nearly) vertical velocity the normal's, or x.
+      const double uh = std::sqrt(vx * vx + vy * vy), speed = std::sqrt(vx * vx + vy * vy + vz * vz);
+      const double nh = std::sqrt(nx * nx + ny * ny);
+      const bool from_v = uh > 1e-12 * speed, from_n = nh > 0.0;
+      const double inv_uh = 1.0 / std::max(uh, std::numeric_limits<double>::min());
+      const double inv_nh = 1.0 / std::max(nh, std::numeric_limits<double>::min());
+      const double ex = from_v ? vx * inv_uh : (from_n ? nx * inv_nh : 1.0);
+      const double ey = from_v ? vy * inv_uh : (from_n ? ny * inv_nh : 0.0);
+      // n projected onto the e2-z plane.
+      const double sb = nx * ex + ny * ey, cb = -nz, inv_norm = 1.0 / std::sqrt(sb * sb + cb * cb);
+      const Lane l = DecomposeLane(c, sb * inv_norm, cb * inv_norm, ex, ey, vx, vy, vz);
+      bl.e2x[i] = ex;
+      bl.e2y[i] = ey;
+      bl.s23[i] = l.s23;
+      bl.s1[i] = l.s1;
+      bl.alpha_x[i] = l.alpha_x;
+      bl.alpha_z[i] = l.alpha_z;
+      bl.sign[i] = l.lateral_sign;
+      // A near-horizontal facet needs B, and A too unless it is exactly horizontal (weight 0).
+      const double near = static_cast<double>(nh < kHorizontalBand);
+      general[i] = general[i] * static_cast<double>(nh > 0.0) + near * static_cast<double>(l.r23_sq <= 0.0);
+    }
+  }
+  // The weights from their tables, and the stress.
   const HermiteTable& in_plane = InPlaneTable();
   const HermiteTable& lateral = LateralTable();
+  auto stress = [&](const Lanes& l, int i, double out[3]) {
+    const double w23 = in_plane.Clamped(l.s23[i]), w1 = lateral.Clamped(l.s1[i]);
+    const double stress_e2 = -w23 * l.alpha_x[i], stress_z = w23 * l.alpha_z[i];
+    const double stress_e1 = -w1 * alpha_y_ * l.sign[i];
+    out[0] = zeta_ * (stress_e2 * l.e2x[i] + stress_e1 * l.e2y[i]);
+    out[1] = zeta_ * (stress_e2 * l.e2y[i] - stress_e1 * l.e2x[i]);
+    out[2] = zeta_ * stress_z;
+  };
   for (int i = 0; i < count; ++i) {
-    const double w23 = in_plane.Clamped(s23[i]), w1 = lateral.Clamped(s1[i]);
-    const double stress_e2 = -w23 * alpha_x[i], stress_z = w23 * alpha_z[i];
-    const double stress_e1 = -w1 * alpha_y_ * lateral_sign[i];
-    b.sx[i] = zeta_ * (stress_e2 * e2x[i] + stress_e1 * e2y[i]);
-    b.sy[i] = zeta_ * (stress_e2 * e2y[i] - stress_e1 * e2x[i]);
-    b.sz[i] = zeta_ * stress_z;
+    double s[3];
+    stress(a, i, s);
+    if (blend[i] < 1.0) {  // near-horizontal: blend with B (StressPerDepth's order of operations)
+      double t[3];
+      stress(bl, i, t);
+      if (blend[i] == 0.0) {
+        s[0] = t[0], s[1] = t[1], s[2] = t[2];
+      } else {
+        for (int k = 0; k < 3; ++k) s[k] = blend[i] * s[k] + (1.0 - blend[i]) * t[k];
+      }
+    }
+    b.sx[i] = s[0];
+    b.sy[i] = s[1];
+    b.sz[i] = s[2];
   }
-  // Pass 3: near-horizontal facets, pure lateral motion and rest, element by element.
   for (int i = 0; i < count; ++i) {
     if (general[i] == 0.0) continue;
     const Eigen::Vector3d s =
