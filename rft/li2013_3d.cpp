@@ -81,34 +81,41 @@ class HermiteTable {
  public:
   static constexpr int kNodes = 1024;
   HermiteTable(double (*f)(double), double (*slope)(double)) {
+    double value[kNodes + 1], step_slope[kNodes + 1];
     for (int i = 0; i <= kNodes; ++i) {
       const double s = static_cast<double>(i) / kNodes;
-      value_[i] = f(s);
-      slope_[i] = slope(s) / kNodes;  // per unit of the local coordinate t in [0, 1]
+      value[i] = f(s);
+      step_slope[i] = slope(s) / kNodes;  // per unit of the local coordinate t in [0, 1]
+    }
+    // Each interval's cubic in power form, c0 + t (c1 + t (c2 + t c3)): four adjacent numbers to
+    // load and three multiply-adds, from the Hermite basis
+    // (2t^3 - 3t^2 + 1) v0 + (t^3 - 2t^2 + t) m0 + (3t^2 - 2t^3) v1 + (t^3 - t^2) m1.
+    for (int i = 0; i < kNodes; ++i) {
+      const double v0 = value[i], m0 = step_slope[i], v1 = value[i + 1], m1 = step_slope[i + 1];
+      cubic_[i] = {v0, m0, -3.0 * v0 - 2.0 * m0 + 3.0 * v1 - m1, 2.0 * v0 + m0 - 2.0 * v1 + m1};
     }
   }
-  // Branch-free (for the law's batch loop): s is clamped to [0, 1], where the end nodes hold f(0) = 0
-  // and f(1) = 1 exactly and the Hermite basis reproduces them exactly.
+  // Branch-free (selects only, for the law's batch loop). s <= 0 gives f(0) = 0 (c0 of the first
+  // interval, exactly); s >= 1 gives exactly 1, the weights' normalised value at s = 1.
   double Clamped(double s) const {
     const double x = std::min(std::max(s, 0.0), 1.0) * kNodes;
     const int i = std::min(static_cast<int>(x), kNodes - 1);
-    const double t = x - i, t2 = t * t, t3 = t2 * t;
-    return (2.0 * t3 - 3.0 * t2 + 1.0) * value_[i] + (t3 - 2.0 * t2 + t) * slope_[i] +
-           (3.0 * t2 - 2.0 * t3) * value_[i + 1] + (t3 - t2) * slope_[i + 1];
+    const double t = x - i;
+    const Cubic& c = cubic_[i];
+    const double value = c.c0 + t * (c.c1 + t * (c.c2 + t * c.c3));
+    return s >= 1.0 ? 1.0 : value;
   }
   double operator()(double s) const {
     if (s <= 0.0) return 0.0;
     if (s >= 1.0) return 1.0;
-    const double x = s * kNodes;
-    const int i = std::min(static_cast<int>(x), kNodes - 1);
-    const double t = x - i, t2 = t * t, t3 = t2 * t;
-    return (2.0 * t3 - 3.0 * t2 + 1.0) * value_[i] + (t3 - 2.0 * t2 + t) * slope_[i] +
-           (3.0 * t2 - 2.0 * t3) * value_[i + 1] + (t3 - t2) * slope_[i + 1];
+    return Clamped(s);
   }
 
  private:
-  double value_[kNodes + 1];
-  double slope_[kNodes + 1];
+  struct Cubic {
+    double c0, c1, c2, c3;
+  };
+  Cubic cubic_[kNodes];
 };
 
 // Built at load time, after the constants above (same translation unit, in order): no guard to
