@@ -1,0 +1,234 @@
+#pragma once
+// Internal to rft (not a public header): the contact's constants and the exact triangle clipping
+// shared by ComputeContactWrench's general path (contact_wrench.cpp) and its batched path for a
+// rotating pad over a plane (contact_wrench_rotating.cpp).
+#include <algorithm>
+#include <cmath>
+
+#include "rft/contact_wrench.h"
+#include "rft/surface_elements.h"
+
+namespace touchdown::rft::contact_internal {
+
+// A face counts as leading when n.v >= -kParallelTolerance |v|: faces parallel to the motion
+// (the side wall of a pad moving straight down) lead by contract, and this keeps them leading
+// when their normal, rotated by the pose, picks up a rounding error of order 1e-16.
+constexpr double kParallelTolerance = 1e-9;
+
+// Faces turning away from the motion fade out over this band of n.v/|v| (about 1.1 deg) instead
+// of switching off at once. A hard switch makes the force jump whenever a face's normal passes
+// perpendicular to the motion - the bottom of a pad sliding sideways as its vertical velocity
+// changes sign - and the equations then have a sliding mode no integrator can step through. The
+// band makes the force Lipschitz in the velocity; faces parallel to the motion still lead fully.
+constexpr double kTrailingBand = 0.02;
+
+// Relative speed below which a rotation counts as translation (see `spinning` below). A pad
+// dropped straight down picks up an angular velocity of rounding size (1e-11 rad/s measured on
+// the lander's pads in case A) from the rounding in its moment; as the pad slows to a few cm/s
+// near its stop, 1e-12 |v| would call that a spin and send it down the per-element path (2/3
+// of the law evaluations of a case-A landing). A real rotation moves element velocities by far
+// more than 1e-9 |v|; below it the stress, Lipschitz in the direction of v, changes by less
+// than 1e-9 relative (1e-9 / kTrailingBand for a face in the trailing band).
+constexpr double kNegligibleSpin = 1e-9;
+
+// A block of elements is skipped when its box lies at least this far above the ground [m]. The
+// box bound is >= every vertex depth computed in the loop (the same affine form, monotone
+// rounding), so the margin only guards against a compiler contracting the two differently: a
+// skipped block would have contributed nothing, and the sum is bit-identical with or without
+// the bounds.
+constexpr double kCullMargin = 1e-12;
+
+// Normals closer than this (1-norm) count as equal for reusing the stress of the previous element
+// in pure translation: the two triangles of a planar quad get normals that differ by rounding
+// only. The laws are continuous in n, so the reuse changes the stress by about this much.
+constexpr double kSameNormal = SurfaceElements::kSameNormal;
+
+struct Vec {
+  double x, y, z;
+};
+inline Vec operator+(Vec a, Vec b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+inline Vec operator-(Vec a, Vec b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+inline Vec operator*(double s, Vec a) { return {s * a.x, s * a.y, s * a.z}; }
+inline Vec Load(const double* p) { return {p[0], p[1], p[2]}; }
+
+// Exact integrals over the submerged part of one triangle, depth d linear on it (pad frame B):
+// depth_integral = int d dA, depth_moment = int d r dA, area = int dA, area_moment = int r dA.
+struct Submerged {
+  double depth_integral = 0.0;
+  Vec depth_moment{0.0, 0.0, 0.0};
+  double area = 0.0;
+  Vec area_moment{0.0, 0.0, 0.0};
+  double area_rate = 0.0;  // d area / d delta when every vertex depth grows by delta
+};
+
+// For f linear on a triangle of area A with vertex values f_i: int f dA = A (f0 + f1 + f2) / 3 and
+// int f r dA = A / 12 ((f0 + f1 + f2)(p0 + p1 + p2) + f0 p0 + f1 p1 + f2 p2) (from
+// int l_i l_j dA = A (1 + delta_ij) / 12 for the barycentric coordinates l_i).
+template <bool kAreaMoment>
+[[gnu::always_inline]] inline void AddTriangle(double area, double d0, double d1, double d2, Vec p0, Vec p1,
+                                               Vec p2, double sign, Submerged& s) {
+  const double dsum = d0 + d1 + d2;
+  const Vec psum = p0 + p1 + p2;
+  constexpr double kThird = 1.0 / 3.0, kTwelfth = 1.0 / 12.0;
+  const double signed_area = sign * area;
+  s.depth_integral += signed_area * kThird * dsum;
+  s.depth_moment = s.depth_moment + (signed_area * kTwelfth) * (dsum * psum + d0 * p0 + d1 * p1 + d2 * p2);
+  s.area += signed_area;
+  if constexpr (kAreaMoment) s.area_moment = s.area_moment + (signed_area * kThird) * psum;
+}
+
+// Clips the triangle by the sign of its vertex depths. One vertex below: the submerged part is
+// the corner triangle at it, cut where the depth crosses zero. Two below: the quadrilateral is
+// the whole triangle minus the emerged corner triangle at the third vertex (exact, and no
+// quadrilateral to split). The corner triangles have depth zero at their cut vertices, so the
+// integrals vary continuously as vertices cross the surface.
+template <bool kAreaMoment>
+[[gnu::always_inline]] inline Submerged ClipAndIntegrate(double area, const double d[3], const Vec p[3]) {
+  Submerged s;
+  const int below = (d[0] > 0.0) + (d[1] > 0.0) + (d[2] > 0.0);
+  if (below == 3) {
+    AddTriangle<kAreaMoment>(area, d[0], d[1], d[2], p[0], p[1], p[2], 1.0, s);
+  } else if (below == 1) {
+    const int i = d[0] > 0.0 ? 0 : (d[1] > 0.0 ? 1 : 2), j = (i + 1) % 3, k = (i + 2) % 3;
+    const double tj = d[i] / (d[i] - d[j]), tk = d[i] / (d[i] - d[k]);
+    AddTriangle<kAreaMoment>(tj * tk * area, d[i], 0.0, 0.0, p[i], p[i] + tj * (p[j] - p[i]),
+                             p[i] + tk * (p[k] - p[i]), 1.0, s);
+    s.area_rate = 2.0 * tj * tk * area / d[i];  // area d_i^2 / ((d_i - d_j)(d_i - d_k))
+  } else {  // below == 2
+    const int k = d[0] <= 0.0 ? 0 : (d[1] <= 0.0 ? 1 : 2), i = (k + 1) % 3, j = (k + 2) % 3;
+    const double si = d[k] / (d[k] - d[i]), sj = d[k] / (d[k] - d[j]);
+    AddTriangle<kAreaMoment>(area, d[0], d[1], d[2], p[0], p[1], p[2], 1.0, s);
+    AddTriangle<kAreaMoment>(si * sj * area, d[k], 0.0, 0.0, p[k], p[k] + si * (p[i] - p[k]),
+                             p[k] + sj * (p[j] - p[k]), -1.0, s);
+    if (d[k] < 0.0) s.area_rate = -2.0 * si * sj * area / d[k];
+  }
+  return s;
+}
+
+// The integrals of ClipAndIntegrate<true> over the part of a triangle where the depth d > 0 and an
+// affine function t >= 0 (vertex values d[k], t[k]): the triangle is clipped by both half-planes
+// (Sutherland-Hodgman, at most five corners) and fanned into triangles, each integrated exactly.
+// Used where a rotating element's leading boundary (t = 0) crosses it.
+inline Submerged ClipTwiceAndIntegrate(double area, const double d[3], const Vec p[3], const double t[3]) {
+  struct Corner {
+    Vec p;
+    double d, t;
+  };
+  Corner a[5], b[5];
+  int na = 3, nb = 0;
+  for (int k = 0; k < 3; ++k) a[k] = {p[k], d[k], t[k]};
+  auto clip = [](const Corner* in, int n, Corner* out, auto value) {
+    int m = 0;
+    for (int k = 0; k < n; ++k) {
+      const Corner& u = in[k];
+      const Corner& w = in[(k + 1) % n];
+      const double fu = value(u), fw = value(w);
+      if (fu >= 0.0) out[m++] = u;
+      if ((fu >= 0.0) != (fw >= 0.0)) {
+        const double s = fu / (fu - fw);
+        out[m++] = {u.p + s * (w.p - u.p), u.d + s * (w.d - u.d), u.t + s * (w.t - u.t)};
+      }
+    }
+    return m;
+  };
+  nb = clip(a, na, b, [](const Corner& c) { return c.d; });
+  na = clip(b, nb, a, [](const Corner& c) { return c.t; });
+  Submerged s;
+  if (na < 3) return s;
+  // Sub-triangle areas from the cross product, scaled so the fan of the whole triangle sums to
+  // `area` (the element's own area, as the other paths use).
+  auto twice_area = [](Vec u, Vec v, Vec w) {
+    const Vec e1 = v - u, e2 = w - u;
+    const double cx = e1.y * e2.z - e1.z * e2.y, cy = e1.z * e2.x - e1.x * e2.z, cz = e1.x * e2.y - e1.y * e2.x;
+    return std::sqrt(cx * cx + cy * cy + cz * cz);
+  };
+  const double whole = twice_area(p[0], p[1], p[2]);
+  if (!(whole > 0.0)) return s;
+  const double scale = area / whole;
+  for (int k = 1; k + 1 < na; ++k) {
+    const double sub = scale * twice_area(a[0].p, a[k].p, a[k + 1].p);
+    AddTriangle<true>(sub, std::max(a[0].d, 0.0), std::max(a[k].d, 0.0), std::max(a[k + 1].d, 0.0), a[0].p, a[k].p,
+                      a[k + 1].p, 1.0, s);
+  }
+  return s;
+}
+
+// Weight of an element whose outward normal makes c = n.v / |v| with its velocity: 1 when it
+// leads (see contact_wrench.h), 0 when it trails by more than kTrailingBand, a smooth step in
+// between.
+[[gnu::always_inline]] inline double LeadWeight(double c) {
+  if (c >= -kParallelTolerance) return 1.0;
+  if (c <= -kTrailingBand) return 0.0;
+  const double t = (c + kTrailingBand) / (kTrailingBand - kParallelTolerance);
+  return t * t * (3.0 - 2.0 * t);
+}
+
+// Velocity u + w x c at the centroid c = m / integral of a part whose depth integral and first
+// moment are given (all in B).
+[[gnu::always_inline]] inline Vec CentroidVelocity(double integral, const Vec& m, const Vec& u, const Vec& w) {
+  const Vec c = (1.0 / integral) * m;
+  return Vec{u.x + w.y * c.z - w.z * c.y, u.y + w.z * c.x - w.x * c.z, u.z + w.x * c.y - w.y * c.x};
+}
+
+// The part of a rotating element that carries stress, from the integrals `s` of its submerged part
+// (all in B: vertices p, normal n, the pad's twist u + w x r).
+//
+// Where the element leads: t(r) = n.v(r) + kTrailingBand |v_c| >= 0, affine in r (v_c: the
+// velocity at the submerged part's depth-weighted centroid). When t changes sign over the element
+// (a rotating pad's leading boundary crosses it) and `clip_leading`, only the part with t >= 0
+// carries stress, taken exactly, with the law at that part's own centroid. The centroid rule alone
+// switched the whole element on or off as the boundary passed its centroid: a kink in the force
+// per element, and thousands of small steps while a tilted pad rights itself. (The z^p depth law
+// integrates without this clip: clip_leading = false.)
+struct LeadingPart {
+  double weight = 0.0;  // LeadWeight at the part's centroid; 0: no stress
+  bool straddles = false;
+  Submerged part;       // the leading part's integrals when it straddles, else `s`
+  Vec v{0.0, 0.0, 0.0};  // velocity at the part's depth-weighted centroid
+};
+inline LeadingPart LeadingPartOf(const Submerged& s, double area, const double d[3], const Vec p[3], const Vec& n,
+                                 const Vec& u, const Vec& w, bool clip_leading) {
+  LeadingPart out;
+  out.part = s;
+  out.v = CentroidVelocity(s.depth_integral, s.depth_moment, u, w);
+  double speed = std::sqrt(out.v.x * out.v.x + out.v.y * out.v.y + out.v.z * out.v.z);
+  if (clip_leading) {
+    const double a = n.x * u.x + n.y * u.y + n.z * u.z + kTrailingBand * speed;
+    const Vec b{n.y * w.z - n.z * w.y, n.z * w.x - n.x * w.z, n.x * w.y - n.y * w.x};  // n.(w x r) = r.(n x w)
+    double t[3];
+    for (int k = 0; k < 3; ++k) t[k] = a + b.x * p[k].x + b.y * p[k].y + b.z * p[k].z;
+    if (t[0] < 0.0 && t[1] < 0.0 && t[2] < 0.0) return out;  // trails beyond the band everywhere
+    if (t[0] < 0.0 || t[1] < 0.0 || t[2] < 0.0) {
+      out.part = ClipTwiceAndIntegrate(area, d, p, t);
+      if (!(out.part.depth_integral > 0.0)) return out;
+      out.straddles = true;
+      out.v = CentroidVelocity(out.part.depth_integral, out.part.depth_moment, u, w);
+      speed = std::sqrt(out.v.x * out.v.x + out.v.y * out.v.y + out.v.z * out.v.z);
+    }
+  }
+  if (speed > 0.0) out.weight = LeadWeight((n.x * out.v.x + n.y * out.v.y + n.z * out.v.z) / speed);
+  return out;
+}
+
+// Whether the pad's rotation moves any element's velocity by more than kNegligibleSpin |v| (else
+// the contact treats it as a translation).
+inline bool IsSpinning(const SurfaceElements& elements, const PadKinematics& k) {
+  if (k.w_WB_W.isZero(0.0)) return false;
+  double r2 = 0.0;
+  if (elements.HasBounds()) {
+    r2 = elements.max_vertex_radius_m * elements.max_vertex_radius_m;
+  } else {
+    for (const Eigen::Matrix3Xd* p : {&elements.p0_B, &elements.p1_B, &elements.p2_B})
+      r2 = std::max(r2, p->colwise().squaredNorm().maxCoeff());
+  }
+  return k.w_WB_W.squaredNorm() * r2 > kNegligibleSpin * kNegligibleSpin * k.v_WB_W.squaredNorm();
+}
+
+// The wrench on a rotating pad over a plane for a law without area terms (no dynamic stress,
+// compaction, added mass) and the linear depth law: ComputeContactWrench's result (to rounding),
+// with the common element - wholly submerged, wholly leading - worked in vectorised passes over
+// each block of elements. Needs elements with bounds (SurfaceElements::HasBounds).
+ContactWrench RotatingWrenchOverPlane(const SurfaceElements& elements, const PadKinematics& kinematics,
+                                      const PlaneGround& plane, const StressLaw3D& law);
+
+}  // namespace touchdown::rft::contact_internal
