@@ -57,6 +57,7 @@ SurfaceElements MakeFinePad(bool curved) {
     s.n_B.col(i) = c.normalized();
     s.area_m2(i) = 0.5 * c.norm();
   }
+  s.UpdateBounds();  // as footpad_geom's MakeSurfaceElements does for every pad
   return s;
 }
 

@@ -507,6 +507,11 @@ ContactWrench ComputeContactWrench(const SurfaceElements& elements, const PadKin
   const bool compaction = law.has_compaction();
   const bool footprint = law.added_mass_density_kg_m3() > 0.0;
   const bool power = law.depth_law().exponent != 1.0;
+  if (!compaction && !footprint && !power && elements.size() > 0 && elements.HasBounds() &&
+      !law.has_dynamic_stress() && IsSpinning(elements, kinematics)) {
+    if (const auto* plane = dynamic_cast<const PlaneGround*>(&ground))
+      return RotatingWrenchOverPlane(elements, kinematics, *plane, law);
+  }
   if (compaction || footprint) {
     return power ? ContactWrenchImpl<true, true>(elements, kinematics, ground, law, compaction, footprint)
                  : ContactWrenchImpl<false, true>(elements, kinematics, ground, law, compaction, footprint);
