@@ -5,6 +5,7 @@
 #include <limits>
 #include <numbers>
 
+
 namespace touchdown::rft {
 
 namespace {
@@ -242,21 +243,18 @@ struct Lane {
 }
 }  // namespace
 
-void Li2013TreersLaw::StressPerDepthBatch(StressBatch& b) const {
-  constexpr int kCap = StressBatch::kCapacity;
+namespace {
+// The batch's passes (Li2013TreersLaw::StressPerDepthBatch), each a loop the compiler vectorises.
+constexpr int kBatchCap = StressBatch::kCapacity;
+struct Lanes {
+  alignas(64) double e2x[kBatchCap], e2y[kBatchCap], s23[kBatchCap], s1[kBatchCap], alpha_x[kBatchCap],
+      alpha_z[kBatchCap], sign[kBatchCap];
+};
+
+// A: e2 along the normal's horizontal part. Returns the number of near-horizontal facets.
+double DecomposeAlongNormals(const Li2013Coefficients& c, const StressBatch& b, Lanes& a,
+                                                     double* blend, double* general) {
   const int count = b.count;
-  // StressPerDepth in passes over the batch. A: e2 along the normal's horizontal part (every facet
-  // more than 1 degree from horizontal has only this). B: e2 along the velocity's horizontal part,
-  // the near-horizontal facets' blend partner, computed only when the batch has such facets.
-  // `general` marks the elements neither covers (no motion in the e2-z plane, rest): they take
-  // StressPerDepth itself.
-  struct Lanes {
-    alignas(64) double e2x[kCap], e2y[kCap], s23[kCap], s1[kCap], alpha_x[kCap], alpha_z[kCap], sign[kCap];
-  };
-  Lanes a, bl;
-  alignas(64) double blend[kCap];    // weight of A: 1 above the band, smoothstep within it
-  alignas(64) double general[kCap];  // > 0: take StressPerDepth (a double: vectorises with the rest)
-  const Li2013Coefficients& c = c_;
   double near_count = 0.0;
   for (int i = 0; i < count; ++i) {
     const double nx = b.nx[i], ny = b.ny[i], nz = b.nz[i];
@@ -276,32 +274,51 @@ void Li2013TreersLaw::StressPerDepthBatch(StressBatch& b) const {
     general[i] = static_cast<double>(l.r23_sq <= 0.0);
     near_count += static_cast<double>(nh < kHorizontalBand);
   }
-  if (near_count > 0.0) {
-    for (int i = 0; i < count; ++i) {
-      const double nx = b.nx[i], ny = b.ny[i], nz = b.nz[i], vx = b.vx[i], vy = b.vy[i], vz = b.vz[i];
-      // e2: the velocity's horizontal direction; for a (nearly) vertical velocity the normal's, or x.
-      const double uh = std::sqrt(vx * vx + vy * vy), speed = std::sqrt(vx * vx + vy * vy + vz * vz);
-      const double nh = std::sqrt(nx * nx + ny * ny);
-      const bool from_v = uh > 1e-12 * speed, from_n = nh > 0.0;
-      const double inv_uh = 1.0 / std::max(uh, std::numeric_limits<double>::min());
-      const double inv_nh = 1.0 / std::max(nh, std::numeric_limits<double>::min());
-      const double ex = from_v ? vx * inv_uh : (from_n ? nx * inv_nh : 1.0);
-      const double ey = from_v ? vy * inv_uh : (from_n ? ny * inv_nh : 0.0);
-      // n projected onto the e2-z plane.
-      const double sb = nx * ex + ny * ey, cb = -nz, inv_norm = 1.0 / std::sqrt(sb * sb + cb * cb);
-      const Lane l = DecomposeLane(c, sb * inv_norm, cb * inv_norm, ex, ey, vx, vy, vz);
-      bl.e2x[i] = ex;
-      bl.e2y[i] = ey;
-      bl.s23[i] = l.s23;
-      bl.s1[i] = l.s1;
-      bl.alpha_x[i] = l.alpha_x;
-      bl.alpha_z[i] = l.alpha_z;
-      bl.sign[i] = l.lateral_sign;
-      // A near-horizontal facet needs B, and A too unless it is exactly horizontal (weight 0).
-      const double near = static_cast<double>(nh < kHorizontalBand);
-      general[i] = general[i] * static_cast<double>(nh > 0.0) + near * static_cast<double>(l.r23_sq <= 0.0);
-    }
+  return near_count;
+}
+
+// B: e2 along the velocity's horizontal part (the near-horizontal facets' blend partner).
+void DecomposeAlongVelocities(const Li2013Coefficients& c, const StressBatch& b, Lanes& bl,
+                                                      double* general) {
+  const int count = b.count;
+  for (int i = 0; i < count; ++i) {
+    const double nx = b.nx[i], ny = b.ny[i], nz = b.nz[i], vx = b.vx[i], vy = b.vy[i], vz = b.vz[i];
+    // e2: the velocity's horizontal direction; for a (nearly) vertical velocity the normal's, or x.
+    const double uh = std::sqrt(vx * vx + vy * vy), speed = std::sqrt(vx * vx + vy * vy + vz * vz);
+    const double nh = std::sqrt(nx * nx + ny * ny);
+    const bool from_v = uh > 1e-12 * speed, from_n = nh > 0.0;
+    const double inv_uh = 1.0 / std::max(uh, std::numeric_limits<double>::min());
+    const double inv_nh = 1.0 / std::max(nh, std::numeric_limits<double>::min());
+    const double ex = from_v ? vx * inv_uh : (from_n ? nx * inv_nh : 1.0);
+    const double ey = from_v ? vy * inv_uh : (from_n ? ny * inv_nh : 0.0);
+    // n projected onto the e2-z plane.
+    const double sb = nx * ex + ny * ey, cb = -nz, inv_norm = 1.0 / std::sqrt(sb * sb + cb * cb);
+    const Lane l = DecomposeLane(c, sb * inv_norm, cb * inv_norm, ex, ey, vx, vy, vz);
+    bl.e2x[i] = ex;
+    bl.e2y[i] = ey;
+    bl.s23[i] = l.s23;
+    bl.s1[i] = l.s1;
+    bl.alpha_x[i] = l.alpha_x;
+    bl.alpha_z[i] = l.alpha_z;
+    bl.sign[i] = l.lateral_sign;
+    // A near-horizontal facet needs B, and A too unless it is exactly horizontal (weight 0).
+    const double near = static_cast<double>(nh < kHorizontalBand);
+    general[i] = general[i] * static_cast<double>(nh > 0.0) + near * static_cast<double>(l.r23_sq <= 0.0);
   }
+}
+}  // namespace
+
+void Li2013TreersLaw::StressPerDepthBatch(StressBatch& b) const {
+  const int count = b.count;
+  // StressPerDepth in passes over the batch. A: e2 along the normal's horizontal part (every facet
+  // more than 1 degree from horizontal has only this). B: e2 along the velocity's horizontal part,
+  // the near-horizontal facets' blend partner, computed only when the batch has such facets.
+  // `general` marks the elements neither covers (no motion in the e2-z plane, rest): they take
+  // StressPerDepth itself.
+  Lanes a, bl;
+  alignas(64) double blend[kBatchCap];    // weight of A: 1 above the band, smoothstep within it
+  alignas(64) double general[kBatchCap];  // > 0: take StressPerDepth (a double: vectorises with the rest)
+  if (DecomposeAlongNormals(c_, b, a, blend, general) > 0.0) DecomposeAlongVelocities(c_, b, bl, general);
   // The weights from their tables, and the stress.
   const HermiteTable& in_plane = InPlaneTable();
   const HermiteTable& lateral = LateralTable();
