@@ -27,6 +27,7 @@ bool IntegratorOptions::IsValid(std::string* error) const {
     if (!(a > 0.0 && std::isfinite(a))) return fail("every component_atol must be positive and finite");
   if (!(max_step >= 0.0 && std::isfinite(max_step))) return fail("max_step must be >= 0");
   if (max_num_steps <= 0) return fail("max_num_steps must be positive");
+  if (max_steps_between_jacobians < 0) return fail("max_steps_between_jacobians must be >= 0");
   if (!(max_wall_time_s >= 0.0 && std::isfinite(max_wall_time_s)))
     return fail("max_wall_time_s must be >= 0 and finite");
   return true;
@@ -160,6 +161,8 @@ CvodeIntegrator::CvodeIntegrator(int state_size, RhsFunction rhs, const Integrat
     m.matrix = SUNDenseMatrix(state_size, state_size, m.context);
     m.linear_solver = SUNLinSol_Dense(m.y, m.matrix, m.context);
     m.Check(CVodeSetLinearSolver(m.cvode, m.linear_solver, m.matrix), "CVodeSetLinearSolver");
+    if (options.max_steps_between_jacobians > 0)
+      m.Check(CVodeSetJacEvalFrequency(m.cvode, options.max_steps_between_jacobians), "CVodeSetJacEvalFrequency");
   } else {
     m.nonlinear_solver = SUNNonlinSol_FixedPoint(m.y, 0, m.context);
     m.Check(CVodeSetNonlinearSolver(m.cvode, m.nonlinear_solver), "CVodeSetNonlinearSolver");

@@ -26,6 +26,9 @@ struct IntegratorOptions {
   double max_step = 0.0;       // [s]; 0 = no limit
   long max_num_steps = 200000;  // per call to AdvanceTo
   bool stiff = false;          // BDF + dense Newton when true, Adams + fixed point otherwise
+  // Stiff mode: most steps between Jacobian evaluations (CVodeSetJacEvalFrequency); 0 = CVODE's
+  // default (51). Each difference-quotient Jacobian costs one right-hand side per state.
+  long max_steps_between_jacobians = 0;
   // Wall-clock budget [s] for the integrator's whole life (construction, every Reset and
   // AdvanceTo: one drop); 0 = none. Checked in every right-hand-side and root evaluation, so a
   // stiff or chattering model cannot hang a sweep: the advance then fails with an

@@ -52,7 +52,8 @@ struct LanderRunOptions {
   // and the speed captures (docs/lander_dynamics.md) Adams gives the same cases A/B/C (depths to
   // 1e-8 m, roll and pitch to 1e-8 deg) 1.2-2x faster: BDF's difference-quotient Jacobians cost
   // 42 right-hand sides each (1.26k of 1.5k in case A). `simulation: {stiff: true}` selects BDF.
-  integ::IntegratorOptions integrator{1e-9, 1e-11, 0.0, 500000, false, 0.0, {}};
+  integ::IntegratorOptions integrator{
+      .rtol = 1e-9, .atol = 1e-11, .max_step = 0.0, .max_num_steps = 500000, .stiff = false, .component_atol = {}};
   // Absolute tolerances rtol times each state's scale (lander_simulation.cpp, ScaledTolerances),
   // unless integrator.component_atol is given; false: the scalar integrator.atol for every state
   // (a scenario that sets `atol` asks for that).
