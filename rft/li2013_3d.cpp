@@ -248,12 +248,12 @@ namespace {
 constexpr int kBatchCap = StressBatch::kCapacity;
 struct Lanes {
   alignas(64) double e2x[kBatchCap], e2y[kBatchCap], s23[kBatchCap], s1[kBatchCap], alpha_x[kBatchCap],
-      alpha_z[kBatchCap], sign[kBatchCap];
+      alpha_z[kBatchCap], sign[kBatchCap], nh[kBatchCap];
 };
 
 // A: e2 along the normal's horizontal part. Returns the number of near-horizontal facets.
 double DecomposeAlongNormals(const Li2013Coefficients& c, const StressBatch& b, Lanes& a,
-                                                     double* blend, double* general) {
+                             double* blend, double* general) {
   const int count = b.count;
   double near_count = 0.0;
   for (int i = 0; i < count; ++i) {
@@ -262,6 +262,7 @@ double DecomposeAlongNormals(const Li2013Coefficients& c, const StressBatch& b, 
     const double inv_nh = 1.0 / std::max(nh, std::numeric_limits<double>::min());
     const double ex = nx * inv_nh, ey = ny * inv_nh;
     const Lane l = DecomposeLane(c, nh, -nz, ex, ey, b.vx[i], b.vy[i], b.vz[i]);
+    a.nh[i] = nh;
     a.e2x[i] = ex;
     a.e2y[i] = ey;
     a.s23[i] = l.s23;
@@ -278,19 +279,19 @@ double DecomposeAlongNormals(const Li2013Coefficients& c, const StressBatch& b, 
 }
 
 // B: e2 along the velocity's horizontal part (the near-horizontal facets' blend partner).
-void DecomposeAlongVelocities(const Li2013Coefficients& c, const StressBatch& b, Lanes& bl,
-                                                      double* general) {
+void DecomposeAlongVelocities(const Li2013Coefficients& c, const StressBatch& b, const Lanes& a, Lanes& bl,
+                              double* general) {
   const int count = b.count;
   for (int i = 0; i < count; ++i) {
     const double nx = b.nx[i], ny = b.ny[i], nz = b.nz[i], vx = b.vx[i], vy = b.vy[i], vz = b.vz[i];
-    // e2: the velocity's horizontal direction; for a (nearly) vertical velocity the normal's, or x.
-    const double uh = std::sqrt(vx * vx + vy * vy), speed = std::sqrt(vx * vx + vy * vy + vz * vz);
-    const double nh = std::sqrt(nx * nx + ny * ny);
-    const bool from_v = uh > 1e-12 * speed, from_n = nh > 0.0;
+    // e2: the velocity's horizontal direction; for a (nearly) vertical velocity the normal's (pass
+    // A's e2), or x. uh > 1e-12 |v| is tested squared.
+    const double uh_sq = vx * vx + vy * vy, uh = std::sqrt(uh_sq);
+    const bool from_v = uh_sq > 1e-24 * (uh_sq + vz * vz), from_n = a.nh[i] > 0.0;
     const double inv_uh = 1.0 / std::max(uh, std::numeric_limits<double>::min());
-    const double inv_nh = 1.0 / std::max(nh, std::numeric_limits<double>::min());
-    const double ex = from_v ? vx * inv_uh : (from_n ? nx * inv_nh : 1.0);
-    const double ey = from_v ? vy * inv_uh : (from_n ? ny * inv_nh : 0.0);
+    const double ex = from_v ? vx * inv_uh : (from_n ? a.e2x[i] : 1.0);
+    const double ey = from_v ? vy * inv_uh : (from_n ? a.e2y[i] : 0.0);
+    const double nh = a.nh[i];
     // n projected onto the e2-z plane.
     const double sb = nx * ex + ny * ey, cb = -nz, inv_norm = 1.0 / std::sqrt(sb * sb + cb * cb);
     const Lane l = DecomposeLane(c, sb * inv_norm, cb * inv_norm, ex, ey, vx, vy, vz);
@@ -318,7 +319,7 @@ void Li2013TreersLaw::StressPerDepthBatch(StressBatch& b) const {
   Lanes a, bl;
   alignas(64) double blend[kBatchCap];    // weight of A: 1 above the band, smoothstep within it
   alignas(64) double general[kBatchCap];  // > 0: take StressPerDepth (a double: vectorises with the rest)
-  if (DecomposeAlongNormals(c_, b, a, blend, general) > 0.0) DecomposeAlongVelocities(c_, b, bl, general);
+  if (DecomposeAlongNormals(c_, b, a, blend, general) > 0.0) DecomposeAlongVelocities(c_, b, a, bl, general);
   // The weights from their tables, and the stress.
   const HermiteTable& in_plane = InPlaneTable();
   const HermiteTable& lateral = LateralTable();
