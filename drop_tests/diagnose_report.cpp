@@ -71,9 +71,6 @@ bool IsSynthetic(const Dataset& ds) {
   return fs::exists(fs::path(ds.directory) / "synthetic.yaml");
 }
 
-std::string Phase(double t, double t_stop) {
-  return t < 0.2 * t_stop ? "onset" : t < 0.7 * t_stop ? "mid" : t <= t_stop ? "stopping" : "rest";
-}
 }  // namespace
 
 nlohmann::json DiagnosisJson(const Diagnosis& d) {

@@ -142,7 +142,7 @@ PolygonSoup ReadBinaryOff(const std::string& path, std::string_view bytes) {
     Fail(path, "off", "declares " + std::to_string(nv) + " vertices but the file is too short for them");
   PolygonSoup soup;
   for (std::int32_t i = 0; i < nv; ++i) {
-    float xyz[3];
+    float xyz[3] = {0.0f, 0.0f, 0.0f};  // the size check above guarantees the bytes
     for (float& c : xyz) in.Raw(&c, 4);
     soup.vertices.emplace_back(xyz[0], xyz[1], xyz[2]);
   }

@@ -151,8 +151,9 @@ TEST(CompareCli, SimulatedDatasetAgainstItselfHasZeroErrors) {
       EXPECT_NEAR(j[key].get<double>(), 0.0, 1e-12) << out << " " << key;
     EXPECT_TRUE(fs::is_regular_file(dir / out / "per_drop.csv"));
     EXPECT_TRUE(fs::is_regular_file(dir / out / "plots" / "compare.gp"));
-    if (std::system("command -v gnuplot >/dev/null 2>&1") == 0)
+    if (std::system("command -v gnuplot >/dev/null 2>&1") == 0) {
       EXPECT_TRUE(fs::is_regular_file(dir / out / "plots" / "d0.png")) << out;
+    }
   }
   EXPECT_TRUE(fs::is_regular_file(dir / "cmp" / "simulated" / "drops.csv"));
   fs::remove_all(dir);

@@ -117,8 +117,11 @@ TEST(EffectRig, RateDampingMatchesTheDampedOscillator) {
   const double t_stop = 0.5 * (lo + hi), d_stop = y(t_stop) - y0;
   EXPECT_NEAR(r.time_to_rest_s, t_stop, 1e-6 * t_stop);
   EXPECT_NEAR(r.final_penetration_m, d_stop, 1e-5 * d_stop);
-  for (const DropSample& s : r.trace)
-    if (s.t_s > 0 && s.t_s < t_stop) EXPECT_NEAR(s.penetration_m, y(s.t_s) - y0, 1e-5 * d_stop) << s.t_s;
+  for (const DropSample& s : r.trace) {
+    if (s.t_s > 0 && s.t_s < t_stop) {
+      EXPECT_NEAR(s.penetration_m, y(s.t_s) - y0, 1e-5 * d_stop) << s.t_s;
+    }
+  }
 }
 
 // With no soil force and (almost) no gravity, the pad and its grains conserve momentum:
@@ -165,8 +168,11 @@ TEST(EffectRig, InertialDragMatchesKatsuragiDurian) {
   for (int i = 0; i < 200; ++i) (s(0.5 * (lo + hi)) > 0 ? lo : hi) = 0.5 * (lo + hi);
   const RigDropResult r = RunRigDrop({kMass, kG, v0}, Response(pad, t));
   EXPECT_NEAR(r.final_penetration_m, 0.5 * (lo + hi), 1e-5 * lo);
-  for (const DropSample& x : r.trace)
-    if (x.t_s > 0 && x.t_s < r.time_to_rest_s) EXPECT_NEAR(x.velocity_m_s * x.velocity_m_s, s(x.penetration_m), 1e-5);
+  for (const DropSample& x : r.trace) {
+    if (x.t_s > 0 && x.t_s < r.time_to_rest_s) {
+      EXPECT_NEAR(x.velocity_m_s * x.velocity_m_s, s(x.penetration_m), 1e-5);
+    }
+  }
   // The force jumps at impact to m v0^2 / d1 (inertial drag), it is not zero.
   EXPECT_NEAR(r.trace[1].force_N, kMass * std::pow(r.trace[1].velocity_m_s, 2) / d1 + k * r.trace[1].penetration_m, 1e-3);
 }

@@ -102,8 +102,9 @@ TEST(RftStressBatch, EveryLawGivesTheSameStressesAsElementByElement) {
       }
     }
     // A law that says it has no dynamic stress has none.
-    if (!law->has_dynamic_stress())
+    if (!law->has_dynamic_stress()) {
       for (size_t i = 0; i < n.size(); ++i) EXPECT_EQ(law->DynamicStress(n[i], v[i]), Eigen::Vector3d::Zero());
+    }
   }
   EXPECT_TRUE(laws[3]->has_dynamic_stress());
   EXPECT_FALSE(laws[0]->has_dynamic_stress());
