@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "apps/commands.h"
+#include "drop_tests/output_path.h"
 #include "drop_tests/model_file.h"
 #include "drop_tests/pad_drop.h"
 #include "rft/input_error.h"
@@ -67,6 +68,8 @@ void AddDropCommand(CLI::App& app) {
                            "--tilt-deg, --horizontal-speed and --omega need --free (the rig drop is vertical)");
     }
     drop::ValidateConditions(c, "command line");
+    const drop::OutputTarget trace(args->trace, {args->pad, args->soil, args->model});
+    if (!args->trace.empty()) drop::CheckOutputFile(trace);
     const drop::PadSpec pad = drop::LoadPad(args->pad);
     rft::SoilParameters soil = drop::LoadSoil(args->soil);
     if (!args->model.empty()) {
@@ -76,7 +79,7 @@ void AddDropCommand(CLI::App& app) {
       c.effects_source = args->model;
     }
     const drop::PadDrop result = drop::SimulateDrop(pad, soil, c, {});
-    if (!args->trace.empty()) drop::WriteTraceCsv(result, args->trace);
+    if (!args->trace.empty()) drop::WriteTraceCsv(result, trace);
     std::cout << drop::SummaryJson(result).dump(2) << std::endl;
   });
 }

@@ -2,6 +2,7 @@
 #include <memory>
 
 #include "apps/commands.h"
+#include "drop_tests/output_path.h"
 #include "drop_tests/sweep_export.h"
 
 namespace touchdown::app {
@@ -17,7 +18,9 @@ void AddExportCommand(CLI::App& app) {
                 "simulate every drop again for its full 1 kHz trace (default: stored traces; re-simulated if none)");
   cmd->add_option("--threads", options->threads, "threads for re-simulated traces (default: every core)");
   cmd->callback([dir, to, options] {
-    const drop::ExportSummary s = drop::ExportSweep(*dir, *to, *options);
+    const drop::OutputTarget out(*to, {*dir});
+    drop::CheckOutputDirectory(out, drop::OutputKind::kDataset);
+    const drop::ExportSummary s = drop::ExportSweep(*dir, out, *options);
     std::cout << "exported " << s.exported << (s.lander ? " lander drops" : " drops") << " to " << *to
               << (s.lander ? "/ (lander_drops.csv)" : "/ (drops.csv, traces/)");
     if (s.resimulated > 0) std::cout << "; " << s.resimulated << " traces simulated again";

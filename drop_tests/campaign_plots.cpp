@@ -10,7 +10,7 @@
 #include <sstream>
 #include <vector>
 
-#include "drop_tests/atomic_file.h"
+#include "drop_tests/output_path.h"
 #include "drop_tests/campaign.h"
 
 namespace touchdown::drop {

@@ -10,7 +10,7 @@
 #include <numbers>
 #include <nlohmann/json.hpp>
 
-#include "drop_tests/atomic_file.h"
+#include "drop_tests/output_path.h"
 #include "drop_tests/calibrate.h"
 #include "drop_tests/compare_gnuplot.h"
 #include "drop_tests/dataset_csv.h"
@@ -262,9 +262,9 @@ nlohmann::json ComparisonJson(const Comparison& c) {
 }
 
 void WriteComparison(const Comparison& c, const Dataset& measured, const Dataset& simulated,
-                     const std::vector<const DatasetDrop*>& partners, bool write_simulated, const std::string& out_dir) {
+                     const std::vector<const DatasetDrop*>& partners, bool write_simulated, const OutputTarget& out) {
   const nlohmann::json summary = ComparisonJson(c);
-  WriteStagedDirectory(out_dir, [&](const std::string& staging) {
+  WriteOutputDirectory(out, OutputKind::kComparison, [&](const std::string& staging) {
     const fs::path dir = staging;
     WriteFileAtomically((dir / "summary.json").string(), [&](std::ostream& out) { out << summary.dump(2) << '\n'; });
     WriteFileAtomically((dir / "per_drop.csv").string(), [&](std::ostream& out) {
@@ -306,7 +306,8 @@ void WriteComparison(const Comparison& c, const Dataset& measured, const Dataset
     }
     WriteFileAtomically((dir / "plots" / "compare.gp").string(), [&](std::ostream& out) { out << gp; });
     if (write_simulated) {
-      WriteDataset(simulated, (dir / "simulated").string());
+      fs::create_directories(dir / "simulated");
+      WriteDatasetFiles(simulated, (dir / "simulated").string());
     }
     RunGnuplot(staging, "plots/compare.gp");
   });

@@ -83,6 +83,6 @@ nlohmann::json ComparisonJson(const Comparison& c);
 // plots/compare.gp and plots/<drop_id>.png (measured over simulated: force against time and
 // against penetration).
 void WriteComparison(const Comparison& c, const Dataset& measured, const Dataset& simulated,
-                     const std::vector<const DatasetDrop*>& partners, bool write_simulated, const std::string& out_dir);
+                     const std::vector<const DatasetDrop*>& partners, bool write_simulated, const OutputTarget& out);
 
 }  // namespace touchdown::drop

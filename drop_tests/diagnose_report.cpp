@@ -7,7 +7,7 @@
 #include <iostream>
 #include <sstream>
 
-#include "drop_tests/atomic_file.h"
+#include "drop_tests/output_path.h"
 #include "drop_tests/dataset_csv.h"
 #include "drop_tests/diagnose.h"
 
@@ -119,10 +119,10 @@ nlohmann::json DiagnosisJson(const Diagnosis& d) {
   return j;
 }
 
-void WriteDiagnosis(const Diagnosis& d, const Dataset& ds, const std::string& out_dir) {
+void WriteDiagnosis(const Diagnosis& d, const Dataset& ds, const OutputTarget& out) {
   const CandidateScore* shown = Shown(d);
   const CandidateScore& after = d.winner >= 0 ? d.candidates[d.winner] : d.base;
-  WriteStagedDirectory(out_dir, [&](const std::string& staging) {
+  WriteOutputDirectory(out, OutputKind::kDiagnosis, [&](const std::string& staging) {
     const fs::path dir = staging;
     fs::create_directories(dir / "data");
     fs::create_directories(dir / "plots");

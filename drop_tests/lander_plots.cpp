@@ -6,7 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "drop_tests/atomic_file.h"
+#include "drop_tests/output_path.h"
 #include "drop_tests/lander_scenario.h"
 
 namespace touchdown::drop {

@@ -7,7 +7,7 @@
 #include <set>
 #include <tuple>
 
-#include "drop_tests/atomic_file.h"
+#include "drop_tests/output_path.h"
 #include "drop_tests/compare_gnuplot.h"
 #include "drop_tests/dataset_csv.h"
 #include "rft/input_error.h"
