@@ -289,6 +289,27 @@ std::vector<Case> Cases() {
   c.push_back({"CLI flag", "sweep --threads -1", "sweep count.yaml --threads -1 --out out_f1"});
   c.push_back({"CLI flag", "sweep --shard 3/2", "sweep soft.yaml --shard 3/2 --out out_f2"});
   c.push_back({"CLI flag", "sweep --max-drop-wall-time nan", "sweep soft.yaml --max-drop-wall-time nan --out out_f3"});
+  // Output paths (issue 13, section 1): touchdown never writes over, into or around what it did not write.
+  {
+    const std::string scenario = "o_lander.yaml";
+    const std::pair<std::string, std::string> lander = {scenario, Lander("lander: sutoh2017_lander\n" + kLanderGround +
+                                                                         kLanderInitial)};
+    const std::string run = "lander " + scenario + " --out ";
+    c.push_back({"output path", "a directory of the user's (holds notes.txt)", run + "o_k", {lander, {"o_k/notes.txt", "mine"}}});
+    c.push_back({"output path", "the current directory", run + ".", {lander}});
+    c.push_back({"output path", "the parent directory", run + "..", {lander}});
+    c.push_back({"output path", "a file of the user's", run + "o_file", {lander, {"o_file", "mine"}}});
+    c.push_back({"output path", "the command's input file", run + scenario, {lander}});
+    c.push_back({"output path", "trailing slash (a new directory)", run + "o_new/", {lander}});
+    c.push_back({"output path", "compare DS --out DS (the measured dataset)", "compare o_ds --out o_ds",
+                 Dataset("o_ds", kDropsHeader + row)});
+    c.push_back({"output path", "calibrate --out inside the measured dataset", "calibrate o_ds2 --out o_ds2/model.yaml",
+                 Dataset("o_ds2", kDropsHeader + row)});
+    c.push_back({"output path", "drop --trace onto a directory", "drop --pad flat --soil fjs1_lp --speed 1 --trace o_dir",
+                 {{"o_dir/x", ""}}});
+    c.push_back({"output path", "drop --trace onto a file of the user's",
+                 "drop --pad flat --soil fjs1_lp --speed 1 --trace o_trace.csv", {{"o_trace.csv", "mine"}}});
+  }
   // Extreme but legal inputs.
   const std::string rig = "drop --pad flat --soil fjs1_lp ";
   c.push_back({"extreme", "10 m/s impact", rig + "--speed 10"});
