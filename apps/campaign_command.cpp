@@ -14,7 +14,7 @@ void AddCampaignCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("campaign", "Run a list of drops from a scenario YAML; write tables, traces, plots");
   cmd->add_option("scenario", *scenario_path, "campaign scenario YAML (e.g. data/scenarios/sutoh2017_single_footpad.yaml)")
       ->required();
-  cmd->add_option("--out", *out_dir, "output directory (replaced when the run completes)")->required();
+  cmd->add_option("--out", *out_dir, "output directory: new, empty, or an earlier campaign output (replaced whole when the run completes)")->required();
   cmd->callback([scenario_path, out_dir] {
     const drop::OutputTarget out(*out_dir, {*scenario_path});
     drop::CheckOutputDirectory(out, drop::OutputKind::kCampaign);

@@ -24,7 +24,7 @@ void AddCompareCommand(CLI::App& app) {
   auto* sim = cmd->add_option("--simulated", args->simulated,
                               "simulated dataset directory to join on the drop conditions (default: simulate here)");
   cmd->add_option("--model", args->model, "model file to simulate with (per-soil zeta and effect terms)")->excludes(sim);
-  cmd->add_option("--out", args->out, "output directory (replaced when complete)")->required();
+  cmd->add_option("--out", args->out, "output directory: new, empty, or an earlier output of this command (replaced whole when complete)")->required();
   cmd->callback([args] {
     const drop::OutputTarget out(args->out, {args->measured, args->simulated, args->model});
     drop::CheckOutputDirectory(out, drop::OutputKind::kComparison);

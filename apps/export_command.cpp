@@ -13,7 +13,7 @@ void AddExportCommand(CLI::App& app) {
   auto options = std::make_shared<drop::ExportOptions>();
   CLI::App* cmd = app.add_subcommand("export", "Write a sweep's results (DIR/results.sqlite) in the dataset format");
   cmd->add_option("dir", *dir, "sweep output directory")->required();
-  cmd->add_option("--to", *to, "dataset directory to write (replaced when complete)")->required();
+  cmd->add_option("--to", *to, "dataset directory: new, empty, or an earlier dataset touchdown wrote (replaced whole when complete)")->required();
   cmd->add_flag("--full-traces", options->full_traces,
                 "simulate every drop again for its full 1 kHz trace (default: stored traces; re-simulated if none)");
   cmd->add_option("--threads", options->threads, "threads for re-simulated traces (default: every core)");

@@ -19,7 +19,7 @@ void AddSynthCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "synth", "Make a SYNTHETIC measured-like dataset (noise, drift, quantisation; optionally a hidden effect)");
   cmd->add_option("spec", args->spec, "synth spec YAML (see docs/model_gap.md)")->required();
-  cmd->add_option("--out", args->out, "dataset directory to write (replaced when complete)")->required();
+  cmd->add_option("--out", args->out, "dataset directory: new, empty, or an earlier dataset touchdown wrote (replaced whole when complete)")->required();
   cmd->callback([args] {
     const drop::OutputTarget out(args->out, {args->spec});
     drop::CheckOutputDirectory(out, drop::OutputKind::kDataset);
