@@ -13,8 +13,9 @@
 
 namespace touchdown::drop {
 
-// At least the pixel width of the widest plot panel touchdown draws (1000 px).
-inline constexpr size_t kPlotBuckets = 1000;
+// Four times the pixel width of the widest plot panel touchdown draws (1000 px): enough that
+// a scatter of a long trace (measured samples drawn as points) still looks solid.
+inline constexpr size_t kPlotBuckets = 4000;
 // Traces up to this many rows are plotted whole.
 inline constexpr size_t kPlotRowsKeptWhole = 4 * kPlotBuckets;
 
