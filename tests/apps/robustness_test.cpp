@@ -326,6 +326,28 @@ std::vector<Case> Cases() {
                "force --pad flat --soil fjs1_lp --depth 0.005 --tilt-deg 89"});
   c.push_back({"extreme", "pad buried 1 m deep", "force --pad flat --soil fjs1_lp --depth 1"});
   c.push_back({"extreme", "pad 1 cm above the surface (depth -0.01)", "force --pad flat --soil fjs1_lp --depth -0.01"});
+  // Issue 13 section 2: gnuplot runs without a shell, with paths relative to the output, so an
+  // --out with a quote or a shell injection attempt plots like any other (tests/apps/
+  // plot_outputs_test.cpp checks the PNGs and that no PWNED file appears); a relative --out; a
+  // sweep whose drops all failed plots placeholders instead of an invalid script.
+  {
+    const std::string trade_sweep =
+        Sweep("traces: none\nfixed: {soil: fjs1_lp}\ngrid: {pad: [flat, curved], impact_speed_m_s: [0.7, 1.0]}\n");
+    c.push_back({"plot output", "trade --out with a quote", "trade plot_trade.yaml --out \"it's\"",
+                 {{"plot_trade.yaml", trade_sweep}}});
+    c.push_back({"plot output", "trade --out with a shell injection attempt",
+                 "trade plot_trade.yaml --out \"x'; touch PWNED; echo '\"", {{"plot_trade.yaml", trade_sweep}}});
+    c.push_back({"plot output", "trade with a relative --out", "trade plot_trade.yaml --out results/pad_trade",
+                 {{"plot_trade.yaml", trade_sweep}, {"results/README", "results go here\n"}}});
+    c.push_back({"plot output", "trade of a sweep whose drops all failed", "trade plot_failed.yaml --out out_p4",
+                 {{"plot_failed.yaml", Sweep(kSweepBase + "grid: {impact_speed_m_s: [1], zeta_N_cm3: [0.000001]}\n")}}});
+    c.push_back({"plot output", "campaign --out with a quote", "campaign plot_campaign.yaml --out \"it's campaign\"",
+                 {{"plot_campaign.yaml", "drops:\n  - {pad: flat, soil: fjs1_lp, impact_speeds_m_s: [1.0]}\n"}}});
+    c.push_back({"plot output", "lander --out with a shell injection attempt",
+                 "lander plot_lander.yaml --out \"y'; touch PWNED; echo '\"",
+                 {{"plot_lander.yaml", Lander("lander: sutoh2017_lander\n" + kLanderGround +
+                                             "initial: {touchdown_speed_m_s: 1.0}\nsimulation: {duration_s: 0.03}\n")}}});
+  }
   return c;
 }
 
