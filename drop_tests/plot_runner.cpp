@@ -9,7 +9,7 @@
 #include <cstring>
 #include <fstream>
 
-#include "drop_tests/atomic_file.h"
+#include "drop_tests/output_path.h"
 #include "drop_tests/external_program.h"
 #include "rft/input_error.h"
 
