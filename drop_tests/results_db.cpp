@@ -402,12 +402,33 @@ int64_t ResultsDb::ForgetDropsBelowLimits(long max_rhs_evaluations, double max_w
   }
 }
 
+namespace {
+std::string SelectRecords(bool with_traces, const std::string& where_and_order) {
+  return "SELECT d.drop_index, " + Columns() +
+         (with_traces ? ", t.data FROM drops d LEFT JOIN traces t ON t.drop_index = d.drop_index" : " FROM drops d") +
+         " " + where_and_order;
+}
+}  // namespace
+
+std::vector<DropRecord> ResultsDb::ReadPage(int64_t from, size_t limit, bool with_traces) const {
+  const int n_columns = 1 + kColumnCount;
+  Statement st(db_, SelectRecords(with_traces, "WHERE d.drop_index >= ? ORDER BY d.drop_index LIMIT ?"));
+  st.Int(1, from);
+  st.Int(2, static_cast<int64_t>(limit));
+  std::vector<DropRecord> out;
+  int rc;
+  while ((rc = st.Step()) == SQLITE_ROW) {
+    out.push_back(ReadRecord(st));
+    if (with_traces && sqlite3_column_type(st.get(), n_columns) != SQLITE_NULL)
+      out.back().trace = ReadTraceBlob(st, n_columns);
+  }
+  if (rc != SQLITE_DONE) throw std::runtime_error(std::string("sqlite read: ") + sqlite3_errmsg(db_));
+  return out;
+}
+
 void ResultsDb::ForEach(const std::function<void(const DropRecord&)>& visit, bool with_traces) const {
   const int n_columns = 1 + kColumnCount;
-  Statement st(db_, "SELECT d.drop_index, " + Columns() +
-                        (with_traces ? ", t.data FROM drops d LEFT JOIN traces t ON t.drop_index = d.drop_index"
-                                     : " FROM drops d") +
-                        " ORDER BY d.drop_index");
+  Statement st(db_, SelectRecords(with_traces, "ORDER BY d.drop_index"));
   int rc;
   while ((rc = st.Step()) == SQLITE_ROW) {
     DropRecord r = ReadRecord(st);

@@ -116,6 +116,9 @@ class ResultsDb {
   // Every record in index order; traces when asked.
   void ForEach(const std::function<void(const DropRecord&)>& visit, bool with_traces) const;
   std::vector<DropRecord> ReadAll(bool with_traces) const;
+  // At most `limit` records with index >= `from`, in index order: read a database page by page
+  // in bounded memory (next page: from the last index + 1).
+  std::vector<DropRecord> ReadPage(int64_t from, size_t limit, bool with_traces) const;
 
  private:
   void Exec(const std::string& sql) const;
