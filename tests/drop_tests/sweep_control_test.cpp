@@ -8,6 +8,7 @@
 
 #include <fcntl.h>
 #include <malloc.h>
+#include <sqlite3.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -53,7 +54,7 @@ trace_max_samples: 8
 fixed: {pad: hex, soil: fjs1_lp}
 grid:
   tilt_deg: [0, 3]
-  impact_speed_m_s: {from: 0.4, to: 1.6, count: 8}
+  impact_speed_m_s: {from: 0.4, to: 1.6, count: 12}
 )";
 
 struct Child {
@@ -195,6 +196,16 @@ TEST_F(SweepControl, SigtermCommitsTheDropsInFlightExits143AndARerunCompletesIde
     EXPECT_LT(stored, total) << "the sweep finished before it could be stopped";
   }
   // The database is consistent (SQLite's own check) and every stored drop is whole.
+  {
+    sqlite3* raw = nullptr;
+    ASSERT_EQ(sqlite3_open_v2(ResultsDbPath(out.string()).c_str(), &raw, SQLITE_OPEN_READONLY, nullptr), SQLITE_OK);
+    sqlite3_stmt* st = nullptr;
+    ASSERT_EQ(sqlite3_prepare_v2(raw, "PRAGMA integrity_check", -1, &st, nullptr), SQLITE_OK);
+    ASSERT_EQ(sqlite3_step(st), SQLITE_ROW);
+    EXPECT_STREQ(reinterpret_cast<const char*>(sqlite3_column_text(st, 0)), "ok");
+    sqlite3_finalize(st);
+    sqlite3_close(raw);
+  }
   {
     const ResultsDb db(ResultsDbPath(out.string()));
     for (const DropRecord& r : db.ReadAll(true)) EXPECT_TRUE(r.ok ? !r.trace.empty() : r.trace.empty()) << r.drop_id;
