@@ -1,4 +1,5 @@
 #include <cmath>
+#include <cstdlib>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -7,6 +8,7 @@
 #include "drop_tests/output_path.h"
 #include "drop_tests/sweep.h"
 #include "drop_tests/sweep_mpi.h"
+#include "drop_tests/sweep_stop.h"
 #include "rft/input_error.h"
 
 namespace touchdown::app {
@@ -16,7 +18,8 @@ struct SweepArgs {
   std::string sweep, out, shard, model, progress = "auto";
   int threads = 0;
   int batch = 512;
-  double max_drop_wall_time_s = 0.0;  // only when given; else the sweep file's (default 60 s)
+  double max_drop_wall_time_s = 0.0;  // only when given; else the sweep file's (default: none)
+  double max_drop_evaluations = 0.0;  // only when given; else the sweep file's
 };
 }  // namespace
 
@@ -34,14 +37,25 @@ void AddSweepCommand(CLI::App& app) {
   cmd->add_option("--progress", args->progress, "auto (bar on a terminal, else lines), bar, lines or none")
       ->check(CLI::IsMember({"auto", "bar", "lines", "none"}));
   cmd->add_option("--batch", args->batch, "drops per database transaction (default 512)")->check(CLI::PositiveNumber);
+  CLI::Option* max_evaluations = cmd->add_option(
+      "--max-drop-evaluations", args->max_drop_evaluations,
+      "work limit per drop: right-hand-side evaluations of its integrator, 0 = none (default: the sweep file's "
+      "max_drop_evaluations, else " + std::to_string(drop::kDefaultMaxDropEvaluations) +
+          "); deterministic; a drop over it is recorded as failed, and retried by a rerun with a higher limit");
   CLI::Option* max_wall =
       cmd->add_option("--max-drop-wall-time", args->max_drop_wall_time_s,
-                      "wall-clock limit per drop in seconds, 0 = none (default: the sweep file's "
-                      "max_drop_wall_time_s, else 60); a drop over it is recorded as failed");
-  cmd->callback([args, max_wall] {
+                      "opt-in wall-clock limit per drop in seconds, 0 = none (default: the sweep file's "
+                      "max_drop_wall_time_s, else none); which drops fail on it depends on machine load");
+  cmd->callback([args, max_wall, max_evaluations] {
     const bool max_wall_given = max_wall->count() > 0;
     if (max_wall_given && !(std::isfinite(args->max_drop_wall_time_s) && args->max_drop_wall_time_s >= 0.0))
-      throw InputError("--max-drop-wall-time: must be a finite number of seconds >= 0 (0: no limit)");
+      throw InputError("--max-drop-wall-time: must be a finite number of seconds >= 0 (0: no limit), got " +
+                       max_wall->as<std::string>());
+    const bool max_evaluations_given = max_evaluations->count() > 0;
+    const double n = args->max_drop_evaluations;
+    if (max_evaluations_given && !(n >= 0.0 && n <= 1e15 && n == std::floor(n)))
+      throw InputError("--max-drop-evaluations: must be a whole number between 0 (no limit) and 1e15, got " +
+                       max_evaluations->as<std::string>());
     drop::SweepRunOptions options;
     options.threads = args->threads;
     if (!args->shard.empty()) options.shard = drop::ParseShard(args->shard);
@@ -53,16 +67,34 @@ void AddSweepCommand(CLI::App& app) {
     drop::SweepPlan plan = drop::LoadSweepPlan(args->sweep, args->model);
     if (max_wall_given) plan.rig.integrator.max_wall_time_s = args->max_drop_wall_time_s;
     drop::OpenOutputDirectory({args->out, {args->sweep, args->model}}, drop::OutputKind::kSweep);
+    if (max_evaluations_given) plan.rig.integrator.max_rhs_evaluations = static_cast<long>(n);
+    // SIGINT/SIGTERM: the running drops finish and are committed; exit 128 + signal below.
+    const drop::StopOnSignals stop_on_signals;
+    options.stop = &drop::StopOnSignals::flag();
     int rank = 0;
     const drop::SweepRunSummary s = drop::LaunchedByMpirun() ? drop::RunSweepMpi(plan, args->out, options, &rank)
                                                              : drop::RunSweep(plan, args->out, options);
-    if (rank != 0) return;
+    if (rank != 0) {
+      if (s.stop_signal != 0) std::exit(128 + s.stop_signal);
+      return;
+    }
+    if (s.stop_signal != 0) {
+      const int64_t done = s.already_done + s.computed;
+      std::cout << "sweep " << plan.name << ": stopped by " << (s.stop_signal == SIGINT ? "SIGINT" : "SIGTERM")
+                << " after committing the drops in flight; " << done << " of " << s.in_shard << " drops done ("
+                << s.computed << " run now), " << s.failed << " failed. Run the same command again to resume.\n"
+                << "wrote " << drop::ResultsDbPath(args->out) << std::endl;
+      std::exit(128 + s.stop_signal);
+    }
     std::cout << "sweep " << plan.name << ": " << s.in_shard << " drops"
               << (options.shard.count > 1 ? " in shard " + options.shard.Text() : std::string()) << " of "
               << s.total << "; " << s.already_done << " already done, " << s.computed << " run now on " << s.ranks
               << " rank(s) x " << s.threads << " thread(s) in " << std::fixed << std::setprecision(2) << s.seconds
               << " s (" << std::setprecision(0) << (s.seconds > 0 ? s.computed / s.seconds : 0.0) << " drops/s); "
-              << s.failed << " failed\nwrote " << drop::ResultsDbPath(args->out) << "\n";
+              << s.failed << " failed"
+              << (s.retried > 0 ? "; " + std::to_string(s.retried) + " drops that had failed on a lower limit run again"
+                                : std::string())
+              << "\nwrote " << drop::ResultsDbPath(args->out) << "\n";
   });
 }
 

@@ -3,14 +3,29 @@
 //   BM_Sweep/threads:1, BM_Sweep/threads:2   in-process RunSweep (items_per_second = drops/s)
 //   BM_SweepMpirun/ranks:2                   `mpirun -np 2 touchdown sweep --threads 1`, whole
 //                                            process wall time (MPI start-up included)
+//   BM_SweepStartPeakRss/drops_log10:N       `touchdown sweep` of a 10^N-drop plan: start it, let
+//                                            it commit 2,000 drops, stop it with SIGTERM; counter
+//                                            peak_rss_MB (the child's ru_maxrss). Target (issue 13
+//                                            section 5): a 1e10-drop plan starts in constant memory,
+//                                            the same peak as a 1e4-drop one (it used to die with
+//                                            bad_alloc; 1e8 drops took 1.6 GB).
 // The plan mixes the paper's three pads, two soils and speeds 0.3-2.0 m/s (random samples).
 #include <benchmark/benchmark.h>
 
+#include <fcntl.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <csignal>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <unistd.h>
+#include <sstream>
+#include <thread>
 
+#include "drop_tests/results_db.h"
 #include "drop_tests/sweep.h"
 
 namespace {
@@ -74,6 +89,76 @@ void BM_SweepMpirun(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * kDrops);
   state.counters["drops_per_s"] = benchmark::Counter(static_cast<double>(kDrops), benchmark::Counter::kIsIterationInvariantRate);
 }
+// A plan of 10^N drops: two grid axes of 10^(N/2) values each (at most 100,000 per axis).
+std::string HugeSweep(int drops_log10) {
+  long count = 1;
+  for (int i = 0; i < drops_log10 / 2; ++i) count *= 10;
+  std::ostringstream yaml;
+  yaml << "schema_version: 1\ntype: sweep\nname: huge\ntraces: none\nfixed: {pad: flat, soil: fjs1_lp}\n"
+       << "grid:\n  impact_speed_m_s: {from: 0.3, to: 2.0, count: " << count << "}\n"
+       << "  pad_mass_kg: {from: 1.0, to: 2.0, count: " << count << "}\n";
+  return yaml.str();
+}
+
+void BM_SweepStartPeakRss(benchmark::State& state) {
+  const int drops_log10 = static_cast<int>(state.range(0));
+  const fs::path file = BenchDir() / ("huge_" + std::to_string(drops_log10) + ".yaml");
+  std::ofstream(file) << HugeSweep(drops_log10);
+  const fs::path out = BenchDir() / ("out_huge_" + std::to_string(drops_log10));
+  constexpr int64_t kFirstDrops = 2000;
+  double peak_mb = 0.0;
+  for (auto _ : state) {
+    state.PauseTiming();
+    fs::remove_all(out);
+    state.ResumeTiming();
+    const pid_t pid = ::fork();
+    if (pid == 0) {
+      std::vector<std::string> args = {TOUCHDOWN_BINARY, "sweep", file.string(), "--out", out.string(),
+                                       "--threads", "2", "--progress", "none"};
+      std::vector<char*> argv;
+      for (std::string& a : args) argv.push_back(a.data());
+      argv.push_back(nullptr);
+      const int null = ::open("/dev/null", O_WRONLY);
+      ::dup2(null, 1);
+      ::dup2(null, 2);
+      ::execv(argv[0], argv.data());
+      ::_exit(127);
+    }
+    // Until the first drops are committed (or the child ended: it could not start).
+    int status = 0;
+    rusage usage{};
+    bool ended = false;
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+    while (!ended && std::chrono::steady_clock::now() < deadline) {
+      if (::wait4(pid, &status, WNOHANG, &usage) == pid) {
+        ended = true;
+        break;
+      }
+      int64_t rows = 0;
+      if (fs::exists(ResultsDbPath(out.string()))) {
+        try {
+          rows = ResultsDb(ResultsDbPath(out.string())).Count();
+        } catch (const std::exception&) {
+        }
+      }
+      if (rows >= kFirstDrops) break;
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    if (!ended) {
+      ::kill(pid, SIGTERM);
+      ::wait4(pid, &status, 0, &usage);
+    }
+    peak_mb = std::max(peak_mb, usage.ru_maxrss / 1024.0);  // ru_maxrss: kB on Linux
+    if (ended || !WIFEXITED(status) || WEXITSTATUS(status) != 128 + SIGTERM) {
+      state.SkipWithError("the sweep did not run until stopped with SIGTERM (exit 143)");
+      break;
+    }
+  }
+  state.counters["peak_rss_MB"] = peak_mb;
+}
+BENCHMARK(BM_SweepStartPeakRss)->ArgName("drops_log10")->Arg(4)->Arg(8)->Arg(10)->Unit(benchmark::kMillisecond)
+    ->UseRealTime()->Iterations(1);
+
 BENCHMARK(BM_SweepMpirun)->ArgName("ranks")->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
 
 }  // namespace

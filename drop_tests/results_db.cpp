@@ -26,6 +26,9 @@ constexpr size_t kNumbers1 = std::size(kNumberColumns1), kNumbers2 = std::size(k
 // Format 3: text columns after the numbers.
 constexpr const char* kTextColumns3[] = {"pad1_soil", "pad2_soil", "pad3_soil", "pad4_soil", "ground_case"};
 constexpr size_t kTexts3 = std::size(kTextColumns3);
+// Format 4: the work limit a failed drop ran out of.
+constexpr const char* kLimitColumn = "failure_limit";
+constexpr const char* kLimitValueColumn = "failure_limit_value";
 
 template <typename R>  // DropRecord or const DropRecord
 auto Numbers1(R& r) {
@@ -55,10 +58,11 @@ std::string Columns() {
   c += ", solver_steps, drop_kind";
   for (const char* n : kNumberColumns2) c += std::string(", ") + n;
   for (const char* n : kTextColumns3) c += std::string(", ") + n;
+  c += std::string(", ") + kLimitColumn + ", " + kLimitValueColumn;
   return c;
 }
 constexpr int kColumnCount =
-    6 + static_cast<int>(kNumbers1) + 2 + static_cast<int>(kNumbers2) + static_cast<int>(kTexts3);  // after drop_index
+    6 + static_cast<int>(kNumbers1) + 2 + static_cast<int>(kNumbers2) + static_cast<int>(kTexts3) + 2;  // after drop_index
 
 class Statement {
  public:
@@ -107,6 +111,8 @@ void BindRecord(Statement& st, const DropRecord& r) {
   st.Text(i++, r.kind);
   for (const double* v : Numbers2(r)) st.Real(i++, *v);
   for (const std::string* t : Texts3(r)) st.Text(i++, *t);
+  st.Text(i++, r.failure_limit);
+  st.Real(i++, r.failure_limit_value);
 }
 
 DropRecord ReadRecord(Statement& st) {
@@ -125,6 +131,8 @@ DropRecord ReadRecord(Statement& st) {
   if (r.kind.empty()) r.kind = "rig";  // a format-1 row read through the added columns
   for (double* v : Numbers2(r)) *v = st.ColumnReal(i++);
   for (std::string* t : Texts3(r)) *t = st.ColumnText(i++);
+  r.failure_limit = st.ColumnText(i++);
+  r.failure_limit_value = st.ColumnReal(i++);
   return r;
 }
 
@@ -177,7 +185,8 @@ bool SameRecord(const DropRecord& a, const DropRecord& b, bool compare_traces) {
     if (!SameBits(*a2[i], *b2[i])) return false;
   if (a.index != b.index || a.drop_id != b.drop_id || a.ok != b.ok || a.failure != b.failure || a.kind != b.kind ||
       a.pad != b.pad || a.soil != b.soil || a.atmosphere != b.atmosphere || a.solver_steps != b.solver_steps ||
-      a.pad_soil != b.pad_soil || a.ground_case != b.ground_case)
+      a.pad_soil != b.pad_soil || a.ground_case != b.ground_case || a.failure_limit != b.failure_limit ||
+      !SameBits(a.failure_limit_value, b.failure_limit_value))
     return false;
   if (!compare_traces) return true;
   return a.trace.size() == b.trace.size() &&
@@ -195,6 +204,8 @@ std::string SerializeRecords(const std::vector<DropRecord>& records) {
     for (const double* v : Numbers1(r)) Put(out, *v);
     for (const double* v : Numbers2(r)) Put(out, *v);
     for (const std::string* t : Texts3(r)) PutString(out, *t);
+    PutString(out, r.failure_limit);
+    Put(out, r.failure_limit_value);
     Put(out, r.solver_steps);
     Put<uint64_t>(out, r.trace.size());
     out.append(reinterpret_cast<const char*>(r.trace.data()), r.trace.size() * sizeof(DropSample));
@@ -213,6 +224,8 @@ std::vector<DropRecord> DeserializeRecords(const std::string& bytes) {
     for (double* v : Numbers1(r)) *v = in.Get<double>();
     for (double* v : Numbers2(r)) *v = in.Get<double>();
     for (std::string* t : Texts3(r)) *t = in.GetString();
+    r.failure_limit = in.GetString();
+    r.failure_limit_value = in.Get<double>();
     r.solver_steps = in.Get<int64_t>();
     r.trace.resize(in.Get<uint64_t>());
     for (DropSample& s : r.trace) s = in.Get<DropSample>();
@@ -243,10 +256,11 @@ ResultsDb::ResultsDb(const std::string& path) : path_(path) {
   drops += ", solver_steps INTEGER, drop_kind TEXT NOT NULL DEFAULT 'rig'";
   for (const char* n : kNumberColumns2) drops += std::string(", ") + n + " REAL";
   for (const char* n : kTextColumns3) drops += std::string(", ") + n + " TEXT NOT NULL DEFAULT ''";
+  drops += std::string(", ") + kLimitColumn + " TEXT NOT NULL DEFAULT '', " + kLimitValueColumn + " REAL";
   Exec("CREATE TABLE IF NOT EXISTS meta(key TEXT PRIMARY KEY, value TEXT NOT NULL);" + drops +
        ");CREATE TABLE IF NOT EXISTS traces(drop_index INTEGER PRIMARY KEY, samples INTEGER NOT NULL, "
        "data BLOB NOT NULL);");
-  // A format-1 or -2 database (no format-2 or -3 columns) gets them added, NULL or '', so it can still be read
+  // A format-1, -2 or -3 database (no format-2, -3 or -4 columns) gets them added, NULL or '', so it can still be read
   // (export, merge); `sweep` refuses to resume it (format_version in meta).
   std::vector<std::string> present;
   {
@@ -259,6 +273,8 @@ ResultsDb::ResultsDb(const std::string& path) : path_(path) {
     if (!has(n)) Exec(std::string("ALTER TABLE drops ADD COLUMN ") + n + " REAL");
   for (const char* n : kTextColumns3)
     if (!has(n)) Exec(std::string("ALTER TABLE drops ADD COLUMN ") + n + " TEXT NOT NULL DEFAULT ''");
+  if (!has(kLimitColumn)) Exec(std::string("ALTER TABLE drops ADD COLUMN ") + kLimitColumn + " TEXT NOT NULL DEFAULT ''");
+  if (!has(kLimitValueColumn)) Exec(std::string("ALTER TABLE drops ADD COLUMN ") + kLimitValueColumn + " REAL");
 }
 
 ResultsDb::~ResultsDb() { sqlite3_close(db_); }
@@ -344,22 +360,75 @@ int64_t ResultsDb::CountFailed() const {
   return sqlite3_column_int64(st.get(), 0);
 }
 
-std::vector<uint8_t> ResultsDb::DoneMask(int64_t total) const {
-  std::vector<uint8_t> done(static_cast<size_t>(total), 0);
-  Statement st(db_, "SELECT drop_index FROM drops");
-  while (st.Step() == SQLITE_ROW) {
-    const int64_t i = sqlite3_column_int64(st.get(), 0);
-    if (i >= 0 && i < total) done[static_cast<size_t>(i)] = 1;
+int64_t ResultsDb::CountBelow(int64_t total) const {
+  Statement st(db_, "SELECT COUNT(*) FROM drops WHERE drop_index >= 0 AND drop_index < ?");
+  st.Int(1, total);
+  st.Step();
+  return sqlite3_column_int64(st.get(), 0);
+}
+
+std::vector<int64_t> ResultsDb::StoredIndices(int64_t begin, int64_t end) const {
+  Statement st(db_, "SELECT drop_index FROM drops WHERE drop_index >= ? AND drop_index < ? ORDER BY drop_index");
+  st.Int(1, begin);
+  st.Int(2, end);
+  std::vector<int64_t> out;
+  int rc;
+  while ((rc = st.Step()) == SQLITE_ROW) out.push_back(sqlite3_column_int64(st.get(), 0));
+  if (rc != SQLITE_DONE) throw std::runtime_error(std::string("sqlite read: ") + sqlite3_errmsg(db_));
+  return out;
+}
+
+int64_t ResultsDb::ForgetDropsBelowLimits(long max_rhs_evaluations, double max_wall_time_s) {
+  // A limit of 0 is no limit: larger than any recorded one.
+  const std::string where =
+      "status != 'ok' AND ((failure_limit = 'max_rhs_evaluations' AND (?1 = 0 OR failure_limit_value < ?1)) OR "
+      "(failure_limit = 'max_wall_time_s' AND (?2 = 0 OR failure_limit_value < ?2)))";
+  Exec("BEGIN IMMEDIATE");
+  try {
+    Statement traces(db_, "DELETE FROM traces WHERE drop_index IN (SELECT drop_index FROM drops WHERE " + where + ")");
+    traces.Int(1, max_rhs_evaluations);
+    traces.Real(2, max_wall_time_s);
+    if (traces.Step() != SQLITE_DONE) throw std::runtime_error(std::string("sqlite delete: ") + sqlite3_errmsg(db_));
+    Statement drops(db_, "DELETE FROM drops WHERE " + where);
+    drops.Int(1, max_rhs_evaluations);
+    drops.Real(2, max_wall_time_s);
+    if (drops.Step() != SQLITE_DONE) throw std::runtime_error(std::string("sqlite delete: ") + sqlite3_errmsg(db_));
+    const int64_t removed = sqlite3_changes(db_);
+    Exec("COMMIT");
+    return removed;
+  } catch (...) {
+    sqlite3_exec(db_, "ROLLBACK", nullptr, nullptr, nullptr);
+    throw;
   }
-  return done;
+}
+
+namespace {
+std::string SelectRecords(bool with_traces, const std::string& where_and_order) {
+  return "SELECT d.drop_index, " + Columns() +
+         (with_traces ? ", t.data FROM drops d LEFT JOIN traces t ON t.drop_index = d.drop_index" : " FROM drops d") +
+         " " + where_and_order;
+}
+}  // namespace
+
+std::vector<DropRecord> ResultsDb::ReadPage(int64_t from, size_t limit, bool with_traces) const {
+  const int n_columns = 1 + kColumnCount;
+  Statement st(db_, SelectRecords(with_traces, "WHERE d.drop_index >= ? ORDER BY d.drop_index LIMIT ?"));
+  st.Int(1, from);
+  st.Int(2, static_cast<int64_t>(limit));
+  std::vector<DropRecord> out;
+  int rc;
+  while ((rc = st.Step()) == SQLITE_ROW) {
+    out.push_back(ReadRecord(st));
+    if (with_traces && sqlite3_column_type(st.get(), n_columns) != SQLITE_NULL)
+      out.back().trace = ReadTraceBlob(st, n_columns);
+  }
+  if (rc != SQLITE_DONE) throw std::runtime_error(std::string("sqlite read: ") + sqlite3_errmsg(db_));
+  return out;
 }
 
 void ResultsDb::ForEach(const std::function<void(const DropRecord&)>& visit, bool with_traces) const {
   const int n_columns = 1 + kColumnCount;
-  Statement st(db_, "SELECT d.drop_index, " + Columns() +
-                        (with_traces ? ", t.data FROM drops d LEFT JOIN traces t ON t.drop_index = d.drop_index"
-                                     : " FROM drops d") +
-                        " ORDER BY d.drop_index");
+  Statement st(db_, SelectRecords(with_traces, "ORDER BY d.drop_index"));
   int rc;
   while ((rc = st.Step()) == SQLITE_ROW) {
     DropRecord r = ReadRecord(st);

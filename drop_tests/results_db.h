@@ -11,7 +11,8 @@
 //         [format 2:] drop_kind 'rig'|'free'|'lander', final_tilt_deg, horizontal_travel_m,
 //         roll_deg, pitch_deg, pad1..pad4_final_penetration_m, final_roll_deg,
 //         final_pitch_deg, tipped_over,
-//         [format 3:] pad1_soil..pad4_soil, ground_case)
+//         [format 3:] pad1_soil..pad4_soil, ground_case,
+//         [format 4:] failure_limit, failure_limit_value)
 //   traces(drop_index PRIMARY KEY, samples, data BLOB of float64 [t, d, v, F] per sample)
 //
 // A batch of drops and their traces go in one transaction (WAL journal), so a process killed
@@ -34,7 +35,9 @@ namespace touchdown::drop {
 
 // 2: drop_kind, the free drop's final tilt and horizontal travel, the lander columns.
 // 3: the soil under each lander pad (pad1_soil..pad4_soil) and the paper's ground case.
-inline constexpr int kResultsDbVersion = 3;
+// 4: the work limit a failed drop ran out of (failure_limit, failure_limit_value), so a rerun
+//    with a higher limit retries it; meta records the limits and whether they depend on load.
+inline constexpr int kResultsDbVersion = 4;
 
 // One drop as stored. Metrics are NaN (NULL in SQL) for a failed drop, and for quantities a kind
 // of drop does not have.
@@ -43,6 +46,10 @@ struct DropRecord {
   std::string drop_id;
   bool ok = false;
   std::string failure;  // the reason, for a failed drop
+  // A drop that failed because a work limit ran out (integ::LimitExceeded): which one
+  // ("max_rhs_evaluations" or "max_wall_time_s") and its value; "" and NaN otherwise.
+  std::string failure_limit;
+  double failure_limit_value = std::numeric_limits<double>::quiet_NaN();
   std::string kind = "rig";  // "rig" (vertical rod), "free" (6-DOF pad) or "lander"
   std::string pad, soil, atmosphere;
   double impact_speed_m_s = 0.0, pad_mass_kg = 0.0, gravity_m_s2 = 0.0;
@@ -98,11 +105,20 @@ class ResultsDb {
   void Insert(const std::vector<DropRecord>& records);
   int64_t Count() const;
   int64_t CountFailed() const;
-  // done[i] = 1 for every stored drop index i < total.
-  std::vector<uint8_t> DoneMask(int64_t total) const;
+  // Stored drops with index < total.
+  int64_t CountBelow(int64_t total) const;
+  // Stored drop indices in [begin, end), ascending (a range scan of the primary key).
+  std::vector<int64_t> StoredIndices(int64_t begin, int64_t end) const;
+  // Removes, in one transaction, the failed drops that ran out of a work limit lower than the
+  // one given now (0: no limit, so every drop that ran out of that kind of limit), so that they
+  // are computed again; returns how many.
+  int64_t ForgetDropsBelowLimits(long max_rhs_evaluations, double max_wall_time_s);
   // Every record in index order; traces when asked.
   void ForEach(const std::function<void(const DropRecord&)>& visit, bool with_traces) const;
   std::vector<DropRecord> ReadAll(bool with_traces) const;
+  // At most `limit` records with index >= `from`, in index order: read a database page by page
+  // in bounded memory (next page: from the last index + 1).
+  std::vector<DropRecord> ReadPage(int64_t from, size_t limit, bool with_traces) const;
 
  private:
   void Exec(const std::string& sql) const;

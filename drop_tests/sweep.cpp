@@ -12,6 +12,7 @@
 #include <sstream>
 #include <unistd.h>
 
+#include "drop_tests/dataset_csv.h"
 #include "drop_tests/sweep_engine.h"
 #include "rft/input_error.h"
 
@@ -29,6 +30,11 @@ std::string Hex(uint64_t v) {
   std::snprintf(buffer, sizeof buffer, "%016" PRIx64, v);
   return buffer;
 }
+
+// Drop indices handed to the engine at a time, and the queue length below which it gets more:
+// memory bounded by these, never by the plan.
+constexpr size_t kFeedChunk = 4096;
+constexpr size_t kFeedLow = 1024;
 
 std::string Duration(double s) {
   if (!std::isfinite(s) || s < 0) return "?";
@@ -58,44 +64,75 @@ Shard ParseShard(const std::string& text, const std::string& context) {
   return s;
 }
 
-std::unique_ptr<ResultsDb> OpenSweepDb(const SweepPlan& plan, const std::string& out_dir, const Shard& shard) {
+SweepStore OpenSweepStore(const SweepPlan& plan, const std::string& out_dir, const Shard& shard) {
   OpenOutputDirectory(out_dir, OutputKind::kSweep);
-  auto db = std::make_unique<ResultsDb>(ResultsDbPath(out_dir));
+  SweepStore store;
+  store.lock = std::make_unique<SweepDirLock>(out_dir);
+  store.db = std::make_unique<ResultsDb>(ResultsDbPath(out_dir));
+  ResultsDb& db = *store.db;
   const std::string digest = PlanDigest(plan);
-  const std::map<std::string, std::string> meta = db->Meta();
+  const std::map<std::string, std::string> meta = db.Meta();
+  // The limits of the run, and whether its failed set depends on machine load (only a
+  // wall-clock limit makes it so: the evaluation limit fails the same drops everywhere).
+  const integ::IntegratorOptions& limits = plan.rig.integrator;
+  const std::map<std::string, std::string> limits_meta = {
+      {"max_drop_evaluations", std::to_string(limits.max_rhs_evaluations)},
+      {"max_drop_wall_time_s", FormatNumber(limits.max_wall_time_s)},
+      {"load_dependent_failures",
+       limits.max_wall_time_s > 0.0 ? "yes: a wall-clock limit per drop (max_drop_wall_time_s) is in use; which "
+                                      "drops fail on it depends on machine load"
+                                    : "no"}};
   if (meta.empty()) {
-    db->SetMeta({{"format_version", std::to_string(kResultsDbVersion)},
-                 {"sweep_name", plan.name},
-                 {"plan_digest", digest},
-                 {"total_drops", std::to_string(plan.size())},
-                 {"shard", shard.Text()},
-                 {"source", fs::absolute(plan.source).string()},
-                 {"model", plan.model ? fs::absolute(plan.model->source).string() : ""}});
-    return db;
+    std::map<std::string, std::string> m = {{"format_version", std::to_string(kResultsDbVersion)},
+                                            {"sweep_name", plan.name},
+                                            {"plan_digest", digest},
+                                            {"total_drops", std::to_string(plan.size())},
+                                            {"shard", shard.Text()},
+                                            {"source", fs::absolute(plan.source).string()},
+                                            {"model", plan.model ? fs::absolute(plan.model->source).string() : ""}};
+    m.insert(limits_meta.begin(), limits_meta.end());
+    db.SetMeta(m);
+    return store;
   }
   auto value = [&](const std::string& key) {
     const auto it = meta.find(key);
     return it == meta.end() ? std::string() : it->second;
   };
   if (value("format_version") != std::to_string(kResultsDbVersion))
-    throw MakeInputError(db->path(), "format_version", "written by another touchdown version ('" +
-                                                          value("format_version") + "')");
+    throw MakeInputError(db.path(), "format_version", "written by another touchdown version ('" +
+                                                         value("format_version") + "')");
   if (value("plan_digest") != digest)
-    throw MakeInputError(db->path(), "plan_digest",
+    throw MakeInputError(db.path(), "plan_digest",
                          "holds results of a different sweep ('" + value("sweep_name") + "' from " + value("source") +
                              "); the sweep file, a pad, a soil or the model changed. Use another --out directory");
   if (value("shard") != shard.Text())
-    throw MakeInputError(db->path(), "shard",
+    throw MakeInputError(db.path(), "shard",
                          "holds shard " + value("shard") + ", this run is shard " + shard.Text());
-  return db;
+  store.retried = db.ForgetDropsBelowLimits(limits.max_rhs_evaluations, limits.max_wall_time_s);
+  db.SetMeta(limits_meta);
+  return store;
 }
 
-std::vector<int64_t> RemainingDrops(const SweepPlan& plan, const ResultsDb& db, const Shard& shard) {
-  const std::vector<uint8_t> done = db.DoneMask(plan.size());
-  std::vector<int64_t> todo;
-  for (int64_t i = shard.index; i < plan.size(); i += shard.count)
-    if (!done[static_cast<size_t>(i)]) todo.push_back(i);
-  return todo;
+RemainingDrops::RemainingDrops(int64_t total, const ResultsDb& db, const Shard& shard)
+    : total_(total), db_(db), shard_(shard), next_(shard.index) {}
+
+std::vector<int64_t> RemainingDrops::Next(size_t max) {
+  std::vector<int64_t> out;
+  while (out.size() < max && next_ < total_) {
+    // A window of the index range holding the next (max - found) drops of the shard.
+    const int64_t span = static_cast<int64_t>(max - out.size()) * shard_.count;
+    const int64_t end = span < total_ - next_ ? next_ + span : total_;
+    const std::vector<int64_t> stored = db_.StoredIndices(next_, end);
+    size_t k = 0;
+    int64_t i = next_;
+    for (; i < end; i += shard_.count) {
+      while (k < stored.size() && stored[k] < i) ++k;
+      if (k < stored.size() && stored[k] == i) continue;
+      out.push_back(i);
+    }
+    next_ = i;
+  }
+  return out;
 }
 
 SweepProgress::SweepProgress(std::ostream& out, ProgressMode mode, double interval_s, int64_t total,
@@ -145,27 +182,50 @@ void SweepProgress::Finish() { Show(true); }
 
 SweepRunSummary RunSweep(const SweepPlan& plan, const std::string& out_dir, const SweepRunOptions& options) {
   const double start = Now();
-  std::unique_ptr<ResultsDb> db = OpenSweepDb(plan, out_dir, options.shard);
-  const std::vector<int64_t> todo = RemainingDrops(plan, *db, options.shard);
+  SweepStore store = OpenSweepStore(plan, out_dir, options.shard);
+  ResultsDb& db = *store.db;
   SweepRunSummary summary;
   summary.total = plan.size();
   summary.in_shard = (plan.size() - options.shard.index + options.shard.count - 1) / options.shard.count;
-  summary.already_done = summary.in_shard - static_cast<int64_t>(todo.size());
+  summary.already_done = db.CountBelow(plan.size());
+  summary.retried = store.retried;
   summary.threads = options.threads > 0 ? options.threads : DefaultThreads();
   SweepProgress progress(options.log ? *options.log : std::cerr, options.progress, options.progress_interval_s,
                          summary.in_shard, summary.already_done);
-  if (!todo.empty()) {
+  if (summary.already_done < summary.in_shard) {
     const SweepModels models(plan);
-    DropEngine engine(models, todo, summary.threads);
+    DropEngine engine(models, summary.threads);
+    RemainingDrops todo(plan.size(), db, options.shard);
+    bool input_open = true, stopping = false;
+    auto feed = [&] {
+      while (input_open && engine.Hungry(kFeedLow)) {
+        const std::vector<int64_t> next = todo.Next(kFeedChunk);
+        if (next.empty()) {
+          engine.CloseInput();
+          input_open = false;
+        } else {
+          engine.Add(next);
+        }
+      }
+    };
+    feed();
     while (!engine.Finished()) {
-      std::vector<DropRecord> batch = engine.Take(options.batch_size, options.commit_interval_s);
-      db->Insert(batch);  // one transaction: all of the batch or none of it
+      if (!stopping && options.stop && options.stop->load() != 0) {
+        engine.Stop();  // the drops running now finish; nothing new starts
+        stopping = true;
+        input_open = false;
+      }
+      std::vector<DropRecord> batch = engine.Take(options.batch_size, options.commit_interval_s,
+                                                  input_open ? kFeedLow : 0, stopping ? nullptr : options.stop);
+      db.Insert(batch);  // one transaction: all of the batch or none of it
       summary.computed += static_cast<int64_t>(batch.size());
       progress.Add(batch);
+      feed();
     }
   }
+  if (options.stop) summary.stop_signal = options.stop->load();
   progress.Finish();
-  summary.failed = db->CountFailed();
+  summary.failed = db.CountFailed();
   summary.seconds = Now() - start;
   return summary;
 }
@@ -199,6 +259,7 @@ MergeSummary MergeSweepResults(const std::string& out_dir, const std::vector<std
     shards.push_back(std::move(db));
   }
   OpenOutputDirectory(OutputTarget(out_dir, shard_dirs), OutputKind::kSweep);
+  const SweepDirLock lock(out_dir);  // a sweep or merge writing there now is refused
   ResultsDb out(ResultsDbPath(out_dir));
   std::map<std::string, std::string> meta = out.Meta();
   if (meta.empty()) {

@@ -5,12 +5,23 @@
 // same sweep file skips every stored drop and computes the rest, so a sweep killed at any
 // moment (SIGKILL included) and started again ends with exactly the full set, none lost,
 // duplicated or half-written. The database records a digest of the plan: resuming with a
-// changed sweep file, pad, soil or model is refused rather than mixing results.
+// changed sweep file, pad, soil or model is refused rather than mixing results. A restart with
+// a higher per-drop limit (max_drop_evaluations, max_drop_wall_time_s) first forgets the drops
+// that failed on a lower one, so they are computed again.
+//
+// Streaming: the plan is never materialised. Drop i's parameters follow from i alone
+// (SweepPlan::DropAt), and the drops still to do are found a chunk at a time by range queries
+// of the database (RemainingDrops), so a 1e10-drop plan starts in the same memory as a small one.
+//
+// One writer: the output directory is locked (sweep_lock.h) while a sweep writes it; a second
+// sweep or merge on it is refused naming the holder's pid. SIGINT/SIGTERM (sweep_stop.h, through
+// SweepRunOptions::stop) end a run cleanly: the drops in flight finish and are committed.
 //
 // Parallel: threads on one machine (DropEngine), MPI ranks (sweep_mpi.h), or shards
 // (`--shard I/N`: drop i belongs to shard i mod N; each shard writes its own directory and
 // MergeSweepResults combines them). A drop's record depends only on its index, so results are
 // bit-identical for any number of threads, ranks or shards.
+#include <atomic>
 #include <cstdint>
 #include <iosfwd>
 #include <memory>
@@ -18,6 +29,7 @@
 #include <vector>
 
 #include "drop_tests/results_db.h"
+#include "drop_tests/sweep_lock.h"
 #include "drop_tests/sweep_spec.h"
 
 namespace touchdown::drop {
@@ -41,6 +53,9 @@ struct SweepRunOptions {
   ProgressMode progress = ProgressMode::kAuto;  // auto: a bar on a terminal, else lines
   double progress_interval_s = 10.0;            // for lines
   std::ostream* log = nullptr;                  // progress and failed drops; default std::cerr
+  // When it becomes non-zero (a signal number, StopOnSignals::flag()), the run stops: running
+  // drops finish and are committed, the rest is left for a restart. nullptr: never.
+  const std::atomic<int>* stop = nullptr;
 };
 
 struct SweepRunSummary {
@@ -49,6 +64,8 @@ struct SweepRunSummary {
   int64_t already_done = 0;  // found in the database at the start
   int64_t computed = 0;      // run now
   int64_t failed = 0;        // failed drops stored (in the shard), old and new
+  int64_t retried = 0;       // drops that had failed on a lower limit, forgotten to run again
+  int stop_signal = 0;       // the signal that stopped the run early (0: it ran to the end)
   double seconds = 0.0;
   int ranks = 1;
   int threads = 1;
@@ -57,11 +74,31 @@ struct SweepRunSummary {
 // The hex digest of plan.DigestText() that a results database records.
 std::string PlanDigest(const SweepPlan& plan);
 
-// Opens DIR/results.sqlite (creating DIR), writing the plan's meta on first use and refusing
-// (InputError) a database that holds a different sweep or shard.
-std::unique_ptr<ResultsDb> OpenSweepDb(const SweepPlan& plan, const std::string& out_dir, const Shard& shard);
-// Indices of the shard's drops not yet in the database, ascending.
-std::vector<int64_t> RemainingDrops(const SweepPlan& plan, const ResultsDb& db, const Shard& shard);
+// A sweep's output directory, locked, with its database open.
+struct SweepStore {
+  std::unique_ptr<SweepDirLock> lock;
+  std::unique_ptr<ResultsDb> db;
+  int64_t retried = 0;  // failed drops forgotten because the limits are higher now
+};
+// Creates DIR, locks it (refusing a directory another process writes), opens DIR/results.sqlite,
+// writing the plan's meta on first use and refusing (InputError) a database that holds a
+// different sweep or shard; records the run's per-drop limits in the meta and forgets the
+// failed drops whose limit was lower than the plan's.
+SweepStore OpenSweepStore(const SweepPlan& plan, const std::string& out_dir, const Shard& shard);
+
+// The shard's drops not yet in the database, ascending, a chunk at a time (range queries of the
+// primary key), so memory is bounded by the chunk whatever the size of the plan.
+class RemainingDrops {
+ public:
+  RemainingDrops(int64_t total, const ResultsDb& db, const Shard& shard);
+  std::vector<int64_t> Next(size_t max);  // empty: none left
+
+ private:
+  int64_t total_;
+  const ResultsDb& db_;
+  Shard shard_;
+  int64_t next_;  // the next index of the shard not yet looked at
+};
 
 SweepRunSummary RunSweep(const SweepPlan& plan, const std::string& out_dir, const SweepRunOptions& options);
 // All drops in memory, index order, on `threads` threads (0: every core); no database.

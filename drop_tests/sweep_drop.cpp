@@ -63,6 +63,14 @@ void MarkFailed(DropRecord& r, const std::string& reason) {
   r.trace.clear();
 }
 
+// A drop that ran out of a work limit: failed, naming the limit and its value (so a rerun with a
+// higher limit knows to retry it).
+void MarkOutOfLimit(DropRecord& r, const integ::LimitExceeded& e) {
+  MarkFailed(r, e.what());
+  r.failure_limit = e.limit();
+  r.failure_limit_value = e.value();
+}
+
 DropRecord SimulatePadSweepDrop(const SweepModels& models, const SweepDropParams& p, TraceStorage storage) {
   const SweepPlan& plan = models.plan();
   const DropConditions c = ConditionsOf(models, p);
@@ -72,6 +80,7 @@ DropRecord SimulatePadSweepDrop(const SweepModels& models, const SweepDropParams
     options.rig = plan.rig;
     options.free.sample_rate_hz = plan.rig.sample_rate_hz;
     options.free.integrator.max_wall_time_s = plan.rig.integrator.max_wall_time_s;
+    options.free.integrator.max_rhs_evaluations = plan.rig.integrator.max_rhs_evaluations;
     options.intrusion = models.has_intrusion(p.pad) ? &models.intrusion(p.pad) : nullptr;
     const PadDrop drop = SimulateDrop(plan.pads[p.pad], plan.soils[p.soil], c, options);
     const RigDropResult& d = drop.result;
@@ -91,6 +100,8 @@ DropRecord SimulatePadSweepDrop(const SweepModels& models, const SweepDropParams
     r.horizontal_travel_m = drop.free ? drop.free->horizontal_travel_m : 0.0;
     if (storage == TraceStorage::kFull) r.trace = d.trace;
     else if (storage == TraceStorage::kDecimated) r.trace = DecimateTrace(d.trace, plan.trace_max_samples);
+  } catch (const integ::LimitExceeded& e) {
+    MarkOutOfLimit(r, e);
   } catch (const std::exception& e) {
     MarkFailed(r, e.what());
   }
@@ -123,8 +134,9 @@ DropRecord SimulateLanderSweepDrop(const SweepModels& models, const SweepDropPar
           {"pad_soils_under_pad_" + std::to_string(i + 1), ref, {Eigen::Vector2d(i + 1, plan.pad_patch_half_width_m)}});
     }
   }
-  if (plan.rig.integrator.max_wall_time_s > 0.0)
-    sc.options.integrator.max_wall_time_s = plan.rig.integrator.max_wall_time_s;
+  // The sweep's limits replace the scenario's (none given there: a lander run has only max_num_steps).
+  sc.options.integrator.max_wall_time_s = plan.rig.integrator.max_wall_time_s;
+  sc.options.integrator.max_rhs_evaluations = plan.rig.integrator.max_rhs_evaluations;
 
   DropRecord r;
   r.index = p.index;
@@ -183,6 +195,8 @@ DropRecord SimulateLanderSweepDrop(const SweepModels& models, const SweepDropPar
         if (r.time_to_rest_s > 0.0) r.mean_conversion_rate_W = r.impact_energy_J / r.time_to_rest_s;
       }
     }
+  } catch (const integ::LimitExceeded& e) {
+    MarkOutOfLimit(r, e);
   } catch (const std::exception& e) {
     MarkFailed(r, e.what());
   }

@@ -34,7 +34,7 @@ struct ExportSummary {
 // The columns of lander_drops.csv, in order.
 extern const std::vector<std::string> kLanderExportColumns;
 
-// The dataset in memory (traces included).
+// The dataset in memory (traces included): for tests and small sweeps; ExportSweep streams instead.
 Dataset SweepToDataset(const std::string& sweep_dir, const ExportOptions& options, ExportSummary* summary = nullptr,
                        std::vector<DropRecord>* failed = nullptr);
 ExportSummary ExportSweep(const std::string& sweep_dir, const OutputTarget& dataset, const ExportOptions& options);

@@ -1,9 +1,13 @@
 #pragma once
-// `mpirun -np N touchdown sweep ...`: every rank loads the plan; rank 0 opens the results
-// database, finds the drops still missing (so a restart works with any N) and broadcasts
-// them; rank r computes the r-th of every N remaining drops on its threads and sends finished
-// batches to rank 0, which commits them exactly as a single process would. The database is
-// therefore the same whatever N is, and bit-identical to a single-process run.
+// `mpirun -np N touchdown sweep ...`: every rank loads the plan; rank 0 locks the output
+// directory (the other ranks never touch it, so ranks of one run cannot refuse each other),
+// opens the results database and finds the drops still missing a chunk at a time (so a restart
+// works with any N, and memory does not grow with the plan). The other ranks ask rank 0 for
+// chunks of drop indices as their queues run low, compute them on their threads and send the
+// finished batches to rank 0, which commits them exactly as a single process would. The
+// database is therefore the same whatever N is, and bit-identical to a single-process run.
+// SIGINT/SIGTERM on any rank (mpirun forwards them to all) stop the whole run cleanly: rank 0
+// hands out no more work, every rank finishes and sends its running drops, rank 0 commits them.
 #include <string>
 
 #include "drop_tests/sweep.h"

@@ -317,7 +317,7 @@ SweepPlan LoadSweepPlan(const std::string& path, const std::string& model_overri
   const YamlFields f = YamlFields::LoadFile(path);
   f.RequireSchemaVersion(1);
   f.RequireOnly({"schema_version", "type", "name", "description", "model", "traces", "trace_max_samples",
-                 "rest_duration_s", "max_drop_wall_time_s", "fixed", "grid", "random", "lander", "provenance"});
+                 "rest_duration_s", "max_drop_evaluations", "max_drop_wall_time_s", "fixed", "grid", "random", "lander", "provenance"});
   if (f.String("type") != "sweep") f.Fail("type", "must be 'sweep', got '" + f.String("type") + "'");
   const std::string base = fs::path(path).parent_path().string();
   SweepPlan plan;
@@ -369,6 +369,16 @@ SweepPlan LoadSweepPlan(const std::string& path, const std::string& model_overri
   if (plan.rig.rest_duration_s > 60.0) f.Fail("rest_duration_s", "must be at most 60 s");
   plan.rig.integrator.max_wall_time_s =
       f.Has("max_drop_wall_time_s") ? f.NonNegative("max_drop_wall_time_s") : kDefaultMaxDropWallTimeS;
+  if (!std::isfinite(plan.rig.integrator.max_wall_time_s))
+    f.Fail("max_drop_wall_time_s", "must be a finite number of seconds (0: no limit)");
+  plan.rig.integrator.max_rhs_evaluations = kDefaultMaxDropEvaluations;
+  if (f.Has("max_drop_evaluations")) {
+    const double n = f.NonNegative("max_drop_evaluations");
+    if (n != std::floor(n) || n > 1e15)
+      f.Fail("max_drop_evaluations", "must be a whole number of evaluations between 0 (no limit) and 1e15, got " +
+                                         FormatNumber(n));
+    plan.rig.integrator.max_rhs_evaluations = static_cast<long>(n);
+  }
 
   // The model first: the soils are loaded through it.
   std::string model_path;

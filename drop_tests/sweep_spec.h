@@ -9,8 +9,14 @@
 //   traces: decimated            # none | decimated | full  (stored in the results database)
 //   trace_max_samples: 64        # for `decimated`: at most this many samples per drop
 //   rest_duration_s: 0           # time simulated after the stop (0: summaries only)
-//   max_drop_wall_time_s: 60     # wall-clock limit per drop (0: none); a drop over it is
-//                                # recorded as failed with the reason (`sweep --max-drop-wall-time`)
+//   max_drop_evaluations: 2000000  # work limit per drop: right-hand-side evaluations of its
+//                                # integrator (0: none; default kDefaultMaxDropEvaluations); a drop
+//                                # over it is recorded as failed, naming the limit and its value
+//                                # (`sweep --max-drop-evaluations`). Deterministic: the same drops
+//                                # fail on every machine, under any load, at any thread count.
+//   max_drop_wall_time_s: 0      # opt-in wall-clock limit per drop (0: none, the default); it
+//                                # depends on machine load, and the database says so
+//                                # (`sweep --max-drop-wall-time`)
 //   fixed:  {soil: fjs1_lp, gravity_m_s2: 9.81}
 //   grid:   {pad: [flat, c4, curved], impact_speed_m_s: {from: 0.5, to: 2.0, count: 7}}
 //   random: {samples: 100, seed: 7, pad_mass_kg: {uniform: [1.2, 2.0]}, soil: {choice: [fjs1_lp, fjs1_cp]}}
@@ -137,7 +143,7 @@ struct SweepPlan {
   uint64_t seed = 0;
   TraceStorage traces = TraceStorage::kDecimated;
   int trace_max_samples = 64;
-  RigDropOptions rig;  // rest_duration_s and integrator.max_wall_time_s from the file
+  RigDropOptions rig;  // rest_duration_s and integrator.max_rhs_evaluations/max_wall_time_s from the file
 
   int64_t size() const;
   SweepDropParams DropAt(int64_t index) const;
@@ -149,9 +155,12 @@ struct SweepPlan {
 
 // Loads and validates the whole sweep (pads, soils, model, every value) before anything runs.
 // `model_override` (from --model) replaces the file's `model:`; giving both is an error.
-// The per-drop wall-clock limit is not part of DigestText: it decides whether a drop finishes,
-// never what a finished drop computes, so a restart may change it.
-inline constexpr double kDefaultMaxDropWallTimeS = 60.0;
+// The per-drop limits are not part of DigestText: they decide whether a drop finishes, never
+// what a finished drop computes, so a restart may change them (and then retries the drops that
+// ran out of a lower one). The default evaluation limit is far above what any shipped sweep's
+// drop needs (bench/sweep_bench.cpp and tests/drop_tests/sweep_limits_test.cpp measure them).
+inline constexpr long kDefaultMaxDropEvaluations = 2000000;
+inline constexpr double kDefaultMaxDropWallTimeS = 0.0;  // none: wall-clock limits are opt-in
 SweepPlan LoadSweepPlan(const std::string& path, const std::string& model_override = "");
 // 64-bit FNV-1a, for digests.
 uint64_t Fnv1a64(const std::string& text);

@@ -30,6 +30,7 @@ bool IntegratorOptions::IsValid(std::string* error) const {
   if (max_steps_between_jacobians < 0) return fail("max_steps_between_jacobians must be >= 0");
   if (!(max_wall_time_s >= 0.0 && std::isfinite(max_wall_time_s)))
     return fail("max_wall_time_s must be >= 0 and finite");
+  if (max_rhs_evaluations < 0) return fail("max_rhs_evaluations must be >= 0");
   return true;
 }
 
@@ -47,6 +48,8 @@ struct CvodeIntegrator::Impl {
   std::string last_error;      // CVODE's own message for the last failure
   bool initialised = false;
   double max_wall_time_s = 0.0;  // 0: no limit
+  long max_rhs_evaluations = 0;  // 0: no limit
+  long rhs_calls = 0;            // over the integrator's life (CVODE's own counter restarts at each Reset)
   std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now();
 
   // True (and the failure pending) once the wall-clock budget is spent. Called first in every
@@ -56,8 +59,20 @@ struct CvodeIntegrator::Impl {
     const std::chrono::duration<double> used = std::chrono::steady_clock::now() - started;
     if (used.count() <= max_wall_time_s) return false;
     std::ostringstream s;
-    s << "wall-clock limit exceeded: more than " << max_wall_time_s << " s (max_wall_time_s)";
-    pending = std::make_exception_ptr(IntegrationFailure(s.str()));
+    s << "wall-clock limit exceeded: more than " << max_wall_time_s
+      << " s (max_wall_time_s; load-dependent: a busier machine fails more drops)";
+    pending = std::make_exception_ptr(LimitExceeded(s.str(), "max_wall_time_s", max_wall_time_s));
+    return true;
+  }
+
+  // True (and the failure pending) once the right-hand-side budget is spent; counts this call.
+  bool OutOfEvaluations() {
+    if (max_rhs_evaluations <= 0 || ++rhs_calls <= max_rhs_evaluations) return false;
+    std::ostringstream s;
+    s << "evaluation limit exceeded: more than " << max_rhs_evaluations
+      << " right-hand-side evaluations (max_rhs_evaluations)";
+    pending = std::make_exception_ptr(
+        LimitExceeded(s.str(), "max_rhs_evaluations", static_cast<double>(max_rhs_evaluations)));
     return true;
   }
 
@@ -73,7 +88,7 @@ struct CvodeIntegrator::Impl {
   static int Rhs(realtype t, N_Vector y, N_Vector ydot, void* user) {
     auto* self = static_cast<Impl*>(user);
     try {
-      if (self->OutOfTime()) return -1;
+      if (self->OutOfEvaluations() || self->OutOfTime()) return -1;
       Eigen::Map<const Eigen::VectorXd> ym(N_VGetArrayPointer(y), self->n);
       Eigen::Map<Eigen::VectorXd> dm(N_VGetArrayPointer(ydot), self->n);
       self->rhs(t, ym, dm);
@@ -133,6 +148,7 @@ CvodeIntegrator::CvodeIntegrator(int state_size, RhsFunction rhs, const Integrat
   m.rhs = std::move(rhs);
   m.roots = std::move(roots);
   m.max_wall_time_s = options.max_wall_time_s;
+  m.max_rhs_evaluations = options.max_rhs_evaluations;
   m.started = std::chrono::steady_clock::now();
   if (SUNContext_Create(nullptr, &m.context) != 0) throw IntegrationFailure("SUNContext_Create failed");
   m.y = N_VNew_Serial(state_size, m.context);

@@ -34,6 +34,11 @@ struct IntegratorOptions {
   // stiff or chattering model cannot hang a sweep: the advance then fails with an
   // IntegrationFailure saying the limit was exceeded.
   double max_wall_time_s = 0.0;
+  // Right-hand-side evaluations [count] for the integrator's whole life (every Reset included,
+  // difference-quotient Jacobians too); 0 = none. The deterministic budget: unlike the
+  // wall-clock one it gives the same outcome on any machine under any load, so a sweep's
+  // results never depend on load. Exceeding it fails the advance with a LimitExceeded.
+  long max_rhs_evaluations = 0;
   // Absolute tolerance per state component (its size must be the state size); empty: `atol` for
   // all. A model whose states have different scales (metres, radians per second, joules) needs
   // one: a state that stays near zero by symmetry is otherwise resolved to `atol` in its own unit.
@@ -77,6 +82,21 @@ struct IntegratorSummary {
 class IntegrationFailure : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
+};
+
+// An IntegrationFailure because a work budget ran out, not because the model failed: which
+// budget (`limit`: "max_rhs_evaluations" or "max_wall_time_s") and its value, so a caller can
+// retry with a larger one.
+class LimitExceeded : public IntegrationFailure {
+ public:
+  LimitExceeded(const std::string& message, std::string limit, double value)
+      : IntegrationFailure(message), limit_(std::move(limit)), value_(value) {}
+  const std::string& limit() const { return limit_; }
+  double value() const { return value_; }
+
+ private:
+  std::string limit_;
+  double value_;
 };
 
 class CvodeIntegrator {

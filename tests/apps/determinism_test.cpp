@@ -184,5 +184,40 @@ TEST(Determinism, SweepIsBitIdenticalForThreadsShardsAndMerge) {
   ExpectSameTree(box.dir() / "t1_dataset", box.dir() / "merged_dataset");
 }
 
+// Issue 13 section 6: the default per-drop limit counts right-hand-side evaluations, not seconds,
+// so which drops run out of it is the same at 1 and 2 threads, in shards, under any load.
+TEST(Determinism, EvaluationLimitFailsTheSameDropsAtAnyThreadCount) {
+  Sandbox box("determinism_limit");
+  box.Write("sweep.yaml", R"(schema_version: 1
+type: sweep
+name: limit
+traces: decimated
+trace_max_samples: 8
+fixed: {pad: hex, soil: fjs1_lp}
+grid:
+  tilt_deg: [0, 3]
+  impact_speed_m_s: {from: 0.4, to: 1.6, count: 6}
+)");
+  auto run = [&](const std::string& extra) {
+    const CliRun r = box.Touchdown("sweep sweep.yaml --progress none --max-drop-evaluations 700 " + extra);
+    EXPECT_EQ(r.status, 0) << extra << ": " << r.err;
+  };
+  run("--out t1 --threads 1");
+  run("--out t2 --threads 2");
+  run("--out s0 --shard 0/2 --threads 2");
+  run("--out s1 --shard 1/2 --threads 1");
+  const CliRun m = box.Touchdown("merge s0 s1 --out merged");
+  ASSERT_EQ(m.status, 0) << m.err;
+  ExpectSameDb(box.dir() / "t1", box.dir() / "t2");
+  ExpectSameDb(box.dir() / "t1", box.dir() / "merged");
+  const std::vector<std::string> rows = Dump(box.dir() / "t1" / "results.sqlite", "drops", "drop_index");
+  ASSERT_EQ(rows.size(), 12u);
+  const auto failed = std::count_if(rows.begin(), rows.end(), [](const std::string& r) {
+    return r.find("failure_limit=bmax_rhs_evaluations") != std::string::npos;
+  });
+  EXPECT_GT(failed, 0);
+  EXPECT_LT(failed, 12);
+}
+
 }  // namespace
 }  // namespace touchdown::testing_cli

@@ -348,6 +348,17 @@ std::vector<Case> Cases() {
                  {{"plot_lander.yaml", Lander("lander: sutoh2017_lander\n" + kLanderGround +
                                              "initial: {touchdown_speed_m_s: 1.0}\nsimulation: {duration_s: 0.03}\n")}}});
   }
+  // Issue 13 section 6 (sweeps): the deterministic per-drop evaluation limit.
+  {
+    const std::string run = " --threads 1 --progress lines --out ";
+    const std::string body = Sweep(kSweepBase + "grid: {impact_speed_m_s: [0.7, 1.5]}\n");
+    c.push_back({"sweep YAML", "--max-drop-evaluations 50: every drop over its limit",
+                 "sweep evals.yaml --max-drop-evaluations 50" + run + "out_s6_1", {{"evals.yaml", body}}});
+    c.push_back({"sweep YAML", "--max-drop-evaluations 2.5", "sweep evals.yaml --max-drop-evaluations 2.5" + run +
+                 "out_s6_2", {{"evals.yaml", body}}});
+    c.push_back({"sweep YAML", "max_drop_evaluations: -1", "sweep evals.yaml" + run + "out_s6_3",
+                 {{"evals.yaml", Sweep("max_drop_evaluations: -1\n" + kSweepBase + "grid: {impact_speed_m_s: [1]}\n")}}});
+  }
   return c;
 }
 

@@ -475,7 +475,8 @@ TEST_F(Sweep, DropOverItsWallClockLimitIsRecordedAsFailedWithTheReason) {
   const std::string body = "schema_version: 1\ntype: sweep\nfixed: {pad: flat, soil: fjs1_lp}\n"
                            "grid: {impact_speed_m_s: [0.7, 1.5]}\n";
   SweepPlan plan = LoadSweepPlan(Write("s.yaml", body));
-  EXPECT_EQ(plan.rig.integrator.max_wall_time_s, 60.0);  // the default
+  EXPECT_EQ(plan.rig.integrator.max_wall_time_s, 0.0);  // the default: none (opt-in, load-dependent)
+  EXPECT_EQ(plan.rig.integrator.max_rhs_evaluations, kDefaultMaxDropEvaluations);
   EXPECT_EQ(LoadSweepPlan(Write("none.yaml", "max_drop_wall_time_s: 0\n" + body)).rig.integrator.max_wall_time_s, 0.0);
   EXPECT_THROW(LoadSweepPlan(Write("neg.yaml", "max_drop_wall_time_s: -1\n" + body)), InputError);
   // The limit decides whether a drop finishes, never what it computes: not in the digest.
@@ -494,6 +495,14 @@ TEST_F(Sweep, DropOverItsWallClockLimitIsRecordedAsFailedWithTheReason) {
   ASSERT_EQ(cli.status, 0) << cli.err;
   EXPECT_NE(cli.out.find("2 failed"), std::string::npos) << cli.out;
   EXPECT_NE(cli.err.find("failed: wall-clock limit exceeded"), std::string::npos) << cli.err;
+  // Recorded as load-dependent: in the meta table and in each failed drop's reason and limit.
+  const ResultsDb db(ResultsDbPath((dir_ / "cli").string()));
+  EXPECT_EQ(db.Meta().at("load_dependent_failures").rfind("yes", 0), 0u) << db.Meta().at("load_dependent_failures");
+  for (const DropRecord& r : db.ReadAll(false)) {
+    EXPECT_EQ(r.failure_limit, "max_wall_time_s");
+    EXPECT_EQ(r.failure_limit_value, 1e-9);
+    EXPECT_NE(r.failure.find("load-dependent"), std::string::npos) << r.failure;
+  }
 }
 
 }  // namespace

@@ -128,6 +128,42 @@ TEST(CvodeIntegrator, WallClockLimitIsCheckedInRootFunctionsToo) {
   }
 }
 
+// Issue 13 section 6: the deterministic work limit. It counts every right-hand side over the
+// integrator's life (across Resets, whose CVODE counters restart), so the same model fails at
+// the same evaluation on any machine; the failure names the limit and its value.
+TEST(CvodeIntegrator, EvaluationLimitFailsAtTheSameEvaluationAcrossResets) {
+  IntegratorOptions options;
+  EXPECT_EQ(options.max_rhs_evaluations, 0);  // none by default
+  options.max_rhs_evaluations = 300;
+  options.max_step = 1e-2;
+  long calls = 0;
+  auto run = [&] {
+    calls = 0;
+    CvodeIntegrator integ(1, [&](double, Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::VectorXd> d) {
+      ++calls;
+      d[0] = std::cos(y[0]);
+    }, options);
+    for (int k = 0;; ++k) {  // restarts every 0.5 s: the budget is not renewed
+      integ.Reset(0.5 * k, Eigen::VectorXd::Zero(1));
+      integ.AdvanceTo(0.5 * (k + 1));
+    }
+  };
+  for (int attempt = 0; attempt < 2; ++attempt) {
+    try {
+      run();
+      FAIL() << "expected LimitExceeded";
+    } catch (const LimitExceeded& e) {
+      EXPECT_EQ(e.limit(), "max_rhs_evaluations");
+      EXPECT_EQ(e.value(), 300.0);
+      EXPECT_NE(std::string(e.what()).find("more than 300 right-hand-side evaluations"), std::string::npos) << e.what();
+      EXPECT_EQ(calls, 300);  // the 301st evaluation is refused before the model runs
+    }
+  }
+  options.max_rhs_evaluations = -1;
+  std::string why;
+  EXPECT_FALSE(options.IsValid(&why));
+}
+
 TEST(CvodeIntegrator, NoWallClockLimitByDefault) {
   IntegratorOptions options;
   EXPECT_EQ(options.max_wall_time_s, 0.0);
