@@ -1,6 +1,5 @@
 #include "drop_tests/calibrate.h"
 
-#include <boost/math/distributions/students_t.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -9,6 +8,7 @@
 #include <memory>
 
 #include "drop_tests/catalog.h"
+#include "drop_tests/student_t.h"
 #include "footpad_geom/axisymmetric_intrusion.h"
 #include "rft/contact_wrench.h"
 #include "rft/ground.h"
@@ -117,8 +117,7 @@ ZetaFit FitZeta(const std::vector<StrokeSamples>& drops, double confidence) {
     fit.method = "least squares of force on the quasi-static RFT force per unit zeta over the loading stroke; "
                  "i.i.d. standard error (one drop), Student t with samples - 1 dof";
   }
-  const boost::math::students_t t(fit.degrees_of_freedom);
-  const double q = boost::math::quantile(t, 0.5 + confidence / 2.0);
+  const double q = StudentTTwoSided(confidence, fit.degrees_of_freedom);
   fit.low_N_m3 = fit.zeta_N_m3 - q * fit.standard_error_N_m3;
   fit.high_N_m3 = fit.zeta_N_m3 + q * fit.standard_error_N_m3;
   return fit;
