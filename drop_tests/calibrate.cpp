@@ -176,7 +176,8 @@ std::vector<ZetaFit> CalibrateZeta(const Dataset& measured, const CalibrationOpt
 ModelFile CalibrationModel(const std::vector<ZetaFit>& fits, const Dataset& measured, const std::string& name) {
   ModelFile m;
   m.name = name;
-  m.description = "zeta calibrated by touchdown calibrate on " + fs::absolute(measured.directory).string();
+  m.description = "zeta calibrated by touchdown calibrate on the dataset " +
+                  fs::path(measured.directory).lexically_normal().filename().string() + " (each soil's fit.dataset)";
   for (const ZetaFit& f : fits)
     for (size_t k = 0; k < f.soils.size(); ++k) {
       const std::string& soil_name = f.soils[k];
@@ -186,7 +187,7 @@ ModelFile CalibrationModel(const std::vector<ZetaFit>& fits, const Dataset& meas
       o.confidence = f.confidence;
       o.zeta_low_N_m3 = f.low_N_m3;
       o.zeta_high_N_m3 = f.high_N_m3;
-      SoilFit fit{f.method, f.drops, f.samples, f.residual_rms_N, fs::absolute(measured.directory).string()};
+      SoilFit fit{f.method, f.drops, f.samples, f.residual_rms_N, measured.directory};
       o.fit = fit;
       m.soils[soil_name] = o;
     }

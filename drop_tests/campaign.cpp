@@ -11,6 +11,7 @@
 
 #include "drop_tests/atomic_file.h"
 #include "drop_tests/campaign_plots.h"
+#include "drop_tests/output_paths.h"
 #include "drop_tests/yaml_fields.h"
 #include "rft/input_error.h"
 
@@ -106,17 +107,17 @@ CampaignScenario LoadCampaignScenario(const std::string& path) {
   return s;
 }
 
-void WriteResolvedScenario(const CampaignScenario& s, const std::string& path) {
+void WriteResolvedScenario(const CampaignScenario& s, const std::string& path, const std::string& output_dir) {
   YAML::Emitter y;
   y << YAML::BeginMap << YAML::Key << "schema_version" << YAML::Value << 1 << YAML::Key << "type" << YAML::Value
     << "campaign_resolved" << YAML::Key << "name" << YAML::Value << s.name << YAML::Key << "source" << YAML::Value
-    << s.source << YAML::Key << "reference_speed_m_s" << YAML::Value << s.reference_speed_m_s << YAML::Key << "drops"
+    << PathForOutput(s.source, output_dir) << YAML::Key << "reference_speed_m_s" << YAML::Value << s.reference_speed_m_s << YAML::Key << "drops"
     << YAML::Value << YAML::BeginSeq;
   for (const CampaignCase& c : s.cases) {
     const rft::SoilParameters& soil = c.soil;
     y << YAML::BeginMap << YAML::Key << "drop_id" << YAML::Value << c.drop_id;
     y << YAML::Key << "pad" << YAML::Value << YAML::BeginMap << YAML::Key << "name" << YAML::Value << c.pad.name
-      << YAML::Key << "file" << YAML::Value << c.pad.source << YAML::Key << "mass_kg" << YAML::Value << c.pad.mass_kg
+      << YAML::Key << "file" << YAML::Value << PathForOutput(c.pad.source, output_dir) << YAML::Key << "mass_kg" << YAML::Value << c.pad.mass_kg
       << YAML::Key << "radius_mm" << YAML::Value << c.pad.profile.radius_m() * 1e3 << YAML::Key << "thickness_mm"
       << YAML::Value << c.pad.profile.thickness_m() * 1e3 << YAML::Key << "profile_points" << YAML::Value
       << c.pad.profile.points.size() << YAML::EndMap;
@@ -191,7 +192,7 @@ void WriteCampaignOutputs(const CampaignResult& r, const std::string& out_dir) {
     }
     const nlohmann::json summary{{"scenario", r.scenario.name}, {"drops", drops}, {"paper_checks", checks}};
     WriteFileAtomically((staging / "summary.json").string(), [&](std::ostream& out) { out << summary.dump(2) << '\n'; });
-    WriteResolvedScenario(r.scenario, (staging / "scenario_resolved.yaml").string());
+    WriteResolvedScenario(r.scenario, (staging / "scenario_resolved.yaml").string(), out_dir);
     WriteCampaignPlots(r, staging.string());
   });
 }

@@ -51,8 +51,10 @@ struct CheckOutcome {
 CampaignScenario LoadCampaignScenario(const std::string& path);
 CampaignResult RunCampaign(const CampaignScenario& scenario);
 std::vector<CheckOutcome> EvaluateChecks(const CampaignResult& result);
-// Every case with its pad, soil and numbers as they were run (house style: resolved config).
-void WriteResolvedScenario(const CampaignScenario& scenario, const std::string& path);
+// Every case with its pad, soil and numbers as they were run (house style: resolved config). The
+// files named are written for `output_dir`, the directory the file finally lives in
+// (drop_tests/output_paths.h: no absolute paths of this machine).
+void WriteResolvedScenario(const CampaignScenario& scenario, const std::string& path, const std::string& output_dir);
 // Writes summary.csv, summary.json, traces/, plots/ and scenario_resolved.yaml into a fresh
 // directory that appears at `out_dir` only when complete (replacing an older one).
 void WriteCampaignOutputs(const CampaignResult& result, const std::string& out_dir);

@@ -107,7 +107,10 @@ LanderRun RunLanderScenario(const LanderScenario& scenario);
 // The JSON summary `touchdown lander` prints (pads in the paper's clockwise order).
 nlohmann::json LanderSummaryJson(const LanderRun& run);
 void WriteLanderTraceCsv(const LanderRun& run, const std::string& path);
-void WriteResolvedLanderScenario(const LanderScenario& scenario, const std::string& path);
+// The files named are written for `output_dir`, the directory the file finally lives in
+// (drop_tests/output_paths.h: no absolute paths of this machine).
+void WriteResolvedLanderScenario(const LanderScenario& scenario, const std::string& path,
+                                 const std::string& output_dir);
 // summary.json, trace.csv, events.csv, scenario_resolved.yaml and plots/ into a staging
 // directory renamed to out_dir when complete.
 void WriteLanderOutputs(const LanderRun& run, const std::string& out_dir);

@@ -46,7 +46,7 @@ struct SoilFit {
   int drops = 0;
   long samples = 0;
   double residual_rms_N = 0.0;
-  std::string dataset;
+  std::string dataset;  // the dataset directory as the run reached it; written relative to the model file
 };
 
 struct SoilOverride {
@@ -70,7 +70,9 @@ struct ModelFile {
 };
 
 ModelFile LoadModelFile(const std::string& path);
-void WriteModelFile(const ModelFile& model, const std::string& path);
+// Paths in it (a fit's dataset) are written for `output_dir`, the directory the file finally lives
+// in (default: the directory of `path`; drop_tests/output_paths.h).
+void WriteModelFile(const ModelFile& model, const std::string& path, const std::string& output_dir = "");
 // The soil as the model sees it: its zeta replaced when the model has an override (converted to
 // the soil's own reference gravity). Effect terms are not part of the soil: see ModelEffectTerms.
 rft::SoilParameters ApplyModel(const ModelFile& model, const rft::SoilParameters& soil);
