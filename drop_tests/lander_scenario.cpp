@@ -254,8 +254,13 @@ LanderScenario LoadLanderScenario(const std::string& path) {
       sim.Fail("duration_s", "must be at most 600 s, got " + FormatNumber(s.options.duration_s));
     if (s.options.sample_rate_hz > 1e6)
       sim.Fail("sample_rate_hz", "must be at most 1e6 Hz, got " + FormatNumber(s.options.sample_rate_hz));
-    if (s.options.duration_s * s.options.sample_rate_hz > 1e7)
-      sim.Fail("sample_rate_hz", "duration_s x sample_rate_hz must be at most 1e7 trace samples");
+    // The whole trace is held in memory until it is written (about 0.4 kB a sample, plus the plots'
+    // copy): 1e6 samples keep a run under about 1 GB (1e7 needed over 4 GB).
+    if (s.options.duration_s * s.options.sample_rate_hz > kLanderMaxTraceSamples)
+      sim.Fail("sample_rate_hz", "duration_s x sample_rate_hz is " +
+                                     FormatNumber(s.options.duration_s * s.options.sample_rate_hz) +
+                                     " trace samples, at most " + FormatNumber(kLanderMaxTraceSamples) +
+                                     " (lower the rate or the duration)");
     if (sim.Has("capture_speed_m_s")) s.options.capture_speed_m_s = sim.NonNegative("capture_speed_m_s");
     if (sim.Has("rtol")) s.options.integrator.rtol = sim.Positive("rtol");
     if (sim.Has("atol")) {

@@ -19,6 +19,10 @@
 
 namespace touchdown::drop {
 
+// A lander run keeps its trace in memory (lander::LanderSample, about 0.4 kB each): duration_s x
+// sample_rate_hz is capped at load.
+inline constexpr double kLanderMaxTraceSamples = 1e6;
+
 struct LanderLegSpec {
   Eigen::Vector3d hip_B = Eigen::Vector3d::Zero();
   Eigen::Vector3d joint_B = Eigen::Vector3d::Zero();
