@@ -16,8 +16,7 @@ void AddCampaignCommand(CLI::App& app) {
   cmd->add_option("--out", *out_dir, "output directory (replaced when the run completes)")->required();
   cmd->callback([scenario_path, out_dir] {
     const drop::CampaignScenario scenario = drop::LoadCampaignScenario(*scenario_path);
-    const drop::CampaignResult result = drop::RunCampaign(scenario);
-    drop::WriteCampaignOutputs(result, *out_dir);
+    const drop::CampaignResult result = drop::RunCampaignToDirectory(scenario, *out_dir);  // traces streamed
     std::cout << std::left << std::setw(28) << "drop" << std::right << std::setw(12) << "depth [mm]" << std::setw(14)
               << "peak F [N]" << std::setw(14) << "t_rest [ms]" << "\n";
     for (size_t i = 0; i < result.drops.size(); ++i) {
