@@ -19,8 +19,7 @@ void AddCampaignCommand(CLI::App& app) {
     const drop::OutputTarget out(*out_dir, {*scenario_path});
     drop::CheckOutputDirectory(out, drop::OutputKind::kCampaign);
     const drop::CampaignScenario scenario = drop::LoadCampaignScenario(*scenario_path);
-    const drop::CampaignResult result = drop::RunCampaign(scenario);
-    drop::WriteCampaignOutputs(result, out);
+    const drop::CampaignResult result = drop::RunCampaignToDirectory(scenario, out);  // traces streamed
     std::cout << std::left << std::setw(28) << "drop" << std::right << std::setw(12) << "depth [mm]" << std::setw(14)
               << "peak F [N]" << std::setw(14) << "t_rest [ms]" << "\n";
     for (size_t i = 0; i < result.drops.size(); ++i) {

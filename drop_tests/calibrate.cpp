@@ -1,6 +1,5 @@
 #include "drop_tests/calibrate.h"
 
-#include <boost/math/distributions/students_t.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -9,6 +8,7 @@
 #include <memory>
 
 #include "drop_tests/catalog.h"
+#include "drop_tests/student_t.h"
 #include "footpad_geom/axisymmetric_intrusion.h"
 #include "rft/contact_wrench.h"
 #include "rft/ground.h"
@@ -117,8 +117,7 @@ ZetaFit FitZeta(const std::vector<StrokeSamples>& drops, double confidence) {
     fit.method = "least squares of force on the quasi-static RFT force per unit zeta over the loading stroke; "
                  "i.i.d. standard error (one drop), Student t with samples - 1 dof";
   }
-  const boost::math::students_t t(fit.degrees_of_freedom);
-  const double q = boost::math::quantile(t, 0.5 + confidence / 2.0);
+  const double q = StudentTTwoSided(confidence, fit.degrees_of_freedom);
   fit.low_N_m3 = fit.zeta_N_m3 - q * fit.standard_error_N_m3;
   fit.high_N_m3 = fit.zeta_N_m3 + q * fit.standard_error_N_m3;
   return fit;
@@ -177,7 +176,8 @@ std::vector<ZetaFit> CalibrateZeta(const Dataset& measured, const CalibrationOpt
 ModelFile CalibrationModel(const std::vector<ZetaFit>& fits, const Dataset& measured, const std::string& name) {
   ModelFile m;
   m.name = name;
-  m.description = "zeta calibrated by touchdown calibrate on " + fs::absolute(measured.directory).string();
+  m.description = "zeta calibrated by touchdown calibrate on the dataset " +
+                  fs::path(measured.directory).lexically_normal().filename().string() + " (each soil's fit.dataset)";
   for (const ZetaFit& f : fits)
     for (size_t k = 0; k < f.soils.size(); ++k) {
       const std::string& soil_name = f.soils[k];
@@ -187,7 +187,7 @@ ModelFile CalibrationModel(const std::vector<ZetaFit>& fits, const Dataset& meas
       o.confidence = f.confidence;
       o.zeta_low_N_m3 = f.low_N_m3;
       o.zeta_high_N_m3 = f.high_N_m3;
-      SoilFit fit{f.method, f.drops, f.samples, f.residual_rms_N, fs::absolute(measured.directory).string()};
+      SoilFit fit{f.method, f.drops, f.samples, f.residual_rms_N, measured.directory};
       o.fit = fit;
       m.soils[soil_name] = o;
     }

@@ -5,12 +5,15 @@
 #include <filesystem>
 #include <iomanip>
 #include <map>
+#include <memory>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
 #include <unistd.h>
 
 #include "drop_tests/output_path.h"
 #include "drop_tests/campaign_plots.h"
+#include "drop_tests/paths_in_outputs.h"
 #include "drop_tests/yaml_fields.h"
 #include "rft/input_error.h"
 
@@ -83,20 +86,21 @@ CampaignScenario LoadCampaignScenario(const std::string& path) {
   s.name = f.StringOr("name", fs::path(path).stem().string());
   s.description = f.StringOr("description", "");
   const double gravity = f.PositiveOr("gravity_m_s2", 9.81);
-  std::map<std::string, PadSpec> pads;
+  std::map<std::string, std::shared_ptr<const PadSpec>> pads;
   std::map<std::string, rft::SoilParameters> soils;
+  std::set<std::string> ids;
+  auto load_pad = [](const std::string& name) { return std::make_shared<const PadSpec>(LoadPad(name)); };
   for (const YamlFields& entry : f.List("drops")) {
     entry.RequireOnly({"pad", "soil", "impact_speeds_m_s", "mass_kg", "zeta_N_cm3", "gravity_m_s2"});
-    const PadSpec& pad = Cached(pads, entry.String("pad"), entry, "pad", LoadPad);
+    const std::shared_ptr<const PadSpec>& pad = Cached(pads, entry.String("pad"), entry, "pad", load_pad);
     const rft::SoilParameters& soil = Cached(soils, entry.String("soil"), entry, "soil", LoadSoil);
     for (double v : entry.NumberList("impact_speeds_m_s", /*allow_zero=*/true)) {
-      CampaignCase c{pad.name + "_" + soil.name + "_v" + SpeedTag(v), pad, soil, {}};
+      CampaignCase c{pad->name + "_" + soil.name + "_v" + SpeedTag(v), pad, soil, {}};
       c.conditions.impact_speed_m_s = v;
       c.conditions.gravity_m_s2 = entry.PositiveOr("gravity_m_s2", gravity);
       if (entry.Has("mass_kg")) c.conditions.mass_kg = entry.Positive("mass_kg");
       if (entry.Has("zeta_N_cm3")) c.conditions.zeta_N_m3 = entry.Positive("zeta_N_cm3") * 1e6;
-      for (const CampaignCase& other : s.cases)
-        if (other.drop_id == c.drop_id) entry.Fail("impact_speeds_m_s", "drop " + c.drop_id + " is listed twice");
+      if (!ids.insert(c.drop_id).second) entry.Fail("impact_speeds_m_s", "drop " + c.drop_id + " is listed twice");
       s.cases.push_back(std::move(c));
     }
   }
@@ -106,26 +110,27 @@ CampaignScenario LoadCampaignScenario(const std::string& path) {
   return s;
 }
 
-void WriteResolvedScenario(const CampaignScenario& s, const std::string& path) {
+void WriteResolvedScenario(const CampaignScenario& s, const std::string& path, const std::string& output_dir) {
   YAML::Emitter y;
   y << YAML::BeginMap << YAML::Key << "schema_version" << YAML::Value << 1 << YAML::Key << "type" << YAML::Value
     << "campaign_resolved" << YAML::Key << "name" << YAML::Value << s.name << YAML::Key << "source" << YAML::Value
-    << s.source << YAML::Key << "reference_speed_m_s" << YAML::Value << s.reference_speed_m_s << YAML::Key << "drops"
+    << PathForOutput(s.source, output_dir) << YAML::Key << "reference_speed_m_s" << YAML::Value << s.reference_speed_m_s << YAML::Key << "drops"
     << YAML::Value << YAML::BeginSeq;
   for (const CampaignCase& c : s.cases) {
     const rft::SoilParameters& soil = c.soil;
     y << YAML::BeginMap << YAML::Key << "drop_id" << YAML::Value << c.drop_id;
-    y << YAML::Key << "pad" << YAML::Value << YAML::BeginMap << YAML::Key << "name" << YAML::Value << c.pad.name
-      << YAML::Key << "file" << YAML::Value << c.pad.source << YAML::Key << "mass_kg" << YAML::Value << c.pad.mass_kg
-      << YAML::Key << "radius_mm" << YAML::Value << c.pad.profile.radius_m() * 1e3 << YAML::Key << "thickness_mm"
-      << YAML::Value << c.pad.profile.thickness_m() * 1e3 << YAML::Key << "profile_points" << YAML::Value
-      << c.pad.profile.points.size() << YAML::EndMap;
+    const PadSpec& pad = *c.pad;
+    y << YAML::Key << "pad" << YAML::Value << YAML::BeginMap << YAML::Key << "name" << YAML::Value << pad.name
+      << YAML::Key << "file" << YAML::Value << PathForOutput(pad.source, output_dir) << YAML::Key << "mass_kg"
+      << YAML::Value << pad.mass_kg << YAML::Key << "radius_mm" << YAML::Value << pad.profile.radius_m() * 1e3
+      << YAML::Key << "thickness_mm" << YAML::Value << pad.profile.thickness_m() * 1e3 << YAML::Key
+      << "profile_points" << YAML::Value << pad.profile.points.size() << YAML::EndMap;
     y << YAML::Key << "soil" << YAML::Value << YAML::BeginMap << YAML::Key << "name" << YAML::Value << soil.name
       << YAML::Key << "atmosphere" << YAML::Value << soil.atmosphere << YAML::Key << "zeta_N_cm3" << YAML::Value
       << soil.zeta_N_m3 / 1e6 << YAML::Key << "reference_gravity_m_s2" << YAML::Value << soil.reference_gravity_m_s2
       << YAML::EndMap;
     y << YAML::Key << "impact_speed_m_s" << YAML::Value << c.conditions.impact_speed_m_s << YAML::Key << "mass_kg"
-      << YAML::Value << c.conditions.mass_kg.value_or(c.pad.mass_kg) << YAML::Key << "gravity_m_s2" << YAML::Value
+      << YAML::Value << c.conditions.mass_kg.value_or(pad.mass_kg) << YAML::Key << "gravity_m_s2" << YAML::Value
       << c.conditions.gravity_m_s2;
     if (c.conditions.zeta_N_m3) y << YAML::Key << "zeta_override_N_cm3" << YAML::Value << *c.conditions.zeta_N_m3 / 1e6;
     y << YAML::EndMap;
@@ -136,7 +141,7 @@ void WriteResolvedScenario(const CampaignScenario& s, const std::string& path) {
 
 CampaignResult RunCampaign(const CampaignScenario& scenario) {
   CampaignResult result{scenario, {}};
-  for (const CampaignCase& c : scenario.cases) result.drops.push_back(RunPadDrop(c.pad, c.soil, c.conditions));
+  for (const CampaignCase& c : scenario.cases) result.drops.push_back(RunPadDrop(*c.pad, c.soil, c.conditions));
   return result;
 }
 
@@ -152,48 +157,79 @@ std::vector<CheckOutcome> EvaluateChecks(const CampaignResult& r) {
   return out;
 }
 
+namespace {
+// Everything but the traces (traces/ already written): summary.csv and .json, the resolved
+// scenario and the plots, from the drops' summaries.
+void WriteCampaignSummaries(const CampaignResult& r, const fs::path& staging, const std::string& out_dir) {
+  nlohmann::json drops = nlohmann::json::array();
+  for (size_t i = 0; i < r.drops.size(); ++i) {
+    const std::string id = r.scenario.cases[i].drop_id;
+    nlohmann::json j = SummaryJson(r.drops[i]);
+    j["drop_id"] = id;
+    j["trace"] = "traces/" + id + ".csv";
+    drops.push_back(j);
+  }
+  // summary.csv uses the dataset column names, so a campaign reads as a simulated dataset.
+  WriteFileAtomically((staging / "summary.csv").string(), [&](std::ostream& out) {
+    out << "drop_id,pad,soil,atmosphere,impact_speed_m_s,pad_mass_kg,gravity_m_s2,trace,final_penetration_m,"
+           "peak_force_N,time_to_rest_s,max_deceleration_m_s2,impact_energy_J,dissipated_energy_J,"
+           "mean_conversion_rate_W,zeta_N_cm3\n"
+        << std::setprecision(10);
+    for (const auto& j : drops)
+      out << j["drop_id"].get<std::string>() << ',' << j["pad"].get<std::string>() << ','
+          << j["soil"].get<std::string>() << ',' << j["atmosphere"].get<std::string>() << ','
+          << j["impact_speed_m_s"].get<double>() << ',' << j["pad_mass_kg"].get<double>() << ','
+          << j["gravity_m_s2"].get<double>() << ',' << j["trace"].get<std::string>() << ','
+          << j["final_penetration_m"].get<double>() << ',' << j["peak_force_N"].get<double>() << ','
+          << j["time_to_rest_s"].get<double>() << ',' << j["max_deceleration_m_s2"].get<double>() << ','
+          << j["impact_energy_J"].get<double>() << ',' << j["dissipated_energy_J"].get<double>() << ','
+          << j["mean_conversion_rate_W"].get<double>() << ',' << j["zeta_N_cm3"].get<double>() << '\n';
+  });
+  nlohmann::json checks = nlohmann::json::array();
+  for (const CheckOutcome& c : EvaluateChecks(r)) {
+    nlohmann::json j{{"name", c.check.name}, {"quantity", c.check.quantity}, {"speed_m_s", c.check.speed_m_s},
+                     {"simulated", c.simulated}, {"source", c.check.source}};
+    if (c.check.paper_experiment > 0) j["paper_experiment"] = c.check.paper_experiment;
+    if (c.check.paper_rft > 0) j["paper_rft"] = c.check.paper_rft;
+    checks.push_back(j);
+  }
+  const nlohmann::json summary{{"scenario", r.scenario.name}, {"drops", drops}, {"paper_checks", checks}};
+  WriteFileAtomically((staging / "summary.json").string(), [&](std::ostream& out) { out << summary.dump(2) << '\n'; });
+  WriteResolvedScenario(r.scenario, (staging / "scenario_resolved.yaml").string(), out_dir);
+  WriteCampaignPlots(r, staging.string());
+}
+
+std::string TracePath(const fs::path& staging, const CampaignCase& c) {
+  return (staging / "traces" / (c.drop_id + ".csv")).string();
+}
+}  // namespace
+
 void WriteCampaignOutputs(const CampaignResult& r, const OutputTarget& out) {
   WriteOutputDirectory(out, OutputKind::kCampaign, [&](const std::string& staging_dir) {
     const fs::path staging = staging_dir;
     fs::create_directories(staging / "traces");
-    nlohmann::json drops = nlohmann::json::array();
-    for (size_t i = 0; i < r.drops.size(); ++i) {
-      const std::string id = r.scenario.cases[i].drop_id;
-      WriteTraceCsv(r.drops[i].result, (staging / "traces" / (id + ".csv")).string());
-      nlohmann::json j = SummaryJson(r.drops[i]);
-      j["drop_id"] = id;
-      j["trace"] = "traces/" + id + ".csv";
-      drops.push_back(j);
-    }
-    // summary.csv uses the dataset column names, so a campaign reads as a simulated dataset.
-    WriteFileAtomically((staging / "summary.csv").string(), [&](std::ostream& out) {
-      out << "drop_id,pad,soil,atmosphere,impact_speed_m_s,pad_mass_kg,gravity_m_s2,trace,final_penetration_m,"
-             "peak_force_N,time_to_rest_s,max_deceleration_m_s2,impact_energy_J,dissipated_energy_J,"
-             "mean_conversion_rate_W,zeta_N_cm3\n"
-          << std::setprecision(10);
-      for (const auto& j : drops)
-        out << j["drop_id"].get<std::string>() << ',' << j["pad"].get<std::string>() << ','
-            << j["soil"].get<std::string>() << ',' << j["atmosphere"].get<std::string>() << ','
-            << j["impact_speed_m_s"].get<double>() << ',' << j["pad_mass_kg"].get<double>() << ','
-            << j["gravity_m_s2"].get<double>() << ',' << j["trace"].get<std::string>() << ','
-            << j["final_penetration_m"].get<double>() << ',' << j["peak_force_N"].get<double>() << ','
-            << j["time_to_rest_s"].get<double>() << ',' << j["max_deceleration_m_s2"].get<double>() << ','
-            << j["impact_energy_J"].get<double>() << ',' << j["dissipated_energy_J"].get<double>() << ','
-            << j["mean_conversion_rate_W"].get<double>() << ',' << j["zeta_N_cm3"].get<double>() << '\n';
-    });
-    nlohmann::json checks = nlohmann::json::array();
-    for (const CheckOutcome& c : EvaluateChecks(r)) {
-      nlohmann::json j{{"name", c.check.name}, {"quantity", c.check.quantity}, {"speed_m_s", c.check.speed_m_s},
-                       {"simulated", c.simulated}, {"source", c.check.source}};
-      if (c.check.paper_experiment > 0) j["paper_experiment"] = c.check.paper_experiment;
-      if (c.check.paper_rft > 0) j["paper_rft"] = c.check.paper_rft;
-      checks.push_back(j);
-    }
-    const nlohmann::json summary{{"scenario", r.scenario.name}, {"drops", drops}, {"paper_checks", checks}};
-    WriteFileAtomically((staging / "summary.json").string(), [&](std::ostream& out) { out << summary.dump(2) << '\n'; });
-    WriteResolvedScenario(r.scenario, (staging / "scenario_resolved.yaml").string());
-    WriteCampaignPlots(r, staging.string());
+    for (size_t i = 0; i < r.drops.size(); ++i) WriteTraceCsv(r.drops[i].result, TracePath(staging, r.scenario.cases[i]));
+    WriteCampaignSummaries(r, staging, out.path);
   });
+}
+
+CampaignResult RunCampaignToDirectory(const CampaignScenario& scenario, const OutputTarget& out) {
+  CampaignResult r{scenario, {}};
+  WriteOutputDirectory(out, OutputKind::kCampaign, [&](const std::string& staging_dir) {
+    const fs::path staging = staging_dir;
+    fs::create_directories(staging / "traces");
+    r.drops.clear();
+    r.drops.reserve(scenario.cases.size());
+    for (const CampaignCase& c : scenario.cases) {
+      PadDrop d = RunPadDrop(*c.pad, c.soil, c.conditions);
+      WriteTraceCsv(d.result, TracePath(staging, c));
+      std::vector<DropSample>().swap(d.result.trace);  // released: the file holds it
+      if (d.free) std::vector<FreeDropSample>().swap(d.free->trace);
+      r.drops.push_back(std::move(d));
+    }
+    WriteCampaignSummaries(r, staging, out.path);
+  });
+  return r;
 }
 
 }  // namespace touchdown::drop

@@ -2,6 +2,7 @@
 // A drop campaign: a scenario YAML lists pads x soils x impact speeds (the paper's
 // single-footpad campaign ships as data/scenarios/sutoh2017_single_footpad.yaml). Loading
 // resolves and validates every pad, soil and number before anything runs or is written.
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -13,7 +14,9 @@ namespace touchdown::drop {
 
 struct CampaignCase {
   std::string drop_id;  // e.g. flat_fjs1_lp_v1.00
-  PadSpec pad;
+  // Shared by every case of the pad: a pad carries its revolved body (megabytes), which a copy per
+  // case multiplied by the size of the campaign (2-3 MB a drop).
+  std::shared_ptr<const PadSpec> pad;
   rft::SoilParameters soil;
   DropConditions conditions;
 };
@@ -40,7 +43,7 @@ struct CampaignScenario {
 
 struct CampaignResult {
   CampaignScenario scenario;
-  std::vector<PadDrop> drops;  // in the order of scenario.cases
+  std::vector<PadDrop> drops;  // in the order of scenario.cases (summaries only after RunCampaignToDirectory)
 };
 
 struct CheckOutcome {
@@ -51,10 +54,16 @@ struct CheckOutcome {
 CampaignScenario LoadCampaignScenario(const std::string& path);
 CampaignResult RunCampaign(const CampaignScenario& scenario);
 std::vector<CheckOutcome> EvaluateChecks(const CampaignResult& result);
-// Every case with its pad, soil and numbers as they were run (house style: resolved config).
-void WriteResolvedScenario(const CampaignScenario& scenario, const std::string& path);
+// Every case with its pad, soil and numbers as they were run (house style: resolved config). The
+// files named are written for `output_dir`, the directory the file finally lives in
+// (drop_tests/paths_in_outputs.h: no absolute paths of this machine).
+void WriteResolvedScenario(const CampaignScenario& scenario, const std::string& path, const std::string& output_dir);
 // Writes summary.csv, summary.json, traces/, plots/ and scenario_resolved.yaml into a fresh
 // directory that appears at `out_dir` only when complete (replacing an older one).
 void WriteCampaignOutputs(const CampaignResult& result, const OutputTarget& out);
+// RunCampaign and WriteCampaignOutputs in one pass that streams: each drop's trace is written to
+// traces/ as the drop finishes and then released, so memory holds the summaries only (a
+// 10,000-drop campaign: bench/campaign_memory_bench.cpp). The drops come back without traces.
+CampaignResult RunCampaignToDirectory(const CampaignScenario& scenario, const OutputTarget& out);
 
 }  // namespace touchdown::drop

@@ -30,27 +30,38 @@ std::string Resolve(const std::string& directory, const std::string& reference) 
   return (fs::path(directory) / reference).lexically_normal().string();
 }
 
+// Streamed (VisitCsv): each row goes straight into the columns as numbers, so a trace costs its
+// doubles only (ten million rows: 0.24 GB, not the 2 GB of rows kept as strings).
 DatasetTrace ReadTrace(const std::string& path) {
-  const CsvTable t = ReadCsv(path);
   DatasetTrace trace;
-  const int ct = t.Require("t_s"), cd = t.Require("penetration_m"), cf = t.Require("force_N");
+  int ct = -1, cd = -1, cf = -1;
   std::vector<int> extra_index;
-  for (size_t c = 0; c < t.header.size(); ++c)
-    if (static_cast<int>(c) != ct && static_cast<int>(c) != cd && static_cast<int>(c) != cf) {
-      trace.extra_columns.push_back(t.header[c]);
-      extra_index.push_back(static_cast<int>(c));
-    }
-  if (t.rows.empty()) throw MakeInputError(path, "line 2", "no samples");
-  trace.extra.resize(extra_index.size());
-  for (size_t r = 0; r < t.rows.size(); ++r) {
-    const double time = t.Number(r, ct);
-    if (r > 0 && !(time > trace.t_s.back()))
-      t.Fail(r, ct, "time must increase strictly (previous sample: " + FormatNumber(trace.t_s.back()) + ")");
+  auto columns = [&](const CsvTable& t) {
+    ct = t.Require("t_s"), cd = t.Require("penetration_m"), cf = t.Require("force_N");
+    for (size_t c = 0; c < t.header.size(); ++c)
+      if (static_cast<int>(c) != ct && static_cast<int>(c) != cd && static_cast<int>(c) != cf) {
+        trace.extra_columns.push_back(t.header[c]);
+        extra_index.push_back(static_cast<int>(c));
+      }
+    trace.extra.resize(extra_index.size());
+  };
+  const CsvTable table = VisitCsv(path, [&](const CsvTable& t, std::vector<std::string>& cells, int line) {
+    if (ct < 0) columns(t);
+    const double time = t.NumberAt(cells[ct], line, ct);
+    if (!trace.t_s.empty() && !(time > trace.t_s.back()))
+      t.FailAt(line, ct, "time must increase strictly (previous sample: " + FormatNumber(trace.t_s.back()) + ")");
     trace.t_s.push_back(time);
-    trace.penetration_m.push_back(t.Number(r, cd));
-    trace.force_N.push_back(t.Number(r, cf));
-    for (size_t k = 0; k < extra_index.size(); ++k) trace.extra[k].push_back(t.Number(r, extra_index[k]));
-  }
+    trace.penetration_m.push_back(t.NumberAt(cells[cd], line, cd));
+    trace.force_N.push_back(t.NumberAt(cells[cf], line, cf));
+    for (size_t k = 0; k < extra_index.size(); ++k)
+      trace.extra[k].push_back(t.NumberAt(cells[extra_index[k]], line, extra_index[k]));
+  });
+  if (ct < 0) columns(table);  // no rows: a missing column is still the first problem named
+  if (trace.size() == 0) throw MakeInputError(path, "line 2", "no samples");
+  trace.t_s.shrink_to_fit();
+  trace.penetration_m.shrink_to_fit();
+  trace.force_N.shrink_to_fit();
+  for (std::vector<double>& column : trace.extra) column.shrink_to_fit();
   return trace;
 }
 

@@ -42,20 +42,37 @@ int CsvTable::Require(const std::string& column) const {
 }
 
 void CsvTable::Fail(size_t row, int column, const std::string& message) const {
+  FailAt(row_lines[row], column, message);
+}
+
+void CsvTable::FailAt(int line, int column, const std::string& message) const {
   throw MakeInputError(file,
-                       "line " + std::to_string(row_lines[row]) + ", column " + std::to_string(column + 1) + " (" +
+                       "line " + std::to_string(line) + ", column " + std::to_string(column + 1) + " (" +
                            header[column] + ")",
                        message);
 }
 
-double CsvTable::Number(size_t row, int column) const {
+double CsvTable::Number(size_t row, int column) const { return NumberAt(rows[row][column], row_lines[row], column); }
+
+double CsvTable::NumberAt(const std::string& cell, int line, int column) const {
   double v = 0.0;
-  const std::string& cell = rows[row][column];
-  if (!ParseNumber(cell, &v)) Fail(row, column, "not a finite number: '" + cell + "'");
+  if (!ParseNumber(cell, &v)) FailAt(line, column, "not a finite number: '" + cell + "'");
   return v;
 }
 
 CsvTable ReadCsv(const std::string& path) {
+  std::vector<std::vector<std::string>> rows;
+  std::vector<int> lines;
+  CsvTable t = VisitCsv(path, [&](const CsvTable&, std::vector<std::string>& cells, int line) {
+    rows.push_back(std::move(cells));
+    lines.push_back(line);
+  });
+  t.rows = std::move(rows);
+  t.row_lines = std::move(lines);
+  return t;
+}
+
+CsvTable VisitCsv(const std::string& path, const CsvRowVisitor& on_row) {
   if (!std::filesystem::is_regular_file(path)) throw MakeInputError(path, "", "file not found");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw MakeInputError(path, "", "cannot read the file");
@@ -89,8 +106,7 @@ CsvTable ReadCsv(const std::string& path) {
       throw MakeInputError(path, "line " + std::to_string(number),
                            "expected " + std::to_string(t.header.size()) + " cells as in the header, got " +
                                std::to_string(cells.size()));
-    t.rows.push_back(std::move(cells));
-    t.row_lines.push_back(number);
+    on_row(t, cells, number);
   }
   if (t.header.empty()) throw MakeInputError(path, "line 1", "empty file (no header)");
   return t;

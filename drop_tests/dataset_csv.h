@@ -24,7 +24,16 @@ struct CsvTable {
   // The cell as a finite double; throws InputError naming file, line and column otherwise.
   double Number(size_t row, int column) const;
   [[noreturn]] void Fail(size_t row, int column, const std::string& message) const;
+  // The same for a row met by VisitCsv, named by its file line.
+  double NumberAt(const std::string& cell, int line, int column) const;
+  [[noreturn]] void FailAt(int line, int column, const std::string& message) const;
 };
+
+// Reads a CSV file row by row without keeping the rows: `on_row` gets each row's cells (after
+// the header, which is checked first) and its file line; the rules are ReadCsv's. Returns the
+// table's file and header (no rows). A trace of ten million rows kept as strings needed 2 GB.
+using CsvRowVisitor = std::function<void(const CsvTable& header, std::vector<std::string>& cells, int line)>;
+CsvTable VisitCsv(const std::string& path, const CsvRowVisitor& on_row);
 
 // Reads the whole file; every row must have as many cells as the header. Blank lines at the
 // end are allowed, "\r\n" line ends too.

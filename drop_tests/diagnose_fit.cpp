@@ -9,22 +9,13 @@
 
 #include <Eigen/Dense>
 
+#include "drop_tests/student_t.h"
 #include "rft/input_error.h"
 #include "rft/stress_law.h"
 
 namespace touchdown::drop {
 
 namespace {
-
-// Student's t 97.5 % quantile: exact table to 30 degrees of freedom, then 1.96 + 2.5/df.
-double StudentT975(int df) {
-  static const double table[] = {12.706, 4.303, 2.776, 2.571, 2.447, 2.365, 2.306, 2.262, 2.228, 2.201,
-                                 2.179,  2.160, 2.145, 2.131, 2.120, 2.110, 2.101, 2.093, 2.086, 2.080,
-                                 2.074,  2.069, 2.064, 2.060, 2.056, 2.052, 2.048, 2.045, 2.042, 2.042};
-  if (df < 1) return table[0];
-  if (df <= 30) return table[df - 1];
-  return 1.96 + 2.5 / df;
-}
 
 // Robust sensor-noise estimate: for white noise sigma, second differences have sd sqrt(6) sigma;
 // the median absolute value ignores the few samples at impact and stop.
@@ -389,7 +380,7 @@ FitResult FitCandidate(const FitProblem& p, const std::vector<std::string>& ids,
   const Eigen::MatrixXd naive = Ainv * s2 * inflation;
   Eigen::MatrixXd cov = sandwich;
   for (int j = 0; j < n; ++j) cov(j, j) = std::max(sandwich(j, j), naive(j, j));
-  const double t = StudentT975(G - 1);
+  const double t = StudentTTwoSided(0.95, std::max(G - 1, 1));
   k = 0;
   auto estimate = [&](const std::string& effect, const std::string& key, double scale, double file_to_si,
                       const std::string& unit) {

@@ -165,7 +165,7 @@ void WriteDiagnosis(const Diagnosis& d, const Dataset& ds, const OutputTarget& o
     model.provenance = YAML::Node(YAML::NodeType::Map);
     model.provenance["diagnose"] = d.decision;
     model.provenance["intervals"] = "95 %, cluster-robust over training drops (docs/model_gap.md)";
-    WriteModelFile(model, (dir / "model.yaml").string());
+    WriteModelFile(model, (dir / "model.yaml").string(), out.path);
 
     WriteFileAtomically((dir / "diagnosis.json").string(), [&](std::ostream& out) { out << DiagnosisJson(d).dump(2) << '\n'; });
 

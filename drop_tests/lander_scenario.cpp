@@ -13,6 +13,7 @@
 #include "drop_tests/output_path.h"
 #include "drop_tests/dataset_csv.h"  // FormatNumber
 #include "drop_tests/lander_plots.h"
+#include "drop_tests/paths_in_outputs.h"
 #include "drop_tests/yaml_fields.h"
 #include "rft/input_error.h"
 #include "rft/stress_law_3d_factory.h"
@@ -253,8 +254,13 @@ LanderScenario LoadLanderScenario(const std::string& path) {
       sim.Fail("duration_s", "must be at most 600 s, got " + FormatNumber(s.options.duration_s));
     if (s.options.sample_rate_hz > 1e6)
       sim.Fail("sample_rate_hz", "must be at most 1e6 Hz, got " + FormatNumber(s.options.sample_rate_hz));
-    if (s.options.duration_s * s.options.sample_rate_hz > 1e7)
-      sim.Fail("sample_rate_hz", "duration_s x sample_rate_hz must be at most 1e7 trace samples");
+    // The whole trace is held in memory until it is written (about 0.4 kB a sample, plus the plots'
+    // copy): 1e6 samples keep a run under about 1 GB (1e7 needed over 4 GB).
+    if (s.options.duration_s * s.options.sample_rate_hz > kLanderMaxTraceSamples)
+      sim.Fail("sample_rate_hz", "duration_s x sample_rate_hz is " +
+                                     FormatNumber(s.options.duration_s * s.options.sample_rate_hz) +
+                                     " trace samples, at most " + FormatNumber(kLanderMaxTraceSamples) +
+                                     " (lower the rate or the duration)");
     if (sim.Has("capture_speed_m_s")) s.options.capture_speed_m_s = sim.NonNegative("capture_speed_m_s");
     if (sim.Has("rtol")) s.options.integrator.rtol = sim.Positive("rtol");
     if (sim.Has("atol")) {
@@ -447,23 +453,24 @@ void WriteLanderTraceCsv(const LanderRun& run, const std::string& path) {
   });
 }
 
-void WriteResolvedLanderScenario(const LanderScenario& s, const std::string& path) {
+void WriteResolvedLanderScenario(const LanderScenario& s, const std::string& path, const std::string& output_dir) {
+  auto file = [&](const std::string& p) { return PathForOutput(p, output_dir); };
   YAML::Emitter y;
   auto vec = [&](const Eigen::Vector3d& v, double scale) {
     y << YAML::Flow << YAML::BeginSeq << v.x() * scale << v.y() * scale << v.z() * scale << YAML::EndSeq;
   };
   y << YAML::BeginMap << YAML::Key << "schema_version" << YAML::Value << 1 << YAML::Key << "type" << YAML::Value
     << "lander_resolved" << YAML::Key << "name" << YAML::Value << s.name << YAML::Key << "source" << YAML::Value
-    << s.source << YAML::Key << "gravity_m_s2" << YAML::Value << s.gravity_m_s2;
+    << file(s.source) << YAML::Key << "gravity_m_s2" << YAML::Value << s.gravity_m_s2;
   const LanderSpec& l = s.lander;
   y << YAML::Key << "lander" << YAML::Value << YAML::BeginMap << YAML::Key << "name" << YAML::Value << l.name
-    << YAML::Key << "file" << YAML::Value << l.source << YAML::Key << "total_mass_kg" << YAML::Value << l.total_mass_kg
+    << YAML::Key << "file" << YAML::Value << file(l.source) << YAML::Key << "total_mass_kg" << YAML::Value << l.total_mass_kg
     << YAML::Key << "body_mass_kg" << YAML::Value << l.body_mass_kg << YAML::Key << "cog_height_mm" << YAML::Value
     << l.cog_height_m * 1e3 << YAML::Key << "body_inertia_kg_m2" << YAML::Value << YAML::Flow << YAML::BeginSeq;
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 3; ++c) y << l.body_inertia_B(r, c);
   y << YAML::EndSeq << YAML::Key << "pad" << YAML::Value << YAML::BeginMap << YAML::Key << "name" << YAML::Value
-    << l.pad.name << YAML::Key << "file" << YAML::Value << l.pad.source << YAML::Key << "mass_kg" << YAML::Value
+    << l.pad.name << YAML::Key << "file" << YAML::Value << file(l.pad.source) << YAML::Key << "mass_kg" << YAML::Value
     << l.pad.body.mass_kg << YAML::Key << "triangles" << YAML::Value << l.pad.body.surface.size() << YAML::Key
     << "com_from_joint_mm" << YAML::Value;
   vec(l.pad.body.com_B, 1e3);
@@ -508,7 +515,7 @@ void WriteResolvedLanderScenario(const LanderScenario& s, const std::string& pat
       << p.atmosphere << YAML::Key << "law_3d" << YAML::Value << std::string(soil.law->name()) << YAML::EndMap;
   }
   y << YAML::EndSeq;
-  if (s.model) y << YAML::Key << "model" << YAML::Value << s.model->source;
+  if (s.model) y << YAML::Key << "model" << YAML::Value << file(s.model->source);
   y << YAML::Key << "patches" << YAML::Value << YAML::BeginSeq;
   for (const lander::SoilPatch& p : setup.terrain.patches) {
     y << YAML::BeginMap << YAML::Key << "name" << YAML::Value << p.name << YAML::Key << "soil" << YAML::Value
@@ -555,7 +562,7 @@ void WriteLanderOutputs(const LanderRun& run, const OutputTarget& out) {
     });
     WriteFileAtomically((staging / "summary.json").string(),
                         [&](std::ostream& out) { out << LanderSummaryJson(run).dump(2) << '\n'; });
-    WriteResolvedLanderScenario(run.scenario, (staging / "scenario_resolved.yaml").string());
+    WriteResolvedLanderScenario(run.scenario, (staging / "scenario_resolved.yaml").string(), out.path);
     WriteLanderPlots(run, staging.string());
   });
 }

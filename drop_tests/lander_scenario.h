@@ -19,6 +19,10 @@
 
 namespace touchdown::drop {
 
+// A lander run keeps its trace in memory (lander::LanderSample, about 0.4 kB each): duration_s x
+// sample_rate_hz is capped at load.
+inline constexpr double kLanderMaxTraceSamples = 1e6;
+
 struct LanderLegSpec {
   Eigen::Vector3d hip_B = Eigen::Vector3d::Zero();
   Eigen::Vector3d joint_B = Eigen::Vector3d::Zero();
@@ -107,7 +111,10 @@ LanderRun RunLanderScenario(const LanderScenario& scenario);
 // The JSON summary `touchdown lander` prints (pads in the paper's clockwise order).
 nlohmann::json LanderSummaryJson(const LanderRun& run);
 void WriteLanderTraceCsv(const LanderRun& run, const std::string& path);
-void WriteResolvedLanderScenario(const LanderScenario& scenario, const std::string& path);
+// The files named are written for `output_dir`, the directory the file finally lives in
+// (drop_tests/paths_in_outputs.h: no absolute paths of this machine).
+void WriteResolvedLanderScenario(const LanderScenario& scenario, const std::string& path,
+                                 const std::string& output_dir);
 // summary.json, trace.csv, events.csv, scenario_resolved.yaml and plots/ into a staging
 // directory renamed to out_dir when complete.
 void WriteLanderOutputs(const LanderRun& run, const OutputTarget& out);

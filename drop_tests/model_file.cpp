@@ -6,6 +6,7 @@
 #include "drop_tests/output_path.h"
 #include "drop_tests/dataset_csv.h"
 #include "drop_tests/effects.h"
+#include "drop_tests/paths_in_outputs.h"
 #include "drop_tests/yaml_fields.h"
 #include "rft/input_error.h"
 
@@ -72,7 +73,9 @@ ModelFile LoadModelFile(const std::string& path) {
   return m;
 }
 
-void WriteModelFile(const ModelFile& m, const OutputTarget& target) {
+void WriteModelFile(const ModelFile& m, const OutputTarget& target, const std::string& output_dir) {
+  const std::string directory =
+      output_dir.empty() ? std::filesystem::path(target.path).parent_path().string() : output_dir;
   YAML::Emitter y;
   y.SetDoublePrecision(10);
   y << YAML::BeginMap << YAML::Key << "schema_version" << YAML::Value << 1 << YAML::Key << "type" << YAML::Value
@@ -91,7 +94,8 @@ void WriteModelFile(const ModelFile& m, const OutputTarget& target) {
       y << YAML::Key << "fit" << YAML::Value << YAML::BeginMap << YAML::Key << "method" << YAML::Value << o.fit->method
         << YAML::Key << "drops" << YAML::Value << o.fit->drops << YAML::Key << "samples" << YAML::Value
         << o.fit->samples << YAML::Key << "residual_rms_N" << YAML::Value << o.fit->residual_rms_N;
-      if (!o.fit->dataset.empty()) y << YAML::Key << "dataset" << YAML::Value << o.fit->dataset;
+      if (!o.fit->dataset.empty())
+        y << YAML::Key << "dataset" << YAML::Value << PathForOutput(o.fit->dataset, directory);
       y << YAML::EndMap;
     }
     y << YAML::EndMap;

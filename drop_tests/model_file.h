@@ -47,7 +47,7 @@ struct SoilFit {
   int drops = 0;
   long samples = 0;
   double residual_rms_N = 0.0;
-  std::string dataset;
+  std::string dataset;  // the dataset directory as the run reached it; written relative to the model file
 };
 
 struct SoilOverride {
@@ -74,7 +74,9 @@ ModelFile LoadModelFile(const std::string& path);
 // The first line of every model file touchdown writes: a file that starts with it may be replaced by
 // the next `calibrate --out`; any other file at that path is the user's and is never overwritten.
 inline constexpr const char* kModelFileMark = "# touchdown model file (written by touchdown; it may replace this file)";
-void WriteModelFile(const ModelFile& model, const OutputTarget& target);
+// Paths in it (a fit's dataset) are written for `output_dir`, the directory the file finally lives
+// in (default: the directory of the target; drop_tests/paths_in_outputs.h).
+void WriteModelFile(const ModelFile& model, const OutputTarget& target, const std::string& output_dir = "");
 // The soil as the model sees it: its zeta replaced when the model has an override (converted to
 // the soil's own reference gravity). Effect terms are not part of the soil: see ModelEffectTerms.
 rft::SoilParameters ApplyModel(const ModelFile& model, const rft::SoilParameters& soil);

@@ -185,6 +185,28 @@ long LeftoverPid(const std::string& entry, const std::string& name, const std::s
   return std::stol(digits);
 }
 
+// Removes an output of touchdown's, its marker last, so that a kill part way leaves a directory the
+// next run still recognises as touchdown's and finishes removing.
+void RemoveOutput(const fs::path& directory) {
+  std::error_code ec;
+  for (const fs::directory_entry& e : fs::directory_iterator(directory, ec))
+    if (e.path().filename() != kOutputMarker) fs::remove_all(e.path(), ec);
+  fs::remove(directory / kOutputMarker, ec);
+  fs::remove(directory, ec);
+}
+
+// A staging directory killed before its marker was whole: empty, or holding nothing but the marker
+// being written. Its name and its dead owner say it is touchdown's.
+bool JustCreated(const fs::path& directory) {
+  std::error_code ec;
+  const std::string marker = kOutputMarker;
+  for (const fs::directory_entry& e : fs::directory_iterator(directory, ec)) {
+    const std::string name = e.path().filename().string();
+    if (name != marker && name.rfind("." + marker + ".partial-", 0) != 0) return false;
+  }
+  return !ec;
+}
+
 // What killed runs left beside `p`: their staging directories and files go; an old output that a
 // run without RENAME_EXCHANGE had moved aside, and not replaced, comes back.
 void CleanLeftovers(const fs::path& p) {
@@ -199,12 +221,13 @@ void CleanLeftovers(const fs::path& p) {
       if (pid < 0 || pid == ::getpid() || ProcessAlive(pid)) continue;
       std::error_code ignored;
       const bool directory = e.is_directory(ignored) && !e.is_symlink(ignored);
-      if (directory && !ReadMarker(e.path()).present) continue;  // not ours to remove
+      if (directory && !ReadMarker(e.path()).present && !JustCreated(e.path())) continue;  // not ours to remove
       if (std::string(suffix) == ".old-" && !fs::exists(p, ignored)) {
         fs::rename(e.path(), p, ignored);
         continue;
       }
-      fs::remove_all(e.path(), ignored);
+      if (directory) RemoveOutput(e.path());
+      else fs::remove(e.path(), ignored);
     }
   }
 }
@@ -237,8 +260,7 @@ bool RenameNoReplace(const fs::path& from, const fs::path& to) {
 // Puts the staging directory in the place of the existing target, then removes the old output.
 void ReplaceDirectory(const fs::path& staging, const fs::path& target) {
   if (::renameat2(AT_FDCWD, staging.c_str(), AT_FDCWD, target.c_str(), RENAME_EXCHANGE) == 0) {
-    std::error_code ec;
-    fs::remove_all(staging, ec);  // now the old output
+    RemoveOutput(staging);  // now the old output
     return;
   }
   if (errno != EINVAL && errno != ENOSYS)
@@ -253,7 +275,7 @@ void ReplaceDirectory(const fs::path& staging, const fs::path& target) {
     fs::rename(old, target, ec);
     throw InputError(target.string() + ": cannot replace the earlier output: " + Reason(ec));
   }
-  fs::remove_all(old, ec);
+  RemoveOutput(old);
 }
 
 // Writes `file` from scratch; on any failure removes it and throws, naming `shown_path`.
@@ -305,7 +327,11 @@ void WriteOutputDirectory(const OutputTarget& target, OutputKind kind,
   fs::create_directories(p.parent_path(), ec);
   if (ec) Refuse(target.path, "cannot create '" + p.parent_path().string() + "': " + Reason(ec));
   const fs::path staging = StagingPath(p);
-  if (fs::exists(staging, ec)) fs::remove_all(staging, ec);  // an earlier call of this process that failed
+  if (fs::exists(staging, ec)) {  // left by an earlier process with this pid
+    if (!ReadMarker(staging).present && !JustCreated(staging))
+      Refuse(target.path, "'" + staging.string() + "' is in the way and was not written by touchdown");
+    RemoveOutput(staging);
+  }
   fs::create_directory(staging, ec);
   if (ec) Refuse(target.path, "cannot create the staging directory: " + Reason(ec));
   try {
@@ -319,7 +345,7 @@ void WriteOutputDirectory(const OutputTarget& target, OutputKind kind,
       ReplaceDirectory(staging, p);
     }
   } catch (const InputError& e) {
-    fs::remove_all(staging, ec);
+    RemoveOutput(staging);
     // Name the user's path, not the staging directory they never asked for.
     std::string message = e.what();
     const std::string shown = staging.string();
@@ -327,7 +353,7 @@ void WriteOutputDirectory(const OutputTarget& target, OutputKind kind,
       message.replace(at, shown.size(), target.path);
     throw InputError(message);
   } catch (...) {
-    fs::remove_all(staging, ec);
+    RemoveOutput(staging);
     throw;
   }
 }

@@ -8,9 +8,17 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "drop_tests/paths_in_outputs.h"
+
 namespace touchdown::drop {
 
 namespace {
+// Meta values that name files (the sweep file, the model): stored relative to the database's
+// directory, or under $TOUCHDOWN_DATA_DIR, never as this machine's absolute path
+// (drop_tests/paths_in_outputs.h); Meta() gives them back as the working directory reaches them.
+constexpr const char* kMetaPathKeys[] = {"source", "model"};
+std::string Directory(const std::string& file) { return std::filesystem::path(file).parent_path().string(); }
+
 // The numeric columns of a record, in table order: the format-1 metrics, then (format 2) the
 // free drop's and the lander's. One list drives the schema, binding, reading, comparing and
 // the MPI serialisation, so a new column cannot be forgotten in one of them.
@@ -292,6 +300,8 @@ std::map<std::string, std::string> ResultsDb::Meta() const {
   Statement st(db_, "SELECT key, value FROM meta");
   std::map<std::string, std::string> meta;
   while (st.Step() == SQLITE_ROW) meta[st.ColumnText(0)] = st.ColumnText(1);
+  for (const char* key : kMetaPathKeys)
+    if (auto it = meta.find(key); it != meta.end()) it->second = PathFromOutput(it->second, Directory(path_));
   return meta;
 }
 
@@ -302,7 +312,8 @@ void ResultsDb::SetMeta(const std::map<std::string, std::string>& meta) {
     for (const auto& [k, v] : meta) {
       st.Reset();
       st.Text(1, k);
-      st.Text(2, v);
+      const bool is_path = std::find(std::begin(kMetaPathKeys), std::end(kMetaPathKeys), k) != std::end(kMetaPathKeys);
+      st.Text(2, is_path ? PathForOutput(v, Directory(path_)) : v);
       if (st.Step() != SQLITE_DONE) throw std::runtime_error(std::string("sqlite meta: ") + sqlite3_errmsg(db_));
     }
     Exec("COMMIT");

@@ -76,6 +76,16 @@ SynthSpec LoadSynthSpec(const std::string& path) {
   s.sample_rate_hz = f.PositiveOr("sample_rate_hz", 1000.0);
   if (f.Has("rest_duration_s")) s.rest_duration_s = f.NonNegative("rest_duration_s");
   const int trials = f.Has("trials") ? f.PositiveInt("trials") : 1;
+  // Resource caps: the dataset is built in memory (every trace) before it is written, so its size
+  // is bounded here, at load, with the limit in the message.
+  if (s.sample_rate_hz > kSynthMaxSampleRateHz)
+    f.Fail("sample_rate_hz", "must be at most " + FormatNumber(kSynthMaxSampleRateHz) + " Hz, got " +
+                                 FormatNumber(s.sample_rate_hz));
+  if (s.rest_duration_s > kSynthMaxRestDurationS)
+    f.Fail("rest_duration_s", "must be at most " + FormatNumber(kSynthMaxRestDurationS) + " s, got " +
+                                  FormatNumber(s.rest_duration_s));
+  if (trials > kSynthMaxTrials)
+    f.Fail("trials", "must be at most " + std::to_string(kSynthMaxTrials) + ", got " + std::to_string(trials));
   for (const YamlFields& g : f.List("drops")) {
     g.RequireOnly({"pads", "soils", "atmospheres", "impact_speeds_m_s", "mass_kg", "gravity_m_s2"});
     const std::vector<std::string> pads = StringList(g, "pads"), soils = StringList(g, "soils");
@@ -89,6 +99,9 @@ SynthSpec LoadSynthSpec(const std::string& path) {
         for (const std::string& atm : atmospheres)
           for (double v : speeds)
             for (int t = 0; t < trials; ++t) {
+              if (s.drops.size() == kSynthMaxDrops)
+                f.Fail("drops", "more than " + std::to_string(kSynthMaxDrops) + " drops (pads x soils x atmospheres x "
+                                "impact speeds x trials)");
               SynthDrop d{pad, soil, atm, v, std::nullopt, g.PositiveOr("gravity_m_s2", 9.81), t};
               if (g.Has("mass_kg")) d.mass_kg = g.Positive("mass_kg");
               s.drops.push_back(d);
@@ -131,6 +144,12 @@ SynthSpec LoadSynthSpec(const std::string& path) {
     }
   }
   if (s.drops.empty()) f.Fail("drops", "no drops");
+  // The samples of the rest recorded after each stop, plus a stroke of about kSynthStrokeBoundS.
+  const double samples = static_cast<double>(s.drops.size()) * (s.rest_duration_s + kSynthStrokeBoundS) * s.sample_rate_hz;
+  if (samples > kSynthMaxSamples)
+    f.Fail("drops", "drops x (rest_duration_s + " + FormatNumber(kSynthStrokeBoundS) + " s) x sample_rate_hz is " +
+                        FormatNumber(samples) + " samples, more than the " + FormatNumber(kSynthMaxSamples) +
+                        " a dataset may hold (" + std::to_string(s.drops.size()) + " drops)");
   return s;
 }
 

@@ -74,6 +74,16 @@ struct SynthSpec {
   std::optional<FloorStiffening> floor;     // or the out-of-library one
 };
 
+// Caps checked at load (the dataset is built in memory before it is written): at most 1 MHz, a
+// minute of rest after each stop, 1,000 trials, 100,000 drops, and 2e7 samples in all (about
+// 0.5 GB of traces), the samples counted as drops x (rest_duration_s + kSynthStrokeBoundS) x rate.
+inline constexpr double kSynthMaxSampleRateHz = 1e6;
+inline constexpr double kSynthMaxRestDurationS = 60.0;
+inline constexpr int kSynthMaxTrials = 1000;
+inline constexpr size_t kSynthMaxDrops = 100000;
+inline constexpr double kSynthMaxSamples = 2e7;
+inline constexpr double kSynthStrokeBoundS = 0.1;  // an allowance for the stroke (tens of ms at 1 m/s)
+
 SynthSpec LoadSynthSpec(const std::string& path);
 // Builds the dataset in memory (traces included); drop ids like flat_fjs1_lp_air_v1.00_t0.
 Dataset Synthesize(const SynthSpec& spec);

@@ -81,11 +81,18 @@ template <bool kAreaMoment>
 // the corner triangle at it, cut where the depth crosses zero. Two below: the quadrilateral is
 // the whole triangle minus the emerged corner triangle at the third vertex (exact, and no
 // quadrilateral to split). The corner triangles have depth zero at their cut vertices, so the
-// integrals vary continuously as vertices cross the surface.
+// integrals vary continuously as vertices cross the surface. None below: nothing is submerged.
+// That case must be handled here rather than left to the callers: the rotating path decides
+// which elements touch from depths computed in its vectorised pass and clips with depths
+// recomputed per element, and the two may round differently (fused multiply-adds) for a vertex
+// within rounding of the surface. Treated as "two below", such a triangle gave a corner fraction
+// d_k / (d_k - d_j) between two nearly equal negative depths (1e14 on the hex pad's edge landing
+// flat): a force of 1e12 N at t = 0 and CVODE's corrector failing at h = 1e-31.
 template <bool kAreaMoment>
 [[gnu::always_inline]] inline Submerged ClipAndIntegrate(double area, const double d[3], const Vec p[3]) {
   Submerged s;
   const int below = (d[0] > 0.0) + (d[1] > 0.0) + (d[2] > 0.0);
+  if (below == 0) return s;
   if (below == 3) {
     AddTriangle<kAreaMoment>(area, d[0], d[1], d[2], p[0], p[1], p[2], 1.0, s);
   } else if (below == 1) {

@@ -126,6 +126,7 @@ inline void AddPowerTriangle(double area, double d0, double d1, double d2, Vec p
 // trailing element contributes (submerged_area_m2) without its depth integrals.
 [[gnu::always_inline]] inline double SubmergedArea(double area, const double d[3]) {
   const int below = (d[0] > 0.0) + (d[1] > 0.0) + (d[2] > 0.0);
+  if (below == 0) return 0.0;
   if (below == 3) return area;
   if (below == 1) {
     const int i = d[0] > 0.0 ? 0 : (d[1] > 0.0 ? 1 : 2), j = (i + 1) % 3, k = (i + 2) % 3;
@@ -146,6 +147,7 @@ template <bool kAreaMoment>
   double integral = 0.0;
   Vec moment{0.0, 0.0, 0.0};
   const int below = (d[0] > 0.0) + (d[1] > 0.0) + (d[2] > 0.0);
+  if (below == 0) return s;
   if (below == 3) {
     AddPowerTriangle(area, d[0], d[1], d[2], p[0], p[1], p[2], exponent, integral, moment);
   } else if (below == 1) {

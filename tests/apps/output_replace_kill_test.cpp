@@ -78,11 +78,17 @@ std::map<std::string, std::string> Fingerprint(const fs::path& dir) {
   return files;
 }
 
-int Leftovers(const fs::path& dir, const std::string& target) {
-  int n = 0;
-  for (const fs::directory_entry& e : fs::directory_iterator(dir))
-    if (e.path().filename().string().rfind("." + target + ".", 0) == 0) ++n;
-  return n;
+// What is left beside `target` (hidden `.TARGET.*` entries), with what each holds.
+std::string Leftovers(const fs::path& dir, const std::string& target) {
+  std::string left;
+  for (const fs::directory_entry& e : fs::directory_iterator(dir)) {
+    if (e.path().filename().string().rfind("." + target + ".", 0) != 0) continue;
+    left += e.path().filename().string() + " [";
+    if (e.is_directory())
+      for (const fs::directory_entry& f : fs::directory_iterator(e.path())) left += " " + f.path().filename().string();
+    left += " ] ";
+  }
+  return left;
 }
 
 class OutputReplaceKill : public ::testing::Test {
@@ -130,7 +136,7 @@ class OutputReplaceKill : public ::testing::Test {
               << " times, new " << new_left << " times (a run takes " << seconds << " s)\n";
     RunToEnd(dir_, new_args);
     EXPECT_EQ(Fingerprint(dir_ / out), new_output);
-    EXPECT_EQ(Leftovers(dir_, out), 0) << "staging directories of killed runs were left behind";
+    EXPECT_EQ(Leftovers(dir_, out), "") << "staging directories of killed runs were left behind";
   }
 
   fs::path dir_;

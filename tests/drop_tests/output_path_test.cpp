@@ -194,12 +194,15 @@ TEST_F(OutputPathTest, StagingLeftByAKilledRunIsRemovedByTheNextRun) {
   const std::string dead = std::to_string(DeadPid());
   fs::create_directory(".out.partial-" + dead);  // what a killed run left: its marker is in it
   Write(".out.partial-" + dead + "/" + kOutputMarker, "touchdown output\nkind: lander\n");
-  fs::create_directory(".out.partial-1" + dead);  // no marker: not ours, kept
+  fs::create_directory(".out.partial-2" + dead);  // killed before its marker was written
+  fs::create_directory(".out.partial-1" + dead);  // something else in it and no marker: not ours, kept
+  Write(".out.partial-1" + dead + "/data.csv", "x");
   Write(".trace.csv.partial-" + dead, "t_s\n");   // a killed file write
   WriteOutputDirectory("out", OutputKind::kLander, Fill("new"));
   WriteOutputFile("trace.csv", [](std::ostream& out) { out << "t_s\n"; });
   EXPECT_FALSE(fs::exists(".out.partial-" + dead));
   EXPECT_FALSE(fs::exists(".trace.csv.partial-" + dead));
+  EXPECT_FALSE(fs::exists(".out.partial-2" + dead));
   EXPECT_TRUE(fs::exists(".out.partial-1" + dead));
   EXPECT_EQ(Read("out/summary.txt"), "new");
 }

@@ -8,6 +8,10 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string>
+#include <unistd.h>
+
+#include "rft/input_error.h"
 
 namespace touchdown::drop {
 namespace {
@@ -77,6 +81,54 @@ TEST(Synth, GasCushionHidesOnlyInAirDrops) {
     if (a.drops[i].atmosphere == "vacuum") EXPECT_TRUE(a.drops[i] == b.drops[i]) << a.drops[i].drop_id;
     else EXPECT_GT(std::abs(b.drops[i].FinalPenetration() / a.drops[i].FinalPenetration() - 1), 0.05) << a.drops[i].drop_id;
   }
+}
+
+}  // namespace
+}  // namespace touchdown::drop
+
+// Issue 13, section 5: synth builds its dataset in memory, so its size is capped at load, each
+// refusal naming the field and the limit.
+namespace touchdown::drop {
+namespace {
+
+std::string LoadError(const std::string& fields, const std::string& drops = "[{pads: [flat], soils: [fjs1_lp], "
+                                                                              "impact_speeds_m_s: [1.0]}]") {
+  const std::filesystem::path path =
+      std::filesystem::temp_directory_path() / ("touchdown_synth_caps_" + std::to_string(::getpid()) + ".yaml");
+  std::ofstream(path) << "schema_version: 1\ntype: synth\n" << fields << "drops: " << drops << "\n";
+  std::string message;
+  try {
+    LoadSynthSpec(path.string());
+  } catch (const InputError& e) {
+    message = e.what();
+  }
+  std::filesystem::remove(path);
+  return message;
+}
+
+TEST(Synth, ResourceCapsAreRefusedAtLoadWithTheLimit) {
+  EXPECT_EQ(LoadError("sample_rate_hz: 1000\nrest_duration_s: 0.04\ntrials: 2\n"), "");
+  std::string e = LoadError("sample_rate_hz: 1e9\n");
+  EXPECT_NE(e.find("sample_rate_hz"), std::string::npos) << e;
+  EXPECT_NE(e.find("at most 1e+06 Hz"), std::string::npos) << e;
+  e = LoadError("rest_duration_s: 1e6\n");
+  EXPECT_NE(e.find("rest_duration_s"), std::string::npos) << e;
+  EXPECT_NE(e.find("at most 60 s"), std::string::npos) << e;
+  e = LoadError("trials: 100000000\n");
+  EXPECT_NE(e.find("trials"), std::string::npos) << e;
+  EXPECT_NE(e.find("at most 1000"), std::string::npos) << e;
+  // Each within its own cap, together too many samples: 1,000 trials x 60 s x 1 MHz.
+  e = LoadError("sample_rate_hz: 1e6\nrest_duration_s: 60\ntrials: 1000\n");
+  EXPECT_NE(e.find("drops"), std::string::npos) << e;
+  EXPECT_NE(e.find("samples"), std::string::npos) << e;
+  // Too many drops is refused while the list is expanded, not after.
+  std::string speeds;
+  for (int i = 1; i <= 101; ++i) {
+    if (i > 1) speeds += ',';
+    speeds += std::to_string(i * 0.01);
+  }
+  e = LoadError("trials: 1000\n", "[{pads: [flat], soils: [fjs1_lp], impact_speeds_m_s: [" + speeds + "]}]");
+  EXPECT_NE(e.find("more than 100000 drops"), std::string::npos) << e;
 }
 
 }  // namespace
