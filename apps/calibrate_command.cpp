@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "apps/commands.h"
+#include "drop_tests/output_path.h"
 #include "drop_tests/calibrate.h"
 
 namespace touchdown::app {
@@ -28,6 +29,8 @@ void AddCalibrateCommand(CLI::App& app) {
       ->check(CLI::Range(0.5, 0.9999));
   cmd->add_option("--out", args->out, "model file to write (MODEL.yaml)")->required();
   cmd->callback([args] {
+    const drop::OutputTarget out(args->out, {args->measured});
+    drop::CheckOutputFile(out, drop::kModelFileMark);
     const drop::Dataset measured = drop::ReadDataset(args->measured);
     drop::CalibrationOptions options;
     options.per_soil = args->per == "soil";
@@ -36,7 +39,7 @@ void AddCalibrateCommand(CLI::App& app) {
     const std::vector<drop::ZetaFit> fits = drop::CalibrateZeta(measured, options);
     const drop::ModelFile model =
         drop::CalibrationModel(fits, measured, std::filesystem::path(args->out).stem().string());
-    drop::WriteModelFile(model, args->out);
+    drop::WriteModelFile(model, out);
     for (const drop::ZetaFit& f : fits)
       std::cout << f.group << ": zeta = " << std::fixed << std::setprecision(4) << f.zeta_N_m3 / 1e6 << " N/cm^3, "
                 << std::setprecision(0) << 100 * options.confidence << " % interval [" << std::setprecision(4)

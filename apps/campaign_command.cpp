@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "apps/commands.h"
+#include "drop_tests/output_path.h"
 #include "drop_tests/campaign.h"
 
 namespace touchdown::app {
@@ -13,11 +14,13 @@ void AddCampaignCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("campaign", "Run a list of drops from a scenario YAML; write tables, traces, plots");
   cmd->add_option("scenario", *scenario_path, "campaign scenario YAML (e.g. data/scenarios/sutoh2017_single_footpad.yaml)")
       ->required();
-  cmd->add_option("--out", *out_dir, "output directory (replaced when the run completes)")->required();
+  cmd->add_option("--out", *out_dir, "output directory: new, empty, or an earlier campaign output (replaced whole when the run completes)")->required();
   cmd->callback([scenario_path, out_dir] {
+    const drop::OutputTarget out(*out_dir, {*scenario_path});
+    drop::CheckOutputDirectory(out, drop::OutputKind::kCampaign);
     const drop::CampaignScenario scenario = drop::LoadCampaignScenario(*scenario_path);
     const drop::CampaignResult result = drop::RunCampaign(scenario);
-    drop::WriteCampaignOutputs(result, *out_dir);
+    drop::WriteCampaignOutputs(result, out);
     std::cout << std::left << std::setw(28) << "drop" << std::right << std::setw(12) << "depth [mm]" << std::setw(14)
               << "peak F [N]" << std::setw(14) << "t_rest [ms]" << "\n";
     for (size_t i = 0; i < result.drops.size(); ++i) {

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/commands.h"
+#include "drop_tests/output_path.h"
 #include "drop_tests/compare.h"
 #include "rft/input_error.h"
 
@@ -23,8 +24,10 @@ void AddCompareCommand(CLI::App& app) {
   auto* sim = cmd->add_option("--simulated", args->simulated,
                               "simulated dataset directory to join on the drop conditions (default: simulate here)");
   cmd->add_option("--model", args->model, "model file to simulate with (per-soil zeta and effect terms)")->excludes(sim);
-  cmd->add_option("--out", args->out, "output directory (replaced when complete)")->required();
+  cmd->add_option("--out", args->out, "output directory: new, empty, or an earlier output of this command (replaced whole when complete)")->required();
   cmd->callback([args] {
+    const drop::OutputTarget out(args->out, {args->measured, args->simulated, args->model});
+    drop::CheckOutputDirectory(out, drop::OutputKind::kComparison);
     const drop::Dataset measured = drop::ReadDataset(args->measured);
     drop::Dataset simulated;
     std::vector<const drop::DatasetDrop*> partners;
@@ -43,7 +46,7 @@ void AddCompareCommand(CLI::App& app) {
     }
     drop::Comparison c = drop::CompareDrops(measured, partners);
     c.simulated_from = from;
-    drop::WriteComparison(c, measured, simulated, partners, simulate_here, args->out);
+    drop::WriteComparison(c, measured, simulated, partners, simulate_here, out);
     std::cout << std::left << std::setw(24) << "drop" << std::right << std::setw(14) << "depth err" << std::setw(14)
               << "peak F err" << std::setw(14) << "NRMSE(t)" << std::setw(14) << "NRMSE(d)" << "\n";
     auto pct = [](double v) {

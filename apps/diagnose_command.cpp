@@ -5,6 +5,7 @@
 #include <thread>
 
 #include "apps/commands.h"
+#include "drop_tests/output_path.h"
 #include "drop_tests/diagnose.h"
 
 namespace touchdown::app {
@@ -23,18 +24,20 @@ void AddDiagnoseCommand(CLI::App& app) {
       "diagnose", "Find where simulation and measurement disagree, name the missing effect, show the gap shrink");
   cmd->add_option("measured", args->measured, "measured dataset directory (drops.csv + traces)")->required();
   cmd->add_option("--model", args->model, "model file whose zeta per soil starts the calibration");
-  cmd->add_option("--out", args->out, "output directory (replaced when complete)")->required();
+  cmd->add_option("--out", args->out, "output directory: new, empty, or an earlier output of this command (replaced whole when complete)")->required();
   cmd->add_option("--threads", args->threads, "threads (default: all cores)")
       ->check(CLI::Range(0, 4096));
   cmd->add_flag("--no-pairs", args->no_pairs, "do not try pairs of effects");
   cmd->callback([args] {
+    const drop::OutputTarget out(args->out, {args->measured, args->model});
+    drop::CheckOutputDirectory(out, drop::OutputKind::kDiagnosis);
     drop::DiagnoseOptions o;
     o.threads = args->threads > 0 ? args->threads : std::max(1u, std::thread::hardware_concurrency());
     o.try_pairs = !args->no_pairs;
     if (!args->model.empty()) o.start_model = drop::LoadModelFile(args->model);
     const drop::Dataset ds = drop::ReadDataset(args->measured);
     const drop::Diagnosis d = drop::RunDiagnosis(ds, o);
-    drop::WriteDiagnosis(d, ds, args->out);
+    drop::WriteDiagnosis(d, ds, out);
     const nlohmann::json j = drop::DiagnosisJson(d);
     std::cout << nlohmann::json{{"named_effect", j["named_effect"]},     {"decision", j["decision"]},
                                 {"gap_before", j["gap_before"]["force_nrmse"]}, {"gap_after", j["gap_after"]["force_nrmse"]},

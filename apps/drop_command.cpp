@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "apps/commands.h"
+#include "drop_tests/output_path.h"
 #include "drop_tests/model_file.h"
 #include "drop_tests/pad_drop.h"
 #include "rft/input_error.h"
@@ -73,6 +74,8 @@ void AddDropCommand(CLI::App& app) {
                            "--tilt-deg, --horizontal-speed and --omega need --free (the rig drop is vertical)");
     }
     drop::ValidateConditions(c, "command line");
+    const drop::OutputTarget trace(args->trace, {args->pad, args->soil, args->model});
+    if (!args->trace.empty()) drop::CheckOutputFile(trace);
     const drop::PadSpec pad = drop::LoadPad(args->pad);
     rft::SoilParameters soil = drop::LoadSoil(args->soil);
     if (!args->model.empty()) {
@@ -82,7 +85,7 @@ void AddDropCommand(CLI::App& app) {
       c.effects_source = args->model;
     }
     const drop::PadDrop result = drop::SimulateDrop(pad, soil, c, {});
-    if (!args->trace.empty()) drop::WriteTraceCsv(result, args->trace);
+    if (!args->trace.empty()) drop::WriteTraceCsv(result, trace);
     std::cout << drop::SummaryJson(result).dump(2) << std::endl;
   });
 }

@@ -2,6 +2,7 @@
 #include <memory>
 
 #include "apps/commands.h"
+#include "drop_tests/output_path.h"
 #include "drop_tests/sweep_export.h"
 
 namespace touchdown::app {
@@ -12,13 +13,15 @@ void AddExportCommand(CLI::App& app) {
   auto options = std::make_shared<drop::ExportOptions>();
   CLI::App* cmd = app.add_subcommand("export", "Write a sweep's results (DIR/results.sqlite) in the dataset format");
   cmd->add_option("dir", *dir, "sweep output directory")->required();
-  cmd->add_option("--to", *to, "dataset directory to write (replaced when complete)")->required();
+  cmd->add_option("--to", *to, "dataset directory: new, empty, or an earlier dataset touchdown wrote (replaced whole when complete)")->required();
   cmd->add_flag("--full-traces", options->full_traces,
                 "simulate every drop again for its full 1 kHz trace (default: stored traces; re-simulated if none)");
   cmd->add_option("--threads", options->threads, "threads for re-simulated traces (default: every core)")
       ->check(CLI::Range(0, 4096));
   cmd->callback([dir, to, options] {
-    const drop::ExportSummary s = drop::ExportSweep(*dir, *to, *options);
+    const drop::OutputTarget out(*to, {*dir});
+    drop::CheckOutputDirectory(out, drop::OutputKind::kDataset);
+    const drop::ExportSummary s = drop::ExportSweep(*dir, out, *options);
     std::cout << "exported " << s.exported << (s.lander ? " lander drops" : " drops") << " to " << *to
               << (s.lander ? "/ (lander_drops.csv)" : "/ (drops.csv, traces/)");
     if (s.resimulated > 0) std::cout << "; " << s.resimulated << " traces simulated again";

@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "apps/commands.h"
+#include "drop_tests/output_path.h"
 #include "drop_tests/sweep.h"
 #include "drop_tests/sweep_mpi.h"
 #include "rft/input_error.h"
@@ -52,6 +53,7 @@ void AddSweepCommand(CLI::App& app) {
                                                    : drop::ProgressMode::kAuto;
     drop::SweepPlan plan = drop::LoadSweepPlan(args->sweep, args->model);
     if (max_wall_given) plan.rig.integrator.max_wall_time_s = args->max_drop_wall_time_s;
+    drop::OpenOutputDirectory({args->out, {args->sweep, args->model}}, drop::OutputKind::kSweep);
     int rank = 0;
     const drop::SweepRunSummary s = drop::LaunchedByMpirun() ? drop::RunSweepMpi(plan, args->out, options, &rank)
                                                              : drop::RunSweep(plan, args->out, options);

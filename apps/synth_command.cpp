@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "apps/commands.h"
+#include "drop_tests/output_path.h"
 #include "drop_tests/synth.h"
 
 namespace touchdown::app {
@@ -18,11 +19,13 @@ void AddSynthCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "synth", "Make a SYNTHETIC measured-like dataset (noise, drift, quantisation; optionally a hidden effect)");
   cmd->add_option("spec", args->spec, "synth spec YAML (see docs/model_gap.md)")->required();
-  cmd->add_option("--out", args->out, "dataset directory to write (replaced when complete)")->required();
+  cmd->add_option("--out", args->out, "dataset directory: new, empty, or an earlier dataset touchdown wrote (replaced whole when complete)")->required();
   cmd->callback([args] {
+    const drop::OutputTarget out(args->out, {args->spec});
+    drop::CheckOutputDirectory(out, drop::OutputKind::kDataset);
     const drop::SynthSpec spec = drop::LoadSynthSpec(args->spec);
     const drop::Dataset ds = drop::Synthesize(spec);
-    drop::WriteSyntheticDataset(spec, ds, args->out);
+    drop::WriteSyntheticDataset(spec, ds, out);
     std::cout << "wrote SYNTHETIC dataset " << args->out << " (" << ds.drops.size() << " drops"
               << (spec.hidden_effect ? ", hidden effect " + spec.hidden_effect->id
                                      : spec.floor ? std::string(", hidden floor_stiffening") : std::string())

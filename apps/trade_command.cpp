@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "apps/commands.h"
+#include "drop_tests/output_path.h"
 #include "drop_tests/sweep.h"
 #include "drop_tests/trade.h"
 
@@ -27,6 +28,7 @@ void AddTradeCommand(CLI::App& app) {
   cmd->callback([args] {
     const drop::SweepPlan plan = drop::LoadSweepPlan(args->sweep, args->model);
     drop::CheckTradePlan(plan);  // before anything runs or is written
+    drop::OpenOutputDirectory({args->out, {args->sweep, args->model}}, drop::OutputKind::kSweep);
     drop::SweepRunOptions options;
     options.threads = args->threads;
     options.progress = drop::ProgressMode::kNone;

@@ -9,7 +9,7 @@
 #include <sstream>
 #include <unistd.h>
 
-#include "drop_tests/atomic_file.h"
+#include "drop_tests/output_path.h"
 #include "drop_tests/campaign_plots.h"
 #include "drop_tests/yaml_fields.h"
 #include "rft/input_error.h"
@@ -169,8 +169,8 @@ std::vector<CheckOutcome> EvaluateChecks(const CampaignResult& r) {
   return out;
 }
 
-void WriteCampaignOutputs(const CampaignResult& r, const std::string& out_dir) {
-  WriteStagedDirectory(out_dir, [&](const std::string& staging_dir) {
+void WriteCampaignOutputs(const CampaignResult& r, const OutputTarget& out) {
+  WriteOutputDirectory(out, OutputKind::kCampaign, [&](const std::string& staging_dir) {
     const fs::path staging = staging_dir;
     fs::create_directories(staging / "traces");
     nlohmann::json drops = nlohmann::json::array();

@@ -55,6 +55,6 @@ std::vector<CheckOutcome> EvaluateChecks(const CampaignResult& result);
 void WriteResolvedScenario(const CampaignScenario& scenario, const std::string& path);
 // Writes summary.csv, summary.json, traces/, plots/ and scenario_resolved.yaml into a fresh
 // directory that appears at `out_dir` only when complete (replacing an older one).
-void WriteCampaignOutputs(const CampaignResult& result, const std::string& out_dir);
+void WriteCampaignOutputs(const CampaignResult& result, const OutputTarget& out);
 
 }  // namespace touchdown::drop

@@ -1,17 +1,17 @@
 #include "drop_tests/campaign_plots.h"
 
+#include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <functional>
 #include <iomanip>
-#include <iostream>
 #include <map>
 #include <sstream>
 #include <vector>
 
-#include "drop_tests/atomic_file.h"
+#include "drop_tests/output_path.h"
 #include "drop_tests/campaign.h"
+#include "drop_tests/plot_runner.h"
 
 namespace touchdown::drop {
 
@@ -26,11 +26,12 @@ struct Line {
 
 // One gnuplot `plot` command over traces; `columns` gives the using-clause of a line.
 std::string PlotLines(const std::vector<Line>& lines, const std::function<std::string(const Line&)>& columns) {
+  if (lines.empty()) return PlaceholderPlot("no drop to plot");
   std::ostringstream s;
   s << "plot ";
   for (size_t i = 0; i < lines.size(); ++i)
-    s << (i ? ", \\\n     " : "") << "'" << lines[i].trace << "' using " << columns(lines[i])
-      << " with lines lw 2 title '" << lines[i].title << "'";
+    s << (i ? ", \\\n     " : "") << GnuplotQuote(lines[i].trace) << " using " << columns(lines[i])
+      << " with lines lw 2 title " << GnuplotQuote(lines[i].title);
   return s.str() + "\n";
 }
 
@@ -107,15 +108,20 @@ void WriteCampaignPlots(const CampaignResult& r, const std::string& out_dir) {
      << "set multiplot layout 2,1 title 'Peak force and final penetration per case'\n"
      << "set style data histograms\nset style histogram clustered gap 1\nset style fill solid 0.8 border -1\n"
      << "set key top left\nset xtics rotate by -20\nset yrange [0:*]\nset xrange [-0.6:" << cases.size() - 0.4
-     << "]\nset ylabel 'peak force [N]'\nplot ";
-  for (size_t k = 0; k < speeds.size(); ++k)
-    gp << (k ? ", " : "") << "'plots/peaks.csv' skip 1 using " << 2 + 2 * k << (k ? "" : ":xtic(1)") << " title '"
-       << speeds[k] << " m/s'";
-  gp << "\nset ylabel 'final penetration [mm]'\nplot ";
-  for (size_t k = 0; k < speeds.size(); ++k)
-    gp << (k ? ", " : "") << "'plots/peaks.csv' skip 1 using " << 3 + 2 * k << (k ? "" : ":xtic(1)") << " title '"
-       << speeds[k] << " m/s'";
-  gp << "\nunset multiplot\nunset style\nset xtics norotate\nset yrange [*:*]\n";
+     << "]\nset ylabel 'peak force [N]'\n";
+  for (const int column : {2, 3}) {  // peak force, final penetration
+    if (column == 3) gp << "set ylabel 'final penetration [mm]'\n";
+    if (speeds.empty()) {
+      gp << PlaceholderPlot("no drop to plot");
+      continue;
+    }
+    gp << "plot ";
+    for (size_t k = 0; k < speeds.size(); ++k)
+      gp << (k ? ", " : "") << "'plots/peaks.csv' skip 1 using " << column + 2 * k << (k ? "" : ":xtic(1)")
+         << " title '" << speeds[k] << " m/s'";
+    gp << "\n";
+  }
+  gp << "unset multiplot\nunset style\nset xtics norotate\nset yrange [*:*]\n";
 
   // Fig. 6: force against penetration - (a) the pads on the most used soil, (b) one pad on each soil.
   std::string main_soil;
@@ -134,20 +140,13 @@ void WriteCampaignPlots(const CampaignResult& r, const std::string& out_dir) {
   gp << Header("fig6_force_penetration.png", 1000, 800)
      << "set multiplot layout 2,1 title 'Force against penetration (RFT stroke at " << speed.str() << " m/s)'\n"
      << "set key top left\nset xlabel 'penetration [mm]'\nset ylabel 'force [N]'\n"
-     << "set title '(a) influence of footpad shape, " << main_soil << "'\n"
-     << PlotLines(by_pad, stroke_only) << "set title '(b) influence of ground condition, " << first_pad << " pad'\n"
+     << "set title " << GnuplotQuote("(a) influence of footpad shape, " + main_soil) << "\n"
+     << PlotLines(by_pad, stroke_only) << "set title "
+     << GnuplotQuote("(b) influence of ground condition, " + first_pad + " pad") << "\n"
      << PlotLines(by_soil, stroke_only) << "unset multiplot\n";
 
-  const fs::path script = dir / "plots" / "campaign.gp";
-  WriteFileAtomically(script.string(), [&](std::ostream& out) { out << gp.str(); });
-  if (std::system("command -v gnuplot >/dev/null 2>&1") != 0) {
-    std::cerr << "warning: gnuplot not found; plot script left in " << script.string() << "\n";
-    return;
-  }
-  const std::string command = "cd '" + dir.string() + "' && gnuplot plots/campaign.gp 2>plots/gnuplot.log";
-  if (std::system(command.c_str()) != 0)
-    throw std::runtime_error("gnuplot failed; see " + (dir / "plots" / "gnuplot.log").string());
-  fs::remove(dir / "plots" / "gnuplot.log");
+  RenderPlots(dir, {"plots/campaign.gp", gp.str(),
+                    {"plots/fig3_time_histories.png", "plots/fig4_peaks.png", "plots/fig6_force_penetration.png"}});
 }
 
 }  // namespace touchdown::drop

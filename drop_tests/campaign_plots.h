@@ -3,8 +3,8 @@
 //   fig3_time_histories.png  force and penetration against time at the reference speed (Fig. 3)
 //   fig4_peaks.png           peak force and final penetration per case and speed (Fig. 4)
 //   fig6_force_penetration.png  force against penetration: pads on one soil, one pad on each soil (Fig. 6)
-// The gnuplot scripts stay in plots/ so a user can restyle and re-render them. Without
-// gnuplot on the PATH the scripts are still written and a warning goes to stderr.
+// The gnuplot script stays in plots/ so a user can restyle and re-render it. Rendered by
+// RenderPlots (plot_runner.h): without gnuplot, or when a PNG cannot be written whole, it throws.
 #include <string>
 
 namespace touchdown::drop {

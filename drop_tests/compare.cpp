@@ -10,11 +10,12 @@
 #include <numbers>
 #include <nlohmann/json.hpp>
 
-#include "drop_tests/atomic_file.h"
+#include "drop_tests/output_path.h"
 #include "drop_tests/calibrate.h"
-#include "drop_tests/compare_gnuplot.h"
 #include "drop_tests/dataset_csv.h"
 #include "drop_tests/pad_drop.h"
+#include "drop_tests/plot_decimation.h"
+#include "drop_tests/plot_runner.h"
 #include "rft/input_error.h"
 
 namespace touchdown::drop {
@@ -288,9 +289,9 @@ nlohmann::json ComparisonJson(const Comparison& c) {
 }
 
 void WriteComparison(const Comparison& c, const Dataset& measured, const Dataset& simulated,
-                     const std::vector<const DatasetDrop*>& partners, bool write_simulated, const std::string& out_dir) {
+                     const std::vector<const DatasetDrop*>& partners, bool write_simulated, const OutputTarget& out) {
   const nlohmann::json summary = ComparisonJson(c);
-  WriteStagedDirectory(out_dir, [&](const std::string& staging) {
+  WriteOutputDirectory(out, OutputKind::kComparison, [&](const std::string& staging) {
     const fs::path dir = staging;
     WriteFileAtomically((dir / "summary.json").string(), [&](std::ostream& out) { out << summary.dump(2) << '\n'; });
     WriteFileAtomically((dir / "per_drop.csv").string(), [&](std::ostream& out) {
@@ -305,19 +306,22 @@ void WriteComparison(const Comparison& c, const Dataset& measured, const Dataset
             << FormatNumber(d.peak_force_rel_error) << ',' << FormatNumber(d.force_nrmse_time.value) << ','
             << FormatNumber(d.force_nrmse_penetration.value) << '\n';
     });
-    // Plot data: each pair's traces copied beside the script, so the plots re-render anywhere.
+    // Plot data: each pair's traces copied beside the script, so the plots re-render anywhere;
+    // decimated (plot_decimation.h) so a long trace is drawn from a few thousand rows.
     fs::create_directories(dir / "plots" / "data");
     std::string gp = "set terminal pngcairo size 1100,450 font 'sans,10'\nset termoption noenhanced\n"
                      "set datafile separator ','\nset grid\nset key top right\n";
+    PlotScript script{"plots/compare.gp", "", {}};
     for (size_t i = 0; i < measured.drops.size(); ++i) {
       const DatasetDrop& m = measured.drops[i];
       const DatasetDrop& s = *partners[i];
       for (const auto& [tag, drop] : {std::pair<const char*, const DatasetDrop*>{"measured", &m}, {"simulated", &s}})
         WriteFileAtomically((dir / "plots" / "data" / (m.drop_id + "_" + tag + ".csv")).string(), [&, drop = drop](std::ostream& out) {
+          const DatasetTrace& t = drop->trace;
           out << "t_s,penetration_m,force_N\n";
-          for (size_t k = 0; k < drop->trace.size(); ++k)
-            out << FormatNumber(drop->trace.t_s[k]) << ',' << FormatNumber(drop->trace.penetration_m[k]) << ','
-                << FormatNumber(drop->trace.force_N[k]) << '\n';
+          for (const size_t k : PlotRowsToKeep(t.size(), {t.t_s, t.penetration_m, t.force_N}))
+            out << FormatNumber(t.t_s[k]) << ',' << FormatNumber(t.penetration_m[k]) << ',' << FormatNumber(t.force_N[k])
+                << '\n';
         });
       const std::string meas = GnuplotQuote("plots/data/" + m.drop_id + "_measured.csv");
       const std::string sim = GnuplotQuote("plots/data/" + m.drop_id + "_simulated.csv");
@@ -329,12 +333,14 @@ void WriteComparison(const Comparison& c, const Dataset& measured, const Dataset
             " using ($1*1000):3 skip 1 with lines lw 2 title 'simulated'\n"
             "set xlabel 'penetration [mm]'\nplot " + meas + " using ($2*1000):3 skip 1 with points pt 7 ps 0.4 title "
             "'measured', " + sim + " using ($2*1000):3 skip 1 with lines lw 2 title 'simulated'\nunset multiplot\n";
+      script.outputs.push_back("plots/" + m.drop_id + ".png");
     }
-    WriteFileAtomically((dir / "plots" / "compare.gp").string(), [&](std::ostream& out) { out << gp; });
+    script.text = gp;
     if (write_simulated) {
-      WriteDataset(simulated, (dir / "simulated").string());
+      fs::create_directories(dir / "simulated");
+      WriteDatasetFiles(simulated, (dir / "simulated").string());
     }
-    RunGnuplot(staging, "plots/compare.gp");
+    RenderPlots(dir, script);
   });
 }
 

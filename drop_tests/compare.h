@@ -89,8 +89,9 @@ Comparison CompareDrops(const Dataset& measured, const std::vector<const Dataset
 nlohmann::json ComparisonJson(const Comparison& c);
 // out_dir (replaced when complete): summary.json, per_drop.csv, simulated/ (when simulated here),
 // plots/compare.gp and plots/<drop_id>.png (measured over simulated: force against time and
-// against penetration).
+// against penetration) drawn by RenderPlots (plot_runner.h) from plots/data/, the traces
+// decimated for plotting (plot_decimation.h).
 void WriteComparison(const Comparison& c, const Dataset& measured, const Dataset& simulated,
-                     const std::vector<const DatasetDrop*>& partners, bool write_simulated, const std::string& out_dir);
+                     const std::vector<const DatasetDrop*>& partners, bool write_simulated, const OutputTarget& out);
 
 }  // namespace touchdown::drop

@@ -5,7 +5,7 @@
 #include <fstream>
 #include <set>
 
-#include "drop_tests/atomic_file.h"
+#include "drop_tests/output_path.h"
 #include "drop_tests/catalog.h"
 #include "drop_tests/dataset_csv.h"
 #include "rft/input_error.h"
@@ -178,7 +178,7 @@ Dataset ReadDataset(const std::string& directory, const DatasetReadOptions& opti
   return ds;
 }
 
-void WriteDataset(const Dataset& ds, const std::string& directory) {
+void WriteDatasetFiles(const Dataset& ds, const std::string& directory) {
   bool any_final = false, any_peak = false;
   std::set<std::string> ids;
   for (const DatasetDrop& d : ds.drops) {
@@ -189,46 +189,50 @@ void WriteDataset(const Dataset& ds, const std::string& directory) {
     if (!ids.insert(d.drop_id).second) throw MakeInputError(directory, "drop_id", "duplicate drop id '" + d.drop_id + "'");
     if (d.extra.size() != ds.extra_columns.size())
       throw MakeInputError(directory, "drop " + d.drop_id, "extra cells do not match the extra columns");
-    if (d.trace_file.empty() || fs::path(d.trace_file).is_absolute())
-      throw MakeInputError(directory, "drop " + d.drop_id, "trace path must be relative");
+    if (d.trace_file.empty() || fs::path(d.trace_file).is_absolute() ||
+        fs::path(d.trace_file).lexically_normal().string().rfind("..", 0) == 0)
+      throw MakeInputError(directory, "drop " + d.drop_id, "trace path must be relative and inside the dataset");
     for (const std::string& s : {d.drop_id, d.pad, d.soil, d.trace_file})
       if (s.find_first_of(",\n\r") != std::string::npos)
         throw MakeInputError(directory, "drop " + d.drop_id, "a name or path contains a comma or line break: " + s);
   }
-  WriteStagedDirectory(directory, [&](const std::string& staging) {
-    WriteFileAtomically((fs::path(staging) / "drops.csv").string(), [&](std::ostream& out) {
-      for (size_t i = 0; i < kDatasetDropColumns.size(); ++i) out << (i ? "," : "") << kDatasetDropColumns[i];
-      if (any_final) out << ",final_penetration_m";
-      if (any_peak) out << ",peak_force_N";
-      for (const std::string& c : ds.extra_columns) out << ',' << c;
+  WriteFileAtomically((fs::path(directory) / "drops.csv").string(), [&](std::ostream& out) {
+    for (size_t i = 0; i < kDatasetDropColumns.size(); ++i) out << (i ? "," : "") << kDatasetDropColumns[i];
+    if (any_final) out << ",final_penetration_m";
+    if (any_peak) out << ",peak_force_N";
+    for (const std::string& c : ds.extra_columns) out << ',' << c;
+    out << '\n';
+    for (const DatasetDrop& d : ds.drops) {
+      out << d.drop_id << ',' << d.pad << ',' << d.soil << ',' << d.atmosphere << ','
+          << FormatNumber(d.impact_speed_m_s) << ',' << FormatNumber(d.pad_mass_kg) << ','
+          << FormatNumber(d.gravity_m_s2) << ',' << d.trace_file;
+      if (any_final) out << ',' << (d.final_penetration_m ? FormatNumber(*d.final_penetration_m) : "");
+      if (any_peak) out << ',' << (d.peak_force_N ? FormatNumber(*d.peak_force_N) : "");
+      for (const std::string& cell : d.extra) out << ',' << cell;
       out << '\n';
-      for (const DatasetDrop& d : ds.drops) {
-        out << d.drop_id << ',' << d.pad << ',' << d.soil << ',' << d.atmosphere << ','
-            << FormatNumber(d.impact_speed_m_s) << ',' << FormatNumber(d.pad_mass_kg) << ','
-            << FormatNumber(d.gravity_m_s2) << ',' << d.trace_file;
-        if (any_final) out << ',' << (d.final_penetration_m ? FormatNumber(*d.final_penetration_m) : "");
-        if (any_peak) out << ',' << (d.peak_force_N ? FormatNumber(*d.peak_force_N) : "");
-        for (const std::string& cell : d.extra) out << ',' << cell;
+    }
+  });
+  for (const DatasetDrop& d : ds.drops) {
+    const fs::path path = fs::path(directory) / d.trace_file;
+    fs::create_directories(path.parent_path());
+    const DatasetTrace& tr = d.trace;
+    WriteFileAtomically(path.string(), [&](std::ostream& out) {
+      out << "t_s,penetration_m,force_N";
+      for (const std::string& c : tr.extra_columns) out << ',' << c;
+      out << '\n';
+      for (size_t i = 0; i < tr.size(); ++i) {
+        out << FormatNumber(tr.t_s[i]) << ',' << FormatNumber(tr.penetration_m[i]) << ','
+            << FormatNumber(tr.force_N[i]);
+        for (const auto& column : tr.extra) out << ',' << FormatNumber(column[i]);
         out << '\n';
       }
     });
-    for (const DatasetDrop& d : ds.drops) {
-      const fs::path path = fs::path(staging) / d.trace_file;
-      fs::create_directories(path.parent_path());
-      const DatasetTrace& tr = d.trace;
-      WriteFileAtomically(path.string(), [&](std::ostream& out) {
-        out << "t_s,penetration_m,force_N";
-        for (const std::string& c : tr.extra_columns) out << ',' << c;
-        out << '\n';
-        for (size_t i = 0; i < tr.size(); ++i) {
-          out << FormatNumber(tr.t_s[i]) << ',' << FormatNumber(tr.penetration_m[i]) << ','
-              << FormatNumber(tr.force_N[i]);
-          for (const auto& column : tr.extra) out << ',' << FormatNumber(column[i]);
-          out << '\n';
-        }
-      });
-    }
-  });
+  }
+}
+
+void WriteDataset(const Dataset& dataset, const OutputTarget& target) {
+  WriteOutputDirectory(target, OutputKind::kDataset,
+                       [&](const std::string& staging) { WriteDatasetFiles(dataset, staging); });
 }
 
 }  // namespace touchdown::drop

@@ -19,6 +19,8 @@
 #include <string>
 #include <vector>
 
+#include "drop_tests/output_path.h"
+
 namespace touchdown::drop {
 
 // The required drops.csv columns, in the order the writer uses.
@@ -83,8 +85,10 @@ struct DatasetReadOptions {
 std::string DropIdProblem(const std::string& id);
 
 Dataset ReadDataset(const std::string& directory, const DatasetReadOptions& options = {});
-// Writes drops.csv and every trace into `directory` (replaced if it exists) through a staged
-// directory. Throws InputError on a drop that could not be read back (bad id, path, numbers).
-void WriteDataset(const Dataset& dataset, const std::string& directory);
+// Writes drops.csv and every trace as one whole output (drop_tests/output_path.h). Throws
+// InputError on a drop that could not be read back (bad id, path, numbers).
+void WriteDataset(const Dataset& dataset, const OutputTarget& target);
+// The same, into `directory` of an output being written (e.g. a comparison's simulated/).
+void WriteDatasetFiles(const Dataset& dataset, const std::string& directory);
 
 }  // namespace touchdown::drop

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "drop_tests/atomic_file.h"
+#include "drop_tests/output_path.h"
 
 namespace touchdown::drop {
 

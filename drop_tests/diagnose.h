@@ -108,6 +108,6 @@ Diagnosis RunDiagnosis(const Dataset& measured, const DiagnoseOptions& options =
 nlohmann::json DiagnosisJson(const Diagnosis& d);
 // DIR (replaced when complete): model.yaml, diagnosis.json, report.md, per_drop.csv, data/,
 // plots/ (PNG via gnuplot when installed, with the script).
-void WriteDiagnosis(const Diagnosis& d, const Dataset& measured, const std::string& out_dir);
+void WriteDiagnosis(const Diagnosis& d, const Dataset& measured, const OutputTarget& out);
 
 }  // namespace touchdown::drop

@@ -7,9 +7,11 @@
 #include <iostream>
 #include <sstream>
 
-#include "drop_tests/atomic_file.h"
+#include "drop_tests/output_path.h"
 #include "drop_tests/dataset_csv.h"
 #include "drop_tests/diagnose.h"
+#include "drop_tests/plot_decimation.h"
+#include "drop_tests/plot_runner.h"
 
 namespace touchdown::drop {
 
@@ -119,10 +121,10 @@ nlohmann::json DiagnosisJson(const Diagnosis& d) {
   return j;
 }
 
-void WriteDiagnosis(const Diagnosis& d, const Dataset& ds, const std::string& out_dir) {
+void WriteDiagnosis(const Diagnosis& d, const Dataset& ds, const OutputTarget& out) {
   const CandidateScore* shown = Shown(d);
   const CandidateScore& after = d.winner >= 0 ? d.candidates[d.winner] : d.base;
-  WriteStagedDirectory(out_dir, [&](const std::string& staging) {
+  WriteOutputDirectory(out, OutputKind::kDiagnosis, [&](const std::string& staging) {
     const fs::path dir = staging;
     fs::create_directories(dir / "data");
     fs::create_directories(dir / "plots");
@@ -194,10 +196,18 @@ void WriteDiagnosis(const Diagnosis& d, const Dataset& ds, const std::string& ou
       const DatasetDrop& m = ds.drops[f.dataset_index];
       const std::optional<DatasetTrace> b = SimulateRecorded(d.problem, f, d.base.fit);
       const std::optional<DatasetTrace> a = shown ? SimulateRecorded(d.problem, f, shown->fit) : b;
+      // Decimated (plot_decimation.h) on the six plotted columns: a long trace plots from a few
+      // thousand rows.
+      const auto plotted = [&](size_t k, size_t column) {
+        const std::optional<DatasetTrace>& sim = column % 3 == 1 ? b : a;
+        if (column % 3 == 0) return column == 0 ? m.trace.force_N[k] : m.trace.penetration_m[k];
+        if (!sim) return std::nan("");
+        return column < 3 ? sim->force_N[k] : sim->penetration_m[k];
+      };
       WriteFileAtomically((dir / "data" / (m.drop_id + ".csv")).string(), [&](std::ostream& out) {
         out << "t_s,force_measured_N,force_base_N,force_augmented_N,penetration_measured_m,penetration_base_m,"
                "penetration_augmented_m\n";
-        for (size_t k = 0; k < m.trace.size(); ++k)
+        for (const size_t k : PlotRowsToKeep(m.trace.size(), 6, plotted))
           out << FormatNumber(m.trace.t_s[k]) << ',' << FormatNumber(m.trace.force_N[k]) << ','
               << (b ? FormatNumber(b->force_N[k]) : "nan") << ',' << (a ? FormatNumber(a->force_N[k]) : "nan") << ','
               << FormatNumber(m.trace.penetration_m[k]) << ',' << (b ? FormatNumber(b->penetration_m[k]) : "nan") << ','
@@ -211,7 +221,10 @@ void WriteDiagnosis(const Diagnosis& d, const Dataset& ds, const std::string& ou
       const std::optional<DatasetTrace> b = SimulateRecorded(d.problem, f, d.base.fit);
       const std::optional<DatasetTrace> a = shown ? SimulateRecorded(d.problem, f, shown->fit) : b;
       if (!a || !b) continue;
-      for (size_t k = 0; k < m.trace.size(); ++k)
+      const auto residual = [&](size_t k, size_t column) {
+        return ((column == 0 ? *b : *a).force_N[k] - m.trace.force_N[k]) / f.force_scale_N;
+      };
+      for (const size_t k : PlotRowsToKeep(m.trace.size(), 2, residual))
         residual_rows << FormatNumber(m.trace.t_s[k]) << ',' << FormatNumber((b->force_N[k] - m.trace.force_N[k]) / f.force_scale_N)
                       << ',' << FormatNumber((a->force_N[k] - m.trace.force_N[k]) / f.force_scale_N) << ','
                       << m.atmosphere << '\n';
@@ -226,12 +239,12 @@ void WriteDiagnosis(const Diagnosis& d, const Dataset& ds, const std::string& ou
     std::ostringstream gp;
     gp << "set terminal pngcairo size 1200,800 font 'sans,10'\nset termoption noenhanced\nset datafile separator ','\n"
        << "set grid\nset key top right\n";
-    gp << "set output 'plots/overlays_force_time.png'\nset multiplot layout 2,3 title 'Held-out drops: measured, base and "
-       << aug_title << " (force against time)'\n";
+    gp << "set output 'plots/overlays_force_time.png'\nset multiplot layout 2,3 title "
+       << GnuplotQuote("Held-out drops: measured, base and " + aug_title + " (force against time)") << "\n";
     for (size_t i : held) {
       const std::string id = ds.drops[d.problem.drops[i].dataset_index].drop_id;
-      gp << "set title '" << id << "'\nset xlabel 't [ms]'\nset ylabel 'force [N]'\n"
-         << "plot 'data/" << id << ".csv' using ($1*1000):2 with points pt 7 ps 0.3 lc rgb 'gray50' title 'measured', "
+      gp << "set title " << GnuplotQuote(id) << "\nset xlabel 't [ms]'\nset ylabel 'force [N]'\n"
+         << "plot " << GnuplotQuote("data/" + id + ".csv") << " using ($1*1000):2 with points pt 7 ps 0.3 lc rgb 'gray50' title 'measured', "
          << "'' using ($1*1000):3 with lines lw 2 lc rgb 'blue' title 'base', '' using ($1*1000):4 with lines lw 2 "
             "lc rgb 'red' title 'augmented'\n";
     }
@@ -240,29 +253,30 @@ void WriteDiagnosis(const Diagnosis& d, const Dataset& ds, const std::string& ou
           "penetration'\n";
     for (size_t i : held) {
       const std::string id = ds.drops[d.problem.drops[i].dataset_index].drop_id;
-      gp << "set title '" << id << "'\nset xlabel 'penetration [mm]'\nset ylabel 'force [N]'\n"
-         << "plot 'data/" << id << ".csv' using ($5*1000):2 with points pt 7 ps 0.3 lc rgb 'gray50' title 'measured', "
+      gp << "set title " << GnuplotQuote(id) << "\nset xlabel 'penetration [mm]'\nset ylabel 'force [N]'\n"
+         << "plot " << GnuplotQuote("data/" + id + ".csv") << " using ($5*1000):2 with points pt 7 ps 0.3 lc rgb 'gray50' title 'measured', "
          << "'' using ($6*1000):3 with lines lw 2 lc rgb 'blue' title 'base', '' using ($7*1000):4 with lines lw 2 "
             "lc rgb 'red' title 'augmented'\n";
     }
     gp << "unset multiplot\n";
+    // No held-out drop simulated: the residual panels say so (a plot of no data is a gnuplot error).
+    const bool residuals = !residual_rows.str().empty();
+    const std::string no_residuals = PlaceholderPlot("no held-out drop could be simulated");
     gp << "set output 'plots/residuals.png'\nset multiplot layout 1,2 title 'Held-out force residual (simulated - measured) "
           "/ measured peak'\nset xlabel 't [ms]'\nset ylabel 'normalised residual'\n"
-       << "set title 'base'\nplot 'data/residuals_held_out.csv' using ($1*1000):2 with lines lc rgb 'blue' notitle\n"
-       << "set title '" << aug_title << "'\nplot 'data/residuals_held_out.csv' using ($1*1000):3 with lines lc rgb 'red' "
-          "notitle\nunset multiplot\n";
+       << "set title 'base'\n"
+       << (residuals ? "plot 'data/residuals_held_out.csv' using ($1*1000):2 with lines lc rgb 'blue' notitle\n"
+                     : no_residuals)
+       << "set title " << GnuplotQuote(aug_title) << "\n"
+       << (residuals ? "plot 'data/residuals_held_out.csv' using ($1*1000):3 with lines lc rgb 'red' notitle\n"
+                     : no_residuals)
+       << "unset multiplot\n";
     gp << "set output 'plots/gap_per_drop.png'\nset style data histograms\nset style histogram clustered\nset style fill "
           "solid 0.8\nset xtics rotate by -45\nset ylabel 'force NRMSE'\nset title 'Force NRMSE per drop, before and after'\n"
        << "plot 'per_drop.csv' using 7:xtic(1) title 'base', '' using 8 title 'after'\n";
-    WriteFileAtomically((dir / "plots" / "diagnose.gp").string(), [&](std::ostream& out) { out << gp.str(); });
-    bool plotted = false;
-    if (std::system("command -v gnuplot >/dev/null 2>&1") == 0) {
-      const std::string cmd = "cd '" + dir.string() + "' && gnuplot plots/diagnose.gp 2>plots/gnuplot.log";
-      plotted = std::system(cmd.c_str()) == 0;
-      if (plotted) fs::remove(dir / "plots" / "gnuplot.log");
-    } else {
-      std::cerr << "warning: gnuplot not found; plot script left in plots/diagnose.gp\n";
-    }
+    RenderPlots(dir, {"plots/diagnose.gp", gp.str(),
+                      {"plots/overlays_force_time.png", "plots/overlays_force_penetration.png", "plots/residuals.png",
+                       "plots/gap_per_drop.png"}});
 
     // 5: the report.
     WriteFileAtomically((dir / "report.md").string(), [&](std::ostream& out) {
@@ -332,12 +346,9 @@ void WriteDiagnosis(const Diagnosis& d, const Dataset& ds, const std::string& ou
               << (f.significant ? "yes" : "no") << " |\n";
         out << "\n";
       }
-      if (plotted)
-        out << "![force against time](plots/overlays_force_time.png)\n\n![force against penetration]"
-               "(plots/overlays_force_penetration.png)\n\n![residuals](plots/residuals.png)\n\n![gap per drop]"
-               "(plots/gap_per_drop.png)\n\n";
-      else
-        out << "(gnuplot was not available: run `gnuplot plots/diagnose.gp` in this directory for the figures.)\n\n";
+      out << "![force against time](plots/overlays_force_time.png)\n\n![force against penetration]"
+             "(plots/overlays_force_penetration.png)\n\n![residuals](plots/residuals.png)\n\n![gap per drop]"
+             "(plots/gap_per_drop.png)\n\n";
       out << "Run: " << d.simulations << " simulated drops in " << Num(d.seconds, 3) << " s.\n";
     });
   });

@@ -3,7 +3,6 @@
 #include <iomanip>
 #include <nlohmann/json.hpp>
 
-#include "drop_tests/atomic_file.h"
 
 namespace touchdown::drop {
 
@@ -24,13 +23,11 @@ nlohmann::json FreeDropJson(const FreeDropResult& r) {
   };
 }
 
-void WriteFreeDropTraceCsv(const FreeDropResult& r, const std::string& path) {
-  WriteFileAtomically(path, [&](std::ostream& out) {
-    out << "t_s,penetration_m,velocity_m_s,force_N,force_x_N,horizontal_m,tilt_deg\n" << std::setprecision(10);
-    for (const FreeDropSample& s : r.trace)
-      out << s.t_s << ',' << s.penetration_m << ',' << s.velocity_m_s << ',' << s.force_N << ',' << s.force_x_N << ','
-          << s.horizontal_m << ',' << s.tilt_deg << '\n';
-  });
+void WriteFreeDropTraceCsv(const FreeDropResult& r, std::ostream& out) {
+  out << "t_s,penetration_m,velocity_m_s,force_N,force_x_N,horizontal_m,tilt_deg\n" << std::setprecision(10);
+  for (const FreeDropSample& s : r.trace)
+    out << s.t_s << ',' << s.penetration_m << ',' << s.velocity_m_s << ',' << s.force_N << ',' << s.force_x_N << ','
+        << s.horizontal_m << ',' << s.tilt_deg << '\n';
 }
 
 }  // namespace touchdown::drop

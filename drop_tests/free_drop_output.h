@@ -3,6 +3,7 @@
 // columns (t_s,penetration_m,velocity_m_s,force_N) so the dataset tools read it, then adds
 // force_x_N, horizontal_m and tilt_deg.
 #include <nlohmann/json_fwd.hpp>
+#include <ostream>
 #include <string>
 
 #include "drop_tests/free_drop.h"
@@ -10,6 +11,6 @@
 namespace touchdown::drop {
 
 nlohmann::json FreeDropJson(const FreeDropResult& result);
-void WriteFreeDropTraceCsv(const FreeDropResult& result, const std::string& path);
+void WriteFreeDropTraceCsv(const FreeDropResult& result, std::ostream& out);
 
 }  // namespace touchdown::drop

@@ -1,9 +1,9 @@
 #pragma once
-// PNG plots of a lander drop, drawn by gnuplot from trace.csv (as campaign_plots does):
+// PNG plots of a lander drop, drawn by gnuplot (RenderPlots, plot_runner.h):
 //   plots/penetration.png  depth of each pad's lowest point against time
 //   plots/attitude.png     roll, pitch and tilt of the body against time
-// The gnuplot script stays in plots/; without gnuplot on the PATH it is still written and a
-// warning goes to stderr.
+// from plots/data/trace.csv, the plotted columns of trace.csv decimated to a few thousand rows
+// (plot_decimation.h). The gnuplot script stays in plots/; a plotting failure throws.
 #include <string>
 
 namespace touchdown::drop {

@@ -10,7 +10,7 @@
 
 #include <Eigen/Eigenvalues>
 
-#include "drop_tests/atomic_file.h"
+#include "drop_tests/output_path.h"
 #include "drop_tests/dataset_csv.h"  // FormatNumber
 #include "drop_tests/lander_plots.h"
 #include "drop_tests/yaml_fields.h"
@@ -548,8 +548,8 @@ void WriteResolvedLanderScenario(const LanderScenario& s, const std::string& pat
   WriteFileAtomically(path, [&](std::ostream& out) { out << y.c_str() << '\n'; });
 }
 
-void WriteLanderOutputs(const LanderRun& run, const std::string& out_dir) {
-  WriteStagedDirectory(out_dir, [&](const std::string& staging_dir) {
+void WriteLanderOutputs(const LanderRun& run, const OutputTarget& out) {
+  WriteOutputDirectory(out, OutputKind::kLander, [&](const std::string& staging_dir) {
     const fs::path staging = staging_dir;
     WriteLanderTraceCsv(run, (staging / "trace.csv").string());
     WriteFileAtomically((staging / "events.csv").string(), [&](std::ostream& out) {

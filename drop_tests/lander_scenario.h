@@ -110,6 +110,6 @@ void WriteLanderTraceCsv(const LanderRun& run, const std::string& path);
 void WriteResolvedLanderScenario(const LanderScenario& scenario, const std::string& path);
 // summary.json, trace.csv, events.csv, scenario_resolved.yaml and plots/ into a staging
 // directory renamed to out_dir when complete.
-void WriteLanderOutputs(const LanderRun& run, const std::string& out_dir);
+void WriteLanderOutputs(const LanderRun& run, const OutputTarget& out);
 
 }  // namespace touchdown::drop

@@ -3,7 +3,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
-#include "drop_tests/atomic_file.h"
+#include "drop_tests/output_path.h"
 #include "drop_tests/dataset_csv.h"
 #include "drop_tests/effects.h"
 #include "drop_tests/yaml_fields.h"
@@ -72,7 +72,7 @@ ModelFile LoadModelFile(const std::string& path) {
   return m;
 }
 
-void WriteModelFile(const ModelFile& m, const std::string& path) {
+void WriteModelFile(const ModelFile& m, const OutputTarget& target) {
   YAML::Emitter y;
   y.SetDoublePrecision(10);
   y << YAML::BeginMap << YAML::Key << "schema_version" << YAML::Value << 1 << YAML::Key << "type" << YAML::Value
@@ -102,7 +102,7 @@ void WriteModelFile(const ModelFile& m, const std::string& path) {
   else y << YAML::Flow << YAML::BeginMap << YAML::EndMap;
   if (m.provenance && !m.provenance.IsNull()) y << YAML::Key << "provenance" << YAML::Value << m.provenance;
   y << YAML::EndMap;
-  WriteFileAtomically(path, [&](std::ostream& out) { out << y.c_str() << '\n'; });
+  WriteOutputFile(target, [&](std::ostream& out) { out << kModelFileMark << '\n' << y.c_str() << '\n'; }, kModelFileMark);
 }
 
 rft::SoilParameters ApplyModel(const ModelFile& m, const rft::SoilParameters& soil) {

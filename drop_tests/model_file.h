@@ -36,6 +36,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "drop_tests/effects.h"
+#include "drop_tests/output_path.h"
 #include "rft/soil.h"
 #include "rft/stress_law_3d.h"
 
@@ -70,7 +71,10 @@ struct ModelFile {
 };
 
 ModelFile LoadModelFile(const std::string& path);
-void WriteModelFile(const ModelFile& model, const std::string& path);
+// The first line of every model file touchdown writes: a file that starts with it may be replaced by
+// the next `calibrate --out`; any other file at that path is the user's and is never overwritten.
+inline constexpr const char* kModelFileMark = "# touchdown model file (written by touchdown; it may replace this file)";
+void WriteModelFile(const ModelFile& model, const OutputTarget& target);
 // The soil as the model sees it: its zeta replaced when the model has an override (converted to
 // the soil's own reference gravity). Effect terms are not part of the soil: see ModelEffectTerms.
 rft::SoilParameters ApplyModel(const ModelFile& model, const rft::SoilParameters& soil);

@@ -6,7 +6,7 @@
 #include <sstream>
 #include <nlohmann/json.hpp>
 
-#include "drop_tests/atomic_file.h"
+#include "drop_tests/output_path.h"
 #include "drop_tests/free_drop_output.h"
 #include "footpad_geom/axisymmetric_intrusion.h"
 #include "rft/ground.h"
@@ -201,17 +201,21 @@ nlohmann::json SummaryJson(const PadDrop& d) {
   return j;
 }
 
-void WriteTraceCsv(const RigDropResult& result, const std::string& path) {
-  WriteFileAtomically(path, [&](std::ostream& out) {
-    out << "t_s,penetration_m,velocity_m_s,force_N\n" << std::setprecision(10);
-    for (const DropSample& s : result.trace)
-      out << s.t_s << ',' << s.penetration_m << ',' << s.velocity_m_s << ',' << s.force_N << '\n';
-  });
+void WriteTraceCsv(const RigDropResult& result, std::ostream& out) {
+  out << "t_s,penetration_m,velocity_m_s,force_N\n" << std::setprecision(10);
+  for (const DropSample& s : result.trace)
+    out << s.t_s << ',' << s.penetration_m << ',' << s.velocity_m_s << ',' << s.force_N << '\n';
 }
 
-void WriteTraceCsv(const PadDrop& drop, const std::string& path) {
-  if (drop.free) WriteFreeDropTraceCsv(*drop.free, path);
-  else WriteTraceCsv(drop.result, path);
+void WriteTraceCsv(const RigDropResult& result, const std::string& path) {
+  WriteFileAtomically(path, [&](std::ostream& out) { WriteTraceCsv(result, out); });
+}
+
+void WriteTraceCsv(const PadDrop& drop, const OutputTarget& target) {
+  WriteOutputFile(target, [&](std::ostream& out) {
+    if (drop.free) WriteFreeDropTraceCsv(*drop.free, out);
+    else WriteTraceCsv(drop.result, out);
+  });
 }
 
 }  // namespace touchdown::drop

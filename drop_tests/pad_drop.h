@@ -6,6 +6,7 @@
 // SimulateDrop runs them.
 #include <Eigen/Core>
 #include <optional>
+#include <ostream>
 #include <string>
 
 #include <nlohmann/json_fwd.hpp>
@@ -13,6 +14,7 @@
 #include "drop_tests/catalog.h"
 #include "drop_tests/effects.h"
 #include "drop_tests/free_drop.h"
+#include "drop_tests/output_path.h"
 #include "drop_tests/rig_drop.h"
 
 namespace touchdown::geom {
@@ -99,7 +101,9 @@ PadDrop RunPadDrop(const PadSpec& pad, const rft::SoilParameters& soil, const Dr
 nlohmann::json SummaryJson(const PadDrop& drop);
 // Writes the trace as CSV: t_s,penetration_m,velocity_m_s,force_N (a free drop adds
 // force_x_N,horizontal_m,tilt_deg).
-void WriteTraceCsv(const RigDropResult& result, const std::string& path);
-void WriteTraceCsv(const PadDrop& drop, const std::string& path);
+void WriteTraceCsv(const RigDropResult& result, std::ostream& out);
+void WriteTraceCsv(const RigDropResult& result, const std::string& path);  // a file in a directory touchdown owns
+// The user's --trace file: a new file (touchdown never overwrites one it may not have written).
+void WriteTraceCsv(const PadDrop& drop, const OutputTarget& target);
 
 }  // namespace touchdown::drop

@@ -1,5 +1,7 @@
 #include "drop_tests/sweep.h"
 
+#include "drop_tests/output_path.h"
+
 #include <chrono>
 #include <cinttypes>
 #include <cmath>
@@ -57,7 +59,7 @@ Shard ParseShard(const std::string& text, const std::string& context) {
 }
 
 std::unique_ptr<ResultsDb> OpenSweepDb(const SweepPlan& plan, const std::string& out_dir, const Shard& shard) {
-  fs::create_directories(out_dir);
+  OpenOutputDirectory(out_dir, OutputKind::kSweep);
   auto db = std::make_unique<ResultsDb>(ResultsDbPath(out_dir));
   const std::string digest = PlanDigest(plan);
   const std::map<std::string, std::string> meta = db->Meta();
@@ -196,7 +198,7 @@ MergeSummary MergeSweepResults(const std::string& out_dir, const std::vector<std
                                             reference[key] + "'): not shards of one sweep");
     shards.push_back(std::move(db));
   }
-  fs::create_directories(out_dir);
+  OpenOutputDirectory(OutputTarget(out_dir, shard_dirs), OutputKind::kSweep);
   ResultsDb out(ResultsDbPath(out_dir));
   std::map<std::string, std::string> meta = out.Meta();
   if (meta.empty()) {

@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <map>
 
-#include "drop_tests/atomic_file.h"
+#include "drop_tests/output_path.h"
 #include "drop_tests/dataset_csv.h"
 #include "drop_tests/sweep.h"
 #include "drop_tests/sweep_drop.h"
@@ -195,7 +195,7 @@ void WriteFailedCsv(const std::vector<DropRecord>& failed, const std::string& pa
 
 // A lander sweep: its summaries as lander_drops.csv (successful drops) and failed.csv.
 ExportSummary ExportLanderSweep(const std::string& db_path, const std::vector<DropRecord>& records,
-                                const std::string& dataset_dir) {
+                                const OutputTarget& dataset_dir) {
   ExportSummary summary;
   summary.lander = true;
   std::vector<DropRecord> failed;
@@ -213,7 +213,7 @@ ExportSummary ExportLanderSweep(const std::string& db_path, const std::vector<Dr
   }
   if (summary.exported == 0) throw MakeInputError(db_path, "", "no successful drops to export");
   summary.failed = static_cast<int64_t>(failed.size());
-  WriteStagedDirectory(dataset_dir, [&](const std::string& staging) {
+  WriteOutputDirectory(dataset_dir, OutputKind::kDataset, [&](const std::string& staging) {
     WriteFileAtomically((fs::path(staging) / "lander_drops.csv").string(), [&](std::ostream& out) {
       for (size_t i = 0; i < kLanderExportColumns.size(); ++i) out << (i ? "," : "") << kLanderExportColumns[i];
       out << '\n';
@@ -240,7 +240,7 @@ ExportSummary ExportLanderSweep(const std::string& db_path, const std::vector<Dr
 }
 }  // namespace
 
-ExportSummary ExportSweep(const std::string& sweep_dir, const std::string& dataset_dir, const ExportOptions& options) {
+ExportSummary ExportSweep(const std::string& sweep_dir, const OutputTarget& dataset_dir, const ExportOptions& options) {
   {
     const std::string db_path = ResultsDbPath(sweep_dir);
     RequireResultsFile(db_path);
@@ -255,8 +255,10 @@ ExportSummary ExportSweep(const std::string& sweep_dir, const std::string& datas
   std::vector<DropRecord> failed;
   const Dataset ds = SweepToDataset(sweep_dir, options, &summary, &failed);
   if (ds.drops.empty()) throw MakeInputError(sweep_dir, "", "no successful drops to export");
-  WriteDataset(ds, dataset_dir);
-  if (!failed.empty()) WriteFailedCsv(failed, (fs::path(dataset_dir) / "failed.csv").string());
+  WriteOutputDirectory(dataset_dir, OutputKind::kDataset, [&](const std::string& staging) {
+    WriteDatasetFiles(ds, staging);
+    if (!failed.empty()) WriteFailedCsv(failed, (fs::path(staging) / "failed.csv").string());
+  });
   return summary;
 }
 

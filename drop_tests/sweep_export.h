@@ -37,6 +37,6 @@ extern const std::vector<std::string> kLanderExportColumns;
 // The dataset in memory (traces included).
 Dataset SweepToDataset(const std::string& sweep_dir, const ExportOptions& options, ExportSummary* summary = nullptr,
                        std::vector<DropRecord>* failed = nullptr);
-ExportSummary ExportSweep(const std::string& sweep_dir, const std::string& dataset_dir, const ExportOptions& options);
+ExportSummary ExportSweep(const std::string& sweep_dir, const OutputTarget& dataset, const ExportOptions& options);
 
 }  // namespace touchdown::drop

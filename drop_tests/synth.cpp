@@ -10,7 +10,7 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include "drop_tests/atomic_file.h"
+#include "drop_tests/output_path.h"
 #include "drop_tests/catalog.h"
 #include "drop_tests/dataset_csv.h"
 #include "drop_tests/yaml_fields.h"
@@ -234,9 +234,9 @@ void WriteSpecYaml(const SynthSpec& s, YAML::Emitter& y, bool with_truth) {
 }
 }  // namespace
 
-void WriteSyntheticDataset(const SynthSpec& spec, const Dataset& dataset, const std::string& out_dir) {
-  WriteStagedDirectory(out_dir, [&](const std::string& staging) {
-    WriteDataset(dataset, staging);
+void WriteSyntheticDataset(const SynthSpec& spec, const Dataset& dataset, const OutputTarget& out) {
+  WriteOutputDirectory(out, OutputKind::kDataset, [&](const std::string& staging) {
+    WriteDatasetFiles(dataset, staging);
     const fs::path dir = staging;
     WriteFileAtomically((dir / "README.md").string(), [&](std::ostream& out) {
       out << "# SYNTHETIC dataset: " << spec.name << "\n\n"

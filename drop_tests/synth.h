@@ -79,6 +79,6 @@ SynthSpec LoadSynthSpec(const std::string& path);
 Dataset Synthesize(const SynthSpec& spec);
 // Writes the dataset (issue-5 format) plus README.md, synthetic.yaml and synthetic_truth.yaml,
 // all through a staged directory.
-void WriteSyntheticDataset(const SynthSpec& spec, const Dataset& dataset, const std::string& out_dir);
+void WriteSyntheticDataset(const SynthSpec& spec, const Dataset& dataset, const OutputTarget& out);
 
 }  // namespace touchdown::drop

@@ -7,9 +7,9 @@
 #include <set>
 #include <tuple>
 
-#include "drop_tests/atomic_file.h"
-#include "drop_tests/compare_gnuplot.h"
+#include "drop_tests/output_path.h"
 #include "drop_tests/dataset_csv.h"
+#include "drop_tests/plot_runner.h"
 #include "rft/input_error.h"
 
 namespace touchdown::drop {
@@ -133,7 +133,11 @@ void WriteTradeOutputs(const std::vector<TradeRow>& rows, const std::string& out
     });
     front_files.push_back({file, "front: " + key.first + ", " + FormatNumber(key.second) + " m/s"});
   }
+  // A sweep whose drops all failed has no series: each panel says so instead (a `plot` of
+  // nothing is a gnuplot error).
+  const std::string nothing = PlaceholderPlot("no completed drops: nothing to plot");
   auto plot = [&](const std::string& columns) {
+    if (series_files.empty()) return nothing;
     std::string s = "plot ";
     for (size_t i = 0; i < series_files.size(); ++i)
       s += (i ? ", \\\n     " : "") + GnuplotQuote(series_files[i].first) + " using " + columns +
@@ -149,15 +153,19 @@ void WriteTradeOutputs(const std::vector<TradeRow>& rows, const std::string& out
       plot("1:4") + "unset multiplot\n";
   gp += "set terminal pngcairo noenhanced size 900,650 font 'sans,10'\nset output 'plots/pareto.png'\n"
         "set title 'Peak force against final penetration (lower-left is better); fronts per soil and speed'\n"
-        "set xlabel 'final penetration [mm]'\nset ylabel 'peak force [N]'\nset key outside right\nplot ";
-  for (size_t i = 0; i < series_files.size(); ++i)
-    gp += (i ? ", \\\n     " : "") + GnuplotQuote(series_files[i].first) + " using ($2*1000):3 with points pt 7 title " +
-          GnuplotQuote(series_files[i].second);
-  for (const auto& [file, title] : front_files)
-    gp += ", \\\n     " + GnuplotQuote(file) + " using ($1*1000):2 with lines lw 1 dt 2 lc rgb 'black' notitle";
-  gp += "\n";
-  WriteFileAtomically((dir / "plots" / "trade.gp").string(), [&](std::ostream& out) { out << gp; });
-  RunGnuplot(dir.string(), "plots/trade.gp");
+        "set xlabel 'final penetration [mm]'\nset ylabel 'peak force [N]'\nset key outside right\n";
+  if (series_files.empty()) {
+    gp += nothing;
+  } else {
+    gp += "plot ";
+    for (size_t i = 0; i < series_files.size(); ++i)
+      gp += (i ? ", \\\n     " : "") + GnuplotQuote(series_files[i].first) + " using ($2*1000):3 with points pt 7 title " +
+            GnuplotQuote(series_files[i].second);
+    for (const auto& [file, title] : front_files)
+      gp += ", \\\n     " + GnuplotQuote(file) + " using ($1*1000):2 with lines lw 1 dt 2 lc rgb 'black' notitle";
+    gp += "\n";
+  }
+  RenderPlots(dir, {"plots/trade.gp", gp, {"plots/trade.png", "plots/pareto.png"}});
 }
 
 }  // namespace touchdown::drop

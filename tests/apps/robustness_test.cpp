@@ -411,6 +411,27 @@ std::vector<Case> Cases() {
   c.push_back({"CLI flag", "sweep --threads -1", "sweep count.yaml --threads -1 --out out_f1"});
   c.push_back({"CLI flag", "sweep --shard 3/2", "sweep soft.yaml --shard 3/2 --out out_f2"});
   c.push_back({"CLI flag", "sweep --max-drop-wall-time nan", "sweep soft.yaml --max-drop-wall-time nan --out out_f3"});
+  // Output paths (issue 13, section 1): touchdown never writes over, into or around what it did not write.
+  {
+    const std::string scenario = "o_lander.yaml";
+    const std::pair<std::string, std::string> lander = {scenario, Lander("lander: sutoh2017_lander\n" + kLanderGround +
+                                                                         kLanderInitial)};
+    const std::string run = "lander " + scenario + " --out ";
+    c.push_back({"output path", "a directory of the user's (holds notes.txt)", run + "o_k", {lander, {"o_k/notes.txt", "mine"}}});
+    c.push_back({"output path", "the current directory", run + ".", {lander}});
+    c.push_back({"output path", "the parent directory", run + "..", {lander}});
+    c.push_back({"output path", "a file of the user's", run + "o_file", {lander, {"o_file", "mine"}}});
+    c.push_back({"output path", "the command's input file", run + scenario, {lander}});
+    c.push_back({"output path", "trailing slash (a new directory)", run + "o_new/", {lander}});
+    c.push_back({"output path", "compare DS --out DS (the measured dataset)", "compare o_ds --out o_ds",
+                 Dataset("o_ds", kDropsHeader + row)});
+    c.push_back({"output path", "calibrate --out inside the measured dataset", "calibrate o_ds2 --out o_ds2/model.yaml",
+                 Dataset("o_ds2", kDropsHeader + row)});
+    c.push_back({"output path", "drop --trace onto a directory", "drop --pad flat --soil fjs1_lp --speed 1 --trace o_dir",
+                 {{"o_dir/x", ""}}});
+    c.push_back({"output path", "drop --trace onto a file of the user's",
+                 "drop --pad flat --soil fjs1_lp --speed 1 --trace o_trace.csv", {{"o_trace.csv", "mine"}}});
+  }
   // Extreme but legal inputs.
   const std::string rig = "drop --pad flat --soil fjs1_lp ";
   c.push_back({"extreme", "10 m/s impact", rig + "--speed 10"});
@@ -427,6 +448,28 @@ std::vector<Case> Cases() {
                "force --pad flat --soil fjs1_lp --depth 0.005 --tilt-deg 89"});
   c.push_back({"extreme", "pad buried 1 m deep", "force --pad flat --soil fjs1_lp --depth 1"});
   c.push_back({"extreme", "pad 1 cm above the surface (depth -0.01)", "force --pad flat --soil fjs1_lp --depth -0.01"});
+  // Issue 13 section 2: gnuplot runs without a shell, with paths relative to the output, so an
+  // --out with a quote or a shell injection attempt plots like any other (tests/apps/
+  // plot_outputs_test.cpp checks the PNGs and that no PWNED file appears); a relative --out; a
+  // sweep whose drops all failed plots placeholders instead of an invalid script.
+  {
+    const std::string trade_sweep =
+        Sweep("traces: none\nfixed: {soil: fjs1_lp}\ngrid: {pad: [flat, curved], impact_speed_m_s: [0.7, 1.0]}\n");
+    c.push_back({"plot output", "trade --out with a quote", "trade plot_trade.yaml --out \"it's\"",
+                 {{"plot_trade.yaml", trade_sweep}}});
+    c.push_back({"plot output", "trade --out with a shell injection attempt",
+                 "trade plot_trade.yaml --out \"x'; touch PWNED; echo '\"", {{"plot_trade.yaml", trade_sweep}}});
+    c.push_back({"plot output", "trade with a relative --out", "trade plot_trade.yaml --out results/pad_trade",
+                 {{"plot_trade.yaml", trade_sweep}, {"results/README", "results go here\n"}}});
+    c.push_back({"plot output", "trade of a sweep whose drops all failed", "trade plot_failed.yaml --out out_p4",
+                 {{"plot_failed.yaml", Sweep(kSweepBase + "grid: {impact_speed_m_s: [1], zeta_N_cm3: [0.000001]}\n")}}});
+    c.push_back({"plot output", "campaign --out with a quote", "campaign plot_campaign.yaml --out \"it's campaign\"",
+                 {{"plot_campaign.yaml", "drops:\n  - {pad: flat, soil: fjs1_lp, impact_speeds_m_s: [1.0]}\n"}}});
+    c.push_back({"plot output", "lander --out with a shell injection attempt",
+                 "lander plot_lander.yaml --out \"y'; touch PWNED; echo '\"",
+                 {{"plot_lander.yaml", Lander("lander: sutoh2017_lander\n" + kLanderGround +
+                                             "initial: {touchdown_speed_m_s: 1.0}\nsimulation: {duration_s: 0.03}\n")}}});
+  }
   AddExitStatusAndInputCases(c);
   return c;
 }

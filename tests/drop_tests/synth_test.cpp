@@ -31,6 +31,7 @@ TEST(Synth, SeededDeterministicAndLabelled) {
   other.seed = 6;
   EXPECT_FALSE(a == Synthesize(other));
   const std::string dir = ::testing::TempDir() + "/synth_unit";
+  std::filesystem::remove_all(dir);  // a fresh target: touchdown refuses directories it did not write
   WriteSyntheticDataset(spec, a, dir);
   for (const char* f : {"README.md", "synthetic.yaml", "synthetic_truth.yaml", "drops.csv"})
     EXPECT_TRUE(std::filesystem::exists(dir + "/" + f)) << f;

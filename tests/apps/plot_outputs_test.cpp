@@ -1,0 +1,115 @@
+// Issue 13, section 2: the commands that draw plots, run as a user runs them. An --out holding a
+// quote, a shell injection attempt, spaces or non-ASCII characters, or a relative path, gives
+// complete PNGs and runs nothing else; a sweep whose drops all failed still plots; a write
+// failure (a file size limit standing in for a full disk) or a missing gnuplot is exit 2 with
+// one line and leaves no output directory.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "tests/apps/robustness_cli.h"
+
+namespace touchdown::testing_cli {
+namespace {
+
+// The PNG signature at the start and the IEND chunk at the very end.
+bool CompletePng(const fs::path& file) {
+  const std::string bytes = Slurp(file);
+  const std::string signature = "\x89PNG\r\n\x1a\n";
+  const std::string iend("\0\0\0\0IEND\xae\x42\x60\x82", 12);
+  return bytes.size() > 20 && bytes.compare(0, 8, signature) == 0 && bytes.compare(bytes.size() - 12, 12, iend) == 0;
+}
+
+bool AnyPwned(const fs::path& dir) {
+  if (fs::exists("PWNED")) return true;
+  for (const auto& e : fs::recursive_directory_iterator(dir))
+    if (e.path().filename() == "PWNED") return true;
+  return false;
+}
+
+const std::string kSmallSweep =
+    "schema_version: 1\ntype: sweep\ntraces: none\nfixed: {soil: fjs1_lp}\n"
+    "grid: {pad: [flat, curved], impact_speed_m_s: [0.7, 1.0]}\n";
+// zeta 1e-6 N/cm^3: the pad never stops, every drop is recorded as failed.
+const std::string kFailedSweep =
+    "schema_version: 1\ntype: sweep\nfixed: {pad: flat, soil: fjs1_lp}\n"
+    "grid: {impact_speed_m_s: [1], zeta_N_cm3: [0.000001]}\n";
+const std::string kShortLander =
+    "schema_version: 1\ntype: lander\nlander: sutoh2017_lander\nground: {soil: fjs1_lp}\n"
+    "initial: {touchdown_speed_m_s: 1.0}\nsimulation: {duration_s: 0.03}\n";
+const std::string kInjection = "x'; touch PWNED; echo '";
+
+std::string Campaign() {
+  return ShellQuote(std::string(TOUCHDOWN_SOURCE_DIR) + "/data/scenarios/sutoh2017_single_footpad.yaml");
+}
+
+TEST(PlotOutputs, TradeOutWithQuotesInjectionNonAsciiOrRelativePathPlotsAndRunsNothingElse) {
+  Sandbox box("plot_trade_out");
+  box.Write("sweep.yaml", kSmallSweep);
+  for (const std::string& out : {std::string("it's"), kInjection, std::string("with space é ✓"),
+                                std::string("results/pad_trade")}) {
+    SCOPED_TRACE(out);
+    if (out == "results/pad_trade") fs::create_directories(box.dir() / "results");
+    const CliRun r = box.Touchdown("trade sweep.yaml --out " + ShellQuote(out));
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_TRUE(CompletePng(box.dir() / out / "plots" / "trade.png"));
+    EXPECT_TRUE(CompletePng(box.dir() / out / "plots" / "pareto.png"));
+    EXPECT_FALSE(fs::exists(box.dir() / out / "plots" / "gnuplot.log"));
+  }
+  EXPECT_FALSE(AnyPwned(box.dir()));
+}
+
+TEST(PlotOutputs, CampaignAndLanderWithAnInjectionAttemptInOut) {
+  Sandbox box("plot_injection");
+  box.Write("lander.yaml", kShortLander);
+  const std::string out = ShellQuote(kInjection);
+  CliRun r = box.Touchdown("campaign " + Campaign() + " --out " + out);
+  ASSERT_EQ(r.status, 0) << r.err;
+  for (const char* png : {"fig3_time_histories.png", "fig4_peaks.png", "fig6_force_penetration.png"})
+    EXPECT_TRUE(CompletePng(box.dir() / kInjection / "plots" / png)) << png;
+  r = box.Touchdown("lander lander.yaml --out " + ShellQuote(kInjection + " lander"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  for (const char* png : {"penetration.png", "attitude.png"})
+    EXPECT_TRUE(CompletePng(box.dir() / (kInjection + " lander") / "plots" / png)) << png;
+  EXPECT_FALSE(AnyPwned(box.dir()));
+}
+
+TEST(PlotOutputs, TradeOfASweepWhoseDropsAllFailedPlotsPlaceholders) {
+  Sandbox box("plot_trade_failed");
+  box.Write("failed.yaml", kFailedSweep);
+  const CliRun r = box.Touchdown("trade failed.yaml --out out");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(CompletePng(box.dir() / "out" / "plots" / "trade.png"));
+  EXPECT_TRUE(CompletePng(box.dir() / "out" / "plots" / "pareto.png"));
+  const std::string script = Slurp(box.dir() / "out" / "plots" / "trade.gp");
+  EXPECT_NE(script.find("nothing to plot"), std::string::npos) << script;
+  EXPECT_EQ(r.err.find("gnuplot"), std::string::npos) << r.err;
+}
+
+// RLIMIT_FSIZE with SIGXFSZ ignored makes writes fail with EFBIG: gnuplot then leaves a
+// truncated PNG and exits 0, as on a full disk. The staged output must not appear.
+TEST(PlotOutputs, TruncatedPngIsExitTwoAndLeavesNoOutput) {
+  Sandbox box("plot_full_disk");
+  const CliRun r = box.Touchdown("campaign " + Campaign() + " --out out", "trap '' XFSZ; ulimit -f 40;");
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find("plots/fig3_time_histories.png"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("File too large"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(box.dir() / "out"));
+}
+
+TEST(PlotOutputs, GnuplotMissingIsExitTwoAndLeavesNoOutput) {
+  Sandbox box("plot_no_gnuplot");
+  fs::create_directories(box.dir() / "empty_bin");
+  const CliRun r = box.Touchdown("campaign " + Campaign() + " --out out", "PATH=" + ShellQuote((box.dir() / "empty_bin").string()));
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_EQ(r.err, "touchdown: gnuplot: not found on the PATH; touchdown draws its plots with gnuplot: install it "
+                   "(Debian: apt install gnuplot-nox)\n");
+  EXPECT_FALSE(fs::exists(box.dir() / "out"));
+}
+
+}  // namespace
+}  // namespace touchdown::testing_cli
