@@ -58,6 +58,19 @@ void AddCompareCommand(CLI::App& app) {
       std::cout << std::left << std::setw(24) << d.drop_id << std::right << std::setw(14)
                 << pct(d.final_penetration_rel_error) << std::setw(14) << pct(d.peak_force_rel_error) << std::setw(14)
                 << pct(d.force_nrmse_time.value) << std::setw(14) << pct(d.force_nrmse_penetration.value) << "\n";
+    auto listed = [](const std::vector<std::string>& ids) {
+      std::string text;
+      for (const std::string& id : ids) text += (text.empty() ? "" : ", ") + id;
+      return text;
+    };
+    if (!c.zero_final_penetration_drops.empty())
+      std::cout << "measured final penetration 0 (no depth error, left out of its mean): "
+                << listed(c.zero_final_penetration_drops) << "\n";
+    if (!c.zero_peak_force_drops.empty())
+      std::cout << "measured peak force 0 (no peak force error or NRMSE, left out of their means): "
+                << listed(c.zero_peak_force_drops) << "\n";
+    std::cout << "means over " << c.final_penetration_drops_used << " (depth), " << c.peak_force_drops_used
+              << " (peak F) of " << c.drops.size() << " drops\n";
     std::cout << "mean |depth err| " << pct(c.final_penetration_rel_error) << ", mean |peak F err| "
               << pct(c.peak_force_rel_error) << ", mean force NRMSE " << pct(c.force_nrmse) << " (time), "
               << pct(c.force_nrmse_penetration) << " (penetration)\nwrote " << args->out

@@ -25,7 +25,8 @@ void AddDiagnoseCommand(CLI::App& app) {
   cmd->add_option("measured", args->measured, "measured dataset directory (drops.csv + traces)")->required();
   cmd->add_option("--model", args->model, "model file whose zeta per soil starts the calibration");
   cmd->add_option("--out", args->out, "output directory: new, empty, or an earlier output of this command (replaced whole when complete)")->required();
-  cmd->add_option("--threads", args->threads, "threads (default: all cores)");
+  cmd->add_option("--threads", args->threads, "threads (default: all cores)")
+      ->check(CLI::Range(0, 4096));
   cmd->add_flag("--no-pairs", args->no_pairs, "do not try pairs of effects");
   cmd->callback([args] {
     const drop::OutputTarget out(args->out, {args->measured, args->model});

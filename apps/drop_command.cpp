@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include <numbers>
+#include <sstream>
 
 #include "apps/commands.h"
 #include "drop_tests/output_path.h"
@@ -55,6 +56,11 @@ void AddDropCommand(CLI::App& app) {
     for (double v : {args->tilt_deg, args->horizontal_speed_m_s, args->omega[0], args->omega[1], args->omega[2]})
       if (!std::isfinite(v))
         throw MakeInputError("command line", "--free", "tilt, horizontal speed and omega must be finite");
+    if (!(std::abs(args->tilt_deg) < 90.0)) {
+      std::ostringstream s;
+      s << "must be between -90 and 90 deg, got " << args->tilt_deg;
+      throw MakeInputError("command line", "--tilt-deg", s.str());
+    }
     if (args->free) {
       c.free = true;
       c.tilt_rad = args->tilt_deg * std::numbers::pi / 180.0;

@@ -16,7 +16,8 @@ void AddExportCommand(CLI::App& app) {
   cmd->add_option("--to", *to, "dataset directory: new, empty, or an earlier dataset touchdown wrote (replaced whole when complete)")->required();
   cmd->add_flag("--full-traces", options->full_traces,
                 "simulate every drop again for its full 1 kHz trace (default: stored traces; re-simulated if none)");
-  cmd->add_option("--threads", options->threads, "threads for re-simulated traces (default: every core)");
+  cmd->add_option("--threads", options->threads, "threads for re-simulated traces (default: every core)")
+      ->check(CLI::Range(0, 4096));
   cmd->callback([dir, to, options] {
     const drop::OutputTarget out(*to, {*dir});
     drop::CheckOutputDirectory(out, drop::OutputKind::kDataset);

@@ -11,6 +11,7 @@
 #include "drop_tests/pad_pose.h"
 #include "rft/contact_wrench.h"
 #include "rft/input_error.h"
+#include "rft/physical_limits.h"
 #include "rft/stress_law_3d_factory.h"
 
 namespace touchdown::app {
@@ -53,13 +54,15 @@ void AddForceCommand(CLI::App& app) {
   cmd->add_option("--zeta", a->zeta_N_cm3, "override the soil's zeta [N/cm^3] (li2013)");
   cmd->add_option("--gravity", a->gravity_m_s2, "gravity [m/s^2] the soil stresses scale with (default 9.81)");
   cmd->callback([a] {
-    RequireFinite(a->depth_m, "depth_m", false);
-    RequireFinite(a->tilt_deg, "tilt_deg", false);
+    limits::Require(limits::kDepth_m, a->depth_m, "command line", "--depth");
+    limits::Require(limits::kForceTilt_deg, a->tilt_deg, "command line", "--tilt-deg");
     RequireFinite(a->gravity_m_s2, "gravity_m_s2", true);
-    if (a->zeta_N_cm3) RequireFinite(*a->zeta_N_cm3, "zeta_N_cm3", true);
+    if (a->zeta_N_cm3) limits::Require(limits::kZeta_N_cm3, *a->zeta_N_cm3, "command line", "--zeta");
     rft::PadKinematics k;
     k.v_WB_W = Vector3(a->velocity, "velocity");
     k.w_WB_W = Vector3(a->omega, "omega");
+    limits::Require(limits::kSpeed_m_s, k.v_WB_W.stableNorm(), "command line", "--velocity (its magnitude)");
+    limits::Require(limits::kAngularSpeed_rad_s, k.w_WB_W.stableNorm(), "command line", "--omega (its magnitude)");
     if (k.v_WB_W.norm() == 0.0 && k.w_WB_W.norm() == 0.0)
       throw MakeInputError("command line", "velocity", "the pad must move (RFT needs a direction of motion)");
     k.R_WB = drop::TiltRotation(a->tilt_axis, a->tilt_deg * std::numbers::pi / 180.0);

@@ -36,7 +36,8 @@ void AddSweepCommand(CLI::App& app) {
   cmd->add_option("--model", args->model, "model file (MODEL.yaml) with per-soil zeta overrides");
   cmd->add_option("--progress", args->progress, "auto (bar on a terminal, else lines), bar, lines or none")
       ->check(CLI::IsMember({"auto", "bar", "lines", "none"}));
-  cmd->add_option("--batch", args->batch, "drops per database transaction (default 512)")->check(CLI::PositiveNumber);
+  cmd->add_option("--batch", args->batch, "drops per database transaction (default 512)")
+      ->check(CLI::Range(1, 1000000));  // a bounded range: CLI::PositiveNumber prints DBL_MAX as its range
   CLI::Option* max_evaluations = cmd->add_option(
       "--max-drop-evaluations", args->max_drop_evaluations,
       "work limit per drop: right-hand-side evaluations of its integrator, 0 = none (default: the sweep file's "

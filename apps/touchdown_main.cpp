@@ -1,8 +1,12 @@
 // touchdown: lander footpads hitting granular regolith, by resistive force theory.
 // Each subcommand lives in its own file; this one wires them to CLI11 and turns every
-// user error into one line on stderr and exit status 2.
+// user error into one line on stderr and an exit status: 0 success, 2 bad input or an
+// unusable path (InputError, a file system error, out of memory), 3 the solver failed,
+// 1 an internal error (a bug).
 #include <CLI/CLI.hpp>
+#include <filesystem>
 #include <iostream>
+#include <new>
 
 #include "apps/commands.h"
 #include "lander/cvode_integrator.h"
@@ -41,8 +45,19 @@ int main(int argc, char** argv) {
   } catch (const touchdown::integ::IntegrationFailure& e) {
     std::cerr << "touchdown: integration failed: " << e.what() << "\n";
     return 3;
+  } catch (const std::filesystem::filesystem_error& e) {
+    // A path the OS refused (read-only or full file system, permissions, a loop): the user's
+    // to fix, so the path and the OS reason, exit 2.
+    std::cerr << "touchdown: " << (e.path1().empty() ? std::string("a path") : e.path1().string()) << ": "
+              << e.code().message() << "\n";
+    return 2;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "touchdown: out of memory: the input asks for more than this machine holds (fewer drops, "
+                 "samples or trace points)\n";
+    return 2;
   } catch (const std::exception& e) {
-    std::cerr << "touchdown: error: " << e.what() << "\n";
+    // Anything else is a bug in touchdown (please report it with the command line).
+    std::cerr << "touchdown: internal error: " << e.what() << "\n";
     return 1;
   }
   return 0;

@@ -22,7 +22,8 @@ void AddTradeCommand(CLI::App& app) {
       "trade", "Footpad trade study: run a sweep, tabulate and plot penetration, peak force, conversion rate, Pareto front");
   cmd->add_option("sweep", args->sweep, "sweep YAML (e.g. data/sweeps/pad_trade.yaml)")->required();
   cmd->add_option("--out", args->out, "output directory (results.sqlite, trade.csv, summary.json, plots/)")->required();
-  cmd->add_option("--threads", args->threads, "worker threads (default: every core)")->check(CLI::NonNegativeNumber);
+  cmd->add_option("--threads", args->threads, "worker threads (default: every core)")
+      ->check(CLI::Range(0, 4096));
   cmd->add_option("--model", args->model, "model file with per-soil zeta overrides");
   cmd->callback([args] {
     const drop::SweepPlan plan = drop::LoadSweepPlan(args->sweep, args->model);

@@ -22,10 +22,24 @@ namespace touchdown::drop {
 namespace fs = std::filesystem;
 
 namespace {
+// "1.00" for the speeds a campaign usually lists; a speed that two decimals would round (1.004)
+// keeps its shortest exact form, so two different speeds never share a drop id.
 std::string SpeedTag(double v) {
   std::ostringstream s;
   s << std::fixed << std::setprecision(2) << v;
-  return s.str();
+  if (std::stod(s.str()) == v) return s.str();
+  std::ostringstream exact;
+  exact << std::setprecision(17) << v;
+  std::string shortest = exact.str();
+  for (int digits = 1; digits <= 17; ++digits) {  // the fewest digits that read back as v
+    std::ostringstream t;
+    t << std::setprecision(digits) << v;
+    if (std::stod(t.str()) == v) {
+      shortest = t.str();
+      break;
+    }
+  }
+  return shortest;
 }
 
 // Pads and soils are loaded once per name; an error names the scenario field that used it.
@@ -100,7 +114,10 @@ CampaignScenario LoadCampaignScenario(const std::string& path) {
       c.conditions.gravity_m_s2 = entry.PositiveOr("gravity_m_s2", gravity);
       if (entry.Has("mass_kg")) c.conditions.mass_kg = entry.Positive("mass_kg");
       if (entry.Has("zeta_N_cm3")) c.conditions.zeta_N_m3 = entry.Positive("zeta_N_cm3") * 1e6;
-      if (!ids.insert(c.drop_id).second) entry.Fail("impact_speeds_m_s", "drop " + c.drop_id + " is listed twice");
+      ValidateConditions(c.conditions, f.file() + ": " + entry.prefix());  // ranges checked at load time
+      if (!ids.insert(c.drop_id).second)
+        entry.Fail("impact_speeds_m_s", "impact speed " + SpeedTag(v) + " m/s of pad " + pad->name + " on soil " +
+                                            soil.name + " is listed twice (drop " + c.drop_id + ")");
       s.cases.push_back(std::move(c));
     }
   }

@@ -12,6 +12,8 @@
 #include "footpad_geom/pad_body_builder.h"
 #include "footpad_geom/revolve.h"
 #include "rft/input_error.h"
+#include "rft/input_file.h"
+#include "rft/physical_limits.h"
 
 namespace touchdown::drop {
 
@@ -57,6 +59,8 @@ geom::AxisymmetricProfile Guarded(const YamlFields& f, Build build) {
 
 geom::AxisymmetricProfile ReadProfile(const YamlFields& f) {
   const std::string shape = f.String("shape");
+  limits::Require(limits::kPadSize_mm, f.Positive("radius_mm"), f.file(), f.Path("radius_mm"));
+  limits::Require(limits::kPadSize_mm, f.Positive("thickness_mm"), f.file(), f.Path("thickness_mm"));
   const double r = f.Positive("radius_mm") * kMm;
   const double h = f.Positive("thickness_mm") * kMm;
   const int segments = f.Has("segments") ? f.PositiveInt("segments") : 400;
@@ -204,8 +208,11 @@ std::string ResolveCatalogFile(const std::string& kind, const std::string& name_
   const bool is_path = name_or_path.find('/') != std::string::npos ||
                        name_or_path.ends_with(".yaml") || name_or_path.ends_with(".yml");
   const std::string path = is_path ? name_or_path : DataDirectory() + "/" + kind + "/" + name_or_path + ".yaml";
+  if (is_path) {
+    RequireReadableFile(path);  // says what is wrong: missing, a directory, a loop, no permission
+    return path;
+  }
   if (!fs::is_regular_file(path)) {
-    if (is_path) throw MakeInputError(path, "", "file not found");
     std::string known;
     std::error_code ec;
     for (const auto& entry : fs::directory_iterator(DataDirectory() + "/" + kind, ec))
@@ -223,6 +230,7 @@ PadSpec LoadPad(const std::string& name_or_path) {
   pad.source = path;
   pad.kind = f.StringOr("kind", "axisymmetric");
   pad.name = f.StringOr("name", fs::path(path).stem().string());
+  if (!IsValidUtf8(pad.name)) f.Fail("name", "the pad name (from the file name) is not valid UTF-8 text");
   if (pad.kind == "axisymmetric") {
     f.RequireOnly({"schema_version", "name", "kind", "mass_kg", "profile", "description", "provenance",
                    "angular_segments", "reference_point_mm", "inertia_kg_m2", "center_of_mass_mm"});
@@ -242,9 +250,11 @@ rft::SoilParameters LoadSoil(const std::string& name_or_path) {
   const YamlFields f = YamlFields::LoadFile(path);
   f.RequireSchemaVersion(1);
   f.RequireOnly({"schema_version", "name", "description", "atmosphere", "zeta_N_cm3", "bulk_density_kg_m3",
-                 "internal_friction_angle_deg", "reference_gravity_m_s2", "provenance"});
+                 "internal_friction_angle_deg", "reference_gravity_m_s2", "provenance", "mu_surf", "dynamic_term",
+                 "dynamic_lambda", "dynamic_density_kg_m3"});
   rft::SoilParameters soil;
   soil.name = f.StringOr("name", fs::path(path).stem().string());
+  if (!IsValidUtf8(soil.name)) f.Fail("name", "the soil name (from the file name) is not valid UTF-8 text");
   soil.atmosphere = f.StringOr("atmosphere", "vacuum");
   if (soil.atmosphere != "vacuum" && soil.atmosphere != "air")
     f.Fail("atmosphere", "must be 'vacuum' or 'air', got '" + soil.atmosphere + "'");
@@ -262,8 +272,21 @@ rft::SoilParameters LoadSoil(const std::string& name_or_path) {
     soil.zeta_N_m3 = rft::AgarwalScalingXi(soil.bulk_density_kg_m3, soil.reference_gravity_m_s2,
                                            std::tan(soil.internal_friction_angle_rad));
   } else {
-    soil.zeta_N_m3 = f.Positive("zeta_N_cm3") * 1e6;
+    const double zeta_N_cm3 = f.Positive("zeta_N_cm3");
+    limits::Require(limits::kZeta_N_cm3, zeta_N_cm3, f.file(), "zeta_N_cm3");
+    soil.zeta_N_m3 = zeta_N_cm3 * 1e6;
   }
+  // The 3D laws' soil fields (rft/soil.h): Agarwal 2023's intruder-surface friction, and the
+  // dynamic term lambda rho_c (v.n)^2 of the 3D contact (free drops, force, lander).
+  if (f.Has("mu_surf")) {
+    soil.surface_friction_coefficient = f.NonNegative("mu_surf");
+    if (soil.surface_friction_coefficient > 10.0) f.Fail("mu_surf", "must be at most 10 (a friction coefficient)");
+  }
+  if (f.Has("dynamic_term")) soil.dynamic_term = f.Bool("dynamic_term");
+  if (f.Has("dynamic_lambda")) soil.dynamic_lambda = f.NonNegative("dynamic_lambda");
+  if (f.Has("dynamic_density_kg_m3")) soil.dynamic_density_kg_m3 = f.Positive("dynamic_density_kg_m3");
+  if (soil.dynamic_term && soil.dynamic_density_kg_m3 == 0.0 && soil.bulk_density_kg_m3 == 0.0)
+    f.Fail("dynamic_term", "needs a density: dynamic_density_kg_m3 or bulk_density_kg_m3");
   return soil;
 }
 

@@ -29,11 +29,13 @@ double ExtraOrZero(const Dataset& ds, const DatasetDrop& d, const std::string& c
   return ds.ExtraNumber(d, column).value_or(0.0);
 }
 
-double Mean(const std::vector<double>& v) {
+// The mean over the defined (finite) values; `used` counts them.
+double Mean(const std::vector<double>& v, size_t* used = nullptr) {
   double s = 0.0;
   size_t n = 0;
   for (double x : v)
     if (std::isfinite(x)) s += x, ++n;
+  if (used) *used = n;
   return n ? s / n : std::nan("");
 }
 
@@ -207,6 +209,8 @@ Comparison CompareDrops(const Dataset& measured, const std::vector<const Dataset
     d.peak_force_rel_error = RelError(d.simulated_peak_force_N, d.measured_peak_force_N);
     d.force_nrmse_time = ForceNrmseTime(m.trace, s.trace);
     d.force_nrmse_penetration = ForceNrmsePenetration(m.trace, s.trace);
+    if (d.measured_final_penetration_m == 0.0) c.zero_final_penetration_drops.push_back(d.drop_id);
+    if (d.measured_peak_force_N == 0.0) c.zero_peak_force_drops.push_back(d.drop_id);
     pen.push_back(std::abs(d.final_penetration_rel_error));
     peak.push_back(std::abs(d.peak_force_rel_error));
     pen_signed.push_back(d.final_penetration_rel_error);
@@ -215,13 +219,22 @@ Comparison CompareDrops(const Dataset& measured, const std::vector<const Dataset
     nrmse_d.push_back(d.force_nrmse_penetration.value);
     c.drops.push_back(std::move(d));
   }
-  c.final_penetration_rel_error = Mean(pen);
-  c.peak_force_rel_error = Mean(peak);
+  c.final_penetration_rel_error = Mean(pen, &c.final_penetration_drops_used);
+  c.peak_force_rel_error = Mean(peak, &c.peak_force_drops_used);
   c.final_penetration_bias = Mean(pen_signed);
   c.peak_force_bias = Mean(peak_signed);
-  c.force_nrmse = Mean(nrmse_t);
-  c.force_nrmse_penetration = Mean(nrmse_d);
+  c.force_nrmse = Mean(nrmse_t, &c.force_nrmse_drops_used);
+  c.force_nrmse_penetration = Mean(nrmse_d, &c.force_nrmse_penetration_drops_used);
   return c;
+}
+
+// JSON never carries null or NaN for a number: an undefined value (a relative error of a drop
+// measured at 0, a mean over no drop) is left out, and the summary says which drops and how many.
+void DropUndefined(nlohmann::json& j) {
+  for (auto it = j.begin(); it != j.end();) {
+    if (it->is_null()) it = j.erase(it);
+    else ++it;
+  }
 }
 
 nlohmann::json ComparisonJson(const Comparison& c) {
@@ -243,7 +256,15 @@ nlohmann::json ComparisonJson(const Comparison& c) {
                      {"force_nrmse_penetration", Number(d.force_nrmse_penetration.value)},
                      {"penetration_samples", d.force_nrmse_penetration.samples},
                      {"penetration_samples_used", d.force_nrmse_penetration.used}});
-  return {{"drops_compared", c.drops.size()},
+  for (nlohmann::json& d : drops) DropUndefined(d);
+  nlohmann::json summary{{"drops_compared", c.drops.size()},
+          {"drops_used",
+           {{"final_penetration_rel_error", c.final_penetration_drops_used},
+            {"peak_force_rel_error", c.peak_force_drops_used},
+            {"force_nrmse", c.force_nrmse_drops_used},
+            {"force_nrmse_penetration", c.force_nrmse_penetration_drops_used}}},
+          {"drops_measured_zero",
+           {{"final_penetration", c.zero_final_penetration_drops}, {"peak_force", c.zero_peak_force_drops}}},
           {"simulated_from", c.simulated_from},
           {"final_penetration_rel_error", Number(c.final_penetration_rel_error)},
           {"peak_force_rel_error", Number(c.peak_force_rel_error)},
@@ -258,8 +279,13 @@ nlohmann::json ComparisonJson(const Comparison& c) {
                             "over all measured samples i (F_sim interpolated in time)"},
             {"force_nrmse_penetration", "mean over drops of sqrt(mean_i (F_sim(d_i) - F_i)^2) / max_i F_i, "
                                         "over the measured loading stroke where the simulated stroke reaches"},
-            {"bias", "signed means of the relative errors (simulated - measured) / measured"}}},
+            {"bias", "signed means of the relative errors (simulated - measured) / measured"},
+            {"drops_used", "the number of drops each mean is taken over: a relative error is undefined for a drop "
+                           "measured at 0 (drops_measured_zero), an NRMSE for a measured peak force of 0; an "
+                           "undefined value is left out of the drop's entry"}}},
           {"drops", drops}};
+  DropUndefined(summary);
+  return summary;
 }
 
 void WriteComparison(const Comparison& c, const Dataset& measured, const Dataset& simulated,

@@ -18,7 +18,8 @@
 // Both NRMSEs are normalised by the MEASURED peak force, so they read as a fraction of the
 // measured load. Overall: the mean over drops of |rel error| (final_penetration_rel_error,
 // peak_force_rel_error), the signed means (..._bias), and the mean NRMSEs (force_nrmse is the
-// one against time, force_nrmse_penetration the other).
+// one against time, force_nrmse_penetration the other), each over the drops where it is defined
+// (drops_used in the summary; drops measured at 0 are listed, never silently skipped).
 #include <optional>
 #include <string>
 #include <vector>
@@ -61,6 +62,13 @@ struct Comparison {
   double peak_force_bias = 0.0;
   double force_nrmse = 0.0;                  // mean force_nrmse_time
   double force_nrmse_penetration = 0.0;      // mean over drops where defined
+  // A relative error is undefined for a drop whose measured value is 0 (and an NRMSE for a
+  // measured peak force of 0): those drops are left out of that mean and listed here, and
+  // each mean says over how many drops it was taken.
+  std::vector<std::string> zero_final_penetration_drops;  // measured final penetration 0
+  std::vector<std::string> zero_peak_force_drops;         // measured peak force 0
+  size_t final_penetration_drops_used = 0, peak_force_drops_used = 0;
+  size_t force_nrmse_drops_used = 0, force_nrmse_penetration_drops_used = 0;
   std::string simulated_from;                // "model <file>", "catalogue soils" or "dataset <dir>"
 };
 

@@ -9,6 +9,7 @@
 #include "drop_tests/catalog.h"
 #include "drop_tests/dataset_csv.h"
 #include "rft/input_error.h"
+#include "rft/input_file.h"
 
 namespace touchdown::drop {
 
@@ -65,6 +66,24 @@ DatasetTrace ReadTrace(const std::string& path) {
   return trace;
 }
 
+// Most filesystems take names of up to 255 bytes; the id gets a suffix ("_measured.csv").
+constexpr size_t kMaxDropIdBytes = 200;
+}  // namespace
+
+std::string DropIdProblem(const std::string& id) {
+  if (id.empty()) return "empty drop id";
+  if (id == "." || id == "..") return "drop id '" + id + "' cannot be a file name";
+  if (id.size() > kMaxDropIdBytes)
+    return "drop id longer than " + std::to_string(kMaxDropIdBytes) + " bytes (it names files)";
+  for (const char c : id) {
+    if (c == '/' || c == '\\') return "drop id '" + id + "' contains '" + std::string(1, c) + "' (it names files)";
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) return "drop id contains a control character (it names files)";
+  }
+  if (!IsValidUtf8(id)) return "drop id is not valid UTF-8 text";
+  return "";
+}
+
+namespace {
 void CheckCatalog(const CsvTable& t, size_t row, int column, const std::string& kind, const std::string& reference) {
   try {
     ResolveCatalogFile(kind, reference);
@@ -106,7 +125,10 @@ std::string Dataset::PadReference(const DatasetDrop& drop) const { return Resolv
 std::string Dataset::SoilReference(const DatasetDrop& drop) const { return Resolve(directory, drop.soil); }
 
 Dataset ReadDataset(const std::string& directory, const DatasetReadOptions& options) {
-  if (!fs::is_directory(directory)) throw MakeInputError(directory, "", "dataset directory not found");
+  std::error_code ec;
+  const fs::file_status status = fs::status(directory, ec);
+  if (!fs::exists(status)) throw MakeInputError(directory, "", "dataset directory not found");
+  if (!fs::is_directory(status)) throw MakeInputError(directory, "", "is not a directory (a dataset is a directory with drops.csv)");
   const std::string drops_csv = (fs::path(directory) / "drops.csv").string();
   const CsvTable t = ReadCsv(drops_csv);
   std::vector<int> required;
@@ -133,6 +155,7 @@ Dataset ReadDataset(const std::string& directory, const DatasetReadOptions& opti
       return cells[column];
     };
     d.drop_id = text(required[0], "drop id");
+    if (const std::string problem = DropIdProblem(d.drop_id); !problem.empty()) t.Fail(r, required[0], problem);
     if (!ids.insert(d.drop_id).second) t.Fail(r, required[0], "duplicate drop id '" + d.drop_id + "'");
     d.pad = text(required[1], "pad");
     d.soil = text(required[2], "soil");
@@ -152,7 +175,11 @@ Dataset ReadDataset(const std::string& directory, const DatasetReadOptions& opti
     d.trace_file = text(required[7], "trace path");
     if (fs::path(d.trace_file).is_absolute()) t.Fail(r, required[7], "must be relative to the dataset directory");
     const std::string trace_path = (fs::path(directory) / d.trace_file).string();
-    if (!fs::is_regular_file(trace_path)) t.Fail(r, required[7], "trace file not found: " + trace_path);
+    try {
+      RequireReadableFile(trace_path, "trace file");
+    } catch (const InputError& e) {
+      t.Fail(r, required[7], e.what());
+    }
     if (c_final >= 0 && !cells[c_final].empty()) d.final_penetration_m = t.Number(r, c_final);
     if (c_peak >= 0 && !cells[c_peak].empty()) d.peak_force_N = t.Number(r, c_peak);
     for (int c : extra_index) d.extra.push_back(cells[c]);
@@ -168,8 +195,9 @@ void WriteDatasetFiles(const Dataset& ds, const std::string& directory) {
   for (const DatasetDrop& d : ds.drops) {
     any_final |= d.final_penetration_m.has_value();
     any_peak |= d.peak_force_N.has_value();
-    if (d.drop_id.empty() || !ids.insert(d.drop_id).second)
-      throw MakeInputError(directory, "drop_id", "empty or duplicate drop id '" + d.drop_id + "'");
+    if (const std::string problem = DropIdProblem(d.drop_id); !problem.empty())
+      throw MakeInputError(directory, "drop_id", problem);
+    if (!ids.insert(d.drop_id).second) throw MakeInputError(directory, "drop_id", "duplicate drop id '" + d.drop_id + "'");
     if (d.extra.size() != ds.extra_columns.size())
       throw MakeInputError(directory, "drop " + d.drop_id, "extra cells do not match the extra columns");
     if (d.trace_file.empty() || fs::path(d.trace_file).is_absolute() ||

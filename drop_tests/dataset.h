@@ -79,6 +79,11 @@ struct DatasetReadOptions {
   bool check_catalog = true;  // pads and soils must resolve to catalogue entries or files
 };
 
+// Why `id` cannot be a drop id, or "" if it can. A drop id names files (traces, plots), so it
+// must be a file name: not empty, "." or "..", no '/', '\\' or control character, valid UTF-8,
+// at most 200 bytes.
+std::string DropIdProblem(const std::string& id);
+
 Dataset ReadDataset(const std::string& directory, const DatasetReadOptions& options = {});
 // Writes drops.csv and every trace as one whole output (drop_tests/output_path.h). Throws
 // InputError on a drop that could not be read back (bad id, path, numbers).

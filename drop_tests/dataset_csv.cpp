@@ -2,31 +2,113 @@
 
 #include <charconv>
 #include <cmath>
-#include <filesystem>
 #include <fstream>
-#include <sstream>
+#include <string>
 #include <unordered_set>
 #include <unistd.h>
 
 #include "rft/input_error.h"
+#include "rft/input_file.h"
 
 namespace touchdown::drop {
 
 namespace {
-std::vector<std::string> SplitCells(const std::string& line) {
-  std::vector<std::string> cells;
-  size_t start = 0;
-  while (true) {
-    const size_t comma = line.find(',', start);
-    std::string cell = line.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-    // Surrounding blanks are not part of a value (spreadsheets add them).
-    const size_t a = cell.find_first_not_of(" \t"), b = cell.find_last_not_of(" \t");
-    cells.push_back(a == std::string::npos ? std::string() : cell.substr(a, b - a + 1));
-    if (comma == std::string::npos) break;
-    start = comma + 1;
+// One RFC 4180 record reader, streaming through the file: fields separated by commas, records
+// by LF or CRLF, a field in double quotes may hold commas, line breaks and doubled quotes ("").
+// Blanks around an unquoted field are not part of it (spreadsheets add them); a quoted field
+// is taken exactly. Spreadsheet exports (Excel's UTF-8 BOM, CRLF, pandas QUOTE_ALL) read as is.
+class CsvRecords {
+ public:
+  explicit CsvRecords(const std::string& path) : path_(path) {
+    RequireReadableFile(path);  // says what is wrong with the path, in one place for every reader
+    if (!in_.open(path, std::ios::in | std::ios::binary)) throw MakeInputError(path, "", "cannot open the file");
+    const char bom[] = "\xEF\xBB\xBF";  // the UTF-8 byte order mark Excel writes
+    int matched = 0;
+    while (matched < 3 && Peek() == static_cast<unsigned char>(bom[matched])) {
+      Get();
+      ++matched;
+    }
+    if (matched != 0 && matched != 3) Fail(1, "a broken UTF-8 byte order mark at the start of the file");
   }
-  return cells;
-}
+
+  // The next record into `cells` (its first line in `line`); false at the end of the file.
+  // A record of blanks only sets `blank`.
+  bool Next(std::vector<std::string>* cells, int* line, bool* blank) {
+    if (Peek() == kEnd) return false;
+    cells->clear();
+    *line = line_;
+    *blank = true;
+    while (true) {
+      std::string cell;
+      while (IsBlank(Peek())) Get();
+      if (Peek() == '"') {
+        *blank = false;
+        ReadQuoted(&cell);
+        while (IsBlank(Peek())) Get();
+        if (Peek() != ',' && !AtLineEnd())
+          Fail(line_, "unexpected text after a closing quote (a quote inside a quoted field is written \"\")");
+      } else {
+        while (Peek() != ',' && !AtLineEnd()) {
+          if (Peek() == '"') Fail(line_, "a quote inside an unquoted field (quote the whole field)");
+          cell.push_back(static_cast<char>(Get()));
+        }
+        while (!cell.empty() && IsBlank(cell.back())) cell.pop_back();
+        if (!cell.empty()) *blank = false;
+      }
+      cells->push_back(std::move(cell));
+      if (Peek() == ',') {
+        *blank = false;
+        Get();
+        continue;
+      }
+      SkipLineEnd();
+      return true;
+    }
+  }
+
+ private:
+  static constexpr int kEnd = std::char_traits<char>::eof();
+  int Peek() { return in_.sgetc(); }
+  int Get() { return in_.sbumpc(); }
+  static bool IsBlank(int c) { return c == ' ' || c == '\t'; }
+  // At '\n', "\r\n", a '\r' ending the file, or the end: a lone '\r' inside a line is data.
+  bool AtLineEnd() {
+    const int c = Peek();
+    if (c == kEnd || c == '\n') return true;
+    if (c != '\r') return false;
+    Get();
+    const int next = Peek();
+    in_.sungetc();
+    return next == '\n' || next == kEnd;
+  }
+  void SkipLineEnd() {
+    if (Peek() == kEnd) return;
+    if (Peek() == '\r') Get();
+    if (Peek() == '\n') Get();
+    ++line_;
+  }
+  void ReadQuoted(std::string* cell) {
+    const int opened = line_;
+    Get();  // the opening quote
+    while (true) {
+      const int c = Get();
+      if (c == kEnd) Fail(opened, "a quoted field is not closed (missing \")");
+      if (c == '"') {
+        if (Peek() != '"') return;
+        Get();
+      }
+      if (c == '\n') ++line_;
+      cell->push_back(static_cast<char>(c));
+    }
+  }
+  [[noreturn]] void Fail(int line, const std::string& message) const {
+    throw MakeInputError(path_, "line " + std::to_string(line), message);
+  }
+
+  const std::string& path_;
+  std::filebuf in_;
+  int line_ = 1;
+};
 }  // namespace
 
 int CsvTable::Find(const std::string& column) const {
@@ -73,24 +155,23 @@ CsvTable ReadCsv(const std::string& path) {
 }
 
 CsvTable VisitCsv(const std::string& path, const CsvRowVisitor& on_row) {
-  if (!std::filesystem::is_regular_file(path)) throw MakeInputError(path, "", "file not found");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw MakeInputError(path, "", "cannot read the file");
+  CsvRecords records(path);
   CsvTable t;
   t.file = path;
-  std::string line;
+  std::vector<std::string> cells;
   int number = 0;
-  bool blank_seen = false;
-  while (std::getline(in, line)) {
-    ++number;
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (line.find_first_not_of(" \t") == std::string::npos) {
+  bool blank = false, blank_seen = false;
+  while (records.Next(&cells, &number, &blank)) {
+    if (blank) {
       blank_seen = true;
       continue;
     }
     if (blank_seen)
       throw MakeInputError(path, "line " + std::to_string(number), "data after a blank line");
-    std::vector<std::string> cells = SplitCells(line);
+    for (size_t i = 0; i < cells.size(); ++i)
+      if (!IsValidUtf8(cells[i]))
+        throw MakeInputError(path, "line " + std::to_string(number) + ", column " + std::to_string(i + 1),
+                             "not valid UTF-8 text");
     if (t.header.empty()) {
       std::unordered_set<std::string> seen;  // not pairwise: a header may have many columns
       for (size_t i = 0; i < cells.size(); ++i) {
@@ -100,6 +181,7 @@ CsvTable VisitCsv(const std::string& path, const CsvRowVisitor& on_row) {
           throw MakeInputError(path, "line 1, column " + std::to_string(i + 1), "duplicate column '" + cells[i] + "'");
       }
       t.header = std::move(cells);
+      cells = {};
       continue;
     }
     if (cells.size() != t.header.size())
@@ -107,6 +189,7 @@ CsvTable VisitCsv(const std::string& path, const CsvRowVisitor& on_row) {
                            "expected " + std::to_string(t.header.size()) + " cells as in the header, got " +
                                std::to_string(cells.size()));
     on_row(t, cells, number);
+    cells.clear();
   }
   if (t.header.empty()) throw MakeInputError(path, "line 1", "empty file (no header)");
   return t;

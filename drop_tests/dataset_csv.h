@@ -1,6 +1,7 @@
 #pragma once
-// Plain comma-separated tables as the dataset format uses them: a header line, then rows of
-// cells; no quoting (names and paths in a dataset contain no commas). Numbers are written in
+// Comma-separated tables as the dataset format uses them: a header line, then rows of cells,
+// read per RFC 4180 (quoted fields, "" for a quote, LF or CRLF, an optional UTF-8 BOM), so
+// files saved by Excel or pandas (QUOTE_ALL) read as written. Numbers are written in
 // the shortest form that reads back to the same double (std::to_chars), so a write-read round
 // trip is exact. Every error names the file, the 1-based line and the column.
 #include <functional>
@@ -35,8 +36,8 @@ struct CsvTable {
 using CsvRowVisitor = std::function<void(const CsvTable& header, std::vector<std::string>& cells, int line)>;
 CsvTable VisitCsv(const std::string& path, const CsvRowVisitor& on_row);
 
-// Reads the whole file; every row must have as many cells as the header. Blank lines at the
-// end are allowed, "\r\n" line ends too.
+// Reads the whole file; every row must have as many cells as the header and every cell must be
+// UTF-8. Blank lines at the end are allowed.
 CsvTable ReadCsv(const std::string& path);
 // Shortest decimal that parses back to exactly `value`.
 std::string FormatNumber(double value);

@@ -16,6 +16,7 @@
 #include "drop_tests/paths_in_outputs.h"
 #include "drop_tests/yaml_fields.h"
 #include "rft/input_error.h"
+#include "rft/physical_limits.h"
 #include "rft/stress_law_3d_factory.h"
 
 namespace touchdown::drop {
@@ -216,7 +217,10 @@ LanderScenario LoadLanderScenario(const std::string& path) {
   if (in.Has("drop_height_m") == in.Has("touchdown_speed_m_s"))
     in.Fail("drop_height_m", "give exactly one of drop_height_m and touchdown_speed_m_s");
   if (in.Has("drop_height_m")) s.initial.drop_height_m = in.NonNegative("drop_height_m");
-  if (in.Has("touchdown_speed_m_s")) s.initial.touchdown_speed_m_s = in.NonNegative("touchdown_speed_m_s");
+  if (in.Has("touchdown_speed_m_s")) {
+    s.initial.touchdown_speed_m_s = in.NonNegative("touchdown_speed_m_s");
+    limits::Require(limits::kSpeed_m_s, *s.initial.touchdown_speed_m_s, in.file(), in.Path("touchdown_speed_m_s"));
+  }
   if (in.Has("release_vertical_speed_m_s")) {
     if (!in.Has("drop_height_m")) in.Fail("release_vertical_speed_m_s", "only with drop_height_m");
     s.initial.release_vertical_speed_m_s = in.Number("release_vertical_speed_m_s");

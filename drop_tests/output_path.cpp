@@ -189,8 +189,12 @@ long LeftoverPid(const std::string& entry, const std::string& name, const std::s
 // next run still recognises as touchdown's and finishes removing.
 void RemoveOutput(const fs::path& directory) {
   std::error_code ec;
+  std::vector<fs::path> entries;  // listed first: a directory read while it is emptied may skip entries
   for (const fs::directory_entry& e : fs::directory_iterator(directory, ec))
-    if (e.path().filename() != kOutputMarker) fs::remove_all(e.path(), ec);
+    if (e.path().filename() != kOutputMarker) entries.push_back(e.path());
+  for (const fs::path& entry : entries) fs::remove_all(entry, ec);
+  for (const fs::directory_entry& e : fs::directory_iterator(directory, ec))
+    if (e.path().filename() != kOutputMarker) return;  // not all removed: the marker stays for the next run
   fs::remove(directory / kOutputMarker, ec);
   fs::remove(directory, ec);
 }

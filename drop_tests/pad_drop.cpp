@@ -11,6 +11,7 @@
 #include "footpad_geom/axisymmetric_intrusion.h"
 #include "rft/ground.h"
 #include "rft/input_error.h"
+#include "rft/physical_limits.h"
 #include "rft/stress_law.h"
 
 namespace touchdown::drop {
@@ -51,19 +52,18 @@ void ValidateConditions(const DropConditions& c, const std::string& context) {
     s << "must be " << rule << ", got " << v;
     throw MakeInputError(context, field, s.str());
   };
-  if (!(c.impact_speed_m_s >= 0.0 && std::isfinite(c.impact_speed_m_s)))
-    bad("impact_speed_m_s", c.impact_speed_m_s, ">= 0 and finite");
+  limits::Require(limits::kSpeed_m_s, c.impact_speed_m_s, context, "impact_speed_m_s");
   if (c.mass_kg && !(*c.mass_kg > 0.0 && std::isfinite(*c.mass_kg))) bad("mass_kg", *c.mass_kg, "positive and finite");
   if (!(c.gravity_m_s2 > 0.0 && std::isfinite(c.gravity_m_s2))) bad("gravity_m_s2", c.gravity_m_s2, "positive and finite");
-  if (c.zeta_N_m3 && !(*c.zeta_N_m3 > 0.0 && std::isfinite(*c.zeta_N_m3)))
-    bad("zeta_N_cm3", *c.zeta_N_m3 / 1e6, "positive and finite");
+  if (c.zeta_N_m3) limits::Require(limits::kZeta_N_cm3, *c.zeta_N_m3 / 1e6, context, "zeta_N_cm3");
   if (c.atmosphere && *c.atmosphere != "vacuum" && *c.atmosphere != "air")
     throw MakeInputError(context, "atmosphere", "must be vacuum or air, got '" + *c.atmosphere + "'");
   if (!(std::abs(c.tilt_rad) < 90.0 * kDeg)) bad("tilt_deg", c.tilt_rad / kDeg, "between -90 and 90");
   if (c.tilt_axis != "x" && c.tilt_axis != "y")
     throw MakeInputError(context, "tilt_axis", "must be x or y, got '" + c.tilt_axis + "'");
-  if (!std::isfinite(c.horizontal_speed_m_s)) bad("horizontal_speed_m_s", c.horizontal_speed_m_s, "finite");
+  limits::Require(limits::kAbsSpeed_m_s, c.horizontal_speed_m_s, context, "horizontal_speed_m_s");
   if (!c.omega_W.allFinite()) throw MakeInputError(context, "omega", "must be finite");
+  limits::Require(limits::kAngularSpeed_rad_s, c.omega_W.stableNorm(), context, "omega (its magnitude)");
 }
 
 double EffectiveZeta(const rft::SoilParameters& soil, const DropConditions& c) {

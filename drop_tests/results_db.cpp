@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "drop_tests/paths_in_outputs.h"
+#include "rft/input_error.h"
 
 namespace touchdown::drop {
 
@@ -18,6 +19,22 @@ namespace {
 // (drop_tests/paths_in_outputs.h); Meta() gives them back as the working directory reaches them.
 constexpr const char* kMetaPathKeys[] = {"source", "model"};
 std::string Directory(const std::string& file) { return std::filesystem::path(file).parent_path().string(); }
+// The database file itself unusable (missing, unreadable, not a database, corrupt, disk full,
+// read-only, locked): the user's to fix, so an InputError naming the file and SQLite's reason
+// (exit 2). Any other SQLite error (a malformed statement) is a bug.
+[[noreturn]] void ThrowSqlite(sqlite3* db, int rc, const std::string& what) {
+  const char* file = db ? sqlite3_db_filename(db, "main") : nullptr;
+  const std::string path = file && *file ? file : "results database";
+  const std::string reason = db ? sqlite3_errmsg(db) : sqlite3_errstr(rc);
+  switch (rc & 0xff) {
+    case SQLITE_CANTOPEN: case SQLITE_NOTADB: case SQLITE_CORRUPT: case SQLITE_IOERR: case SQLITE_FULL:
+    case SQLITE_READONLY: case SQLITE_PERM: case SQLITE_AUTH: case SQLITE_BUSY: case SQLITE_LOCKED:
+    case SQLITE_NOLFS: case SQLITE_NOMEM:
+      throw MakeInputError(path, "", "SQLite cannot use this database: " + reason);
+    default:
+      throw std::runtime_error("sqlite " + what + " (" + path + "): " + reason);
+  }
+}
 
 // The numeric columns of a record, in table order: the format-1 metrics, then (format 2) the
 // free drop's and the lander's. One list drives the schema, binding, reading, comparing and
@@ -75,8 +92,8 @@ constexpr int kColumnCount =
 class Statement {
  public:
   Statement(sqlite3* db, const std::string& sql) {
-    if (sqlite3_prepare_v2(db, sql.c_str(), -1, &s_, nullptr) != SQLITE_OK)
-      throw std::runtime_error(std::string("sqlite prepare: ") + sqlite3_errmsg(db) + " in: " + sql);
+    if (const int rc = sqlite3_prepare_v2(db, sql.c_str(), -1, &s_, nullptr); rc != SQLITE_OK)
+      ThrowSqlite(db, rc, "prepare of '" + sql + "'");
   }
   ~Statement() { sqlite3_finalize(s_); }
   Statement(const Statement&) = delete;
@@ -246,11 +263,13 @@ std::string ResultsDbPath(const std::string& out_dir) {
 }
 
 ResultsDb::ResultsDb(const std::string& path) : path_(path) {
-  if (sqlite3_open_v2(path.c_str(), &db_, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE | SQLITE_OPEN_NOMUTEX, nullptr) !=
-      SQLITE_OK) {
+  if (const int rc = sqlite3_open_v2(path.c_str(), &db_, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE | SQLITE_OPEN_NOMUTEX,
+                                    nullptr);
+      rc != SQLITE_OK) {
     const std::string message = db_ ? sqlite3_errmsg(db_) : "out of memory";
     sqlite3_close(db_);
-    throw std::runtime_error("cannot open " + path + ": " + message);
+    db_ = nullptr;
+    throw MakeInputError(path, "", "SQLite cannot open this database: " + message);
   }
   sqlite3_busy_timeout(db_, 10000);
   // WAL + synchronous=NORMAL: a committed transaction survives the process being killed
@@ -289,10 +308,9 @@ ResultsDb::~ResultsDb() { sqlite3_close(db_); }
 
 void ResultsDb::Exec(const std::string& sql) const {
   char* error = nullptr;
-  if (sqlite3_exec(db_, sql.c_str(), nullptr, nullptr, &error) != SQLITE_OK) {
-    const std::string message = error ? error : "unknown error";
+  if (const int rc = sqlite3_exec(db_, sql.c_str(), nullptr, nullptr, &error); rc != SQLITE_OK) {
     sqlite3_free(error);
-    throw std::runtime_error("sqlite (" + path_ + "): " + message);
+    ThrowSqlite(db_, rc, "exec");
   }
 }
 
@@ -315,6 +333,8 @@ void ResultsDb::SetMeta(const std::map<std::string, std::string>& meta) {
       const bool is_path = std::find(std::begin(kMetaPathKeys), std::end(kMetaPathKeys), k) != std::end(kMetaPathKeys);
       st.Text(2, is_path ? PathForOutput(v, Directory(path_)) : v);
       if (st.Step() != SQLITE_DONE) throw std::runtime_error(std::string("sqlite meta: ") + sqlite3_errmsg(db_));
+      st.Text(2, v);
+      if (const int rc = st.Step(); rc != SQLITE_DONE) ThrowSqlite(db_, rc, "meta");
     }
     Exec("COMMIT");
   } catch (...) {
@@ -342,14 +362,14 @@ void ResultsDb::Insert(const std::vector<DropRecord>& records) {
           throw std::runtime_error(path_ + ": drop " + r.drop_id + " is already stored with different results");
         continue;
       }
-      if (rc != SQLITE_DONE) throw std::runtime_error(std::string("sqlite insert: ") + sqlite3_errmsg(db_));
+      if (rc != SQLITE_DONE) ThrowSqlite(db_, rc, "insert");
       if (!r.trace.empty()) {
         trace.Reset();
         trace.Int(1, r.index);
         trace.Int(2, static_cast<int64_t>(r.trace.size()));
         sqlite3_bind_blob(trace.get(), 3, r.trace.data(), static_cast<int>(r.trace.size() * sizeof(DropSample)),
                           SQLITE_STATIC);
-        if (trace.Step() != SQLITE_DONE) throw std::runtime_error(std::string("sqlite trace: ") + sqlite3_errmsg(db_));
+        if (const int rc = trace.Step(); rc != SQLITE_DONE) ThrowSqlite(db_, rc, "trace");
       }
     }
     Exec("COMMIT");
@@ -446,7 +466,7 @@ void ResultsDb::ForEach(const std::function<void(const DropRecord&)>& visit, boo
     if (with_traces && sqlite3_column_type(st.get(), n_columns) != SQLITE_NULL) r.trace = ReadTraceBlob(st, n_columns);
     visit(r);
   }
-  if (rc != SQLITE_DONE) throw std::runtime_error(std::string("sqlite read: ") + sqlite3_errmsg(db_));
+  if (rc != SQLITE_DONE) ThrowSqlite(db_, rc, "read");
 }
 
 std::vector<DropRecord> ResultsDb::ReadAll(bool with_traces) const {

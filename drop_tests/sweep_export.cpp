@@ -13,6 +13,7 @@
 #include "drop_tests/sweep_drop.h"
 #include "drop_tests/sweep_engine.h"
 #include "rft/input_error.h"
+#include "rft/input_file.h"
 
 namespace touchdown::drop {
 
@@ -24,6 +25,25 @@ const std::vector<std::string> kExtraColumns = {
     "max_deceleration_m_s2", "impact_energy_J", "gravity_work_J",     "dissipated_energy_J",
     "mean_conversion_rate_W", "rest_creep_m",   "solver_steps",       "final_tilt_deg",
     "horizontal_travel_m"};
+
+// A results database to read: there (else "no sweep results here"), and a readable file.
+void RequireResultsFile(const std::string& db_path) {
+  std::error_code ec;
+  if (!fs::exists(fs::symlink_status(db_path, ec))) throw MakeInputError(db_path, "", "no sweep results here");
+  RequireReadableFile(db_path, "results database");
+}
+
+// Export reads every format up to this build's (ResultsDb adds the newer columns to older
+// databases); a newer or unknown one is refused, as `sweep` refuses to resume it.
+void RequireReadableFormat(const std::string& db_path, const std::map<std::string, std::string>& meta) {
+  const auto it = meta.find("format_version");
+  const std::string version = it == meta.end() ? "" : it->second;
+  for (int v = 1; v <= kResultsDbVersion; ++v)
+    if (version == std::to_string(v)) return;
+  throw MakeInputError(db_path, "format_version",
+                       "unknown results format '" + version + "' (this touchdown reads 1 to " +
+                           std::to_string(kResultsDbVersion) + "; written by another touchdown version?)");
+}
 
 // The plan the database was written from, reloaded from its sweep file and checked.
 SweepPlan ReloadPlan(const std::string& db_path, const std::map<std::string, std::string>& meta) {
@@ -74,10 +94,11 @@ InputError LanderRefusal(const std::string& db_path, const DropRecord& r) {
 Dataset SweepToDataset(const std::string& sweep_dir, const ExportOptions& options, ExportSummary* summary_out,
                        std::vector<DropRecord>* failed_out) {
   const std::string db_path = ResultsDbPath(sweep_dir);
-  if (!fs::is_regular_file(db_path)) throw MakeInputError(db_path, "", "no sweep results here");
+  RequireResultsFile(db_path);
   const ResultsDb db(db_path);
   const std::map<std::string, std::string> meta = db.Meta();
   if (meta.empty()) throw MakeInputError(db_path, "", "not a sweep results database (no meta)");
+  RequireReadableFormat(db_path, meta);
   std::vector<DropRecord> records = db.ReadAll(/*with_traces=*/true);
   ExportSummary summary;
   for (const DropRecord& r : records)
@@ -346,10 +367,11 @@ ExportSummary ExportPadSweep(const ResultsDb& db, const std::map<std::string, st
 
 ExportSummary ExportSweep(const std::string& sweep_dir, const OutputTarget& dataset_dir, const ExportOptions& options) {
   const std::string db_path = ResultsDbPath(sweep_dir);
-  if (!fs::is_regular_file(db_path)) throw MakeInputError(db_path, "", "no sweep results here");
+  RequireResultsFile(db_path);
   const ResultsDb db(db_path);
   const std::map<std::string, std::string> meta = db.Meta();
   if (meta.empty()) throw MakeInputError(db_path, "", "not a sweep results database (no meta)");
+  RequireReadableFormat(db_path, meta);
   const std::vector<DropRecord> first = db.ReadPage(std::numeric_limits<int64_t>::min(), 1, /*with_traces=*/false);
   if (!first.empty() && first.front().kind == "lander") return ExportLanderSweep(db, dataset_dir);
   return ExportPadSweep(db, meta, dataset_dir, options);

@@ -13,6 +13,7 @@
 #include "drop_tests/sweep_drop.h"
 #include "drop_tests/yaml_fields.h"
 #include "rft/input_error.h"
+#include "rft/physical_limits.h"
 
 namespace touchdown::drop {
 
@@ -57,10 +58,12 @@ void CheckValue(SweepParam p, double v, const std::string& file, const std::stri
   };
   if (!std::isfinite(v)) fail("finite");
   switch (p) {
-    case SweepParam::kImpactSpeed: if (v < 0.0) fail(">= 0"); break;
+    // Physical ranges (rft/physical_limits.h), as for a single drop.
+    case SweepParam::kImpactSpeed: limits::Require(limits::kSpeed_m_s, v, file, path); break;
+    case SweepParam::kHorizontalSpeed: limits::Require(limits::kAbsSpeed_m_s, v, file, path); break;
+    case SweepParam::kZeta: limits::Require(limits::kZeta_N_cm3, v, file, path); break;
     case SweepParam::kMass:
-    case SweepParam::kGravity:
-    case SweepParam::kZeta: if (!(v > 0.0)) fail("positive"); break;
+    case SweepParam::kGravity: if (!(v > 0.0)) fail("positive"); break;
     case SweepParam::kTilt:
       if (!(std::abs(v) < 90.0)) fail("between -90 and 90");
       break;

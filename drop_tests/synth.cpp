@@ -72,7 +72,14 @@ SynthSpec LoadSynthSpec(const std::string& path) {
   s.source = path;
   s.name = f.StringOr("name", fs::path(path).stem().string());
   s.description = f.StringOr("description", "");
-  s.seed = static_cast<unsigned long long>(f.Has("seed") ? f.NonNegative("seed") : 1);
+  if (f.Has("seed")) {
+    // As a sweep's seed: a whole number a double holds exactly (a larger one would be rounded
+    // or, from 2^64 on, not fit the generator's seed at all).
+    const double seed = f.NonNegative("seed");
+    if (seed != std::floor(seed) || seed > 9.0e15)
+      f.Fail("seed", "must be a whole number from 0 to 9e15, got " + f.node()["seed"].Scalar());
+    s.seed = static_cast<unsigned long long>(seed);
+  }
   s.sample_rate_hz = f.PositiveOr("sample_rate_hz", 1000.0);
   if (f.Has("rest_duration_s")) s.rest_duration_s = f.NonNegative("rest_duration_s");
   const int trials = f.Has("trials") ? f.PositiveInt("trials") : 1;

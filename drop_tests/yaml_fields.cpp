@@ -3,25 +3,58 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <map>
 
 #include "rft/input_error.h"
+#include "rft/input_file.h"
 
 namespace touchdown::drop {
 
 namespace {
+constexpr double kMaxWholeNumber = 1e9;  // counts read into an int
+
 std::string Shown(const YAML::Node& n) {
   if (n.IsScalar()) return "'" + n.Scalar() + "'";
   if (n.IsSequence()) return "a list";
   if (n.IsMap()) return "a mapping";
   return "nothing";
 }
+
+std::string LineOf(const YAML::Node& n) { return "line " + std::to_string(n.Mark().line + 1); }
+
+// What yaml-cpp accepts but a touchdown file must not contain, checked once over the whole
+// tree: a key given twice in one mapping (yaml-cpp keeps both pairs and lookups see the first,
+// so the second would be dropped silently), and text that is not UTF-8 (names and ids go
+// into JSON and file names).
+void CheckTree(const YAML::Node& node, const std::string& file, const std::string& path) {
+  auto join = [&](const std::string& key) { return path.empty() ? key : path + "." + key; };
+  if (node.IsScalar()) {
+    if (!IsValidUtf8(node.Scalar()))
+      throw MakeInputError(file, path.empty() ? LineOf(node) : path, "not valid UTF-8 text (" + LineOf(node) + ")");
+  } else if (node.IsSequence()) {
+    for (size_t i = 0; i < node.size(); ++i) CheckTree(node[i], file, path + "[" + std::to_string(i) + "]");
+  } else if (node.IsMap()) {
+    std::map<std::string, YAML::Node> seen;
+    for (const auto& item : node) {
+      if (!item.first.IsScalar()) throw MakeInputError(file, path, "a key must be plain text (" + LineOf(item.first) + ")");
+      const std::string key = item.first.Scalar();
+      if (!IsValidUtf8(key)) throw MakeInputError(file, path, "a key is not valid UTF-8 text (" + LineOf(item.first) + ")");
+      const auto [first, fresh] = seen.emplace(key, item.first);
+      if (!fresh)
+        throw MakeInputError(file, join(key),
+                             "duplicate key (" + LineOf(item.first) + "; first at " + LineOf(first->second) + ")");
+      CheckTree(item.second, file, join(key));
+    }
+  }
+}
 }  // namespace
 
 YamlFields YamlFields::LoadFile(const std::string& path) {
-  if (!std::filesystem::is_regular_file(path)) throw MakeInputError(path, "", "file not found");
+  const std::string text = ReadInputFile(path);
   try {
-    YAML::Node root = YAML::LoadFile(path);
+    YAML::Node root = YAML::Load(text);
     if (!root.IsMap()) throw MakeInputError(path, "", "top level must be a YAML mapping");
+    CheckTree(root, path, "");
     return YamlFields(root, path, "");
   } catch (const YAML::Exception& e) {
     throw MakeInputError(path, "", std::string("malformed YAML: ") + e.what());
@@ -76,6 +109,14 @@ double YamlFields::Number(const std::string& key) const {
   return value;
 }
 
+bool YamlFields::Bool(const std::string& key) const {
+  if (!Has(key)) Fail(key, "missing");
+  bool value = false;
+  if (!node_[key].IsScalar() || !YAML::convert<bool>::decode(node_[key], value))
+    Fail(key, "must be true or false, got " + Shown(node_[key]));
+  return value;
+}
+
 double YamlFields::Positive(const std::string& key) const {
   const double v = Number(key);
   if (!(v > 0.0)) Fail(key, "must be positive, got " + Shown(node_[key]));
@@ -94,7 +135,8 @@ double YamlFields::PositiveOr(const std::string& key, double fallback) const {
 
 int YamlFields::PositiveInt(const std::string& key) const {
   const double v = Positive(key);
-  if (v != std::floor(v) || v > 1e9) Fail(key, "must be a whole number, got " + Shown(node_[key]));
+  if (v != std::floor(v)) Fail(key, "must be a whole number, got " + Shown(node_[key]));
+  if (v > kMaxWholeNumber) Fail(key, "must be at most 1000000000 (1e9), got " + Shown(node_[key]));
   return static_cast<int>(v);
 }
 

@@ -21,6 +21,7 @@ class YamlFields {
   std::string String(const std::string& key) const;
   std::string StringOr(const std::string& key, const std::string& fallback) const;
   double Number(const std::string& key) const;  // finite
+  bool Bool(const std::string& key) const;      // true/false (yes/no, on/off as YAML 1.1 has them)
   double Positive(const std::string& key) const;
   double NonNegative(const std::string& key) const;
   double PositiveOr(const std::string& key, double fallback) const;

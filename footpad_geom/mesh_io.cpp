@@ -4,6 +4,7 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
@@ -18,11 +19,14 @@
 #include <cstdio>
 #include <filesystem>
 #include <iterator>
+#include <limits>
 #include <unordered_map>
 
 #include "footpad_geom/mesh_readers.h"
 #include "footpad_geom/mesh_remesh.h"
 #include "rft/input_error.h"
+#include "rft/input_file.h"
+#include "rft/physical_limits.h"
 
 namespace touchdown::geom {
 
@@ -120,16 +124,36 @@ std::size_t CheckAndOrientSoup(std::vector<Point>& points, std::vector<Polygon>&
   return reversed;
 }
 
+double SixTimesSignedVolume(const Mesh& mesh, Mesh::Face_index f) {
+  auto h = mesh.halfedge(f);
+  const Point& a = mesh.point(mesh.source(h));
+  const Point& b = mesh.point(mesh.target(h));
+  const Point& c = mesh.point(mesh.target(mesh.next(h)));
+  return CGAL::scalar_product(a - CGAL::ORIGIN, CGAL::cross_product(b - CGAL::ORIGIN, c - CGAL::ORIGIN));
+}
+
 double SignedVolume(const Mesh& mesh) {
   double six_v = 0.0;
-  for (Mesh::Face_index f : mesh.faces()) {
-    auto h = mesh.halfedge(f);
-    const Point& a = mesh.point(mesh.source(h));
-    const Point& b = mesh.point(mesh.target(h));
-    const Point& c = mesh.point(mesh.target(mesh.next(h)));
-    six_v += CGAL::scalar_product(a - CGAL::ORIGIN, CGAL::cross_product(b - CGAL::ORIGIN, c - CGAL::ORIGIN));
-  }
+  for (Mesh::Face_index f : mesh.faces()) six_v += SixTimesSignedVolume(mesh, f);
   return six_v / 6.0;
+}
+
+// Closed shells lying inside other shells. After orient_to_bound_a_volume a shell directly
+// inside another bounds a cavity and is oriented inward (negative volume); every nesting has
+// at least one such shell. A pad is one solid (or several side by side): an inner shell would
+// add its surface to the contact sums as if the soil reached it.
+std::size_t NestedShells(Mesh& mesh) {
+  auto component = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:component", 0).first;
+  const std::size_t n = PMP::connected_components(mesh, component);
+  std::size_t nested = 0;
+  if (n > 1) {
+    std::vector<double> six_v(n, 0.0);
+    for (Mesh::Face_index f : mesh.faces()) six_v[component[f]] += SixTimesSignedVolume(mesh, f);
+    for (double v : six_v)
+      if (v < 0.0) ++nested;
+  }
+  mesh.remove_property_map(component);
+  return nested;
 }
 
 std::string Lower(std::string s) {
@@ -143,9 +167,20 @@ PreparedMesh PrepareTriangleMesh(PolygonSoup soup, const std::string& source) {
   if (soup.faces.empty()) throw Defect(source, "mesh has no faces");
   std::vector<Point> points;
   points.reserve(soup.vertices.size());
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
   for (const Eigen::Vector3d& v : soup.vertices) {
     if (!v.allFinite()) throw Defect(source, "mesh has a vertex with a non-finite coordinate");
     points.emplace_back(v.x(), v.y(), v.z());
+    lo = lo.cwiseMin(v);
+    hi = hi.cwiseMax(v);
+  }
+  // A pad of kilometres is a unit mistake (or garbage); its contact sums would lose every digit.
+  const double extent = soup.vertices.empty() ? 0.0 : (hi - lo).maxCoeff();
+  if (extent > limits::kPadSize_m.high) {
+    char text[160];
+    std::snprintf(text, sizeof text, "mesh is %.3g m across, at most %g m for a pad (check the mesh's unit)", extent,
+                  limits::kPadSize_m.high);
+    throw Defect(source, text);
   }
   std::vector<Polygon> polygons;
   polygons.reserve(soup.faces.size());
@@ -192,6 +227,9 @@ PreparedMesh PrepareTriangleMesh(PolygonSoup soup, const std::string& source) {
   const double volume_after = SignedVolume(mesh);
   out.reoriented = reversed > 0 || !outward || volume_after != volume_before;
   if (!(volume_after > 0.0)) throw Defect(source, "mesh encloses no volume");
+  if (const std::size_t nested = NestedShells(mesh); nested > 0)
+    throw Defect(source, Count(nested, "closed shell lies", "closed shells lie") +
+                             " inside another (a pad must be one solid, not nested shells)");
 
   // No element was removed, so vertex and face indices are contiguous.
   out.mesh.vertices.reserve(mesh.number_of_vertices());
@@ -210,7 +248,7 @@ PreparedMesh PrepareTriangleMesh(PolygonSoup soup, const std::string& source) {
 }
 
 PreparedMesh LoadTriangleMesh(const std::string& path, const MeshLoadOptions& options) {
-  if (!fs::is_regular_file(path)) throw Defect(path, "mesh file not found");
+  RequireReadableFile(path, "mesh file");
   const std::string ext = Lower(fs::path(path).extension().string());
   if (ext != ".stl" && ext != ".off" && ext != ".obj" && ext != ".ply")
     throw Defect(path, "unknown mesh format '" + ext + "' (.stl, .off, .obj, .ply)");

@@ -10,6 +10,8 @@
 //     two otherwise separate sheets;
 //   - no triangle has zero area and no two triangles intersect (other than along a shared
 //     edge or vertex);
+//   - no closed shell lies inside another (a box inside a box is refused; separate solids
+//     side by side are accepted), and the mesh is at most limits::kPadSize_m (10 m) across;
 // and it is then oriented so that it bounds a volume with outward normals: an inverted mesh
 // (all normals inward, as some exporters write) is reversed and reported, not refused.
 // Every defect throws InputError with one line: "<file>: <count> <defect>", e.g.
@@ -38,7 +40,8 @@ struct MeshLoadOptions {
 };
 
 // Reads `path` (format from its extension: .stl, .off, .obj, .ply, any case), converts the
-// coordinates to metres and prepares it. Throws InputError for a missing or unreadable file,
+// coordinates to metres and prepares it. Throws InputError for a missing or unreadable file
+// (rft/input_file.h says which),
 // an unknown format or any defect above.
 PreparedMesh LoadTriangleMesh(const std::string& path, const MeshLoadOptions& options = {});
 

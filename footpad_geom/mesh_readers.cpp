@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "rft/input_error.h"
+#include "rft/input_file.h"
 
 namespace touchdown::geom {
 
@@ -23,11 +24,7 @@ namespace {
   throw MakeInputError(path, "", std::string("could not be read as ") + format + " (" + why + ")");
 }
 
-std::string Slurp(const std::string& path, const char* format) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) Fail(path, format, "cannot open the file");
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
+std::string Slurp(const std::string& path, const char*) { return ReadInputFile(path, "mesh file"); }
 
 bool IsSpace(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v'; }
 

@@ -278,6 +278,18 @@ LanderRunResult SimulateLander(const LanderModel& model, const Terrain& terrain,
   long k = 1;
   int events = 0;
   integrator.Reset(0.0, y);
+  {
+    // A pad already on the surface at release (touchdown_speed_m_s: 0 places the lowest pad
+    // there) touches down at t = 0: CVODE never reports a root that holds at the start.
+    constexpr double kTouchingAtRelease_m = 1e-9;  // rounding of the placement, far below any sinkage
+    const LanderPose pose = ComputePose(model, L, y);
+    for (int i = 0; i < kNumLegs; ++i)
+      if (PadDepth(model, terrain, i, pose.pads[i]) >= -kTouchingAtRelease_m) {
+        result.events.push_back({0.0, "touchdown", i});
+        result.touchdown_time_s[i] = 0.0;
+        result.first_touchdown_s = 0.0;
+      }
+  }
   record(0.0, y);
   while (t < options.duration_s) {
     const double t_out = std::min(k * dt, options.duration_s);

@@ -2,6 +2,7 @@
 // every bad input answered by one line on stderr, exit status 2 and no partial output.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -80,6 +81,40 @@ TEST_F(Cli, ForceOfFlatPadMatchesTheClosedForm) {
   EXPECT_LT(nlohmann::json::parse(t.out)["force_N"][0].get<double>(), 0.0);
 }
 
+// Issue 13 section 4: `force` and `drop` never print null or NaN for a number, at the edges of
+// the physical ranges (rft/physical_limits.h) too; beyond them the input is refused (exit 2).
+void ExpectOnlyFiniteNumbers(const nlohmann::json& v, const std::string& where) {
+  EXPECT_FALSE(v.is_null()) << where;
+  if (v.is_number()) {
+    EXPECT_TRUE(std::isfinite(v.get<double>())) << where;
+  }
+  if (v.is_object())
+    for (const auto& [key, x] : v.items()) ExpectOnlyFiniteNumbers(x, where + "." + key);
+  if (v.is_array())
+    for (size_t i = 0; i < v.size(); ++i) ExpectOnlyFiniteNumbers(v[i], where + "[" + std::to_string(i) + "]");
+}
+
+TEST_F(Cli, JsonOutputsCarryNoNullOrNaNAtTheLimits) {
+  for (const std::string& args :
+       {std::string("force --pad flat --soil fjs1_lp --depth 10 --tilt-deg 180 --velocity 60,0,-80 --omega 0,0,1000"),
+        std::string("force --pad flat --soil fjs1_lp --depth -10 --velocity 0,0,-100"),
+        std::string("force --pad hex --soil fjs1_lp --depth 0.01 --law agarwal2023 --omega 1000,0,0"),
+        std::string("drop --pad flat --soil fjs1_lp --speed 100"),
+        std::string("drop --pad flat --soil fjs1_lp --speed 0"),
+        std::string("drop --pad flat --soil fjs1_lp --speed 2 --free --tilt-deg 30 --horizontal-speed 1")}) {
+    const CliRun r = Touchdown(args);
+    ASSERT_EQ(r.status, 0) << args << ": " << r.err;
+    ExpectOnlyFiniteNumbers(nlohmann::json::parse(r.out), args);
+  }
+  for (const std::string& args : {std::string("force --pad flat --soil fjs1_lp --depth 0.01 --velocity 1e200,0,-1e200"),
+                                  std::string("force --pad flat --soil fjs1_lp --depth 0.01 --omega 1e300,0,0"),
+                                  std::string("drop --pad flat --soil fjs1_lp --speed 1e200")}) {
+    const CliRun r = Touchdown(args);
+    EXPECT_EQ(r.status, 2) << args;
+    EXPECT_TRUE(r.out.empty()) << args;
+  }
+}
+
 TEST_F(Cli, MassGravityAndZetaOverridesApply) {
   const CliRun base = Touchdown("drop --pad flat --soil fjs1_lp --speed 1.0");
   const CliRun heavy = Touchdown("drop --pad flat --soil fjs1_lp --speed 1.0 --mass 3.2 --zeta 4");
@@ -148,7 +183,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"UnknownPad", "drop --pad hexagon --soil fjs1_lp --speed 1", "pads: unknown name 'hexagon'"},
         BadInput{"UnknownSoil", "drop --pad flat --soil mud --speed 1", "soils: unknown name 'mud'"},
         BadInput{"MissingPadFile", "drop --pad {dir}/nope.yaml --soil fjs1_lp --speed 1", "{dir}/nope.yaml: file not found"},
-        BadInput{"NegativeSpeed", "drop --pad flat --soil fjs1_lp --speed -1", "impact_speed_m_s: must be >= 0"},
+        BadInput{"NegativeSpeed", "drop --pad flat --soil fjs1_lp --speed -1",
+                 "impact_speed_m_s: must be between 0 and 100 m/s, got -1"},
         BadInput{"NanSpeed", "drop --pad flat --soil fjs1_lp --speed nan", "impact_speed_m_s"},
         BadInput{"InfiniteMass", "drop --pad flat --soil fjs1_lp --speed 1 --mass inf", "mass_kg: must be positive and finite"},
         BadInput{"ZeroGravity", "drop --pad flat --soil fjs1_lp --speed 1 --gravity 0", "gravity_m_s2"},
@@ -166,7 +202,7 @@ INSTANTIATE_TEST_SUITE_P(
                  "profile.radius_mm: must be positive"},
         BadInput{"MissingOut", "campaign {dir}/bad_scenario.yaml", "--out is required"},
         BadInput{"ForceBadTiltAxis", "force --pad flat --soil fjs1_lp --depth 0.01 --tilt-axis z", "tilt_axis: must be x or y"},
-        BadInput{"ForceNanDepth", "force --pad flat --soil fjs1_lp --depth nan", "depth_m"},
+        BadInput{"ForceNanDepth", "force --pad flat --soil fjs1_lp --depth nan", "--depth: must be between -10 and 10 m, got nan"},
         BadInput{"ForceNoMotion", "force --pad flat --soil fjs1_lp --depth 0.01 --velocity 0,0,0",
                  "the pad must move"},
         BadInput{"ForceUnknownLaw", "force --pad flat --soil fjs1_lp --depth 0.01 --law bekker", "bekker"}),

@@ -15,6 +15,9 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <functional>
+#include <sqlite3.h>
+#include <sys/stat.h>
 #include <nlohmann/json.hpp>
 #include <regex>
 #include <string>
@@ -30,6 +33,9 @@ struct Case {
   std::string what;    // the case, in a few words
   std::string args;    // touchdown arguments, run in the scratch directory
   std::vector<std::pair<std::string, std::string>> files = {};  // written there first
+  // Anything files cannot hold (a symlink, a FIFO, a directory, a database), made in the
+  // scratch directory before the run.
+  std::function<void(const fs::path& dir)> setup = {};
 };
 
 // ---- inputs -------------------------------------------------------------------------------
@@ -119,6 +125,122 @@ std::vector<std::pair<std::string, std::string>> Dataset(const std::string& name
 }
 
 std::string Calibrate(const std::string& name) { return "calibrate " + name + " --param zeta --out " + name + ".yaml"; }
+
+// ---- issue 13, sections 3 (exit statuses, clear errors) and 4 (inputs accepted but wrong) ----
+
+// A results database whose meta table holds `version` as its format.
+void MakeResultsDb(const fs::path& path, const std::string& version) {
+  fs::create_directories(path.parent_path());
+  sqlite3* db = nullptr;
+  sqlite3_open(path.string().c_str(), &db);
+  const std::string sql = "CREATE TABLE meta(key TEXT PRIMARY KEY, value TEXT NOT NULL);"
+                          "INSERT INTO meta VALUES('format_version', '" + version + "');";
+  sqlite3_exec(db, sql.c_str(), nullptr, nullptr, nullptr);
+  sqlite3_close(db);
+}
+
+// The box of BoxOff() with a second, smaller closed box inside it.
+std::string NestedBoxOff() {
+  std::string v = "0 0 0\n10 0 0\n10 10 0\n0 10 0\n0 0 5\n10 0 5\n10 10 5\n0 10 5\n"
+                  "2 2 1\n8 2 1\n8 8 1\n2 8 1\n2 2 4\n8 2 4\n8 8 4\n2 8 4\n";
+  const std::vector<std::string> quads = {"0 3 2 1", "4 5 6 7", "0 1 5 4", "1 2 6 5", "2 3 7 6", "3 0 4 7"};
+  std::string f;
+  for (int offset : {0, 8})
+    for (const std::string& q : quads) {
+      int a, b, c, d;
+      std::sscanf(q.c_str(), "%d %d %d %d", &a, &b, &c, &d);
+      f += "4 " + std::to_string(a + offset) + " " + std::to_string(b + offset) + " " + std::to_string(c + offset) +
+           " " + std::to_string(d + offset) + "\n";
+    }
+  return "OFF\n16 12 0\n" + v + f;
+}
+
+std::string with_soil_cmd() { return "drop --pad flat --speed 1 --soil "; }
+
+void AddExitStatusAndInputCases(std::vector<Case>& c) {
+  const std::string force = " --soil fjs1_lp --depth 0.002";
+  const std::string good_pad = Pad(kFlatProfile);
+  // Section 3: an input path that is not a readable file says what it is.
+  c.push_back({"input path", "pad file is a symlink loop", "drop --pad loop.yaml --soil fjs1_lp --speed 1", {},
+               [](const fs::path& d) { fs::create_symlink("loop.yaml", d / "loop.yaml"); }});
+  c.push_back({"input path", "pad file is a directory", "drop --pad pad_dir.yaml --soil fjs1_lp --speed 1", {},
+               [](const fs::path& d) { fs::create_directories(d / "pad_dir.yaml"); }});
+  c.push_back({"input path", "pad file is a FIFO", "drop --pad pipe.yaml --soil fjs1_lp --speed 1", {},
+               [](const fs::path& d) { ::mkfifo((d / "pipe.yaml").c_str(), 0600); }});
+  c.push_back({"input path", "pad file is a device", "drop --pad /dev/null --soil fjs1_lp --speed 1"});
+  c.push_back({"input path", "mesh file is a directory", "force --pad mesh_dir.yaml" + force,
+               {{"mesh_dir.yaml", MeshPad("dir.stl")}}, [](const fs::path& d) { fs::create_directories(d / "dir.stl"); }});
+  c.push_back({"input path", "results.sqlite is corrupt", "export corrupt_db --to out_x1",
+               {{"corrupt_db/results.sqlite", std::string(4096, 'x')}}});
+  c.push_back({"input path", "results.sqlite is a directory", "export dir_db --to out_x2", {},
+               [](const fs::path& d) { fs::create_directories(d / "dir_db" / "results.sqlite"); }});
+  c.push_back({"sweep results", "unknown format_version", "export future_db --to out_x3", {},
+               [](const fs::path& d) { MakeResultsDb(d / "future_db" / "results.sqlite", "99"); }});
+  // Section 3: text that is not UTF-8, ids that cannot name files.
+  c.push_back({"pad YAML", "name with a byte that is not UTF-8", "drop --pad latin1.yaml --soil fjs1_lp --speed 1",
+               {{"latin1.yaml", "name: \"pad\xe9\"\n" + good_pad}}});
+  c.push_back({"dataset CSV", "drop_id with a '/'", Calibrate("ds_slash"),
+               Dataset("ds_slash", kDropsHeader + "a/b,flat,fjs1_lp,vacuum,1.0,1.6,9.81,t.csv\n")});
+  c.push_back({"dataset CSV", "drop_id with a byte that is not UTF-8", Calibrate("ds_latin1"),
+               Dataset("ds_latin1", kDropsHeader + "d\xe9,flat,fjs1_lp,vacuum,1.0,1.6,9.81,t.csv\n")});
+  // Section 3: messages that named the wrong problem.
+  c.push_back({"pad YAML", "radius_mm 1e300", "drop --pad huge_radius.yaml --soil fjs1_lp --speed 1",
+               {{"huge_radius.yaml", Pad("profile: {shape: flat, radius_mm: 1e300, thickness_mm: 16}\n")}}});
+  c.push_back({"sweep YAML", "random samples 2^40 - 1", "sweep samples.yaml --threads 1 --progress lines --out out_s13",
+               {{"samples.yaml", Sweep(kSweepBase + "random: {samples: 1099511627775, seed: 1, "
+                                                   "impact_speed_m_s: {uniform: [0.5, 2]}}\n")}}});
+  c.push_back({"scenario YAML", "speeds 1.0 and 1.004 (distinct drops)", "campaign close_speeds.yaml --out out_c13",
+               {{"close_speeds.yaml", "drops:\n  - {pad: flat, soil: fjs1_lp, impact_speeds_m_s: [1.0, 1.004]}\n"}}});
+  c.push_back({"scenario YAML", "speed 1.0 listed twice", "campaign same_speed.yaml --out out_c14",
+               {{"same_speed.yaml", "drops:\n  - {pad: flat, soil: fjs1_lp, impact_speeds_m_s: [1.0, 1]}\n"}}});
+  c.push_back({"CLI flag", "sweep --batch 0", "sweep soft.yaml --batch 0 --out out_f13"});
+  // Section 4: duplicate keys, in any YAML file.
+  c.push_back({"pad YAML", "mass_kg given twice", "drop --pad dup_mass.yaml --soil fjs1_lp --speed 1",
+               {{"dup_mass.yaml", good_pad + "mass_kg: 2.0\n"}}});
+  c.push_back({"sweep YAML", "grid block given twice", "sweep dup_grid.yaml --threads 1 --progress lines --out out_s14",
+               {{"dup_grid.yaml", Sweep(kSweepBase + "grid: {impact_speed_m_s: [1]}\ngrid: {pad_mass_kg: [1, 2]}\n")}}});
+  c.push_back({"soil YAML", "duplicate key in a nested mapping", with_soil_cmd() + "dup_nested.yaml",
+               {{"dup_nested.yaml", Soil("zeta_N_cm3: 3\nprovenance: {source: a, source: b}\n")}}});
+  // Section 4: physically meaningless magnitudes, refused with the valid range.
+  const std::string rig = "drop --pad flat --soil fjs1_lp ";
+  c.push_back({"CLI flag", "drop --speed 1e308", rig + "--speed 1e308"});
+  c.push_back({"CLI flag", "drop --speed 1e200", rig + "--speed 1e200"});
+  c.push_back({"CLI flag", "drop --free --tilt-deg 1e308", rig + "--speed 1 --free --tilt-deg 1e308"});
+  c.push_back({"CLI flag", "drop --free --omega 1e300,0,0", rig + "--speed 1 --free --omega 1e300,0,0"});
+  c.push_back({"CLI flag", "force --depth 1e308", "force --pad flat --soil fjs1_lp --depth 1e308"});
+  c.push_back({"CLI flag", "force --tilt-deg 1e308", "force --pad flat --soil fjs1_lp --depth 0.005 --tilt-deg 1e308"});
+  c.push_back({"CLI flag", "force --omega 1e300,0,0", "force --pad flat --soil fjs1_lp --depth 0.005 --omega 1e300,0,0"});
+  c.push_back({"CLI flag", "force --velocity 1e200,0,-1e200",
+               "force --pad flat --soil fjs1_lp --depth 0.005 --velocity 1e200,0,-1e200"});
+  c.push_back({"soil YAML", "zeta 1e308 N/cm^3", with_soil_cmd() + "zeta_huge.yaml",
+               {{"zeta_huge.yaml", Soil("zeta_N_cm3: 1e308\n")}}});
+  c.push_back({"mesh", "coordinates of 1e30 mm", "force --pad far_mesh.yaml" + force,
+               {{"far_mesh.yaml", MeshPad("far.obj")},
+                {"far.obj", "v 0 0 0\nv 1e30 0 0\nv 0 1e30 0\nv 0 0 1e30\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n"}}});
+  c.push_back({"mesh", "a box inside a box (nested shells)", "force --pad nested.yaml" + force,
+               {{"nested.yaml", MeshPad("nested.off")}, {"nested.off", NestedBoxOff()}}});
+  c.push_back({"extreme", "force at the limits (100 m/s, 1000 rad/s, 10 m deep, tilt 180 deg)",
+               "force --pad flat --soil fjs1_lp --depth 10 --tilt-deg 180 --velocity 60,0,-80 --omega 0,0,1000"});
+  // Section 4: the soil fields the README documents.
+  c.push_back({"soil YAML", "mu_surf and the dynamic term (README fields)",
+               "force --pad flat --law agarwal2023 --depth 0.005 --soil dynamic.yaml",
+               {{"dynamic.yaml", Soil("zeta_N_cm3: 3\nbulk_density_kg_m3: 1600\ninternal_friction_angle_deg: 37\n"
+                                      "mu_surf: 0.3\ndynamic_term: true\ndynamic_lambda: 1.2\n")}}});
+  // Section 4: spreadsheet datasets load (UTF-8 BOM, CRLF, every field quoted).
+  c.push_back({"dataset CSV", "Excel/pandas export: BOM, CRLF, QUOTE_ALL", Calibrate("ds_excel"),
+               Dataset("ds_excel",
+                       "\xEF\xBB\xBF\"drop_id\",\"pad\",\"soil\",\"atmosphere\",\"impact_speed_m_s\",\"pad_mass_kg\","
+                       "\"gravity_m_s2\",\"trace\"\r\n\"d0\",\"flat\",\"fjs1_lp\",\"vacuum\",\"1.0\",\"1.6\",\"9.81\","
+                       "\"t.csv\"\r\n",
+                       "\xEF\xBB\xBF\"t_s\",\"penetration_m\",\"force_N\"\r\n\"0\",\"0\",\"0\"\r\n\"0.001\",\"0.0005\","
+                       "\"30\"\r\n\"0.002\",\"0.0009\",\"60\"\r\n\"0.003\",\"0.001\",\"20\"\r\n")});
+  c.push_back({"dataset CSV", "quoted field not closed", Calibrate("ds_quote"),
+               Dataset("ds_quote", kDropsHeader + "\"d0,flat,fjs1_lp,vacuum,1.0,1.6,9.81,t.csv\n")});
+  // Section 4: synth seeds as sweep seeds.
+  c.push_back({"synth YAML", "seed 2^64", "synth seed.synth.yaml --out out_y1",
+               {{"seed.synth.yaml", "schema_version: 1\ntype: synth\nseed: 18446744073709551616\n"
+                                    "drops:\n  - {pads: [flat], soils: [fjs1_lp], impact_speeds_m_s: [1.0]}\n"}}});
+}
 
 std::vector<Case> Cases() {
   std::vector<Case> c;
@@ -359,6 +481,7 @@ std::vector<Case> Cases() {
     c.push_back({"sweep YAML", "max_drop_evaluations: -1", "sweep evals.yaml" + run + "out_s6_3",
                  {{"evals.yaml", Sweep("max_drop_evaluations: -1\n" + kSweepBase + "grid: {impact_speed_m_s: [1]}\n")}}});
   }
+  AddExitStatusAndInputCases(c);
   return c;
 }
 
@@ -434,6 +557,7 @@ TEST(Robustness, TableOfBadInputsMatchesDocs) {
     ++n;
     SCOPED_TRACE(c.what);
     for (const auto& [name, bytes] : c.files) box.Write(name, bytes);
+    if (c.setup) c.setup(box.dir());
     const CliRun r = box.Touchdown(c.args);
     // A crash is never an answer; neither is an unexpected status or a multi-line refusal.
     EXPECT_EQ(r.signal, 0) << "touchdown " << c.args << " crashed: " << r.err;

@@ -168,7 +168,7 @@ INSTANTIATE_TEST_SUITE_P(
                   "line 2, column 6 (pad_mass_kg): must be positive"},
         Malformed{"DuplicateId", kHeader + kRow + kRow, kTrace, "line 3, column 1 (drop_id): duplicate drop id 'a'"},
         Malformed{"MissingTraceFile", kHeader + "a,flat,fjs1_lp,vacuum,1,1.6,9.81,traces/b.csv\n", kTrace,
-                  "line 2, column 8 (trace): trace file not found"},
+                  "line 2, column 8 (trace): {dir}/traces/b.csv: trace file not found"},
         Malformed{"AbsoluteTracePath", kHeader + "a,flat,fjs1_lp,vacuum,1,1.6,9.81,/etc/passwd\n", kTrace,
                   "line 2, column 8 (trace): must be relative to the dataset directory"},
         Malformed{"ShortRow", kHeader + "a,flat,fjs1_lp,vacuum,1,1.6,9.81\n", kTrace,

@@ -229,7 +229,7 @@ INSTANTIATE_TEST_SUITE_P(
                  "fixed: {pad: flat, soil: fjs1_lp}\nrandom: {samples: 3, seed: 1, impact_speed_m_s: {uniform: [2, 1]}}\n",
                  "random.impact_speed_m_s.uniform: needs low < high"},
         BadSweep{"NegativeSpeed", "fixed: {pad: flat, soil: fjs1_lp}\ngrid: {impact_speed_m_s: [1, -1]}\n",
-                 "grid.impact_speed_m_s[1]: must be >= 0"},
+                 "grid.impact_speed_m_s[1]: must be between 0 and 100 m/s, got -1"},
         BadSweep{"UnknownPad", "fixed: {soil: fjs1_lp, impact_speed_m_s: 1}\ngrid: {pad: [flat, hexagon_xl]}\n",
                  "grid.pad[1]: pads: unknown name 'hexagon_xl'"},
         BadSweep{"NoSpeed", "fixed: {pad: flat, soil: fjs1_lp}\n", "impact_speed_m_s: not set"},

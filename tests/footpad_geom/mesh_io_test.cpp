@@ -130,8 +130,12 @@ TEST_F(MeshFiles, MillimetresBecomeMetres) {
   const std::string path = Write("box.off", testing::OffText(BoxSoup(100, 50, 16)));
   const PreparedMesh mm = LoadTriangleMesh(path, {LengthUnit::kMillimetre, 0.0});
   EXPECT_NEAR(ComputeVolumeProperties(mm.mesh).volume_m3, 0.1 * 0.05 * 0.016, 1e-15);
-  const PreparedMesh m = LoadTriangleMesh(path, {LengthUnit::kMetre, 0.0});
-  EXPECT_NEAR(ComputeVolumeProperties(m.mesh).volume_m3, 100.0 * 50 * 16, 1e-9);
+  // The same numbers in metres would be a 100 m pad, beyond the 10 m a pad may measure.
+  const std::string small = Write("small.off", testing::OffText(BoxSoup(1, 0.5, 0.16)));
+  const PreparedMesh m = LoadTriangleMesh(small, {LengthUnit::kMetre, 0.0});
+  EXPECT_NEAR(ComputeVolumeProperties(m.mesh).volume_m3, 1.0 * 0.5 * 0.16, 1e-12);
+  EXPECT_EQ(LoadError(path, {LengthUnit::kMetre, 0.0}),
+            path + ": mesh is 100 m across, at most 10 m for a pad (check the mesh's unit)");
   EXPECT_EQ(ParseLengthUnit("mm", "f", "unit"), LengthUnit::kMillimetre);
   EXPECT_EQ(ParseLengthUnit("m", "f", "unit"), LengthUnit::kMetre);
   try {
@@ -161,6 +165,8 @@ TEST_F(MeshFiles, WriterRoundTripsEveryFormat) {
 
 TEST_F(MeshFiles, FileProblemsNameTheFile) {
   EXPECT_EQ(LoadError((dir_ / "none.stl").string()), (dir_ / "none.stl").string() + ": mesh file not found");
+  std::filesystem::create_directories(dir_ / "folder.stl");
+  EXPECT_EQ(LoadError((dir_ / "folder.stl").string()), (dir_ / "folder.stl").string() + ": is a directory, not a file");
   const std::string xyz = Write("pad.xyz", "1 2 3\n");
   EXPECT_EQ(LoadError(xyz), xyz + ": unknown mesh format '.xyz' (.stl, .off, .obj, .ply)");
   const std::string garbage = Write("garbage.off", "this is not a mesh\n");
@@ -222,6 +228,22 @@ TEST(MeshDefects, SelfIntersectionIsRefused) {
   EXPECT_NE(message.find("pad.stl: mesh intersects itself ("), std::string::npos) << message;
   // Two separate boxes are a valid (two-piece) pad.
   EXPECT_EQ(DefectOf(testing::Union(TriangulatedBox(), TriangulatedBox(1, 1, 1, {2, 0, 0}))), "(no error)");
+}
+
+// Issue 13: a box inside a box added the inner shell's surface to the contact (15 % more
+// submerged area); a pad must be one solid. Boxes side by side stay valid (above).
+TEST(MeshDefects, NestedShellsAreRefused) {
+  const PolygonSoup nested = testing::Union(TriangulatedBox(1, 1, 1), TriangulatedBox(0.5, 0.5, 0.5, {0.25, 0.25, 0.25}));
+  EXPECT_EQ(DefectOf(nested), "pad.stl: 1 closed shell lies inside another (a pad must be one solid, not nested shells)");
+  // Three deep: the middle shell is the cavity of the outer one.
+  const PolygonSoup three = testing::Union(nested, TriangulatedBox(0.2, 0.2, 0.2, {0.4, 0.4, 0.4}));
+  EXPECT_NE(DefectOf(three).find("inside another"), std::string::npos) << DefectOf(three);
+}
+
+TEST(MeshDefects, AMeshKilometresAcrossIsAUnitMistake) {
+  EXPECT_EQ(DefectOf(TriangulatedBox(1e27, 1e27, 1e27)),
+            "pad.stl: mesh is 1e+27 m across, at most 10 m for a pad (check the mesh's unit)");
+  EXPECT_EQ(DefectOf(TriangulatedBox(10, 1, 1)), "(no error)");
 }
 
 TEST(MeshDefects, ZeroAreaFaceIsRefused) {

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <nlohmann/json.hpp>
 #include <numbers>
 
 #include "drop_tests/rig_drop.h"
@@ -181,5 +182,31 @@ TEST(LanderScenario, BadInputNamesFileFieldAndValue) {
                "nowhere");
 }
 
+}  // namespace
+}  // namespace touchdown::drop
+
+// Issue 13 section 4: a lander placed on the surface (touchdown_speed_m_s: 0) touches down at
+// t = 0; the touchdown times were null while the pads sank.
+namespace touchdown::drop {
+namespace {
+TEST(LanderDrop, PlacedOnTheSurfaceTouchesDownAtTimeZero) {
+  LanderScenario s = test::CoarseScenario("lander_case_A");
+  s.initial.drop_height_m.reset();
+  s.initial.touchdown_speed_m_s = 0.0;
+  s.options.duration_s = 0.3;
+  const LanderRun run = RunLanderScenario(s);
+  ASSERT_TRUE(run.result.first_touchdown_s.has_value());
+  EXPECT_EQ(*run.result.first_touchdown_s, 0.0);
+  int touching = 0;
+  for (int i = 0; i < lander::kNumLegs; ++i)
+    if (run.result.touchdown_time_s[i]) {
+      ++touching;
+      EXPECT_EQ(*run.result.touchdown_time_s[i], 0.0) << "pad " << i + 1;
+    }
+  EXPECT_EQ(touching, lander::kNumLegs);  // case A is level: all four pads are placed on the surface
+  for (double d : run.result.final_penetration_m) EXPECT_GT(d, 0.0);
+  const nlohmann::json j = LanderSummaryJson(run);
+  for (const auto& t : j["touchdown_time_s"]) EXPECT_TRUE(t.is_number()) << j["touchdown_time_s"].dump();
+}
 }  // namespace
 }  // namespace touchdown::drop
