@@ -70,6 +70,18 @@ bool InCatalogue(const std::string& kind, const std::string& name, const std::st
   }
 }
 
+// The plan's pads and soils that came from files rather than the catalogue: name -> file.
+void AddNonCatalogueFiles(const SweepPlan& plan, std::map<std::string, std::string>* pad_files,
+                          std::map<std::string, std::string>* soil_files) {
+  for (const PadSpec& p : plan.pads)
+    if (!InCatalogue("pads", p.name, p.source)) (*pad_files)[p.name] = fs::absolute(p.source).string();
+  for (size_t i = 0; i < plan.soils.size() && i < plan.soil_refs.size(); ++i) {
+    const std::string source = ResolveCatalogFile("soils", plan.soil_refs[i]);
+    if (!InCatalogue("soils", plan.soils[i].name, source))
+      (*soil_files)[plan.soils[i].name] = fs::absolute(source).string();
+  }
+}
+
 // A record's extra cells, in kExtraColumns order.
 std::vector<std::string> ExtraCells(const DropRecord& r) {
   std::vector<std::string> cells;
@@ -137,15 +149,7 @@ Dataset SweepToDataset(const std::string& sweep_dir, const ExportOptions& option
         break;
       }
   std::map<std::string, std::string> pad_files, soil_files;  // name -> path, for non-catalogue ones
-  if (plan) {
-    for (const PadSpec& p : plan->pads)
-      if (!in_catalogue("pads", p.name, p.source)) pad_files[p.name] = fs::absolute(p.source).string();
-    for (size_t i = 0; i < plan->soils.size() && i < plan->soil_refs.size(); ++i) {
-      const std::string source = ResolveCatalogFile("soils", plan->soil_refs[i]);
-      if (!in_catalogue("soils", plan->soils[i].name, source))
-        soil_files[plan->soils[i].name] = fs::absolute(source).string();
-    }
-  }
+  if (plan) AddNonCatalogueFiles(*plan, &pad_files, &soil_files);
 
   Dataset ds;
   ds.directory = "";
@@ -273,13 +277,7 @@ ExportSummary ExportPadSweep(const ResultsDb& db, const std::map<std::string, st
   auto load_plan = [&] {
     if (plan) return;
     plan = ReloadPlan(db_path, meta);
-    for (const PadSpec& p : plan->pads)
-      if (!InCatalogue("pads", p.name, p.source)) pad_files[p.name] = fs::absolute(p.source).string();
-    for (size_t i = 0; i < plan->soils.size() && i < plan->soil_refs.size(); ++i) {
-      const std::string source = ResolveCatalogFile("soils", plan->soil_refs[i]);
-      if (!InCatalogue("soils", plan->soils[i].name, source))
-        soil_files[plan->soils[i].name] = fs::absolute(source).string();
-    }
+    AddNonCatalogueFiles(*plan, &pad_files, &soil_files);
   };
   auto in_catalogue = [&](const std::string& kind, const std::string& name) {
     const auto [it, inserted] = catalogued.try_emplace(kind + "/" + name, false);
