@@ -378,8 +378,14 @@ LanderRun RunLanderScenario(const LanderScenario& scenario) {
 nlohmann::json LanderSummaryJson(const LanderRun& run) {
   const lander::LanderRunResult& r = run.result;
   auto arr = [](const std::array<double, lander::kNumLegs>& a) { return nlohmann::json(std::vector<double>(a.begin(), a.end())); };
-  nlohmann::json touchdown = nlohmann::json::array();
-  for (const auto& t : r.touchdown_time_s) touchdown.push_back(t ? nlohmann::json(*t) : nlohmann::json(nullptr));
+  // JSON numbers are never null: a pad that never touched down is absent from touchdown_pads, and
+  // touchdown_time_s is aligned with it; a lander never at rest has no rest times (came_to_rest false).
+  nlohmann::json touchdown = nlohmann::json::array(), touchdown_pads = nlohmann::json::array();
+  for (size_t i = 0; i < r.touchdown_time_s.size(); ++i)
+    if (r.touchdown_time_s[i]) {
+      touchdown.push_back(*r.touchdown_time_s[i]);
+      touchdown_pads.push_back(i + 1);
+    }
   const double final_energy = r.final_kinetic_J + r.final_potential_J + r.dissipated_J;
   const double roll = r.final_attitude.roll_rad / kDeg, pitch = r.final_attitude.pitch_rad / kDeg;
   nlohmann::json j{
@@ -395,11 +401,9 @@ nlohmann::json LanderSummaryJson(const LanderRun& run) {
       {"tipped_over", r.tipped_over},
       {"peak_pad_force_N", arr(r.peak_pad_force_N)},
       {"max_body_deceleration_m_s2", r.max_body_deceleration_m_s2},
-      {"time_to_rest_s", r.rest_time_s && r.first_touchdown_s ? nlohmann::json(*r.rest_time_s - *r.first_touchdown_s)
-                                                             : nlohmann::json(nullptr)},
-      {"rest_time_since_release_s", r.rest_time_s ? nlohmann::json(*r.rest_time_s) : nlohmann::json(nullptr)},
+      {"came_to_rest", r.rest_time_s.has_value()},
+      {"touchdown_pads", touchdown_pads},
       {"touchdown_time_s", touchdown},
-      {"touchdown_speed_m_s", nullptr},
       {"end_time_s", r.end_time_s},
       {"initial_energy_J", r.initial_energy_J},
       {"final_kinetic_energy_J", r.final_kinetic_J},
@@ -412,6 +416,10 @@ nlohmann::json LanderSummaryJson(const LanderRun& run) {
       {"solver_steps", r.solver.steps},
       {"rhs_evaluations", r.solver.rhs_evaluations},
   };
+  if (r.rest_time_s) {
+    j["rest_time_since_release_s"] = *r.rest_time_s;
+    if (r.first_touchdown_s) j["time_to_rest_s"] = *r.rest_time_s - *r.first_touchdown_s;
+  }
   if (run.scenario.initial.drop_height_m)
     j["touchdown_speed_m_s"] = std::sqrt(std::pow(run.scenario.initial.release_vertical_speed_m_s, 2) +
                                          2.0 * run.scenario.gravity_m_s2 * *run.scenario.initial.drop_height_m);

@@ -207,6 +207,27 @@ TEST(LanderDrop, PlacedOnTheSurfaceTouchesDownAtTimeZero) {
   for (double d : run.result.final_penetration_m) EXPECT_GT(d, 0.0);
   const nlohmann::json j = LanderSummaryJson(run);
   for (const auto& t : j["touchdown_time_s"]) EXPECT_TRUE(t.is_number()) << j["touchdown_time_s"].dump();
+  EXPECT_EQ(j["touchdown_pads"], nlohmann::json({1, 2, 3, 4}));
+}
+
+bool HoldsNull(const nlohmann::json& j) {
+  if (j.is_null()) return true;
+  if (j.is_number_float() && !std::isfinite(j.get<double>())) return true;
+  for (const auto& item : j) if ((j.is_object() || j.is_array()) && HoldsNull(item)) return true;
+  return false;
+}
+
+// A run that ends before any pad touches down and before rest: the summary says so in booleans and
+// lists, never with null for a number.
+TEST(LanderDrop, SummaryOfARunThatNeverLandsHoldsNoNull) {
+  LanderScenario s = test::CoarseScenario("lander_case_A");
+  s.options.duration_s = 0.01;  // released 10 cm up: touchdown comes after about 0.14 s
+  const nlohmann::json j = LanderSummaryJson(RunLanderScenario(s));
+  EXPECT_FALSE(HoldsNull(j)) << j.dump();
+  EXPECT_EQ(j["came_to_rest"], false);
+  EXPECT_TRUE(j["touchdown_pads"].empty());
+  EXPECT_TRUE(j["touchdown_time_s"].empty());
+  EXPECT_FALSE(j.contains("time_to_rest_s"));
 }
 }  // namespace
 }  // namespace touchdown::drop
