@@ -272,6 +272,16 @@ ResultsDb::ResultsDb(const std::string& path) : path_(path) {
     throw MakeInputError(path, "", "SQLite cannot open this database: " + message);
   }
   sqlite3_busy_timeout(db_, 10000);
+  try {
+    CreateTables();
+  } catch (...) {  // the destructor does not run for a constructor that throws
+    sqlite3_close(db_);
+    db_ = nullptr;
+    throw;
+  }
+}
+
+void ResultsDb::CreateTables() {
   // WAL + synchronous=NORMAL: a committed transaction survives the process being killed
   // (only an OS crash may lose the last ones, never half of one).
   Exec("PRAGMA journal_mode=WAL");

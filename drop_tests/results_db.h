@@ -122,6 +122,7 @@ class ResultsDb {
 
  private:
   void Exec(const std::string& sql) const;
+  void CreateTables();  // the schema, created or brought up to date (older formats gain their columns)
   std::string path_;
   sqlite3* db_ = nullptr;
 };
