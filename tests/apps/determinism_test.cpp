@@ -49,7 +49,10 @@ std::vector<std::string> Dump(const fs::path& db_path, const std::string& table,
     return rows;
   }
   sqlite3_stmt* st = nullptr;
-  const std::string sql = "SELECT * FROM " + table + " ORDER BY " + order;
+  std::string sql = "SELECT * FROM ";  // built with += : GCC 12 warns (-Wrestrict) on "literal" + string
+  sql += table;
+  sql += " ORDER BY ";
+  sql += order;
   if (sqlite3_prepare_v2(db, sql.c_str(), -1, &st, nullptr) != SQLITE_OK) {
     ADD_FAILURE() << sqlite3_errmsg(db);
   } else {

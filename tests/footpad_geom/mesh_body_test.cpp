@@ -3,7 +3,6 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
-#include <numbers>
 
 #include "footpad_geom/mass_properties.h"
 #include "footpad_geom/mesh_io.h"
@@ -16,7 +15,6 @@
 namespace touchdown::geom {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 TriangleMesh Box(double a, double b, double c, const Eigen::Vector3d& offset = Eigen::Vector3d::Zero()) {
   return PrepareTriangleMesh(testing::BoxSoup(a, b, c, offset), "box").mesh;
