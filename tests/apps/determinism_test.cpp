@@ -49,10 +49,7 @@ std::vector<std::string> Dump(const fs::path& db_path, const std::string& table,
     return rows;
   }
   sqlite3_stmt* st = nullptr;
-  std::string sql = "SELECT * FROM ";  // built with += : GCC 12 warns (-Wrestrict) on "literal" + string
-  sql += table;
-  sql += " ORDER BY ";
-  sql += order;
+  const std::string sql = "SELECT * FROM " + table + " ORDER BY " + order;
   if (sqlite3_prepare_v2(db, sql.c_str(), -1, &st, nullptr) != SQLITE_OK) {
     ADD_FAILURE() << sqlite3_errmsg(db);
   } else {
@@ -61,7 +58,10 @@ std::vector<std::string> Dump(const fs::path& db_path, const std::string& table,
       for (int c = 0; c < sqlite3_column_count(st); ++c) {
         row += std::string(sqlite3_column_name(st, c)) + "=";
         switch (sqlite3_column_type(st, c)) {
-          case SQLITE_INTEGER: row += "i" + std::to_string(sqlite3_column_int64(st, c)); break;
+          case SQLITE_INTEGER:  // appended in two steps: GCC 12 warns (-Wrestrict) on "literal" + string
+            row += 'i';
+            row += std::to_string(sqlite3_column_int64(st, c));
+            break;
           case SQLITE_FLOAT: {
             const double v = sqlite3_column_double(st, c);
             uint64_t bits;
@@ -74,7 +74,8 @@ std::vector<std::string> Dump(const fs::path& db_path, const std::string& table,
           case SQLITE_NULL: row += "null"; break;
           default: {  // text and blobs byte for byte
             const auto* p = static_cast<const char*>(sqlite3_column_blob(st, c));
-            row += "b" + std::string(p ? p : "", static_cast<size_t>(sqlite3_column_bytes(st, c)));
+            row += 'b';
+            row.append(p ? p : "", p ? static_cast<size_t>(sqlite3_column_bytes(st, c)) : 0);
           }
         }
         row += ";";
