@@ -19,37 +19,21 @@
 #include <thread>
 #include <vector>
 
-extern char** environ;
+#include "tests/touchdown_process.h"
 
 namespace {
 
 namespace fs = std::filesystem;
+namespace testing_process = touchdown::testing_process;
 using Clock = std::chrono::steady_clock;
 
-// Starts the touchdown binary in `dir` with `args` (an argument vector: no shell), output discarded.
 pid_t Start(const fs::path& dir, const std::vector<std::string>& args) {
-  std::vector<std::string> argv_strings = {TOUCHDOWN_BINARY};
-  argv_strings.insert(argv_strings.end(), args.begin(), args.end());
-  std::vector<char*> argv;
-  for (std::string& s : argv_strings) argv.push_back(s.data());
-  argv.push_back(nullptr);
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addchdir_np(&actions, dir.c_str());
-  posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
-  pid_t pid = -1;
-  const int error = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  EXPECT_EQ(error, 0) << "cannot start " << argv[0];
+  const pid_t pid = testing_process::StartTouchdown(args, dir.string());
+  EXPECT_GT(pid, 0) << "cannot start " << TOUCHDOWN_BINARY;
   return pid;
 }
 
-int Wait(pid_t pid) {
-  int status = 0;
-  ::waitpid(pid, &status, 0);
-  return status;
-}
+int Wait(pid_t pid) { return testing_process::WaitForStatus(pid); }
 
 // Runs to the end; returns the wall time in seconds.
 double RunToEnd(const fs::path& dir, const std::vector<std::string>& args) {
@@ -79,13 +63,20 @@ std::map<std::string, std::string> Fingerprint(const fs::path& dir) {
 }
 
 // What is left beside `target` (hidden `.TARGET.*` entries), with what each holds.
+// (Text appended piece by piece: GCC 12 warns, -Wrestrict, on "literal" + string here.)
 std::string Leftovers(const fs::path& dir, const std::string& target) {
-  std::string left;
+  std::string left, prefix = ".";
+  prefix += target;
+  prefix += '.';
   for (const fs::directory_entry& e : fs::directory_iterator(dir)) {
-    if (e.path().filename().string().rfind("." + target + ".", 0) != 0) continue;
-    left += e.path().filename().string() + " [";
+    if (e.path().filename().string().rfind(prefix, 0) != 0) continue;
+    left += e.path().filename().string();
+    left += " [";
     if (e.is_directory())
-      for (const fs::directory_entry& f : fs::directory_iterator(e.path())) left += " " + f.path().filename().string();
+      for (const fs::directory_entry& f : fs::directory_iterator(e.path())) {
+        left += ' ';
+        left += f.path().filename().string();
+      }
     left += " ] ";
   }
   return left;

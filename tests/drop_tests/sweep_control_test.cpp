@@ -27,10 +27,12 @@
 #include "drop_tests/sweep_lock.h"
 #include "drop_tests/sweep_stop.h"
 #include "rft/input_error.h"
+#include "tests/touchdown_process.h"
 
 namespace {
 
 namespace fs = std::filesystem;
+namespace testing_process = touchdown::testing_process;
 using namespace touchdown::drop;
 using touchdown::InputError;
 
@@ -83,26 +85,12 @@ class SweepControl : public ::testing::Test {
     s << in.rdbuf();
     return s.str();
   }
-  // Starts touchdown with `args` (fork/exec, no shell), its output to files.
+  // Starts touchdown with `args` (no shell), its output to files.
   Child Spawn(const std::vector<std::string>& args, const std::string& tag) {
     Child c;
     c.out_path = (dir_ / (tag + ".out")).string();
     c.err_path = (dir_ / (tag + ".err")).string();
-    c.pid = ::fork();
-    if (c.pid == 0) {
-      const int out = ::open(c.out_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-      const int err = ::open(c.err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-      ::dup2(out, 1);
-      ::dup2(err, 2);
-      std::vector<char*> argv;
-      static std::string binary = TOUCHDOWN_BINARY;
-      argv.push_back(binary.data());
-      std::vector<std::string> copy = args;
-      for (std::string& a : copy) argv.push_back(a.data());
-      argv.push_back(nullptr);
-      ::execv(binary.c_str(), argv.data());
-      ::_exit(127);
-    }
+    c.pid = testing_process::StartTouchdown(args, "", c.out_path, c.err_path);
     return c;
   }
   static int Wait(const Child& c) {

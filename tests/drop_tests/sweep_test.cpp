@@ -22,10 +22,12 @@
 #include "drop_tests/sweep_drop.h"
 #include "drop_tests/sweep_export.h"
 #include "rft/input_error.h"
+#include "tests/touchdown_process.h"
 
 namespace {
 
 namespace fs = std::filesystem;
+namespace testing_process = touchdown::testing_process;
 using namespace touchdown::drop;
 using touchdown::InputError;
 
@@ -89,23 +91,7 @@ class Sweep : public ::testing::Test {
   CliResult Touchdown(const std::string& args) { return Shell(std::string(TOUCHDOWN_BINARY) + " " + args); }
 
   // Starts touchdown with `args` (no shell) and returns its pid.
-  pid_t Spawn(const std::vector<std::string>& args) {
-    const pid_t pid = ::fork();
-    if (pid == 0) {
-      const int null = ::open("/dev/null", O_WRONLY);
-      ::dup2(null, 1);
-      ::dup2(null, 2);
-      std::vector<char*> argv;
-      static std::string binary = TOUCHDOWN_BINARY;
-      argv.push_back(binary.data());
-      std::vector<std::string> copy = args;
-      for (std::string& a : copy) argv.push_back(a.data());
-      argv.push_back(nullptr);
-      ::execv(binary.c_str(), argv.data());
-      ::_exit(127);
-    }
-    return pid;
-  }
+  pid_t Spawn(const std::vector<std::string>& args) { return testing_process::StartTouchdown(args); }
 
   // Rows in DIR/results.sqlite, read-only (0 while the file or table does not exist yet).
   static int64_t StoredRows(const fs::path& out_dir) {
