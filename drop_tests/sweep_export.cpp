@@ -101,16 +101,22 @@ InputError LanderRefusal(const std::string& db_path, const DropRecord& r) {
                         "summaries as lander_drops.csv (pad1..pad4_final_penetration_m, final_roll_deg, "
                         "final_pitch_deg, tipped_over)");
 }
+// The meta table of a sweep database of a format this touchdown reads; refused otherwise.
+std::map<std::string, std::string> ReadableMeta(const ResultsDb& db) {
+  std::map<std::string, std::string> meta = db.Meta();
+  if (meta.empty()) throw MakeInputError(db.path(), "", "not a sweep results database (no meta)");
+  RequireReadableFormat(db.path(), meta);
+  return meta;
+}
 }  // namespace
+
 
 Dataset SweepToDataset(const std::string& sweep_dir, const ExportOptions& options, ExportSummary* summary_out,
                        std::vector<DropRecord>* failed_out) {
   const std::string db_path = ResultsDbPath(sweep_dir);
   RequireResultsFile(db_path);
   const ResultsDb db(db_path);
-  const std::map<std::string, std::string> meta = db.Meta();
-  if (meta.empty()) throw MakeInputError(db_path, "", "not a sweep results database (no meta)");
-  RequireReadableFormat(db_path, meta);
+  const std::map<std::string, std::string> meta = ReadableMeta(db);
   std::vector<DropRecord> records = db.ReadAll(/*with_traces=*/true);
   ExportSummary summary;
   for (const DropRecord& r : records)
@@ -367,9 +373,7 @@ ExportSummary ExportSweep(const std::string& sweep_dir, const OutputTarget& data
   const std::string db_path = ResultsDbPath(sweep_dir);
   RequireResultsFile(db_path);
   const ResultsDb db(db_path);
-  const std::map<std::string, std::string> meta = db.Meta();
-  if (meta.empty()) throw MakeInputError(db_path, "", "not a sweep results database (no meta)");
-  RequireReadableFormat(db_path, meta);
+  const std::map<std::string, std::string> meta = ReadableMeta(db);
   const std::vector<DropRecord> first = db.ReadPage(std::numeric_limits<int64_t>::min(), 1, /*with_traces=*/false);
   if (!first.empty() && first.front().kind == "lander") return ExportLanderSweep(db, dataset_dir);
   return ExportPadSweep(db, meta, dataset_dir, options);

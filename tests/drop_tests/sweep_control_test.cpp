@@ -27,6 +27,7 @@
 #include "drop_tests/sweep_lock.h"
 #include "drop_tests/sweep_stop.h"
 #include "rft/input_error.h"
+#include "tests/scratch_dir_test.h"
 #include "tests/touchdown_process.h"
 
 namespace {
@@ -65,26 +66,8 @@ struct Child {
   std::string out_path, err_path;
 };
 
-class SweepControl : public ::testing::Test {
+class SweepControl : public touchdown::testing_scratch::ScratchDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("touchdown_sweep_control_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  std::string Write(const std::string& name, const std::string& text) {
-    std::ofstream(dir_ / name) << text;
-    return (dir_ / name).string();
-  }
-  static std::string Slurp(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-  }
   // Starts touchdown with `args` (no shell), its output to files.
   Child Spawn(const std::vector<std::string>& args, const std::string& tag) {
     Child c;
@@ -125,8 +108,6 @@ class SweepControl : public ::testing::Test {
     while (StoredRows(out) < rows && std::chrono::steady_clock::now() < deadline)
       std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
-
-  fs::path dir_;
 };
 
 TEST_F(SweepControl, ASecondSweepOnTheSameDirectoryIsRefusedNamingTheHolder) {

@@ -22,6 +22,7 @@
 #include "drop_tests/sweep_drop.h"
 #include "drop_tests/sweep_export.h"
 #include "rft/input_error.h"
+#include "tests/scratch_dir_test.h"
 #include "tests/touchdown_process.h"
 
 namespace {
@@ -62,26 +63,8 @@ struct CliResult {
   std::string out, err;
 };
 
-class Sweep : public ::testing::Test {
+class Sweep : public touchdown::testing_scratch::ScratchDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("touchdown_sweep_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  std::string Write(const std::string& name, const std::string& text) {
-    std::ofstream(dir_ / name) << text;
-    return (dir_ / name).string();
-  }
-  static std::string Slurp(const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-  }
   // Runs a shell command line (the touchdown binary or mpirun) and captures its output.
   CliResult Shell(const std::string& command_line) {
     const std::string out = (dir_ / "stdout").string(), err = (dir_ / "stderr").string();
@@ -123,8 +106,6 @@ class Sweep : public ::testing::Test {
     o.progress = ProgressMode::kNone;
     return o;
   }
-
-  fs::path dir_;
 };
 
 TEST_F(Sweep, PlanIsTheCartesianProductTimesTheSamples) {
