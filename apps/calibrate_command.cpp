@@ -4,8 +4,8 @@
 #include <memory>
 
 #include "apps/commands.h"
-#include "drop_tests/output_path.h"
-#include "drop_tests/calibrate.h"
+#include "drop_tests/io/output_path.h"
+#include "drop_tests/dataset/calibrate.h"
 
 namespace touchdown::app {
 
@@ -29,18 +29,18 @@ void AddCalibrateCommand(CLI::App& app) {
       ->check(CLI::Range(0.5, 0.9999));
   cmd->add_option("--out", args->out, "model file to write (MODEL.yaml)")->required();
   cmd->callback([args] {
-    const drop::OutputTarget out(args->out, {args->measured});
-    drop::CheckOutputFile(out, drop::kModelFileMark);
-    const drop::Dataset measured = drop::ReadDataset(args->measured);
-    drop::CalibrationOptions options;
+    const io::OutputTarget out(args->out, {args->measured});
+    io::CheckOutputFile(out, model::kModelFileMark);
+    const dataset::Dataset measured = dataset::ReadDataset(args->measured);
+    dataset::CalibrationOptions options;
     options.per_soil = args->per == "soil";
     options.atmosphere = args->atmosphere == "all" ? "" : args->atmosphere;
     options.confidence = args->confidence;
-    const std::vector<drop::ZetaFit> fits = drop::CalibrateZeta(measured, options);
-    const drop::ModelFile model =
-        drop::CalibrationModel(fits, measured, std::filesystem::path(args->out).stem().string());
-    drop::WriteModelFile(model, out);
-    for (const drop::ZetaFit& f : fits)
+    const std::vector<dataset::ZetaFit> fits = dataset::CalibrateZeta(measured, options);
+    const model::ModelFile model =
+        dataset::CalibrationModel(fits, measured, std::filesystem::path(args->out).stem().string());
+    model::WriteModelFile(model, out);
+    for (const dataset::ZetaFit& f : fits)
       std::cout << f.group << ": zeta = " << std::fixed << std::setprecision(4) << f.zeta_N_m3 / 1e6 << " N/cm^3, "
                 << std::setprecision(0) << 100 * options.confidence << " % interval [" << std::setprecision(4)
                 << f.low_N_m3 / 1e6 << ", " << f.high_N_m3 / 1e6 << "] from " << f.drops << " drops, " << f.samples

@@ -3,8 +3,8 @@
 #include <memory>
 
 #include "apps/commands.h"
-#include "drop_tests/output_path.h"
-#include "drop_tests/campaign.h"
+#include "drop_tests/io/output_path.h"
+#include "drop_tests/scenario/campaign.h"
 
 namespace touchdown::app {
 
@@ -16,10 +16,10 @@ void AddCampaignCommand(CLI::App& app) {
       ->required();
   cmd->add_option("--out", *out_dir, "output directory: new, empty, or an earlier campaign output (replaced whole when the run completes)")->required();
   cmd->callback([scenario_path, out_dir] {
-    const drop::OutputTarget out(*out_dir, {*scenario_path});
-    drop::CheckOutputDirectory(out, drop::OutputKind::kCampaign);
-    const drop::CampaignScenario scenario = drop::LoadCampaignScenario(*scenario_path);
-    const drop::CampaignResult result = drop::RunCampaignToDirectory(scenario, out);  // traces streamed
+    const io::OutputTarget out(*out_dir, {*scenario_path});
+    io::CheckOutputDirectory(out, io::OutputKind::kCampaign);
+    const scenario::CampaignScenario scenario = scenario::LoadCampaignScenario(*scenario_path);
+    const scenario::CampaignResult result = scenario::RunCampaignToDirectory(scenario, out);  // traces streamed
     std::cout << std::left << std::setw(28) << "drop" << std::right << std::setw(12) << "depth [mm]" << std::setw(14)
               << "peak F [N]" << std::setw(14) << "t_rest [ms]" << "\n";
     for (size_t i = 0; i < result.drops.size(); ++i) {
@@ -28,7 +28,7 @@ void AddCampaignCommand(CLI::App& app) {
                 << std::setprecision(2) << std::setw(12) << r.final_penetration_m * 1e3 << std::setw(14)
                 << r.peak_force_N << std::setw(14) << r.time_to_rest_s * 1e3 << "\n";
     }
-    for (const drop::CheckOutcome& c : drop::EvaluateChecks(result)) {
+    for (const scenario::CheckOutcome& c : scenario::EvaluateChecks(result)) {
       std::cout << c.check.name << " at " << c.check.speed_m_s << " m/s: simulated " << std::setprecision(2)
                 << c.simulated;
       if (c.check.paper_experiment > 0) std::cout << "   paper experiment " << c.check.paper_experiment;

@@ -5,8 +5,8 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/commands.h"
-#include "drop_tests/output_path.h"
-#include "drop_tests/compare.h"
+#include "drop_tests/io/output_path.h"
+#include "drop_tests/dataset/compare.h"
 #include "rft/input_error.h"
 
 namespace touchdown::app {
@@ -26,27 +26,27 @@ void AddCompareCommand(CLI::App& app) {
   cmd->add_option("--model", args->model, "model file to simulate with (per-soil zeta and effect terms)")->excludes(sim);
   cmd->add_option("--out", args->out, "output directory: new, empty, or an earlier output of this command (replaced whole when complete)")->required();
   cmd->callback([args] {
-    const drop::OutputTarget out(args->out, {args->measured, args->simulated, args->model});
-    drop::CheckOutputDirectory(out, drop::OutputKind::kComparison);
-    const drop::Dataset measured = drop::ReadDataset(args->measured);
-    drop::Dataset simulated;
-    std::vector<const drop::DatasetDrop*> partners;
+    const io::OutputTarget out(args->out, {args->measured, args->simulated, args->model});
+    io::CheckOutputDirectory(out, io::OutputKind::kComparison);
+    const dataset::Dataset measured = dataset::ReadDataset(args->measured);
+    dataset::Dataset simulated;
+    std::vector<const dataset::DatasetDrop*> partners;
     std::string from;
     const bool simulate_here = args->simulated.empty();
     if (simulate_here) {
-      std::optional<drop::ModelFile> model;
-      if (!args->model.empty()) model = drop::LoadModelFile(args->model);
-      simulated = drop::SimulateMeasuredDrops(measured, model);
-      for (const drop::DatasetDrop& d : simulated.drops) partners.push_back(&d);
+      std::optional<model::ModelFile> model;
+      if (!args->model.empty()) model = model::LoadModelFile(args->model);
+      simulated = dataset::SimulateMeasuredDrops(measured, model);
+      for (const dataset::DatasetDrop& d : simulated.drops) partners.push_back(&d);
       from = model ? "model " + args->model : "catalogue soils";
     } else {
-      simulated = drop::ReadDataset(args->simulated);
-      partners = drop::JoinOnConditions(measured, simulated);
+      simulated = dataset::ReadDataset(args->simulated);
+      partners = dataset::JoinOnConditions(measured, simulated);
       from = "dataset " + args->simulated;
     }
-    drop::Comparison c = drop::CompareDrops(measured, partners);
+    dataset::Comparison c = dataset::CompareDrops(measured, partners);
     c.simulated_from = from;
-    drop::WriteComparison(c, measured, simulated, partners, simulate_here, out);
+    dataset::WriteComparison(c, measured, simulated, partners, simulate_here, out);
     std::cout << std::left << std::setw(24) << "drop" << std::right << std::setw(14) << "depth err" << std::setw(14)
               << "peak F err" << std::setw(14) << "NRMSE(t)" << std::setw(14) << "NRMSE(d)" << "\n";
     auto pct = [](double v) {
@@ -54,7 +54,7 @@ void AddCompareCommand(CLI::App& app) {
       s << std::fixed << std::setprecision(1) << 100.0 * v << " %";
       return s.str();
     };
-    for (const drop::DropComparison& d : c.drops)
+    for (const dataset::DropComparison& d : c.drops)
       std::cout << std::left << std::setw(24) << d.drop_id << std::right << std::setw(14)
                 << pct(d.final_penetration_rel_error) << std::setw(14) << pct(d.peak_force_rel_error) << std::setw(14)
                 << pct(d.force_nrmse_time.value) << std::setw(14) << pct(d.force_nrmse_penetration.value) << "\n";

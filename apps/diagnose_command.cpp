@@ -1,12 +1,12 @@
 // touchdown diagnose MEASURED_DIR [--model MODEL.yaml] --out DIR: the model-gap workflow
-// (drop_tests/diagnose.h, docs/model_gap.md).
+// (drop_tests/gap/diagnose.h, docs/model_gap.md).
 #include <iostream>
 #include <memory>
 #include <thread>
 
 #include "apps/commands.h"
-#include "drop_tests/output_path.h"
-#include "drop_tests/diagnose.h"
+#include "drop_tests/io/output_path.h"
+#include "drop_tests/gap/diagnose.h"
 
 namespace touchdown::app {
 
@@ -29,16 +29,16 @@ void AddDiagnoseCommand(CLI::App& app) {
       ->check(CLI::Range(0, 4096));
   cmd->add_flag("--no-pairs", args->no_pairs, "do not try pairs of effects");
   cmd->callback([args] {
-    const drop::OutputTarget out(args->out, {args->measured, args->model});
-    drop::CheckOutputDirectory(out, drop::OutputKind::kDiagnosis);
-    drop::DiagnoseOptions o;
+    const io::OutputTarget out(args->out, {args->measured, args->model});
+    io::CheckOutputDirectory(out, io::OutputKind::kDiagnosis);
+    gap::DiagnoseOptions o;
     o.threads = args->threads > 0 ? args->threads : std::max(1u, std::thread::hardware_concurrency());
     o.try_pairs = !args->no_pairs;
-    if (!args->model.empty()) o.start_model = drop::LoadModelFile(args->model);
-    const drop::Dataset ds = drop::ReadDataset(args->measured);
-    const drop::Diagnosis d = drop::RunDiagnosis(ds, o);
-    drop::WriteDiagnosis(d, ds, out);
-    const nlohmann::json j = drop::DiagnosisJson(d);
+    if (!args->model.empty()) o.start_model = model::LoadModelFile(args->model);
+    const dataset::Dataset ds = dataset::ReadDataset(args->measured);
+    const gap::Diagnosis d = gap::RunDiagnosis(ds, o);
+    gap::WriteDiagnosis(d, ds, out);
+    const nlohmann::json j = gap::DiagnosisJson(d);
     std::cout << nlohmann::json{{"named_effect", j["named_effect"]},     {"decision", j["decision"]},
                                 {"gap_before", j["gap_before"]["force_nrmse"]}, {"gap_after", j["gap_after"]["force_nrmse"]},
                                 {"gap_reduction", j["gap_reduction"]}, {"seconds", j["seconds"]},

@@ -7,9 +7,9 @@
 #include <sstream>
 
 #include "apps/commands.h"
-#include "drop_tests/output_path.h"
-#include "drop_tests/model_file.h"
-#include "drop_tests/pad_drop.h"
+#include "drop_tests/io/output_path.h"
+#include "drop_tests/model/model_file.h"
+#include "drop_tests/drop/pad_drop.h"
 #include "rft/input_error.h"
 
 namespace touchdown::app {
@@ -74,14 +74,14 @@ void AddDropCommand(CLI::App& app) {
                            "--tilt-deg, --horizontal-speed and --omega need --free (the rig drop is vertical)");
     }
     drop::ValidateConditions(c, "command line");
-    const drop::OutputTarget trace(args->trace, {args->pad, args->soil, args->model});
-    if (!args->trace.empty()) drop::CheckOutputFile(trace);
-    const drop::PadSpec pad = drop::LoadPad(args->pad);
-    rft::SoilParameters soil = drop::LoadSoil(args->soil);
+    const io::OutputTarget trace(args->trace, {args->pad, args->soil, args->model});
+    if (!args->trace.empty()) io::CheckOutputFile(trace);
+    const io::PadSpec pad = io::LoadPad(args->pad);
+    rft::SoilParameters soil = io::LoadSoil(args->soil);
     if (!args->model.empty()) {
-      const drop::ModelFile model = drop::LoadModelFile(args->model);
-      soil = drop::ApplyModel(model, soil);
-      c.effects = drop::ModelEffectTerms(model);
+      const model::ModelFile model = model::LoadModelFile(args->model);
+      soil = model::ApplyModel(model, soil);
+      c.effects = model::ModelEffectTerms(model);
       c.effects_source = args->model;
     }
     const drop::PadDrop result = drop::SimulateDrop(pad, soil, c, {});

@@ -2,15 +2,15 @@
 #include <memory>
 
 #include "apps/commands.h"
-#include "drop_tests/output_path.h"
-#include "drop_tests/sweep_export.h"
+#include "drop_tests/io/output_path.h"
+#include "drop_tests/sweep/sweep_export.h"
 
 namespace touchdown::app {
 
 void AddExportCommand(CLI::App& app) {
   auto dir = std::make_shared<std::string>();
   auto to = std::make_shared<std::string>();
-  auto options = std::make_shared<drop::ExportOptions>();
+  auto options = std::make_shared<sweep::ExportOptions>();
   CLI::App* cmd = app.add_subcommand("export", "Write a sweep's results (DIR/results.sqlite) in the dataset format");
   cmd->add_option("dir", *dir, "sweep output directory")->required();
   cmd->add_option("--to", *to, "dataset directory: new, empty, or an earlier dataset touchdown wrote (replaced whole when complete)")->required();
@@ -19,9 +19,9 @@ void AddExportCommand(CLI::App& app) {
   cmd->add_option("--threads", options->threads, "threads for re-simulated traces (default: every core)")
       ->check(CLI::Range(0, 4096));
   cmd->callback([dir, to, options] {
-    const drop::OutputTarget out(*to, {*dir});
-    drop::CheckOutputDirectory(out, drop::OutputKind::kDataset);
-    const drop::ExportSummary s = drop::ExportSweep(*dir, out, *options);
+    const io::OutputTarget out(*to, {*dir});
+    io::CheckOutputDirectory(out, io::OutputKind::kDataset);
+    const sweep::ExportSummary s = sweep::ExportSweep(*dir, out, *options);
     std::cout << "exported " << s.exported << (s.lander ? " lander drops" : " drops") << " to " << *to
               << (s.lander ? "/ (lander_drops.csv)" : "/ (drops.csv, traces/)");
     if (s.resimulated > 0) std::cout << "; " << s.resimulated << " traces simulated again";

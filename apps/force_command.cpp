@@ -7,8 +7,8 @@
 #include <sstream>
 
 #include "apps/commands.h"
-#include "drop_tests/catalog.h"
-#include "drop_tests/pad_pose.h"
+#include "drop_tests/io/catalog.h"
+#include "lander/pad/pad_pose.h"
 #include "rft/contact_wrench.h"
 #include "rft/input_error.h"
 #include "rft/physical_limits.h"
@@ -65,12 +65,12 @@ void AddForceCommand(CLI::App& app) {
     limits::Require(limits::kAngularSpeed_rad_s, k.w_WB_W.stableNorm(), "command line", "--omega (its magnitude)");
     if (k.v_WB_W.norm() == 0.0 && k.w_WB_W.norm() == 0.0)
       throw MakeInputError("command line", "velocity", "the pad must move (RFT needs a direction of motion)");
-    k.R_WB = drop::TiltRotation(a->tilt_axis, a->tilt_deg * std::numbers::pi / 180.0);
-    const drop::PadSpec pad = drop::LoadPad(a->pad);
-    rft::SoilParameters soil = drop::LoadSoil(a->soil);
+    k.R_WB = pad::TiltRotation(a->tilt_axis, a->tilt_deg * std::numbers::pi / 180.0);
+    const io::PadSpec pad = io::LoadPad(a->pad);
+    rft::SoilParameters soil = io::LoadSoil(a->soil);
     if (a->zeta_N_cm3) soil.zeta_N_m3 = *a->zeta_N_cm3 * 1e6;
     const std::unique_ptr<rft::StressLaw3D> law = rft::MakeStressLaw3D(a->law, soil, a->gravity_m_s2);
-    k.p_WB = drop::PlaceAtDepth(pad.body, k.R_WB, a->depth_m);
+    k.p_WB = pad::PlaceAtDepth(pad.body, k.R_WB, a->depth_m);
     const rft::ContactWrench w = rft::ComputeContactWrench(pad.body.surface, k, rft::PlaneGround(), *law);
     const nlohmann::json out{
         {"pad", pad.name},

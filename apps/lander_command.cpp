@@ -3,8 +3,8 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/commands.h"
-#include "drop_tests/output_path.h"
-#include "drop_tests/lander_scenario.h"
+#include "drop_tests/io/output_path.h"
+#include "drop_tests/scenario/lander_scenario.h"
 
 namespace touchdown::app {
 
@@ -26,13 +26,13 @@ void AddLanderCommand(CLI::App& app) {
                   "model file (MODEL.yaml): zeta per soil and the effect terms with a 3D form (inertial_drag, "
                   "rate_damping, gas_cushion on beds in air); others are refused");
   cmd->callback([args] {
-    const drop::OutputTarget out(args->out, {args->scenario, args->model});
-    drop::CheckOutputDirectory(out, drop::OutputKind::kLander);
-    drop::LanderScenario scenario = drop::LoadLanderScenario(args->scenario);
-    if (!args->model.empty()) scenario.model = drop::LoadModelFile(args->model);
-    const drop::LanderRun run = drop::RunLanderScenario(scenario);
-    drop::WriteLanderOutputs(run, out);
-    const nlohmann::json j = drop::LanderSummaryJson(run);
+    const io::OutputTarget out(args->out, {args->scenario, args->model});
+    io::CheckOutputDirectory(out, io::OutputKind::kLander);
+    scenario::LanderScenario scenario = scenario::LoadLanderScenario(args->scenario);
+    if (!args->model.empty()) scenario.model = model::LoadModelFile(args->model);
+    const scenario::LanderRun run = scenario::RunLanderScenario(scenario);
+    scenario::WriteLanderOutputs(run, out);
+    const nlohmann::json j = scenario::LanderSummaryJson(run);
     std::cout << j.dump(2) << std::endl;
   });
 }

@@ -2,7 +2,7 @@
 #include <memory>
 
 #include "apps/commands.h"
-#include "drop_tests/sweep.h"
+#include "drop_tests/sweep/sweep.h"
 
 namespace touchdown::app {
 
@@ -13,10 +13,10 @@ void AddMergeCommand(CLI::App& app) {
   cmd->add_option("shards", *shards, "shard output directories")->required();
   cmd->add_option("--out", *out, "merged output directory (DIR/results.sqlite)")->required();
   cmd->callback([shards, out] {
-    const drop::MergeSummary s = drop::MergeSweepResults(*out, *shards);
+    const sweep::MergeSummary s = sweep::MergeSweepResults(*out, *shards);
     std::cout << "merged " << s.shards << " shard(s): " << s.stored << " of " << s.total << " drops stored";
     if (s.missing > 0) std::cout << ", " << s.missing << " missing (run the missing shards, then merge again)";
-    std::cout << ", " << s.failed << " failed\nwrote " << drop::ResultsDbPath(*out) << "\n";
+    std::cout << ", " << s.failed << " failed\nwrote " << sweep::ResultsDbPath(*out) << "\n";
   });
 }
 

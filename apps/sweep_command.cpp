@@ -5,10 +5,10 @@
 #include <memory>
 
 #include "apps/commands.h"
-#include "drop_tests/output_path.h"
-#include "drop_tests/sweep.h"
-#include "drop_tests/sweep_mpi.h"
-#include "drop_tests/sweep_stop.h"
+#include "drop_tests/io/output_path.h"
+#include "drop_tests/sweep/sweep.h"
+#include "drop_tests/sweep/sweep_mpi.h"
+#include "drop_tests/sweep/sweep_stop.h"
 #include "rft/input_error.h"
 
 namespace touchdown::app {
@@ -41,7 +41,7 @@ void AddSweepCommand(CLI::App& app) {
   CLI::Option* max_evaluations = cmd->add_option(
       "--max-drop-evaluations", args->max_drop_evaluations,
       "work limit per drop: right-hand-side evaluations of its integrator, 0 = none (default: the sweep file's "
-      "max_drop_evaluations, else " + std::to_string(drop::kDefaultMaxDropEvaluations) +
+      "max_drop_evaluations, else " + std::to_string(sweep::kDefaultMaxDropEvaluations) +
           "); deterministic; a drop over it is recorded as failed, and retried by a rerun with a higher limit");
   CLI::Option* max_wall =
       cmd->add_option("--max-drop-wall-time", args->max_drop_wall_time_s,
@@ -57,24 +57,24 @@ void AddSweepCommand(CLI::App& app) {
     if (max_evaluations_given && !(n >= 0.0 && n <= 1e15 && n == std::floor(n)))
       throw InputError("--max-drop-evaluations: must be a whole number between 0 (no limit) and 1e15, got " +
                        max_evaluations->as<std::string>());
-    drop::SweepRunOptions options;
+    sweep::SweepRunOptions options;
     options.threads = args->threads;
-    if (!args->shard.empty()) options.shard = drop::ParseShard(args->shard);
+    if (!args->shard.empty()) options.shard = sweep::ParseShard(args->shard);
     options.batch_size = static_cast<size_t>(args->batch);
-    options.progress = args->progress == "bar"     ? drop::ProgressMode::kBar
-                       : args->progress == "lines" ? drop::ProgressMode::kLines
-                       : args->progress == "none"  ? drop::ProgressMode::kNone
-                                                   : drop::ProgressMode::kAuto;
-    drop::SweepPlan plan = drop::LoadSweepPlan(args->sweep, args->model);
+    options.progress = args->progress == "bar"     ? sweep::ProgressMode::kBar
+                       : args->progress == "lines" ? sweep::ProgressMode::kLines
+                       : args->progress == "none"  ? sweep::ProgressMode::kNone
+                                                   : sweep::ProgressMode::kAuto;
+    sweep::SweepPlan plan = sweep::LoadSweepPlan(args->sweep, args->model);
     if (max_wall_given) plan.rig.integrator.max_wall_time_s = args->max_drop_wall_time_s;
-    drop::OpenOutputDirectory({args->out, {args->sweep, args->model}}, drop::OutputKind::kSweep);
+    io::OpenOutputDirectory({args->out, {args->sweep, args->model}}, io::OutputKind::kSweep);
     if (max_evaluations_given) plan.rig.integrator.max_rhs_evaluations = static_cast<long>(n);
     // SIGINT/SIGTERM: the running drops finish and are committed; exit 128 + signal below.
-    const drop::StopOnSignals stop_on_signals;
-    options.stop = &drop::StopOnSignals::flag();
+    const sweep::StopOnSignals stop_on_signals;
+    options.stop = &sweep::StopOnSignals::flag();
     int rank = 0;
-    const drop::SweepRunSummary s = drop::LaunchedByMpirun() ? drop::RunSweepMpi(plan, args->out, options, &rank)
-                                                             : drop::RunSweep(plan, args->out, options);
+    const sweep::SweepRunSummary s = sweep::LaunchedByMpirun() ? sweep::RunSweepMpi(plan, args->out, options, &rank)
+                                                             : sweep::RunSweep(plan, args->out, options);
     if (rank != 0) {
       if (s.stop_signal != 0) std::exit(128 + s.stop_signal);
       return;
@@ -84,7 +84,7 @@ void AddSweepCommand(CLI::App& app) {
       std::cout << "sweep " << plan.name << ": stopped by " << (s.stop_signal == SIGINT ? "SIGINT" : "SIGTERM")
                 << " after committing the drops in flight; " << done << " of " << s.in_shard << " drops done ("
                 << s.computed << " run now), " << s.failed << " failed. Run the same command again to resume.\n"
-                << "wrote " << drop::ResultsDbPath(args->out) << std::endl;
+                << "wrote " << sweep::ResultsDbPath(args->out) << std::endl;
       std::exit(128 + s.stop_signal);
     }
     std::cout << "sweep " << plan.name << ": " << s.in_shard << " drops"
@@ -95,7 +95,7 @@ void AddSweepCommand(CLI::App& app) {
               << s.failed << " failed"
               << (s.retried > 0 ? "; " + std::to_string(s.retried) + " drops that had failed on a lower limit run again"
                                 : std::string())
-              << "\nwrote " << drop::ResultsDbPath(args->out) << "\n";
+              << "\nwrote " << sweep::ResultsDbPath(args->out) << "\n";
   });
 }
 

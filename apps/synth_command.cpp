@@ -1,10 +1,10 @@
-// touchdown synth SPEC.yaml --out DATASET_DIR: a measured-like SYNTHETIC dataset (drop_tests/synth.h).
+// touchdown synth SPEC.yaml --out DATASET_DIR: a measured-like SYNTHETIC dataset (drop_tests/dataset/synth.h).
 #include <iostream>
 #include <memory>
 
 #include "apps/commands.h"
-#include "drop_tests/output_path.h"
-#include "drop_tests/synth.h"
+#include "drop_tests/io/output_path.h"
+#include "drop_tests/dataset/synth.h"
 
 namespace touchdown::app {
 
@@ -21,11 +21,11 @@ void AddSynthCommand(CLI::App& app) {
   cmd->add_option("spec", args->spec, "synth spec YAML (see docs/model_gap.md)")->required();
   cmd->add_option("--out", args->out, "dataset directory: new, empty, or an earlier dataset touchdown wrote (replaced whole when complete)")->required();
   cmd->callback([args] {
-    const drop::OutputTarget out(args->out, {args->spec});
-    drop::CheckOutputDirectory(out, drop::OutputKind::kDataset);
-    const drop::SynthSpec spec = drop::LoadSynthSpec(args->spec);
-    const drop::Dataset ds = drop::Synthesize(spec);
-    drop::WriteSyntheticDataset(spec, ds, out);
+    const io::OutputTarget out(args->out, {args->spec});
+    io::CheckOutputDirectory(out, io::OutputKind::kDataset);
+    const dataset::SynthSpec spec = dataset::LoadSynthSpec(args->spec);
+    const dataset::Dataset ds = dataset::Synthesize(spec);
+    dataset::WriteSyntheticDataset(spec, ds, out);
     std::cout << "wrote SYNTHETIC dataset " << args->out << " (" << ds.drops.size() << " drops"
               << (spec.hidden_effect ? ", hidden effect " + spec.hidden_effect->id
                                      : spec.floor ? std::string(", hidden floor_stiffening") : std::string())

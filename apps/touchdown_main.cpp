@@ -9,7 +9,7 @@
 #include <new>
 
 #include "apps/commands.h"
-#include "lander/cvode_integrator.h"
+#include "lander/integ/cvode_integrator.h"
 #include "rft/input_error.h"
 
 int main(int argc, char** argv) {

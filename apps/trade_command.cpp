@@ -3,9 +3,9 @@
 #include <memory>
 
 #include "apps/commands.h"
-#include "drop_tests/output_path.h"
-#include "drop_tests/sweep.h"
-#include "drop_tests/trade.h"
+#include "drop_tests/io/output_path.h"
+#include "drop_tests/sweep/sweep.h"
+#include "drop_tests/sweep/trade.h"
 
 namespace touchdown::app {
 
@@ -26,20 +26,20 @@ void AddTradeCommand(CLI::App& app) {
       ->check(CLI::Range(0, 4096));
   cmd->add_option("--model", args->model, "model file with per-soil zeta overrides");
   cmd->callback([args] {
-    const drop::SweepPlan plan = drop::LoadSweepPlan(args->sweep, args->model);
-    drop::CheckTradePlan(plan);  // before anything runs or is written
-    drop::OpenOutputDirectory({args->out, {args->sweep, args->model}}, drop::OutputKind::kSweep);
-    drop::SweepRunOptions options;
+    const sweep::SweepPlan plan = sweep::LoadSweepPlan(args->sweep, args->model);
+    sweep::CheckTradePlan(plan);  // before anything runs or is written
+    io::OpenOutputDirectory({args->out, {args->sweep, args->model}}, io::OutputKind::kSweep);
+    sweep::SweepRunOptions options;
     options.threads = args->threads;
-    options.progress = drop::ProgressMode::kNone;
-    drop::RunSweep(plan, args->out, options);
-    const drop::ResultsDb db(drop::ResultsDbPath(args->out));
-    const std::vector<drop::TradeRow> rows = drop::TradeTable(db.ReadAll(/*with_traces=*/false));
-    drop::WriteTradeOutputs(rows, args->out);
+    options.progress = sweep::ProgressMode::kNone;
+    sweep::RunSweep(plan, args->out, options);
+    const sweep::ResultsDb db(sweep::ResultsDbPath(args->out));
+    const std::vector<sweep::TradeRow> rows = sweep::TradeTable(db.ReadAll(/*with_traces=*/false));
+    sweep::WriteTradeOutputs(rows, args->out);
     std::cout << std::left << std::setw(12) << "pad" << std::setw(12) << "soil" << std::right << std::setw(10) << "v [m/s]"
               << std::setw(12) << "depth [mm]" << std::setw(12) << "peak F [N]" << std::setw(12) << "dE/dt [W]"
               << "  pareto\n";
-    for (const drop::TradeRow& r : rows)
+    for (const sweep::TradeRow& r : rows)
       std::cout << std::left << std::setw(12) << r.pad << std::setw(12) << r.soil << std::right << std::fixed
                 << std::setprecision(2) << std::setw(10) << r.impact_speed_m_s << std::setw(12)
                 << r.final_penetration_m * 1e3 << std::setw(12) << r.peak_force_N << std::setw(12)

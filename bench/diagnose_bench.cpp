@@ -6,13 +6,13 @@
 
 #include <thread>
 
-#include "drop_tests/diagnose.h"
-#include "drop_tests/synth.h"
+#include "drop_tests/gap/diagnose.h"
+#include "drop_tests/dataset/synth.h"
 
 namespace {
 
-touchdown::drop::Dataset Campaign27() {
-  touchdown::drop::SynthSpec s;
+touchdown::dataset::Dataset Campaign27() {
+  touchdown::dataset::SynthSpec s;
   s.name = "bench27";
   s.source = "bench";
   s.seed = 27;
@@ -21,21 +21,21 @@ touchdown::drop::Dataset Campaign27() {
     for (double v : {0.7, 1.0, 1.5})
       for (int trial = 0; trial < 3; ++trial)
         s.drops.push_back({pad, "fjs1_lp", trial == 0 ? "air" : "vacuum", v, std::nullopt, 9.81, trial});
-  s.noise = touchdown::drop::SynthNoise{1.5, 3e-5, 2.0, 5e-5, 0.25, 1e-5};
-  s.hidden_effect = touchdown::drop::Effect{"gas_cushion", {0.3, 3000.0}};
-  touchdown::drop::Dataset ds = touchdown::drop::Synthesize(s);
+  s.noise = touchdown::dataset::SynthNoise{1.5, 3e-5, 2.0, 5e-5, 0.25, 1e-5};
+  s.hidden_effect = touchdown::model::Effect{"gas_cushion", {0.3, 3000.0}};
+  touchdown::dataset::Dataset ds = touchdown::dataset::Synthesize(s);
   ds.directory = "bench27";
   return ds;
 }
 
 void BM_Diagnose27Drops(benchmark::State& state) {
-  const touchdown::drop::Dataset ds = Campaign27();
-  touchdown::drop::DiagnoseOptions o;
+  const touchdown::dataset::Dataset ds = Campaign27();
+  touchdown::gap::DiagnoseOptions o;
   o.threads = static_cast<int>(state.range(0));
   long simulations = 0;
   std::string named;
   for (auto _ : state) {
-    const touchdown::drop::Diagnosis d = touchdown::drop::RunDiagnosis(ds, o);
+    const touchdown::gap::Diagnosis d = touchdown::gap::RunDiagnosis(ds, o);
     simulations = d.simulations;
     named = d.named_effect;
     benchmark::DoNotOptimize(d.winner);

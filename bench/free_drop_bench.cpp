@@ -5,8 +5,8 @@
 
 #include <numbers>
 
-#include "drop_tests/catalog.h"
-#include "drop_tests/free_drop.h"
+#include "drop_tests/io/catalog.h"
+#include "lander/pad/free_drop.h"
 #include "footpad_geom/revolve.h"
 #include "rft/stress_law_3d_factory.h"
 
@@ -18,21 +18,21 @@ constexpr int kRimSegments = 96;  // about 5k triangles for the flat pad
 
 void RunFreeDrop(benchmark::State& state, const char* pad_name, double tilt_deg, double horizontal_m_s,
                  double spin_rad_s) {
-  const drop::PadSpec pad = drop::LoadPad(pad_name);
+  const touchdown::io::PadSpec pad = touchdown::io::LoadPad(pad_name);
   const geom::PadBody body = geom::RevolveProfileToBody(pad.profile, kRimSegments, pad.mass_kg,
                                                         Eigen::Vector3d(0.0, 0.0, pad.profile.thickness_m()));
-  const rft::SoilParameters soil = drop::LoadSoil("fjs1_lp");
+  const rft::SoilParameters soil = touchdown::io::LoadSoil("fjs1_lp");
   const auto law = rft::MakeStressLaw3D("li2013", soil, 9.81);
   const rft::PlaneGround ground;
-  drop::FreeDropInput in;
+  touchdown::pad::FreeDropInput in;
   in.impact_speed_m_s = 1.0;
   in.tilt_rad = tilt_deg * std::numbers::pi / 180.0;
   in.horizontal_speed_m_s = horizontal_m_s;
   in.omega_W = Eigen::Vector3d(0.0, 0.0, spin_rad_s);
-  drop::FreeDropResult r;
-  const drop::FreeDropOptions opt;  // the defaults `touchdown drop --free` uses
+  touchdown::pad::FreeDropResult r;
+  const touchdown::pad::FreeDropOptions opt;  // the defaults `touchdown drop --free` uses
   for (auto _ : state) {
-    r = drop::RunFreeDrop(body, *law, ground, in, opt);
+    r = touchdown::pad::RunFreeDrop(body, *law, ground, in, opt);
     benchmark::DoNotOptimize(r.final_penetration_m);
   }
   state.counters["triangles"] = body.surface.size();

@@ -5,24 +5,24 @@
 #include <benchmark/benchmark.h>
 #include <cstdlib>
 
-#include "drop_tests/lander_scenario.h"
+#include "drop_tests/scenario/lander_scenario.h"
 
 namespace {
 
 using namespace touchdown;
 
 void BM_LanderCaseA_1s(benchmark::State& state) {
-  const drop::LanderScenario scenario =
-      drop::LoadLanderScenario(drop::ResolveCatalogFile("scenarios", "lander_case_A"));
-  drop::LanderScenario run = scenario;
+  const touchdown::scenario::LanderScenario scenario =
+      touchdown::scenario::LoadLanderScenario(touchdown::io::ResolveCatalogFile("scenarios", "lander_case_A"));
+  touchdown::scenario::LanderScenario run = scenario;
   run.options.duration_s = 1.0;
   if (getenv("TD_RTOL")) run.options.integrator.rtol = atof(getenv("TD_RTOL"));
   if (getenv("TD_ATOL")) run.options.integrator.atol = atof(getenv("TD_ATOL"));
   if (getenv("TD_ADAMS")) run.options.integrator.stiff = false;
-  const drop::LanderSetup setup = drop::BuildLanderSetup(run);
-  lander::LanderRunResult last;
+  const touchdown::scenario::LanderSetup setup = touchdown::scenario::BuildLanderSetup(run);
+  touchdown::lander::LanderRunResult last;
   for (auto _ : state) {
-    const lander::LanderRunResult r = lander::SimulateLander(setup.model, setup.terrain, setup.initial, run.options);
+    const touchdown::lander::LanderRunResult r = touchdown::lander::SimulateLander(setup.model, setup.terrain, setup.initial, run.options);
     benchmark::DoNotOptimize(r.final_penetration_m[0]);
     last = r;
   }

@@ -24,14 +24,16 @@
 #include <string>
 #include <vector>
 
-#include "drop_tests/catalog.h"
-#include "drop_tests/dataset_csv.h"
-#include "drop_tests/pad_drop.h"
+#include "drop_tests/io/catalog.h"
+#include "drop_tests/io/dataset_csv.h"
+#include "drop_tests/drop/pad_drop.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 using namespace touchdown::drop;
+using namespace touchdown::io;
+using namespace touchdown::pad;
 
 // $TOUCHDOWN_BENCH_DIR (kept, so the generated inputs can be reused, e.g. by another binary), or a
 // temporary directory removed at exit.

@@ -25,13 +25,14 @@
 #include <sstream>
 #include <thread>
 
-#include "drop_tests/results_db.h"
-#include "drop_tests/sweep.h"
+#include "drop_tests/sweep/results_db.h"
+#include "drop_tests/sweep/sweep.h"
 
 namespace {
 
 namespace fs = std::filesystem;
-using namespace touchdown::drop;
+using namespace touchdown::sweep;
+using namespace touchdown::sweep;
 
 constexpr int kDrops = 6000;
 

@@ -27,7 +27,7 @@ class AxisymmetricIntrusion {
   // Area of the pad surface below the free surface [m^2].
   double SubmergedArea(double depth_m) const;
 
-  // Additions for speed-dependent effect terms (drop_tests/effects.h). For straight-down motion
+  // Additions for speed-dependent effect terms (drop_tests/model/effects.h). For straight-down motion
   // an element of attack angle beta has v.n = v cos(beta) (n the outward normal, v down).
   // Integral of cos^k(beta) dA over the submerged leading surface [m^2], k = 0..3; k = 0 is
   // SubmergedArea, k = 2 weights a normal stress c (v.n), k = 3 the vertical part of lambda (v.n)^2.

@@ -1,5 +1,5 @@
 #pragma once
-// The effect library's `added_mass` in 3D (drop_tests/effects.h): the grains carried with the pad
+// The effect library's `added_mass` in 3D (drop_tests/model/effects.h): the grains carried with the pad
 // are the 45-degree cone under its submerged footprint, grown to the penetration until whole,
 //
 //   m_a = c_a rho (pi/3) a^2 min(d, a) = (c_a rho / 3) A min(d, a),    a = sqrt(A / pi),

@@ -1,5 +1,5 @@
 #pragma once
-// The gas cushion (the effect library's `gas_cushion`, drop_tests/effects.h) as a decorator
+// The gas cushion (the effect library's `gas_cushion`, drop_tests/model/effects.h) as a decorator
 // around any StressLaw3D, for a bed in air: gas trapped in the pores carries part of the load, so
 // the quasi-static stress per depth is scaled by (1 - chi), and the gas forced out of the pores
 // damps the motion with a stress linear in the normal speed on leading elements (n . v > 0):

@@ -1,5 +1,5 @@
 #pragma once
-// The effect library's pad-level terms (drop_tests/effects.h) as decorators around any
+// The effect library's pad-level terms (drop_tests/model/effects.h) as decorators around any
 // StressLaw3D. Each keeps the wrapped law's stresses and sets one constant parameter that the
 // contact (rft/contact_wrench.h) or the rigid-body dynamics read (rft/stress_law_3d.h):
 //
@@ -12,7 +12,7 @@
 //                                      free drop and the lander add its inertia to the pad
 //
 // For a level axisymmetric pad moving straight down each reduces to the rig's form
-// (drop_tests/effects.h EffectSoilResponse): the compaction stress gives k_c v^2 exp(-d/d_c) I_3(d)
+// (drop_tests/model/effects.h EffectSoilResponse): the compaction stress gives k_c v^2 exp(-d/d_c) I_3(d)
 // as the dynamic term gives lambda rho v^2 I_3(d).
 #include <Eigen/Core>
 #include <memory>

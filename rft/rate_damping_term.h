@@ -1,5 +1,5 @@
 #pragma once
-// Rate damping (the effect library's `rate_damping`, drop_tests/effects.h) as a decorator around
+// Rate damping (the effect library's `rate_damping`, drop_tests/model/effects.h) as a decorator around
 // any StressLaw3D: on a leading element (n . v > 0) the soil adds a stress linear in the normal
 // speed and independent of depth,
 //

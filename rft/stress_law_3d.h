@@ -5,7 +5,7 @@
 // al. 2023), so the result is in N/m^2 per m of depth. A speed-dependent (dynamic) term adds a
 // stress not proportional to depth; see DynamicStress.
 //
-// Three terms of the effect library (drop_tests/effects.h) act on the pad as a whole rather than
+// Three terms of the effect library (drop_tests/model/effects.h) act on the pad as a whole rather than
 // on one element, so a law states them as constant parameters (never state) and the contact
 // (rft/contact_wrench.h) or the rigid-body dynamics apply them:
 //  - depth_law(): the stress grows as z_ref (z / z_ref)^p instead of z (depth_exponent);

@@ -16,7 +16,7 @@ namespace touchdown::rft {
 std::unique_ptr<StressLaw3D> MakeStressLaw3D(std::string_view law, const SoilParameters& soil,
                                              double gravity_m_s2);
 
-// The effect terms in their 3D form (the effect library, drop_tests/effects.h), as
+// The effect terms in their 3D form (the effect library, drop_tests/model/effects.h), as
 // decorators around the law above:
 //   inertial_lambda > 0  DynamicTermLaw (rft/dynamic_term.h), lambda rho (v.n)^2 on leading
 //                        elements with rho = inertial_density_kg_m3 (0: the soil's bulk density);

@@ -10,7 +10,7 @@
 #include <cstdio>
 #include <string>
 
-#include "drop_tests/pad_drop.h"
+#include "drop_tests/drop/pad_drop.h"
 
 using namespace touchdown;
 
@@ -18,17 +18,17 @@ int main(int argc, char** argv) {
   const double target = argc > 1 ? std::stod(argv[1]) : 2.0;
   const double speed = argc > 2 ? std::stod(argv[2]) : 1.0;
   const std::string soil_name = argc > 3 ? argv[3] : "fjs1_lp";
-  const drop::PadSpec flat = drop::LoadPad("flat");
-  const rft::SoilParameters soil = drop::LoadSoil(soil_name);
-  drop::DropConditions c;
+  const touchdown::io::PadSpec flat = touchdown::io::LoadPad("flat");
+  const rft::SoilParameters soil = touchdown::io::LoadSoil(soil_name);
+  touchdown::drop::DropConditions c;
   c.impact_speed_m_s = speed;
-  const double flat_depth = drop::RunPadDrop(flat, soil, c).result.final_penetration_m;
+  const double flat_depth = touchdown::drop::RunPadDrop(flat, soil, c).result.final_penetration_m;
   const double r = flat.profile.radius_m(), h = flat.profile.thickness_m();
 
   auto ratio = [&](double a1) {
-    drop::PadSpec curved = flat;
+    touchdown::io::PadSpec curved = flat;
     curved.profile = geom::MakeExponentialProfile(r, h, h / std::expm1(a1 * r), a1, 400);
-    return drop::RunPadDrop(curved, soil, c).result.final_penetration_m / flat_depth;
+    return touchdown::drop::RunPadDrop(curved, soil, c).result.final_penetration_m / flat_depth;
   };
   // The ratio falls as a1 grows (the pad flattens towards a rounded-edge flat pad).
   double lo = 1.0, hi = 2000.0;  // [1/m]

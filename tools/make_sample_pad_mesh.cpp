@@ -11,13 +11,13 @@
 #include <numbers>
 #include <string>
 
-#include "drop_tests/catalog.h"
+#include "drop_tests/io/catalog.h"
 #include "footpad_geom/mesh_io.h"
 
 int main(int argc, char** argv) {
   using namespace touchdown;
   try {
-    const std::string out = argc > 1 ? argv[1] : drop::DataDirectory() + "/pads/meshes/hex_pad.stl";
+    const std::string out = argc > 1 ? argv[1] : touchdown::io::DataDirectory() + "/pads/meshes/hex_pad.stl";
     const double circumradius_mm = 50.0, thickness_mm = 16.0;
     geom::PolygonSoup soup;
     for (double z : {0.0, thickness_mm}) {

@@ -1,7 +1,7 @@
 // Determinism (issue 7): the same inputs give bit-identical outputs across runs, thread counts
 // and process counts. The touchdown executable is run as a user would; files are compared
 // byte for byte and the sweep databases value by value (doubles by their bit patterns).
-// Complements tests/drop_tests/sweep_test.cpp (in-process thread counts, MPI ranks, a killed
+// Complements tests/drop_tests/sweep/sweep_test.cpp (in-process thread counts, MPI ranks, a killed
 // and restarted sweep).
 #include <gtest/gtest.h>
 

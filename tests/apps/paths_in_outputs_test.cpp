@@ -18,8 +18,8 @@
 #include <string>
 #include <vector>
 
-#include "drop_tests/catalog.h"
-#include "drop_tests/paths_in_outputs.h"
+#include "drop_tests/io/catalog.h"
+#include "drop_tests/io/paths_in_outputs.h"
 
 namespace touchdown::drop {
 namespace {
@@ -75,7 +75,7 @@ class OutputPaths : public ::testing::Test {
     fs::remove_all(dir_);
     fs::create_directories(dir_);
     dir_ = fs::canonical(dir_);
-    data_ = fs::canonical(DataDirectory());
+    data_ = fs::canonical(io::DataDirectory());
   }
   void TearDown() override { fs::remove_all(dir_); }
   // No absolute path of this machine: neither the working directory nor the data directory.
@@ -131,14 +131,14 @@ TEST_F(OutputPaths, SweepDatabaseMetaAndExportFindsTheSweepAgain) {
 
 TEST(OutputPathsFunctions, RoundTrip) {
   const std::string out = "runs/a";
-  EXPECT_EQ(PathForOutput("scen.yaml", out), "../../scen.yaml");
-  EXPECT_EQ(PathForOutput("runs/a/x.yaml", "runs/a/"), "x.yaml");
-  EXPECT_EQ(PathFromOutput("../../scen.yaml", out), "scen.yaml");
-  const std::string pad = (fs::path(DataDirectory()) / "pads" / "flat.yaml").string();
-  EXPECT_EQ(PathForOutput(pad, out), "$TOUCHDOWN_DATA_DIR/pads/flat.yaml");
-  EXPECT_EQ(fs::path(PathFromOutput("$TOUCHDOWN_DATA_DIR/pads/flat.yaml", out)), fs::path(pad));
-  EXPECT_EQ(PathFromOutput("/abs/old.yaml", out), "/abs/old.yaml");  // written by an older touchdown
-  EXPECT_EQ(PathForOutput("", out), "");
+  EXPECT_EQ(io::PathForOutput("scen.yaml", out), "../../scen.yaml");
+  EXPECT_EQ(io::PathForOutput("runs/a/x.yaml", "runs/a/"), "x.yaml");
+  EXPECT_EQ(io::PathFromOutput("../../scen.yaml", out), "scen.yaml");
+  const std::string pad = (fs::path(io::DataDirectory()) / "pads" / "flat.yaml").string();
+  EXPECT_EQ(io::PathForOutput(pad, out), "$TOUCHDOWN_DATA_DIR/pads/flat.yaml");
+  EXPECT_EQ(fs::path(io::PathFromOutput("$TOUCHDOWN_DATA_DIR/pads/flat.yaml", out)), fs::path(pad));
+  EXPECT_EQ(io::PathFromOutput("/abs/old.yaml", out), "/abs/old.yaml");  // written by an older touchdown
+  EXPECT_EQ(io::PathForOutput("", out), "");
 }
 
 }  // namespace

@@ -1,6 +1,6 @@
 // Fuzz target: a dataset's drops.csv, in a directory that holds two valid trace files
 // (t0.csv, traces/t1.csv) so that rows naming them get as far as reading their traces.
-#include "drop_tests/dataset.h"
+#include "drop_tests/dataset/dataset.h"
 #include "rft/input_error.h"
 #include "tests/fuzz/fuzz_input_file.h"
 
@@ -15,7 +15,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   }();
   touchdown::fuzz::WriteBytes(dir + "/drops.csv", data, size);
   try {
-    touchdown::drop::ReadDataset(dir);
+    touchdown::dataset::ReadDataset(dir);
   } catch (const touchdown::InputError&) {
   }
   return 0;

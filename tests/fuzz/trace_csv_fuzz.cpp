@@ -1,7 +1,7 @@
 // Fuzz target: a dataset trace CSV, named by a fixed valid drops.csv; the generic CSV reader
 // sees the same bytes.
-#include "drop_tests/dataset.h"
-#include "drop_tests/dataset_csv.h"
+#include "drop_tests/dataset/dataset.h"
+#include "drop_tests/io/dataset_csv.h"
 #include "rft/input_error.h"
 #include "tests/fuzz/fuzz_input_file.h"
 
@@ -15,11 +15,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   }();
   touchdown::fuzz::WriteBytes(dir + "/trace.csv", data, size);
   try {
-    touchdown::drop::ReadCsv(dir + "/trace.csv");
+    touchdown::io::ReadCsv(dir + "/trace.csv");
   } catch (const touchdown::InputError&) {
   }
   try {
-    const touchdown::drop::Dataset ds = touchdown::drop::ReadDataset(dir);
+    const touchdown::dataset::Dataset ds = touchdown::dataset::ReadDataset(dir);
     ds.drops.front().FinalPenetration();
     ds.drops.front().PeakForce();
     ds.ExtraNumber(ds.drops.front(), "tilt_deg");

@@ -10,8 +10,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "drop_tests/catalog.h"
-#include "drop_tests/pad_pose.h"
+#include "drop_tests/io/catalog.h"
+#include "lander/pad/pad_pose.h"
 #include "rft/contact_internal.h"
 #include "rft/contact_wrench.h"
 #include "rft/stress_law_3d_factory.h"
@@ -41,14 +41,14 @@ TEST(ContactClip, NoVertexBelowTheSurfaceIsNothingSubmerged) {
 // of the surface, spinning slowly (the rotating path) or not, the wrench is rounding-sized: it
 // grows from zero with the depth, never jumps.
 TEST(ContactClip, HexPadOnItsEdgeHasNoSpuriousForce) {
-  const drop::PadSpec pad = drop::LoadPad("hex");
-  const auto law = MakeStressLaw3D("li2013", drop::LoadSoil("fjs1_lp"), 9.81);
+  const io::PadSpec pad = io::LoadPad("hex");
+  const auto law = MakeStressLaw3D("li2013", io::LoadSoil("fjs1_lp"), 9.81);
   for (const double tilt_deg : {5.0, 10.0}) {
-    const Eigen::Matrix3d R = drop::TiltRotation("x", tilt_deg * std::numbers::pi / 180.0);
+    const Eigen::Matrix3d R = pad::TiltRotation("x", tilt_deg * std::numbers::pi / 180.0);
     for (const double spin : {0.0, -5.4e-7, 1e-3}) {
       for (const double depth : {-1e-18, 0.0, 1e-19, 1e-18, 1e-17, 1e-16}) {
         SCOPED_TRACE(testing::Message() << tilt_deg << " deg, spin " << spin << " rad/s, depth " << depth << " m");
-        PadKinematics k{R, drop::PlaceAtDepth(pad.body, R, depth), Eigen::Vector3d(0.0, 0.0, -1.0),
+        PadKinematics k{R, pad::PlaceAtDepth(pad.body, R, depth), Eigen::Vector3d(0.0, 0.0, -1.0),
                         Eigen::Vector3d(spin, 0.0, 0.0)};
         const ContactWrench w = ComputeContactWrench(pad.body.surface, k, PlaneGround(), *law);
         EXPECT_LT(w.force_W.norm(), 1e-12);
@@ -62,8 +62,8 @@ TEST(ContactClip, HexPadOnItsEdgeHasNoSpuriousForce) {
 // The state at touchdown of `touchdown drop --pad hex --soil fjs1_lp --speed 1 --free --tilt-deg 5`
 // (p_WC, q_WB, v_WC, w_B), on which the right-hand side returned 5e12 N.
 TEST(ContactClip, HexPadTouchdownStateOfIssue13) {
-  const drop::PadSpec pad = drop::LoadPad("hex");
-  const auto law = MakeStressLaw3D("li2013", drop::LoadSoil("fjs1_lp"), 9.81);
+  const io::PadSpec pad = io::LoadPad("hex");
+  const auto law = MakeStressLaw3D("li2013", io::LoadSoil("fjs1_lp"), 9.81);
   const Eigen::Vector3d p_WC(1.4392125832560127e-18, 0.00069724594193307503, 0.011743511887971163);
   const Eigen::Quaterniond q(0.99904822158426054, 0.043619387310304569, 6.0453897080618375e-21,
                              4.3460556768933539e-22);

@@ -1,0 +1,347 @@
+#include "drop_tests/dataset/compare.h"
+
+#include "drop_tests/dataset/calibrate.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <numbers>
+#include <nlohmann/json.hpp>
+
+#include "drop_tests/io/output_path.h"
+#include "drop_tests/dataset/calibrate.h"
+#include "drop_tests/io/dataset_csv.h"
+#include "drop_tests/drop/pad_drop.h"
+#include "drop_tests/io/plot_decimation.h"
+#include "drop_tests/io/plot_runner.h"
+#include "rft/input_error.h"
+
+namespace touchdown::dataset {
+
+namespace fs = std::filesystem;
+
+namespace {
+bool Close(double a, double b) { return std::abs(a - b) <= 1e-9 * std::max({1.0, std::abs(a), std::abs(b)}); }
+
+double ExtraOrZero(const Dataset& ds, const DatasetDrop& d, const std::string& column) {
+  return ds.ExtraNumber(d, column).value_or(0.0);
+}
+
+// The mean over the defined (finite) values; `used` counts them.
+double Mean(const std::vector<double>& v, size_t* used = nullptr) {
+  double s = 0.0;
+  size_t n = 0;
+  for (double x : v)
+    if (std::isfinite(x)) s += x, ++n;
+  if (used) *used = n;
+  return n ? s / n : std::nan("");
+}
+
+double RelError(double simulated, double measured) {
+  return measured != 0.0 ? (simulated - measured) / measured : std::nan("");
+}
+
+nlohmann::json Number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+}  // namespace
+
+double InterpolateClamped(const std::vector<double>& xs, const std::vector<double>& ys, double x) {
+  if (xs.empty()) return std::nan("");
+  if (x <= xs.front()) return ys.front();
+  if (x >= xs.back()) return ys.back();
+  const size_t k = static_cast<size_t>(std::upper_bound(xs.begin(), xs.end(), x) - xs.begin());
+  const double w = (x - xs[k - 1]) / (xs[k] - xs[k - 1]);
+  return ys[k - 1] + w * (ys[k] - ys[k - 1]);
+}
+
+NrmseResult ForceNrmseTime(const DatasetTrace& m, const DatasetTrace& s) {
+  NrmseResult r;
+  r.samples = m.size();
+  if (m.size() == 0 || s.size() == 0) return {std::nan(""), r.samples, 0};
+  const double peak = *std::max_element(m.force_N.begin(), m.force_N.end());
+  double sum = 0.0;
+  for (size_t i = 0; i < m.size(); ++i) {
+    // Before the simulated trace begins (its touchdown: t = 0, or -dt with a sensor offset) the
+    // pad is in the air (no force); after it ends, at rest.
+    const double f_sim = m.t_s[i] < s.t_s.front() ? 0.0 : InterpolateClamped(s.t_s, s.force_N, m.t_s[i]);
+    sum += (f_sim - m.force_N[i]) * (f_sim - m.force_N[i]);
+    ++r.used;
+  }
+  r.value = peak > 0.0 ? std::sqrt(sum / r.used) / peak : std::nan("");
+  return r;
+}
+
+NrmseResult ForceNrmsePenetration(const DatasetTrace& m, const DatasetTrace& s) {
+  NrmseResult r;
+  if (m.size() == 0 || s.size() == 0) return {std::nan(""), 0, 0};
+  const double peak = *std::max_element(m.force_N.begin(), m.force_N.end());
+  // The simulated stroke as a strictly increasing F(d): up to its deepest sample.
+  std::vector<double> ds, fs;
+  const size_t s_end = static_cast<size_t>(std::max_element(s.penetration_m.begin(), s.penetration_m.end()) -
+                                           s.penetration_m.begin());
+  for (size_t i = 0; i <= s_end; ++i)
+    if (s.penetration_m[i] >= 0.0 && (ds.empty() || s.penetration_m[i] > ds.back())) {
+      ds.push_back(s.penetration_m[i]);
+      fs.push_back(s.force_N[i]);
+    }
+  // The measured loading stroke, cut where the force falls from the soil's capacity to the weight
+  // (as calibrate cuts it): with noise on the penetration a rest sample is often the deepest, and
+  // rest samples (force m g against the simulated F(d) near the final depth) made this metric
+  // 0.4-0.8 on drops whose force against time agrees to 1 %.
+  double sum = 0.0;
+  for (const size_t i : LoadingStrokeIndices(m)) {
+    const double d = m.penetration_m[i];
+    ++r.samples;
+    if (ds.size() < 2 || d > ds.back()) continue;  // beyond the simulated stroke
+    const double f_sim = InterpolateClamped(ds, fs, d);
+    sum += (f_sim - m.force_N[i]) * (f_sim - m.force_N[i]);
+    ++r.used;
+  }
+  r.value = r.used > 0 && peak > 0.0 ? std::sqrt(sum / r.used) / peak : std::nan("");
+  return r;
+}
+
+Dataset SimulateMeasuredDrops(const Dataset& measured, const std::optional<model::ModelFile>& model) {
+  Dataset out;
+  out.extra_columns = {"tilt_deg",       "horizontal_speed_m_s",   "zeta_N_cm3",    "time_to_rest_s",
+                       "mean_conversion_rate_W", "final_tilt_deg", "horizontal_travel_m"};
+  std::map<std::string, io::PadSpec> pads;
+  std::map<std::string, rft::SoilParameters> soils;
+  const std::string file = (fs::path(measured.directory) / "drops.csv").string();
+  const model::EffectTerms effects = model ? model::ModelEffectTerms(*model) : model::EffectTerms{};
+  const std::string effects_source = model ? model->source : "";
+  for (const DatasetDrop& m : measured.drops) {
+    const std::string pad_ref = measured.PadReference(m), soil_ref = measured.SoilReference(m);
+    if (!pads.count(pad_ref)) pads.emplace(pad_ref, io::LoadPad(pad_ref));
+    if (!soils.count(soil_ref)) soils.emplace(soil_ref, model ? model::ApplyModel(*model, io::LoadSoil(soil_ref)) : io::LoadSoil(soil_ref));
+    // The drop's own conditions, atmosphere included (gas_cushion acts on the drops in air);
+    // a tilt or a horizontal speed makes it a free 6-DOF drop (tilt about x, travel along +x).
+    drop::DropRow row;
+    row.impact_speed_m_s = m.impact_speed_m_s;
+    row.mass_kg = m.pad_mass_kg;
+    row.gravity_m_s2 = m.gravity_m_s2;
+    row.atmosphere = m.atmosphere;
+    const double tilt_deg = ExtraOrZero(measured, m, "tilt_deg");
+    row.tilt_rad = tilt_deg * std::numbers::pi / 180.0;
+    row.horizontal_speed_m_s = ExtraOrZero(measured, m, "horizontal_speed_m_s");
+    drop::DropConditions c = drop::DropConditionsFor(row, effects, effects_source, file + ": drop " + m.drop_id);
+    c.free = !pads.at(pad_ref).is_axisymmetric();  // a mesh pad has no rig profile: the free pad, straight down
+    const drop::PadDrop d = drop::SimulateDrop(pads.at(pad_ref), soils.at(soil_ref), c, {});
+    DatasetDrop s;
+    s.drop_id = m.drop_id;
+    s.pad = m.pad;
+    s.soil = m.soil;
+    s.atmosphere = m.atmosphere;
+    s.impact_speed_m_s = m.impact_speed_m_s;
+    s.pad_mass_kg = m.pad_mass_kg;
+    s.gravity_m_s2 = m.gravity_m_s2;
+    s.trace_file = "traces/" + m.drop_id + ".csv";
+    // What the rig would record (effects.h RecordedAt): with a sensor_offset the recorded time
+    // runs dt behind the true one (t_rec = t - dt) and the recorded penetration reads dz more.
+    const double dz = c.effects.sensor_dz_m, dt = c.effects.sensor_dt_s;
+    s.final_penetration_m = d.result.final_penetration_m + dz;
+    s.peak_force_N = d.result.peak_force_N;
+    s.extra = {io::FormatNumber(tilt_deg),
+               io::FormatNumber(row.horizontal_speed_m_s),
+               io::FormatNumber(d.zeta_effective_N_m3 / 1e6),
+               io::FormatNumber(d.result.time_to_rest_s),
+               io::FormatNumber(d.result.mean_conversion_rate_W),
+               io::FormatNumber(d.free ? d.free->final_tilt_deg : 0.0),
+               io::FormatNumber(d.free ? d.free->horizontal_travel_m : 0.0)};
+    s.trace.extra_columns = {"velocity_m_s"};
+    s.trace.extra.resize(1);
+    for (const pad::DropSample& p : d.result.trace) {
+      s.trace.t_s.push_back(p.t_s - dt);
+      s.trace.penetration_m.push_back(p.penetration_m + dz);
+      s.trace.force_N.push_back(p.force_N);
+      s.trace.extra[0].push_back(p.velocity_m_s);
+    }
+    out.drops.push_back(std::move(s));
+  }
+  return out;
+}
+
+std::vector<const DatasetDrop*> JoinOnConditions(const Dataset& measured, const Dataset& simulated) {
+  std::vector<const DatasetDrop*> partners;
+  for (const DatasetDrop& m : measured.drops) {
+    const DatasetDrop* match = nullptr;
+    for (const DatasetDrop& s : simulated.drops) {
+      if (s.pad != m.pad || s.soil != m.soil || s.atmosphere != m.atmosphere) continue;
+      if (!Close(s.impact_speed_m_s, m.impact_speed_m_s) || !Close(s.pad_mass_kg, m.pad_mass_kg) ||
+          !Close(s.gravity_m_s2, m.gravity_m_s2))
+        continue;
+      bool same = true;
+      for (const char* column : {"tilt_deg", "horizontal_speed_m_s"})
+        same &= Close(ExtraOrZero(simulated, s, column), ExtraOrZero(measured, m, column));
+      if (same) {
+        match = &s;
+        break;
+      }
+    }
+    if (!match)
+      throw MakeInputError((fs::path(measured.directory) / "drops.csv").string(), "drop " + m.drop_id,
+                           "no simulated drop in " + simulated.directory + " with the same pad, soil, atmosphere, "
+                           "impact speed, mass and gravity");
+    partners.push_back(match);
+  }
+  return partners;
+}
+
+Comparison CompareDrops(const Dataset& measured, const std::vector<const DatasetDrop*>& partners) {
+  Comparison c;
+  std::vector<double> pen, peak, pen_signed, peak_signed, nrmse_t, nrmse_d;
+  for (size_t i = 0; i < measured.drops.size(); ++i) {
+    const DatasetDrop& m = measured.drops[i];
+    const DatasetDrop& s = *partners[i];
+    DropComparison d;
+    d.drop_id = m.drop_id;
+    d.simulated_id = s.drop_id;
+    d.pad = m.pad;
+    d.soil = m.soil;
+    d.atmosphere = m.atmosphere;
+    d.impact_speed_m_s = m.impact_speed_m_s;
+    d.measured_final_penetration_m = m.FinalPenetration();
+    d.simulated_final_penetration_m = s.FinalPenetration();
+    d.measured_peak_force_N = m.PeakForce();
+    d.simulated_peak_force_N = s.PeakForce();
+    d.final_penetration_rel_error = RelError(d.simulated_final_penetration_m, d.measured_final_penetration_m);
+    d.peak_force_rel_error = RelError(d.simulated_peak_force_N, d.measured_peak_force_N);
+    d.force_nrmse_time = ForceNrmseTime(m.trace, s.trace);
+    d.force_nrmse_penetration = ForceNrmsePenetration(m.trace, s.trace);
+    if (d.measured_final_penetration_m == 0.0) c.zero_final_penetration_drops.push_back(d.drop_id);
+    if (d.measured_peak_force_N == 0.0) c.zero_peak_force_drops.push_back(d.drop_id);
+    pen.push_back(std::abs(d.final_penetration_rel_error));
+    peak.push_back(std::abs(d.peak_force_rel_error));
+    pen_signed.push_back(d.final_penetration_rel_error);
+    peak_signed.push_back(d.peak_force_rel_error);
+    nrmse_t.push_back(d.force_nrmse_time.value);
+    nrmse_d.push_back(d.force_nrmse_penetration.value);
+    c.drops.push_back(std::move(d));
+  }
+  c.final_penetration_rel_error = Mean(pen, &c.final_penetration_drops_used);
+  c.peak_force_rel_error = Mean(peak, &c.peak_force_drops_used);
+  c.final_penetration_bias = Mean(pen_signed);
+  c.peak_force_bias = Mean(peak_signed);
+  c.force_nrmse = Mean(nrmse_t, &c.force_nrmse_drops_used);
+  c.force_nrmse_penetration = Mean(nrmse_d, &c.force_nrmse_penetration_drops_used);
+  return c;
+}
+
+// JSON never carries null or NaN for a number: an undefined value (a relative error of a drop
+// measured at 0, a mean over no drop) is left out, and the summary says which drops and how many.
+void DropUndefined(nlohmann::json& j) {
+  for (auto it = j.begin(); it != j.end();) {
+    if (it->is_null()) it = j.erase(it);
+    else ++it;
+  }
+}
+
+nlohmann::json ComparisonJson(const Comparison& c) {
+  nlohmann::json drops = nlohmann::json::array();
+  for (const DropComparison& d : c.drops)
+    drops.push_back({{"drop_id", d.drop_id},
+                     {"simulated_id", d.simulated_id},
+                     {"pad", d.pad},
+                     {"soil", d.soil},
+                     {"atmosphere", d.atmosphere},
+                     {"impact_speed_m_s", d.impact_speed_m_s},
+                     {"measured_final_penetration_m", Number(d.measured_final_penetration_m)},
+                     {"simulated_final_penetration_m", Number(d.simulated_final_penetration_m)},
+                     {"final_penetration_rel_error", Number(d.final_penetration_rel_error)},
+                     {"measured_peak_force_N", Number(d.measured_peak_force_N)},
+                     {"simulated_peak_force_N", Number(d.simulated_peak_force_N)},
+                     {"peak_force_rel_error", Number(d.peak_force_rel_error)},
+                     {"force_nrmse_time", Number(d.force_nrmse_time.value)},
+                     {"force_nrmse_penetration", Number(d.force_nrmse_penetration.value)},
+                     {"penetration_samples", d.force_nrmse_penetration.samples},
+                     {"penetration_samples_used", d.force_nrmse_penetration.used}});
+  for (nlohmann::json& d : drops) DropUndefined(d);
+  nlohmann::json summary{{"drops_compared", c.drops.size()},
+          {"drops_used",
+           {{"final_penetration_rel_error", c.final_penetration_drops_used},
+            {"peak_force_rel_error", c.peak_force_drops_used},
+            {"force_nrmse", c.force_nrmse_drops_used},
+            {"force_nrmse_penetration", c.force_nrmse_penetration_drops_used}}},
+          {"drops_measured_zero",
+           {{"final_penetration", c.zero_final_penetration_drops}, {"peak_force", c.zero_peak_force_drops}}},
+          {"simulated_from", c.simulated_from},
+          {"final_penetration_rel_error", Number(c.final_penetration_rel_error)},
+          {"peak_force_rel_error", Number(c.peak_force_rel_error)},
+          {"force_nrmse", Number(c.force_nrmse)},
+          {"force_nrmse_penetration", Number(c.force_nrmse_penetration)},
+          {"final_penetration_bias", Number(c.final_penetration_bias)},
+          {"peak_force_bias", Number(c.peak_force_bias)},
+          {"definitions",
+           {{"final_penetration_rel_error", "mean over drops of |d_sim - d_meas| / d_meas"},
+            {"peak_force_rel_error", "mean over drops of |F_sim - F_meas| / F_meas"},
+            {"force_nrmse", "mean over drops of sqrt(mean_i (F_sim(t_i) - F_i)^2) / max_i F_i, "
+                            "over all measured samples i (F_sim interpolated in time)"},
+            {"force_nrmse_penetration", "mean over drops of sqrt(mean_i (F_sim(d_i) - F_i)^2) / max_i F_i, "
+                                        "over the measured loading stroke where the simulated stroke reaches"},
+            {"bias", "signed means of the relative errors (simulated - measured) / measured"},
+            {"drops_used", "the number of drops each mean is taken over: a relative error is undefined for a drop "
+                           "measured at 0 (drops_measured_zero), an NRMSE for a measured peak force of 0; an "
+                           "undefined value is left out of the drop's entry"}}},
+          {"drops", drops}};
+  DropUndefined(summary);
+  return summary;
+}
+
+void WriteComparison(const Comparison& c, const Dataset& measured, const Dataset& simulated,
+                     const std::vector<const DatasetDrop*>& partners, bool write_simulated, const io::OutputTarget& out) {
+  const nlohmann::json summary = ComparisonJson(c);
+  io::WriteOutputDirectory(out, io::OutputKind::kComparison, [&](const std::string& staging) {
+    const fs::path dir = staging;
+    io::WriteFileAtomically((dir / "summary.json").string(), [&](std::ostream& out) { out << summary.dump(2) << '\n'; });
+    io::WriteFileAtomically((dir / "per_drop.csv").string(), [&](std::ostream& out) {
+      out << "drop_id,simulated_id,pad,soil,atmosphere,impact_speed_m_s,measured_final_penetration_m,"
+             "simulated_final_penetration_m,final_penetration_rel_error,measured_peak_force_N,simulated_peak_force_N,"
+             "peak_force_rel_error,force_nrmse_time,force_nrmse_penetration\n";
+      for (const DropComparison& d : c.drops)
+        out << d.drop_id << ',' << d.simulated_id << ',' << d.pad << ',' << d.soil << ',' << d.atmosphere << ','
+            << io::FormatNumber(d.impact_speed_m_s) << ',' << io::FormatNumber(d.measured_final_penetration_m) << ','
+            << io::FormatNumber(d.simulated_final_penetration_m) << ',' << io::FormatNumber(d.final_penetration_rel_error)
+            << ',' << io::FormatNumber(d.measured_peak_force_N) << ',' << io::FormatNumber(d.simulated_peak_force_N) << ','
+            << io::FormatNumber(d.peak_force_rel_error) << ',' << io::FormatNumber(d.force_nrmse_time.value) << ','
+            << io::FormatNumber(d.force_nrmse_penetration.value) << '\n';
+    });
+    // Plot data: each pair's traces copied beside the script, so the plots re-render anywhere;
+    // decimated (plot_decimation.h) so a long trace is drawn from a few thousand rows.
+    fs::create_directories(dir / "plots" / "data");
+    std::string gp = "set terminal pngcairo size 1100,450 font 'sans,10'\nset termoption noenhanced\n"
+                     "set datafile separator ','\nset grid\nset key top right\n";
+    io::PlotScript script{"plots/compare.gp", "", {}};
+    for (size_t i = 0; i < measured.drops.size(); ++i) {
+      const DatasetDrop& m = measured.drops[i];
+      const DatasetDrop& s = *partners[i];
+      for (const auto& [tag, drop] : {std::pair<const char*, const DatasetDrop*>{"measured", &m}, {"simulated", &s}})
+        io::WriteFileAtomically((dir / "plots" / "data" / (m.drop_id + "_" + tag + ".csv")).string(), [&, drop = drop](std::ostream& out) {
+          const DatasetTrace& t = drop->trace;
+          out << "t_s,penetration_m,force_N\n";
+          for (const size_t k : io::PlotRowsToKeep(t.size(), {t.t_s, t.penetration_m, t.force_N}))
+            out << io::FormatNumber(t.t_s[k]) << ',' << io::FormatNumber(t.penetration_m[k]) << ',' << io::FormatNumber(t.force_N[k])
+                << '\n';
+        });
+      const std::string meas = io::GnuplotQuote("plots/data/" + m.drop_id + "_measured.csv");
+      const std::string sim = io::GnuplotQuote("plots/data/" + m.drop_id + "_simulated.csv");
+      gp += "set output " + io::GnuplotQuote("plots/" + m.drop_id + ".png") + "\nset multiplot layout 1,2 title " +
+            io::GnuplotQuote(m.drop_id + ": " + m.pad + " on " + m.soil + " (" + m.atmosphere + "), " +
+                         io::FormatNumber(m.impact_speed_m_s) + " m/s") +
+            "\nset xlabel 't [ms]'\nset ylabel 'force [N]'\nplot " + meas +
+            " using ($1*1000):3 skip 1 with points pt 7 ps 0.4 title 'measured', " + sim +
+            " using ($1*1000):3 skip 1 with lines lw 2 title 'simulated'\n"
+            "set xlabel 'penetration [mm]'\nplot " + meas + " using ($2*1000):3 skip 1 with points pt 7 ps 0.4 title "
+            "'measured', " + sim + " using ($2*1000):3 skip 1 with lines lw 2 title 'simulated'\nunset multiplot\n";
+      script.outputs.push_back("plots/" + m.drop_id + ".png");
+    }
+    script.text = gp;
+    if (write_simulated) {
+      fs::create_directories(dir / "simulated");
+      WriteDatasetFiles(simulated, (dir / "simulated").string());
+    }
+    io::RenderPlots(dir, script);
+  });
+}
+
+}  // namespace touchdown::dataset

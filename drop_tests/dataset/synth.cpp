@@ -1,0 +1,283 @@
+#include "drop_tests/dataset/synth.h"
+
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <map>
+#include <memory>
+#include <random>
+#include <sstream>
+
+#include <yaml-cpp/yaml.h>
+
+#include "drop_tests/io/output_path.h"
+#include "drop_tests/io/catalog.h"
+#include "drop_tests/io/dataset_csv.h"
+#include "drop_tests/io/yaml_fields.h"
+#include "rft/input_error.h"
+#include "rft/stress_law.h"
+
+namespace touchdown::dataset {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::vector<std::string> StringList(const io::YamlFields& f, const std::string& key) {
+  if (!f.Has(key)) f.Fail(key, "missing");
+  const YAML::Node n = f.node()[key];
+  std::vector<std::string> out;
+  if (n.IsScalar()) out.push_back(n.Scalar());
+  else if (n.IsSequence() && n.size() > 0)
+    for (const YAML::Node& item : n) {
+      if (!item.IsScalar() || item.Scalar().empty()) f.Fail(key, "must list non-empty names");
+      out.push_back(item.Scalar());
+    }
+  else
+    f.Fail(key, "must be a name or a non-empty list of names");
+  return out;
+}
+
+// The out-of-library floor: multiplies the whole soil reaction (it is the only hidden term).
+class FloorStiffenedResponse final : public pad::VerticalSoilResponse {
+ public:
+  FloorStiffenedResponse(const pad::VerticalSoilResponse& inner, const FloorStiffening& f) : inner_(inner), f_(f) {}
+  double Force(double d, double v) const override { return inner_.Force(d, v) * Factor(d); }
+  double AddedMass(double d) const override { return inner_.AddedMass(d); }
+  double AddedMassSlope(double d) const override { return inner_.AddedMassSlope(d); }
+  double StaticCapacity(double d) const override { return inner_.StaticCapacity(d) * Factor(d); }
+
+ private:
+  double Factor(double d) const { return 1.0 + std::exp((d + f_.bulb_depth_m - f_.bed_depth_m) / f_.influence_m); }
+  const pad::VerticalSoilResponse& inner_;
+  FloorStiffening f_;
+};
+
+std::string SpeedTag(double v) {
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(2) << v;
+  return s.str();
+}
+
+double Quantise(double x, double step) { return step > 0.0 ? std::round(x / step) * step : x; }
+}  // namespace
+
+SynthSpec LoadSynthSpec(const std::string& path) {
+  const io::YamlFields f = io::YamlFields::LoadFile(path);
+  f.RequireSchemaVersion(1);
+  f.RequireOnly({"schema_version", "type", "name", "description", "seed", "sample_rate_hz", "rest_duration_s",
+                 "trials", "drops", "true_zeta_N_cm3", "noise", "hidden_effect", "provenance"});
+  if (f.String("type") != "synth") f.Fail("type", "must be 'synth', got '" + f.String("type") + "'");
+  SynthSpec s;
+  s.source = path;
+  s.name = f.StringOr("name", fs::path(path).stem().string());
+  s.description = f.StringOr("description", "");
+  if (f.Has("seed")) {
+    // As a sweep's seed: a whole number a double holds exactly (a larger one would be rounded
+    // or, from 2^64 on, not fit the generator's seed at all).
+    const double seed = f.NonNegative("seed");
+    if (seed != std::floor(seed) || seed > 9.0e15)
+      f.Fail("seed", "must be a whole number from 0 to 9e15, got " + f.node()["seed"].Scalar());
+    s.seed = static_cast<unsigned long long>(seed);
+  }
+  s.sample_rate_hz = f.PositiveOr("sample_rate_hz", 1000.0);
+  if (f.Has("rest_duration_s")) s.rest_duration_s = f.NonNegative("rest_duration_s");
+  const int trials = f.Has("trials") ? f.PositiveInt("trials") : 1;
+  // Resource caps: the dataset is built in memory (every trace) before it is written, so its size
+  // is bounded here, at load, with the limit in the message.
+  if (s.sample_rate_hz > kSynthMaxSampleRateHz)
+    f.Fail("sample_rate_hz", "must be at most " + io::FormatNumber(kSynthMaxSampleRateHz) + " Hz, got " +
+                                 io::FormatNumber(s.sample_rate_hz));
+  if (s.rest_duration_s > kSynthMaxRestDurationS)
+    f.Fail("rest_duration_s", "must be at most " + io::FormatNumber(kSynthMaxRestDurationS) + " s, got " +
+                                  io::FormatNumber(s.rest_duration_s));
+  if (trials > kSynthMaxTrials)
+    f.Fail("trials", "must be at most " + std::to_string(kSynthMaxTrials) + ", got " + std::to_string(trials));
+  for (const io::YamlFields& g : f.List("drops")) {
+    g.RequireOnly({"pads", "soils", "atmospheres", "impact_speeds_m_s", "mass_kg", "gravity_m_s2"});
+    const std::vector<std::string> pads = StringList(g, "pads"), soils = StringList(g, "soils");
+    const std::vector<std::string> atmospheres =
+        g.Has("atmospheres") ? StringList(g, "atmospheres") : std::vector<std::string>{"vacuum"};
+    for (const std::string& a : atmospheres)
+      if (a != "air" && a != "vacuum") g.Fail("atmospheres", "must be air or vacuum, got '" + a + "'");
+    const std::vector<double> speeds = g.NumberList("impact_speeds_m_s", /*allow_zero=*/false);
+    for (const std::string& pad : pads)
+      for (const std::string& soil : soils)
+        for (const std::string& atm : atmospheres)
+          for (double v : speeds)
+            for (int t = 0; t < trials; ++t) {
+              if (s.drops.size() == kSynthMaxDrops)
+                f.Fail("drops", "more than " + std::to_string(kSynthMaxDrops) + " drops (pads x soils x atmospheres x "
+                                "impact speeds x trials)");
+              SynthDrop d{pad, soil, atm, v, std::nullopt, g.PositiveOr("gravity_m_s2", 9.81), t};
+              if (g.Has("mass_kg")) d.mass_kg = g.Positive("mass_kg");
+              s.drops.push_back(d);
+            }
+  }
+  if (f.Has("true_zeta_N_cm3")) {
+    const io::YamlFields z = f.Child("true_zeta_N_cm3");
+    for (const auto& item : z.node()) s.true_zeta_N_m3.emplace_back(item.first.Scalar(), z.Positive(item.first.Scalar()) * 1e6);
+  }
+  if (f.Has("noise")) {
+    const io::YamlFields n = f.Child("noise");
+    n.RequireOnly({"force_sigma_N", "penetration_sigma_mm", "force_drift_N_s", "penetration_drift_mm_s",
+                   "force_resolution_N", "penetration_resolution_mm"});
+    SynthNoise& o = s.noise;
+    if (n.Has("force_sigma_N")) o.force_sigma_N = n.NonNegative("force_sigma_N");
+    if (n.Has("penetration_sigma_mm")) o.penetration_sigma_m = n.NonNegative("penetration_sigma_mm") * 1e-3;
+    if (n.Has("force_drift_N_s")) o.force_drift_N_s = n.NonNegative("force_drift_N_s");
+    if (n.Has("penetration_drift_mm_s")) o.penetration_drift_m_s = n.NonNegative("penetration_drift_mm_s") * 1e-3;
+    if (n.Has("force_resolution_N")) o.force_resolution_N = n.NonNegative("force_resolution_N");
+    if (n.Has("penetration_resolution_mm"))
+      o.penetration_resolution_m = n.NonNegative("penetration_resolution_mm") * 1e-3;
+  }
+  if (f.Has("hidden_effect")) {
+    const io::YamlFields h = f.Child("hidden_effect");
+    const std::string id = h.String("id");
+    if (id == "floor_stiffening") {
+      h.RequireOnly({"id", "bed_depth_mm", "bulb_depth_mm", "influence_mm"});
+      FloorStiffening fl;
+      fl.bed_depth_m = h.PositiveOr("bed_depth_mm", 150.0) * 1e-3;
+      fl.bulb_depth_m = h.PositiveOr("bulb_depth_mm", 100.0) * 1e-3;
+      fl.influence_m = h.PositiveOr("influence_mm", 15.0) * 1e-3;
+      s.floor = fl;
+    } else {
+      YAML::Node params(YAML::NodeType::Map);
+      params[id] = YAML::Node(YAML::NodeType::Map);
+      for (const auto& item : h.node())
+        if (item.first.Scalar() != "id") params[id][item.first.Scalar()] = item.second;
+      const std::vector<model::Effect> e = model::ParseEffects(io::YamlFields(params, path, "hidden_effect"));
+      s.hidden_effect = e.front();
+    }
+  }
+  if (s.drops.empty()) f.Fail("drops", "no drops");
+  // The samples of the rest recorded after each stop, plus a stroke of about kSynthStrokeBoundS.
+  const double samples = static_cast<double>(s.drops.size()) * (s.rest_duration_s + kSynthStrokeBoundS) * s.sample_rate_hz;
+  if (samples > kSynthMaxSamples)
+    f.Fail("drops", "drops x (rest_duration_s + " + io::FormatNumber(kSynthStrokeBoundS) + " s) x sample_rate_hz is " +
+                        io::FormatNumber(samples) + " samples, more than the " + io::FormatNumber(kSynthMaxSamples) +
+                        " a dataset may hold (" + std::to_string(s.drops.size()) + " drops)");
+  return s;
+}
+
+Dataset Synthesize(const SynthSpec& spec) {
+  Dataset ds;
+  ds.extra_columns = {"trial", "data_origin"};
+  std::map<std::string, io::PadSpec> pads;
+  std::map<std::string, rft::SoilParameters> soils;
+  std::map<std::string, std::unique_ptr<geom::AxisymmetricIntrusion>> intrusions;
+  const model::EffectTerms terms = spec.hidden_effect ? model::MakeEffectTerms({*spec.hidden_effect}, spec.source) : model::EffectTerms{};
+  for (size_t i = 0; i < spec.drops.size(); ++i) {
+    const SynthDrop& sd = spec.drops[i];
+    if (!pads.count(sd.pad)) {
+      pads[sd.pad] = io::LoadPad(sd.pad);
+      intrusions[sd.pad] = std::make_unique<geom::AxisymmetricIntrusion>(pads[sd.pad].profile, rft::Li2013Law{});
+    }
+    if (!soils.count(sd.soil)) {
+      rft::SoilParameters soil = io::LoadSoil(sd.soil);
+      for (const auto& [name, zeta] : spec.true_zeta_N_m3)
+        if (name == sd.soil) soil.zeta_N_m3 = zeta;
+      soils[sd.soil] = soil;
+    }
+    const io::PadSpec& pad = pads[sd.pad];
+    const rft::SoilParameters& soil = soils[sd.soil];
+    const double mass = sd.mass_kg.value_or(pad.mass_kg);
+    model::SoilResponseInputs in{soil.ZetaAtGravity(sd.gravity_m_s2), soil.bulk_density_kg_m3, sd.atmosphere == "air", terms};
+    const model::EffectSoilResponse response(*intrusions[sd.pad], in);
+    pad::RigDropOptions options;
+    options.rest_duration_s = spec.rest_duration_s + std::abs(terms.sensor_dt_s) + 2.0 / spec.sample_rate_hz;
+    pad::RigDropResult sim;
+    const pad::RigDropInput input{mass, sd.gravity_m_s2, sd.impact_speed_m_s};
+    if (spec.floor) sim = pad::RunRigDrop(input, FloorStiffenedResponse(response, *spec.floor), options);
+    else sim = pad::RunRigDrop(input, response, options);
+
+    // The recorder: a seeded stream per drop, so adding drops never changes the others.
+    std::mt19937_64 rng(spec.seed * 0x9E3779B97F4A7C15ULL + i + 1);
+    std::normal_distribution<double> normal(0.0, 1.0);
+    const SynthNoise& n = spec.noise;
+    const double force_drift = n.force_drift_N_s * normal(rng);
+    const double pen_drift = n.penetration_drift_m_s * normal(rng);
+    DatasetDrop d;
+    std::ostringstream id;
+    id << pad.name << '_' << soil.name << '_' << sd.atmosphere << "_v" << SpeedTag(sd.impact_speed_m_s) << "_t" << sd.trial;
+    d.drop_id = id.str();
+    d.pad = sd.pad;
+    d.soil = sd.soil;
+    d.atmosphere = sd.atmosphere;
+    d.impact_speed_m_s = sd.impact_speed_m_s;
+    d.pad_mass_kg = mass;
+    d.gravity_m_s2 = sd.gravity_m_s2;
+    d.trace_file = "traces/" + d.drop_id + ".csv";
+    d.extra = {std::to_string(sd.trial), "synthetic"};
+    const double t_end = sim.time_to_rest_s - terms.sensor_dt_s + spec.rest_duration_s;
+    for (long k = 0; k / spec.sample_rate_hz <= t_end + 1e-12; ++k) {
+      const double t = k / spec.sample_rate_hz;
+      const model::RecordedSample r = model::RecordedAt(sim, sd.gravity_m_s2, terms, t);
+      d.trace.t_s.push_back(t);
+      d.trace.force_N.push_back(Quantise(r.force_N + force_drift * t + n.force_sigma_N * normal(rng), n.force_resolution_N));
+      d.trace.penetration_m.push_back(
+          Quantise(r.penetration_m + pen_drift * t + n.penetration_sigma_m * normal(rng), n.penetration_resolution_m));
+    }
+    ds.drops.push_back(std::move(d));
+  }
+  return ds;
+}
+
+namespace {
+void WriteSpecYaml(const SynthSpec& s, YAML::Emitter& y, bool with_truth) {
+  y << YAML::BeginMap << YAML::Key << "schema_version" << YAML::Value << 1;
+  y << YAML::Key << "synthetic" << YAML::Value << true;
+  y << YAML::Key << "name" << YAML::Value << s.name << YAML::Key << "spec_file" << YAML::Value << s.source;
+  y << YAML::Key << "seed" << YAML::Value << s.seed << YAML::Key << "sample_rate_hz" << YAML::Value << s.sample_rate_hz
+    << YAML::Key << "rest_duration_s" << YAML::Value << s.rest_duration_s << YAML::Key << "drops" << YAML::Value
+    << s.drops.size();
+  y << YAML::Key << "noise" << YAML::Value << YAML::BeginMap << YAML::Key << "force_sigma_N" << YAML::Value
+    << s.noise.force_sigma_N << YAML::Key << "penetration_sigma_mm" << YAML::Value << s.noise.penetration_sigma_m * 1e3
+    << YAML::Key << "force_drift_N_s" << YAML::Value << s.noise.force_drift_N_s << YAML::Key
+    << "penetration_drift_mm_s" << YAML::Value << s.noise.penetration_drift_m_s * 1e3 << YAML::Key
+    << "force_resolution_N" << YAML::Value << s.noise.force_resolution_N << YAML::Key << "penetration_resolution_mm"
+    << YAML::Value << s.noise.penetration_resolution_m * 1e3 << YAML::EndMap;
+  if (with_truth) {
+    y << YAML::Key << "true_zeta_N_cm3" << YAML::Value << YAML::BeginMap;
+    for (const auto& [soil, zeta] : s.true_zeta_N_m3) y << YAML::Key << soil << YAML::Value << zeta / 1e6;
+    y << YAML::EndMap << YAML::Key << "hidden_effect" << YAML::Value;
+    if (s.hidden_effect) y << model::EffectsToYaml({*s.hidden_effect});
+    else if (s.floor)
+      y << YAML::BeginMap << YAML::Key << "floor_stiffening (outside the library)" << YAML::Value << YAML::BeginMap
+        << YAML::Key << "bed_depth_mm" << YAML::Value << s.floor->bed_depth_m * 1e3 << YAML::Key << "bulb_depth_mm"
+        << YAML::Value << s.floor->bulb_depth_m * 1e3 << YAML::Key << "influence_mm" << YAML::Value
+        << s.floor->influence_m * 1e3 << YAML::EndMap << YAML::EndMap;
+    else y << "none";
+  }
+  y << YAML::EndMap;
+}
+}  // namespace
+
+void WriteSyntheticDataset(const SynthSpec& spec, const Dataset& dataset, const io::OutputTarget& out) {
+  io::WriteOutputDirectory(out, io::OutputKind::kDataset, [&](const std::string& staging) {
+    WriteDatasetFiles(dataset, staging);
+    const fs::path dir = staging;
+    io::WriteFileAtomically((dir / "README.md").string(), [&](std::ostream& out) {
+      out << "# SYNTHETIC dataset: " << spec.name << "\n\n"
+          << "**These are not measurements.** Every trace was made by `touchdown synth` from the spec `"
+          << fs::path(spec.source).filename().string() << "`: a simulated axisymmetric rig drop (quasi-static RFT"
+          << (spec.hidden_effect || spec.floor ? ", plus a hidden effect" : "") << "), recorded with simulated "
+          << "sensor noise, drift and quantisation. drops.csv marks every row `data_origin = synthetic`.\n\n"
+          << (spec.description.empty() ? "" : spec.description + "\n\n") << "- drops: " << dataset.drops.size()
+          << "\n- sampling: " << spec.sample_rate_hz << " Hz, seed " << spec.seed
+          << "\n- noise: load cell sigma " << spec.noise.force_sigma_N << " N, drift sigma "
+          << spec.noise.force_drift_N_s << " N/s, resolution " << spec.noise.force_resolution_N
+          << " N; displacement sigma " << spec.noise.penetration_sigma_m * 1e3 << " mm, drift sigma "
+          << spec.noise.penetration_drift_m_s * 1e3 << " mm/s, resolution " << spec.noise.penetration_resolution_m * 1e3
+          << " mm\n\nsynthetic.yaml holds the generator settings; synthetic_truth.yaml the hidden effect and "
+          << "true soils (for checking a diagnosis; `touchdown diagnose` never reads it).\n";
+    });
+    YAML::Emitter meta, truth;
+    WriteSpecYaml(spec, meta, false);
+    WriteSpecYaml(spec, truth, true);
+    io::WriteFileAtomically((dir / "synthetic.yaml").string(), [&](std::ostream& o) { o << meta.c_str() << '\n'; });
+    io::WriteFileAtomically((dir / "synthetic_truth.yaml").string(), [&](std::ostream& o) { o << truth.c_str() << '\n'; });
+  });
+}
+
+}  // namespace touchdown::dataset

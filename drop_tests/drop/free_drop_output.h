@@ -1,0 +1,16 @@
+#pragma once
+// JSON summary and trace CSV of a free (6-DOF) pad drop. The trace starts with the rig drop's
+// columns (t_s,penetration_m,velocity_m_s,force_N) so the dataset tools read it, then adds
+// force_x_N, horizontal_m and tilt_deg.
+#include <nlohmann/json_fwd.hpp>
+#include <ostream>
+#include <string>
+
+#include "lander/pad/free_drop.h"
+
+namespace touchdown::drop {
+
+nlohmann::json FreeDropJson(const pad::FreeDropResult& result);
+void WriteFreeDropTraceCsv(const pad::FreeDropResult& result, std::ostream& out);
+
+}  // namespace touchdown::drop

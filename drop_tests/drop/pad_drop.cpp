@@ -1,0 +1,221 @@
+#include "drop_tests/drop/pad_drop.h"
+
+#include <cmath>
+#include <iomanip>
+#include <numbers>
+#include <sstream>
+#include <nlohmann/json.hpp>
+
+#include "drop_tests/io/output_path.h"
+#include "drop_tests/drop/free_drop_output.h"
+#include "footpad_geom/axisymmetric_intrusion.h"
+#include "rft/ground.h"
+#include "rft/input_error.h"
+#include "rft/physical_limits.h"
+#include "rft/stress_law.h"
+
+namespace touchdown::drop {
+
+namespace {
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+// A free pad of another mass keeps its shape and uniform density: inertia scales with the mass.
+geom::PadBody WithMass(const geom::PadBody& body, double mass_kg) {
+  geom::PadBody out = body;
+  out.inertia_com_B *= mass_kg / body.mass_kg;
+  out.mass_kg = mass_kg;
+  return out;
+}
+
+// A free drop's result in the rig's terms (summary and trace), for sweeps, datasets and plots.
+pad::RigDropResult AsRigResult(const pad::FreeDropResult& f) {
+  pad::RigDropResult r;
+  r.final_penetration_m = f.final_penetration_m;
+  r.peak_force_N = f.peak_force_N;
+  r.time_to_rest_s = f.time_to_rest_s;
+  r.max_deceleration_m_s2 = f.max_deceleration_m_s2;
+  r.impact_energy_J = f.impact_energy_J;
+  r.gravity_work_J = f.gravity_work_J;
+  r.dissipated_energy_J = f.dissipated_energy_J;
+  r.mean_conversion_rate_W = f.time_to_rest_s > 0.0 ? f.impact_energy_J / f.time_to_rest_s : 0.0;
+  r.rest_creep_m = 0.0;  // the free drop ends at rest: no rest phase is simulated
+  r.trace.reserve(f.trace.size());
+  for (const pad::FreeDropSample& s : f.trace) r.trace.push_back({s.t_s, s.penetration_m, s.velocity_m_s, s.force_N});
+  r.solver = f.solver;
+  return r;
+}
+}  // namespace
+
+void ValidateConditions(const DropConditions& c, const std::string& context) {
+  auto bad = [&](const std::string& field, double v, const std::string& rule) {
+    std::ostringstream s;
+    s << "must be " << rule << ", got " << v;
+    throw MakeInputError(context, field, s.str());
+  };
+  limits::Require(limits::kSpeed_m_s, c.impact_speed_m_s, context, "impact_speed_m_s");
+  if (c.mass_kg && !(*c.mass_kg > 0.0 && std::isfinite(*c.mass_kg))) bad("mass_kg", *c.mass_kg, "positive and finite");
+  if (!(c.gravity_m_s2 > 0.0 && std::isfinite(c.gravity_m_s2))) bad("gravity_m_s2", c.gravity_m_s2, "positive and finite");
+  if (c.zeta_N_m3) limits::Require(limits::kZeta_N_cm3, *c.zeta_N_m3 / 1e6, context, "zeta_N_cm3");
+  if (c.atmosphere && *c.atmosphere != "vacuum" && *c.atmosphere != "air")
+    throw MakeInputError(context, "atmosphere", "must be vacuum or air, got '" + *c.atmosphere + "'");
+  if (!(std::abs(c.tilt_rad) < 90.0 * kDeg)) bad("tilt_deg", c.tilt_rad / kDeg, "between -90 and 90");
+  if (c.tilt_axis != "x" && c.tilt_axis != "y")
+    throw MakeInputError(context, "tilt_axis", "must be x or y, got '" + c.tilt_axis + "'");
+  limits::Require(limits::kAbsSpeed_m_s, c.horizontal_speed_m_s, context, "horizontal_speed_m_s");
+  if (!c.omega_W.allFinite()) throw MakeInputError(context, "omega", "must be finite");
+  limits::Require(limits::kAngularSpeed_rad_s, c.omega_W.stableNorm(), context, "omega (its magnitude)");
+}
+
+double EffectiveZeta(const rft::SoilParameters& soil, const DropConditions& c) {
+  rft::SoilParameters effective = soil;
+  if (c.zeta_N_m3) effective.zeta_N_m3 = *c.zeta_N_m3;
+  return effective.ZetaAtGravity(c.gravity_m_s2);
+}
+
+DropConditions DropConditionsFor(const DropRow& row, const model::EffectTerms& effects, const std::string& effects_source,
+                                 const std::string& context) {
+  DropConditions c;
+  c.impact_speed_m_s = row.impact_speed_m_s;
+  c.mass_kg = row.mass_kg;
+  c.gravity_m_s2 = row.gravity_m_s2;
+  c.zeta_N_m3 = row.zeta_N_m3;
+  c.atmosphere = row.atmosphere;
+  c.tilt_rad = row.tilt_rad;
+  c.horizontal_speed_m_s = row.horizontal_speed_m_s;
+  c.effects = effects;
+  c.effects_source = effects_source;
+  ValidateConditions(c, context);
+  return c;
+}
+
+PadDrop SimulateDrop(const io::PadSpec& pad, const rft::SoilParameters& soil, const DropConditions& conditions,
+                     const DropRunOptions& options) {
+  ValidateConditions(conditions, pad.name + " on " + soil.name);
+  const bool free = conditions.IsFree();
+  // The rig drop integrates the exact axisymmetric profile; a mesh pad needs the 3D contact
+  // wrench (rft/contact_wrench.h) and the free-pad dynamics.
+  if (!free && !pad.is_axisymmetric())
+    throw MakeInputError(pad.source, "", "rig drop of mesh pads needs the 3D contact; use --free");
+  // The record keeps the pad's description but not its 3D body (megabytes for a fine mesh,
+  // unused by the rig drop): copying it per drop would cost more than the drop itself.
+  io::PadSpec described{pad.name, pad.source, pad.kind, pad.profile, pad.mass_kg, {}, pad.mesh_file};
+  PadDrop drop{std::move(described), soil, conditions, conditions.mass_kg.value_or(pad.mass_kg), 0.0, {}, {}, {}};
+  if (conditions.atmosphere) drop.soil.atmosphere = *conditions.atmosphere;
+  drop.zeta_effective_N_m3 = EffectiveZeta(soil, conditions);
+
+  if (free) {
+    rft::SoilParameters effective = soil;
+    if (conditions.zeta_N_m3) effective.zeta_N_m3 = *conditions.zeta_N_m3;
+    const std::string law_name = conditions.law_3d.empty() ? soil.rft_law_3d : conditions.law_3d;
+    const auto law = model::MakeEffectLaw3D(law_name, effective, conditions.gravity_m_s2, conditions.effects, drop.in_air(),
+                                     conditions.effects_source);
+    drop.law_3d = std::string(law->name());
+    pad::FreeDropInput in;
+    in.impact_speed_m_s = conditions.impact_speed_m_s;
+    in.horizontal_speed_m_s = conditions.horizontal_speed_m_s;
+    in.tilt_rad = conditions.tilt_rad;
+    in.tilt_axis = conditions.tilt_axis;
+    in.omega_W = conditions.omega_W;
+    in.gravity_m_s2 = conditions.gravity_m_s2;
+    const geom::PadBody& body = pad.body;
+    const pad::FreeDropResult r = drop.mass_kg == body.mass_kg
+                                 ? RunFreeDrop(body, *law, rft::PlaneGround(), in, options.free)
+                                 : RunFreeDrop(WithMass(body, drop.mass_kg), *law, rft::PlaneGround(), in, options.free);
+    drop.result = AsRigResult(r);
+    drop.free = r;
+    return drop;
+  }
+
+  std::optional<geom::AxisymmetricIntrusion> own;
+  if (!options.intrusion) own.emplace(pad.profile, rft::Li2013Law{});
+  const geom::AxisymmetricIntrusion& intrusion = options.intrusion ? *options.intrusion : *own;
+  // With no effect terms this is exactly the quasi-static RFT force F_z(d; zeta).
+  model::SoilResponseInputs inputs{drop.zeta_effective_N_m3, soil.bulk_density_kg_m3, drop.in_air(), conditions.effects};
+  std::optional<model::EffectSoilResponse> response;
+  try {
+    response.emplace(intrusion, inputs);
+  } catch (const InputError& e) {
+    throw MakeInputError(soil.name, "", e.what());
+  }
+  drop.result =
+      pad::RunRigDrop({drop.mass_kg, conditions.gravity_m_s2, conditions.impact_speed_m_s}, *response, options.rig);
+  return drop;
+}
+
+PadDrop RunPadDrop(const io::PadSpec& pad, const rft::SoilParameters& soil, const DropConditions& conditions,
+                   const pad::RigDropOptions& options) {
+  DropRunOptions o;
+  o.rig = options;
+  return SimulateDrop(pad, soil, conditions, o);
+}
+
+nlohmann::json SummaryJson(const PadDrop& d) {
+  const pad::RigDropResult& r = d.result;
+  nlohmann::json j;
+  if (d.free) {
+    j = FreeDropJson(*d.free);
+    j["pad"] = d.pad.name;
+    j["soil"] = d.soil.name;
+    j["atmosphere"] = d.soil.atmosphere;
+    j["law"] = d.law_3d;
+    j["impact_speed_m_s"] = d.conditions.impact_speed_m_s;
+    j["horizontal_speed_m_s"] = d.conditions.horizontal_speed_m_s;
+    j["pad_mass_kg"] = d.mass_kg;
+    j["gravity_m_s2"] = d.conditions.gravity_m_s2;
+    j["zeta_N_cm3"] = d.zeta_effective_N_m3 / 1e6;
+  } else {
+    j = nlohmann::json{
+        {"pad", d.pad.name},
+        {"soil", d.soil.name},
+        {"atmosphere", d.soil.atmosphere},
+        {"impact_speed_m_s", d.conditions.impact_speed_m_s},
+        {"pad_mass_kg", d.mass_kg},
+        {"gravity_m_s2", d.conditions.gravity_m_s2},
+        {"zeta_N_cm3", d.zeta_effective_N_m3 / 1e6},
+        {"final_penetration_m", r.final_penetration_m},
+        {"peak_force_N", r.peak_force_N},
+        {"time_to_rest_s", r.time_to_rest_s},
+        {"max_deceleration_m_s2", r.max_deceleration_m_s2},
+        {"impact_energy_J", r.impact_energy_J},
+        {"gravity_work_J", r.gravity_work_J},
+        {"dissipated_energy_J", r.dissipated_energy_J},
+        {"mean_conversion_rate_W", r.mean_conversion_rate_W},
+        {"rest_creep_m", r.rest_creep_m},
+        {"solver_steps", r.solver.steps},
+    };
+  }
+  const std::vector<std::string> active = model::ActiveEffects(d.conditions.effects);
+  if (!active.empty()) {
+    const auto skipped = model::EffectsNotApplied(d.conditions.effects, d.in_air());
+    nlohmann::json applied = nlohmann::json::array(), not_applied = nlohmann::json::object();
+    for (const std::string& id : active) {
+      bool skip = false;
+      for (const auto& [sid, why] : skipped)
+        if (sid == id) not_applied[id] = why, skip = true;
+      if (!skip) applied.push_back(id);
+    }
+    j["effects"] = applied;
+    j["effects_not_applied"] = not_applied;
+    if (!d.conditions.effects_source.empty()) j["model"] = d.conditions.effects_source;
+  }
+  return j;
+}
+
+void WriteTraceCsv(const pad::RigDropResult& result, std::ostream& out) {
+  out << "t_s,penetration_m,velocity_m_s,force_N\n" << std::setprecision(10);
+  for (const pad::DropSample& s : result.trace)
+    out << s.t_s << ',' << s.penetration_m << ',' << s.velocity_m_s << ',' << s.force_N << '\n';
+}
+
+void WriteTraceCsv(const pad::RigDropResult& result, const std::string& path) {
+  io::WriteFileAtomically(path, [&](std::ostream& out) { WriteTraceCsv(result, out); });
+}
+
+void WriteTraceCsv(const PadDrop& drop, const io::OutputTarget& target) {
+  io::WriteOutputFile(target, [&](std::ostream& out) {
+    if (drop.free) WriteFreeDropTraceCsv(*drop.free, out);
+    else WriteTraceCsv(drop.result, out);
+  });
+}
+
+}  // namespace touchdown::drop

@@ -1,0 +1,109 @@
+#pragma once
+// One drop of a catalogued pad on a catalogued soil: the paper's rig (the pad on a vertical rod,
+// lander/pad/rig_drop.h) or, when the pad is tilted, slides or spins, the free 6-DOF pad
+// (lander/pad/free_drop.h) under the 3D contact. `drop`, `sweep` and `compare` all build their
+// drops here: DropConditionsFor turns a dataset row or a sweep point into DropConditions, and
+// SimulateDrop runs them.
+#include <Eigen/Core>
+#include <optional>
+#include <ostream>
+#include <string>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "drop_tests/io/catalog.h"
+#include "drop_tests/model/effects.h"
+#include "lander/pad/free_drop.h"
+#include "drop_tests/io/output_path.h"
+#include "lander/pad/rig_drop.h"
+
+namespace touchdown::geom {
+class AxisymmetricIntrusion;
+}
+
+namespace touchdown::drop {
+
+struct DropConditions {
+  double impact_speed_m_s = 0.0;
+  std::optional<double> mass_kg;        // default: the pad's mass
+  double gravity_m_s2 = 9.81;
+  std::optional<double> zeta_N_m3;      // overrides the soil's zeta (at its reference gravity)
+  std::optional<std::string> atmosphere;  // "vacuum" or "air"; default: the soil's
+  // The free 6-DOF pad instead of the rig's rod: asked for with `free`, implied by a non-zero
+  // tilt, horizontal speed or angular velocity (IsFree).
+  bool free = false;
+  double tilt_rad = 0.0;                // at release, about tilt_axis (world x or y)
+  std::string tilt_axis = "x";
+  double horizontal_speed_m_s = 0.0;    // along +x of the world
+  Eigen::Vector3d omega_W = Eigen::Vector3d::Zero();  // angular velocity at release [rad/s]
+  std::string law_3d;                   // free drop: "li2013" or "agarwal2023"; "" = the soil's rft_law_3d
+  model::EffectTerms effects;                  // default: none (quasi-static RFT)
+  std::string effects_source;           // the model file the effects come from (for messages)
+
+  bool IsFree() const {
+    return free || tilt_rad != 0.0 || horizontal_speed_m_s != 0.0 || !omega_W.isZero(0.0);
+  }
+};
+
+// A drop as a dataset row or a sweep point states it (SI), and the model effects it runs under.
+struct DropRow {
+  double impact_speed_m_s = 0.0;
+  std::optional<double> mass_kg;
+  double gravity_m_s2 = 9.81;
+  std::optional<double> zeta_N_m3;
+  std::optional<std::string> atmosphere;  // a dataset row states it; a sweep takes the soil's
+  double tilt_rad = 0.0;
+  double horizontal_speed_m_s = 0.0;
+};
+// The one place a row becomes the conditions of its drop: every field, the effects (with the
+// model file they came from), validated (InputError naming `context`).
+DropConditions DropConditionsFor(const DropRow& row, const model::EffectTerms& effects, const std::string& effects_source,
+                                 const std::string& context);
+
+struct PadDrop {
+  io::PadSpec pad;  // as loaded, without its 3D body (copying it per drop would cost more than a rig drop)
+  rft::SoilParameters soil;      // atmosphere as the drop ran
+  DropConditions conditions;
+  double mass_kg = 0.0;          // resolved
+  double zeta_effective_N_m3 = 0.0;  // at the drop's gravity (before any gas cushion)
+  // The rig drop's result; for a free drop its summary and trace in the rig's terms (penetration
+  // of the lowest point, vertical velocity and force; rest_creep_m = 0).
+  pad::RigDropResult result;
+  std::optional<pad::FreeDropResult> free;  // a free drop's own result (tilt, travel, horizontal force)
+  std::string law_3d;                  // a free drop's 3D law, decorators included ("li2013+rate_damping")
+  bool in_air() const { return soil.atmosphere == "air"; }
+};
+
+// Throws InputError if a condition is out of range (naming `context`).
+void ValidateConditions(const DropConditions& c, const std::string& context);
+// zeta at the drop's gravity [N/m^3], as the drop uses it (before any gas cushion).
+double EffectiveZeta(const rft::SoilParameters& soil, const DropConditions& c);
+
+struct DropRunOptions {
+  pad::RigDropOptions rig;
+  pad::FreeDropOptions free;
+  // The pad's profile integral, built once by callers running many drops of one pad (sweeps);
+  // null: built here. Must be the pad's own (Li 2013 law).
+  const geom::AxisymmetricIntrusion* intrusion = nullptr;
+};
+
+// Runs the drop: the rig for level, vertical drops, else the free pad (IsFree). Effects: all, on
+// the rig in their rig form, on the free pad in their 3D form (MakeEffectLaw3D). A failing
+// integration throws integ::IntegrationFailure.
+PadDrop SimulateDrop(const io::PadSpec& pad, const rft::SoilParameters& soil, const DropConditions& conditions,
+                     const DropRunOptions& options);
+PadDrop RunPadDrop(const io::PadSpec& pad, const rft::SoilParameters& soil, const DropConditions& conditions,
+                   const pad::RigDropOptions& options = {});
+
+// The JSON summary `touchdown drop` prints (SI values, unit-suffixed keys); a free drop adds
+// touchdown_tilt_deg, final_tilt_deg, horizontal_travel_m. With active effects: `effects` (those
+// applied) and `effects_not_applied` ({id: reason}).
+nlohmann::json SummaryJson(const PadDrop& drop);
+// Writes the trace as CSV: t_s,penetration_m,velocity_m_s,force_N (a free drop adds
+// force_x_N,horizontal_m,tilt_deg).
+void WriteTraceCsv(const pad::RigDropResult& result, std::ostream& out);
+void WriteTraceCsv(const pad::RigDropResult& result, const std::string& path);  // a file in a directory touchdown owns
+// The user's --trace file: a new file (touchdown never overwrites one it may not have written).
+void WriteTraceCsv(const PadDrop& drop, const io::OutputTarget& target);
+
+}  // namespace touchdown::drop

@@ -1,0 +1,415 @@
+#include "drop_tests/gap/diagnose.h"
+
+#include <algorithm>
+#include <chrono>
+#include <functional>
+#include <thread>
+#include <cmath>
+#include <iomanip>
+#include <map>
+#include <numeric>
+#include <random>
+#include <sstream>
+
+#include "rft/input_error.h"
+
+namespace touchdown::gap {
+
+namespace {
+
+const char* const kPhases[4] = {"impact_onset", "mid_stroke", "stopping", "rest"};
+
+std::string Fixed(double v, int digits) {
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(digits) << v;
+  return s.str();
+}
+
+std::vector<bool> HeldOutSplit(const dataset::Dataset& ds) {
+  std::map<std::string, std::vector<size_t>> cells;
+  for (size_t i = 0; i < ds.drops.size(); ++i) {
+    const dataset::DatasetDrop& d = ds.drops[i];
+    cells[d.pad + "|" + d.soil + "|" + d.atmosphere].push_back(i);
+  }
+  std::vector<bool> held(ds.drops.size(), false);
+  for (auto& [cell, idx] : cells) {
+    std::sort(idx.begin(), idx.end(), [&](size_t a, size_t b) {
+      const dataset::DatasetDrop &x = ds.drops[a], &y = ds.drops[b];
+      if (x.impact_speed_m_s != y.impact_speed_m_s) return x.impact_speed_m_s < y.impact_speed_m_s;
+      return x.drop_id < y.drop_id;
+    });
+    for (size_t r = 0; r < idx.size(); ++r) held[idx[r]] = r % 3 == 1;
+  }
+  return held;
+}
+
+DropGap ComputeGap(const FitProblem& p, const FitDrop& d, const FitResult& model, const dataset::Dataset& ds) {
+  DropGap g;
+  g.drop_id = d.drop_id;
+  g.held_out = !d.train;
+  g.noise_nrmse = d.noise_force_N / d.force_scale_N;
+  g.phase_ms.assign(4, 0.0);
+  const std::optional<dataset::DatasetTrace> sim = SimulateRecorded(p, d, model);
+  const dataset::DatasetDrop& m = ds.drops[d.dataset_index];
+  if (!sim) {
+    g.failed = true;
+    g.force_nrmse = g.force_nrmse_penetration = 1.0;
+    g.final_penetration_rel_error = g.peak_force_rel_error = 1.0;
+    g.overall_ms = 1.0;
+    return g;
+  }
+  g.force_nrmse = dataset::ForceNrmseTime(m.trace, *sim).value;
+  g.force_nrmse_penetration = dataset::ForceNrmsePenetration(m.trace, *sim).value;
+  const double d_meas = m.FinalPenetration(), f_meas = m.PeakForce();
+  g.final_penetration_rel_error = (sim->penetration_m.back() - d_meas) / d_meas;
+  g.peak_force_rel_error = (*std::max_element(sim->force_N.begin(), sim->force_N.end()) - f_meas) / f_meas;
+  // Stroke phases on the simulated record: the stop is where it first reaches its final depth.
+  const double d_final = sim->penetration_m.back();
+  double t_stop = sim->t_s.back();
+  for (size_t i = 0; i < sim->size(); ++i)
+    if (sim->penetration_m[i] >= d_final - 1e-9 * std::abs(d_final)) {
+      t_stop = sim->t_s[i];
+      break;
+    }
+  std::vector<double> count(4, 0.0);
+  double total = 0.0, bias = 0.0, stroke = 0.0;
+  for (size_t i = 0; i < sim->size(); ++i) {
+    const double t = sim->t_s[i];
+    if (t < 0) continue;
+    const int phase = t < 0.2 * t_stop ? 0 : t < 0.7 * t_stop ? 1 : t <= t_stop ? 2 : 3;
+    const double e = (sim->force_N[i] - m.trace.force_N[i]) / d.force_scale_N;
+    g.phase_ms[phase] += e * e;
+    if (phase < 3) bias += e, stroke += 1;
+    count[phase] += 1;
+    total += e * e;
+  }
+  double n = 0;
+  for (int k = 0; k < 4; ++k) {
+    n += count[k];
+    g.phase_ms[k] = count[k] > 0 ? g.phase_ms[k] / count[k] : std::nan("");
+  }
+  g.overall_ms = n > 0 ? total / n : 0.0;
+  g.force_bias = stroke > 0 ? bias / stroke : 0.0;
+  return g;
+}
+
+GapSummary HeldOutSummary(const std::vector<DropGap>& gaps) {
+  GapSummary s;
+  double n = 0, n_pen = 0;
+  for (const DropGap& g : gaps) {
+    if (!g.held_out) continue;
+    n += 1;
+    s.force_nrmse += g.force_nrmse;
+    s.final_penetration_rel_error += std::abs(g.final_penetration_rel_error);
+    s.peak_force_rel_error += std::abs(g.peak_force_rel_error);
+    s.noise_nrmse += g.noise_nrmse;
+    s.mean_square += g.force_nrmse * g.force_nrmse;
+    s.noise_mean_square += g.noise_nrmse * g.noise_nrmse;
+    if (std::isfinite(g.force_nrmse_penetration)) s.force_nrmse_penetration += g.force_nrmse_penetration, n_pen += 1;
+  }
+  if (n > 0) {
+    s.force_nrmse /= n, s.final_penetration_rel_error /= n, s.peak_force_rel_error /= n;
+    s.noise_nrmse /= n, s.mean_square /= n, s.noise_mean_square /= n;
+  }
+  s.force_nrmse_penetration = n_pen > 0 ? s.force_nrmse_penetration / n_pen : std::nan("");
+  return s;
+}
+
+std::vector<DropGap> AllGaps(const Diagnosis& d, const FitResult& model, const dataset::Dataset& ds, int threads) {
+  std::vector<DropGap> gaps(d.problem.drops.size());
+  std::vector<std::thread> pool;
+  threads = std::max(1, threads);
+  for (int t = 0; t < threads; ++t)
+    pool.emplace_back([&, t] {
+      for (size_t i = t; i < gaps.size(); i += threads) gaps[i] = ComputeGap(d.problem, d.problem.drops[i], model, ds);
+    });
+  for (std::thread& th : pool) th.join();
+  return gaps;
+}
+
+std::vector<double> Ranks(const std::vector<double>& v) {
+  std::vector<size_t> idx(v.size());
+  std::iota(idx.begin(), idx.end(), 0);
+  std::sort(idx.begin(), idx.end(), [&](size_t a, size_t b) { return v[a] < v[b]; });
+  std::vector<double> r(v.size());
+  for (size_t i = 0; i < idx.size();) {
+    size_t j = i;
+    while (j + 1 < idx.size() && v[idx[j + 1]] == v[idx[i]]) ++j;
+    for (size_t k = i; k <= j; ++k) r[idx[k]] = 0.5 * (i + j);
+    i = j + 1;
+  }
+  return r;
+}
+
+double Pearson(const std::vector<double>& a, const std::vector<double>& b) {
+  const double n = a.size();
+  const double ma = std::accumulate(a.begin(), a.end(), 0.0) / n, mb = std::accumulate(b.begin(), b.end(), 0.0) / n;
+  double sab = 0, saa = 0, sbb = 0;
+  for (size_t i = 0; i < a.size(); ++i) sab += (a[i] - ma) * (b[i] - mb), saa += (a[i] - ma) * (a[i] - ma), sbb += (b[i] - mb) * (b[i] - mb);
+  return saa > 0 && sbb > 0 ? sab / std::sqrt(saa * sbb) : 0.0;
+}
+
+// Share of the variance of y explained by the grouping (eta squared).
+double EtaSquared(const std::vector<double>& y, const std::vector<int>& group, int groups) {
+  const double mean = std::accumulate(y.begin(), y.end(), 0.0) / y.size();
+  std::vector<double> sum(groups, 0.0), n(groups, 0.0);
+  double total = 0;
+  for (size_t i = 0; i < y.size(); ++i) sum[group[i]] += y[i], n[group[i]] += 1, total += (y[i] - mean) * (y[i] - mean);
+  double between = 0;
+  for (int g = 0; g < groups; ++g)
+    if (n[g] > 0) between += n[g] * (sum[g] / n[g] - mean) * (sum[g] / n[g] - mean);
+  return total > 0 ? between / total : 0.0;
+}
+
+std::vector<Finding> WhereAnalysis(const dataset::Dataset& ds, const FitProblem& p, const std::vector<DropGap>& gaps,
+                                   const DiagnoseOptions& o) {
+  std::vector<Finding> out;
+  std::mt19937 rng(o.seed);
+  std::vector<double> nrmse, bias;
+  for (const DropGap& g : gaps) nrmse.push_back(g.force_nrmse), bias.push_back(g.final_penetration_rel_error);
+  const size_t n = nrmse.size();
+  // Levels are compared on the size of the gap (force NRMSE) and on its sign (the signed final
+  // penetration error): a model calibrated on all drops splits a one-sided gap into opposite
+  // biases (too shallow in air, too deep in vacuum), which the NRMSE alone hides.
+  auto categorical = [&](const std::string& factor, const std::function<std::string(const dataset::DatasetDrop&)>& level,
+                         bool on_bias) {
+    const std::vector<double>& y = on_bias ? bias : nrmse;
+    std::map<std::string, int> ids;
+    std::vector<int> group;
+    for (const FitDrop& d : p.drops) {
+      const std::string l = level(ds.drops[d.dataset_index]);
+      if (!ids.count(l)) ids.emplace(l, static_cast<int>(ids.size()));
+      group.push_back(ids[l]);
+    }
+    if (ids.size() < 2) return;
+    const int G = static_cast<int>(ids.size());
+    const double stat = EtaSquared(y, group, G);
+    std::vector<int> perm = group;
+    int hits = 0;
+    for (int k = 0; k < o.permutations; ++k) {
+      std::shuffle(perm.begin(), perm.end(), rng);
+      hits += EtaSquared(y, perm, G) >= stat - 1e-15;
+    }
+    Finding f{"condition", factor + (on_bias ? " (penetration bias)" : ""), "", stat, (hits + 1.0) / (o.permutations + 1.0), false};
+    std::ostringstream s;
+    s << (on_bias ? "signed final penetration error (sim - measured) / measured by " : "force NRMSE by ") << factor << ":";
+    for (const auto& [name, gi] : ids) {
+      double sum = 0, c = 0;
+      for (size_t i = 0; i < n; ++i)
+        if (group[i] == gi) sum += y[i], c += 1;
+      s << " " << name << " " << (on_bias && sum > 0 ? "+" : "") << Fixed(sum / c, 3) << " (n=" << c << ")";
+    }
+    s << "; eta^2 = " << Fixed(stat, 2);
+    f.summary = s.str();
+    out.push_back(f);
+  };
+  for (bool on_bias : {false, true}) {
+    categorical("atmosphere", [](const dataset::DatasetDrop& d) { return d.atmosphere; }, on_bias);
+    categorical("pad", [](const dataset::DatasetDrop& d) { return d.pad; }, on_bias);
+    categorical("soil", [](const dataset::DatasetDrop& d) { return d.soil; }, on_bias);
+  }
+  auto numeric = [&](const std::string& factor, const std::function<std::optional<double>(const dataset::DatasetDrop&)>& value) {
+    std::vector<double> x;
+    for (const FitDrop& d : p.drops) {
+      const std::optional<double> v = value(ds.drops[d.dataset_index]);
+      if (!v) return;
+      x.push_back(*v);
+    }
+    if (std::all_of(x.begin(), x.end(), [&](double v) { return v == x.front(); })) return;
+    const std::vector<double> rx = Ranks(x), ry = Ranks(nrmse);
+    const double rho = Pearson(rx, ry);
+    std::vector<double> perm = ry;
+    int hits = 0;
+    for (int k = 0; k < o.permutations; ++k) {
+      std::shuffle(perm.begin(), perm.end(), rng);
+      hits += std::abs(Pearson(rx, perm)) >= std::abs(rho) - 1e-15;
+    }
+    Finding f{"condition", factor, "", rho, (hits + 1.0) / (o.permutations + 1.0), false};
+    f.summary = "force NRMSE " + std::string(rho > 0 ? "grows" : "falls") + " with " + factor +
+                " (Spearman rho = " + Fixed(rho, 2) + ")";
+    out.push_back(f);
+  };
+  numeric("impact_speed", [](const dataset::DatasetDrop& d) { return std::optional<double>(d.impact_speed_m_s); });
+  numeric("tilt", [&](const dataset::DatasetDrop& d) { return ds.ExtraNumber(d, "tilt_deg"); });
+  // Phases: log of each drop's phase mean square over its overall mean square; sign-flip test.
+  for (int ph = 0; ph < 4; ++ph) {
+    std::vector<double> l;
+    for (const DropGap& g : gaps)
+      if (std::isfinite(g.phase_ms[ph]) && g.overall_ms > 0 && g.phase_ms[ph] > 0)
+        l.push_back(std::log(g.phase_ms[ph] / g.overall_ms));
+    if (l.size() < 2) continue;
+    const double mean = std::accumulate(l.begin(), l.end(), 0.0) / l.size();
+    int hits = 0;
+    std::uniform_int_distribution<int> coin(0, 1);
+    for (int k = 0; k < o.permutations; ++k) {
+      double s = 0;
+      for (double v : l) s += coin(rng) ? v : -v;
+      hits += s / l.size() >= mean - 1e-15;
+    }
+    Finding f{"phase", kPhases[ph], "", std::exp(mean), (hits + 1.0) / (o.permutations + 1.0), false};
+    f.summary = std::string(kPhases[ph]) + ": mean squared force residual " + Fixed(std::exp(mean), 2) +
+                "x the drop's average (geometric mean over " + std::to_string(l.size()) + " drops)";
+    out.push_back(f);
+  }
+  const double alpha = 0.05 / std::max<size_t>(out.size(), 1);  // Bonferroni over the tests made
+  for (Finding& f : out) f.significant = f.p_value < alpha && (f.kind != "phase" || f.statistic > 1.0);
+  return out;
+}
+
+CandidateScore Score(Diagnosis& d, const dataset::Dataset& ds, std::vector<std::string> ids, const DiagnoseOptions& o) {
+  CandidateScore c;
+  c.effect_ids = ids;
+  for (const std::string& id : ids) c.name += (c.name.empty() ? "" : "+") + id;
+  if (c.name.empty()) c.name = "base";
+  if (!CandidateApplies(d.problem, ids, &c.why_not)) {
+    c.applies = false;
+    return c;
+  }
+  c.fit = FitCandidate(d.problem, ids, ids.empty() ? nullptr : &d.base.fit);
+  d.simulations += c.fit.simulations;
+  c.gaps = AllGaps(d, c.fit, ds, o.threads);
+  c.held_out = HeldOutSummary(c.gaps);
+  return c;
+}
+
+void Relate(CandidateScore& c, const CandidateScore& base) {
+  if (!c.applies) return;
+  c.gap_reduction = base.held_out.force_nrmse > 0 ? 1.0 - c.held_out.force_nrmse / base.held_out.force_nrmse : 0.0;
+  const double excess = base.held_out.mean_square - base.held_out.noise_mean_square;
+  c.explained = excess > 0 ? (base.held_out.mean_square - c.held_out.mean_square) / excess : 0.0;
+  c.delta_bic = base.fit.bic - c.fit.bic;
+}
+
+std::string DescribeResidual(const Diagnosis& d) {
+  std::ostringstream s;
+  std::vector<const Finding*> sig;
+  for (const Finding& f : d.where)
+    if (f.significant) sig.push_back(&f);
+  if (sig.empty()) s << "The base model's residual shows no significant concentration by condition or phase";
+  else {
+    s << "The base model's residual concentrates: ";
+    for (size_t i = 0; i < sig.size(); ++i) s << (i ? "; " : "") << sig[i]->summary << " (p = " << Fixed(sig[i]->p_value, 4) << ")";
+  }
+  s << ". Held-out force NRMSE " << Fixed(d.base.held_out.force_nrmse, 4) << " against an estimated sensor-noise floor of "
+    << Fixed(d.base.held_out.noise_nrmse, 4) << ".";
+  return s.str();
+}
+
+void Decide(Diagnosis& d, const DiagnoseOptions& o) {
+  std::vector<int> valid;
+  for (size_t i = 0; i < d.candidates.size(); ++i)
+    if (d.candidates[i].applies) valid.push_back(static_cast<int>(i));
+  if (valid.empty()) {
+    d.decision = "no library effect applies to this dataset";
+    return;
+  }
+  int best = valid.front();
+  for (int i : valid)
+    if (d.candidates[i].fit.bic < d.candidates[best].fit.bic) best = i;
+  const double bic_min = d.candidates[best].fit.bic;
+  // Parsimony among the candidates the data cannot tell from the best.
+  int k_min = 1 << 30;
+  for (int i : valid)
+    if (d.candidates[i].fit.bic - bic_min < o.min_delta_bic) k_min = std::min(k_min, d.candidates[i].fit.parameters);
+  std::vector<int> simplest;
+  for (int i : valid)
+    if (d.candidates[i].fit.bic - bic_min < o.min_delta_bic && d.candidates[i].fit.parameters == k_min) simplest.push_back(i);
+  std::sort(simplest.begin(), simplest.end(), [&](int a, int b) { return d.candidates[a].fit.bic < d.candidates[b].fit.bic; });
+  const CandidateScore& w = d.candidates[simplest.front()];
+  std::ostringstream why;
+  const bool gap_small = d.base.held_out.mean_square <= 1.5 * d.base.held_out.noise_mean_square;
+  if (w.delta_bic < o.min_delta_bic) {
+    why << "no candidate beats the base model (best " << w.name << ": Delta BIC " << Fixed(w.delta_bic, 1) << " < "
+        << o.min_delta_bic << ")";
+    if (gap_small) why << "; the base already fits to the sensor-noise floor";
+  } else if (simplest.size() > 1) {
+    why << "ambiguous: " << w.name << " and " << d.candidates[simplest[1]].name
+        << " explain the data equally well (Delta BIC " << Fixed(d.candidates[simplest[1]].fit.bic - w.fit.bic, 1)
+        << " < " << o.min_delta_bic << ", same number of parameters)";
+  } else if (w.gap_reduction < o.min_gap_reduction || w.explained < o.min_explained) {
+    why << "the best candidate, " << w.name << ", leaves most of the gap: held-out force NRMSE reduced by "
+        << Fixed(100 * w.gap_reduction, 0) << " % and " << Fixed(100 * w.explained, 0)
+        << " % of the excess over the noise floor explained (needs >= " << Fixed(100 * o.min_gap_reduction, 0)
+        << " % and >= " << Fixed(100 * o.min_explained, 0) << " %)";
+  } else {
+    d.winner = simplest.front();
+    d.named_effect = w.name;
+    // The runner-up: the best other candidate that is a real rival, i.e. not a richer model the
+    // data cannot tell from the winner (those lose on parsimony, e.g. compaction_peak with a
+    // long decay against inertial_drag, or a pair containing the winner).
+    int runner = -1;
+    for (int i : valid) {
+      if (i == d.winner) continue;
+      const bool richer_twin = d.candidates[i].fit.parameters > w.fit.parameters &&
+                               d.candidates[i].fit.bic - bic_min < o.min_delta_bic;
+      if (!richer_twin && (runner < 0 || d.candidates[i].fit.bic < d.candidates[runner].fit.bic)) runner = i;
+    }
+    why << w.name << " beats the base (Delta BIC " << Fixed(w.delta_bic, 1) << ", held-out force NRMSE "
+        << Fixed(d.base.held_out.force_nrmse, 4) << " -> " << Fixed(w.held_out.force_nrmse, 4) << ", "
+        << Fixed(100 * w.explained, 0) << " % of the excess over the noise floor explained)";
+    if (runner >= 0)
+      why << " and the runner-up " << d.candidates[runner].name << " (Delta BIC "
+          << Fixed(d.candidates[runner].fit.bic - w.fit.bic, 1) << " worse, held-out NRMSE "
+          << Fixed(d.candidates[runner].held_out.force_nrmse, 4) << ")";
+  }
+  d.decision = why.str();
+}
+
+}  // namespace
+
+Diagnosis RunDiagnosis(const dataset::Dataset& ds, const DiagnoseOptions& o) {
+  const auto t0 = std::chrono::steady_clock::now();
+  if (ds.drops.size() < 3) throw MakeInputError(ds.directory, "drops.csv", "diagnose needs at least 3 drops");
+  Diagnosis d;
+  d.dataset_dir = ds.directory;
+  d.held_out = HeldOutSplit(ds);
+  d.problem = MakeFitProblem(ds, d.held_out, o.threads);
+  if (o.start_model)
+    for (rft::SoilParameters& s : d.problem.soils) {
+      const auto it = o.start_model->soils.find(s.name);
+      if (it != o.start_model->soils.end())
+        s.zeta_N_m3 = it->second.zeta_N_m3 * s.reference_gravity_m_s2 / it->second.reference_gravity_m_s2;
+    }
+  // 1-2: the base model, its gap, where it concentrates.
+  d.base = Score(d, ds, {}, o);
+  Relate(d.base, d.base);
+  d.where = WhereAnalysis(ds, d.problem, d.base.gaps, o);
+  // 3: singles, then pairs of the best three when no single explains enough.
+  for (const model::EffectInfo& e : model::EffectLibrary()) {
+    d.candidates.push_back(Score(d, ds, {e.id}, o));
+    Relate(d.candidates.back(), d.base);
+  }
+  std::vector<int> order;
+  for (size_t i = 0; i < d.candidates.size(); ++i)
+    if (d.candidates[i].applies) order.push_back(static_cast<int>(i));
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return d.candidates[a].fit.bic < d.candidates[b].fit.bic; });
+  const bool enough = !order.empty() && d.candidates[order.front()].explained >= o.pair_threshold &&
+                      d.candidates[order.front()].gap_reduction >= o.min_gap_reduction;
+  const bool any_gap = d.base.held_out.mean_square > 1.5 * d.base.held_out.noise_mean_square;
+  // Pairs "where one is not enough": the best single must help (Delta BIC) but leave a gap.
+  const bool one_helps = !order.empty() && d.candidates[order.front()].delta_bic >= o.min_delta_bic;
+  if (o.try_pairs && !enough && any_gap && one_helps && order.size() >= 2) {
+    const size_t top = std::min<size_t>(3, order.size());
+    std::vector<std::vector<std::string>> pairs;
+    for (size_t a = 0; a < top; ++a)
+      for (size_t b = a + 1; b < top; ++b) {
+        std::vector<std::string> ids{d.candidates[order[a]].effect_ids[0], d.candidates[order[b]].effect_ids[0]};
+        // Library order, so a pair has one name.
+        std::sort(ids.begin(), ids.end(), [](const std::string& x, const std::string& y) {
+          return &model::FindEffect(x) < &model::FindEffect(y);
+        });
+        pairs.push_back(ids);
+      }
+    for (const auto& ids : pairs) {
+      d.candidates.push_back(Score(d, ds, ids, o));
+      Relate(d.candidates.back(), d.base);
+    }
+  }
+  Decide(d, o);
+  if (d.winner < 0) d.residual_description = DescribeResidual(d);
+  else d.where_after = WhereAnalysis(ds, d.problem, d.candidates[d.winner].gaps, o);
+  d.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return d;
+}
+
+}  // namespace touchdown::gap

@@ -1,0 +1,113 @@
+#pragma once
+// `touchdown diagnose MEASURED_DIR [--model MODEL.yaml] --out DIR`: where simulation and
+// measurement disagree, which library effect (drop_tests/model/effects.h) is missing, and how much
+// of the gap it closes. Documented in docs/model_gap.md.
+//
+//  1. Split: within each (pad, soil, atmosphere) cell, drops ordered by impact speed then id;
+//     every third one starting with the second (ranks 1, 4, 7, ...) is held out, the rest train.
+//     Deterministic, and every cell and soil keeps training drops.
+//     Calibrate zeta per soil on the training drops (diagnose_fit.h), simulate every drop.
+//  2. Gap per drop and overall on held-out drops (compare.h metrics), and where it
+//     concentrates: per condition (speed, pad, soil, atmosphere, tilt when given) a permutation
+//     test of the between-level spread of the per-drop force NRMSE (speed: Spearman rank
+//     correlation, permutation p); per stroke phase (impact onset: first 20 % of the simulated
+//     stroke time, mid-stroke 20-70 %, stopping 70 % to the stop, rest after it) the phase's
+//     mean squared residual over the drop's, with a sign-flip permutation p across drops.
+//  3. Every applicable library effect is fitted with zeta (training drops), scored on the
+//     held-out drops (force NRMSE) and by BIC on the training residuals. Pairs of the three best
+//     singles are tried when no single effect explains at least `pair_threshold` of the gap.
+//     Decision (names an effect only when all hold):
+//       - it beats the base by Delta BIC >= 10 ("very strong", Kass & Raftery 1995);
+//       - parsimony: it has the fewest parameters among the candidates within Delta BIC < 10 of
+//         the best one, and it is the only one with that few (else: ambiguous -> none);
+//       - it explains most of the gap: held-out force NRMSE falls by >= 50 % AND >= 80 % of the
+//         excess mean-square residual above the estimated sensor-noise floor is explained.
+//     Otherwise `none`, with the residual described (what it correlates with).
+//  4-5. DIR/model.yaml, DIR/diagnosis.json, DIR/report.md with plots (diagnose_report.cpp).
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "drop_tests/dataset/compare.h"
+#include "drop_tests/gap/diagnose_fit.h"
+
+namespace touchdown::gap {
+
+struct DiagnoseOptions {
+  int threads = 2;
+  bool try_pairs = true;
+  double pair_threshold = 0.8;       // explained fraction below which pairs are tried
+  double min_delta_bic = 10.0;
+  double min_gap_reduction = 0.5;
+  double min_explained = 0.8;
+  int permutations = 2000;
+  unsigned seed = 12345;             // permutation tests only
+  std::optional<model::ModelFile> start_model;  // --model: starting zeta (and the file it came from)
+};
+
+struct DropGap {
+  std::string drop_id;
+  bool held_out = false;
+  double force_nrmse = 0.0;
+  double force_nrmse_penetration = 0.0;  // NaN when undefined
+  double final_penetration_rel_error = 0.0;
+  double peak_force_rel_error = 0.0;
+  double noise_nrmse = 0.0;   // estimated sensor-noise floor of force_nrmse
+  double force_bias = 0.0;    // mean (F_sim - F_meas) / max F_meas over the stroke (+: model too stiff)
+  std::vector<double> phase_ms;  // mean squared normalised force residual per phase (4)
+  double overall_ms = 0.0;
+  bool failed = false;
+};
+
+struct GapSummary {  // held-out means
+  double force_nrmse = 0.0, force_nrmse_penetration = 0.0, final_penetration_rel_error = 0.0,
+         peak_force_rel_error = 0.0, noise_nrmse = 0.0, mean_square = 0.0, noise_mean_square = 0.0;
+};
+
+struct Finding {  // one line of "where"
+  std::string kind;    // condition or phase
+  std::string factor;  // speed, pad, ..., impact_onset, ...
+  std::string summary;
+  double statistic = 0.0;
+  double p_value = 1.0;
+  bool significant = false;
+};
+
+struct CandidateScore {
+  std::vector<std::string> effect_ids;
+  std::string name;  // ids joined by '+'
+  bool applies = true;
+  std::string why_not;
+  FitResult fit;
+  std::vector<DropGap> gaps;
+  GapSummary held_out;
+  double gap_reduction = 0.0;  // 1 - held-out force NRMSE / base's
+  double explained = 0.0;      // of the excess mean square above the noise floor
+  double delta_bic = 0.0;      // vs the base (positive = better)
+};
+
+struct Diagnosis {
+  std::string dataset_dir;
+  std::vector<bool> held_out;
+  FitProblem problem;
+  CandidateScore base;
+  std::vector<CandidateScore> candidates;  // singles then pairs
+  int winner = -1;                         // index into candidates, -1: none
+  std::string named_effect = "none";
+  std::string decision;                    // why
+  std::string residual_description;
+  std::vector<Finding> where;
+  std::vector<Finding> where_after;        // the same analysis after the named effect
+  double seconds = 0.0;
+  long simulations = 0;
+};
+
+Diagnosis RunDiagnosis(const dataset::Dataset& measured, const DiagnoseOptions& options = {});
+nlohmann::json DiagnosisJson(const Diagnosis& d);
+// DIR (replaced when complete): model.yaml, diagnosis.json, report.md, per_drop.csv, data/,
+// plots/ (PNG via gnuplot when installed, with the script).
+void WriteDiagnosis(const Diagnosis& d, const dataset::Dataset& measured, const io::OutputTarget& out);
+
+}  // namespace touchdown::gap

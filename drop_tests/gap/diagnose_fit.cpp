@@ -1,0 +1,404 @@
+#include "drop_tests/gap/diagnose_fit.h"
+
+#include <algorithm>
+#include <numeric>
+#include <cmath>
+#include <map>
+#include <mutex>
+#include <thread>
+
+#include <Eigen/Dense>
+
+#include "drop_tests/io/student_t.h"
+#include "rft/input_error.h"
+#include "rft/stress_law.h"
+
+namespace touchdown::gap {
+
+namespace {
+
+// Robust sensor-noise estimate: for white noise sigma, second differences have sd sqrt(6) sigma;
+// the median absolute value ignores the few samples at impact and stop.
+double NoiseEstimate(const std::vector<double>& y) {
+  if (y.size() < 5) return 0.0;
+  std::vector<double> d2;
+  for (size_t i = 1; i + 1 < y.size(); ++i) d2.push_back(std::abs(y[i + 1] - 2 * y[i] + y[i - 1]));
+  std::nth_element(d2.begin(), d2.begin() + d2.size() / 2, d2.end());
+  return 1.4826 * d2[d2.size() / 2] / std::sqrt(6.0);
+}
+
+struct Layout {
+  std::vector<std::string> effect_ids;
+  std::vector<const model::EffectInfo*> infos;
+  int soils = 0;
+  int size() const {
+    int n = soils;
+    for (const model::EffectInfo* e : infos) n += static_cast<int>(e->parameters.size());
+    return n;
+  }
+};
+
+struct ModelValues {
+  std::vector<double> zeta_N_m3;
+  std::vector<model::Effect> effects;
+};
+
+ModelValues Unscale(const FitProblem& p, const Layout& L, const Eigen::VectorXd& x) {
+  ModelValues m;
+  int k = 0;
+  for (int s = 0; s < L.soils; ++s) m.zeta_N_m3.push_back(x[k++] * p.soils[s].zeta_N_m3);
+  for (const model::EffectInfo* e : L.infos) {
+    model::Effect effect{e->id, {}};
+    for (const model::EffectParameterInfo& q : e->parameters) effect.values.push_back(x[k++] * q.scale);
+    m.effects.push_back(effect);
+  }
+  return m;
+}
+
+void Bounds(const FitProblem&, const Layout& L, Eigen::VectorXd* lo, Eigen::VectorXd* hi) {
+  const int n = L.size();
+  lo->resize(n);
+  hi->resize(n);
+  int k = 0;
+  for (int s = 0; s < L.soils; ++s) (*lo)[k] = 0.02, (*hi)[k] = 50.0, ++k;
+  for (const model::EffectInfo* e : L.infos)
+    for (const model::EffectParameterInfo& q : e->parameters) (*lo)[k] = q.lower / q.scale, (*hi)[k] = q.upper / q.scale, ++k;
+}
+
+// The model's recorded trace for one drop, or nullopt when the simulation fails.
+std::optional<dataset::DatasetTrace> Recorded(const FitProblem& p, const FitDrop& d, const ModelValues& m,
+                                     const model::EffectTerms& terms) {
+  const rft::SoilParameters& soil = p.soils[d.soil];
+  rft::SoilParameters s = soil;
+  s.zeta_N_m3 = m.zeta_N_m3[d.soil];
+  const model::SoilResponseInputs in{s.ZetaAtGravity(d.gravity_m_s2), soil.bulk_density_kg_m3, d.in_air, terms};
+  try {
+    const model::EffectSoilResponse response(*p.intrusions[d.pad], in);
+    const pad::RigDropResult r = pad::RunRigDrop({d.mass_kg, d.gravity_m_s2, d.speed_m_s}, response, p.rig);
+    dataset::DatasetTrace out;
+    const dataset::DatasetTrace& tr = *d.trace;
+    for (size_t i = 0; i < tr.size(); ++i) {
+      const model::RecordedSample rs = model::RecordedAt(r, d.gravity_m_s2, terms, tr.t_s[i]);
+      out.t_s.push_back(tr.t_s[i]);
+      out.penetration_m.push_back(rs.penetration_m);
+      out.force_N.push_back(rs.force_N);
+    }
+    return out;
+  } catch (const integ::IntegrationFailure&) {
+    return std::nullopt;
+  } catch (const std::invalid_argument&) {
+    return std::nullopt;
+  }
+}
+
+template <typename F>
+void ParallelFor(int n, int threads, F&& body) {
+  threads = std::max(1, std::min(threads, n));
+  if (threads == 1) {
+    for (int i = 0; i < n; ++i) body(i);
+    return;
+  }
+  std::vector<std::thread> pool;
+  std::exception_ptr error;
+  std::mutex mutex;
+  for (int t = 0; t < threads; ++t)
+    pool.emplace_back([&, t] {
+      try {
+        for (int i = t; i < n; i += threads) body(i);
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(mutex);
+        if (!error) error = std::current_exception();
+      }
+    });
+  for (std::thread& th : pool) th.join();
+  if (error) std::rethrow_exception(error);
+}
+
+class Objective {
+ public:
+  Objective(const FitProblem& p, const Layout& L) : p_(p), L_(L) {
+    for (size_t i = 0; i < p.drops.size(); ++i)
+      if (p.drops[i].train) {
+        train_.push_back(static_cast<int>(i));
+        offset_.push_back(rows_);
+        rows_ += 2 * static_cast<long>(p.drops[i].trace->size());
+      }
+  }
+  long rows() const { return rows_; }
+  const std::vector<int>& train() const { return train_; }
+  const std::vector<long>& offsets() const { return offset_; }
+  long simulations = 0;
+
+  // Weighted residuals (as minimised) and the unweighted ones (for the information criterion).
+  void Evaluate(const Eigen::VectorXd& x, Eigen::VectorXd* r, Eigen::VectorXd* unweighted = nullptr) {
+    const ModelValues m = Unscale(p_, L_, x);
+    const model::EffectTerms terms = model::MakeEffectTerms(m.effects);
+    r->resize(rows_);
+    if (unweighted) unweighted->resize(rows_);
+    ParallelFor(static_cast<int>(train_.size()), p_.threads, [&](int k) {
+      const FitDrop& d = p_.drops[train_[k]];
+      const std::optional<dataset::DatasetTrace> sim = Recorded(p_, d, m, terms);
+      const dataset::DatasetTrace& tr = *d.trace;
+      const long n = static_cast<long>(tr.size()), o = offset_[k];
+      const double w = 1.0 / std::sqrt(static_cast<double>(n));
+      for (long i = 0; i < n; ++i) {
+        // A failed simulation costs as much as predicting nothing at all, times ten.
+        const double ef = sim ? (sim->force_N[i] - tr.force_N[i]) / d.force_scale_N : 10.0;
+        const double ep = sim ? (sim->penetration_m[i] - tr.penetration_m[i]) / d.penetration_scale_m : 10.0;
+        (*r)[o + 2 * i] = w * ef;
+        (*r)[o + 2 * i + 1] = w * ep;
+        if (unweighted) (*unweighted)[o + 2 * i] = ef, (*unweighted)[o + 2 * i + 1] = ep;
+      }
+    });
+    simulations += static_cast<long>(train_.size());
+  }
+
+ private:
+  const FitProblem& p_;
+  const Layout& L_;
+  std::vector<int> train_;
+  std::vector<long> offset_;
+  long rows_ = 0;
+};
+
+Layout MakeLayout(const FitProblem& p, const std::vector<std::string>& ids) {
+  Layout L;
+  L.effect_ids = ids;
+  L.soils = static_cast<int>(p.soils.size());
+  for (const std::string& id : ids) L.infos.push_back(&model::FindEffect(id));
+  return L;
+}
+}  // namespace
+
+model::EffectTerms FitResult::terms() const { return model::MakeEffectTerms(effects); }
+
+FitProblem MakeFitProblem(const dataset::Dataset& ds, const std::vector<bool>& held_out, int threads) {
+  FitProblem p;
+  p.threads = threads;
+  p.rig.rest_duration_s = 0.003;  // at rest the record holds its last value (RecordedAt)
+  p.rig.max_stroke_duration_s = 2.0;
+  p.rig.integrator.rtol = 1e-8;
+  p.rig.integrator.atol = 1e-13;
+  std::map<std::string, int> pads, soils;
+  for (size_t i = 0; i < ds.drops.size(); ++i) {
+    const dataset::DatasetDrop& dd = ds.drops[i];
+    const std::string pad_ref = ds.PadReference(dd), soil_ref = ds.SoilReference(dd);
+    if (!pads.count(pad_ref)) {
+      pads[pad_ref] = static_cast<int>(p.pads.size());
+      p.pads.push_back(io::LoadPad(pad_ref));
+      p.intrusions.push_back(std::make_unique<geom::AxisymmetricIntrusion>(p.pads.back().profile, rft::Li2013Law{}));
+    }
+    if (!soils.count(soil_ref)) {
+      soils[soil_ref] = static_cast<int>(p.soils.size());
+      p.soils.push_back(io::LoadSoil(soil_ref));
+    }
+    for (const char* column : {"tilt_deg", "horizontal_speed_m_s"}) {
+      const std::optional<double> v = ds.ExtraNumber(dd, column);
+      if (v && *v != 0.0)
+        throw MakeInputError(ds.directory, "drop " + dd.drop_id,
+                             std::string("diagnose simulates the vertical rig only; ") + column + " must be 0");
+    }
+    if (dd.trace.size() < 5) throw MakeInputError(ds.directory, "drop " + dd.drop_id, "trace has fewer than 5 samples");
+    FitDrop d;
+    d.dataset_index = i;
+    d.drop_id = dd.drop_id;
+    d.pad = pads[pad_ref];
+    d.soil = soils[soil_ref];
+    d.in_air = dd.atmosphere == "air";
+    p.has_air |= d.in_air;
+    p.has_vacuum |= !d.in_air;
+    d.train = !held_out[i];
+    d.speed_m_s = dd.impact_speed_m_s;
+    d.mass_kg = dd.pad_mass_kg;
+    d.gravity_m_s2 = dd.gravity_m_s2;
+    d.trace = &dd.trace;
+    d.force_scale_N = std::max(*std::max_element(dd.trace.force_N.begin(), dd.trace.force_N.end()), 1e-9);
+    d.penetration_scale_m =
+        std::max(*std::max_element(dd.trace.penetration_m.begin(), dd.trace.penetration_m.end()), 1e-9);
+    d.noise_force_N = NoiseEstimate(dd.trace.force_N);
+    p.drops.push_back(d);
+  }
+  return p;
+}
+
+bool CandidateApplies(const FitProblem& p, const std::vector<std::string>& ids, std::string* why) {
+  for (const std::string& id : ids) {
+    const model::EffectInfo& e = model::FindEffect(id);
+    if (e.air_only && !(p.has_air && p.has_vacuum)) {
+      *why = id + " needs drops in air and in vacuum (otherwise it is confounded with zeta)";
+      return false;
+    }
+    if (id == "inertial_drag" || id == "added_mass")
+      for (const rft::SoilParameters& s : p.soils)
+        if (!(s.bulk_density_kg_m3 > 0.0)) {
+          *why = id + " needs the bulk density of soil " + s.name;
+          return false;
+        }
+  }
+  return true;
+}
+
+FitResult FitCandidate(const FitProblem& p, const std::vector<std::string>& ids, const FitResult* start) {
+  const Layout L = MakeLayout(p, ids);
+  const int n = L.size();
+  Eigen::VectorXd lo, hi;
+  Bounds(p, L, &lo, &hi);
+  Eigen::VectorXd x(n);
+  int k = 0;
+  for (int s = 0; s < L.soils; ++s)
+    x[k++] = start && !start->zeta_N_m3.empty() ? start->zeta_N_m3[s] / p.soils[s].zeta_N_m3 : 1.0;
+  for (const model::EffectInfo* e : L.infos)
+    for (const model::EffectParameterInfo& q : e->parameters) x[k++] = q.start / q.scale;
+
+  Objective obj(p, L);
+  Eigen::VectorXd r, r_new;
+  // Coarse scans of multi-modal parameters (EffectParameterInfo::scan), one at a time.
+  k = L.soils;
+  for (const model::EffectInfo* e : L.infos)
+    for (const model::EffectParameterInfo& q : e->parameters) {
+      if (!q.scan.empty()) {
+        double best_cost = 0.0, best = x[k];
+        for (size_t i = 0; i < q.scan.size(); ++i) {
+          Eigen::VectorXd xs = x;
+          xs[k] = q.scan[i] / q.scale;
+          obj.Evaluate(xs, &r);
+          if (i == 0 || r.squaredNorm() < best_cost) best_cost = r.squaredNorm(), best = xs[k];
+        }
+        x[k] = best;
+      }
+      ++k;
+    }
+  obj.Evaluate(x, &r);
+  double cost = r.squaredNorm();
+  double lambda = 1e-3;
+  FitResult out;
+  Eigen::MatrixXd J(obj.rows(), n);
+  auto jacobian = [&] {
+    for (int j = 0; j < n; ++j) {
+      double h = 1e-4 * std::max(std::abs(x[j]), 0.1);
+      if (x[j] + h > hi[j]) h = -h;
+      Eigen::VectorXd xp = x;
+      xp[j] += h;
+      Eigen::VectorXd rp;
+      obj.Evaluate(xp, &rp);
+      J.col(j) = (rp - r) / h;
+    }
+  };
+  const int max_iterations = 30;
+  for (int it = 0; it < max_iterations; ++it) {
+    out.iterations = it + 1;
+    jacobian();
+    const Eigen::MatrixXd A = J.transpose() * J;
+    const Eigen::VectorXd g = J.transpose() * r;
+    bool improved = false;
+    double step_norm = 0.0;
+    for (int attempt = 0; attempt < 10 && lambda < 1e10; ++attempt) {  // damping up to x5^10 per iteration
+      Eigen::MatrixXd M = A;
+      for (int j = 0; j < n; ++j) M(j, j) += lambda * std::max(A(j, j), 1e-12);
+      Eigen::VectorXd dx = M.ldlt().solve(-g);
+      Eigen::VectorXd x_new = (x + dx).cwiseMax(lo).cwiseMin(hi);
+      obj.Evaluate(x_new, &r_new);
+      const double c_new = r_new.squaredNorm();
+      if (c_new < cost) {
+        step_norm = (x_new - x).norm();
+        const double gain = (cost - c_new) / cost;
+        x = x_new;
+        r = r_new;
+        cost = c_new;
+        lambda = std::max(lambda / 4, 1e-9);
+        improved = true;
+        // Converged when a step no longer changes the cost meaningfully (1e-6 of it) or moves
+        // the parameters by less than 1e-6 of their (scaled) size.
+        if (gain < 1e-8 || step_norm < 1e-7 * (x.norm() + 1e-7)) out.converged = true;
+        break;
+      }
+      lambda *= 5;
+    }
+    if (!improved) {
+      out.converged = true;  // no descent left at any damping: a minimum (to the solver's accuracy)
+      break;
+    }
+    if (out.converged) break;
+  }
+  // Final Jacobian at the optimum for the intervals.
+  jacobian();
+  Eigen::VectorXd unweighted;
+  obj.Evaluate(x, &r, &unweighted);
+
+  const ModelValues m = Unscale(p, L, x);
+  out.effect_ids = ids;
+  out.zeta_N_m3 = m.zeta_N_m3;
+  out.effects = m.effects;
+  out.cost = cost;
+  out.rss = unweighted.squaredNorm();
+  out.samples = obj.rows();
+  out.parameters = n;
+  out.bic = out.samples * std::log(std::max(out.rss, 1e-300) / out.samples) + n * std::log(double(out.samples));
+  out.simulations = obj.simulations;
+  // The force residual in newtons per soil (the unweighted force rows are (F_sim - F) / max F).
+  out.residual_rms_N.assign(L.soils, 0.0);
+  out.force_samples.assign(L.soils, 0);
+  for (size_t c = 0; c < obj.train().size(); ++c) {
+    const FitDrop& d = p.drops[obj.train()[c]];
+    const long o = obj.offsets()[c], n = static_cast<long>(d.trace->size());
+    for (long i = 0; i < n; ++i) {
+      const double e = unweighted[o + 2 * i] * d.force_scale_N;
+      out.residual_rms_N[d.soil] += e * e;
+    }
+    out.force_samples[d.soil] += n;
+  }
+  for (int s = 0; s < L.soils; ++s)
+    out.residual_rms_N[s] = out.force_samples[s] > 0 ? std::sqrt(out.residual_rms_N[s] / out.force_samples[s]) : 0.0;
+
+  // Cluster-robust covariance (drops as clusters), CR1 small-sample factor G / (G - 1).
+  const Eigen::MatrixXd A = J.transpose() * J;
+  Eigen::MatrixXd B = Eigen::MatrixXd::Zero(n, n);
+  const int G = static_cast<int>(obj.train().size());
+  for (int c = 0; c < G; ++c) {
+    const long o = obj.offsets()[c];
+    const long rows = 2 * static_cast<long>(p.drops[obj.train()[c]].trace->size());
+    const Eigen::VectorXd s = J.middleRows(o, rows).transpose() * r.segment(o, rows);
+    B += s * s.transpose();
+  }
+  const Eigen::MatrixXd Ainv = A.completeOrthogonalDecomposition().pseudoInverse();
+  const Eigen::MatrixXd sandwich = Ainv * B * Ainv * (G > 1 ? double(G) / (G - 1) : 1.0);
+  // The classical covariance s^2 (J^T J)^-1 with s^2 from the residuals and the sample count cut
+  // to its effective size by the lag-1 autocorrelation (n_eff = n (1 - rho) / (1 + rho)); with few
+  // drops the sandwich alone is known to be too narrow, so each interval takes the wider of the two.
+  double rho_num = 0.0, rho_den = 0.0;
+  for (int c = 0; c < G; ++c) {
+    const long o = obj.offsets()[c];
+    const long rows = 2 * static_cast<long>(p.drops[obj.train()[c]].trace->size());
+    for (long i = 0; i < rows; ++i) {
+      rho_den += r[o + i] * r[o + i];
+      if (i >= 2) rho_num += r[o + i] * r[o + i - 2];  // same channel, one sample earlier
+    }
+  }
+  const double rho = rho_den > 0 ? std::clamp(rho_num / rho_den, 0.0, 0.99) : 0.0;
+  const double inflation = (1 + rho) / (1 - rho);
+  const double s2 = r.squaredNorm() / std::max<long>(obj.rows() - n, 1);
+  const Eigen::MatrixXd naive = Ainv * s2 * inflation;
+  Eigen::MatrixXd cov = sandwich;
+  for (int j = 0; j < n; ++j) cov(j, j) = std::max(sandwich(j, j), naive(j, j));
+  const double t = io::StudentTTwoSided(0.95, std::max(G - 1, 1));
+  k = 0;
+  auto estimate = [&](const std::string& effect, const std::string& key, double scale, double file_to_si,
+                      const std::string& unit) {
+    const double half = t * std::sqrt(std::max(cov(k, k), 0.0));
+    ParameterEstimate e{effect, key, x[k] * scale, std::max(x[k] - half, lo[k]) * scale,
+                        std::min(x[k] + half, hi[k]) * scale, file_to_si, unit};
+    out.estimates.push_back(e);
+    ++k;
+  };
+  for (int s = 0; s < L.soils; ++s) estimate("", "zeta_N_cm3:" + p.soils[s].name, p.soils[s].zeta_N_m3, 1e6, "N/m^3");
+  for (const model::EffectInfo* e : L.infos)
+    for (const model::EffectParameterInfo& q : e->parameters) estimate(e->id, q.key, q.scale, q.file_to_si, q.unit);
+  return out;
+}
+
+std::optional<dataset::DatasetTrace> SimulateRecorded(const FitProblem& p, const FitDrop& d, const FitResult& model) {
+  ModelValues m{model.zeta_N_m3, model.effects};
+  return Recorded(p, d, m, model.terms());
+}
+
+}  // namespace touchdown::gap

@@ -1,0 +1,96 @@
+#pragma once
+// Fitting a model (zeta per soil, plus zero or more library effects) to measured drops, the
+// engine of `touchdown diagnose`.
+//
+// Residuals: for every sample i of a drop's measured trace, at the recorded time t_i,
+//   force:       (F_sim(t_i) - F_i) / max F         (compare.h's force NRMSE normalisation)
+//   penetration: (d_sim(t_i) - d_i) / max d
+// each divided by sqrt(samples of the drop), so every drop weighs the same and the cost is the
+// mean over drops of the squared NRMSEs. F_sim, d_sim are what the rig would record
+// (effects.h RecordedAt, sensor_offset included).
+//
+// Solver: Levenberg-Marquardt (Marquardt's diagonal scaling) on scaled parameters (zeta /
+// zeta_catalogue, effect values / their typical scale), box bounds by projection, forward-
+// difference Jacobian; drops are simulated in parallel, the sums are in drop order, so results
+// do not depend on the thread count.
+// Intervals: cluster-robust (sandwich) covariance with the drops as clusters, since samples
+// within one drop are not independent; 95 % with Student's t on (drops - 1) degrees of freedom.
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "drop_tests/io/catalog.h"
+#include "drop_tests/dataset/dataset.h"
+#include "drop_tests/model/effects.h"
+
+namespace touchdown::gap {
+
+struct FitDrop {
+  size_t dataset_index = 0;
+  std::string drop_id;
+  int pad = 0, soil = 0;
+  bool in_air = false;
+  bool train = true;
+  double speed_m_s = 0.0, mass_kg = 0.0, gravity_m_s2 = 0.0;
+  const dataset::DatasetTrace* trace = nullptr;
+  double force_scale_N = 1.0;        // max measured force
+  double penetration_scale_m = 1.0;  // max measured penetration
+  double noise_force_N = 0.0;        // estimated sensor noise (robust, from second differences)
+};
+
+struct FitProblem {
+  std::vector<io::PadSpec> pads;
+  std::vector<std::unique_ptr<geom::AxisymmetricIntrusion>> intrusions;
+  std::vector<rft::SoilParameters> soils;  // catalogue values: the starting zeta
+  std::vector<FitDrop> drops;
+  pad::RigDropOptions rig;
+  int threads = 2;
+  bool has_air = false, has_vacuum = false;
+};
+
+// Prepares every dataset drop; `held_out` marks the drops not used for fitting.
+FitProblem MakeFitProblem(const dataset::Dataset& dataset, const std::vector<bool>& held_out, int threads);
+
+struct ParameterEstimate {
+  std::string effect;  // "" for zeta
+  std::string key;     // file key ("chi", "d_c_mm") or "zeta_N_cm3:<soil>"
+  double value = 0.0, low = 0.0, high = 0.0;  // SI
+  double file_to_si = 1.0;
+  std::string unit;
+};
+
+struct FitResult {
+  std::vector<std::string> effect_ids;  // empty: the base model
+  std::vector<double> zeta_N_m3;        // per soil, at the soil's reference gravity
+  std::vector<model::Effect> effects;          // fitted values
+  std::vector<ParameterEstimate> estimates;
+  double cost = 0.0;       // weighted, as minimised
+  double rss = 0.0;        // unweighted sum of squared normalised residuals
+  long samples = 0;        // residual count (training)
+  int parameters = 0;
+  double bic = 0.0;        // samples ln(rss / samples) + parameters ln(samples)
+  // Per soil (index as FitProblem::soils): the RMS force residual of the fitted model,
+  // sqrt(mean_i (F_sim(t_i) - F_i)^2) [N] over every measured sample i of the soil's training
+  // drops (F_sim as recorded, sensor_offset included), and how many samples that is. What a model
+  // file's fit.residual_rms_N and fit.samples record.
+  std::vector<double> residual_rms_N;
+  std::vector<long> force_samples;
+  int iterations = 0;
+  long simulations = 0;
+  bool converged = false;
+  model::EffectTerms terms() const;
+};
+
+// Whether the candidate can be fitted on this problem; if not, `why` says why.
+bool CandidateApplies(const FitProblem& problem, const std::vector<std::string>& effect_ids, std::string* why);
+// Fits zeta per soil and the effects' parameters on the training drops. `start` (a fit of a
+// sub-model, e.g. the base) seeds zeta.
+FitResult FitCandidate(const FitProblem& problem, const std::vector<std::string>& effect_ids,
+                       const FitResult* start = nullptr);
+
+// What the rig would record for drop `d` under a fitted model, at the measured times; nullopt if
+// the simulation failed (the pad never stopped, ...).
+std::optional<dataset::DatasetTrace> SimulateRecorded(const FitProblem& problem, const FitDrop& d, const FitResult& model);
+
+}  // namespace touchdown::gap

@@ -1,0 +1,44 @@
+#pragma once
+// The pads and soils a user names on the command line: a name from the bundled data/
+// directory (`flat`, `fjs1_lp`) or a path to a YAML file. Loading validates everything,
+// so the physics never sees a bad number.
+#include <string>
+
+#include "footpad_geom/axisymmetric_profile.h"
+#include "footpad_geom/pad_body.h"
+#include "rft/soil.h"
+
+namespace touchdown::io {
+
+// A pad is `kind: axisymmetric` (a profile, data/pads/flat.yaml) or `kind: mesh` (a mesh file,
+// data/pads/hex.yaml). Every pad gets its rigid body: an axisymmetric pad is revolved
+// (`angular_segments` around the rim, default geom::kDefaultAngularSegments). The pad frame B
+// has its origin at `reference_point_mm`, in the pad's own coordinates; its default is the top
+// centre (the rod attachment of the paper's rig): (0, 0, h) above an axisymmetric pad's lowest
+// point, the top centre of the bounding box of a mesh. Mass: `mass_kg`, or for a mesh
+// `density_kg_m3`; inertia and centre of mass of the uniform solid unless `inertia_kg_m2`
+// {ixx, iyy, izz, ixy, ixz, iyz} (about the centre of mass, the tensor's own entries, so ixy =
+// -integral of x y dm) and optionally `center_of_mass_mm` are given.
+struct PadSpec {
+  std::string name;
+  std::string source;  // the YAML file it came from
+  std::string kind = "axisymmetric";  // or "mesh"
+  // The exact generator curve, for the rig drop's profile integral; no points for a mesh pad.
+  geom::AxisymmetricProfile profile;
+  double mass_kg = 0.0;
+  geom::PadBody body;  // every pad, in its pad frame B
+  std::string mesh_file;  // a mesh pad's mesh, resolved path
+
+  bool is_axisymmetric() const { return !profile.points.empty(); }
+};
+
+// data/ of this build, or $TOUCHDOWN_DATA_DIR when set.
+std::string DataDirectory();
+// `kind` is a data/ subfolder ("pads", "soils", "scenarios"). A name with a '/' or a
+// ".yaml"/".yml" ending is a path; otherwise data/<kind>/<name>.yaml.
+std::string ResolveCatalogFile(const std::string& kind, const std::string& name_or_path);
+
+PadSpec LoadPad(const std::string& name_or_path);
+rft::SoilParameters LoadSoil(const std::string& name_or_path);
+
+}  // namespace touchdown::io

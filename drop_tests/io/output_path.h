@@ -1,0 +1,62 @@
+#pragma once
+// Where touchdown writes, and the promise it keeps there: it never deletes or overwrites anything
+// it did not write, and an output appears whole or not at all.
+//
+// Every output directory carries a marker file (kOutputMarker) that names the command kind that
+// wrote it and, for outputs written whole, every file in it. A directory target is accepted when it
+// does not exist, is empty, or is an earlier output of the same kind whose files are all listed in
+// its marker; anything else is refused (InputError, exit 2) with the path and the reason. So are the
+// current directory and its ancestors, a symbolic link, and any path equal to, inside or around one
+// of the command's inputs.
+//
+// A whole output is filled in a hidden staging directory beside the target (`.NAME.partial-PID`)
+// that takes the target's place in one atomic exchange (renameat2 RENAME_EXCHANGE); only then is the
+// old output removed. A kill at any moment leaves the old output or the new one, whole; the staging
+// directories of killed runs are removed by the next run that writes beside them.
+#include <functional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace touchdown::io {
+
+inline constexpr const char* kOutputMarker = ".touchdown-output";
+
+// Which command wrote an output directory: one command never replaces another's output.
+// A trade study's tables go into its sweep's output, so they are of the sweep kind.
+enum class OutputKind { kCampaign, kLander, kComparison, kDataset, kDiagnosis, kSweep };
+const char* OutputKindName(OutputKind kind);
+
+// An output path as the user gave it, with the paths the command reads from.
+struct OutputTarget {
+  OutputTarget(std::string path, std::vector<std::string> inputs = {})  // NOLINT: a plain path converts
+      : path(std::move(path)), inputs(std::move(inputs)) {}
+  OutputTarget(const char* path) : path(path) {}  // NOLINT
+  std::string path;
+  std::vector<std::string> inputs;
+};
+
+// Refuses (InputError naming the path and why) a directory target the kind may not write to. Commands
+// call it before they start work, so that a bad --out costs nothing; the writers call it again.
+void CheckOutputDirectory(const OutputTarget& target, OutputKind kind);
+
+// Writes a whole output directory: `fill` writes into the staging directory it is given.
+void WriteOutputDirectory(const OutputTarget& target, OutputKind kind,
+                          const std::function<void(const std::string& staging)>& fill);
+
+// An output filled in place over several runs (a sweep's database, which a rerun resumes): created
+// with its marker, or reopened when it is an earlier output of the same kind. Nothing is removed.
+void OpenOutputDirectory(const OutputTarget& target, OutputKind kind);
+
+// A single output file (a trace, a model file). An existing file is replaced only when its first line
+// is `mark` (a line touchdown writes first in such files), so a file of the user's is never lost.
+void CheckOutputFile(const OutputTarget& target, const std::string& mark = "");
+void WriteOutputFile(const OutputTarget& target, const std::function<void(std::ostream&)>& write,
+                     const std::string& mark = "");
+
+// A file inside a directory touchdown owns (a staging directory, a sweep output): written beside the
+// path and renamed over it, so no reader ever sees it half written. Write errors name the path and
+// the operating system's reason (InputError: a full or read-only file system is an unusable path).
+void WriteFileAtomically(const std::string& path, const std::function<void(std::ostream&)>& write);
+
+}  // namespace touchdown::io

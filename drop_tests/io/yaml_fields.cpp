@@ -1,0 +1,181 @@
+#include "drop_tests/io/yaml_fields.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <map>
+
+#include "rft/input_error.h"
+#include "rft/input_file.h"
+
+namespace touchdown::io {
+
+namespace {
+constexpr double kMaxWholeNumber = 1e9;  // counts read into an int
+
+std::string Shown(const YAML::Node& n) {
+  if (n.IsScalar()) return "'" + n.Scalar() + "'";
+  if (n.IsSequence()) return "a list";
+  if (n.IsMap()) return "a mapping";
+  return "nothing";
+}
+
+std::string LineOf(const YAML::Node& n) { return "line " + std::to_string(n.Mark().line + 1); }
+
+// What yaml-cpp accepts but a touchdown file must not contain, checked once over the whole
+// tree: a key given twice in one mapping (yaml-cpp keeps both pairs and lookups see the first,
+// so the second would be dropped silently), and text that is not UTF-8 (names and ids go
+// into JSON and file names).
+void CheckTree(const YAML::Node& node, const std::string& file, const std::string& path) {
+  auto join = [&](const std::string& key) { return path.empty() ? key : path + "." + key; };
+  if (node.IsScalar()) {
+    if (!IsValidUtf8(node.Scalar()))
+      throw MakeInputError(file, path.empty() ? LineOf(node) : path, "not valid UTF-8 text (" + LineOf(node) + ")");
+  } else if (node.IsSequence()) {
+    for (size_t i = 0; i < node.size(); ++i) CheckTree(node[i], file, path + "[" + std::to_string(i) + "]");
+  } else if (node.IsMap()) {
+    std::map<std::string, YAML::Node> seen;
+    for (const auto& item : node) {
+      if (!item.first.IsScalar()) throw MakeInputError(file, path, "a key must be plain text (" + LineOf(item.first) + ")");
+      const std::string key = item.first.Scalar();
+      if (!IsValidUtf8(key)) throw MakeInputError(file, path, "a key is not valid UTF-8 text (" + LineOf(item.first) + ")");
+      const auto [first, fresh] = seen.emplace(key, item.first);
+      if (!fresh)
+        throw MakeInputError(file, join(key),
+                             "duplicate key (" + LineOf(item.first) + "; first at " + LineOf(first->second) + ")");
+      CheckTree(item.second, file, join(key));
+    }
+  }
+}
+}  // namespace
+
+YamlFields YamlFields::LoadFile(const std::string& path) {
+  const std::string text = ReadInputFile(path);
+  try {
+    YAML::Node root = YAML::Load(text);
+    if (!root.IsMap()) throw MakeInputError(path, "", "top level must be a YAML mapping");
+    CheckTree(root, path, "");
+    return YamlFields(root, path, "");
+  } catch (const YAML::Exception& e) {
+    throw MakeInputError(path, "", std::string("malformed YAML: ") + e.what());
+  }
+}
+
+YamlFields::YamlFields(YAML::Node node, std::string file, std::string prefix)
+    : node_(std::move(node)), file_(std::move(file)), prefix_(std::move(prefix)) {}
+
+void YamlFields::Fail(const std::string& key, const std::string& message) const {
+  throw MakeInputError(file_, Path(key), message);
+}
+
+bool YamlFields::Has(const std::string& key) const { return node_[key].IsDefined() && !node_[key].IsNull(); }
+
+YamlFields YamlFields::Child(const std::string& key) const {
+  if (!Has(key)) Fail(key, "missing");
+  if (!node_[key].IsMap()) Fail(key, "must be a mapping, got " + Shown(node_[key]));
+  return YamlFields(node_[key], file_, Path(key));
+}
+
+std::vector<YamlFields> YamlFields::List(const std::string& key) const {
+  if (!Has(key)) Fail(key, "missing");
+  const YAML::Node list = node_[key];
+  if (!list.IsSequence() || list.size() == 0) Fail(key, "must be a non-empty list");
+  std::vector<YamlFields> out;
+  for (size_t i = 0; i < list.size(); ++i) {
+    const std::string path = Path(key) + "[" + std::to_string(i) + "]";
+    if (!list[i].IsMap()) throw MakeInputError(file_, path, "must be a mapping, got " + Shown(list[i]));
+    out.emplace_back(list[i], file_, path);
+  }
+  return out;
+}
+
+std::string YamlFields::String(const std::string& key) const {
+  if (!Has(key)) Fail(key, "missing");
+  if (!node_[key].IsScalar() || node_[key].Scalar().empty()) Fail(key, "must be a non-empty string");
+  return node_[key].Scalar();
+}
+
+std::string YamlFields::StringOr(const std::string& key, const std::string& fallback) const {
+  return Has(key) ? String(key) : fallback;
+}
+
+double YamlFields::Number(const std::string& key) const {
+  if (!Has(key)) Fail(key, "missing");
+  const YAML::Node n = node_[key];
+  double value = 0.0;
+  if (!n.IsScalar() || !YAML::convert<double>::decode(n, value))
+    Fail(key, "must be a number, got " + Shown(n));
+  if (!std::isfinite(value)) Fail(key, "must be finite, got " + Shown(n));
+  return value;
+}
+
+bool YamlFields::Bool(const std::string& key) const {
+  if (!Has(key)) Fail(key, "missing");
+  bool value = false;
+  if (!node_[key].IsScalar() || !YAML::convert<bool>::decode(node_[key], value))
+    Fail(key, "must be true or false, got " + Shown(node_[key]));
+  return value;
+}
+
+double YamlFields::Positive(const std::string& key) const {
+  const double v = Number(key);
+  if (!(v > 0.0)) Fail(key, "must be positive, got " + Shown(node_[key]));
+  return v;
+}
+
+double YamlFields::NonNegative(const std::string& key) const {
+  const double v = Number(key);
+  if (!(v >= 0.0)) Fail(key, "must be >= 0, got " + Shown(node_[key]));
+  return v;
+}
+
+double YamlFields::PositiveOr(const std::string& key, double fallback) const {
+  return Has(key) ? Positive(key) : fallback;
+}
+
+int YamlFields::PositiveInt(const std::string& key) const {
+  const double v = Positive(key);
+  if (v != std::floor(v)) Fail(key, "must be a whole number, got " + Shown(node_[key]));
+  if (v > kMaxWholeNumber) Fail(key, "must be at most 1000000000 (1e9), got " + Shown(node_[key]));
+  return static_cast<int>(v);
+}
+
+std::vector<double> YamlFields::NumberList(const std::string& key, bool allow_zero) const {
+  if (!Has(key)) Fail(key, "missing");
+  const YAML::Node n = node_[key];
+  std::vector<double> values;
+  auto take = [&](const YAML::Node& item, const std::string& path) {
+    double v = 0.0;
+    if (!item.IsScalar() || !YAML::convert<double>::decode(item, v) || !std::isfinite(v))
+      throw MakeInputError(file_, path, "must be a finite number, got " + Shown(item));
+    if (allow_zero ? !(v >= 0.0) : !(v > 0.0))
+      throw MakeInputError(file_, path, std::string("must be ") + (allow_zero ? ">= 0" : "positive") +
+                                            ", got " + Shown(item));
+    values.push_back(v);
+  };
+  if (n.IsSequence()) {
+    if (n.size() == 0) Fail(key, "must not be an empty list");
+    for (size_t i = 0; i < n.size(); ++i) take(n[i], Path(key) + "[" + std::to_string(i) + "]");
+  } else {
+    take(n, Path(key));
+  }
+  return values;
+}
+
+void YamlFields::RequireOnly(const std::vector<std::string>& known) const {
+  for (const auto& item : node_) {
+    const std::string key = item.first.Scalar();
+    if (std::find(known.begin(), known.end(), key) == known.end())
+      Fail(key, "unknown field (a typo?)");
+  }
+}
+
+void YamlFields::RequireSchemaVersion(int supported) const {
+  if (!Has("schema_version")) return;  // absent: the current version
+  const double v = Number("schema_version");
+  if (v != supported)
+    Fail("schema_version", "unsupported version " + Shown(node_["schema_version"]) +
+                               " (this touchdown reads " + std::to_string(supported) + ")");
+}
+
+}  // namespace touchdown::io

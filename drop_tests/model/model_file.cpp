@@ -1,0 +1,154 @@
+#include "drop_tests/model/model_file.h"
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "drop_tests/io/output_path.h"
+#include "drop_tests/io/dataset_csv.h"
+#include "drop_tests/model/effects.h"
+#include "drop_tests/io/paths_in_outputs.h"
+#include "drop_tests/io/yaml_fields.h"
+#include "rft/input_error.h"
+
+namespace touchdown::model {
+
+namespace {
+constexpr double kNcm3 = 1e6;  // N/cm^3 -> N/m^3
+
+SoilOverride ReadOverride(const io::YamlFields& f) {
+  f.RequireOnly({"zeta_N_cm3", "reference_gravity_m_s2", "zeta_interval_N_cm3", "confidence", "fit"});
+  SoilOverride o;
+  o.zeta_N_m3 = f.Positive("zeta_N_cm3") * kNcm3;
+  o.reference_gravity_m_s2 = f.PositiveOr("reference_gravity_m_s2", 9.81);
+  if (f.Has("zeta_interval_N_cm3")) {
+    const YAML::Node n = f.node()["zeta_interval_N_cm3"];
+    double lo = 0, hi = 0;
+    if (!n.IsSequence() || n.size() != 2 || !YAML::convert<double>::decode(n[0], lo) ||
+        !YAML::convert<double>::decode(n[1], hi) || !std::isfinite(lo) || !std::isfinite(hi) || !(lo <= hi))
+      f.Fail("zeta_interval_N_cm3", "must be [low, high] with low <= high");
+    o.zeta_low_N_m3 = lo * kNcm3;
+    o.zeta_high_N_m3 = hi * kNcm3;
+  }
+  if (f.Has("confidence")) {
+    o.confidence = f.Positive("confidence");
+    if (o.confidence >= 1.0) f.Fail("confidence", "must be below 1");
+  }
+  if (f.Has("fit")) {
+    const io::YamlFields fit = f.Child("fit");
+    fit.RequireOnly({"method", "drops", "samples", "residual_rms_N", "dataset"});
+    SoilFit s;
+    s.method = fit.StringOr("method", "");
+    if (fit.Has("drops")) s.drops = fit.PositiveInt("drops");
+    if (fit.Has("samples")) s.samples = fit.PositiveInt("samples");
+    if (fit.Has("residual_rms_N")) s.residual_rms_N = fit.NonNegative("residual_rms_N");
+    s.dataset = fit.StringOr("dataset", "");
+    o.fit = s;
+  }
+  return o;
+}
+}  // namespace
+
+ModelFile LoadModelFile(const std::string& path) {
+  const io::YamlFields f = io::YamlFields::LoadFile(path);
+  f.RequireSchemaVersion(1);
+  f.RequireOnly({"schema_version", "type", "name", "description", "soils", "effects", "provenance"});
+  if (f.String("type") != "model") f.Fail("type", "must be 'model', got '" + f.String("type") + "'");
+  ModelFile m;
+  m.source = path;
+  m.name = f.StringOr("name", std::filesystem::path(path).stem().string());
+  m.description = f.StringOr("description", "");
+  if (f.Has("soils")) {
+    const io::YamlFields soils = f.Child("soils");
+    for (const auto& item : soils.node()) {
+      const std::string name = item.first.Scalar();
+      m.soils[name] = ReadOverride(soils.Child(name));
+    }
+  }
+  if (f.Has("effects")) {
+    if (!f.node()["effects"].IsMap()) f.Fail("effects", "must be a mapping of effect terms");
+    m.effects = f.node()["effects"];
+    ParseEffects(f.Child("effects"));  // issue 6: validates ids, parameters and ranges (drop_tests/model/effects.h)
+  }
+  if (f.Has("provenance")) m.provenance = f.node()["provenance"];
+  return m;
+}
+
+void WriteModelFile(const ModelFile& m, const io::OutputTarget& target, const std::string& output_dir) {
+  const std::string directory =
+      output_dir.empty() ? std::filesystem::path(target.path).parent_path().string() : output_dir;
+  YAML::Emitter y;
+  y.SetDoublePrecision(10);
+  y << YAML::BeginMap << YAML::Key << "schema_version" << YAML::Value << 1 << YAML::Key << "type" << YAML::Value
+    << "model";
+  if (!m.name.empty()) y << YAML::Key << "name" << YAML::Value << m.name;
+  if (!m.description.empty()) y << YAML::Key << "description" << YAML::Value << m.description;
+  y << YAML::Key << "soils" << YAML::Value << YAML::BeginMap;
+  for (const auto& [name, o] : m.soils) {
+    y << YAML::Key << name << YAML::Value << YAML::BeginMap << YAML::Key << "zeta_N_cm3" << YAML::Value
+      << o.zeta_N_m3 / kNcm3 << YAML::Key << "reference_gravity_m_s2" << YAML::Value << o.reference_gravity_m_s2;
+    if (o.zeta_low_N_m3 && o.zeta_high_N_m3)
+      y << YAML::Key << "zeta_interval_N_cm3" << YAML::Value << YAML::Flow << YAML::BeginSeq
+        << *o.zeta_low_N_m3 / kNcm3 << *o.zeta_high_N_m3 / kNcm3 << YAML::EndSeq << YAML::Key << "confidence"
+        << YAML::Value << o.confidence;
+    if (o.fit) {
+      y << YAML::Key << "fit" << YAML::Value << YAML::BeginMap << YAML::Key << "method" << YAML::Value << o.fit->method
+        << YAML::Key << "drops" << YAML::Value << o.fit->drops << YAML::Key << "samples" << YAML::Value
+        << o.fit->samples << YAML::Key << "residual_rms_N" << YAML::Value << o.fit->residual_rms_N;
+      if (!o.fit->dataset.empty())
+        y << YAML::Key << "dataset" << YAML::Value << io::PathForOutput(o.fit->dataset, directory);
+      y << YAML::EndMap;
+    }
+    y << YAML::EndMap;
+  }
+  y << YAML::EndMap;
+  y << YAML::Key << "effects" << YAML::Value;
+  if (m.HasEffects()) y << m.effects;
+  else y << YAML::Flow << YAML::BeginMap << YAML::EndMap;
+  if (m.provenance && !m.provenance.IsNull()) y << YAML::Key << "provenance" << YAML::Value << m.provenance;
+  y << YAML::EndMap;
+  io::WriteOutputFile(target, [&](std::ostream& out) { out << kModelFileMark << '\n' << y.c_str() << '\n'; }, kModelFileMark);
+}
+
+rft::SoilParameters ApplyModel(const ModelFile& m, const rft::SoilParameters& soil) {
+  rft::SoilParameters out = soil;
+  const auto it = m.soils.find(soil.name);
+  if (it == m.soils.end()) return out;
+  // The model's zeta holds at its own reference gravity; the soil keeps its reference.
+  out.zeta_N_m3 = it->second.zeta_N_m3 * soil.reference_gravity_m_s2 / it->second.reference_gravity_m_s2;
+  return out;
+}
+
+std::vector<Effect> ModelEffects(const ModelFile& m) {
+  if (!m.HasEffects()) return {};
+  return ParseEffects(io::YamlFields(m.effects, m.source.empty() ? std::string("model ") + m.name : m.source, "effects"));
+}
+
+EffectTerms ModelEffectTerms(const ModelFile& m) {
+  return MakeEffectTerms(ModelEffects(m), m.source.empty() ? "model " + m.name : m.source);
+}
+
+std::unique_ptr<rft::StressLaw3D> MakeModelStressLaw3D(std::string_view law, const rft::SoilParameters& soil,
+                                                       double gravity_m_s2, const ModelFile* model) {
+  if (!model) return MakeEffectLaw3D(law, soil, gravity_m_s2, EffectTerms{}, soil.atmosphere == "air", "");
+  return MakeEffectLaw3D(law, ApplyModel(*model, soil), gravity_m_s2, ModelEffectTerms(*model),
+                         soil.atmosphere == "air", model->source.empty() ? "model " + model->name : model->source);
+}
+
+nlohmann::json ModelEffectsJson(const ModelFile& m) {
+  const EffectTerms terms = ModelEffectTerms(m);
+  nlohmann::json applied = nlohmann::json::array(), skipped = nlohmann::json::object();
+  for (const auto& [id, why] : EffectsNotApplied(terms, /*in_air=*/true)) skipped[id] = why;
+  for (const std::string& id : ActiveEffects(terms))
+    if (!skipped.contains(id)) applied.push_back(id == "gas_cushion" ? "gas_cushion (soils in air only)" : id);
+  return {{"file", m.source}, {"effects", applied}, {"effects_not_applied", skipped}};
+}
+
+std::string ModelDigestText(const ModelFile& m) {
+  std::string s = "model:" + m.name + ";";
+  for (const auto& [name, o] : m.soils)
+    s += name + "=" + io::FormatNumber(o.zeta_N_m3) + "@" + io::FormatNumber(o.reference_gravity_m_s2) + ";";
+  if (m.HasEffects()) s += "effects:" + YAML::Dump(m.effects);
+  return s;
+}
+
+}  // namespace touchdown::model

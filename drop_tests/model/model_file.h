@@ -1,0 +1,99 @@
+#pragma once
+// A model file (MODEL.yaml) holds what calibration learns about the soils, so `drop --model`,
+// `sweep` and `compare` can run with it and `calibrate` can write it:
+//
+//   schema_version: 1
+//   type: model
+//   name: fjs1_calibrated
+//   soils:                      # per-soil overrides, keyed by the soil's catalogue name
+//     fjs1_lp:
+//       zeta_N_cm3: 3.61        # at reference_gravity_m_s2 (zeta scales with g, see rft/soil.h)
+//       reference_gravity_m_s2: 9.81
+//       zeta_interval_N_cm3: [3.52, 3.70]   # optional confidence interval
+//       confidence: 0.95
+//       fit: {method: ..., drops: 6, samples: 240, residual_rms_N: 4.1, dataset: ...}   # optional record
+//   effects:                    # effect terms beyond quasi-static RFT (drop_tests/model/effects.h)
+//     inertial_drag: {lambda: 2.1, interval_95: {lambda: [1.8, 2.4]}}
+//   provenance: ...             # free text/mapping, kept
+//
+// `effects` is kept as raw YAML (written back unchanged) and validated on load; ModelEffectTerms
+// gives its terms. Where they act:
+//   rig drops (`drop`, `sweep`, `compare`, `calibrate`'s users): every effect, through
+//     DropConditions::effects (drop_tests/drop/pad_drop.h); gas_cushion only on drops in air (the
+//     drop's atmosphere: the dataset row's in `compare`, else the soil's);
+//   free drops and the lander (3D contact): every physical effect, in its 3D form
+//     (MakeModelStressLaw3D below; drop_tests/model/effects.h); gas_cushion only on soils in air;
+//   sensor_offset (measurement only) never changes a simulated drop: `compare` applies it to
+//     the simulated traces it compares with recorded ones (what the rig would record), and
+//     `drop` reports it as not applied.
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include <nlohmann/json_fwd.hpp>
+#include <yaml-cpp/yaml.h>
+
+#include "drop_tests/model/effects.h"
+#include "drop_tests/io/output_path.h"
+#include "rft/soil.h"
+#include "rft/stress_law_3d.h"
+
+namespace touchdown::model {
+
+struct SoilFit {
+  std::string method;
+  int drops = 0;
+  long samples = 0;
+  double residual_rms_N = 0.0;
+  std::string dataset;  // the dataset directory as the run reached it; written relative to the model file
+};
+
+struct SoilOverride {
+  double zeta_N_m3 = 0.0;                 // at reference_gravity_m_s2
+  double reference_gravity_m_s2 = 9.81;
+  std::optional<double> zeta_low_N_m3;    // confidence interval, both or neither
+  std::optional<double> zeta_high_N_m3;
+  double confidence = 0.95;
+  std::optional<SoilFit> fit;
+};
+
+struct ModelFile {
+  std::string source;  // the file it was read from ("" when built in memory)
+  std::string name;
+  std::string description;
+  std::map<std::string, SoilOverride> soils;
+  YAML::Node effects;     // raw; null or an empty mapping when there are none
+  YAML::Node provenance;  // raw, written back unchanged
+
+  bool HasEffects() const { return effects && effects.IsMap() && effects.size() > 0; }
+};
+
+ModelFile LoadModelFile(const std::string& path);
+// The first line of every model file touchdown writes: a file that starts with it may be replaced by
+// the next `calibrate --out`; any other file at that path is the user's and is never overwritten.
+inline constexpr const char* kModelFileMark = "# touchdown model file (written by touchdown; it may replace this file)";
+// Paths in it (a fit's dataset) are written for `output_dir`, the directory the file finally lives
+// in (default: the directory of the target; drop_tests/io/paths_in_outputs.h).
+void WriteModelFile(const ModelFile& model, const io::OutputTarget& target, const std::string& output_dir = "");
+// The soil as the model sees it: its zeta replaced when the model has an override (converted to
+// the soil's own reference gravity). Effect terms are not part of the soil: see ModelEffectTerms.
+rft::SoilParameters ApplyModel(const ModelFile& model, const rft::SoilParameters& soil);
+// The model's effects (validated; none when `effects` is empty) and their flattened terms.
+// Throws InputError naming the model file and field.
+std::vector<Effect> ModelEffects(const ModelFile& model);
+EffectTerms ModelEffectTerms(const ModelFile& model);
+// The 3D stress law of `soil` under `model` (may be null: the soil as it is): zeta override
+// (ApplyModel) and the effect terms in their 3D form (MakeEffectLaw3D; gas_cushion only when the
+// soil's atmosphere is air). Throws InputError naming the soil and the model file when an effect
+// needs the soil's bulk density and it has none.
+std::unique_ptr<rft::StressLaw3D> MakeModelStressLaw3D(std::string_view law, const rft::SoilParameters& soil,
+                                                       double gravity_m_s2, const ModelFile* model);
+// The model as a 3D run (lander) reports it: {file, effects: [ids applied], effects_not_applied:
+// {id: reason}}; gas_cushion is applied on the soils in air only (said so in its entry).
+nlohmann::json ModelEffectsJson(const ModelFile& model);
+// A short digest of everything ApplyModel uses, for sweep databases to detect a changed model.
+std::string ModelDigestText(const ModelFile& model);
+
+}  // namespace touchdown::model

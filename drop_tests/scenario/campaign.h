@@ -1,0 +1,69 @@
+#pragma once
+// A drop campaign: a scenario YAML lists pads x soils x impact speeds (the paper's
+// single-footpad campaign ships as data/scenarios/sutoh2017_single_footpad.yaml). Loading
+// resolves and validates every pad, soil and number before anything runs or is written.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "drop_tests/drop/pad_drop.h"
+
+namespace touchdown::scenario {
+
+struct CampaignCase {
+  std::string drop_id;  // e.g. flat_fjs1_lp_v1.00
+  // Shared by every case of the pad: a pad carries its revolved body (megabytes), which a copy per
+  // case multiplied by the size of the campaign (2-3 MB a drop).
+  std::shared_ptr<const io::PadSpec> pad;
+  rft::SoilParameters soil;
+  drop::DropConditions conditions;
+};
+
+// A ratio of one summary quantity between two cases, printed beside the paper's figures.
+struct PaperCheck {
+  std::string name;
+  std::string quantity;  // final_penetration_m or peak_force_N
+  std::string numerator_pad, numerator_soil, denominator_pad, denominator_soil;
+  double speed_m_s = 0.0;
+  double paper_experiment = 0.0;  // 0 when the paper gives none
+  double paper_rft = 0.0;
+  std::string source;
+};
+
+struct CampaignScenario {
+  std::string name;
+  std::string description;
+  std::string source;            // the scenario file
+  double reference_speed_m_s = 0.0;  // the speed shown in the per-case plots (paper: 1.0 m/s)
+  std::vector<CampaignCase> cases;
+  std::vector<PaperCheck> checks;
+};
+
+struct CampaignResult {
+  CampaignScenario scenario;
+  std::vector<drop::PadDrop> drops;  // in the order of scenario.cases (summaries only after RunCampaignToDirectory)
+};
+
+struct CheckOutcome {
+  PaperCheck check;
+  double simulated = 0.0;
+};
+
+CampaignScenario LoadCampaignScenario(const std::string& path);
+CampaignResult RunCampaign(const CampaignScenario& scenario);
+std::vector<CheckOutcome> EvaluateChecks(const CampaignResult& result);
+// Every case with its pad, soil and numbers as they were run (house style: resolved config). The
+// files named are written for `output_dir`, the directory the file finally lives in
+// (drop_tests/io/paths_in_outputs.h: no absolute paths of this machine).
+void WriteResolvedScenario(const CampaignScenario& scenario, const std::string& path, const std::string& output_dir);
+// Writes summary.csv, summary.json, traces/, plots/ and scenario_resolved.yaml into a fresh
+// directory that appears at `out_dir` only when complete (replacing an older one).
+void WriteCampaignOutputs(const CampaignResult& result, const io::OutputTarget& out);
+// RunCampaign and WriteCampaignOutputs in one pass that streams: each drop's trace is written to
+// traces/ as the drop finishes and then released, so memory holds the summaries only (a
+// 10,000-drop campaign: bench/campaign_memory_bench.cpp). The drops come back without traces.
+CampaignResult RunCampaignToDirectory(const CampaignScenario& scenario, const io::OutputTarget& out);
+
+}  // namespace touchdown::scenario

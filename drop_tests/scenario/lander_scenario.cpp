@@ -1,0 +1,582 @@
+#include "drop_tests/scenario/lander_scenario.h"
+
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <nlohmann/json.hpp>
+#include <numbers>
+#include <sstream>
+#include <unistd.h>
+
+#include <Eigen/Eigenvalues>
+
+#include "drop_tests/io/output_path.h"
+#include "drop_tests/io/dataset_csv.h"  // io::FormatNumber
+#include "drop_tests/scenario/lander_plots.h"
+#include "drop_tests/io/paths_in_outputs.h"
+#include "drop_tests/io/yaml_fields.h"
+#include "rft/input_error.h"
+#include "rft/physical_limits.h"
+#include "rft/stress_law_3d_factory.h"
+
+namespace touchdown::scenario {
+
+namespace fs = std::filesystem;
+
+namespace {
+constexpr double kMm = 1e-3;
+constexpr double kDeg = std::numbers::pi / 180.0;
+// Pads clockwise seen from above, pad 1 front-left (x forward, y left).
+constexpr double kPadAzimuthDeg[lander::kNumLegs] = {45.0, -45.0, -135.0, 135.0};
+
+// A list of exactly n finite numbers (any sign).
+std::vector<double> FixedList(const io::YamlFields& f, const std::string& key, size_t n) {
+  const YAML::Node list = f.node()[key];
+  if (!list.IsSequence() || list.size() != n)
+    f.Fail(key, "must be a list of " + std::to_string(n) + " numbers");
+  std::vector<double> out;
+  for (size_t i = 0; i < n; ++i) {
+    double v = 0.0;
+    if (!list[i].IsScalar() || !YAML::convert<double>::decode(list[i], v) || !std::isfinite(v))
+      f.Fail(key + "[" + std::to_string(i) + "]", "must be a finite number, got '" + list[i].Scalar() + "'");
+    out.push_back(v);
+  }
+  return out;
+}
+
+std::string ResolveRelative(const io::YamlFields& f, const std::string& kind, const std::string& name) {
+  const bool is_path = name.find('/') != std::string::npos || name.ends_with(".yaml") || name.ends_with(".yml");
+  if (is_path && fs::path(name).is_relative()) {
+    const fs::path beside = fs::path(f.file()).parent_path() / name;
+    if (fs::is_regular_file(beside)) return beside.lexically_normal().string();
+  }
+  try {
+    return io::ResolveCatalogFile(kind, name);
+  } catch (const InputError& e) {
+    f.Fail(kind == "pads" ? "pad" : kind, e.what());
+  }
+}
+
+lander::ShockAbsorber ReadAbsorber(const io::YamlFields& f) {
+  lander::ShockAbsorber a;
+  const std::string kind = f.String("kind");
+  if (kind == "spring_damper") {
+    f.RequireOnly({"kind", "stiffness_N_m", "damping_N_s_m"});
+    a.kind = lander::ShockAbsorber::Kind::kSpringDamper;
+    a.stiffness_N_m = f.Positive("stiffness_N_m");
+    a.damping_N_s_m = f.Has("damping_N_s_m") ? f.NonNegative("damping_N_s_m") : 0.0;
+  } else if (kind == "crushable") {
+    f.RequireOnly({"kind", "crush_force_N", "stroke_mm"});
+    a.kind = lander::ShockAbsorber::Kind::kCrushable;
+    a.crush_force_N = f.Positive("crush_force_N");
+    a.stroke_limit_m = f.Positive("stroke_mm") * kMm;
+  } else {
+    f.Fail("kind", "unknown absorber kind '" + kind + "' (spring_damper, crushable)");
+  }
+  return a;
+}
+
+Eigen::Matrix3d AxisRotation(const Eigen::Vector3d& axis, double angle) {
+  return Eigen::AngleAxisd(angle, axis).toRotationMatrix();
+}
+}  // namespace
+
+LanderSpec LoadLanderSpec(const std::string& name_or_path) {
+  const std::string path = io::ResolveCatalogFile("landers", name_or_path);
+  const io::YamlFields f = io::YamlFields::LoadFile(path);
+  f.RequireSchemaVersion(1);
+  f.RequireOnly({"schema_version", "name", "description", "total_mass_kg", "cog_height_mm", "body_inertia_kg_m2",
+                 "pad", "legs", "provenance"});
+  LanderSpec s;
+  s.source = path;
+  s.name = f.StringOr("name", fs::path(path).stem().string());
+  s.total_mass_kg = f.Positive("total_mass_kg");
+  s.cog_height_m = f.Positive("cog_height_mm") * kMm;
+  const io::YamlFields in = f.Child("body_inertia_kg_m2");
+  in.RequireOnly({"ixx", "iyy", "izz", "ixy", "ixz", "iyz"});
+  auto off = [&](const char* k) { return in.Has(k) ? in.Number(k) : 0.0; };
+  s.body_inertia_B << in.Positive("ixx"), off("ixy"), off("ixz"), off("ixy"), in.Positive("iyy"), off("iyz"),
+      off("ixz"), off("iyz"), in.Positive("izz");
+  if (Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(s.body_inertia_B).eigenvalues().minCoeff() <= 0.0)
+    in.Fail("ixx", "the inertia tensor must be positive definite");
+  try {
+    s.pad = io::LoadPad(ResolveRelative(f, "pads", f.String("pad")));
+  } catch (const InputError& e) {
+    f.Fail("pad", e.what());
+  }
+  s.body_mass_kg = s.total_mass_kg - lander::kNumLegs * s.pad.body.mass_kg;
+  if (!(s.body_mass_kg > 0.0)) f.Fail("total_mass_kg", "must exceed the four pads' mass");
+
+  // Standing level on the pad bottoms: the joint centre is -lowest_z_B above the bottom, the pad
+  // CoM com_B.z above the joint; the body CoM height follows from the whole lander's CoG height.
+  const geom::PadBody& pad = s.pad.body;
+  const double joint_height = -pad.lowest_z_B;
+  const double pad_com_height = joint_height + pad.com_B.z();
+  const double body_com_height =
+      (s.total_mass_kg * s.cog_height_m - lander::kNumLegs * pad.mass_kg * pad_com_height) / s.body_mass_kg;
+  if (!(body_com_height > joint_height)) f.Fail("cog_height_mm", "puts the body's centre of mass below the joints");
+
+  const io::YamlFields legs = f.Child("legs");
+  legs.RequireOnly({"joint_radius_mm", "hip_radius_mm", "hip_height_mm", "absorber", "cone_limit"});
+  const double joint_radius = legs.Positive("joint_radius_mm") * kMm;
+  const double hip_radius = legs.NonNegative("hip_radius_mm") * kMm;
+  const double hip_height = legs.Positive("hip_height_mm") * kMm;
+  if (!(hip_height > joint_height)) legs.Fail("hip_height_mm", "must be above the ball-joint centres");
+  std::optional<lander::ShockAbsorber> absorber;
+  if (legs.Has("absorber")) absorber = ReadAbsorber(legs.Child("absorber"));
+  std::optional<lander::ConeLimit> cone;
+  if (legs.Has("cone_limit")) {
+    const io::YamlFields c = legs.Child("cone_limit");
+    c.RequireOnly({"half_angle_deg", "stiffness_N_m_rad", "damping_N_m_s_rad"});
+    cone = lander::ConeLimit{c.Positive("half_angle_deg") * kDeg, c.Positive("stiffness_N_m_rad"),
+                             c.Has("damping_N_m_s_rad") ? c.NonNegative("damping_N_m_s_rad") : 0.0};
+  }
+  for (int i = 0; i < lander::kNumLegs; ++i) {
+    const double az = kPadAzimuthDeg[i] * kDeg;
+    const Eigen::Vector3d dir(std::cos(az), std::sin(az), 0.0);
+    s.legs[i].joint_B = joint_radius * dir + Eigen::Vector3d(0, 0, joint_height - body_com_height);
+    s.legs[i].hip_B = hip_radius * dir + Eigen::Vector3d(0, 0, hip_height - body_com_height);
+    s.legs[i].absorber = absorber;
+    s.legs[i].cone = cone;
+  }
+  return s;
+}
+
+LanderScenario LoadLanderScenario(const std::string& path) {
+  const io::YamlFields f = io::YamlFields::LoadFile(path);
+  f.RequireSchemaVersion(1);
+  f.RequireOnly({"schema_version", "type", "name", "description", "lander", "gravity_m_s2", "ground", "initial",
+                 "simulation", "paper", "provenance"});
+  if (f.String("type") != "lander") f.Fail("type", "must be 'lander', got '" + f.String("type") + "'");
+  LanderScenario s;
+  s.source = path;
+  s.name = f.StringOr("name", fs::path(path).stem().string());
+  s.description = f.StringOr("description", "");
+  s.gravity_m_s2 = f.Has("gravity_m_s2") ? f.Positive("gravity_m_s2") : 9.81;
+  try {
+    s.lander = LoadLanderSpec(ResolveRelative(f, "landers", f.String("lander")));
+  } catch (const InputError& e) {
+    f.Fail("lander", e.what());
+  }
+
+  const io::YamlFields g = f.Child("ground");
+  g.RequireOnly({"height_m", "slope_deg", "downhill_azimuth_deg", "law", "soil", "patches"});
+  s.ground.height_m = g.Has("height_m") ? g.Number("height_m") : 0.0;
+  s.ground.slope_rad = g.Has("slope_deg") ? g.NonNegative("slope_deg") * kDeg : 0.0;
+  if (s.ground.slope_rad >= 80 * kDeg) g.Fail("slope_deg", "must be below 80");
+  s.ground.downhill_azimuth_rad = g.Has("downhill_azimuth_deg") ? g.Number("downhill_azimuth_deg") * kDeg : 0.0;
+  s.ground.law = g.StringOr("law", "li2013");
+  s.ground.default_soil = g.String("soil");
+  auto check_soil = [&](const io::YamlFields& where, const std::string& key, const std::string& soil) {
+    try {
+      rft::MakeStressLaw3D(s.ground.law, io::LoadSoil(soil), s.gravity_m_s2);
+    } catch (const InputError& e) {
+      where.Fail(key, e.what());
+    }
+  };
+  check_soil(g, "soil", s.ground.default_soil);
+  if (g.Has("patches")) {
+    for (const io::YamlFields& p : g.List("patches")) {
+      p.RequireOnly({"name", "soil", "rectangle_m", "polygon_m", "under_pad", "half_width_m"});
+      LanderPatchSpec patch;
+      patch.soil = p.String("soil");
+      check_soil(p, "soil", patch.soil);
+      const int given = int(p.Has("rectangle_m")) + int(p.Has("polygon_m")) + int(p.Has("under_pad"));
+      if (given != 1) p.Fail("rectangle_m", "give exactly one of rectangle_m, polygon_m, under_pad");
+      if (p.Has("rectangle_m")) {
+        const std::vector<double> r = FixedList(p, "rectangle_m", 4);
+        if (!(r[2] > r[0] && r[3] > r[1])) p.Fail("rectangle_m", "must be [x0, y0, x1, y1] with x1 > x0, y1 > y0");
+        patch.polygon_W = rft::RectanglePolygon(r[0], r[1], r[2], r[3]);
+      } else if (p.Has("polygon_m")) {
+        const YAML::Node list = p.node()["polygon_m"];
+        if (!list.IsSequence() || list.size() < 3) p.Fail("polygon_m", "must list at least three [x, y] corners");
+        for (size_t k = 0; k < list.size(); ++k) {
+          double x = 0, y = 0;
+          if (!list[k].IsSequence() || list[k].size() != 2 || !YAML::convert<double>::decode(list[k][0], x) ||
+              !YAML::convert<double>::decode(list[k][1], y) || !std::isfinite(x) || !std::isfinite(y))
+            p.Fail("polygon_m[" + std::to_string(k) + "]", "must be a pair of finite numbers [x, y]");
+          patch.polygon_W.emplace_back(x, y);
+        }
+      } else {
+        const int pad = p.PositiveInt("under_pad");
+        if (pad > lander::kNumLegs) p.Fail("under_pad", "must be 1..4, got " + std::to_string(pad));
+        const double h = p.Positive("half_width_m");
+        patch.name = "under_pad_" + std::to_string(pad);
+        patch.polygon_W = {Eigen::Vector2d(pad, h)};  // resolved below, once the initial pose is known
+      }
+      if (p.Has("name")) patch.name = p.String("name");
+      if (patch.name.empty()) patch.name = "patch_" + std::to_string(s.ground.patches.size() + 1);
+      s.ground.patches.push_back(patch);
+    }
+  }
+
+  const io::YamlFields in = f.Child("initial");
+  in.RequireOnly({"drop_height_m", "touchdown_speed_m_s", "release_vertical_speed_m_s", "horizontal_velocity_m_s",
+                  "roll_deg", "pitch_deg", "yaw_relative_to_slope_deg", "align_to_slope", "angular_rate_deg_s",
+                  "pad_attitude"});
+  if (in.Has("drop_height_m") == in.Has("touchdown_speed_m_s"))
+    in.Fail("drop_height_m", "give exactly one of drop_height_m and touchdown_speed_m_s");
+  if (in.Has("drop_height_m")) s.initial.drop_height_m = in.NonNegative("drop_height_m");
+  if (in.Has("touchdown_speed_m_s")) {
+    s.initial.touchdown_speed_m_s = in.NonNegative("touchdown_speed_m_s");
+    limits::Require(limits::kSpeed_m_s, *s.initial.touchdown_speed_m_s, in.file(), in.Path("touchdown_speed_m_s"));
+  }
+  if (in.Has("release_vertical_speed_m_s")) {
+    if (!in.Has("drop_height_m")) in.Fail("release_vertical_speed_m_s", "only with drop_height_m");
+    s.initial.release_vertical_speed_m_s = in.Number("release_vertical_speed_m_s");
+  }
+  if (in.Has("horizontal_velocity_m_s")) {
+    const std::vector<double> v = FixedList(in, "horizontal_velocity_m_s", 2);
+    s.initial.horizontal_velocity_m_s = Eigen::Vector2d(v[0], v[1]);
+  }
+  s.initial.roll_rad = in.Has("roll_deg") ? in.Number("roll_deg") * kDeg : 0.0;
+  s.initial.pitch_rad = in.Has("pitch_deg") ? in.Number("pitch_deg") * kDeg : 0.0;
+  if (std::abs(s.initial.roll_rad) >= 80 * kDeg) in.Fail("roll_deg", "must be within +-80");
+  if (std::abs(s.initial.pitch_rad) >= 80 * kDeg) in.Fail("pitch_deg", "must be within +-80");
+  s.initial.yaw_relative_to_slope_rad = in.Has("yaw_relative_to_slope_deg") ? in.Number("yaw_relative_to_slope_deg") * kDeg : 0.0;
+  if (in.Has("align_to_slope")) {
+    const std::string a = in.String("align_to_slope");
+    if (a != "true" && a != "false") in.Fail("align_to_slope", "must be true or false, got '" + a + "'");
+    s.initial.align_to_slope = a == "true";
+  }
+  if (in.Has("angular_rate_deg_s")) {
+    const std::vector<double> w = FixedList(in, "angular_rate_deg_s", 3);
+    s.initial.angular_rate_B = Eigen::Vector3d(w[0], w[1], w[2]) * kDeg;
+  }
+  s.initial.pad_attitude = in.StringOr("pad_attitude", "body");
+  if (s.initial.pad_attitude != "body" && s.initial.pad_attitude != "level")
+    in.Fail("pad_attitude", "must be 'body' or 'level', got '" + s.initial.pad_attitude + "'");
+
+  if (f.Has("simulation")) {
+    const io::YamlFields sim = f.Child("simulation");
+    sim.RequireOnly({"duration_s", "sample_rate_hz", "capture_speed_m_s", "rtol", "atol", "max_step_s", "stiff"});
+    if (sim.Has("duration_s")) s.options.duration_s = sim.Positive("duration_s");
+    if (sim.Has("sample_rate_hz")) s.options.sample_rate_hz = sim.Positive("sample_rate_hz");
+    // Resolution caps (the trace keeps duration x rate samples; a hand-written 1e9 must not
+    // exhaust memory or run for days).
+    if (s.options.duration_s > 600.0)
+      sim.Fail("duration_s", "must be at most 600 s, got " + io::FormatNumber(s.options.duration_s));
+    if (s.options.sample_rate_hz > 1e6)
+      sim.Fail("sample_rate_hz", "must be at most 1e6 Hz, got " + io::FormatNumber(s.options.sample_rate_hz));
+    // The whole trace is held in memory until it is written (about 0.4 kB a sample, plus the plots'
+    // copy): 1e6 samples keep a run under about 1 GB (1e7 needed over 4 GB).
+    if (s.options.duration_s * s.options.sample_rate_hz > kLanderMaxTraceSamples)
+      sim.Fail("sample_rate_hz", "duration_s x sample_rate_hz is " +
+                                     io::FormatNumber(s.options.duration_s * s.options.sample_rate_hz) +
+                                     " trace samples, at most " + io::FormatNumber(kLanderMaxTraceSamples) +
+                                     " (lower the rate or the duration)");
+    if (sim.Has("capture_speed_m_s")) s.options.capture_speed_m_s = sim.NonNegative("capture_speed_m_s");
+    if (sim.Has("rtol")) s.options.integrator.rtol = sim.Positive("rtol");
+    if (sim.Has("atol")) {
+      s.options.integrator.atol = sim.Positive("atol");
+      s.options.scale_tolerances = false;
+    }
+    if (sim.Has("max_step_s")) s.options.integrator.max_step = sim.Positive("max_step_s");
+    if (sim.Has("stiff")) {
+      const std::string v = sim.String("stiff");
+      if (v != "true" && v != "false") sim.Fail("stiff", "must be true or false, got '" + v + "'");
+      s.options.integrator.stiff = v == "true";
+    }
+    std::string why;
+    if (!s.options.integrator.IsValid(&why)) sim.Fail("rtol", why);
+  }
+  if (f.Has("paper")) {
+    const io::YamlFields p = f.Child("paper");
+    p.RequireOnly({"ground_case", "roll_pitch_within_deg", "source"});
+    s.paper_ground_case = p.StringOr("ground_case", "");
+    if (p.Has("roll_pitch_within_deg"))
+      s.paper = LanderPaperCheck{p.Positive("roll_pitch_within_deg"), p.StringOr("source", "")};
+  }
+  return s;
+}
+
+LanderSetup BuildLanderSetup(const LanderScenario& sc) {
+  LanderSetup out;
+  lander::LanderModel& m = out.model;
+  m.body_mass_kg = sc.lander.body_mass_kg;
+  m.body_inertia_B = sc.lander.body_inertia_B;
+  m.gravity_m_s2 = sc.gravity_m_s2;
+  auto pad = std::make_shared<const geom::PadBody>(sc.lander.pad.body);
+  for (int i = 0; i < lander::kNumLegs; ++i) {
+    m.legs[i].hip_B = sc.lander.legs[i].hip_B;
+    m.legs[i].joint_B = sc.lander.legs[i].joint_B;
+    m.legs[i].absorber = sc.lander.legs[i].absorber;
+    m.legs[i].cone = sc.lander.legs[i].cone;
+    m.legs[i].pad = pad;
+  }
+  lander::FinishModel(m);
+
+  // Ground: z = h0 - tan(slope) (x cos(az) + y sin(az)).
+  const double t = std::tan(sc.ground.slope_rad), az = sc.ground.downhill_azimuth_rad;
+  out.terrain.surface = std::make_shared<rft::PlaneGround>(sc.ground.height_m, -t * std::cos(az), -t * std::sin(az));
+  std::vector<std::string> soil_names{sc.ground.default_soil};
+  auto soil_index = [&](const std::string& name) {
+    for (size_t k = 0; k < soil_names.size(); ++k)
+      if (soil_names[k] == name) return int(k);
+    soil_names.push_back(name);
+    return int(soil_names.size() - 1);
+  };
+
+  // Attitude: optional slope alignment, then heading (downhill azimuth + relative yaw), then
+  // aerospace pitch (nose up, about -y) and roll (right side down, about +x).
+  const LanderInitialSpec& ic = sc.initial;
+  const Eigen::Vector3d downhill(std::cos(az), std::sin(az), 0.0);
+  Eigen::Matrix3d R_align = Eigen::Matrix3d::Identity();
+  if (ic.align_to_slope && sc.ground.slope_rad > 0.0)
+    R_align = AxisRotation(Eigen::Vector3d::UnitZ().cross(downhill).normalized(), sc.ground.slope_rad);
+  const Eigen::Matrix3d R_WB = R_align * AxisRotation(Eigen::Vector3d::UnitZ(), az + ic.yaw_relative_to_slope_rad) *
+                               AxisRotation(Eigen::Vector3d::UnitY(), -ic.pitch_rad) *
+                               AxisRotation(Eigen::Vector3d::UnitX(), ic.roll_rad);
+  lander::LanderInitialState& s = out.initial;
+  s.R_WB = R_WB;
+  for (int i = 0; i < lander::kNumLegs; ++i) s.R_WP[i] = ic.pad_attitude == "level" ? Eigen::Matrix3d::Identity() : R_WB;
+  s.w_WB_W = R_WB * ic.angular_rate_B;
+  const double g = sc.gravity_m_s2;
+  double clearance = 0.0, vz_down = 0.0;
+  if (ic.drop_height_m) {
+    clearance = *ic.drop_height_m;
+    vz_down = ic.release_vertical_speed_m_s;
+  } else {
+    // Release just above the surface so the first pad touches at the requested speed.
+    const double v = *ic.touchdown_speed_m_s;
+    clearance = g > 0.0 ? std::min(0.005, v * v / (4.0 * g)) : 0.005;
+    vz_down = std::sqrt(std::max(v * v - 2.0 * g * clearance, 0.0));
+  }
+  s.v_WB_W = Eigen::Vector3d(ic.horizontal_velocity_m_s.x(), ic.horizontal_velocity_m_s.y(), -vz_down);
+  s.p_WB.z() = lander::BodyHeightForClearance(m, out.terrain, s, clearance);
+
+  for (const LanderPatchSpec& p : sc.ground.patches) {
+    rft::SoilPatch patch{p.name, p.polygon_W, soil_index(p.soil)};
+    if (p.polygon_W.size() == 1) {  // under_pad: a square centred below that pad's joint at release
+      const int leg = int(p.polygon_W[0].x()) - 1;
+      const double h = p.polygon_W[0].y();
+      const Eigen::Vector3d c = s.p_WB + R_WB * m.legs[leg].joint_B;
+      patch.polygon_W = rft::RectanglePolygon(c.x() - h, c.y() - h, c.x() + h, c.y() + h);
+    }
+    out.terrain.patches.push_back(patch);
+  }
+  for (const std::string& name : soil_names)
+    out.terrain.soils.push_back({name, std::shared_ptr<const rft::StressLaw3D>(model::MakeModelStressLaw3D(
+                                           sc.ground.law, io::LoadSoil(name), g, sc.model ? &*sc.model : nullptr))});
+  return out;
+}
+
+LanderRun RunLanderScenario(const LanderScenario& scenario) {
+  LanderRun run;
+  run.scenario = scenario;
+  run.setup = BuildLanderSetup(scenario);
+  run.result = lander::SimulateLander(run.setup.model, run.setup.terrain, run.setup.initial, scenario.options);
+  const lander::StateLayout L(run.setup.model);
+  const lander::LanderPose pose = lander::ComputePose(run.setup.model, L, run.result.final_state);
+  for (int i = 0; i < lander::kNumLegs; ++i) {
+    const Eigen::Vector3d& p = pose.pads[i].p_WJ;
+    run.soil_under_pad[i] = run.setup.terrain.soils[run.setup.terrain.SoilAt(p.x(), p.y())].name;
+  }
+  return run;
+}
+
+nlohmann::json LanderSummaryJson(const LanderRun& run) {
+  const lander::LanderRunResult& r = run.result;
+  auto arr = [](const std::array<double, lander::kNumLegs>& a) { return nlohmann::json(std::vector<double>(a.begin(), a.end())); };
+  // JSON numbers are never null: a pad that never touched down is absent from touchdown_pads, and
+  // touchdown_time_s is aligned with it; a lander never at rest has no rest times (came_to_rest false).
+  nlohmann::json touchdown = nlohmann::json::array(), touchdown_pads = nlohmann::json::array();
+  for (size_t i = 0; i < r.touchdown_time_s.size(); ++i)
+    if (r.touchdown_time_s[i]) {
+      touchdown.push_back(*r.touchdown_time_s[i]);
+      touchdown_pads.push_back(i + 1);
+    }
+  const double final_energy = r.final_kinetic_J + r.final_potential_J + r.dissipated_J;
+  const double roll = r.final_attitude.roll_rad / kDeg, pitch = r.final_attitude.pitch_rad / kDeg;
+  nlohmann::json j{
+      {"scenario", run.scenario.name},
+      {"lander", run.scenario.lander.name},
+      {"pads_order", "clockwise from above, pad 1 front-left (paper numbering)"},
+      {"soil_under_pad", run.soil_under_pad},
+      {"gravity_m_s2", run.scenario.gravity_m_s2},
+      {"final_penetration_m", arr(r.final_penetration_m)},
+      {"final_roll_deg", roll},
+      {"final_pitch_deg", pitch},
+      {"max_tilt_deg", r.max_tilt_rad / kDeg},
+      {"tipped_over", r.tipped_over},
+      {"peak_pad_force_N", arr(r.peak_pad_force_N)},
+      {"max_body_deceleration_m_s2", r.max_body_deceleration_m_s2},
+      {"came_to_rest", r.rest_time_s.has_value()},
+      {"touchdown_pads", touchdown_pads},
+      {"touchdown_time_s", touchdown},
+      {"end_time_s", r.end_time_s},
+      {"initial_energy_J", r.initial_energy_J},
+      {"final_kinetic_energy_J", r.final_kinetic_J},
+      {"final_potential_energy_J", r.final_potential_J},
+      {"dissipated_energy_J", r.dissipated_J},
+      {"capture_loss_J", r.capture_loss_J},
+      {"energy_balance_error_J", final_energy - r.initial_energy_J},
+      {"max_held_pad_drift_m", r.max_held_drift_m},
+      {"events", r.events.size()},
+      {"solver_steps", r.solver.steps},
+      {"rhs_evaluations", r.solver.rhs_evaluations},
+  };
+  if (r.rest_time_s) {
+    j["rest_time_since_release_s"] = *r.rest_time_s;
+    if (r.first_touchdown_s) j["time_to_rest_s"] = *r.rest_time_s - *r.first_touchdown_s;
+  }
+  if (run.scenario.initial.drop_height_m)
+    j["touchdown_speed_m_s"] = std::sqrt(std::pow(run.scenario.initial.release_vertical_speed_m_s, 2) +
+                                         2.0 * run.scenario.gravity_m_s2 * *run.scenario.initial.drop_height_m);
+  else
+    j["touchdown_speed_m_s"] = *run.scenario.initial.touchdown_speed_m_s;
+  if (run.scenario.model) j["model"] = model::ModelEffectsJson(*run.scenario.model);
+  if (!run.scenario.paper_ground_case.empty()) j["paper_ground_case"] = run.scenario.paper_ground_case;
+  if (run.scenario.paper) {
+    const double within = run.scenario.paper->roll_pitch_within_deg;
+    j["paper_check"] = {{"quantity", "final roll and pitch"},
+                        {"paper_within_deg", within},
+                        {"simulated_roll_deg", roll},
+                        {"simulated_pitch_deg", pitch},
+                        {"within_paper_band", std::abs(roll) <= within && std::abs(pitch) <= within},
+                        {"source", run.scenario.paper->source}};
+  }
+  return j;
+}
+
+void WriteLanderTraceCsv(const LanderRun& run, const std::string& path) {
+  io::WriteFileAtomically(path, [&](std::ostream& out) {
+    out << "t_s,x_m,y_m,z_m,roll_deg,pitch_deg,yaw_deg,tilt_deg,vx_m_s,vy_m_s,vz_m_s,wx_rad_s,wy_rad_s,wz_rad_s,"
+           "az_m_s2";
+    for (int i = 1; i <= lander::kNumLegs; ++i) out << ",depth" << i << "_m";
+    for (int i = 1; i <= lander::kNumLegs; ++i) out << ",force" << i << "_N";
+    for (int i = 1; i <= lander::kNumLegs; ++i) out << ",fz" << i << "_N";
+    for (int i = 1; i <= lander::kNumLegs; ++i) out << ",held" << i;
+    for (int i = 1; i <= lander::kNumLegs; ++i) out << ",stroke" << i << "_m";
+    out << ",kinetic_J,potential_J,dissipated_J\n" << std::setprecision(10);
+    for (const lander::LanderSample& s : run.result.trace) {
+      out << s.t_s << ',' << s.p_WB.x() << ',' << s.p_WB.y() << ',' << s.p_WB.z() << ',' << s.attitude.roll_rad / kDeg
+          << ',' << s.attitude.pitch_rad / kDeg << ',' << s.attitude.yaw_rad / kDeg << ',' << s.attitude.tilt_rad / kDeg;
+      for (int k = 0; k < 3; ++k) out << ',' << s.v_WB_W[k];
+      for (int k = 0; k < 3; ++k) out << ',' << s.w_WB_W[k];
+      out << ',' << s.a_WB_W.z();
+      for (int i = 0; i < lander::kNumLegs; ++i) out << ',' << s.pad_depth_m[i];
+      for (int i = 0; i < lander::kNumLegs; ++i) out << ',' << s.pad_force_W[i].norm();
+      for (int i = 0; i < lander::kNumLegs; ++i) out << ',' << s.pad_force_W[i].z();
+      for (int i = 0; i < lander::kNumLegs; ++i) out << ',' << s.pad_held[i];
+      for (int i = 0; i < lander::kNumLegs; ++i) out << ',' << s.stroke_m[i];
+      out << ',' << s.kinetic_J << ',' << s.potential_J << ',' << s.dissipated_J << '\n';
+    }
+  });
+}
+
+void WriteResolvedLanderScenario(const LanderScenario& s, const std::string& path, const std::string& output_dir) {
+  auto file = [&](const std::string& p) { return io::PathForOutput(p, output_dir); };
+  YAML::Emitter y;
+  auto vec = [&](const Eigen::Vector3d& v, double scale) {
+    y << YAML::Flow << YAML::BeginSeq << v.x() * scale << v.y() * scale << v.z() * scale << YAML::EndSeq;
+  };
+  y << YAML::BeginMap << YAML::Key << "schema_version" << YAML::Value << 1 << YAML::Key << "type" << YAML::Value
+    << "lander_resolved" << YAML::Key << "name" << YAML::Value << s.name << YAML::Key << "source" << YAML::Value
+    << file(s.source) << YAML::Key << "gravity_m_s2" << YAML::Value << s.gravity_m_s2;
+  const LanderSpec& l = s.lander;
+  y << YAML::Key << "lander" << YAML::Value << YAML::BeginMap << YAML::Key << "name" << YAML::Value << l.name
+    << YAML::Key << "file" << YAML::Value << file(l.source) << YAML::Key << "total_mass_kg" << YAML::Value << l.total_mass_kg
+    << YAML::Key << "body_mass_kg" << YAML::Value << l.body_mass_kg << YAML::Key << "cog_height_mm" << YAML::Value
+    << l.cog_height_m * 1e3 << YAML::Key << "body_inertia_kg_m2" << YAML::Value << YAML::Flow << YAML::BeginSeq;
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) y << l.body_inertia_B(r, c);
+  y << YAML::EndSeq << YAML::Key << "pad" << YAML::Value << YAML::BeginMap << YAML::Key << "name" << YAML::Value
+    << l.pad.name << YAML::Key << "file" << YAML::Value << file(l.pad.source) << YAML::Key << "mass_kg" << YAML::Value
+    << l.pad.body.mass_kg << YAML::Key << "triangles" << YAML::Value << l.pad.body.surface.size() << YAML::Key
+    << "com_from_joint_mm" << YAML::Value;
+  vec(l.pad.body.com_B, 1e3);
+  y << YAML::Key << "lowest_point_from_joint_mm" << YAML::Value << l.pad.body.lowest_z_B * 1e3 << YAML::EndMap;
+  y << YAML::Key << "legs" << YAML::Value << YAML::BeginSeq;
+  for (int i = 0; i < lander::kNumLegs; ++i) {
+    const LanderLegSpec& leg = l.legs[i];
+    y << YAML::BeginMap << YAML::Key << "pad_number" << YAML::Value << i + 1 << YAML::Key << "joint_from_body_com_mm"
+      << YAML::Value;
+    vec(leg.joint_B, 1e3);
+    y << YAML::Key << "hip_from_body_com_mm" << YAML::Value;
+    vec(leg.hip_B, 1e3);
+    if (leg.absorber) {
+      const auto& a = *leg.absorber;
+      y << YAML::Key << "absorber" << YAML::Value << YAML::BeginMap;
+      if (a.kind == lander::ShockAbsorber::Kind::kSpringDamper)
+        y << YAML::Key << "kind" << YAML::Value << "spring_damper" << YAML::Key << "stiffness_N_m" << YAML::Value
+          << a.stiffness_N_m << YAML::Key << "damping_N_s_m" << YAML::Value << a.damping_N_s_m;
+      else
+        y << YAML::Key << "kind" << YAML::Value << "crushable" << YAML::Key << "crush_force_N" << YAML::Value
+          << a.crush_force_N << YAML::Key << "stroke_mm" << YAML::Value << a.stroke_limit_m * 1e3;
+      y << YAML::EndMap;
+    }
+    if (leg.cone)
+      y << YAML::Key << "cone_limit" << YAML::Value << YAML::BeginMap << YAML::Key << "half_angle_deg" << YAML::Value
+        << leg.cone->half_angle_rad / kDeg << YAML::Key << "stiffness_N_m_rad" << YAML::Value
+        << leg.cone->stiffness_N_m_rad << YAML::Key << "damping_N_m_s_rad" << YAML::Value
+        << leg.cone->damping_N_m_s_rad << YAML::EndMap;
+    y << YAML::EndMap;
+  }
+  y << YAML::EndSeq << YAML::EndMap;
+  y << YAML::Key << "ground" << YAML::Value << YAML::BeginMap << YAML::Key << "height_m" << YAML::Value
+    << s.ground.height_m << YAML::Key << "slope_deg" << YAML::Value << s.ground.slope_rad / kDeg << YAML::Key
+    << "downhill_azimuth_deg" << YAML::Value << s.ground.downhill_azimuth_rad / kDeg << YAML::Key << "law"
+    << YAML::Value << s.ground.law << YAML::Key << "soil" << YAML::Value << s.ground.default_soil;
+  const LanderSetup setup = BuildLanderSetup(s);
+  y << YAML::Key << "soils" << YAML::Value << YAML::BeginSeq;
+  for (const rft::TerrainSoil& soil : setup.terrain.soils) {
+    const rft::SoilParameters p = s.model ? model::ApplyModel(*s.model, io::LoadSoil(soil.name)) : io::LoadSoil(soil.name);
+    y << YAML::BeginMap << YAML::Key << "name" << YAML::Value << p.name << YAML::Key << "zeta_N_cm3_at_gravity"
+      << YAML::Value << p.ZetaAtGravity(s.gravity_m_s2) / 1e6 << YAML::Key << "atmosphere" << YAML::Value
+      << p.atmosphere << YAML::Key << "law_3d" << YAML::Value << std::string(soil.law->name()) << YAML::EndMap;
+  }
+  y << YAML::EndSeq;
+  if (s.model) y << YAML::Key << "model" << YAML::Value << file(s.model->source);
+  y << YAML::Key << "patches" << YAML::Value << YAML::BeginSeq;
+  for (const rft::SoilPatch& p : setup.terrain.patches) {
+    y << YAML::BeginMap << YAML::Key << "name" << YAML::Value << p.name << YAML::Key << "soil" << YAML::Value
+      << setup.terrain.soils[p.soil].name << YAML::Key << "polygon_m" << YAML::Value << YAML::BeginSeq;
+    for (const Eigen::Vector2d& c : p.polygon_W) y << YAML::Flow << YAML::BeginSeq << c.x() << c.y() << YAML::EndSeq;
+    y << YAML::EndSeq << YAML::EndMap;
+  }
+  y << YAML::EndSeq << YAML::EndMap;
+  const LanderInitialSpec& ic = s.initial;
+  y << YAML::Key << "initial" << YAML::Value << YAML::BeginMap;
+  if (ic.drop_height_m)
+    y << YAML::Key << "drop_height_m" << YAML::Value << *ic.drop_height_m << YAML::Key << "release_vertical_speed_m_s"
+      << YAML::Value << ic.release_vertical_speed_m_s;
+  else
+    y << YAML::Key << "touchdown_speed_m_s" << YAML::Value << *ic.touchdown_speed_m_s;
+  y << YAML::Key << "horizontal_velocity_m_s" << YAML::Value << YAML::Flow << YAML::BeginSeq
+    << ic.horizontal_velocity_m_s.x() << ic.horizontal_velocity_m_s.y() << YAML::EndSeq << YAML::Key << "roll_deg"
+    << YAML::Value << ic.roll_rad / kDeg << YAML::Key << "pitch_deg" << YAML::Value << ic.pitch_rad / kDeg
+    << YAML::Key << "yaw_relative_to_slope_deg" << YAML::Value << ic.yaw_relative_to_slope_rad / kDeg << YAML::Key
+    << "align_to_slope" << YAML::Value << ic.align_to_slope << YAML::Key << "angular_rate_deg_s" << YAML::Value;
+  vec(ic.angular_rate_B, 1.0 / kDeg);
+  y << YAML::Key << "pad_attitude" << YAML::Value << ic.pad_attitude << YAML::Key << "release_body_com_m" << YAML::Value;
+  vec(setup.initial.p_WB, 1.0);
+  y << YAML::EndMap;
+  y << YAML::Key << "simulation" << YAML::Value << YAML::BeginMap << YAML::Key << "duration_s" << YAML::Value
+    << s.options.duration_s << YAML::Key << "sample_rate_hz" << YAML::Value << s.options.sample_rate_hz << YAML::Key
+    << "capture_speed_m_s" << YAML::Value << s.options.capture_speed_m_s << YAML::Key << "rtol" << YAML::Value
+    << s.options.integrator.rtol;
+  // Without `atol` the absolute tolerances are rtol times each state's scale (lander_simulation.h).
+  if (!s.options.scale_tolerances) y << YAML::Key << "atol" << YAML::Value << s.options.integrator.atol;
+  y << YAML::Key << "stiff" << YAML::Value << s.options.integrator.stiff << YAML::EndMap;
+  y << YAML::EndMap;
+  io::WriteFileAtomically(path, [&](std::ostream& out) { out << y.c_str() << '\n'; });
+}
+
+void WriteLanderOutputs(const LanderRun& run, const io::OutputTarget& out) {
+  io::WriteOutputDirectory(out, io::OutputKind::kLander, [&](const std::string& staging_dir) {
+    const fs::path staging = staging_dir;
+    WriteLanderTraceCsv(run, (staging / "trace.csv").string());
+    io::WriteFileAtomically((staging / "events.csv").string(), [&](std::ostream& out) {
+      out << "t_s,event,pad\n" << std::setprecision(12);
+      for (const lander::LanderEvent& e : run.result.events)
+        out << e.t_s << ',' << e.kind << ',' << (e.leg >= 0 ? std::to_string(e.leg + 1) : std::string()) << '\n';
+    });
+    io::WriteFileAtomically((staging / "summary.json").string(),
+                        [&](std::ostream& out) { out << LanderSummaryJson(run).dump(2) << '\n'; });
+    WriteResolvedLanderScenario(run.scenario, (staging / "scenario_resolved.yaml").string(), out.path);
+    WriteLanderPlots(run, staging.string());
+  });
+}
+
+}  // namespace touchdown::scenario

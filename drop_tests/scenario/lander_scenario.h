@@ -1,0 +1,122 @@
+#pragma once
+// A four-legged lander drop from a scenario YAML (`touchdown lander SCENARIO.yaml --out DIR`):
+// the lander (data/landers/<name>.yaml: body, legs, pads, absorbers, cone limits), the ground
+// (level plane or uniform slope, default soil and soil patches), the initial conditions (drop
+// height or touchdown speed, horizontal velocity, attitude, angular rate, yaw relative to the
+// slope) and the run options. Loading resolves and validates everything before anything runs.
+// Schema: docs/lander_dynamics.md.
+#include <array>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "drop_tests/io/catalog.h"
+#include "drop_tests/model/model_file.h"
+#include "lander/multibody/lander_simulation.h"
+
+namespace touchdown::scenario {
+
+// A lander run keeps its trace in memory (lander::LanderSample, about 0.4 kB each): duration_s x
+// sample_rate_hz is capped at load.
+inline constexpr double kLanderMaxTraceSamples = 1e6;
+
+struct LanderLegSpec {
+  Eigen::Vector3d hip_B = Eigen::Vector3d::Zero();
+  Eigen::Vector3d joint_B = Eigen::Vector3d::Zero();
+  std::optional<lander::ShockAbsorber> absorber;
+  std::optional<lander::ConeLimit> cone;
+};
+
+struct LanderSpec {
+  std::string name;
+  std::string source;
+  double total_mass_kg = 0.0;      // body + pads (the paper's 4.3 kg)
+  double body_mass_kg = 0.0;       // resolved: total - pads
+  Eigen::Matrix3d body_inertia_B = Eigen::Matrix3d::Zero();
+  double cog_height_m = 0.0;       // whole lander's CoG above the pad bottoms, standing level
+  io::PadSpec pad;                     // the same pad on every leg
+  std::array<LanderLegSpec, lander::kNumLegs> legs;
+};
+
+struct LanderPatchSpec {
+  std::string name;
+  std::string soil;                          // soil name as given
+  std::vector<Eigen::Vector2d> polygon_W;    // resolved corners [m]
+};
+
+struct LanderGroundSpec {
+  double height_m = 0.0;            // surface height at the origin
+  double slope_rad = 0.0;           // uniform slope angle
+  double downhill_azimuth_rad = 0.0;  // direction of steepest descent, from +x towards +y
+  std::string law = "li2013";       // 3D stress law for every soil
+  std::string default_soil;
+  std::vector<LanderPatchSpec> patches;
+};
+
+struct LanderInitialSpec {
+  std::optional<double> drop_height_m;       // pad bottoms above the surface at release
+  std::optional<double> touchdown_speed_m_s;  // vertical speed when the first pad touches
+  double release_vertical_speed_m_s = 0.0;  // downward, with drop_height_m
+  Eigen::Vector2d horizontal_velocity_m_s = Eigen::Vector2d::Zero();  // world x, y
+  double roll_rad = 0.0, pitch_rad = 0.0;    // aerospace signs (docs)
+  double yaw_relative_to_slope_rad = 0.0;    // body x from the downhill direction
+  bool align_to_slope = false;               // body z along the slope normal before roll/pitch
+  Eigen::Vector3d angular_rate_B = Eigen::Vector3d::Zero();  // body axes [rad/s]
+  std::string pad_attitude = "body";          // "body" (parallel to the body) or "level"
+};
+
+struct LanderPaperCheck {
+  double roll_pitch_within_deg = 0.0;  // the paper's +-0.5 deg in vacuum; 0 = none
+  std::string source;
+};
+
+struct LanderScenario {
+  std::string name;
+  std::string description;
+  std::string source;
+  double gravity_m_s2 = 9.81;
+  LanderSpec lander;
+  LanderGroundSpec ground;
+  LanderInitialSpec initial;
+  lander::LanderRunOptions options;
+  std::optional<LanderPaperCheck> paper;
+  std::string paper_ground_case;  // e.g. "CP LP LP LP" (Table II), informational
+  // `touchdown lander --model`: zeta per soil and the effect terms (3D forms), for every soil
+  // of the ground (drop_tests/model/model_file.h MakeModelStressLaw3D). Not part of the scenario file.
+  std::optional<model::ModelFile> model;
+};
+
+struct LanderSetup {
+  lander::LanderModel model;
+  rft::Terrain terrain;
+  lander::LanderInitialState initial;
+};
+
+struct LanderRun {
+  LanderScenario scenario;
+  LanderSetup setup;
+  lander::LanderRunResult result;
+  std::array<std::string, lander::kNumLegs> soil_under_pad;  // at rest (or at the end)
+};
+
+LanderSpec LoadLanderSpec(const std::string& name_or_path);
+LanderScenario LoadLanderScenario(const std::string& path);
+// Builds the model, terrain and initial state (soils loaded from data/soils by name).
+LanderSetup BuildLanderSetup(const LanderScenario& scenario);
+LanderRun RunLanderScenario(const LanderScenario& scenario);
+
+// The JSON summary `touchdown lander` prints (pads in the paper's clockwise order).
+nlohmann::json LanderSummaryJson(const LanderRun& run);
+void WriteLanderTraceCsv(const LanderRun& run, const std::string& path);
+// The files named are written for `output_dir`, the directory the file finally lives in
+// (drop_tests/io/paths_in_outputs.h: no absolute paths of this machine).
+void WriteResolvedLanderScenario(const LanderScenario& scenario, const std::string& path,
+                                 const std::string& output_dir);
+// summary.json, trace.csv, events.csv, scenario_resolved.yaml and plots/ into a staging
+// directory renamed to out_dir when complete.
+void WriteLanderOutputs(const LanderRun& run, const io::OutputTarget& out);
+
+}  // namespace touchdown::scenario

@@ -1,0 +1,488 @@
+#include "drop_tests/sweep/results_db.h"
+
+#include <sqlite3.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <stdexcept>
+
+#include "drop_tests/io/paths_in_outputs.h"
+#include "rft/input_error.h"
+
+namespace touchdown::sweep {
+
+namespace {
+// Meta values that name files (the sweep file, the model): stored relative to the database's
+// directory, or under $TOUCHDOWN_DATA_DIR, never as this machine's absolute path
+// (drop_tests/io/paths_in_outputs.h); Meta() gives them back as the working directory reaches them.
+constexpr const char* kMetaPathKeys[] = {"source", "model"};
+std::string Directory(const std::string& file) { return std::filesystem::path(file).parent_path().string(); }
+// The database file itself unusable (missing, unreadable, not a database, corrupt, disk full,
+// read-only, locked): the user's to fix, so an InputError naming the file and SQLite's reason
+// (exit 2). Any other SQLite error (a malformed statement) is a bug.
+[[noreturn]] void ThrowSqlite(sqlite3* db, int rc, const std::string& what) {
+  const char* file = db ? sqlite3_db_filename(db, "main") : nullptr;
+  const std::string path = file && *file ? file : "results database";
+  const std::string reason = db ? sqlite3_errmsg(db) : sqlite3_errstr(rc);
+  switch (rc & 0xff) {
+    case SQLITE_CANTOPEN: case SQLITE_NOTADB: case SQLITE_CORRUPT: case SQLITE_IOERR: case SQLITE_FULL:
+    case SQLITE_READONLY: case SQLITE_PERM: case SQLITE_AUTH: case SQLITE_BUSY: case SQLITE_LOCKED:
+    case SQLITE_NOLFS: case SQLITE_NOMEM:
+      throw MakeInputError(path, "", "SQLite cannot use this database: " + reason);
+    default:
+      throw std::runtime_error("sqlite " + what + " (" + path + "): " + reason);
+  }
+}
+
+// The numeric columns of a record, in table order: the format-1 metrics, then (format 2) the
+// free drop's and the lander's. One list drives the schema, binding, reading, comparing and
+// the MPI serialisation, so a new column cannot be forgotten in one of them.
+constexpr const char* kNumberColumns1[] = {
+    "impact_speed_m_s", "pad_mass_kg",         "gravity_m_s2",     "tilt_deg",          "horizontal_speed_m_s",
+    "zeta_N_cm3",       "final_penetration_m", "peak_force_N",     "time_to_rest_s",    "max_deceleration_m_s2",
+    "impact_energy_J",  "gravity_work_J",      "dissipated_energy_J", "mean_conversion_rate_W", "rest_creep_m"};
+constexpr const char* kNumberColumns2[] = {
+    "final_tilt_deg", "horizontal_travel_m", "roll_deg", "pitch_deg", "pad1_final_penetration_m",
+    "pad2_final_penetration_m", "pad3_final_penetration_m", "pad4_final_penetration_m", "final_roll_deg",
+    "final_pitch_deg", "tipped_over"};
+constexpr size_t kNumbers1 = std::size(kNumberColumns1), kNumbers2 = std::size(kNumberColumns2);
+// Format 3: text columns after the numbers.
+constexpr const char* kTextColumns3[] = {"pad1_soil", "pad2_soil", "pad3_soil", "pad4_soil", "ground_case"};
+constexpr size_t kTexts3 = std::size(kTextColumns3);
+// Format 4: the work limit a failed drop ran out of.
+constexpr const char* kLimitColumn = "failure_limit";
+constexpr const char* kLimitValueColumn = "failure_limit_value";
+
+template <typename R>  // DropRecord or const DropRecord
+auto Numbers1(R& r) {
+  return std::array{&r.impact_speed_m_s, &r.pad_mass_kg,       &r.gravity_m_s2,   &r.tilt_deg,
+                    &r.horizontal_speed_m_s, &r.zeta_N_cm3,   &r.final_penetration_m, &r.peak_force_N,
+                    &r.time_to_rest_s, &r.max_deceleration_m_s2, &r.impact_energy_J, &r.gravity_work_J,
+                    &r.dissipated_energy_J, &r.mean_conversion_rate_W, &r.rest_creep_m};
+}
+template <typename R>
+auto Numbers2(R& r) {
+  return std::array{&r.final_tilt_deg, &r.horizontal_travel_m, &r.roll_deg, &r.pitch_deg,
+                    &r.pad_final_penetration_m[0], &r.pad_final_penetration_m[1], &r.pad_final_penetration_m[2],
+                    &r.pad_final_penetration_m[3], &r.final_roll_deg, &r.final_pitch_deg, &r.tipped_over};
+}
+static_assert(std::tuple_size_v<decltype(Numbers1(std::declval<DropRecord&>()))> == kNumbers1);
+static_assert(std::tuple_size_v<decltype(Numbers2(std::declval<DropRecord&>()))> == kNumbers2);
+template <typename R>
+auto Texts3(R& r) {
+  return std::array{&r.pad_soil[0], &r.pad_soil[1], &r.pad_soil[2], &r.pad_soil[3], &r.ground_case};
+}
+static_assert(std::tuple_size_v<decltype(Texts3(std::declval<DropRecord&>()))> == kTexts3);
+
+// The drops columns after drop_index, in the order of the INSERT statement.
+std::string Columns() {
+  std::string c = "drop_id, status, failure, pad, soil, atmosphere";
+  for (const char* n : kNumberColumns1) c += std::string(", ") + n;
+  c += ", solver_steps, drop_kind";
+  for (const char* n : kNumberColumns2) c += std::string(", ") + n;
+  for (const char* n : kTextColumns3) c += std::string(", ") + n;
+  c += std::string(", ") + kLimitColumn + ", " + kLimitValueColumn;
+  return c;
+}
+constexpr int kColumnCount =
+    6 + static_cast<int>(kNumbers1) + 2 + static_cast<int>(kNumbers2) + static_cast<int>(kTexts3) + 2;  // after drop_index
+
+class Statement {
+ public:
+  Statement(sqlite3* db, const std::string& sql) {
+    if (const int rc = sqlite3_prepare_v2(db, sql.c_str(), -1, &s_, nullptr); rc != SQLITE_OK)
+      ThrowSqlite(db, rc, "prepare of '" + sql + "'");
+  }
+  ~Statement() { sqlite3_finalize(s_); }
+  Statement(const Statement&) = delete;
+  Statement& operator=(const Statement&) = delete;
+  sqlite3_stmt* get() { return s_; }
+  void Reset() {
+    sqlite3_reset(s_);
+    sqlite3_clear_bindings(s_);
+  }
+  void Text(int i, const std::string& v) { sqlite3_bind_text(s_, i, v.c_str(), static_cast<int>(v.size()), SQLITE_TRANSIENT); }
+  void Real(int i, double v) {
+    if (std::isnan(v)) sqlite3_bind_null(s_, i);
+    else sqlite3_bind_double(s_, i, v);
+  }
+  void Int(int i, int64_t v) { sqlite3_bind_int64(s_, i, v); }
+  int Step() { return sqlite3_step(s_); }
+  std::string ColumnText(int i) {
+    const unsigned char* t = sqlite3_column_text(s_, i);
+    return t ? reinterpret_cast<const char*>(t) : "";
+  }
+  double ColumnReal(int i) {
+    return sqlite3_column_type(s_, i) == SQLITE_NULL ? std::nan("") : sqlite3_column_double(s_, i);
+  }
+
+ private:
+  sqlite3_stmt* s_ = nullptr;
+};
+
+void BindRecord(Statement& st, const DropRecord& r) {
+  int i = 1;
+  st.Int(i++, r.index);
+  st.Text(i++, r.drop_id);
+  st.Text(i++, r.ok ? "ok" : "failed");
+  st.Text(i++, r.failure);
+  st.Text(i++, r.pad);
+  st.Text(i++, r.soil);
+  st.Text(i++, r.atmosphere);
+  for (const double* v : Numbers1(r)) st.Real(i++, *v);
+  st.Int(i++, r.solver_steps);
+  st.Text(i++, r.kind);
+  for (const double* v : Numbers2(r)) st.Real(i++, *v);
+  for (const std::string* t : Texts3(r)) st.Text(i++, *t);
+  st.Text(i++, r.failure_limit);
+  st.Real(i++, r.failure_limit_value);
+}
+
+DropRecord ReadRecord(Statement& st) {
+  DropRecord r;
+  int i = 0;
+  r.index = sqlite3_column_int64(st.get(), i++);
+  r.drop_id = st.ColumnText(i++);
+  r.ok = st.ColumnText(i++) == "ok";
+  r.failure = st.ColumnText(i++);
+  r.pad = st.ColumnText(i++);
+  r.soil = st.ColumnText(i++);
+  r.atmosphere = st.ColumnText(i++);
+  for (double* v : Numbers1(r)) *v = st.ColumnReal(i++);
+  r.solver_steps = sqlite3_column_int64(st.get(), i++);
+  r.kind = st.ColumnText(i++);
+  if (r.kind.empty()) r.kind = "rig";  // a format-1 row read through the added columns
+  for (double* v : Numbers2(r)) *v = st.ColumnReal(i++);
+  for (std::string* t : Texts3(r)) *t = st.ColumnText(i++);
+  r.failure_limit = st.ColumnText(i++);
+  r.failure_limit_value = st.ColumnReal(i++);
+  return r;
+}
+
+std::vector<pad::DropSample> ReadTraceBlob(Statement& st, int column) {
+  const int bytes = sqlite3_column_bytes(st.get(), column);
+  std::vector<pad::DropSample> trace(static_cast<size_t>(bytes) / sizeof(pad::DropSample));
+  if (!trace.empty()) std::memcpy(trace.data(), sqlite3_column_blob(st.get(), column), trace.size() * sizeof(pad::DropSample));
+  return trace;
+}
+
+bool SameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+// Serialisation helpers: fixed-size values by memcpy, strings with a length prefix.
+template <typename T>
+void Put(std::string& out, const T& v) {
+  out.append(reinterpret_cast<const char*>(&v), sizeof v);
+}
+void PutString(std::string& out, const std::string& s) {
+  Put<uint64_t>(out, s.size());
+  out += s;
+}
+struct Reader {
+  const std::string& in;
+  size_t pos = 0;
+  template <typename T>
+  T Get() {
+    if (pos + sizeof(T) > in.size()) throw std::runtime_error("DeserializeRecords: truncated message");
+    T v;
+    std::memcpy(&v, in.data() + pos, sizeof v);
+    pos += sizeof v;
+    return v;
+  }
+  std::string GetString() {
+    const uint64_t n = Get<uint64_t>();
+    if (pos + n > in.size()) throw std::runtime_error("DeserializeRecords: truncated message");
+    std::string s = in.substr(pos, n);
+    pos += n;
+    return s;
+  }
+};
+static_assert(sizeof(pad::DropSample) == 4 * sizeof(double), "traces are stored as 4 doubles per sample");
+}  // namespace
+
+bool SameRecord(const DropRecord& a, const DropRecord& b, bool compare_traces) {
+  const auto a1 = Numbers1(a), b1 = Numbers1(b);
+  for (size_t i = 0; i < a1.size(); ++i)
+    if (!SameBits(*a1[i], *b1[i])) return false;
+  const auto a2 = Numbers2(a), b2 = Numbers2(b);
+  for (size_t i = 0; i < a2.size(); ++i)
+    if (!SameBits(*a2[i], *b2[i])) return false;
+  if (a.index != b.index || a.drop_id != b.drop_id || a.ok != b.ok || a.failure != b.failure || a.kind != b.kind ||
+      a.pad != b.pad || a.soil != b.soil || a.atmosphere != b.atmosphere || a.solver_steps != b.solver_steps ||
+      a.pad_soil != b.pad_soil || a.ground_case != b.ground_case || a.failure_limit != b.failure_limit ||
+      !SameBits(a.failure_limit_value, b.failure_limit_value))
+    return false;
+  if (!compare_traces) return true;
+  return a.trace.size() == b.trace.size() &&
+         (a.trace.empty() || std::memcmp(a.trace.data(), b.trace.data(), a.trace.size() * sizeof(pad::DropSample)) == 0);
+}
+
+std::string SerializeRecords(const std::vector<DropRecord>& records) {
+  std::string out;
+  Put<uint64_t>(out, records.size());
+  for (const DropRecord& r : records) {
+    Put(out, r.index);
+    PutString(out, r.drop_id);
+    Put<uint8_t>(out, r.ok ? 1 : 0);
+    for (const std::string* s : {&r.failure, &r.kind, &r.pad, &r.soil, &r.atmosphere}) PutString(out, *s);
+    for (const double* v : Numbers1(r)) Put(out, *v);
+    for (const double* v : Numbers2(r)) Put(out, *v);
+    for (const std::string* t : Texts3(r)) PutString(out, *t);
+    PutString(out, r.failure_limit);
+    Put(out, r.failure_limit_value);
+    Put(out, r.solver_steps);
+    Put<uint64_t>(out, r.trace.size());
+    out.append(reinterpret_cast<const char*>(r.trace.data()), r.trace.size() * sizeof(pad::DropSample));
+  }
+  return out;
+}
+
+std::vector<DropRecord> DeserializeRecords(const std::string& bytes) {
+  Reader in{bytes};
+  std::vector<DropRecord> records(in.Get<uint64_t>());
+  for (DropRecord& r : records) {
+    r.index = in.Get<int64_t>();
+    r.drop_id = in.GetString();
+    r.ok = in.Get<uint8_t>() != 0;
+    for (std::string* s : {&r.failure, &r.kind, &r.pad, &r.soil, &r.atmosphere}) *s = in.GetString();
+    for (double* v : Numbers1(r)) *v = in.Get<double>();
+    for (double* v : Numbers2(r)) *v = in.Get<double>();
+    for (std::string* t : Texts3(r)) *t = in.GetString();
+    r.failure_limit = in.GetString();
+    r.failure_limit_value = in.Get<double>();
+    r.solver_steps = in.Get<int64_t>();
+    r.trace.resize(in.Get<uint64_t>());
+    for (pad::DropSample& s : r.trace) s = in.Get<pad::DropSample>();
+  }
+  return records;
+}
+
+std::string ResultsDbPath(const std::string& out_dir) {
+  return (std::filesystem::path(out_dir) / "results.sqlite").string();
+}
+
+ResultsDb::ResultsDb(const std::string& path) : path_(path) {
+  if (const int rc = sqlite3_open_v2(path.c_str(), &db_, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE | SQLITE_OPEN_NOMUTEX,
+                                    nullptr);
+      rc != SQLITE_OK) {
+    const std::string message = db_ ? sqlite3_errmsg(db_) : "out of memory";
+    sqlite3_close(db_);
+    db_ = nullptr;
+    throw MakeInputError(path, "", "SQLite cannot open this database: " + message);
+  }
+  sqlite3_busy_timeout(db_, 10000);
+  try {
+    CreateTables();
+  } catch (...) {  // the destructor does not run for a constructor that throws
+    sqlite3_close(db_);
+    db_ = nullptr;
+    throw;
+  }
+}
+
+void ResultsDb::CreateTables() {
+  // WAL + synchronous=NORMAL: a committed transaction survives the process being killed
+  // (only an OS crash may lose the last ones, never half of one).
+  Exec("PRAGMA journal_mode=WAL");
+  Exec("PRAGMA synchronous=NORMAL");
+  std::string drops = "CREATE TABLE IF NOT EXISTS drops(drop_index INTEGER PRIMARY KEY, drop_id TEXT NOT NULL, "
+                      "status TEXT NOT NULL, failure TEXT NOT NULL, pad TEXT NOT NULL, soil TEXT NOT NULL, "
+                      "atmosphere TEXT NOT NULL";
+  for (const char* n : kNumberColumns1) drops += std::string(", ") + n + " REAL";
+  drops += ", solver_steps INTEGER, drop_kind TEXT NOT NULL DEFAULT 'rig'";
+  for (const char* n : kNumberColumns2) drops += std::string(", ") + n + " REAL";
+  for (const char* n : kTextColumns3) drops += std::string(", ") + n + " TEXT NOT NULL DEFAULT ''";
+  drops += std::string(", ") + kLimitColumn + " TEXT NOT NULL DEFAULT '', " + kLimitValueColumn + " REAL";
+  Exec("CREATE TABLE IF NOT EXISTS meta(key TEXT PRIMARY KEY, value TEXT NOT NULL);" + drops +
+       ");CREATE TABLE IF NOT EXISTS traces(drop_index INTEGER PRIMARY KEY, samples INTEGER NOT NULL, "
+       "data BLOB NOT NULL);");
+  // A format-1, -2 or -3 database (no format-2, -3 or -4 columns) gets them added, NULL or '', so it can still be read
+  // (export, merge); `sweep` refuses to resume it (format_version in meta).
+  std::vector<std::string> present;
+  {
+    Statement info(db_, "PRAGMA table_info(drops)");
+    while (info.Step() == SQLITE_ROW) present.push_back(info.ColumnText(1));
+  }
+  auto has = [&](const std::string& c) { return std::find(present.begin(), present.end(), c) != present.end(); };
+  if (!has("drop_kind")) Exec("ALTER TABLE drops ADD COLUMN drop_kind TEXT NOT NULL DEFAULT 'rig'");
+  for (const char* n : kNumberColumns2)
+    if (!has(n)) Exec(std::string("ALTER TABLE drops ADD COLUMN ") + n + " REAL");
+  for (const char* n : kTextColumns3)
+    if (!has(n)) Exec(std::string("ALTER TABLE drops ADD COLUMN ") + n + " TEXT NOT NULL DEFAULT ''");
+  if (!has(kLimitColumn)) Exec(std::string("ALTER TABLE drops ADD COLUMN ") + kLimitColumn + " TEXT NOT NULL DEFAULT ''");
+  if (!has(kLimitValueColumn)) Exec(std::string("ALTER TABLE drops ADD COLUMN ") + kLimitValueColumn + " REAL");
+}
+
+ResultsDb::~ResultsDb() { sqlite3_close(db_); }
+
+void ResultsDb::Exec(const std::string& sql) const {
+  char* error = nullptr;
+  if (const int rc = sqlite3_exec(db_, sql.c_str(), nullptr, nullptr, &error); rc != SQLITE_OK) {
+    sqlite3_free(error);
+    ThrowSqlite(db_, rc, "exec");
+  }
+}
+
+std::map<std::string, std::string> ResultsDb::Meta() const {
+  Statement st(db_, "SELECT key, value FROM meta");
+  std::map<std::string, std::string> meta;
+  while (st.Step() == SQLITE_ROW) meta[st.ColumnText(0)] = st.ColumnText(1);
+  for (const char* key : kMetaPathKeys)
+    if (auto it = meta.find(key); it != meta.end()) it->second = io::PathFromOutput(it->second, Directory(path_));
+  return meta;
+}
+
+void ResultsDb::SetMeta(const std::map<std::string, std::string>& meta) {
+  Exec("BEGIN IMMEDIATE");
+  try {
+    Statement st(db_, "INSERT OR REPLACE INTO meta(key, value) VALUES(?, ?)");
+    for (const auto& [k, v] : meta) {
+      st.Reset();
+      st.Text(1, k);
+      const bool is_path = std::find(std::begin(kMetaPathKeys), std::end(kMetaPathKeys), k) != std::end(kMetaPathKeys);
+      st.Text(2, is_path ? io::PathForOutput(v, Directory(path_)) : v);
+      if (st.Step() != SQLITE_DONE) throw std::runtime_error(std::string("sqlite meta: ") + sqlite3_errmsg(db_));
+      st.Text(2, v);
+      if (const int rc = st.Step(); rc != SQLITE_DONE) ThrowSqlite(db_, rc, "meta");
+    }
+    Exec("COMMIT");
+  } catch (...) {
+    sqlite3_exec(db_, "ROLLBACK", nullptr, nullptr, nullptr);
+    throw;
+  }
+}
+
+void ResultsDb::Insert(const std::vector<DropRecord>& records) {
+  if (records.empty()) return;
+  Exec("BEGIN IMMEDIATE");
+  try {
+    std::string marks = "?";
+    for (int i = 0; i < kColumnCount; ++i) marks += ",?";
+    Statement drop(db_, "INSERT INTO drops(drop_index, " + Columns() + ") VALUES(" + marks + ")");
+    Statement trace(db_, "INSERT INTO traces(drop_index, samples, data) VALUES(?,?,?)");
+    for (const DropRecord& r : records) {
+      drop.Reset();
+      BindRecord(drop, r);
+      const int rc = drop.Step();
+      if (rc == SQLITE_CONSTRAINT) {  // already stored: must be the same drop, bit for bit
+        Statement old(db_, "SELECT drop_index, " + Columns() + " FROM drops WHERE drop_index = ?");
+        old.Int(1, r.index);
+        if (old.Step() != SQLITE_ROW || !SameRecord(ReadRecord(old), r, false))
+          throw std::runtime_error(path_ + ": drop " + r.drop_id + " is already stored with different results");
+        continue;
+      }
+      if (rc != SQLITE_DONE) ThrowSqlite(db_, rc, "insert");
+      if (!r.trace.empty()) {
+        trace.Reset();
+        trace.Int(1, r.index);
+        trace.Int(2, static_cast<int64_t>(r.trace.size()));
+        sqlite3_bind_blob(trace.get(), 3, r.trace.data(), static_cast<int>(r.trace.size() * sizeof(pad::DropSample)),
+                          SQLITE_STATIC);
+        if (const int rc = trace.Step(); rc != SQLITE_DONE) ThrowSqlite(db_, rc, "trace");
+      }
+    }
+    Exec("COMMIT");
+  } catch (...) {
+    sqlite3_exec(db_, "ROLLBACK", nullptr, nullptr, nullptr);
+    throw;
+  }
+}
+
+int64_t ResultsDb::Count() const {
+  Statement st(db_, "SELECT COUNT(*) FROM drops");
+  st.Step();
+  return sqlite3_column_int64(st.get(), 0);
+}
+
+int64_t ResultsDb::CountFailed() const {
+  Statement st(db_, "SELECT COUNT(*) FROM drops WHERE status != 'ok'");
+  st.Step();
+  return sqlite3_column_int64(st.get(), 0);
+}
+
+int64_t ResultsDb::CountBelow(int64_t total) const {
+  Statement st(db_, "SELECT COUNT(*) FROM drops WHERE drop_index >= 0 AND drop_index < ?");
+  st.Int(1, total);
+  st.Step();
+  return sqlite3_column_int64(st.get(), 0);
+}
+
+std::vector<int64_t> ResultsDb::StoredIndices(int64_t begin, int64_t end) const {
+  Statement st(db_, "SELECT drop_index FROM drops WHERE drop_index >= ? AND drop_index < ? ORDER BY drop_index");
+  st.Int(1, begin);
+  st.Int(2, end);
+  std::vector<int64_t> out;
+  int rc;
+  while ((rc = st.Step()) == SQLITE_ROW) out.push_back(sqlite3_column_int64(st.get(), 0));
+  if (rc != SQLITE_DONE) throw std::runtime_error(std::string("sqlite read: ") + sqlite3_errmsg(db_));
+  return out;
+}
+
+int64_t ResultsDb::ForgetDropsBelowLimits(long max_rhs_evaluations, double max_wall_time_s) {
+  // A limit of 0 is no limit: larger than any recorded one.
+  const std::string where =
+      "status != 'ok' AND ((failure_limit = 'max_rhs_evaluations' AND (?1 = 0 OR failure_limit_value < ?1)) OR "
+      "(failure_limit = 'max_wall_time_s' AND (?2 = 0 OR failure_limit_value < ?2)))";
+  Exec("BEGIN IMMEDIATE");
+  try {
+    Statement traces(db_, "DELETE FROM traces WHERE drop_index IN (SELECT drop_index FROM drops WHERE " + where + ")");
+    traces.Int(1, max_rhs_evaluations);
+    traces.Real(2, max_wall_time_s);
+    if (traces.Step() != SQLITE_DONE) throw std::runtime_error(std::string("sqlite delete: ") + sqlite3_errmsg(db_));
+    Statement drops(db_, "DELETE FROM drops WHERE " + where);
+    drops.Int(1, max_rhs_evaluations);
+    drops.Real(2, max_wall_time_s);
+    if (drops.Step() != SQLITE_DONE) throw std::runtime_error(std::string("sqlite delete: ") + sqlite3_errmsg(db_));
+    const int64_t removed = sqlite3_changes(db_);
+    Exec("COMMIT");
+    return removed;
+  } catch (...) {
+    sqlite3_exec(db_, "ROLLBACK", nullptr, nullptr, nullptr);
+    throw;
+  }
+}
+
+namespace {
+std::string SelectRecords(bool with_traces, const std::string& where_and_order) {
+  return "SELECT d.drop_index, " + Columns() +
+         (with_traces ? ", t.data FROM drops d LEFT JOIN traces t ON t.drop_index = d.drop_index" : " FROM drops d") +
+         " " + where_and_order;
+}
+}  // namespace
+
+std::vector<DropRecord> ResultsDb::ReadPage(int64_t from, size_t limit, bool with_traces) const {
+  const int n_columns = 1 + kColumnCount;
+  Statement st(db_, SelectRecords(with_traces, "WHERE d.drop_index >= ? ORDER BY d.drop_index LIMIT ?"));
+  st.Int(1, from);
+  st.Int(2, static_cast<int64_t>(limit));
+  std::vector<DropRecord> out;
+  int rc;
+  while ((rc = st.Step()) == SQLITE_ROW) {
+    out.push_back(ReadRecord(st));
+    if (with_traces && sqlite3_column_type(st.get(), n_columns) != SQLITE_NULL)
+      out.back().trace = ReadTraceBlob(st, n_columns);
+  }
+  if (rc != SQLITE_DONE) throw std::runtime_error(std::string("sqlite read: ") + sqlite3_errmsg(db_));
+  return out;
+}
+
+void ResultsDb::ForEach(const std::function<void(const DropRecord&)>& visit, bool with_traces) const {
+  const int n_columns = 1 + kColumnCount;
+  Statement st(db_, SelectRecords(with_traces, "ORDER BY d.drop_index"));
+  int rc;
+  while ((rc = st.Step()) == SQLITE_ROW) {
+    DropRecord r = ReadRecord(st);
+    if (with_traces && sqlite3_column_type(st.get(), n_columns) != SQLITE_NULL) r.trace = ReadTraceBlob(st, n_columns);
+    visit(r);
+  }
+  if (rc != SQLITE_DONE) ThrowSqlite(db_, rc, "read");
+}
+
+std::vector<DropRecord> ResultsDb::ReadAll(bool with_traces) const {
+  std::vector<DropRecord> out;
+  ForEach([&](const DropRecord& r) { out.push_back(r); }, with_traces);
+  return out;
+}
+
+}  // namespace touchdown::sweep

@@ -1,0 +1,133 @@
+#pragma once
+// The SQLite database of a sweep (DIR/results.sqlite): one row per drop with all its
+// parameters and summary metrics, plus optional traces, written in transactions.
+//
+//   meta(key, value)   sweep name, digest of the plan, total drops, shard, format version
+//   drops(drop_index PRIMARY KEY, drop_id, status 'ok'|'failed', failure, pad, soil,
+//         atmosphere, impact_speed_m_s, pad_mass_kg, gravity_m_s2, tilt_deg,
+//         horizontal_speed_m_s, zeta_N_cm3, final_penetration_m, peak_force_N,
+//         time_to_rest_s, max_deceleration_m_s2, impact_energy_J, gravity_work_J,
+//         dissipated_energy_J, mean_conversion_rate_W, rest_creep_m, solver_steps,
+//         [format 2:] drop_kind 'rig'|'free'|'lander', final_tilt_deg, horizontal_travel_m,
+//         roll_deg, pitch_deg, pad1..pad4_final_penetration_m, final_roll_deg,
+//         final_pitch_deg, tipped_over,
+//         [format 3:] pad1_soil..pad4_soil, ground_case,
+//         [format 4:] failure_limit, failure_limit_value)
+//   traces(drop_index PRIMARY KEY, samples, data BLOB of float64 [t, d, v, F] per sample)
+//
+// A batch of drops and their traces go in one transaction (WAL journal), so a process killed
+// at any moment leaves every drop either fully written or absent; a restart computes only the
+// absent ones. Doubles are stored as 8-byte IEEE values, so rows compare bit for bit.
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "lander/pad/rig_drop.h"
+
+struct sqlite3;
+
+namespace touchdown::sweep {
+
+// 2: drop_kind, the free drop's final tilt and horizontal travel, the lander columns.
+// 3: the soil under each lander pad (pad1_soil..pad4_soil) and the paper's ground case.
+// 4: the work limit a failed drop ran out of (failure_limit, failure_limit_value), so a rerun
+//    with a higher limit retries it; meta records the limits and whether they depend on load.
+inline constexpr int kResultsDbVersion = 4;
+
+// One drop as stored. Metrics are NaN (NULL in SQL) for a failed drop, and for quantities a kind
+// of drop does not have.
+struct DropRecord {
+  int64_t index = 0;
+  std::string drop_id;
+  bool ok = false;
+  std::string failure;  // the reason, for a failed drop
+  // A drop that failed because a work limit ran out (integ::LimitExceeded): which one
+  // ("max_rhs_evaluations" or "max_wall_time_s") and its value; "" and NaN otherwise.
+  std::string failure_limit;
+  double failure_limit_value = std::numeric_limits<double>::quiet_NaN();
+  std::string kind = "rig";  // "rig" (vertical rod), "free" (6-DOF pad) or "lander"
+  std::string pad, soil, atmosphere;
+  double impact_speed_m_s = 0.0, pad_mass_kg = 0.0, gravity_m_s2 = 0.0;
+  double tilt_deg = 0.0, horizontal_speed_m_s = 0.0;
+  double zeta_N_cm3 = 0.0;  // as used, at the drop's gravity
+  double final_penetration_m = 0.0, peak_force_N = 0.0, time_to_rest_s = 0.0, max_deceleration_m_s2 = 0.0;
+  double impact_energy_J = 0.0, gravity_work_J = 0.0, dissipated_energy_J = 0.0, mean_conversion_rate_W = 0.0;
+  double rest_creep_m = 0.0;
+  int64_t solver_steps = 0;
+  // Pad (rig: 0, 0) or lander body: tilt from the vertical at rest, horizontal travel of the
+  // centre of mass from touchdown to rest (lander: to the end of the run).
+  double final_tilt_deg = 0.0, horizontal_travel_m = 0.0;
+  // Lander drops only (NaN otherwise): the initial attitude (aerospace roll and pitch), each pad's
+  // final penetration (pads clockwise from above, pad 1 front-left), the final attitude, and
+  // whether it tipped over (1) or not (0).
+  double roll_deg = std::numeric_limits<double>::quiet_NaN(), pitch_deg = std::numeric_limits<double>::quiet_NaN();
+  std::array<double, 4> pad_final_penetration_m{std::numeric_limits<double>::quiet_NaN(),
+                                                std::numeric_limits<double>::quiet_NaN(),
+                                                std::numeric_limits<double>::quiet_NaN(),
+                                                std::numeric_limits<double>::quiet_NaN()};
+  double final_roll_deg = std::numeric_limits<double>::quiet_NaN();
+  double final_pitch_deg = std::numeric_limits<double>::quiet_NaN();
+  double tipped_over = std::numeric_limits<double>::quiet_NaN();
+  // Lander drops only ("" otherwise): the soil under each pad's ball joint at release (soil names,
+  // pads clockwise from pad 1 front-left) and the paper's Table II ground case they make ("A",
+  // "B", "C"; "" for another combination).
+  std::array<std::string, 4> pad_soil;
+  std::string ground_case;
+  std::vector<pad::DropSample> trace;  // empty unless stored
+};
+
+// Bitwise equality of every field (NaN equals NaN of the same bits).
+bool SameRecord(const DropRecord& a, const DropRecord& b, bool compare_traces = true);
+
+// Byte serialisation of records, for sending between MPI ranks.
+std::string SerializeRecords(const std::vector<DropRecord>& records);
+std::vector<DropRecord> DeserializeRecords(const std::string& bytes);
+
+class ResultsDb {
+ public:
+  // Opens (creating if needed) the database file. Throws std::runtime_error on SQLite errors.
+  explicit ResultsDb(const std::string& path);
+  ~ResultsDb();
+  ResultsDb(const ResultsDb&) = delete;
+  ResultsDb& operator=(const ResultsDb&) = delete;
+
+  const std::string& path() const { return path_; }
+  std::map<std::string, std::string> Meta() const;
+  // Writes the meta rows in one transaction (only keys given; others kept).
+  void SetMeta(const std::map<std::string, std::string>& meta);
+  // Inserts the records (and their traces) in one transaction. An index already present
+  // must hold an identical record (a merge of overlapping shards); otherwise it throws.
+  void Insert(const std::vector<DropRecord>& records);
+  int64_t Count() const;
+  int64_t CountFailed() const;
+  // Stored drops with index < total.
+  int64_t CountBelow(int64_t total) const;
+  // Stored drop indices in [begin, end), ascending (a range scan of the primary key).
+  std::vector<int64_t> StoredIndices(int64_t begin, int64_t end) const;
+  // Removes, in one transaction, the failed drops that ran out of a work limit lower than the
+  // one given now (0: no limit, so every drop that ran out of that kind of limit), so that they
+  // are computed again; returns how many.
+  int64_t ForgetDropsBelowLimits(long max_rhs_evaluations, double max_wall_time_s);
+  // Every record in index order; traces when asked.
+  void ForEach(const std::function<void(const DropRecord&)>& visit, bool with_traces) const;
+  std::vector<DropRecord> ReadAll(bool with_traces) const;
+  // At most `limit` records with index >= `from`, in index order: read a database page by page
+  // in bounded memory (next page: from the last index + 1).
+  std::vector<DropRecord> ReadPage(int64_t from, size_t limit, bool with_traces) const;
+
+ private:
+  void Exec(const std::string& sql) const;
+  void CreateTables();  // the schema, created or brought up to date (older formats gain their columns)
+  std::string path_;
+  sqlite3* db_ = nullptr;
+};
+
+// The database file of a sweep output directory.
+std::string ResultsDbPath(const std::string& out_dir);
+
+}  // namespace touchdown::sweep

@@ -1,0 +1,291 @@
+#include "drop_tests/sweep/sweep.h"
+
+#include "drop_tests/io/output_path.h"
+
+#include <chrono>
+#include <cinttypes>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+#include <unistd.h>
+
+#include "drop_tests/io/dataset_csv.h"
+#include "drop_tests/sweep/sweep_engine.h"
+#include "rft/input_error.h"
+
+namespace touchdown::sweep {
+
+namespace fs = std::filesystem;
+
+namespace {
+double Now() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+std::string Hex(uint64_t v) {
+  char buffer[17];
+  std::snprintf(buffer, sizeof buffer, "%016" PRIx64, v);
+  return buffer;
+}
+
+// Drop indices handed to the engine at a time, and the queue length below which it gets more:
+// memory bounded by these, never by the plan.
+constexpr size_t kFeedChunk = 4096;
+constexpr size_t kFeedLow = 1024;
+
+std::string Duration(double s) {
+  if (!std::isfinite(s) || s < 0) return "?";
+  const long t = std::lround(s);
+  std::ostringstream o;
+  o << t / 3600 << ':' << std::setw(2) << std::setfill('0') << (t / 60) % 60 << ':' << std::setw(2) << t % 60;
+  return o.str();
+}
+}  // namespace
+
+std::string PlanDigest(const SweepPlan& plan) { return Hex(Fnv1a64(plan.DigestText())); }
+
+Shard ParseShard(const std::string& text, const std::string& context) {
+  Shard s;
+  const size_t slash = text.find('/');
+  try {
+    size_t used_i = 0, used_n = 0;
+    if (slash == std::string::npos) throw std::invalid_argument("no slash");
+    s.index = std::stoi(text.substr(0, slash), &used_i);
+    s.count = std::stoi(text.substr(slash + 1), &used_n);
+    if (used_i != slash || used_n != text.size() - slash - 1) throw std::invalid_argument("trailing text");
+  } catch (const std::exception&) {
+    throw MakeInputError("", context, "must be I/N (e.g. 0/4), got '" + text + "'");
+  }
+  if (s.count < 1 || s.index < 0 || s.index >= s.count)
+    throw MakeInputError("", context, "needs 0 <= I < N, got '" + text + "'");
+  return s;
+}
+
+SweepStore OpenSweepStore(const SweepPlan& plan, const std::string& out_dir, const Shard& shard) {
+  io::OpenOutputDirectory(out_dir, io::OutputKind::kSweep);
+  SweepStore store;
+  store.lock = std::make_unique<SweepDirLock>(out_dir);
+  store.db = std::make_unique<ResultsDb>(ResultsDbPath(out_dir));
+  ResultsDb& db = *store.db;
+  const std::string digest = PlanDigest(plan);
+  const std::map<std::string, std::string> meta = db.Meta();
+  // The limits of the run, and whether its failed set depends on machine load (only a
+  // wall-clock limit makes it so: the evaluation limit fails the same drops everywhere).
+  const integ::IntegratorOptions& limits = plan.rig.integrator;
+  const std::map<std::string, std::string> limits_meta = {
+      {"max_drop_evaluations", std::to_string(limits.max_rhs_evaluations)},
+      {"max_drop_wall_time_s", io::FormatNumber(limits.max_wall_time_s)},
+      {"load_dependent_failures",
+       limits.max_wall_time_s > 0.0 ? "yes: a wall-clock limit per drop (max_drop_wall_time_s) is in use; which "
+                                      "drops fail on it depends on machine load"
+                                    : "no"}};
+  if (meta.empty()) {
+    std::map<std::string, std::string> m = {{"format_version", std::to_string(kResultsDbVersion)},
+                                            {"sweep_name", plan.name},
+                                            {"plan_digest", digest},
+                                            {"total_drops", std::to_string(plan.size())},
+                                            {"shard", shard.Text()},
+                                            {"source", fs::absolute(plan.source).string()},
+                                            {"model", plan.model ? fs::absolute(plan.model->source).string() : ""}};
+    m.insert(limits_meta.begin(), limits_meta.end());
+    db.SetMeta(m);
+    return store;
+  }
+  auto value = [&](const std::string& key) {
+    const auto it = meta.find(key);
+    return it == meta.end() ? std::string() : it->second;
+  };
+  if (value("format_version") != std::to_string(kResultsDbVersion))
+    throw MakeInputError(db.path(), "format_version", "written by another touchdown version ('" +
+                                                         value("format_version") + "')");
+  if (value("plan_digest") != digest)
+    throw MakeInputError(db.path(), "plan_digest",
+                         "holds results of a different sweep ('" + value("sweep_name") + "' from " + value("source") +
+                             "); the sweep file, a pad, a soil or the model changed. Use another --out directory");
+  if (value("shard") != shard.Text())
+    throw MakeInputError(db.path(), "shard",
+                         "holds shard " + value("shard") + ", this run is shard " + shard.Text());
+  store.retried = db.ForgetDropsBelowLimits(limits.max_rhs_evaluations, limits.max_wall_time_s);
+  db.SetMeta(limits_meta);
+  return store;
+}
+
+RemainingDrops::RemainingDrops(int64_t total, const ResultsDb& db, const Shard& shard)
+    : total_(total), db_(db), shard_(shard), next_(shard.index) {}
+
+std::vector<int64_t> RemainingDrops::Next(size_t max) {
+  std::vector<int64_t> out;
+  while (out.size() < max && next_ < total_) {
+    // A window of the index range holding the next (max - found) drops of the shard.
+    const int64_t span = static_cast<int64_t>(max - out.size()) * shard_.count;
+    const int64_t end = span < total_ - next_ ? next_ + span : total_;
+    const std::vector<int64_t> stored = db_.StoredIndices(next_, end);
+    size_t k = 0;
+    int64_t i = next_;
+    for (; i < end; i += shard_.count) {
+      while (k < stored.size() && stored[k] < i) ++k;
+      if (k < stored.size() && stored[k] == i) continue;
+      out.push_back(i);
+    }
+    next_ = i;
+  }
+  return out;
+}
+
+SweepProgress::SweepProgress(std::ostream& out, ProgressMode mode, double interval_s, int64_t total,
+                             int64_t done_before)
+    : out_(out), interval_s_(interval_s), total_(total), before_(done_before), start_(Now()) {
+  const bool terminal = &out == &std::cerr && ::isatty(STDERR_FILENO);
+  bar_ = mode == ProgressMode::kBar || (mode == ProgressMode::kAuto && terminal);
+  silent_ = mode == ProgressMode::kNone;
+}
+
+void SweepProgress::Add(const std::vector<DropRecord>& records) {
+  for (const DropRecord& r : records) {
+    ++done_;
+    if (r.ok) continue;
+    ++failed_;
+    if (silent_) continue;
+    if (bar_) out_ << "\r\033[K";
+    out_ << "sweep: drop " << r.drop_id << " failed: " << r.failure << "\n";
+  }
+  const double now = Now();
+  if (now - last_shown_ >= (bar_ ? 0.1 : interval_s_)) Show(false);
+}
+
+void SweepProgress::Show(bool final) {
+  if (silent_) return;
+  last_shown_ = Now();
+  const double elapsed = last_shown_ - start_;
+  const int64_t done = before_ + done_;
+  const double rate = elapsed > 0 ? done_ / elapsed : 0.0;
+  const double eta = rate > 0 ? (total_ - done) / rate : NAN;
+  const double fraction = total_ > 0 ? static_cast<double>(done) / total_ : 1.0;
+  std::ostringstream s;
+  s << done << "/" << total_ << " drops (" << std::fixed << std::setprecision(1) << 100.0 * fraction << "%), "
+    << std::setprecision(0) << rate << " drops/s, " << (final ? "elapsed " + Duration(elapsed) : "ETA " + Duration(eta))
+    << ", " << failed_ << " failed";
+  if (bar_) {
+    const int width = 30, filled = static_cast<int>(fraction * width);
+    out_ << "\r\033[K[" << std::string(filled, '#') << std::string(width - filled, '.') << "] " << s.str();
+    if (final) out_ << "\n";
+  } else {
+    out_ << "sweep: " << s.str() << "\n";
+  }
+  out_.flush();
+}
+
+void SweepProgress::Finish() { Show(true); }
+
+SweepRunSummary RunSweep(const SweepPlan& plan, const std::string& out_dir, const SweepRunOptions& options) {
+  const double start = Now();
+  SweepStore store = OpenSweepStore(plan, out_dir, options.shard);
+  ResultsDb& db = *store.db;
+  SweepRunSummary summary;
+  summary.total = plan.size();
+  summary.in_shard = (plan.size() - options.shard.index + options.shard.count - 1) / options.shard.count;
+  summary.already_done = db.CountBelow(plan.size());
+  summary.retried = store.retried;
+  summary.threads = options.threads > 0 ? options.threads : DefaultThreads();
+  SweepProgress progress(options.log ? *options.log : std::cerr, options.progress, options.progress_interval_s,
+                         summary.in_shard, summary.already_done);
+  if (summary.already_done < summary.in_shard) {
+    const SweepModels models(plan);
+    DropEngine engine(models, summary.threads);
+    RemainingDrops todo(plan.size(), db, options.shard);
+    bool input_open = true, stopping = false;
+    auto feed = [&] {
+      while (input_open && engine.Hungry(kFeedLow)) {
+        const std::vector<int64_t> next = todo.Next(kFeedChunk);
+        if (next.empty()) {
+          engine.CloseInput();
+          input_open = false;
+        } else {
+          engine.Add(next);
+        }
+      }
+    };
+    feed();
+    while (!engine.Finished()) {
+      if (!stopping && options.stop && options.stop->load() != 0) {
+        engine.Stop();  // the drops running now finish; nothing new starts
+        stopping = true;
+        input_open = false;
+      }
+      std::vector<DropRecord> batch = engine.Take(options.batch_size, options.commit_interval_s,
+                                                  input_open ? kFeedLow : 0, stopping ? nullptr : options.stop);
+      db.Insert(batch);  // one transaction: all of the batch or none of it
+      summary.computed += static_cast<int64_t>(batch.size());
+      progress.Add(batch);
+      feed();
+    }
+  }
+  if (options.stop) summary.stop_signal = options.stop->load();
+  progress.Finish();
+  summary.failed = db.CountFailed();
+  summary.seconds = Now() - start;
+  return summary;
+}
+
+std::vector<DropRecord> RunSweepInMemory(const SweepPlan& plan, int threads) {
+  std::vector<int64_t> todo(static_cast<size_t>(plan.size()));
+  for (size_t i = 0; i < todo.size(); ++i) todo[i] = static_cast<int64_t>(i);
+  const SweepModels models(plan);
+  DropEngine engine(models, todo, threads > 0 ? threads : DefaultThreads());
+  std::vector<DropRecord> out(todo.size());
+  while (!engine.Finished())
+    for (DropRecord& r : engine.Take(4096, 1.0)) out[static_cast<size_t>(r.index)] = std::move(r);
+  return out;
+}
+
+MergeSummary MergeSweepResults(const std::string& out_dir, const std::vector<std::string>& shard_dirs) {
+  if (shard_dirs.empty()) throw MakeInputError("", "merge", "no shard directories given");
+  std::map<std::string, std::string> reference;
+  std::vector<std::unique_ptr<ResultsDb>> shards;
+  for (const std::string& dir : shard_dirs) {
+    const std::string path = ResultsDbPath(dir);
+    if (!fs::is_regular_file(path)) throw MakeInputError(path, "", "no sweep results here");
+    auto db = std::make_unique<ResultsDb>(path);
+    std::map<std::string, std::string> meta = db->Meta();
+    if (meta.empty()) throw MakeInputError(path, "", "not a sweep results database (no meta)");
+    if (reference.empty()) reference = meta;
+    for (const char* key : {"format_version", "plan_digest", "total_drops"})
+      if (meta[key] != reference[key])
+        throw MakeInputError(path, key, "differs from " + shard_dirs.front() + " ('" + meta[key] + "' vs '" +
+                                            reference[key] + "'): not shards of one sweep");
+    shards.push_back(std::move(db));
+  }
+  io::OpenOutputDirectory(io::OutputTarget(out_dir, shard_dirs), io::OutputKind::kSweep);
+  const SweepDirLock lock(out_dir);  // a sweep or merge writing there now is refused
+  ResultsDb out(ResultsDbPath(out_dir));
+  std::map<std::string, std::string> meta = out.Meta();
+  if (meta.empty()) {
+    std::map<std::string, std::string> m = reference;
+    m["shard"] = Shard{}.Text();  // the merged database is the whole sweep; `sweep` can resume it
+    out.SetMeta(m);
+  } else if (meta["plan_digest"] != reference["plan_digest"]) {
+    throw MakeInputError(out.path(), "plan_digest", "holds a different sweep than the shards");
+  }
+  MergeSummary summary;
+  summary.shards = static_cast<int>(shards.size());
+  for (const auto& db : shards) {
+    std::vector<DropRecord> batch;
+    db->ForEach(
+        [&](const DropRecord& r) {
+          batch.push_back(r);
+          if (batch.size() >= 4096) out.Insert(batch), batch.clear();
+        },
+        /*with_traces=*/true);
+    out.Insert(batch);
+  }
+  summary.total = std::stoll(reference["total_drops"]);
+  summary.stored = out.Count();
+  summary.failed = out.CountFailed();
+  summary.missing = summary.total - summary.stored;
+  return summary;
+}
+
+}  // namespace touchdown::sweep

@@ -1,0 +1,261 @@
+#include "drop_tests/sweep/sweep_drop.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "drop_tests/scenario/lander_scenario.h"
+#include "drop_tests/drop/pad_drop.h"
+#include "footpad_geom/axisymmetric_intrusion.h"
+#include "rft/stress_law.h"
+
+namespace touchdown::sweep {
+
+namespace {
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+// The sweep point as a drop row (the atmosphere is the soil's), under the model's effects.
+drop::DropConditions ConditionsOf(const SweepModels& models, const SweepDropParams& p) {
+  drop::DropRow row;
+  row.impact_speed_m_s = p.impact_speed_m_s;
+  row.mass_kg = p.mass_kg;
+  row.gravity_m_s2 = p.gravity_m_s2;
+  row.zeta_N_m3 = p.zeta_N_m3;
+  row.tilt_rad = p.tilt_rad;
+  row.horizontal_speed_m_s = p.horizontal_speed_m_s;
+  const SweepPlan& plan = models.plan();
+  drop::DropConditions c = drop::DropConditionsFor(row, models.effects(), plan.model ? plan.model->source : "",
+                                       plan.source + ": drop " + plan.DropId(p.index));
+  // A mesh pad has no profile for the rig's integral: the free 6-DOF pad, level and straight
+  // down unless tilted or sliding.
+  c.free = !plan.pads[p.pad].is_axisymmetric();
+  return c;
+}
+
+DropRecord Describe(const SweepPlan& plan, const SweepDropParams& p, const drop::DropConditions& c) {
+  DropRecord r;
+  r.index = p.index;
+  r.drop_id = plan.DropId(p.index);
+  r.kind = c.IsFree() ? "free" : "rig";
+  const io::PadSpec& pad = plan.pads[p.pad];
+  const rft::SoilParameters& soil = plan.soils[p.soil];
+  r.pad = pad.name;
+  r.soil = soil.name;
+  r.atmosphere = soil.atmosphere;
+  r.impact_speed_m_s = p.impact_speed_m_s;
+  r.pad_mass_kg = p.mass_kg.value_or(pad.mass_kg);
+  r.gravity_m_s2 = p.gravity_m_s2;
+  r.tilt_deg = p.tilt_rad / kDeg;
+  r.horizontal_speed_m_s = p.horizontal_speed_m_s;
+  r.zeta_N_cm3 = drop::EffectiveZeta(soil, c) / 1e6;
+  return r;
+}
+
+void MarkFailed(DropRecord& r, const std::string& reason) {
+  r.ok = false;
+  r.failure = reason.empty() ? "unknown failure" : reason;
+  for (double* v : {&r.final_penetration_m, &r.peak_force_N, &r.time_to_rest_s, &r.max_deceleration_m_s2,
+                    &r.impact_energy_J, &r.gravity_work_J, &r.dissipated_energy_J, &r.mean_conversion_rate_W,
+                    &r.rest_creep_m, &r.final_tilt_deg, &r.horizontal_travel_m, &r.final_roll_deg, &r.final_pitch_deg,
+                    &r.tipped_over})
+    *v = std::nan("");
+  r.pad_final_penetration_m.fill(std::nan(""));
+  r.trace.clear();
+}
+
+// A drop that ran out of a work limit: failed, naming the limit and its value (so a rerun with a
+// higher limit knows to retry it).
+void MarkOutOfLimit(DropRecord& r, const integ::LimitExceeded& e) {
+  MarkFailed(r, e.what());
+  r.failure_limit = e.limit();
+  r.failure_limit_value = e.value();
+}
+
+DropRecord SimulatePadSweepDrop(const SweepModels& models, const SweepDropParams& p, TraceStorage storage) {
+  const SweepPlan& plan = models.plan();
+  const drop::DropConditions c = ConditionsOf(models, p);
+  DropRecord r = Describe(plan, p, c);
+  try {
+    drop::DropRunOptions options;
+    options.rig = plan.rig;
+    options.free.sample_rate_hz = plan.rig.sample_rate_hz;
+    options.free.integrator.max_wall_time_s = plan.rig.integrator.max_wall_time_s;
+    options.free.integrator.max_rhs_evaluations = plan.rig.integrator.max_rhs_evaluations;
+    options.intrusion = models.has_intrusion(p.pad) ? &models.intrusion(p.pad) : nullptr;
+    const drop::PadDrop drop = drop::SimulateDrop(plan.pads[p.pad], plan.soils[p.soil], c, options);
+    const pad::RigDropResult& d = drop.result;
+    r.ok = true;
+    r.final_penetration_m = d.final_penetration_m;
+    r.peak_force_N = d.peak_force_N;
+    r.time_to_rest_s = d.time_to_rest_s;
+    r.max_deceleration_m_s2 = d.max_deceleration_m_s2;
+    r.impact_energy_J = d.impact_energy_J;
+    r.gravity_work_J = d.gravity_work_J;
+    r.dissipated_energy_J = d.dissipated_energy_J;
+    r.mean_conversion_rate_W = d.mean_conversion_rate_W;
+    r.rest_creep_m = d.rest_creep_m;
+    r.solver_steps = d.solver.steps;
+    // The rig stays level on its rod and does not travel.
+    r.final_tilt_deg = drop.free ? drop.free->final_tilt_deg : 0.0;
+    r.horizontal_travel_m = drop.free ? drop.free->horizontal_travel_m : 0.0;
+    if (storage == TraceStorage::kFull) r.trace = d.trace;
+    else if (storage == TraceStorage::kDecimated) r.trace = DecimateTrace(d.trace, plan.trace_max_samples);
+  } catch (const integ::LimitExceeded& e) {
+    MarkOutOfLimit(r, e);
+  } catch (const std::exception& e) {
+    MarkFailed(r, e.what());
+  }
+  return r;
+}
+
+// One lander run: the plan's scenario with the drop's parameters.
+DropRecord SimulateLanderSweepDrop(const SweepModels& models, const SweepDropParams& p) {
+  const SweepPlan& plan = models.plan();
+  scenario::LanderScenario sc = *plan.lander;  // the model is already in it (LoadSweepPlan)
+  if (p.Given(SweepParam::kGravity)) sc.gravity_m_s2 = p.gravity_m_s2;
+  if (p.Given(SweepParam::kSoil)) sc.ground.default_soil = plan.soil_refs[p.soil];
+  if (p.Given(SweepParam::kImpactSpeed)) {
+    sc.initial.drop_height_m.reset();
+    sc.initial.release_vertical_speed_m_s = 0.0;
+    sc.initial.touchdown_speed_m_s = p.impact_speed_m_s;
+  }
+  if (p.Given(SweepParam::kHorizontalSpeed)) sc.initial.horizontal_velocity_m_s = Eigen::Vector2d(p.horizontal_speed_m_s, 0.0);
+  if (p.Given(SweepParam::kRoll)) sc.initial.roll_rad = p.roll_rad;
+  if (p.Given(SweepParam::kPitch)) sc.initial.pitch_rad = p.pitch_rad;
+  if (p.Given(SweepParam::kPadSoils)) {
+    // The scenario's patches give way to one square under each pad whose soil is not the ground's.
+    sc.ground.patches.clear();
+    const PadSoilSet& set = plan.pad_soil_sets[p.pad_soils];
+    for (int i = 0; i < lander::kNumLegs; ++i) {
+      const std::string& ref = plan.soil_refs[set.soil[i]];
+      if (ref == sc.ground.default_soil) continue;
+      // (pad, half width): resolved below the pad's joint at release by BuildLanderSetup.
+      sc.ground.patches.push_back(
+          {"pad_soils_under_pad_" + std::to_string(i + 1), ref, {Eigen::Vector2d(i + 1, plan.pad_patch_half_width_m)}});
+    }
+  }
+  // The sweep's limits replace the scenario's (none given there: a lander run has only max_num_steps).
+  sc.options.integrator.max_wall_time_s = plan.rig.integrator.max_wall_time_s;
+  sc.options.integrator.max_rhs_evaluations = plan.rig.integrator.max_rhs_evaluations;
+
+  DropRecord r;
+  r.index = p.index;
+  r.drop_id = plan.DropId(p.index);
+  r.kind = "lander";
+  const rft::SoilParameters& soil = p.Given(SweepParam::kSoil) ? plan.soils[p.soil] : models.lander_soil();
+  r.pad = sc.lander.pad.name;
+  r.soil = soil.name;
+  r.atmosphere = soil.atmosphere;
+  r.impact_speed_m_s = sc.initial.drop_height_m
+                           ? std::sqrt(std::pow(sc.initial.release_vertical_speed_m_s, 2) +
+                                       2.0 * sc.gravity_m_s2 * *sc.initial.drop_height_m)
+                           : *sc.initial.touchdown_speed_m_s;
+  r.pad_mass_kg = sc.lander.pad.body.mass_kg;
+  r.gravity_m_s2 = sc.gravity_m_s2;
+  r.roll_deg = sc.initial.roll_rad / kDeg;
+  r.pitch_deg = sc.initial.pitch_rad / kDeg;
+  // Body z from the vertical after roll and pitch (z_W component cos(roll) cos(pitch)).
+  r.tilt_deg = std::acos(std::clamp(std::cos(sc.initial.roll_rad) * std::cos(sc.initial.pitch_rad), -1.0, 1.0)) / kDeg;
+  r.horizontal_speed_m_s = sc.initial.horizontal_velocity_m_s.norm();
+  r.zeta_N_cm3 = soil.ZetaAtGravity(sc.gravity_m_s2) / 1e6;
+  try {
+    {  // the soil under each pad's joint at release, as the ground was built
+      const scenario::LanderSetup setup = scenario::BuildLanderSetup(sc);
+      for (int i = 0; i < lander::kNumLegs; ++i) {
+        const Eigen::Vector3d c = setup.initial.p_WB + setup.initial.R_WB * setup.model.legs[i].joint_B;
+        r.pad_soil[i] = models.SoilName(setup.terrain.soils[setup.terrain.SoilAt(c.x(), c.y())].name);
+      }
+      r.ground_case = PaperGroundCase(r.pad_soil);
+    }
+    const scenario::LanderRun run = scenario::RunLanderScenario(sc);
+    const lander::LanderRunResult& l = run.result;
+    r.ok = true;
+    for (int i = 0; i < lander::kNumLegs; ++i) r.pad_final_penetration_m[i] = l.final_penetration_m[i];
+    r.final_penetration_m = *std::max_element(l.final_penetration_m.begin(), l.final_penetration_m.end());
+    r.peak_force_N = *std::max_element(l.peak_pad_force_N.begin(), l.peak_pad_force_N.end());
+    r.max_deceleration_m_s2 = l.max_body_deceleration_m_s2;
+    r.dissipated_energy_J = l.dissipated_J;
+    r.rest_creep_m = std::nan("");
+    r.final_roll_deg = l.final_attitude.roll_rad / kDeg;
+    r.final_pitch_deg = l.final_attitude.pitch_rad / kDeg;
+    r.final_tilt_deg = l.final_attitude.tilt_rad / kDeg;
+    r.tipped_over = l.tipped_over ? 1.0 : 0.0;
+    r.solver_steps = l.solver.steps;
+    r.time_to_rest_s = l.rest_time_s && l.first_touchdown_s ? *l.rest_time_s - *l.first_touchdown_s : std::nan("");
+    // At the first touchdown (an event, so a trace sample): kinetic energy, potential energy and
+    // position, for the impact energy, the weight's work and the horizontal travel.
+    r.impact_energy_J = r.gravity_work_J = r.horizontal_travel_m = r.mean_conversion_rate_W = std::nan("");
+    if (l.first_touchdown_s && !l.trace.empty()) {
+      const auto td = std::find_if(l.trace.begin(), l.trace.end(),
+                                   [&](const lander::LanderSample& s) { return s.t_s >= *l.first_touchdown_s; });
+      if (td != l.trace.end()) {
+        r.impact_energy_J = td->kinetic_J;
+        r.gravity_work_J = td->potential_J - l.final_potential_J;
+        r.horizontal_travel_m = (l.trace.back().p_WB.head<2>() - td->p_WB.head<2>()).norm();
+        if (r.time_to_rest_s > 0.0) r.mean_conversion_rate_W = r.impact_energy_J / r.time_to_rest_s;
+      }
+    }
+  } catch (const integ::LimitExceeded& e) {
+    MarkOutOfLimit(r, e);
+  } catch (const std::exception& e) {
+    MarkFailed(r, e.what());
+  }
+  return r;
+}
+}  // namespace
+
+SweepModels::SweepModels(const SweepPlan& plan) : plan_(plan) {
+  for (const io::PadSpec& pad : plan.pads)  // none for a mesh pad: its drops are free drops
+    intrusions_.push_back(pad.is_axisymmetric()
+                              ? std::make_unique<geom::AxisymmetricIntrusion>(pad.profile, rft::Li2013Law{})
+                              : nullptr);
+  if (plan.model) effects_ = model::ModelEffectTerms(*plan.model);
+  if (plan.lander) {
+    lander_soil_ = io::LoadSoil(plan.lander->ground.default_soil);
+    if (plan.model) lander_soil_ = model::ApplyModel(*plan.model, lander_soil_);
+    // Soil names of every reference a lander drop's ground may hold (loaded once, not per drop).
+    soil_names_[plan.lander->ground.default_soil] = io::LoadSoil(plan.lander->ground.default_soil).name;
+    for (const scenario::LanderPatchSpec& patch : plan.lander->ground.patches) soil_names_[patch.soil] = io::LoadSoil(patch.soil).name;
+    for (size_t i = 0; i < plan.soil_refs.size(); ++i) soil_names_[plan.soil_refs[i]] = plan.soils[i].name;
+  }
+}
+
+const std::string& SweepModels::SoilName(const std::string& ref) const {
+  const auto it = soil_names_.find(ref);
+  return it == soil_names_.end() ? ref : it->second;
+}
+
+SweepModels::~SweepModels() = default;
+
+std::vector<pad::DropSample> DecimateTrace(const std::vector<pad::DropSample>& trace, int max_samples) {
+  const size_t n = trace.size(), m = static_cast<size_t>(max_samples);
+  if (n <= m || max_samples < 3) return trace;
+  // m evenly spaced indices (distinct since n > m), ends included; the inner one nearest the
+  // peak force is moved onto it, so the peak is never lost.
+  std::vector<size_t> keep(m);
+  for (size_t j = 0; j < m; ++j) keep[j] = j * (n - 1) / (m - 1);
+  size_t peak = 0;
+  for (size_t i = 1; i < n; ++i)
+    if (trace[i].force_N > trace[peak].force_N) peak = i;
+  if (std::find(keep.begin(), keep.end(), peak) == keep.end()) {
+    const size_t b = std::upper_bound(keep.begin(), keep.end(), peak) - keep.begin(), a = b - 1;  // keep[a] < peak < keep[b]
+    const size_t pick = a == 0 ? b : b == m - 1 ? a : (peak - keep[a] <= keep[b] - peak ? a : b);
+    keep[pick] = peak;  // stays sorted: peak lies between the neighbours
+  }
+  std::vector<pad::DropSample> out;
+  for (size_t i : keep) out.push_back(trace[i]);
+  return out;
+}
+
+DropRecord SimulateSweepDrop(const SweepModels& models, int64_t index) {
+  return SimulateSweepDrop(models, index, models.plan().traces);
+}
+
+DropRecord SimulateSweepDrop(const SweepModels& models, int64_t index, TraceStorage storage) {
+  const SweepPlan& plan = models.plan();
+  const SweepDropParams p = plan.DropAt(index);
+  if (plan.lander) return SimulateLanderSweepDrop(models, p);
+  return SimulatePadSweepDrop(models, p, storage);
+}
+
+}  // namespace touchdown::sweep

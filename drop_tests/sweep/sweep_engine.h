@@ -1,0 +1,67 @@
+#pragma once
+// Runs sweep drops on a pool of threads and hands the finished records to one consumer
+// thread (the one that writes the database). The consumer feeds drop indices in chunks (Add)
+// as the queue runs low, so memory is bounded by the chunk, never by the plan; each worker
+// takes the next index from the queue, so the work spreads evenly whatever each drop costs.
+// Results are a pure function of the index, so which thread ran a drop never shows in the result.
+#include <atomic>
+#include <condition_variable>
+#include <cstdint>
+#include <deque>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+#include "drop_tests/sweep/sweep_drop.h"
+
+namespace touchdown::sweep {
+
+class DropEngine {
+ public:
+  // Starts `threads` workers; they wait for indices.
+  DropEngine(const SweepModels& models, int threads);
+  // With every index given at once (input closed).
+  DropEngine(const SweepModels& models, const std::vector<int64_t>& todo, int threads);
+  ~DropEngine();  // stops and joins the workers (unfinished drops are simply not reported)
+  DropEngine(const DropEngine&) = delete;
+  DropEngine& operator=(const DropEngine&) = delete;
+
+  // Queues more drop indices; CloseInput says no more will come.
+  void Add(const std::vector<int64_t>& indices);
+  void CloseInput();
+  // Stops early: each worker finishes the drop it is running, queued drops are dropped. The
+  // records of the finished ones are still handed out by Take.
+  void Stop();
+  // Indices queued and not yet started.
+  size_t queued();
+  // True while the input is open and fewer than `low` indices are queued: time to Add.
+  bool Hungry(size_t low);
+
+  // Waits until `max` records are ready, every drop given is done (input closed or stopped),
+  // fewer than `hungry_below` indices are queued while the input is open, `*interrupt` becomes
+  // non-zero, or `timeout_s` passes; returns what is ready (at most `max`).
+  std::vector<DropRecord> Take(size_t max, double timeout_s, size_t hungry_below = 0,
+                               const std::atomic<int>* interrupt = nullptr);
+  // True once the input is closed (or the engine stopped) and every started drop has been
+  // computed and taken.
+  bool Finished();
+
+ private:
+  void Work();
+  bool IdleLocked() const;  // mutex_ held: input over and every started drop computed
+  const SweepModels& models_;
+  std::mutex mutex_;
+  std::condition_variable work_;   // workers: indices queued, or input over
+  std::condition_variable ready_;  // consumer: records ready, queue low, or done
+  std::deque<int64_t> queue_;
+  bool closed_ = false, stopped_ = false;
+  std::vector<DropRecord> done_;
+  size_t started_ = 0, computed_ = 0, taken_ = 0;
+  size_t take_max_ = 1, hungry_below_ = 0;  // what the waiting Take wants: wake it only then
+  std::vector<std::thread> workers_;
+};
+
+// Threads to use when the user gives none: every core, shared among the MPI ranks on this node.
+int DefaultThreads(int ranks_on_node = 1);
+
+}  // namespace touchdown::sweep

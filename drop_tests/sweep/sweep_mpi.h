@@ -1,0 +1,28 @@
+#pragma once
+// `mpirun -np N touchdown sweep ...`: every rank loads the plan; rank 0 locks the output
+// directory (the other ranks never touch it, so ranks of one run cannot refuse each other),
+// opens the results database and finds the drops still missing a chunk at a time (so a restart
+// works with any N, and memory does not grow with the plan). The other ranks ask rank 0 for
+// chunks of drop indices as their queues run low, compute them on their threads and send the
+// finished batches to rank 0, which commits them exactly as a single process would. The
+// database is therefore the same whatever N is, and bit-identical to a single-process run.
+// SIGINT/SIGTERM on any rank (mpirun forwards them to all) stop the whole run cleanly: rank 0
+// hands out no more work, every rank finishes and sends its running drops, rank 0 commits them.
+#include <string>
+
+#include "drop_tests/sweep/sweep.h"
+
+namespace touchdown::sweep {
+
+// True when this process was started by mpirun with more than one rank (OpenMPI, PMI or
+// PMIx environment variables), so the sweep should run on MPI.
+bool LaunchedByMpirun();
+bool MpiSupported();  // built with TOUCHDOWN_WITH_MPI
+
+// Initialises MPI, runs the sweep over all ranks, finalises MPI. On ranks other than 0 the
+// returned summary only counts that rank's own drops. Throws InputError on every rank when
+// the plan or the database is refused.
+SweepRunSummary RunSweepMpi(const SweepPlan& plan, const std::string& out_dir, const SweepRunOptions& options,
+                            int* rank = nullptr);
+
+}  // namespace touchdown::sweep

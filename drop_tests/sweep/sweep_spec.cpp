@@ -1,0 +1,508 @@
+#include "drop_tests/sweep/sweep_spec.h"
+
+#include <algorithm>
+#include <cinttypes>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+
+#include "drop_tests/io/dataset_csv.h"
+#include "drop_tests/sweep/sweep_drop.h"
+#include "drop_tests/io/yaml_fields.h"
+#include "rft/input_error.h"
+#include "rft/physical_limits.h"
+
+namespace touchdown::sweep {
+
+namespace fs = std::filesystem;
+
+namespace {
+constexpr double kDeg = std::numbers::pi / 180.0;
+constexpr int kMaxGridCount = 100000;            // values of one `{from, to, count}` axis
+constexpr int64_t kMaxSweepDrops = int64_t{1} << 40;
+constexpr SweepParam kAll[kSweepParamCount] = {SweepParam::kPad,     SweepParam::kSoil, SweepParam::kImpactSpeed,
+                                               SweepParam::kMass,    SweepParam::kGravity, SweepParam::kTilt,
+                                               SweepParam::kHorizontalSpeed, SweepParam::kZeta, SweepParam::kRoll,
+                                               SweepParam::kPitch, SweepParam::kPadSoils};
+
+std::optional<SweepParam> ParamFromKey(const std::string& key) {
+  for (SweepParam p : kAll)
+    if (key == SweepParamKey(p)) return p;
+  return std::nullopt;
+}
+
+bool IsName(SweepParam p) { return p == SweepParam::kPad || p == SweepParam::kSoil || p == SweepParam::kPadSoils; }
+
+// Table II of Sutoh et al. 2017: the packing under pads 1..4 (clockwise from front-left).
+struct PaperCase {
+  const char* label;
+  std::array<const char*, 4> soils;
+};
+constexpr PaperCase kPaperCases[] = {{"A", {"fjs1_lp", "fjs1_lp", "fjs1_lp", "fjs1_lp"}},
+                                     {"B", {"fjs1_cp", "fjs1_lp", "fjs1_lp", "fjs1_lp"}},
+                                     {"C", {"fjs1_cp", "fjs1_cp", "fjs1_lp", "fjs1_lp"}}};
+
+double ToSi(SweepParam p, double v) {
+  if (p == SweepParam::kTilt || p == SweepParam::kRoll || p == SweepParam::kPitch) return v * kDeg;
+  if (p == SweepParam::kZeta) return v * 1e6;
+  return v;
+}
+
+// Range rules per parameter, checked on every value a file can produce (fixed, grid, random bounds).
+void CheckValue(SweepParam p, double v, const std::string& file, const std::string& path) {
+  auto fail = [&](const std::string& rule) {
+    throw MakeInputError(file, path, "must be " + rule + ", got " + io::FormatNumber(v));
+  };
+  if (!std::isfinite(v)) fail("finite");
+  switch (p) {
+    // Physical ranges (rft/physical_limits.h), as for a single drop.
+    case SweepParam::kImpactSpeed: limits::Require(limits::kSpeed_m_s, v, file, path); break;
+    case SweepParam::kHorizontalSpeed: limits::Require(limits::kAbsSpeed_m_s, v, file, path); break;
+    case SweepParam::kZeta: limits::Require(limits::kZeta_N_cm3, v, file, path); break;
+    case SweepParam::kMass:
+    case SweepParam::kGravity: if (!(v > 0.0)) fail("positive"); break;
+    case SweepParam::kTilt:
+      if (!(std::abs(v) < 90.0)) fail("between -90 and 90");
+      break;
+    case SweepParam::kRoll:
+    case SweepParam::kPitch:
+      if (!(std::abs(v) < 80.0)) fail("between -80 and 80");
+      break;
+    default: break;
+  }
+}
+
+class Loader {
+ public:
+  Loader(SweepPlan& plan, const std::string& base) : plan_(plan), base_(base) {}
+
+  // A pad/soil name to an index into plan.pads / plan.soils (loaded once).
+  double NameIndex(SweepParam p, const YAML::Node& n, const io::YamlFields& f, const std::string& path) {
+    if (!n.IsScalar() || n.Scalar().empty())
+      throw MakeInputError(f.file(), path, "must be a pad/soil name or YAML path");
+    std::string ref = n.Scalar();
+    const bool is_path = ref.find('/') != std::string::npos || ref.ends_with(".yaml") || ref.ends_with(".yml");
+    if (is_path && fs::path(ref).is_relative()) ref = (fs::path(base_) / ref).lexically_normal().string();
+    try {
+      if (p == SweepParam::kPad) {
+        for (size_t i = 0; i < pad_refs_.size(); ++i)
+          if (pad_refs_[i] == ref) return static_cast<double>(i);
+        // A mesh pad (no profile for the rig's integral) runs every drop as a free 6-DOF drop.
+        plan_.pads.push_back(io::LoadPad(ref));
+        pad_refs_.push_back(ref);
+        return static_cast<double>(plan_.pads.size() - 1);
+      }
+      for (size_t i = 0; i < soil_refs_.size(); ++i)
+        if (soil_refs_[i] == ref) return static_cast<double>(i);
+      plan_.soils.push_back(io::LoadSoil(ref));
+      plan_.soil_refs.push_back(ref);
+      soil_refs_.push_back(ref);
+      return static_cast<double>(plan_.soils.size() - 1);
+    } catch (const InputError& e) {
+      throw MakeInputError(f.file(), path, e.what());
+    }
+  }
+
+  // A `pad_soils` value (a Table II letter or four soils) to an index into plan.pad_soil_sets.
+  double PadSoils(const YAML::Node& n, const io::YamlFields& f, const std::string& path) {
+    PadSoilSet set;
+    if (n.IsScalar()) {
+      const PaperCase* found = nullptr;
+      for (const PaperCase& c : kPaperCases)
+        if (n.Scalar() == c.label) found = &c;
+      if (!found)
+        throw MakeInputError(f.file(), path, "must be a ground case of the paper's Table II (A, B or C) or a list "
+                                             "of four soils, got '" + n.Scalar() + "'");
+      set.label = found->label;
+      for (int i = 0; i < 4; ++i) set.soil[i] = static_cast<int>(NameIndex(SweepParam::kSoil, YAML::Node(found->soils[i]), f, path));
+    } else if (n.IsSequence() && n.size() == 4) {
+      for (int i = 0; i < 4; ++i)
+        set.soil[i] = static_cast<int>(NameIndex(SweepParam::kSoil, n[i], f, path + "[" + std::to_string(i) + "]"));
+    } else {
+      throw MakeInputError(f.file(), path, "must be a ground case of the paper's Table II (A, B or C) or a list of "
+                                           "four soils (pads 1..4, clockwise from front-left), got " +
+                                           (n.IsSequence() ? "a list of " + std::to_string(n.size())
+                                                           : std::string("a mapping")));
+    }
+    for (size_t i = 0; i < plan_.pad_soil_sets.size(); ++i)
+      if (plan_.pad_soil_sets[i].label == set.label && plan_.pad_soil_sets[i].soil == set.soil)
+        return static_cast<double>(i);
+    plan_.pad_soil_sets.push_back(set);
+    return static_cast<double>(plan_.pad_soil_sets.size() - 1);
+  }
+
+  double Scalar(SweepParam p, const YAML::Node& n, const io::YamlFields& f, const std::string& path) {
+    if (p == SweepParam::kPadSoils) return PadSoils(n, f, path);
+    if (IsName(p)) return NameIndex(p, n, f, path);
+    double v = 0.0;
+    if (!n.IsScalar() || !YAML::convert<double>::decode(n, v))
+      throw MakeInputError(f.file(), path, "must be a number");
+    CheckValue(p, v, f.file(), path);
+    return ToSi(p, v);
+  }
+
+  std::vector<double> List(SweepParam p, const YAML::Node& n, const io::YamlFields& f, const std::string& path) {
+    std::vector<double> out;
+    if (!n.IsSequence() || n.size() == 0) throw MakeInputError(f.file(), path, "must be a non-empty list");
+    for (size_t i = 0; i < n.size(); ++i) out.push_back(Scalar(p, n[i], f, path + "[" + std::to_string(i) + "]"));
+    return out;
+  }
+
+ private:
+  SweepPlan& plan_;
+  std::string base_;
+  std::vector<std::string> pad_refs_, soil_refs_;
+};
+
+std::string FileText(const std::string& path) {
+  if (path.empty()) return "";
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+bool IsLanderParam(SweepParam p) {
+  return p == SweepParam::kRoll || p == SweepParam::kPitch || p == SweepParam::kPadSoils;
+}
+bool IsSinglePadOnly(SweepParam p) {
+  return p == SweepParam::kPad || p == SweepParam::kMass || p == SweepParam::kTilt || p == SweepParam::kZeta;
+}
+
+const char* TraceStorageName(TraceStorage t) {
+  return t == TraceStorage::kNone ? "none" : t == TraceStorage::kFull ? "full" : "decimated";
+}
+}  // namespace
+
+const char* SweepParamKey(SweepParam p) {
+  switch (p) {
+    case SweepParam::kPad: return "pad";
+    case SweepParam::kSoil: return "soil";
+    case SweepParam::kImpactSpeed: return "impact_speed_m_s";
+    case SweepParam::kMass: return "pad_mass_kg";
+    case SweepParam::kGravity: return "gravity_m_s2";
+    case SweepParam::kTilt: return "tilt_deg";
+    case SweepParam::kHorizontalSpeed: return "horizontal_speed_m_s";
+    case SweepParam::kZeta: return "zeta_N_cm3";
+    case SweepParam::kRoll: return "roll_deg";
+    case SweepParam::kPitch: return "pitch_deg";
+    case SweepParam::kPadSoils: return "pad_soils";
+  }
+  return "?";
+}
+
+std::string PaperGroundCase(const std::array<std::string, 4>& soil_names) {
+  for (const PaperCase& c : kPaperCases)
+    if (std::equal(soil_names.begin(), soil_names.end(), c.soils.begin())) return c.label;
+  return "";
+}
+
+uint64_t Fnv1a64(const std::string& text) {
+  uint64_t h = 1469598103934665603ull;
+  for (unsigned char c : text) {
+    h ^= c;
+    h *= 1099511628211ull;
+  }
+  return h;
+}
+
+double CounterUniform(uint64_t seed, uint64_t sample, uint64_t stream) {
+  auto mix = [](uint64_t z) {  // splitmix64 finaliser
+    z += 0x9e3779b97f4a7c15ull;
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    return z ^ (z >> 31);
+  };
+  const uint64_t z = mix(mix(mix(seed) ^ sample) ^ (stream * 0x632be59bd9b4e019ull));
+  return static_cast<double>(z >> 11) * 0x1.0p-53;
+}
+
+int64_t SweepPlan::size() const {
+  int64_t n = samples;
+  for (const SweepAxis& a : grid) n *= static_cast<int64_t>(a.values.size());
+  return n;
+}
+
+SweepDropParams SweepPlan::DropAt(int64_t index) const {
+  double value[kSweepParamCount] = {};
+  bool set[kSweepParamCount] = {};
+  for (int p = 0; p < kSweepParamCount; ++p)
+    if (fixed[p]) value[p] = *fixed[p], set[p] = true;
+  int64_t g = index / samples;
+  const uint64_t s = static_cast<uint64_t>(index % samples);
+  for (size_t k = grid.size(); k-- > 0;) {  // the last-listed axis varies fastest
+    const int64_t n = static_cast<int64_t>(grid[k].values.size());
+    value[static_cast<int>(grid[k].param)] = grid[k].values[g % n];
+    set[static_cast<int>(grid[k].param)] = true;
+    g /= n;
+  }
+  for (const SweepRandom& r : random) {
+    const double u = CounterUniform(seed, s, static_cast<uint64_t>(r.param));
+    double v;
+    if (r.choice) {
+      const size_t pick = std::min(r.values.size() - 1, static_cast<size_t>(u * r.values.size()));
+      v = r.values[pick];
+    } else {
+      v = r.low + (r.high - r.low) * u;
+    }
+    value[static_cast<int>(r.param)] = v;
+    set[static_cast<int>(r.param)] = true;
+  }
+  auto at = [&](SweepParam p) { return value[static_cast<int>(p)]; };
+  auto has = [&](SweepParam p) { return set[static_cast<int>(p)]; };
+  SweepDropParams d;
+  d.index = index;
+  d.pad = static_cast<int>(at(SweepParam::kPad));
+  d.soil = static_cast<int>(at(SweepParam::kSoil));
+  d.impact_speed_m_s = at(SweepParam::kImpactSpeed);
+  if (has(SweepParam::kMass)) d.mass_kg = at(SweepParam::kMass);
+  if (has(SweepParam::kGravity)) d.gravity_m_s2 = at(SweepParam::kGravity);
+  if (has(SweepParam::kTilt)) d.tilt_rad = at(SweepParam::kTilt);
+  if (has(SweepParam::kHorizontalSpeed)) d.horizontal_speed_m_s = at(SweepParam::kHorizontalSpeed);
+  if (has(SweepParam::kZeta)) d.zeta_N_m3 = at(SweepParam::kZeta);
+  if (has(SweepParam::kRoll)) d.roll_rad = at(SweepParam::kRoll);
+  if (has(SweepParam::kPitch)) d.pitch_rad = at(SweepParam::kPitch);
+  if (has(SweepParam::kPadSoils)) d.pad_soils = static_cast<int>(at(SweepParam::kPadSoils));
+  for (SweepParam p : kAll)
+    if (has(p)) d.given |= 1u << static_cast<int>(p);
+  return d;
+}
+
+std::string SweepPlan::DropId(int64_t index) const {
+  const int width = std::max<int>(1, static_cast<int>(std::to_string(std::max<int64_t>(size() - 1, 0)).size()));
+  std::string digits = std::to_string(index);
+  if (static_cast<int>(digits.size()) < width) digits.insert(0, width - digits.size(), '0');
+  return "d" + digits;
+}
+
+std::string SweepPlan::DigestText() const {
+  std::string s = "sweep-v1;samples=" + std::to_string(samples) + ";seed=" + std::to_string(seed) +
+                  ";traces=" + TraceStorageName(traces) + ";max=" + std::to_string(trace_max_samples) +
+                  ";rest=" + io::FormatNumber(rig.rest_duration_s) + ";rate=" + io::FormatNumber(rig.sample_rate_hz) + ";";
+  for (const io::PadSpec& p : pads) {
+    s += "pad:" + p.name + ":" + io::FormatNumber(p.mass_kg) + ":" +
+         (p.is_axisymmetric() ? io::FormatNumber(p.profile.thickness_m()) : std::string("mesh")) + ":";
+    for (const auto& pt : p.profile.points) s += io::FormatNumber(pt.x_m) + "/" + io::FormatNumber(pt.u_m) + ",";
+    // The pad file (mesh, segments, inertia, reference point) and a mesh pad's mesh shape free drops.
+    char hex[17];
+    std::snprintf(hex, sizeof hex, "%016" PRIx64, Fnv1a64(FileText(p.source) + '\0' + FileText(p.mesh_file)));
+    s += std::string(":files=") + hex + ";";
+  }
+  for (const PadSoilSet& set : pad_soil_sets)
+    s += "pad_soils:" + set.label + "=" + std::to_string(set.soil[0]) + "," + std::to_string(set.soil[1]) + "," +
+         std::to_string(set.soil[2]) + "," + std::to_string(set.soil[3]) + ";";
+  if (!pad_soil_sets.empty()) s += "pad_patch_half_width=" + io::FormatNumber(pad_patch_half_width_m) + ";";
+  for (const rft::SoilParameters& soil : soils)
+    s += "soil:" + soil.name + ":" + soil.atmosphere + ":" + io::FormatNumber(soil.zeta_N_m3) + ":" +
+         io::FormatNumber(soil.reference_gravity_m_s2) + ";";
+  for (int p = 0; p < kSweepParamCount; ++p)
+    if (fixed[p]) s += std::string("fixed:") + SweepParamKey(kAll[p]) + "=" + io::FormatNumber(*fixed[p]) + ";";
+  for (const SweepAxis& a : grid) {
+    s += std::string("grid:") + SweepParamKey(a.param) + "=";
+    for (double v : a.values) s += io::FormatNumber(v) + ",";
+    s += ";";
+  }
+  for (const SweepRandom& r : random) {
+    s += std::string("random:") + SweepParamKey(r.param) + (r.choice ? "=choice:" : "=uniform:") +
+         io::FormatNumber(r.low) + ":" + io::FormatNumber(r.high) + ":";
+    for (double v : r.values) s += io::FormatNumber(v) + ",";
+    s += ";";
+  }
+  if (model) s += model::ModelDigestText(*model);
+  if (lander) s += "lander:" + lander->name + ":" + lander_digest + ";";
+  return s;
+}
+
+SweepPlan LoadSweepPlan(const std::string& path, const std::string& model_override) {
+  const io::YamlFields f = io::YamlFields::LoadFile(path);
+  f.RequireSchemaVersion(1);
+  f.RequireOnly({"schema_version", "type", "name", "description", "model", "traces", "trace_max_samples",
+                 "rest_duration_s", "max_drop_evaluations", "max_drop_wall_time_s", "fixed", "grid", "random", "lander", "provenance"});
+  if (f.String("type") != "sweep") f.Fail("type", "must be 'sweep', got '" + f.String("type") + "'");
+  const std::string base = fs::path(path).parent_path().string();
+  SweepPlan plan;
+  plan.source = path;
+  plan.name = f.StringOr("name", fs::path(path).stem().string());
+  if (f.Has("lander")) {
+    const io::YamlFields l = f.Child("lander");
+    l.RequireOnly({"scenario", "pad_patch_half_width_m"});
+    std::string ref = l.String("scenario");
+    const bool is_path = ref.find('/') != std::string::npos || ref.ends_with(".yaml") || ref.ends_with(".yml");
+    if (is_path && fs::path(ref).is_relative()) ref = (fs::path(base) / ref).lexically_normal().string();
+    try {
+      plan.lander = scenario::LoadLanderScenario(io::ResolveCatalogFile("scenarios", ref));
+    } catch (const InputError& e) {
+      l.Fail("scenario", e.what());
+    }
+    // The digest covers every file the scenario reads: scenario, lander, pad (and mesh), soils.
+    const scenario::LanderSpec& spec = plan.lander->lander;
+    std::string files = FileText(plan.lander->source) + '\0' + FileText(spec.source) + '\0' +
+                        FileText(spec.pad.source) + '\0' + FileText(spec.pad.mesh_file);
+    files += '\0' + FileText(io::ResolveCatalogFile("soils", plan.lander->ground.default_soil));
+    for (const scenario::LanderPatchSpec& patch : plan.lander->ground.patches)
+      files += '\0' + FileText(io::ResolveCatalogFile("soils", patch.soil));
+    char hex[17];
+    std::snprintf(hex, sizeof hex, "%016" PRIx64, Fnv1a64(files));
+    plan.lander_digest = hex;
+    // The half width of the patches `pad_soils` lays under the pads: given, or the scenario's own
+    // under_pad patches' (unresolved there as (pad, half width)), or 0.08 m as the shipped scenarios.
+    for (const scenario::LanderPatchSpec& patch : plan.lander->ground.patches)
+      if (patch.polygon_W.size() == 1) plan.pad_patch_half_width_m = patch.polygon_W[0].y();
+    if (l.Has("pad_patch_half_width_m")) {
+      plan.pad_patch_half_width_m = l.Positive("pad_patch_half_width_m");
+      if (plan.pad_patch_half_width_m > 1.0)
+        l.Fail("pad_patch_half_width_m", "must be at most 1 m, got " + io::FormatNumber(plan.pad_patch_half_width_m));
+    }
+    for (const char* key : {"rest_duration_s", "trace_max_samples"})
+      if (f.Has(key)) f.Fail(key, "a lander sweep runs the scenario's simulation options; remove it");
+    if (f.Has("traces") && f.String("traces") != "none")
+      f.Fail("traces", "a lander sweep stores summaries only (traces: none); run `touchdown lander` for a trace");
+  }
+  const std::string traces = f.StringOr("traces", plan.lander ? "none" : "decimated");
+  if (traces == "none") plan.traces = TraceStorage::kNone;
+  else if (traces == "full") plan.traces = TraceStorage::kFull;
+  else if (traces == "decimated") plan.traces = TraceStorage::kDecimated;
+  else f.Fail("traces", "must be none, decimated or full, got '" + traces + "'");
+  if (f.Has("trace_max_samples")) plan.trace_max_samples = f.PositiveInt("trace_max_samples");
+  if (plan.trace_max_samples < 3) f.Fail("trace_max_samples", "must be at least 3");
+  plan.rig.rest_duration_s = f.Has("rest_duration_s") ? f.NonNegative("rest_duration_s") : 0.0;
+  if (plan.rig.rest_duration_s > 60.0) f.Fail("rest_duration_s", "must be at most 60 s");
+  plan.rig.integrator.max_wall_time_s =
+      f.Has("max_drop_wall_time_s") ? f.NonNegative("max_drop_wall_time_s") : kDefaultMaxDropWallTimeS;
+  if (!std::isfinite(plan.rig.integrator.max_wall_time_s))
+    f.Fail("max_drop_wall_time_s", "must be a finite number of seconds (0: no limit)");
+  plan.rig.integrator.max_rhs_evaluations = kDefaultMaxDropEvaluations;
+  if (f.Has("max_drop_evaluations")) {
+    const double n = f.NonNegative("max_drop_evaluations");
+    if (n != std::floor(n) || n > 1e15)
+      f.Fail("max_drop_evaluations", "must be a whole number of evaluations between 0 (no limit) and 1e15, got " +
+                                         io::FormatNumber(n));
+    plan.rig.integrator.max_rhs_evaluations = static_cast<long>(n);
+  }
+
+  // The model first: the soils are loaded through it.
+  std::string model_path;
+  if (f.Has("model")) {
+    if (!model_override.empty()) f.Fail("model", "given both here and with --model; keep one");
+    model_path = f.String("model");
+    if (fs::path(model_path).is_relative()) model_path = (fs::path(base) / model_path).lexically_normal().string();
+  } else {
+    model_path = model_override;
+  }
+  if (!model_path.empty()) plan.model = model::LoadModelFile(model_path);
+
+  Loader loader(plan, base);
+  bool seen[kSweepParamCount] = {};
+  auto claim = [&](const io::YamlFields& block, const std::string& key) -> SweepParam {
+    const std::optional<SweepParam> p = ParamFromKey(key);
+    if (!p) block.Fail(key, "unknown parameter (pad, soil, impact_speed_m_s, pad_mass_kg, gravity_m_s2, tilt_deg, "
+                            "horizontal_speed_m_s, zeta_N_cm3; lander sweeps: roll_deg, pitch_deg, pad_soils)");
+    if (seen[static_cast<int>(*p)]) block.Fail(key, "set in more than one of fixed, grid and random");
+    if (plan.lander && IsSinglePadOnly(*p))
+      block.Fail(key, "a single-pad parameter; a lander sweep varies impact_speed_m_s, horizontal_speed_m_s, "
+                      "roll_deg, pitch_deg, gravity_m_s2, soil and pad_soils");
+    if (!plan.lander && IsLanderParam(*p))
+      block.Fail(key, "a lander parameter: it needs a `lander: {scenario: ...}` block (single pads take tilt_deg)");
+    const SweepParam other = *p == SweepParam::kSoil ? SweepParam::kPadSoils : SweepParam::kSoil;
+    if ((*p == SweepParam::kSoil || *p == SweepParam::kPadSoils) && seen[static_cast<int>(other)])
+      block.Fail(key, "soil (the whole ground) and pad_soils (the soil under each pad) exclude each other; keep one");
+    seen[static_cast<int>(*p)] = true;
+    return *p;
+  };
+  if (f.Has("fixed")) {
+    const io::YamlFields block = f.Child("fixed");
+    for (const auto& item : block.node()) {
+      const std::string key = item.first.Scalar();
+      const SweepParam p = claim(block, key);
+      plan.fixed[static_cast<int>(p)] = loader.Scalar(p, item.second, block, block.Path(key));
+    }
+  }
+  if (f.Has("grid")) {
+    const io::YamlFields block = f.Child("grid");
+    for (const auto& item : block.node()) {
+      const std::string key = item.first.Scalar();
+      const SweepParam p = claim(block, key);
+      SweepAxis axis{p, {}};
+      if (item.second.IsMap() && !IsName(p)) {
+        const io::YamlFields range = block.Child(key);
+        range.RequireOnly({"from", "to", "count"});
+        const double from = range.Number("from"), to = range.Number("to");
+        const int count = range.PositiveInt("count");
+        if (count < 2 && from != to) range.Fail("count", "must be at least 2 when from != to");
+        if (count > kMaxGridCount)
+          range.Fail("count", "must be at most " + std::to_string(kMaxGridCount) + ", got " + std::to_string(count));
+        for (int i = 0; i < count; ++i) {
+          // Ends exact: from and to appear as written.
+          const double v = i == count - 1 ? to : from + (to - from) * i / (count - 1 > 0 ? count - 1 : 1);
+          CheckValue(p, v, f.file(), range.Path(i == count - 1 ? "to" : "from"));
+          axis.values.push_back(ToSi(p, v));
+        }
+      } else {
+        axis.values = loader.List(p, item.second, block, block.Path(key));
+      }
+      plan.grid.push_back(std::move(axis));
+    }
+  }
+  if (f.Has("random")) {
+    const io::YamlFields block = f.Child("random");
+    plan.samples = block.PositiveInt("samples");
+    if (!block.Has("seed")) block.Fail("seed", "missing (random samples need a seed to be reproducible)");
+    const double seed = block.Number("seed");
+    if (seed < 0 || seed != std::floor(seed) || seed > 9.0e15) block.Fail("seed", "must be a whole number >= 0");
+    plan.seed = static_cast<uint64_t>(seed);
+    for (const auto& item : block.node()) {
+      const std::string key = item.first.Scalar();
+      if (key == "samples" || key == "seed") continue;
+      const SweepParam p = claim(block, key);
+      const io::YamlFields spec = block.Child(key);
+      spec.RequireOnly({"uniform", "choice"});
+      SweepRandom r;
+      r.param = p;
+      if (spec.Has("uniform") == spec.Has("choice")) spec.Fail("uniform", "give exactly one of uniform and choice");
+      if (spec.Has("choice")) {
+        r.choice = true;
+        r.values = loader.List(p, spec.node()["choice"], spec, spec.Path("choice"));
+      } else {
+        if (IsName(p)) spec.Fail("uniform", "pads and soils take `choice`, not `uniform`");
+        const YAML::Node u = spec.node()["uniform"];
+        if (!u.IsSequence() || u.size() != 2) spec.Fail("uniform", "must be [low, high]");
+        const double lo = loader.Scalar(p, u[0], spec, spec.Path("uniform") + "[0]");
+        const double hi = loader.Scalar(p, u[1], spec, spec.Path("uniform") + "[1]");
+        if (!(lo < hi)) spec.Fail("uniform", "needs low < high");
+        r.low = lo;
+        r.high = hi;
+      }
+      plan.random.push_back(std::move(r));
+    }
+  }
+  if (!plan.lander)
+    for (SweepParam required : {SweepParam::kPad, SweepParam::kSoil, SweepParam::kImpactSpeed})
+      if (!seen[static_cast<int>(required)])
+        f.Fail(SweepParamKey(required), "not set in fixed, grid or random");
+  // Counted in floating point first: the int64 product could overflow.
+  double drops = static_cast<double>(plan.samples);
+  for (const SweepAxis& a : plan.grid) drops *= static_cast<double>(a.values.size());
+  if (!(drops <= static_cast<double>(kMaxSweepDrops)) || plan.size() <= 0)
+    f.Fail("grid", "the sweep has too many drops (" + io::FormatNumber(drops) + ", at most 2^40)");
+  if (plan.model)
+    for (rft::SoilParameters& soil : plan.soils) soil = model::ApplyModel(*plan.model, soil);
+
+  // A lander sweep checks its model against the scenario's soils now, not drop by drop.
+  const model::ModelFile* model = plan.model ? &*plan.model : nullptr;
+  if (plan.lander) {
+    plan.lander->model = plan.model;
+    try {
+      scenario::BuildLanderSetup(*plan.lander);  // the scenario's own soils under the model
+      for (const std::string& ref : plan.soil_refs)
+        model::MakeModelStressLaw3D(plan.lander->ground.law, io::LoadSoil(ref), plan.lander->gravity_m_s2, model);
+    } catch (const InputError& e) {
+      f.Fail("lander", e.what());
+    }
+  }
+  return plan;
+}
+
+}  // namespace touchdown::sweep

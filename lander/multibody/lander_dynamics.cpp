@@ -1,0 +1,385 @@
+#include "lander/multibody/lander_dynamics.h"
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/QR>
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "rft/deepest_point.h"
+#include "rft/entrained_mass.h"
+
+namespace touchdown::lander {
+
+namespace {
+using Mat = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 22, 22>;
+using Vec = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 22, 1>;
+
+Eigen::Matrix3d Skew(const Eigen::Vector3d& v) {
+  Eigen::Matrix3d s;
+  s << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
+  return s;
+}
+
+Eigen::Quaterniond QuatAt(const Eigen::Ref<const Eigen::VectorXd>& y, int i) {
+  return Eigen::Quaterniond(y[i], y[i + 1], y[i + 2], y[i + 3]).normalized();
+}
+
+
+// Probe speed for quasi-static wrenches: small enough that a speed-dependent (dynamic) term
+// is negligible, large enough to stay far from underflow.
+constexpr double kProbeSpeed = 1e-6;
+
+double PadRadius(const Leg& leg) {
+  const rft::SurfaceElements& s = leg.pad->surface;
+  if (s.HasBounds()) return s.max_vertex_radius_m;  // model data: measured once
+  return leg.pad->vertices_B.colwise().norm().maxCoeff();
+}
+
+// Linear-velocity Jacobian of the pad CoM (3 x nu) and of the joint centre, and their bias.
+void PadJacobians(const StateLayout& L, int i, const PadFrame& pf, const Eigen::Vector3d& w_B,
+                  double stroke_rate, Mat* J_C, Mat* J_J, Eigen::Vector3d* bias_C, Eigen::Vector3d* bias_J) {
+  J_J->setZero(3, L.nu);
+  J_J->block<3, 3>(0, 0).setIdentity();
+  J_J->block<3, 3>(0, 3) = -Skew(pf.r_BJ_W);
+  if (L.stroke_slot[i] >= 0) J_J->col(L.u_stroke(i)) = -pf.axis_W;
+  *J_C = *J_J;
+  J_C->block<3, 3>(0, L.u_w_P(i)) = -Skew(pf.c_JC_W);
+  *bias_J = w_B.cross(w_B.cross(pf.r_BJ_W)) - 2.0 * stroke_rate * w_B.cross(pf.axis_W);
+  *bias_C = *bias_J + pf.w_WP_W.cross(pf.w_WP_W.cross(pf.c_JC_W));
+}
+}  // namespace
+
+StateLayout::StateLayout(const LanderModel& model) {
+  for (int i = 0; i < kNumLegs; ++i) stroke_slot[i] = model.legs[i].absorber ? num_strokes++ : -1;
+  nq = 23 + num_strokes;
+  nu = 18 + num_strokes;
+  size = nq + nu + 1;
+}
+
+void FinishModel(LanderModel& model) {
+  if (!(model.body_mass_kg > 0.0)) throw std::invalid_argument("lander: body mass must be positive");
+  if (!(model.gravity_m_s2 >= 0.0)) throw std::invalid_argument("lander: gravity must be >= 0");
+  if (Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(model.body_inertia_B).eigenvalues().minCoeff() <= 0.0)
+    throw std::invalid_argument("lander: body inertia must be positive definite");
+  for (Leg& leg : model.legs) {
+    if (!leg.pad || !(leg.pad->mass_kg > 0.0) || leg.pad->surface.size() == 0)
+      throw std::invalid_argument("lander: every leg needs a pad with mass and a surface");
+    if ((leg.joint_B - leg.hip_B).norm() <= 0.0) throw std::invalid_argument("lander: leg of zero length");
+    if (leg.pad->vertices_B.cols() == 0)
+      throw std::invalid_argument("lander: every pad needs its vertices (geom::PadBody::vertices_B)");
+  }
+}
+
+LanderPose ComputePose(const LanderModel& model, const StateLayout& L, const Eigen::Ref<const Eigen::VectorXd>& y) {
+  LanderPose p;
+  p.R_WB = QuatAt(y, L.quat_B()).toRotationMatrix();
+  p.p_WB = y.segment<3>(L.p_B());
+  p.v_WB_W = y.segment<3>(L.v_B());
+  p.w_WB_W = y.segment<3>(L.w_B());
+  for (int i = 0; i < kNumLegs; ++i) {
+    const Leg& leg = model.legs[i];
+    PadFrame& f = p.pads[i];
+    const double s = L.stroke_slot[i] >= 0 ? y[L.stroke(i)] : 0.0;
+    const double sdot = L.stroke_slot[i] >= 0 ? y[L.stroke_rate(i)] : 0.0;
+    f.axis_W = p.R_WB * leg.axis_B();
+    f.r_BJ_W = p.R_WB * leg.joint_B - s * f.axis_W;
+    f.p_WJ = p.p_WB + f.r_BJ_W;
+    f.v_WJ_W = p.v_WB_W + p.w_WB_W.cross(f.r_BJ_W) - sdot * f.axis_W;
+    f.R_WP = QuatAt(y, L.quat_P(i)).toRotationMatrix();
+    f.w_WP_W = y.segment<3>(L.w_P(i));
+    f.c_JC_W = f.R_WP * leg.pad->com_B;
+  }
+  return p;
+}
+
+double PadDepth(const LanderModel& model, const rft::Terrain& terrain, int leg, const PadFrame& pad) {
+  const geom::PadBody& body = *model.legs[leg].pad;
+  return rft::DeepestVertexDepth(geom::DeepestPointCandidates(body, *terrain.surface), pad.R_WP, pad.p_WJ,
+                                 *terrain.surface);
+}
+
+rft::ContactWrench QuasiStaticWrench(const LanderModel& model, const rft::Terrain& terrain, int leg, const PadFrame& pad,
+                                     const Eigen::Vector3d& direction_W) {
+  rft::PadKinematics k{pad.R_WP, pad.p_WJ, kProbeSpeed * direction_W.normalized(), Eigen::Vector3d::Zero()};
+  const int soil = terrain.SoilAt(pad.p_WJ.x(), pad.p_WJ.y());
+  return rft::ComputeContactWrench(model.legs[leg].pad->surface, k, *terrain.surface, *terrain.soils[soil].law);
+}
+
+namespace {
+struct Assembly {
+  Mat M;
+  Vec Q;
+  std::array<Mat, kNumLegs> J_J;
+  std::array<Eigen::Vector3d, kNumLegs> bias_J;
+};
+
+// Mass matrix and generalised forces without constraint forces. Fills e->soil, leg forces and
+// the dissipation of free pads, dampers and crushing.
+void Assemble(const LanderModel& model, const StateLayout& L, const rft::Terrain& terrain, const LanderModes& modes,
+              const Eigen::Ref<const Eigen::VectorXd>& y, LanderEvaluation* e, Assembly* a) {
+  const LanderPose& p = e->pose;
+  const Eigen::Vector3d g(0, 0, -model.gravity_m_s2);
+  a->M.setZero(L.nu, L.nu);
+  a->Q.setZero(L.nu);
+  a->M.block<3, 3>(0, 0).diagonal().setConstant(model.body_mass_kg);
+  const Eigen::Matrix3d I_B = p.R_WB * model.body_inertia_B * p.R_WB.transpose();
+  a->M.block<3, 3>(3, 3) = I_B;
+  a->Q.segment<3>(0) = model.body_mass_kg * g;
+  a->Q.segment<3>(3) = -p.w_WB_W.cross(I_B * p.w_WB_W);
+  e->dissipation_W = 0.0;
+  Mat J_C;
+  Eigen::Vector3d bias_C;
+  for (int i = 0; i < kNumLegs; ++i) {
+    const Leg& leg = model.legs[i];
+    const PadFrame& f = p.pads[i];
+    const double m = leg.pad->mass_kg;
+    const bool has_stroke = L.stroke_slot[i] >= 0;
+    const double s = has_stroke ? y[L.stroke(i)] : 0.0;
+    const double sdot = has_stroke ? y[L.stroke_rate(i)] : 0.0;
+    PadJacobians(L, i, f, p.w_WB_W, sdot, &J_C, &a->J_J[i], &bias_C, &a->bias_J[i]);
+    a->M.noalias() += m * J_C.transpose() * J_C;
+    const Eigen::Matrix3d I_P = f.R_WP * leg.pad->inertia_com_B * f.R_WP.transpose();
+    a->M.block<3, 3>(L.u_w_P(i), L.u_w_P(i)) += I_P;
+
+    // Soil: RFT on a free pad in contact; a held pad's wrench is a constraint force (later).
+    rft::ContactWrench& w = e->soil[i];
+    w = rft::ContactWrench{};
+    if (modes.pad[i] == PadMode::kFree && PadDepth(model, terrain, i, f) > 0.0) {
+      rft::PadKinematics k{f.R_WP, f.p_WJ, f.v_WJ_W, f.w_WP_W};
+      const double speed = f.v_WJ_W.norm() + f.w_WP_W.norm() * PadRadius(leg);
+      const int soil = terrain.SoilAt(f.p_WJ.x(), f.p_WJ.y());
+      const rft::StressLaw3D& law = *terrain.soils[soil].law;
+      w = rft::ComputeContactWrench(leg.pad->surface, k, *terrain.surface, law);
+      if (speed < kSoilRampSpeed) {
+        w.force_W *= speed / kSoilRampSpeed;
+        w.moment_W *= speed / kSoilRampSpeed;
+      }
+      e->dissipation_W -= w.force_W.dot(f.v_WJ_W) + w.moment_W.dot(f.w_WP_W);
+      // added_mass (rft/entrained_mass.h): the entrained cone moves with the vertical velocity of
+      // the pad's centre of mass, as in the free drop: a mass m_a on the row e_z^T J_C, with the
+      // accretion force -max(dm_a/dt, 0) v_z (grains join at rest, leave with the pad) and the
+      // kinetic energy lost, |dm_a/dt| v_z^2 / 2.
+      if (law.added_mass_density_kg_m3() > 0.0) {
+        const rft::EntrainedMass ea =
+            rft::EntrainedCone(law.added_mass_density_kg_m3(), w.penetration_m, w.penetration_rate_m_s,
+                               w.footprint_area_m2, w.footprint_area_rate_m2_s);
+        const double v_z = (f.v_WJ_W + f.w_WP_W.cross(f.c_JC_W)).z();
+        const double force_z = -ea.mass_kg * bias_C.z() - std::max(ea.rate_kg_s, 0.0) * v_z;
+        for (int r = 0; r < L.nu; ++r) {  // M += m_a J_z^T J_z, Q += J_z^T force_z (no temporaries)
+          a->Q[r] += J_C(2, r) * force_z;
+          for (int c = 0; c < L.nu; ++c) a->M(r, c) += ea.mass_kg * J_C(2, r) * J_C(2, c);
+        }
+        e->dissipation_W += 0.5 * std::abs(ea.rate_kg_s) * v_z * v_z;
+      }
+    }
+    const Eigen::Vector3d F = m * g + w.force_W - m * bias_C;
+    a->Q.noalias() += J_C.transpose() * F;
+    Eigen::Vector3d tau = w.moment_W - f.c_JC_W.cross(w.force_W) - f.w_WP_W.cross(I_P * f.w_WP_W);
+
+    // Cone limit of the ball joint: compliant stop beyond the half-angle.
+    if (leg.cone) {
+      const Eigen::Vector3d zB = p.R_WB.col(2), zP = f.R_WP.col(2);
+      const Eigen::Vector3d cr = zB.cross(zP);
+      const double theta = std::atan2(cr.norm(), zB.dot(zP));
+      if (theta > leg.cone->half_angle_rad && cr.norm() > 0.0) {
+        const Eigen::Vector3d n = cr.normalized();
+        const double rate = n.dot(f.w_WP_W - p.w_WB_W);
+        const double torque = leg.cone->stiffness_N_m_rad * (theta - leg.cone->half_angle_rad) +
+                              leg.cone->damping_N_m_s_rad * rate;
+        tau -= torque * n;
+        a->Q.segment<3>(3) += torque * n;
+        e->dissipation_W += leg.cone->damping_N_m_s_rad * rate * rate;
+      }
+    }
+    a->Q.segment<3>(L.u_w_P(i)) += tau;
+
+    // Shock absorber: generalised force on the stroke (compression) coordinate.
+    e->leg_force_N[i] = 0.0;
+    if (has_stroke) {
+      const ShockAbsorber& ab = *leg.absorber;
+      double force = 0.0;
+      if (ab.kind == ShockAbsorber::Kind::kSpringDamper) {
+        force = ab.stiffness_N_m * s + ab.damping_N_s_m * sdot;
+        e->dissipation_W += ab.damping_N_s_m * sdot * sdot;
+      } else if (modes.stroke[i] == StrokeMode::kFree) {
+        force = ab.crush_force_N;
+        e->dissipation_W += ab.crush_force_N * sdot;
+      }
+      e->leg_force_N[i] = force;
+      a->Q[L.u_stroke(i)] -= force;
+    }
+  }
+}
+}  // namespace
+
+void EvaluateLander(const LanderModel& model, const StateLayout& L, const rft::Terrain& terrain, const LanderModes& modes,
+                    const Eigen::Ref<const Eigen::VectorXd>& y, LanderEvaluation* e) {
+  e->pose = ComputePose(model, L, y);
+  Assembly a;
+  Assemble(model, L, terrain, modes, y, e, &a);
+  const Eigen::LLT<Mat> llt(a.M);
+  Vec u_dot = llt.solve(a.Q);
+
+  // Constraints of held pads and locked crushable strokes.
+  int rows = 0;
+  for (int i = 0; i < kNumLegs; ++i) {
+    if (modes.pad[i] == PadMode::kHeld) rows += 6;
+    if (L.stroke_slot[i] >= 0 && model.legs[i].absorber->kind == ShockAbsorber::Kind::kCrushable &&
+        modes.stroke[i] != StrokeMode::kFree)
+      rows += 1;
+  }
+  e->constrained = rows > 0;
+  if (rows > 0) {
+    Eigen::MatrixXd G = Eigen::MatrixXd::Zero(rows, L.nu);
+    Eigen::VectorXd bias = Eigen::VectorXd::Zero(rows);
+    int r = 0;
+    std::array<int, kNumLegs> pad_row{-1, -1, -1, -1}, stroke_row{-1, -1, -1, -1};
+    for (int i = 0; i < kNumLegs; ++i) {
+      if (modes.pad[i] == PadMode::kHeld) {
+        pad_row[i] = r;
+        G.block(r, 0, 3, L.nu) = a.J_J[i];
+        bias.segment<3>(r) = a.bias_J[i];
+        G.block<3, 3>(r + 3, L.u_w_P(i)).setIdentity();
+        r += 6;
+      }
+      if (L.stroke_slot[i] >= 0 && model.legs[i].absorber->kind == ShockAbsorber::Kind::kCrushable &&
+          modes.stroke[i] != StrokeMode::kFree) {
+        stroke_row[i] = r;
+        G(r++, L.u_stroke(i)) = 1.0;
+      }
+    }
+    const Eigen::MatrixXd MinvGt = llt.solve(G.transpose());
+    const Eigen::MatrixXd A = G * MinvGt;
+    const Eigen::VectorXd rhs = -bias - G * Eigen::VectorXd(u_dot);
+    // Minimum-norm multipliers: four held pads are statically indeterminate.
+    const Eigen::VectorXd lambda = A.completeOrthogonalDecomposition().solve(rhs);
+    u_dot += MinvGt * lambda;
+    for (int i = 0; i < kNumLegs; ++i) {
+      if (pad_row[i] >= 0) {
+        e->soil[i].force_W = lambda.segment<3>(pad_row[i]);
+        e->soil[i].moment_W = lambda.segment<3>(pad_row[i] + 3);
+      }
+      // A locked stroke: the generalised constraint force is -(axial compression force).
+      if (stroke_row[i] >= 0) e->leg_force_N[i] = -lambda[stroke_row[i]];
+    }
+  }
+  e->u_dot = u_dot;
+}
+
+void StateDerivative(const StateLayout& L, const Eigen::Ref<const Eigen::VectorXd>& y, const LanderEvaluation& e,
+                     Eigen::Ref<Eigen::VectorXd> ydot) {
+  auto quat_rate = [&](int qi, const Eigen::Vector3d& w) {
+    // dq/dt = 1/2 [0, w_W] (x) q for a world-frame angular velocity.
+    const Eigen::Quaterniond q(y[qi], y[qi + 1], y[qi + 2], y[qi + 3]);
+    const Eigen::Quaterniond wq(0.0, w.x(), w.y(), w.z());
+    const Eigen::Quaterniond d = wq * q;
+    ydot[qi] = 0.5 * d.w();
+    ydot.segment<3>(qi + 1) = 0.5 * d.vec();
+  };
+  ydot.segment<3>(L.p_B()) = y.segment<3>(L.v_B());
+  quat_rate(L.quat_B(), y.segment<3>(L.w_B()));
+  for (int i = 0; i < kNumLegs; ++i) {
+    quat_rate(L.quat_P(i), y.segment<3>(L.w_P(i)));
+    if (L.stroke_slot[i] >= 0) ydot[L.stroke(i)] = y[L.stroke_rate(i)];
+  }
+  ydot.segment(L.nq, L.nu) = e.u_dot;
+  ydot[L.work()] = e.dissipation_W;
+}
+
+double KineticEnergy(const LanderModel& model, const StateLayout& L, const Eigen::Ref<const Eigen::VectorXd>& y) {
+  const LanderPose p = ComputePose(model, L, y);
+  double T = 0.5 * model.body_mass_kg * p.v_WB_W.squaredNorm() +
+             0.5 * p.w_WB_W.dot(p.R_WB * model.body_inertia_B * p.R_WB.transpose() * p.w_WB_W);
+  for (int i = 0; i < kNumLegs; ++i) {
+    const PadFrame& f = p.pads[i];
+    const Eigen::Vector3d v_C = f.v_WJ_W + f.w_WP_W.cross(f.c_JC_W);
+    T += 0.5 * model.legs[i].pad->mass_kg * v_C.squaredNorm() +
+         0.5 * f.w_WP_W.dot(f.R_WP * model.legs[i].pad->inertia_com_B * f.R_WP.transpose() * f.w_WP_W);
+  }
+  return T;
+}
+
+double PotentialEnergy(const LanderModel& model, const StateLayout& L, const Eigen::Ref<const Eigen::VectorXd>& y) {
+  const LanderPose p = ComputePose(model, L, y);
+  const double g = model.gravity_m_s2;
+  double V = model.body_mass_kg * g * p.p_WB.z();
+  for (int i = 0; i < kNumLegs; ++i) {
+    const Leg& leg = model.legs[i];
+    const PadFrame& f = p.pads[i];
+    V += leg.pad->mass_kg * g * (f.p_WJ + f.c_JC_W).z();
+    if (L.stroke_slot[i] >= 0 && leg.absorber->kind == ShockAbsorber::Kind::kSpringDamper)
+      V += 0.5 * leg.absorber->stiffness_N_m * y[L.stroke(i)] * y[L.stroke(i)];
+    if (leg.cone) {
+      const Eigen::Vector3d zB = p.R_WB.col(2), zP = f.R_WP.col(2);
+      const double theta = std::atan2(zB.cross(zP).norm(), zB.dot(zP));
+      const double over = std::max(theta - leg.cone->half_angle_rad, 0.0);
+      V += 0.5 * leg.cone->stiffness_N_m_rad * over * over;
+    }
+  }
+  return V;
+}
+
+double ProjectOntoConstraints(const LanderModel& model, const StateLayout& L, const LanderModes& modes,
+                              Eigen::Ref<Eigen::VectorXd> y) {
+  LanderEvaluation e;
+  e.pose = ComputePose(model, L, y);
+  // Only the mass matrix and the constraint Jacobian are needed: assemble with free modes
+  // and no terrain contact by evaluating the Jacobians directly.
+  Mat M = Mat::Zero(L.nu, L.nu);
+  M.block<3, 3>(0, 0).diagonal().setConstant(model.body_mass_kg);
+  M.block<3, 3>(3, 3) = e.pose.R_WB * model.body_inertia_B * e.pose.R_WB.transpose();
+  int rows = 0;
+  for (int i = 0; i < kNumLegs; ++i) {
+    if (modes.pad[i] == PadMode::kHeld) rows += 6;
+    if (L.stroke_slot[i] >= 0 && model.legs[i].absorber->kind == ShockAbsorber::Kind::kCrushable &&
+        modes.stroke[i] != StrokeMode::kFree)
+      rows += 1;
+  }
+  Eigen::MatrixXd G = Eigen::MatrixXd::Zero(rows, L.nu);
+  int r = 0;
+  for (int i = 0; i < kNumLegs; ++i) {
+    const PadFrame& f = e.pose.pads[i];
+    const double sdot = L.stroke_slot[i] >= 0 ? y[L.stroke_rate(i)] : 0.0;
+    Mat J_C, J_J;
+    Eigen::Vector3d bC, bJ;
+    PadJacobians(L, i, f, e.pose.w_WB_W, sdot, &J_C, &J_J, &bC, &bJ);
+    M.noalias() += model.legs[i].pad->mass_kg * J_C.transpose() * J_C;
+    M.block<3, 3>(L.u_w_P(i), L.u_w_P(i)) += f.R_WP * model.legs[i].pad->inertia_com_B * f.R_WP.transpose();
+    if (modes.pad[i] == PadMode::kHeld) {
+      G.block(r, 0, 3, L.nu) = J_J;
+      G.block<3, 3>(r + 3, L.u_w_P(i)).setIdentity();
+      r += 6;
+    }
+    if (L.stroke_slot[i] >= 0 && model.legs[i].absorber->kind == ShockAbsorber::Kind::kCrushable &&
+        modes.stroke[i] != StrokeMode::kFree)
+      G(r++, L.u_stroke(i)) = 1.0;
+  }
+  if (rows == 0) return 0.0;
+  const double T0 = KineticEnergy(model, L, y);
+  // u+ = u - M^-1 G^T (G M^-1 G^T)^+ G u: the M-orthogonal projection onto G u = 0.
+  const Eigen::LLT<Mat> llt(M);
+  const Eigen::VectorXd u = y.segment(L.nq, L.nu);
+  const Eigen::MatrixXd MinvGt = llt.solve(G.transpose());
+  const Eigen::VectorXd mu = (G * MinvGt).completeOrthogonalDecomposition().solve(G * u);
+  y.segment(L.nq, L.nu) = u - MinvGt * mu;
+  return T0 - KineticEnergy(model, L, y);
+}
+
+void NormalizeQuaternions(const StateLayout& L, Eigen::Ref<Eigen::VectorXd> y) {
+  y.segment<4>(L.quat_B()).normalize();
+  for (int i = 0; i < kNumLegs; ++i) y.segment<4>(L.quat_P(i)).normalize();
+}
+
+Attitude BodyAttitude(const Eigen::Matrix3d& R) {
+  // R = Rz(yaw) Ry(theta) Rx(phi) in the z-up, y-left body frame; the aerospace pitch (nose
+  // up positive, y to the right) is -theta, and the roll about x is the same in both frames.
+  Attitude a;
+  a.roll_rad = std::atan2(R(2, 1), R(2, 2));
+  a.pitch_rad = std::asin(std::clamp(R(2, 0), -1.0, 1.0));  // -theta = asin(R20)
+  a.yaw_rad = std::atan2(R(1, 0), R(0, 0));
+  a.tilt_rad = std::acos(std::clamp(R(2, 2), -1.0, 1.0));
+  return a;
+}
+
+}  // namespace touchdown::lander

@@ -1,0 +1,133 @@
+#pragma once
+// Equations of motion of the four-legged lander in reduced (joint) coordinates: the ball
+// joints and rigid legs hold by construction, so there is nothing to drift.
+//
+//   positions  q = [p_WB (3), quat_WB (4), quat_WP_i (4 x 4), s_k (one per absorber leg)]
+//   speeds     u = [v_WB_W (3), w_WB_W (3), w_WP_i_W (4 x 3), ds_k/dt]
+//   y = [q, u, W]   W: work dissipated so far (soil, dampers, crushing, capture) [J]
+//
+// Every body b has a centre-of-mass velocity v_b = J_b u and an angular velocity w_b = S_b u
+// (S_b a constant selection: angular velocities are world-frame speeds), so
+//   M(q) du/dt = sum_b J_b^T (F_b - m_b Jdot_b u) + S_b^T (tau_b - w_b x I_b w_b)
+// with M = sum_b m_b J_b^T J_b + S_b^T I_b S_b, solved by Cholesky (Eigen).
+//
+// A pad held by the soil (rest handling, docs/lander_dynamics.md) adds six constraints: its
+// joint centre and its attitude do not move. A crushable absorber that is not crushing adds
+// one (its stroke is locked). Constrained accelerations and the constraint forces come from
+//   (G M^-1 G^T) lambda = -Gdot u - G M^-1 Q,   M du/dt = Q + G^T lambda
+// solved in the minimum-norm sense (four held pads over-constrain the lander; the
+// minimum-norm load split is the one reported).
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <array>
+#include <vector>
+
+#include "lander/multibody/lander_model.h"
+#include "rft/soil_map.h"
+#include "rft/contact_wrench.h"
+
+namespace touchdown::lander {
+
+// Index layout of the state vector for a model (absorber legs get a stroke coordinate).
+struct StateLayout {
+  explicit StateLayout(const LanderModel& model);
+  int stroke_slot[kNumLegs];  // index among strokes, -1 for a rigid leg
+  int num_strokes = 0;
+  int nq = 0, nu = 0, size = 0;
+  int p_B() const { return 0; }
+  int quat_B() const { return 3; }
+  int quat_P(int leg) const { return 7 + 4 * leg; }
+  int stroke(int leg) const { return 23 + stroke_slot[leg]; }
+  int v_B() const { return nq; }
+  int w_B() const { return nq + 3; }
+  int w_P(int leg) const { return nq + 6 + 3 * leg; }
+  int stroke_rate(int leg) const { return nq + 18 + stroke_slot[leg]; }
+  int work() const { return nq + nu; }
+  // Column of a generalised speed in u (not in y).
+  int u_w_P(int leg) const { return 6 + 3 * leg; }
+  int u_stroke(int leg) const { return 18 + stroke_slot[leg]; }
+};
+
+enum class PadMode { kFree, kHeld };
+
+// Below this speed (joint centre plus spin times pad radius) a free pad's soil wrench is scaled
+// by speed / kSoilRampSpeed. Why: quasi-static RFT depends on the direction of motion only, so at
+// v -> 0 the force keeps its full size while its direction follows rounding noise (a pad whose
+// capture was undone sits at |v| ~ 1e-11 with a horizontal part that turns its support into
+// sideways drag and back: a discontinuity no integrator steps through - it failed case B). The
+// ramp makes the force continuous through v = 0 and changes nothing above 0.1 mm/s; a pad that
+// slows below it is offered a capture (lander_simulation.h), so no creep results.
+inline constexpr double kSoilRampSpeed = 1e-4;
+enum class StrokeMode { kFree, kLocked, kBottomed };  // crushable absorbers only
+
+// Discrete state of the hybrid system, changed only at events.
+struct LanderModes {
+  std::array<PadMode, kNumLegs> pad{PadMode::kFree, PadMode::kFree, PadMode::kFree, PadMode::kFree};
+  std::array<StrokeMode, kNumLegs> stroke{StrokeMode::kLocked, StrokeMode::kLocked, StrokeMode::kLocked,
+                                          StrokeMode::kLocked};
+};
+
+struct PadFrame {
+  Eigen::Matrix3d R_WP;
+  Eigen::Vector3d p_WJ, v_WJ_W, w_WP_W;  // joint centre, its velocity, pad angular velocity
+  Eigen::Vector3d r_BJ_W;                // body CoM to joint centre
+  Eigen::Vector3d axis_W;                // leg axis (hip to foot)
+  Eigen::Vector3d c_JC_W;                // joint centre to pad CoM
+};
+
+struct LanderPose {
+  Eigen::Matrix3d R_WB;
+  Eigen::Vector3d p_WB, v_WB_W, w_WB_W;
+  std::array<PadFrame, kNumLegs> pads;
+};
+
+// Everything one evaluation of the equations of motion produces.
+struct LanderEvaluation {
+  LanderPose pose;
+  Eigen::VectorXd u_dot;                              // du/dt
+  std::array<rft::ContactWrench, kNumLegs> soil;      // soil on pad, moment about the joint centre
+  std::array<double, kNumLegs> leg_force_N{};         // axial absorber force, compression positive
+  double dissipation_W = 0.0;                         // dW/dt
+  bool constrained = false;                           // any held pad or locked stroke
+};
+
+// Pose and velocities of all bodies from y.
+LanderPose ComputePose(const LanderModel& model, const StateLayout& layout, const Eigen::Ref<const Eigen::VectorXd>& y);
+
+// Depth of each pad's lowest vertex below the free surface [m] (negative: above).
+double PadDepth(const LanderModel& model, const rft::Terrain& terrain, int leg, const PadFrame& pad);
+
+// The equations of motion (pure function of model, terrain, modes and state).
+void EvaluateLander(const LanderModel& model, const StateLayout& layout, const rft::Terrain& terrain,
+                    const LanderModes& modes, const Eigen::Ref<const Eigen::VectorXd>& y, LanderEvaluation* out);
+// dy/dt from an evaluation (quaternion kinematics, du/dt, dW/dt).
+void StateDerivative(const StateLayout& layout, const Eigen::Ref<const Eigen::VectorXd>& y,
+                     const LanderEvaluation& e, Eigen::Ref<Eigen::VectorXd> ydot);
+
+// Kinetic energy, and potential energy (gravity, absorber springs, cone stops) [J].
+double KineticEnergy(const LanderModel& model, const StateLayout& layout, const Eigen::Ref<const Eigen::VectorXd>& y);
+double PotentialEnergy(const LanderModel& model, const StateLayout& layout, const Eigen::Ref<const Eigen::VectorXd>& y);
+
+// Soil wrench on a pad at rest that starts to move along `direction` (the quasi-static
+// capacity in that direction).
+rft::ContactWrench QuasiStaticWrench(const LanderModel& model, const rft::Terrain& terrain, int leg, const PadFrame& pad,
+                                     const Eigen::Vector3d& direction_W);
+
+// Projects the speeds onto the constraints of `modes` with the least kinetic-energy change (a
+// perfectly plastic capture). Returns the kinetic energy removed [J].
+double ProjectOntoConstraints(const LanderModel& model, const StateLayout& layout, const LanderModes& modes,
+                              Eigen::Ref<Eigen::VectorXd> y);
+
+// Renormalises every quaternion in y (done at each event; the drift is integration error,
+// not a joint violation).
+void NormalizeQuaternions(const StateLayout& layout, Eigen::Ref<Eigen::VectorXd> y);
+
+// Body attitude angles, aerospace convention in the body frame of this model: roll > 0 right
+// side (pads 2, 3) down; pitch > 0 nose (pads 1, 2) up; tilt = angle of z_B from vertical.
+struct Attitude {
+  double roll_rad = 0.0, pitch_rad = 0.0, yaw_rad = 0.0, tilt_rad = 0.0;
+};
+Attitude BodyAttitude(const Eigen::Matrix3d& R_WB);
+
+}  // namespace touchdown::lander

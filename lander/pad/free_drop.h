@@ -1,0 +1,89 @@
+#pragma once
+// A free footpad: one rigid body with 6 degrees of freedom (quaternion attitude) dropped on
+// the soil with any tilt, horizontal velocity and spin - the motions the paper leaves to future
+// work. The soil wrench is the 3D RFT contact (rft/contact_wrench.h) about the pad's reference
+// point; gravity acts at the centre of mass. Newton-Euler about the centre of mass.
+//
+// Phases as in the rig drop, each ended by a CVODE root:
+//   approach  free flight from `approach_clearance_m` above the surface (lowest point) to touchdown;
+//   stroke    until the pad's speed (centre of mass, plus spin times the pad's size) falls below
+//             `rest_speed_m_s`; the pad then rests if the soil's quasi-static capacity for
+//             further downward motion carries its weight, else the stroke goes on.
+// RFT forces do not vanish as the speed does (they depend on its direction only), so the pad
+// reaches rest in finite time; the threshold only stops the integrator from chasing the
+// direction of a vanishing velocity.
+//
+// A law with added mass (StressLaw3D::added_mass_density_kg_m3, rft/entrained_mass.h) adds the
+// entrained cone to the vertical inertia of the centre of mass (see free_drop.cpp); its
+// accretion loss counts in dissipated_energy_J, so the energy balance closes as without it.
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "footpad_geom/pad_body.h"
+#include "lander/integ/cvode_integrator.h"
+#include "rft/ground.h"
+#include "rft/stress_law_3d.h"
+
+namespace touchdown::pad {
+
+struct FreeDropInput {
+  double impact_speed_m_s = 0.0;      // vertical speed of the centre of mass at touchdown, downward
+  double horizontal_speed_m_s = 0.0;  // along +x of W
+  double tilt_rad = 0.0;              // at release, about tilt_axis
+  std::string tilt_axis = "x";
+  Eigen::Vector3d omega_W = Eigen::Vector3d::Zero();  // angular velocity at release [rad/s]
+  double gravity_m_s2 = 9.81;
+};
+
+struct FreeDropOptions {
+  double sample_rate_hz = 1000.0;
+  double approach_clearance_m = 0.005;
+  double rest_speed_m_s = 1e-3;
+  double max_duration_s = 5.0;
+  // rtol 1e-8: the energy balance closes to 1e-6 (8e-7 measured on the 5k-triangle bench drops; at
+  // 1e-7 it is 2e-6). The absolute tolerances are rtol times each state's scale (free_drop.cpp,
+  // WithScaledTolerances), so `atol` is not used; component_atol, when given (14 states: p_WC,
+  // q_WB, v_WC, w_B, work), replaces them.
+  // A Jacobian (14 right-hand sides) only when Newton fails to converge, not every 51 steps: on the
+  // 5k-triangle bench drops 12-18 % fewer right-hand sides, same results to 1e-7.
+  integ::IntegratorOptions integrator{.rtol = 1e-8,
+                                      .atol = 1e-11,
+                                      .max_num_steps = 20000,
+                                      .stiff = true,
+                                      .max_steps_between_jacobians = 1000,
+                                      .component_atol = {}};
+};
+
+struct FreeDropSample {
+  double t_s = 0.0;              // since touchdown
+  double penetration_m = 0.0;    // depth of the lowest surface point
+  double velocity_m_s = 0.0;     // centre of mass, downward
+  double force_N = 0.0;          // vertical soil force on the pad, upward (with the law's added mass: the
+                                 // force from below, soil and entrained grains, m (a_z + g), as the rig's
+                                 // load cell records it)
+  double force_x_N = 0.0;        // horizontal soil force along x
+  double horizontal_m = 0.0;     // centre-of-mass travel along x since touchdown
+  double tilt_deg = 0.0;         // pad z axis from the vertical
+};
+
+struct FreeDropResult {
+  double final_penetration_m = 0.0;
+  double peak_force_N = 0.0;  // vertical
+  double time_to_rest_s = 0.0;
+  double max_deceleration_m_s2 = 0.0;  // of the centre of mass, vertical
+  double impact_energy_J = 0.0;        // kinetic energy (translation + rotation) at touchdown
+  double gravity_work_J = 0.0;         // m g times the centre of mass's drop from touchdown to rest
+  double dissipated_energy_J = 0.0;    // work done against the soil wrench
+  double touchdown_tilt_deg = 0.0;
+  double final_tilt_deg = 0.0;
+  double horizontal_travel_m = 0.0;    // centre of mass, in the horizontal plane, touchdown to rest
+  double final_kinetic_energy_J = 0.0;  // at the rest event (below the threshold)
+  std::vector<FreeDropSample> trace;
+  integ::IntegratorSummary solver;
+};
+
+FreeDropResult RunFreeDrop(const geom::PadBody& body, const rft::StressLaw3D& law, const rft::GroundSurface& ground,
+                           const FreeDropInput& input, const FreeDropOptions& options = {});
+
+}  // namespace touchdown::pad

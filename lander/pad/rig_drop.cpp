@@ -1,0 +1,163 @@
+#include "lander/pad/rig_drop.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace touchdown::pad {
+
+namespace {
+enum Index { kDepth = 0, kVelocity = 1, kWork = 2, kAccretion = 3 };
+constexpr int kStateSize = 4;
+
+void RequireValid(const RigDropInput& in, const RigDropOptions& options) {
+  if (!(in.mass_kg > 0.0 && std::isfinite(in.mass_kg)))
+    throw std::invalid_argument("RunRigDrop: mass must be positive and finite");
+  if (!(in.gravity_m_s2 > 0.0 && std::isfinite(in.gravity_m_s2)))
+    throw std::invalid_argument("RunRigDrop: gravity must be positive and finite");
+  if (!(in.impact_speed_m_s >= 0.0 && std::isfinite(in.impact_speed_m_s)))
+    throw std::invalid_argument("RunRigDrop: impact speed must be >= 0 and finite");
+  if (!(options.sample_rate_hz > 0.0) || !(options.rest_duration_s >= 0.0) ||
+      !(options.max_stroke_duration_s > 0.0) || !(options.approach_clearance_m >= 0.0))
+    throw std::invalid_argument("RunRigDrop: invalid options");
+}
+}  // namespace
+
+void RigStrokeDerivative(const RigDropInput& in, const VerticalSoilResponse& response,
+                         const Eigen::Ref<const Eigen::VectorXd>& y, Eigen::Ref<Eigen::VectorXd> ydot) {
+  const double d = y[kDepth];
+  const double v = std::max(y[kVelocity], 0.0);  // RFT resists only motion into the soil
+  const bool in_soil = d > 0.0;
+  const double force = in_soil ? response.Force(d, v) : 0.0;
+  const double m_a = in_soil ? response.AddedMass(d) : 0.0;
+  const double m_a_slope = in_soil ? response.AddedMassSlope(d) : 0.0;
+  const double accretion = v * v * m_a_slope;  // momentum given per unit time to grains picked up
+  ydot[kDepth] = y[kVelocity];
+  ydot[kVelocity] = (in.mass_kg * in.gravity_m_s2 - force - accretion) / (in.mass_kg + m_a);
+  ydot[kWork] = force * v + 0.5 * accretion * v;
+  if (ydot.size() > kAccretion) ydot[kAccretion] = 0.5 * accretion * v;
+}
+
+void RigStrokeDerivative(const RigDropInput& in, const VerticalResistance& resistance,
+                         const Eigen::Ref<const Eigen::VectorXd>& y, Eigen::Ref<Eigen::VectorXd> ydot) {
+  RigStrokeDerivative(in, FunctionSoilResponse(resistance), y, ydot);
+}
+
+double RigContactForce(const RigDropInput& in, const VerticalSoilResponse& response, double d, double v) {
+  if (!(d > 0.0)) return 0.0;
+  v = std::max(v, 0.0);
+  const double force = response.Force(d, v);
+  const double m_a = response.AddedMass(d);
+  if (m_a == 0.0) return force;  // exactly the soil force: no rounding from m (g - dv/dt)
+  const double accretion = v * v * response.AddedMassSlope(d);
+  const double dvdt = (in.mass_kg * in.gravity_m_s2 - force - accretion) / (in.mass_kg + m_a);
+  return force + m_a * dvdt + accretion;
+}
+
+RigDropResult RunRigDrop(const RigDropInput& in, const VerticalResistance& resistance,
+                         const RigDropOptions& options) {
+  return RunRigDrop(in, FunctionSoilResponse(resistance), options);
+}
+
+RigDropResult RunRigDrop(const RigDropInput& in, const VerticalSoilResponse& response,
+                         const RigDropOptions& options) {
+  RequireValid(in, options);
+  const double m = in.mass_kg, g = in.gravity_m_s2, weight = m * g;
+  bool resting = false;  // mode switch at the stop event
+
+  auto rhs = [&](double, Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::VectorXd> ydot) {
+    if (resting && response.StaticCapacity(std::max(y[kDepth], 0.0)) >= weight) {
+      ydot.setZero();  // static: the soil carries the weight, nothing moves
+      return;
+    }
+    RigStrokeDerivative(in, response, y, ydot);
+  };
+  integ::RootSpec roots;
+  roots.count = 2;  // [0] touchdown: depth rises through 0; [1] stop: velocity falls through 0
+  roots.directions = {+1, -1};
+  roots.function = [](double, Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::VectorXd> gv) {
+    gv[0] = y[kDepth];
+    gv[1] = y[kVelocity];
+  };
+  integ::CvodeIntegrator integrator(kStateSize, rhs, options.integrator, roots);
+
+  // Approach: free flight from a clearance chosen so the pad arrives at the requested speed.
+  const double v_td = in.impact_speed_m_s;
+  const double clearance = std::min(options.approach_clearance_m, v_td * v_td / (4.0 * g));
+  Eigen::VectorXd y(kStateSize);
+  if (clearance > 0.0) {
+    y << -clearance, std::sqrt(v_td * v_td - 2.0 * g * clearance), 0.0, 0.0;
+    integrator.Reset(0.0, y);
+    const integ::AdvanceResult r = integrator.AdvanceTo(10.0 * std::sqrt(2.0 * clearance / g) + 1.0);
+    if (r.status != integ::AdvanceStatus::kFoundRoot || r.roots_found[0] == 0)
+      throw integ::IntegrationFailure("touchdown was not reached during the approach");
+    y = integrator.state();
+  } else {
+    y << 0.0, v_td, 0.0, 0.0;
+  }
+  // Touchdown defines t = 0; the depth root is exactly 0 there.
+  y[kDepth] = 0.0;
+  y[kWork] = 0.0;
+  y[kAccretion] = 0.0;
+  integrator.Reset(0.0, y);
+
+  RigDropResult result;
+  result.impact_energy_J = 0.5 * m * y[kVelocity] * y[kVelocity];
+  auto record = [&](double t, const Eigen::VectorXd& s, double force) {
+    result.trace.push_back({t, s[kDepth], s[kVelocity], force});
+    result.peak_force_N = std::max(result.peak_force_N, force);
+    if (!resting) result.max_deceleration_m_s2 = std::max(result.max_deceleration_m_s2, (force - weight) / m);
+  };
+  record(0.0, y, 0.0);
+
+  // Stroke: sample until the velocity root.
+  const double dt = 1.0 / options.sample_rate_hz;
+  double t_stop = -1.0;
+  long k = 1;
+  while (t_stop < 0.0) {
+    const double t_out = k * dt;
+    if (t_out > options.max_stroke_duration_s)
+      throw integ::IntegrationFailure("the pad did not stop within " +
+                                      std::to_string(options.max_stroke_duration_s) + " s");
+    const integ::AdvanceResult r = integrator.AdvanceTo(t_out);
+    Eigen::VectorXd s = integrator.state();
+    if (r.status == integ::AdvanceStatus::kFoundRoot && r.roots_found[1] != 0) {
+      t_stop = r.t;
+      s[kVelocity] = 0.0;  // the root: exactly at rest
+      // At the stop v = 0: F_c = F + m_a dv/dt (the grains still push while the pad halts).
+      record(t_stop, s, RigContactForce(in, response, s[kDepth], 0.0));
+      y = s;
+    } else if (r.status == integ::AdvanceStatus::kReachedTime) {
+      record(t_out, s, RigContactForce(in, response, s[kDepth], s[kVelocity]));
+      ++k;
+    }  // else: the touchdown root again (grazing the surface); go on to the same output time
+  }
+  result.time_to_rest_s = t_stop;
+  result.final_penetration_m = y[kDepth];
+  result.dissipated_energy_J = y[kWork];
+  result.accretion_loss_J = y[kAccretion];
+  result.gravity_work_J = weight * y[kDepth];
+  result.mean_conversion_rate_W = t_stop > 0.0 ? result.impact_energy_J / t_stop : 0.0;
+
+  // Rest: the soil carries the weight; integrate on to show nothing creeps. Reset restarts
+  // CVODE's counters, so the stroke's are kept first.
+  const integ::IntegratorSummary stroke = integrator.summary();
+  resting = true;
+  integrator.Reset(t_stop, y);
+  const double t_end = t_stop + options.rest_duration_s;
+  for (k = static_cast<long>(std::floor(t_stop / dt)) + 1; k * dt <= t_end; ++k) {
+    integrator.AdvanceTo(k * dt);
+    const Eigen::VectorXd& s = integrator.state();
+    record(k * dt, s, std::min(response.StaticCapacity(std::max(s[kDepth], 0.0)), weight));
+  }
+  if (t_end > integrator.time()) integrator.AdvanceTo(t_end);
+  result.rest_creep_m = integrator.state()[kDepth] - result.final_penetration_m;
+  result.solver = integrator.summary();
+  result.solver.steps += stroke.steps;
+  result.solver.rhs_evaluations += stroke.rhs_evaluations;
+  result.solver.root_evaluations += stroke.root_evaluations;
+  result.solver.error_test_failures += stroke.error_test_failures;
+  return result;
+}
+
+}  // namespace touchdown::pad

@@ -1,0 +1,29 @@
+#include "rft/soil_map.h"
+
+namespace touchdown::rft {
+
+bool PolygonContains(const std::vector<Eigen::Vector2d>& poly, const Eigen::Vector2d& p) {
+  bool inside = false;
+  const size_t n = poly.size();
+  for (size_t i = 0, j = n - 1; i < n; j = i++) {
+    const Eigen::Vector2d& a = poly[i];
+    const Eigen::Vector2d& b = poly[j];
+    if ((a.y() > p.y()) != (b.y() > p.y()) &&
+        p.x() < (b.x() - a.x()) * (p.y() - a.y()) / (b.y() - a.y()) + a.x())
+      inside = !inside;
+  }
+  return inside;
+}
+
+std::vector<Eigen::Vector2d> RectanglePolygon(double x0, double y0, double x1, double y1) {
+  return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+}
+
+int Terrain::SoilAt(double x_m, double y_m) const {
+  const Eigen::Vector2d p(x_m, y_m);
+  for (const SoilPatch& patch : patches)
+    if (PolygonContains(patch.polygon_W, p)) return patch.soil;
+  return 0;
+}
+
+}  // namespace touchdown::rft

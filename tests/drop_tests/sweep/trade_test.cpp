@@ -1,0 +1,128 @@
+// The trade study: Pareto fronts against a hand-checked table, aggregation of drops into rows,
+// and `touchdown trade` on the paper's three pads (curved deepest and gentlest, as the paper).
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <nlohmann/json.hpp>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "drop_tests/sweep/sweep_spec.h"
+#include "drop_tests/sweep/trade.h"
+#include "rft/input_error.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace touchdown::sweep;
+
+TradeRow Row(const std::string& pad, double d, double f) {
+  TradeRow r;
+  r.pad = pad;
+  r.soil = "s";
+  r.impact_speed_m_s = 1.0;
+  r.drops = 1;
+  r.final_penetration_m = d;
+  r.peak_force_N = f;
+  return r;
+}
+
+TEST(TradePareto, NonDominatedRowsOnly) {
+  // a (1,3), b (2,2), c (3,1) trade off; d (3,3) is beaten by b; e ties a and is not beaten.
+  std::vector<TradeRow> rows = {Row("a", 1, 3), Row("b", 2, 2), Row("c", 3, 1), Row("d", 3, 3), Row("e", 1, 3)};
+  MarkParetoFront(rows, {0, 1, 2, 3, 4});
+  EXPECT_TRUE(rows[0].pareto);
+  EXPECT_TRUE(rows[1].pareto);
+  EXPECT_TRUE(rows[2].pareto);
+  EXPECT_FALSE(rows[3].pareto);
+  EXPECT_TRUE(rows[4].pareto);
+}
+
+TEST(TradeTable, RowsAreMeansOverTheirDropsAndFailuresAreCounted) {
+  std::vector<DropRecord> records(3);
+  for (int i = 0; i < 3; ++i) {
+    records[i].index = i;
+    records[i].pad = "flat";
+    records[i].soil = "fjs1_lp";
+    records[i].impact_speed_m_s = 1.0;
+    records[i].ok = i < 2;
+    records[i].final_penetration_m = i < 2 ? 0.01 * (i + 1) : std::nan("");
+    records[i].peak_force_N = 100.0 * (i + 1);
+    records[i].mean_conversion_rate_W = 10.0;
+  }
+  const std::vector<TradeRow> rows = TradeTable(records);
+  ASSERT_EQ(rows.size(), 1u);
+  EXPECT_EQ(rows[0].drops, 3);
+  EXPECT_EQ(rows[0].failed, 1);
+  EXPECT_DOUBLE_EQ(rows[0].final_penetration_m, 0.015);
+  EXPECT_DOUBLE_EQ(rows[0].peak_force_N, 150.0);
+  EXPECT_TRUE(rows[0].pareto);
+}
+
+TEST(TradeCli, PaperPadsCurvedIsDeepestGentlestAndOnTheFront) {
+  const fs::path dir = fs::temp_directory_path() / ("touchdown_trade_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "t.yaml") << "schema_version: 1\ntype: sweep\ntraces: none\nfixed: {soil: fjs1_lp}\n"
+                                   "grid: {pad: [flat, c4, curved], impact_speed_m_s: [0.7, 1.0, 1.5]}\n";
+  const std::string cmd = std::string(TOUCHDOWN_BINARY) + " trade " + (dir / "t.yaml").string() + " --out " +
+                          (dir / "out").string() + " >/dev/null 2>" + (dir / "err.txt").string();
+  const int raw = std::system(cmd.c_str());
+  ASSERT_TRUE(WIFEXITED(raw) && WEXITSTATUS(raw) == 0);
+  std::ifstream in(dir / "out" / "summary.json");
+  const nlohmann::json j = nlohmann::json::parse(in);
+  ASSERT_EQ(j["rows"].size(), 9u);
+  for (double v : {0.7, 1.0, 1.5}) {
+    nlohmann::json flat, curved;
+    for (const auto& r : j["rows"])
+      if (r["impact_speed_m_s"].get<double>() == v) {
+        if (r["pad"] == "flat") flat = r;
+        if (r["pad"] == "curved") curved = r;
+      }
+    ASSERT_FALSE(curved.is_null());
+    EXPECT_GT(curved["final_penetration_m"].get<double>(), flat["final_penetration_m"].get<double>()) << v;
+    EXPECT_LT(curved["peak_force_N"].get<double>(), flat["peak_force_N"].get<double>()) << v;
+    EXPECT_LT(curved["mean_conversion_rate_W"].get<double>(), flat["mean_conversion_rate_W"].get<double>()) << v;
+    EXPECT_TRUE(curved["pareto"].get<bool>()) << v;
+  }
+  EXPECT_TRUE(fs::is_regular_file(dir / "out" / "trade.csv"));
+  if (std::system("command -v gnuplot >/dev/null 2>&1") == 0) {
+    EXPECT_GT(fs::file_size(dir / "out" / "plots" / "trade.png"), 5000u);
+    EXPECT_GT(fs::file_size(dir / "out" / "plots" / "pareto.png"), 5000u);
+  }
+  fs::remove_all(dir);
+}
+
+TEST(TradeLander, LanderSweepIsRefusedBeforeAnythingRuns) {
+  // In the library: the plan (naming the sweep file and its lander field) and lander records.
+  const std::string sweep = std::string(TOUCHDOWN_SOURCE_DIR) + "/data/sweeps/lander_speed_soil.yaml";
+  try {
+    CheckTradePlan(LoadSweepPlan(sweep));
+    ADD_FAILURE() << "accepted a lander sweep";
+  } catch (const touchdown::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("lander_speed_soil.yaml: lander: trade compares footpads"), std::string::npos)
+        << e.what();
+  }
+  std::vector<DropRecord> records(1);
+  records[0].kind = "lander";
+  records[0].drop_id = "d0";
+  EXPECT_THROW(TradeTable(records), touchdown::InputError);
+  // From the CLI: exit status 2, one line naming the file, and no output directory.
+  const fs::path dir = fs::temp_directory_path() / ("touchdown_trade_lander_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string cmd = std::string(TOUCHDOWN_BINARY) + " trade " + sweep + " --out " + (dir / "out").string() +
+                          " >/dev/null 2>" + (dir / "err.txt").string();
+  const int raw = std::system(cmd.c_str());
+  EXPECT_TRUE(WIFEXITED(raw) && WEXITSTATUS(raw) == 2);
+  EXPECT_FALSE(fs::exists(dir / "out"));
+  std::ifstream err(dir / "err.txt");
+  const std::string text((std::istreambuf_iterator<char>(err)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("lander_speed_soil.yaml: lander: "), std::string::npos) << text;
+  fs::remove_all(dir);
+}
+
+}  // namespace
