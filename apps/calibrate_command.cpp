@@ -6,6 +6,7 @@
 #include "apps/commands.h"
 #include "drop_tests/io/output_path.h"
 #include "drop_tests/dataset/calibrate.h"
+#include "rft/units.h"
 
 namespace touchdown::app {
 
@@ -41,9 +42,9 @@ void AddCalibrateCommand(CLI::App& app) {
         dataset::CalibrationModel(fits, measured, std::filesystem::path(args->out).stem().string());
     model::WriteModelFile(model, out);
     for (const dataset::ZetaFit& f : fits)
-      std::cout << f.group << ": zeta = " << std::fixed << std::setprecision(4) << f.zeta_N_m3 / 1e6 << " N/cm^3, "
+      std::cout << f.group << ": zeta = " << std::fixed << std::setprecision(4) << units::ZetaToN_cm3(f.zeta_N_m3) << " N/cm^3, "
                 << std::setprecision(0) << 100 * options.confidence << " % interval [" << std::setprecision(4)
-                << f.low_N_m3 / 1e6 << ", " << f.high_N_m3 / 1e6 << "] from " << f.drops << " drops, " << f.samples
+                << units::ZetaToN_cm3(f.low_N_m3) << ", " << units::ZetaToN_cm3(f.high_N_m3) << "] from " << f.drops << " drops, " << f.samples
                 << " samples, residual RMS " << std::setprecision(3) << f.residual_rms_N << " N\n";
     std::cout << "wrote " << args->out << "\n";
   });

@@ -11,6 +11,7 @@
 #include "drop_tests/model/model_file.h"
 #include "drop_tests/drop/pad_drop.h"
 #include "rft/input_error.h"
+#include "rft/units.h"
 
 namespace touchdown::app {
 
@@ -52,7 +53,7 @@ void AddDropCommand(CLI::App& app) {
     c.impact_speed_m_s = args->speed_m_s;
     c.mass_kg = args->mass_kg;
     c.gravity_m_s2 = args->gravity_m_s2;
-    if (args->zeta_N_cm3) c.zeta_N_m3 = *args->zeta_N_cm3 * 1e6;
+    if (args->zeta_N_cm3) c.zeta_N_m3 = units::ZetaFromN_cm3(*args->zeta_N_cm3);
     for (double v : {args->tilt_deg, args->horizontal_speed_m_s, args->omega[0], args->omega[1], args->omega[2]})
       if (!std::isfinite(v))
         throw MakeInputError("command line", "--free", "tilt, horizontal speed and omega must be finite");
@@ -63,7 +64,7 @@ void AddDropCommand(CLI::App& app) {
     }
     if (args->free) {
       c.free = true;
-      c.tilt_rad = args->tilt_deg * std::numbers::pi / 180.0;
+      c.tilt_rad = units::DegToRad(args->tilt_deg);
       c.tilt_axis = args->tilt_axis;
       c.horizontal_speed_m_s = args->horizontal_speed_m_s;
       c.omega_W = Eigen::Vector3d(args->omega[0], args->omega[1], args->omega[2]);

@@ -13,6 +13,7 @@
 #include "rft/input_error.h"
 #include "rft/physical_limits.h"
 #include "rft/stress_law_3d_factory.h"
+#include "rft/units.h"
 
 namespace touchdown::app {
 
@@ -65,10 +66,10 @@ void AddForceCommand(CLI::App& app) {
     limits::Require(limits::kAngularSpeed_rad_s, k.w_WB_W.stableNorm(), "command line", "--omega (its magnitude)");
     if (k.v_WB_W.norm() == 0.0 && k.w_WB_W.norm() == 0.0)
       throw MakeInputError("command line", "velocity", "the pad must move (RFT needs a direction of motion)");
-    k.R_WB = pad::TiltRotation(a->tilt_axis, a->tilt_deg * std::numbers::pi / 180.0);
+    k.R_WB = pad::TiltRotation(a->tilt_axis, units::DegToRad(a->tilt_deg));
     const io::PadSpec pad = io::LoadPad(a->pad);
     rft::SoilParameters soil = io::LoadSoil(a->soil);
-    if (a->zeta_N_cm3) soil.zeta_N_m3 = *a->zeta_N_cm3 * 1e6;
+    if (a->zeta_N_cm3) soil.zeta_N_m3 = units::ZetaFromN_cm3(*a->zeta_N_cm3);
     const std::unique_ptr<rft::StressLaw3D> law = rft::MakeStressLaw3D(a->law, soil, a->gravity_m_s2);
     k.p_WB = pad::PlaceAtDepth(pad.body, k.R_WB, a->depth_m);
     const rft::ContactWrench w = rft::ComputeContactWrench(pad.body.surface, k, rft::PlaneGround(), *law);

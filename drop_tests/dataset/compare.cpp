@@ -17,6 +17,7 @@
 #include "drop_tests/io/plot_decimation.h"
 #include "drop_tests/io/plot_runner.h"
 #include "rft/input_error.h"
+#include "rft/units.h"
 
 namespace touchdown::dataset {
 
@@ -123,7 +124,7 @@ Dataset SimulateMeasuredDrops(const Dataset& measured, const std::optional<model
     row.gravity_m_s2 = m.gravity_m_s2;
     row.atmosphere = m.atmosphere;
     const double tilt_deg = ExtraOrZero(measured, m, "tilt_deg");
-    row.tilt_rad = tilt_deg * std::numbers::pi / 180.0;
+    row.tilt_rad = units::DegToRad(tilt_deg);
     row.horizontal_speed_m_s = ExtraOrZero(measured, m, "horizontal_speed_m_s");
     drop::DropConditions c = drop::DropConditionsFor(row, effects, effects_source, file + ": drop " + m.drop_id);
     c.free = !pads.at(pad_ref).is_axisymmetric();  // a mesh pad has no rig profile: the free pad, straight down
@@ -144,7 +145,7 @@ Dataset SimulateMeasuredDrops(const Dataset& measured, const std::optional<model
     s.peak_force_N = d.result.peak_force_N;
     s.extra = {io::FormatNumber(tilt_deg),
                io::FormatNumber(row.horizontal_speed_m_s),
-               io::FormatNumber(d.zeta_effective_N_m3 / 1e6),
+               io::FormatNumber(units::ZetaToN_cm3(d.zeta_effective_N_m3)),
                io::FormatNumber(d.result.time_to_rest_s),
                io::FormatNumber(d.result.mean_conversion_rate_W),
                io::FormatNumber(d.free ? d.free->final_tilt_deg : 0.0),

@@ -16,6 +16,7 @@
 #include "drop_tests/io/yaml_fields.h"
 #include "rft/input_error.h"
 #include "rft/stress_law.h"
+#include "rft/units.h"
 
 namespace touchdown::dataset {
 
@@ -116,7 +117,7 @@ SynthSpec LoadSynthSpec(const std::string& path) {
   }
   if (f.Has("true_zeta_N_cm3")) {
     const io::YamlFields z = f.Child("true_zeta_N_cm3");
-    for (const auto& item : z.node()) s.true_zeta_N_m3.emplace_back(item.first.Scalar(), z.Positive(item.first.Scalar()) * 1e6);
+    for (const auto& item : z.node()) s.true_zeta_N_m3.emplace_back(item.first.Scalar(), units::ZetaFromN_cm3(z.Positive(item.first.Scalar())));
   }
   if (f.Has("noise")) {
     const io::YamlFields n = f.Child("noise");
@@ -239,7 +240,7 @@ void WriteSpecYaml(const SynthSpec& s, YAML::Emitter& y, bool with_truth) {
     << YAML::Value << s.noise.penetration_resolution_m * 1e3 << YAML::EndMap;
   if (with_truth) {
     y << YAML::Key << "true_zeta_N_cm3" << YAML::Value << YAML::BeginMap;
-    for (const auto& [soil, zeta] : s.true_zeta_N_m3) y << YAML::Key << soil << YAML::Value << zeta / 1e6;
+    for (const auto& [soil, zeta] : s.true_zeta_N_m3) y << YAML::Key << soil << YAML::Value << units::ZetaToN_cm3(zeta);
     y << YAML::EndMap << YAML::Key << "hidden_effect" << YAML::Value;
     if (s.hidden_effect) y << model::EffectsToYaml({*s.hidden_effect});
     else if (s.floor)

@@ -13,11 +13,12 @@
 #include "rft/input_error.h"
 #include "rft/physical_limits.h"
 #include "rft/stress_law.h"
+#include "rft/units.h"
 
 namespace touchdown::drop {
 
 namespace {
-constexpr double kDeg = std::numbers::pi / 180.0;
+using units::kDeg;
 
 // A free pad of another mass keeps its shape and uniform density: inertia scales with the mass.
 geom::PadBody WithMass(const geom::PadBody& body, double mass_kg) {
@@ -55,7 +56,7 @@ void ValidateConditions(const DropConditions& c, const std::string& context) {
   limits::Require(limits::kSpeed_m_s, c.impact_speed_m_s, context, "impact_speed_m_s");
   if (c.mass_kg && !(*c.mass_kg > 0.0 && std::isfinite(*c.mass_kg))) bad("mass_kg", *c.mass_kg, "positive and finite");
   if (!(c.gravity_m_s2 > 0.0 && std::isfinite(c.gravity_m_s2))) bad("gravity_m_s2", c.gravity_m_s2, "positive and finite");
-  if (c.zeta_N_m3) limits::Require(limits::kZeta_N_cm3, *c.zeta_N_m3 / 1e6, context, "zeta_N_cm3");
+  if (c.zeta_N_m3) limits::Require(limits::kZeta_N_cm3, units::ZetaToN_cm3(*c.zeta_N_m3), context, "zeta_N_cm3");
   if (c.atmosphere && *c.atmosphere != "vacuum" && *c.atmosphere != "air")
     throw MakeInputError(context, "atmosphere", "must be vacuum or air, got '" + *c.atmosphere + "'");
   if (!(std::abs(c.tilt_rad) < 90.0 * kDeg)) bad("tilt_deg", c.tilt_rad / kDeg, "between -90 and 90");
@@ -162,7 +163,7 @@ nlohmann::json SummaryJson(const PadDrop& d) {
     j["horizontal_speed_m_s"] = d.conditions.horizontal_speed_m_s;
     j["pad_mass_kg"] = d.mass_kg;
     j["gravity_m_s2"] = d.conditions.gravity_m_s2;
-    j["zeta_N_cm3"] = d.zeta_effective_N_m3 / 1e6;
+    j["zeta_N_cm3"] = units::ZetaToN_cm3(d.zeta_effective_N_m3);
   } else {
     j = nlohmann::json{
         {"pad", d.pad.name},
@@ -171,7 +172,7 @@ nlohmann::json SummaryJson(const PadDrop& d) {
         {"impact_speed_m_s", d.conditions.impact_speed_m_s},
         {"pad_mass_kg", d.mass_kg},
         {"gravity_m_s2", d.conditions.gravity_m_s2},
-        {"zeta_N_cm3", d.zeta_effective_N_m3 / 1e6},
+        {"zeta_N_cm3", units::ZetaToN_cm3(d.zeta_effective_N_m3)},
         {"final_penetration_m", r.final_penetration_m},
         {"peak_force_N", r.peak_force_N},
         {"time_to_rest_s", r.time_to_rest_s},

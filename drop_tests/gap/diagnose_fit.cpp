@@ -11,6 +11,7 @@
 
 #include "drop_tests/io/student_t.h"
 #include "rft/input_error.h"
+#include "rft/units.h"
 #include "rft/stress_law.h"
 
 namespace touchdown::gap {
@@ -390,7 +391,7 @@ FitResult FitCandidate(const FitProblem& p, const std::vector<std::string>& ids,
     out.estimates.push_back(e);
     ++k;
   };
-  for (int s = 0; s < L.soils; ++s) estimate("", "zeta_N_cm3:" + p.soils[s].name, p.soils[s].zeta_N_m3, 1e6, "N/m^3");
+  for (int s = 0; s < L.soils; ++s) estimate("", "zeta_N_cm3:" + p.soils[s].name, p.soils[s].zeta_N_m3, units::kN_m3_per_N_cm3, "N/m^3");
   for (const model::EffectInfo* e : L.infos)
     for (const model::EffectParameterInfo& q : e->parameters) estimate(e->id, q.key, q.scale, q.file_to_si, q.unit);
   return out;

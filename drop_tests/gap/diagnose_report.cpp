@@ -12,6 +12,7 @@
 #include "drop_tests/gap/diagnose.h"
 #include "drop_tests/io/plot_decimation.h"
 #include "drop_tests/io/plot_runner.h"
+#include "rft/units.h"
 
 namespace touchdown::gap {
 
@@ -294,8 +295,8 @@ void WriteDiagnosis(const Diagnosis& d, const dataset::Dataset& ds, const io::Ou
           << "| soil | zeta base [N/cm^3] | 95 % interval | zeta with effect [N/cm^3] |\n| --- | --- | --- | --- |\n";
       for (size_t s = 0; s < d.problem.soils.size(); ++s) {
         const ParameterEstimate& b = d.base.fit.estimates[s];
-        out << "| " << d.problem.soils[s].name << " | " << Num(b.value / 1e6) << " | [" << Num(b.low / 1e6) << ", "
-            << Num(b.high / 1e6) << "] | " << Num(after.fit.estimates[s].value / 1e6) << " |\n";
+        out << "| " << d.problem.soils[s].name << " | " << Num(units::ZetaToN_cm3(b.value)) << " | [" << Num(units::ZetaToN_cm3(b.low)) << ", "
+            << Num(units::ZetaToN_cm3(b.high)) << "] | " << Num(units::ZetaToN_cm3(after.fit.estimates[s].value)) << " |\n";
       }
       out << "\n## 2. The gap and where it is (base model)\n\n"
           << "Held-out means: force NRMSE " << Num(d.base.held_out.force_nrmse) << " (sensor-noise floor about "

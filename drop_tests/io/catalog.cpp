@@ -14,6 +14,7 @@
 #include "rft/input_error.h"
 #include "rft/input_file.h"
 #include "rft/physical_limits.h"
+#include "rft/units.h"
 
 namespace touchdown::io {
 
@@ -21,7 +22,7 @@ namespace fs = std::filesystem;
 
 namespace {
 constexpr double kMm = 1e-3;
-constexpr double kDeg = std::numbers::pi / 180.0;
+using units::kDeg;
 // Resolution caps, so a hand-written 1e9 is refused at load time instead of exhausting memory
 // (or hanging the profile simplification, which is quadratic in the profile's points). The
 // revolved mesh has about 0.5 N^2 triangles for N angular segments (~8k at the default 128,
@@ -274,7 +275,7 @@ rft::SoilParameters LoadSoil(const std::string& name_or_path) {
   } else {
     const double zeta_N_cm3 = f.Positive("zeta_N_cm3");
     limits::Require(limits::kZeta_N_cm3, zeta_N_cm3, f.file(), "zeta_N_cm3");
-    soil.zeta_N_m3 = zeta_N_cm3 * 1e6;
+    soil.zeta_N_m3 = units::ZetaFromN_cm3(zeta_N_cm3);
   }
   // The 3D laws' soil fields (rft/soil.h): Agarwal 2023's intruder-surface friction, and the
   // dynamic term lambda rho_c (v.n)^2 of the 3D contact (free drops, force, lander).

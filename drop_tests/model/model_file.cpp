@@ -9,16 +9,16 @@
 #include "drop_tests/io/paths_in_outputs.h"
 #include "drop_tests/io/yaml_fields.h"
 #include "rft/input_error.h"
+#include "rft/units.h"
 
 namespace touchdown::model {
 
 namespace {
-constexpr double kNcm3 = 1e6;  // N/cm^3 -> N/m^3
 
 SoilOverride ReadOverride(const io::YamlFields& f) {
   f.RequireOnly({"zeta_N_cm3", "reference_gravity_m_s2", "zeta_interval_N_cm3", "confidence", "fit"});
   SoilOverride o;
-  o.zeta_N_m3 = f.Positive("zeta_N_cm3") * kNcm3;
+  o.zeta_N_m3 = f.Positive("zeta_N_cm3") * units::kN_m3_per_N_cm3;
   o.reference_gravity_m_s2 = f.PositiveOr("reference_gravity_m_s2", 9.81);
   if (f.Has("zeta_interval_N_cm3")) {
     const YAML::Node n = f.node()["zeta_interval_N_cm3"];
@@ -26,8 +26,8 @@ SoilOverride ReadOverride(const io::YamlFields& f) {
     if (!n.IsSequence() || n.size() != 2 || !YAML::convert<double>::decode(n[0], lo) ||
         !YAML::convert<double>::decode(n[1], hi) || !std::isfinite(lo) || !std::isfinite(hi) || !(lo <= hi))
       f.Fail("zeta_interval_N_cm3", "must be [low, high] with low <= high");
-    o.zeta_low_N_m3 = lo * kNcm3;
-    o.zeta_high_N_m3 = hi * kNcm3;
+    o.zeta_low_N_m3 = lo * units::kN_m3_per_N_cm3;
+    o.zeta_high_N_m3 = hi * units::kN_m3_per_N_cm3;
   }
   if (f.Has("confidence")) {
     o.confidence = f.Positive("confidence");
@@ -85,10 +85,10 @@ void WriteModelFile(const ModelFile& m, const io::OutputTarget& target, const st
   y << YAML::Key << "soils" << YAML::Value << YAML::BeginMap;
   for (const auto& [name, o] : m.soils) {
     y << YAML::Key << name << YAML::Value << YAML::BeginMap << YAML::Key << "zeta_N_cm3" << YAML::Value
-      << o.zeta_N_m3 / kNcm3 << YAML::Key << "reference_gravity_m_s2" << YAML::Value << o.reference_gravity_m_s2;
+      << units::ZetaToN_cm3(o.zeta_N_m3) << YAML::Key << "reference_gravity_m_s2" << YAML::Value << o.reference_gravity_m_s2;
     if (o.zeta_low_N_m3 && o.zeta_high_N_m3)
       y << YAML::Key << "zeta_interval_N_cm3" << YAML::Value << YAML::Flow << YAML::BeginSeq
-        << *o.zeta_low_N_m3 / kNcm3 << *o.zeta_high_N_m3 / kNcm3 << YAML::EndSeq << YAML::Key << "confidence"
+        << units::ZetaToN_cm3(*o.zeta_low_N_m3) << units::ZetaToN_cm3(*o.zeta_high_N_m3) << YAML::EndSeq << YAML::Key << "confidence"
         << YAML::Value << o.confidence;
     if (o.fit) {
       y << YAML::Key << "fit" << YAML::Value << YAML::BeginMap << YAML::Key << "method" << YAML::Value << o.fit->method

@@ -16,6 +16,7 @@
 #include "drop_tests/io/paths_in_outputs.h"
 #include "drop_tests/io/yaml_fields.h"
 #include "rft/input_error.h"
+#include "rft/units.h"
 
 namespace touchdown::scenario {
 
@@ -113,7 +114,7 @@ CampaignScenario LoadCampaignScenario(const std::string& path) {
       c.conditions.impact_speed_m_s = v;
       c.conditions.gravity_m_s2 = entry.PositiveOr("gravity_m_s2", gravity);
       if (entry.Has("mass_kg")) c.conditions.mass_kg = entry.Positive("mass_kg");
-      if (entry.Has("zeta_N_cm3")) c.conditions.zeta_N_m3 = entry.Positive("zeta_N_cm3") * 1e6;
+      if (entry.Has("zeta_N_cm3")) c.conditions.zeta_N_m3 = units::ZetaFromN_cm3(entry.Positive("zeta_N_cm3"));
       drop::ValidateConditions(c.conditions, f.file() + ": " + entry.prefix());  // ranges checked at load time
       if (!ids.insert(c.drop_id).second)
         entry.Fail("impact_speeds_m_s", "impact speed " + SpeedTag(v) + " m/s of pad " + pad->name + " on soil " +
@@ -144,12 +145,12 @@ void WriteResolvedScenario(const CampaignScenario& s, const std::string& path, c
       << "profile_points" << YAML::Value << pad.profile.points.size() << YAML::EndMap;
     y << YAML::Key << "soil" << YAML::Value << YAML::BeginMap << YAML::Key << "name" << YAML::Value << soil.name
       << YAML::Key << "atmosphere" << YAML::Value << soil.atmosphere << YAML::Key << "zeta_N_cm3" << YAML::Value
-      << soil.zeta_N_m3 / 1e6 << YAML::Key << "reference_gravity_m_s2" << YAML::Value << soil.reference_gravity_m_s2
+      << units::ZetaToN_cm3(soil.zeta_N_m3) << YAML::Key << "reference_gravity_m_s2" << YAML::Value << soil.reference_gravity_m_s2
       << YAML::EndMap;
     y << YAML::Key << "impact_speed_m_s" << YAML::Value << c.conditions.impact_speed_m_s << YAML::Key << "mass_kg"
       << YAML::Value << c.conditions.mass_kg.value_or(pad.mass_kg) << YAML::Key << "gravity_m_s2" << YAML::Value
       << c.conditions.gravity_m_s2;
-    if (c.conditions.zeta_N_m3) y << YAML::Key << "zeta_override_N_cm3" << YAML::Value << *c.conditions.zeta_N_m3 / 1e6;
+    if (c.conditions.zeta_N_m3) y << YAML::Key << "zeta_override_N_cm3" << YAML::Value << units::ZetaToN_cm3(*c.conditions.zeta_N_m3);
     y << YAML::EndMap;
   }
   y << YAML::EndSeq << YAML::EndMap;

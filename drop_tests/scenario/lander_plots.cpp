@@ -10,13 +10,14 @@
 #include "drop_tests/scenario/lander_scenario.h"
 #include "drop_tests/io/plot_decimation.h"
 #include "drop_tests/io/plot_runner.h"
+#include "rft/units.h"
 
 namespace touchdown::scenario {
 
 namespace fs = std::filesystem;
 
 namespace {
-constexpr double kDeg = std::numbers::pi / 180.0;
+using units::kDeg;
 }  // namespace
 
 void WriteLanderPlots(const LanderRun& run, const std::string& out_dir) {

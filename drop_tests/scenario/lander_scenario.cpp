@@ -18,6 +18,7 @@
 #include "rft/input_error.h"
 #include "rft/physical_limits.h"
 #include "rft/stress_law_3d_factory.h"
+#include "rft/units.h"
 
 namespace touchdown::scenario {
 
@@ -25,7 +26,7 @@ namespace fs = std::filesystem;
 
 namespace {
 constexpr double kMm = 1e-3;
-constexpr double kDeg = std::numbers::pi / 180.0;
+using units::kDeg;
 // Pads clockwise seen from above, pad 1 front-left (x forward, y left).
 constexpr double kPadAzimuthDeg[lander::kNumLegs] = {45.0, -45.0, -135.0, 135.0};
 
@@ -523,7 +524,7 @@ void WriteResolvedLanderScenario(const LanderScenario& s, const std::string& pat
   for (const rft::TerrainSoil& soil : setup.terrain.soils) {
     const rft::SoilParameters p = s.model ? model::ApplyModel(*s.model, io::LoadSoil(soil.name)) : io::LoadSoil(soil.name);
     y << YAML::BeginMap << YAML::Key << "name" << YAML::Value << p.name << YAML::Key << "zeta_N_cm3_at_gravity"
-      << YAML::Value << p.ZetaAtGravity(s.gravity_m_s2) / 1e6 << YAML::Key << "atmosphere" << YAML::Value
+      << YAML::Value << units::ZetaToN_cm3(p.ZetaAtGravity(s.gravity_m_s2)) << YAML::Key << "atmosphere" << YAML::Value
       << p.atmosphere << YAML::Key << "law_3d" << YAML::Value << std::string(soil.law->name()) << YAML::EndMap;
   }
   y << YAML::EndSeq;

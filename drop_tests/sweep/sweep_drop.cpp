@@ -8,11 +8,12 @@
 #include "drop_tests/drop/pad_drop.h"
 #include "footpad_geom/axisymmetric_intrusion.h"
 #include "rft/stress_law.h"
+#include "rft/units.h"
 
 namespace touchdown::sweep {
 
 namespace {
-constexpr double kDeg = std::numbers::pi / 180.0;
+using units::kDeg;
 
 // The sweep point as a drop row (the atmosphere is the soil's), under the model's effects.
 drop::DropConditions ConditionsOf(const SweepModels& models, const SweepDropParams& p) {
@@ -47,7 +48,7 @@ DropRecord Describe(const SweepPlan& plan, const SweepDropParams& p, const drop:
   r.gravity_m_s2 = p.gravity_m_s2;
   r.tilt_deg = p.tilt_rad / kDeg;
   r.horizontal_speed_m_s = p.horizontal_speed_m_s;
-  r.zeta_N_cm3 = drop::EffectiveZeta(soil, c) / 1e6;
+  r.zeta_N_cm3 = units::ZetaToN_cm3(drop::EffectiveZeta(soil, c));
   return r;
 }
 
@@ -157,7 +158,7 @@ DropRecord SimulateLanderSweepDrop(const SweepModels& models, const SweepDropPar
   // Body z from the vertical after roll and pitch (z_W component cos(roll) cos(pitch)).
   r.tilt_deg = std::acos(std::clamp(std::cos(sc.initial.roll_rad) * std::cos(sc.initial.pitch_rad), -1.0, 1.0)) / kDeg;
   r.horizontal_speed_m_s = sc.initial.horizontal_velocity_m_s.norm();
-  r.zeta_N_cm3 = soil.ZetaAtGravity(sc.gravity_m_s2) / 1e6;
+  r.zeta_N_cm3 = units::ZetaToN_cm3(soil.ZetaAtGravity(sc.gravity_m_s2));
   try {
     {  // the soil under each pad's joint at release, as the ground was built
       const scenario::LanderSetup setup = scenario::BuildLanderSetup(sc);

@@ -14,13 +14,14 @@
 #include "drop_tests/io/yaml_fields.h"
 #include "rft/input_error.h"
 #include "rft/physical_limits.h"
+#include "rft/units.h"
 
 namespace touchdown::sweep {
 
 namespace fs = std::filesystem;
 
 namespace {
-constexpr double kDeg = std::numbers::pi / 180.0;
+using units::kDeg;
 constexpr int kMaxGridCount = 100000;            // values of one `{from, to, count}` axis
 constexpr int64_t kMaxSweepDrops = int64_t{1} << 40;
 constexpr SweepParam kAll[kSweepParamCount] = {SweepParam::kPad,     SweepParam::kSoil, SweepParam::kImpactSpeed,
@@ -47,7 +48,7 @@ constexpr PaperCase kPaperCases[] = {{"A", {"fjs1_lp", "fjs1_lp", "fjs1_lp", "fj
 
 double ToSi(SweepParam p, double v) {
   if (p == SweepParam::kTilt || p == SweepParam::kRoll || p == SweepParam::kPitch) return v * kDeg;
-  if (p == SweepParam::kZeta) return v * 1e6;
+  if (p == SweepParam::kZeta) return units::ZetaFromN_cm3(v);
   return v;
 }
 

@@ -11,6 +11,7 @@
 #include "rft/contact_wrench.h"
 #include "rft/deepest_point.h"
 #include "rft/entrained_mass.h"
+#include "rft/units.h"
 
 namespace touchdown::pad {
 
@@ -187,7 +188,7 @@ FreeDropResult RunFreeDrop(const geom::PadBody& body, const rft::StressLaw3D& la
   const double z_C0 = s0.p_WC.z();
   const Eigen::Vector2d xy_C0 = s0.p_WC.head<2>();
   result.impact_energy_J = 0.5 * m * s0.v_WC.squaredNorm() + 0.5 * s0.w_B.dot(I * s0.w_B);
-  result.touchdown_tilt_deg = TiltFromVertical(s0.R_WB) * 180.0 / std::numbers::pi;
+  result.touchdown_tilt_deg = units::RadToDeg(TiltFromVertical(s0.R_WB));
   auto record = [&](double t, const Eigen::VectorXd& state) {
     const Pose s = PoseOf(body, state);
     const bool moving = s.v_WB.squaredNorm() + s.w_W.squaredNorm() * radius * radius > 0.0;
@@ -199,7 +200,7 @@ FreeDropResult RunFreeDrop(const geom::PadBody& body, const rft::StressLaw3D& la
       if (added_density > 0.0) f.z() = vertical(s, w).force_z;
     }
     result.trace.push_back({t, std::max(Depth(body, ground, s), 0.0), -s.v_WC.z(), f.z(), f.x(),
-                            s.p_WC.x() - xy_C0.x(), TiltFromVertical(s.R_WB) * 180.0 / std::numbers::pi});
+                            s.p_WC.x() - xy_C0.x(), units::RadToDeg(TiltFromVertical(s.R_WB))});
     result.peak_force_N = std::max(result.peak_force_N, f.z());
     if (moving) result.max_deceleration_m_s2 = std::max(result.max_deceleration_m_s2, f.z() / m - g);
   };
@@ -242,7 +243,7 @@ FreeDropResult RunFreeDrop(const geom::PadBody& body, const rft::StressLaw3D& la
   result.final_penetration_m = std::max(Depth(body, ground, end), 0.0);
   result.dissipated_energy_J = y[kWork];
   result.gravity_work_J = m * g * (z_C0 - end.p_WC.z());
-  result.final_tilt_deg = TiltFromVertical(end.R_WB) * 180.0 / std::numbers::pi;
+  result.final_tilt_deg = units::RadToDeg(TiltFromVertical(end.R_WB));
   result.horizontal_travel_m = (end.p_WC.head<2>() - xy_C0).norm();
   result.solver = integrator.summary();
   return result;

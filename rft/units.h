@@ -1,0 +1,21 @@
+#pragma once
+// Unit conversions at the IO boundary. Inside, everything is SI and radians; files and the
+// command line use degrees and N/cm^3 (the paper's unit of the RFT scaling factor zeta), marked
+// by a suffix on the name (tilt_deg, zeta_N_cm3).
+#include <numbers>
+
+namespace touchdown::units {
+
+// Radians per degree: angle_rad = angle_deg * kDeg, angle_deg = angle_rad / kDeg.
+inline constexpr double kDeg = std::numbers::pi / 180.0;
+// The same conversions for one value (rounded as (deg pi) / 180 and (rad 180) / pi).
+constexpr double DegToRad(double angle_deg) { return angle_deg * std::numbers::pi / 180.0; }
+constexpr double RadToDeg(double angle_rad) { return angle_rad * 180.0 / std::numbers::pi; }
+
+// N/m^3 per N/cm^3.
+inline constexpr double kN_m3_per_N_cm3 = 1e6;
+// zeta as stored (N/m^3) from its file unit (N/cm^3), and back.
+constexpr double ZetaFromN_cm3(double zeta_N_cm3) { return zeta_N_cm3 * kN_m3_per_N_cm3; }
+constexpr double ZetaToN_cm3(double zeta_N_m3) { return zeta_N_m3 / kN_m3_per_N_cm3; }
+
+}  // namespace touchdown::units
