@@ -7,7 +7,6 @@
 #include <filesystem>
 #include <fstream>
 
-#include "drop_tests/drop/pad_drop.h"
 #include "rft/input_error.h"
 
 namespace touchdown::io {
@@ -290,20 +289,6 @@ TEST_F(MeshPads, BadMeshPadsGiveOneClearError) {
     const std::string message = PadError(c.yaml);
     EXPECT_NE(message.find("pad.yaml"), std::string::npos) << message;
     EXPECT_NE(message.find(c.expected), std::string::npos) << c.yaml << " -> " << message;
-  }
-}
-
-TEST_F(CatalogFiles, RigDropOfAMeshPadIsRefused) {
-  const PadSpec hex = LoadPad("hex");
-  drop::DropConditions conditions;
-  conditions.impact_speed_m_s = 1.0;
-  try {
-    drop::RunPadDrop(hex, LoadSoil("fjs1_lp"), conditions);
-    ADD_FAILURE() << "no error";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("hex.yaml: rig drop of mesh pads needs the 3D contact; use --free"),
-              std::string::npos)
-        << e.what();
   }
 }
 
