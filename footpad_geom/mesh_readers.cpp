@@ -315,11 +315,16 @@ class PlyValues {
   ByteReader bytes_;
 };
 
-}  // namespace
 
-PolygonSoup ReadPlySoup(const std::string& path) {
-  const std::string text = Slurp(path, "ply");
-  // Header: ASCII lines up to end_header.
+// The ASCII header of a PLY file, up to end_header: its elements with their properties, the
+// format of the body, and where the body starts.
+struct PlyHeader {
+  std::vector<PlyElement> elements;
+  int format = -1;  // 0 ascii, 1 binary little endian, 2 binary big endian
+  size_t body_offset = 0;
+};
+
+PlyHeader ReadPlyHeader(const std::string& path, const std::string& text) {
   std::vector<PlyElement> elements;
   int format = -1;
   size_t pos = 0, line_number = 0;
@@ -373,61 +378,71 @@ PolygonSoup ReadPlySoup(const std::string& path) {
   }
   if (format < 0) Fail(path, "ply", "no format line");
   if (pos > text.size()) pos = text.size();
+  return {std::move(elements), format, pos};
 
-  PlyValues values(path, std::string_view(text).substr(pos), format);
-  PolygonSoup soup;
-  bool have_vertices = false, have_faces = false;
-  for (const PlyElement& e : elements) {
-    if (e.properties.empty()) continue;  // nothing to read
-    // Every item takes at least one byte (binary) or one character (ASCII): a count larger
-    // than what is left cannot be right, and looping over it could take forever.
-    if (e.count > values.remaining())
-      Fail(path, "ply", "element '" + e.name + "' declares " + std::to_string(e.count) +
-                            " items but the file is too short for them");
-    const bool vertex = e.name == "vertex", face = e.name == "face";
-    int x = -1, y = -1, z = -1, indices = -1;
+}
+
+// Reads the items of one element: vertices (x, y, z) and faces (vertex_indices) go into `soup`,
+// every other element and property is read past.
+void ReadPlyElement(const std::string& path, const PlyElement& e, PlyValues& values, PolygonSoup& soup) {
+  // Every item takes at least one byte (binary) or one character (ASCII): a count larger
+  // than what is left cannot be right, and looping over it could take forever.
+  if (e.count > values.remaining())
+    Fail(path, "ply", "element '" + e.name + "' declares " + std::to_string(e.count) +
+                          " items but the file is too short for them");
+  const bool vertex = e.name == "vertex", face = e.name == "face";
+  int x = -1, y = -1, z = -1, indices = -1;
+  for (size_t i = 0; i < e.properties.size(); ++i) {
+    const PlyProperty& p = e.properties[i];
+    if (vertex && !p.list && p.name == "x") x = static_cast<int>(i);
+    if (vertex && !p.list && p.name == "y") y = static_cast<int>(i);
+    if (vertex && !p.list && p.name == "z") z = static_cast<int>(i);
+    if (face && p.list && (p.name == "vertex_indices" || p.name == "vertex_index")) indices = static_cast<int>(i);
+  }
+  if (vertex && (x < 0 || y < 0 || z < 0)) Fail(path, "ply", "the vertex element needs properties x, y and z");
+  if (face && indices < 0) Fail(path, "ply", "the face element needs a list property vertex_indices");
+  for (std::uint64_t item = 0; item < e.count; ++item) {
+    double xyz[3] = {0, 0, 0};
+    std::vector<int> polygon;
     for (size_t i = 0; i < e.properties.size(); ++i) {
       const PlyProperty& p = e.properties[i];
-      if (vertex && !p.list && p.name == "x") x = static_cast<int>(i);
-      if (vertex && !p.list && p.name == "y") y = static_cast<int>(i);
-      if (vertex && !p.list && p.name == "z") z = static_cast<int>(i);
-      if (face && p.list && (p.name == "vertex_indices" || p.name == "vertex_index")) indices = static_cast<int>(i);
-    }
-    if (vertex) {
-      if (x < 0 || y < 0 || z < 0) Fail(path, "ply", "the vertex element needs properties x, y and z");
-      have_vertices = true;
-    }
-    if (face) {
-      if (indices < 0) Fail(path, "ply", "the face element needs a list property vertex_indices");
-      have_faces = true;
-    }
-    for (std::uint64_t item = 0; item < e.count; ++item) {
-      double xyz[3] = {0, 0, 0};
-      std::vector<int> polygon;
-      for (size_t i = 0; i < e.properties.size(); ++i) {
-        const PlyProperty& p = e.properties[i];
-        if (!p.list) {
-          const double v = values.Next(p.type);
-          if (static_cast<int>(i) == x) xyz[0] = v;
-          if (static_cast<int>(i) == y) xyz[1] = v;
-          if (static_cast<int>(i) == z) xyz[2] = v;
-          continue;
-        }
-        const double n = values.Next(p.count_type);
-        const size_t least = values.ascii() ? 1 : PlySize(p.type);
-        if (!(n >= 0.0 && n == std::floor(n) && n <= static_cast<double>(values.remaining() / least)))
-          Fail(path, "ply", "element '" + e.name + "' item " + std::to_string(item) + ": bad list length");
-        for (size_t k = 0; k < static_cast<size_t>(n); ++k) {
-          const double v = values.Next(p.type);
-          if (static_cast<int>(i) != indices) continue;
-          if (!(v == std::floor(v) && v >= static_cast<double>(INT_MIN) && v <= static_cast<double>(INT_MAX)))
-            Fail(path, "ply", "face " + std::to_string(item) + ": not a vertex index");
-          polygon.push_back(static_cast<int>(v));
-        }
+      if (!p.list) {
+        const double v = values.Next(p.type);
+        if (static_cast<int>(i) == x) xyz[0] = v;
+        if (static_cast<int>(i) == y) xyz[1] = v;
+        if (static_cast<int>(i) == z) xyz[2] = v;
+        continue;
       }
-      if (vertex) soup.vertices.emplace_back(xyz[0], xyz[1], xyz[2]);
-      if (face) soup.faces.push_back(std::move(polygon));
+      const double n = values.Next(p.count_type);
+      const size_t least = values.ascii() ? 1 : PlySize(p.type);
+      if (!(n >= 0.0 && n == std::floor(n) && n <= static_cast<double>(values.remaining() / least)))
+        Fail(path, "ply", "element '" + e.name + "' item " + std::to_string(item) + ": bad list length");
+      for (size_t k = 0; k < static_cast<size_t>(n); ++k) {
+        const double v = values.Next(p.type);
+        if (static_cast<int>(i) != indices) continue;
+        if (!(v == std::floor(v) && v >= static_cast<double>(INT_MIN) && v <= static_cast<double>(INT_MAX)))
+          Fail(path, "ply", "face " + std::to_string(item) + ": not a vertex index");
+        polygon.push_back(static_cast<int>(v));
+      }
     }
+    if (vertex) soup.vertices.emplace_back(xyz[0], xyz[1], xyz[2]);
+    if (face) soup.faces.push_back(std::move(polygon));
+  }
+}
+
+}  // namespace
+
+PolygonSoup ReadPlySoup(const std::string& path) {
+  const std::string text = Slurp(path, "ply");
+  const PlyHeader header = ReadPlyHeader(path, text);
+  PlyValues values(path, std::string_view(text).substr(header.body_offset), header.format);
+  PolygonSoup soup;
+  bool have_vertices = false, have_faces = false;
+  for (const PlyElement& e : header.elements) {
+    if (e.properties.empty()) continue;  // nothing to read
+    ReadPlyElement(path, e, values, soup);
+    have_vertices = have_vertices || e.name == "vertex";
+    have_faces = have_faces || e.name == "face";
   }
   if (!have_vertices) Fail(path, "ply", "no vertex element");
   if (!have_faces) Fail(path, "ply", "no face element");
