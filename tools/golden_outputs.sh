@@ -39,7 +39,8 @@ for args in "--pad flat --soil fjs1_lp --speed 1.0 --zeta 0.8" \
             "--pad curved --soil fjs1_cp --speed 1.5 --zeta 2.1 --gravity 1.62" \
             "--pad c4 --soil fjs1_lp --speed 0.7 --zeta 1.1 --mass 3.0" \
             "--pad flat --soil fjs1_lp --speed 1.0 --zeta 0.9 --free --tilt-deg 10 --tilt-axis x" \
-            "--pad curved --soil fjs1_lp --speed 1.2 --zeta 1.0 --free --horizontal-speed 0.4 --law agarwal2023"; do
+            "--pad curved --soil fjs1_lp --speed 1.2 --zeta 1.0 --free --horizontal-speed 0.4 --law agarwal2023" \
+            "--pad hex --soil fjs1_cp --speed 1.0 --zeta 1.5 --free --tilt-deg 5 --tilt-axis y --omega 0 0 2"; do
   n=$((n + 1))
   # shellcheck disable=SC2086  # the argument list is split on purpose
   "$td" drop $args --trace "drops/trace_$n.csv" > "drops/summary_$n.txt"
