@@ -65,7 +65,7 @@ void AddDropCommand(CLI::App& app) {
     if (args->free) {
       c.free = true;
       c.tilt_rad = units::DegToRad(args->tilt_deg);
-      c.tilt_axis = args->tilt_axis;
+      c.tilt_axis = pad::ParseTiltAxis(args->tilt_axis, "command line");
       c.horizontal_speed_m_s = args->horizontal_speed_m_s;
       c.omega_W = Eigen::Vector3d(args->omega[0], args->omega[1], args->omega[2]);
       c.law_3d = args->law;

@@ -66,7 +66,8 @@ void AddForceCommand(CLI::App& app) {
     limits::Require(limits::kAngularSpeed_rad_s, k.w_WB_W.stableNorm(), "command line", "--omega (its magnitude)");
     if (k.v_WB_W.norm() == 0.0 && k.w_WB_W.norm() == 0.0)
       throw MakeInputError("command line", "velocity", "the pad must move (RFT needs a direction of motion)");
-    k.R_WB = pad::TiltRotation(a->tilt_axis, units::DegToRad(a->tilt_deg));
+    const pad::TiltAxis axis = pad::ParseTiltAxis(a->tilt_axis);
+    k.R_WB = pad::TiltRotation(axis, units::DegToRad(a->tilt_deg));
     const io::PadSpec pad = io::LoadPad(a->pad);
     rft::SoilParameters soil = io::LoadSoil(a->soil);
     if (a->zeta_N_cm3) soil.zeta_N_m3 = units::ZetaFromN_cm3(*a->zeta_N_cm3);
@@ -79,7 +80,7 @@ void AddForceCommand(CLI::App& app) {
         {"law", std::string(law->name())},
         {"depth_m", a->depth_m},
         {"tilt_deg", a->tilt_deg},
-        {"tilt_axis", a->tilt_axis},
+        {"tilt_axis", pad::TiltAxisName(axis)},
         {"velocity_m_s", a->velocity},
         {"omega_rad_s", a->omega},
         {"reference_point_m", {k.p_WB.x(), k.p_WB.y(), k.p_WB.z()}},

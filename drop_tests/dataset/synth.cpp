@@ -14,6 +14,7 @@
 #include "drop_tests/io/catalog.h"
 #include "drop_tests/io/dataset_csv.h"
 #include "drop_tests/io/yaml_fields.h"
+#include "drop_tests/model/effects_yaml.h"
 #include "rft/input_error.h"
 #include "rft/stress_law.h"
 #include "rft/units.h"

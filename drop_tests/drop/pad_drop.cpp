@@ -60,8 +60,6 @@ void ValidateConditions(const DropConditions& c, const std::string& context) {
   if (c.atmosphere && *c.atmosphere != "vacuum" && *c.atmosphere != "air")
     throw MakeInputError(context, "atmosphere", "must be vacuum or air, got '" + *c.atmosphere + "'");
   if (!(std::abs(c.tilt_rad) < 90.0 * kDeg)) bad("tilt_deg", c.tilt_rad / kDeg, "between -90 and 90");
-  if (c.tilt_axis != "x" && c.tilt_axis != "y")
-    throw MakeInputError(context, "tilt_axis", "must be x or y, got '" + c.tilt_axis + "'");
   limits::Require(limits::kAbsSpeed_m_s, c.horizontal_speed_m_s, context, "horizontal_speed_m_s");
   if (!c.omega_W.allFinite()) throw MakeInputError(context, "omega", "must be finite");
   limits::Require(limits::kAngularSpeed_rad_s, c.omega_W.stableNorm(), context, "omega (its magnitude)");

@@ -33,7 +33,7 @@ struct DropConditions {
   // tilt, horizontal speed or angular velocity (IsFree).
   bool free = false;
   double tilt_rad = 0.0;                // at release, about tilt_axis (world x or y)
-  std::string tilt_axis = "x";
+  pad::TiltAxis tilt_axis = pad::TiltAxis::kX;
   double horizontal_speed_m_s = 0.0;    // along +x of the world
   Eigen::Vector3d omega_W = Eigen::Vector3d::Zero();  // angular velocity at release [rad/s]
   std::string law_3d;                   // free drop: "li2013" or "agarwal2023"; "" = the soil's rft_law_3d

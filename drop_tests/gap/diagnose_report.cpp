@@ -7,6 +7,8 @@
 #include <iostream>
 #include <sstream>
 
+#include <yaml-cpp/yaml.h>
+
 #include "drop_tests/io/output_path.h"
 #include "drop_tests/io/dataset_csv.h"
 #include "drop_tests/gap/diagnose.h"
@@ -161,11 +163,13 @@ void WriteDiagnosis(const Diagnosis& d, const dataset::Dataset& ds, const io::Ou
         for (size_t i = 0; i < e.values.size(); ++i, ++k)
           intervals.back().emplace_back(after.fit.estimates[k].low, after.fit.estimates[k].high);
       }
-      model.effects = model::EffectsToYaml(after.fit.effects, intervals);
+      model.effects = after.fit.effects;
+      model.effect_intervals = intervals;
     }
-    model.provenance = YAML::Node(YAML::NodeType::Map);
-    model.provenance["diagnose"] = d.decision;
-    model.provenance["intervals"] = "95 %, cluster-robust over training drops (docs/model_gap.md)";
+    YAML::Node provenance(YAML::NodeType::Map);
+    provenance["diagnose"] = d.decision;
+    provenance["intervals"] = "95 %, cluster-robust over training drops (docs/model_gap.md)";
+    model.provenance_yaml = YAML::Dump(provenance);
     model::WriteModelFile(model, (dir / "model.yaml").string(), out.path);
 
     io::WriteFileAtomically((dir / "diagnosis.json").string(), [&](std::ostream& out) { out << DiagnosisJson(d).dump(2) << '\n'; });

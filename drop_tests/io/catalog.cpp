@@ -7,6 +7,8 @@
 #include <numbers>
 #include <sstream>
 
+#include "drop_tests/io/field_table.h"
+#include "drop_tests/io/output_path.h"
 #include "drop_tests/io/yaml_fields.h"
 #include "footpad_geom/mesh_io.h"
 #include "footpad_geom/pad_body_builder.h"
@@ -29,6 +31,20 @@ using units::kDeg;
 // ~500k at 1024); 10000 profile pieces resolve any curve a pad drawing can specify.
 constexpr int kMaxAngularSegments = 1024;
 constexpr int kMaxProfileSegments = 10000;
+
+// A soil file's number fields (zeta, with its 'agarwal2023' alternative, is read on its own).
+const FieldTable<rft::SoilParameters>& SoilNumberFields() {
+  using S = rft::SoilParameters;
+  static const FieldTable<S> fields{
+      {"reference_gravity_m_s2", &S::reference_gravity_m_s2, 1.0, Sign::kPositive, true, true},
+      {"bulk_density_kg_m3", &S::bulk_density_kg_m3, 1.0, Sign::kPositive, true, true},
+      {"internal_friction_angle_deg", &S::internal_friction_angle_rad, kDeg, Sign::kPositive, true, true},
+      {"mu_surf", &S::surface_friction_coefficient, 1.0, Sign::kNonNegative, true, true},
+      {"dynamic_lambda", &S::dynamic_lambda, 1.0, Sign::kNonNegative, true, true},
+      {"dynamic_density_kg_m3", &S::dynamic_density_kg_m3, 1.0, Sign::kPositive, true, true},
+  };
+  return fields;
+}
 
 std::vector<geom::ProfilePoint> ReadProfileTable(const YamlFields& f) {
   std::vector<geom::ProfilePoint> points;
@@ -229,19 +245,21 @@ PadSpec LoadPad(const std::string& name_or_path) {
   f.RequireSchemaVersion(1);
   PadSpec pad;
   pad.source = path;
-  pad.kind = f.StringOr("kind", "axisymmetric");
+  const std::string kind = f.StringOr("kind", "axisymmetric");
   pad.name = f.StringOr("name", fs::path(path).stem().string());
   if (!IsValidUtf8(pad.name)) f.Fail("name", "the pad name (from the file name) is not valid UTF-8 text");
-  if (pad.kind == "axisymmetric") {
+  if (kind == "axisymmetric") {
+    pad.kind = PadKind::kAxisymmetric;
     f.RequireOnly({"schema_version", "name", "kind", "mass_kg", "profile", "description", "provenance",
                    "angular_segments", "reference_point_mm", "inertia_kg_m2", "center_of_mass_mm"});
     LoadAxisymmetricPad(f, pad);
-  } else if (pad.kind == "mesh") {
+  } else if (kind == "mesh") {
+    pad.kind = PadKind::kMesh;
     f.RequireOnly({"schema_version", "name", "kind", "mesh", "mass_kg", "density_kg_m3", "description",
                    "provenance", "reference_point_mm", "inertia_kg_m2", "center_of_mass_mm"});
     LoadMeshPad(f, pad);
   } else {
-    f.Fail("kind", "unknown pad kind '" + pad.kind + "' (axisymmetric, mesh)");
+    f.Fail("kind", "unknown pad kind '" + kind + "' (axisymmetric, mesh)");
   }
   return pad;
 }
@@ -250,22 +268,21 @@ rft::SoilParameters LoadSoil(const std::string& name_or_path) {
   const std::string path = ResolveCatalogFile("soils", name_or_path);
   const YamlFields f = YamlFields::LoadFile(path);
   f.RequireSchemaVersion(1);
-  f.RequireOnly({"schema_version", "name", "description", "atmosphere", "zeta_N_cm3", "bulk_density_kg_m3",
-                 "internal_friction_angle_deg", "reference_gravity_m_s2", "provenance", "mu_surf", "dynamic_term",
-                 "dynamic_lambda", "dynamic_density_kg_m3"});
+  std::vector<std::string> known{"schema_version", "name", "description", "atmosphere", "zeta_N_cm3", "provenance",
+                                 "dynamic_term"};
+  for (const std::string& key : FieldKeys(SoilNumberFields())) known.push_back(key);
+  f.RequireOnly(known);
   rft::SoilParameters soil;
   soil.name = f.StringOr("name", fs::path(path).stem().string());
   if (!IsValidUtf8(soil.name)) f.Fail("name", "the soil name (from the file name) is not valid UTF-8 text");
   soil.atmosphere = f.StringOr("atmosphere", "vacuum");
   if (soil.atmosphere != "vacuum" && soil.atmosphere != "air")
     f.Fail("atmosphere", "must be 'vacuum' or 'air', got '" + soil.atmosphere + "'");
-  soil.reference_gravity_m_s2 = f.PositiveOr("reference_gravity_m_s2", 9.81);
-  if (f.Has("bulk_density_kg_m3")) soil.bulk_density_kg_m3 = f.Positive("bulk_density_kg_m3");
-  if (f.Has("internal_friction_angle_deg")) {
-    const double phi = f.Positive("internal_friction_angle_deg");
-    if (phi >= 90.0) f.Fail("internal_friction_angle_deg", "must be below 90");
-    soil.internal_friction_angle_rad = phi * kDeg;
-  }
+  ReadFields(f, SoilNumberFields(), soil);
+  if (soil.internal_friction_angle_rad >= 90.0 * kDeg) f.Fail("internal_friction_angle_deg", "must be below 90");
+  // The 3D laws' soil fields (rft/soil.h): Agarwal 2023's intruder-surface friction, and the
+  // dynamic term lambda rho_c (v.n)^2 of the 3D contact (free drops, force, lander).
+  if (soil.surface_friction_coefficient > 10.0) f.Fail("mu_surf", "must be at most 10 (a friction coefficient)");
   if (!f.Has("zeta_N_cm3")) f.Fail("zeta_N_cm3", "missing (a number, or 'agarwal2023' to derive it)");
   if (f.node()["zeta_N_cm3"].IsScalar() && f.node()["zeta_N_cm3"].Scalar() == "agarwal2023") {
     if (soil.bulk_density_kg_m3 == 0.0 || soil.internal_friction_angle_rad == 0.0)
@@ -277,18 +294,21 @@ rft::SoilParameters LoadSoil(const std::string& name_or_path) {
     limits::Require(limits::kZeta_N_cm3, zeta_N_cm3, f.file(), "zeta_N_cm3");
     soil.zeta_N_m3 = units::ZetaFromN_cm3(zeta_N_cm3);
   }
-  // The 3D laws' soil fields (rft/soil.h): Agarwal 2023's intruder-surface friction, and the
-  // dynamic term lambda rho_c (v.n)^2 of the 3D contact (free drops, force, lander).
-  if (f.Has("mu_surf")) {
-    soil.surface_friction_coefficient = f.NonNegative("mu_surf");
-    if (soil.surface_friction_coefficient > 10.0) f.Fail("mu_surf", "must be at most 10 (a friction coefficient)");
-  }
   if (f.Has("dynamic_term")) soil.dynamic_term = f.Bool("dynamic_term");
-  if (f.Has("dynamic_lambda")) soil.dynamic_lambda = f.NonNegative("dynamic_lambda");
-  if (f.Has("dynamic_density_kg_m3")) soil.dynamic_density_kg_m3 = f.Positive("dynamic_density_kg_m3");
   if (soil.dynamic_term && soil.dynamic_density_kg_m3 == 0.0 && soil.bulk_density_kg_m3 == 0.0)
     f.Fail("dynamic_term", "needs a density: dynamic_density_kg_m3 or bulk_density_kg_m3");
   return soil;
+}
+
+void WriteSoil(const rft::SoilParameters& soil, const std::string& path) {
+  YAML::Emitter y;
+  y << YAML::BeginMap << YAML::Key << "schema_version" << YAML::Value << 1 << YAML::Key << "name" << YAML::Value
+    << soil.name << YAML::Key << "atmosphere" << YAML::Value << soil.atmosphere << YAML::Key << "zeta_N_cm3"
+    << YAML::Value << units::ZetaToN_cm3(soil.zeta_N_m3);
+  WriteFields(y, SoilNumberFields(), soil);
+  if (soil.dynamic_term) y << YAML::Key << "dynamic_term" << YAML::Value << true;
+  y << YAML::EndMap;
+  WriteFileAtomically(path, [&](std::ostream& out) { out << y.c_str() << '\n'; });
 }
 
 }  // namespace touchdown::io

@@ -19,10 +19,12 @@ namespace touchdown::io {
 // `density_kg_m3`; inertia and centre of mass of the uniform solid unless `inertia_kg_m2`
 // {ixx, iyy, izz, ixy, ixz, iyz} (about the centre of mass, the tensor's own entries, so ixy =
 // -integral of x y dm) and optionally `center_of_mass_mm` are given.
+enum class PadKind { kAxisymmetric, kMesh };  // `kind: axisymmetric` or `kind: mesh`
+
 struct PadSpec {
   std::string name;
   std::string source;  // the YAML file it came from
-  std::string kind = "axisymmetric";  // or "mesh"
+  PadKind kind = PadKind::kAxisymmetric;
   // The exact generator curve, for the rig drop's profile integral; no points for a mesh pad.
   geom::AxisymmetricProfile profile;
   double mass_kg = 0.0;
@@ -40,5 +42,7 @@ std::string ResolveCatalogFile(const std::string& kind, const std::string& name_
 
 PadSpec LoadPad(const std::string& name_or_path);
 rft::SoilParameters LoadSoil(const std::string& name_or_path);
+// A soil file that LoadSoil reads back to the same soil (zeta as a number, in N/cm^3).
+void WriteSoil(const rft::SoilParameters& soil, const std::string& path);
 
 }  // namespace touchdown::io

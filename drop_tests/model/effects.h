@@ -50,14 +50,6 @@
 #include "rft/soil.h"
 #include "rft/stress_law_3d.h"
 
-namespace YAML {
-class Node;
-}
-
-namespace touchdown::io {
-class YamlFields;
-}
-
 namespace touchdown::model {
 
 // One parameter of an effect as a file and a fit see it.
@@ -128,13 +120,10 @@ std::unique_ptr<rft::StressLaw3D> MakeEffectLaw3D(std::string_view law, const rf
                                                   double gravity_m_s2, const EffectTerms& terms, bool in_air,
                                                   const std::string& model_source);
 
-// The `effects:` mapping of a model file: {id: {param_key: value, ...}, ...}; optional
-// `interval_95` mappings ({key: [low, high]}) are informational and checked for shape.
-// Throws InputError naming file and field.
-std::vector<Effect> ParseEffects(const io::YamlFields& effects_mapping);
-// Writes `effects` as that mapping (file units), with intervals when given (same shape).
-YAML::Node EffectsToYaml(const std::vector<Effect>& effects,
-                         const std::vector<std::vector<std::pair<double, double>>>& intervals = {});
+// Per effect, the [low, high] (SI) of each parameter in EffectInfo order (a fit's confidence
+// intervals; informational). Reading and writing the `effects:` mapping of a model file:
+// drop_tests/model/effects_yaml.h (private to .cpp files).
+using EffectIntervals = std::vector<std::vector<std::pair<double, double>>>;
 
 // The rig's soil response with effect terms, for one pad, soil and atmosphere.
 struct SoilResponseInputs {

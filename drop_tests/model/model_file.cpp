@@ -5,7 +5,9 @@
 
 #include "drop_tests/io/output_path.h"
 #include "drop_tests/io/dataset_csv.h"
+#include "drop_tests/io/field_table.h"
 #include "drop_tests/model/effects.h"
+#include "drop_tests/model/effects_yaml.h"
 #include "drop_tests/io/paths_in_outputs.h"
 #include "drop_tests/io/yaml_fields.h"
 #include "rft/input_error.h"
@@ -15,11 +17,19 @@ namespace touchdown::model {
 
 namespace {
 
+// A soil override's zeta and its reference gravity, read and written (always, both) from here.
+const io::FieldTable<SoilOverride>& OverrideNumberFields() {
+  static const io::FieldTable<SoilOverride> fields{
+      {"zeta_N_cm3", &SoilOverride::zeta_N_m3, units::kN_m3_per_N_cm3, io::Sign::kPositive, /*optional=*/false},
+      {"reference_gravity_m_s2", &SoilOverride::reference_gravity_m_s2, 1.0, io::Sign::kPositive},
+  };
+  return fields;
+}
+
 SoilOverride ReadOverride(const io::YamlFields& f) {
   f.RequireOnly({"zeta_N_cm3", "reference_gravity_m_s2", "zeta_interval_N_cm3", "confidence", "fit"});
   SoilOverride o;
-  o.zeta_N_m3 = f.Positive("zeta_N_cm3") * units::kN_m3_per_N_cm3;
-  o.reference_gravity_m_s2 = f.PositiveOr("reference_gravity_m_s2", 9.81);
+  io::ReadFields(f, OverrideNumberFields(), o);
   if (f.Has("zeta_interval_N_cm3")) {
     const YAML::Node n = f.node()["zeta_interval_N_cm3"];
     double lo = 0, hi = 0;
@@ -66,10 +76,9 @@ ModelFile LoadModelFile(const std::string& path) {
   }
   if (f.Has("effects")) {
     if (!f.node()["effects"].IsMap()) f.Fail("effects", "must be a mapping of effect terms");
-    m.effects = f.node()["effects"];
-    ParseEffects(f.Child("effects"));  // issue 6: validates ids, parameters and ranges (drop_tests/model/effects.h)
+    m.effects = ParseEffects(f.Child("effects"), &m.effect_intervals);  // ids, parameters and ranges
   }
-  if (f.Has("provenance")) m.provenance = f.node()["provenance"];
+  if (f.Has("provenance")) m.provenance_yaml = YAML::Dump(f.node()["provenance"]);
   return m;
 }
 
@@ -84,8 +93,8 @@ void WriteModelFile(const ModelFile& m, const io::OutputTarget& target, const st
   if (!m.description.empty()) y << YAML::Key << "description" << YAML::Value << m.description;
   y << YAML::Key << "soils" << YAML::Value << YAML::BeginMap;
   for (const auto& [name, o] : m.soils) {
-    y << YAML::Key << name << YAML::Value << YAML::BeginMap << YAML::Key << "zeta_N_cm3" << YAML::Value
-      << units::ZetaToN_cm3(o.zeta_N_m3) << YAML::Key << "reference_gravity_m_s2" << YAML::Value << o.reference_gravity_m_s2;
+    y << YAML::Key << name << YAML::Value << YAML::BeginMap;
+    io::WriteFields(y, OverrideNumberFields(), o);
     if (o.zeta_low_N_m3 && o.zeta_high_N_m3)
       y << YAML::Key << "zeta_interval_N_cm3" << YAML::Value << YAML::Flow << YAML::BeginSeq
         << units::ZetaToN_cm3(*o.zeta_low_N_m3) << units::ZetaToN_cm3(*o.zeta_high_N_m3) << YAML::EndSeq << YAML::Key << "confidence"
@@ -102,9 +111,9 @@ void WriteModelFile(const ModelFile& m, const io::OutputTarget& target, const st
   }
   y << YAML::EndMap;
   y << YAML::Key << "effects" << YAML::Value;
-  if (m.HasEffects()) y << m.effects;
+  if (m.HasEffects()) y << EffectsToYaml(m.effects, m.effect_intervals);
   else y << YAML::Flow << YAML::BeginMap << YAML::EndMap;
-  if (m.provenance && !m.provenance.IsNull()) y << YAML::Key << "provenance" << YAML::Value << m.provenance;
+  if (!m.provenance_yaml.empty()) y << YAML::Key << "provenance" << YAML::Value << YAML::Load(m.provenance_yaml);
   y << YAML::EndMap;
   io::WriteOutputFile(target, [&](std::ostream& out) { out << kModelFileMark << '\n' << y.c_str() << '\n'; }, kModelFileMark);
 }
@@ -118,13 +127,8 @@ rft::SoilParameters ApplyModel(const ModelFile& m, const rft::SoilParameters& so
   return out;
 }
 
-std::vector<Effect> ModelEffects(const ModelFile& m) {
-  if (!m.HasEffects()) return {};
-  return ParseEffects(io::YamlFields(m.effects, m.source.empty() ? std::string("model ") + m.name : m.source, "effects"));
-}
-
 EffectTerms ModelEffectTerms(const ModelFile& m) {
-  return MakeEffectTerms(ModelEffects(m), m.source.empty() ? "model " + m.name : m.source);
+  return MakeEffectTerms(m.effects, m.source.empty() ? "model " + m.name : m.source);
 }
 
 std::unique_ptr<rft::StressLaw3D> MakeModelStressLaw3D(std::string_view law, const rft::SoilParameters& soil,
@@ -147,7 +151,7 @@ std::string ModelDigestText(const ModelFile& m) {
   std::string s = "model:" + m.name + ";";
   for (const auto& [name, o] : m.soils)
     s += name + "=" + io::FormatNumber(o.zeta_N_m3) + "@" + io::FormatNumber(o.reference_gravity_m_s2) + ";";
-  if (m.HasEffects()) s += "effects:" + YAML::Dump(m.effects);
+  if (m.HasEffects()) s += "effects:" + YAML::Dump(EffectsToYaml(m.effects, m.effect_intervals));
   return s;
 }
 

@@ -16,8 +16,8 @@
 //     inertial_drag: {lambda: 2.1, interval_95: {lambda: [1.8, 2.4]}}
 //   provenance: ...             # free text/mapping, kept
 //
-// `effects` is kept as raw YAML (written back unchanged) and validated on load; ModelEffectTerms
-// gives its terms. Where they act:
+// `effects` is parsed and validated on load (drop_tests/model/effects_yaml.h) and written back from
+// the parsed values; ModelEffectTerms gives its terms. Where they act:
 //   rig drops (`drop`, `sweep`, `compare`, `calibrate`'s users): every effect, through
 //     DropConditions::effects (drop_tests/drop/pad_drop.h); gas_cushion only on drops in air (the
 //     drop's atmosphere: the dataset row's in `compare`, else the soil's);
@@ -31,9 +31,9 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <nlohmann/json_fwd.hpp>
-#include <yaml-cpp/yaml.h>
 
 #include "drop_tests/model/effects.h"
 #include "drop_tests/io/output_path.h"
@@ -64,10 +64,11 @@ struct ModelFile {
   std::string name;
   std::string description;
   std::map<std::string, SoilOverride> soils;
-  YAML::Node effects;     // raw; null or an empty mapping when there are none
-  YAML::Node provenance;  // raw, written back unchanged
+  std::vector<Effect> effects;      // in file order (SI values); none: quasi-static RFT
+  EffectIntervals effect_intervals;  // per effect (may be empty), informational, written back
+  std::string provenance_yaml;      // the provenance as YAML text ("" when none), written back unchanged
 
-  bool HasEffects() const { return effects && effects.IsMap() && effects.size() > 0; }
+  bool HasEffects() const { return !effects.empty(); }
 };
 
 ModelFile LoadModelFile(const std::string& path);
@@ -80,9 +81,8 @@ void WriteModelFile(const ModelFile& model, const io::OutputTarget& target, cons
 // The soil as the model sees it: its zeta replaced when the model has an override (converted to
 // the soil's own reference gravity). Effect terms are not part of the soil: see ModelEffectTerms.
 rft::SoilParameters ApplyModel(const ModelFile& model, const rft::SoilParameters& soil);
-// The model's effects (validated; none when `effects` is empty) and their flattened terms.
-// Throws InputError naming the model file and field.
-std::vector<Effect> ModelEffects(const ModelFile& model);
+// The model's effects flattened (none when `effects` is empty). Throws InputError naming the
+// model file on a repeated effect or a value out of range (a model built in memory).
 EffectTerms ModelEffectTerms(const ModelFile& model);
 // The 3D stress law of `soil` under `model` (may be null: the soil as it is): zeta override
 // (ApplyModel) and the effect terms in their 3D form (MakeEffectLaw3D; gas_cushion only when the

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <iomanip>
 #include <nlohmann/json.hpp>
 #include <numbers>
@@ -12,6 +13,7 @@
 
 #include "drop_tests/io/output_path.h"
 #include "drop_tests/io/dataset_csv.h"  // io::FormatNumber
+#include "drop_tests/io/field_table.h"
 #include "drop_tests/scenario/lander_plots.h"
 #include "drop_tests/io/paths_in_outputs.h"
 #include "drop_tests/io/yaml_fields.h"
@@ -58,15 +60,20 @@ std::string ResolveRelative(const io::YamlFields& f, const std::string& kind, co
   }
 }
 
+// The absorber kinds as files name them (read and written).
+const char* AbsorberKindName(lander::ShockAbsorber::Kind kind) {
+  return kind == lander::ShockAbsorber::Kind::kSpringDamper ? "spring_damper" : "crushable";
+}
+
 lander::ShockAbsorber ReadAbsorber(const io::YamlFields& f) {
   lander::ShockAbsorber a;
   const std::string kind = f.String("kind");
-  if (kind == "spring_damper") {
+  if (kind == AbsorberKindName(lander::ShockAbsorber::Kind::kSpringDamper)) {
     f.RequireOnly({"kind", "stiffness_N_m", "damping_N_s_m"});
     a.kind = lander::ShockAbsorber::Kind::kSpringDamper;
     a.stiffness_N_m = f.Positive("stiffness_N_m");
     a.damping_N_s_m = f.Has("damping_N_s_m") ? f.NonNegative("damping_N_s_m") : 0.0;
-  } else if (kind == "crushable") {
+  } else if (kind == AbsorberKindName(lander::ShockAbsorber::Kind::kCrushable)) {
     f.RequireOnly({"kind", "crush_force_N", "stroke_mm"});
     a.kind = lander::ShockAbsorber::Kind::kCrushable;
     a.crush_force_N = f.Positive("crush_force_N");
@@ -143,6 +150,173 @@ LanderSpec LoadLanderSpec(const std::string& name_or_path) {
   return s;
 }
 
+namespace {
+// The number fields of the scenario's sections that the resolved copy writes back as given
+// (in the order it writes them); fields that depend on each other stay with their readers.
+const io::FieldTable<LanderGroundSpec>& GroundNumberFields() {
+  using G = LanderGroundSpec;
+  static const io::FieldTable<G> fields{
+      {"height_m", &G::height_m},
+      {"slope_deg", &G::slope_rad, kDeg, io::Sign::kNonNegative},
+      {"downhill_azimuth_deg", &G::downhill_azimuth_rad, kDeg},
+  };
+  return fields;
+}
+
+const io::FieldTable<LanderInitialSpec>& AttitudeNumberFields() {
+  using I = LanderInitialSpec;
+  static const io::FieldTable<I> fields{
+      {"roll_deg", &I::roll_rad, kDeg},
+      {"pitch_deg", &I::pitch_rad, kDeg},
+      {"yaw_relative_to_slope_deg", &I::yaw_relative_to_slope_rad, kDeg},
+  };
+  return fields;
+}
+
+const io::FieldTable<lander::LanderRunOptions>& RunNumberFields() {
+  using R = lander::LanderRunOptions;
+  static const io::FieldTable<R> fields{
+      {"duration_s", &R::duration_s, 1.0, io::Sign::kPositive},
+      {"sample_rate_hz", &R::sample_rate_hz, 1.0, io::Sign::kPositive},
+      {"capture_speed_m_s", &R::capture_speed_m_s, 1.0, io::Sign::kNonNegative},
+  };
+  return fields;
+}
+
+using SoilCheck = std::function<void(const io::YamlFields&, const std::string&, const std::string&)>;
+
+// One soil patch; an under_pad patch keeps (pad, half width) until the release pose is known.
+LanderPatchSpec ReadPatch(const io::YamlFields& p, const SoilCheck& check_soil) {
+  p.RequireOnly({"name", "soil", "rectangle_m", "polygon_m", "under_pad", "half_width_m"});
+  LanderPatchSpec patch;
+  patch.soil = p.String("soil");
+  check_soil(p, "soil", patch.soil);
+  const int given = int(p.Has("rectangle_m")) + int(p.Has("polygon_m")) + int(p.Has("under_pad"));
+  if (given != 1) p.Fail("rectangle_m", "give exactly one of rectangle_m, polygon_m, under_pad");
+  if (p.Has("rectangle_m")) {
+    const std::vector<double> r = FixedList(p, "rectangle_m", 4);
+    if (!(r[2] > r[0] && r[3] > r[1])) p.Fail("rectangle_m", "must be [x0, y0, x1, y1] with x1 > x0, y1 > y0");
+    patch.polygon_W = rft::RectanglePolygon(r[0], r[1], r[2], r[3]);
+  } else if (p.Has("polygon_m")) {
+    const YAML::Node list = p.node()["polygon_m"];
+    if (!list.IsSequence() || list.size() < 3) p.Fail("polygon_m", "must list at least three [x, y] corners");
+    for (size_t k = 0; k < list.size(); ++k) {
+      double x = 0, y = 0;
+      if (!list[k].IsSequence() || list[k].size() != 2 || !YAML::convert<double>::decode(list[k][0], x) ||
+          !YAML::convert<double>::decode(list[k][1], y) || !std::isfinite(x) || !std::isfinite(y))
+        p.Fail("polygon_m[" + std::to_string(k) + "]", "must be a pair of finite numbers [x, y]");
+      patch.polygon_W.emplace_back(x, y);
+    }
+  } else {
+    const int pad = p.PositiveInt("under_pad");
+    if (pad > lander::kNumLegs) p.Fail("under_pad", "must be 1..4, got " + std::to_string(pad));
+    const double h = p.Positive("half_width_m");
+    patch.name = "under_pad_" + std::to_string(pad);
+    patch.polygon_W = {Eigen::Vector2d(pad, h)};  // resolved below, once the initial pose is known
+  }
+  if (p.Has("name")) patch.name = p.String("name");
+  return patch;
+}
+
+// The ground: plane or slope, the 3D law, the default soil and the soil patches (every soil
+// loaded and checked against the law at `gravity_m_s2`).
+LanderGroundSpec ReadGround(const io::YamlFields& g, double gravity_m_s2) {
+  LanderGroundSpec ground;
+  g.RequireOnly({"height_m", "slope_deg", "downhill_azimuth_deg", "law", "soil", "patches"});
+  io::ReadFields(g, GroundNumberFields(), ground);
+  if (ground.slope_rad >= 80 * kDeg) g.Fail("slope_deg", "must be below 80");
+  ground.law = g.StringOr("law", "li2013");
+  ground.default_soil = g.String("soil");
+  const SoilCheck check_soil = [&](const io::YamlFields& where, const std::string& key, const std::string& soil) {
+    try {
+      rft::MakeStressLaw3D(ground.law, io::LoadSoil(soil), gravity_m_s2);
+    } catch (const InputError& e) {
+      where.Fail(key, e.what());
+    }
+  };
+  check_soil(g, "soil", ground.default_soil);
+  if (g.Has("patches")) {
+    for (const io::YamlFields& p : g.List("patches")) {
+      LanderPatchSpec patch = ReadPatch(p, check_soil);
+      if (patch.name.empty()) patch.name = "patch_" + std::to_string(ground.patches.size() + 1);
+      ground.patches.push_back(patch);
+    }
+  }
+  return ground;
+}
+
+// The release: drop height or touchdown speed, velocities, attitude and the pads' attitude.
+LanderInitialSpec ReadInitial(const io::YamlFields& in) {
+  LanderInitialSpec ic;
+  in.RequireOnly({"drop_height_m", "touchdown_speed_m_s", "release_vertical_speed_m_s", "horizontal_velocity_m_s",
+                  "roll_deg", "pitch_deg", "yaw_relative_to_slope_deg", "align_to_slope", "angular_rate_deg_s",
+                  "pad_attitude"});
+  if (in.Has("drop_height_m") == in.Has("touchdown_speed_m_s"))
+    in.Fail("drop_height_m", "give exactly one of drop_height_m and touchdown_speed_m_s");
+  if (in.Has("drop_height_m")) ic.drop_height_m = in.NonNegative("drop_height_m");
+  if (in.Has("touchdown_speed_m_s")) {
+    ic.touchdown_speed_m_s = in.NonNegative("touchdown_speed_m_s");
+    limits::Require(limits::kSpeed_m_s, *ic.touchdown_speed_m_s, in.file(), in.Path("touchdown_speed_m_s"));
+  }
+  if (in.Has("release_vertical_speed_m_s")) {
+    if (!in.Has("drop_height_m")) in.Fail("release_vertical_speed_m_s", "only with drop_height_m");
+    ic.release_vertical_speed_m_s = in.Number("release_vertical_speed_m_s");
+  }
+  if (in.Has("horizontal_velocity_m_s")) {
+    const std::vector<double> v = FixedList(in, "horizontal_velocity_m_s", 2);
+    ic.horizontal_velocity_m_s = Eigen::Vector2d(v[0], v[1]);
+  }
+  io::ReadFields(in, AttitudeNumberFields(), ic);
+  if (std::abs(ic.roll_rad) >= 80 * kDeg) in.Fail("roll_deg", "must be within +-80");
+  if (std::abs(ic.pitch_rad) >= 80 * kDeg) in.Fail("pitch_deg", "must be within +-80");
+  if (in.Has("align_to_slope")) {
+    const std::string a = in.String("align_to_slope");
+    if (a != "true" && a != "false") in.Fail("align_to_slope", "must be true or false, got '" + a + "'");
+    ic.align_to_slope = a == "true";
+  }
+  if (in.Has("angular_rate_deg_s")) {
+    const std::vector<double> w = FixedList(in, "angular_rate_deg_s", 3);
+    ic.angular_rate_B = Eigen::Vector3d(w[0], w[1], w[2]) * kDeg;
+  }
+  ic.pad_attitude = in.StringOr("pad_attitude", "body");
+  if (ic.pad_attitude != "body" && ic.pad_attitude != "level")
+    in.Fail("pad_attitude", "must be 'body' or 'level', got '" + ic.pad_attitude + "'");
+  return ic;
+}
+
+// The run options: duration, sampling, capture speed and the integrator's tolerances.
+void ReadSimulation(const io::YamlFields& sim, lander::LanderRunOptions& options) {
+  sim.RequireOnly({"duration_s", "sample_rate_hz", "capture_speed_m_s", "rtol", "atol", "max_step_s", "stiff"});
+  io::ReadFields(sim, RunNumberFields(), options);
+  // Resolution caps (the trace keeps duration x rate samples; a hand-written 1e9 must not
+  // exhaust memory or run for days).
+  if (options.duration_s > 600.0)
+    sim.Fail("duration_s", "must be at most 600 s, got " + io::FormatNumber(options.duration_s));
+  if (options.sample_rate_hz > 1e6)
+    sim.Fail("sample_rate_hz", "must be at most 1e6 Hz, got " + io::FormatNumber(options.sample_rate_hz));
+  // The whole trace is held in memory until it is written (about 0.4 kB a sample, plus the plots'
+  // copy): 1e6 samples keep a run under about 1 GB (1e7 needed over 4 GB).
+  if (options.duration_s * options.sample_rate_hz > kLanderMaxTraceSamples)
+    sim.Fail("sample_rate_hz", "duration_s x sample_rate_hz is " +
+                                   io::FormatNumber(options.duration_s * options.sample_rate_hz) +
+                                   " trace samples, at most " + io::FormatNumber(kLanderMaxTraceSamples) +
+                                   " (lower the rate or the duration)");
+  if (sim.Has("rtol")) options.integrator.rtol = sim.Positive("rtol");
+  if (sim.Has("atol")) {
+    options.integrator.atol = sim.Positive("atol");
+    options.scale_tolerances = false;
+  }
+  if (sim.Has("max_step_s")) options.integrator.max_step = sim.Positive("max_step_s");
+  if (sim.Has("stiff")) {
+    const std::string v = sim.String("stiff");
+    if (v != "true" && v != "false") sim.Fail("stiff", "must be true or false, got '" + v + "'");
+    options.integrator.stiff = v == "true";
+  }
+  std::string why;
+  if (!options.integrator.IsValid(&why)) sim.Fail("rtol", why);
+}
+}  // namespace
+
 LanderScenario LoadLanderScenario(const std::string& path) {
   const io::YamlFields f = io::YamlFields::LoadFile(path);
   f.RequireSchemaVersion(1);
@@ -160,127 +334,9 @@ LanderScenario LoadLanderScenario(const std::string& path) {
     f.Fail("lander", e.what());
   }
 
-  const io::YamlFields g = f.Child("ground");
-  g.RequireOnly({"height_m", "slope_deg", "downhill_azimuth_deg", "law", "soil", "patches"});
-  s.ground.height_m = g.Has("height_m") ? g.Number("height_m") : 0.0;
-  s.ground.slope_rad = g.Has("slope_deg") ? g.NonNegative("slope_deg") * kDeg : 0.0;
-  if (s.ground.slope_rad >= 80 * kDeg) g.Fail("slope_deg", "must be below 80");
-  s.ground.downhill_azimuth_rad = g.Has("downhill_azimuth_deg") ? g.Number("downhill_azimuth_deg") * kDeg : 0.0;
-  s.ground.law = g.StringOr("law", "li2013");
-  s.ground.default_soil = g.String("soil");
-  auto check_soil = [&](const io::YamlFields& where, const std::string& key, const std::string& soil) {
-    try {
-      rft::MakeStressLaw3D(s.ground.law, io::LoadSoil(soil), s.gravity_m_s2);
-    } catch (const InputError& e) {
-      where.Fail(key, e.what());
-    }
-  };
-  check_soil(g, "soil", s.ground.default_soil);
-  if (g.Has("patches")) {
-    for (const io::YamlFields& p : g.List("patches")) {
-      p.RequireOnly({"name", "soil", "rectangle_m", "polygon_m", "under_pad", "half_width_m"});
-      LanderPatchSpec patch;
-      patch.soil = p.String("soil");
-      check_soil(p, "soil", patch.soil);
-      const int given = int(p.Has("rectangle_m")) + int(p.Has("polygon_m")) + int(p.Has("under_pad"));
-      if (given != 1) p.Fail("rectangle_m", "give exactly one of rectangle_m, polygon_m, under_pad");
-      if (p.Has("rectangle_m")) {
-        const std::vector<double> r = FixedList(p, "rectangle_m", 4);
-        if (!(r[2] > r[0] && r[3] > r[1])) p.Fail("rectangle_m", "must be [x0, y0, x1, y1] with x1 > x0, y1 > y0");
-        patch.polygon_W = rft::RectanglePolygon(r[0], r[1], r[2], r[3]);
-      } else if (p.Has("polygon_m")) {
-        const YAML::Node list = p.node()["polygon_m"];
-        if (!list.IsSequence() || list.size() < 3) p.Fail("polygon_m", "must list at least three [x, y] corners");
-        for (size_t k = 0; k < list.size(); ++k) {
-          double x = 0, y = 0;
-          if (!list[k].IsSequence() || list[k].size() != 2 || !YAML::convert<double>::decode(list[k][0], x) ||
-              !YAML::convert<double>::decode(list[k][1], y) || !std::isfinite(x) || !std::isfinite(y))
-            p.Fail("polygon_m[" + std::to_string(k) + "]", "must be a pair of finite numbers [x, y]");
-          patch.polygon_W.emplace_back(x, y);
-        }
-      } else {
-        const int pad = p.PositiveInt("under_pad");
-        if (pad > lander::kNumLegs) p.Fail("under_pad", "must be 1..4, got " + std::to_string(pad));
-        const double h = p.Positive("half_width_m");
-        patch.name = "under_pad_" + std::to_string(pad);
-        patch.polygon_W = {Eigen::Vector2d(pad, h)};  // resolved below, once the initial pose is known
-      }
-      if (p.Has("name")) patch.name = p.String("name");
-      if (patch.name.empty()) patch.name = "patch_" + std::to_string(s.ground.patches.size() + 1);
-      s.ground.patches.push_back(patch);
-    }
-  }
-
-  const io::YamlFields in = f.Child("initial");
-  in.RequireOnly({"drop_height_m", "touchdown_speed_m_s", "release_vertical_speed_m_s", "horizontal_velocity_m_s",
-                  "roll_deg", "pitch_deg", "yaw_relative_to_slope_deg", "align_to_slope", "angular_rate_deg_s",
-                  "pad_attitude"});
-  if (in.Has("drop_height_m") == in.Has("touchdown_speed_m_s"))
-    in.Fail("drop_height_m", "give exactly one of drop_height_m and touchdown_speed_m_s");
-  if (in.Has("drop_height_m")) s.initial.drop_height_m = in.NonNegative("drop_height_m");
-  if (in.Has("touchdown_speed_m_s")) {
-    s.initial.touchdown_speed_m_s = in.NonNegative("touchdown_speed_m_s");
-    limits::Require(limits::kSpeed_m_s, *s.initial.touchdown_speed_m_s, in.file(), in.Path("touchdown_speed_m_s"));
-  }
-  if (in.Has("release_vertical_speed_m_s")) {
-    if (!in.Has("drop_height_m")) in.Fail("release_vertical_speed_m_s", "only with drop_height_m");
-    s.initial.release_vertical_speed_m_s = in.Number("release_vertical_speed_m_s");
-  }
-  if (in.Has("horizontal_velocity_m_s")) {
-    const std::vector<double> v = FixedList(in, "horizontal_velocity_m_s", 2);
-    s.initial.horizontal_velocity_m_s = Eigen::Vector2d(v[0], v[1]);
-  }
-  s.initial.roll_rad = in.Has("roll_deg") ? in.Number("roll_deg") * kDeg : 0.0;
-  s.initial.pitch_rad = in.Has("pitch_deg") ? in.Number("pitch_deg") * kDeg : 0.0;
-  if (std::abs(s.initial.roll_rad) >= 80 * kDeg) in.Fail("roll_deg", "must be within +-80");
-  if (std::abs(s.initial.pitch_rad) >= 80 * kDeg) in.Fail("pitch_deg", "must be within +-80");
-  s.initial.yaw_relative_to_slope_rad = in.Has("yaw_relative_to_slope_deg") ? in.Number("yaw_relative_to_slope_deg") * kDeg : 0.0;
-  if (in.Has("align_to_slope")) {
-    const std::string a = in.String("align_to_slope");
-    if (a != "true" && a != "false") in.Fail("align_to_slope", "must be true or false, got '" + a + "'");
-    s.initial.align_to_slope = a == "true";
-  }
-  if (in.Has("angular_rate_deg_s")) {
-    const std::vector<double> w = FixedList(in, "angular_rate_deg_s", 3);
-    s.initial.angular_rate_B = Eigen::Vector3d(w[0], w[1], w[2]) * kDeg;
-  }
-  s.initial.pad_attitude = in.StringOr("pad_attitude", "body");
-  if (s.initial.pad_attitude != "body" && s.initial.pad_attitude != "level")
-    in.Fail("pad_attitude", "must be 'body' or 'level', got '" + s.initial.pad_attitude + "'");
-
-  if (f.Has("simulation")) {
-    const io::YamlFields sim = f.Child("simulation");
-    sim.RequireOnly({"duration_s", "sample_rate_hz", "capture_speed_m_s", "rtol", "atol", "max_step_s", "stiff"});
-    if (sim.Has("duration_s")) s.options.duration_s = sim.Positive("duration_s");
-    if (sim.Has("sample_rate_hz")) s.options.sample_rate_hz = sim.Positive("sample_rate_hz");
-    // Resolution caps (the trace keeps duration x rate samples; a hand-written 1e9 must not
-    // exhaust memory or run for days).
-    if (s.options.duration_s > 600.0)
-      sim.Fail("duration_s", "must be at most 600 s, got " + io::FormatNumber(s.options.duration_s));
-    if (s.options.sample_rate_hz > 1e6)
-      sim.Fail("sample_rate_hz", "must be at most 1e6 Hz, got " + io::FormatNumber(s.options.sample_rate_hz));
-    // The whole trace is held in memory until it is written (about 0.4 kB a sample, plus the plots'
-    // copy): 1e6 samples keep a run under about 1 GB (1e7 needed over 4 GB).
-    if (s.options.duration_s * s.options.sample_rate_hz > kLanderMaxTraceSamples)
-      sim.Fail("sample_rate_hz", "duration_s x sample_rate_hz is " +
-                                     io::FormatNumber(s.options.duration_s * s.options.sample_rate_hz) +
-                                     " trace samples, at most " + io::FormatNumber(kLanderMaxTraceSamples) +
-                                     " (lower the rate or the duration)");
-    if (sim.Has("capture_speed_m_s")) s.options.capture_speed_m_s = sim.NonNegative("capture_speed_m_s");
-    if (sim.Has("rtol")) s.options.integrator.rtol = sim.Positive("rtol");
-    if (sim.Has("atol")) {
-      s.options.integrator.atol = sim.Positive("atol");
-      s.options.scale_tolerances = false;
-    }
-    if (sim.Has("max_step_s")) s.options.integrator.max_step = sim.Positive("max_step_s");
-    if (sim.Has("stiff")) {
-      const std::string v = sim.String("stiff");
-      if (v != "true" && v != "false") sim.Fail("stiff", "must be true or false, got '" + v + "'");
-      s.options.integrator.stiff = v == "true";
-    }
-    std::string why;
-    if (!s.options.integrator.IsValid(&why)) sim.Fail("rtol", why);
-  }
+  s.ground = ReadGround(f.Child("ground"), s.gravity_m_s2);
+  s.initial = ReadInitial(f.Child("initial"));
+  if (f.Has("simulation")) ReadSimulation(f.Child("simulation"), s.options);
   if (f.Has("paper")) {
     const io::YamlFields p = f.Child("paper");
     p.RequireOnly({"ground_case", "roll_pitch_within_deg", "source"});
@@ -500,10 +556,10 @@ void WriteResolvedLanderScenario(const LanderScenario& s, const std::string& pat
       const auto& a = *leg.absorber;
       y << YAML::Key << "absorber" << YAML::Value << YAML::BeginMap;
       if (a.kind == lander::ShockAbsorber::Kind::kSpringDamper)
-        y << YAML::Key << "kind" << YAML::Value << "spring_damper" << YAML::Key << "stiffness_N_m" << YAML::Value
+        y << YAML::Key << "kind" << YAML::Value << AbsorberKindName(a.kind) << YAML::Key << "stiffness_N_m" << YAML::Value
           << a.stiffness_N_m << YAML::Key << "damping_N_s_m" << YAML::Value << a.damping_N_s_m;
       else
-        y << YAML::Key << "kind" << YAML::Value << "crushable" << YAML::Key << "crush_force_N" << YAML::Value
+        y << YAML::Key << "kind" << YAML::Value << AbsorberKindName(a.kind) << YAML::Key << "crush_force_N" << YAML::Value
           << a.crush_force_N << YAML::Key << "stroke_mm" << YAML::Value << a.stroke_limit_m * 1e3;
       y << YAML::EndMap;
     }
@@ -515,10 +571,9 @@ void WriteResolvedLanderScenario(const LanderScenario& s, const std::string& pat
     y << YAML::EndMap;
   }
   y << YAML::EndSeq << YAML::EndMap;
-  y << YAML::Key << "ground" << YAML::Value << YAML::BeginMap << YAML::Key << "height_m" << YAML::Value
-    << s.ground.height_m << YAML::Key << "slope_deg" << YAML::Value << s.ground.slope_rad / kDeg << YAML::Key
-    << "downhill_azimuth_deg" << YAML::Value << s.ground.downhill_azimuth_rad / kDeg << YAML::Key << "law"
-    << YAML::Value << s.ground.law << YAML::Key << "soil" << YAML::Value << s.ground.default_soil;
+  y << YAML::Key << "ground" << YAML::Value << YAML::BeginMap;
+  io::WriteFields(y, GroundNumberFields(), s.ground);
+  y << YAML::Key << "law" << YAML::Value << s.ground.law << YAML::Key << "soil" << YAML::Value << s.ground.default_soil;
   const LanderSetup setup = BuildLanderSetup(s);
   y << YAML::Key << "soils" << YAML::Value << YAML::BeginSeq;
   for (const rft::TerrainSoil& soil : setup.terrain.soils) {
@@ -545,18 +600,17 @@ void WriteResolvedLanderScenario(const LanderScenario& s, const std::string& pat
   else
     y << YAML::Key << "touchdown_speed_m_s" << YAML::Value << *ic.touchdown_speed_m_s;
   y << YAML::Key << "horizontal_velocity_m_s" << YAML::Value << YAML::Flow << YAML::BeginSeq
-    << ic.horizontal_velocity_m_s.x() << ic.horizontal_velocity_m_s.y() << YAML::EndSeq << YAML::Key << "roll_deg"
-    << YAML::Value << ic.roll_rad / kDeg << YAML::Key << "pitch_deg" << YAML::Value << ic.pitch_rad / kDeg
-    << YAML::Key << "yaw_relative_to_slope_deg" << YAML::Value << ic.yaw_relative_to_slope_rad / kDeg << YAML::Key
-    << "align_to_slope" << YAML::Value << ic.align_to_slope << YAML::Key << "angular_rate_deg_s" << YAML::Value;
+    << ic.horizontal_velocity_m_s.x() << ic.horizontal_velocity_m_s.y() << YAML::EndSeq;
+  io::WriteFields(y, AttitudeNumberFields(), ic);
+  y << YAML::Key << "align_to_slope" << YAML::Value << ic.align_to_slope << YAML::Key << "angular_rate_deg_s"
+    << YAML::Value;
   vec(ic.angular_rate_B, 1.0 / kDeg);
   y << YAML::Key << "pad_attitude" << YAML::Value << ic.pad_attitude << YAML::Key << "release_body_com_m" << YAML::Value;
   vec(setup.initial.p_WB, 1.0);
   y << YAML::EndMap;
-  y << YAML::Key << "simulation" << YAML::Value << YAML::BeginMap << YAML::Key << "duration_s" << YAML::Value
-    << s.options.duration_s << YAML::Key << "sample_rate_hz" << YAML::Value << s.options.sample_rate_hz << YAML::Key
-    << "capture_speed_m_s" << YAML::Value << s.options.capture_speed_m_s << YAML::Key << "rtol" << YAML::Value
-    << s.options.integrator.rtol;
+  y << YAML::Key << "simulation" << YAML::Value << YAML::BeginMap;
+  io::WriteFields(y, RunNumberFields(), s.options);
+  y << YAML::Key << "rtol" << YAML::Value << s.options.integrator.rtol;
   // Without `atol` the absolute tolerances are rtol times each state's scale (lander_simulation.h).
   if (!s.options.scale_tolerances) y << YAML::Key << "atol" << YAML::Value << s.options.integrator.atol;
   y << YAML::Key << "stiff" << YAML::Value << s.options.integrator.stiff << YAML::EndMap;

@@ -133,7 +133,7 @@ void BindRecord(Statement& st, const DropRecord& r) {
   st.Text(i++, r.atmosphere);
   for (const double* v : Numbers1(r)) st.Real(i++, *v);
   st.Int(i++, r.solver_steps);
-  st.Text(i++, r.kind);
+  st.Text(i++, DropKindName(r.kind));
   for (const double* v : Numbers2(r)) st.Real(i++, *v);
   for (const std::string* t : Texts3(r)) st.Text(i++, *t);
   st.Text(i++, r.failure_limit);
@@ -152,8 +152,9 @@ DropRecord ReadRecord(Statement& st) {
   r.atmosphere = st.ColumnText(i++);
   for (double* v : Numbers1(r)) *v = st.ColumnReal(i++);
   r.solver_steps = sqlite3_column_int64(st.get(), i++);
-  r.kind = st.ColumnText(i++);
-  if (r.kind.empty()) r.kind = "rig";  // a format-1 row read through the added columns
+  const std::string kind = st.ColumnText(i++);
+  // A format-1 row read through the added columns has none: a rig drop.
+  r.kind = kind.empty() ? DropKind::kRig : ParseDropKind(kind, "drop " + r.drop_id);
   for (double* v : Numbers2(r)) *v = st.ColumnReal(i++);
   for (std::string* t : Texts3(r)) *t = st.ColumnText(i++);
   r.failure_limit = st.ColumnText(i++);
@@ -218,6 +219,21 @@ bool SameRecord(const DropRecord& a, const DropRecord& b, bool compare_traces) {
          (a.trace.empty() || std::memcmp(a.trace.data(), b.trace.data(), a.trace.size() * sizeof(pad::DropSample)) == 0);
 }
 
+const char* DropKindName(DropKind kind) {
+  switch (kind) {
+    case DropKind::kRig: return "rig";
+    case DropKind::kFree: return "free";
+    case DropKind::kLander: return "lander";
+  }
+  return "rig";
+}
+
+DropKind ParseDropKind(const std::string& text, const std::string& where) {
+  for (DropKind k : {DropKind::kRig, DropKind::kFree, DropKind::kLander})
+    if (text == DropKindName(k)) return k;
+  throw MakeInputError(where, "drop_kind", "must be rig, free or lander, got '" + text + "'");
+}
+
 std::string SerializeRecords(const std::vector<DropRecord>& records) {
   std::string out;
   Put<uint64_t>(out, records.size());
@@ -225,7 +241,8 @@ std::string SerializeRecords(const std::vector<DropRecord>& records) {
     Put(out, r.index);
     PutString(out, r.drop_id);
     Put<uint8_t>(out, r.ok ? 1 : 0);
-    for (const std::string* s : {&r.failure, &r.kind, &r.pad, &r.soil, &r.atmosphere}) PutString(out, *s);
+    const std::string kind = DropKindName(r.kind);
+    for (const std::string* s : {&r.failure, &kind, &r.pad, &r.soil, &r.atmosphere}) PutString(out, *s);
     for (const double* v : Numbers1(r)) Put(out, *v);
     for (const double* v : Numbers2(r)) Put(out, *v);
     for (const std::string* t : Texts3(r)) PutString(out, *t);
@@ -245,7 +262,9 @@ std::vector<DropRecord> DeserializeRecords(const std::string& bytes) {
     r.index = in.Get<int64_t>();
     r.drop_id = in.GetString();
     r.ok = in.Get<uint8_t>() != 0;
-    for (std::string* s : {&r.failure, &r.kind, &r.pad, &r.soil, &r.atmosphere}) *s = in.GetString();
+    std::string kind;
+    for (std::string* s : {&r.failure, &kind, &r.pad, &r.soil, &r.atmosphere}) *s = in.GetString();
+    r.kind = ParseDropKind(kind, "drop " + r.drop_id);
     for (double* v : Numbers1(r)) *v = in.Get<double>();
     for (double* v : Numbers2(r)) *v = in.Get<double>();
     for (std::string* t : Texts3(r)) *t = in.GetString();

@@ -39,6 +39,14 @@ namespace touchdown::sweep {
 //    with a higher limit retries it; meta records the limits and whether they depend on load.
 inline constexpr int kResultsDbVersion = 4;
 
+// What was dropped: the pad on the vertical rod, the free 6-DOF pad, or the four-legged lander.
+// The database keeps it as text (drop_kind 'rig'|'free'|'lander'), converted where it is read
+// and written.
+enum class DropKind { kRig, kFree, kLander };
+const char* DropKindName(DropKind kind);
+// Throws InputError naming `where` on a text that is no drop kind.
+DropKind ParseDropKind(const std::string& text, const std::string& where);
+
 // One drop as stored. Metrics are NaN (NULL in SQL) for a failed drop, and for quantities a kind
 // of drop does not have.
 struct DropRecord {
@@ -50,7 +58,7 @@ struct DropRecord {
   // ("max_rhs_evaluations" or "max_wall_time_s") and its value; "" and NaN otherwise.
   std::string failure_limit;
   double failure_limit_value = std::numeric_limits<double>::quiet_NaN();
-  std::string kind = "rig";  // "rig" (vertical rod), "free" (6-DOF pad) or "lander"
+  DropKind kind = DropKind::kRig;
   std::string pad, soil, atmosphere;
   double impact_speed_m_s = 0.0, pad_mass_kg = 0.0, gravity_m_s2 = 0.0;
   double tilt_deg = 0.0, horizontal_speed_m_s = 0.0;

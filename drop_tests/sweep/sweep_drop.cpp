@@ -37,7 +37,7 @@ DropRecord Describe(const SweepPlan& plan, const SweepDropParams& p, const drop:
   DropRecord r;
   r.index = p.index;
   r.drop_id = plan.DropId(p.index);
-  r.kind = c.IsFree() ? "free" : "rig";
+  r.kind = c.IsFree() ? DropKind::kFree : DropKind::kRig;
   const io::PadSpec& pad = plan.pads[p.pad];
   const rft::SoilParameters& soil = plan.soils[p.soil];
   r.pad = pad.name;
@@ -142,7 +142,7 @@ DropRecord SimulateLanderSweepDrop(const SweepModels& models, const SweepDropPar
   DropRecord r;
   r.index = p.index;
   r.drop_id = plan.DropId(p.index);
-  r.kind = "lander";
+  r.kind = DropKind::kLander;
   const rft::SoilParameters& soil = p.Given(SweepParam::kSoil) ? plan.soils[p.soil] : models.lander_soil();
   r.pad = sc.lander.pad.name;
   r.soil = soil.name;

@@ -120,7 +120,7 @@ dataset::Dataset SweepToDataset(const std::string& sweep_dir, const ExportOption
   std::vector<DropRecord> records = db.ReadAll(/*with_traces=*/true);
   ExportSummary summary;
   for (const DropRecord& r : records)
-    if (r.kind == "lander") throw LanderRefusal(db_path, r);
+    if (r.kind == DropKind::kLander) throw LanderRefusal(db_path, r);
 
   std::vector<int64_t> again;
   for (const DropRecord& r : records)
@@ -235,7 +235,7 @@ ExportSummary ExportLanderSweep(const ResultsDb& db, const io::OutputTarget& dat
       out << '\n';
       db.ForEach(
           [&](const DropRecord& r) {
-            if (r.kind != "lander") throw MakeInputError(db_path, "drop " + r.drop_id, "a pad drop in a lander sweep");
+            if (r.kind != DropKind::kLander) throw MakeInputError(db_path, "drop " + r.drop_id, "a pad drop in a lander sweep");
             if (!r.ok) {
               ++summary.failed;
               return;
@@ -304,7 +304,7 @@ ExportSummary ExportPadSweep(const ResultsDb& db, const std::map<std::string, st
         std::map<int64_t, size_t> position;
         for (size_t i = 0; i < page.size(); ++i) {
           const DropRecord& r = page[i];
-          if (r.kind == "lander") throw LanderRefusal(db_path, r);
+          if (r.kind == DropKind::kLander) throw LanderRefusal(db_path, r);
           if (r.ok && (options.full_traces || r.trace.empty())) {
             again.push_back(r.index);
             position[r.index] = i;
@@ -375,7 +375,7 @@ ExportSummary ExportSweep(const std::string& sweep_dir, const io::OutputTarget& 
   const ResultsDb db(db_path);
   const std::map<std::string, std::string> meta = ReadableMeta(db);
   const std::vector<DropRecord> first = db.ReadPage(std::numeric_limits<int64_t>::min(), 1, /*with_traces=*/false);
-  if (!first.empty() && first.front().kind == "lander") return ExportLanderSweep(db, dataset_dir);
+  if (!first.empty() && first.front().kind == DropKind::kLander) return ExportLanderSweep(db, dataset_dir);
   return ExportPadSweep(db, meta, dataset_dir, options);
 }
 

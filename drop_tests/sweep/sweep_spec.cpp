@@ -317,51 +317,47 @@ std::string SweepPlan::DigestText() const {
   return s;
 }
 
-SweepPlan LoadSweepPlan(const std::string& path, const std::string& model_override) {
-  const io::YamlFields f = io::YamlFields::LoadFile(path);
-  f.RequireSchemaVersion(1);
-  f.RequireOnly({"schema_version", "type", "name", "description", "model", "traces", "trace_max_samples",
-                 "rest_duration_s", "max_drop_evaluations", "max_drop_wall_time_s", "fixed", "grid", "random", "lander", "provenance"});
-  if (f.String("type") != "sweep") f.Fail("type", "must be 'sweep', got '" + f.String("type") + "'");
-  const std::string base = fs::path(path).parent_path().string();
-  SweepPlan plan;
-  plan.source = path;
-  plan.name = f.StringOr("name", fs::path(path).stem().string());
-  if (f.Has("lander")) {
-    const io::YamlFields l = f.Child("lander");
-    l.RequireOnly({"scenario", "pad_patch_half_width_m"});
-    std::string ref = l.String("scenario");
-    const bool is_path = ref.find('/') != std::string::npos || ref.ends_with(".yaml") || ref.ends_with(".yml");
-    if (is_path && fs::path(ref).is_relative()) ref = (fs::path(base) / ref).lexically_normal().string();
-    try {
-      plan.lander = scenario::LoadLanderScenario(io::ResolveCatalogFile("scenarios", ref));
-    } catch (const InputError& e) {
-      l.Fail("scenario", e.what());
-    }
-    // The digest covers every file the scenario reads: scenario, lander, pad (and mesh), soils.
-    const scenario::LanderSpec& spec = plan.lander->lander;
-    std::string files = FileText(plan.lander->source) + '\0' + FileText(spec.source) + '\0' +
-                        FileText(spec.pad.source) + '\0' + FileText(spec.pad.mesh_file);
-    files += '\0' + FileText(io::ResolveCatalogFile("soils", plan.lander->ground.default_soil));
-    for (const scenario::LanderPatchSpec& patch : plan.lander->ground.patches)
-      files += '\0' + FileText(io::ResolveCatalogFile("soils", patch.soil));
-    char hex[17];
-    std::snprintf(hex, sizeof hex, "%016" PRIx64, Fnv1a64(files));
-    plan.lander_digest = hex;
-    // The half width of the patches `pad_soils` lays under the pads: given, or the scenario's own
-    // under_pad patches' (unresolved there as (pad, half width)), or 0.08 m as the shipped scenarios.
-    for (const scenario::LanderPatchSpec& patch : plan.lander->ground.patches)
-      if (patch.polygon_W.size() == 1) plan.pad_patch_half_width_m = patch.polygon_W[0].y();
-    if (l.Has("pad_patch_half_width_m")) {
-      plan.pad_patch_half_width_m = l.Positive("pad_patch_half_width_m");
-      if (plan.pad_patch_half_width_m > 1.0)
-        l.Fail("pad_patch_half_width_m", "must be at most 1 m, got " + io::FormatNumber(plan.pad_patch_half_width_m));
-    }
-    for (const char* key : {"rest_duration_s", "trace_max_samples"})
-      if (f.Has(key)) f.Fail(key, "a lander sweep runs the scenario's simulation options; remove it");
-    if (f.Has("traces") && f.String("traces") != "none")
-      f.Fail("traces", "a lander sweep stores summaries only (traces: none); run `touchdown lander` for a trace");
+namespace {
+// The scenario a lander sweep starts every drop from, the digest of the files it reads, and the
+// half width of the patches `pad_soils` lays; options only single-pad sweeps take are refused.
+void ReadLanderBlock(const io::YamlFields& f, const std::string& base, SweepPlan& plan) {
+  const io::YamlFields l = f.Child("lander");
+  l.RequireOnly({"scenario", "pad_patch_half_width_m"});
+  std::string ref = l.String("scenario");
+  const bool is_path = ref.find('/') != std::string::npos || ref.ends_with(".yaml") || ref.ends_with(".yml");
+  if (is_path && fs::path(ref).is_relative()) ref = (fs::path(base) / ref).lexically_normal().string();
+  try {
+    plan.lander = scenario::LoadLanderScenario(io::ResolveCatalogFile("scenarios", ref));
+  } catch (const InputError& e) {
+    l.Fail("scenario", e.what());
   }
+  // The digest covers every file the scenario reads: scenario, lander, pad (and mesh), soils.
+  const scenario::LanderSpec& spec = plan.lander->lander;
+  std::string files = FileText(plan.lander->source) + '\0' + FileText(spec.source) + '\0' +
+                      FileText(spec.pad.source) + '\0' + FileText(spec.pad.mesh_file);
+  files += '\0' + FileText(io::ResolveCatalogFile("soils", plan.lander->ground.default_soil));
+  for (const scenario::LanderPatchSpec& patch : plan.lander->ground.patches)
+    files += '\0' + FileText(io::ResolveCatalogFile("soils", patch.soil));
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016" PRIx64, Fnv1a64(files));
+  plan.lander_digest = hex;
+  // The half width of the patches `pad_soils` lays under the pads: given, or the scenario's own
+  // under_pad patches' (unresolved there as (pad, half width)), or 0.08 m as the shipped scenarios.
+  for (const scenario::LanderPatchSpec& patch : plan.lander->ground.patches)
+    if (patch.polygon_W.size() == 1) plan.pad_patch_half_width_m = patch.polygon_W[0].y();
+  if (l.Has("pad_patch_half_width_m")) {
+    plan.pad_patch_half_width_m = l.Positive("pad_patch_half_width_m");
+    if (plan.pad_patch_half_width_m > 1.0)
+      l.Fail("pad_patch_half_width_m", "must be at most 1 m, got " + io::FormatNumber(plan.pad_patch_half_width_m));
+  }
+  for (const char* key : {"rest_duration_s", "trace_max_samples"})
+    if (f.Has(key)) f.Fail(key, "a lander sweep runs the scenario's simulation options; remove it");
+  if (f.Has("traces") && f.String("traces") != "none")
+    f.Fail("traces", "a lander sweep stores summaries only (traces: none); run `touchdown lander` for a trace");
+}
+
+// Trace storage and the per-drop options and work limits.
+void ReadRunOptions(const io::YamlFields& f, SweepPlan& plan) {
   const std::string traces = f.StringOr("traces", plan.lander ? "none" : "decimated");
   if (traces == "none") plan.traces = TraceStorage::kNone;
   else if (traces == "full") plan.traces = TraceStorage::kFull;
@@ -383,6 +379,117 @@ SweepPlan LoadSweepPlan(const std::string& path, const std::string& model_overri
                                          io::FormatNumber(n));
     plan.rig.integrator.max_rhs_evaluations = static_cast<long>(n);
   }
+}
+
+// Which parameters the blocks set: each at most once, and only where the sweep's kind takes it.
+class ParamClaims {
+ public:
+  explicit ParamClaims(bool lander) : lander_(lander) {}
+  bool Seen(SweepParam p) const { return seen_[static_cast<int>(p)]; }
+  SweepParam Claim(const io::YamlFields& block, const std::string& key) {
+    const std::optional<SweepParam> p = ParamFromKey(key);
+    if (!p) block.Fail(key, "unknown parameter (pad, soil, impact_speed_m_s, pad_mass_kg, gravity_m_s2, tilt_deg, "
+                            "horizontal_speed_m_s, zeta_N_cm3; lander sweeps: roll_deg, pitch_deg, pad_soils)");
+    if (Seen(*p)) block.Fail(key, "set in more than one of fixed, grid and random");
+    if (lander_ && IsSinglePadOnly(*p))
+      block.Fail(key, "a single-pad parameter; a lander sweep varies impact_speed_m_s, horizontal_speed_m_s, "
+                      "roll_deg, pitch_deg, gravity_m_s2, soil and pad_soils");
+    if (!lander_ && IsLanderParam(*p))
+      block.Fail(key, "a lander parameter: it needs a `lander: {scenario: ...}` block (single pads take tilt_deg)");
+    const SweepParam other = *p == SweepParam::kSoil ? SweepParam::kPadSoils : SweepParam::kSoil;
+    if ((*p == SweepParam::kSoil || *p == SweepParam::kPadSoils) && Seen(other))
+      block.Fail(key, "soil (the whole ground) and pad_soils (the soil under each pad) exclude each other; keep one");
+    seen_[static_cast<int>(*p)] = true;
+    return *p;
+  }
+
+ private:
+  bool lander_;
+  bool seen_[kSweepParamCount] = {};
+};
+
+void ReadFixed(const io::YamlFields& block, ParamClaims& claims, Loader& loader, SweepPlan& plan) {
+  for (const auto& item : block.node()) {
+    const std::string key = item.first.Scalar();
+    const SweepParam p = claims.Claim(block, key);
+    plan.fixed[static_cast<int>(p)] = loader.Scalar(p, item.second, block, block.Path(key));
+  }
+}
+
+// Grid axes: a list of values or {from, to, count}; the first-listed axis varies slowest.
+void ReadGrid(const io::YamlFields& block, ParamClaims& claims, Loader& loader, SweepPlan& plan) {
+  for (const auto& item : block.node()) {
+    const std::string key = item.first.Scalar();
+    const SweepParam p = claims.Claim(block, key);
+    SweepAxis axis{p, {}};
+    if (item.second.IsMap() && !IsName(p)) {
+      const io::YamlFields range = block.Child(key);
+      range.RequireOnly({"from", "to", "count"});
+      const double from = range.Number("from"), to = range.Number("to");
+      const int count = range.PositiveInt("count");
+      if (count < 2 && from != to) range.Fail("count", "must be at least 2 when from != to");
+      if (count > kMaxGridCount)
+        range.Fail("count", "must be at most " + std::to_string(kMaxGridCount) + ", got " + std::to_string(count));
+      for (int i = 0; i < count; ++i) {
+        // Ends exact: from and to appear as written.
+        const double v = i == count - 1 ? to : from + (to - from) * i / (count - 1 > 0 ? count - 1 : 1);
+        CheckValue(p, v, block.file(), range.Path(i == count - 1 ? "to" : "from"));
+        axis.values.push_back(ToSi(p, v));
+      }
+    } else {
+      axis.values = loader.List(p, item.second, block, block.Path(key));
+    }
+    plan.grid.push_back(std::move(axis));
+  }
+}
+
+// Seeded random samples: `uniform: [low, high]` or `choice: [...]` per parameter.
+void ReadRandom(const io::YamlFields& block, ParamClaims& claims, Loader& loader, SweepPlan& plan) {
+  plan.samples = block.PositiveInt("samples");
+  if (!block.Has("seed")) block.Fail("seed", "missing (random samples need a seed to be reproducible)");
+  const double seed = block.Number("seed");
+  if (seed < 0 || seed != std::floor(seed) || seed > 9.0e15) block.Fail("seed", "must be a whole number >= 0");
+  plan.seed = static_cast<uint64_t>(seed);
+  for (const auto& item : block.node()) {
+    const std::string key = item.first.Scalar();
+    if (key == "samples" || key == "seed") continue;
+    const SweepParam p = claims.Claim(block, key);
+    const io::YamlFields spec = block.Child(key);
+    spec.RequireOnly({"uniform", "choice"});
+    SweepRandom r;
+    r.param = p;
+    if (spec.Has("uniform") == spec.Has("choice")) spec.Fail("uniform", "give exactly one of uniform and choice");
+    if (spec.Has("choice")) {
+      r.choice = true;
+      r.values = loader.List(p, spec.node()["choice"], spec, spec.Path("choice"));
+    } else {
+      if (IsName(p)) spec.Fail("uniform", "pads and soils take `choice`, not `uniform`");
+      const YAML::Node u = spec.node()["uniform"];
+      if (!u.IsSequence() || u.size() != 2) spec.Fail("uniform", "must be [low, high]");
+      const double lo = loader.Scalar(p, u[0], spec, spec.Path("uniform") + "[0]");
+      const double hi = loader.Scalar(p, u[1], spec, spec.Path("uniform") + "[1]");
+      if (!(lo < hi)) spec.Fail("uniform", "needs low < high");
+      r.low = lo;
+      r.high = hi;
+    }
+    plan.random.push_back(std::move(r));
+  }
+}
+
+}  // namespace
+
+SweepPlan LoadSweepPlan(const std::string& path, const std::string& model_override) {
+  const io::YamlFields f = io::YamlFields::LoadFile(path);
+  f.RequireSchemaVersion(1);
+  f.RequireOnly({"schema_version", "type", "name", "description", "model", "traces", "trace_max_samples",
+                 "rest_duration_s", "max_drop_evaluations", "max_drop_wall_time_s", "fixed", "grid", "random", "lander", "provenance"});
+  if (f.String("type") != "sweep") f.Fail("type", "must be 'sweep', got '" + f.String("type") + "'");
+  const std::string base = fs::path(path).parent_path().string();
+  SweepPlan plan;
+  plan.source = path;
+  plan.name = f.StringOr("name", fs::path(path).stem().string());
+  if (f.Has("lander")) ReadLanderBlock(f, base, plan);
+  ReadRunOptions(f, plan);
 
   // The model first: the soils are loaded through it.
   std::string model_path;
@@ -396,92 +503,13 @@ SweepPlan LoadSweepPlan(const std::string& path, const std::string& model_overri
   if (!model_path.empty()) plan.model = model::LoadModelFile(model_path);
 
   Loader loader(plan, base);
-  bool seen[kSweepParamCount] = {};
-  auto claim = [&](const io::YamlFields& block, const std::string& key) -> SweepParam {
-    const std::optional<SweepParam> p = ParamFromKey(key);
-    if (!p) block.Fail(key, "unknown parameter (pad, soil, impact_speed_m_s, pad_mass_kg, gravity_m_s2, tilt_deg, "
-                            "horizontal_speed_m_s, zeta_N_cm3; lander sweeps: roll_deg, pitch_deg, pad_soils)");
-    if (seen[static_cast<int>(*p)]) block.Fail(key, "set in more than one of fixed, grid and random");
-    if (plan.lander && IsSinglePadOnly(*p))
-      block.Fail(key, "a single-pad parameter; a lander sweep varies impact_speed_m_s, horizontal_speed_m_s, "
-                      "roll_deg, pitch_deg, gravity_m_s2, soil and pad_soils");
-    if (!plan.lander && IsLanderParam(*p))
-      block.Fail(key, "a lander parameter: it needs a `lander: {scenario: ...}` block (single pads take tilt_deg)");
-    const SweepParam other = *p == SweepParam::kSoil ? SweepParam::kPadSoils : SweepParam::kSoil;
-    if ((*p == SweepParam::kSoil || *p == SweepParam::kPadSoils) && seen[static_cast<int>(other)])
-      block.Fail(key, "soil (the whole ground) and pad_soils (the soil under each pad) exclude each other; keep one");
-    seen[static_cast<int>(*p)] = true;
-    return *p;
-  };
-  if (f.Has("fixed")) {
-    const io::YamlFields block = f.Child("fixed");
-    for (const auto& item : block.node()) {
-      const std::string key = item.first.Scalar();
-      const SweepParam p = claim(block, key);
-      plan.fixed[static_cast<int>(p)] = loader.Scalar(p, item.second, block, block.Path(key));
-    }
-  }
-  if (f.Has("grid")) {
-    const io::YamlFields block = f.Child("grid");
-    for (const auto& item : block.node()) {
-      const std::string key = item.first.Scalar();
-      const SweepParam p = claim(block, key);
-      SweepAxis axis{p, {}};
-      if (item.second.IsMap() && !IsName(p)) {
-        const io::YamlFields range = block.Child(key);
-        range.RequireOnly({"from", "to", "count"});
-        const double from = range.Number("from"), to = range.Number("to");
-        const int count = range.PositiveInt("count");
-        if (count < 2 && from != to) range.Fail("count", "must be at least 2 when from != to");
-        if (count > kMaxGridCount)
-          range.Fail("count", "must be at most " + std::to_string(kMaxGridCount) + ", got " + std::to_string(count));
-        for (int i = 0; i < count; ++i) {
-          // Ends exact: from and to appear as written.
-          const double v = i == count - 1 ? to : from + (to - from) * i / (count - 1 > 0 ? count - 1 : 1);
-          CheckValue(p, v, f.file(), range.Path(i == count - 1 ? "to" : "from"));
-          axis.values.push_back(ToSi(p, v));
-        }
-      } else {
-        axis.values = loader.List(p, item.second, block, block.Path(key));
-      }
-      plan.grid.push_back(std::move(axis));
-    }
-  }
-  if (f.Has("random")) {
-    const io::YamlFields block = f.Child("random");
-    plan.samples = block.PositiveInt("samples");
-    if (!block.Has("seed")) block.Fail("seed", "missing (random samples need a seed to be reproducible)");
-    const double seed = block.Number("seed");
-    if (seed < 0 || seed != std::floor(seed) || seed > 9.0e15) block.Fail("seed", "must be a whole number >= 0");
-    plan.seed = static_cast<uint64_t>(seed);
-    for (const auto& item : block.node()) {
-      const std::string key = item.first.Scalar();
-      if (key == "samples" || key == "seed") continue;
-      const SweepParam p = claim(block, key);
-      const io::YamlFields spec = block.Child(key);
-      spec.RequireOnly({"uniform", "choice"});
-      SweepRandom r;
-      r.param = p;
-      if (spec.Has("uniform") == spec.Has("choice")) spec.Fail("uniform", "give exactly one of uniform and choice");
-      if (spec.Has("choice")) {
-        r.choice = true;
-        r.values = loader.List(p, spec.node()["choice"], spec, spec.Path("choice"));
-      } else {
-        if (IsName(p)) spec.Fail("uniform", "pads and soils take `choice`, not `uniform`");
-        const YAML::Node u = spec.node()["uniform"];
-        if (!u.IsSequence() || u.size() != 2) spec.Fail("uniform", "must be [low, high]");
-        const double lo = loader.Scalar(p, u[0], spec, spec.Path("uniform") + "[0]");
-        const double hi = loader.Scalar(p, u[1], spec, spec.Path("uniform") + "[1]");
-        if (!(lo < hi)) spec.Fail("uniform", "needs low < high");
-        r.low = lo;
-        r.high = hi;
-      }
-      plan.random.push_back(std::move(r));
-    }
-  }
+  ParamClaims claims(plan.lander.has_value());
+  if (f.Has("fixed")) ReadFixed(f.Child("fixed"), claims, loader, plan);
+  if (f.Has("grid")) ReadGrid(f.Child("grid"), claims, loader, plan);
+  if (f.Has("random")) ReadRandom(f.Child("random"), claims, loader, plan);
   if (!plan.lander)
     for (SweepParam required : {SweepParam::kPad, SweepParam::kSoil, SweepParam::kImpactSpeed})
-      if (!seen[static_cast<int>(required)])
+      if (!claims.Seen(required))
         f.Fail(SweepParamKey(required), "not set in fixed, grid or random");
   // Counted in floating point first: the int64 product could overflow.
   double drops = static_cast<double>(plan.samples);

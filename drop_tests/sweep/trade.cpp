@@ -26,7 +26,7 @@ void CheckTradePlan(const SweepPlan& plan) {
 
 std::vector<TradeRow> TradeTable(const std::vector<DropRecord>& records) {
   for (const DropRecord& r : records)
-    if (r.kind == "lander")
+    if (r.kind == DropKind::kLander)
       throw MakeInputError("drop " + r.drop_id, "drop_kind",
                            "a lander drop; trade tabulates single-pad drops only");
   std::map<std::tuple<std::string, double, std::string>, TradeRow> rows;  // (soil, speed, pad)

@@ -22,6 +22,7 @@
 
 #include "footpad_geom/pad_body.h"
 #include "lander/integ/cvode_integrator.h"
+#include "lander/pad/pad_pose.h"
 #include "rft/ground.h"
 #include "rft/stress_law_3d.h"
 
@@ -31,7 +32,7 @@ struct FreeDropInput {
   double impact_speed_m_s = 0.0;      // vertical speed of the centre of mass at touchdown, downward
   double horizontal_speed_m_s = 0.0;  // along +x of W
   double tilt_rad = 0.0;              // at release, about tilt_axis
-  std::string tilt_axis = "x";
+  TiltAxis tilt_axis = TiltAxis::kX;
   Eigen::Vector3d omega_W = Eigen::Vector3d::Zero();  // angular velocity at release [rad/s]
   double gravity_m_s2 = 9.81;
 };

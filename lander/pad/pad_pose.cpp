@@ -8,9 +8,16 @@
 
 namespace touchdown::pad {
 
-Eigen::Matrix3d TiltRotation(const std::string& axis, double tilt_rad) {
-  if (axis != "x" && axis != "y") throw MakeInputError("", "tilt_axis", "must be x or y, got '" + axis + "'");
-  const Eigen::Vector3d unit = axis == "x" ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
+TiltAxis ParseTiltAxis(const std::string& text, const std::string& file) {
+  if (text == "x") return TiltAxis::kX;
+  if (text == "y") return TiltAxis::kY;
+  throw MakeInputError(file, "tilt_axis", "must be x or y, got '" + text + "'");
+}
+
+const char* TiltAxisName(TiltAxis axis) { return axis == TiltAxis::kX ? "x" : "y"; }
+
+Eigen::Matrix3d TiltRotation(TiltAxis axis, double tilt_rad) {
+  const Eigen::Vector3d unit = axis == TiltAxis::kX ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
   return Eigen::AngleAxisd(tilt_rad, unit).toRotationMatrix();
 }
 

@@ -9,8 +9,14 @@
 
 namespace touchdown::pad {
 
-// Rotation about W's x or y axis by `tilt_rad` (axis is "x" or "y"; InputError otherwise).
-Eigen::Matrix3d TiltRotation(const std::string& axis, double tilt_rad);
+// The horizontal axis of W a pad is tilted about. Files and the command line say "x" or "y".
+enum class TiltAxis { kX, kY };
+// "x" or "y"; InputError naming `file` and the field tilt_axis otherwise.
+TiltAxis ParseTiltAxis(const std::string& text, const std::string& file = "");
+const char* TiltAxisName(TiltAxis axis);
+
+// Rotation about W's x or y axis by `tilt_rad`.
+Eigen::Matrix3d TiltRotation(TiltAxis axis, double tilt_rad);
 
 // Lowest z of the pad surface in W for orientation R_WB with the reference point at the origin.
 double LowestPointOffset(const geom::PadBody& body, const Eigen::Matrix3d& R_WB);

@@ -44,7 +44,7 @@ TEST(ContactClip, HexPadOnItsEdgeHasNoSpuriousForce) {
   const io::PadSpec pad = io::LoadPad("hex");
   const auto law = MakeStressLaw3D("li2013", io::LoadSoil("fjs1_lp"), 9.81);
   for (const double tilt_deg : {5.0, 10.0}) {
-    const Eigen::Matrix3d R = pad::TiltRotation("x", tilt_deg * std::numbers::pi / 180.0);
+    const Eigen::Matrix3d R = pad::TiltRotation(pad::TiltAxis::kX, tilt_deg * std::numbers::pi / 180.0);
     for (const double spin : {0.0, -5.4e-7, 1e-3}) {
       for (const double depth : {-1e-18, 0.0, 1e-19, 1e-18, 1e-17, 1e-16}) {
         SCOPED_TRACE(testing::Message() << tilt_deg << " deg, spin " << spin << " rad/s, depth " << depth << " m");

@@ -172,7 +172,7 @@ TEST_F(CatalogFiles, EveryBundledPadHasABody) {
     SCOPED_TRACE(name);
     const PadSpec pad = LoadPad(name);
     EXPECT_EQ(pad.is_axisymmetric(), std::string(name) != "hex");
-    EXPECT_EQ(pad.kind, pad.is_axisymmetric() ? "axisymmetric" : "mesh");
+    EXPECT_EQ(pad.kind, pad.is_axisymmetric() ? PadKind::kAxisymmetric : PadKind::kMesh);
     EXPECT_DOUBLE_EQ(pad.body.mass_kg, 1.6);
     EXPECT_DOUBLE_EQ(pad.mass_kg, 1.6);
     // Reference point at the top centre: the lowest point 16 mm below it, on the axis.

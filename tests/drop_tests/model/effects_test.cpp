@@ -12,6 +12,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "drop_tests/model/effects_yaml.h"
 #include "drop_tests/model/model_file.h"
 #include "drop_tests/drop/pad_drop.h"
 #include "drop_tests/io/yaml_fields.h"

@@ -94,8 +94,8 @@ grid: {pad: [coarse_hex.yaml, flat], impact_speed_m_s: [1.0]}
   ASSERT_TRUE(hex.ok) << hex.failure;
   ASSERT_TRUE(flat.ok) << flat.failure;
   EXPECT_EQ(hex.pad, "coarse_hex");
-  EXPECT_EQ(hex.kind, "free");  // no profile for the rig: the free pad
-  EXPECT_EQ(flat.kind, "rig");
+  EXPECT_EQ(hex.kind, DropKind::kFree);  // no profile for the rig: the free pad
+  EXPECT_EQ(flat.kind, DropKind::kRig);
   // Level and straight down: it stays level and does not travel (symmetric prism, 1e-9 of a degree / metre).
   EXPECT_NEAR(hex.final_tilt_deg, 0.0, 1e-9);
   EXPECT_NEAR(hex.horizontal_travel_m, 0.0, 1e-9);
@@ -162,7 +162,7 @@ TEST_F(SweepDrop, MeshPadSweepAppliesEveryModelEffectInItsFreeDrops) {
     EXPECT_EQ(base[i].pad, mass[i].pad);
     EXPECT_NE(base[i].final_penetration_m, mass[i].final_penetration_m) << base[i].pad;
   }
-  EXPECT_EQ(mass[1].kind, "free");
+  EXPECT_EQ(mass[1].kind, DropKind::kFree);
 }
 
 TEST_F(SweepDrop, PadSoilsTakeTableIICasesOrFourSoils) {

@@ -73,7 +73,7 @@ grid: {tilt_deg: [0, 2], horizontal_speed_m_s: [0, 0.1]}
   for (const DropRecord& r : records) {
     ASSERT_TRUE(r.ok) << r.drop_id << ": " << r.failure;
     const bool free = r.tilt_deg != 0.0 || r.horizontal_speed_m_s != 0.0;
-    EXPECT_EQ(r.kind, free ? "free" : "rig") << r.drop_id;
+    EXPECT_EQ(r.kind, free ? DropKind::kFree : DropKind::kRig) << r.drop_id;
     EXPECT_GT(r.final_penetration_m, 0.0);
     EXPECT_GE(r.trace.size(), 3u);
     if (!free) {
@@ -159,7 +159,7 @@ grid: {impact_speed_m_s: [1.0, 1.4]}
   ASSERT_EQ(records.size(), 2u);
   for (const DropRecord& r : records) {
     ASSERT_TRUE(r.ok) << r.drop_id << ": " << r.failure;
-    EXPECT_EQ(r.kind, "lander");
+    EXPECT_EQ(r.kind, DropKind::kLander);
     EXPECT_EQ(r.soil, "fjs1_lp");
     EXPECT_EQ(r.tipped_over, 0.0);
     EXPECT_NEAR(r.final_roll_deg, 0.0, 1e-6);

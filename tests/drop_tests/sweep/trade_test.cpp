@@ -107,7 +107,7 @@ TEST(TradeLander, LanderSweepIsRefusedBeforeAnythingRuns) {
         << e.what();
   }
   std::vector<DropRecord> records(1);
-  records[0].kind = "lander";
+  records[0].kind = DropKind::kLander;
   records[0].drop_id = "d0";
   EXPECT_THROW(TradeTable(records), touchdown::InputError);
   // From the CLI: exit status 2, one line naming the file, and no output directory.

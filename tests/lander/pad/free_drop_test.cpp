@@ -152,7 +152,7 @@ TEST_P(ShippedPadFreeDrop, LandsAtEveryTiltAboutXAndY) {
         FreeDropInput in;
         in.impact_speed_m_s = speed;
         in.tilt_rad = tilt_deg * std::numbers::pi / 180.0;
-        in.tilt_axis = axis;
+        in.tilt_axis = ParseTiltAxis(axis);
         FreeDropResult r;
         ASSERT_NO_THROW(r = RunFreeDrop(pad.body, *law, rft::PlaneGround(), in));
         ++drops;
