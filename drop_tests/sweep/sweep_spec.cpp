@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "drop_tests/io/dataset_csv.h"
+#include "drop_tests/io/output_path.h"
 #include "drop_tests/sweep/sweep_drop.h"
 #include "drop_tests/io/yaml_fields.h"
 #include "rft/input_error.h"
@@ -49,6 +50,12 @@ constexpr PaperCase kPaperCases[] = {{"A", {"fjs1_lp", "fjs1_lp", "fjs1_lp", "fj
 double ToSi(SweepParam p, double v) {
   if (p == SweepParam::kTilt || p == SweepParam::kRoll || p == SweepParam::kPitch) return v * kDeg;
   if (p == SweepParam::kZeta) return units::ZetaFromN_cm3(v);
+  return v;
+}
+
+double FromSi(SweepParam p, double v) {
+  if (p == SweepParam::kTilt || p == SweepParam::kRoll || p == SweepParam::kPitch) return v / kDeg;
+  if (p == SweepParam::kZeta) return units::ZetaToN_cm3(v);
   return v;
 }
 
@@ -532,6 +539,93 @@ SweepPlan LoadSweepPlan(const std::string& path, const std::string& model_overri
     }
   }
   return plan;
+}
+
+namespace {
+std::string Absolute(const std::string& path) { return fs::absolute(path).lexically_normal().string(); }
+
+// A soil as the plan resolved it: a catalogue name stays a name, a path becomes absolute.
+std::string SoilRef(const SweepPlan& plan, int soil) {
+  const std::string& ref = plan.soil_refs[soil];
+  return ref.find('/') == std::string::npos && !ref.ends_with(".yaml") && !ref.ends_with(".yml") ? ref : Absolute(ref);
+}
+
+// One value of `p` as a sweep file gives it: a pad or soil, a pad_soils case, or a number.
+void EmitValue(YAML::Emitter& y, const SweepPlan& plan, SweepParam p, double v) {
+  const int i = static_cast<int>(v);
+  if (p == SweepParam::kPad) {
+    y << Absolute(plan.pads[i].source);
+  } else if (p == SweepParam::kSoil) {
+    y << SoilRef(plan, i);
+  } else if (p == SweepParam::kPadSoils) {
+    const PadSoilSet& set = plan.pad_soil_sets[i];
+    if (!set.label.empty()) {
+      y << set.label;
+    } else {
+      y << YAML::Flow << YAML::BeginSeq;
+      for (int soil : set.soil) y << SoilRef(plan, soil);
+      y << YAML::EndSeq;
+    }
+  } else {
+    y << FromSi(p, v);
+  }
+}
+}  // namespace
+
+void WriteSweepPlan(const SweepPlan& plan, const std::string& path) {
+  YAML::Emitter y;
+  y.SetDoublePrecision(17);  // every value reads back to the same double
+  y << YAML::BeginMap << YAML::Key << "schema_version" << YAML::Value << 1 << YAML::Key << "type" << YAML::Value
+    << "sweep" << YAML::Key << "name" << YAML::Value << plan.name;
+  if (plan.model) y << YAML::Key << "model" << YAML::Value << Absolute(plan.model->source);
+  if (plan.lander)
+    y << YAML::Key << "lander" << YAML::Value << YAML::BeginMap << YAML::Key << "scenario" << YAML::Value
+      << Absolute(plan.lander->source) << YAML::Key << "pad_patch_half_width_m" << YAML::Value
+      << plan.pad_patch_half_width_m << YAML::EndMap;
+  y << YAML::Key << "traces" << YAML::Value << TraceStorageName(plan.traces);
+  if (!plan.lander)
+    y << YAML::Key << "trace_max_samples" << YAML::Value << plan.trace_max_samples << YAML::Key << "rest_duration_s"
+      << YAML::Value << plan.rig.rest_duration_s;
+  y << YAML::Key << "max_drop_evaluations" << YAML::Value << plan.rig.integrator.max_rhs_evaluations << YAML::Key
+    << "max_drop_wall_time_s" << YAML::Value << plan.rig.integrator.max_wall_time_s;
+  bool any_fixed = false;
+  for (const std::optional<double>& v : plan.fixed) any_fixed = any_fixed || v.has_value();
+  if (any_fixed) {
+    y << YAML::Key << "fixed" << YAML::Value << YAML::BeginMap;
+    for (SweepParam p : kAll)
+      if (plan.fixed[static_cast<int>(p)]) {
+        y << YAML::Key << SweepParamKey(p) << YAML::Value;
+        EmitValue(y, plan, p, *plan.fixed[static_cast<int>(p)]);
+      }
+    y << YAML::EndMap;
+  }
+  if (!plan.grid.empty()) {
+    y << YAML::Key << "grid" << YAML::Value << YAML::BeginMap;
+    for (const SweepAxis& axis : plan.grid) {
+      y << YAML::Key << SweepParamKey(axis.param) << YAML::Value << YAML::Flow << YAML::BeginSeq;
+      for (double v : axis.values) EmitValue(y, plan, axis.param, v);
+      y << YAML::EndSeq;
+    }
+    y << YAML::EndMap;
+  }
+  if (!plan.random.empty()) {
+    y << YAML::Key << "random" << YAML::Value << YAML::BeginMap << YAML::Key << "samples" << YAML::Value
+      << plan.samples << YAML::Key << "seed" << YAML::Value << plan.seed;
+    for (const SweepRandom& r : plan.random) {
+      y << YAML::Key << SweepParamKey(r.param) << YAML::Value << YAML::Flow << YAML::BeginMap;
+      if (r.choice) {
+        y << YAML::Key << "choice" << YAML::Value << YAML::BeginSeq;
+        for (double v : r.values) EmitValue(y, plan, r.param, v);
+      } else {
+        y << YAML::Key << "uniform" << YAML::Value << YAML::BeginSeq << FromSi(r.param, r.low)
+          << FromSi(r.param, r.high);
+      }
+      y << YAML::EndSeq << YAML::EndMap;
+    }
+    y << YAML::EndMap;
+  }
+  y << YAML::EndMap;
+  io::WriteFileAtomically(path, [&](std::ostream& out) { out << y.c_str() << '\n'; });
 }
 
 }  // namespace touchdown::sweep

@@ -162,6 +162,10 @@ struct SweepPlan {
 inline constexpr long kDefaultMaxDropEvaluations = 2000000;
 inline constexpr double kDefaultMaxDropWallTimeS = 0.0;  // none: wall-clock limits are opt-in
 SweepPlan LoadSweepPlan(const std::string& path, const std::string& model_override = "");
+// A sweep file that LoadSweepPlan reads back to the same plan (same DigestText, limits and
+// drops): every value in file units, grids as lists, pads, model and lander scenario by absolute
+// path, soils as the plan resolved them.
+void WriteSweepPlan(const SweepPlan& plan, const std::string& path);
 // 64-bit FNV-1a, for digests.
 uint64_t Fnv1a64(const std::string& text);
 // Counter-based uniform draw in [0, 1) from (seed, sample, stream): splitmix64 mixing.
