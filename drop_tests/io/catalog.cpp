@@ -256,9 +256,10 @@ rft::SoilParameters LoadSoil(const std::string& name_or_path) {
   rft::SoilParameters soil;
   soil.name = f.StringOr("name", fs::path(path).stem().string());
   if (!IsValidUtf8(soil.name)) f.Fail("name", "the soil name (from the file name) is not valid UTF-8 text");
-  soil.atmosphere = f.StringOr("atmosphere", "vacuum");
-  if (soil.atmosphere != "vacuum" && soil.atmosphere != "air")
-    f.Fail("atmosphere", "must be 'vacuum' or 'air', got '" + soil.atmosphere + "'");
+  const std::string atmosphere = f.StringOr("atmosphere", "vacuum");
+  const std::optional<rft::Atmosphere> parsed = rft::ParseAtmosphere(atmosphere);
+  if (!parsed) f.Fail("atmosphere", "must be 'vacuum' or 'air', got '" + atmosphere + "'");
+  soil.atmosphere = *parsed;
   soil.reference_gravity_m_s2 = f.PositiveOr("reference_gravity_m_s2", 9.81);
   if (f.Has("bulk_density_kg_m3")) soil.bulk_density_kg_m3 = f.Positive("bulk_density_kg_m3");
   if (f.Has("internal_friction_angle_deg")) {
