@@ -3,7 +3,7 @@
 // lander/pad/rig_drop.h) or, when the pad is tilted, slides or spins, the free 6-DOF pad
 // (lander/pad/free_drop.h) under the 3D contact. `drop`, `sweep` and `compare` all build their
 // drops here: DropConditionsFor turns a dataset row or a sweep point into DropConditions, and
-// SimulateDrop runs them.
+// SimulateDrop runs them, built from the drop factory's pieces (drop_factory.h).
 #include <Eigen/Core>
 #include <optional>
 #include <ostream>
