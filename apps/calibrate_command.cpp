@@ -35,7 +35,7 @@ void AddCalibrateCommand(CLI::App& app) {
     const dataset::Dataset measured = dataset::ReadDataset(args->measured);
     dataset::CalibrationOptions options;
     options.per_soil = args->per == "soil";
-    options.atmosphere = args->atmosphere == "all" ? "" : args->atmosphere;
+    if (args->atmosphere != "all") options.atmosphere = rft::ParseAtmosphere(args->atmosphere);
     options.confidence = args->confidence;
     const std::vector<dataset::ZetaFit> fits = dataset::CalibrateZeta(measured, options);
     const model::ModelFile model =

@@ -2,6 +2,8 @@
 // Fixed parameters of a granular bed (model data, never per-step state). SI inside.
 #include <string>
 
+#include "rft/atmosphere.h"
+
 namespace touchdown::rft {
 
 struct SoilParameters {
@@ -12,7 +14,7 @@ struct SoilParameters {
   double reference_gravity_m_s2 = 9.81;
   double bulk_density_kg_m3 = 0.0;        // [kg/m^3], 0 when unknown
   double internal_friction_angle_rad = 0.0;  // [rad], 0 when unknown
-  std::string atmosphere = "vacuum";      // "vacuum" or "air"
+  Atmosphere atmosphere = Atmosphere::kVacuum;
 
   // 3D laws (rft/stress_law_3d_factory.h). All defaulted, so 2D users are unaffected.
   std::string rft_law_3d = "li2013";  // preferred 3D law: "li2013" or "agarwal2023"

@@ -7,13 +7,13 @@
 #include <map>
 #include <memory>
 
+#include "drop_tests/drop/drop_factory.h"
 #include "drop_tests/io/catalog.h"
 #include "drop_tests/io/student_t.h"
 #include "footpad_geom/axisymmetric_intrusion.h"
 #include "rft/contact_wrench.h"
 #include "rft/ground.h"
 #include "rft/input_error.h"
-#include "rft/stress_law.h"
 #include "rft/stress_law_3d_factory.h"
 
 namespace touchdown::dataset {
@@ -27,7 +27,7 @@ namespace {
 class UnitZetaForce {
  public:
   explicit UnitZetaForce(const io::PadSpec& pad) : pad_(pad) {
-    if (pad.is_axisymmetric()) intrusion_ = std::make_unique<geom::AxisymmetricIntrusion>(pad.profile, rft::Li2013Law{});
+    if (pad.is_axisymmetric()) intrusion_ = drop::MakeRigIntrusion(pad.profile);
   }
   // Throws InputError (naming `where`) for a mesh pad on a soil whose 3D law is not linear in zeta.
   double At(double depth_m, const rft::SoilParameters& soil, const std::string& where) {
@@ -131,14 +131,15 @@ std::vector<ZetaFit> CalibrateZeta(const Dataset& measured, const CalibrationOpt
   std::map<std::string, std::vector<StrokeSamples>> groups;
   std::map<std::string, std::vector<std::pair<std::string, double>>> group_soils;
   for (const DatasetDrop& d : measured.drops) {
-    if (!options.atmosphere.empty() && d.atmosphere != options.atmosphere) continue;
+    if (options.atmosphere && d.atmosphere != *options.atmosphere) continue;
     const std::string pad_ref = measured.PadReference(d), soil_ref = measured.SoilReference(d);
     if (!pads.count(pad_ref)) pads.emplace(pad_ref, std::make_unique<UnitZetaForce>(io::LoadPad(pad_ref)));
     if (!soils.count(soil_ref)) soils.emplace(soil_ref, io::LoadSoil(soil_ref));
     UnitZetaForce& unit_force = *pads.at(pad_ref);
     const std::string where = (std::filesystem::path(measured.directory) / "drops.csv").string() + ": drop " + d.drop_id;
     const rft::SoilParameters& soil = soils.at(soil_ref);
-    const double gravity_scale = d.gravity_m_s2 / soil.reference_gravity_m_s2;
+    // g / g_ref: a unit zeta at the drop's gravity, scaled as every drop scales it.
+    const double gravity_scale = drop::ZetaAtGravity(drop::DropSoil(soil, 1.0, std::nullopt), d.gravity_m_s2);
     StrokeSamples s;
     for (size_t i : LoadingStrokeIndices(d.trace)) {
       s.x.push_back(gravity_scale * unit_force.At(d.trace.penetration_m[i], soil, where));
@@ -152,8 +153,9 @@ std::vector<ZetaFit> CalibrateZeta(const Dataset& measured, const CalibrationOpt
   }
   if (groups.empty())
     throw MakeInputError(measured.directory, "", "no drops to calibrate on" +
-                                                     (options.atmosphere.empty() ? std::string()
-                                                                                 : " in " + options.atmosphere));
+                                                     (options.atmosphere
+                                                          ? std::string(" in ") + rft::AtmosphereName(*options.atmosphere)
+                                                          : std::string()));
   std::vector<ZetaFit> fits;
   for (const auto& [group, samples] : groups) {
     ZetaFit fit;

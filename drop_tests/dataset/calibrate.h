@@ -32,7 +32,7 @@ namespace touchdown::dataset {
 
 struct CalibrationOptions {
   bool per_soil = true;       // one zeta per soil; false: one zeta for every soil
-  std::string atmosphere;     // "" all drops, else only "vacuum" or "air"
+  std::optional<rft::Atmosphere> atmosphere;  // only the drops in it; none: all drops
   double confidence = 0.95;
 };
 

@@ -200,7 +200,7 @@ Comparison CompareDrops(const Dataset& measured, const std::vector<const Dataset
     d.simulated_id = s.drop_id;
     d.pad = m.pad;
     d.soil = m.soil;
-    d.atmosphere = m.atmosphere;
+    d.atmosphere = rft::AtmosphereName(m.atmosphere);
     d.impact_speed_m_s = m.impact_speed_m_s;
     d.measured_final_penetration_m = m.FinalPenetration();
     d.simulated_final_penetration_m = s.FinalPenetration();
@@ -327,7 +327,7 @@ void WriteComparison(const Comparison& c, const Dataset& measured, const Dataset
       const std::string meas = io::GnuplotQuote("plots/data/" + m.drop_id + "_measured.csv");
       const std::string sim = io::GnuplotQuote("plots/data/" + m.drop_id + "_simulated.csv");
       gp += "set output " + io::GnuplotQuote("plots/" + m.drop_id + ".png") + "\nset multiplot layout 1,2 title " +
-            io::GnuplotQuote(m.drop_id + ": " + m.pad + " on " + m.soil + " (" + m.atmosphere + "), " +
+            io::GnuplotQuote(m.drop_id + ": " + m.pad + " on " + m.soil + " (" + rft::AtmosphereName(m.atmosphere) + "), " +
                          io::FormatNumber(m.impact_speed_m_s) + " m/s") +
             "\nset xlabel 't [ms]'\nset ylabel 'force [N]'\nplot " + meas +
             " using ($1*1000):3 skip 1 with points pt 7 ps 0.4 title 'measured', " + sim +

@@ -163,9 +163,10 @@ Dataset ReadDataset(const std::string& directory, const DatasetReadOptions& opti
       CheckCatalog(t, r, required[1], "pads", Resolve(directory, d.pad));
       CheckCatalog(t, r, required[2], "soils", Resolve(directory, d.soil));
     }
-    d.atmosphere = text(required[3], "atmosphere");
-    if (d.atmosphere != "vacuum" && d.atmosphere != "air")
-      t.Fail(r, required[3], "must be 'vacuum' or 'air', got '" + d.atmosphere + "'");
+    const std::string atmosphere = text(required[3], "atmosphere");
+    const std::optional<rft::Atmosphere> parsed = rft::ParseAtmosphere(atmosphere);
+    if (!parsed) t.Fail(r, required[3], "must be 'vacuum' or 'air', got '" + atmosphere + "'");
+    d.atmosphere = *parsed;
     d.impact_speed_m_s = t.Number(r, required[4]);
     if (d.impact_speed_m_s < 0.0) t.Fail(r, required[4], "must be >= 0, got " + cells[required[4]]);
     d.pad_mass_kg = t.Number(r, required[5]);
@@ -214,7 +215,7 @@ void WriteDatasetFiles(const Dataset& ds, const std::string& directory) {
     for (const std::string& c : ds.extra_columns) out << ',' << c;
     out << '\n';
     for (const DatasetDrop& d : ds.drops) {
-      out << d.drop_id << ',' << d.pad << ',' << d.soil << ',' << d.atmosphere << ','
+      out << d.drop_id << ',' << d.pad << ',' << d.soil << ',' << rft::AtmosphereName(d.atmosphere) << ','
           << io::FormatNumber(d.impact_speed_m_s) << ',' << io::FormatNumber(d.pad_mass_kg) << ','
           << io::FormatNumber(d.gravity_m_s2) << ',' << d.trace_file;
       if (any_final) out << ',' << (d.final_penetration_m ? io::FormatNumber(*d.final_penetration_m) : "");

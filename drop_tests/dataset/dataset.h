@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "drop_tests/io/output_path.h"
+#include "rft/atmosphere.h"
 
 namespace touchdown::dataset {
 
@@ -42,7 +43,7 @@ struct DatasetDrop {
   std::string drop_id;
   std::string pad;         // catalogue name or pad YAML path (relative paths: to the dataset directory)
   std::string soil;        // likewise for soils
-  std::string atmosphere;  // vacuum or air
+  rft::Atmosphere atmosphere = rft::Atmosphere::kVacuum;
   double impact_speed_m_s = 0.0;
   double pad_mass_kg = 0.0;
   double gravity_m_s2 = 0.0;

@@ -10,13 +10,13 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "drop_tests/drop/drop_factory.h"
 #include "drop_tests/io/output_path.h"
 #include "drop_tests/io/catalog.h"
 #include "drop_tests/io/dataset_csv.h"
 #include "drop_tests/io/yaml_fields.h"
 #include "drop_tests/model/effects_yaml.h"
 #include "rft/input_error.h"
-#include "rft/stress_law.h"
 #include "rft/units.h"
 
 namespace touchdown::dataset {
@@ -98,14 +98,16 @@ SynthSpec LoadSynthSpec(const std::string& path) {
   for (const io::YamlFields& g : f.List("drops")) {
     g.RequireOnly({"pads", "soils", "atmospheres", "impact_speeds_m_s", "mass_kg", "gravity_m_s2"});
     const std::vector<std::string> pads = StringList(g, "pads"), soils = StringList(g, "soils");
-    const std::vector<std::string> atmospheres =
-        g.Has("atmospheres") ? StringList(g, "atmospheres") : std::vector<std::string>{"vacuum"};
-    for (const std::string& a : atmospheres)
-      if (a != "air" && a != "vacuum") g.Fail("atmospheres", "must be air or vacuum, got '" + a + "'");
+    std::vector<rft::Atmosphere> atmospheres;
+    for (const std::string& a : g.Has("atmospheres") ? StringList(g, "atmospheres") : std::vector<std::string>{"vacuum"}) {
+      const std::optional<rft::Atmosphere> parsed = rft::ParseAtmosphere(a);
+      if (!parsed) g.Fail("atmospheres", "must be air or vacuum, got '" + a + "'");
+      atmospheres.push_back(*parsed);
+    }
     const std::vector<double> speeds = g.NumberList("impact_speeds_m_s", /*allow_zero=*/false);
     for (const std::string& pad : pads)
       for (const std::string& soil : soils)
-        for (const std::string& atm : atmospheres)
+        for (rft::Atmosphere atm : atmospheres)
           for (double v : speeds)
             for (int t = 0; t < trials; ++t) {
               if (s.drops.size() == kSynthMaxDrops)
@@ -173,19 +175,17 @@ Dataset Synthesize(const SynthSpec& spec) {
     const SynthDrop& sd = spec.drops[i];
     if (!pads.count(sd.pad)) {
       pads[sd.pad] = io::LoadPad(sd.pad);
-      intrusions[sd.pad] = std::make_unique<geom::AxisymmetricIntrusion>(pads[sd.pad].profile, rft::Li2013Law{});
+      intrusions[sd.pad] = drop::MakeRigIntrusion(pads[sd.pad].profile);
     }
-    if (!soils.count(sd.soil)) {
-      rft::SoilParameters soil = io::LoadSoil(sd.soil);
-      for (const auto& [name, zeta] : spec.true_zeta_N_m3)
-        if (name == sd.soil) soil.zeta_N_m3 = zeta;
-      soils[sd.soil] = soil;
-    }
+    if (!soils.count(sd.soil)) soils[sd.soil] = io::LoadSoil(sd.soil);
     const io::PadSpec& pad = pads[sd.pad];
-    const rft::SoilParameters& soil = soils[sd.soil];
+    // The true zeta, where the spec states one, overrides the catalogue's.
+    std::optional<double> true_zeta;
+    for (const auto& [name, zeta] : spec.true_zeta_N_m3)
+      if (name == sd.soil) true_zeta = zeta;
+    const rft::SoilParameters soil = drop::DropSoil(soils[sd.soil], true_zeta, sd.atmosphere);
     const double mass = sd.mass_kg.value_or(pad.mass_kg);
-    model::SoilResponseInputs in{soil.ZetaAtGravity(sd.gravity_m_s2), soil.bulk_density_kg_m3, sd.atmosphere == "air", terms};
-    const model::EffectSoilResponse response(*intrusions[sd.pad], in);
+    const model::EffectSoilResponse response = drop::MakeRigResponse(*intrusions[sd.pad], soil, sd.gravity_m_s2, terms);
     pad::RigDropOptions options;
     options.rest_duration_s = spec.rest_duration_s + std::abs(terms.sensor_dt_s) + 2.0 / spec.sample_rate_hz;
     pad::RigDropResult sim;
@@ -201,7 +201,7 @@ Dataset Synthesize(const SynthSpec& spec) {
     const double pen_drift = n.penetration_drift_m_s * normal(rng);
     DatasetDrop d;
     std::ostringstream id;
-    id << pad.name << '_' << soil.name << '_' << sd.atmosphere << "_v" << SpeedTag(sd.impact_speed_m_s) << "_t" << sd.trial;
+    id << pad.name << '_' << soil.name << '_' << rft::AtmosphereName(sd.atmosphere) << "_v" << SpeedTag(sd.impact_speed_m_s) << "_t" << sd.trial;
     d.drop_id = id.str();
     d.pad = sd.pad;
     d.soil = sd.soil;

@@ -51,7 +51,8 @@ struct SynthNoise {
 };
 
 struct SynthDrop {
-  std::string pad, soil, atmosphere;
+  std::string pad, soil;
+  rft::Atmosphere atmosphere = rft::Atmosphere::kVacuum;
   double impact_speed_m_s = 0.0;
   std::optional<double> mass_kg;
   double gravity_m_s2 = 9.81;

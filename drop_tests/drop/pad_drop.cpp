@@ -7,12 +7,12 @@
 #include <nlohmann/json.hpp>
 
 #include "drop_tests/io/output_path.h"
+#include "drop_tests/drop/drop_factory.h"
 #include "drop_tests/drop/free_drop_output.h"
 #include "footpad_geom/axisymmetric_intrusion.h"
 #include "rft/ground.h"
 #include "rft/input_error.h"
 #include "rft/physical_limits.h"
-#include "rft/stress_law.h"
 #include "rft/units.h"
 
 namespace touchdown::drop {
@@ -57,8 +57,6 @@ void ValidateConditions(const DropConditions& c, const std::string& context) {
   if (c.mass_kg && !(*c.mass_kg > 0.0 && std::isfinite(*c.mass_kg))) bad("mass_kg", *c.mass_kg, "positive and finite");
   if (!(c.gravity_m_s2 > 0.0 && std::isfinite(c.gravity_m_s2))) bad("gravity_m_s2", c.gravity_m_s2, "positive and finite");
   if (c.zeta_N_m3) limits::Require(limits::kZeta_N_cm3, units::ZetaToN_cm3(*c.zeta_N_m3), context, "zeta_N_cm3");
-  if (c.atmosphere && *c.atmosphere != "vacuum" && *c.atmosphere != "air")
-    throw MakeInputError(context, "atmosphere", "must be vacuum or air, got '" + *c.atmosphere + "'");
   if (!(std::abs(c.tilt_rad) < 90.0 * kDeg)) bad("tilt_deg", c.tilt_rad / kDeg, "between -90 and 90");
   limits::Require(limits::kAbsSpeed_m_s, c.horizontal_speed_m_s, context, "horizontal_speed_m_s");
   if (!c.omega_W.allFinite()) throw MakeInputError(context, "omega", "must be finite");
@@ -66,9 +64,7 @@ void ValidateConditions(const DropConditions& c, const std::string& context) {
 }
 
 double EffectiveZeta(const rft::SoilParameters& soil, const DropConditions& c) {
-  rft::SoilParameters effective = soil;
-  if (c.zeta_N_m3) effective.zeta_N_m3 = *c.zeta_N_m3;
-  return effective.ZetaAtGravity(c.gravity_m_s2);
+  return ZetaAtGravity(DropSoil(soil, c.zeta_N_m3, c.atmosphere), c.gravity_m_s2);
 }
 
 DropConditions DropConditionsFor(const DropRow& row, const model::EffectTerms& effects, const std::string& effects_source,
@@ -98,16 +94,13 @@ PadDrop SimulateDrop(const io::PadSpec& pad, const rft::SoilParameters& soil, co
   // The record keeps the pad's description but not its 3D body (megabytes for a fine mesh,
   // unused by the rig drop): copying it per drop would cost more than the drop itself.
   io::PadSpec described{pad.name, pad.source, pad.kind, pad.profile, pad.mass_kg, {}, pad.mesh_file};
-  PadDrop drop{std::move(described), soil, conditions, conditions.mass_kg.value_or(pad.mass_kg), 0.0, {}, {}, {}};
-  if (conditions.atmosphere) drop.soil.atmosphere = *conditions.atmosphere;
-  drop.zeta_effective_N_m3 = EffectiveZeta(soil, conditions);
+  const rft::SoilParameters drop_soil = DropSoil(soil, conditions.zeta_N_m3, conditions.atmosphere);
+  PadDrop drop{std::move(described), DropSoil(soil, std::nullopt, conditions.atmosphere), conditions,
+               conditions.mass_kg.value_or(pad.mass_kg), ZetaAtGravity(drop_soil, conditions.gravity_m_s2), {}, {}, {}};
 
   if (free) {
-    rft::SoilParameters effective = soil;
-    if (conditions.zeta_N_m3) effective.zeta_N_m3 = *conditions.zeta_N_m3;
-    const std::string law_name = conditions.law_3d.empty() ? soil.rft_law_3d : conditions.law_3d;
-    const auto law = model::MakeEffectLaw3D(law_name, effective, conditions.gravity_m_s2, conditions.effects, drop.in_air(),
-                                     conditions.effects_source);
+    const auto law = MakeFreeLaw(drop_soil, conditions.law_3d, conditions.gravity_m_s2, conditions.effects,
+                                 conditions.effects_source);
     drop.law_3d = std::string(law->name());
     pad::FreeDropInput in;
     in.impact_speed_m_s = conditions.impact_speed_m_s;
@@ -125,14 +118,13 @@ PadDrop SimulateDrop(const io::PadSpec& pad, const rft::SoilParameters& soil, co
     return drop;
   }
 
-  std::optional<geom::AxisymmetricIntrusion> own;
-  if (!options.intrusion) own.emplace(pad.profile, rft::Li2013Law{});
+  std::unique_ptr<geom::AxisymmetricIntrusion> own;
+  if (!options.intrusion) own = MakeRigIntrusion(pad.profile);
   const geom::AxisymmetricIntrusion& intrusion = options.intrusion ? *options.intrusion : *own;
   // With no effect terms this is exactly the quasi-static RFT force F_z(d; zeta).
-  model::SoilResponseInputs inputs{drop.zeta_effective_N_m3, soil.bulk_density_kg_m3, drop.in_air(), conditions.effects};
   std::optional<model::EffectSoilResponse> response;
   try {
-    response.emplace(intrusion, inputs);
+    response.emplace(MakeRigResponse(intrusion, drop_soil, conditions.gravity_m_s2, conditions.effects));
   } catch (const InputError& e) {
     throw MakeInputError(soil.name, "", e.what());
   }
@@ -155,7 +147,7 @@ nlohmann::json SummaryJson(const PadDrop& d) {
     j = FreeDropJson(*d.free);
     j["pad"] = d.pad.name;
     j["soil"] = d.soil.name;
-    j["atmosphere"] = d.soil.atmosphere;
+    j["atmosphere"] = rft::AtmosphereName(d.soil.atmosphere);
     j["law"] = d.law_3d;
     j["impact_speed_m_s"] = d.conditions.impact_speed_m_s;
     j["horizontal_speed_m_s"] = d.conditions.horizontal_speed_m_s;
@@ -166,7 +158,7 @@ nlohmann::json SummaryJson(const PadDrop& d) {
     j = nlohmann::json{
         {"pad", d.pad.name},
         {"soil", d.soil.name},
-        {"atmosphere", d.soil.atmosphere},
+        {"atmosphere", rft::AtmosphereName(d.soil.atmosphere)},
         {"impact_speed_m_s", d.conditions.impact_speed_m_s},
         {"pad_mass_kg", d.mass_kg},
         {"gravity_m_s2", d.conditions.gravity_m_s2},

@@ -3,7 +3,7 @@
 // lander/pad/rig_drop.h) or, when the pad is tilted, slides or spins, the free 6-DOF pad
 // (lander/pad/free_drop.h) under the 3D contact. `drop`, `sweep` and `compare` all build their
 // drops here: DropConditionsFor turns a dataset row or a sweep point into DropConditions, and
-// SimulateDrop runs them.
+// SimulateDrop runs them, built from the drop factory's pieces (drop_factory.h).
 #include <Eigen/Core>
 #include <optional>
 #include <ostream>
@@ -28,7 +28,7 @@ struct DropConditions {
   std::optional<double> mass_kg;        // default: the pad's mass
   double gravity_m_s2 = 9.81;
   std::optional<double> zeta_N_m3;      // overrides the soil's zeta (at its reference gravity)
-  std::optional<std::string> atmosphere;  // "vacuum" or "air"; default: the soil's
+  std::optional<rft::Atmosphere> atmosphere;  // default: the soil's
   // The free 6-DOF pad instead of the rig's rod: asked for with `free`, implied by a non-zero
   // tilt, horizontal speed or angular velocity (IsFree).
   bool free = false;
@@ -51,7 +51,7 @@ struct DropRow {
   std::optional<double> mass_kg;
   double gravity_m_s2 = 9.81;
   std::optional<double> zeta_N_m3;
-  std::optional<std::string> atmosphere;  // a dataset row states it; a sweep takes the soil's
+  std::optional<rft::Atmosphere> atmosphere;  // a dataset row states it; a sweep takes the soil's
   double tilt_rad = 0.0;
   double horizontal_speed_m_s = 0.0;
 };
@@ -71,7 +71,7 @@ struct PadDrop {
   pad::RigDropResult result;
   std::optional<pad::FreeDropResult> free;  // a free drop's own result (tilt, travel, horizontal force)
   std::string law_3d;                  // a free drop's 3D law, decorators included ("li2013+rate_damping")
-  bool in_air() const { return soil.atmosphere == "air"; }
+  bool in_air() const { return soil.atmosphere == rft::Atmosphere::kAir; }
 };
 
 // Throws InputError if a condition is out of range (naming `context`).
@@ -83,7 +83,7 @@ struct DropRunOptions {
   pad::RigDropOptions rig;
   pad::FreeDropOptions free;
   // The pad's profile integral, built once by callers running many drops of one pad (sweeps);
-  // null: built here. Must be the pad's own (Li 2013 law).
+  // null: built here. Must be the pad's own (MakeRigIntrusion, drop_factory.h).
   const geom::AxisymmetricIntrusion* intrusion = nullptr;
 };
 

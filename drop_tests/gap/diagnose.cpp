@@ -29,7 +29,7 @@ std::vector<bool> HeldOutSplit(const dataset::Dataset& ds) {
   std::map<std::string, std::vector<size_t>> cells;
   for (size_t i = 0; i < ds.drops.size(); ++i) {
     const dataset::DatasetDrop& d = ds.drops[i];
-    cells[d.pad + "|" + d.soil + "|" + d.atmosphere].push_back(i);
+    cells[d.pad + "|" + d.soil + "|" + rft::AtmosphereName(d.atmosphere)].push_back(i);
   }
   std::vector<bool> held(ds.drops.size(), false);
   for (auto& [cell, idx] : cells) {
@@ -204,7 +204,7 @@ std::vector<Finding> WhereAnalysis(const dataset::Dataset& ds, const FitProblem&
     out.push_back(f);
   };
   for (bool on_bias : {false, true}) {
-    categorical("atmosphere", [](const dataset::DatasetDrop& d) { return d.atmosphere; }, on_bias);
+    categorical("atmosphere", [](const dataset::DatasetDrop& d) { return std::string(rft::AtmosphereName(d.atmosphere)); }, on_bias);
     categorical("pad", [](const dataset::DatasetDrop& d) { return d.pad; }, on_bias);
     categorical("soil", [](const dataset::DatasetDrop& d) { return d.soil; }, on_bias);
   }

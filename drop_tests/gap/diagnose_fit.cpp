@@ -9,10 +9,10 @@
 
 #include <Eigen/Dense>
 
+#include "drop_tests/drop/drop_factory.h"
 #include "drop_tests/io/student_t.h"
 #include "rft/input_error.h"
 #include "rft/units.h"
-#include "rft/stress_law.h"
 
 namespace touchdown::gap {
 
@@ -69,12 +69,9 @@ void Bounds(const FitProblem&, const Layout& L, Eigen::VectorXd* lo, Eigen::Vect
 // The model's recorded trace for one drop, or nullopt when the simulation fails.
 std::optional<dataset::DatasetTrace> Recorded(const FitProblem& p, const FitDrop& d, const ModelValues& m,
                                      const model::EffectTerms& terms) {
-  const rft::SoilParameters& soil = p.soils[d.soil];
-  rft::SoilParameters s = soil;
-  s.zeta_N_m3 = m.zeta_N_m3[d.soil];
-  const model::SoilResponseInputs in{s.ZetaAtGravity(d.gravity_m_s2), soil.bulk_density_kg_m3, d.in_air, terms};
+  const rft::SoilParameters soil = drop::DropSoil(p.soils[d.soil], m.zeta_N_m3[d.soil], d.atmosphere);
   try {
-    const model::EffectSoilResponse response(*p.intrusions[d.pad], in);
+    const model::EffectSoilResponse response = drop::MakeRigResponse(*p.intrusions[d.pad], soil, d.gravity_m_s2, terms);
     const pad::RigDropResult r = pad::RunRigDrop({d.mass_kg, d.gravity_m_s2, d.speed_m_s}, response, p.rig);
     dataset::DatasetTrace out;
     const dataset::DatasetTrace& tr = *d.trace;
@@ -187,7 +184,7 @@ FitProblem MakeFitProblem(const dataset::Dataset& ds, const std::vector<bool>& h
     if (!pads.count(pad_ref)) {
       pads[pad_ref] = static_cast<int>(p.pads.size());
       p.pads.push_back(io::LoadPad(pad_ref));
-      p.intrusions.push_back(std::make_unique<geom::AxisymmetricIntrusion>(p.pads.back().profile, rft::Li2013Law{}));
+      p.intrusions.push_back(drop::MakeRigIntrusion(p.pads.back().profile));
     }
     if (!soils.count(soil_ref)) {
       soils[soil_ref] = static_cast<int>(p.soils.size());
@@ -205,9 +202,9 @@ FitProblem MakeFitProblem(const dataset::Dataset& ds, const std::vector<bool>& h
     d.drop_id = dd.drop_id;
     d.pad = pads[pad_ref];
     d.soil = soils[soil_ref];
-    d.in_air = dd.atmosphere == "air";
-    p.has_air |= d.in_air;
-    p.has_vacuum |= !d.in_air;
+    d.atmosphere = dd.atmosphere;
+    p.has_air |= d.atmosphere == rft::Atmosphere::kAir;
+    p.has_vacuum |= d.atmosphere == rft::Atmosphere::kVacuum;
     d.train = !held_out[i];
     d.speed_m_s = dd.impact_speed_m_s;
     d.mass_kg = dd.pad_mass_kg;
@@ -239,21 +236,17 @@ bool CandidateApplies(const FitProblem& p, const std::vector<std::string>& ids, 
   return true;
 }
 
-FitResult FitCandidate(const FitProblem& p, const std::vector<std::string>& ids, const FitResult* start) {
-  const Layout L = MakeLayout(p, ids);
-  const int n = L.size();
-  Eigen::VectorXd lo, hi;
-  Bounds(p, L, &lo, &hi);
-  Eigen::VectorXd x(n);
+namespace {
+// The starting point: zeta from `start` (or the catalogue), effect parameters at their starting
+// values, each multi-modal one (EffectParameterInfo::scan) set by a coarse scan, one at a time.
+Eigen::VectorXd StartingPoint(const FitProblem& p, const Layout& L, const FitResult* start, Objective& obj) {
+  Eigen::VectorXd x(L.size());
   int k = 0;
   for (int s = 0; s < L.soils; ++s)
     x[k++] = start && !start->zeta_N_m3.empty() ? start->zeta_N_m3[s] / p.soils[s].zeta_N_m3 : 1.0;
   for (const model::EffectInfo* e : L.infos)
     for (const model::EffectParameterInfo& q : e->parameters) x[k++] = q.start / q.scale;
-
-  Objective obj(p, L);
-  Eigen::VectorXd r, r_new;
-  // Coarse scans of multi-modal parameters (EffectParameterInfo::scan), one at a time.
+  Eigen::VectorXd r;
   k = L.soils;
   for (const model::EffectInfo* e : L.infos)
     for (const model::EffectParameterInfo& q : e->parameters) {
@@ -269,48 +262,65 @@ FitResult FitCandidate(const FitProblem& p, const std::vector<std::string>& ids,
       }
       ++k;
     }
-  obj.Evaluate(x, &r);
-  double cost = r.squaredNorm();
+  return x;
+}
+
+// The Levenberg-Marquardt state: the scaled parameters, their weighted residuals, the cost and
+// the Jacobian there.
+struct Solution {
+  Eigen::VectorXd x, r;
+  double cost = 0.0;
+  Eigen::MatrixXd J;
+};
+
+// Forward-difference Jacobian of the weighted residuals at s.x, a step inside the upper bound.
+void UpdateJacobian(Objective& obj, const Eigen::VectorXd& hi, Solution& s) {
+  for (int j = 0; j < s.x.size(); ++j) {
+    double h = 1e-4 * std::max(std::abs(s.x[j]), 0.1);
+    if (s.x[j] + h > hi[j]) h = -h;
+    Eigen::VectorXd xp = s.x;
+    xp[j] += h;
+    Eigen::VectorXd rp;
+    obj.Evaluate(xp, &rp);
+    s.J.col(j) = (rp - s.r) / h;
+  }
+}
+
+// Levenberg-Marquardt from s.x within [lo, hi]; counts the iterations and says whether it
+// converged. Leaves the Jacobian at the optimum (for the intervals).
+void Minimise(Objective& obj, const Eigen::VectorXd& lo, const Eigen::VectorXd& hi, Solution& s, FitResult& out) {
+  const long n = s.x.size();
+  obj.Evaluate(s.x, &s.r);
+  s.cost = s.r.squaredNorm();
+  s.J.resize(obj.rows(), n);
+  Eigen::VectorXd r_new;
   double lambda = 1e-3;
-  FitResult out;
-  Eigen::MatrixXd J(obj.rows(), n);
-  auto jacobian = [&] {
-    for (int j = 0; j < n; ++j) {
-      double h = 1e-4 * std::max(std::abs(x[j]), 0.1);
-      if (x[j] + h > hi[j]) h = -h;
-      Eigen::VectorXd xp = x;
-      xp[j] += h;
-      Eigen::VectorXd rp;
-      obj.Evaluate(xp, &rp);
-      J.col(j) = (rp - r) / h;
-    }
-  };
   const int max_iterations = 30;
   for (int it = 0; it < max_iterations; ++it) {
     out.iterations = it + 1;
-    jacobian();
-    const Eigen::MatrixXd A = J.transpose() * J;
-    const Eigen::VectorXd g = J.transpose() * r;
+    UpdateJacobian(obj, hi, s);
+    const Eigen::MatrixXd A = s.J.transpose() * s.J;
+    const Eigen::VectorXd g = s.J.transpose() * s.r;
     bool improved = false;
     double step_norm = 0.0;
     for (int attempt = 0; attempt < 10 && lambda < 1e10; ++attempt) {  // damping up to x5^10 per iteration
       Eigen::MatrixXd M = A;
       for (int j = 0; j < n; ++j) M(j, j) += lambda * std::max(A(j, j), 1e-12);
       Eigen::VectorXd dx = M.ldlt().solve(-g);
-      Eigen::VectorXd x_new = (x + dx).cwiseMax(lo).cwiseMin(hi);
+      Eigen::VectorXd x_new = (s.x + dx).cwiseMax(lo).cwiseMin(hi);
       obj.Evaluate(x_new, &r_new);
       const double c_new = r_new.squaredNorm();
-      if (c_new < cost) {
-        step_norm = (x_new - x).norm();
-        const double gain = (cost - c_new) / cost;
-        x = x_new;
-        r = r_new;
-        cost = c_new;
+      if (c_new < s.cost) {
+        step_norm = (x_new - s.x).norm();
+        const double gain = (s.cost - c_new) / s.cost;
+        s.x = x_new;
+        s.r = r_new;
+        s.cost = c_new;
         lambda = std::max(lambda / 4, 1e-9);
         improved = true;
         // Converged when a step no longer changes the cost meaningfully (1e-6 of it) or moves
         // the parameters by less than 1e-6 of their (scaled) size.
-        if (gain < 1e-8 || step_norm < 1e-7 * (x.norm() + 1e-7)) out.converged = true;
+        if (gain < 1e-8 || step_norm < 1e-7 * (s.x.norm() + 1e-7)) out.converged = true;
         break;
       }
       lambda *= 5;
@@ -321,22 +331,12 @@ FitResult FitCandidate(const FitProblem& p, const std::vector<std::string>& ids,
     }
     if (out.converged) break;
   }
-  // Final Jacobian at the optimum for the intervals.
-  jacobian();
-  Eigen::VectorXd unweighted;
-  obj.Evaluate(x, &r, &unweighted);
+  UpdateJacobian(obj, hi, s);
+}
 
-  const ModelValues m = Unscale(p, L, x);
-  out.effect_ids = ids;
-  out.zeta_N_m3 = m.zeta_N_m3;
-  out.effects = m.effects;
-  out.cost = cost;
-  out.rss = unweighted.squaredNorm();
-  out.samples = obj.rows();
-  out.parameters = n;
-  out.bic = out.samples * std::log(std::max(out.rss, 1e-300) / out.samples) + n * std::log(double(out.samples));
-  out.simulations = obj.simulations;
-  // The force residual in newtons per soil (the unweighted force rows are (F_sim - F) / max F).
+// The force residual in newtons per soil (the unweighted force rows are (F_sim - F) / max F).
+void ForceResidualsPerSoil(const FitProblem& p, const Layout& L, const Objective& obj,
+                           const Eigen::VectorXd& unweighted, FitResult& out) {
   out.residual_rms_N.assign(L.soils, 0.0);
   out.force_samples.assign(L.soils, 0);
   for (size_t c = 0; c < obj.train().size(); ++c) {
@@ -350,16 +350,22 @@ FitResult FitCandidate(const FitProblem& p, const std::vector<std::string>& ids,
   }
   for (int s = 0; s < L.soils; ++s)
     out.residual_rms_N[s] = out.force_samples[s] > 0 ? std::sqrt(out.residual_rms_N[s] / out.force_samples[s]) : 0.0;
+}
 
-  // Cluster-robust covariance (drops as clusters), CR1 small-sample factor G / (G - 1).
+// The parameters' covariance at the optimum: cluster-robust (drops as clusters, CR1 small-sample
+// factor G / (G - 1)), each variance widened to the classical one where that is larger.
+Eigen::MatrixXd Covariance(const FitProblem& p, const Objective& obj, const Solution& s) {
+  const long n = s.x.size();
+  const Eigen::MatrixXd& J = s.J;
+  const Eigen::VectorXd& r = s.r;
   const Eigen::MatrixXd A = J.transpose() * J;
   Eigen::MatrixXd B = Eigen::MatrixXd::Zero(n, n);
   const int G = static_cast<int>(obj.train().size());
   for (int c = 0; c < G; ++c) {
     const long o = obj.offsets()[c];
     const long rows = 2 * static_cast<long>(p.drops[obj.train()[c]].trace->size());
-    const Eigen::VectorXd s = J.middleRows(o, rows).transpose() * r.segment(o, rows);
-    B += s * s.transpose();
+    const Eigen::VectorXd g = J.middleRows(o, rows).transpose() * r.segment(o, rows);
+    B += g * g.transpose();
   }
   const Eigen::MatrixXd Ainv = A.completeOrthogonalDecomposition().pseudoInverse();
   const Eigen::MatrixXd sandwich = Ainv * B * Ainv * (G > 1 ? double(G) / (G - 1) : 1.0);
@@ -381,8 +387,17 @@ FitResult FitCandidate(const FitProblem& p, const std::vector<std::string>& ids,
   const Eigen::MatrixXd naive = Ainv * s2 * inflation;
   Eigen::MatrixXd cov = sandwich;
   for (int j = 0; j < n; ++j) cov(j, j) = std::max(sandwich(j, j), naive(j, j));
+  return cov;
+}
+
+// Each parameter's value and 95 % interval (Student's t on drops - 1), clipped to its bounds.
+void Estimates(const FitProblem& p, const Layout& L, const Objective& obj, const Solution& s,
+               const Eigen::VectorXd& lo, const Eigen::VectorXd& hi, FitResult& out) {
+  const Eigen::MatrixXd cov = Covariance(p, obj, s);
+  const int G = static_cast<int>(obj.train().size());
   const double t = io::StudentTTwoSided(0.95, std::max(G - 1, 1));
-  k = 0;
+  const Eigen::VectorXd& x = s.x;
+  int k = 0;
   auto estimate = [&](const std::string& effect, const std::string& key, double scale, double file_to_si,
                       const std::string& unit) {
     const double half = t * std::sqrt(std::max(cov(k, k), 0.0));
@@ -391,9 +406,38 @@ FitResult FitCandidate(const FitProblem& p, const std::vector<std::string>& ids,
     out.estimates.push_back(e);
     ++k;
   };
-  for (int s = 0; s < L.soils; ++s) estimate("", "zeta_N_cm3:" + p.soils[s].name, p.soils[s].zeta_N_m3, units::kN_m3_per_N_cm3, "N/m^3");
+  for (const rft::SoilParameters& soil : p.soils)
+    estimate("", "zeta_N_cm3:" + soil.name, soil.zeta_N_m3, units::kN_m3_per_N_cm3, "N/m^3");
   for (const model::EffectInfo* e : L.infos)
     for (const model::EffectParameterInfo& q : e->parameters) estimate(e->id, q.key, q.scale, q.file_to_si, q.unit);
+}
+}  // namespace
+
+FitResult FitCandidate(const FitProblem& p, const std::vector<std::string>& ids, const FitResult* start) {
+  const Layout L = MakeLayout(p, ids);
+  const int n = L.size();
+  Eigen::VectorXd lo, hi;
+  Bounds(p, L, &lo, &hi);
+  Objective obj(p, L);
+  FitResult out;
+  Solution s;
+  s.x = StartingPoint(p, L, start, obj);
+  Minimise(obj, lo, hi, s, out);
+  Eigen::VectorXd unweighted;
+  obj.Evaluate(s.x, &s.r, &unweighted);
+
+  const ModelValues m = Unscale(p, L, s.x);
+  out.effect_ids = ids;
+  out.zeta_N_m3 = m.zeta_N_m3;
+  out.effects = m.effects;
+  out.cost = s.cost;
+  out.rss = unweighted.squaredNorm();
+  out.samples = obj.rows();
+  out.parameters = n;
+  out.bic = out.samples * std::log(std::max(out.rss, 1e-300) / out.samples) + n * std::log(double(out.samples));
+  out.simulations = obj.simulations;
+  ForceResidualsPerSoil(p, L, obj, unweighted, out);
+  Estimates(p, L, obj, s, lo, hi, out);
   return out;
 }
 

@@ -30,7 +30,7 @@ struct FitDrop {
   size_t dataset_index = 0;
   std::string drop_id;
   int pad = 0, soil = 0;
-  bool in_air = false;
+  rft::Atmosphere atmosphere = rft::Atmosphere::kVacuum;  // the dataset row's
   bool train = true;
   double speed_m_s = 0.0, mass_kg = 0.0, gravity_m_s2 = 0.0;
   const dataset::DatasetTrace* trace = nullptr;

@@ -181,7 +181,7 @@ void WriteDiagnosis(const Diagnosis& d, const dataset::Dataset& ds, const io::Ou
       for (size_t i = 0; i < d.problem.drops.size(); ++i) {
         const dataset::DatasetDrop& m = ds.drops[d.problem.drops[i].dataset_index];
         out << m.drop_id << ',' << (d.problem.drops[i].train ? 0 : 1) << ',' << m.pad << ',' << m.soil << ','
-            << m.atmosphere << ',' << io::FormatNumber(m.impact_speed_m_s) << ',' << io::FormatNumber(d.base.gaps[i].force_nrmse)
+            << rft::AtmosphereName(m.atmosphere) << ',' << io::FormatNumber(m.impact_speed_m_s) << ',' << io::FormatNumber(d.base.gaps[i].force_nrmse)
             << ',' << io::FormatNumber(after.gaps[i].force_nrmse) << ','
             << io::FormatNumber(d.base.gaps[i].final_penetration_rel_error) << ','
             << io::FormatNumber(after.gaps[i].final_penetration_rel_error) << ',' << io::FormatNumber(d.base.gaps[i].noise_nrmse)
@@ -232,7 +232,7 @@ void WriteDiagnosis(const Diagnosis& d, const dataset::Dataset& ds, const io::Ou
       for (const size_t k : io::PlotRowsToKeep(m.trace.size(), 2, residual))
         residual_rows << io::FormatNumber(m.trace.t_s[k]) << ',' << io::FormatNumber((b->force_N[k] - m.trace.force_N[k]) / f.force_scale_N)
                       << ',' << io::FormatNumber((a->force_N[k] - m.trace.force_N[k]) / f.force_scale_N) << ','
-                      << m.atmosphere << '\n';
+                      << rft::AtmosphereName(m.atmosphere) << '\n';
       residual_rows << '\n';
     }
     io::WriteFileAtomically((dir / "data" / "residuals_held_out.csv").string(), [&](std::ostream& out) {

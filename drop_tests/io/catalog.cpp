@@ -275,9 +275,10 @@ rft::SoilParameters LoadSoil(const std::string& name_or_path) {
   rft::SoilParameters soil;
   soil.name = f.StringOr("name", fs::path(path).stem().string());
   if (!IsValidUtf8(soil.name)) f.Fail("name", "the soil name (from the file name) is not valid UTF-8 text");
-  soil.atmosphere = f.StringOr("atmosphere", "vacuum");
-  if (soil.atmosphere != "vacuum" && soil.atmosphere != "air")
-    f.Fail("atmosphere", "must be 'vacuum' or 'air', got '" + soil.atmosphere + "'");
+  const std::string atmosphere = f.StringOr("atmosphere", "vacuum");
+  const std::optional<rft::Atmosphere> parsed = rft::ParseAtmosphere(atmosphere);
+  if (!parsed) f.Fail("atmosphere", "must be 'vacuum' or 'air', got '" + atmosphere + "'");
+  soil.atmosphere = *parsed;
   ReadFields(f, SoilNumberFields(), soil);
   if (soil.internal_friction_angle_rad >= 90.0 * kDeg) f.Fail("internal_friction_angle_deg", "must be below 90");
   // The 3D laws' soil fields (rft/soil.h): Agarwal 2023's intruder-surface friction, and the
@@ -303,7 +304,7 @@ rft::SoilParameters LoadSoil(const std::string& name_or_path) {
 void WriteSoil(const rft::SoilParameters& soil, const std::string& path) {
   YAML::Emitter y;
   y << YAML::BeginMap << YAML::Key << "schema_version" << YAML::Value << 1 << YAML::Key << "name" << YAML::Value
-    << soil.name << YAML::Key << "atmosphere" << YAML::Value << soil.atmosphere << YAML::Key << "zeta_N_cm3"
+    << soil.name << YAML::Key << "atmosphere" << YAML::Value << rft::AtmosphereName(soil.atmosphere) << YAML::Key << "zeta_N_cm3"
     << YAML::Value << units::ZetaToN_cm3(soil.zeta_N_m3);
   WriteFields(y, SoilNumberFields(), soil);
   if (soil.dynamic_term) y << YAML::Key << "dynamic_term" << YAML::Value << true;

@@ -133,9 +133,9 @@ EffectTerms ModelEffectTerms(const ModelFile& m) {
 
 std::unique_ptr<rft::StressLaw3D> MakeModelStressLaw3D(std::string_view law, const rft::SoilParameters& soil,
                                                        double gravity_m_s2, const ModelFile* model) {
-  if (!model) return MakeEffectLaw3D(law, soil, gravity_m_s2, EffectTerms{}, soil.atmosphere == "air", "");
+  if (!model) return MakeEffectLaw3D(law, soil, gravity_m_s2, EffectTerms{}, soil.atmosphere == rft::Atmosphere::kAir, "");
   return MakeEffectLaw3D(law, ApplyModel(*model, soil), gravity_m_s2, ModelEffectTerms(*model),
-                         soil.atmosphere == "air", model->source.empty() ? "model " + model->name : model->source);
+                         soil.atmosphere == rft::Atmosphere::kAir, model->source.empty() ? "model " + model->name : model->source);
 }
 
 nlohmann::json ModelEffectsJson(const ModelFile& m) {

@@ -144,7 +144,7 @@ void WriteResolvedScenario(const CampaignScenario& s, const std::string& path, c
       << YAML::Key << "thickness_mm" << YAML::Value << pad.profile.thickness_m() * 1e3 << YAML::Key
       << "profile_points" << YAML::Value << pad.profile.points.size() << YAML::EndMap;
     y << YAML::Key << "soil" << YAML::Value << YAML::BeginMap << YAML::Key << "name" << YAML::Value << soil.name
-      << YAML::Key << "atmosphere" << YAML::Value << soil.atmosphere << YAML::Key << "zeta_N_cm3" << YAML::Value
+      << YAML::Key << "atmosphere" << YAML::Value << rft::AtmosphereName(soil.atmosphere) << YAML::Key << "zeta_N_cm3" << YAML::Value
       << units::ZetaToN_cm3(soil.zeta_N_m3) << YAML::Key << "reference_gravity_m_s2" << YAML::Value << soil.reference_gravity_m_s2
       << YAML::EndMap;
     y << YAML::Key << "impact_speed_m_s" << YAML::Value << c.conditions.impact_speed_m_s << YAML::Key << "mass_kg"

@@ -5,9 +5,9 @@
 #include <numbers>
 
 #include "drop_tests/scenario/lander_scenario.h"
+#include "drop_tests/drop/drop_factory.h"
 #include "drop_tests/drop/pad_drop.h"
 #include "footpad_geom/axisymmetric_intrusion.h"
-#include "rft/stress_law.h"
 #include "rft/units.h"
 
 namespace touchdown::sweep {
@@ -42,7 +42,7 @@ DropRecord Describe(const SweepPlan& plan, const SweepDropParams& p, const drop:
   const rft::SoilParameters& soil = plan.soils[p.soil];
   r.pad = pad.name;
   r.soil = soil.name;
-  r.atmosphere = soil.atmosphere;
+  r.atmosphere = rft::AtmosphereName(soil.atmosphere);
   r.impact_speed_m_s = p.impact_speed_m_s;
   r.pad_mass_kg = p.mass_kg.value_or(pad.mass_kg);
   r.gravity_m_s2 = p.gravity_m_s2;
@@ -146,7 +146,7 @@ DropRecord SimulateLanderSweepDrop(const SweepModels& models, const SweepDropPar
   const rft::SoilParameters& soil = p.Given(SweepParam::kSoil) ? plan.soils[p.soil] : models.lander_soil();
   r.pad = sc.lander.pad.name;
   r.soil = soil.name;
-  r.atmosphere = soil.atmosphere;
+  r.atmosphere = rft::AtmosphereName(soil.atmosphere);
   r.impact_speed_m_s = sc.initial.drop_height_m
                            ? std::sqrt(std::pow(sc.initial.release_vertical_speed_m_s, 2) +
                                        2.0 * sc.gravity_m_s2 * *sc.initial.drop_height_m)
@@ -208,7 +208,7 @@ DropRecord SimulateLanderSweepDrop(const SweepModels& models, const SweepDropPar
 SweepModels::SweepModels(const SweepPlan& plan) : plan_(plan) {
   for (const io::PadSpec& pad : plan.pads)  // none for a mesh pad: its drops are free drops
     intrusions_.push_back(pad.is_axisymmetric()
-                              ? std::make_unique<geom::AxisymmetricIntrusion>(pad.profile, rft::Li2013Law{})
+                              ? drop::MakeRigIntrusion(pad.profile)
                               : nullptr);
   if (plan.model) effects_ = model::ModelEffectTerms(*plan.model);
   if (plan.lander) {

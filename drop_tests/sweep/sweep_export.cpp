@@ -173,7 +173,9 @@ dataset::Dataset SweepToDataset(const std::string& sweep_dir, const ExportOption
     // A pad or soil from a file (not a catalogue name) is written as its absolute path.
     if (const auto it = pad_files.find(r.pad); it != pad_files.end()) d.pad = it->second;
     if (const auto it = soil_files.find(r.soil); it != soil_files.end()) d.soil = it->second;
-    d.atmosphere = r.atmosphere;
+    const std::optional<rft::Atmosphere> atmosphere = rft::ParseAtmosphere(r.atmosphere);
+    if (!atmosphere) throw InputError("drop " + r.drop_id + ": atmosphere '" + r.atmosphere + "' is neither vacuum nor air");
+    d.atmosphere = *atmosphere;
     d.impact_speed_m_s = r.impact_speed_m_s;
     d.pad_mass_kg = r.pad_mass_kg;
     d.gravity_m_s2 = r.gravity_m_s2;

@@ -304,7 +304,7 @@ std::string SweepPlan::DigestText() const {
          std::to_string(set.soil[2]) + "," + std::to_string(set.soil[3]) + ";";
   if (!pad_soil_sets.empty()) s += "pad_patch_half_width=" + io::FormatNumber(pad_patch_half_width_m) + ";";
   for (const rft::SoilParameters& soil : soils)
-    s += "soil:" + soil.name + ":" + soil.atmosphere + ":" + io::FormatNumber(soil.zeta_N_m3) + ":" +
+    s += "soil:" + soil.name + ":" + rft::AtmosphereName(soil.atmosphere) + ":" + io::FormatNumber(soil.zeta_N_m3) + ":" +
          io::FormatNumber(soil.reference_gravity_m_s2) + ";";
   for (int p = 0; p < kSweepParamCount; ++p)
     if (fixed[p]) s += std::string("fixed:") + SweepParamKey(kAll[p]) + "=" + io::FormatNumber(*fixed[p]) + ";";

@@ -98,7 +98,7 @@ DatasetDrop Drop(const std::string& id, const std::string& pad, double speed) {
   d.drop_id = id;
   d.pad = pad;
   d.soil = "fjs1_lp";
-  d.atmosphere = "vacuum";
+  d.atmosphere = touchdown::rft::Atmosphere::kVacuum;
   d.impact_speed_m_s = speed;
   d.pad_mass_kg = 1.6;
   d.gravity_m_s2 = 9.81;

@@ -53,7 +53,7 @@ Dataset MakeDataset() {
     d.drop_id = "run_" + std::to_string(k);
     d.pad = k == 2 ? "curved" : "flat";
     d.soil = "fjs1_lp";
-    d.atmosphere = k == 1 ? "air" : "vacuum";
+    d.atmosphere = k == 1 ? touchdown::rft::Atmosphere::kAir : touchdown::rft::Atmosphere::kVacuum;
     d.impact_speed_m_s = 0.7 + k / 3.0;
     d.pad_mass_kg = 1.6;
     d.gravity_m_s2 = 9.81;

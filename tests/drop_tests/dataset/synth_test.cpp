@@ -22,7 +22,7 @@ SynthSpec Spec() {
   s.source = "unit.yaml";
   s.seed = 5;
   s.rest_duration_s = 0.01;
-  for (const char* atm : {"air", "vacuum"})
+  for (rft::Atmosphere atm : {rft::Atmosphere::kAir, rft::Atmosphere::kVacuum})
     for (double v : {0.8, 1.4}) s.drops.push_back({"flat", "fjs1_lp", atm, v, std::nullopt, 9.81, 0});
   return s;
 }
@@ -78,7 +78,7 @@ TEST(Synth, GasCushionHidesOnlyInAirDrops) {
   hidden.hidden_effect = model::Effect{"gas_cushion", {0.3, 8000.0}};
   const Dataset a = Synthesize(base), b = Synthesize(hidden);
   for (size_t i = 0; i < a.drops.size(); ++i) {
-    if (a.drops[i].atmosphere == "vacuum") EXPECT_TRUE(a.drops[i] == b.drops[i]) << a.drops[i].drop_id;
+    if (a.drops[i].atmosphere == rft::Atmosphere::kVacuum) EXPECT_TRUE(a.drops[i] == b.drops[i]) << a.drops[i].drop_id;
     else EXPECT_GT(std::abs(b.drops[i].FinalPenetration() / a.drops[i].FinalPenetration() - 1), 0.05) << a.drops[i].drop_id;
   }
 }

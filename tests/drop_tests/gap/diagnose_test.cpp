@@ -19,7 +19,7 @@ dataset::SynthSpec SmallSpec() {
   s.seed = 11;
   s.rest_duration_s = 0.008;
   for (const char* pad : {"flat", "curved"})
-    for (const char* atm : {"air", "vacuum"})
+    for (rft::Atmosphere atm : {rft::Atmosphere::kAir, rft::Atmosphere::kVacuum})
       for (double v : {0.8, 1.2, 1.6}) s.drops.push_back({pad, "fjs1_lp", atm, v, std::nullopt, 9.81, 0});
   s.noise = dataset::SynthNoise{0.5, 1e-5, 1.0, 2e-5, 0.1, 5e-6};
   return s;

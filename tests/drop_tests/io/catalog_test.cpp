@@ -70,7 +70,7 @@ TEST_F(CatalogFiles, BundledSoilsDeriveZetaFromAgarwalScaling) {
   EXPECT_NEAR(lp.zeta_N_m3 / 1e6, 3.48, 0.005);
   EXPECT_NEAR(cp.zeta_N_m3 / 1e6, 9.22, 0.005);
   EXPECT_GT(cp.zeta_N_m3, lp.zeta_N_m3);
-  EXPECT_EQ(lp.atmosphere, "vacuum");
+  EXPECT_EQ(lp.atmosphere, rft::Atmosphere::kVacuum);
 }
 
 TEST_F(CatalogFiles, UnknownNamesListTheKnownOnes) {

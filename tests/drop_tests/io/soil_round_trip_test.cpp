@@ -65,7 +65,7 @@ TEST_F(SoilRoundTrip, EveryOptionalField) {
                                       "internal_friction_angle_deg: 37.5\nmu_surf: 0.55\ndynamic_term: true\n"
                                       "dynamic_lambda: 1.7\ndynamic_density_kg_m3: 1600\n";
   const rft::SoilParameters soil = LoadSoil(Path("full.yaml"));
-  EXPECT_EQ(soil.atmosphere, "air");
+  EXPECT_EQ(soil.atmosphere, rft::Atmosphere::kAir);
   EXPECT_DOUBLE_EQ(soil.zeta_N_m3, 2.37e6);
   EXPECT_EQ(soil.reference_gravity_m_s2, 1.62);
   EXPECT_TRUE(soil.dynamic_term);

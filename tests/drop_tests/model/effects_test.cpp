@@ -187,7 +187,7 @@ TEST_P(EveryEffect, PadDropKeepsEnergyBookkeeping) {
   for (const EffectParameterInfo& p : info.parameters) e.values.push_back(p.start != 0.0 ? 3 * p.start : 2 * p.scale);
   drop::DropConditions c;
   c.impact_speed_m_s = 1.2;
-  c.atmosphere = "air";
+  c.atmosphere = rft::Atmosphere::kAir;
   c.effects = MakeEffectTerms({e});
   for (const char* pad_name : {"flat", "curved"}) {
     const drop::PadDrop drop = drop::RunPadDrop(io::LoadPad(pad_name), io::LoadSoil("fjs1_lp"), c);

@@ -62,7 +62,7 @@ class ModelEffects : public ::testing::Test {
   static drop::PadDrop RigDrop(const std::string& path, const std::string& atmosphere = "air", const std::string& pad = "flat") {
     drop::DropConditions c;
     c.impact_speed_m_s = 1.2;
-    c.atmosphere = atmosphere;
+    c.atmosphere = rft::ParseAtmosphere(atmosphere);
     rft::SoilParameters soil = io::LoadSoil("fjs1_lp");
     if (!path.empty()) {
       const ModelFile m = LoadModelFile(path);
@@ -266,7 +266,7 @@ TEST_F(ModelEffects, LanderSoilsCarryTheModelsTerms) {
   s.model = LoadModelFile(Model("gas", "{gas_cushion: {chi: 0.3, c_g_N_s_m3: 5000}}"));
   EXPECT_EQ(scenario::BuildLanderSetup(s).terrain.soils[0].law->name(), "li2013");
   rft::SoilParameters air = io::LoadSoil("fjs1_lp");
-  air.atmosphere = "air";
+  air.atmosphere = rft::Atmosphere::kAir;
   EXPECT_EQ(MakeModelStressLaw3D("li2013", air, 9.81, &*s.model)->name(), "li2013+gas_cushion");
 }
 
@@ -277,7 +277,7 @@ TEST_F(ModelEffects, CompareAppliesTheSensorOffsetToTheSimulatedTraces) {
   spec.name = "offset";
   spec.source = "offset.yaml";
   spec.rest_duration_s = 0.01;
-  for (double v : {0.8, 1.4}) spec.drops.push_back({"flat", "fjs1_lp", "vacuum", v, std::nullopt, 9.81, 0});
+  for (double v : {0.8, 1.4}) spec.drops.push_back({"flat", "fjs1_lp", rft::Atmosphere::kVacuum, v, std::nullopt, 9.81, 0});
   spec.noise = dataset::SynthNoise{0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
   spec.hidden_effect = Effect{"sensor_offset", {0.001, 0.004}};
   dataset::Dataset measured = dataset::Synthesize(spec);
@@ -308,7 +308,7 @@ TEST_F(ModelEffects, DiagnosedModelFileRoundTripsThroughDropAndCompare) {
   spec.source = "roundtrip.yaml";
   spec.seed = 5;
   spec.rest_duration_s = 0.008;
-  for (const char* atm : {"air", "vacuum"})
+  for (rft::Atmosphere atm : {rft::Atmosphere::kAir, rft::Atmosphere::kVacuum})
     for (double v : {0.8, 1.2, 1.6}) spec.drops.push_back({"flat", "fjs1_lp", atm, v, std::nullopt, 9.81, 0});
   spec.noise = dataset::SynthNoise{0.5, 1e-5, 1.0, 2e-5, 0.1, 5e-6};
   spec.hidden_effect = Effect{"rate_damping", {15000.0}};

@@ -1,0 +1,48 @@
+#pragma once
+// The one place a drop is made from a pad, a soil and the drop's conditions: the soil as the
+// drop sees it (zeta override, atmosphere), zeta scaled to the drop's gravity, the rig's 2D law,
+// the rig's soil response with the model's effect terms, the free pad's 3D law. SimulateDrop
+// (pad_drop.h) runs whole drops from these; calibrate, diagnose and synth, which need the rig's
+// pieces (a regressor, a fitted zeta, a hidden effect around the response), take them from here
+// too, so every drop of every command is built alike.
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "drop_tests/io/catalog.h"
+#include "drop_tests/model/effects.h"
+#include "footpad_geom/axisymmetric_intrusion.h"
+#include "rft/soil.h"
+#include "rft/stress_law_3d.h"
+
+namespace touchdown::drop {
+
+// The soil as a drop runs on it: zeta replaced by `zeta_N_m3` (stated, like a catalogue zeta, at
+// the soil's reference gravity) and the atmosphere by `atmosphere`, where given.
+rft::SoilParameters DropSoil(const rft::SoilParameters& soil, const std::optional<double>& zeta_N_m3,
+                             const std::optional<rft::Atmosphere>& atmosphere);
+
+// zeta at the drop's gravity [N/m^3] (RFT stresses scale with rho g z: linear in gravity from
+// the soil's reference gravity), before any gas cushion.
+double ZetaAtGravity(const rft::SoilParameters& drop_soil, double gravity_m_s2);
+
+// The rig's profile integral of an axisymmetric pad, under the rig's 2D law. Li 2013 is the only
+// 2D law (rft/stress_law.h), and a soil names only its 3D law (rft_law_3d), so the rig uses Li
+// 2013 on every soil: it is chosen here and nowhere else. (The integral is per pad, not per soil,
+// as long as that holds.)
+std::unique_ptr<geom::AxisymmetricIntrusion> MakeRigIntrusion(const geom::AxisymmetricProfile& profile);
+
+// The rig's vertical soil response for a pad's integral on `drop_soil` (DropSoil) at the drop's
+// gravity, with the effect terms in their rig form (gas cushion only in air). Throws InputError
+// if an effect needs the bulk density and the soil has none.
+model::EffectSoilResponse MakeRigResponse(const geom::AxisymmetricIntrusion& intrusion,
+                                          const rft::SoilParameters& drop_soil, double gravity_m_s2,
+                                          const model::EffectTerms& terms);
+
+// The free pad's 3D law: `law_3d`, or the soil's rft_law_3d when empty, on `drop_soil` at the
+// drop's gravity, with the effect terms as 3D decorators (model::MakeEffectLaw3D).
+std::unique_ptr<rft::StressLaw3D> MakeFreeLaw(const rft::SoilParameters& drop_soil, const std::string& law_3d,
+                                              double gravity_m_s2, const model::EffectTerms& terms,
+                                              const std::string& effects_source);
+
+}  // namespace touchdown::drop

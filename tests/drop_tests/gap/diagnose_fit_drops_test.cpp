@@ -1,0 +1,55 @@
+// diagnose's fitter builds its drops with the drop factory (drop_tests/drop/drop_factory.h): what
+// it simulates for a dataset drop under a fitted model is, bit for bit, what SimulateDrop's drop
+// of the same pad, soil, atmosphere, zeta override and effects records.
+#include "drop_tests/gap/diagnose_fit.h"
+
+#include <gtest/gtest.h>
+
+#include "drop_tests/dataset/synth.h"
+#include "drop_tests/drop/pad_drop.h"
+
+namespace touchdown::gap {
+namespace {
+
+TEST(DiagnoseFitDrops, SimulatedRecordIsTheFactorysDrop) {
+  dataset::SynthSpec spec;
+  spec.name = "fit_drops";
+  spec.source = "fit_drops.yaml";
+  spec.rest_duration_s = 0.008;
+  spec.drops.push_back({"curved", "fjs1_lp", rft::Atmosphere::kAir, 1.2, 1.9, 1.62, 0});
+  dataset::Dataset ds = dataset::Synthesize(spec);
+  ds.directory = "in-memory";
+  const FitProblem p = MakeFitProblem(ds, {false}, 1);
+  ASSERT_EQ(p.drops.size(), 1u);
+  const FitDrop& d = p.drops[0];
+
+  FitResult model;
+  model.zeta_N_m3 = {2.3e6};
+  model::Effect damping{"rate_damping", {}};
+  for (const model::EffectParameterInfo& q : model::FindEffect("rate_damping").parameters)
+    damping.values.push_back(2 * q.start + q.scale);
+  model.effects = {damping};
+  const std::optional<dataset::DatasetTrace> fitted = SimulateRecorded(p, d, model);
+  ASSERT_TRUE(fitted.has_value());
+
+  drop::DropConditions c;
+  c.impact_speed_m_s = 1.2;
+  c.mass_kg = 1.9;
+  c.gravity_m_s2 = 1.62;
+  c.zeta_N_m3 = 2.3e6;
+  c.atmosphere = rft::Atmosphere::kAir;
+  c.effects = model.terms();
+  drop::DropRunOptions options;
+  options.rig = p.rig;
+  const drop::PadDrop drop = drop::SimulateDrop(io::LoadPad("curved"), io::LoadSoil("fjs1_lp"), c, options);
+  const dataset::DatasetTrace& tr = ds.drops[0].trace;
+  ASSERT_EQ(fitted->size(), tr.size());
+  for (size_t i = 0; i < tr.size(); ++i) {
+    const model::RecordedSample r = model::RecordedAt(drop.result, 1.62, c.effects, tr.t_s[i]);
+    ASSERT_EQ(fitted->force_N[i], r.force_N) << i;
+    ASSERT_EQ(fitted->penetration_m[i], r.penetration_m) << i;
+  }
+}
+
+}  // namespace
+}  // namespace touchdown::gap
