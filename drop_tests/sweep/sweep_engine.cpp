@@ -53,8 +53,6 @@ void DropEngine::Stop() {
   ready_.notify_all();
 }
 
-size_t DropEngine::queued() { return pool_.queued(); }
-
 bool DropEngine::Hungry(size_t low) {
   std::lock_guard<std::mutex> lock(mutex_);
   return !closed_ && !stopped_ && pool_.queued() < low;

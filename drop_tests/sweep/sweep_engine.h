@@ -26,20 +26,12 @@ class DropEngine {
   DropEngine(const DropEngine&) = delete;
   DropEngine& operator=(const DropEngine&) = delete;
 
-  // Queues more drop indices; CloseInput says no more will come.
-  void Add(const std::vector<int64_t>& indices);
-  void CloseInput();
   // While the input is open and fewer than `low` indices are queued, queues next()'s chunk; an
   // empty chunk closes the input.
   void Feed(size_t low, const std::function<std::vector<int64_t>()>& next);
   // Stops early: each worker finishes the drop it is running, queued drops are dropped. The
   // records of the finished ones are still handed out by Take.
   void Stop();
-  // Indices queued and not yet started.
-  size_t queued();
-  // True while the input is open and fewer than `low` indices are queued: time to Add.
-  bool Hungry(size_t low);
-
   // Waits until `max` records are ready, every drop given is done (input closed or stopped),
   // fewer than `hungry_below` indices are queued while the input is open, `*interrupt` becomes
   // non-zero, or `timeout_s` passes; returns what is ready (at most `max`).
@@ -50,6 +42,11 @@ class DropEngine {
   bool Finished();
 
  private:
+  // Queues more drop indices; CloseInput says no more will come.
+  void Add(const std::vector<int64_t>& indices);
+  void CloseInput();
+  // True while the input is open and fewer than `low` indices are queued: time to Add.
+  bool Hungry(size_t low);
   void Run(int64_t index);
   bool IdleLocked() const;  // mutex_ held: input over and every started drop computed
   const SweepModels& models_;

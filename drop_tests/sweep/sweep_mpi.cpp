@@ -29,13 +29,10 @@ bool LaunchedByMpirun() {
 }
 
 #ifndef TOUCHDOWN_HAVE_MPI
-bool MpiSupported() { return false; }
 SweepRunSummary RunSweepMpi(const SweepPlan&, const std::string&, const SweepRunOptions&, int*) {
   throw MakeInputError("", "mpirun", "this touchdown was built without MPI (TOUCHDOWN_WITH_MPI=OFF)");
 }
 #else
-bool MpiSupported() { return true; }
-
 namespace {
 constexpr int kTagResults = 1;  // rank -> 0: serialised records
 constexpr int kTagDone = 2;     // rank -> 0: no more results; payload: the stop signal (int), or empty
