@@ -4,6 +4,8 @@
 #include <memory>
 #include <thread>
 
+#include <nlohmann/json.hpp>
+
 #include "apps/commands.h"
 #include "drop_tests/io/output_path.h"
 #include "drop_tests/gap/diagnose.h"

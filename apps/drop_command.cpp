@@ -3,7 +3,6 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
-#include <numbers>
 #include <sstream>
 
 #include "apps/commands.h"

@@ -1,7 +1,12 @@
 #!/usr/bin/env bash
 # Configures and builds touchdown (Release) into build/ at the repository root.
+#   bash tools/build.sh            the `touchdown` executable only (what tools/run_main.sh needs)
+#   bash tools/build.sh all        every target: tests, benchmarks, tools (tools/run_tests.sh)
+#   bash tools/build.sh T1 T2 ...  the named targets
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
+targets=("$@")
+[ ${#targets[@]} -gt 0 ] || targets=(touchdown)
 bash "$root/tools/install_deps.sh"
 cmake -S "$root" -B "$root/build" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build "$root/build" --parallel "$(nproc)"
+cmake --build "$root/build" --parallel "$(nproc)" --target "${targets[@]}"

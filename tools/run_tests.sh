@@ -2,6 +2,6 @@
 # The whole test suite: install dependencies, build, run every GoogleTest case through CTest.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-bash "$root/tools/build.sh"
+bash "$root/tools/build.sh" all
 cd "$root/build"
 ctest --output-on-failure --parallel "$(nproc)" --timeout 600

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <chrono>
 #include <functional>
-#include <thread>
 #include <cmath>
 #include <iomanip>
 #include <map>
@@ -11,6 +10,7 @@
 #include <random>
 #include <sstream>
 
+#include "drop_tests/io/work_pool.h"
 #include "rft/input_error.h"
 
 namespace touchdown::gap {
@@ -117,13 +117,8 @@ GapSummary HeldOutSummary(const std::vector<DropGap>& gaps) {
 
 std::vector<DropGap> AllGaps(const Diagnosis& d, const FitResult& model, const dataset::Dataset& ds, int threads) {
   std::vector<DropGap> gaps(d.problem.drops.size());
-  std::vector<std::thread> pool;
-  threads = std::max(1, threads);
-  for (int t = 0; t < threads; ++t)
-    pool.emplace_back([&, t] {
-      for (size_t i = t; i < gaps.size(); i += threads) gaps[i] = ComputeGap(d.problem, d.problem.drops[i], model, ds);
-    });
-  for (std::thread& th : pool) th.join();
+  io::ParallelFor(gaps.size(), threads,
+                  [&](size_t i) { gaps[i] = ComputeGap(d.problem, d.problem.drops[i], model, ds); });
   return gaps;
 }
 

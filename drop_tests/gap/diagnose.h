@@ -28,7 +28,7 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include "drop_tests/dataset/compare.h"
 #include "drop_tests/gap/diagnose_fit.h"

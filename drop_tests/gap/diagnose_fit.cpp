@@ -4,13 +4,12 @@
 #include <numeric>
 #include <cmath>
 #include <map>
-#include <mutex>
-#include <thread>
 
 #include <Eigen/Dense>
 
 #include "drop_tests/drop/drop_factory.h"
 #include "drop_tests/io/student_t.h"
+#include "drop_tests/io/work_pool.h"
 #include "rft/input_error.h"
 #include "rft/units.h"
 
@@ -89,29 +88,6 @@ std::optional<dataset::DatasetTrace> Recorded(const FitProblem& p, const FitDrop
   }
 }
 
-template <typename F>
-void ParallelFor(int n, int threads, F&& body) {
-  threads = std::max(1, std::min(threads, n));
-  if (threads == 1) {
-    for (int i = 0; i < n; ++i) body(i);
-    return;
-  }
-  std::vector<std::thread> pool;
-  std::exception_ptr error;
-  std::mutex mutex;
-  for (int t = 0; t < threads; ++t)
-    pool.emplace_back([&, t] {
-      try {
-        for (int i = t; i < n; i += threads) body(i);
-      } catch (...) {
-        std::lock_guard<std::mutex> lock(mutex);
-        if (!error) error = std::current_exception();
-      }
-    });
-  for (std::thread& th : pool) th.join();
-  if (error) std::rethrow_exception(error);
-}
-
 class Objective {
  public:
   Objective(const FitProblem& p, const Layout& L) : p_(p), L_(L) {
@@ -133,7 +109,7 @@ class Objective {
     const model::EffectTerms terms = model::MakeEffectTerms(m.effects);
     r->resize(rows_);
     if (unweighted) unweighted->resize(rows_);
-    ParallelFor(static_cast<int>(train_.size()), p_.threads, [&](int k) {
+    io::ParallelFor(train_.size(), p_.threads, [&](size_t k) {
       const FitDrop& d = p_.drops[train_[k]];
       const std::optional<dataset::DatasetTrace> sim = Recorded(p_, d, m, terms);
       const dataset::DatasetTrace& tr = *d.trace;

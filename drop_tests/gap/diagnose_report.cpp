@@ -1,17 +1,20 @@
 // Outputs of `touchdown diagnose`: model.yaml, diagnosis.json, per_drop.csv, report.md, plots.
+#include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <iomanip>
-#include <iostream>
+#include <optional>
+#include <ostream>
 #include <sstream>
+#include <string>
+#include <vector>
 
+#include <nlohmann/json.hpp>
 #include <yaml-cpp/yaml.h>
 
-#include "drop_tests/io/output_path.h"
-#include "drop_tests/io/dataset_csv.h"
 #include "drop_tests/gap/diagnose.h"
+#include "drop_tests/io/dataset_csv.h"
+#include "drop_tests/io/output_path.h"
 #include "drop_tests/io/plot_decimation.h"
 #include "drop_tests/io/plot_runner.h"
 #include "rft/units.h"
@@ -124,6 +127,253 @@ nlohmann::json DiagnosisJson(const Diagnosis& d) {
   return j;
 }
 
+namespace {
+
+// model.yaml: zeta per soil of the named effect's fit (the base's when none is named), with the
+// 95 % intervals and each soil's training residual, and the named effect's fitted terms.
+model::ModelFile DiagnosedModel(const Diagnosis& d, const dataset::Dataset& ds, const CandidateScore& after) {
+  model::ModelFile model;
+  model.name = "diagnosed_" + fs::path(ds.directory).filename().string();
+  model.description = "touchdown diagnose: base quasi-static RFT (zeta per soil, fitted)" +
+                      (d.winner >= 0 ? " plus " + d.named_effect : std::string(" (no effect named)"));
+  for (size_t s = 0; s < d.problem.soils.size(); ++s) {
+    const ParameterEstimate& e = after.fit.estimates[s];
+    model::SoilOverride o;
+    o.zeta_N_m3 = e.value;
+    o.reference_gravity_m_s2 = d.problem.soils[s].reference_gravity_m_s2;
+    o.zeta_low_N_m3 = e.low;
+    o.zeta_high_N_m3 = e.high;
+    model::SoilFit fit;
+    fit.method = "touchdown diagnose: Levenberg-Marquardt on force and penetration against time, training drops; "
+                 "residual_rms_N: force residual over the soil's training samples";
+    fit.drops = 0;
+    for (const FitDrop& f : d.problem.drops) fit.drops += f.train && f.soil == static_cast<int>(s);
+    // The fitted model's own residual on this soil's training drops (force against time, N).
+    fit.samples = after.fit.force_samples[s];
+    fit.residual_rms_N = after.fit.residual_rms_N[s];
+    fit.dataset = ds.directory;
+    o.fit = fit;
+    model.soils[d.problem.soils[s].name] = o;
+  }
+  if (d.winner >= 0) {
+    std::vector<std::vector<std::pair<double, double>>> intervals;
+    size_t k = d.problem.soils.size();
+    for (const model::Effect& e : after.fit.effects) {
+      intervals.emplace_back();
+      for (size_t i = 0; i < e.values.size(); ++i, ++k)
+        intervals.back().emplace_back(after.fit.estimates[k].low, after.fit.estimates[k].high);
+    }
+    model.effects = after.fit.effects;
+    model.effect_intervals = intervals;
+  }
+  YAML::Node provenance(YAML::NodeType::Map);
+  provenance["diagnose"] = d.decision;
+  provenance["intervals"] = "95 %, cluster-robust over training drops (docs/model_gap.md)";
+  model.provenance_yaml = YAML::Dump(provenance);
+  return model;
+}
+
+void WritePerDropCsv(const Diagnosis& d, const dataset::Dataset& ds, const CandidateScore& after,
+                     const fs::path& file) {
+  io::WriteFileAtomically(file.string(), [&](std::ostream& out) {
+    out << "drop_id,held_out,pad,soil,atmosphere,impact_speed_m_s,force_nrmse_before,force_nrmse_after,"
+           "final_penetration_rel_error_before,final_penetration_rel_error_after,noise_floor_nrmse\n";
+    for (size_t i = 0; i < d.problem.drops.size(); ++i) {
+      const dataset::DatasetDrop& m = ds.drops[d.problem.drops[i].dataset_index];
+      out << m.drop_id << ',' << (d.problem.drops[i].train ? 0 : 1) << ',' << m.pad << ',' << m.soil << ','
+          << rft::AtmosphereName(m.atmosphere) << ',' << io::FormatNumber(m.impact_speed_m_s) << ',' << io::FormatNumber(d.base.gaps[i].force_nrmse)
+          << ',' << io::FormatNumber(after.gaps[i].force_nrmse) << ','
+          << io::FormatNumber(d.base.gaps[i].final_penetration_rel_error) << ','
+          << io::FormatNumber(after.gaps[i].final_penetration_rel_error) << ',' << io::FormatNumber(d.base.gaps[i].noise_nrmse)
+          << '\n';
+    }
+  });
+}
+
+// The held-out drops with the largest base gap (up to 6): the ones the overlays show.
+std::vector<size_t> OverlaidDrops(const Diagnosis& d) {
+  std::vector<size_t> held;
+  for (size_t i = 0; i < d.problem.drops.size(); ++i)
+    if (!d.problem.drops[i].train) held.push_back(i);
+  std::sort(held.begin(), held.end(), [&](size_t a, size_t b) { return d.base.gaps[a].force_nrmse > d.base.gaps[b].force_nrmse; });
+  if (held.size() > 6) held.resize(6);
+  return held;
+}
+
+// data/<drop>.csv of each overlaid drop: measured, base and `shown` traces, decimated.
+void WriteOverlayData(const Diagnosis& d, const dataset::Dataset& ds, const CandidateScore* shown,
+                      const std::vector<size_t>& held, const fs::path& dir) {
+  for (size_t i : held) {
+    const FitDrop& f = d.problem.drops[i];
+    const dataset::DatasetDrop& m = ds.drops[f.dataset_index];
+    const std::optional<dataset::DatasetTrace> b = SimulateRecorded(d.problem, f, d.base.fit);
+    const std::optional<dataset::DatasetTrace> a = shown ? SimulateRecorded(d.problem, f, shown->fit) : b;
+    // Decimated (plot_decimation.h) on the six plotted columns: a long trace plots from a few
+    // thousand rows.
+    const auto plotted = [&](size_t k, size_t column) {
+      const std::optional<dataset::DatasetTrace>& sim = column % 3 == 1 ? b : a;
+      if (column % 3 == 0) return column == 0 ? m.trace.force_N[k] : m.trace.penetration_m[k];
+      if (!sim) return std::nan("");
+      return column < 3 ? sim->force_N[k] : sim->penetration_m[k];
+    };
+    io::WriteFileAtomically((dir / "data" / (m.drop_id + ".csv")).string(), [&](std::ostream& out) {
+      out << "t_s,force_measured_N,force_base_N,force_augmented_N,penetration_measured_m,penetration_base_m,"
+             "penetration_augmented_m\n";
+      for (const size_t k : io::PlotRowsToKeep(m.trace.size(), 6, plotted))
+        out << io::FormatNumber(m.trace.t_s[k]) << ',' << io::FormatNumber(m.trace.force_N[k]) << ','
+            << (b ? io::FormatNumber(b->force_N[k]) : "nan") << ',' << (a ? io::FormatNumber(a->force_N[k]) : "nan") << ','
+            << io::FormatNumber(m.trace.penetration_m[k]) << ',' << (b ? io::FormatNumber(b->penetration_m[k]) : "nan") << ','
+            << (a ? io::FormatNumber(a->penetration_m[k]) : "nan") << '\n';
+    });
+  }
+}
+
+// data/residuals_held_out.csv: the force residual of every held-out drop, base and `shown`, one
+// block per drop. False when no held-out drop could be simulated.
+bool WriteResiduals(const Diagnosis& d, const dataset::Dataset& ds, const CandidateScore* shown, const fs::path& dir) {
+  std::ostringstream residual_rows;
+  for (size_t i = 0; i < d.problem.drops.size(); ++i) {
+    const FitDrop& f = d.problem.drops[i];
+    if (f.train) continue;
+    const dataset::DatasetDrop& m = ds.drops[f.dataset_index];
+    const std::optional<dataset::DatasetTrace> b = SimulateRecorded(d.problem, f, d.base.fit);
+    const std::optional<dataset::DatasetTrace> a = shown ? SimulateRecorded(d.problem, f, shown->fit) : b;
+    if (!a || !b) continue;
+    const auto residual = [&](size_t k, size_t column) {
+      return ((column == 0 ? *b : *a).force_N[k] - m.trace.force_N[k]) / f.force_scale_N;
+    };
+    for (const size_t k : io::PlotRowsToKeep(m.trace.size(), 2, residual))
+      residual_rows << io::FormatNumber(m.trace.t_s[k]) << ',' << io::FormatNumber((b->force_N[k] - m.trace.force_N[k]) / f.force_scale_N)
+                    << ',' << io::FormatNumber((a->force_N[k] - m.trace.force_N[k]) / f.force_scale_N) << ','
+                    << rft::AtmosphereName(m.atmosphere) << '\n';
+    residual_rows << '\n';
+  }
+  io::WriteFileAtomically((dir / "data" / "residuals_held_out.csv").string(), [&](std::ostream& out) {
+    out << "t_s,residual_base,residual_augmented,atmosphere\n" << residual_rows.str();
+  });
+  return !residual_rows.str().empty();
+}
+
+// plots/diagnose.gp: overlays (force against time and against penetration), residuals, gap per drop.
+std::string DiagnosisPlotScript(const Diagnosis& d, const dataset::Dataset& ds, const std::vector<size_t>& held,
+                                const std::string& aug_title, bool residuals) {
+  std::ostringstream gp;
+  gp << "set terminal pngcairo size 1200,800 font 'sans,10'\nset termoption noenhanced\nset datafile separator ','\n"
+     << "set grid\nset key top right\n";
+  gp << "set output 'plots/overlays_force_time.png'\nset multiplot layout 2,3 title "
+     << io::GnuplotQuote("Held-out drops: measured, base and " + aug_title + " (force against time)") << "\n";
+  for (size_t i : held) {
+    const std::string id = ds.drops[d.problem.drops[i].dataset_index].drop_id;
+    gp << "set title " << io::GnuplotQuote(id) << "\nset xlabel 't [ms]'\nset ylabel 'force [N]'\n"
+       << "plot " << io::GnuplotQuote("data/" + id + ".csv") << " using ($1*1000):2 with points pt 7 ps 0.3 lc rgb 'gray50' title 'measured', "
+       << "'' using ($1*1000):3 with lines lw 2 lc rgb 'blue' title 'base', '' using ($1*1000):4 with lines lw 2 "
+          "lc rgb 'red' title 'augmented'\n";
+  }
+  gp << "unset multiplot\n";
+  gp << "set output 'plots/overlays_force_penetration.png'\nset multiplot layout 2,3 title 'Held-out drops: force against "
+        "penetration'\n";
+  for (size_t i : held) {
+    const std::string id = ds.drops[d.problem.drops[i].dataset_index].drop_id;
+    gp << "set title " << io::GnuplotQuote(id) << "\nset xlabel 'penetration [mm]'\nset ylabel 'force [N]'\n"
+       << "plot " << io::GnuplotQuote("data/" + id + ".csv") << " using ($5*1000):2 with points pt 7 ps 0.3 lc rgb 'gray50' title 'measured', "
+       << "'' using ($6*1000):3 with lines lw 2 lc rgb 'blue' title 'base', '' using ($7*1000):4 with lines lw 2 "
+          "lc rgb 'red' title 'augmented'\n";
+  }
+  gp << "unset multiplot\n";
+  // No held-out drop simulated: the residual panels say so (a plot of no data is a gnuplot error).
+  const std::string no_residuals = io::PlaceholderPlot("no held-out drop could be simulated");
+  gp << "set output 'plots/residuals.png'\nset multiplot layout 1,2 title 'Held-out force residual (simulated - measured) "
+        "/ measured peak'\nset xlabel 't [ms]'\nset ylabel 'normalised residual'\n"
+     << "set title 'base'\n"
+     << (residuals ? "plot 'data/residuals_held_out.csv' using ($1*1000):2 with lines lc rgb 'blue' notitle\n"
+                   : no_residuals)
+     << "set title " << io::GnuplotQuote(aug_title) << "\n"
+     << (residuals ? "plot 'data/residuals_held_out.csv' using ($1*1000):3 with lines lc rgb 'red' notitle\n"
+                   : no_residuals)
+     << "unset multiplot\n";
+  gp << "set output 'plots/gap_per_drop.png'\nset style data histograms\nset style histogram clustered\nset style fill "
+        "solid 0.8\nset xtics rotate by -45\nset ylabel 'force NRMSE'\nset title 'Force NRMSE per drop, before and after'\n"
+     << "plot 'per_drop.csv' using 7:xtic(1) title 'base', '' using 8 title 'after'\n";
+  return gp.str();
+}
+
+void WriteReport(const Diagnosis& d, const dataset::Dataset& ds, const CandidateScore& after, const fs::path& file) {
+  io::WriteFileAtomically(file.string(), [&](std::ostream& out) {
+    out << "# Model-gap diagnosis: " << fs::path(ds.directory).filename().string() << "\n\n";
+    if (IsSynthetic(ds))
+      out << "> **The dataset is SYNTHETIC** (made by `touchdown synth`), not measured: this run rehearses the "
+             "workflow on data whose missing effect is known.\n\n";
+    out << "**Named effect: `" << d.named_effect << "`.** " << d.decision << ".\n\n";
+    if (!d.residual_description.empty()) out << d.residual_description << "\n\n";
+    size_t n_train = 0;
+    for (const FitDrop& f : d.problem.drops) n_train += f.train;
+    out << "## 1. Split and calibration\n\n" << d.problem.drops.size() << " drops: " << n_train << " training, "
+        << d.problem.drops.size() - n_train
+        << " held out (per pad/soil/atmosphere cell, ordered by speed then id, ranks 1, 4, 7, ... held out).\n\n"
+        << "| soil | zeta base [N/cm^3] | 95 % interval | zeta with effect [N/cm^3] |\n| --- | --- | --- | --- |\n";
+    for (size_t s = 0; s < d.problem.soils.size(); ++s) {
+      const ParameterEstimate& b = d.base.fit.estimates[s];
+      out << "| " << d.problem.soils[s].name << " | " << Num(units::ZetaToN_cm3(b.value)) << " | [" << Num(units::ZetaToN_cm3(b.low)) << ", "
+          << Num(units::ZetaToN_cm3(b.high)) << "] | " << Num(units::ZetaToN_cm3(after.fit.estimates[s].value)) << " |\n";
+    }
+    out << "\n## 2. The gap and where it is (base model)\n\n"
+        << "Held-out means: force NRMSE " << Num(d.base.held_out.force_nrmse) << " (sensor-noise floor about "
+        << Num(d.base.held_out.noise_nrmse) << "), force NRMSE against penetration "
+        << Num(d.base.held_out.force_nrmse_penetration) << ", |final penetration error| "
+        << Num(100 * d.base.held_out.final_penetration_rel_error, 3) << " %, |peak force error| "
+        << Num(100 * d.base.held_out.peak_force_rel_error, 3) << " %.\n\n"
+        << "| kind | factor | finding | p | significant |\n| --- | --- | --- | --- | --- |\n";
+    for (const Finding& f : d.where)
+      out << "| " << f.kind << " | " << f.factor << " | " << f.summary << " | " << Num(f.p_value, 3) << " | "
+          << (f.significant ? "yes" : "no") << " |\n";
+    out << "\nPermutation tests (" << 2000 << " permutations); significant means p below 0.05 / number of tests "
+           "(Bonferroni).\n\n## 3. Candidates\n\n"
+        << "| effect | parameters (95 % interval) | held-out force NRMSE | reduction | explained | Delta BIC vs base |\n"
+        << "| --- | --- | --- | --- | --- | --- |\n"
+        << "| base | zeta per soil | " << Num(d.base.held_out.force_nrmse) << " | - | - | 0 |\n";
+    for (const CandidateScore& c : d.candidates) {
+      if (!c.applies) {
+        out << "| " << c.name << " | not tried: " << c.why_not << " | | | | |\n";
+        continue;
+      }
+      std::ostringstream params;
+      for (const ParameterEstimate& e : c.fit.estimates)
+        if (!e.effect.empty())
+          params << e.key << " = " << Num(e.value / e.file_to_si) << " [" << Num(e.low / e.file_to_si) << ", "
+                 << Num(e.high / e.file_to_si) << "]; ";
+      out << "| " << c.name << (d.winner >= 0 && &c == &d.candidates[d.winner] ? " **(named)**" : "") << " | "
+          << params.str() << " | " << Num(c.held_out.force_nrmse) << " | " << Num(100 * c.gap_reduction, 3) << " % | "
+          << Num(100 * c.explained, 3) << " % | " << Num(c.delta_bic, 5) << " |\n";
+    }
+    out << "\n## 4. Model\n\n`model.yaml`: the base model's zeta per soil"
+        << (d.winner >= 0 ? " plus `" + d.named_effect + "` with its fitted parameters and 95 % intervals" : "")
+        << ". Intervals are cluster-robust over the training drops.\n\n## 5. Before and after (held-out drops)\n\n"
+        << "| drop | force NRMSE before | after | final penetration error before | after |\n| --- | --- | --- | --- | --- |\n";
+    for (size_t i = 0; i < d.problem.drops.size(); ++i) {
+      if (d.problem.drops[i].train) continue;
+      out << "| " << d.problem.drops[i].drop_id << " | " << Num(d.base.gaps[i].force_nrmse) << " | "
+          << Num(after.gaps[i].force_nrmse) << " | " << Num(100 * d.base.gaps[i].final_penetration_rel_error, 3)
+          << " % | " << Num(100 * after.gaps[i].final_penetration_rel_error, 3) << " % |\n";
+    }
+    out << "| **mean** | " << Num(d.base.held_out.force_nrmse) << " | " << Num(after.held_out.force_nrmse) << " | "
+        << Num(100 * d.base.held_out.final_penetration_rel_error, 3) << " % | "
+        << Num(100 * after.held_out.final_penetration_rel_error, 3) << " % |\n\n";
+    if (!d.where_after.empty()) {
+      out << "After the named effect:\n\n| kind | factor | finding | p | significant |\n| --- | --- | --- | --- | --- |\n";
+      for (const Finding& f : d.where_after)
+        out << "| " << f.kind << " | " << f.factor << " | " << f.summary << " | " << Num(f.p_value, 3) << " | "
+            << (f.significant ? "yes" : "no") << " |\n";
+      out << "\n";
+    }
+    out << "![force against time](plots/overlays_force_time.png)\n\n![force against penetration]"
+           "(plots/overlays_force_penetration.png)\n\n![residuals](plots/residuals.png)\n\n![gap per drop]"
+           "(plots/gap_per_drop.png)\n\n";
+    out << "Run: " << d.simulations << " simulated drops in " << Num(d.seconds, 3) << " s.\n";
+  });
+}
+
+}  // namespace
+
 void WriteDiagnosis(const Diagnosis& d, const dataset::Dataset& ds, const io::OutputTarget& out) {
   const CandidateScore* shown = Shown(d);
   const CandidateScore& after = d.winner >= 0 ? d.candidates[d.winner] : d.base;
@@ -131,231 +381,18 @@ void WriteDiagnosis(const Diagnosis& d, const dataset::Dataset& ds, const io::Ou
     const fs::path dir = staging;
     fs::create_directories(dir / "data");
     fs::create_directories(dir / "plots");
-    // 4: the model file.
-    model::ModelFile model;
-    model.name = "diagnosed_" + fs::path(ds.directory).filename().string();
-    model.description = "touchdown diagnose: base quasi-static RFT (zeta per soil, fitted)" +
-                        (d.winner >= 0 ? " plus " + d.named_effect : std::string(" (no effect named)"));
-    for (size_t s = 0; s < d.problem.soils.size(); ++s) {
-      const ParameterEstimate& e = after.fit.estimates[s];
-      model::SoilOverride o;
-      o.zeta_N_m3 = e.value;
-      o.reference_gravity_m_s2 = d.problem.soils[s].reference_gravity_m_s2;
-      o.zeta_low_N_m3 = e.low;
-      o.zeta_high_N_m3 = e.high;
-      model::SoilFit fit;
-      fit.method = "touchdown diagnose: Levenberg-Marquardt on force and penetration against time, training drops; "
-                   "residual_rms_N: force residual over the soil's training samples";
-      fit.drops = 0;
-      for (const FitDrop& f : d.problem.drops) fit.drops += f.train && f.soil == static_cast<int>(s);
-      // The fitted model's own residual on this soil's training drops (force against time, N).
-      fit.samples = after.fit.force_samples[s];
-      fit.residual_rms_N = after.fit.residual_rms_N[s];
-      fit.dataset = ds.directory;
-      o.fit = fit;
-      model.soils[d.problem.soils[s].name] = o;
-    }
-    if (d.winner >= 0) {
-      std::vector<std::vector<std::pair<double, double>>> intervals;
-      size_t k = d.problem.soils.size();
-      for (const model::Effect& e : after.fit.effects) {
-        intervals.emplace_back();
-        for (size_t i = 0; i < e.values.size(); ++i, ++k)
-          intervals.back().emplace_back(after.fit.estimates[k].low, after.fit.estimates[k].high);
-      }
-      model.effects = after.fit.effects;
-      model.effect_intervals = intervals;
-    }
-    YAML::Node provenance(YAML::NodeType::Map);
-    provenance["diagnose"] = d.decision;
-    provenance["intervals"] = "95 %, cluster-robust over training drops (docs/model_gap.md)";
-    model.provenance_yaml = YAML::Dump(provenance);
-    model::WriteModelFile(model, (dir / "model.yaml").string(), out.path);
-
+    model::WriteModelFile(DiagnosedModel(d, ds, after), (dir / "model.yaml").string(), out.path);
     io::WriteFileAtomically((dir / "diagnosis.json").string(), [&](std::ostream& out) { out << DiagnosisJson(d).dump(2) << '\n'; });
-
-    // Per drop, before and after.
-    io::WriteFileAtomically((dir / "per_drop.csv").string(), [&](std::ostream& out) {
-      out << "drop_id,held_out,pad,soil,atmosphere,impact_speed_m_s,force_nrmse_before,force_nrmse_after,"
-             "final_penetration_rel_error_before,final_penetration_rel_error_after,noise_floor_nrmse\n";
-      for (size_t i = 0; i < d.problem.drops.size(); ++i) {
-        const dataset::DatasetDrop& m = ds.drops[d.problem.drops[i].dataset_index];
-        out << m.drop_id << ',' << (d.problem.drops[i].train ? 0 : 1) << ',' << m.pad << ',' << m.soil << ','
-            << rft::AtmosphereName(m.atmosphere) << ',' << io::FormatNumber(m.impact_speed_m_s) << ',' << io::FormatNumber(d.base.gaps[i].force_nrmse)
-            << ',' << io::FormatNumber(after.gaps[i].force_nrmse) << ','
-            << io::FormatNumber(d.base.gaps[i].final_penetration_rel_error) << ','
-            << io::FormatNumber(after.gaps[i].final_penetration_rel_error) << ',' << io::FormatNumber(d.base.gaps[i].noise_nrmse)
-            << '\n';
-      }
-    });
-
-    // Plot data: overlays of the held-out drops with the largest base gap (up to 6), residuals.
-    std::vector<size_t> held;
-    for (size_t i = 0; i < d.problem.drops.size(); ++i)
-      if (!d.problem.drops[i].train) held.push_back(i);
-    std::sort(held.begin(), held.end(), [&](size_t a, size_t b) { return d.base.gaps[a].force_nrmse > d.base.gaps[b].force_nrmse; });
-    if (held.size() > 6) held.resize(6);
-    std::ostringstream residual_rows;
-    for (size_t i : held) {
-      const FitDrop& f = d.problem.drops[i];
-      const dataset::DatasetDrop& m = ds.drops[f.dataset_index];
-      const std::optional<dataset::DatasetTrace> b = SimulateRecorded(d.problem, f, d.base.fit);
-      const std::optional<dataset::DatasetTrace> a = shown ? SimulateRecorded(d.problem, f, shown->fit) : b;
-      // Decimated (plot_decimation.h) on the six plotted columns: a long trace plots from a few
-      // thousand rows.
-      const auto plotted = [&](size_t k, size_t column) {
-        const std::optional<dataset::DatasetTrace>& sim = column % 3 == 1 ? b : a;
-        if (column % 3 == 0) return column == 0 ? m.trace.force_N[k] : m.trace.penetration_m[k];
-        if (!sim) return std::nan("");
-        return column < 3 ? sim->force_N[k] : sim->penetration_m[k];
-      };
-      io::WriteFileAtomically((dir / "data" / (m.drop_id + ".csv")).string(), [&](std::ostream& out) {
-        out << "t_s,force_measured_N,force_base_N,force_augmented_N,penetration_measured_m,penetration_base_m,"
-               "penetration_augmented_m\n";
-        for (const size_t k : io::PlotRowsToKeep(m.trace.size(), 6, plotted))
-          out << io::FormatNumber(m.trace.t_s[k]) << ',' << io::FormatNumber(m.trace.force_N[k]) << ','
-              << (b ? io::FormatNumber(b->force_N[k]) : "nan") << ',' << (a ? io::FormatNumber(a->force_N[k]) : "nan") << ','
-              << io::FormatNumber(m.trace.penetration_m[k]) << ',' << (b ? io::FormatNumber(b->penetration_m[k]) : "nan") << ','
-              << (a ? io::FormatNumber(a->penetration_m[k]) : "nan") << '\n';
-      });
-    }
-    for (size_t i = 0; i < d.problem.drops.size(); ++i) {
-      const FitDrop& f = d.problem.drops[i];
-      if (f.train) continue;
-      const dataset::DatasetDrop& m = ds.drops[f.dataset_index];
-      const std::optional<dataset::DatasetTrace> b = SimulateRecorded(d.problem, f, d.base.fit);
-      const std::optional<dataset::DatasetTrace> a = shown ? SimulateRecorded(d.problem, f, shown->fit) : b;
-      if (!a || !b) continue;
-      const auto residual = [&](size_t k, size_t column) {
-        return ((column == 0 ? *b : *a).force_N[k] - m.trace.force_N[k]) / f.force_scale_N;
-      };
-      for (const size_t k : io::PlotRowsToKeep(m.trace.size(), 2, residual))
-        residual_rows << io::FormatNumber(m.trace.t_s[k]) << ',' << io::FormatNumber((b->force_N[k] - m.trace.force_N[k]) / f.force_scale_N)
-                      << ',' << io::FormatNumber((a->force_N[k] - m.trace.force_N[k]) / f.force_scale_N) << ','
-                      << rft::AtmosphereName(m.atmosphere) << '\n';
-      residual_rows << '\n';
-    }
-    io::WriteFileAtomically((dir / "data" / "residuals_held_out.csv").string(), [&](std::ostream& out) {
-      out << "t_s,residual_base,residual_augmented,atmosphere\n" << residual_rows.str();
-    });
-
+    WritePerDropCsv(d, ds, after, dir / "per_drop.csv");
+    const std::vector<size_t> held = OverlaidDrops(d);
+    WriteOverlayData(d, ds, shown, held, dir);
+    const bool residuals = WriteResiduals(d, ds, shown, dir);
     const std::string aug_title = shown ? (d.winner >= 0 ? "base + " + shown->name : "best candidate " + shown->name + " (not named)")
                                         : std::string("base");
-    std::ostringstream gp;
-    gp << "set terminal pngcairo size 1200,800 font 'sans,10'\nset termoption noenhanced\nset datafile separator ','\n"
-       << "set grid\nset key top right\n";
-    gp << "set output 'plots/overlays_force_time.png'\nset multiplot layout 2,3 title "
-       << io::GnuplotQuote("Held-out drops: measured, base and " + aug_title + " (force against time)") << "\n";
-    for (size_t i : held) {
-      const std::string id = ds.drops[d.problem.drops[i].dataset_index].drop_id;
-      gp << "set title " << io::GnuplotQuote(id) << "\nset xlabel 't [ms]'\nset ylabel 'force [N]'\n"
-         << "plot " << io::GnuplotQuote("data/" + id + ".csv") << " using ($1*1000):2 with points pt 7 ps 0.3 lc rgb 'gray50' title 'measured', "
-         << "'' using ($1*1000):3 with lines lw 2 lc rgb 'blue' title 'base', '' using ($1*1000):4 with lines lw 2 "
-            "lc rgb 'red' title 'augmented'\n";
-    }
-    gp << "unset multiplot\n";
-    gp << "set output 'plots/overlays_force_penetration.png'\nset multiplot layout 2,3 title 'Held-out drops: force against "
-          "penetration'\n";
-    for (size_t i : held) {
-      const std::string id = ds.drops[d.problem.drops[i].dataset_index].drop_id;
-      gp << "set title " << io::GnuplotQuote(id) << "\nset xlabel 'penetration [mm]'\nset ylabel 'force [N]'\n"
-         << "plot " << io::GnuplotQuote("data/" + id + ".csv") << " using ($5*1000):2 with points pt 7 ps 0.3 lc rgb 'gray50' title 'measured', "
-         << "'' using ($6*1000):3 with lines lw 2 lc rgb 'blue' title 'base', '' using ($7*1000):4 with lines lw 2 "
-            "lc rgb 'red' title 'augmented'\n";
-    }
-    gp << "unset multiplot\n";
-    // No held-out drop simulated: the residual panels say so (a plot of no data is a gnuplot error).
-    const bool residuals = !residual_rows.str().empty();
-    const std::string no_residuals = io::PlaceholderPlot("no held-out drop could be simulated");
-    gp << "set output 'plots/residuals.png'\nset multiplot layout 1,2 title 'Held-out force residual (simulated - measured) "
-          "/ measured peak'\nset xlabel 't [ms]'\nset ylabel 'normalised residual'\n"
-       << "set title 'base'\n"
-       << (residuals ? "plot 'data/residuals_held_out.csv' using ($1*1000):2 with lines lc rgb 'blue' notitle\n"
-                     : no_residuals)
-       << "set title " << io::GnuplotQuote(aug_title) << "\n"
-       << (residuals ? "plot 'data/residuals_held_out.csv' using ($1*1000):3 with lines lc rgb 'red' notitle\n"
-                     : no_residuals)
-       << "unset multiplot\n";
-    gp << "set output 'plots/gap_per_drop.png'\nset style data histograms\nset style histogram clustered\nset style fill "
-          "solid 0.8\nset xtics rotate by -45\nset ylabel 'force NRMSE'\nset title 'Force NRMSE per drop, before and after'\n"
-       << "plot 'per_drop.csv' using 7:xtic(1) title 'base', '' using 8 title 'after'\n";
-    io::RenderPlots(dir, {"plots/diagnose.gp", gp.str(),
+    io::RenderPlots(dir, {"plots/diagnose.gp", DiagnosisPlotScript(d, ds, held, aug_title, residuals),
                       {"plots/overlays_force_time.png", "plots/overlays_force_penetration.png", "plots/residuals.png",
                        "plots/gap_per_drop.png"}});
-
-    // 5: the report.
-    io::WriteFileAtomically((dir / "report.md").string(), [&](std::ostream& out) {
-      out << "# Model-gap diagnosis: " << fs::path(ds.directory).filename().string() << "\n\n";
-      if (IsSynthetic(ds))
-        out << "> **The dataset is SYNTHETIC** (made by `touchdown synth`), not measured: this run rehearses the "
-               "workflow on data whose missing effect is known.\n\n";
-      out << "**Named effect: `" << d.named_effect << "`.** " << d.decision << ".\n\n";
-      if (!d.residual_description.empty()) out << d.residual_description << "\n\n";
-      size_t n_train = 0;
-      for (const FitDrop& f : d.problem.drops) n_train += f.train;
-      out << "## 1. Split and calibration\n\n" << d.problem.drops.size() << " drops: " << n_train << " training, "
-          << d.problem.drops.size() - n_train
-          << " held out (per pad/soil/atmosphere cell, ordered by speed then id, ranks 1, 4, 7, ... held out).\n\n"
-          << "| soil | zeta base [N/cm^3] | 95 % interval | zeta with effect [N/cm^3] |\n| --- | --- | --- | --- |\n";
-      for (size_t s = 0; s < d.problem.soils.size(); ++s) {
-        const ParameterEstimate& b = d.base.fit.estimates[s];
-        out << "| " << d.problem.soils[s].name << " | " << Num(units::ZetaToN_cm3(b.value)) << " | [" << Num(units::ZetaToN_cm3(b.low)) << ", "
-            << Num(units::ZetaToN_cm3(b.high)) << "] | " << Num(units::ZetaToN_cm3(after.fit.estimates[s].value)) << " |\n";
-      }
-      out << "\n## 2. The gap and where it is (base model)\n\n"
-          << "Held-out means: force NRMSE " << Num(d.base.held_out.force_nrmse) << " (sensor-noise floor about "
-          << Num(d.base.held_out.noise_nrmse) << "), force NRMSE against penetration "
-          << Num(d.base.held_out.force_nrmse_penetration) << ", |final penetration error| "
-          << Num(100 * d.base.held_out.final_penetration_rel_error, 3) << " %, |peak force error| "
-          << Num(100 * d.base.held_out.peak_force_rel_error, 3) << " %.\n\n"
-          << "| kind | factor | finding | p | significant |\n| --- | --- | --- | --- | --- |\n";
-      for (const Finding& f : d.where)
-        out << "| " << f.kind << " | " << f.factor << " | " << f.summary << " | " << Num(f.p_value, 3) << " | "
-            << (f.significant ? "yes" : "no") << " |\n";
-      out << "\nPermutation tests (" << 2000 << " permutations); significant means p below 0.05 / number of tests "
-             "(Bonferroni).\n\n## 3. Candidates\n\n"
-          << "| effect | parameters (95 % interval) | held-out force NRMSE | reduction | explained | Delta BIC vs base |\n"
-          << "| --- | --- | --- | --- | --- | --- |\n"
-          << "| base | zeta per soil | " << Num(d.base.held_out.force_nrmse) << " | - | - | 0 |\n";
-      for (const CandidateScore& c : d.candidates) {
-        if (!c.applies) {
-          out << "| " << c.name << " | not tried: " << c.why_not << " | | | | |\n";
-          continue;
-        }
-        std::ostringstream params;
-        for (const ParameterEstimate& e : c.fit.estimates)
-          if (!e.effect.empty())
-            params << e.key << " = " << Num(e.value / e.file_to_si) << " [" << Num(e.low / e.file_to_si) << ", "
-                   << Num(e.high / e.file_to_si) << "]; ";
-        out << "| " << c.name << (d.winner >= 0 && &c == &d.candidates[d.winner] ? " **(named)**" : "") << " | "
-            << params.str() << " | " << Num(c.held_out.force_nrmse) << " | " << Num(100 * c.gap_reduction, 3) << " % | "
-            << Num(100 * c.explained, 3) << " % | " << Num(c.delta_bic, 5) << " |\n";
-      }
-      out << "\n## 4. Model\n\n`model.yaml`: the base model's zeta per soil"
-          << (d.winner >= 0 ? " plus `" + d.named_effect + "` with its fitted parameters and 95 % intervals" : "")
-          << ". Intervals are cluster-robust over the training drops.\n\n## 5. Before and after (held-out drops)\n\n"
-          << "| drop | force NRMSE before | after | final penetration error before | after |\n| --- | --- | --- | --- | --- |\n";
-      for (size_t i = 0; i < d.problem.drops.size(); ++i) {
-        if (d.problem.drops[i].train) continue;
-        out << "| " << d.problem.drops[i].drop_id << " | " << Num(d.base.gaps[i].force_nrmse) << " | "
-            << Num(after.gaps[i].force_nrmse) << " | " << Num(100 * d.base.gaps[i].final_penetration_rel_error, 3)
-            << " % | " << Num(100 * after.gaps[i].final_penetration_rel_error, 3) << " % |\n";
-      }
-      out << "| **mean** | " << Num(d.base.held_out.force_nrmse) << " | " << Num(after.held_out.force_nrmse) << " | "
-          << Num(100 * d.base.held_out.final_penetration_rel_error, 3) << " % | "
-          << Num(100 * after.held_out.final_penetration_rel_error, 3) << " % |\n\n";
-      if (!d.where_after.empty()) {
-        out << "After the named effect:\n\n| kind | factor | finding | p | significant |\n| --- | --- | --- | --- | --- |\n";
-        for (const Finding& f : d.where_after)
-          out << "| " << f.kind << " | " << f.factor << " | " << f.summary << " | " << Num(f.p_value, 3) << " | "
-              << (f.significant ? "yes" : "no") << " |\n";
-        out << "\n";
-      }
-      out << "![force against time](plots/overlays_force_time.png)\n\n![force against penetration]"
-             "(plots/overlays_force_penetration.png)\n\n![residuals](plots/residuals.png)\n\n![gap per drop]"
-             "(plots/gap_per_drop.png)\n\n";
-      out << "Run: " << d.simulations << " simulated drops in " << Num(d.seconds, 3) << " s.\n";
-    });
+    WriteReport(d, ds, after, dir / "report.md");
   });
 }
 

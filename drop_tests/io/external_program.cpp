@@ -53,14 +53,8 @@ class FileActions {
   posix_spawn_file_actions_t actions_;
 };
 
-std::string Tail(const fs::path& log) {
-  const std::string line = LastLogLine(log);
-  return line.empty() ? std::string() : ": " + line;
-}
-
-}  // namespace
-
-std::string LastLogLine(const fs::path& log, size_t max_chars) {
+// The last non-empty line of a text file, at most `max_chars` long ("" when unreadable).
+std::string LastLogLine(const fs::path& log, size_t max_chars = 300) {
   std::ifstream in(log, std::ios::binary);
   std::string line, last;
   while (std::getline(in, line)) {
@@ -70,6 +64,13 @@ std::string LastLogLine(const fs::path& log, size_t max_chars) {
   if (last.size() > max_chars) last = last.substr(0, max_chars) + "...";
   return last;
 }
+
+std::string Tail(const fs::path& log) {
+  const std::string line = LastLogLine(log);
+  return line.empty() ? std::string() : ": " + line;
+}
+
+}  // namespace
 
 void RunProgram(const ProgramRun& run) {
   if (run.argv.empty() || run.argv.front().empty()) throw std::invalid_argument("RunProgram: no program named");

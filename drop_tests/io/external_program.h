@@ -46,7 +46,4 @@ class ExternalProgramError : public std::runtime_error {
 // throws ExternalProgramError whose message (one line) carries the last line of the log.
 void RunProgram(const ProgramRun& run);
 
-// The last non-empty line of a text file, at most `max_chars` long ("" when unreadable).
-std::string LastLogLine(const std::filesystem::path& log, size_t max_chars = 300);
-
 }  // namespace touchdown::io

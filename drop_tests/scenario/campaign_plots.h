@@ -6,11 +6,15 @@
 // The gnuplot script stays in plots/ so a user can restyle and re-render it. Rendered by
 // RenderPlots (plot_runner.h): without gnuplot, or when a PNG cannot be written whole, it throws.
 #include <string>
+#include <vector>
+
+#include "drop_tests/drop/pad_drop.h"
 
 namespace touchdown::scenario {
 
-struct CampaignResult;
-
-void WriteCampaignPlots(const CampaignResult& result, const std::string& out_dir);
+// `drops[i]`'s trace is traces/<drop_ids[i]>.csv in `out_dir`; the time histories and the force
+// against penetration show the drops at `reference_speed_m_s`.
+void WriteCampaignPlots(const std::vector<drop::PadDrop>& drops, const std::vector<std::string>& drop_ids,
+                        double reference_speed_m_s, const std::string& out_dir);
 
 }  // namespace touchdown::scenario

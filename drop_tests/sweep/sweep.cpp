@@ -13,6 +13,7 @@
 #include <unistd.h>
 
 #include "drop_tests/io/dataset_csv.h"
+#include "drop_tests/io/work_pool.h"
 #include "drop_tests/sweep/sweep_engine.h"
 #include "rft/input_error.h"
 
@@ -196,32 +197,18 @@ SweepRunSummary RunSweep(const SweepPlan& plan, const std::string& out_dir, cons
     const SweepModels models(plan);
     DropEngine engine(models, summary.threads);
     RemainingDrops todo(plan.size(), db, options.shard);
-    bool input_open = true, stopping = false;
-    auto feed = [&] {
-      while (input_open && engine.Hungry(kFeedLow)) {
-        const std::vector<int64_t> next = todo.Next(kFeedChunk);
-        if (next.empty()) {
-          engine.CloseInput();
-          input_open = false;
-        } else {
-          engine.Add(next);
-        }
-      }
-    };
-    feed();
-    while (!engine.Finished()) {
-      if (!stopping && options.stop && options.stop->load() != 0) {
-        engine.Stop();  // the drops running now finish; nothing new starts
-        stopping = true;
-        input_open = false;
-      }
-      std::vector<DropRecord> batch = engine.Take(options.batch_size, options.commit_interval_s,
-                                                  input_open ? kFeedLow : 0, stopping ? nullptr : options.stop);
+    EngineDriver driver;
+    driver.feed_low = kFeedLow;
+    driver.next = [&] { return todo.Next(kFeedChunk); };
+    driver.commit = [&](std::vector<DropRecord> batch) {
       db.Insert(batch);  // one transaction: all of the batch or none of it
       summary.computed += static_cast<int64_t>(batch.size());
       progress.Add(batch);
-      feed();
-    }
+    };
+    driver.batch_size = options.batch_size;
+    driver.commit_interval_s = options.commit_interval_s;
+    driver.stop = options.stop;
+    RunEngine(engine, driver);
   }
   if (options.stop) summary.stop_signal = options.stop->load();
   progress.Finish();
@@ -231,13 +218,10 @@ SweepRunSummary RunSweep(const SweepPlan& plan, const std::string& out_dir, cons
 }
 
 std::vector<DropRecord> RunSweepInMemory(const SweepPlan& plan, int threads) {
-  std::vector<int64_t> todo(static_cast<size_t>(plan.size()));
-  for (size_t i = 0; i < todo.size(); ++i) todo[i] = static_cast<int64_t>(i);
   const SweepModels models(plan);
-  DropEngine engine(models, todo, threads > 0 ? threads : DefaultThreads());
-  std::vector<DropRecord> out(todo.size());
-  while (!engine.Finished())
-    for (DropRecord& r : engine.Take(4096, 1.0)) out[static_cast<size_t>(r.index)] = std::move(r);
+  std::vector<DropRecord> out(static_cast<size_t>(plan.size()));
+  io::ParallelFor(out.size(), threads > 0 ? threads : DefaultThreads(),
+                  [&](size_t i) { out[i] = SimulateSweepDrop(models, static_cast<int64_t>(i)); });
   return out;
 }
 

@@ -37,7 +37,6 @@ namespace touchdown::sweep {
 struct Shard {
   int index = 0;
   int count = 1;
-  bool Owns(int64_t drop_index) const { return drop_index % count == index; }
   std::string Text() const { return std::to_string(index) + "/" + std::to_string(count); }
 };
 // Parses "I/N" (0 <= I < N); throws InputError naming `context`.

@@ -2,12 +2,12 @@
 
 #include <algorithm>
 #include <chrono>
+#include <iterator>
+#include <thread>
 
 namespace touchdown::sweep {
 
-DropEngine::DropEngine(const SweepModels& models, int threads) : models_(models) {
-  for (int i = 0; i < std::max(1, threads); ++i) workers_.emplace_back([this] { Work(); });
-}
+DropEngine::DropEngine(const SweepModels& models, int threads) : models_(models), pool_(std::max(1, threads)) {}
 
 DropEngine::DropEngine(const SweepModels& models, const std::vector<int64_t>& todo, int threads)
     : DropEngine(models, std::min<int>(std::max(1, threads), static_cast<int>(std::max<size_t>(todo.size(), 1)))) {
@@ -15,19 +15,14 @@ DropEngine::DropEngine(const SweepModels& models, const std::vector<int64_t>& to
   CloseInput();
 }
 
-DropEngine::~DropEngine() {
-  Stop();
-  for (std::thread& t : workers_) t.join();
-}
+DropEngine::~DropEngine() { Stop(); }
 
 void DropEngine::Add(const std::vector<int64_t>& indices) {
   if (indices.empty()) return;
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    if (closed_ || stopped_) return;
-    queue_.insert(queue_.end(), indices.begin(), indices.end());
-  }
-  work_.notify_all();
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (closed_ || stopped_) return;
+  added_ += indices.size();
+  for (const int64_t index : indices) pool_.Post([this, index] { Run(index); });
 }
 
 void DropEngine::CloseInput() {
@@ -35,56 +30,52 @@ void DropEngine::CloseInput() {
     std::lock_guard<std::mutex> lock(mutex_);
     closed_ = true;
   }
-  work_.notify_all();
   ready_.notify_all();
+}
+
+void DropEngine::Feed(size_t low, const std::function<std::vector<int64_t>()>& next) {
+  while (Hungry(low)) {
+    const std::vector<int64_t> chunk = next();
+    if (chunk.empty()) {
+      CloseInput();
+      return;
+    }
+    Add(chunk);
+  }
 }
 
 void DropEngine::Stop() {
   {
     std::lock_guard<std::mutex> lock(mutex_);
     stopped_ = true;
-    queue_.clear();
+    dropped_ += pool_.Clear();
   }
-  work_.notify_all();
   ready_.notify_all();
-}
-
-size_t DropEngine::queued() {
-  std::lock_guard<std::mutex> lock(mutex_);
-  return queue_.size();
 }
 
 bool DropEngine::Hungry(size_t low) {
   std::lock_guard<std::mutex> lock(mutex_);
-  return !closed_ && !stopped_ && queue_.size() < low;
+  return !closed_ && !stopped_ && pool_.queued() < low;
 }
 
-bool DropEngine::IdleLocked() const { return (closed_ || stopped_) && queue_.empty() && computed_ == started_; }
+bool DropEngine::IdleLocked() const { return (closed_ || stopped_) && computed_ == added_ - dropped_; }
 
-void DropEngine::Work() {
-  for (;;) {
-    int64_t index;
-    bool hungry;
-    {
-      std::unique_lock<std::mutex> lock(mutex_);
-      work_.wait(lock, [&] { return stopped_ || closed_ || !queue_.empty(); });
-      if (queue_.empty()) return;  // closed or stopped, nothing left
-      index = queue_.front();
-      queue_.pop_front();
-      ++started_;
-      hungry = !closed_ && queue_.size() + 1 == hungry_below_;  // just went below: refill
-    }
-    if (hungry) ready_.notify_all();
-    DropRecord record = SimulateSweepDrop(models_, index);
-    bool wake;
-    {
-      std::lock_guard<std::mutex> lock(mutex_);
-      ++computed_;
-      done_.push_back(std::move(record));
-      wake = done_.size() >= take_max_ || IdleLocked();
-    }
-    if (wake) ready_.notify_all();
+void DropEngine::Run(int64_t index) {
+  bool hungry;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    hungry = !closed_ && !stopped_ && pool_.queued() < hungry_below_;  // below the mark: refill
   }
+  if (hungry) ready_.notify_all();
+  DropRecord record = SimulateSweepDrop(models_, index);
+  bool wake;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    ++computed_;
+    done_.push_back(std::move(record));
+    wake = done_.size() >= take_max_ || IdleLocked();
+  }
+  if (wake) ready_.notify_all();
 }
 
 std::vector<DropRecord> DropEngine::Take(size_t max, double timeout_s, size_t hungry_below,
@@ -96,7 +87,7 @@ std::vector<DropRecord> DropEngine::Take(size_t max, double timeout_s, size_t hu
   take_max_ = std::max<size_t>(max, 1);
   hungry_below_ = hungry_below;
   auto ready = [&] {
-    return done_.size() >= max || IdleLocked() || (!closed_ && !stopped_ && queue_.size() < hungry_below) ||
+    return done_.size() >= max || IdleLocked() || (!closed_ && !stopped_ && pool_.queued() < hungry_below) ||
            (interrupt && interrupt->load() != 0);
   };
   // In slices: a signal handler cannot notify a condition variable, so `interrupt` is polled.
@@ -117,6 +108,19 @@ std::vector<DropRecord> DropEngine::Take(size_t max, double timeout_s, size_t hu
 bool DropEngine::Finished() {
   std::lock_guard<std::mutex> lock(mutex_);
   return IdleLocked() && taken_ == computed_;
+}
+
+void RunEngine(DropEngine& engine, const EngineDriver& d) {
+  bool stopping = false;
+  engine.Feed(d.feed_low, d.next);
+  while (!engine.Finished()) {
+    if (!stopping && d.stop && d.stop->load() != 0) {
+      engine.Stop();  // the drops running now finish; nothing new starts
+      stopping = true;
+    }
+    d.commit(engine.Take(d.batch_size, d.commit_interval_s, d.feed_low, stopping ? nullptr : d.stop));
+    engine.Feed(d.feed_low, d.next);
+  }
 }
 
 int DefaultThreads(int ranks_on_node) {

@@ -29,13 +29,10 @@ bool LaunchedByMpirun() {
 }
 
 #ifndef TOUCHDOWN_HAVE_MPI
-bool MpiSupported() { return false; }
 SweepRunSummary RunSweepMpi(const SweepPlan&, const std::string&, const SweepRunOptions&, int*) {
   throw MakeInputError("", "mpirun", "this touchdown was built without MPI (TOUCHDOWN_WITH_MPI=OFF)");
 }
 #else
-bool MpiSupported() { return true; }
-
 namespace {
 constexpr int kTagResults = 1;  // rank -> 0: serialised records
 constexpr int kTagDone = 2;     // rank -> 0: no more results; payload: the stop signal (int), or empty
@@ -66,41 +63,29 @@ bool StopRequested(const SweepRunOptions& options) { return options.stop && opti
 // A rank other than 0: asks for work, computes it, sends the records.
 void RunWorkerRank(DropEngine& engine, const SweepRunOptions& options, SweepRunSummary& summary) {
   const size_t want = std::max<size_t>(2 * kFeedLow, 16 * static_cast<size_t>(summary.threads));
-  bool input_open = true, stopping = false;
-  auto feed = [&] {
-    while (input_open && engine.Hungry(kFeedLow)) {
-      const uint64_t n = want;
-      MPI_Send(&n, 1, MPI_UINT64_T, 0, kTagRequest, MPI_COMM_WORLD);
-      MPI_Status status;
-      MPI_Probe(0, kTagWork, MPI_COMM_WORLD, &status);
-      int count = 0;
-      MPI_Get_count(&status, MPI_INT64_T, &count);
-      std::vector<int64_t> indices(static_cast<size_t>(count));
-      MPI_Recv(indices.data(), count, MPI_INT64_T, 0, kTagWork, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-      if (indices.empty()) {
-        engine.CloseInput();
-        input_open = false;
-      } else {
-        engine.Add(indices);
-      }
-    }
+  EngineDriver driver;
+  driver.feed_low = kFeedLow;
+  driver.next = [&] {
+    const uint64_t n = want;
+    MPI_Send(&n, 1, MPI_UINT64_T, 0, kTagRequest, MPI_COMM_WORLD);
+    MPI_Status status;
+    MPI_Probe(0, kTagWork, MPI_COMM_WORLD, &status);
+    int count = 0;
+    MPI_Get_count(&status, MPI_INT64_T, &count);
+    std::vector<int64_t> indices(static_cast<size_t>(count));
+    MPI_Recv(indices.data(), count, MPI_INT64_T, 0, kTagWork, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    return indices;
   };
-  feed();
-  while (!engine.Finished()) {
-    if (!stopping && StopRequested(options)) {
-      engine.Stop();
-      stopping = true;
-      input_open = false;
-    }
-    const std::vector<DropRecord> batch = engine.Take(options.batch_size, options.commit_interval_s,
-                                                      input_open ? kFeedLow : 0, stopping ? nullptr : options.stop);
-    if (!batch.empty()) {
-      const std::string bytes = SerializeRecords(batch);
-      MPI_Send(bytes.data(), static_cast<int>(bytes.size()), MPI_CHAR, 0, kTagResults, MPI_COMM_WORLD);
-      summary.computed += static_cast<int64_t>(batch.size());
-    }
-    feed();
-  }
+  driver.commit = [&](std::vector<DropRecord> batch) {
+    if (batch.empty()) return;
+    const std::string bytes = SerializeRecords(batch);
+    MPI_Send(bytes.data(), static_cast<int>(bytes.size()), MPI_CHAR, 0, kTagResults, MPI_COMM_WORLD);
+    summary.computed += static_cast<int64_t>(batch.size());
+  };
+  driver.batch_size = options.batch_size;
+  driver.commit_interval_s = options.commit_interval_s;
+  driver.stop = options.stop;
+  RunEngine(engine, driver);
   const int signal = options.stop ? options.stop->load() : 0;
   MPI_Send(&signal, 1, MPI_INT, 0, kTagDone, MPI_COMM_WORLD);
   summary.stop_signal = signal;
@@ -151,7 +136,7 @@ SweepRunSummary RunSweepMpi(const SweepPlan& plan, const std::string& out_dir, c
   SweepProgress progress(options.log ? *options.log : std::cerr, options.progress, options.progress_interval_s,
                          summary.in_shard, summary.already_done);
   int ranks_running = ranks - 1;
-  bool input_open = true, stopping = false;
+  bool stopping = false;
   auto commit = [&](const std::vector<DropRecord>& batch) {
     db.Insert(batch);
     summary.computed += static_cast<int64_t>(batch.size());
@@ -160,21 +145,10 @@ SweepRunSummary RunSweepMpi(const SweepPlan& plan, const std::string& out_dir, c
   auto stop = [&](int signal) {
     if (stopping) return;
     stopping = true;
-    input_open = false;
     if (summary.stop_signal == 0) summary.stop_signal = signal;
     engine.Stop();
   };
-  auto feed = [&] {
-    while (input_open && engine.Hungry(kFeedLow)) {
-      const std::vector<int64_t> next = todo.Next(4 * kFeedLow);
-      if (next.empty()) {
-        engine.CloseInput();
-        input_open = false;
-      } else {
-        engine.Add(next);
-      }
-    }
-  };
+  auto feed = [&] { engine.Feed(kFeedLow, [&] { return todo.Next(4 * kFeedLow); }); };
   feed();
   while (!engine.Finished() || ranks_running > 0) {
     if (StopRequested(options)) stop(options.stop->load());
@@ -204,7 +178,7 @@ SweepRunSummary RunSweepMpi(const SweepPlan& plan, const std::string& out_dir, c
       }
     }
     feed();
-    commit(engine.Take(options.batch_size, engine.Finished() ? 0.0 : 0.02, input_open ? kFeedLow : 0,
+    commit(engine.Take(options.batch_size, engine.Finished() ? 0.0 : 0.02, kFeedLow,
                        stopping ? nullptr : options.stop));
     if (engine.Finished() && ranks_running > 0) {
       // Only remote work left: block until the next message arrives.

@@ -17,7 +17,6 @@ namespace touchdown::sweep {
 // True when this process was started by mpirun with more than one rank (OpenMPI, PMI or
 // PMIx environment variables), so the sweep should run on MPI.
 bool LaunchedByMpirun();
-bool MpiSupported();  // built with TOUCHDOWN_WITH_MPI
 
 // Initialises MPI, runs the sweep over all ranks, finalises MPI. On ranks other than 0 the
 // returned summary only counts that rank's own drops. Throws InputError on every rank when

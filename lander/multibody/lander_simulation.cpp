@@ -27,7 +27,7 @@ bool IsCrushable(const LanderModel& m, const StateLayout& L, int i) {
   return L.stroke_slot[i] >= 0 && m.legs[i].absorber->kind == ShockAbsorber::Kind::kCrushable;
 }
 
-Eigen::VectorXd Pack(const LanderModel& model, const StateLayout& L, const LanderInitialState& s) {
+Eigen::VectorXd Pack(const StateLayout& L, const LanderInitialState& s) {
   Eigen::VectorXd y = Eigen::VectorXd::Zero(L.size);
   auto put_quat = [&](int i, const Eigen::Matrix3d& R) {
     const Eigen::Quaterniond q(R);
@@ -42,7 +42,6 @@ Eigen::VectorXd Pack(const LanderModel& model, const StateLayout& L, const Lande
     y.segment<3>(L.w_P(i)) = s.w_WB_W;  // the pads turn with the body at release
     if (L.stroke_slot[i] >= 0) y[L.stroke(i)] = s.stroke_m[i];
   }
-  (void)model;
   return y;
 }
 
@@ -115,7 +114,7 @@ double BodyHeightForClearance(const LanderModel& model, const rft::Terrain& terr
   const StateLayout L(model);
   LanderInitialState s = state;
   s.p_WB.z() = 0.0;
-  const Eigen::VectorXd y = Pack(model, L, s);
+  const Eigen::VectorXd y = Pack(L, s);
   const LanderPose p = ComputePose(model, L, y);
   double depth = -std::numeric_limits<double>::infinity();
   for (int i = 0; i < kNumLegs; ++i) depth = std::max(depth, PadDepth(model, terrain, i, p.pads[i]));
@@ -196,7 +195,7 @@ LanderRunResult SimulateLander(const LanderModel& model, const rft::Terrain& ter
   integ::CvodeIntegrator integrator(L.size, rhs, ScaledTolerances(model, L, initial, options), roots);
 
   LanderRunResult result;
-  Eigen::VectorXd y = Pack(model, L, initial);
+  Eigen::VectorXd y = Pack(L, initial);
   result.initial_energy_J = KineticEnergy(model, L, y) + PotentialEnergy(model, L, y);
   std::array<Eigen::Vector3d, kNumLegs> held_at;
 
