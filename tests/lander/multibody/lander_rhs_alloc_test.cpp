@@ -10,7 +10,7 @@
 
 #include "lander/multibody/lander_dynamics.h"
 #include "lander/multibody/lander_simulation.h"
-#include "tests/lander/multibody/lander_test_support.h"
+#include "tests/lander/multibody/paper_lander.h"
 
 namespace {
 std::atomic<bool> counting{false};
@@ -42,7 +42,7 @@ TEST(LanderRightHandSide, DoesNotAllocate) {
     probe.setZero();
     ASSERT_GE(allocations.load(), 1);
   }
-  const scenario::LanderSetup setup = scenario::BuildLanderSetup(test::CoarseScenario("lander_case_A"));
+  const test::PaperLander setup = test::MakePaperLander('A');
   const StateLayout L(setup.model);
   LanderRunOptions options;
   options.duration_s = 0.4;
