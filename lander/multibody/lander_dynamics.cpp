@@ -12,8 +12,9 @@
 namespace touchdown::lander {
 
 namespace {
-using Mat = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 22, 22>;
-using Vec = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 22, 1>;
+constexpr int kMaxSpeeds = StateLayout::kMaxSpeeds;
+using Mat = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxSpeeds, kMaxSpeeds>;
+using Vec = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxSpeeds, 1>;
 
 Eigen::Matrix3d Skew(const Eigen::Vector3d& v) {
   Eigen::Matrix3d s;
@@ -52,8 +53,8 @@ void PadJacobians(const StateLayout& L, int i, const PadFrame& pf, const Eigen::
 
 StateLayout::StateLayout(const LanderModel& model) {
   for (int i = 0; i < kNumLegs; ++i) stroke_slot[i] = model.legs[i].absorber ? num_strokes++ : -1;
-  nq = 23 + num_strokes;
-  nu = 18 + num_strokes;
+  nq = kFirstStroke + num_strokes;
+  nu = kFirstStrokeRate + num_strokes;
   size = nq + nu + 1;
 }
 
@@ -213,15 +214,9 @@ void Assemble(const LanderModel& model, const StateLayout& L, const rft::Terrain
 }
 }  // namespace
 
-void EvaluateLander(const LanderModel& model, const StateLayout& L, const rft::Terrain& terrain, const LanderModes& modes,
-                    const Eigen::Ref<const Eigen::VectorXd>& y, LanderEvaluation* e) {
-  e->pose = ComputePose(model, L, y);
-  Assembly a;
-  Assemble(model, L, terrain, modes, y, e, &a);
-  const Eigen::LLT<Mat> llt(a.M);
-  Vec u_dot = llt.solve(a.Q);
-
-  // Constraints of held pads and locked crushable strokes.
+namespace {
+// Rows of the constraints of `modes`: six per held pad, one per locked crushable stroke.
+int ConstraintRows(const LanderModel& model, const StateLayout& L, const LanderModes& modes) {
   int rows = 0;
   for (int i = 0; i < kNumLegs; ++i) {
     if (modes.pad[i] == PadMode::kHeld) rows += 6;
@@ -229,17 +224,66 @@ void EvaluateLander(const LanderModel& model, const StateLayout& L, const rft::T
         modes.stroke[i] != StrokeMode::kFree)
       rows += 1;
   }
+  return rows;
+}
+
+// x = A^+ b, the minimum-norm solution from a complete orthogonal decomposition of A: Eigen's
+// CompleteOrthogonalDecomposition::solve step by step, with its temporaries in `data`.
+void SolveMinimumNorm(LanderData& data, const LanderData::RowVector& b, LanderData::RowVector& x) {
+  const Eigen::CompleteOrthogonalDecomposition<LanderData::RowsByRows>& cod = data.cod;
+  const Eigen::Index rank = cod.rank(), cols = cod.cols();
+  if (rank == 0) {
+    x.setZero();
+    return;
+  }
+  LanderData::RowVector& c = data.c;
+  c = b;
+  c.applyOnTheLeft(cod.matrixQ().setLength(rank).adjoint());
+  LanderData::RowVector& z = data.z;
+  z.topRows(rank) = cod.matrixT().topLeftCorner(rank, rank).triangularView<Eigen::Upper>().solve(c.topRows(rank));
+  if (rank < cols) {  // z = Z^* [z; 0]
+    z.bottomRows(cols - rank).setZero();
+    for (Eigen::Index k = 0; k < rank; ++k) {
+      if (k != rank - 1) z.row(k).swap(z.row(rank - 1));
+      z.middleRows(rank - 1, cols - rank + 1)
+          .applyHouseholderOnTheLeft(cod.matrixQTZ().row(k).tail(cols - rank).adjoint(), cod.zCoeffs()(k),
+                                     &data.householder(0));
+      if (k != rank - 1) z.row(k).swap(z.row(rank - 1));
+    }
+  }
+  x.noalias() = cod.colsPermutation() * z;
+}
+}  // namespace
+
+void EvaluateLander(const LanderModel& model, const StateLayout& L, const rft::Terrain& terrain, const LanderModes& modes,
+                    const Eigen::Ref<const Eigen::VectorXd>& y, LanderEvaluation* e) {
+  LanderData data;
+  EvaluateLander(model, L, terrain, modes, y, e, &data);
+}
+
+void EvaluateLander(const LanderModel& model, const StateLayout& L, const rft::Terrain& terrain, const LanderModes& modes,
+                    const Eigen::Ref<const Eigen::VectorXd>& y, LanderEvaluation* e, LanderData* data) {
+  e->pose = ComputePose(model, L, y);
+  Assembly a;
+  Assemble(model, L, terrain, modes, y, e, &a);
+  const Eigen::LLT<Mat> llt(a.M);
+  Vec u_dot = llt.solve(a.Q);
+
+  // Constraints of held pads and locked crushable strokes.
+  const int rows = ConstraintRows(model, L, modes);
   e->constrained = rows > 0;
   if (rows > 0) {
-    Eigen::MatrixXd G = Eigen::MatrixXd::Zero(rows, L.nu);
-    Eigen::VectorXd bias = Eigen::VectorXd::Zero(rows);
+    LanderData& d = *data;
+    LanderData::RowsBySpeeds& G = d.G;
+    G.setZero(rows, L.nu);
+    d.bias.setZero(rows);
     int r = 0;
     std::array<int, kNumLegs> pad_row{-1, -1, -1, -1}, stroke_row{-1, -1, -1, -1};
     for (int i = 0; i < kNumLegs; ++i) {
       if (modes.pad[i] == PadMode::kHeld) {
         pad_row[i] = r;
         G.block(r, 0, 3, L.nu) = a.J_J[i];
-        bias.segment<3>(r) = a.bias_J[i];
+        d.bias.segment<3>(r) = a.bias_J[i];
         G.block<3, 3>(r + 3, L.u_w_P(i)).setIdentity();
         r += 6;
       }
@@ -249,12 +293,20 @@ void EvaluateLander(const LanderModel& model, const StateLayout& L, const rft::T
         G(r++, L.u_stroke(i)) = 1.0;
       }
     }
-    const Eigen::MatrixXd MinvGt = llt.solve(G.transpose());
-    const Eigen::MatrixXd A = G * MinvGt;
-    const Eigen::VectorXd rhs = -bias - G * Eigen::VectorXd(u_dot);
+    d.MinvGt = llt.solve(G.transpose());
+    d.A.noalias() = G * d.MinvGt;
+    d.u_free = u_dot;
+    d.rhs.noalias() = -d.bias - G * d.u_free;
     // Minimum-norm multipliers: four held pads are statically indeterminate.
-    const Eigen::VectorXd lambda = A.completeOrthogonalDecomposition().solve(rhs);
-    u_dot += MinvGt * lambda;
+    d.cod.compute(d.A);
+    d.c.resize(rows);
+    d.z.resize(rows);
+    d.householder.resize(rows);
+    d.lambda.resize(rows);
+    SolveMinimumNorm(d, d.rhs, d.lambda);
+    d.correction.noalias() = d.MinvGt * d.lambda;
+    u_dot += d.correction;
+    const LanderData::RowVector& lambda = d.lambda;
     for (int i = 0; i < kNumLegs; ++i) {
       if (pad_row[i] >= 0) {
         e->soil[i].force_W = lambda.segment<3>(pad_row[i]);
@@ -329,13 +381,7 @@ double ProjectOntoConstraints(const LanderModel& model, const StateLayout& L, co
   Mat M = Mat::Zero(L.nu, L.nu);
   M.block<3, 3>(0, 0).diagonal().setConstant(model.body_mass_kg);
   M.block<3, 3>(3, 3) = e.pose.R_WB * model.body_inertia_B * e.pose.R_WB.transpose();
-  int rows = 0;
-  for (int i = 0; i < kNumLegs; ++i) {
-    if (modes.pad[i] == PadMode::kHeld) rows += 6;
-    if (L.stroke_slot[i] >= 0 && model.legs[i].absorber->kind == ShockAbsorber::Kind::kCrushable &&
-        modes.stroke[i] != StrokeMode::kFree)
-      rows += 1;
-  }
+  const int rows = ConstraintRows(model, L, modes);
   Eigen::MatrixXd G = Eigen::MatrixXd::Zero(rows, L.nu);
   int r = 0;
   for (int i = 0; i < kNumLegs; ++i) {

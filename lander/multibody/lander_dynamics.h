@@ -20,6 +20,7 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <Eigen/QR>
 #include <array>
 #include <vector>
 
@@ -29,24 +30,32 @@
 
 namespace touchdown::lander {
 
-// Index layout of the state vector for a model (absorber legs get a stroke coordinate).
+// Index layout of the state vector for a model (absorber legs get a stroke coordinate), derived
+// from the number of legs: positions [p_WB (3), quat_WB (4), quat_WP per leg (4), strokes], speeds
+// [v_WB_W (3), w_WB_W (3), w_WP_W per leg (3), stroke rates], then the dissipated work.
 struct StateLayout {
+  static constexpr int kBodyPositions = 3 + 4, kPadPositions = 4;
+  static constexpr int kBodySpeeds = 3 + 3, kPadSpeeds = 3;
+  static constexpr int kFirstStroke = kBodyPositions + kPadPositions * kNumLegs;  // in q
+  static constexpr int kFirstStrokeRate = kBodySpeeds + kPadSpeeds * kNumLegs;    // in u
+  static constexpr int kMaxSpeeds = kFirstStrokeRate + kNumLegs;                  // every leg an absorber
+
   explicit StateLayout(const LanderModel& model);
   int stroke_slot[kNumLegs];  // index among strokes, -1 for a rigid leg
   int num_strokes = 0;
   int nq = 0, nu = 0, size = 0;
   int p_B() const { return 0; }
   int quat_B() const { return 3; }
-  int quat_P(int leg) const { return 7 + 4 * leg; }
-  int stroke(int leg) const { return 23 + stroke_slot[leg]; }
+  int quat_P(int leg) const { return kBodyPositions + kPadPositions * leg; }
+  int stroke(int leg) const { return kFirstStroke + stroke_slot[leg]; }
   int v_B() const { return nq; }
   int w_B() const { return nq + 3; }
-  int w_P(int leg) const { return nq + 6 + 3 * leg; }
-  int stroke_rate(int leg) const { return nq + 18 + stroke_slot[leg]; }
+  int w_P(int leg) const { return nq + u_w_P(leg); }
+  int stroke_rate(int leg) const { return nq + u_stroke(leg); }
   int work() const { return nq + nu; }
   // Column of a generalised speed in u (not in y).
-  int u_w_P(int leg) const { return 6 + 3 * leg; }
-  int u_stroke(int leg) const { return 18 + stroke_slot[leg]; }
+  int u_w_P(int leg) const { return kBodySpeeds + kPadSpeeds * leg; }
+  int u_stroke(int leg) const { return kFirstStrokeRate + stroke_slot[leg]; }
 };
 
 enum class PadMode { kFree, kHeld };
@@ -92,6 +101,27 @@ struct LanderEvaluation {
   bool constrained = false;                           // any held pad or locked stroke
 };
 
+// Scratch of EvaluateLander (house style: Pinocchio's Data next to the fixed Model): the
+// constraint solve's matrices at their largest size (every pad held, every stroke locked), stored
+// inline, so a right-hand side allocates nothing, whatever the modes.
+struct LanderData {
+  static constexpr int kMaxRows = 6 * kNumLegs + kNumLegs;  // six per held pad, one per locked stroke
+  static constexpr int kMaxSpeeds = StateLayout::kMaxSpeeds;
+  using RowsBySpeeds = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxRows, kMaxSpeeds>;
+  using SpeedsByRows = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxSpeeds, kMaxRows>;
+  using RowsByRows = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxRows, kMaxRows>;
+  using RowVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxRows, 1>;
+  using SpeedVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxSpeeds, 1>;
+
+  RowsBySpeeds G;       // constraint Jacobian
+  SpeedsByRows MinvGt;  // M^-1 G^T
+  RowsByRows A;         // G M^-1 G^T
+  RowVector bias, rhs, lambda;       // Gdot u, the multipliers' right-hand side, the multipliers
+  SpeedVector u_free, correction;    // du/dt without constraints, M^-1 G^T lambda
+  RowVector c, z, householder;       // the minimum-norm solve's temporaries
+  Eigen::CompleteOrthogonalDecomposition<RowsByRows> cod;
+};
+
 // Pose and velocities of all bodies from y.
 LanderPose ComputePose(const LanderModel& model, const StateLayout& layout, const Eigen::Ref<const Eigen::VectorXd>& y);
 
@@ -99,6 +129,10 @@ LanderPose ComputePose(const LanderModel& model, const StateLayout& layout, cons
 double PadDepth(const LanderModel& model, const rft::Terrain& terrain, int leg, const PadFrame& pad);
 
 // The equations of motion (pure function of model, terrain, modes and state).
+void EvaluateLander(const LanderModel& model, const StateLayout& layout, const rft::Terrain& terrain,
+                    const LanderModes& modes, const Eigen::Ref<const Eigen::VectorXd>& y, LanderEvaluation* out,
+                    LanderData* data);
+// The same with scratch of its own (allocates: for samples and events, not right-hand sides).
 void EvaluateLander(const LanderModel& model, const StateLayout& layout, const rft::Terrain& terrain,
                     const LanderModes& modes, const Eigen::Ref<const Eigen::VectorXd>& y, LanderEvaluation* out);
 // dy/dt from an evaluation (quaternion kinematics, du/dt, dW/dt).

@@ -7,6 +7,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "lander/integ/hybrid_run.h"
 #include "lander/pad/pad_pose.h"
 #include "rft/contact_wrench.h"
 #include "rft/deepest_point.h"
@@ -153,6 +154,7 @@ FreeDropResult RunFreeDrop(const geom::PadBody& body, const rft::StressLaw3D& la
     gv[1] = s.v_WC.squaredNorm() + s.w_W.squaredNorm() * radius * radius - rest_speed * rest_speed;
   };
   integ::CvodeIntegrator integrator(kSize, rhs, WithScaledTolerances(options.integrator, body, in, radius), roots);
+  integ::HybridRun run(integrator);
 
   // Release: tilted, lowest point `clearance` above the surface, speed chosen to reach the
   // requested vertical impact speed at touchdown.
@@ -166,11 +168,9 @@ FreeDropResult RunFreeDrop(const geom::PadBody& body, const rft::StressLaw3D& la
   y.segment<3>(kV) << in.horizontal_speed_m_s, 0.0, -std::sqrt(std::max(v_td * v_td - 2.0 * g * clearance, 0.0));
   y.segment<3>(kW) = R0.transpose() * in.omega_W;
   if (clearance > 0.0) {
-    integrator.Reset(0.0, y);
-    const integ::AdvanceResult r = integrator.AdvanceTo(10.0 * std::sqrt(2.0 * clearance / g) + 1.0);
-    if (r.status != integ::AdvanceStatus::kFoundRoot || r.roots_found[0] == 0)
-      throw integ::IntegrationFailure("touchdown was not reached during the approach");
-    y = integrator.state();
+    run.Start(0.0, y);
+    y = run.AdvanceToRoot(10.0 * std::sqrt(2.0 * clearance / g) + 1.0, 0,
+                          "touchdown was not reached during the approach");
     // Touchdown defines t = 0, with the lowest point on the surface, as in the rig drop: the root is
     // located only to rounding, and a depth of +1e-18 m already submerges a flat bottom whole (a
     // depth-independent term such as compaction_peak then acted on its full area in the sample at
@@ -181,7 +181,7 @@ FreeDropResult RunFreeDrop(const geom::PadBody& body, const rft::StressLaw3D& la
   }
   y[kWork] = 0.0;
   approaching = false;
-  integrator.Reset(0.0, y);
+  run.Start(0.0, y);
 
   FreeDropResult result;
   const Pose s0 = PoseOf(body, y);
@@ -207,37 +207,31 @@ FreeDropResult RunFreeDrop(const geom::PadBody& body, const rft::StressLaw3D& la
   record(0.0, y);
 
   // Stroke: sample at the output rate until the rest event with enough static capacity.
-  const double dt = 1.0 / options.sample_rate_hz;
-  double t_rest = -1.0;
-  long k = 1;
-  while (t_rest < 0.0) {
-    const double t_out = k * dt;
-    if (t_out > options.max_duration_s)
-      throw integ::IntegrationFailure("the pad did not come to rest within " + std::to_string(options.max_duration_s) +
-                                      " s");
-    const integ::AdvanceResult r = integrator.AdvanceTo(t_out);
-    if (r.status == integ::AdvanceStatus::kReachedTime) {
-      record(t_out, integrator.state());
-      ++k;
-      continue;
-    }
-    if (r.roots_found[1] == 0) continue;  // not the rest event: go on to the same output time
+  integ::HybridPhase stroke;
+  stroke.sample_rate_hz = options.sample_rate_hz;
+  stroke.end_s = options.max_duration_s;
+  stroke.end = integ::RunEnd::kFailPastEnd;
+  stroke.failure = "the pad did not come to rest within " + std::to_string(options.max_duration_s) + " s";
+  integ::HybridCallbacks calls;
+  calls.sample = record;
+  calls.event = [&](double t, const std::vector<int>& found, Eigen::VectorXd& s) {
+    if (found[1] == 0) return integ::EventAction::kContinue;  // not the rest event
     // Slow enough: rest if pushing straight down meets at least the weight. The probe moves at
     // 1 um/s: quasi-static RFT depends on the direction only, and speed-dependent terms (dynamic
     // term, damping effects) must not count as static capacity.
-    Eigen::VectorXd s = integrator.state();
     Pose probe = PoseOf(body, s);
     rft::PadKinematics down{probe.R_WB, probe.p_WB, Eigen::Vector3d(0.0, 0.0, -1e-6), Eigen::Vector3d::Zero()};
     const double capacity = rft::ComputeContactWrench(body.surface, down, ground, law).force_W.z();
-    if (capacity >= m * g) {
-      t_rest = r.t;
-      result.final_kinetic_energy_J = 0.5 * m * probe.v_WC.squaredNorm() + 0.5 * probe.w_B.dot(I * probe.w_B);
-      s.segment<3>(kV).setZero();
-      s.segment<3>(kW).setZero();
-      record(t_rest, s);
-      y = s;
-    }
-  }
+    if (capacity < m * g) return integ::EventAction::kContinue;
+    result.final_kinetic_energy_J = 0.5 * m * probe.v_WC.squaredNorm() + 0.5 * probe.w_B.dot(I * probe.w_B);
+    s.segment<3>(kV).setZero();
+    s.segment<3>(kW).setZero();
+    record(t, s);
+    return integ::EventAction::kStop;
+  };
+  const integ::HybridOutcome rest = run.Run(stroke, calls);
+  const double t_rest = rest.t;
+  y = rest.y;
   const Pose end = PoseOf(body, y);
   result.time_to_rest_s = t_rest;
   result.final_penetration_m = std::max(Depth(body, ground, end), 0.0);
@@ -245,7 +239,7 @@ FreeDropResult RunFreeDrop(const geom::PadBody& body, const rft::StressLaw3D& la
   result.gravity_work_J = m * g * (z_C0 - end.p_WC.z());
   result.final_tilt_deg = units::RadToDeg(TiltFromVertical(end.R_WB));
   result.horizontal_travel_m = (end.p_WC.head<2>() - xy_C0).norm();
-  result.solver = integrator.summary();
+  result.solver = run.summary().solver;
   return result;
 }
 

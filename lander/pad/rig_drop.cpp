@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "lander/integ/hybrid_run.h"
+
 namespace touchdown::pad {
 
 namespace {
@@ -80,6 +82,7 @@ RigDropResult RunRigDrop(const RigDropInput& in, const VerticalSoilResponse& res
     gv[1] = y[kVelocity];
   };
   integ::CvodeIntegrator integrator(kStateSize, rhs, options.integrator, roots);
+  integ::HybridRun run(integrator);
 
   // Approach: free flight from a clearance chosen so the pad arrives at the requested speed.
   const double v_td = in.impact_speed_m_s;
@@ -87,11 +90,9 @@ RigDropResult RunRigDrop(const RigDropInput& in, const VerticalSoilResponse& res
   Eigen::VectorXd y(kStateSize);
   if (clearance > 0.0) {
     y << -clearance, std::sqrt(v_td * v_td - 2.0 * g * clearance), 0.0, 0.0;
-    integrator.Reset(0.0, y);
-    const integ::AdvanceResult r = integrator.AdvanceTo(10.0 * std::sqrt(2.0 * clearance / g) + 1.0);
-    if (r.status != integ::AdvanceStatus::kFoundRoot || r.roots_found[0] == 0)
-      throw integ::IntegrationFailure("touchdown was not reached during the approach");
-    y = integrator.state();
+    run.Start(0.0, y);
+    y = run.AdvanceToRoot(10.0 * std::sqrt(2.0 * clearance / g) + 1.0, 0,
+                          "touchdown was not reached during the approach");
   } else {
     y << 0.0, v_td, 0.0, 0.0;
   }
@@ -99,7 +100,7 @@ RigDropResult RunRigDrop(const RigDropInput& in, const VerticalSoilResponse& res
   y[kDepth] = 0.0;
   y[kWork] = 0.0;
   y[kAccretion] = 0.0;
-  integrator.Reset(0.0, y);
+  run.Start(0.0, y);
 
   RigDropResult result;
   result.impact_energy_J = 0.5 * m * y[kVelocity] * y[kVelocity];
@@ -111,27 +112,25 @@ RigDropResult RunRigDrop(const RigDropInput& in, const VerticalSoilResponse& res
   record(0.0, y, 0.0);
 
   // Stroke: sample until the velocity root.
-  const double dt = 1.0 / options.sample_rate_hz;
-  double t_stop = -1.0;
-  long k = 1;
-  while (t_stop < 0.0) {
-    const double t_out = k * dt;
-    if (t_out > options.max_stroke_duration_s)
-      throw integ::IntegrationFailure("the pad did not stop within " +
-                                      std::to_string(options.max_stroke_duration_s) + " s");
-    const integ::AdvanceResult r = integrator.AdvanceTo(t_out);
-    Eigen::VectorXd s = integrator.state();
-    if (r.status == integ::AdvanceStatus::kFoundRoot && r.roots_found[1] != 0) {
-      t_stop = r.t;
-      s[kVelocity] = 0.0;  // the root: exactly at rest
-      // At the stop v = 0: F_c = F + m_a dv/dt (the grains still push while the pad halts).
-      record(t_stop, s, RigContactForce(in, response, s[kDepth], 0.0));
-      y = s;
-    } else if (r.status == integ::AdvanceStatus::kReachedTime) {
-      record(t_out, s, RigContactForce(in, response, s[kDepth], s[kVelocity]));
-      ++k;
-    }  // else: the touchdown root again (grazing the surface); go on to the same output time
-  }
+  integ::HybridPhase stroke;
+  stroke.sample_rate_hz = options.sample_rate_hz;
+  stroke.end_s = options.max_stroke_duration_s;
+  stroke.end = integ::RunEnd::kFailPastEnd;
+  stroke.failure = "the pad did not stop within " + std::to_string(options.max_stroke_duration_s) + " s";
+  integ::HybridCallbacks stroke_calls;
+  stroke_calls.sample = [&](double t, const Eigen::VectorXd& s) {
+    record(t, s, RigContactForce(in, response, s[kDepth], s[kVelocity]));
+  };
+  stroke_calls.event = [&](double t, const std::vector<int>& found, Eigen::VectorXd& s) {
+    if (found[1] == 0) return integ::EventAction::kContinue;  // the touchdown root again (grazing the surface)
+    s[kVelocity] = 0.0;  // the root: exactly at rest
+    // At the stop v = 0: F_c = F + m_a dv/dt (the grains still push while the pad halts).
+    record(t, s, RigContactForce(in, response, s[kDepth], 0.0));
+    return integ::EventAction::kStop;
+  };
+  const integ::HybridOutcome stop = run.Run(stroke, stroke_calls);
+  const double t_stop = stop.t;
+  y = stop.y;
   result.time_to_rest_s = t_stop;
   result.final_penetration_m = y[kDepth];
   result.dissipated_energy_J = y[kWork];
@@ -139,24 +138,24 @@ RigDropResult RunRigDrop(const RigDropInput& in, const VerticalSoilResponse& res
   result.gravity_work_J = weight * y[kDepth];
   result.mean_conversion_rate_W = t_stop > 0.0 ? result.impact_energy_J / t_stop : 0.0;
 
-  // Rest: the soil carries the weight; integrate on to show nothing creeps. Reset restarts
-  // CVODE's counters, so the stroke's are kept first.
-  const integ::IntegratorSummary stroke = integrator.summary();
+  // Rest: the soil carries the weight; integrate on to show nothing creeps.
   resting = true;
-  integrator.Reset(t_stop, y);
-  const double t_end = t_stop + options.rest_duration_s;
-  for (k = static_cast<long>(std::floor(t_stop / dt)) + 1; k * dt <= t_end; ++k) {
-    integrator.AdvanceTo(k * dt);
-    const Eigen::VectorXd& s = integrator.state();
-    record(k * dt, s, std::min(response.StaticCapacity(std::max(s[kDepth], 0.0)), weight));
-  }
-  if (t_end > integrator.time()) integrator.AdvanceTo(t_end);
-  result.rest_creep_m = integrator.state()[kDepth] - result.final_penetration_m;
-  result.solver = integrator.summary();
-  result.solver.steps += stroke.steps;
-  result.solver.rhs_evaluations += stroke.rhs_evaluations;
-  result.solver.root_evaluations += stroke.root_evaluations;
-  result.solver.error_test_failures += stroke.error_test_failures;
+  run.Restart(t_stop, y);
+  const double dt = 1.0 / options.sample_rate_hz;
+  integ::HybridPhase rest;
+  rest.sample_rate_hz = options.sample_rate_hz;
+  rest.first_sample = static_cast<long>(std::floor(t_stop / dt)) + 1;
+  rest.end_s = t_stop + options.rest_duration_s;
+  rest.end = integ::RunEnd::kIntegrateToEnd;
+  integ::HybridCallbacks rest_calls;
+  rest_calls.sample = [&](double t, const Eigen::VectorXd& s) {
+    record(t, s, std::min(response.StaticCapacity(std::max(s[kDepth], 0.0)), weight));
+  };
+  // A pad that loses its capacity sinks and stops again: the rest goes on through its events.
+  rest_calls.event = [](double, const std::vector<int>&, Eigen::VectorXd&) { return integ::EventAction::kContinue; };
+  const integ::HybridOutcome end = run.Run(rest, rest_calls);
+  result.rest_creep_m = end.y[kDepth] - result.final_penetration_m;
+  result.solver = run.summary().solver;
   return result;
 }
 

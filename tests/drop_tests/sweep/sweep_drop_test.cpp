@@ -20,7 +20,7 @@
 #include "drop_tests/sweep/sweep_drop.h"
 #include "drop_tests/sweep/sweep_export.h"
 #include "rft/input_error.h"
-#include "tests/lander/multibody/lander_test_support.h"
+#include "tests/drop_tests/scenario/lander_test_support.h"
 
 namespace touchdown::sweep {
 namespace {

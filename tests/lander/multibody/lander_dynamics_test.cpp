@@ -6,7 +6,7 @@
 
 #include "lander/multibody/lander_dynamics.h"
 #include "lander/multibody/lander_simulation.h"
-#include "tests/lander/multibody/lander_test_support.h"
+#include "tests/lander/multibody/paper_lander.h"
 
 namespace touchdown::lander {
 namespace {
@@ -38,8 +38,7 @@ Momenta ComputeMomenta(const LanderModel& m, const StateLayout& L, const Eigen::
 }
 
 TEST(LanderDynamics, FreeFlightConservesEnergyAndMomentum) {
-  scenario::LanderScenario sc = test::CoarseScenario("lander_case_A");
-  scenario::LanderSetup setup = scenario::BuildLanderSetup(sc);
+  test::PaperLander setup = test::MakePaperLander('A');
   // High above the ground, tumbling, pads spinning about their own joints.
   setup.initial.p_WB.z() = 100.0;
   setup.initial.w_WB_W = Eigen::Vector3d(1.5, -2.0, 3.0);

@@ -1,5 +1,5 @@
 #pragma once
-// Shared set-up of the lander tests: the paper's scenarios with a coarser pad mesh so the whole
+// Shared set-up of the lander scenario tests: the paper's scenarios with a coarser pad mesh so the whole
 // suite stays fast. Resolution: 16 segments around the rim (a few hundred triangles per pad,
 // against about 2k in data/ and the benchmark); every check below compares runs at the same
 // resolution, so the mesh size cancels.

@@ -1,0 +1,312 @@
+#include "lander/multibody/lander_hybrid.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace touchdown::lander {
+
+namespace {
+// Root functions per pad: [0] depth (touchdown, rising); free pad: [1] sink rate, [2] / [3] speed
+// below the capture speed / the soil ramp speed while submerged (capture); held pad: [1..3] lift /
+// sink / slide (release); all but [0] falling.
+constexpr int kPadRoots = 4;
+// Per leg: [0..1] crushable absorber events (falling).
+constexpr int kLegRoots = 2;
+constexpr int kNumRoots = kNumLegs * (kPadRoots + kLegRoots) + 1;
+constexpr int kTipRoot = kNumRoots - 1;
+int PadRoot(int leg, int k) { return kPadRoots * leg + k; }
+int LegRoot(int leg, int k) { return kNumLegs * kPadRoots + kLegRoots * leg + k; }
+// A pad whose joint centre moves slower than this is kinematically at rest (numerical zero,
+// e.g. the fourth pad once three held pads have stopped a rigid-legged lander).
+constexpr double kAtRestSpeed = 1e-10;
+
+bool IsCrushable(const LanderModel& m, const StateLayout& L, int i) {
+  return L.stroke_slot[i] >= 0 && m.legs[i].absorber->kind == ShockAbsorber::Kind::kCrushable;
+}
+
+struct HoldCheck {
+  double lift = 0.0;    // vertical reaction (>= 0 to hold)
+  double sink = 0.0;    // vertical capacity - reaction (>= 0 to hold)
+  double slide = 0.0;   // horizontal capacity - |horizontal reaction| (>= 0 to hold)
+  Eigen::Vector3d slide_direction = Eigen::Vector3d::Zero();
+};
+
+HoldCheck CheckHold(const LanderModel& model, const rft::Terrain& terrain, int i, const PadFrame& f,
+                    const rft::ContactWrench& reaction) {
+  HoldCheck h;
+  h.lift = reaction.force_W.z();
+  h.sink = QuasiStaticWrench(model, terrain, i, f, Eigen::Vector3d(0, 0, -1)).force_W.z() - h.lift;
+  Eigen::Vector3d horizontal(reaction.force_W.x(), reaction.force_W.y(), 0.0);
+  const double load = horizontal.norm();
+  if (load > 0.0) {
+    h.slide_direction = -horizontal / load;  // the load pushes the pad against the reaction
+    const rft::ContactWrench cap = QuasiStaticWrench(model, terrain, i, f, h.slide_direction);
+    h.slide = -cap.force_W.dot(h.slide_direction) - load;
+  } else {
+    h.slide = QuasiStaticWrench(model, terrain, i, f, Eigen::Vector3d(1, 0, 0)).force_W.head<2>().norm();
+  }
+  return h;
+}
+
+}  // namespace
+
+void LanderHybrid::Derivative(Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::VectorXd> ydot) {
+  EvaluateLander(model_, L_, terrain_, modes_, y, &eval_, &data_);
+  StateDerivative(L_, y, eval_, ydot);
+}
+
+void LanderHybrid::Roots(Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::VectorXd> g) {
+  g.setOnes();
+  bool need_forces = false;
+  for (int i = 0; i < kNumLegs; ++i)
+    need_forces |= modes_.pad[i] == PadMode::kHeld || (IsCrushable(model_, L_, i) && modes_.stroke[i] == StrokeMode::kLocked);
+  if (need_forces) EvaluateLander(model_, L_, terrain_, modes_, y, &root_eval_, &data_);
+  const LanderPose pose = need_forces ? root_eval_.pose : ComputePose(model_, L_, y);
+  for (int i = 0; i < kNumLegs; ++i) {
+    const PadFrame& f = pose.pads[i];
+    g[PadRoot(i, 0)] = PadDepth(model_, terrain_, i, f);
+    if (modes_.pad[i] == PadMode::kFree) {
+      g[PadRoot(i, 1)] = -f.v_WJ_W.z();  // sink rate
+      // Slow capture: a submerged pad whose joint centre has slowed below the capture speed.
+      g[PadRoot(i, 2)] = g[PadRoot(i, 0)] > 0.0 ? f.v_WJ_W.norm() - options_.capture_speed_m_s : 1.0;
+      // ... and again at the soil's ramp speed, where a pad whose earlier capture was undone
+      // has slowed down once more.
+      g[PadRoot(i, 3)] = g[PadRoot(i, 0)] > 0.0 ? f.v_WJ_W.norm() - kSoilRampSpeed : 1.0;
+    } else {
+      const HoldCheck h = CheckHold(model_, terrain_, i, f, root_eval_.soil[i]);
+      g[PadRoot(i, 1)] = h.lift;
+      g[PadRoot(i, 2)] = h.sink;
+      g[PadRoot(i, 3)] = h.slide;
+    }
+    if (IsCrushable(model_, L_, i)) {
+      const ShockAbsorber& ab = *model_.legs[i].absorber;
+      if (modes_.stroke[i] == StrokeMode::kFree) {
+        g[LegRoot(i, 0)] = y[L_.stroke_rate(i)];
+        g[LegRoot(i, 1)] = ab.stroke_limit_m - y[L_.stroke(i)];
+      } else if (modes_.stroke[i] == StrokeMode::kLocked) {
+        g[LegRoot(i, 0)] = ab.crush_force_N - root_eval_.leg_force_N[i];
+      }
+    }
+  }
+  g[kTipRoot] = StabilityMargin(model_, L_, y);
+}
+
+integ::RootSpec LanderHybrid::RootFunctions() {
+  integ::RootSpec roots;
+  roots.count = kNumRoots;
+  roots.function = [this](double, Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::VectorXd> g) { Roots(y, g); };
+  roots.directions.assign(kNumRoots, -1);
+  for (int i = 0; i < kNumLegs; ++i) roots.directions[PadRoot(i, 0)] = +1;
+  return roots;
+}
+
+void LanderHybrid::Record(double t, const Eigen::VectorXd& s) {
+  LanderEvaluation e;
+  EvaluateLander(model_, L_, terrain_, modes_, s, &e);
+  LanderSample x;
+  x.t_s = t;
+  x.p_WB = e.pose.p_WB;
+  x.v_WB_W = e.pose.v_WB_W;
+  x.w_WB_W = e.pose.w_WB_W;
+  x.attitude = BodyAttitude(e.pose.R_WB);
+  x.a_WB_W = e.u_dot.head<3>();
+  for (int i = 0; i < kNumLegs; ++i) {
+    x.pad_depth_m[i] = PadDepth(model_, terrain_, i, e.pose.pads[i]);
+    x.pad_force_W[i] = e.soil[i].force_W;
+    x.stroke_m[i] = L_.stroke_slot[i] >= 0 ? s[L_.stroke(i)] : 0.0;
+    x.leg_force_N[i] = e.leg_force_N[i];
+    x.pad_held[i] = modes_.pad[i] == PadMode::kHeld;
+    result_.peak_pad_force_N[i] = std::max(result_.peak_pad_force_N[i], e.soil[i].force_W.norm());
+    if (modes_.pad[i] == PadMode::kHeld)
+      result_.max_held_drift_m = std::max(result_.max_held_drift_m, (e.pose.pads[i].p_WJ - held_at_[i]).norm());
+  }
+  x.kinetic_J = KineticEnergy(model_, L_, s);
+  x.potential_J = PotentialEnergy(model_, L_, s);
+  x.dissipated_J = s[L_.work()];
+  result_.max_tilt_rad = std::max(result_.max_tilt_rad, x.attitude.tilt_rad);
+  if (result_.first_touchdown_s)
+    result_.max_body_deceleration_m_s2 = std::max(result_.max_body_deceleration_m_s2, x.a_WB_W.z());
+  result_.trace.push_back(x);
+}
+
+// A pad already on the surface at release (touchdown_speed_m_s: 0 places the lowest pad there)
+// touches down at t = 0: CVODE never reports a root that holds at the start.
+void LanderHybrid::TouchdownsAtRelease(const Eigen::VectorXd& y) {
+  constexpr double kTouchingAtRelease_m = 1e-9;  // rounding of the placement, far below any sinkage
+  const LanderPose pose = ComputePose(model_, L_, y);
+  for (int i = 0; i < kNumLegs; ++i)
+    if (PadDepth(model_, terrain_, i, pose.pads[i]) >= -kTouchingAtRelease_m) {
+      result_.events.push_back({0.0, "touchdown", i});
+      result_.touchdown_time_s[i] = 0.0;
+      result_.first_touchdown_s = 0.0;
+    }
+}
+
+void LanderHybrid::Touchdowns(double t, const std::vector<int>& found) {
+  for (int i = 0; i < kNumLegs; ++i)
+    if (found[PadRoot(i, 0)] != 0) {
+      result_.events.push_back({t, "touchdown", i});
+      if (!result_.touchdown_time_s[i]) result_.touchdown_time_s[i] = t;
+      if (!result_.first_touchdown_s) result_.first_touchdown_s = t;
+    }
+}
+
+// The mode changes the roots ask for: captures, releases, crushing, lock and bottoming. Returns
+// true if any mode changed; `fresh` marks the pads just captured.
+bool LanderHybrid::SwitchModes(double t, const std::vector<int>& found, const LanderPose& pose,
+                               std::array<bool, kNumLegs>& fresh) {
+  bool changed = false;
+  for (int i = 0; i < kNumLegs; ++i) {
+    const PadFrame& f = pose.pads[i];
+    const bool stops_sinking = found[PadRoot(i, 1)] != 0 && f.v_WJ_W.head<2>().norm() <= options_.capture_speed_m_s;
+    const bool slowed_down = found[PadRoot(i, 2)] != 0 || found[PadRoot(i, 3)] != 0;
+    if (modes_.pad[i] == PadMode::kFree && (stops_sinking || slowed_down) && PadDepth(model_, terrain_, i, f) > 0.0) {
+      modes_.pad[i] = PadMode::kHeld;
+      fresh[i] = changed = true;
+    } else if (modes_.pad[i] == PadMode::kHeld &&
+               (found[PadRoot(i, 1)] != 0 || found[PadRoot(i, 2)] != 0 || found[PadRoot(i, 3)] != 0)) {
+      // The reaction left the capacity: the pad starts to move in the direction the load
+      // pushes it (lift-off up, sinking down, sliding along the horizontal load).
+      modes_.pad[i] = PadMode::kFree;
+      if (found[PadRoot(i, 1)] != 0) {
+        result_.events.push_back({t, "release_liftoff", i});
+      } else if (found[PadRoot(i, 2)] != 0) {
+        result_.events.push_back({t, "release_sink", i});
+      } else {
+        result_.events.push_back({t, "release_slide", i});
+      }
+      changed = true;
+    }
+    if (IsCrushable(model_, L_, i)) {
+      if (modes_.stroke[i] == StrokeMode::kLocked && found[LegRoot(i, 0)] != 0) {
+        modes_.stroke[i] = StrokeMode::kFree;
+        result_.events.push_back({t, "crush", i});
+        changed = true;
+      } else if (modes_.stroke[i] == StrokeMode::kFree && found[LegRoot(i, 1)] != 0) {
+        modes_.stroke[i] = StrokeMode::kBottomed;
+        result_.events.push_back({t, "bottom", i});
+        changed = true;
+      } else if (modes_.stroke[i] == StrokeMode::kFree && found[LegRoot(i, 0)] != 0) {
+        modes_.stroke[i] = StrokeMode::kLocked;
+        result_.events.push_back({t, "lock", i});
+        changed = true;
+      }
+    }
+  }
+  return changed;
+}
+
+// A capture is offered to every slow submerged pad at once: the pads share the body's load, so
+// one pad alone may fail its hold check (and be released) where all of them together hold.
+void LanderHybrid::OfferCaptures(const LanderPose& pose, std::array<bool, kNumLegs>& fresh) {
+  if (std::none_of(fresh.begin(), fresh.end(), [](bool b) { return b; })) return;
+  for (int i = 0; i < kNumLegs; ++i)
+    if (modes_.pad[i] == PadMode::kFree && PadDepth(model_, terrain_, i, pose.pads[i]) > 0.0 &&
+        pose.pads[i].v_WJ_W.norm() <= options_.capture_speed_m_s) {
+      modes_.pad[i] = PadMode::kHeld;
+      fresh[i] = true;
+    }
+}
+
+// Projects the speeds onto the holds; pads kinematically stopped by the others' holds are held too.
+void LanderHybrid::HoldStoppedPads(Eigen::VectorXd& y, std::array<bool, kNumLegs>& fresh) {
+  for (int pass = 0; pass < kNumLegs; ++pass) {
+    y[L_.work()] += ProjectOntoConstraints(model_, L_, modes_, y);
+    const LanderPose p = ComputePose(model_, L_, y);
+    bool more = false;
+    for (int i = 0; i < kNumLegs; ++i)
+      if (modes_.pad[i] == PadMode::kFree && PadDepth(model_, terrain_, i, p.pads[i]) > 0.0 &&
+          p.pads[i].v_WJ_W.norm() < kAtRestSpeed) {
+        modes_.pad[i] = PadMode::kHeld;
+        fresh[i] = more = true;
+      }
+    if (!more) break;
+  }
+}
+
+// Holds every captured pad can keep; releases the others, worst first.
+void LanderHybrid::SettleHolds(double t, Eigen::VectorXd& s, const std::array<bool, kNumLegs>& fresh,
+                               const Eigen::VectorXd& before) {
+  for (int iter = 0; iter < 3 * kNumLegs; ++iter) {
+    LanderEvaluation e;
+    EvaluateLander(model_, L_, terrain_, modes_, s, &e);
+    int worst = -1;
+    double worst_value = 0.0;
+    HoldCheck worst_check;
+    for (int i = 0; i < kNumLegs; ++i) {
+      if (modes_.pad[i] != PadMode::kHeld) continue;
+      const HoldCheck h = CheckHold(model_, terrain_, i, e.pose.pads[i], e.soil[i]);
+      const double scale = std::max(1.0, std::abs(e.soil[i].force_W.z()));
+      const double v = std::min({h.lift, h.sink, h.slide}) / scale;
+      if (v < -1e-9 && v < worst_value) worst = i, worst_value = v, worst_check = h;
+    }
+    if (worst < 0) return;
+    modes_.pad[worst] = PadMode::kFree;
+    const double m_check = std::min({worst_check.lift, worst_check.sink, worst_check.slide});
+    if (fresh[worst]) {
+      // The capture cannot hold: undo it (the pad goes on moving under RFT).
+      s.segment(L_.nq, L_.nu) = before.segment(L_.nq, L_.nu);
+      s[L_.work()] = before[L_.work()] + ProjectOntoConstraints(model_, L_, modes_, s);
+    } else {
+      const char* kind = m_check == worst_check.lift   ? "release_liftoff"
+                         : m_check == worst_check.sink ? "release_sink"
+                                                       : "release_slide";
+      result_.events.push_back({t, kind, worst});
+    }
+  }
+  throw integ::IntegrationFailure("lander: pad holds did not settle at t = " + std::to_string(t));
+}
+
+// The capture events of the pads that stay held; true if every pad is held.
+bool LanderHybrid::RecordCaptures(double t, const Eigen::VectorXd& y, const std::array<bool, kNumLegs>& fresh) {
+  const LanderPose after = ComputePose(model_, L_, y);
+  bool all_held = true;
+  for (int i = 0; i < kNumLegs; ++i) {
+    if (modes_.pad[i] == PadMode::kHeld && fresh[i]) {
+      held_at_[i] = after.pads[i].p_WJ;
+      result_.events.push_back({t, "capture", i});
+    }
+    all_held &= modes_.pad[i] == PadMode::kHeld;
+  }
+  return all_held;
+}
+
+integ::EventAction LanderHybrid::OnEvent(double t, const std::vector<int>& found, Eigen::VectorXd& y) {
+  Record(t, y);  // the state at the event, in the old modes (peak forces before a capture)
+  const LanderPose pose = ComputePose(model_, L_, y);
+  Touchdowns(t, found);
+  if (found[kTipRoot] != 0) {
+    result_.tipped_over = true;
+    result_.events.push_back({t, "tip_over", -1});
+    return integ::EventAction::kStop;
+  }
+  const Eigen::VectorXd before = y;
+  std::array<bool, kNumLegs> fresh{};
+  if (!SwitchModes(t, found, pose, fresh)) return integ::EventAction::kContinue;
+  OfferCaptures(pose, fresh);
+  NormalizeQuaternions(L_, y);
+  HoldStoppedPads(y, fresh);
+  SettleHolds(t, y, fresh, before);
+  result_.capture_loss_J += y[L_.work()] - before[L_.work()];
+  const bool all_held = RecordCaptures(t, y, fresh);
+  Record(t, y);
+  if (!(all_held && options_.stop_at_rest)) return integ::EventAction::kRestart;
+  // Static from here on: the loads no longer change, so the holds stay valid.
+  result_.rest_time_s = t;
+  result_.events.push_back({t, "rest", -1});
+  return integ::EventAction::kStop;
+}
+
+void LanderHybrid::Finish(double t, const Eigen::VectorXd& y) {
+  const LanderPose fin = ComputePose(model_, L_, y);
+  for (int i = 0; i < kNumLegs; ++i) result_.final_penetration_m[i] = PadDepth(model_, terrain_, i, fin.pads[i]);
+  result_.final_attitude = BodyAttitude(fin.R_WB);
+  result_.final_kinetic_J = KineticEnergy(model_, L_, y);
+  result_.final_potential_J = PotentialEnergy(model_, L_, y);
+  result_.dissipated_J = y[L_.work()];
+  result_.end_time_s = t;
+  result_.final_state = y;
+}
+
+}  // namespace touchdown::lander

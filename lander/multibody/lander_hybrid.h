@@ -1,0 +1,55 @@
+#pragma once
+// The lander as a hybrid system, for the hybrid-run loop (lander/integ/hybrid_run.h): its modes,
+// the right-hand side and root functions in those modes, the trace it records, and what each
+// event does to the modes and the state (lander_simulation.h lists the events). Internal to
+// SimulateLander.
+#include <Eigen/Core>
+#include <array>
+#include <vector>
+
+#include "lander/integ/hybrid_run.h"
+#include "lander/multibody/lander_dynamics.h"
+#include "lander/multibody/lander_simulation.h"
+
+namespace touchdown::lander {
+
+// One lander run as the hybrid loop sees it (integ::HybridRun): the modes, the right-hand side and
+// root functions in those modes, the trace, and what each event does to the modes and the state.
+class LanderHybrid {
+ public:
+  LanderHybrid(const LanderModel& model, const rft::Terrain& terrain, const LanderRunOptions& options,
+               LanderRunResult& result)
+      : model_(model), L_(model), terrain_(terrain), options_(options), result_(result) {
+    for (int i = 0; i < kNumLegs; ++i) modes_.stroke[i] = StrokeMode::kLocked;
+    eval_.u_dot = Eigen::VectorXd::Zero(L_.nu);
+  }
+  const StateLayout& layout() const { return L_; }
+  void Derivative(Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::VectorXd> ydot);
+  void Roots(Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::VectorXd> g);
+  integ::RootSpec RootFunctions();
+  void Record(double t, const Eigen::VectorXd& s);
+  void TouchdownsAtRelease(const Eigen::VectorXd& y);
+  integ::EventAction OnEvent(double t, const std::vector<int>& found, Eigen::VectorXd& y);
+  bool at_rest() const { return result_.rest_time_s.has_value(); }
+  void Finish(double t, const Eigen::VectorXd& y);
+
+ private:
+  void Touchdowns(double t, const std::vector<int>& found);
+  bool SwitchModes(double t, const std::vector<int>& found, const LanderPose& pose, std::array<bool, kNumLegs>& fresh);
+  void OfferCaptures(const LanderPose& pose, std::array<bool, kNumLegs>& fresh);
+  void HoldStoppedPads(Eigen::VectorXd& y, std::array<bool, kNumLegs>& fresh);
+  void SettleHolds(double t, Eigen::VectorXd& s, const std::array<bool, kNumLegs>& fresh, const Eigen::VectorXd& before);
+  bool RecordCaptures(double t, const Eigen::VectorXd& y, const std::array<bool, kNumLegs>& fresh);
+
+  const LanderModel& model_;
+  const StateLayout L_;
+  const rft::Terrain& terrain_;
+  const LanderRunOptions& options_;
+  LanderRunResult& result_;
+  LanderModes modes_;
+  LanderData data_;  // scratch of the right-hand side and the root functions
+  LanderEvaluation eval_, root_eval_;
+  std::array<Eigen::Vector3d, kNumLegs> held_at_;
+};
+
+}  // namespace touchdown::lander

@@ -1,0 +1,34 @@
+#pragma once
+// The paper's soils built in code for the lander/ tests (no catalogue): FJS-1 in vacuum as in
+// data/soils/fjs1_lp.yaml and data/soils/fjs1_cp.yaml, zeta from Agarwal et al. 2023's scaling
+// (zeta_N_cm3: agarwal2023), and its li2013 law without effect terms.
+#include <cmath>
+#include <memory>
+
+#include "rft/soil.h"
+#include "rft/stress_law_3d_factory.h"
+#include "rft/units.h"
+
+namespace touchdown::test {
+
+inline rft::SoilParameters Fjs1(bool closely_packed) {
+  rft::SoilParameters s;
+  s.name = closely_packed ? "fjs1_cp" : "fjs1_lp";
+  s.atmosphere = "vacuum";                                          // data/soils/fjs1_{lp,cp}.yaml
+  s.reference_gravity_m_s2 = 9.81;                                  // data/soils/fjs1_{lp,cp}.yaml
+  s.bulk_density_kg_m3 = closely_packed ? 1770.0 : 1540.0;          // data/soils/fjs1_{cp,lp}.yaml
+  s.internal_friction_angle_rad = (closely_packed ? 44.0 : 37.0) * units::kDeg;  // data/soils/fjs1_{cp,lp}.yaml
+  s.zeta_N_m3 = rft::AgarwalScalingXi(s.bulk_density_kg_m3, s.reference_gravity_m_s2,
+                                      std::tan(s.internal_friction_angle_rad));
+  return s;
+}
+
+// The li2013 law of a soil, with no effect terms (as a scenario without a model file).
+inline std::shared_ptr<const rft::StressLaw3D> Fjs1Law(bool closely_packed, double gravity_m_s2 = 9.81) {
+  const rft::SoilParameters soil = Fjs1(closely_packed);
+  rft::EffectTerms3D terms;
+  terms.inertial_density_kg_m3 = soil.bulk_density_kg_m3;
+  return rft::MakeStressLaw3D("li2013", soil, gravity_m_s2, terms);
+}
+
+}  // namespace touchdown::test
