@@ -29,7 +29,6 @@ Eigen::VectorXd Pack(const StateLayout& L, const LanderInitialState& s) {
     y.segment<3>(L.w_P(i)) = s.w_WB_W;  // the pads turn with the body at release
     if (L.stroke_slot[i] >= 0) y[L.stroke(i)] = s.stroke_m[i];
   }
-  (void)model;
   return y;
 }
 

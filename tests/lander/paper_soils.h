@@ -14,7 +14,7 @@ namespace touchdown::test {
 inline rft::SoilParameters Fjs1(bool closely_packed) {
   rft::SoilParameters s;
   s.name = closely_packed ? "fjs1_cp" : "fjs1_lp";
-  s.atmosphere = "vacuum";                                          // data/soils/fjs1_{lp,cp}.yaml
+  s.atmosphere = rft::Atmosphere::kVacuum;                                        // data/soils/fjs1_{lp,cp}.yaml
   s.reference_gravity_m_s2 = 9.81;                                  // data/soils/fjs1_{lp,cp}.yaml
   s.bulk_density_kg_m3 = closely_packed ? 1770.0 : 1540.0;          // data/soils/fjs1_{cp,lp}.yaml
   s.internal_friction_angle_rad = (closely_packed ? 44.0 : 37.0) * units::kDeg;  // data/soils/fjs1_{cp,lp}.yaml
