@@ -31,7 +31,7 @@ inline void ClippedAreaGradient(double area, const double d[3], double grad[3]) 
   grad[i] = sign * f * (2.0 / d[i] - 1.0 / a - 1.0 / b);
 }
 
-// ---- Depth law z_ref (z / z_ref)^p (StressLaw3D::depth_law, p != 1) ----------------------------
+// ---- Depth law z_ref (z / z_ref)^p (PadLevelTerms::depth, p != 1) ----------------------------
 //
 // The integrals int d^p dA and int d^p r dA over a triangle on which d >= 0 is linear. Cutting it
 // at the middle vertex depth along the level line gives two "fans": triangles whose apex P0 has
@@ -195,20 +195,20 @@ template <bool kPower, bool kAreaMoment>
 // split into many triangles) form a run: the law is called once per run and only the run's depth
 // integral and first moment are summed (the result is the same sum, grouped differently).
 //
-// Pad-level terms of the law (stress_law_3d.h): kPower selects the depth law's exact z^p
+// Pad-level terms (rft/pad_level_terms.h): kPower selects the depth law's exact z^p
 // integration (p = 1 keeps the linear path, compiled separately, so the linear law runs exactly
 // as without it); kPadTerms compiles in the penetration, compaction and footprint bookkeeping
-// (off for laws without them: the plain contact pays nothing for it); `compaction` sums the CompactionStress area integrals apart and scales them by
-// exp(-z_pad / d_c) at the end; `footprint` sums the projected downward-facing area and its rate.
+// (off without them: the plain contact pays nothing for it); `compaction` sums the compaction
+// stress's area integrals apart and scales them by exp(-z_pad / d_c) at the end; `footprint` sums the projected downward-facing area and its rate.
 namespace {
 template <bool kPower, bool kPadTerms>
 ContactWrench ContactWrenchImpl(const SurfaceElements& elements, const PadKinematics& kinematics,
-                                const GroundSurface& ground, const StressLaw3D& law, bool compaction,
-                                bool footprint) {
+                                const GroundSurface& ground, const StressLaw3D& law, const PadLevelTerms& pad_terms,
+                                bool compaction, bool footprint) {
   ContactWrench out;
   const int count = elements.size();
   if (count == 0) return out;
-  const DepthLaw depth_law = law.depth_law();
+  const DepthLaw depth_law = pad_terms.depth;
   const double exponent = depth_law.exponent;
   const double depth_scale = kPower ? std::pow(depth_law.reference_m, 1.0 - exponent) : 1.0;
 
@@ -342,7 +342,7 @@ ContactWrench ContactWrenchImpl(const SurfaceElements& elements, const PadKinema
         moment += r_W.cross(sigma_dyn);
       }
       if (kPadTerms && compaction) {
-        const Eigen::Vector3d sigma_comp = r.weight * law.CompactionStress(n_W, v_W);
+        const Eigen::Vector3d sigma_comp = r.weight * pad_terms.CompactionStress(n_W, v_W);
         compaction_force += r.area * sigma_comp;
         compaction_moment += r_W.cross(sigma_comp);
       }
@@ -395,7 +395,7 @@ ContactWrench ContactWrenchImpl(const SurfaceElements& elements, const PadKinema
             run_sigma_dyn = weight * law.DynamicStress(n_W, v0);
             run_dynamic = !is_zero(run_sigma_dyn);
             if (kPadTerms && compaction) {
-              run_sigma_comp = weight * law.CompactionStress(n_W, v0);
+              run_sigma_comp = weight * pad_terms.CompactionStress(n_W, v0);
               run_compaction = !is_zero(run_sigma_comp);
             }
           }
@@ -486,7 +486,7 @@ ContactWrench ContactWrenchImpl(const SurfaceElements& elements, const PadKinema
   }
   flush();
   if (kPadTerms && compaction) {
-    const double decay = std::exp(-penetration / law.compaction_decay_depth_m());
+    const double decay = std::exp(-penetration / pad_terms.compaction_depth_m);
     force += decay * compaction_force;
     moment += decay * compaction_moment;
   }
@@ -505,21 +505,22 @@ ContactWrench ContactWrenchImpl(const SurfaceElements& elements, const PadKinema
 }  // namespace
 
 ContactWrench ComputeContactWrench(const SurfaceElements& elements, const PadKinematics& kinematics,
-                                   const GroundSurface& ground, const StressLaw3D& law) {
-  const bool compaction = law.has_compaction();
-  const bool footprint = law.added_mass_density_kg_m3() > 0.0;
-  const bool power = law.depth_law().exponent != 1.0;
+                                   const GroundSurface& ground, const StressLaw3D& law,
+                                   const PadLevelTerms& pad_terms) {
+  const bool compaction = pad_terms.has_compaction();
+  const bool footprint = pad_terms.has_added_mass();
+  const bool power = pad_terms.has_power_depth();
   if (!compaction && !footprint && !power && elements.size() > 0 && elements.HasBounds() &&
       !law.has_dynamic_stress() && IsSpinning(elements, kinematics)) {
     if (const auto* plane = dynamic_cast<const PlaneGround*>(&ground))
       return RotatingWrenchOverPlane(elements, kinematics, *plane, law);
   }
   if (compaction || footprint) {
-    return power ? ContactWrenchImpl<true, true>(elements, kinematics, ground, law, compaction, footprint)
-                 : ContactWrenchImpl<false, true>(elements, kinematics, ground, law, compaction, footprint);
+    return power ? ContactWrenchImpl<true, true>(elements, kinematics, ground, law, pad_terms, compaction, footprint)
+                 : ContactWrenchImpl<false, true>(elements, kinematics, ground, law, pad_terms, compaction, footprint);
   }
-  return power ? ContactWrenchImpl<true, false>(elements, kinematics, ground, law, false, false)
-               : ContactWrenchImpl<false, false>(elements, kinematics, ground, law, false, false);
+  return power ? ContactWrenchImpl<true, false>(elements, kinematics, ground, law, pad_terms, false, false)
+               : ContactWrenchImpl<false, false>(elements, kinematics, ground, law, pad_terms, false, false);
 }
 
 }  // namespace touchdown::rft

@@ -9,6 +9,7 @@
 #include "drop_tests/io/output_path.h"
 #include "drop_tests/drop/free_drop_output.h"
 #include "footpad_geom/axisymmetric_intrusion.h"
+#include "lander/pad/effect_soil_response.h"
 #include "rft/ground.h"
 #include "rft/input_error.h"
 #include "rft/physical_limits.h"
@@ -73,7 +74,7 @@ double EffectiveZeta(const rft::SoilParameters& soil, const DropConditions& c) {
   return effective.ZetaAtGravity(c.gravity_m_s2);
 }
 
-DropConditions DropConditionsFor(const DropRow& row, const model::EffectTerms& effects, const std::string& effects_source,
+DropConditions DropConditionsFor(const DropRow& row, const rft::EffectTerms& effects, const std::string& effects_source,
                                  const std::string& context) {
   DropConditions c;
   c.impact_speed_m_s = row.impact_speed_m_s;
@@ -110,7 +111,7 @@ PadDrop SimulateDrop(const io::PadSpec& pad, const rft::SoilParameters& soil, co
     const std::string law_name = conditions.law_3d.empty() ? soil.rft_law_3d : conditions.law_3d;
     const auto law = model::MakeEffectLaw3D(law_name, effective, conditions.gravity_m_s2, conditions.effects, drop.in_air(),
                                      conditions.effects_source);
-    drop.law_3d = std::string(law->name());
+    drop.law_3d = law.name();
     pad::FreeDropInput in;
     in.impact_speed_m_s = conditions.impact_speed_m_s;
     in.horizontal_speed_m_s = conditions.horizontal_speed_m_s;
@@ -120,8 +121,8 @@ PadDrop SimulateDrop(const io::PadSpec& pad, const rft::SoilParameters& soil, co
     in.gravity_m_s2 = conditions.gravity_m_s2;
     const geom::PadBody& body = pad.body;
     const pad::FreeDropResult r = drop.mass_kg == body.mass_kg
-                                 ? RunFreeDrop(body, *law, rft::PlaneGround(), in, options.free)
-                                 : RunFreeDrop(WithMass(body, drop.mass_kg), *law, rft::PlaneGround(), in, options.free);
+                                 ? RunFreeDrop(body, law, rft::PlaneGround(), in, options.free)
+                                 : RunFreeDrop(WithMass(body, drop.mass_kg), law, rft::PlaneGround(), in, options.free);
     drop.result = AsRigResult(r);
     drop.free = r;
     return drop;
@@ -131,8 +132,8 @@ PadDrop SimulateDrop(const io::PadSpec& pad, const rft::SoilParameters& soil, co
   if (!options.intrusion) own.emplace(pad.profile, rft::Li2013Law{});
   const geom::AxisymmetricIntrusion& intrusion = options.intrusion ? *options.intrusion : *own;
   // With no effect terms this is exactly the quasi-static RFT force F_z(d; zeta).
-  model::SoilResponseInputs inputs{drop.zeta_effective_N_m3, soil.bulk_density_kg_m3, drop.in_air(), conditions.effects};
-  std::optional<model::EffectSoilResponse> response;
+  pad::SoilResponseInputs inputs{drop.zeta_effective_N_m3, soil.bulk_density_kg_m3, drop.in_air(), conditions.effects};
+  std::optional<pad::EffectSoilResponse> response;
   try {
     response.emplace(intrusion, inputs);
   } catch (const InputError& e) {

@@ -10,6 +10,7 @@
 #include <Eigen/Dense>
 
 #include "drop_tests/io/student_t.h"
+#include "lander/pad/effect_soil_response.h"
 #include "rft/input_error.h"
 #include "rft/units.h"
 #include "rft/stress_law.h"
@@ -68,18 +69,18 @@ void Bounds(const FitProblem&, const Layout& L, Eigen::VectorXd* lo, Eigen::Vect
 
 // The model's recorded trace for one drop, or nullopt when the simulation fails.
 std::optional<dataset::DatasetTrace> Recorded(const FitProblem& p, const FitDrop& d, const ModelValues& m,
-                                     const model::EffectTerms& terms) {
+                                     const rft::EffectTerms& terms) {
   const rft::SoilParameters& soil = p.soils[d.soil];
   rft::SoilParameters s = soil;
   s.zeta_N_m3 = m.zeta_N_m3[d.soil];
-  const model::SoilResponseInputs in{s.ZetaAtGravity(d.gravity_m_s2), soil.bulk_density_kg_m3, d.in_air, terms};
+  const pad::SoilResponseInputs in{s.ZetaAtGravity(d.gravity_m_s2), soil.bulk_density_kg_m3, d.in_air, terms};
   try {
-    const model::EffectSoilResponse response(*p.intrusions[d.pad], in);
+    const pad::EffectSoilResponse response(*p.intrusions[d.pad], in);
     const pad::RigDropResult r = pad::RunRigDrop({d.mass_kg, d.gravity_m_s2, d.speed_m_s}, response, p.rig);
     dataset::DatasetTrace out;
     const dataset::DatasetTrace& tr = *d.trace;
     for (size_t i = 0; i < tr.size(); ++i) {
-      const model::RecordedSample rs = model::RecordedAt(r, d.gravity_m_s2, terms, tr.t_s[i]);
+      const pad::RecordedSample rs = pad::RecordedAt(r, d.gravity_m_s2, terms, tr.t_s[i]);
       out.t_s.push_back(tr.t_s[i]);
       out.penetration_m.push_back(rs.penetration_m);
       out.force_N.push_back(rs.force_N);
@@ -133,7 +134,7 @@ class Objective {
   // Weighted residuals (as minimised) and the unweighted ones (for the information criterion).
   void Evaluate(const Eigen::VectorXd& x, Eigen::VectorXd* r, Eigen::VectorXd* unweighted = nullptr) {
     const ModelValues m = Unscale(p_, L_, x);
-    const model::EffectTerms terms = model::MakeEffectTerms(m.effects);
+    const rft::EffectTerms terms = model::MakeEffectTerms(m.effects);
     r->resize(rows_);
     if (unweighted) unweighted->resize(rows_);
     ParallelFor(static_cast<int>(train_.size()), p_.threads, [&](int k) {
@@ -171,7 +172,7 @@ Layout MakeLayout(const FitProblem& p, const std::vector<std::string>& ids) {
 }
 }  // namespace
 
-model::EffectTerms FitResult::terms() const { return model::MakeEffectTerms(effects); }
+rft::EffectTerms FitResult::terms() const { return model::MakeEffectTerms(effects); }
 
 FitProblem MakeFitProblem(const dataset::Dataset& ds, const std::vector<bool>& held_out, int threads) {
   FitProblem p;

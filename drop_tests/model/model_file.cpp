@@ -123,19 +123,19 @@ std::vector<Effect> ModelEffects(const ModelFile& m) {
   return ParseEffects(io::YamlFields(m.effects, m.source.empty() ? std::string("model ") + m.name : m.source, "effects"));
 }
 
-EffectTerms ModelEffectTerms(const ModelFile& m) {
+rft::EffectTerms ModelEffectTerms(const ModelFile& m) {
   return MakeEffectTerms(ModelEffects(m), m.source.empty() ? "model " + m.name : m.source);
 }
 
-std::unique_ptr<rft::StressLaw3D> MakeModelStressLaw3D(std::string_view law, const rft::SoilParameters& soil,
-                                                       double gravity_m_s2, const ModelFile* model) {
-  if (!model) return MakeEffectLaw3D(law, soil, gravity_m_s2, EffectTerms{}, soil.atmosphere == "air", "");
+rft::SoilContactModel MakeModelStressLaw3D(std::string_view law, const rft::SoilParameters& soil,
+                                           double gravity_m_s2, const ModelFile* model) {
+  if (!model) return MakeEffectLaw3D(law, soil, gravity_m_s2, rft::EffectTerms{}, soil.atmosphere == "air", "");
   return MakeEffectLaw3D(law, ApplyModel(*model, soil), gravity_m_s2, ModelEffectTerms(*model),
                          soil.atmosphere == "air", model->source.empty() ? "model " + model->name : model->source);
 }
 
 nlohmann::json ModelEffectsJson(const ModelFile& m) {
-  const EffectTerms terms = ModelEffectTerms(m);
+  const rft::EffectTerms terms = ModelEffectTerms(m);
   nlohmann::json applied = nlohmann::json::array(), skipped = nlohmann::json::object();
   for (const auto& [id, why] : EffectsNotApplied(terms, /*in_air=*/true)) skipped[id] = why;
   for (const std::string& id : ActiveEffects(terms))

@@ -357,8 +357,8 @@ LanderSetup BuildLanderSetup(const LanderScenario& sc) {
     out.terrain.patches.push_back(patch);
   }
   for (const std::string& name : soil_names)
-    out.terrain.soils.push_back({name, std::shared_ptr<const rft::StressLaw3D>(model::MakeModelStressLaw3D(
-                                           sc.ground.law, io::LoadSoil(name), g, sc.model ? &*sc.model : nullptr))});
+    out.terrain.soils.push_back(
+        {name, model::MakeModelStressLaw3D(sc.ground.law, io::LoadSoil(name), g, sc.model ? &*sc.model : nullptr)});
   return out;
 }
 
@@ -525,7 +525,7 @@ void WriteResolvedLanderScenario(const LanderScenario& s, const std::string& pat
     const rft::SoilParameters p = s.model ? model::ApplyModel(*s.model, io::LoadSoil(soil.name)) : io::LoadSoil(soil.name);
     y << YAML::BeginMap << YAML::Key << "name" << YAML::Value << p.name << YAML::Key << "zeta_N_cm3_at_gravity"
       << YAML::Value << units::ZetaToN_cm3(p.ZetaAtGravity(s.gravity_m_s2)) << YAML::Key << "atmosphere" << YAML::Value
-      << p.atmosphere << YAML::Key << "law_3d" << YAML::Value << std::string(soil.law->name()) << YAML::EndMap;
+      << p.atmosphere << YAML::Key << "law_3d" << YAML::Value << soil.contact.name() << YAML::EndMap;
   }
   y << YAML::EndSeq;
   if (s.model) y << YAML::Key << "model" << YAML::Value << file(s.model->source);

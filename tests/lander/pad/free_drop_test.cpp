@@ -24,10 +24,10 @@ TEST(FreeDrop, VerticalLevelDropMatchesTheRigDrop) {
   // the 3D contact on the revolved mesh instead of the profile integral.
   const io::PadSpec pad = io::LoadPad("flat");
   const rft::SoilParameters soil = io::LoadSoil("fjs1_lp");
-  const auto law = rft::MakeStressLaw3D("li2013", soil, 9.81);
+  const rft::SoilContactModel law = rft::MakeSoilContactModel("li2013", soil, 9.81, {});
   FreeDropInput in;
   in.impact_speed_m_s = 1.0;
-  const FreeDropResult free = RunFreeDrop(pad.body, *law, rft::PlaneGround(), in);
+  const FreeDropResult free = RunFreeDrop(pad.body, law, rft::PlaneGround(), in);
   drop::DropConditions c;
   c.impact_speed_m_s = 1.0;
   const RigDropResult rig = drop::RunPadDrop(pad, soil, c).result;
@@ -47,11 +47,11 @@ TEST(FreeDrop, SidewaysDropTravelsAndStaysLevelEnough) {
   const io::PadSpec spec = io::LoadPad("curved");
   const geom::PadBody body = geom::RevolveProfileToBody(spec.profile, 24, spec.mass_kg,
                                                         Eigen::Vector3d(0.0, 0.0, spec.profile.thickness_m()));
-  const auto law = rft::MakeStressLaw3D("li2013", io::LoadSoil("fjs1_lp"), 9.81);
+  const rft::SoilContactModel law = rft::MakeSoilContactModel("li2013", io::LoadSoil("fjs1_lp"), 9.81, {});
   FreeDropInput in;
   in.impact_speed_m_s = 1.0;
   in.horizontal_speed_m_s = 0.2;
-  const FreeDropResult r = RunFreeDrop(body, *law, rft::PlaneGround(), in);
+  const FreeDropResult r = RunFreeDrop(body, law, rft::PlaneGround(), in);
   EXPECT_GT(r.horizontal_travel_m, 1e-3);
   EXPECT_GT(r.trace.back().horizontal_m, 0.0);
   EXPECT_GT(r.final_penetration_m, 0.0);
@@ -74,20 +74,20 @@ TEST(FreeDrop, ScaledTolerancesMatchATighterRunInFewerSteps) {
   const io::PadSpec spec = io::LoadPad("flat");
   const geom::PadBody body = geom::RevolveProfileToBody(spec.profile, 48, spec.mass_kg,
                                                         Eigen::Vector3d(0.0, 0.0, spec.profile.thickness_m()));
-  const auto law = rft::MakeStressLaw3D("li2013", io::LoadSoil("fjs1_lp"), 9.81);
+  const rft::SoilContactModel law = rft::MakeSoilContactModel("li2013", io::LoadSoil("fjs1_lp"), 9.81, {});
   FreeDropInput in;
   in.impact_speed_m_s = 1.0;
   in.tilt_rad = 5.0 * std::numbers::pi / 180.0;
   const FreeDropOptions defaults;
-  const FreeDropResult r = RunFreeDrop(body, *law, rft::PlaneGround(), in, defaults);
+  const FreeDropResult r = RunFreeDrop(body, law, rft::PlaneGround(), in, defaults);
   FreeDropOptions tight = defaults;
   tight.integrator.rtol = 1e-10;
   tight.integrator.max_num_steps = 200000;
-  const FreeDropResult ref = RunFreeDrop(body, *law, rft::PlaneGround(), in, tight);
+  const FreeDropResult ref = RunFreeDrop(body, law, rft::PlaneGround(), in, tight);
   FreeDropOptions scalar = defaults;
   scalar.integrator.component_atol.assign(14, 1e-11);
   scalar.integrator.max_num_steps = 200000;
-  const FreeDropResult old = RunFreeDrop(body, *law, rft::PlaneGround(), in, scalar);
+  const FreeDropResult old = RunFreeDrop(body, law, rft::PlaneGround(), in, scalar);
   std::printf("[ tolerances ] steps: scaled %ld, scalar 1e-11 %ld, rtol 1e-10 %ld; depth %.7f / %.7f mm, "
               "tilt %.6f / %.6f deg\n",
               r.solver.steps, old.solver.steps, ref.solver.steps, 1e3 * r.final_penetration_m,
@@ -105,10 +105,10 @@ TEST(FreeDrop, ScaledTolerancesMatchATighterRunInFewerSteps) {
 // first sample, whatever the root finder's rounding.
 TEST(FreeDrop, FirstSampleIsAtTheSurface) {
   const io::PadSpec pad = io::LoadPad("flat");
-  const auto law = rft::MakeStressLaw3D("li2013", io::LoadSoil("fjs1_lp"), 9.81);
+  const rft::SoilContactModel law = rft::MakeSoilContactModel("li2013", io::LoadSoil("fjs1_lp"), 9.81, {});
   FreeDropInput in;
   in.impact_speed_m_s = 1.0;
-  const FreeDropResult r = RunFreeDrop(pad.body, *law, rft::PlaneGround(), in);
+  const FreeDropResult r = RunFreeDrop(pad.body, law, rft::PlaneGround(), in);
   ASSERT_FALSE(r.trace.empty());
   EXPECT_EQ(r.trace.front().t_s, 0.0);
   EXPECT_EQ(r.trace.front().penetration_m, 0.0);
@@ -141,7 +141,7 @@ class ShippedPadFreeDrop : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(ShippedPadFreeDrop, LandsAtEveryTiltAboutXAndY) {
   const io::PadSpec pad = io::LoadPad(GetParam());
-  const auto law = rft::MakeStressLaw3D("li2013", io::LoadSoil("fjs1_lp"), 9.81);
+  const rft::SoilContactModel law = rft::MakeSoilContactModel("li2013", io::LoadSoil("fjs1_lp"), 9.81, {});
   int drops = 0;
   for (const double speed : {0.5, 1.0, 2.0}) {
     for (const double tilt_deg : {0.0, 5.0, 10.0, 20.0, 30.0}) {
@@ -154,7 +154,7 @@ TEST_P(ShippedPadFreeDrop, LandsAtEveryTiltAboutXAndY) {
         in.tilt_rad = tilt_deg * std::numbers::pi / 180.0;
         in.tilt_axis = axis;
         FreeDropResult r;
-        ASSERT_NO_THROW(r = RunFreeDrop(pad.body, *law, rft::PlaneGround(), in));
+        ASSERT_NO_THROW(r = RunFreeDrop(pad.body, law, rft::PlaneGround(), in));
         ++drops;
         EXPECT_GT(r.final_penetration_m, 0.0);
         EXPECT_LT(r.final_penetration_m, 0.1);
