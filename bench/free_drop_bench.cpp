@@ -22,7 +22,7 @@ void RunFreeDrop(benchmark::State& state, const char* pad_name, double tilt_deg,
   const geom::PadBody body = geom::RevolveProfileToBody(pad.profile, kRimSegments, pad.mass_kg,
                                                         Eigen::Vector3d(0.0, 0.0, pad.profile.thickness_m()));
   const rft::SoilParameters soil = touchdown::io::LoadSoil("fjs1_lp");
-  const rft::SoilContactModel law = rft::MakeSoilContactModel("li2013", soil, 9.81, {});
+  const rft::SoilContactModel law = rft::MakeSoilContactModel(rft::LawKind::kLi2013, soil, 9.81, {});
   const rft::PlaneGround ground;
   touchdown::pad::FreeDropInput in;
   in.impact_speed_m_s = 1.0;

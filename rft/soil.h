@@ -2,6 +2,8 @@
 // Fixed parameters of a granular bed (model data, never per-step state). SI inside.
 #include <string>
 
+#include "rft/law_kind.h"
+
 namespace touchdown::rft {
 
 struct SoilParameters {
@@ -15,7 +17,7 @@ struct SoilParameters {
   std::string atmosphere = "vacuum";      // "vacuum" or "air"
 
   // 3D laws (rft/stress_law_3d_factory.h). All defaulted, so 2D users are unaffected.
-  std::string rft_law_3d = "li2013";  // preferred 3D law: "li2013" or "agarwal2023"
+  LawKind rft_law_3d = LawKind::kLi2013;  // preferred 3D law
   // Intruder-surface friction coefficient mu_surf [-] of Agarwal et al. 2023 (only that law).
   // 0.4 is an assumption (a typical sand-on-metal value), not a measured pad value.
   double surface_friction_coefficient = 0.4;

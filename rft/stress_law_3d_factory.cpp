@@ -31,19 +31,19 @@ void Require(bool ok, const SoilParameters& soil, const std::string& field, cons
 
 }  // namespace
 
-std::unique_ptr<StressLaw3D> MakeStressLaw3D(std::string_view law, const SoilParameters& soil,
+std::unique_ptr<StressLaw3D> MakeStressLaw3D(LawKind law, const SoilParameters& soil,
                                              double gravity_m_s2) {
   if (!(std::isfinite(gravity_m_s2) && gravity_m_s2 > 0.0))
     throw MakeInputError(SoilLabel(soil), "gravity_m_s2", "must be positive (" + Str(gravity_m_s2) + ")");
 
   std::unique_ptr<StressLaw3D> quasi_static;
-  if (law == "li2013") {
+  if (law == LawKind::kLi2013) {
     Require(std::isfinite(soil.zeta_N_m3) && soil.zeta_N_m3 > 0.0, soil, "zeta",
             "li2013 needs a positive zeta", soil.zeta_N_m3);
     Require(std::isfinite(soil.reference_gravity_m_s2) && soil.reference_gravity_m_s2 > 0.0, soil,
             "reference_gravity_m_s2", "must be positive", soil.reference_gravity_m_s2);
     quasi_static = std::make_unique<Li2013TreersLaw>(soil.ZetaAtGravity(gravity_m_s2));
-  } else if (law == "agarwal2023") {
+  } else {  // LawKind::kAgarwal2023
     Require(std::isfinite(soil.bulk_density_kg_m3) && soil.bulk_density_kg_m3 > 0.0, soil,
             "bulk_density_kg_m3", "agarwal2023 needs the bulk density", soil.bulk_density_kg_m3);
     const double phi = soil.internal_friction_angle_rad;
@@ -54,9 +54,6 @@ std::unique_ptr<StressLaw3D> MakeStressLaw3D(std::string_view law, const SoilPar
     const double xi_n = AgarwalScalingXi(soil.bulk_density_kg_m3, gravity_m_s2, std::tan(phi));
     Require(xi_n > 0.0, soil, "internal_friction_angle", "gives a non-positive xi_n", xi_n);
     quasi_static = std::make_unique<Agarwal2023Law>(xi_n, soil.surface_friction_coefficient);
-  } else {
-    throw MakeInputError(SoilLabel(soil), "law",
-                         "unknown 3D stress law '" + std::string(law) + "' (expected li2013 or agarwal2023)");
   }
 
   if (!soil.dynamic_term) return quasi_static;
@@ -69,7 +66,7 @@ std::unique_ptr<StressLaw3D> MakeStressLaw3D(std::string_view law, const SoilPar
   return std::make_unique<DynamicTermLaw>(std::move(quasi_static), soil.dynamic_lambda, rho_c);
 }
 
-SoilContactModel MakeSoilContactModel(std::string_view law, const SoilParameters& soil, double gravity_m_s2,
+SoilContactModel MakeSoilContactModel(LawKind law, const SoilParameters& soil, double gravity_m_s2,
                                       const EffectTerms& terms) {
   Require(std::isfinite(terms.inertial_lambda) && terms.inertial_lambda >= 0.0, soil, "inertial_drag.lambda",
           "must be non-negative", terms.inertial_lambda);

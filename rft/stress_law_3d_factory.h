@@ -4,18 +4,19 @@
 #include <string_view>
 
 #include "rft/effect_terms.h"
+#include "rft/law_kind.h"
 #include "rft/soil.h"
 #include "rft/soil_contact_model.h"
 #include "rft/stress_law_3d.h"
 
 namespace touchdown::rft {
 
-// law: "li2013" (Li 2013 via Treers et al. 2021; needs zeta, scaled to gravity_m_s2 from the
-// soil's reference gravity) or "agarwal2023" (needs bulk density and internal friction angle;
+// law: kLi2013 (Li 2013 via Treers et al. 2021; needs zeta, scaled to gravity_m_s2 from the
+// soil's reference gravity) or kAgarwal2023 (needs bulk density and internal friction angle;
 // xi_n = rho g (894 mu^3 - 386 mu^2 + 89 mu), mu = tan(phi), and mu_surf). When the soil's
 // dynamic_term is on, the law is wrapped in DynamicTermLaw (lambda, rho_c). Throws InputError
-// on an unknown law name or missing/invalid soil data, naming the soil and the field.
-std::unique_ptr<StressLaw3D> MakeStressLaw3D(std::string_view law, const SoilParameters& soil,
+// on missing/invalid soil data, naming the soil and the field.
+std::unique_ptr<StressLaw3D> MakeStressLaw3D(LawKind law, const SoilParameters& soil,
                                              double gravity_m_s2);
 
 // The soil's law with the effect terms (rft/effect_terms.h) in their 3D form. The per-element
@@ -32,7 +33,7 @@ std::unique_ptr<StressLaw3D> MakeStressLaw3D(std::string_view law, const SoilPar
 // neutral terms the law is exactly the one above. The sensor offsets are not physics and are
 // ignored. Throws InputError naming the soil when a term's value is invalid or a term needs the
 // bulk density and the soil has none.
-SoilContactModel MakeSoilContactModel(std::string_view law, const SoilParameters& soil, double gravity_m_s2,
+SoilContactModel MakeSoilContactModel(LawKind law, const SoilParameters& soil, double gravity_m_s2,
                                       const EffectTerms& terms);
 
 }  // namespace touchdown::rft

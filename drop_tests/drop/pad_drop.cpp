@@ -108,7 +108,7 @@ PadDrop SimulateDrop(const io::PadSpec& pad, const rft::SoilParameters& soil, co
   if (free) {
     rft::SoilParameters effective = soil;
     if (conditions.zeta_N_m3) effective.zeta_N_m3 = *conditions.zeta_N_m3;
-    const std::string law_name = conditions.law_3d.empty() ? soil.rft_law_3d : conditions.law_3d;
+    const rft::LawKind law_name = conditions.law_3d.value_or(soil.rft_law_3d);
     const auto law = model::MakeEffectLaw3D(law_name, effective, conditions.gravity_m_s2, conditions.effects, drop.in_air(),
                                      conditions.effects_source);
     drop.law_3d = law.name();

@@ -36,7 +36,7 @@ struct DropConditions {
   std::string tilt_axis = "x";
   double horizontal_speed_m_s = 0.0;    // along +x of the world
   Eigen::Vector3d omega_W = Eigen::Vector3d::Zero();  // angular velocity at release [rad/s]
-  std::string law_3d;                   // free drop: "li2013" or "agarwal2023"; "" = the soil's rft_law_3d
+  std::optional<rft::LawKind> law_3d;   // free drop: the 3D law; none = the soil's rft_law_3d
   rft::EffectTerms effects;                  // default: none (quasi-static RFT)
   std::string effects_source;           // the model file the effects come from (for messages)
 

@@ -116,7 +116,7 @@ std::vector<std::pair<std::string, std::string>> EffectsNotApplied(const rft::Ef
   return out;
 }
 
-rft::SoilContactModel MakeEffectLaw3D(std::string_view law, const rft::SoilParameters& soil, double gravity_m_s2,
+rft::SoilContactModel MakeEffectLaw3D(rft::LawKind law, const rft::SoilParameters& soil, double gravity_m_s2,
                                       const rft::EffectTerms& t, bool in_air, const std::string& model_source) {
   rft::EffectTerms terms = t;
   if (!in_air) terms.gas_chi = terms.gas_c_N_s_m3 = 0.0;  // the gas cushion acts on beds in air only

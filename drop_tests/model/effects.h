@@ -84,7 +84,7 @@ std::vector<std::pair<std::string, std::string>> EffectsNotApplied(const rft::Ef
 // added_mass (rho = the soil's bulk density, as in the rig), rate_damping, compaction_peak,
 // depth_exponent, and gas_cushion when `in_air`. Throws InputError naming the soil and
 // `model_source` when an effect needs the bulk density and the soil has none.
-rft::SoilContactModel MakeEffectLaw3D(std::string_view law, const rft::SoilParameters& soil, double gravity_m_s2,
+rft::SoilContactModel MakeEffectLaw3D(rft::LawKind law, const rft::SoilParameters& soil, double gravity_m_s2,
                                       const rft::EffectTerms& terms, bool in_air, const std::string& model_source);
 
 // The `effects:` mapping of a model file: {id: {param_key: value, ...}, ...}; optional

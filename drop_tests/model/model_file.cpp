@@ -127,7 +127,7 @@ rft::EffectTerms ModelEffectTerms(const ModelFile& m) {
   return MakeEffectTerms(ModelEffects(m), m.source.empty() ? "model " + m.name : m.source);
 }
 
-rft::SoilContactModel MakeModelStressLaw3D(std::string_view law, const rft::SoilParameters& soil,
+rft::SoilContactModel MakeModelStressLaw3D(rft::LawKind law, const rft::SoilParameters& soil,
                                            double gravity_m_s2, const ModelFile* model) {
   if (!model) return MakeEffectLaw3D(law, soil, gravity_m_s2, rft::EffectTerms{}, soil.atmosphere == "air", "");
   return MakeEffectLaw3D(law, ApplyModel(*model, soil), gravity_m_s2, ModelEffectTerms(*model),

@@ -166,7 +166,11 @@ LanderScenario LoadLanderScenario(const std::string& path) {
   s.ground.slope_rad = g.Has("slope_deg") ? g.NonNegative("slope_deg") * kDeg : 0.0;
   if (s.ground.slope_rad >= 80 * kDeg) g.Fail("slope_deg", "must be below 80");
   s.ground.downhill_azimuth_rad = g.Has("downhill_azimuth_deg") ? g.Number("downhill_azimuth_deg") * kDeg : 0.0;
-  s.ground.law = g.StringOr("law", "li2013");
+  try {
+    s.ground.law = rft::ParseLawKind(g.StringOr("law", "li2013"), "", "");
+  } catch (const InputError& e) {
+    g.Fail("law", e.what());
+  }
   s.ground.default_soil = g.String("soil");
   auto check_soil = [&](const io::YamlFields& where, const std::string& key, const std::string& soil) {
     try {
@@ -518,7 +522,7 @@ void WriteResolvedLanderScenario(const LanderScenario& s, const std::string& pat
   y << YAML::Key << "ground" << YAML::Value << YAML::BeginMap << YAML::Key << "height_m" << YAML::Value
     << s.ground.height_m << YAML::Key << "slope_deg" << YAML::Value << s.ground.slope_rad / kDeg << YAML::Key
     << "downhill_azimuth_deg" << YAML::Value << s.ground.downhill_azimuth_rad / kDeg << YAML::Key << "law"
-    << YAML::Value << s.ground.law << YAML::Key << "soil" << YAML::Value << s.ground.default_soil;
+    << YAML::Value << std::string(rft::LawKindName(s.ground.law)) << YAML::Key << "soil" << YAML::Value << s.ground.default_soil;
   const LanderSetup setup = BuildLanderSetup(s);
   y << YAML::Key << "soils" << YAML::Value << YAML::BeginSeq;
   for (const rft::TerrainSoil& soil : setup.terrain.soils) {

@@ -89,8 +89,8 @@ SoilParameters Soil() {
 }
 
 TEST(RftEffectFactory, NeutralTermsGiveTheBaseLawExactly) {
-  const auto base = MakeStressLaw3D("li2013", Soil(), 1.62);
-  const SoilContactModel model = MakeSoilContactModel("li2013", Soil(), 1.62, EffectTerms{});
+  const auto base = MakeStressLaw3D(LawKind::kLi2013, Soil(), 1.62);
+  const SoilContactModel model = MakeSoilContactModel(LawKind::kLi2013, Soil(), 1.62, EffectTerms{});
   const StressLaw3D* same = model.law.get();
   EXPECT_EQ(same->name(), base->name());
   EXPECT_EQ(model.name(), "li2013");
@@ -109,7 +109,7 @@ TEST(RftEffectFactory, StacksTheTermsAndTheModelsInertialTermReplacesTheSoils) {
   t.damping_c_N_s_m3 = kC;
   t.gas_chi = kChi;
   t.gas_c_N_s_m3 = kCg;
-  const auto law = MakeSoilContactModel("li2013", s, 9.81, t).law;
+  const auto law = MakeSoilContactModel(LawKind::kLi2013, s, 9.81, t).law;
   EXPECT_EQ(law->name(), "li2013+dynamic+gas_cushion+rate_damping");
   const double v = 1.3;
   // Straight down on a horizontal face: every term along +z, summed.
@@ -118,7 +118,7 @@ TEST(RftEffectFactory, StacksTheTermsAndTheModelsInertialTermReplacesTheSoils) {
   t = EffectTerms{};
   t.inertial_lambda = 1.0;
   s.bulk_density_kg_m3 = 0.0;
-  EXPECT_THROW(MakeSoilContactModel("li2013", s, 9.81, t), InputError);
+  EXPECT_THROW(MakeSoilContactModel(LawKind::kLi2013, s, 9.81, t), InputError);
 }
 
 }  // namespace

@@ -376,7 +376,7 @@ TEST(RftPadEffectTerms, FactorySetsThemOnlyWhenTheyAct) {
   t.compaction_k_kg_m3 = 0.0;
   t.compaction_depth_m = 0.002;
   t.added_mass_ca = 0.0;
-  const SoilContactModel neutral = MakeSoilContactModel("li2013", soil, 9.81, t);
+  const SoilContactModel neutral = MakeSoilContactModel(LawKind::kLi2013, soil, 9.81, t);
   EXPECT_EQ(neutral.name(), "li2013");
   EXPECT_EQ(neutral.pad_terms.depth.exponent, 1.0);
   EXPECT_EQ(neutral.pad_terms.compaction_k_kg_m3, 0.0);
@@ -385,7 +385,7 @@ TEST(RftPadEffectTerms, FactorySetsThemOnlyWhenTheyAct) {
   t.depth_exponent = 1.3;
   t.compaction_k_kg_m3 = 1e4;
   t.added_mass_ca = 0.5;
-  const SoilContactModel model = MakeSoilContactModel("li2013", soil, 9.81, t);
+  const SoilContactModel model = MakeSoilContactModel(LawKind::kLi2013, soil, 9.81, t);
   EXPECT_EQ(model.name(), "li2013+depth_exponent+compaction_peak+added_mass");
   EXPECT_EQ(model.law->name(), "li2013");
   EXPECT_EQ(model.pad_terms.depth.exponent, 1.3);
@@ -397,15 +397,15 @@ TEST(RftPadEffectTerms, FactorySetsThemOnlyWhenTheyAct) {
   t.damping_c_N_s_m3 = 100.0;
   t.gas_chi = 0.1;
   t.inertial_lambda = 1.0;
-  const SoilContactModel all = MakeSoilContactModel("li2013", soil, 9.81, t);
+  const SoilContactModel all = MakeSoilContactModel(LawKind::kLi2013, soil, 9.81, t);
   EXPECT_EQ(all.name(), "li2013+dynamic+gas_cushion+rate_damping+depth_exponent+compaction_peak+added_mass");
   EXPECT_EQ(all.pad_terms.added_mass_density_kg_m3, 800.0);
   t.compaction_depth_m = 0.0;
-  EXPECT_THROW(MakeSoilContactModel("li2013", soil, 9.81, t), InputError);
+  EXPECT_THROW(MakeSoilContactModel(LawKind::kLi2013, soil, 9.81, t), InputError);
   t.compaction_depth_m = 0.002;
   soil.bulk_density_kg_m3 = 0.0;
   t.inertial_lambda = 0.0;
-  EXPECT_THROW(MakeSoilContactModel("li2013", soil, 9.81, t), InputError);
+  EXPECT_THROW(MakeSoilContactModel(LawKind::kLi2013, soil, 9.81, t), InputError);
 }
 
 // All three pad-level terms at once on a level flat disc pushed straight down: the power-law

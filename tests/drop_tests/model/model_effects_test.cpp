@@ -267,7 +267,7 @@ TEST_F(ModelEffects, LanderSoilsCarryTheModelsTerms) {
   EXPECT_EQ(scenario::BuildLanderSetup(s).terrain.soils[0].contact.name(), "li2013");
   rft::SoilParameters air = io::LoadSoil("fjs1_lp");
   air.atmosphere = "air";
-  EXPECT_EQ(MakeModelStressLaw3D("li2013", air, 9.81, &*s.model).name(), "li2013+gas_cushion");
+  EXPECT_EQ(MakeModelStressLaw3D(rft::LawKind::kLi2013, air, 9.81, &*s.model).name(), "li2013+gas_cushion");
 }
 
 // compare --model with a sensor_offset: the simulated traces are shifted as the rig records them

@@ -24,7 +24,7 @@ TEST(FreeDrop, VerticalLevelDropMatchesTheRigDrop) {
   // the 3D contact on the revolved mesh instead of the profile integral.
   const io::PadSpec pad = io::LoadPad("flat");
   const rft::SoilParameters soil = io::LoadSoil("fjs1_lp");
-  const rft::SoilContactModel law = rft::MakeSoilContactModel("li2013", soil, 9.81, {});
+  const rft::SoilContactModel law = rft::MakeSoilContactModel(rft::LawKind::kLi2013, soil, 9.81, {});
   FreeDropInput in;
   in.impact_speed_m_s = 1.0;
   const FreeDropResult free = RunFreeDrop(pad.body, law, rft::PlaneGround(), in);
@@ -47,7 +47,7 @@ TEST(FreeDrop, SidewaysDropTravelsAndStaysLevelEnough) {
   const io::PadSpec spec = io::LoadPad("curved");
   const geom::PadBody body = geom::RevolveProfileToBody(spec.profile, 24, spec.mass_kg,
                                                         Eigen::Vector3d(0.0, 0.0, spec.profile.thickness_m()));
-  const rft::SoilContactModel law = rft::MakeSoilContactModel("li2013", io::LoadSoil("fjs1_lp"), 9.81, {});
+  const rft::SoilContactModel law = rft::MakeSoilContactModel(rft::LawKind::kLi2013, io::LoadSoil("fjs1_lp"), 9.81, {});
   FreeDropInput in;
   in.impact_speed_m_s = 1.0;
   in.horizontal_speed_m_s = 0.2;
@@ -74,7 +74,7 @@ TEST(FreeDrop, ScaledTolerancesMatchATighterRunInFewerSteps) {
   const io::PadSpec spec = io::LoadPad("flat");
   const geom::PadBody body = geom::RevolveProfileToBody(spec.profile, 48, spec.mass_kg,
                                                         Eigen::Vector3d(0.0, 0.0, spec.profile.thickness_m()));
-  const rft::SoilContactModel law = rft::MakeSoilContactModel("li2013", io::LoadSoil("fjs1_lp"), 9.81, {});
+  const rft::SoilContactModel law = rft::MakeSoilContactModel(rft::LawKind::kLi2013, io::LoadSoil("fjs1_lp"), 9.81, {});
   FreeDropInput in;
   in.impact_speed_m_s = 1.0;
   in.tilt_rad = 5.0 * std::numbers::pi / 180.0;
@@ -105,7 +105,7 @@ TEST(FreeDrop, ScaledTolerancesMatchATighterRunInFewerSteps) {
 // first sample, whatever the root finder's rounding.
 TEST(FreeDrop, FirstSampleIsAtTheSurface) {
   const io::PadSpec pad = io::LoadPad("flat");
-  const rft::SoilContactModel law = rft::MakeSoilContactModel("li2013", io::LoadSoil("fjs1_lp"), 9.81, {});
+  const rft::SoilContactModel law = rft::MakeSoilContactModel(rft::LawKind::kLi2013, io::LoadSoil("fjs1_lp"), 9.81, {});
   FreeDropInput in;
   in.impact_speed_m_s = 1.0;
   const FreeDropResult r = RunFreeDrop(pad.body, law, rft::PlaneGround(), in);
@@ -141,7 +141,7 @@ class ShippedPadFreeDrop : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(ShippedPadFreeDrop, LandsAtEveryTiltAboutXAndY) {
   const io::PadSpec pad = io::LoadPad(GetParam());
-  const rft::SoilContactModel law = rft::MakeSoilContactModel("li2013", io::LoadSoil("fjs1_lp"), 9.81, {});
+  const rft::SoilContactModel law = rft::MakeSoilContactModel(rft::LawKind::kLi2013, io::LoadSoil("fjs1_lp"), 9.81, {});
   int drops = 0;
   for (const double speed : {0.5, 1.0, 2.0}) {
     for (const double tilt_deg : {0.0, 5.0, 10.0, 20.0, 30.0}) {
