@@ -179,6 +179,45 @@ template <bool kPower, bool kAreaMoment>
 
 }  // namespace
 
+namespace {
+
+// The stresses of one normal class in translation (the same for every element with that normal),
+// cached per class by ContactWrenchImpl.
+struct ClassStress {
+  double nz;
+  bool leads, dynamic, compaction;
+  Eigen::Vector3d sigma, sigma_dyn, sigma_comp;
+};
+
+[[gnu::always_inline]] inline bool IsZero(const Eigen::Vector3d& a) {
+  return a.x() == 0.0 && a.y() == 0.0 && a.z() == 0.0;
+}
+
+// One step of the translation path: the stresses on elements of normal n_W (in W) moving at v_W,
+// weighted by how much they lead (0 at rest: no direction, no RFT stress). `leads` false leaves
+// the stresses as they were (the caller skips them).
+template <bool kPadTerms>
+[[gnu::always_inline]] inline void StressOfNormal(const StressLaw3D& law, const PadLevelTerms& pad_terms,
+                                                  bool compaction, const Eigen::Vector3d& n_W,
+                                                  const Eigen::Vector3d& v_W, double& nz, bool& leads, bool& dynamic,
+                                                  bool& has_compaction, Eigen::Vector3d& sigma,
+                                                  Eigen::Vector3d& sigma_dyn, Eigen::Vector3d& sigma_comp) {
+  nz = n_W.z();
+  const double speed2 = v_W.squaredNorm();
+  const double weight = speed2 > 0.0 ? LeadWeight(n_W.dot(v_W) / std::sqrt(speed2)) : 0.0;
+  leads = weight > 0.0;
+  if (!leads) return;
+  sigma = weight * law.StressPerDepth(n_W, v_W);
+  sigma_dyn = weight * law.DynamicStress(n_W, v_W);
+  dynamic = !IsZero(sigma_dyn);
+  if (kPadTerms && compaction) {
+    sigma_comp = weight * pad_terms.CompactionStress(n_W, v_W);
+    has_compaction = !IsZero(sigma_comp);
+  }
+}
+
+}  // namespace
+
 // Where the stress law is evaluated. Each submerged element gets one stress per unit depth,
 // evaluated with the velocity at the depth-weighted centroid r_c = int d r dA / int d dA of its
 // submerged part. Why this point: (1) v = v_WB + w x r is affine in r, so v(r_c) is exactly the
@@ -262,12 +301,6 @@ ContactWrench ContactWrenchImpl(const SurfaceElements& elements, const PadKinema
   double submerged_area = 0.0;
   int leading = 0;
 
-  auto lead_weight = [&](const Eigen::Vector3d& n_W, const Eigen::Vector3d& v_W) {
-    const double speed2 = v_W.squaredNorm();
-    if (!(speed2 > 0.0)) return 0.0;  // at rest: no direction, no RFT stress
-    return LeadWeight(n_W.dot(v_W) / std::sqrt(speed2));
-  };
-  auto is_zero = [](const Eigen::Vector3d& a) { return a.x() == 0.0 && a.y() == 0.0 && a.z() == 0.0; };
 
   // The current run (pure translation): its normal, whether it leads, its stresses, and the
   // sums of depth integral / depth moment / area / area moment (in B) of its submerged parts.
@@ -304,11 +337,6 @@ ContactWrench ContactWrenchImpl(const SurfaceElements& elements, const PadKinema
   };
 
   // Stresses per normal class in translation (SurfaceElements::normal_class), on the stack.
-  struct ClassStress {
-    double nz;
-    bool leads, dynamic, compaction;
-    Eigen::Vector3d sigma, sigma_dyn, sigma_comp;
-  };
   const bool classes = bounded && !spinning && elements.class_normal_B.cols() > 0;
   std::array<bool, SurfaceElements::kMaxNormalClasses> class_done;
   std::array<ClassStress, SurfaceElements::kMaxNormalClasses> class_stress;
@@ -387,18 +415,8 @@ ContactWrench ContactWrenchImpl(const SurfaceElements& elements, const PadKinema
           run_compaction = c.compaction;
         } else {
           const Eigen::Vector3d n_W = cls >= 0 ? rotate(Load(elements.class_normal_B.data() + 3 * cls)) : rotate(n_B);
-          run_nz = n_W.z();
-          const double weight = lead_weight(n_W, v0);
-          run_leads = weight > 0.0;
-          if (run_leads) {
-            run_sigma = weight * law.StressPerDepth(n_W, v0);
-            run_sigma_dyn = weight * law.DynamicStress(n_W, v0);
-            run_dynamic = !is_zero(run_sigma_dyn);
-            if (kPadTerms && compaction) {
-              run_sigma_comp = weight * pad_terms.CompactionStress(n_W, v0);
-              run_compaction = !is_zero(run_sigma_comp);
-            }
-          }
+          StressOfNormal<kPadTerms>(law, pad_terms, compaction, n_W, v0, run_nz, run_leads, run_dynamic,
+                                    run_compaction, run_sigma, run_sigma_dyn, run_sigma_comp);
           if (cls >= 0) {
             class_done[cls] = true;
             class_stress[cls] = {run_nz, run_leads, run_dynamic, run_compaction, run_sigma, run_sigma_dyn, run_sigma_comp};
