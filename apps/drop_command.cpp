@@ -67,7 +67,7 @@ void AddDropCommand(CLI::App& app) {
       c.tilt_axis = pad::ParseTiltAxis(args->tilt_axis, "command line");
       c.horizontal_speed_m_s = args->horizontal_speed_m_s;
       c.omega_W = Eigen::Vector3d(args->omega[0], args->omega[1], args->omega[2]);
-      c.law_3d = args->law;
+      c.law_3d = rft::ParseLawKind(args->law, "command line", "--law");
     } else if (args->tilt_deg != 0.0 || args->horizontal_speed_m_s != 0.0 ||
                args->omega != std::vector<double>{0.0, 0.0, 0.0}) {
       throw MakeInputError("command line", "--free",

@@ -70,7 +70,7 @@ void AddForceCommand(CLI::App& app) {
     const io::PadSpec pad = io::LoadPad(a->pad);
     rft::SoilParameters soil = io::LoadSoil(a->soil);
     if (a->zeta_N_cm3) soil.zeta_N_m3 = units::ZetaFromN_cm3(*a->zeta_N_cm3);
-    const std::unique_ptr<rft::StressLaw3D> law = rft::MakeStressLaw3D(a->law, soil, a->gravity_m_s2);
+    const std::unique_ptr<rft::StressLaw3D> law = rft::MakeStressLaw3D(rft::ParseLawKind(a->law, "command line", "--law"), soil, a->gravity_m_s2);
     k.p_WB = pad::PlaceAtDepth(pad.body, k.R_WB, a->depth_m);
     const rft::ContactWrench w = rft::ComputeContactWrench(pad.body.surface, k, rft::PlaneGround(), *law);
     const nlohmann::json out{

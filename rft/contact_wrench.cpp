@@ -31,7 +31,7 @@ inline void ClippedAreaGradient(double area, const double d[3], double grad[3]) 
   grad[i] = sign * f * (2.0 / d[i] - 1.0 / a - 1.0 / b);
 }
 
-// ---- Depth law z_ref (z / z_ref)^p (StressLaw3D::depth_law, p != 1) ----------------------------
+// ---- Depth law z_ref (z / z_ref)^p (PadLevelTerms::depth, p != 1) ----------------------------
 //
 // The integrals int d^p dA and int d^p r dA over a triangle on which d >= 0 is linear. Cutting it
 // at the middle vertex depth along the level line gives two "fans": triangles whose apex P0 has
@@ -179,6 +179,45 @@ template <bool kPower, bool kAreaMoment>
 
 }  // namespace
 
+namespace {
+
+// The stresses of one normal class in translation (the same for every element with that normal),
+// cached per class by ContactWrenchImpl.
+struct ClassStress {
+  double nz;
+  bool leads, dynamic, compaction;
+  Eigen::Vector3d sigma, sigma_dyn, sigma_comp;
+};
+
+[[gnu::always_inline]] inline bool IsZero(const Eigen::Vector3d& a) {
+  return a.x() == 0.0 && a.y() == 0.0 && a.z() == 0.0;
+}
+
+// One step of the translation path: the stresses on elements of normal n_W (in W) moving at v_W,
+// weighted by how much they lead (0 at rest: no direction, no RFT stress). `leads` false leaves
+// the stresses as they were (the caller skips them).
+template <bool kPadTerms>
+[[gnu::always_inline]] inline void StressOfNormal(const StressLaw3D& law, const PadLevelTerms& pad_terms,
+                                                  bool compaction, const Eigen::Vector3d& n_W,
+                                                  const Eigen::Vector3d& v_W, double& nz, bool& leads, bool& dynamic,
+                                                  bool& has_compaction, Eigen::Vector3d& sigma,
+                                                  Eigen::Vector3d& sigma_dyn, Eigen::Vector3d& sigma_comp) {
+  nz = n_W.z();
+  const double speed2 = v_W.squaredNorm();
+  const double weight = speed2 > 0.0 ? LeadWeight(n_W.dot(v_W) / std::sqrt(speed2)) : 0.0;
+  leads = weight > 0.0;
+  if (!leads) return;
+  sigma = weight * law.StressPerDepth(n_W, v_W);
+  sigma_dyn = weight * law.DynamicStress(n_W, v_W);
+  dynamic = !IsZero(sigma_dyn);
+  if (kPadTerms && compaction) {
+    sigma_comp = weight * pad_terms.CompactionStress(n_W, v_W);
+    has_compaction = !IsZero(sigma_comp);
+  }
+}
+
+}  // namespace
+
 // Where the stress law is evaluated. Each submerged element gets one stress per unit depth,
 // evaluated with the velocity at the depth-weighted centroid r_c = int d r dA / int d dA of its
 // submerged part. Why this point: (1) v = v_WB + w x r is affine in r, so v(r_c) is exactly the
@@ -195,20 +234,20 @@ template <bool kPower, bool kAreaMoment>
 // split into many triangles) form a run: the law is called once per run and only the run's depth
 // integral and first moment are summed (the result is the same sum, grouped differently).
 //
-// Pad-level terms of the law (stress_law_3d.h): kPower selects the depth law's exact z^p
+// Pad-level terms (rft/pad_level_terms.h): kPower selects the depth law's exact z^p
 // integration (p = 1 keeps the linear path, compiled separately, so the linear law runs exactly
 // as without it); kPadTerms compiles in the penetration, compaction and footprint bookkeeping
-// (off for laws without them: the plain contact pays nothing for it); `compaction` sums the CompactionStress area integrals apart and scales them by
-// exp(-z_pad / d_c) at the end; `footprint` sums the projected downward-facing area and its rate.
+// (off without them: the plain contact pays nothing for it); `compaction` sums the compaction
+// stress's area integrals apart and scales them by exp(-z_pad / d_c) at the end; `footprint` sums the projected downward-facing area and its rate.
 namespace {
 template <bool kPower, bool kPadTerms>
 ContactWrench ContactWrenchImpl(const SurfaceElements& elements, const PadKinematics& kinematics,
-                                const GroundSurface& ground, const StressLaw3D& law, bool compaction,
-                                bool footprint) {
+                                const GroundSurface& ground, const StressLaw3D& law, const PadLevelTerms& pad_terms,
+                                bool compaction, bool footprint) {
   ContactWrench out;
   const int count = elements.size();
   if (count == 0) return out;
-  const DepthLaw depth_law = law.depth_law();
+  const DepthLaw depth_law = pad_terms.depth;
   const double exponent = depth_law.exponent;
   const double depth_scale = kPower ? std::pow(depth_law.reference_m, 1.0 - exponent) : 1.0;
 
@@ -262,12 +301,6 @@ ContactWrench ContactWrenchImpl(const SurfaceElements& elements, const PadKinema
   double submerged_area = 0.0;
   int leading = 0;
 
-  auto lead_weight = [&](const Eigen::Vector3d& n_W, const Eigen::Vector3d& v_W) {
-    const double speed2 = v_W.squaredNorm();
-    if (!(speed2 > 0.0)) return 0.0;  // at rest: no direction, no RFT stress
-    return LeadWeight(n_W.dot(v_W) / std::sqrt(speed2));
-  };
-  auto is_zero = [](const Eigen::Vector3d& a) { return a.x() == 0.0 && a.y() == 0.0 && a.z() == 0.0; };
 
   // The current run (pure translation): its normal, whether it leads, its stresses, and the
   // sums of depth integral / depth moment / area / area moment (in B) of its submerged parts.
@@ -304,11 +337,6 @@ ContactWrench ContactWrenchImpl(const SurfaceElements& elements, const PadKinema
   };
 
   // Stresses per normal class in translation (SurfaceElements::normal_class), on the stack.
-  struct ClassStress {
-    double nz;
-    bool leads, dynamic, compaction;
-    Eigen::Vector3d sigma, sigma_dyn, sigma_comp;
-  };
   const bool classes = bounded && !spinning && elements.class_normal_B.cols() > 0;
   std::array<bool, SurfaceElements::kMaxNormalClasses> class_done;
   std::array<ClassStress, SurfaceElements::kMaxNormalClasses> class_stress;
@@ -342,7 +370,7 @@ ContactWrench ContactWrenchImpl(const SurfaceElements& elements, const PadKinema
         moment += r_W.cross(sigma_dyn);
       }
       if (kPadTerms && compaction) {
-        const Eigen::Vector3d sigma_comp = r.weight * law.CompactionStress(n_W, v_W);
+        const Eigen::Vector3d sigma_comp = r.weight * pad_terms.CompactionStress(n_W, v_W);
         compaction_force += r.area * sigma_comp;
         compaction_moment += r_W.cross(sigma_comp);
       }
@@ -387,18 +415,8 @@ ContactWrench ContactWrenchImpl(const SurfaceElements& elements, const PadKinema
           run_compaction = c.compaction;
         } else {
           const Eigen::Vector3d n_W = cls >= 0 ? rotate(Load(elements.class_normal_B.data() + 3 * cls)) : rotate(n_B);
-          run_nz = n_W.z();
-          const double weight = lead_weight(n_W, v0);
-          run_leads = weight > 0.0;
-          if (run_leads) {
-            run_sigma = weight * law.StressPerDepth(n_W, v0);
-            run_sigma_dyn = weight * law.DynamicStress(n_W, v0);
-            run_dynamic = !is_zero(run_sigma_dyn);
-            if (kPadTerms && compaction) {
-              run_sigma_comp = weight * law.CompactionStress(n_W, v0);
-              run_compaction = !is_zero(run_sigma_comp);
-            }
-          }
+          StressOfNormal<kPadTerms>(law, pad_terms, compaction, n_W, v0, run_nz, run_leads, run_dynamic,
+                                    run_compaction, run_sigma, run_sigma_dyn, run_sigma_comp);
           if (cls >= 0) {
             class_done[cls] = true;
             class_stress[cls] = {run_nz, run_leads, run_dynamic, run_compaction, run_sigma, run_sigma_dyn, run_sigma_comp};
@@ -486,7 +504,7 @@ ContactWrench ContactWrenchImpl(const SurfaceElements& elements, const PadKinema
   }
   flush();
   if (kPadTerms && compaction) {
-    const double decay = std::exp(-penetration / law.compaction_decay_depth_m());
+    const double decay = std::exp(-penetration / pad_terms.compaction_depth_m);
     force += decay * compaction_force;
     moment += decay * compaction_moment;
   }
@@ -505,21 +523,22 @@ ContactWrench ContactWrenchImpl(const SurfaceElements& elements, const PadKinema
 }  // namespace
 
 ContactWrench ComputeContactWrench(const SurfaceElements& elements, const PadKinematics& kinematics,
-                                   const GroundSurface& ground, const StressLaw3D& law) {
-  const bool compaction = law.has_compaction();
-  const bool footprint = law.added_mass_density_kg_m3() > 0.0;
-  const bool power = law.depth_law().exponent != 1.0;
+                                   const GroundSurface& ground, const StressLaw3D& law,
+                                   const PadLevelTerms& pad_terms) {
+  const bool compaction = pad_terms.has_compaction();
+  const bool footprint = pad_terms.has_added_mass();
+  const bool power = pad_terms.has_power_depth();
   if (!compaction && !footprint && !power && elements.size() > 0 && elements.HasBounds() &&
       !law.has_dynamic_stress() && IsSpinning(elements, kinematics)) {
     if (const auto* plane = dynamic_cast<const PlaneGround*>(&ground))
       return RotatingWrenchOverPlane(elements, kinematics, *plane, law);
   }
   if (compaction || footprint) {
-    return power ? ContactWrenchImpl<true, true>(elements, kinematics, ground, law, compaction, footprint)
-                 : ContactWrenchImpl<false, true>(elements, kinematics, ground, law, compaction, footprint);
+    return power ? ContactWrenchImpl<true, true>(elements, kinematics, ground, law, pad_terms, compaction, footprint)
+                 : ContactWrenchImpl<false, true>(elements, kinematics, ground, law, pad_terms, compaction, footprint);
   }
-  return power ? ContactWrenchImpl<true, false>(elements, kinematics, ground, law, false, false)
-               : ContactWrenchImpl<false, false>(elements, kinematics, ground, law, false, false);
+  return power ? ContactWrenchImpl<true, false>(elements, kinematics, ground, law, pad_terms, false, false)
+               : ContactWrenchImpl<false, false>(elements, kinematics, ground, law, pad_terms, false, false);
 }
 
 }  // namespace touchdown::rft

@@ -2,7 +2,7 @@
 // The resultant soil force and moment on a rigid pad: the sum, over surface elements below the
 // free surface that lead the motion, of a 3D stress law times depth times area.
 //
-// Contract (shared by footpad_geom, lander and drop_tests):
+// Contract (for every caller: pad geometry, free pad, lander, drop simulations):
 //  - Elements are in the pad frame B, whose origin is the reference point; the pose gives
 //    R_WB and p_WB (the reference point in W); the twist gives v_WB_W (velocity of the
 //    reference point) and w_WB_W (angular velocity), both in W, z up.
@@ -18,12 +18,13 @@
 //    leads is integrated (clipped exactly, as at the free surface), with the velocity at that
 //    part's own depth-weighted centroid, so the force varies continuously as the boundary moves.
 //  - The law's DynamicStress (if any) is integrated over the submerged area, not over depth.
-//  - The law's depth law (StressLaw3D::depth_law, the effect `depth_exponent`): for p != 1 the
-//    stress per depth is weighted by z_ref (z / z_ref)^p instead of z, integrated exactly over
-//    each clipped triangle (closed form, see contact_wrench.cpp); p = 1 takes the linear path.
-//  - The law's CompactionStress (effect `compaction_peak`) is integrated over the submerged area
-//    like DynamicStress, and its force and moment are scaled by exp(-z_pad / d_c), z_pad the
-//    pad's penetration (the deepest submerged vertex depth, = rft/deepest_point.h when in contact).
+//  - The pad-level terms (rft/pad_level_terms.h), each only when it acts: the depth law
+//    (PadLevelTerms::depth): for p != 1 the stress per depth is weighted by z_ref (z / z_ref)^p
+//    instead of z, integrated exactly over each clipped triangle (closed form, see
+//    contact_wrench.cpp); p = 1 takes the linear path. The compaction stress
+//    (PadLevelTerms::CompactionStress) is integrated over the submerged area like DynamicStress,
+//    and its force and moment are scaled by exp(-z_pad / d_c), z_pad the pad's penetration (the
+//    deepest submerged vertex depth, = rft/deepest_point.h when in contact).
 //  - A pad at rest (v = 0 at an element) gets no RFT stress there: the law needs a direction.
 //  - Moments are about the reference point (the origin of B), expressed in W.
 //  - No allocation inside the element loop.
@@ -31,6 +32,7 @@
 #include <Eigen/Geometry>
 
 #include "rft/ground.h"
+#include "rft/pad_level_terms.h"
 #include "rft/stress_law_3d.h"
 #include "rft/surface_elements.h"
 
@@ -48,10 +50,10 @@ struct ContactWrench {
   Eigen::Vector3d moment_W = Eigen::Vector3d::Zero();  // about the reference point [N m]
   double submerged_area_m2 = 0.0;                      // all elements below the surface
   int leading_elements = 0;                            // submerged and leading
-  // Only when the law has compaction or added mass, else 0: the deepest vertex depth of the
+  // Only with compaction or added mass (PadLevelTerms), else 0: the deepest vertex depth of the
   // submerged elements (0: none) [m].
   double penetration_m = 0.0;
-  // Only when the law has added mass (StressLaw3D::added_mass_density_kg_m3() > 0), else 0
+  // Only with added mass (PadLevelTerms::has_added_mass), else 0
   // (rft/entrained_mass.h): the footprint, i.e. the horizontal projection of the submerged
   // downward-facing surface (n_z < 0) [m^2], and its time derivative under the pad's motion
   // [m^2/s] (vertex depth rates and the rotation of the normals; exact over a plane, the vertical
@@ -62,6 +64,7 @@ struct ContactWrench {
 };
 
 ContactWrench ComputeContactWrench(const SurfaceElements& elements, const PadKinematics& kinematics,
-                                   const GroundSurface& ground, const StressLaw3D& law);
+                                   const GroundSurface& ground, const StressLaw3D& law,
+                                   const PadLevelTerms& pad_terms = {});
 
 }  // namespace touchdown::rft

@@ -1,8 +1,7 @@
 #pragma once
-// The base of the effect decorators (rft/dynamic_term.h, rate_damping_term.h, gas_cushion_term.h,
-// pad_effect_terms.h): a StressLaw3D that wraps another and forwards every term to it, so each
-// decorator overrides only the term it adds and the others (depth law, compaction transient,
-// added mass, dynamic stress) pass through however the decorators are stacked.
+// The base of the effect decorators (rft/dynamic_term.h, rate_damping_term.h, gas_cushion_term.h):
+// a StressLaw3D that wraps another and forwards every term to it, so each decorator overrides
+// only the term it adds and the others pass through however the decorators are stacked.
 #include <Eigen/Core>
 #include <memory>
 #include <string>
@@ -25,13 +24,6 @@ class ForwardingLaw3D : public StressLaw3D {
   Eigen::Vector3d DynamicStress(const Eigen::Vector3d& n_W, const Eigen::Vector3d& v_W) const override {
     return inner_->DynamicStress(n_W, v_W);
   }
-  DepthLaw depth_law() const override { return inner_->depth_law(); }
-  Eigen::Vector3d CompactionStress(const Eigen::Vector3d& n_W, const Eigen::Vector3d& v_W) const override {
-    return inner_->CompactionStress(n_W, v_W);
-  }
-  double compaction_decay_depth_m() const override { return inner_->compaction_decay_depth_m(); }
-  bool has_compaction() const override { return inner_->has_compaction(); }
-  double added_mass_density_kg_m3() const override { return inner_->added_mass_density_kg_m3(); }
   const StressLaw3D& inner() const { return *inner_; }
 
  protected:

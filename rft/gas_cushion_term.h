@@ -1,14 +1,14 @@
 #pragma once
-// The gas cushion (the effect library's `gas_cushion`, drop_tests/model/effects.h) as a decorator
-// around any StressLaw3D, for a bed in air: gas trapped in the pores carries part of the load, so
+// The gas cushion (the effect term `gas_cushion`, rft/effect_terms.h) as a decorator around any
+// StressLaw3D, for a bed in air: gas trapped in the pores carries part of the load, so
 // the quasi-static stress per depth is scaled by (1 - chi), and the gas forced out of the pores
 // damps the motion with a stress linear in the normal speed on leading elements (n . v > 0):
 //
 //   stress per depth  -> (1 - chi) * wrapped law's        chi [-] in [0, 1)
 //   sigma_gas = -c_g (v . n) n   (a DynamicStress)       c_g [N s/m^3] >= 0
 //
-// The wrapped law's own DynamicStress (e.g. the inertial term) is kept unscaled, as in the rig's
-// form (effects.h: zeta -> (1 - chi) zeta, F += c_g v I2). The decorator knows nothing about the
+// The wrapped law's own DynamicStress (e.g. the inertial term) is kept unscaled, as in the
+// axisymmetric form (zeta -> (1 - chi) zeta, F += c_g v I2; docs/physics.md section 4). The decorator knows nothing about the
 // atmosphere: whoever builds the law applies it only to beds in air.
 #include <Eigen/Core>
 #include <memory>

@@ -1,6 +1,6 @@
 #pragma once
-// Rate damping (the effect library's `rate_damping`, drop_tests/model/effects.h) as a decorator around
-// any StressLaw3D: on a leading element (n . v > 0) the soil adds a stress linear in the normal
+// Rate damping (the effect term `rate_damping`, rft/effect_terms.h) as a decorator around any
+// StressLaw3D: on a leading element (n . v > 0) the soil adds a stress linear in the normal
 // speed and independent of depth,
 //
 //   sigma_damp = -c (v . n) n      [Pa = N s/m^3 * m/s]

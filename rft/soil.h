@@ -3,6 +3,7 @@
 #include <string>
 
 #include "rft/atmosphere.h"
+#include "rft/law_kind.h"
 
 namespace touchdown::rft {
 
@@ -17,7 +18,7 @@ struct SoilParameters {
   Atmosphere atmosphere = Atmosphere::kVacuum;
 
   // 3D laws (rft/stress_law_3d_factory.h). All defaulted, so 2D users are unaffected.
-  std::string rft_law_3d = "li2013";  // preferred 3D law: "li2013" or "agarwal2023"
+  LawKind rft_law_3d = LawKind::kLi2013;  // preferred 3D law
   // Intruder-surface friction coefficient mu_surf [-] of Agarwal et al. 2023 (only that law).
   // 0.4 is an assumption (a typical sand-on-metal value), not a measured pad value.
   double surface_friction_coefficient = 0.4;

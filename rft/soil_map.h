@@ -2,15 +2,16 @@
 // The ground a lander lands on: a free surface (level plane, uniform slope or any height field
 // behind rft::GroundSurface) and a map of soils over it. Soil patches are polygons in the
 // horizontal plane (rectangles are four-corner polygons); a point takes the soil of the first
-// patch that contains it, else the default soil. Each soil is a 3D stress law carrying its own
-// scaling (zeta at the run's gravity), so each pad can land on loosely or closely packed bed.
+// patch that contains it, else the default soil. Each soil is a contact model (a 3D stress law
+// carrying its own scaling, zeta at the run's gravity, and its pad-level terms), so each pad can
+// land on loosely or closely packed bed.
 #include <Eigen/Core>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "rft/ground.h"
-#include "rft/stress_law_3d.h"
+#include "rft/soil_contact_model.h"
 
 namespace touchdown::rft {
 
@@ -22,7 +23,7 @@ struct SoilPatch {
 
 struct TerrainSoil {
   std::string name;
-  std::shared_ptr<const rft::StressLaw3D> law;
+  SoilContactModel contact;
 };
 
 struct Terrain {

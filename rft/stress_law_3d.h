@@ -5,26 +5,12 @@
 // al. 2023), so the result is in N/m^2 per m of depth. A speed-dependent (dynamic) term adds a
 // stress not proportional to depth; see DynamicStress.
 //
-// Three terms of the effect library (drop_tests/model/effects.h) act on the pad as a whole rather than
-// on one element, so a law states them as constant parameters (never state) and the contact
-// (rft/contact_wrench.h) or the rigid-body dynamics apply them:
-//  - depth_law(): the stress grows as z_ref (z / z_ref)^p instead of z (depth_exponent);
-//  - CompactionStress / compaction_decay_depth_m(): a depth-independent stress whose area
-//    integral is scaled by exp(-z_pad / d_c), z_pad the pad's penetration (compaction_peak);
-//  - added_mass_density_kg_m3(): c_a rho of the grains carried with the pad (added_mass;
-//    rft/entrained_mass.h).
-// Decorators forward all three from the law they wrap.
+// Terms that act on the pad as a whole (a depth law other than linear, the bed's compaction
+// transient, the entrained mass) are not a law's business: rft/pad_level_terms.h.
 #include <Eigen/Core>
 #include <string_view>
 
 namespace touchdown::rft {
-
-// How the stress per unit depth scales with depth z: stress = sigma z_ref (z / z_ref)^p.
-// p = 1 is the linear law of RFT (z_ref then drops out).
-struct DepthLaw {
-  double exponent = 1.0;     // p [-], > 0
-  double reference_m = 0.01;  // z_ref [m], > 0
-};
 
 // Normals n_W, velocities v_W and the resulting stresses sigma of up to kCapacity elements, one
 // array per component (structure of arrays, so a law's batch loop can be vectorised).
@@ -62,18 +48,6 @@ class StressLaw3D {
   virtual Eigen::Vector3d DynamicStress(const Eigen::Vector3d& /*n_W*/, const Eigen::Vector3d& /*v_W*/) const {
     return Eigen::Vector3d::Zero();
   }
-  // Depth weighting of StressPerDepth. Default: linear (p = 1).
-  virtual DepthLaw depth_law() const { return {}; }
-  // Depth-independent stress [N/m^2] of the bed's compaction transient; the contact integrates it
-  // over the submerged area and scales the result by exp(-z_pad / compaction_decay_depth_m()).
-  // 0 by default.
-  virtual Eigen::Vector3d CompactionStress(const Eigen::Vector3d& /*n_W*/, const Eigen::Vector3d& /*v_W*/) const {
-    return Eigen::Vector3d::Zero();
-  }
-  virtual double compaction_decay_depth_m() const { return 1.0; }
-  virtual bool has_compaction() const { return false; }
-  // c_a rho [kg/m^3] of the entrained cone of grains (rft/entrained_mass.h); 0: no added mass.
-  virtual double added_mass_density_kg_m3() const { return 0.0; }
 };
 
 }  // namespace touchdown::rft

@@ -10,7 +10,6 @@
 #include "rft/gas_cushion_term.h"
 #include "rft/input_error.h"
 #include "rft/li2013_3d.h"
-#include "rft/pad_effect_terms.h"
 #include "rft/rate_damping_term.h"
 
 namespace touchdown::rft {
@@ -32,19 +31,19 @@ void Require(bool ok, const SoilParameters& soil, const std::string& field, cons
 
 }  // namespace
 
-std::unique_ptr<StressLaw3D> MakeStressLaw3D(std::string_view law, const SoilParameters& soil,
+std::unique_ptr<StressLaw3D> MakeStressLaw3D(LawKind law, const SoilParameters& soil,
                                              double gravity_m_s2) {
   if (!(std::isfinite(gravity_m_s2) && gravity_m_s2 > 0.0))
     throw MakeInputError(SoilLabel(soil), "gravity_m_s2", "must be positive (" + Str(gravity_m_s2) + ")");
 
   std::unique_ptr<StressLaw3D> quasi_static;
-  if (law == "li2013") {
+  if (law == LawKind::kLi2013) {
     Require(std::isfinite(soil.zeta_N_m3) && soil.zeta_N_m3 > 0.0, soil, "zeta",
             "li2013 needs a positive zeta", soil.zeta_N_m3);
     Require(std::isfinite(soil.reference_gravity_m_s2) && soil.reference_gravity_m_s2 > 0.0, soil,
             "reference_gravity_m_s2", "must be positive", soil.reference_gravity_m_s2);
     quasi_static = std::make_unique<Li2013TreersLaw>(soil.ZetaAtGravity(gravity_m_s2));
-  } else if (law == "agarwal2023") {
+  } else {  // LawKind::kAgarwal2023
     Require(std::isfinite(soil.bulk_density_kg_m3) && soil.bulk_density_kg_m3 > 0.0, soil,
             "bulk_density_kg_m3", "agarwal2023 needs the bulk density", soil.bulk_density_kg_m3);
     const double phi = soil.internal_friction_angle_rad;
@@ -55,9 +54,6 @@ std::unique_ptr<StressLaw3D> MakeStressLaw3D(std::string_view law, const SoilPar
     const double xi_n = AgarwalScalingXi(soil.bulk_density_kg_m3, gravity_m_s2, std::tan(phi));
     Require(xi_n > 0.0, soil, "internal_friction_angle", "gives a non-positive xi_n", xi_n);
     quasi_static = std::make_unique<Agarwal2023Law>(xi_n, soil.surface_friction_coefficient);
-  } else {
-    throw MakeInputError(SoilLabel(soil), "law",
-                         "unknown 3D stress law '" + std::string(law) + "' (expected li2013 or agarwal2023)");
   }
 
   if (!soil.dynamic_term) return quasi_static;
@@ -70,8 +66,8 @@ std::unique_ptr<StressLaw3D> MakeStressLaw3D(std::string_view law, const SoilPar
   return std::make_unique<DynamicTermLaw>(std::move(quasi_static), soil.dynamic_lambda, rho_c);
 }
 
-std::unique_ptr<StressLaw3D> MakeStressLaw3D(std::string_view law, const SoilParameters& soil, double gravity_m_s2,
-                                             const EffectTerms3D& terms) {
+SoilContactModel MakeSoilContactModel(LawKind law, const SoilParameters& soil, double gravity_m_s2,
+                                      const EffectTerms& terms) {
   Require(std::isfinite(terms.inertial_lambda) && terms.inertial_lambda >= 0.0, soil, "inertial_drag.lambda",
           "must be non-negative", terms.inertial_lambda);
   Require(std::isfinite(terms.damping_c_N_s_m3) && terms.damping_c_N_s_m3 >= 0.0, soil, "rate_damping.c_N_s_m3",
@@ -97,7 +93,7 @@ std::unique_ptr<StressLaw3D> MakeStressLaw3D(std::string_view law, const SoilPar
   // DynamicTermLaw replaces its inner law's dynamic stress, so it goes innermost; the other
   // decorators add theirs to their inner law's.
   if (inertial) {
-    const double rho = terms.inertial_density_kg_m3 > 0.0 ? terms.inertial_density_kg_m3 : soil.bulk_density_kg_m3;
+    const double rho = soil.bulk_density_kg_m3;
     Require(std::isfinite(rho) && rho > 0.0, soil, "bulk_density_kg_m3",
             "inertial_drag needs the soil's bulk density", rho);
     out = std::make_unique<DynamicTermLaw>(std::move(out), terms.inertial_lambda, rho);
@@ -105,17 +101,19 @@ std::unique_ptr<StressLaw3D> MakeStressLaw3D(std::string_view law, const SoilPar
   if (terms.gas_chi > 0.0 || terms.gas_c_N_s_m3 > 0.0)
     out = std::make_unique<GasCushionLaw>(std::move(out), terms.gas_chi, terms.gas_c_N_s_m3);
   if (terms.damping_c_N_s_m3 > 0.0) out = std::make_unique<RateDampingLaw>(std::move(out), terms.damping_c_N_s_m3);
-  // The pad-level terms (rft/pad_effect_terms.h), each only when it acts.
-  if (terms.depth_exponent != 1.0)
-    out = std::make_unique<DepthExponentLaw>(std::move(out), terms.depth_exponent, terms.depth_reference_m);
-  if (terms.compaction_k_kg_m3 > 0.0)
-    out = std::make_unique<CompactionPeakLaw>(std::move(out), terms.compaction_k_kg_m3, terms.compaction_depth_m);
+  SoilContactModel model;
+  if (terms.depth_exponent != 1.0) model.pad_terms.depth = {terms.depth_exponent, terms.depth_reference_m};
+  if (terms.compaction_k_kg_m3 > 0.0) {
+    model.pad_terms.compaction_k_kg_m3 = terms.compaction_k_kg_m3;
+    model.pad_terms.compaction_depth_m = terms.compaction_depth_m;
+  }
   if (terms.added_mass_ca > 0.0) {
     Require(std::isfinite(soil.bulk_density_kg_m3) && soil.bulk_density_kg_m3 > 0.0, soil, "bulk_density_kg_m3",
             "added_mass needs the soil's bulk density", soil.bulk_density_kg_m3);
-    out = std::make_unique<AddedMassLaw>(std::move(out), terms.added_mass_ca * soil.bulk_density_kg_m3);
+    model.pad_terms.added_mass_density_kg_m3 = terms.added_mass_ca * soil.bulk_density_kg_m3;
   }
-  return out;
+  model.law = std::move(out);
+  return model;
 }
 
 }  // namespace touchdown::rft

@@ -3,47 +3,37 @@
 #include <memory>
 #include <string_view>
 
+#include "rft/effect_terms.h"
+#include "rft/law_kind.h"
 #include "rft/soil.h"
+#include "rft/soil_contact_model.h"
 #include "rft/stress_law_3d.h"
 
 namespace touchdown::rft {
 
-// law: "li2013" (Li 2013 via Treers et al. 2021; needs zeta, scaled to gravity_m_s2 from the
-// soil's reference gravity) or "agarwal2023" (needs bulk density and internal friction angle;
+// law: kLi2013 (Li 2013 via Treers et al. 2021; needs zeta, scaled to gravity_m_s2 from the
+// soil's reference gravity) or kAgarwal2023 (needs bulk density and internal friction angle;
 // xi_n = rho g (894 mu^3 - 386 mu^2 + 89 mu), mu = tan(phi), and mu_surf). When the soil's
 // dynamic_term is on, the law is wrapped in DynamicTermLaw (lambda, rho_c). Throws InputError
-// on an unknown law name or missing/invalid soil data, naming the soil and the field.
-std::unique_ptr<StressLaw3D> MakeStressLaw3D(std::string_view law, const SoilParameters& soil,
+// on missing/invalid soil data, naming the soil and the field.
+std::unique_ptr<StressLaw3D> MakeStressLaw3D(LawKind law, const SoilParameters& soil,
                                              double gravity_m_s2);
 
-// The effect terms in their 3D form (the effect library, drop_tests/model/effects.h), as
-// decorators around the law above:
+// The soil's law with the effect terms (rft/effect_terms.h) in their 3D form. The per-element
+// terms wrap the law above:
 //   inertial_lambda > 0  DynamicTermLaw (rft/dynamic_term.h), lambda rho (v.n)^2 on leading
-//                        elements with rho = inertial_density_kg_m3 (0: the soil's bulk density);
-//                        it replaces the soil's own dynamic_term;
+//                        elements with rho the soil's bulk density; it replaces the soil's own
+//                        dynamic_term;
 //   damping_c_N_s_m3     RateDampingLaw (rft/rate_damping_term.h), c (v.n) on leading elements;
 //   gas_chi, gas_c       GasCushionLaw (rft/gas_cushion_term.h), stress per depth x (1 - chi)
 //                        plus c_g (v.n); the caller passes them only for a bed in air.
-//   depth_exponent != 1  DepthExponentLaw (rft/pad_effect_terms.h): z_ref (z/z_ref)^p depth law;
-//   compaction_k > 0     CompactionPeakLaw: k_c (v.n)^2 on leading elements, x exp(-z_pad/d_c);
-//   added_mass_ca > 0    AddedMassLaw: c_a rho (rho = the soil's bulk density) of the entrained
-//                        cone, applied by the free drop and the lander (rft/entrained_mass.h).
-// A term whose parameters are all 0 adds no decorator, so the law is exactly the one above.
-struct EffectTerms3D {
-  double inertial_lambda = 0.0;          // [-]
-  double inertial_density_kg_m3 = 0.0;   // [kg/m^3]
-  double damping_c_N_s_m3 = 0.0;         // [N s/m^3]
-  double gas_chi = 0.0;                  // [-], in [0, 1)
-  double gas_c_N_s_m3 = 0.0;             // [N s/m^3]
-  double depth_exponent = 1.0;           // p [-], > 0
-  double depth_reference_m = 0.01;       // z_ref [m], > 0
-  double compaction_k_kg_m3 = 0.0;       // k_c [kg/m^3]
-  double compaction_depth_m = 1.0;       // d_c [m], > 0
-  double added_mass_ca = 0.0;            // c_a [-]
-};
-// Throws InputError naming the soil when a term's value is invalid or the inertial term has no
-// density.
-std::unique_ptr<StressLaw3D> MakeStressLaw3D(std::string_view law, const SoilParameters& soil,
-                                             double gravity_m_s2, const EffectTerms3D& terms);
+// The pad-level terms go to SoilContactModel::pad_terms (rft/pad_level_terms.h): the depth law
+// z_ref (z / z_ref)^p, the compaction transient k_c, d_c and the added mass c_a rho (rho the
+// soil's bulk density). A term whose parameters are all neutral changes nothing, so with
+// neutral terms the law is exactly the one above. The sensor offsets are not physics and are
+// ignored. Throws InputError naming the soil when a term's value is invalid or a term needs the
+// bulk density and the soil has none.
+SoilContactModel MakeSoilContactModel(LawKind law, const SoilParameters& soil, double gravity_m_s2,
+                                      const EffectTerms& terms);
 
 }  // namespace touchdown::rft

@@ -32,16 +32,16 @@ class UnitZetaForce {
   // Throws InputError (naming `where`) for a mesh pad on a soil whose 3D law is not linear in zeta.
   double At(double depth_m, const rft::SoilParameters& soil, const std::string& where) {
     if (intrusion_) return intrusion_->VerticalForce(depth_m, 1.0);
-    if (soil.rft_law_3d != "li2013")
+    if (soil.rft_law_3d != rft::LawKind::kLi2013)
       throw MakeInputError(where, "soil",
                            "mesh pad '" + pad_.name + "' on soil '" + soil.name + "' with rft_law_3d '" +
-                               soil.rft_law_3d + "': only li2013 scales with zeta, so only it can be calibrated");
+                               std::string(rft::LawKindName(soil.rft_law_3d)) + "': only li2013 scales with zeta, so only it can be calibrated");
     auto& law = laws_[soil.name];
     if (!law) {
       rft::SoilParameters unit = soil;
       unit.zeta_N_m3 = 1.0;
       unit.dynamic_term = false;  // the quasi-static part only, as the rig's profile integral
-      law = rft::MakeStressLaw3D("li2013", unit, unit.reference_gravity_m_s2);
+      law = rft::MakeStressLaw3D(rft::LawKind::kLi2013, unit, unit.reference_gravity_m_s2);
     }
     rft::PadKinematics k;
     k.p_WB.z() = -depth_m - pad_.body.lowest_z_B;  // the lowest point at depth d below z = 0

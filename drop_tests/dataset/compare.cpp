@@ -110,7 +110,7 @@ Dataset SimulateMeasuredDrops(const Dataset& measured, const std::optional<model
   std::map<std::string, io::PadSpec> pads;
   std::map<std::string, rft::SoilParameters> soils;
   const std::string file = (fs::path(measured.directory) / "drops.csv").string();
-  const model::EffectTerms effects = model ? model::ModelEffectTerms(*model) : model::EffectTerms{};
+  const rft::EffectTerms effects = model ? model::ModelEffectTerms(*model) : rft::EffectTerms{};
   const std::string effects_source = model ? model->source : "";
   for (const DatasetDrop& m : measured.drops) {
     const std::string pad_ref = measured.PadReference(m), soil_ref = measured.SoilReference(m);

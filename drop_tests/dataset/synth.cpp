@@ -16,6 +16,7 @@
 #include "drop_tests/io/dataset_csv.h"
 #include "drop_tests/io/yaml_fields.h"
 #include "drop_tests/model/effects_yaml.h"
+#include "lander/pad/effect_soil_response.h"
 #include "rft/input_error.h"
 #include "rft/units.h"
 
@@ -170,7 +171,7 @@ Dataset Synthesize(const SynthSpec& spec) {
   std::map<std::string, io::PadSpec> pads;
   std::map<std::string, rft::SoilParameters> soils;
   std::map<std::string, std::unique_ptr<geom::AxisymmetricIntrusion>> intrusions;
-  const model::EffectTerms terms = spec.hidden_effect ? model::MakeEffectTerms({*spec.hidden_effect}, spec.source) : model::EffectTerms{};
+  const rft::EffectTerms terms = spec.hidden_effect ? model::MakeEffectTerms({*spec.hidden_effect}, spec.source) : rft::EffectTerms{};
   for (size_t i = 0; i < spec.drops.size(); ++i) {
     const SynthDrop& sd = spec.drops[i];
     if (!pads.count(sd.pad)) {
@@ -185,7 +186,7 @@ Dataset Synthesize(const SynthSpec& spec) {
       if (name == sd.soil) true_zeta = zeta;
     const rft::SoilParameters soil = drop::DropSoil(soils[sd.soil], true_zeta, sd.atmosphere);
     const double mass = sd.mass_kg.value_or(pad.mass_kg);
-    const model::EffectSoilResponse response = drop::MakeRigResponse(*intrusions[sd.pad], soil, sd.gravity_m_s2, terms);
+    const pad::EffectSoilResponse response = drop::MakeRigResponse(*intrusions[sd.pad], soil, sd.gravity_m_s2, terms);
     pad::RigDropOptions options;
     options.rest_duration_s = spec.rest_duration_s + std::abs(terms.sensor_dt_s) + 2.0 / spec.sample_rate_hz;
     pad::RigDropResult sim;
@@ -214,7 +215,7 @@ Dataset Synthesize(const SynthSpec& spec) {
     const double t_end = sim.time_to_rest_s - terms.sensor_dt_s + spec.rest_duration_s;
     for (long k = 0; k / spec.sample_rate_hz <= t_end + 1e-12; ++k) {
       const double t = k / spec.sample_rate_hz;
-      const model::RecordedSample r = model::RecordedAt(sim, sd.gravity_m_s2, terms, t);
+      const pad::RecordedSample r = pad::RecordedAt(sim, sd.gravity_m_s2, terms, t);
       d.trace.t_s.push_back(t);
       d.trace.force_N.push_back(Quantise(r.force_N + force_drift * t + n.force_sigma_N * normal(rng), n.force_resolution_N));
       d.trace.penetration_m.push_back(

@@ -20,20 +20,19 @@ std::unique_ptr<geom::AxisymmetricIntrusion> MakeRigIntrusion(const geom::Axisym
   return std::make_unique<geom::AxisymmetricIntrusion>(profile, rft::Li2013Law{});
 }
 
-model::EffectSoilResponse MakeRigResponse(const geom::AxisymmetricIntrusion& intrusion,
-                                          const rft::SoilParameters& drop_soil, double gravity_m_s2,
-                                          const model::EffectTerms& terms) {
-  const model::SoilResponseInputs in{ZetaAtGravity(drop_soil, gravity_m_s2), drop_soil.bulk_density_kg_m3,
-                                     drop_soil.atmosphere == rft::Atmosphere::kAir, terms};
-  return model::EffectSoilResponse(intrusion, in);
+pad::EffectSoilResponse MakeRigResponse(const geom::AxisymmetricIntrusion& intrusion,
+                                        const rft::SoilParameters& drop_soil, double gravity_m_s2,
+                                        const rft::EffectTerms& terms) {
+  const pad::SoilResponseInputs in{ZetaAtGravity(drop_soil, gravity_m_s2), drop_soil.bulk_density_kg_m3,
+                                   drop_soil.atmosphere == rft::Atmosphere::kAir, terms};
+  return pad::EffectSoilResponse(intrusion, in);
 }
 
-std::unique_ptr<rft::StressLaw3D> MakeFreeLaw(const rft::SoilParameters& drop_soil, const std::string& law_3d,
-                                              double gravity_m_s2, const model::EffectTerms& terms,
-                                              const std::string& effects_source) {
-  const std::string& name = law_3d.empty() ? drop_soil.rft_law_3d : law_3d;
-  return model::MakeEffectLaw3D(name, drop_soil, gravity_m_s2, terms, drop_soil.atmosphere == rft::Atmosphere::kAir,
-                                effects_source);
+rft::SoilContactModel MakeFreeLaw(const rft::SoilParameters& drop_soil, const std::optional<rft::LawKind>& law_3d,
+                                  double gravity_m_s2, const rft::EffectTerms& terms,
+                                  const std::string& effects_source) {
+  return model::MakeEffectLaw3D(law_3d.value_or(drop_soil.rft_law_3d), drop_soil, gravity_m_s2, terms,
+                                drop_soil.atmosphere == rft::Atmosphere::kAir, effects_source);
 }
 
 }  // namespace touchdown::drop

@@ -13,7 +13,9 @@
 #include "drop_tests/model/effects.h"
 #include "footpad_geom/axisymmetric_intrusion.h"
 #include "rft/soil.h"
-#include "rft/stress_law_3d.h"
+#include "lander/pad/effect_soil_response.h"
+#include "rft/law_kind.h"
+#include "rft/soil_contact_model.h"
 
 namespace touchdown::drop {
 
@@ -35,14 +37,14 @@ std::unique_ptr<geom::AxisymmetricIntrusion> MakeRigIntrusion(const geom::Axisym
 // The rig's vertical soil response for a pad's integral on `drop_soil` (DropSoil) at the drop's
 // gravity, with the effect terms in their rig form (gas cushion only in air). Throws InputError
 // if an effect needs the bulk density and the soil has none.
-model::EffectSoilResponse MakeRigResponse(const geom::AxisymmetricIntrusion& intrusion,
-                                          const rft::SoilParameters& drop_soil, double gravity_m_s2,
-                                          const model::EffectTerms& terms);
+pad::EffectSoilResponse MakeRigResponse(const geom::AxisymmetricIntrusion& intrusion,
+                                        const rft::SoilParameters& drop_soil, double gravity_m_s2,
+                                        const rft::EffectTerms& terms);
 
-// The free pad's 3D law: `law_3d`, or the soil's rft_law_3d when empty, on `drop_soil` at the
-// drop's gravity, with the effect terms as 3D decorators (model::MakeEffectLaw3D).
-std::unique_ptr<rft::StressLaw3D> MakeFreeLaw(const rft::SoilParameters& drop_soil, const std::string& law_3d,
-                                              double gravity_m_s2, const model::EffectTerms& terms,
-                                              const std::string& effects_source);
+// The free pad's contact model: the 3D law `law_3d` (the soil's rft_law_3d when none) on
+// `drop_soil` at the drop's gravity, with the effect terms (model::MakeEffectLaw3D).
+rft::SoilContactModel MakeFreeLaw(const rft::SoilParameters& drop_soil, const std::optional<rft::LawKind>& law_3d,
+                                  double gravity_m_s2, const rft::EffectTerms& terms,
+                                  const std::string& effects_source);
 
 }  // namespace touchdown::drop

@@ -10,6 +10,7 @@
 #include "drop_tests/drop/drop_factory.h"
 #include "drop_tests/drop/free_drop_output.h"
 #include "footpad_geom/axisymmetric_intrusion.h"
+#include "lander/pad/effect_soil_response.h"
 #include "rft/ground.h"
 #include "rft/input_error.h"
 #include "rft/physical_limits.h"
@@ -67,7 +68,7 @@ double EffectiveZeta(const rft::SoilParameters& soil, const DropConditions& c) {
   return ZetaAtGravity(DropSoil(soil, c.zeta_N_m3, c.atmosphere), c.gravity_m_s2);
 }
 
-DropConditions DropConditionsFor(const DropRow& row, const model::EffectTerms& effects, const std::string& effects_source,
+DropConditions DropConditionsFor(const DropRow& row, const rft::EffectTerms& effects, const std::string& effects_source,
                                  const std::string& context) {
   DropConditions c;
   c.impact_speed_m_s = row.impact_speed_m_s;
@@ -99,9 +100,9 @@ PadDrop SimulateDrop(const io::PadSpec& pad, const rft::SoilParameters& soil, co
                conditions.mass_kg.value_or(pad.mass_kg), ZetaAtGravity(drop_soil, conditions.gravity_m_s2), {}, {}, {}};
 
   if (free) {
-    const auto law = MakeFreeLaw(drop_soil, conditions.law_3d, conditions.gravity_m_s2, conditions.effects,
-                                 conditions.effects_source);
-    drop.law_3d = std::string(law->name());
+    const rft::SoilContactModel law = MakeFreeLaw(drop_soil, conditions.law_3d, conditions.gravity_m_s2,
+                                                  conditions.effects, conditions.effects_source);
+    drop.law_3d = law.name();
     pad::FreeDropInput in;
     in.impact_speed_m_s = conditions.impact_speed_m_s;
     in.horizontal_speed_m_s = conditions.horizontal_speed_m_s;
@@ -111,8 +112,8 @@ PadDrop SimulateDrop(const io::PadSpec& pad, const rft::SoilParameters& soil, co
     in.gravity_m_s2 = conditions.gravity_m_s2;
     const geom::PadBody& body = pad.body;
     const pad::FreeDropResult r = drop.mass_kg == body.mass_kg
-                                 ? RunFreeDrop(body, *law, rft::PlaneGround(), in, options.free)
-                                 : RunFreeDrop(WithMass(body, drop.mass_kg), *law, rft::PlaneGround(), in, options.free);
+                                 ? RunFreeDrop(body, law, rft::PlaneGround(), in, options.free)
+                                 : RunFreeDrop(WithMass(body, drop.mass_kg), law, rft::PlaneGround(), in, options.free);
     drop.result = AsRigResult(r);
     drop.free = r;
     return drop;
@@ -122,7 +123,7 @@ PadDrop SimulateDrop(const io::PadSpec& pad, const rft::SoilParameters& soil, co
   if (!options.intrusion) own = MakeRigIntrusion(pad.profile);
   const geom::AxisymmetricIntrusion& intrusion = options.intrusion ? *options.intrusion : *own;
   // With no effect terms this is exactly the quasi-static RFT force F_z(d; zeta).
-  std::optional<model::EffectSoilResponse> response;
+  std::optional<pad::EffectSoilResponse> response;
   try {
     response.emplace(MakeRigResponse(intrusion, drop_soil, conditions.gravity_m_s2, conditions.effects));
   } catch (const InputError& e) {

@@ -36,8 +36,8 @@ struct DropConditions {
   pad::TiltAxis tilt_axis = pad::TiltAxis::kX;
   double horizontal_speed_m_s = 0.0;    // along +x of the world
   Eigen::Vector3d omega_W = Eigen::Vector3d::Zero();  // angular velocity at release [rad/s]
-  std::string law_3d;                   // free drop: "li2013" or "agarwal2023"; "" = the soil's rft_law_3d
-  model::EffectTerms effects;                  // default: none (quasi-static RFT)
+  std::optional<rft::LawKind> law_3d;   // free drop: the 3D law; none = the soil's rft_law_3d
+  rft::EffectTerms effects;                  // default: none (quasi-static RFT)
   std::string effects_source;           // the model file the effects come from (for messages)
 
   bool IsFree() const {
@@ -57,7 +57,7 @@ struct DropRow {
 };
 // The one place a row becomes the conditions of its drop: every field, the effects (with the
 // model file they came from), validated (InputError naming `context`).
-DropConditions DropConditionsFor(const DropRow& row, const model::EffectTerms& effects, const std::string& effects_source,
+DropConditions DropConditionsFor(const DropRow& row, const rft::EffectTerms& effects, const std::string& effects_source,
                                  const std::string& context);
 
 struct PadDrop {

@@ -10,6 +10,7 @@
 #include "drop_tests/drop/drop_factory.h"
 #include "drop_tests/io/student_t.h"
 #include "drop_tests/io/work_pool.h"
+#include "lander/pad/effect_soil_response.h"
 #include "rft/input_error.h"
 #include "rft/units.h"
 
@@ -67,15 +68,15 @@ void Bounds(const FitProblem&, const Layout& L, Eigen::VectorXd* lo, Eigen::Vect
 
 // The model's recorded trace for one drop, or nullopt when the simulation fails.
 std::optional<dataset::DatasetTrace> Recorded(const FitProblem& p, const FitDrop& d, const ModelValues& m,
-                                     const model::EffectTerms& terms) {
+                                     const rft::EffectTerms& terms) {
   const rft::SoilParameters soil = drop::DropSoil(p.soils[d.soil], m.zeta_N_m3[d.soil], d.atmosphere);
   try {
-    const model::EffectSoilResponse response = drop::MakeRigResponse(*p.intrusions[d.pad], soil, d.gravity_m_s2, terms);
+    const pad::EffectSoilResponse response = drop::MakeRigResponse(*p.intrusions[d.pad], soil, d.gravity_m_s2, terms);
     const pad::RigDropResult r = pad::RunRigDrop({d.mass_kg, d.gravity_m_s2, d.speed_m_s}, response, p.rig);
     dataset::DatasetTrace out;
     const dataset::DatasetTrace& tr = *d.trace;
     for (size_t i = 0; i < tr.size(); ++i) {
-      const model::RecordedSample rs = model::RecordedAt(r, d.gravity_m_s2, terms, tr.t_s[i]);
+      const pad::RecordedSample rs = pad::RecordedAt(r, d.gravity_m_s2, terms, tr.t_s[i]);
       out.t_s.push_back(tr.t_s[i]);
       out.penetration_m.push_back(rs.penetration_m);
       out.force_N.push_back(rs.force_N);
@@ -106,7 +107,7 @@ class Objective {
   // Weighted residuals (as minimised) and the unweighted ones (for the information criterion).
   void Evaluate(const Eigen::VectorXd& x, Eigen::VectorXd* r, Eigen::VectorXd* unweighted = nullptr) {
     const ModelValues m = Unscale(p_, L_, x);
-    const model::EffectTerms terms = model::MakeEffectTerms(m.effects);
+    const rft::EffectTerms terms = model::MakeEffectTerms(m.effects);
     r->resize(rows_);
     if (unweighted) unweighted->resize(rows_);
     io::ParallelFor(train_.size(), p_.threads, [&](size_t k) {
@@ -144,7 +145,7 @@ Layout MakeLayout(const FitProblem& p, const std::vector<std::string>& ids) {
 }
 }  // namespace
 
-model::EffectTerms FitResult::terms() const { return model::MakeEffectTerms(effects); }
+rft::EffectTerms FitResult::terms() const { return model::MakeEffectTerms(effects); }
 
 FitProblem MakeFitProblem(const dataset::Dataset& ds, const std::vector<bool>& held_out, int threads) {
   FitProblem p;

@@ -7,7 +7,7 @@
 //   penetration: (d_sim(t_i) - d_i) / max d
 // each divided by sqrt(samples of the drop), so every drop weighs the same and the cost is the
 // mean over drops of the squared NRMSEs. F_sim, d_sim are what the rig would record
-// (effects.h RecordedAt, sensor_offset included).
+// (lander/pad/effect_soil_response.h RecordedAt, sensor_offset included).
 //
 // Solver: Levenberg-Marquardt (Marquardt's diagonal scaling) on scaled parameters (zeta /
 // zeta_catalogue, effect values / their typical scale), box bounds by projection, forward-
@@ -23,6 +23,8 @@
 #include "drop_tests/io/catalog.h"
 #include "drop_tests/dataset/dataset.h"
 #include "drop_tests/model/effects.h"
+#include "footpad_geom/axisymmetric_intrusion.h"
+#include "lander/pad/rig_drop.h"
 
 namespace touchdown::gap {
 
@@ -79,7 +81,7 @@ struct FitResult {
   int iterations = 0;
   long simulations = 0;
   bool converged = false;
-  model::EffectTerms terms() const;
+  rft::EffectTerms terms() const;
 };
 
 // Whether the candidate can be fitted on this problem; if not, `why` says why.

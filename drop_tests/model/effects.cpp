@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <set>
 #include <sstream>
 
@@ -15,7 +14,6 @@
 namespace touchdown::model {
 
 namespace {
-constexpr double kPi = std::numbers::pi;
 
 EffectParameterInfo Param(std::string key, std::string symbol, std::string unit, double file_to_si, double lower,
                           double upper, double scale, double start, std::vector<double> scan = {}) {
@@ -66,8 +64,8 @@ const EffectInfo& FindEffect(const std::string& id, const std::string& context) 
   throw MakeInputError(context, "", "unknown effect '" + id + "' (known: " + known + ")");
 }
 
-EffectTerms MakeEffectTerms(const std::vector<Effect>& effects, const std::string& context) {
-  EffectTerms t;
+rft::EffectTerms MakeEffectTerms(const std::vector<Effect>& effects, const std::string& context) {
+  rft::EffectTerms t;
   std::set<std::string> seen;
   for (const Effect& e : effects) {
     const EffectInfo& info = FindEffect(e.id, context);
@@ -94,19 +92,19 @@ EffectTerms MakeEffectTerms(const std::vector<Effect>& effects, const std::strin
   return t;
 }
 
-std::vector<std::string> ActiveEffects(const EffectTerms& t) {
+std::vector<std::string> ActiveEffects(const rft::EffectTerms& t) {
   std::vector<std::string> out;
   if (t.inertial_lambda != 0.0) out.push_back("inertial_drag");
   if (t.damping_c_N_s_m3 != 0.0) out.push_back("rate_damping");
   if (t.added_mass_ca != 0.0) out.push_back("added_mass");
   if (t.compaction_k_kg_m3 != 0.0) out.push_back("compaction_peak");
-  if (t.depth_exponent && *t.depth_exponent != 1.0) out.push_back("depth_exponent");
+  if (t.HasDepthExponent()) out.push_back("depth_exponent");
   if (t.gas_chi != 0.0 || t.gas_c_N_s_m3 != 0.0) out.push_back("gas_cushion");
   if (t.HasSensorOffset()) out.push_back("sensor_offset");
   return out;
 }
 
-std::vector<std::pair<std::string, std::string>> EffectsNotApplied(const EffectTerms& t, bool in_air) {
+std::vector<std::pair<std::string, std::string>> EffectsNotApplied(const rft::EffectTerms& t, bool in_air) {
   std::vector<std::pair<std::string, std::string>> out;
   for (const std::string& id : ActiveEffects(t)) {
     if (id == "sensor_offset")
@@ -118,92 +116,15 @@ std::vector<std::pair<std::string, std::string>> EffectsNotApplied(const EffectT
   return out;
 }
 
-std::unique_ptr<rft::StressLaw3D> MakeEffectLaw3D(std::string_view law, const rft::SoilParameters& soil,
-                                                  double gravity_m_s2, const EffectTerms& t, bool in_air,
-                                                  const std::string& model_source) {
-  rft::EffectTerms3D terms;
-  terms.inertial_lambda = t.inertial_lambda;
-  terms.inertial_density_kg_m3 = soil.bulk_density_kg_m3;
-  terms.damping_c_N_s_m3 = t.damping_c_N_s_m3;
-  if (t.depth_exponent) terms.depth_exponent = *t.depth_exponent;
-  terms.depth_reference_m = t.depth_reference_m;
-  terms.compaction_k_kg_m3 = t.compaction_k_kg_m3;
-  terms.compaction_depth_m = t.compaction_depth_m;
-  terms.added_mass_ca = t.added_mass_ca;
-  if (in_air) {
-    terms.gas_chi = t.gas_chi;
-    terms.gas_c_N_s_m3 = t.gas_c_N_s_m3;
-  }
+rft::SoilContactModel MakeEffectLaw3D(rft::LawKind law, const rft::SoilParameters& soil, double gravity_m_s2,
+                                      const rft::EffectTerms& t, bool in_air, const std::string& model_source) {
+  rft::EffectTerms terms = t;
+  if (!in_air) terms.gas_chi = terms.gas_c_N_s_m3 = 0.0;  // the gas cushion acts on beds in air only
   if ((terms.inertial_lambda > 0.0 || terms.added_mass_ca > 0.0) && !(soil.bulk_density_kg_m3 > 0.0))
     throw MakeInputError(soil.name, "bulk_density_kg_m3",
                          "the soil must state its bulk density for inertial_drag and added_mass (model " +
                              model_source + ")");
-  return rft::MakeStressLaw3D(law, soil, gravity_m_s2, terms);
-}
-
-EffectSoilResponse::EffectSoilResponse(const geom::AxisymmetricIntrusion& pad, const SoilResponseInputs& inputs)
-    : pad_(pad), in_(inputs) {
-  if (in_.terms.NeedsDensity() && !(in_.bulk_density_kg_m3 > 0.0))
-    throw MakeInputError("", "bulk_density_kg_m3",
-                         "the soil must state its bulk density for inertial_drag and added_mass");
-  zeta_qs_ = in_.zeta_N_m3 * (in_.in_air ? 1.0 - in_.terms.gas_chi : 1.0);
-  i2_coefficient_ = in_.terms.damping_c_N_s_m3 + (in_.in_air ? in_.terms.gas_c_N_s_m3 : 0.0);
-}
-
-double EffectSoilResponse::QuasiStaticForce(double d) const {
-  // p = 1 is the linear law itself: computed as such, so a neutral depth_exponent changes nothing.
-  if (in_.terms.depth_exponent && *in_.terms.depth_exponent != 1.0)
-    return pad_.PowerLawVerticalForce(d, zeta_qs_, *in_.terms.depth_exponent, in_.terms.depth_reference_m);
-  return pad_.VerticalForce(d, zeta_qs_);
-}
-
-double EffectSoilResponse::Force(double d, double v) const {
-  double f = QuasiStaticForce(d);
-  if (!(v > 0.0) || !(d > 0.0)) return f;
-  const EffectTerms& t = in_.terms;
-  const double quadratic =
-      t.inertial_lambda * in_.bulk_density_kg_m3 +
-      (t.compaction_k_kg_m3 != 0.0 ? t.compaction_k_kg_m3 * std::exp(-d / t.compaction_depth_m) : 0.0);
-  if (quadratic != 0.0) f += quadratic * v * v * pad_.CosinePowerIntegral(d, 3);
-  if (i2_coefficient_ != 0.0) f += i2_coefficient_ * v * pad_.CosinePowerIntegral(d, 2);
-  return f;
-}
-
-double EffectSoilResponse::AddedMass(double d) const {
-  if (in_.terms.added_mass_ca == 0.0 || !(d > 0.0)) return 0.0;
-  const double a = pad_.FootprintRadius(d);
-  return in_.terms.added_mass_ca * in_.bulk_density_kg_m3 * kPi / 3 * a * a * std::min(d, a);
-}
-
-double EffectSoilResponse::AddedMassSlope(double d) const {
-  if (in_.terms.added_mass_ca == 0.0 || !(d > 0.0)) return 0.0;
-  const double a = pad_.FootprintRadius(d), a_slope = pad_.FootprintRadiusSlope(d);
-  const double dv = d < a ? 2 * a * a_slope * d + a * a : 3 * a * a * a_slope;
-  return in_.terms.added_mass_ca * in_.bulk_density_kg_m3 * kPi / 3 * dv;
-}
-
-RecordedSample RecordedAt(const pad::RigDropResult& r, double gravity_m_s2, const EffectTerms& terms, double t_rec) {
-  const double t = t_rec + terms.sensor_dt_s;
-  RecordedSample s;
-  const std::vector<pad::DropSample>& tr = r.trace;
-  if (tr.empty()) return s;
-  if (t <= tr.front().t_s) {
-    const double dt = t - tr.front().t_s;  // free fall before touchdown
-    s.penetration_m = tr.front().penetration_m + tr.front().velocity_m_s * dt + 0.5 * gravity_m_s2 * dt * dt;
-    s.force_N = 0.0;
-  } else if (t >= tr.back().t_s) {
-    s.penetration_m = tr.back().penetration_m;
-    s.force_N = tr.back().force_N;
-  } else {
-    const auto it = std::upper_bound(tr.begin(), tr.end(), t, [](double x, const pad::DropSample& a) { return x < a.t_s; });
-    const pad::DropSample& b = *it;
-    const pad::DropSample& a = *(it - 1);
-    const double w = (t - a.t_s) / (b.t_s - a.t_s);
-    s.penetration_m = a.penetration_m + w * (b.penetration_m - a.penetration_m);
-    s.force_N = a.force_N + w * (b.force_N - a.force_N);
-  }
-  s.penetration_m += terms.sensor_dz_m;
-  return s;
+  return rft::MakeSoilContactModel(law, soil, gravity_m_s2, terms);
 }
 
 }  // namespace touchdown::model

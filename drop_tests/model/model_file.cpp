@@ -127,19 +127,19 @@ rft::SoilParameters ApplyModel(const ModelFile& m, const rft::SoilParameters& so
   return out;
 }
 
-EffectTerms ModelEffectTerms(const ModelFile& m) {
+rft::EffectTerms ModelEffectTerms(const ModelFile& m) {
   return MakeEffectTerms(m.effects, m.source.empty() ? "model " + m.name : m.source);
 }
 
-std::unique_ptr<rft::StressLaw3D> MakeModelStressLaw3D(std::string_view law, const rft::SoilParameters& soil,
-                                                       double gravity_m_s2, const ModelFile* model) {
-  if (!model) return MakeEffectLaw3D(law, soil, gravity_m_s2, EffectTerms{}, soil.atmosphere == rft::Atmosphere::kAir, "");
+rft::SoilContactModel MakeModelStressLaw3D(rft::LawKind law, const rft::SoilParameters& soil,
+                                           double gravity_m_s2, const ModelFile* model) {
+  if (!model) return MakeEffectLaw3D(law, soil, gravity_m_s2, rft::EffectTerms{}, soil.atmosphere == rft::Atmosphere::kAir, "");
   return MakeEffectLaw3D(law, ApplyModel(*model, soil), gravity_m_s2, ModelEffectTerms(*model),
                          soil.atmosphere == rft::Atmosphere::kAir, model->source.empty() ? "model " + model->name : model->source);
 }
 
 nlohmann::json ModelEffectsJson(const ModelFile& m) {
-  const EffectTerms terms = ModelEffectTerms(m);
+  const rft::EffectTerms terms = ModelEffectTerms(m);
   nlohmann::json applied = nlohmann::json::array(), skipped = nlohmann::json::object();
   for (const auto& [id, why] : EffectsNotApplied(terms, /*in_air=*/true)) skipped[id] = why;
   for (const std::string& id : ActiveEffects(terms))

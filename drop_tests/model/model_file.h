@@ -83,13 +83,13 @@ void WriteModelFile(const ModelFile& model, const io::OutputTarget& target, cons
 rft::SoilParameters ApplyModel(const ModelFile& model, const rft::SoilParameters& soil);
 // The model's effects flattened (none when `effects` is empty). Throws InputError naming the
 // model file on a repeated effect or a value out of range (a model built in memory).
-EffectTerms ModelEffectTerms(const ModelFile& model);
-// The 3D stress law of `soil` under `model` (may be null: the soil as it is): zeta override
+rft::EffectTerms ModelEffectTerms(const ModelFile& model);
+// The 3D contact model (stress law and pad-level terms) of `soil` under `model` (may be null: the soil as it is): zeta override
 // (ApplyModel) and the effect terms in their 3D form (MakeEffectLaw3D; gas_cushion only when the
 // soil's atmosphere is air). Throws InputError naming the soil and the model file when an effect
 // needs the soil's bulk density and it has none.
-std::unique_ptr<rft::StressLaw3D> MakeModelStressLaw3D(std::string_view law, const rft::SoilParameters& soil,
-                                                       double gravity_m_s2, const ModelFile* model);
+rft::SoilContactModel MakeModelStressLaw3D(rft::LawKind law, const rft::SoilParameters& soil,
+                                           double gravity_m_s2, const ModelFile* model);
 // The model as a 3D run (lander) reports it: {file, effects: [ids applied], effects_not_applied:
 // {id: reason}}; gas_cushion is applied on the soils in air only (said so in its entry).
 nlohmann::json ModelEffectsJson(const ModelFile& model);

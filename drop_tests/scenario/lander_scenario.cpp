@@ -225,7 +225,11 @@ LanderGroundSpec ReadGround(const io::YamlFields& g, double gravity_m_s2) {
   g.RequireOnly({"height_m", "slope_deg", "downhill_azimuth_deg", "law", "soil", "patches"});
   io::ReadFields(g, GroundNumberFields(), ground);
   if (ground.slope_rad >= 80 * kDeg) g.Fail("slope_deg", "must be below 80");
-  ground.law = g.StringOr("law", "li2013");
+  try {
+    ground.law = rft::ParseLawKind(g.StringOr("law", "li2013"), "", "");
+  } catch (const InputError& e) {
+    g.Fail("law", e.what());
+  }
   ground.default_soil = g.String("soil");
   const SoilCheck check_soil = [&](const io::YamlFields& where, const std::string& key, const std::string& soil) {
     try {
@@ -413,8 +417,8 @@ LanderSetup BuildLanderSetup(const LanderScenario& sc) {
     out.terrain.patches.push_back(patch);
   }
   for (const std::string& name : soil_names)
-    out.terrain.soils.push_back({name, std::shared_ptr<const rft::StressLaw3D>(model::MakeModelStressLaw3D(
-                                           sc.ground.law, io::LoadSoil(name), g, sc.model ? &*sc.model : nullptr))});
+    out.terrain.soils.push_back(
+        {name, model::MakeModelStressLaw3D(sc.ground.law, io::LoadSoil(name), g, sc.model ? &*sc.model : nullptr)});
   return out;
 }
 
@@ -573,14 +577,14 @@ void WriteResolvedLanderScenario(const LanderScenario& s, const std::string& pat
   y << YAML::EndSeq << YAML::EndMap;
   y << YAML::Key << "ground" << YAML::Value << YAML::BeginMap;
   io::WriteFields(y, GroundNumberFields(), s.ground);
-  y << YAML::Key << "law" << YAML::Value << s.ground.law << YAML::Key << "soil" << YAML::Value << s.ground.default_soil;
+  y << YAML::Key << "law" << YAML::Value << std::string(rft::LawKindName(s.ground.law)) << YAML::Key << "soil" << YAML::Value << s.ground.default_soil;
   const LanderSetup setup = BuildLanderSetup(s);
   y << YAML::Key << "soils" << YAML::Value << YAML::BeginSeq;
   for (const rft::TerrainSoil& soil : setup.terrain.soils) {
     const rft::SoilParameters p = s.model ? model::ApplyModel(*s.model, io::LoadSoil(soil.name)) : io::LoadSoil(soil.name);
     y << YAML::BeginMap << YAML::Key << "name" << YAML::Value << p.name << YAML::Key << "zeta_N_cm3_at_gravity"
       << YAML::Value << units::ZetaToN_cm3(p.ZetaAtGravity(s.gravity_m_s2)) << YAML::Key << "atmosphere" << YAML::Value
-      << rft::AtmosphereName(p.atmosphere) << YAML::Key << "law_3d" << YAML::Value << std::string(soil.law->name()) << YAML::EndMap;
+      << rft::AtmosphereName(p.atmosphere) << YAML::Key << "law_3d" << YAML::Value << soil.contact.name() << YAML::EndMap;
   }
   y << YAML::EndSeq;
   if (s.model) y << YAML::Key << "model" << YAML::Value << file(s.model->source);

@@ -51,7 +51,7 @@ struct LanderGroundSpec {
   double height_m = 0.0;            // surface height at the origin
   double slope_rad = 0.0;           // uniform slope angle
   double downhill_azimuth_rad = 0.0;  // direction of steepest descent, from +x towards +y
-  std::string law = "li2013";       // 3D stress law for every soil
+  rft::LawKind law = rft::LawKind::kLi2013;  // 3D stress law for every soil
   std::string default_soil;
   std::vector<LanderPatchSpec> patches;
 };

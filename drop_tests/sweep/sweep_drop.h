@@ -37,7 +37,7 @@ class SweepModels {
   // The pad's profile integral; axisymmetric pads only (has_intrusion).
   bool has_intrusion(int pad) const { return intrusions_[pad] != nullptr; }
   const geom::AxisymmetricIntrusion& intrusion(int pad) const { return *intrusions_[pad]; }
-  const model::EffectTerms& effects() const { return effects_; }
+  const rft::EffectTerms& effects() const { return effects_; }
   // A lander sweep: the scenario's default soil with the model applied (for drops that do not
   // set `soil`).
   const rft::SoilParameters& lander_soil() const { return lander_soil_; }
@@ -47,7 +47,7 @@ class SweepModels {
  private:
   const SweepPlan& plan_;
   std::vector<std::unique_ptr<geom::AxisymmetricIntrusion>> intrusions_;
-  model::EffectTerms effects_;  // the model's, parsed once
+  rft::EffectTerms effects_;  // the model's, parsed once
   rft::SoilParameters lander_soil_;
   std::map<std::string, std::string> soil_names_;  // lander sweeps: soil reference -> name
 };

@@ -104,7 +104,8 @@ rft::ContactWrench QuasiStaticWrench(const LanderModel& model, const rft::Terrai
                                      const Eigen::Vector3d& direction_W) {
   rft::PadKinematics k{pad.R_WP, pad.p_WJ, kProbeSpeed * direction_W.normalized(), Eigen::Vector3d::Zero()};
   const int soil = terrain.SoilAt(pad.p_WJ.x(), pad.p_WJ.y());
-  return rft::ComputeContactWrench(model.legs[leg].pad->surface, k, *terrain.surface, *terrain.soils[soil].law);
+  const rft::SoilContactModel& contact = terrain.soils[soil].contact;
+  return rft::ComputeContactWrench(model.legs[leg].pad->surface, k, *terrain.surface, *contact.law, contact.pad_terms);
 }
 
 namespace {
@@ -150,8 +151,8 @@ void Assemble(const LanderModel& model, const StateLayout& L, const rft::Terrain
       rft::PadKinematics k{f.R_WP, f.p_WJ, f.v_WJ_W, f.w_WP_W};
       const double speed = f.v_WJ_W.norm() + f.w_WP_W.norm() * PadRadius(leg);
       const int soil = terrain.SoilAt(f.p_WJ.x(), f.p_WJ.y());
-      const rft::StressLaw3D& law = *terrain.soils[soil].law;
-      w = rft::ComputeContactWrench(leg.pad->surface, k, *terrain.surface, law);
+      const rft::SoilContactModel& contact = terrain.soils[soil].contact;
+      w = rft::ComputeContactWrench(leg.pad->surface, k, *terrain.surface, *contact.law, contact.pad_terms);
       if (speed < kSoilRampSpeed) {
         w.force_W *= speed / kSoilRampSpeed;
         w.moment_W *= speed / kSoilRampSpeed;
@@ -161,9 +162,9 @@ void Assemble(const LanderModel& model, const StateLayout& L, const rft::Terrain
       // the pad's centre of mass, as in the free drop: a mass m_a on the row e_z^T J_C, with the
       // accretion force -max(dm_a/dt, 0) v_z (grains join at rest, leave with the pad) and the
       // kinetic energy lost, |dm_a/dt| v_z^2 / 2.
-      if (law.added_mass_density_kg_m3() > 0.0) {
+      if (contact.pad_terms.has_added_mass()) {
         const rft::EntrainedMass ea =
-            rft::EntrainedCone(law.added_mass_density_kg_m3(), w.penetration_m, w.penetration_rate_m_s,
+            rft::EntrainedCone(contact.pad_terms.added_mass_density_kg_m3, w.penetration_m, w.penetration_rate_m_s,
                                w.footprint_area_m2, w.footprint_area_rate_m2_s);
         const double v_z = (f.v_WJ_W + f.w_WP_W.cross(f.c_JC_W)).z();
         const double force_z = -ea.mass_kg * bias_C.z() - std::max(ea.rate_kg_s, 0.0) * v_z;

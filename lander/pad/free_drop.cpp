@@ -77,7 +77,7 @@ integ::IntegratorOptions WithScaledTolerances(integ::IntegratorOptions options, 
 }
 }  // namespace
 
-FreeDropResult RunFreeDrop(const geom::PadBody& body, const rft::StressLaw3D& law, const rft::GroundSurface& ground,
+FreeDropResult RunFreeDrop(const geom::PadBody& body, const rft::SoilContactModel& soil, const rft::GroundSurface& ground,
                            const FreeDropInput& in, const FreeDropOptions& options) {
   if (!(body.mass_kg > 0.0) || body.surface.size() == 0 || body.vertices_B.cols() == 0) throw std::invalid_argument("RunFreeDrop: empty pad body");
   if (!(in.gravity_m_s2 > 0.0) || !(in.impact_speed_m_s >= 0.0) || !std::isfinite(in.horizontal_speed_m_s) ||
@@ -89,7 +89,7 @@ FreeDropResult RunFreeDrop(const geom::PadBody& body, const rft::StressLaw3D& la
 
   auto wrench_at = [&](const Pose& s) {
     rft::PadKinematics k{s.R_WB, s.p_WB, s.v_WB, s.w_W};
-    return rft::ComputeContactWrench(body.surface, k, ground, law);
+    return rft::ComputeContactWrench(body.surface, k, ground, *soil.law, soil.pad_terms);
   };
   // added_mass (rft/entrained_mass.h): the entrained cone moves with the centre of mass's vertical
   // velocity v_z. Grains join at rest (dm_a/dt > 0) or leave with the pad's velocity (< 0), so
@@ -97,7 +97,7 @@ FreeDropResult RunFreeDrop(const geom::PadBody& body, const rft::StressLaw3D& la
   // kinetic energy lost, |dm_a/dt| v_z^2 / 2 (accretion, or carried off by shed grains), counts as
   // dissipated with the soil's work. Horizontal motion and rotation keep the pad's own inertia:
   // the cone is defined by the vertical stroke.
-  const double added_density = law.added_mass_density_kg_m3();
+  const double added_density = soil.pad_terms.added_mass_density_kg_m3;
   struct Vertical {
     double a_z = 0.0;         // vertical acceleration of the centre of mass
     double accretion_W = 0.0;  // accretion loss rate
@@ -221,7 +221,7 @@ FreeDropResult RunFreeDrop(const geom::PadBody& body, const rft::StressLaw3D& la
     // term, damping effects) must not count as static capacity.
     Pose probe = PoseOf(body, s);
     rft::PadKinematics down{probe.R_WB, probe.p_WB, Eigen::Vector3d(0.0, 0.0, -1e-6), Eigen::Vector3d::Zero()};
-    const double capacity = rft::ComputeContactWrench(body.surface, down, ground, law).force_W.z();
+    const double capacity = rft::ComputeContactWrench(body.surface, down, ground, *soil.law, soil.pad_terms).force_W.z();
     if (capacity < m * g) return integ::EventAction::kContinue;
     result.final_kinetic_energy_J = 0.5 * m * probe.v_WC.squaredNorm() + 0.5 * probe.w_B.dot(I * probe.w_B);
     s.segment<3>(kV).setZero();

@@ -13,7 +13,7 @@
 // reaches rest in finite time; the threshold only stops the integrator from chasing the
 // direction of a vanishing velocity.
 //
-// A law with added mass (StressLaw3D::added_mass_density_kg_m3, rft/entrained_mass.h) adds the
+// A soil with added mass (PadLevelTerms::added_mass_density_kg_m3, rft/entrained_mass.h) adds the
 // entrained cone to the vertical inertia of the centre of mass (see free_drop.cpp); its
 // accretion loss counts in dissipated_energy_J, so the energy balance closes as without it.
 #include <Eigen/Core>
@@ -24,7 +24,7 @@
 #include "lander/integ/cvode_integrator.h"
 #include "lander/pad/pad_pose.h"
 #include "rft/ground.h"
-#include "rft/stress_law_3d.h"
+#include "rft/soil_contact_model.h"
 
 namespace touchdown::pad {
 
@@ -60,7 +60,7 @@ struct FreeDropSample {
   double t_s = 0.0;              // since touchdown
   double penetration_m = 0.0;    // depth of the lowest surface point
   double velocity_m_s = 0.0;     // centre of mass, downward
-  double force_N = 0.0;          // vertical soil force on the pad, upward (with the law's added mass: the
+  double force_N = 0.0;          // vertical soil force on the pad, upward (with the soil's added mass: the
                                  // force from below, soil and entrained grains, m (a_z + g), as the rig's
                                  // load cell records it)
   double force_x_N = 0.0;        // horizontal soil force along x
@@ -84,7 +84,7 @@ struct FreeDropResult {
   integ::IntegratorSummary solver;
 };
 
-FreeDropResult RunFreeDrop(const geom::PadBody& body, const rft::StressLaw3D& law, const rft::GroundSurface& ground,
+FreeDropResult RunFreeDrop(const geom::PadBody& body, const rft::SoilContactModel& soil, const rft::GroundSurface& ground,
                            const FreeDropInput& input, const FreeDropOptions& options = {});
 
 }  // namespace touchdown::pad

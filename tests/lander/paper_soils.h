@@ -23,12 +23,9 @@ inline rft::SoilParameters Fjs1(bool closely_packed) {
   return s;
 }
 
-// The li2013 law of a soil, with no effect terms (as a scenario without a model file).
-inline std::shared_ptr<const rft::StressLaw3D> Fjs1Law(bool closely_packed, double gravity_m_s2 = 9.81) {
-  const rft::SoilParameters soil = Fjs1(closely_packed);
-  rft::EffectTerms3D terms;
-  terms.inertial_density_kg_m3 = soil.bulk_density_kg_m3;
-  return rft::MakeStressLaw3D("li2013", soil, gravity_m_s2, terms);
+// The li2013 contact model of a soil, with no effect terms (as a scenario without a model file).
+inline rft::SoilContactModel Fjs1Law(bool closely_packed, double gravity_m_s2 = 9.81) {
+  return rft::MakeSoilContactModel(rft::LawKind::kLi2013, Fjs1(closely_packed), gravity_m_s2, {});
 }
 
 }  // namespace touchdown::test

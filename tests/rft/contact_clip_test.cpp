@@ -6,15 +6,15 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <numbers>
 
-#include "drop_tests/io/catalog.h"
-#include "lander/pad/pad_pose.h"
 #include "rft/contact_internal.h"
 #include "rft/contact_wrench.h"
-#include "rft/stress_law_3d_factory.h"
+#include "rft/li2013_3d.h"
+#include "tests/rft/pad_meshes.h"
 
 namespace touchdown::rft {
 namespace {
@@ -37,20 +37,34 @@ TEST(ContactClip, NoVertexBelowTheSurfaceIsNothingSubmerged) {
   }
 }
 
+// A hexagonal prism as big as the paper's round pads (circumradius 50 mm, 16 mm thick; the
+// catalogue's `hex` pad): two of its bottom edges run along x, so tilted about x it lands on a
+// whole edge. Its bottom is split into an inner and an outer ring, so more vertices share depths.
+SurfaceElements HexPad() { return testing::MakeRevolvedPad({{0.0, 0.0}, {0.025, 0.0}, {0.05, 0.0}, {0.05, 0.016}}, 6); }
+
+// The reference point that puts the pad's lowest vertex `depth_m` below level ground at z = 0.
+Eigen::Vector3d PlaceAtDepth(const SurfaceElements& s, const Eigen::Matrix3d& R, double depth_m) {
+  double lowest = INFINITY;
+  for (const Eigen::Matrix3Xd* vertices : {&s.p0_B, &s.p1_B, &s.p2_B})
+    lowest = std::min(lowest, (R.row(2) * *vertices).minCoeff());
+  return {0.0, 0.0, -depth_m - lowest};
+}
+
+const Li2013TreersLaw kLaw(3.48e6);  // fjs1_lp's zeta at Earth gravity, N/m^3
+
 // The hex pad tilted about x lands on a whole edge (many vertices at one depth). Within rounding
 // of the surface, spinning slowly (the rotating path) or not, the wrench is rounding-sized: it
 // grows from zero with the depth, never jumps.
 TEST(ContactClip, HexPadOnItsEdgeHasNoSpuriousForce) {
-  const io::PadSpec pad = io::LoadPad("hex");
-  const auto law = MakeStressLaw3D("li2013", io::LoadSoil("fjs1_lp"), 9.81);
+  const SurfaceElements pad = HexPad();
   for (const double tilt_deg : {5.0, 10.0}) {
-    const Eigen::Matrix3d R = pad::TiltRotation(pad::TiltAxis::kX, tilt_deg * std::numbers::pi / 180.0);
+    const Eigen::Matrix3d R = testing::RotX(tilt_deg * std::numbers::pi / 180.0);
     for (const double spin : {0.0, -5.4e-7, 1e-3}) {
       for (const double depth : {-1e-18, 0.0, 1e-19, 1e-18, 1e-17, 1e-16}) {
-        SCOPED_TRACE(testing::Message() << tilt_deg << " deg, spin " << spin << " rad/s, depth " << depth << " m");
-        PadKinematics k{R, pad::PlaceAtDepth(pad.body, R, depth), Eigen::Vector3d(0.0, 0.0, -1.0),
+        SCOPED_TRACE(::testing::Message() << tilt_deg << " deg, spin " << spin << " rad/s, depth " << depth << " m");
+        PadKinematics k{R, PlaceAtDepth(pad, R, depth), Eigen::Vector3d(0.0, 0.0, -1.0),
                         Eigen::Vector3d(spin, 0.0, 0.0)};
-        const ContactWrench w = ComputeContactWrench(pad.body.surface, k, PlaneGround(), *law);
+        const ContactWrench w = ComputeContactWrench(pad, k, PlaneGround(), kLaw);
         EXPECT_LT(w.force_W.norm(), 1e-12);
         EXPECT_LT(w.moment_W.norm(), 1e-12);
         EXPECT_LT(w.submerged_area_m2, 1e-12);
@@ -59,22 +73,22 @@ TEST(ContactClip, HexPadOnItsEdgeHasNoSpuriousForce) {
   }
 }
 
-// The state at touchdown of `touchdown drop --pad hex --soil fjs1_lp --speed 1 --free --tilt-deg 5`
-// (p_WC, q_WB, v_WC, w_B), on which the right-hand side returned 5e12 N.
+// The attitude and motion at touchdown of `touchdown drop --pad hex --soil fjs1_lp --speed 1
+// --free --tilt-deg 5` (q_WB, v_WC, w_B), on which the right-hand side returned 5e12 N, with the
+// lowest vertex on the surface to rounding.
 TEST(ContactClip, HexPadTouchdownStateOfIssue13) {
-  const io::PadSpec pad = io::LoadPad("hex");
-  const auto law = MakeStressLaw3D("li2013", io::LoadSoil("fjs1_lp"), 9.81);
-  const Eigen::Vector3d p_WC(1.4392125832560127e-18, 0.00069724594193307503, 0.011743511887971163);
+  const SurfaceElements pad = HexPad();
   const Eigen::Quaterniond q(0.99904822158426054, 0.043619387310304569, 6.0453897080618375e-21,
                              4.3460556768933539e-22);
-  const Eigen::Vector3d v_WC(1.2403368089982267e-19, -2.3811895166984525e-10, -0.99999995223221172);
+  const Eigen::Vector3d v_W(1.2403368089982267e-19, -2.3811895166984525e-10, -0.99999995223221172);
   const Eigen::Vector3d w_B(-5.4456585518553173e-07, 7.9361597937968307e-17, 1.2701133929881294e-18);
   const Eigen::Matrix3d R = q.normalized().toRotationMatrix();
-  const Eigen::Vector3d w_W = R * w_B, p_WB = p_WC - R * pad.body.com_B;
-  const PadKinematics k{R, p_WB, v_WC + w_W.cross(p_WB - p_WC), w_W};
-  const ContactWrench w = ComputeContactWrench(pad.body.surface, k, PlaneGround(), *law);
-  EXPECT_LT(w.force_W.norm(), 1e-12);
-  EXPECT_LT(w.moment_W.norm(), 1e-12);
+  for (const double depth : {-1e-18, 0.0, 1e-18}) {
+    const PadKinematics k{R, PlaceAtDepth(pad, R, depth), v_W, R * w_B};
+    const ContactWrench w = ComputeContactWrench(pad, k, PlaneGround(), kLaw);
+    EXPECT_LT(w.force_W.norm(), 1e-12) << depth;
+    EXPECT_LT(w.moment_W.norm(), 1e-12) << depth;
+  }
 }
 
 }  // namespace

@@ -89,9 +89,13 @@ SoilParameters Soil() {
 }
 
 TEST(RftEffectFactory, NeutralTermsGiveTheBaseLawExactly) {
-  const auto base = MakeStressLaw3D("li2013", Soil(), 1.62);
-  const auto same = MakeStressLaw3D("li2013", Soil(), 1.62, EffectTerms3D{});
+  const auto base = MakeStressLaw3D(LawKind::kLi2013, Soil(), 1.62);
+  const SoilContactModel model = MakeSoilContactModel(LawKind::kLi2013, Soil(), 1.62, EffectTerms{});
+  const StressLaw3D* same = model.law.get();
   EXPECT_EQ(same->name(), base->name());
+  EXPECT_EQ(model.name(), "li2013");
+  EXPECT_FALSE(model.pad_terms.has_power_depth() || model.pad_terms.has_compaction() ||
+               model.pad_terms.has_added_mass());
   const Eigen::Vector3d n = Eigen::Vector3d(0.3, 0.0, -0.9).normalized(), v(0.5, 0.2, -2.0);
   EXPECT_EQ(same->StressPerDepth(n, v), base->StressPerDepth(n, v));
   EXPECT_EQ(same->DynamicStress(n, v), base->DynamicStress(n, v));
@@ -100,21 +104,21 @@ TEST(RftEffectFactory, NeutralTermsGiveTheBaseLawExactly) {
 TEST(RftEffectFactory, StacksTheTermsAndTheModelsInertialTermReplacesTheSoils) {
   SoilParameters s = Soil();
   s.dynamic_term = true;  // the soil's own lambda = 1 ...
-  EffectTerms3D t;
+  EffectTerms t;
   t.inertial_lambda = 2.5;  // ... replaced by the model's
   t.damping_c_N_s_m3 = kC;
   t.gas_chi = kChi;
   t.gas_c_N_s_m3 = kCg;
-  const auto law = MakeStressLaw3D("li2013", s, 9.81, t);
+  const auto law = MakeSoilContactModel(LawKind::kLi2013, s, 9.81, t).law;
   EXPECT_EQ(law->name(), "li2013+dynamic+gas_cushion+rate_damping");
   const double v = 1.3;
   // Straight down on a horizontal face: every term along +z, summed.
   EXPECT_NEAR(law->DynamicStress(kDown, v * kDown).z(), 2.5 * 1540.0 * v * v + (kC + kCg) * v, 1e-9);
   EXPECT_NEAR(law->StressPerDepth(kDown, kDown).z(), (1 - kChi) * kZeta, 1e-6);
-  t = EffectTerms3D{};
+  t = EffectTerms{};
   t.inertial_lambda = 1.0;
   s.bulk_density_kg_m3 = 0.0;
-  EXPECT_THROW(MakeStressLaw3D("li2013", s, 9.81, t), InputError);
+  EXPECT_THROW(MakeSoilContactModel(LawKind::kLi2013, s, 9.81, t), InputError);
 }
 
 }  // namespace

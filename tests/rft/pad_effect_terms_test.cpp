@@ -1,4 +1,4 @@
-// The pad-level effect terms in the 3D contact (rft/pad_effect_terms.h): the depth law
+// The pad-level terms in the 3D contact (rft/pad_level_terms.h): the depth law
 // z_ref (z / z_ref)^p integrated exactly over clipped triangles (against polynomial closed forms,
 // a brute-force fine quadrature, continuity through the surface and across the closed-form /
 // quadrature switch, p = 1 bit-identical to the linear law), the compaction transient
@@ -12,8 +12,9 @@
 #include "rft/contact_wrench.h"
 #include "rft/deepest_point.h"
 #include "rft/entrained_mass.h"
+#include "rft/input_error.h"
 #include "rft/li2013_3d.h"
-#include "rft/pad_effect_terms.h"
+#include "rft/pad_level_terms.h"
 #include "rft/stress_law_3d_factory.h"
 #include "tests/rft/pad_meshes.h"
 
@@ -76,12 +77,25 @@ Moments BruteForce(const SurfaceElements& s, double p, int n) {
   return out;
 }
 
+PadLevelTerms DepthTerms(double p) {
+  PadLevelTerms t;
+  t.depth = {p, kZref};
+  return t;
+}
+
+PadLevelTerms CompactionTerms(double k_c, double d_c) {
+  PadLevelTerms t;
+  t.compaction_k_kg_m3 = k_c;
+  t.compaction_depth_m = d_c;
+  return t;
+}
+
 ContactWrench Wrench(const SurfaceElements& s, double p, const Eigen::Vector3d& w = Eigen::Vector3d::Zero()) {
-  const DepthExponentLaw law(std::make_unique<ConstantLaw>(kSigma), p, kZref);
+  const ConstantLaw law(kSigma);
   PadKinematics k;
   k.v_WB_W = Eigen::Vector3d(0.0, 0.0, -1.0);
   k.w_WB_W = w;
-  return ComputeContactWrench(s, k, PlaneGround(), law);
+  return ComputeContactWrench(s, k, PlaneGround(), law, DepthTerms(p));
 }
 
 // int d^2 r dA over a submerged triangle from int l0^a l1^b l2^c dA = 2 A a! b! c! / (a+b+c+2)!.
@@ -213,11 +227,11 @@ TEST(RftDepthExponent, ContinuousAsATriangleCrossesTheSurface) {
   }
 }
 
-// p = 1 takes the linear path: bit-identical to the undecorated law, rotating or not.
+// p = 1 takes the linear path: bit-identical to no pad-level terms, rotating or not.
 TEST(RftDepthExponent, ExponentOneIsTheLinearLawBitForBit) {
   const SurfaceElements pad = testing::MakeRevolvedPad({{0.0, 0.0}, {0.04, 0.0}, {0.05, 0.008}, {0.05, 0.016}}, 48);
   const Li2013TreersLaw base(2.0e6);
-  const DepthExponentLaw same(std::make_unique<Li2013TreersLaw>(2.0e6), 1.0, kZref);
+  const PadLevelTerms same = DepthTerms(1.0);
   for (const Eigen::Vector3d& w : {Eigen::Vector3d::Zero().eval(), Eigen::Vector3d(0.5, -1.0, 0.2)}) {
     PadKinematics k;
     k.R_WB = testing::RotX(0.2) * testing::RotY(-0.1);
@@ -225,7 +239,7 @@ TEST(RftDepthExponent, ExponentOneIsTheLinearLawBitForBit) {
     k.v_WB_W = Eigen::Vector3d(0.3, 0.1, -1.1);
     k.w_WB_W = w;
     const ContactWrench a = ComputeContactWrench(pad, k, PlaneGround(), base);
-    const ContactWrench b = ComputeContactWrench(pad, k, PlaneGround(), same);
+    const ContactWrench b = ComputeContactWrench(pad, k, PlaneGround(), base, same);
     for (int i = 0; i < 3; ++i) {
       EXPECT_EQ(a.force_W[i], b.force_W[i]);
       EXPECT_EQ(a.moment_W[i], b.moment_W[i]);
@@ -241,7 +255,7 @@ TEST(RftDepthExponent, LevelFlatPadIsTheRigsPowerLaw) {
   const SurfaceElements pad = testing::MakeRevolvedPad(testing::FlatProfile(r, 0.016), sectors);
   const double area = 0.5 * sectors * r * r * std::sin(2 * kPi / sectors), perimeter = 2 * sectors * r * std::sin(kPi / sectors);
   for (const double p : {0.6, 1.5}) {
-    const DepthExponentLaw law(std::make_unique<Li2013TreersLaw>(zeta), p, kZref);
+    const Li2013TreersLaw law(zeta);
     PadKinematics k;
     k.p_WB = Eigen::Vector3d(0.0, 0.0, -d);
     k.v_WB_W = Eigen::Vector3d(0.0, 0.0, -1.0);
@@ -251,7 +265,9 @@ TEST(RftDepthExponent, LevelFlatPadIsTheRigsPowerLaw) {
     const double bottom = law.StressPerDepth(Eigen::Vector3d(0.0, 0.0, -1.0), k.v_WB_W).z();  // zeta
     EXPECT_NEAR(bottom, zeta, 1e-9 * zeta);
     const double expected = bottom * s * area * std::pow(d, p) + wall * s * perimeter * std::pow(d, p + 1) / (p + 1);
-    EXPECT_NEAR(ComputeContactWrench(pad, k, PlaneGround(), law).force_W.z(), expected, 1e-10 * expected) << p;
+    EXPECT_NEAR(ComputeContactWrench(pad, k, PlaneGround(), law, DepthTerms(p)).force_W.z(), expected,
+                1e-10 * expected)
+        << p;
   }
 }
 
@@ -260,19 +276,18 @@ TEST(RftDepthExponent, LevelFlatPadIsTheRigsPowerLaw) {
 TEST(RftCompactionPeak, PlateGetsKcV2AExpOfThePadDepth) {
   constexpr double L = 0.04, kc = 3.0e4, dc = 0.003, zeta = 2.0e6;
   const SurfaceElements plate = testing::MakeBox(Eigen::Vector3d(-L / 2, -L / 2, 0.0), Eigen::Vector3d(L / 2, L / 2, 1e-3), 2);
-  const CompactionPeakLaw law(std::make_unique<Li2013TreersLaw>(zeta), kc, dc);
-  EXPECT_EQ(law.name(), "li2013+compaction_peak");
+  const Li2013TreersLaw law(zeta);
+  const PadLevelTerms terms = CompactionTerms(kc, dc);
   const Eigen::Vector3d down(0, 0, -1), n = Eigen::Vector3d(0.2, 0.1, -0.9).normalized(), v(0.3, 0.0, -1.5);
-  EXPECT_TRUE(law.CompactionStress(n, v).isApprox(-kc * n.dot(v) * n.dot(v) * n, 1e-14));
-  EXPECT_EQ(law.CompactionStress(-n, v), Eigen::Vector3d::Zero());
-  EXPECT_EQ(law.DynamicStress(n, v), Eigen::Vector3d::Zero());
+  EXPECT_TRUE(terms.CompactionStress(n, v).isApprox(-kc * n.dot(v) * n.dot(v) * n, 1e-14));
+  EXPECT_EQ(terms.CompactionStress(-n, v), Eigen::Vector3d::Zero());
   for (const double speed : {0.5, 1.3})
     for (const double depth : {0.001, 0.006}) {
       PadKinematics k;
       k.p_WB = Eigen::Vector3d(0.1, 0.0, -depth);
       k.v_WB_W = speed * down;
-      const ContactWrench with = ComputeContactWrench(plate, k, PlaneGround(), law);
-      const ContactWrench without = ComputeContactWrench(plate, k, PlaneGround(), law.inner());
+      const ContactWrench with = ComputeContactWrench(plate, k, PlaneGround(), law, terms);
+      const ContactWrench without = ComputeContactWrench(plate, k, PlaneGround(), law);
       const double expected = kc * speed * speed * L * L * std::exp(-depth / dc);
       EXPECT_NEAR(with.force_W.z() - without.force_W.z(), expected, 1e-9 * expected);
       EXPECT_NEAR(with.penetration_m, depth, 1e-15);
@@ -286,14 +301,12 @@ TEST(RftCompactionPeak, PlateGetsKcV2AExpOfThePadDepth) {
   Eigen::Matrix3Xd vertices(3, 3 * plate.size());
   vertices << plate.p0_B, plate.p1_B, plate.p2_B;
   const double z_pad = DeepestVertexDepth(vertices, k.R_WB, k.p_WB, PlaneGround());
-  EXPECT_NEAR(ComputeContactWrench(plate, k, PlaneGround(), law).penetration_m, z_pad, 1e-15);
+  EXPECT_NEAR(ComputeContactWrench(plate, k, PlaneGround(), law, terms).penetration_m, z_pad, 1e-15);
   // Doubling d_c: the transient part scales by exp(-z/(2 d_c)) / exp(-z/d_c).
-  const CompactionPeakLaw longer(std::make_unique<Li2013TreersLaw>(zeta), kc, 2 * dc);
-  const double base = ComputeContactWrench(plate, k, PlaneGround(), law.inner()).force_W.z();
-  const double a = ComputeContactWrench(plate, k, PlaneGround(), law).force_W.z() - base;
-  const double b = ComputeContactWrench(plate, k, PlaneGround(), longer).force_W.z() - base;
+  const double base = ComputeContactWrench(plate, k, PlaneGround(), law).force_W.z();
+  const double a = ComputeContactWrench(plate, k, PlaneGround(), law, terms).force_W.z() - base;
+  const double b = ComputeContactWrench(plate, k, PlaneGround(), law, CompactionTerms(kc, 2 * dc)).force_W.z() - base;
   EXPECT_NEAR(b / a, std::exp(-z_pad / (2 * dc)) / std::exp(-z_pad / dc), 1e-9);
-  EXPECT_THROW(CompactionPeakLaw(std::make_unique<Li2013TreersLaw>(zeta), kc, 0.0), std::invalid_argument);
 }
 
 // The footprint of a level revolved pad is the projected area of its submerged bottom (pi a^2 on
@@ -303,8 +316,9 @@ TEST(RftAddedMass, FootprintAndItsRateOnARevolvedPad) {
   const int sectors = 128;
   // A chamfered pad: flat to x = 0.04, 45-degree chamfer to (0.05, 0.01), wall to 0.016.
   const SurfaceElements pad = testing::MakeRevolvedPad({{0.0, 0.0}, {0.04, 0.0}, {0.05, 0.01}, {0.05, 0.016}}, sectors);
-  const AddedMassLaw law(std::make_unique<Li2013TreersLaw>(2.0e6), 800.0);
-  EXPECT_EQ(law.added_mass_density_kg_m3(), 800.0);
+  const Li2013TreersLaw law(2.0e6);
+  PadLevelTerms terms;
+  terms.added_mass_density_kg_m3 = 800.0;
   const double poly = 0.5 * sectors * std::sin(2 * kPi / sectors);  // polygon area / radius^2
   auto advanced = [](PadKinematics k, double dt) {  // the pose dt later (rigid motion)
     k.p_WB += dt * k.v_WB_W;
@@ -316,13 +330,13 @@ TEST(RftAddedMass, FootprintAndItsRateOnARevolvedPad) {
     PadKinematics k;
     k.p_WB = Eigen::Vector3d(0.0, 0.0, -d);
     k.v_WB_W = Eigen::Vector3d(0.0, 0.0, -0.8);
-    const ContactWrench w = ComputeContactWrench(pad, k, PlaneGround(), law);
+    const ContactWrench w = ComputeContactWrench(pad, k, PlaneGround(), law, terms);
     const double a = 0.04 + std::min(d, 0.01);  // footprint radius at the surface
     EXPECT_NEAR(w.footprint_area_m2, poly * a * a, 1e-12) << d;
     EXPECT_NEAR(w.footprint_area_rate_m2_s, d < 0.01 ? 0.8 * poly * 2 * a : 0.0, 1e-9) << d;
     EXPECT_NEAR(w.penetration_rate_m_s, 0.8, 1e-15);
-    // The undecorated law leaves them at 0 (not computed).
-    EXPECT_EQ(ComputeContactWrench(pad, k, PlaneGround(), law.inner()).footprint_area_m2, 0.0);
+    // Without added mass they stay at 0 (not computed).
+    EXPECT_EQ(ComputeContactWrench(pad, k, PlaneGround(), law).footprint_area_m2, 0.0);
   }
   for (const double d : {0.004, 0.009}) {
     PadKinematics k;
@@ -330,10 +344,10 @@ TEST(RftAddedMass, FootprintAndItsRateOnARevolvedPad) {
     k.p_WB = Eigen::Vector3d(0.0, 0.0, -d);
     k.v_WB_W = Eigen::Vector3d(0.3, -0.1, -0.8);
     k.w_WB_W = Eigen::Vector3d(1.5, -0.7, 0.4);
-    const ContactWrench w = ComputeContactWrench(pad, k, PlaneGround(), law);
+    const ContactWrench w = ComputeContactWrench(pad, k, PlaneGround(), law, terms);
     const double h = 1e-7;
-    const ContactWrench up = ComputeContactWrench(pad, advanced(k, h), PlaneGround(), law);
-    const ContactWrench dn = ComputeContactWrench(pad, advanced(k, -h), PlaneGround(), law);
+    const ContactWrench up = ComputeContactWrench(pad, advanced(k, h), PlaneGround(), law, terms);
+    const ContactWrench dn = ComputeContactWrench(pad, advanced(k, -h), PlaneGround(), law, terms);
     const double fd_area = (up.footprint_area_m2 - dn.footprint_area_m2) / (2 * h);
     const double fd_depth = (up.penetration_m - dn.penetration_m) / (2 * h);
     std::printf("[ footprint ] tilted, spinning, d %.3f m: dA/dt %.9e (finite difference %.9e), dd/dt %.9f (%.9f)\n",
@@ -352,36 +366,76 @@ TEST(RftAddedMass, FootprintAndItsRateOnARevolvedPad) {
   EXPECT_EQ(EntrainedCone(800.0, 0.0, 1.0, 1.0, 1.0).mass_kg, 0.0);
 }
 
-TEST(RftPadEffectTerms, FactoryStacksThemOnlyWhenTheyAct) {
+TEST(RftPadEffectTerms, FactorySetsThemOnlyWhenTheyAct) {
   SoilParameters soil;
   soil.name = "test";
   soil.zeta_N_m3 = 2.0e6;
   soil.bulk_density_kg_m3 = 1600.0;
-  EffectTerms3D t;
+  EffectTerms t;
   t.depth_exponent = 1.0;
   t.compaction_k_kg_m3 = 0.0;
+  t.compaction_depth_m = 0.002;
   t.added_mass_ca = 0.0;
-  EXPECT_EQ(MakeStressLaw3D("li2013", soil, 9.81, t)->name(), "li2013");
+  const SoilContactModel neutral = MakeSoilContactModel(LawKind::kLi2013, soil, 9.81, t);
+  EXPECT_EQ(neutral.name(), "li2013");
+  EXPECT_EQ(neutral.pad_terms.depth.exponent, 1.0);
+  EXPECT_EQ(neutral.pad_terms.compaction_k_kg_m3, 0.0);
+  EXPECT_EQ(neutral.pad_terms.compaction_depth_m, 1.0);  // the neutral value, not the unused d_c
+  EXPECT_EQ(neutral.pad_terms.added_mass_density_kg_m3, 0.0);
   t.depth_exponent = 1.3;
   t.compaction_k_kg_m3 = 1e4;
-  t.compaction_depth_m = 0.002;
   t.added_mass_ca = 0.5;
-  const auto law = MakeStressLaw3D("li2013", soil, 9.81, t);
-  EXPECT_EQ(law->name(), "li2013+depth_exponent+compaction_peak+added_mass");
-  EXPECT_EQ(law->depth_law().exponent, 1.3);
-  EXPECT_EQ(law->compaction_decay_depth_m(), 0.002);
-  EXPECT_EQ(law->added_mass_density_kg_m3(), 0.5 * 1600.0);
-  // The older decorators forward the pad-level terms of the law they wrap.
+  const SoilContactModel model = MakeSoilContactModel(LawKind::kLi2013, soil, 9.81, t);
+  EXPECT_EQ(model.name(), "li2013+depth_exponent+compaction_peak+added_mass");
+  EXPECT_EQ(model.law->name(), "li2013");
+  EXPECT_EQ(model.pad_terms.depth.exponent, 1.3);
+  EXPECT_EQ(model.pad_terms.depth.reference_m, 0.01);
+  EXPECT_EQ(model.pad_terms.compaction_k_kg_m3, 1e4);
+  EXPECT_EQ(model.pad_terms.compaction_depth_m, 0.002);
+  EXPECT_EQ(model.pad_terms.added_mass_density_kg_m3, 0.5 * 1600.0);
+  // The per-element terms wrap the law; the pad-level terms stay beside it.
   t.damping_c_N_s_m3 = 100.0;
   t.gas_chi = 0.1;
   t.inertial_lambda = 1.0;
-  const auto all = MakeStressLaw3D("li2013", soil, 9.81, t);
-  EXPECT_EQ(all->depth_law().exponent, 1.3);
-  EXPECT_TRUE(all->has_compaction());
-  EXPECT_EQ(all->added_mass_density_kg_m3(), 800.0);
+  const SoilContactModel all = MakeSoilContactModel(LawKind::kLi2013, soil, 9.81, t);
+  EXPECT_EQ(all.name(), "li2013+dynamic+gas_cushion+rate_damping+depth_exponent+compaction_peak+added_mass");
+  EXPECT_EQ(all.pad_terms.added_mass_density_kg_m3, 800.0);
+  t.compaction_depth_m = 0.0;
+  EXPECT_THROW(MakeSoilContactModel(LawKind::kLi2013, soil, 9.81, t), InputError);
+  t.compaction_depth_m = 0.002;
   soil.bulk_density_kg_m3 = 0.0;
   t.inertial_lambda = 0.0;
-  EXPECT_THROW(MakeStressLaw3D("li2013", soil, 9.81, t), std::exception);
+  EXPECT_THROW(MakeSoilContactModel(LawKind::kLi2013, soil, 9.81, t), InputError);
+}
+
+// All three pad-level terms at once on a level flat disc pushed straight down: the power-law
+// force of the rig (see LevelFlatPadIsTheRigsPowerLaw) plus the compaction transient
+// k_c v^2 A exp(-d / d_c) on the bottom (the wall slides: v.n = 0); the added mass changes only
+// the footprint bookkeeping, never the force.
+TEST(RftPadEffectTerms, TogetherTheyAddTheirClosedForms) {
+  const double r = 0.05, zeta = 2.0e6, d = 0.006, p = 1.4, kc = 2.0e4, dc = 0.004, v = 1.2;
+  const int sectors = 256;
+  const SurfaceElements pad = testing::MakeRevolvedPad(testing::FlatProfile(r, 0.016), sectors);
+  const double area = 0.5 * sectors * r * r * std::sin(2 * kPi / sectors),
+               perimeter = 2 * sectors * r * std::sin(kPi / sectors);
+  const Li2013TreersLaw law(zeta);
+  PadLevelTerms terms = CompactionTerms(kc, dc);
+  terms.depth = {p, kZref};
+  terms.added_mass_density_kg_m3 = 900.0;
+  PadKinematics k;
+  k.p_WB = Eigen::Vector3d(0.0, 0.0, -d);
+  k.v_WB_W = Eigen::Vector3d(0.0, 0.0, -v);
+  const double wall = law.StressPerDepth(Eigen::Vector3d(1.0, 0.0, 0.0), k.v_WB_W).z();
+  const double s = std::pow(kZref, 1 - p);
+  const double expected = zeta * s * area * std::pow(d, p) + wall * s * perimeter * std::pow(d, p + 1) / (p + 1) +
+                          kc * v * v * area * std::exp(-d / dc);
+  const ContactWrench w = ComputeContactWrench(pad, k, PlaneGround(), law, terms);
+  EXPECT_NEAR(w.force_W.z(), expected, 1e-10 * expected);
+  EXPECT_NEAR(w.penetration_m, d, 1e-15);
+  EXPECT_NEAR(w.footprint_area_m2, area, 1e-12);
+  PadLevelTerms no_mass = terms;
+  no_mass.added_mass_density_kg_m3 = 0.0;
+  EXPECT_EQ(ComputeContactWrench(pad, k, PlaneGround(), law, no_mass).force_W, w.force_W);
 }
 
 }  // namespace

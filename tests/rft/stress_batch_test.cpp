@@ -65,7 +65,7 @@ void FillCases(std::vector<Eigen::Vector3d>& n, std::vector<Eigen::Vector3d>& v)
 TEST(RftStressBatch, EveryLawGivesTheSameStressesAsElementByElement) {
   std::vector<Eigen::Vector3d> n, v;
   FillCases(n, v);
-  EffectTerms3D all;
+  EffectTerms all;
   all.inertial_lambda = 2.0;
   all.damping_c_N_s_m3 = 1e4;
   all.gas_chi = 0.3;
@@ -74,14 +74,14 @@ TEST(RftStressBatch, EveryLawGivesTheSameStressesAsElementByElement) {
   all.compaction_k_kg_m3 = 3e4;
   all.compaction_depth_m = 0.003;
   all.added_mass_ca = 2.0;
-  EffectTerms3D gas;
+  EffectTerms gas;
   gas.gas_chi = 0.4;
-  std::vector<std::unique_ptr<StressLaw3D>> laws;
-  laws.push_back(MakeStressLaw3D("li2013", Soil(), 9.81));
-  laws.push_back(MakeStressLaw3D("agarwal2023", Soil(), 9.81));
-  laws.push_back(MakeStressLaw3D("li2013", Soil(), 1.62, gas));
-  laws.push_back(MakeStressLaw3D("li2013", Soil(), 9.81, all));
-  laws.push_back(MakeStressLaw3D("agarwal2023", Soil(), 3.71, all));
+  std::vector<std::shared_ptr<const StressLaw3D>> laws;
+  laws.push_back(MakeStressLaw3D(LawKind::kLi2013, Soil(), 9.81));
+  laws.push_back(MakeStressLaw3D(LawKind::kAgarwal2023, Soil(), 9.81));
+  laws.push_back(MakeSoilContactModel(LawKind::kLi2013, Soil(), 1.62, gas).law);
+  laws.push_back(MakeSoilContactModel(LawKind::kLi2013, Soil(), 9.81, all).law);
+  laws.push_back(MakeSoilContactModel(LawKind::kAgarwal2023, Soil(), 3.71, all).law);
   for (const auto& law : laws) {
     const int total = static_cast<int>(n.size());
     for (int start = 0; start < total; start += StressBatch::kCapacity) {
@@ -111,7 +111,7 @@ TEST(RftStressBatch, EveryLawGivesTheSameStressesAsElementByElement) {
 }
 
 TEST(RftStressBatch, EmptyBatchIsANoOp) {
-  const auto law = MakeStressLaw3D("li2013", Soil(), 9.81);
+  const auto law = MakeStressLaw3D(LawKind::kLi2013, Soil(), 9.81);
   StressBatch b;
   b.count = 0;
   b.sx[0] = 42.0;

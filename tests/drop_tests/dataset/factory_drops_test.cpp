@@ -48,7 +48,7 @@ TEST(FactoryDrops, SynthRecordsTheFactorysDrop) {
   const DatasetTrace& tr = ds.drops[0].trace;
   ASSERT_GT(tr.size(), 20u);
   for (size_t i = 0; i < tr.size(); ++i) {
-    const model::RecordedSample r = model::RecordedAt(drop.result, kMoonG, c.effects, tr.t_s[i]);
+    const pad::RecordedSample r = pad::RecordedAt(drop.result, kMoonG, c.effects, tr.t_s[i]);
     ASSERT_EQ(tr.force_N[i], r.force_N) << i;
     ASSERT_EQ(tr.penetration_m[i], r.penetration_m) << i;
   }

@@ -43,7 +43,7 @@ TEST(DropFactory, RigResponseIsQuasiStaticRftAtTheDropsZeta) {
   const auto intrusion = MakeRigIntrusion(geom::MakeFlatProfile(r, 1e-7));
   rft::SoilParameters soil = io::LoadSoil("fjs1_lp");
   soil = DropSoil(soil, 3.0e6, std::nullopt);
-  const model::EffectSoilResponse response = MakeRigResponse(*intrusion, soil, kMoonG, {});
+  const pad::EffectSoilResponse response = MakeRigResponse(*intrusion, soil, kMoonG, {});
   const double zeta_g = 3.0e6 * kMoonG / soil.reference_gravity_m_s2;
   const double closed_form = zeta_g * std::numbers::pi * r * r * d;
   EXPECT_NEAR(response.QuasiStaticForce(d), closed_form, 1e-6 * closed_form);
@@ -67,7 +67,7 @@ TEST(DropFactory, SimulateDropIsTheFactorysRigDropBitForBit) {
 
   const rft::SoilParameters drop_soil = DropSoil(soil, c.zeta_N_m3, c.atmosphere);
   const auto intrusion = MakeRigIntrusion(pad.profile);
-  const model::EffectSoilResponse response = MakeRigResponse(*intrusion, drop_soil, kMoonG, c.effects);
+  const pad::EffectSoilResponse response = MakeRigResponse(*intrusion, drop_soil, kMoonG, c.effects);
   const pad::RigDropResult own = pad::RunRigDrop({2.0, kMoonG, 1.1}, response, {});
   ASSERT_EQ(drop.result.trace.size(), own.trace.size());
   ASSERT_GT(own.trace.size(), 10u);
@@ -92,13 +92,13 @@ TEST(DropFactory, FreeDropRunsTheFactorysLaw) {
   c.tilt_rad = 0.1;
   const PadDrop drop = SimulateDrop(pad, soil, c, {});
   ASSERT_TRUE(drop.free.has_value());
-  const auto law = MakeFreeLaw(DropSoil(soil, c.zeta_N_m3, std::nullopt), "", kMoonG, {}, "");
-  EXPECT_EQ(drop.law_3d, std::string(law->name()));
+  const auto law = MakeFreeLaw(DropSoil(soil, c.zeta_N_m3, std::nullopt), std::nullopt, kMoonG, {}, "");
+  EXPECT_EQ(drop.law_3d, law.name());
   pad::FreeDropInput in;
   in.impact_speed_m_s = 0.8;
   in.tilt_rad = 0.1;
   in.gravity_m_s2 = kMoonG;
-  const pad::FreeDropResult own = pad::RunFreeDrop(pad.body, *law, rft::PlaneGround(), in, {});
+  const pad::FreeDropResult own = pad::RunFreeDrop(pad.body, law, rft::PlaneGround(), in, {});
   EXPECT_EQ(drop.free->final_penetration_m, own.final_penetration_m);
   EXPECT_EQ(drop.free->peak_force_N, own.peak_force_N);
   EXPECT_EQ(drop.free->final_tilt_deg, own.final_tilt_deg);

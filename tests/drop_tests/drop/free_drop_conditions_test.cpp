@@ -22,10 +22,10 @@ TEST(FreeDrop, VerticalLevelDropMatchesTheRigDrop) {
   // the 3D contact on the revolved mesh instead of the profile integral.
   const io::PadSpec pad = io::LoadPad("flat");
   const rft::SoilParameters soil = io::LoadSoil("fjs1_lp");
-  const auto law = rft::MakeStressLaw3D("li2013", soil, 9.81);
+  const rft::SoilContactModel law = rft::MakeSoilContactModel(rft::LawKind::kLi2013, soil, 9.81, {});
   FreeDropInput in;
   in.impact_speed_m_s = 1.0;
-  const FreeDropResult free = RunFreeDrop(pad.body, *law, rft::PlaneGround(), in);
+  const FreeDropResult free = RunFreeDrop(pad.body, law, rft::PlaneGround(), in);
   drop::DropConditions c;
   c.impact_speed_m_s = 1.0;
   const RigDropResult rig = drop::RunPadDrop(pad, soil, c).result;
@@ -65,7 +65,7 @@ class ShippedPadFreeDrop : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(ShippedPadFreeDrop, LandsAtEveryTiltAboutXAndY) {
   const io::PadSpec pad = io::LoadPad(GetParam());
-  const auto law = rft::MakeStressLaw3D("li2013", io::LoadSoil("fjs1_lp"), 9.81);
+  const rft::SoilContactModel law = rft::MakeSoilContactModel(rft::LawKind::kLi2013, io::LoadSoil("fjs1_lp"), 9.81, {});
   int drops = 0;
   for (const double speed : {0.5, 1.0, 2.0}) {
     for (const double tilt_deg : {0.0, 5.0, 10.0, 20.0, 30.0}) {
@@ -78,7 +78,7 @@ TEST_P(ShippedPadFreeDrop, LandsAtEveryTiltAboutXAndY) {
         in.tilt_rad = tilt_deg * std::numbers::pi / 180.0;
         in.tilt_axis = pad::ParseTiltAxis(axis);
         FreeDropResult r;
-        ASSERT_NO_THROW(r = RunFreeDrop(pad.body, *law, rft::PlaneGround(), in));
+        ASSERT_NO_THROW(r = RunFreeDrop(pad.body, law, rft::PlaneGround(), in));
         ++drops;
         EXPECT_GT(r.final_penetration_m, 0.0);
         EXPECT_LT(r.final_penetration_m, 0.1);

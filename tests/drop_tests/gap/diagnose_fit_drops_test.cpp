@@ -2,6 +2,7 @@
 // it simulates for a dataset drop under a fitted model is, bit for bit, what SimulateDrop's drop
 // of the same pad, soil, atmosphere, zeta override and effects records.
 #include "drop_tests/gap/diagnose_fit.h"
+#include "lander/pad/effect_soil_response.h"
 
 #include <gtest/gtest.h>
 
@@ -45,7 +46,7 @@ TEST(DiagnoseFitDrops, SimulatedRecordIsTheFactorysDrop) {
   const dataset::DatasetTrace& tr = ds.drops[0].trace;
   ASSERT_EQ(fitted->size(), tr.size());
   for (size_t i = 0; i < tr.size(); ++i) {
-    const model::RecordedSample r = model::RecordedAt(drop.result, 1.62, c.effects, tr.t_s[i]);
+    const pad::RecordedSample r = pad::RecordedAt(drop.result, 1.62, c.effects, tr.t_s[i]);
     ASSERT_EQ(fitted->force_N[i], r.force_N) << i;
     ASSERT_EQ(fitted->penetration_m[i], r.penetration_m) << i;
   }

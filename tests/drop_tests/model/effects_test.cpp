@@ -17,10 +17,16 @@
 #include "drop_tests/drop/pad_drop.h"
 #include "drop_tests/io/yaml_fields.h"
 #include "lander/integ/cvode_integrator.h"
+#include "lander/pad/effect_soil_response.h"
 #include "rft/input_error.h"
 
 namespace touchdown::model {
 namespace {
+
+using pad::EffectSoilResponse;
+using pad::RecordedAt;
+using pad::RecordedSample;
+using rft::EffectTerms;
 
 constexpr double kPi = std::numbers::pi;
 constexpr double kR = 0.05, kZeta = 2.0e6, kRho = 1540.0, kMass = 1.6, kG = 9.81;

@@ -258,16 +258,16 @@ TEST_F(ModelEffects, LanderSoilsCarryTheModelsTerms) {
   s.model = LoadModelFile(Model("lander", "{inertial_drag: {lambda: 1.5}, sensor_offset: {dz_mm: 1, dt_ms: 0}}"));
   const scenario::LanderSetup setup = scenario::BuildLanderSetup(s);
   ASSERT_EQ(setup.terrain.soils.size(), 1u);
-  EXPECT_EQ(setup.terrain.soils[0].law->name(), "li2013+dynamic");
+  EXPECT_EQ(setup.terrain.soils[0].contact.name(), "li2013+dynamic");
   const Eigen::Vector3d down(0, 0, -1);
-  EXPECT_NEAR(setup.terrain.soils[0].law->DynamicStress(down, 2.0 * down).z(),
+  EXPECT_NEAR(setup.terrain.soils[0].contact.law->DynamicStress(down, 2.0 * down).z(),
               1.5 * io::LoadSoil("fjs1_lp").bulk_density_kg_m3 * 4.0, 1e-9);
   // gas_cushion only where the bed is in air (fjs1_lp is a vacuum bed).
   s.model = LoadModelFile(Model("gas", "{gas_cushion: {chi: 0.3, c_g_N_s_m3: 5000}}"));
-  EXPECT_EQ(scenario::BuildLanderSetup(s).terrain.soils[0].law->name(), "li2013");
+  EXPECT_EQ(scenario::BuildLanderSetup(s).terrain.soils[0].contact.name(), "li2013");
   rft::SoilParameters air = io::LoadSoil("fjs1_lp");
   air.atmosphere = rft::Atmosphere::kAir;
-  EXPECT_EQ(MakeModelStressLaw3D("li2013", air, 9.81, &*s.model)->name(), "li2013+gas_cushion");
+  EXPECT_EQ(MakeModelStressLaw3D(rft::LawKind::kLi2013, air, 9.81, &*s.model).name(), "li2013+gas_cushion");
 }
 
 // compare --model with a sensor_offset: the simulated traces are shifted as the rig records them

@@ -30,7 +30,7 @@ TEST(LanderDrop, RigidLanderLandingFlatMatchesSinglePadWithAQuarterOfTheMass) {
   // The same pad, the same 3D contact, on the rig's vertical rod with a quarter of the mass.
   const geom::PadBody& pad = run.scenario.lander.pad.body;
   const rft::PlaneGround ground;
-  const auto law = rft::MakeStressLaw3D("li2013", io::LoadSoil("fjs1_lp"), run.scenario.gravity_m_s2);
+  const auto law = rft::MakeStressLaw3D(rft::LawKind::kLi2013, io::LoadSoil("fjs1_lp"), run.scenario.gravity_m_s2);
   const pad::VerticalResistance resistance = [&](double depth, double) {
     rft::PadKinematics k;
     k.p_WB = Eigen::Vector3d(0, 0, -pad.lowest_z_B - depth);

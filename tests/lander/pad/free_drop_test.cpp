@@ -34,11 +34,11 @@ TEST(FreeDrop, SidewaysDropTravelsAndStaysLevelEnough) {
   // travel forward (+x), balance its energy, and report its final tilt.
   const geom::AxisymmetricProfile profile = CurvedProfile();
   const geom::PadBody body = geom::RevolveProfileToBody(profile, 24, kPadMass_kg, Eigen::Vector3d(0.0, 0.0, profile.thickness_m()));
-  const auto law = rft::MakeStressLaw3D("li2013", test::Fjs1(false), 9.81);
+  const rft::SoilContactModel law = rft::MakeSoilContactModel(rft::LawKind::kLi2013, test::Fjs1(false), 9.81, {});
   FreeDropInput in;
   in.impact_speed_m_s = 1.0;
   in.horizontal_speed_m_s = 0.2;
-  const FreeDropResult r = RunFreeDrop(body, *law, rft::PlaneGround(), in);
+  const FreeDropResult r = RunFreeDrop(body, law, rft::PlaneGround(), in);
   EXPECT_GT(r.horizontal_travel_m, 1e-3);
   EXPECT_GT(r.trace.back().horizontal_m, 0.0);
   EXPECT_GT(r.final_penetration_m, 0.0);
@@ -54,20 +54,20 @@ TEST(FreeDrop, SidewaysDropTravelsAndStaysLevelEnough) {
 TEST(FreeDrop, ScaledTolerancesMatchATighterRunInFewerSteps) {
   const geom::AxisymmetricProfile profile = FlatProfile();
   const geom::PadBody body = geom::RevolveProfileToBody(profile, 48, kPadMass_kg, Eigen::Vector3d(0.0, 0.0, profile.thickness_m()));
-  const auto law = rft::MakeStressLaw3D("li2013", test::Fjs1(false), 9.81);
+  const rft::SoilContactModel law = rft::MakeSoilContactModel(rft::LawKind::kLi2013, test::Fjs1(false), 9.81, {});
   FreeDropInput in;
   in.impact_speed_m_s = 1.0;
   in.tilt_rad = 5.0 * std::numbers::pi / 180.0;
   const FreeDropOptions defaults;
-  const FreeDropResult r = RunFreeDrop(body, *law, rft::PlaneGround(), in, defaults);
+  const FreeDropResult r = RunFreeDrop(body, law, rft::PlaneGround(), in, defaults);
   FreeDropOptions tight = defaults;
   tight.integrator.rtol = 1e-10;
   tight.integrator.max_num_steps = 200000;
-  const FreeDropResult ref = RunFreeDrop(body, *law, rft::PlaneGround(), in, tight);
+  const FreeDropResult ref = RunFreeDrop(body, law, rft::PlaneGround(), in, tight);
   FreeDropOptions scalar = defaults;
   scalar.integrator.component_atol.assign(14, 1e-11);
   scalar.integrator.max_num_steps = 200000;
-  const FreeDropResult old = RunFreeDrop(body, *law, rft::PlaneGround(), in, scalar);
+  const FreeDropResult old = RunFreeDrop(body, law, rft::PlaneGround(), in, scalar);
   std::printf("[ tolerances ] steps: scaled %ld, scalar 1e-11 %ld, rtol 1e-10 %ld; depth %.7f / %.7f mm, "
               "tilt %.6f / %.6f deg\n",
               r.solver.steps, old.solver.steps, ref.solver.steps, 1e3 * r.final_penetration_m,
@@ -87,10 +87,10 @@ TEST(FreeDrop, FirstSampleIsAtTheSurface) {
   const geom::AxisymmetricProfile profile = FlatProfile();
   const geom::PadBody body = geom::RevolveProfileToBody(profile, geom::kDefaultAngularSegments, kPadMass_kg,
                                                         Eigen::Vector3d(0.0, 0.0, profile.thickness_m()));
-  const auto law = rft::MakeStressLaw3D("li2013", test::Fjs1(false), 9.81);
+  const rft::SoilContactModel law = rft::MakeSoilContactModel(rft::LawKind::kLi2013, test::Fjs1(false), 9.81, {});
   FreeDropInput in;
   in.impact_speed_m_s = 1.0;
-  const FreeDropResult r = RunFreeDrop(body, *law, rft::PlaneGround(), in);
+  const FreeDropResult r = RunFreeDrop(body, law, rft::PlaneGround(), in);
   ASSERT_FALSE(r.trace.empty());
   EXPECT_EQ(r.trace.front().t_s, 0.0);
   EXPECT_EQ(r.trace.front().penetration_m, 0.0);

@@ -1,0 +1,65 @@
+#pragma once
+// The rig's soil response (pad::VerticalSoilResponse, lander/pad/rig_drop.h) with the effect terms
+// (rft/effect_terms.h) in their axisymmetric form, and what the rig's sensors record of a drop.
+//
+// For straight-down motion an element of attack angle beta has v.n = v cos(beta) (n outward,
+// v the downward speed); a normal stress s on it pushes up with s cos(beta) dA. With
+// I_k(d) = integral of cos^k(beta) dA over the submerged leading surface
+// (AxisymmetricIntrusion::CosinePowerIntegral), the terms add to the soil reaction:
+//
+//   inertial_drag    F += lambda rho v^2 I_3(d)
+//   rate_damping     F += c v I_2(d)
+//   added_mass       m_a(d) = c_a rho V(d), d(m_a v)/dt, V(d) = (pi/3) a(d)^2 min(d, a(d)): the
+//                    45-degree cone of grains under the submerged footprint (radius a), grown to
+//                    the penetration depth until whole; continuous from m_a(0) = 0, so touchdown
+//                    never sees an infinite force
+//   compaction_peak  F += k_c v^2 exp(-d/d_c) I_3(d)
+//   depth_exponent   zeta alpha z_ref (z/z_ref)^p instead of zeta alpha z
+//   gas_cushion      only drops in air: zeta -> (1 - chi) zeta, and F += c_g v I_2(d)
+//   sensor_offset    not physics: RecordedAt below
+//
+// Every velocity term vanishes at rest, so the static capacity is the quasi-static force (with
+// the depth law and the gas cushion applied).
+#include "footpad_geom/axisymmetric_intrusion.h"
+#include "lander/pad/rig_drop.h"
+#include "rft/effect_terms.h"
+
+namespace touchdown::pad {
+
+// The rig's soil response with effect terms, for one pad, soil and atmosphere.
+struct SoilResponseInputs {
+  double zeta_N_m3 = 0.0;           // at the drop's gravity
+  double bulk_density_kg_m3 = 0.0;  // needed by inertial_drag and added_mass
+  bool in_air = false;
+  rft::EffectTerms terms;
+};
+
+class EffectSoilResponse final : public VerticalSoilResponse {
+ public:
+  // Throws InputError if an effect needs the bulk density and it is 0.
+  EffectSoilResponse(const geom::AxisymmetricIntrusion& pad, const SoilResponseInputs& inputs);
+  double Force(double depth_m, double speed_down_m_s) const override;
+  double AddedMass(double depth_m) const override;
+  double AddedMassSlope(double depth_m) const override;
+  double StaticCapacity(double depth_m) const override { return QuasiStaticForce(depth_m); }
+  double QuasiStaticForce(double depth_m) const;
+
+ private:
+  const geom::AxisymmetricIntrusion& pad_;
+  SoilResponseInputs in_;
+  double zeta_qs_;  // with the gas cushion applied
+  double i2_coefficient_;  // c (+ c_g in air)
+};
+
+// What the rig's sensors record at recorded time t_rec [s] for a simulated drop, with the
+// sensor_offset applied: the true state at t_rec + dt, penetration + dz. Before touchdown the
+// pad is in free fall (penetration v0 t + g t^2 / 2 < 0, force 0); after the trace ends it stays
+// at the last sample. Linear interpolation between samples.
+struct RecordedSample {
+  double penetration_m = 0.0;
+  double force_N = 0.0;
+};
+RecordedSample RecordedAt(const RigDropResult& result, double gravity_m_s2, const rft::EffectTerms& terms,
+                          double t_rec);
+
+}  // namespace touchdown::pad
