@@ -97,7 +97,7 @@ PadDrop SimulateDrop(const io::PadSpec& pad, const rft::SoilParameters& soil, co
     throw MakeInputError(pad.source, "", "rig drop of mesh pads needs the 3D contact; use --free");
   // The record keeps the pad's description but not its 3D body (megabytes for a fine mesh,
   // unused by the rig drop): copying it per drop would cost more than the drop itself.
-  io::PadSpec described{pad.name, pad.source, pad.kind, pad.profile, pad.mass_kg, {}, pad.mesh_file};
+  io::PadSpec described{pad.name, pad.source, pad.kind, pad.profile, pad.mass_kg, {}, pad.mesh_file, pad.file};
   PadDrop drop{std::move(described), soil, conditions, conditions.mass_kg.value_or(pad.mass_kg), 0.0, {}, {}, {}};
   if (conditions.atmosphere) drop.soil.atmosphere = *conditions.atmosphere;
   drop.zeta_effective_N_m3 = EffectiveZeta(soil, conditions);
