@@ -94,7 +94,7 @@ PadDrop SimulateDrop(const io::PadSpec& pad, const rft::SoilParameters& soil, co
     throw MakeInputError(pad.source, "", "rig drop of mesh pads needs the 3D contact; use --free");
   // The record keeps the pad's description but not its 3D body (megabytes for a fine mesh,
   // unused by the rig drop): copying it per drop would cost more than the drop itself.
-  io::PadSpec described{pad.name, pad.source, pad.kind, pad.profile, pad.mass_kg, {}, pad.mesh_file};
+  io::PadSpec described{pad.name, pad.source, pad.kind, pad.profile, pad.mass_kg, {}, pad.mesh_file, pad.file};
   const rft::SoilParameters drop_soil = DropSoil(soil, conditions.zeta_N_m3, conditions.atmosphere);
   PadDrop drop{std::move(described), DropSoil(soil, std::nullopt, conditions.atmosphere), conditions,
                conditions.mass_kg.value_or(pad.mass_kg), ZetaAtGravity(drop_soil, conditions.gravity_m_s2), {}, {}, {}};

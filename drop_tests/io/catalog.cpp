@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <numbers>
 #include <sstream>
 
@@ -46,7 +47,7 @@ const FieldTable<rft::SoilParameters>& SoilNumberFields() {
   return fields;
 }
 
-std::vector<geom::ProfilePoint> ReadProfileTable(const YamlFields& f) {
+std::vector<geom::ProfilePoint> ReadProfileTable(const YamlFields& f, PadFileFields& file) {
   std::vector<geom::ProfilePoint> points;
   const YAML::Node list = f.node()["points_mm"];
   if (!list.IsSequence() || list.size() < 2) f.Fail("points_mm", "must be a list of at least two [x, u] pairs");
@@ -60,6 +61,7 @@ std::vector<geom::ProfilePoint> ReadProfileTable(const YamlFields& f) {
         !YAML::convert<double>::decode(list[i][1], u) || !std::isfinite(x) || !std::isfinite(u))
       f.Fail(path, "must be a pair of finite numbers [x_mm, u_mm]");
     points.push_back({x * kMm, u * kMm});
+    file.points_mm.push_back({x, u});
   }
   return points;
 }
@@ -74,63 +76,90 @@ geom::AxisymmetricProfile Guarded(const YamlFields& f, Build build) {
   }
 }
 
-geom::AxisymmetricProfile ReadProfile(const YamlFields& f) {
-  const std::string shape = f.String("shape");
-  limits::Require(limits::kPadSize_mm, f.Positive("radius_mm"), f.file(), f.Path("radius_mm"));
-  limits::Require(limits::kPadSize_mm, f.Positive("thickness_mm"), f.file(), f.Path("thickness_mm"));
-  const double r = f.Positive("radius_mm") * kMm;
-  const double h = f.Positive("thickness_mm") * kMm;
-  const int segments = f.Has("segments") ? f.PositiveInt("segments") : 400;
-  if (segments > kMaxProfileSegments)
-    f.Fail("segments", "must be at most " + std::to_string(kMaxProfileSegments) + ", got " + std::to_string(segments));
-  if (shape == "flat") {
-    f.RequireOnly({"shape", "radius_mm", "thickness_mm"});
-    return Guarded(f, [&] { return geom::MakeFlatProfile(r, h); });
-  }
-  if (shape == "chamfer") {
-    f.RequireOnly({"shape", "radius_mm", "thickness_mm", "chamfer_mm"});
-    const double c = f.Positive("chamfer_mm") * kMm;
-    return Guarded(f, [&] { return geom::MakeChamferProfile(r, h, c); });
-  }
-  if (shape == "exponential") {
-    // u = a0 (exp(a1 x) - 1): give a0 directly, or the rim height u(r) that fixes it.
-    f.RequireOnly({"shape", "radius_mm", "thickness_mm", "a0_mm", "rim_height_mm", "a1_per_mm", "segments"});
-    const double a1 = f.Positive("a1_per_mm") / kMm;
-    if (f.Has("a0_mm") == f.Has("rim_height_mm")) f.Fail("a0_mm", "give exactly one of a0_mm and rim_height_mm");
-    const double a0 = f.Has("a0_mm") ? f.Positive("a0_mm") * kMm : f.Positive("rim_height_mm") * kMm / std::expm1(a1 * r);
-    return Guarded(f, [&] { return geom::MakeExponentialProfile(r, h, a0, a1, segments); });
-  }
-  if (shape == "spherical_cap") {
-    f.RequireOnly({"shape", "radius_mm", "thickness_mm", "sphere_radius_mm", "segments"});
-    const double R = f.Positive("sphere_radius_mm") * kMm;
-    return Guarded(f, [&] { return geom::MakeSphericalCapProfile(r, h, R, segments); });
-  }
-  if (shape == "cone") {
-    f.RequireOnly({"shape", "radius_mm", "thickness_mm", "half_angle_deg"});
-    const double half_angle = f.Positive("half_angle_deg") * kDeg;
-    return Guarded(f, [&] { return geom::MakeConeProfile(r, h, half_angle); });
-  }
-  if (shape == "table") {
-    f.RequireOnly({"shape", "radius_mm", "thickness_mm", "points_mm"});
-    std::vector<geom::ProfilePoint> points = ReadProfileTable(f);
-    if (std::abs(points.back().x_m - r) > 1e-12) f.Fail("points_mm", "last point must be at the rim, x = radius_mm");
-    return Guarded(f, [&] { return geom::MakeTabulatedProfile(std::move(points), h); });
-  }
-  f.Fail("shape", "unknown shape '" + shape + "' (flat, chamfer, exponential, spherical_cap, cone, table)");
+// Each profile shape's number fields, as the file gives them (mm, degrees; kept in PadFileFields),
+// read by LoadPad and written by WritePad. nullptr for an unknown shape.
+const FieldTable<PadFileFields>* ProfileFields(const std::string& shape) {
+  using P = PadFileFields;
+  const auto with = [](std::initializer_list<NumberField<P>> own) {
+    FieldTable<P> fields{{"radius_mm", &P::radius_mm, 1.0, Sign::kPositive, false},
+                         {"thickness_mm", &P::thickness_mm, 1.0, Sign::kPositive, false}};
+    fields.insert(fields.end(), own);
+    return fields;
+  };
+  static const std::map<std::string, FieldTable<P>> tables{
+      {"flat", with({})},
+      {"chamfer", with({{"chamfer_mm", &P::chamfer_mm, 1.0, Sign::kPositive, false}})},
+      // u = a0 (exp(a1 x) - 1): give a0 directly, or the rim height u(r) that fixes it.
+      {"exponential", with({{"a0_mm", &P::a0_mm, 1.0, Sign::kPositive, true, true},
+                            {"rim_height_mm", &P::rim_height_mm, 1.0, Sign::kPositive, true, true},
+                            {"a1_per_mm", &P::a1_per_mm, 1.0, Sign::kPositive, false}})},
+      {"spherical_cap", with({{"sphere_radius_mm", &P::sphere_radius_mm, 1.0, Sign::kPositive, false}})},
+      {"cone", with({{"half_angle_deg", &P::half_angle_deg, 1.0, Sign::kPositive, false}})},
+      {"table", with({})},
+  };
+  const auto it = tables.find(shape);
+  return it == tables.end() ? nullptr : &it->second;
 }
 
-Eigen::Vector3d ReadPointMm(const YamlFields& f, const std::string& key) {
+bool HasSegments(const std::string& shape) { return shape == "exponential" || shape == "spherical_cap"; }
+
+geom::AxisymmetricProfile ReadProfile(const YamlFields& f, PadFileFields& file) {
+  file.shape = f.String("shape");
+  const FieldTable<PadFileFields>* fields = ProfileFields(file.shape);
+  if (!fields)
+    f.Fail("shape", "unknown shape '" + file.shape + "' (flat, chamfer, exponential, spherical_cap, cone, table)");
+  std::vector<std::string> known{"shape"};
+  for (const std::string& key : FieldKeys(*fields)) known.push_back(key);
+  if (HasSegments(file.shape)) known.push_back("segments");
+  if (file.shape == "table") known.push_back("points_mm");
+  f.RequireOnly(known);
+  limits::Require(limits::kPadSize_mm, f.Positive("radius_mm"), f.file(), f.Path("radius_mm"));
+  limits::Require(limits::kPadSize_mm, f.Positive("thickness_mm"), f.file(), f.Path("thickness_mm"));
+  ReadFields(f, *fields, file);
+  const double r = file.radius_mm * kMm;
+  const double h = file.thickness_mm * kMm;
+  if (f.Has("segments")) file.segments = f.PositiveInt("segments");
+  const int segments = file.segments > 0 ? file.segments : 400;
+  if (segments > kMaxProfileSegments)
+    f.Fail("segments", "must be at most " + std::to_string(kMaxProfileSegments) + ", got " + std::to_string(segments));
+  if (file.shape == "flat") return Guarded(f, [&] { return geom::MakeFlatProfile(r, h); });
+  if (file.shape == "chamfer") {
+    const double c = file.chamfer_mm * kMm;
+    return Guarded(f, [&] { return geom::MakeChamferProfile(r, h, c); });
+  }
+  if (file.shape == "exponential") {
+    const double a1 = file.a1_per_mm / kMm;
+    if (f.Has("a0_mm") == f.Has("rim_height_mm")) f.Fail("a0_mm", "give exactly one of a0_mm and rim_height_mm");
+    const double a0 = f.Has("a0_mm") ? file.a0_mm * kMm : file.rim_height_mm * kMm / std::expm1(a1 * r);
+    return Guarded(f, [&] { return geom::MakeExponentialProfile(r, h, a0, a1, segments); });
+  }
+  if (file.shape == "spherical_cap") {
+    const double R = file.sphere_radius_mm * kMm;
+    return Guarded(f, [&] { return geom::MakeSphericalCapProfile(r, h, R, segments); });
+  }
+  if (file.shape == "cone") {
+    const double half_angle = file.half_angle_deg * kDeg;
+    return Guarded(f, [&] { return geom::MakeConeProfile(r, h, half_angle); });
+  }
+  std::vector<geom::ProfilePoint> points = ReadProfileTable(f, file);  // shape: table
+  if (std::abs(points.back().x_m - r) > 1e-12) f.Fail("points_mm", "last point must be at the rim, x = radius_mm");
+  return Guarded(f, [&] { return geom::MakeTabulatedProfile(std::move(points), h); });
+}
+
+// A point in mm, kept as the file gives it in `given`, returned in m.
+Eigen::Vector3d ReadPointMm(const YamlFields& f, const std::string& key, std::optional<std::array<double, 3>>& given) {
   const YAML::Node list = f.node()[key];
   Eigen::Vector3d p;
   if (!list.IsSequence() || list.size() != 3) f.Fail(key, "must be a list of three numbers [x, y, z] in mm");
   for (int i = 0; i < 3; ++i)
     if (!YAML::convert<double>::decode(list[i], p(i)) || !std::isfinite(p(i)))
       f.Fail(key, "must be a list of three finite numbers [x, y, z] in mm");
+  given = std::array<double, 3>{p.x(), p.y(), p.z()};
   return p * kMm;
 }
 
 // The optional explicit inertia and centre of mass, shared by both pad kinds.
-void ReadMassDistribution(const YamlFields& f, geom::PadMassModel& mass) {
+void ReadMassDistribution(const YamlFields& f, geom::PadMassModel& mass, PadFileFields& file) {
   if (f.Has("inertia_kg_m2")) {
     const YamlFields i = f.Child("inertia_kg_m2");
     i.RequireOnly({"ixx", "iyy", "izz", "ixy", "ixz", "iyz"});
@@ -140,10 +169,11 @@ void ReadMassDistribution(const YamlFields& f, geom::PadMassModel& mass) {
         product("ixy"), i.Positive("iyy"), product("iyz"),   //
         product("ixz"), product("iyz"), i.Positive("izz");
     mass.inertia_com_kg_m2 = m;
+    file.inertia_kg_m2 = std::array<double, 6>{m(0, 0), m(1, 1), m(2, 2), m(0, 1), m(0, 2), m(1, 2)};
   }
   if (f.Has("center_of_mass_mm")) {
     if (!f.Has("inertia_kg_m2")) f.Fail("center_of_mass_mm", "needs inertia_kg_m2 (about that centre) as well");
-    mass.center_of_mass_m = ReadPointMm(f, "center_of_mass_mm");
+    mass.center_of_mass_m = ReadPointMm(f, "center_of_mass_mm", file.center_of_mass_mm);
   }
 }
 
@@ -159,20 +189,22 @@ geom::PadBody GuardedBody(const YamlFields& f, Build build) {
 }
 
 void LoadAxisymmetricPad(const YamlFields& f, PadSpec& pad) {
-  pad.mass_kg = f.Positive("mass_kg");
-  pad.profile = ReadProfile(f.Child("profile"));
+  pad.file.mass_kg = f.Positive("mass_kg");
+  pad.mass_kg = pad.file.mass_kg;
+  pad.profile = ReadProfile(f.Child("profile"), pad.file);
   geom::ValidateProfile(pad.profile, f.file());
-  const int segments = f.Has("angular_segments") ? f.PositiveInt("angular_segments") : geom::kDefaultAngularSegments;
+  if (f.Has("angular_segments")) pad.file.angular_segments = f.PositiveInt("angular_segments");
+  const int segments = pad.file.angular_segments > 0 ? pad.file.angular_segments : geom::kDefaultAngularSegments;
   if (segments < 6) f.Fail("angular_segments", "must be at least 6, got " + std::to_string(segments));
   if (segments > kMaxAngularSegments)
     f.Fail("angular_segments", "must be at most " + std::to_string(kMaxAngularSegments) + ", got " +
                                    std::to_string(segments));
   const Eigen::Vector3d reference =
-      f.Has("reference_point_mm") ? ReadPointMm(f, "reference_point_mm")
+      f.Has("reference_point_mm") ? ReadPointMm(f, "reference_point_mm", pad.file.reference_point_mm)
                                   : Eigen::Vector3d(0.0, 0.0, pad.profile.thickness_m());
   geom::PadMassModel mass;
   mass.mass_kg = pad.mass_kg;
-  ReadMassDistribution(f, mass);
+  ReadMassDistribution(f, mass, pad.file);
   pad.body = GuardedBody(f, [&] {
     return geom::MakePadBody(geom::RevolveProfileToMesh(pad.profile, segments), mass, reference, f.file());
   });
@@ -185,8 +217,12 @@ void LoadMeshPad(const YamlFields& f, PadSpec& pad) {
   if (file.is_relative()) file = fs::path(f.file()).parent_path() / file;  // relative to the YAML file
   pad.mesh_file = file.lexically_normal().string();
   geom::MeshLoadOptions options;
-  options.unit = geom::ParseLengthUnit(m.String("unit"), f.file(), m.Path("unit"));
-  if (m.Has("remesh_edge_mm")) options.remesh_edge_m = m.Positive("remesh_edge_mm") * kMm;
+  pad.file.mesh_unit = m.String("unit");
+  options.unit = geom::ParseLengthUnit(pad.file.mesh_unit, f.file(), m.Path("unit"));
+  if (m.Has("remesh_edge_mm")) {
+    pad.file.remesh_edge_mm = m.Positive("remesh_edge_mm");
+    options.remesh_edge_m = pad.file.remesh_edge_mm * kMm;
+  }
   geom::TriangleMesh mesh;
   try {
     mesh = geom::LoadTriangleMesh(pad.mesh_file, options).mesh;
@@ -196,12 +232,12 @@ void LoadMeshPad(const YamlFields& f, PadSpec& pad) {
 
   geom::PadMassModel mass;
   if (f.Has("mass_kg") == f.Has("density_kg_m3")) f.Fail("mass_kg", "give exactly one of mass_kg and density_kg_m3");
-  if (f.Has("mass_kg")) mass.mass_kg = f.Positive("mass_kg");
-  if (f.Has("density_kg_m3")) mass.density_kg_m3 = f.Positive("density_kg_m3");
-  ReadMassDistribution(f, mass);
+  if (f.Has("mass_kg")) mass.mass_kg = pad.file.mass_kg = f.Positive("mass_kg");
+  if (f.Has("density_kg_m3")) mass.density_kg_m3 = pad.file.density_kg_m3 = f.Positive("density_kg_m3");
+  ReadMassDistribution(f, mass, pad.file);
   Eigen::Vector3d reference;
   if (f.Has("reference_point_mm")) {
-    reference = ReadPointMm(f, "reference_point_mm");
+    reference = ReadPointMm(f, "reference_point_mm", pad.file.reference_point_mm);
   } else {
     Eigen::Vector3d lo = mesh.vertices.front(), hi = lo;
     for (const Eigen::Vector3d& v : mesh.vertices) {
@@ -247,6 +283,7 @@ PadSpec LoadPad(const std::string& name_or_path) {
   pad.source = path;
   const std::string kind = f.StringOr("kind", "axisymmetric");
   pad.name = f.StringOr("name", fs::path(path).stem().string());
+  pad.file.description = f.StringOr("description", "");
   if (!IsValidUtf8(pad.name)) f.Fail("name", "the pad name (from the file name) is not valid UTF-8 text");
   if (kind == "axisymmetric") {
     pad.kind = PadKind::kAxisymmetric;
@@ -299,6 +336,50 @@ rft::SoilParameters LoadSoil(const std::string& name_or_path) {
   if (soil.dynamic_term && soil.dynamic_density_kg_m3 == 0.0 && soil.bulk_density_kg_m3 == 0.0)
     f.Fail("dynamic_term", "needs a density: dynamic_density_kg_m3 or bulk_density_kg_m3");
   return soil;
+}
+
+void WritePad(const PadSpec& pad, const std::string& path) {
+  const PadFileFields& p = pad.file;
+  YAML::Emitter y;
+  const auto point = [&](const char* key, const std::optional<std::array<double, 3>>& v) {
+    if (v) y << YAML::Key << key << YAML::Value << YAML::Flow << YAML::BeginSeq << (*v)[0] << (*v)[1] << (*v)[2] << YAML::EndSeq;
+  };
+  y << YAML::BeginMap << YAML::Key << "schema_version" << YAML::Value << 1 << YAML::Key << "name" << YAML::Value
+    << pad.name << YAML::Key << "kind" << YAML::Value << (pad.kind == PadKind::kMesh ? "mesh" : "axisymmetric");
+  if (!p.description.empty()) y << YAML::Key << "description" << YAML::Value << p.description;
+  if (p.mass_kg > 0.0) y << YAML::Key << "mass_kg" << YAML::Value << p.mass_kg;
+  if (p.density_kg_m3 > 0.0) y << YAML::Key << "density_kg_m3" << YAML::Value << p.density_kg_m3;
+  if (pad.kind == PadKind::kAxisymmetric) {
+    y << YAML::Key << "profile" << YAML::Value << YAML::BeginMap << YAML::Key << "shape" << YAML::Value << p.shape;
+    WriteFields(y, *ProfileFields(p.shape), p);
+    if (p.segments > 0) y << YAML::Key << "segments" << YAML::Value << p.segments;
+    if (p.shape == "table") {
+      y << YAML::Key << "points_mm" << YAML::Value << YAML::BeginSeq;
+      for (const std::array<double, 2>& q : p.points_mm) y << YAML::Flow << YAML::BeginSeq << q[0] << q[1] << YAML::EndSeq;
+      y << YAML::EndSeq;
+    }
+    y << YAML::EndMap;
+    if (p.angular_segments > 0) y << YAML::Key << "angular_segments" << YAML::Value << p.angular_segments;
+  } else {
+    // The mesh relative to the written file (as LoadPad reads it), wherever either lives.
+    const fs::path mesh = fs::absolute(pad.mesh_file).lexically_normal();
+    const fs::path rel = mesh.lexically_relative(fs::absolute(fs::path(path)).parent_path().lexically_normal());
+    y << YAML::Key << "mesh" << YAML::Value << YAML::BeginMap << YAML::Key << "file" << YAML::Value
+      << (rel.empty() ? mesh : rel).generic_string() << YAML::Key << "unit" << YAML::Value << p.mesh_unit;
+    if (p.remesh_edge_mm > 0.0) y << YAML::Key << "remesh_edge_mm" << YAML::Value << p.remesh_edge_mm;
+    y << YAML::EndMap;
+  }
+  point("reference_point_mm", p.reference_point_mm);
+  if (p.inertia_kg_m2) {
+    const std::array<double, 6>& i = *p.inertia_kg_m2;
+    y << YAML::Key << "inertia_kg_m2" << YAML::Value << YAML::Flow << YAML::BeginMap;
+    const char* keys[] = {"ixx", "iyy", "izz", "ixy", "ixz", "iyz"};
+    for (int k = 0; k < 6; ++k) y << YAML::Key << keys[k] << YAML::Value << i[k];
+    y << YAML::EndMap;
+  }
+  point("center_of_mass_mm", p.center_of_mass_mm);
+  y << YAML::EndMap;
+  WriteFileAtomically(path, [&](std::ostream& out) { out << y.c_str() << '\n'; });
 }
 
 void WriteSoil(const rft::SoilParameters& soil, const std::string& path) {

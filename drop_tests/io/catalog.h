@@ -2,7 +2,10 @@
 // The pads and soils a user names on the command line: a name from the bundled data/
 // directory (`flat`, `fjs1_lp`) or a path to a YAML file. Loading validates everything,
 // so the physics never sees a bad number.
+#include <array>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "footpad_geom/axisymmetric_profile.h"
 #include "footpad_geom/pad_body.h"
@@ -21,6 +24,27 @@ namespace touchdown::io {
 // -integral of x y dm) and optionally `center_of_mass_mm` are given.
 enum class PadKind { kAxisymmetric, kMesh };  // `kind: axisymmetric` or `kind: mesh`
 
+// What a pad file says, in its own units, kept with the pad so WritePad writes a file LoadPad
+// reads back to the same pad. A 0 (or an empty optional) is a field the file leaves out.
+struct PadFileFields {
+  std::string description;
+  double mass_kg = 0.0;
+  double density_kg_m3 = 0.0;  // a mesh pad's alternative to mass_kg
+  // An axisymmetric pad's `profile` (the shape's own parameters) and `angular_segments`.
+  std::string shape;  // flat, chamfer, exponential, spherical_cap, cone, table
+  double radius_mm = 0.0, thickness_mm = 0.0, chamfer_mm = 0.0, a0_mm = 0.0, rim_height_mm = 0.0, a1_per_mm = 0.0,
+         sphere_radius_mm = 0.0, half_angle_deg = 0.0;
+  int segments = 0;
+  std::vector<std::array<double, 2>> points_mm;  // shape: table
+  int angular_segments = 0;
+  // A mesh pad's `mesh` (the file as resolved; written relative to the pad file).
+  std::string mesh_unit;
+  double remesh_edge_mm = 0.0;
+  std::optional<std::array<double, 3>> reference_point_mm;
+  std::optional<std::array<double, 6>> inertia_kg_m2;  // ixx, iyy, izz, ixy, ixz, iyz
+  std::optional<std::array<double, 3>> center_of_mass_mm;
+};
+
 struct PadSpec {
   std::string name;
   std::string source;  // the YAML file it came from
@@ -30,6 +54,7 @@ struct PadSpec {
   double mass_kg = 0.0;
   geom::PadBody body;  // every pad, in its pad frame B
   std::string mesh_file;  // a mesh pad's mesh, resolved path
+  PadFileFields file;     // what the YAML file says (WritePad)
 
   bool is_axisymmetric() const { return !profile.points.empty(); }
 };
@@ -41,6 +66,9 @@ std::string DataDirectory();
 std::string ResolveCatalogFile(const std::string& kind, const std::string& name_or_path);
 
 PadSpec LoadPad(const std::string& name_or_path);
+// A pad file that LoadPad reads back to the same pad (from pad.file; a mesh by its resolved path,
+// relative to `path`'s directory).
+void WritePad(const PadSpec& pad, const std::string& path);
 rft::SoilParameters LoadSoil(const std::string& name_or_path);
 // A soil file that LoadSoil reads back to the same soil (zeta as a number, in N/cm^3).
 void WriteSoil(const rft::SoilParameters& soil, const std::string& path);

@@ -8,6 +8,8 @@
 // the loader that needs them.
 //
 // Private to the .cpp files of the YAML edge (it reads YamlFields and writes YAML).
+#include <iomanip>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -60,6 +62,24 @@ void WriteFields(YAML::Emitter& y, const FieldTable<T>& fields, const T& value) 
   for (const NumberField<T>& field : fields) {
     if (field.omit_default && value.*field.member == defaults.*field.member) continue;
     y << YAML::Key << field.key << YAML::Value << value.*field.member / field.file_to_si;
+  }
+}
+
+// Checks that `f` states every field of `fields` as `expected` has it, in file units and to the
+// last bit (a derived value a resolved copy writes for its reader, read back against the file it
+// was derived from). `what` names that file in the message.
+template <typename T>
+void RequireFieldsMatch(const YamlFields& f, const FieldTable<T>& fields, const T& expected, const std::string& what) {
+  for (const NumberField<T>& field : fields) {
+    const double want = expected.*field.member / field.file_to_si;
+    if (field.optional && field.omit_default && !f.Has(field.key) && expected.*field.member == T{}.*field.member)
+      continue;
+    const double given = f.Number(field.key);
+    if (given != want) {
+      std::ostringstream message;
+      message << std::setprecision(17) << "is " << given << " but " << what << " gives " << want;
+      f.Fail(field.key, message.str());
+    }
   }
 }
 

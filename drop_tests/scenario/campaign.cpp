@@ -13,6 +13,7 @@
 
 #include "drop_tests/io/output_path.h"
 #include "drop_tests/scenario/campaign_plots.h"
+#include "drop_tests/io/field_table.h"
 #include "drop_tests/io/paths_in_outputs.h"
 #include "drop_tests/io/yaml_fields.h"
 #include "rft/input_error.h"
@@ -56,6 +57,20 @@ const T& Cached(std::map<std::string, T>& cache, const std::string& name, const 
   }
 }
 
+// A paper check's numbers and its `paper` figures (0 when the paper gives none: left out), read
+// from a scenario and written into its resolved copy from the same tables.
+const io::FieldTable<PaperCheck>& CheckFields() {
+  static const io::FieldTable<PaperCheck> fields{
+      {"speed_m_s", &PaperCheck::speed_m_s, 1.0, io::Sign::kPositive, false, false}};
+  return fields;
+}
+const io::FieldTable<PaperCheck>& PaperFigureFields() {
+  static const io::FieldTable<PaperCheck> fields{
+      {"experiment", &PaperCheck::paper_experiment, 1.0, io::Sign::kPositive, true, true},
+      {"rft", &PaperCheck::paper_rft, 1.0, io::Sign::kPositive, true, true}};
+  return fields;
+}
+
 PaperCheck ReadCheck(const io::YamlFields& f) {
   f.RequireOnly({"name", "quantity", "numerator", "denominator", "speed_m_s", "paper", "source"});
   PaperCheck c;
@@ -68,15 +83,89 @@ PaperCheck ReadCheck(const io::YamlFields& f) {
   c.numerator_soil = num.String("soil");
   c.denominator_pad = den.String("pad");
   c.denominator_soil = den.String("soil");
-  c.speed_m_s = f.Positive("speed_m_s");
+  io::ReadFields(f, CheckFields(), c);
   if (f.Has("paper")) {
     const io::YamlFields p = f.Child("paper");
-    p.RequireOnly({"experiment", "rft"});
-    if (p.Has("experiment")) c.paper_experiment = p.Positive("experiment");
-    if (p.Has("rft")) c.paper_rft = p.Positive("rft");
+    p.RequireOnly(io::FieldKeys(PaperFigureFields()));
+    io::ReadFields(p, PaperFigureFields(), c);
   }
   c.source = f.StringOr("source", "");
   return c;
+}
+
+void WriteCheck(YAML::Emitter& y, const PaperCheck& c) {
+  auto pad_soil = [&](const char* key, const std::string& pad, const std::string& soil) {
+    y << YAML::Key << key << YAML::Value << YAML::Flow << YAML::BeginMap << YAML::Key << "pad" << YAML::Value << pad
+      << YAML::Key << "soil" << YAML::Value << soil << YAML::EndMap;
+  };
+  y << YAML::BeginMap << YAML::Key << "name" << YAML::Value << c.name << YAML::Key << "quantity" << YAML::Value
+    << c.quantity;
+  pad_soil("numerator", c.numerator_pad, c.numerator_soil);
+  pad_soil("denominator", c.denominator_pad, c.denominator_soil);
+  io::WriteFields(y, CheckFields(), c);
+  if (c.paper_experiment > 0 || c.paper_rft > 0) {
+    y << YAML::Key << "paper" << YAML::Value << YAML::Flow << YAML::BeginMap;
+    io::WriteFields(y, PaperFigureFields(), c);
+    y << YAML::EndMap;
+  }
+  if (!c.source.empty()) y << YAML::Key << "source" << YAML::Value << c.source;
+  y << YAML::EndMap;
+}
+
+// What a resolved copy states about a case's pad and soil besides their files: derived from the
+// files, written for its reader, and checked against the files when the copy is loaded (file
+// units, as written).
+struct PadSummary {
+  double mass_kg = 0.0, radius_mm = 0.0, thickness_mm = 0.0, profile_points = 0.0;
+};
+PadSummary SummaryOf(const io::PadSpec& pad) {
+  if (!pad.is_axisymmetric()) return {pad.mass_kg, 0.0, 0.0, 0.0};
+  return {pad.mass_kg, pad.profile.radius_m() * 1e3, pad.profile.thickness_m() * 1e3,
+          static_cast<double>(pad.profile.points.size())};
+}
+const io::FieldTable<PadSummary>& PadSummaryFields() {
+  static const io::FieldTable<PadSummary> fields{
+      {"mass_kg", &PadSummary::mass_kg, 1.0, io::Sign::kAny, false, false},
+      {"radius_mm", &PadSummary::radius_mm, 1.0, io::Sign::kAny, false, false},
+      {"thickness_mm", &PadSummary::thickness_mm, 1.0, io::Sign::kAny, false, false},
+      {"profile_points", &PadSummary::profile_points, 1.0, io::Sign::kAny, false, false}};
+  return fields;
+}
+const io::FieldTable<rft::SoilParameters>& SoilSummaryFields() {
+  using S = rft::SoilParameters;
+  static const io::FieldTable<S> fields{
+      {"zeta_N_cm3", &S::zeta_N_m3, units::kN_m3_per_N_cm3, io::Sign::kAny, false, false},
+      {"reference_gravity_m_s2", &S::reference_gravity_m_s2, 1.0, io::Sign::kAny, false, false}};
+  return fields;
+}
+
+// The numbers of one case as run: the mass is the pad's when the scenario gives none, the zeta
+// override 0 when there is none (then left out).
+struct CaseNumbers {
+  double impact_speed_m_s = 0.0, mass_kg = 0.0, gravity_m_s2 = 0.0, zeta_override_N_m3 = 0.0;
+};
+CaseNumbers NumbersOf(const CampaignCase& c) {
+  return {c.conditions.impact_speed_m_s, c.conditions.mass_kg.value_or(c.pad->mass_kg), c.conditions.gravity_m_s2,
+          c.conditions.zeta_N_m3.value_or(0.0)};
+}
+const io::FieldTable<CaseNumbers>& CaseFields() {
+  static const io::FieldTable<CaseNumbers> fields{
+      {"impact_speed_m_s", &CaseNumbers::impact_speed_m_s, 1.0, io::Sign::kNonNegative, false, false},
+      {"mass_kg", &CaseNumbers::mass_kg, 1.0, io::Sign::kPositive, false, false},
+      {"gravity_m_s2", &CaseNumbers::gravity_m_s2, 1.0, io::Sign::kPositive, false, false},
+      {"zeta_override_N_cm3", &CaseNumbers::zeta_override_N_m3, units::kN_m3_per_N_cm3, io::Sign::kPositive, true,
+       true}};
+  return fields;
+}
+
+template <typename... Tables>
+std::vector<std::string> Keys(std::vector<std::string> keys, const Tables&... tables) {
+  (
+      [&] {
+        for (const std::string& k : io::FieldKeys(tables)) keys.push_back(k);
+      }(),
+      ...);
+  return keys;
 }
 
 const drop::PadDrop* FindDrop(const CampaignResult& r, const std::string& pad, const std::string& soil, double v) {
@@ -88,41 +177,110 @@ const drop::PadDrop* FindDrop(const CampaignResult& r, const std::string& pad, c
 double Quantity(const drop::PadDrop& d, const std::string& q) {
   return q == "peak_force_N" ? d.result.peak_force_N : d.result.final_penetration_m;
 }
+
+using PadCache = std::map<std::string, std::shared_ptr<const io::PadSpec>>;
+using SoilCache = std::map<std::string, rft::SoilParameters>;
+
+std::shared_ptr<const io::PadSpec> LoadSharedPad(const std::string& name) {
+  return std::make_shared<const io::PadSpec>(io::LoadPad(name));
+}
+
+// Checked as every case is: its numbers in range at load time, its drop id unique.
+void AddCase(CampaignScenario& s, std::set<std::string>& ids, const io::YamlFields& entry, const std::string& key,
+             CampaignCase c) {
+  drop::ValidateConditions(c.conditions, entry.file() + ": " + entry.prefix());
+  if (!ids.insert(c.drop_id).second)
+    entry.Fail(key, "impact speed " + SpeedTag(c.conditions.impact_speed_m_s) + " m/s of pad " + c.pad->name +
+                        " on soil " + c.soil.name + " is listed twice (drop " + c.drop_id + ")");
+  s.cases.push_back(std::move(c));
+}
+
+std::string DropId(const io::PadSpec& pad, const rft::SoilParameters& soil, double speed_m_s) {
+  return pad.name + "_" + soil.name + "_v" + SpeedTag(speed_m_s);
+}
+
+// A scenario's `drops`: each entry a pad and a soil by name or path, and its list of speeds.
+void ReadDropEntries(const io::YamlFields& f, CampaignScenario& s) {
+  const double gravity = f.PositiveOr("gravity_m_s2", 9.81);
+  PadCache pads;
+  SoilCache soils;
+  std::set<std::string> ids;
+  for (const io::YamlFields& entry : f.List("drops")) {
+    entry.RequireOnly({"pad", "soil", "impact_speeds_m_s", "mass_kg", "zeta_N_cm3", "gravity_m_s2"});
+    const std::shared_ptr<const io::PadSpec>& pad = Cached(pads, entry.String("pad"), entry, "pad", LoadSharedPad);
+    const rft::SoilParameters& soil = Cached(soils, entry.String("soil"), entry, "soil", io::LoadSoil);
+    const std::string soil_source = io::ResolveCatalogFile("soils", entry.String("soil"));
+    for (double v : entry.NumberList("impact_speeds_m_s", /*allow_zero=*/true)) {
+      CampaignCase c{DropId(*pad, soil, v), pad, soil, soil_source, {}};
+      c.conditions.impact_speed_m_s = v;
+      c.conditions.gravity_m_s2 = entry.PositiveOr("gravity_m_s2", gravity);
+      if (entry.Has("mass_kg")) c.conditions.mass_kg = entry.Positive("mass_kg");
+      if (entry.Has("zeta_N_cm3")) c.conditions.zeta_N_m3 = units::ZetaFromN_cm3(entry.Positive("zeta_N_cm3"));
+      AddCase(s, ids, entry, "impact_speeds_m_s", std::move(c));
+    }
+  }
+}
+
+// A resolved copy's `drops`: one entry a case, its pad and soil by file (as written into `dir`)
+// with the values derived from them, which must still match the files.
+void ReadResolvedCases(const io::YamlFields& f, const std::string& dir, CampaignScenario& s) {
+  PadCache pads;
+  SoilCache soils;
+  std::set<std::string> ids;
+  for (const io::YamlFields& entry : f.List("drops")) {
+    entry.RequireOnly(Keys({"drop_id", "pad", "soil"}, CaseFields()));
+    const io::YamlFields pf = entry.Child("pad"), sf = entry.Child("soil");
+    pf.RequireOnly(Keys({"name", "file"}, PadSummaryFields()));
+    sf.RequireOnly(Keys({"name", "file", "atmosphere"}, SoilSummaryFields()));
+    const std::string pad_file = io::PathFromOutput(pf.String("file"), dir);
+    const std::string soil_file = io::PathFromOutput(sf.String("file"), dir);
+    const std::shared_ptr<const io::PadSpec>& pad = Cached(pads, pad_file, pf, "file", LoadSharedPad);
+    const rft::SoilParameters& soil = Cached(soils, soil_file, sf, "file", io::LoadSoil);
+    if (pf.String("name") != pad->name) pf.Fail("name", "is '" + pf.String("name") + "' but the pad file names '" + pad->name + "'");
+    io::RequireFieldsMatch(pf, PadSummaryFields(), SummaryOf(*pad), "the pad file");
+    if (sf.String("name") != soil.name) sf.Fail("name", "is '" + sf.String("name") + "' but the soil file names '" + soil.name + "'");
+    const std::string atmosphere = rft::AtmosphereName(soil.atmosphere);
+    if (sf.String("atmosphere") != atmosphere) sf.Fail("atmosphere", "differs from the soil file's '" + atmosphere + "'");
+    io::RequireFieldsMatch(sf, SoilSummaryFields(), soil, "the soil file");
+    CaseNumbers n;
+    io::ReadFields(entry, CaseFields(), n);
+    CampaignCase c{DropId(*pad, soil, n.impact_speed_m_s), pad, soil, soil_file, {}};
+    if (entry.String("drop_id") != c.drop_id) entry.Fail("drop_id", "must be " + c.drop_id + " (pad_soil_vSPEED)");
+    c.conditions.impact_speed_m_s = n.impact_speed_m_s;
+    c.conditions.mass_kg = n.mass_kg;
+    c.conditions.gravity_m_s2 = n.gravity_m_s2;
+    if (n.zeta_override_N_m3 > 0.0) c.conditions.zeta_N_m3 = n.zeta_override_N_m3;
+    AddCase(s, ids, entry, "impact_speed_m_s", std::move(c));
+  }
+}
 }  // namespace
 
 CampaignScenario LoadCampaignScenario(const std::string& path) {
   const io::YamlFields f = io::YamlFields::LoadFile(path);
   f.RequireSchemaVersion(1);
-  f.RequireOnly({"schema_version", "type", "name", "description", "gravity_m_s2", "reference_speed_m_s", "drops",
-                 "paper_checks", "provenance"});
-  if (f.Has("type") && f.String("type") != "campaign") f.Fail("type", "must be 'campaign'");
+  const std::string type = f.StringOr("type", "campaign");
+  if (type != "campaign" && type != "campaign_resolved") f.Fail("type", "must be 'campaign' or 'campaign_resolved'");
+  const bool resolved = type == "campaign_resolved";
+  if (resolved)
+    f.RequireOnly({"schema_version", "type", "name", "description", "source", "reference_speed_m_s", "drops",
+                   "paper_checks"});
+  else
+    f.RequireOnly({"schema_version", "type", "name", "description", "gravity_m_s2", "reference_speed_m_s", "drops",
+                   "paper_checks", "provenance"});
   CampaignScenario s;
-  s.source = path;
+  const std::string dir = fs::path(path).parent_path().string();
+  // A resolved copy names the scenario it was resolved from, and stands for it.
+  s.source = resolved ? io::PathFromOutput(f.String("source"), dir) : path;
   s.name = f.StringOr("name", fs::path(path).stem().string());
   s.description = f.StringOr("description", "");
-  const double gravity = f.PositiveOr("gravity_m_s2", 9.81);
-  std::map<std::string, std::shared_ptr<const io::PadSpec>> pads;
-  std::map<std::string, rft::SoilParameters> soils;
-  std::set<std::string> ids;
-  auto load_pad = [](const std::string& name) { return std::make_shared<const io::PadSpec>(io::LoadPad(name)); };
-  for (const io::YamlFields& entry : f.List("drops")) {
-    entry.RequireOnly({"pad", "soil", "impact_speeds_m_s", "mass_kg", "zeta_N_cm3", "gravity_m_s2"});
-    const std::shared_ptr<const io::PadSpec>& pad = Cached(pads, entry.String("pad"), entry, "pad", load_pad);
-    const rft::SoilParameters& soil = Cached(soils, entry.String("soil"), entry, "soil", io::LoadSoil);
-    for (double v : entry.NumberList("impact_speeds_m_s", /*allow_zero=*/true)) {
-      CampaignCase c{pad->name + "_" + soil.name + "_v" + SpeedTag(v), pad, soil, {}};
-      c.conditions.impact_speed_m_s = v;
-      c.conditions.gravity_m_s2 = entry.PositiveOr("gravity_m_s2", gravity);
-      if (entry.Has("mass_kg")) c.conditions.mass_kg = entry.Positive("mass_kg");
-      if (entry.Has("zeta_N_cm3")) c.conditions.zeta_N_m3 = units::ZetaFromN_cm3(entry.Positive("zeta_N_cm3"));
-      drop::ValidateConditions(c.conditions, f.file() + ": " + entry.prefix());  // ranges checked at load time
-      if (!ids.insert(c.drop_id).second)
-        entry.Fail("impact_speeds_m_s", "impact speed " + SpeedTag(v) + " m/s of pad " + pad->name + " on soil " +
-                                            soil.name + " is listed twice (drop " + c.drop_id + ")");
-      s.cases.push_back(std::move(c));
-    }
-  }
-  s.reference_speed_m_s = f.PositiveOr("reference_speed_m_s", s.cases.front().conditions.impact_speed_m_s);
+  if (resolved)
+    ReadResolvedCases(f, dir, s);
+  else
+    ReadDropEntries(f, s);
+  if (resolved)
+    s.reference_speed_m_s = f.NonNegative("reference_speed_m_s");
+  else
+    s.reference_speed_m_s = f.PositiveOr("reference_speed_m_s", s.cases.front().conditions.impact_speed_m_s);
   if (f.Has("paper_checks"))
     for (const io::YamlFields& c : f.List("paper_checks")) s.checks.push_back(ReadCheck(c));
   return s;
@@ -131,29 +289,32 @@ CampaignScenario LoadCampaignScenario(const std::string& path) {
 void WriteResolvedScenario(const CampaignScenario& s, const std::string& path, const std::string& output_dir) {
   YAML::Emitter y;
   y << YAML::BeginMap << YAML::Key << "schema_version" << YAML::Value << 1 << YAML::Key << "type" << YAML::Value
-    << "campaign_resolved" << YAML::Key << "name" << YAML::Value << s.name << YAML::Key << "source" << YAML::Value
-    << io::PathForOutput(s.source, output_dir) << YAML::Key << "reference_speed_m_s" << YAML::Value << s.reference_speed_m_s << YAML::Key << "drops"
-    << YAML::Value << YAML::BeginSeq;
+    << "campaign_resolved" << YAML::Key << "name" << YAML::Value << s.name;
+  if (!s.description.empty()) y << YAML::Key << "description" << YAML::Value << s.description;
+  y << YAML::Key << "source" << YAML::Value << io::PathForOutput(s.source, output_dir) << YAML::Key
+    << "reference_speed_m_s" << YAML::Value << s.reference_speed_m_s << YAML::Key << "drops" << YAML::Value
+    << YAML::BeginSeq;
   for (const CampaignCase& c : s.cases) {
-    const rft::SoilParameters& soil = c.soil;
     y << YAML::BeginMap << YAML::Key << "drop_id" << YAML::Value << c.drop_id;
-    const io::PadSpec& pad = *c.pad;
-    y << YAML::Key << "pad" << YAML::Value << YAML::BeginMap << YAML::Key << "name" << YAML::Value << pad.name
-      << YAML::Key << "file" << YAML::Value << io::PathForOutput(pad.source, output_dir) << YAML::Key << "mass_kg"
-      << YAML::Value << pad.mass_kg << YAML::Key << "radius_mm" << YAML::Value << pad.profile.radius_m() * 1e3
-      << YAML::Key << "thickness_mm" << YAML::Value << pad.profile.thickness_m() * 1e3 << YAML::Key
-      << "profile_points" << YAML::Value << pad.profile.points.size() << YAML::EndMap;
-    y << YAML::Key << "soil" << YAML::Value << YAML::BeginMap << YAML::Key << "name" << YAML::Value << soil.name
-      << YAML::Key << "atmosphere" << YAML::Value << rft::AtmosphereName(soil.atmosphere) << YAML::Key << "zeta_N_cm3" << YAML::Value
-      << units::ZetaToN_cm3(soil.zeta_N_m3) << YAML::Key << "reference_gravity_m_s2" << YAML::Value << soil.reference_gravity_m_s2
-      << YAML::EndMap;
-    y << YAML::Key << "impact_speed_m_s" << YAML::Value << c.conditions.impact_speed_m_s << YAML::Key << "mass_kg"
-      << YAML::Value << c.conditions.mass_kg.value_or(pad.mass_kg) << YAML::Key << "gravity_m_s2" << YAML::Value
-      << c.conditions.gravity_m_s2;
-    if (c.conditions.zeta_N_m3) y << YAML::Key << "zeta_override_N_cm3" << YAML::Value << units::ZetaToN_cm3(*c.conditions.zeta_N_m3);
+    y << YAML::Key << "pad" << YAML::Value << YAML::BeginMap << YAML::Key << "name" << YAML::Value << c.pad->name
+      << YAML::Key << "file" << YAML::Value << io::PathForOutput(c.pad->source, output_dir);
+    io::WriteFields(y, PadSummaryFields(), SummaryOf(*c.pad));
+    y << YAML::EndMap;
+    y << YAML::Key << "soil" << YAML::Value << YAML::BeginMap << YAML::Key << "name" << YAML::Value << c.soil.name
+      << YAML::Key << "file" << YAML::Value << io::PathForOutput(c.soil_source, output_dir) << YAML::Key
+      << "atmosphere" << YAML::Value << rft::AtmosphereName(c.soil.atmosphere);
+    io::WriteFields(y, SoilSummaryFields(), c.soil);
+    y << YAML::EndMap;
+    io::WriteFields(y, CaseFields(), NumbersOf(c));
     y << YAML::EndMap;
   }
-  y << YAML::EndSeq << YAML::EndMap;
+  y << YAML::EndSeq;
+  if (!s.checks.empty()) {
+    y << YAML::Key << "paper_checks" << YAML::Value << YAML::BeginSeq;
+    for (const PaperCheck& c : s.checks) WriteCheck(y, c);
+    y << YAML::EndSeq;
+  }
+  y << YAML::EndMap;
   io::WriteFileAtomically(path, [&](std::ostream& out) { out << y.c_str() << '\n'; });
 }
 

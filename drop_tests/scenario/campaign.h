@@ -18,6 +18,7 @@ struct CampaignCase {
   // case multiplied by the size of the campaign (2-3 MB a drop).
   std::shared_ptr<const io::PadSpec> pad;
   rft::SoilParameters soil;
+  std::string soil_source;  // the soil's YAML file
   drop::DropConditions conditions;
 };
 

@@ -65,23 +65,52 @@ const char* AbsorberKindName(lander::ShockAbsorber::Kind kind) {
   return kind == lander::ShockAbsorber::Kind::kSpringDamper ? "spring_damper" : "crushable";
 }
 
+// The number fields of each absorber kind and of the cone limit, read from a lander file and
+// written into a resolved copy (every field, defaults included).
+const io::FieldTable<lander::ShockAbsorber>& AbsorberFields(lander::ShockAbsorber::Kind kind) {
+  using A = lander::ShockAbsorber;
+  static const io::FieldTable<A> spring_damper{
+      {"stiffness_N_m", &A::stiffness_N_m, 1.0, io::Sign::kPositive, false},
+      {"damping_N_s_m", &A::damping_N_s_m, 1.0, io::Sign::kNonNegative, true},
+  };
+  static const io::FieldTable<A> crushable{
+      {"crush_force_N", &A::crush_force_N, 1.0, io::Sign::kPositive, false},
+      {"stroke_mm", &A::stroke_limit_m, kMm, io::Sign::kPositive, false},
+  };
+  return kind == A::Kind::kSpringDamper ? spring_damper : crushable;
+}
+
+const io::FieldTable<lander::ConeLimit>& ConeFields() {
+  using C = lander::ConeLimit;
+  static const io::FieldTable<C> fields{
+      {"half_angle_deg", &C::half_angle_rad, kDeg, io::Sign::kPositive, false},
+      {"stiffness_N_m_rad", &C::stiffness_N_m_rad, 1.0, io::Sign::kPositive, false},
+      {"damping_N_m_s_rad", &C::damping_N_m_s_rad, 1.0, io::Sign::kNonNegative, true},
+  };
+  return fields;
+}
+
 lander::ShockAbsorber ReadAbsorber(const io::YamlFields& f) {
   lander::ShockAbsorber a;
   const std::string kind = f.String("kind");
   if (kind == AbsorberKindName(lander::ShockAbsorber::Kind::kSpringDamper)) {
-    f.RequireOnly({"kind", "stiffness_N_m", "damping_N_s_m"});
     a.kind = lander::ShockAbsorber::Kind::kSpringDamper;
-    a.stiffness_N_m = f.Positive("stiffness_N_m");
-    a.damping_N_s_m = f.Has("damping_N_s_m") ? f.NonNegative("damping_N_s_m") : 0.0;
   } else if (kind == AbsorberKindName(lander::ShockAbsorber::Kind::kCrushable)) {
-    f.RequireOnly({"kind", "crush_force_N", "stroke_mm"});
     a.kind = lander::ShockAbsorber::Kind::kCrushable;
-    a.crush_force_N = f.Positive("crush_force_N");
-    a.stroke_limit_m = f.Positive("stroke_mm") * kMm;
   } else {
     f.Fail("kind", "unknown absorber kind '" + kind + "' (spring_damper, crushable)");
   }
+  std::vector<std::string> known{"kind"};
+  for (const std::string& key : io::FieldKeys(AbsorberFields(a.kind))) known.push_back(key);
+  f.RequireOnly(known);
+  io::ReadFields(f, AbsorberFields(a.kind), a);
   return a;
+}
+
+void WriteAbsorber(YAML::Emitter& y, const lander::ShockAbsorber& a) {
+  y << YAML::BeginMap << YAML::Key << "kind" << YAML::Value << AbsorberKindName(a.kind);
+  io::WriteFields(y, AbsorberFields(a.kind), a);
+  y << YAML::EndMap;
 }
 
 Eigen::Matrix3d AxisRotation(const Eigen::Vector3d& axis, double angle) {
@@ -135,9 +164,9 @@ LanderSpec LoadLanderSpec(const std::string& name_or_path) {
   std::optional<lander::ConeLimit> cone;
   if (legs.Has("cone_limit")) {
     const io::YamlFields c = legs.Child("cone_limit");
-    c.RequireOnly({"half_angle_deg", "stiffness_N_m_rad", "damping_N_m_s_rad"});
-    cone = lander::ConeLimit{c.Positive("half_angle_deg") * kDeg, c.Positive("stiffness_N_m_rad"),
-                             c.Has("damping_N_m_s_rad") ? c.NonNegative("damping_N_m_s_rad") : 0.0};
+    c.RequireOnly(io::FieldKeys(ConeFields()));
+    cone.emplace();
+    io::ReadFields(c, ConeFields(), *cone);
   }
   for (int i = 0; i < lander::kNumLegs; ++i) {
     const double az = kPadAzimuthDeg[i] * kDeg;
@@ -220,9 +249,13 @@ LanderPatchSpec ReadPatch(const io::YamlFields& p, const SoilCheck& check_soil) 
 
 // The ground: plane or slope, the 3D law, the default soil and the soil patches (every soil
 // loaded and checked against the law at `gravity_m_s2`).
-LanderGroundSpec ReadGround(const io::YamlFields& g, double gravity_m_s2) {
+// A resolved copy's ground also has its `soils` and `model` (checked and read by the caller).
+LanderGroundSpec ReadGround(const io::YamlFields& g, double gravity_m_s2, bool resolved) {
   LanderGroundSpec ground;
-  g.RequireOnly({"height_m", "slope_deg", "downhill_azimuth_deg", "law", "soil", "patches"});
+  if (resolved)
+    g.RequireOnly({"height_m", "slope_deg", "downhill_azimuth_deg", "law", "soil", "soils", "model", "patches"});
+  else
+    g.RequireOnly({"height_m", "slope_deg", "downhill_azimuth_deg", "law", "soil", "patches"});
   io::ReadFields(g, GroundNumberFields(), ground);
   if (ground.slope_rad >= 80 * kDeg) g.Fail("slope_deg", "must be below 80");
   try {
@@ -239,7 +272,10 @@ LanderGroundSpec ReadGround(const io::YamlFields& g, double gravity_m_s2) {
     }
   };
   check_soil(g, "soil", ground.default_soil);
-  if (g.Has("patches")) {
+  // `patches: []` (a resolved copy of a ground without patches) is no patches.
+  const bool no_patches =
+      g.Has("patches") && g.node()["patches"].IsSequence() && g.node()["patches"].size() == 0;
+  if (g.Has("patches") && !no_patches) {
     for (const io::YamlFields& p : g.List("patches")) {
       LanderPatchSpec patch = ReadPatch(p, check_soil);
       if (patch.name.empty()) patch.name = "patch_" + std::to_string(ground.patches.size() + 1);
@@ -250,11 +286,14 @@ LanderGroundSpec ReadGround(const io::YamlFields& g, double gravity_m_s2) {
 }
 
 // The release: drop height or touchdown speed, velocities, attitude and the pads' attitude.
-LanderInitialSpec ReadInitial(const io::YamlFields& in) {
+// A resolved copy's release also states the body's position (checked by the caller).
+LanderInitialSpec ReadInitial(const io::YamlFields& in, bool resolved) {
   LanderInitialSpec ic;
-  in.RequireOnly({"drop_height_m", "touchdown_speed_m_s", "release_vertical_speed_m_s", "horizontal_velocity_m_s",
-                  "roll_deg", "pitch_deg", "yaw_relative_to_slope_deg", "align_to_slope", "angular_rate_deg_s",
-                  "pad_attitude"});
+  std::vector<std::string> known{"drop_height_m", "touchdown_speed_m_s", "release_vertical_speed_m_s",
+                                 "horizontal_velocity_m_s", "roll_deg", "pitch_deg", "yaw_relative_to_slope_deg",
+                                 "align_to_slope", "angular_rate_deg_s", "pad_attitude"};
+  if (resolved) known.push_back("release_body_com_m");
+  in.RequireOnly(known);
   if (in.Has("drop_height_m") == in.Has("touchdown_speed_m_s"))
     in.Fail("drop_height_m", "give exactly one of drop_height_m and touchdown_speed_m_s");
   if (in.Has("drop_height_m")) ic.drop_height_m = in.NonNegative("drop_height_m");
@@ -321,25 +360,91 @@ void ReadSimulation(const io::YamlFields& sim, lander::LanderRunOptions& options
 }
 }  // namespace
 
+namespace {
+void WriteLanderBlock(YAML::Emitter& y, const LanderSpec& l, const std::function<std::string(const std::string&)>& file);
+void WriteSoilsBlock(YAML::Emitter& y, const LanderScenario& s, const LanderSetup& setup);
+void WriteVector(YAML::Emitter& y, const Eigen::Vector3d& v, double scale);
+
+// Where `given` (a block of a resolved copy) differs from `expected` (that block written again
+// from the files it names), as a dotted path; empty when they agree. Numbers are compared as
+// written (17 digits), so equal text is equal value.
+std::string FirstDifference(const YAML::Node& given, const YAML::Node& expected, const std::string& at) {
+  if (given.Type() != expected.Type()) return at;
+  if (given.IsScalar()) return given.Scalar() == expected.Scalar() ? "" : at;
+  if (given.size() != expected.size()) return at;
+  if (given.IsSequence()) {
+    for (size_t i = 0; i < given.size(); ++i)
+      if (std::string d = FirstDifference(given[i], expected[i], at + "[" + std::to_string(i) + "]"); !d.empty()) return d;
+    return "";
+  }
+  for (const auto& kv : expected) {
+    const std::string key = kv.first.Scalar();
+    if (!given[key]) return at + "." + key;
+    if (std::string d = FirstDifference(given[key], kv.second, at + "." + key); !d.empty()) return d;
+  }
+  return "";
+}
+
+// The block `key` of `f` must be what `write` writes now.
+void RequireSameBlock(const io::YamlFields& f, const std::string& key, const std::function<void(YAML::Emitter&)>& write) {
+  if (!f.Has(key)) f.Fail(key, "missing (a resolved copy states it)");
+  YAML::Emitter y;
+  write(y);
+  const std::string d = FirstDifference(f.node()[key], YAML::Load(y.c_str()), key);
+  if (!d.empty())
+    f.Fail(key, "differs at " + d + " from what the files it names give now (lander, pad, soils, model)");
+}
+
+// A resolved copy's derived values (the lander's masses, pad and legs, the soils as run, the
+// release position) are read back against the files they came from.
+void RequireResolvedValuesMatch(const io::YamlFields& f, const LanderScenario& s) {
+  const std::string dir = fs::path(f.file()).parent_path().string();
+  const auto file = [&](const std::string& p) { return io::PathForOutput(p, dir); };
+  RequireSameBlock(f, "lander", [&](YAML::Emitter& y) { WriteLanderBlock(y, s.lander, file); });
+  const LanderSetup setup = BuildLanderSetup(s);
+  RequireSameBlock(f.Child("ground"), "soils", [&](YAML::Emitter& y) { WriteSoilsBlock(y, s, setup); });
+  RequireSameBlock(f.Child("initial"), "release_body_com_m",
+                   [&](YAML::Emitter& y) { WriteVector(y, setup.initial.p_WB, 1.0); });
+}
+}  // namespace
+
 LanderScenario LoadLanderScenario(const std::string& path) {
   const io::YamlFields f = io::YamlFields::LoadFile(path);
   f.RequireSchemaVersion(1);
-  f.RequireOnly({"schema_version", "type", "name", "description", "lander", "gravity_m_s2", "ground", "initial",
-                 "simulation", "paper", "provenance"});
-  if (f.String("type") != "lander") f.Fail("type", "must be 'lander', got '" + f.String("type") + "'");
+  const std::string type = f.String("type");
+  if (type != "lander" && type != "lander_resolved")
+    f.Fail("type", "must be 'lander' or 'lander_resolved', got '" + type + "'");
+  const bool resolved = type == "lander_resolved";
+  if (resolved)
+    f.RequireOnly({"schema_version", "type", "name", "description", "source", "lander", "gravity_m_s2", "ground",
+                   "initial", "simulation", "paper"});
+  else
+    f.RequireOnly({"schema_version", "type", "name", "description", "lander", "gravity_m_s2", "ground", "initial",
+                   "simulation", "paper", "provenance"});
+  const std::string dir = fs::path(path).parent_path().string();
   LanderScenario s;
-  s.source = path;
+  // A resolved copy names the scenario it was resolved from, and stands for it.
+  s.source = resolved ? io::PathFromOutput(f.String("source"), dir) : path;
   s.name = f.StringOr("name", fs::path(path).stem().string());
   s.description = f.StringOr("description", "");
   s.gravity_m_s2 = f.Has("gravity_m_s2") ? f.Positive("gravity_m_s2") : 9.81;
   try {
-    s.lander = LoadLanderSpec(ResolveRelative(f, "landers", f.String("lander")));
+    s.lander = resolved ? LoadLanderSpec(io::PathFromOutput(f.Child("lander").String("file"), dir))
+                        : LoadLanderSpec(ResolveRelative(f, "landers", f.String("lander")));
   } catch (const InputError& e) {
     f.Fail("lander", e.what());
   }
 
-  s.ground = ReadGround(f.Child("ground"), s.gravity_m_s2);
-  s.initial = ReadInitial(f.Child("initial"));
+  s.ground = ReadGround(f.Child("ground"), s.gravity_m_s2, resolved);
+  if (resolved && f.Child("ground").Has("model")) {
+    const io::YamlFields g = f.Child("ground");
+    try {
+      s.model = model::LoadModelFile(io::PathFromOutput(g.String("model"), dir));
+    } catch (const InputError& e) {
+      g.Fail("model", e.what());
+    }
+  }
+  s.initial = ReadInitial(f.Child("initial"), resolved);
   if (f.Has("simulation")) ReadSimulation(f.Child("simulation"), s.options);
   if (f.Has("paper")) {
     const io::YamlFields p = f.Child("paper");
@@ -348,6 +453,7 @@ LanderScenario LoadLanderScenario(const std::string& path) {
     if (p.Has("roll_pitch_within_deg"))
       s.paper = LanderPaperCheck{p.Positive("roll_pitch_within_deg"), p.StringOr("source", "")};
   }
+  if (resolved) RequireResolvedValuesMatch(f, s);
   return s;
 }
 
@@ -526,19 +632,18 @@ void WriteLanderTraceCsv(const LanderRun& run, const std::string& path) {
   });
 }
 
-void WriteResolvedLanderScenario(const LanderScenario& s, const std::string& path, const std::string& output_dir) {
-  auto file = [&](const std::string& p) { return io::PathForOutput(p, output_dir); };
-  YAML::Emitter y;
-  auto vec = [&](const Eigen::Vector3d& v, double scale) {
-    y << YAML::Flow << YAML::BeginSeq << v.x() * scale << v.y() * scale << v.z() * scale << YAML::EndSeq;
-  };
-  y << YAML::BeginMap << YAML::Key << "schema_version" << YAML::Value << 1 << YAML::Key << "type" << YAML::Value
-    << "lander_resolved" << YAML::Key << "name" << YAML::Value << s.name << YAML::Key << "source" << YAML::Value
-    << file(s.source) << YAML::Key << "gravity_m_s2" << YAML::Value << s.gravity_m_s2;
-  const LanderSpec& l = s.lander;
-  y << YAML::Key << "lander" << YAML::Value << YAML::BeginMap << YAML::Key << "name" << YAML::Value << l.name
-    << YAML::Key << "file" << YAML::Value << file(l.source) << YAML::Key << "total_mass_kg" << YAML::Value << l.total_mass_kg
-    << YAML::Key << "body_mass_kg" << YAML::Value << l.body_mass_kg << YAML::Key << "cog_height_mm" << YAML::Value
+namespace {
+using FileName = std::function<std::string(const std::string&)>;
+
+void WriteVector(YAML::Emitter& y, const Eigen::Vector3d& v, double scale) {
+  y << YAML::Flow << YAML::BeginSeq << v.x() * scale << v.y() * scale << v.z() * scale << YAML::EndSeq;
+}
+
+// The resolved copy's `lander` block: the lander file and what it resolves to (masses, pad, legs).
+void WriteLanderBlock(YAML::Emitter& y, const LanderSpec& l, const std::function<std::string(const std::string&)>& file) {
+  y << YAML::BeginMap << YAML::Key << "name" << YAML::Value << l.name << YAML::Key << "file" << YAML::Value
+    << file(l.source) << YAML::Key << "total_mass_kg" << YAML::Value << l.total_mass_kg << YAML::Key
+    << "body_mass_kg" << YAML::Value << l.body_mass_kg << YAML::Key << "cog_height_mm" << YAML::Value
     << l.cog_height_m * 1e3 << YAML::Key << "body_inertia_kg_m2" << YAML::Value << YAML::Flow << YAML::BeginSeq;
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 3; ++c) y << l.body_inertia_B(r, c);
@@ -546,40 +651,33 @@ void WriteResolvedLanderScenario(const LanderScenario& s, const std::string& pat
     << l.pad.name << YAML::Key << "file" << YAML::Value << file(l.pad.source) << YAML::Key << "mass_kg" << YAML::Value
     << l.pad.body.mass_kg << YAML::Key << "triangles" << YAML::Value << l.pad.body.surface.size() << YAML::Key
     << "com_from_joint_mm" << YAML::Value;
-  vec(l.pad.body.com_B, 1e3);
+  WriteVector(y, l.pad.body.com_B, 1e3);
   y << YAML::Key << "lowest_point_from_joint_mm" << YAML::Value << l.pad.body.lowest_z_B * 1e3 << YAML::EndMap;
   y << YAML::Key << "legs" << YAML::Value << YAML::BeginSeq;
   for (int i = 0; i < lander::kNumLegs; ++i) {
     const LanderLegSpec& leg = l.legs[i];
     y << YAML::BeginMap << YAML::Key << "pad_number" << YAML::Value << i + 1 << YAML::Key << "joint_from_body_com_mm"
       << YAML::Value;
-    vec(leg.joint_B, 1e3);
+    WriteVector(y, leg.joint_B, 1e3);
     y << YAML::Key << "hip_from_body_com_mm" << YAML::Value;
-    vec(leg.hip_B, 1e3);
+    WriteVector(y, leg.hip_B, 1e3);
     if (leg.absorber) {
-      const auto& a = *leg.absorber;
-      y << YAML::Key << "absorber" << YAML::Value << YAML::BeginMap;
-      if (a.kind == lander::ShockAbsorber::Kind::kSpringDamper)
-        y << YAML::Key << "kind" << YAML::Value << AbsorberKindName(a.kind) << YAML::Key << "stiffness_N_m" << YAML::Value
-          << a.stiffness_N_m << YAML::Key << "damping_N_s_m" << YAML::Value << a.damping_N_s_m;
-      else
-        y << YAML::Key << "kind" << YAML::Value << AbsorberKindName(a.kind) << YAML::Key << "crush_force_N" << YAML::Value
-          << a.crush_force_N << YAML::Key << "stroke_mm" << YAML::Value << a.stroke_limit_m * 1e3;
+      y << YAML::Key << "absorber" << YAML::Value;
+      WriteAbsorber(y, *leg.absorber);
+    }
+    if (leg.cone) {
+      y << YAML::Key << "cone_limit" << YAML::Value << YAML::BeginMap;
+      io::WriteFields(y, ConeFields(), *leg.cone);
       y << YAML::EndMap;
     }
-    if (leg.cone)
-      y << YAML::Key << "cone_limit" << YAML::Value << YAML::BeginMap << YAML::Key << "half_angle_deg" << YAML::Value
-        << leg.cone->half_angle_rad / kDeg << YAML::Key << "stiffness_N_m_rad" << YAML::Value
-        << leg.cone->stiffness_N_m_rad << YAML::Key << "damping_N_m_s_rad" << YAML::Value
-        << leg.cone->damping_N_m_s_rad << YAML::EndMap;
     y << YAML::EndMap;
   }
   y << YAML::EndSeq << YAML::EndMap;
-  y << YAML::Key << "ground" << YAML::Value << YAML::BeginMap;
-  io::WriteFields(y, GroundNumberFields(), s.ground);
-  y << YAML::Key << "law" << YAML::Value << std::string(rft::LawKindName(s.ground.law)) << YAML::Key << "soil" << YAML::Value << s.ground.default_soil;
-  const LanderSetup setup = BuildLanderSetup(s);
-  y << YAML::Key << "soils" << YAML::Value << YAML::BeginSeq;
+}
+
+// The ground's `soils` block: every soil of the terrain as the run sees it (model applied).
+void WriteSoilsBlock(YAML::Emitter& y, const LanderScenario& s, const LanderSetup& setup) {
+  y << YAML::BeginSeq;
   for (const rft::TerrainSoil& soil : setup.terrain.soils) {
     const rft::SoilParameters p = s.model ? model::ApplyModel(*s.model, io::LoadSoil(soil.name)) : io::LoadSoil(soil.name);
     y << YAML::BeginMap << YAML::Key << "name" << YAML::Value << p.name << YAML::Key << "zeta_N_cm3_at_gravity"
@@ -587,6 +685,25 @@ void WriteResolvedLanderScenario(const LanderScenario& s, const std::string& pat
       << rft::AtmosphereName(p.atmosphere) << YAML::Key << "law_3d" << YAML::Value << soil.contact.name() << YAML::EndMap;
   }
   y << YAML::EndSeq;
+}
+}  // namespace
+
+void WriteResolvedLanderScenario(const LanderScenario& s, const std::string& path, const std::string& output_dir) {
+  const FileName file = [&](const std::string& p) { return io::PathForOutput(p, output_dir); };
+  YAML::Emitter y;
+  y << YAML::BeginMap << YAML::Key << "schema_version" << YAML::Value << 1 << YAML::Key << "type" << YAML::Value
+    << "lander_resolved" << YAML::Key << "name" << YAML::Value << s.name;
+  if (!s.description.empty()) y << YAML::Key << "description" << YAML::Value << s.description;
+  y << YAML::Key << "source" << YAML::Value << file(s.source) << YAML::Key << "gravity_m_s2" << YAML::Value
+    << s.gravity_m_s2;
+  y << YAML::Key << "lander" << YAML::Value;
+  WriteLanderBlock(y, s.lander, file);
+  y << YAML::Key << "ground" << YAML::Value << YAML::BeginMap;
+  io::WriteFields(y, GroundNumberFields(), s.ground);
+  y << YAML::Key << "law" << YAML::Value << std::string(rft::LawKindName(s.ground.law)) << YAML::Key << "soil" << YAML::Value << s.ground.default_soil;
+  const LanderSetup setup = BuildLanderSetup(s);
+  y << YAML::Key << "soils" << YAML::Value;
+  WriteSoilsBlock(y, s, setup);
   if (s.model) y << YAML::Key << "model" << YAML::Value << file(s.model->source);
   y << YAML::Key << "patches" << YAML::Value << YAML::BeginSeq;
   for (const rft::SoilPatch& p : setup.terrain.patches) {
@@ -608,16 +725,26 @@ void WriteResolvedLanderScenario(const LanderScenario& s, const std::string& pat
   io::WriteFields(y, AttitudeNumberFields(), ic);
   y << YAML::Key << "align_to_slope" << YAML::Value << ic.align_to_slope << YAML::Key << "angular_rate_deg_s"
     << YAML::Value;
-  vec(ic.angular_rate_B, 1.0 / kDeg);
+  WriteVector(y, ic.angular_rate_B, 1.0 / kDeg);
   y << YAML::Key << "pad_attitude" << YAML::Value << ic.pad_attitude << YAML::Key << "release_body_com_m" << YAML::Value;
-  vec(setup.initial.p_WB, 1.0);
+  WriteVector(y, setup.initial.p_WB, 1.0);
   y << YAML::EndMap;
   y << YAML::Key << "simulation" << YAML::Value << YAML::BeginMap;
   io::WriteFields(y, RunNumberFields(), s.options);
   y << YAML::Key << "rtol" << YAML::Value << s.options.integrator.rtol;
   // Without `atol` the absolute tolerances are rtol times each state's scale (lander_simulation.h).
   if (!s.options.scale_tolerances) y << YAML::Key << "atol" << YAML::Value << s.options.integrator.atol;
+  if (s.options.integrator.max_step != lander::LanderRunOptions{}.integrator.max_step) y << YAML::Key << "max_step_s" << YAML::Value << s.options.integrator.max_step;
   y << YAML::Key << "stiff" << YAML::Value << s.options.integrator.stiff << YAML::EndMap;
+  if (!s.paper_ground_case.empty() || s.paper) {
+    y << YAML::Key << "paper" << YAML::Value << YAML::BeginMap;
+    if (!s.paper_ground_case.empty()) y << YAML::Key << "ground_case" << YAML::Value << s.paper_ground_case;
+    if (s.paper) {
+      y << YAML::Key << "roll_pitch_within_deg" << YAML::Value << s.paper->roll_pitch_within_deg;
+      if (!s.paper->source.empty()) y << YAML::Key << "source" << YAML::Value << s.paper->source;
+    }
+    y << YAML::EndMap;
+  }
   y << YAML::EndMap;
   io::WriteFileAtomically(path, [&](std::ostream& out) { out << y.c_str() << '\n'; });
 }

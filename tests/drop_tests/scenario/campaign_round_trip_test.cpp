@@ -1,0 +1,135 @@
+// Campaign scenarios: the bundled paper campaign, and one with a pad and a soil given by path
+// and per-entry numbers, loaded, written resolved and the resolved copy loaded again give the
+// same campaign (cases, pads, soils, numbers, paper checks); a second write is the same text.
+// A resolved copy whose derived values no longer match its files is refused.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <unistd.h>
+
+#include "drop_tests/io/catalog.h"
+#include "drop_tests/scenario/campaign.h"
+#include "rft/input_error.h"
+
+namespace touchdown::scenario {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CampaignRoundTrip : ::testing::Test {
+  fs::path dir = fs::temp_directory_path() / ("touchdown_campaign_rt_" + std::to_string(::getpid()));
+  void SetUp() override { fs::create_directories(dir); }
+  void TearDown() override { fs::remove_all(dir); }
+  std::string Path(const std::string& name) const { return (dir / name).string(); }
+};
+
+std::string Text(const std::string& path) {
+  std::ifstream in(path);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+void ExpectSameCampaign(const CampaignScenario& a, const CampaignScenario& b) {
+  EXPECT_EQ(a.name, b.name);
+  EXPECT_EQ(a.description, b.description);
+  EXPECT_EQ(fs::weakly_canonical(a.source), fs::weakly_canonical(b.source));
+  EXPECT_EQ(a.reference_speed_m_s, b.reference_speed_m_s);
+  ASSERT_EQ(a.cases.size(), b.cases.size());
+  for (size_t i = 0; i < a.cases.size(); ++i) {
+    const CampaignCase &p = a.cases[i], &q = b.cases[i];
+    SCOPED_TRACE(p.drop_id);
+    EXPECT_EQ(p.drop_id, q.drop_id);
+    EXPECT_EQ(p.pad->name, q.pad->name);
+    EXPECT_EQ(fs::weakly_canonical(p.pad->source), fs::weakly_canonical(q.pad->source));
+    EXPECT_EQ(p.pad->mass_kg, q.pad->mass_kg);
+    EXPECT_EQ(p.pad->profile.points.size(), q.pad->profile.points.size());
+    EXPECT_EQ(p.soil.name, q.soil.name);
+    EXPECT_EQ(fs::weakly_canonical(p.soil_source), fs::weakly_canonical(q.soil_source));
+    EXPECT_EQ(p.soil.zeta_N_m3, q.soil.zeta_N_m3);
+    EXPECT_EQ(p.soil.atmosphere, q.soil.atmosphere);
+    EXPECT_EQ(p.conditions.impact_speed_m_s, q.conditions.impact_speed_m_s);
+    EXPECT_EQ(p.conditions.mass_kg.value_or(p.pad->mass_kg), q.conditions.mass_kg.value_or(q.pad->mass_kg));
+    EXPECT_EQ(p.conditions.gravity_m_s2, q.conditions.gravity_m_s2);
+    ASSERT_EQ(p.conditions.zeta_N_m3.has_value(), q.conditions.zeta_N_m3.has_value());
+    if (p.conditions.zeta_N_m3) {
+      EXPECT_DOUBLE_EQ(*p.conditions.zeta_N_m3, *q.conditions.zeta_N_m3);
+    }
+  }
+  ASSERT_EQ(a.checks.size(), b.checks.size());
+  for (size_t i = 0; i < a.checks.size(); ++i) {
+    const PaperCheck &p = a.checks[i], &q = b.checks[i];
+    EXPECT_EQ(p.name, q.name);
+    EXPECT_EQ(p.quantity, q.quantity);
+    EXPECT_EQ(p.numerator_pad, q.numerator_pad);
+    EXPECT_EQ(p.numerator_soil, q.numerator_soil);
+    EXPECT_EQ(p.denominator_pad, q.denominator_pad);
+    EXPECT_EQ(p.denominator_soil, q.denominator_soil);
+    EXPECT_EQ(p.speed_m_s, q.speed_m_s);
+    EXPECT_EQ(p.paper_experiment, q.paper_experiment);
+    EXPECT_EQ(p.paper_rft, q.paper_rft);
+    EXPECT_EQ(p.source, q.source);
+  }
+}
+
+// The resolved copies live in `dir`, as a campaign's output directory holds its copy.
+void RoundTrip(const std::string& source, const std::string& first, const std::string& second) {
+  const std::string out = fs::path(first).parent_path().string();
+  const CampaignScenario loaded = LoadCampaignScenario(source);
+  WriteResolvedScenario(loaded, first, out);
+  const CampaignScenario again = LoadCampaignScenario(first);
+  ExpectSameCampaign(loaded, again);
+  WriteResolvedScenario(again, second, out);
+  EXPECT_EQ(Text(first), Text(second));
+  ExpectSameCampaign(loaded, LoadCampaignScenario(second));
+}
+
+TEST_F(CampaignRoundTrip, PaperCampaign) {
+  RoundTrip(io::DataDirectory() + "/scenarios/sutoh2017_single_footpad.yaml", Path("paper_1.yaml"),
+            Path("paper_2.yaml"));
+  const std::string text = Text(Path("paper_1.yaml"));
+  EXPECT_NE(text.find("type: campaign_resolved"), std::string::npos);
+  EXPECT_NE(text.find("file: $TOUCHDOWN_DATA_DIR/soils/fjs1_lp.yaml"), std::string::npos);
+  EXPECT_NE(text.find("paper_checks:"), std::string::npos);
+}
+
+TEST_F(CampaignRoundTrip, PathsAndPerEntryNumbers) {
+  io::WriteSoil(io::LoadSoil("fjs1_cp"), Path("my_soil.yaml"));
+  fs::copy_file(io::DataDirectory() + "/pads/curved.yaml", Path("my_pad.yaml"));
+  std::ofstream(Path("campaign.yaml")) << "schema_version: 1\ntype: campaign\nname: mine\ngravity_m_s2: 1.62\n"
+                                          "drops:\n"
+                                          "  - {pad: " << Path("my_pad.yaml") << ", soil: " << Path("my_soil.yaml")
+                                       << ", impact_speeds_m_s: [0, 0.35, 1.004], mass_kg: 2.25,"
+                                          " zeta_N_cm3: 1.7}\n"
+                                          "  - {pad: flat, soil: fjs1_lp, impact_speeds_m_s: 0.9, gravity_m_s2: 3.7}\n";
+  const CampaignScenario loaded = LoadCampaignScenario(Path("campaign.yaml"));
+  ASSERT_EQ(loaded.cases.size(), 4u);
+  EXPECT_EQ(loaded.reference_speed_m_s, 0.0);  // the first case's speed
+  fs::create_directories(dir / "out");
+  RoundTrip(Path("campaign.yaml"), Path("out/resolved_1.yaml"), Path("out/resolved_2.yaml"));
+  const std::string text = Text(Path("out/resolved_1.yaml"));
+  EXPECT_NE(text.find("file: ../my_soil.yaml"), std::string::npos);  // relative to the copy's directory
+  EXPECT_NE(text.find("zeta_override_N_cm3: 1.7"), std::string::npos);
+  EXPECT_NE(text.find("mass_kg: 2.25"), std::string::npos);
+}
+
+TEST_F(CampaignRoundTrip, ResolvedCopyMustMatchItsFiles) {
+  const CampaignScenario loaded = LoadCampaignScenario(io::DataDirectory() + "/scenarios/sutoh2017_single_footpad.yaml");
+  WriteResolvedScenario(loaded, Path("resolved.yaml"), dir.string());
+  std::string text = Text(Path("resolved.yaml"));
+  const std::string from = "radius_mm: 50", to = "radius_mm: 51";
+  ASSERT_NE(text.find(from), std::string::npos);
+  text.replace(text.find(from), from.size(), to);
+  std::ofstream(Path("edited.yaml")) << text;
+  try {
+    LoadCampaignScenario(Path("edited.yaml"));
+    FAIL() << "an edited derived value was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("radius_mm"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace touchdown::scenario

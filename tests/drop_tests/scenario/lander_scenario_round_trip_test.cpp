@@ -1,0 +1,148 @@
+// Lander scenarios: the three bundled cases (A, B, C), loaded, written resolved and the resolved
+// copy loaded again give the same scenario and the same setup (model, terrain patches and
+// soils, release state); a second write is the same text. A resolved copy whose derived values
+// no longer match the files it names is refused.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <unistd.h>
+
+#include "drop_tests/io/catalog.h"
+#include "drop_tests/scenario/lander_scenario.h"
+#include "rft/input_error.h"
+
+namespace touchdown::scenario {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct LanderScenarioRoundTrip : ::testing::Test {
+  fs::path dir = fs::temp_directory_path() / ("touchdown_lander_rt_" + std::to_string(::getpid()));
+  void SetUp() override { fs::create_directories(dir); }
+  void TearDown() override { fs::remove_all(dir); }
+  std::string Path(const std::string& name) const { return (dir / name).string(); }
+};
+
+std::string Text(const std::string& path) {
+  std::ifstream in(path);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+void ExpectSameScenario(const LanderScenario& a, const LanderScenario& b) {
+  EXPECT_EQ(a.name, b.name);
+  EXPECT_EQ(a.description, b.description);
+  EXPECT_EQ(fs::weakly_canonical(a.source), fs::weakly_canonical(b.source));
+  EXPECT_EQ(a.gravity_m_s2, b.gravity_m_s2);
+  EXPECT_EQ(a.lander.name, b.lander.name);
+  EXPECT_EQ(a.lander.total_mass_kg, b.lander.total_mass_kg);
+  EXPECT_EQ(a.lander.body_mass_kg, b.lander.body_mass_kg);
+  EXPECT_EQ(a.lander.body_inertia_B, b.lander.body_inertia_B);
+  EXPECT_EQ(a.lander.pad.name, b.lander.pad.name);
+  for (int i = 0; i < lander::kNumLegs; ++i) {
+    EXPECT_EQ(a.lander.legs[i].joint_B, b.lander.legs[i].joint_B);
+    EXPECT_EQ(a.lander.legs[i].hip_B, b.lander.legs[i].hip_B);
+    EXPECT_EQ(a.lander.legs[i].absorber.has_value(), b.lander.legs[i].absorber.has_value());
+    EXPECT_EQ(a.lander.legs[i].cone.has_value(), b.lander.legs[i].cone.has_value());
+  }
+  EXPECT_EQ(a.ground.height_m, b.ground.height_m);
+  EXPECT_EQ(a.ground.slope_rad, b.ground.slope_rad);
+  EXPECT_EQ(a.ground.downhill_azimuth_rad, b.ground.downhill_azimuth_rad);
+  EXPECT_EQ(a.ground.law, b.ground.law);
+  EXPECT_EQ(a.ground.default_soil, b.ground.default_soil);
+  EXPECT_EQ(a.initial.drop_height_m, b.initial.drop_height_m);
+  EXPECT_EQ(a.initial.touchdown_speed_m_s, b.initial.touchdown_speed_m_s);
+  EXPECT_EQ(a.initial.release_vertical_speed_m_s, b.initial.release_vertical_speed_m_s);
+  EXPECT_EQ(a.initial.horizontal_velocity_m_s, b.initial.horizontal_velocity_m_s);
+  EXPECT_EQ(a.initial.roll_rad, b.initial.roll_rad);
+  EXPECT_EQ(a.initial.pitch_rad, b.initial.pitch_rad);
+  EXPECT_EQ(a.initial.yaw_relative_to_slope_rad, b.initial.yaw_relative_to_slope_rad);
+  EXPECT_EQ(a.initial.align_to_slope, b.initial.align_to_slope);
+  EXPECT_EQ(a.initial.angular_rate_B, b.initial.angular_rate_B);
+  EXPECT_EQ(a.initial.pad_attitude, b.initial.pad_attitude);
+  EXPECT_EQ(a.options.duration_s, b.options.duration_s);
+  EXPECT_EQ(a.options.sample_rate_hz, b.options.sample_rate_hz);
+  EXPECT_EQ(a.options.capture_speed_m_s, b.options.capture_speed_m_s);
+  EXPECT_EQ(a.options.scale_tolerances, b.options.scale_tolerances);
+  EXPECT_EQ(a.options.integrator.rtol, b.options.integrator.rtol);
+  EXPECT_EQ(a.options.integrator.max_step, b.options.integrator.max_step);
+  EXPECT_EQ(a.options.integrator.stiff, b.options.integrator.stiff);
+  EXPECT_EQ(a.paper_ground_case, b.paper_ground_case);
+  ASSERT_EQ(a.paper.has_value(), b.paper.has_value());
+  if (a.paper) {
+    EXPECT_EQ(a.paper->roll_pitch_within_deg, b.paper->roll_pitch_within_deg);
+    EXPECT_EQ(a.paper->source, b.paper->source);
+  }
+  // The setup the run starts from: patches resolved to the same corners, the same soils and pose.
+  const LanderSetup p = BuildLanderSetup(a), q = BuildLanderSetup(b);
+  ASSERT_EQ(p.terrain.patches.size(), q.terrain.patches.size());
+  for (size_t k = 0; k < p.terrain.patches.size(); ++k) {
+    EXPECT_EQ(p.terrain.patches[k].name, q.terrain.patches[k].name);
+    EXPECT_EQ(p.terrain.patches[k].soil, q.terrain.patches[k].soil);
+    EXPECT_EQ(p.terrain.patches[k].polygon_W, q.terrain.patches[k].polygon_W);
+  }
+  ASSERT_EQ(p.terrain.soils.size(), q.terrain.soils.size());
+  for (size_t k = 0; k < p.terrain.soils.size(); ++k) EXPECT_EQ(p.terrain.soils[k].name, q.terrain.soils[k].name);
+  EXPECT_EQ(p.initial.p_WB, q.initial.p_WB);
+  EXPECT_EQ(p.initial.v_WB_W, q.initial.v_WB_W);
+  EXPECT_EQ(p.initial.R_WB, q.initial.R_WB);
+  EXPECT_EQ(p.model.body_mass_kg, q.model.body_mass_kg);
+}
+
+void RoundTrip(const std::string& source, const std::string& first, const std::string& second) {
+  const std::string out = fs::path(first).parent_path().string();
+  const LanderScenario loaded = LoadLanderScenario(source);
+  WriteResolvedLanderScenario(loaded, first, out);
+  const LanderScenario again = LoadLanderScenario(first);
+  ExpectSameScenario(loaded, again);
+  WriteResolvedLanderScenario(again, second, out);
+  EXPECT_EQ(Text(first), Text(second));
+  ExpectSameScenario(loaded, LoadLanderScenario(second));
+}
+
+TEST_F(LanderScenarioRoundTrip, BundledCases) {
+  for (const char* c : {"A", "B", "C"}) {
+    SCOPED_TRACE(c);
+    const std::string name = std::string("lander_case_") + c;
+    RoundTrip(io::DataDirectory() + "/scenarios/" + name + ".yaml", Path(name + "_1.yaml"), Path(name + "_2.yaml"));
+    EXPECT_NE(Text(Path(name + "_1.yaml")).find("roll_pitch_within_deg: 0.5"), std::string::npos);
+  }
+}
+
+TEST_F(LanderScenarioRoundTrip, OptionsAndAttitude) {
+  std::ofstream(Path("tilted.yaml")) << "schema_version: 1\ntype: lander\nname: tilted\nlander: sutoh2017_lander\n"
+                                        "gravity_m_s2: 1.62\n"
+                                        "ground: {slope_deg: 7.5, downhill_azimuth_deg: 30, soil: fjs1_cp,\n"
+                                        "  patches: [{soil: fjs1_lp, rectangle_m: [-1, -1, 0, 0]}]}\n"
+                                        "initial: {touchdown_speed_m_s: 1.2, horizontal_velocity_m_s: [0.3, -0.1],\n"
+                                        "  roll_deg: 2.5, yaw_relative_to_slope_deg: 45, align_to_slope: true}\n"
+                                        "simulation: {duration_s: 0.5, sample_rate_hz: 500, atol: 1e-8,"
+                                        " max_step_s: 0.001, stiff: true}\n";
+  fs::create_directories(dir / "out");
+  RoundTrip(Path("tilted.yaml"), Path("out/tilted_1.yaml"), Path("out/tilted_2.yaml"));
+  const std::string text = Text(Path("out/tilted_1.yaml"));
+  EXPECT_NE(text.find("max_step_s: 0.001"), std::string::npos);
+  EXPECT_NE(text.find("source: ../tilted.yaml"), std::string::npos);
+}
+
+TEST_F(LanderScenarioRoundTrip, ResolvedCopyMustMatchItsFiles) {
+  WriteResolvedLanderScenario(LoadLanderScenario(io::DataDirectory() + "/scenarios/lander_case_B.yaml"),
+                              Path("resolved.yaml"), dir.string());
+  std::string text = Text(Path("resolved.yaml"));
+  const std::string from = "body_mass_kg: 3.98", to = "body_mass_kg: 3.99";
+  ASSERT_NE(text.find(from), std::string::npos);
+  text.replace(text.find(from), from.size(), to);
+  std::ofstream(Path("edited.yaml")) << text;
+  try {
+    LoadLanderScenario(Path("edited.yaml"));
+    FAIL() << "an edited derived value was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("lander.body_mass_kg"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace touchdown::scenario
