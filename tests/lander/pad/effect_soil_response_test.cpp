@@ -1,0 +1,197 @@
+// The rig's soil response with the effect terms against closed forms: the geometric integrals on
+// a cone, each term's documented limit, rate damping as a damped oscillator, added mass against
+// momentum conservation, inertial drag against the Katsuragi-Durian closed form, and the
+// sensor offset of what the rig records.
+#include "lander/pad/effect_soil_response.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "footpad_geom/axisymmetric_intrusion.h"
+#include "footpad_geom/axisymmetric_profile.h"
+#include "lander/integ/cvode_integrator.h"
+#include "lander/pad/rig_drop.h"
+#include "rft/stress_law.h"
+
+namespace touchdown::pad {
+namespace {
+
+using rft::EffectTerms;
+
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kR = 0.05, kZeta = 2.0e6, kRho = 1540.0, kMass = 1.6, kG = 9.81;
+// A flat pad with a negligible side wall (1e-7 m): the force is zeta pi r^2 d to 1e-6.
+constexpr double kThin = 1e-7;
+const rft::Li2013Law kLaw;
+
+geom::AxisymmetricIntrusion ThinFlat() { return geom::AxisymmetricIntrusion(geom::MakeFlatProfile(kR, kThin), kLaw); }
+
+EffectSoilResponse Response(const geom::AxisymmetricIntrusion& pad, EffectTerms t, bool air = false) {
+  return EffectSoilResponse(pad, {kZeta, kRho, air, t});
+}
+
+TEST(EffectGeometry, ConeIntegralsFootprintAndPowerLaw) {
+  const double theta = 0.6;  // half-angle from the axis
+  const geom::AxisymmetricIntrusion cone(geom::MakeConeProfile(kR, 0.08, theta), kLaw);
+  const double d = 0.01, a = d * std::tan(theta);
+  EXPECT_NEAR(cone.FootprintRadius(d), a, 1e-12);
+  EXPECT_NEAR(cone.FootprintRadiusSlope(d), std::tan(theta), 1e-9);
+  for (int k = 0; k <= 3; ++k) {
+    const double expected = std::pow(std::sin(theta), k) * kPi * a * a / std::sin(theta);
+    EXPECT_NEAR(cone.CosinePowerIntegral(d, k), expected, 1e-12 * expected) << "k " << k;
+  }
+  // p = 1 is the linear law; p = 2 against an independent midpoint quadrature along the slant.
+  EXPECT_NEAR(cone.PowerLawVerticalForce(d, kZeta, 1.0, 0.01), cone.VerticalForce(d, kZeta), 1e-9 * cone.VerticalForce(d, kZeta));
+  const double alpha = kLaw.Alpha(kPi / 2 - theta, kPi / 2).z, length = a / std::sin(theta);
+  double sum = 0.0;
+  const int n = 200000;
+  for (int i = 0; i < n; ++i) {
+    const double s = (i + 0.5) * length / n;  // arc length from the apex
+    const double z = d - s * std::cos(theta), x = s * std::sin(theta);
+    sum += alpha * 0.01 * std::pow(z / 0.01, 2.0) * 2 * kPi * x * length / n;
+  }
+  EXPECT_NEAR(cone.PowerLawVerticalForce(d, kZeta, 2.0, 0.01), kZeta * sum, 1e-6 * kZeta * sum);
+  // The flat pad: footprint whole at once, I_k = pi r^2 for k >= 1, the wall in I_0 only.
+  const geom::AxisymmetricIntrusion flat(geom::MakeFlatProfile(kR, 0.016), kLaw);
+  EXPECT_NEAR(flat.FootprintRadius(1e-6), kR, 1e-15);
+  EXPECT_EQ(flat.FootprintRadiusSlope(0.005), 0.0);
+  EXPECT_NEAR(flat.CosinePowerIntegral(0.005, 2), kPi * kR * kR, 1e-15);
+  EXPECT_NEAR(flat.CosinePowerIntegral(0.005, 0), kPi * kR * kR + 2 * kPi * kR * 0.005, 1e-15);
+}
+
+TEST(EffectTerms, EachTermHasItsDocumentedLimit) {
+  const geom::AxisymmetricIntrusion pad = ThinFlat();
+  const double A = kPi * kR * kR, d = 0.01, v = 1.3;
+  const double qs = pad.VerticalForce(d, kZeta);
+  EffectTerms none;
+  EXPECT_EQ(Response(pad, none).Force(d, v), qs);
+  EffectTerms drag;
+  drag.inertial_lambda = 2.0;
+  EXPECT_NEAR(Response(pad, drag).Force(d, v) - qs, 2.0 * kRho * v * v * A, 1e-9);
+  EffectTerms damp;
+  damp.damping_c_N_s_m3 = 5e3;
+  EXPECT_NEAR(Response(pad, damp).Force(d, v) - qs, 5e3 * v * A, 1e-9);
+  EffectTerms peak;
+  peak.compaction_k_kg_m3 = 2e4;
+  peak.compaction_depth_m = 0.003;
+  EXPECT_NEAR(Response(pad, peak).Force(1e-9, v), 2e4 * v * v * A, 1e-3);  // the jump at touchdown
+  EXPECT_NEAR(Response(pad, peak).Force(0.1, v) / pad.VerticalForce(0.1, kZeta), 1.0, 1e-9);  // gone deep down
+  EffectTerms depth;
+  depth.depth_exponent = 1.5;
+  EXPECT_NEAR(Response(pad, depth).Force(d, v), kZeta * A * 0.01 * std::pow(d / 0.01, 1.5), 1e-5 * qs);
+  EffectTerms gas;
+  gas.gas_chi = 0.3;
+  gas.gas_c_N_s_m3 = 4e3;
+  EXPECT_EQ(Response(pad, gas, false).Force(d, v), qs);  // vacuum: no gas
+  EXPECT_NEAR(Response(pad, gas, true).Force(d, 0.0), 0.7 * qs, 1e-9 * qs);
+  EXPECT_NEAR(Response(pad, gas, true).Force(d, v) - 0.7 * qs, 4e3 * v * A, 1e-9);
+  EXPECT_NEAR(Response(pad, gas, true).StaticCapacity(d), 0.7 * qs, 1e-9 * qs);
+  // Added mass: continuous from zero with a finite slope, the cone's volume once whole.
+  EffectTerms am;
+  am.added_mass_ca = 1.5;
+  const EffectSoilResponse r = Response(pad, am);
+  EXPECT_EQ(r.AddedMass(0.0), 0.0);
+  EXPECT_NEAR(r.AddedMass(1e-9), 0.0, 1e-7);  // slope x 1e-9 m
+  EXPECT_NEAR(r.AddedMassSlope(1e-9), 1.5 * kRho * kPi / 3 * kR * kR, 1e-9);
+  EXPECT_NEAR(r.AddedMass(0.2), 1.5 * kRho * kPi / 3 * kR * kR * kR, 1e-12);
+}
+
+// m x'' = m g - k x - b x' (thin flat pad, rate damping): the stop is the first zero of x'.
+TEST(EffectRig, RateDampingMatchesTheDampedOscillator) {
+  const geom::AxisymmetricIntrusion pad = ThinFlat();
+  EffectTerms t;
+  t.damping_c_N_s_m3 = 12000.0;
+  const double A = kPi * kR * kR, k = kZeta * A, b = t.damping_c_N_s_m3 * A, v0 = 1.2;
+  const pad::RigDropResult r = pad::RunRigDrop({kMass, kG, v0}, Response(pad, t));
+  const double gamma = b / (2 * kMass), wd = std::sqrt(k / kMass - gamma * gamma), y0 = -kMass * kG / k;
+  const double B = (v0 + gamma * y0) / wd;
+  auto y = [&](double s) { return std::exp(-gamma * s) * (y0 * std::cos(wd * s) + B * std::sin(wd * s)); };
+  auto v = [&](double s) {
+    return std::exp(-gamma * s) * ((-gamma * y0 + wd * B) * std::cos(wd * s) + (-gamma * B - wd * y0) * std::sin(wd * s));
+  };
+  double lo = 1e-9, hi = kPi / wd;
+  for (int i = 0; i < 200; ++i) (v(0.5 * (lo + hi)) > 0 ? lo : hi) = 0.5 * (lo + hi);
+  const double t_stop = 0.5 * (lo + hi), d_stop = y(t_stop) - y0;
+  EXPECT_NEAR(r.time_to_rest_s, t_stop, 1e-6 * t_stop);
+  EXPECT_NEAR(r.final_penetration_m, d_stop, 1e-5 * d_stop);
+  for (const pad::DropSample& s : r.trace) {
+    if (s.t_s > 0 && s.t_s < t_stop) {
+      EXPECT_NEAR(s.penetration_m, y(s.t_s) - y0, 1e-5 * d_stop) << s.t_s;
+    }
+  }
+}
+
+// With no soil force and (almost) no gravity, the pad and its grains conserve momentum:
+// (m + m_a(d)) v = m v0, and the kinetic energy lost is the accretion loss.
+TEST(EffectRig, AddedMassConservesMomentum) {
+  const geom::AxisymmetricIntrusion pad = ThinFlat();
+  EffectTerms t;
+  t.added_mass_ca = 2.0;
+  const EffectSoilResponse with_soil = Response(pad, t);
+  struct GrainsOnly final : pad::VerticalSoilResponse {
+    const EffectSoilResponse& r;
+    explicit GrainsOnly(const EffectSoilResponse& x) : r(x) {}
+    double Force(double, double) const override { return 0.0; }
+    double AddedMass(double d) const override { return r.AddedMass(d); }
+    double AddedMassSlope(double d) const override { return r.AddedMassSlope(d); }
+  } grains(with_soil);
+  const pad::RigDropInput in{kMass, 1e-12, 1.0};
+  integ::IntegratorOptions o;
+  integ::CvodeIntegrator integ(4, [&](double, Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::VectorXd> yd) {
+    pad::RigStrokeDerivative(in, grains, y, yd);
+  }, o);
+  Eigen::VectorXd y0(4);
+  y0 << 1e-12, 1.0, 0.0, 0.0;
+  integ.Reset(0.0, y0);
+  for (double t_out : {0.005, 0.02, 0.04}) {
+    integ.AdvanceTo(t_out);
+    const Eigen::VectorXd& y = integ.state();
+    const double m_a = grains.AddedMass(y[0]);
+    EXPECT_NEAR((kMass + m_a) * y[1], kMass * 1.0, 1e-8) << t_out;
+    EXPECT_NEAR(0.5 * (kMass + m_a) * y[1] * y[1] + y[3], 0.5 * kMass, 1e-8) << t_out;
+    EXPECT_GT(m_a, 0.0);
+  }
+}
+
+// Katsuragi & Durian (2007): m dv/dt = m g - m v^2 / d1 - k z has v^2 = s(z) in closed form.
+TEST(EffectRig, InertialDragMatchesKatsuragiDurian) {
+  const geom::AxisymmetricIntrusion pad = ThinFlat();
+  EffectTerms t;
+  t.inertial_lambda = 2.0;
+  const double A = kPi * kR * kR, k = kZeta * A, d1 = kMass / (t.inertial_lambda * kRho * A), v0 = 1.5;
+  const double Ac = kG * d1 + k * d1 * d1 / (2 * kMass), Bc = -k * d1 / kMass;
+  auto s = [&](double z) { return Ac + Bc * z + (v0 * v0 - Ac) * std::exp(-2 * z / d1); };
+  double lo = 1e-6, hi = 0.5;
+  for (int i = 0; i < 200; ++i) (s(0.5 * (lo + hi)) > 0 ? lo : hi) = 0.5 * (lo + hi);
+  const pad::RigDropResult r = pad::RunRigDrop({kMass, kG, v0}, Response(pad, t));
+  EXPECT_NEAR(r.final_penetration_m, 0.5 * (lo + hi), 1e-5 * lo);
+  for (const pad::DropSample& x : r.trace) {
+    if (x.t_s > 0 && x.t_s < r.time_to_rest_s) {
+      EXPECT_NEAR(x.velocity_m_s * x.velocity_m_s, s(x.penetration_m), 1e-5);
+    }
+  }
+  // The force jumps at impact to m v0^2 / d1 (inertial drag), it is not zero.
+  EXPECT_NEAR(r.trace[1].force_N, kMass * std::pow(r.trace[1].velocity_m_s, 2) / d1 + k * r.trace[1].penetration_m, 1e-3);
+}
+TEST(EffectRecord, SensorOffsetShiftsTimeAndZero) {
+  const geom::AxisymmetricIntrusion pad = ThinFlat();
+  const RigDropResult r = RunRigDrop({kMass, kG, 1.0}, Response(pad, {}));
+  EffectTerms t;
+  t.sensor_dz_m = 0.001;
+  t.sensor_dt_s = 0.002;
+  const RecordedSample a = RecordedAt(r, kG, t, 0.003);
+  const RecordedSample b = RecordedAt(r, kG, {}, 0.005);
+  EXPECT_NEAR(a.penetration_m, b.penetration_m + 0.001, 1e-15);
+  EXPECT_EQ(a.force_N, b.force_N);
+  // Before the true touchdown: free fall above the surface, no force.
+  t.sensor_dt_s = -0.002;
+  const RecordedSample early = RecordedAt(r, kG, t, 0.0);
+  EXPECT_NEAR(early.penetration_m, 0.001 - 1.0 * 0.002 + 0.5 * kG * 4e-6, 1e-12);
+  EXPECT_EQ(early.force_N, 0.0);
+}
+
+}  // namespace
+}  // namespace touchdown::pad
