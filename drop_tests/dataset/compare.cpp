@@ -5,9 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <map>
-#include <numbers>
 #include <nlohmann/json.hpp>
 
 #include "drop_tests/io/output_path.h"

@@ -4,7 +4,6 @@
 // force_x_N, horizontal_m and tilt_deg.
 #include <nlohmann/json_fwd.hpp>
 #include <ostream>
-#include <string>
 
 #include "lander/pad/free_drop.h"
 

@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <iomanip>
-#include <numbers>
 #include <sstream>
 #include <nlohmann/json.hpp>
 

@@ -1,7 +1,6 @@
 #include "drop_tests/gap/diagnose_fit.h"
 
 #include <algorithm>
-#include <numeric>
 #include <cmath>
 #include <map>
 

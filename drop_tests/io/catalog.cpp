@@ -3,10 +3,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <map>
-#include <numbers>
-#include <sstream>
 
 #include "drop_tests/io/field_table.h"
 #include "drop_tests/io/output_path.h"

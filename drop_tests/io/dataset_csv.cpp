@@ -2,10 +2,8 @@
 
 #include <charconv>
 #include <cmath>
-#include <fstream>
 #include <string>
 #include <unordered_set>
-#include <unistd.h>
 
 #include "rft/input_error.h"
 #include "rft/input_file.h"

@@ -1,7 +1,6 @@
 #include "drop_tests/scenario/campaign.h"
 
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <iomanip>
 #include <map>
@@ -9,7 +8,6 @@
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
-#include <unistd.h>
 
 #include "drop_tests/io/output_path.h"
 #include "drop_tests/scenario/campaign_plots.h"

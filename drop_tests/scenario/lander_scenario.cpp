@@ -5,8 +5,6 @@
 #include <functional>
 #include <iomanip>
 #include <nlohmann/json.hpp>
-#include <numbers>
-#include <sstream>
 #include <unistd.h>
 
 #include <Eigen/Eigenvalues>

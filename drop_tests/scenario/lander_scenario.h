@@ -6,7 +6,6 @@
 // slope) and the run options. Loading resolves and validates everything before anything runs.
 // Schema: docs/lander_dynamics.md.
 #include <array>
-#include <memory>
 #include <optional>
 #include <string>
 #include <vector>

@@ -23,7 +23,6 @@
 #include <limits>
 #include <functional>
 #include <map>
-#include <memory>
 #include <string>
 #include <vector>
 

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include "drop_tests/scenario/lander_scenario.h"
 #include "drop_tests/drop/drop_factory.h"

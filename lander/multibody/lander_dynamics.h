@@ -64,7 +64,7 @@ enum class PadMode { kFree, kHeld };
 // by speed / kSoilRampSpeed. Why: quasi-static RFT depends on the direction of motion only, so at
 // v -> 0 the force keeps its full size while its direction follows rounding noise (a pad whose
 // capture was undone sits at |v| ~ 1e-11 with a horizontal part that turns its support into
-// sideways drag and back: a discontinuity no integrator steps through - it failed case B). The
+// sideways drag and back: a discontinuity no integrator steps through). The
 // ramp makes the force continuous through v = 0 and changes nothing above 0.1 mm/s; a pad that
 // slows below it is offered a capture (lander_simulation.h), so no creep results.
 inline constexpr double kSoilRampSpeed = 1e-4;
