@@ -1,6 +1,7 @@
 #include "drop_tests/io/dataset_csv.h"
 
 #include <charconv>
+#include <fstream>
 #include <cmath>
 #include <string>
 #include <unordered_set>

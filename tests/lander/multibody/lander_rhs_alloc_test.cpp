@@ -1,8 +1,7 @@
 // The lander's right-hand side allocates nothing while pads are held (house style: no allocation
 // in a right-hand side): EvaluateLander with its LanderData, then StateDerivative, through the
 // constraint solve of four held pads. malloc itself is counted, so Eigen's heap buffers count as
-// well as operator new. (A free pad in contact still allocates once per evaluation, in
-// rft::DeepestVertexDepth's product, outside this layer.)
+// well as operator new.
 #include <gtest/gtest.h>
 
 #include <atomic>

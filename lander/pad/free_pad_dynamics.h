@@ -1,0 +1,70 @@
+#pragma once
+// The free pad's equations of motion (Model: fixed for a drop; nothing allocates per call): one
+// rigid body with 6 degrees of freedom under gravity and the 3D RFT soil wrench, Newton-Euler
+// about the centre of mass, with the pad-level added mass of the soil contact model.
+//
+// State y (kSize = 14): centre of mass p_WC, attitude quaternion q_WB (w, x, y, z), velocity v_WC,
+// body-frame angular velocity w_B, and the work done against the soil (dissipated energy).
+#include <Eigen/Core>
+
+#include "footpad_geom/pad_body.h"
+#include "rft/contact_wrench.h"
+#include "rft/ground.h"
+#include "rft/soil_contact_model.h"
+
+namespace touchdown::pad {
+
+enum FreePadState : int { kP = 0, kQ = 3, kV = 7, kW = 10, kWork = 13, kSize = 14 };
+
+// Kinematics of the pad at one state.
+struct FreePadPose {
+  Eigen::Matrix3d R_WB;
+  Eigen::Vector3d p_WC, p_WB, v_WC, w_B, w_W, v_WB;
+};
+
+// The vertical motion of the centre of mass with the entrained grains of added_mass.
+struct FreePadVertical {
+  double a_z = 0.0;          // vertical acceleration of the centre of mass
+  double accretion_W = 0.0;  // accretion loss rate
+  double force_z = 0.0;      // vertical force on the pad from below: soil and entrained grains, m (a_z + g)
+};
+
+class FreePadDynamics {
+ public:
+  // References are kept: `body`, `soil` and `ground` must outlive this object.
+  FreePadDynamics(const geom::PadBody& body, const rft::SoilContactModel& soil, const rft::GroundSurface& ground,
+                  double gravity_m_s2);
+
+  FreePadPose PoseOf(const Eigen::Ref<const Eigen::VectorXd>& y) const;
+  // Depth of the lowest point below the surface (negative above it).
+  double Depth(const FreePadPose& s) const;
+  // Whether the pad moves at all (translation or spin): the soil wrench needs a direction.
+  bool Moving(const FreePadPose& s) const;
+  rft::ContactWrench Wrench(const FreePadPose& s) const;
+  FreePadVertical Vertical(const FreePadPose& s, const rft::ContactWrench& w) const;
+  // dy/dt at y.
+  void Derivative(const Eigen::Ref<const Eigen::VectorXd>& y, Eigen::Ref<Eigen::VectorXd> ydot) const;
+  // The soil's quasi-static capacity for further straight-down motion at pose s: the vertical force
+  // on a probe moving down at 1 um/s (RFT depends on the direction only; speed-dependent terms must
+  // not count as static capacity).
+  double RestCapacity(const FreePadPose& s) const;
+  // Kinetic energy (translation and rotation) at pose s.
+  double KineticEnergy(const FreePadPose& s) const;
+
+  const geom::PadBody& body() const { return body_; }
+  double mass_kg() const { return m_; }
+  double gravity_m_s2() const { return g_; }
+  // Radius about the centre of mass: spin times it is a speed.
+  double radius_m() const { return radius_; }
+
+ private:
+  const geom::PadBody& body_;
+  const rft::SoilContactModel& soil_;
+  const rft::GroundSurface& ground_;
+  double m_, g_;
+  Eigen::Matrix3d I_, I_inv_;
+  double radius_;
+  double added_density_;
+};
+
+}  // namespace touchdown::pad

@@ -1,0 +1,86 @@
+// The free pad's right-hand side allocates nothing (house style: no allocation in a right-hand
+// side): FreePadDynamics::Derivative of a tilted, spinning pad in the soil, with and without the
+// pad-level terms (added mass, compaction, depth law). malloc itself is counted, so Eigen's heap
+// buffers count as well as operator new.
+#include "lander/pad/free_pad_dynamics.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <atomic>
+#include <cstdlib>
+
+#include "footpad_geom/axisymmetric_profile.h"
+#include "footpad_geom/revolve.h"
+#include "rft/stress_law_3d_factory.h"
+#include "tests/lander/paper_soils.h"
+
+namespace {
+std::atomic<bool> counting{false};
+std::atomic<long> allocations{0};
+}  // namespace
+
+// AddressSanitizer replaces malloc itself; the count is then left to the plain build.
+#if !defined(__SANITIZE_ADDRESS__)
+extern "C" void* __libc_malloc(std::size_t size);
+extern "C" void* malloc(std::size_t size) {
+  if (counting.load()) ++allocations;
+  return __libc_malloc(size);
+}
+#define TOUCHDOWN_COUNTS_MALLOC 1
+#endif
+
+namespace touchdown::pad {
+namespace {
+
+long AllocationsOfThreeDerivatives(const rft::SoilContactModel& soil) {
+  const geom::AxisymmetricProfile profile = geom::MakeFlatProfile(0.05, 0.016);  // data/pads/flat.yaml
+  const geom::PadBody body = geom::RevolveProfileToBody(profile, 24, 1.6, Eigen::Vector3d(0.0, 0.0, 0.016));
+  const rft::PlaneGround ground;
+  const FreePadDynamics pad(body, soil, ground, 9.81);
+  // 10 degrees of tilt, 5 mm into the soil, sinking, sliding and spinning.
+  Eigen::VectorXd y = Eigen::VectorXd::Zero(kSize);
+  const Eigen::Quaterniond q(Eigen::AngleAxisd(0.17, Eigen::Vector3d::UnitX()));
+  y.segment<4>(kQ) << q.w(), q.x(), q.y(), q.z();
+  y.segment<3>(kV) << 0.3, 0.0, -0.8;
+  y.segment<3>(kW) << 0.5, -1.0, 2.0;
+  y[kP + 2] += pad.Depth(pad.PoseOf(y)) - 0.005;
+  EXPECT_NEAR(pad.Depth(pad.PoseOf(y)), 0.005, 1e-12);
+  Eigen::VectorXd ydot(kSize);
+  pad.Derivative(y, ydot);  // any first-call setup outside the count
+  allocations = 0;
+  counting = true;
+  for (int k = 0; k < 3; ++k) pad.Derivative(y, ydot);
+  counting = false;
+  EXPECT_GT(-ydot[kWork], -1e300);  // used
+  EXPECT_TRUE(ydot.allFinite());
+  return allocations.load();
+}
+
+TEST(FreePadRightHandSide, DoesNotAllocate) {
+#if !defined(TOUCHDOWN_COUNTS_MALLOC)
+  GTEST_SKIP() << "malloc is not counted under AddressSanitizer";
+#else
+  {  // the counter works, for Eigen's buffers too
+    allocations = 0;
+    counting = true;
+    Eigen::VectorXd probe(64);
+    counting = false;
+    probe.setZero();
+    ASSERT_GE(allocations.load(), 1);
+  }
+  EXPECT_EQ(AllocationsOfThreeDerivatives(test::Fjs1Law(false)), 0);
+  rft::EffectTerms terms;
+  terms.added_mass_ca = 1.0;
+  terms.compaction_k_kg_m3 = 2e4;
+  terms.compaction_depth_m = 0.003;
+  terms.depth_exponent = 1.3;
+  terms.damping_c_N_s_m3 = 3e3;
+  const rft::SoilContactModel with_terms =
+      rft::MakeSoilContactModel(rft::LawKind::kLi2013, test::Fjs1(false), 9.81, terms);
+  EXPECT_EQ(AllocationsOfThreeDerivatives(with_terms), 0);
+#endif
+}
+
+}  // namespace
+}  // namespace touchdown::pad
