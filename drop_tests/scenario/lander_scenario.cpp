@@ -754,7 +754,7 @@ void WriteLanderOutputs(const LanderRun& run, const io::OutputTarget& out) {
     io::WriteFileAtomically((staging / "events.csv").string(), [&](std::ostream& out) {
       out << "t_s,event,pad\n" << std::setprecision(12);
       for (const lander::LanderEvent& e : run.result.events)
-        out << e.t_s << ',' << e.kind << ',' << (e.leg >= 0 ? std::to_string(e.leg + 1) : std::string()) << '\n';
+        out << e.t_s << ',' << lander::LanderEventName(e.kind) << ',' << (e.leg >= 0 ? std::to_string(e.leg + 1) : std::string()) << '\n';
     });
     io::WriteFileAtomically((staging / "summary.json").string(),
                         [&](std::ostream& out) { out << LanderSummaryJson(run).dump(2) << '\n'; });

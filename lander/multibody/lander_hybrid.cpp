@@ -137,7 +137,7 @@ void LanderHybrid::TouchdownsAtRelease(const Eigen::VectorXd& y) {
   const LanderPose pose = ComputePose(model_, L_, y);
   for (int i = 0; i < kNumLegs; ++i)
     if (PadDepth(model_, terrain_, i, pose.pads[i]) >= -kTouchingAtRelease_m) {
-      result_.events.push_back({0.0, "touchdown", i});
+      result_.events.push_back({0.0, LanderEventKind::kTouchdown, i});
       result_.touchdown_time_s[i] = 0.0;
       result_.first_touchdown_s = 0.0;
     }
@@ -146,7 +146,7 @@ void LanderHybrid::TouchdownsAtRelease(const Eigen::VectorXd& y) {
 void LanderHybrid::Touchdowns(double t, const std::vector<int>& found) {
   for (int i = 0; i < kNumLegs; ++i)
     if (found[PadRoot(i, 0)] != 0) {
-      result_.events.push_back({t, "touchdown", i});
+      result_.events.push_back({t, LanderEventKind::kTouchdown, i});
       if (!result_.touchdown_time_s[i]) result_.touchdown_time_s[i] = t;
       if (!result_.first_touchdown_s) result_.first_touchdown_s = t;
     }
@@ -170,26 +170,26 @@ bool LanderHybrid::SwitchModes(double t, const std::vector<int>& found, const La
       // pushes it (lift-off up, sinking down, sliding along the horizontal load).
       modes_.pad[i] = PadMode::kFree;
       if (found[PadRoot(i, 1)] != 0) {
-        result_.events.push_back({t, "release_liftoff", i});
+        result_.events.push_back({t, LanderEventKind::kReleaseLiftoff, i});
       } else if (found[PadRoot(i, 2)] != 0) {
-        result_.events.push_back({t, "release_sink", i});
+        result_.events.push_back({t, LanderEventKind::kReleaseSink, i});
       } else {
-        result_.events.push_back({t, "release_slide", i});
+        result_.events.push_back({t, LanderEventKind::kReleaseSlide, i});
       }
       changed = true;
     }
     if (IsCrushable(model_, L_, i)) {
       if (modes_.stroke[i] == StrokeMode::kLocked && found[LegRoot(i, 0)] != 0) {
         modes_.stroke[i] = StrokeMode::kFree;
-        result_.events.push_back({t, "crush", i});
+        result_.events.push_back({t, LanderEventKind::kCrush, i});
         changed = true;
       } else if (modes_.stroke[i] == StrokeMode::kFree && found[LegRoot(i, 1)] != 0) {
         modes_.stroke[i] = StrokeMode::kBottomed;
-        result_.events.push_back({t, "bottom", i});
+        result_.events.push_back({t, LanderEventKind::kBottom, i});
         changed = true;
       } else if (modes_.stroke[i] == StrokeMode::kFree && found[LegRoot(i, 0)] != 0) {
         modes_.stroke[i] = StrokeMode::kLocked;
-        result_.events.push_back({t, "lock", i});
+        result_.events.push_back({t, LanderEventKind::kLock, i});
         changed = true;
       }
     }
@@ -249,9 +249,9 @@ void LanderHybrid::SettleHolds(double t, Eigen::VectorXd& s, const std::array<bo
       s.segment(L_.nq, L_.nu) = before.segment(L_.nq, L_.nu);
       s[L_.work()] = before[L_.work()] + ProjectOntoConstraints(model_, L_, modes_, s);
     } else {
-      const char* kind = m_check == worst_check.lift   ? "release_liftoff"
-                         : m_check == worst_check.sink ? "release_sink"
-                                                       : "release_slide";
+      const LanderEventKind kind = m_check == worst_check.lift   ? LanderEventKind::kReleaseLiftoff
+                         : m_check == worst_check.sink ? LanderEventKind::kReleaseSink
+                                                       : LanderEventKind::kReleaseSlide;
       result_.events.push_back({t, kind, worst});
     }
   }
@@ -265,7 +265,7 @@ bool LanderHybrid::RecordCaptures(double t, const Eigen::VectorXd& y, const std:
   for (int i = 0; i < kNumLegs; ++i) {
     if (modes_.pad[i] == PadMode::kHeld && fresh[i]) {
       held_at_[i] = after.pads[i].p_WJ;
-      result_.events.push_back({t, "capture", i});
+      result_.events.push_back({t, LanderEventKind::kCapture, i});
     }
     all_held &= modes_.pad[i] == PadMode::kHeld;
   }
@@ -278,7 +278,7 @@ integ::EventAction LanderHybrid::OnEvent(double t, const std::vector<int>& found
   Touchdowns(t, found);
   if (found[kTipRoot] != 0) {
     result_.tipped_over = true;
-    result_.events.push_back({t, "tip_over", -1});
+    result_.events.push_back({t, LanderEventKind::kTipOver, -1});
     return integ::EventAction::kStop;
   }
   const Eigen::VectorXd before = y;
@@ -294,7 +294,7 @@ integ::EventAction LanderHybrid::OnEvent(double t, const std::vector<int>& found
   if (!(all_held && options_.stop_at_rest)) return integ::EventAction::kRestart;
   // Static from here on: the loads no longer change, so the holds stay valid.
   result_.rest_time_s = t;
-  result_.events.push_back({t, "rest", -1});
+  result_.events.push_back({t, LanderEventKind::kRest, -1});
   return integ::EventAction::kStop;
 }
 

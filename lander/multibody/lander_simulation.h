@@ -73,10 +73,25 @@ struct LanderSample {
   double kinetic_J = 0.0, potential_J = 0.0, dissipated_J = 0.0;
 };
 
+enum class LanderEventKind {
+  kTouchdown,       // a pad reaches the surface
+  kCapture,         // a pad is held by the soil
+  kReleaseLiftoff,  // a held pad is released: the soil would have to pull it down
+  kReleaseSink,     // ... the load exceeds what the soil carries
+  kReleaseSlide,    // ... the sideways load exceeds the soil's friction
+  kCrush,           // a crushable absorber starts to crush
+  kLock,            // it stops crushing
+  kBottom,          // it reaches the end of its stroke
+  kTipOver,         // the lander tips over
+  kRest,            // every pad held: the lander is static
+};
+// The event's name in outputs (events.csv): "touchdown", "release_liftoff", "tip_over", ...
+const char* LanderEventName(LanderEventKind kind);
+
 struct LanderEvent {
   double t_s = 0.0;
-  std::string kind;  // touchdown, capture, release_liftoff, release_sink, release_slide, crush, lock, bottom, tip_over, rest
-  int leg = -1;      // 0-based, -1 for the whole lander
+  LanderEventKind kind = LanderEventKind::kTouchdown;
+  int leg = -1;  // 0-based, -1 for the whole lander
 };
 
 struct LanderRunResult {
