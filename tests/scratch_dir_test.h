@@ -11,6 +11,14 @@
 
 namespace touchdown::testing_scratch {
 
+// The whole of a file, byte for byte.
+inline std::string Slurp(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
 class ScratchDirTest : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -27,12 +35,9 @@ class ScratchDirTest : public ::testing::Test {
     std::ofstream(dir_ / name, std::ios::binary) << text;
     return (dir_ / name).string();
   }
-  static std::string Slurp(const std::filesystem::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-  }
+  // The path of `name` in the scratch directory.
+  std::string Path(const std::string& name) const { return (dir_ / name).string(); }
+  static std::string Slurp(const std::filesystem::path& p) { return testing_scratch::Slurp(p); }
 
   std::filesystem::path dir_;
 };

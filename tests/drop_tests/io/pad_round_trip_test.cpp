@@ -5,29 +5,21 @@
 
 #include <filesystem>
 #include <fstream>
-#include <sstream>
-#include <unistd.h>
 
 #include "drop_tests/io/catalog.h"
+#include "tests/round_trip.h"
 
 namespace touchdown::io {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct PadRoundTrip : ::testing::Test {
-  fs::path dir = fs::temp_directory_path() / ("touchdown_pad_rt_" + std::to_string(::getpid()));
-  void SetUp() override { fs::create_directories(dir / "out"); }
-  void TearDown() override { fs::remove_all(dir); }
-  std::string Path(const std::string& name) const { return (dir / name).string(); }
+struct PadRoundTrip : testing_scratch::ScratchDirTest {
+  void SetUp() override {
+    ScratchDirTest::SetUp();
+    fs::create_directories(dir_ / "out");
+  }
 };
-
-std::string Text(const std::string& path) {
-  std::ifstream in(path);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 void ExpectSamePad(const PadSpec& a, const PadSpec& b) {
   EXPECT_EQ(a.name, b.name);
@@ -50,12 +42,8 @@ void ExpectSamePad(const PadSpec& a, const PadSpec& b) {
 
 // Both copies in out/, away from the files they came from (a mesh is named from there).
 void RoundTrip(const PadSpec& loaded, const std::string& first, const std::string& second) {
-  WritePad(loaded, first);
-  const PadSpec again = LoadPad(first);
-  ExpectSamePad(loaded, again);
-  WritePad(again, second);
-  EXPECT_EQ(Text(first), Text(second));
-  ExpectSamePad(loaded, LoadPad(second));
+  testing_scratch::ExpectRoundTrip(
+      loaded, first, second, WritePad, [](const std::string& path) { return LoadPad(path); }, ExpectSamePad);
 }
 
 TEST_F(PadRoundTrip, BundledPads) {
@@ -68,9 +56,9 @@ TEST_F(PadRoundTrip, BundledPads) {
     ++pads;
   }
   EXPECT_GE(pads, 4);  // flat, c4, curved, hex
-  EXPECT_NE(Text(Path("out/hex_1.yaml")).find("remesh_edge_mm: 3"), std::string::npos);
-  EXPECT_NE(Text(Path("out/curved_1.yaml")).find("rim_height_mm: 16"), std::string::npos);
-  EXPECT_EQ(Text(Path("out/curved_1.yaml")).find("a0_mm"), std::string::npos);  // only the given one of the pair
+  EXPECT_NE(Slurp(Path("out/hex_1.yaml")).find("remesh_edge_mm: 3"), std::string::npos);
+  EXPECT_NE(Slurp(Path("out/curved_1.yaml")).find("rim_height_mm: 16"), std::string::npos);
+  EXPECT_EQ(Slurp(Path("out/curved_1.yaml")).find("a0_mm"), std::string::npos);  // only the given one of the pair
 }
 
 TEST_F(PadRoundTrip, OtherShapesAndEveryOptionalField) {
@@ -106,7 +94,7 @@ TEST_F(PadRoundTrip, MeshPadByDensity) {
   const PadSpec pad = LoadPad(Path("dense.yaml"));
   EXPECT_GT(pad.mass_kg, 0.0);
   RoundTrip(pad, Path("out/dense_1.yaml"), Path("out/dense_2.yaml"));
-  EXPECT_NE(Text(Path("out/dense_1.yaml")).find("density_kg_m3: 2700"), std::string::npos);
+  EXPECT_NE(Slurp(Path("out/dense_1.yaml")).find("density_kg_m3: 2700"), std::string::npos);
 }
 
 }  // namespace

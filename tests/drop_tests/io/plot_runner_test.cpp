@@ -11,7 +11,6 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -19,18 +18,14 @@
 #include "drop_tests/io/plot_decimation.h"
 #include "drop_tests/io/plot_runner.h"
 #include "rft/input_error.h"
+#include "tests/scratch_dir_test.h"
 
 namespace touchdown::io {
 namespace {
 
 namespace fs = std::filesystem;
 
-std::string Slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using testing_scratch::Slurp;
 
 // A scratch directory whose name holds what broke the shell command lines: a quote, spaces, a
 // semicolon and non-ASCII characters.

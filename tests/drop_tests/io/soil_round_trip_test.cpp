@@ -2,31 +2,15 @@
 // WriteSoil and loaded again give the same soil; a second write is the same text (a fixed point).
 #include <gtest/gtest.h>
 
-#include <filesystem>
 #include <fstream>
-#include <sstream>
-#include <unistd.h>
 
 #include "drop_tests/io/catalog.h"
+#include "tests/round_trip.h"
 
 namespace touchdown::io {
 namespace {
 
-namespace fs = std::filesystem;
-
-struct SoilRoundTrip : ::testing::Test {
-  fs::path dir = fs::temp_directory_path() / ("touchdown_soil_rt_" + std::to_string(::getpid()));
-  void SetUp() override { fs::create_directories(dir); }
-  void TearDown() override { fs::remove_all(dir); }
-  std::string Path(const std::string& name) const { return (dir / name).string(); }
-};
-
-std::string Text(const std::string& path) {
-  std::ifstream in(path);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+struct SoilRoundTrip : testing_scratch::ScratchDirTest {};
 
 void ExpectSameSoil(const rft::SoilParameters& a, const rft::SoilParameters& b) {
   EXPECT_EQ(a.name, b.name);
@@ -44,12 +28,8 @@ void ExpectSameSoil(const rft::SoilParameters& a, const rft::SoilParameters& b) 
 }
 
 void RoundTrip(const rft::SoilParameters& loaded, const std::string& first, const std::string& second) {
-  WriteSoil(loaded, first);
-  const rft::SoilParameters again = LoadSoil(first);
-  ExpectSameSoil(loaded, again);
-  WriteSoil(again, second);
-  EXPECT_EQ(Text(first), Text(second));
-  ExpectSameSoil(again, LoadSoil(second));
+  testing_scratch::ExpectRoundTrip(
+      loaded, first, second, WriteSoil, [](const std::string& path) { return LoadSoil(path); }, ExpectSameSoil);
 }
 
 TEST_F(SoilRoundTrip, BundledSoils) {
@@ -79,7 +59,7 @@ TEST_F(SoilRoundTrip, DerivedZetaIsWrittenAsANumber) {
   const rft::SoilParameters soil = LoadSoil(Path("agarwal.yaml"));
   EXPECT_GT(soil.zeta_N_m3, 0.0);
   RoundTrip(soil, Path("agarwal_1.yaml"), Path("agarwal_2.yaml"));
-  EXPECT_EQ(Text(Path("agarwal_1.yaml")).find("agarwal2023"), std::string::npos);
+  EXPECT_EQ(Slurp(Path("agarwal_1.yaml")).find("agarwal2023"), std::string::npos);
 }
 
 }  // namespace

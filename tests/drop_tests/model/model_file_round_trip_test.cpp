@@ -3,31 +3,15 @@
 // writing that model again gives the same text.
 #include <gtest/gtest.h>
 
-#include <filesystem>
 #include <fstream>
-#include <sstream>
-#include <unistd.h>
 
 #include "drop_tests/model/model_file.h"
+#include "tests/round_trip.h"
 
 namespace touchdown::model {
 namespace {
 
-namespace fs = std::filesystem;
-
-struct ModelRoundTrip : ::testing::Test {
-  fs::path dir = fs::temp_directory_path() / ("touchdown_model_rt_" + std::to_string(::getpid()));
-  void SetUp() override { fs::create_directories(dir); }
-  void TearDown() override { fs::remove_all(dir); }
-  std::string Path(const std::string& name) const { return (dir / name).string(); }
-};
-
-std::string Text(const std::string& path) {
-  std::ifstream in(path);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+struct ModelRoundTrip : testing_scratch::ScratchDirTest {};
 
 void ExpectSameModel(const ModelFile& a, const ModelFile& b) {
   EXPECT_EQ(a.name, b.name);
@@ -90,12 +74,9 @@ TEST_F(ModelRoundTrip, EveryPartOfAModelFile) {
   EXPECT_TRUE(first.effect_intervals[1].empty());
   EXPECT_DOUBLE_EQ(first.effects[1].values[1], 0.003);  // d_c in m
 
-  WriteModelFile(first, Path("written_1.yaml"));
-  const ModelFile second = LoadModelFile(Path("written_1.yaml"));
-  ExpectSameModel(first, second);
-  WriteModelFile(second, Path("written_2.yaml"));
-  EXPECT_EQ(Text(Path("written_1.yaml")), Text(Path("written_2.yaml")));
-  ExpectSameModel(second, LoadModelFile(Path("written_2.yaml")));
+  testing_scratch::ExpectRoundTrip(
+      first, Path("written_1.yaml"), Path("written_2.yaml"),
+      [](const ModelFile& m, const std::string& path) { WriteModelFile(m, path); }, LoadModelFile, ExpectSameModel);
 }
 
 TEST_F(ModelRoundTrip, NoEffectsAndNoProvenance) {
@@ -105,7 +86,7 @@ TEST_F(ModelRoundTrip, NoEffectsAndNoProvenance) {
   EXPECT_TRUE(first.provenance_yaml.empty());
   WriteModelFile(first, Path("written.yaml"));
   ExpectSameModel(first, LoadModelFile(Path("written.yaml")));
-  EXPECT_NE(Text(Path("written.yaml")).find("effects: {}"), std::string::npos);
+  EXPECT_NE(Slurp(Path("written.yaml")).find("effects: {}"), std::string::npos);
 }
 
 }  // namespace

@@ -6,31 +6,18 @@
 
 #include <filesystem>
 #include <fstream>
-#include <sstream>
-#include <unistd.h>
 
 #include "drop_tests/io/catalog.h"
 #include "drop_tests/scenario/campaign.h"
 #include "rft/input_error.h"
+#include "tests/round_trip.h"
 
 namespace touchdown::scenario {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct CampaignRoundTrip : ::testing::Test {
-  fs::path dir = fs::temp_directory_path() / ("touchdown_campaign_rt_" + std::to_string(::getpid()));
-  void SetUp() override { fs::create_directories(dir); }
-  void TearDown() override { fs::remove_all(dir); }
-  std::string Path(const std::string& name) const { return (dir / name).string(); }
-};
-
-std::string Text(const std::string& path) {
-  std::ifstream in(path);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+struct CampaignRoundTrip : testing_scratch::ScratchDirTest {};
 
 void ExpectSameCampaign(const CampaignScenario& a, const CampaignScenario& b) {
   EXPECT_EQ(a.name, b.name);
@@ -77,19 +64,16 @@ void ExpectSameCampaign(const CampaignScenario& a, const CampaignScenario& b) {
 // The resolved copies live in `dir`, as a campaign's output directory holds its copy.
 void RoundTrip(const std::string& source, const std::string& first, const std::string& second) {
   const std::string out = fs::path(first).parent_path().string();
-  const CampaignScenario loaded = LoadCampaignScenario(source);
-  WriteResolvedScenario(loaded, first, out);
-  const CampaignScenario again = LoadCampaignScenario(first);
-  ExpectSameCampaign(loaded, again);
-  WriteResolvedScenario(again, second, out);
-  EXPECT_EQ(Text(first), Text(second));
-  ExpectSameCampaign(loaded, LoadCampaignScenario(second));
+  testing_scratch::ExpectRoundTrip(
+      LoadCampaignScenario(source), first, second,
+      [&](const CampaignScenario& c, const std::string& path) { WriteResolvedScenario(c, path, out); },
+      LoadCampaignScenario, ExpectSameCampaign);
 }
 
 TEST_F(CampaignRoundTrip, PaperCampaign) {
   RoundTrip(io::DataDirectory() + "/scenarios/sutoh2017_single_footpad.yaml", Path("paper_1.yaml"),
             Path("paper_2.yaml"));
-  const std::string text = Text(Path("paper_1.yaml"));
+  const std::string text = Slurp(Path("paper_1.yaml"));
   EXPECT_NE(text.find("type: campaign_resolved"), std::string::npos);
   EXPECT_NE(text.find("file: $TOUCHDOWN_DATA_DIR/soils/fjs1_lp.yaml"), std::string::npos);
   EXPECT_NE(text.find("paper_checks:"), std::string::npos);
@@ -107,9 +91,9 @@ TEST_F(CampaignRoundTrip, PathsAndPerEntryNumbers) {
   const CampaignScenario loaded = LoadCampaignScenario(Path("campaign.yaml"));
   ASSERT_EQ(loaded.cases.size(), 4u);
   EXPECT_EQ(loaded.reference_speed_m_s, 0.0);  // the first case's speed
-  fs::create_directories(dir / "out");
+  fs::create_directories(dir_ / "out");
   RoundTrip(Path("campaign.yaml"), Path("out/resolved_1.yaml"), Path("out/resolved_2.yaml"));
-  const std::string text = Text(Path("out/resolved_1.yaml"));
+  const std::string text = Slurp(Path("out/resolved_1.yaml"));
   EXPECT_NE(text.find("file: ../my_soil.yaml"), std::string::npos);  // relative to the copy's directory
   EXPECT_NE(text.find("zeta_override_N_cm3: 1.7"), std::string::npos);
   EXPECT_NE(text.find("mass_kg: 2.25"), std::string::npos);
@@ -117,8 +101,8 @@ TEST_F(CampaignRoundTrip, PathsAndPerEntryNumbers) {
 
 TEST_F(CampaignRoundTrip, ResolvedCopyMustMatchItsFiles) {
   const CampaignScenario loaded = LoadCampaignScenario(io::DataDirectory() + "/scenarios/sutoh2017_single_footpad.yaml");
-  WriteResolvedScenario(loaded, Path("resolved.yaml"), dir.string());
-  std::string text = Text(Path("resolved.yaml"));
+  WriteResolvedScenario(loaded, Path("resolved.yaml"), dir_.string());
+  std::string text = Slurp(Path("resolved.yaml"));
   const std::string from = "radius_mm: 50", to = "radius_mm: 51";
   ASSERT_NE(text.find(from), std::string::npos);
   text.replace(text.find(from), from.size(), to);

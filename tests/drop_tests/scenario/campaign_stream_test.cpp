@@ -8,22 +8,17 @@
 
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 
 #include "drop_tests/scenario/campaign.h"
+#include "tests/scratch_dir_test.h"
 
 namespace touchdown::scenario {
 namespace {
 
 namespace fs = std::filesystem;
 
-std::string Slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using testing_scratch::Slurp;
 
 TEST(CampaignStream, CasesShareTheirPad) {
   const CampaignScenario s = LoadCampaignScenario(io::DataDirectory() + "/scenarios/sutoh2017_single_footpad.yaml");

@@ -6,31 +6,18 @@
 
 #include <filesystem>
 #include <fstream>
-#include <sstream>
-#include <unistd.h>
 
 #include "drop_tests/io/catalog.h"
 #include "drop_tests/scenario/lander_scenario.h"
 #include "rft/input_error.h"
+#include "tests/round_trip.h"
 
 namespace touchdown::scenario {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct LanderScenarioRoundTrip : ::testing::Test {
-  fs::path dir = fs::temp_directory_path() / ("touchdown_lander_rt_" + std::to_string(::getpid()));
-  void SetUp() override { fs::create_directories(dir); }
-  void TearDown() override { fs::remove_all(dir); }
-  std::string Path(const std::string& name) const { return (dir / name).string(); }
-};
-
-std::string Text(const std::string& path) {
-  std::ifstream in(path);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+struct LanderScenarioRoundTrip : testing_scratch::ScratchDirTest {};
 
 void ExpectSameScenario(const LanderScenario& a, const LanderScenario& b) {
   EXPECT_EQ(a.name, b.name);
@@ -94,13 +81,10 @@ void ExpectSameScenario(const LanderScenario& a, const LanderScenario& b) {
 
 void RoundTrip(const std::string& source, const std::string& first, const std::string& second) {
   const std::string out = fs::path(first).parent_path().string();
-  const LanderScenario loaded = LoadLanderScenario(source);
-  WriteResolvedLanderScenario(loaded, first, out);
-  const LanderScenario again = LoadLanderScenario(first);
-  ExpectSameScenario(loaded, again);
-  WriteResolvedLanderScenario(again, second, out);
-  EXPECT_EQ(Text(first), Text(second));
-  ExpectSameScenario(loaded, LoadLanderScenario(second));
+  testing_scratch::ExpectRoundTrip(
+      LoadLanderScenario(source), first, second,
+      [&](const LanderScenario& s, const std::string& path) { WriteResolvedLanderScenario(s, path, out); },
+      LoadLanderScenario, ExpectSameScenario);
 }
 
 TEST_F(LanderScenarioRoundTrip, BundledCases) {
@@ -108,7 +92,7 @@ TEST_F(LanderScenarioRoundTrip, BundledCases) {
     SCOPED_TRACE(c);
     const std::string name = std::string("lander_case_") + c;
     RoundTrip(io::DataDirectory() + "/scenarios/" + name + ".yaml", Path(name + "_1.yaml"), Path(name + "_2.yaml"));
-    EXPECT_NE(Text(Path(name + "_1.yaml")).find("roll_pitch_within_deg: 0.5"), std::string::npos);
+    EXPECT_NE(Slurp(Path(name + "_1.yaml")).find("roll_pitch_within_deg: 0.5"), std::string::npos);
   }
 }
 
@@ -121,17 +105,17 @@ TEST_F(LanderScenarioRoundTrip, OptionsAndAttitude) {
                                         "  roll_deg: 2.5, yaw_relative_to_slope_deg: 45, align_to_slope: true}\n"
                                         "simulation: {duration_s: 0.5, sample_rate_hz: 500, atol: 1e-8,"
                                         " max_step_s: 0.001, stiff: true}\n";
-  fs::create_directories(dir / "out");
+  fs::create_directories(dir_ / "out");
   RoundTrip(Path("tilted.yaml"), Path("out/tilted_1.yaml"), Path("out/tilted_2.yaml"));
-  const std::string text = Text(Path("out/tilted_1.yaml"));
+  const std::string text = Slurp(Path("out/tilted_1.yaml"));
   EXPECT_NE(text.find("max_step_s: 0.001"), std::string::npos);
   EXPECT_NE(text.find("source: ../tilted.yaml"), std::string::npos);
 }
 
 TEST_F(LanderScenarioRoundTrip, ResolvedCopyMustMatchItsFiles) {
   WriteResolvedLanderScenario(LoadLanderScenario(io::DataDirectory() + "/scenarios/lander_case_B.yaml"),
-                              Path("resolved.yaml"), dir.string());
-  std::string text = Text(Path("resolved.yaml"));
+                              Path("resolved.yaml"), dir_.string());
+  std::string text = Slurp(Path("resolved.yaml"));
   const std::string from = "body_mass_kg: 3.98", to = "body_mass_kg: 3.99";
   ASSERT_NE(text.find(from), std::string::npos);
   text.replace(text.find(from), from.size(), to);

@@ -27,6 +27,7 @@
 #include "drop_tests/sweep/sweep_lock.h"
 #include "drop_tests/sweep/sweep_stop.h"
 #include "rft/input_error.h"
+#include "tests/drop_tests/sweep/sweep_test_support.h"
 #include "tests/scratch_dir_test.h"
 #include "tests/touchdown_process.h"
 
@@ -35,20 +36,10 @@ namespace {
 namespace fs = std::filesystem;
 namespace testing_process = touchdown::testing_process;
 using namespace touchdown::sweep;
+using namespace touchdown::sweep::testing_sweep;
 using namespace touchdown::dataset;
 using namespace touchdown::io;
 using touchdown::InputError;
-
-// 3 pads x 20 speeds x 20 samples = 1200 quick drops, summaries only.
-const char* kQuickSweep = R"(schema_version: 1
-type: sweep
-name: quick
-traces: none
-grid:
-  pad: [flat, c4, curved]
-  impact_speed_m_s: {from: 0.3, to: 2.0, count: 20}
-random: {samples: 20, seed: 5, soil: {choice: [fjs1_lp, fjs1_cp]}, pad_mass_kg: {uniform: [1.2, 2.0]}}
-)";
 
 // Free drops of a mesh pad, tilted: tens of ms each, so a run can be stopped mid-way. The
 // speeds spread the work: with a low evaluation limit the fastest drops fail and the rest pass.
@@ -90,19 +81,6 @@ class SweepControl : public touchdown::testing_scratch::ScratchDirTest {
     } catch (const std::exception&) {
       return 0;
     }
-  }
-  static std::vector<DropRecord> Records(const fs::path& out) {
-    return ResultsDb(ResultsDbPath(out.string())).ReadAll(/*with_traces=*/true);
-  }
-  static void ExpectSameRecords(const std::vector<DropRecord>& a, const std::vector<DropRecord>& b) {
-    ASSERT_EQ(a.size(), b.size());
-    for (size_t i = 0; i < a.size(); ++i) EXPECT_TRUE(SameRecord(a[i], b[i])) << "drop " << a[i].drop_id;
-  }
-  static SweepRunOptions Quiet(int threads) {
-    SweepRunOptions o;
-    o.threads = threads;
-    o.progress = ProgressMode::kNone;
-    return o;
   }
   // Waits until `out` holds at least `rows` drops (or 120 s pass).
   static void WaitForRows(const fs::path& out, int64_t rows) {

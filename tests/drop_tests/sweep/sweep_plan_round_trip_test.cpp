@@ -3,32 +3,16 @@
 // model, parameters and options), the same drops and limits; a second write is the same text.
 #include <gtest/gtest.h>
 
-#include <filesystem>
 #include <fstream>
-#include <sstream>
-#include <unistd.h>
 
 #include "drop_tests/io/catalog.h"
 #include "drop_tests/sweep/sweep_spec.h"
+#include "tests/round_trip.h"
 
 namespace touchdown::sweep {
 namespace {
 
-namespace fs = std::filesystem;
-
-struct SweepPlanRoundTrip : ::testing::Test {
-  fs::path dir = fs::temp_directory_path() / ("touchdown_sweep_rt_" + std::to_string(::getpid()));
-  void SetUp() override { fs::create_directories(dir); }
-  void TearDown() override { fs::remove_all(dir); }
-  std::string Path(const std::string& name) const { return (dir / name).string(); }
-};
-
-std::string Text(const std::string& path) {
-  std::ifstream in(path);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+struct SweepPlanRoundTrip : testing_scratch::ScratchDirTest {};
 
 void ExpectSamePlan(const SweepPlan& a, const SweepPlan& b) {
   EXPECT_EQ(a.DigestText(), b.DigestText());
@@ -52,12 +36,9 @@ void ExpectSamePlan(const SweepPlan& a, const SweepPlan& b) {
 }
 
 void RoundTrip(const std::string& source, const std::string& first, const std::string& second) {
-  const SweepPlan loaded = LoadSweepPlan(source);
-  WriteSweepPlan(loaded, first);
-  const SweepPlan again = LoadSweepPlan(first);
-  ExpectSamePlan(loaded, again);
-  WriteSweepPlan(again, second);
-  EXPECT_EQ(Text(first), Text(second));
+  testing_scratch::ExpectRoundTrip(
+      LoadSweepPlan(source), first, second, WriteSweepPlan, [](const std::string& path) { return LoadSweepPlan(path); },
+      ExpectSamePlan);
 }
 
 TEST_F(SweepPlanRoundTrip, BundledSweeps) {

@@ -22,6 +22,7 @@
 #include "drop_tests/sweep/sweep_drop.h"
 #include "drop_tests/sweep/sweep_export.h"
 #include "rft/input_error.h"
+#include "tests/drop_tests/sweep/sweep_test_support.h"
 #include "tests/scratch_dir_test.h"
 #include "tests/touchdown_process.h"
 
@@ -30,6 +31,7 @@ namespace {
 namespace fs = std::filesystem;
 namespace testing_process = touchdown::testing_process;
 using namespace touchdown::sweep;
+using namespace touchdown::sweep::testing_sweep;
 using namespace touchdown::dataset;
 using namespace touchdown::pad;
 using touchdown::InputError;
@@ -47,17 +49,6 @@ grid:
   impact_speed_m_s: {from: 0.5, to: 2.0, count: 4}
   zeta_N_cm3: [0.000001, 3.5]
 random: {samples: 5, seed: 11, pad_mass_kg: {uniform: [1.0, 2.5]}, gravity_m_s2: {choice: [1.62, 9.81]}}
-)";
-
-// 3 pads x 20 speeds x 20 samples = 1200 quick drops, summaries only: long enough to be killed.
-const char* kLongSweep = R"(schema_version: 1
-type: sweep
-name: long
-traces: none
-grid:
-  pad: [flat, c4, curved]
-  impact_speed_m_s: {from: 0.3, to: 2.0, count: 20}
-random: {samples: 20, seed: 5, soil: {choice: [fjs1_lp, fjs1_cp]}, pad_mass_kg: {uniform: [1.2, 2.0]}}
 )";
 
 struct CliResult {
@@ -91,22 +82,6 @@ class Sweep : public touchdown::testing_scratch::ScratchDirTest {
     }
     sqlite3_close(db);
     return n;
-  }
-
-  static std::vector<DropRecord> Records(const fs::path& out_dir) {
-    return ResultsDb(ResultsDbPath(out_dir.string())).ReadAll(/*with_traces=*/true);
-  }
-
-  static void ExpectSameRecords(const std::vector<DropRecord>& a, const std::vector<DropRecord>& b) {
-    ASSERT_EQ(a.size(), b.size());
-    for (size_t i = 0; i < a.size(); ++i) EXPECT_TRUE(SameRecord(a[i], b[i])) << "drop " << a[i].drop_id;
-  }
-
-  static SweepRunOptions Quiet(int threads) {
-    SweepRunOptions o;
-    o.threads = threads;
-    o.progress = ProgressMode::kNone;
-    return o;
   }
 };
 
@@ -296,7 +271,7 @@ TEST_F(Sweep, MpirunTwoRanksEqualsTheSingleProcess) {
 }
 
 TEST_F(Sweep, KilledMidRunAndRestartedEndsWithExactlyTheFullSet) {
-  const std::string file = Write("long.yaml", kLongSweep);
+  const std::string file = Write("long.yaml", kQuickSweep);
   const SweepPlan plan = LoadSweepPlan(file);
   const int64_t total = plan.size();
   const fs::path out = dir_ / "killed";

@@ -4,43 +4,17 @@
 // well as operator new.
 #include <gtest/gtest.h>
 
-#include <atomic>
-#include <cstdlib>
-
 #include "lander/multibody/lander_dynamics.h"
 #include "lander/multibody/lander_simulation.h"
 #include "tests/lander/multibody/paper_lander.h"
-
-namespace {
-std::atomic<bool> counting{false};
-std::atomic<long> allocations{0};
-}  // namespace
-
-// AddressSanitizer replaces malloc itself; the count is then left to the plain build.
-#if !defined(__SANITIZE_ADDRESS__)
-extern "C" void* __libc_malloc(std::size_t size);
-extern "C" void* malloc(std::size_t size) {
-  if (counting.load()) ++allocations;
-  return __libc_malloc(size);
-}
-#define TOUCHDOWN_COUNTS_MALLOC 1
-#endif
+#include "tests/malloc_counter.h"
 
 namespace touchdown::lander {
 namespace {
 
 TEST(LanderRightHandSide, DoesNotAllocate) {
-#if !defined(TOUCHDOWN_COUNTS_MALLOC)
-  GTEST_SKIP() << "malloc is not counted under AddressSanitizer";
-#else
-  {  // the counter works, for Eigen's buffers too
-    allocations = 0;
-    counting = true;
-    Eigen::VectorXd probe(64);
-    counting = false;
-    probe.setZero();
-    ASSERT_GE(allocations.load(), 1);
-  }
+  if (!testing_alloc::kCountsMalloc) GTEST_SKIP() << "malloc is not counted under AddressSanitizer";
+  ASSERT_GE(testing_alloc::AllocationsOfAnEigenBuffer(), 1);  // the counter works, for Eigen's buffers too
   const test::PaperLander setup = test::MakePaperLander('A');
   const StateLayout L(setup.model);
   LanderRunOptions options;
@@ -54,14 +28,13 @@ TEST(LanderRightHandSide, DoesNotAllocate) {
   LanderModes modes;
   for (int i = 0; i < kNumLegs; ++i) modes.pad[i] = PadMode::kHeld;
   EvaluateLander(setup.model, L, setup.terrain, modes, y, &e, &data);
-  allocations = 0;
-  counting = true;
-  for (int k = 0; k < 3; ++k) {
-    EvaluateLander(setup.model, L, setup.terrain, modes, y, &e, &data);
-    StateDerivative(L, y, e, ydot);
-  }
-  counting = false;
-  EXPECT_EQ(allocations.load(), 0);
+  EXPECT_EQ(testing_alloc::CountAllocations([&] {
+              for (int k = 0; k < 3; ++k) {
+                EvaluateLander(setup.model, L, setup.terrain, modes, y, &e, &data);
+                StateDerivative(L, y, e, ydot);
+              }
+            }),
+            0);
   EXPECT_TRUE(e.constrained);
   // The held pads carry the lander at rest: their reactions balance its weight.
   double lift = 0.0;
@@ -73,7 +46,6 @@ TEST(LanderRightHandSide, DoesNotAllocate) {
   EvaluateLander(setup.model, L, setup.terrain, modes, y, &fresh);
   EXPECT_EQ(fresh.u_dot, e.u_dot);
   for (int i = 0; i < kNumLegs; ++i) EXPECT_EQ(fresh.soil[i].force_W, e.soil[i].force_W);
-#endif
 }
 
 }  // namespace

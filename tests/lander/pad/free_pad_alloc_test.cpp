@@ -7,28 +7,12 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
-#include <atomic>
-#include <cstdlib>
 
 #include "footpad_geom/axisymmetric_profile.h"
 #include "footpad_geom/revolve.h"
 #include "rft/stress_law_3d_factory.h"
 #include "tests/lander/paper_soils.h"
-
-namespace {
-std::atomic<bool> counting{false};
-std::atomic<long> allocations{0};
-}  // namespace
-
-// AddressSanitizer replaces malloc itself; the count is then left to the plain build.
-#if !defined(__SANITIZE_ADDRESS__)
-extern "C" void* __libc_malloc(std::size_t size);
-extern "C" void* malloc(std::size_t size) {
-  if (counting.load()) ++allocations;
-  return __libc_malloc(size);
-}
-#define TOUCHDOWN_COUNTS_MALLOC 1
-#endif
+#include "tests/malloc_counter.h"
 
 namespace touchdown::pad {
 namespace {
@@ -48,27 +32,17 @@ long AllocationsOfThreeDerivatives(const rft::SoilContactModel& soil) {
   EXPECT_NEAR(pad.Depth(pad.PoseOf(y)), 0.005, 1e-12);
   Eigen::VectorXd ydot(kSize);
   pad.Derivative(y, ydot);  // any first-call setup outside the count
-  allocations = 0;
-  counting = true;
-  for (int k = 0; k < 3; ++k) pad.Derivative(y, ydot);
-  counting = false;
+  const long allocations = testing_alloc::CountAllocations([&] {
+    for (int k = 0; k < 3; ++k) pad.Derivative(y, ydot);
+  });
   EXPECT_GT(-ydot[kWork], -1e300);  // used
   EXPECT_TRUE(ydot.allFinite());
-  return allocations.load();
+  return allocations;
 }
 
 TEST(FreePadRightHandSide, DoesNotAllocate) {
-#if !defined(TOUCHDOWN_COUNTS_MALLOC)
-  GTEST_SKIP() << "malloc is not counted under AddressSanitizer";
-#else
-  {  // the counter works, for Eigen's buffers too
-    allocations = 0;
-    counting = true;
-    Eigen::VectorXd probe(64);
-    counting = false;
-    probe.setZero();
-    ASSERT_GE(allocations.load(), 1);
-  }
+  if (!testing_alloc::kCountsMalloc) GTEST_SKIP() << "malloc is not counted under AddressSanitizer";
+  ASSERT_GE(testing_alloc::AllocationsOfAnEigenBuffer(), 1);  // the counter works, for Eigen's buffers too
   EXPECT_EQ(AllocationsOfThreeDerivatives(test::Fjs1Law(false)), 0);
   rft::EffectTerms terms;
   terms.added_mass_ca = 1.0;
@@ -79,7 +53,6 @@ TEST(FreePadRightHandSide, DoesNotAllocate) {
   const rft::SoilContactModel with_terms =
       rft::MakeSoilContactModel(rft::LawKind::kLi2013, test::Fjs1(false), 9.81, terms);
   EXPECT_EQ(AllocationsOfThreeDerivatives(with_terms), 0);
-#endif
 }
 
 }  // namespace
