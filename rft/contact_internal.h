@@ -51,6 +51,40 @@ inline Vec operator-(Vec a, Vec b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
 inline Vec operator*(double s, Vec a) { return {s * a.x, s * a.y, s * a.z}; }
 inline Vec Load(const double* p) { return {p[0], p[1], p[2]}; }
 
+// The rotation B -> W as nine scalars: in the element loops they stay in registers (Eigen's 3x3
+// products there did not).
+struct RotationToW {
+  double r00, r01, r02, r10, r11, r12, r20, r21, r22;
+  explicit RotationToW(const Eigen::Matrix3d& R)
+      : r00(R(0, 0)), r01(R(0, 1)), r02(R(0, 2)), r10(R(1, 0)), r11(R(1, 1)), r12(R(1, 2)), r20(R(2, 0)),
+        r21(R(2, 1)), r22(R(2, 2)) {}
+  [[gnu::always_inline]] inline Eigen::Vector3d operator()(const Vec& a) const {
+    return Eigen::Vector3d(r00 * a.x + r01 * a.y + r02 * a.z, r10 * a.x + r11 * a.y + r12 * a.z,
+                           r20 * a.x + r21 * a.y + r22 * a.z);
+  }
+};
+
+// Over a plane, depth is affine in position, so it is computed in B without transforming
+// vertices: depth(p_B) = h0 + g . (p_WB + R p_B) = depth0 + g_B . p_B with g = (sx, sy, -1).
+struct PlaneDepthInB {
+  double depth0 = 0.0, gx = 0.0, gy = 0.0, gz = 0.0;
+  static PlaneDepthInB Of(const PlaneGround& plane, const PadKinematics& k) {
+    const Eigen::Vector3d g_W(plane.slope_x(), plane.slope_y(), -1.0);
+    const Eigen::Vector3d g_B = k.R_WB.transpose() * g_W;
+    return {plane.height_at_origin_m() + g_W.dot(k.p_WB), g_B.x(), g_B.y(), g_B.z()};
+  }
+  [[gnu::always_inline]] inline double At(const Vec& p) const { return depth0 + gx * p.x + gy * p.y + gz * p.z; }
+  // Whether block b's box lies wholly above the ground (by more than kCullMargin): its elements
+  // contribute nothing.
+  [[gnu::always_inline]] inline bool BlockAbove(const SurfaceElements& elements, int b) const {
+    const double* lo = elements.block_min_B.data() + 3 * b;
+    const double* hi = elements.block_max_B.data() + 3 * b;
+    const double deepest = depth0 + (gx > 0.0 ? gx * hi[0] : gx * lo[0]) + (gy > 0.0 ? gy * hi[1] : gy * lo[1]) +
+                           (gz > 0.0 ? gz * hi[2] : gz * lo[2]);
+    return deepest < -kCullMargin;
+  }
+};
+
 // Exact integrals over the submerged part of one triangle, depth d linear on it (pad frame B):
 // depth_integral = int d dA, depth_moment = int d r dA, area = int dA, area_moment = int r dA.
 struct Submerged {

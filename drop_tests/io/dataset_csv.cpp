@@ -3,6 +3,7 @@
 #include <charconv>
 #include <fstream>
 #include <cmath>
+#include <fstream>
 #include <string>
 #include <unordered_set>
 
