@@ -3,7 +3,6 @@
 #include <charconv>
 #include <fstream>
 #include <cmath>
-#include <fstream>
 #include <string>
 #include <unordered_set>
 
