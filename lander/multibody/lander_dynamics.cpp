@@ -4,6 +4,7 @@
 #include <Eigen/QR>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "rft/deepest_point.h"
@@ -427,6 +428,22 @@ Attitude BodyAttitude(const Eigen::Matrix3d& R) {
   a.yaw_rad = std::atan2(R(1, 0), R(0, 0));
   a.tilt_rad = std::acos(std::clamp(R(2, 2), -1.0, 1.0));
   return a;
+}
+
+double StabilityMargin(const LanderModel& model, const StateLayout& L, const Eigen::Ref<const Eigen::VectorXd>& y) {
+  const LanderPose p = ComputePose(model, L, y);
+  Eigen::Vector3d com = model.body_mass_kg * p.p_WB;
+  for (int i = 0; i < kNumLegs; ++i)
+    com += model.legs[i].pad->mass_kg * (p.pads[i].p_WJ + p.pads[i].c_JC_W);
+  com /= model.TotalMass();
+  double margin = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < kNumLegs; ++i) {
+    const Eigen::Vector2d a = p.pads[i].p_WJ.head<2>(), b = p.pads[(i + 1) % kNumLegs].p_WJ.head<2>();
+    const Eigen::Vector2d e = b - a, r = com.head<2>() - a;
+    // Clockwise polygon seen from above: the inside is on the right of each edge.
+    margin = std::min(margin, -(e.x() * r.y() - e.y() * r.x()) / e.norm());
+  }
+  return margin;
 }
 
 }  // namespace touchdown::lander

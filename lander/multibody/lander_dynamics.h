@@ -164,4 +164,8 @@ struct Attitude {
 };
 Attitude BodyAttitude(const Eigen::Matrix3d& R_WB);
 
+// Signed horizontal distance of the lander's centre of mass inside the polygon of the joint
+// centres (positive inside) [m].
+double StabilityMargin(const LanderModel& model, const StateLayout& layout, const Eigen::Ref<const Eigen::VectorXd>& y);
+
 }  // namespace touchdown::lander

@@ -9,7 +9,7 @@
 
 #include "lander/integ/hybrid_run.h"
 #include "lander/multibody/lander_dynamics.h"
-#include "lander/multibody/lander_simulation.h"
+#include "lander/multibody/lander_run.h"
 
 namespace touchdown::lander {
 

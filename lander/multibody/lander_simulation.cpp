@@ -84,22 +84,6 @@ double BodyHeightForClearance(const LanderModel& model, const rft::Terrain& terr
   return depth + clearance_m;
 }
 
-double StabilityMargin(const LanderModel& model, const StateLayout& L, const Eigen::Ref<const Eigen::VectorXd>& y) {
-  const LanderPose p = ComputePose(model, L, y);
-  Eigen::Vector3d com = model.body_mass_kg * p.p_WB;
-  for (int i = 0; i < kNumLegs; ++i)
-    com += model.legs[i].pad->mass_kg * (p.pads[i].p_WJ + p.pads[i].c_JC_W);
-  com /= model.TotalMass();
-  double margin = std::numeric_limits<double>::infinity();
-  for (int i = 0; i < kNumLegs; ++i) {
-    const Eigen::Vector2d a = p.pads[i].p_WJ.head<2>(), b = p.pads[(i + 1) % kNumLegs].p_WJ.head<2>();
-    const Eigen::Vector2d e = b - a, r = com.head<2>() - a;
-    // Clockwise polygon seen from above: the inside is on the right of each edge.
-    margin = std::min(margin, -(e.x() * r.y() - e.y() * r.x()) / e.norm());
-  }
-  return margin;
-}
-
 LanderRunResult SimulateLander(const LanderModel& model, const rft::Terrain& terrain, const LanderInitialState& initial,
                                const LanderRunOptions& options) {
   if (!(options.duration_s > 0.0) || !(options.sample_rate_hz > 0.0) || !(options.capture_speed_m_s >= 0.0))
@@ -145,22 +129,6 @@ LanderRunResult SimulateLander(const LanderModel& model, const rft::Terrain& ter
   lander.Finish(t_end, end.y);
   result.solver = run.summary().solver;
   return result;
-}
-
-const char* LanderEventName(LanderEventKind kind) {
-  switch (kind) {
-    case LanderEventKind::kTouchdown: return "touchdown";
-    case LanderEventKind::kCapture: return "capture";
-    case LanderEventKind::kReleaseLiftoff: return "release_liftoff";
-    case LanderEventKind::kReleaseSink: return "release_sink";
-    case LanderEventKind::kReleaseSlide: return "release_slide";
-    case LanderEventKind::kCrush: return "crush";
-    case LanderEventKind::kLock: return "lock";
-    case LanderEventKind::kBottom: return "bottom";
-    case LanderEventKind::kTipOver: return "tip_over";
-    case LanderEventKind::kRest: return "rest";
-  }
-  return "unknown";
 }
 
 }  // namespace touchdown::lander

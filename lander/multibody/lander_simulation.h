@@ -24,102 +24,16 @@
 
 #include "lander/integ/cvode_integrator.h"
 #include "lander/multibody/lander_dynamics.h"
+#include "lander/multibody/lander_run.h"
 
 namespace touchdown::lander {
-
-struct LanderInitialState {
-  Eigen::Vector3d p_WB = Eigen::Vector3d::Zero();
-  Eigen::Matrix3d R_WB = Eigen::Matrix3d::Identity();
-  Eigen::Vector3d v_WB_W = Eigen::Vector3d::Zero();
-  Eigen::Vector3d w_WB_W = Eigen::Vector3d::Zero();
-  std::array<Eigen::Matrix3d, kNumLegs> R_WP{Eigen::Matrix3d::Identity(), Eigen::Matrix3d::Identity(),
-                                             Eigen::Matrix3d::Identity(), Eigen::Matrix3d::Identity()};
-  std::array<double, kNumLegs> stroke_m{};  // absorber legs only
-};
 
 // Height of the body CoM at which the lowest pad vertex is `clearance_m` above the ground, for
 // the attitudes and horizontal position in `state` (exact for any height field: a vertical shift).
 double BodyHeightForClearance(const LanderModel& model, const rft::Terrain& terrain, const LanderInitialState& state,
                               double clearance_m);
 
-struct LanderRunOptions {
-  double duration_s = 1.0;              // simulated time from release
-  double sample_rate_hz = 1000.0;       // trace rate (plus every event)
-  double capture_speed_m_s = 0.02;      // max horizontal joint speed for the soil to hold a pad
-  bool stop_at_rest = true;             // rest is static: the remaining time is not integrated
-  int max_events = 20000;               // guard against Zeno behaviour
-  // Adams (non-stiff). BDF was the default while the pads' stop was stiff; with the soil ramp
-  // and the speed captures (docs/lander_dynamics.md) Adams gives the same cases A/B/C (depths to
-  // 1e-8 m, roll and pitch to 1e-8 deg) 1.2-2x faster: BDF's difference-quotient Jacobians cost
-  // 42 right-hand sides each (1.26k of 1.5k in case A). `simulation: {stiff: true}` selects BDF.
-  integ::IntegratorOptions integrator{
-      .rtol = 1e-9, .atol = 1e-11, .max_step = 0.0, .max_num_steps = 500000, .stiff = false, .component_atol = {}};
-  // Absolute tolerances rtol times each state's scale (lander_simulation.cpp, ScaledTolerances),
-  // unless integrator.component_atol is given; false: the scalar integrator.atol for every state
-  // (a scenario that sets `atol` asks for that).
-  bool scale_tolerances = true;
-};
-
-struct LanderSample {
-  double t_s = 0.0;
-  Eigen::Vector3d p_WB, v_WB_W, w_WB_W;
-  Attitude attitude;
-  Eigen::Vector3d a_WB_W;                        // body CoM acceleration
-  std::array<double, kNumLegs> pad_depth_m{};    // lowest vertex below the free surface
-  std::array<Eigen::Vector3d, kNumLegs> pad_force_W;  // soil on pad
-  std::array<double, kNumLegs> stroke_m{};
-  std::array<double, kNumLegs> leg_force_N{};
-  std::array<int, kNumLegs> pad_held{};
-  double kinetic_J = 0.0, potential_J = 0.0, dissipated_J = 0.0;
-};
-
-enum class LanderEventKind {
-  kTouchdown,       // a pad reaches the surface
-  kCapture,         // a pad is held by the soil
-  kReleaseLiftoff,  // a held pad is released: the soil would have to pull it down
-  kReleaseSink,     // ... the load exceeds what the soil carries
-  kReleaseSlide,    // ... the sideways load exceeds the soil's friction
-  kCrush,           // a crushable absorber starts to crush
-  kLock,            // it stops crushing
-  kBottom,          // it reaches the end of its stroke
-  kTipOver,         // the lander tips over
-  kRest,            // every pad held: the lander is static
-};
-// The event's name in outputs (events.csv): "touchdown", "release_liftoff", "tip_over", ...
-const char* LanderEventName(LanderEventKind kind);
-
-struct LanderEvent {
-  double t_s = 0.0;
-  LanderEventKind kind = LanderEventKind::kTouchdown;
-  int leg = -1;  // 0-based, -1 for the whole lander
-};
-
-struct LanderRunResult {
-  std::vector<LanderSample> trace;
-  std::vector<LanderEvent> events;
-  std::array<double, kNumLegs> final_penetration_m{};
-  std::array<double, kNumLegs> peak_pad_force_N{};
-  std::array<std::optional<double>, kNumLegs> touchdown_time_s;
-  Attitude final_attitude;
-  double max_tilt_rad = 0.0;
-  bool tipped_over = false;
-  std::optional<double> rest_time_s;          // since release
-  std::optional<double> first_touchdown_s;
-  double max_body_deceleration_m_s2 = 0.0;    // max upward body CoM acceleration
-  double initial_energy_J = 0.0;              // kinetic + potential at release
-  double final_kinetic_J = 0.0, final_potential_J = 0.0, dissipated_J = 0.0;
-  double capture_loss_J = 0.0;                // part of dissipated_J removed at captures
-  double max_held_drift_m = 0.0;              // largest motion of a held pad's joint centre
-  double end_time_s = 0.0;
-  Eigen::VectorXd final_state;
-  integ::IntegratorSummary solver;
-};
-
 LanderRunResult SimulateLander(const LanderModel& model, const rft::Terrain& terrain, const LanderInitialState& initial,
                                const LanderRunOptions& options = {});
-
-// Signed horizontal distance of the lander's centre of mass inside the polygon of the joint
-// centres (positive inside) [m].
-double StabilityMargin(const LanderModel& model, const StateLayout& layout, const Eigen::Ref<const Eigen::VectorXd>& y);
 
 }  // namespace touchdown::lander
