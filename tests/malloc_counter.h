@@ -9,12 +9,21 @@
 #include <atomic>
 #include <cstdlib>
 
+// AddressSanitizer: GCC defines __SANITIZE_ADDRESS__, clang answers __has_feature.
+#if defined(__SANITIZE_ADDRESS__)
+#define TOUCHDOWN_TESTS_UNDER_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define TOUCHDOWN_TESTS_UNDER_ASAN 1
+#endif
+#endif
+
 namespace touchdown::testing_alloc {
 inline std::atomic<bool> counting{false};
 inline std::atomic<long> allocations{0};
 }  // namespace touchdown::testing_alloc
 
-#if !defined(__SANITIZE_ADDRESS__)
+#if !defined(TOUCHDOWN_TESTS_UNDER_ASAN)
 extern "C" void* __libc_malloc(std::size_t size);
 extern "C" void* malloc(std::size_t size) {
   if (touchdown::testing_alloc::counting.load()) ++touchdown::testing_alloc::allocations;
@@ -24,7 +33,7 @@ extern "C" void* malloc(std::size_t size) {
 
 namespace touchdown::testing_alloc {
 
-#if !defined(__SANITIZE_ADDRESS__)
+#if !defined(TOUCHDOWN_TESTS_UNDER_ASAN)
 inline constexpr bool kCountsMalloc = true;
 #else
 inline constexpr bool kCountsMalloc = false;
