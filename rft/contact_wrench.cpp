@@ -181,12 +181,13 @@ template <bool kPower, bool kAreaMoment>
 
 namespace {
 
-// The stresses of one normal class in translation (the same for every element with that normal),
-// cached per class by ContactWrenchImpl.
+// The stresses of one normal class in translation (the same for every element with that normal):
+// the current run's, and cached per class (SurfaceElements::normal_class).
 struct ClassStress {
-  double nz;
-  bool leads, dynamic, compaction;
-  Eigen::Vector3d sigma, sigma_dyn, sigma_comp;
+  double nz = 0.0;  // z of the normal in W (footprint)
+  bool leads = false, dynamic = false, compaction = false;
+  Eigen::Vector3d sigma = Eigen::Vector3d::Zero(), sigma_dyn = Eigen::Vector3d::Zero(),
+                  sigma_comp = Eigen::Vector3d::Zero();
 };
 
 [[gnu::always_inline]] inline bool IsZero(const Eigen::Vector3d& a) {
@@ -199,24 +200,28 @@ struct ClassStress {
 template <bool kPadTerms>
 [[gnu::always_inline]] inline void StressOfNormal(const StressLaw3D& law, const PadLevelTerms& pad_terms,
                                                   bool compaction, const Eigen::Vector3d& n_W,
-                                                  const Eigen::Vector3d& v_W, double& nz, bool& leads, bool& dynamic,
-                                                  bool& has_compaction, Eigen::Vector3d& sigma,
-                                                  Eigen::Vector3d& sigma_dyn, Eigen::Vector3d& sigma_comp) {
-  nz = n_W.z();
+                                                  const Eigen::Vector3d& v_W, ClassStress& s) {
+  s.nz = n_W.z();
   const double speed2 = v_W.squaredNorm();
   const double weight = speed2 > 0.0 ? LeadWeight(n_W.dot(v_W) / std::sqrt(speed2)) : 0.0;
-  leads = weight > 0.0;
-  if (!leads) return;
-  sigma = weight * law.StressPerDepth(n_W, v_W);
-  sigma_dyn = weight * law.DynamicStress(n_W, v_W);
-  dynamic = !IsZero(sigma_dyn);
+  s.leads = weight > 0.0;
+  if (!s.leads) return;
+  s.sigma = weight * law.StressPerDepth(n_W, v_W);
+  s.sigma_dyn = weight * law.DynamicStress(n_W, v_W);
+  s.dynamic = !IsZero(s.sigma_dyn);
   if (kPadTerms && compaction) {
-    sigma_comp = weight * pad_terms.CompactionStress(n_W, v_W);
-    has_compaction = !IsZero(sigma_comp);
+    s.sigma_comp = weight * pad_terms.CompactionStress(n_W, v_W);
+    s.compaction = !IsZero(s.sigma_comp);
   }
 }
 
-}  // namespace
+// A leading element of a rotating pad waiting for its stress: its weight and depth / area
+// integrals (moments in B).
+struct RotatingElement {
+  double weight, depth_integral, area;
+  Vec depth_moment, area_moment;
+};
+using RotatingBatch = std::array<RotatingElement, StressBatch::kCapacity>;
 
 // Where the stress law is evaluated. Each submerged element gets one stress per unit depth,
 // evaluated with the velocity at the depth-weighted centroid r_c = int d r dA / int d dA of its
@@ -233,292 +238,319 @@ template <bool kPadTerms>
 // alone. Consecutive elements with equal normals (to kSameNormal: a flat bottom, a planar facet
 // split into many triangles) form a run: the law is called once per run and only the run's depth
 // integral and first moment are summed (the result is the same sum, grouped differently).
+// Rotating pads: each element has its own velocity; leading elements are buffered and their
+// stresses evaluated in batches of StressBatch::kCapacity.
 //
 // Pad-level terms (rft/pad_level_terms.h): kPower selects the depth law's exact z^p
 // integration (p = 1 keeps the linear path, compiled separately, so the linear law runs exactly
 // as without it); kPadTerms compiles in the penetration, compaction and footprint bookkeeping
 // (off without them: the plain contact pays nothing for it); `compaction` sums the compaction
-// stress's area integrals apart and scales them by exp(-z_pad / d_c) at the end; `footprint` sums the projected downward-facing area and its rate.
-namespace {
+// stress's area integrals apart and scales them by exp(-z_pad / d_c) at the end; `footprint` sums
+// the projected downward-facing area and its rate.
+//
+// Every member function is always inlined into ContactWrenchImpl: the sums then compile to the
+// same operations as one loop body (GCC fuses multiply-adds across inlined calls, so a call
+// boundary would move results by rounding).
 template <bool kPower, bool kPadTerms>
-ContactWrench ContactWrenchImpl(const SurfaceElements& elements, const PadKinematics& kinematics,
-                                const GroundSurface& ground, const StressLaw3D& law, const PadLevelTerms& pad_terms,
-                                bool compaction, bool footprint) {
-  ContactWrench out;
-  const int count = elements.size();
-  if (count == 0) return out;
-  const DepthLaw depth_law = pad_terms.depth;
-  const double exponent = depth_law.exponent;
-  const double depth_scale = kPower ? std::pow(depth_law.reference_m, 1.0 - exponent) : 1.0;
-
-  const Eigen::Matrix3d& R = kinematics.R_WB;
-  const Eigen::Vector3d& p_WB = kinematics.p_WB;
-
-  // Over a plane, depth is affine in position, so it is computed in B without transforming
-  // vertices: depth(p_B) = h0 + g . (p_WB + R p_B) = depth0 + g_B . p_B with g = (sx, sy, -1).
-  const auto* plane = dynamic_cast<const PlaneGround*>(&ground);
-  double depth0 = 0.0;
-  Eigen::Vector3d g_B = Eigen::Vector3d::Zero();
-  if (plane != nullptr) {
-    const Eigen::Vector3d g_W(plane->slope_x(), plane->slope_y(), -1.0);
-    depth0 = plane->height_at_origin_m() + g_W.dot(p_WB);
-    g_B = R.transpose() * g_W;
+class WrenchSum {
+ public:
+  [[gnu::always_inline]] WrenchSum(const SurfaceElements& elements, const PadKinematics& kinematics,
+                                   const GroundSurface& ground, const StressLaw3D& law,
+                                   const PadLevelTerms& pad_terms, bool compaction, bool footprint,
+                                   StressBatch& batch, RotatingBatch& rotating)
+      : elements_(elements),
+        kinematics_(kinematics),
+        ground_(ground),
+        law_(law),
+        pad_terms_(pad_terms),
+        compaction_(compaction),
+        footprint_(footprint),
+        batch_(batch),
+        rotating_(rotating),
+        plane_(dynamic_cast<const PlaneGround*>(&ground)),
+        rotate_(kinematics.R_WB),
+        exponent_(pad_terms.depth.exponent),
+        depth_scale_(kPower ? std::pow(pad_terms.depth.reference_m, 1.0 - exponent_) : 1.0),
+        spinning_(IsSpinning(elements, kinematics)),
+        cull_(elements.HasBounds() && plane_ != nullptr),
+        classes_(elements.HasBounds() && !spinning_ && elements.class_normal_B.cols() > 0),
+        dynamic_terms_(law.has_dynamic_stress()),
+        area_terms_(dynamic_terms_ || (kPadTerms && compaction)) {
+    if (plane_ != nullptr) depth_ = PlaneDepthInB::Of(*plane_, kinematics);
+    const Eigen::Matrix3d& R = kinematics.R_WB;
+    const Eigen::Vector3d u0_B = R.transpose() * kinematics.v_WB_W, w0_B = R.transpose() * kinematics.w_WB_W;
+    u0b_ = {u0_B.x(), u0_B.y(), u0_B.z()};
+    w0b_ = {w0_B.x(), w0_B.y(), w0_B.z()};
+    // Rate of every depth under the translation alone: g . v0 (g = (sx, sy, -1) over a plane; the
+    // vertical rate on any other ground).
+    g_W_ = plane_ != nullptr ? Eigen::Vector3d(plane_->slope_x(), plane_->slope_y(), -1.0)
+                             : Eigen::Vector3d(0.0, 0.0, -1.0);
+    depth_rate0_ = g_W_.dot(kinematics.v_WB_W);
+    if (classes_) class_done_.fill(false);
   }
 
-  const double* p0 = elements.p0_B.data();
-  const double* p1 = elements.p1_B.data();
-  const double* p2 = elements.p2_B.data();
-  const double* nb = elements.n_B.data();
-  const double* areas = elements.area_m2.data();
-  // Scalars rather than Eigen 3x3 products in the loop: it keeps everything in registers.
-  const double r00 = R(0, 0), r01 = R(0, 1), r02 = R(0, 2), r10 = R(1, 0), r11 = R(1, 1), r12 = R(1, 2),
-               r20 = R(2, 0), r21 = R(2, 1), r22 = R(2, 2);
-  auto rotate = [&](const Vec& a) {
-    return Eigen::Vector3d(r00 * a.x + r01 * a.y + r02 * a.z, r10 * a.x + r11 * a.y + r12 * a.z,
-                           r20 * a.x + r21 * a.y + r22 * a.z);
-  };
-  const double gx = g_B.x(), gy = g_B.y(), gz = g_B.z();
-  const Eigen::Vector3d& v0 = kinematics.v_WB_W;
-  const Eigen::Vector3d& w0 = kinematics.w_WB_W;
-  const Eigen::Vector3d u0_B = R.transpose() * v0, w0_B = R.transpose() * w0;  // for the leading boundary
+  // Over a plane, a block whose box is wholly above the ground is skipped (see kCullMargin).
+  [[gnu::always_inline]] bool BlockAboveGround(int b) const { return cull_ && depth_.BlockAbove(elements_, b); }
+
+  // Element e's vertices (in B) and their depths; false when none is submerged.
+  [[gnu::always_inline]] bool Submerges(int e, Vec p[3], double d[3]) const {
+    const double* p0 = elements_.p0_B.data();
+    const double* p1 = elements_.p1_B.data();
+    const double* p2 = elements_.p2_B.data();
+    p[0] = Load(p0 + 3 * e), p[1] = Load(p1 + 3 * e), p[2] = Load(p2 + 3 * e);
+    if (plane_ != nullptr) {
+      for (int k = 0; k < 3; ++k) d[k] = depth_.At(p[k]);
+    } else {
+      for (int k = 0; k < 3; ++k) d[k] = ground_.Depth(kinematics_.p_WB + rotate_(p[k]));
+    }
+    return !(d[0] <= 0.0 && d[1] <= 0.0 && d[2] <= 0.0);
+  }
+
+  [[gnu::always_inline]] void Add(int e, const double d[3], const Vec p[3]) {
+    if constexpr (kPadTerms) {
+      for (int k = 0; k < 3; ++k)
+        if (d[k] > penetration_) penetration_ = d[k], deepest_B_ = p[k];
+    }
+    const Vec n_B = Load(elements_.n_B.data() + 3 * e);
+    if (spinning_)
+      AddRotating(e, d, p, n_B);
+    else
+      AddTranslating(e, d, p, n_B);
+  }
+
+  [[gnu::always_inline]] ContactWrench Finish() {
+    if (batch_.count > 0) DrainRotating();
+    // Moments of the rotating elements: sum (R m_B) x sigma = eps_ijk (R S)_jk, S = sum m_B sigma^T.
+    {
+      const Eigen::Matrix3d P = kinematics_.R_WB * depth_moment_stress_;
+      moment_ += Eigen::Vector3d(P(1, 2) - P(2, 1), P(2, 0) - P(0, 2), P(0, 1) - P(1, 0));
+    }
+    FlushRun();
+    if (kPadTerms && compaction_) {
+      const double decay = std::exp(-penetration_ / pad_terms_.compaction_depth_m);
+      force_ += decay * compaction_force_;
+      moment_ += decay * compaction_moment_;
+    }
+    ContactWrench out;
+    out.force_W = force_;
+    out.moment_W = moment_;
+    out.submerged_area_m2 = submerged_area_;
+    out.leading_elements = leading_;
+    out.penetration_m = penetration_;
+    if (footprint_) {
+      out.footprint_area_m2 = footprint_area_;
+      out.footprint_area_rate_m2_s = footprint_rate_;
+      out.penetration_rate_m_s =
+          penetration_ > 0.0 ? depth_rate0_ + g_W_.dot(kinematics_.w_WB_W.cross(rotate_(deepest_B_))) : 0.0;
+    }
+    return out;
+  }
+
+ private:
+  // Translation: the element joins the current run of equal normals or opens a new one.
+  [[gnu::always_inline]] void AddTranslating(int e, const double d[3], const Vec p[3], const Vec& n_B) {
+    if (!run_open_ || std::abs(n_B.x - run_n_.x) + std::abs(n_B.y - run_n_.y) + std::abs(n_B.z - run_n_.z) > kSameNormal)
+      OpenRun(e, n_B);
+    const double area = elements_.area_m2[e];
+    const bool footprint_face = kPadTerms && footprint_ && run_.nz < 0.0;
+    if ((run_.dynamic || run_.compaction) && run_.leads) {
+      const Submerged s = Clip<kPower, true>(area, d, p, exponent_, depth_scale_);
+      submerged_area_ += s.area;
+      if (footprint_face)
+        footprint_area_ -= run_.nz * s.area, footprint_rate_ -= run_.nz * s.area_rate * depth_rate0_;
+      if (!(s.depth_integral > 0.0)) return;
+      ++leading_;
+      run_depth_ += s.depth_integral;
+      run_depth_moment_ = run_depth_moment_ + s.depth_moment;
+      run_area_ += s.area;
+      run_area_moment_ = run_area_moment_ + s.area_moment;
+      return;
+    }
+    if (!run_.leads && !footprint_face) {
+      submerged_area_ += SubmergedArea(area, d);  // a trailing face: its area is all it adds
+      return;
+    }
+    const Submerged s = Clip<kPower, false>(area, d, p, exponent_, depth_scale_);
+    submerged_area_ += s.area;
+    if (footprint_face)
+      footprint_area_ -= run_.nz * s.area, footprint_rate_ -= run_.nz * s.area_rate * depth_rate0_;
+    if (!run_.leads || !(s.depth_integral > 0.0)) return;
+    ++leading_;
+    run_depth_ += s.depth_integral;
+    run_depth_moment_ = run_depth_moment_ + s.depth_moment;
+  }
+
+  // A new run of normal n_B: its stresses from the class cache or the law.
+  [[gnu::always_inline]] void OpenRun(int e, const Vec& n_B) {
+    FlushRun();
+    run_open_ = true;
+    run_n_ = n_B;
+    const int cls = classes_ ? elements_.normal_class[e] : -1;
+    if (cls >= 0 && class_done_[cls]) {  // this normal's stresses are known from an earlier run
+      run_ = class_stress_[cls];
+      return;
+    }
+    const Eigen::Vector3d n_W = cls >= 0 ? rotate_(Load(elements_.class_normal_B.data() + 3 * cls)) : rotate_(n_B);
+    StressOfNormal<kPadTerms>(law_, pad_terms_, compaction_, n_W, kinematics_.v_WB_W, run_);
+    if (cls >= 0) {
+      class_done_[cls] = true;
+      class_stress_[cls] = run_;
+    }
+  }
+
+  // The current run's stresses times its summed integrals, added to the wrench.
+  [[gnu::always_inline]] void FlushRun() {
+    if (!run_open_ || !run_.leads) return;
+    force_ += run_depth_ * run_.sigma;
+    moment_ += rotate_(run_depth_moment_).cross(run_.sigma);
+    if (run_.dynamic) {
+      force_ += run_area_ * run_.sigma_dyn;
+      moment_ += rotate_(run_area_moment_).cross(run_.sigma_dyn);
+    }
+    if (run_.compaction) {
+      compaction_force_ += run_area_ * run_.sigma_comp;
+      compaction_moment_ += rotate_(run_area_moment_).cross(run_.sigma_comp);
+    }
+    run_depth_ = run_area_ = 0.0;
+    run_depth_moment_ = run_area_moment_ = Vec{0.0, 0.0, 0.0};
+  }
+
+  // Rotation: worked in B up to the law; a leading element joins the batch.
+  [[gnu::always_inline]] void AddRotating(int e, const double d[3], const Vec p[3], const Vec& n_B) {
+    const double area = elements_.area_m2[e];
+    const Submerged s = Clip<kPower, false>(area, d, p, exponent_, depth_scale_);
+    submerged_area_ += s.area;
+    if (kPadTerms && footprint_) AddRotatingFootprint(area, d, p, n_B, s);
+    if (!(s.depth_integral > 0.0)) return;
+    const LeadingPart lead = LeadingPartOf(s, area, d, p, n_B, u0b_, w0b_, /*clip_leading=*/!kPower);
+    if (!(lead.weight > 0.0)) return;
+    ++leading_;
+    int& pending = batch_.count;
+    RotatingElement& r = rotating_[pending];
+    const Eigen::Vector3d n_W = rotate_(n_B), v_W = rotate_(lead.v);
+    batch_.nx[pending] = n_W.x();
+    batch_.ny[pending] = n_W.y();
+    batch_.nz[pending] = n_W.z();
+    batch_.vx[pending] = v_W.x();
+    batch_.vy[pending] = v_W.y();
+    batch_.vz[pending] = v_W.z();
+    r.weight = lead.weight;
+    r.depth_integral = lead.part.depth_integral;
+    r.depth_moment = lead.part.depth_moment;
+    if (area_terms_) {
+      // Not proportional to depth: integrated over the submerged area, acting at its centroid.
+      const Submerged sa = lead.straddles ? lead.part : ClipAndIntegrate<true>(area, d, p);
+      r.area = sa.area;
+      r.area_moment = sa.area_moment;
+    }
+    if (++pending == StressBatch::kCapacity) DrainRotating();
+  }
+
+  // d/dt (-n_z a) of a downward-facing element with n rotating (dn/dt = w x n) and each vertex
+  // depth at its own rate.
+  [[gnu::always_inline]] void AddRotatingFootprint(double area, const double d[3], const Vec p[3], const Vec& n_B,
+                                                   const Submerged& s) {
+    const Eigen::Vector3d n_W = rotate_(n_B);
+    if (!(n_W.z() < 0.0)) return;
+    const Eigen::Vector3d& w0 = kinematics_.w_WB_W;
+    double grad[3];
+    ClippedAreaGradient(area, d, grad);
+    double area_dot = 0.0;
+    for (int k = 0; k < 3; ++k)
+      if (grad[k] != 0.0) area_dot += grad[k] * (depth_rate0_ + g_W_.dot(w0.cross(rotate_(p[k]))));
+    footprint_area_ -= n_W.z() * s.area;
+    footprint_rate_ -= n_W.z() * area_dot + w0.cross(n_W).z() * s.area;
+  }
+
+  // The batch's stresses from the law, times each element's integrals, added to the wrench.
+  [[gnu::always_inline]] void DrainRotating() {
+    law_.StressPerDepthBatch(batch_);
+    for (int i = 0; i < batch_.count; ++i) {
+      const RotatingElement& r = rotating_[i];
+      const Eigen::Vector3d sigma = r.weight * Eigen::Vector3d(batch_.sx[i], batch_.sy[i], batch_.sz[i]);
+      force_ += r.depth_integral * sigma;
+      depth_moment_stress_ +=
+          Eigen::Vector3d(r.depth_moment.x, r.depth_moment.y, r.depth_moment.z) * sigma.transpose();
+      if (!area_terms_) continue;
+      const Eigen::Vector3d n_W(batch_.nx[i], batch_.ny[i], batch_.nz[i]), v_W(batch_.vx[i], batch_.vy[i], batch_.vz[i]);
+      const Eigen::Vector3d r_W = rotate_(r.area_moment);
+      if (dynamic_terms_) {
+        const Eigen::Vector3d sigma_dyn = r.weight * law_.DynamicStress(n_W, v_W);
+        force_ += r.area * sigma_dyn;
+        moment_ += r_W.cross(sigma_dyn);
+      }
+      if (kPadTerms && compaction_) {
+        const Eigen::Vector3d sigma_comp = r.weight * pad_terms_.CompactionStress(n_W, v_W);
+        compaction_force_ += r.area * sigma_comp;
+        compaction_moment_ += r_W.cross(sigma_comp);
+      }
+    }
+    batch_.count = 0;
+  }
+
+  const SurfaceElements& elements_;
+  const PadKinematics& kinematics_;
+  const GroundSurface& ground_;
+  const StressLaw3D& law_;
+  const PadLevelTerms& pad_terms_;
+  const bool compaction_, footprint_;
+  StressBatch& batch_;
+  RotatingBatch& rotating_;
+  const PlaneGround* const plane_;
+  const RotationToW rotate_;  // scalars rather than Eigen 3x3 products: kept in registers
+  const double exponent_, depth_scale_;
   // Spin so slow that w x r changes no element's velocity by more than kNegligibleSpin |v| counts
   // as translation (the run path, several times cheaper): a level pad dropped straight down picks
   // up an angular velocity of order 1e-16 rad/s from rounding in its moment, and the stress,
   // Lipschitz in the velocity with constant ~ 1 / kTrailingBand, then moves by < 1e-10.
-  const bool bounded = elements.HasBounds();
-  const bool spinning = IsSpinning(elements, kinematics);
-  // Over a plane, a block whose box is wholly above the ground is skipped (see kCullMargin).
-  const bool cull = bounded && plane != nullptr;
-  auto block_above_ground = [&](int b) {
-    const double* lo = elements.block_min_B.data() + 3 * b;
-    const double* hi = elements.block_max_B.data() + 3 * b;
-    const double deepest = depth0 + (gx > 0.0 ? gx * hi[0] : gx * lo[0]) + (gy > 0.0 ? gy * hi[1] : gy * lo[1]) +
-                           (gz > 0.0 ? gz * hi[2] : gz * lo[2]);
-    return deepest < -kCullMargin;
-  };
+  const bool spinning_, cull_, classes_, dynamic_terms_, area_terms_;
+  PlaneDepthInB depth_;
+  Vec u0b_, w0b_;  // v and w in B (the leading boundary)
+  Eigen::Vector3d g_W_;
+  double depth_rate0_ = 0.0;
 
-  Eigen::Vector3d force = Eigen::Vector3d::Zero(), moment = Eigen::Vector3d::Zero();
-  double submerged_area = 0.0;
-  int leading = 0;
-
-
-  // The current run (pure translation): its normal, whether it leads, its stresses, and the
-  // sums of depth integral / depth moment / area / area moment (in B) of its submerged parts.
-  bool run_open = false, run_leads = false, run_dynamic = false, run_compaction = false;
-  Vec run_n{0.0, 0.0, 0.0};
-  double run_nz = 0.0;  // z of the run's normal in W (footprint)
-  Eigen::Vector3d run_sigma = Eigen::Vector3d::Zero(), run_sigma_dyn = Eigen::Vector3d::Zero(),
-                  run_sigma_comp = Eigen::Vector3d::Zero();
+  Eigen::Vector3d force_ = Eigen::Vector3d::Zero(), moment_ = Eigen::Vector3d::Zero();
+  double submerged_area_ = 0.0;
+  int leading_ = 0;
   // Compaction transient (area integrals, scaled at the end), penetration and footprint.
-  Eigen::Vector3d compaction_force = Eigen::Vector3d::Zero(), compaction_moment = Eigen::Vector3d::Zero();
-  double penetration = 0.0, footprint_area = 0.0, footprint_rate = 0.0;
-  Vec deepest_B{0.0, 0.0, 0.0};  // the deepest submerged vertex (penetration rate)
-  // Rate of every depth under the translation alone: g . v0 (g = (sx, sy, -1) over a plane; the
-  // vertical rate on any other ground).
-  const Eigen::Vector3d g_W = plane != nullptr ? Eigen::Vector3d(plane->slope_x(), plane->slope_y(), -1.0)
-                                               : Eigen::Vector3d(0.0, 0.0, -1.0);
-  const double depth_rate0 = g_W.dot(kinematics.v_WB_W);
-  double run_depth = 0.0, run_area = 0.0;
-  Vec run_depth_moment{0.0, 0.0, 0.0}, run_area_moment{0.0, 0.0, 0.0};
-  auto flush = [&]() {
-    if (!run_open || !run_leads) return;
-    force += run_depth * run_sigma;
-    moment += rotate(run_depth_moment).cross(run_sigma);
-    if (run_dynamic) {
-      force += run_area * run_sigma_dyn;
-      moment += rotate(run_area_moment).cross(run_sigma_dyn);
-    }
-    if (run_compaction) {
-      compaction_force += run_area * run_sigma_comp;
-      compaction_moment += rotate(run_area_moment).cross(run_sigma_comp);
-    }
-    run_depth = run_area = 0.0;
-    run_depth_moment = run_area_moment = Vec{0.0, 0.0, 0.0};
-  };
+  Eigen::Vector3d compaction_force_ = Eigen::Vector3d::Zero(), compaction_moment_ = Eigen::Vector3d::Zero();
+  double penetration_ = 0.0, footprint_area_ = 0.0, footprint_rate_ = 0.0;
+  Vec deepest_B_{0.0, 0.0, 0.0};  // the deepest submerged vertex (penetration rate)
 
-  // Stresses per normal class in translation (SurfaceElements::normal_class), on the stack.
-  const bool classes = bounded && !spinning && elements.class_normal_B.cols() > 0;
-  std::array<bool, SurfaceElements::kMaxNormalClasses> class_done;
-  std::array<ClassStress, SurfaceElements::kMaxNormalClasses> class_stress;
-  if (classes) class_done.fill(false);
+  // The current run (translation): its normal and stresses, and the sums of depth integral /
+  // depth moment / area / area moment (in B) of its submerged parts.
+  bool run_open_ = false;
+  Vec run_n_{0.0, 0.0, 0.0};
+  ClassStress run_;
+  double run_depth_ = 0.0, run_area_ = 0.0;
+  Vec run_depth_moment_{0.0, 0.0, 0.0}, run_area_moment_{0.0, 0.0, 0.0};
+  std::array<bool, SurfaceElements::kMaxNormalClasses> class_done_;
+  std::array<ClassStress, SurfaceElements::kMaxNormalClasses> class_stress_;
 
-  // Rotating pads: a batch of leading elements waiting for their stresses (on the stack).
-  struct RotatingElement {
-    double weight, depth_integral, area;
-    Vec depth_moment, area_moment;  // in B
-  };
-  constexpr int kRotatingBatch = StressBatch::kCapacity;
-  std::array<RotatingElement, kRotatingBatch> rotating;
+  // Rotation: sum of m_B sigma_W^T over the batches drained (the moment, formed once in Finish).
+  Eigen::Matrix3d depth_moment_stress_ = Eigen::Matrix3d::Zero();
+};
+
+template <bool kPower, bool kPadTerms>
+ContactWrench ContactWrenchImpl(const SurfaceElements& elements, const PadKinematics& kinematics,
+                                const GroundSurface& ground, const StressLaw3D& law, const PadLevelTerms& pad_terms,
+                                bool compaction, bool footprint) {
+  if (elements.size() == 0) return {};
   StressBatch batch;
-  int& pending = batch.count;
-  const Vec u0b{u0_B.x(), u0_B.y(), u0_B.z()}, w0b{w0_B.x(), w0_B.y(), w0_B.z()};
-  const bool dynamic_terms = law.has_dynamic_stress(), area_terms = dynamic_terms || (kPadTerms && compaction);
-  Eigen::Matrix3d depth_moment_stress = Eigen::Matrix3d::Zero();  // sum of m_B sigma_W^T
-  auto drain_rotating = [&]() {
-    law.StressPerDepthBatch(batch);
-    for (int i = 0; i < pending; ++i) {
-      const RotatingElement& r = rotating[i];
-      const Eigen::Vector3d sigma = r.weight * Eigen::Vector3d(batch.sx[i], batch.sy[i], batch.sz[i]);
-      force += r.depth_integral * sigma;
-      depth_moment_stress += Eigen::Vector3d(r.depth_moment.x, r.depth_moment.y, r.depth_moment.z) * sigma.transpose();
-      if (!area_terms) continue;
-      const Eigen::Vector3d n_W(batch.nx[i], batch.ny[i], batch.nz[i]), v_W(batch.vx[i], batch.vy[i], batch.vz[i]);
-      const Eigen::Vector3d r_W = rotate(r.area_moment);
-      if (dynamic_terms) {
-        const Eigen::Vector3d sigma_dyn = r.weight * law.DynamicStress(n_W, v_W);
-        force += r.area * sigma_dyn;
-        moment += r_W.cross(sigma_dyn);
-      }
-      if (kPadTerms && compaction) {
-        const Eigen::Vector3d sigma_comp = r.weight * pad_terms.CompactionStress(n_W, v_W);
-        compaction_force += r.area * sigma_comp;
-        compaction_moment += r_W.cross(sigma_comp);
-      }
-    }
-    pending = 0;
-  };
-
+  RotatingBatch rotating;
+  WrenchSum<kPower, kPadTerms> sum(elements, kinematics, ground, law, pad_terms, compaction, footprint, batch,
+                                   rotating);
+  const int count = elements.size();
   for (int e = 0; e < count; ++e) {
-    if (cull && e % SurfaceElements::kBlockSize == 0 && block_above_ground(e / SurfaceElements::kBlockSize)) {
+    if (e % SurfaceElements::kBlockSize == 0 && sum.BlockAboveGround(e / SurfaceElements::kBlockSize)) {
       e += SurfaceElements::kBlockSize - 1;
       continue;
     }
-    const Vec p[3] = {Load(p0 + 3 * e), Load(p1 + 3 * e), Load(p2 + 3 * e)};
+    Vec p[3];
     double d[3];
-    if (plane != nullptr) {
-      for (int k = 0; k < 3; ++k) d[k] = depth0 + gx * p[k].x + gy * p[k].y + gz * p[k].z;
-    } else {
-      for (int k = 0; k < 3; ++k) d[k] = ground.Depth(p_WB + rotate(p[k]));
-    }
-    if (d[0] <= 0.0 && d[1] <= 0.0 && d[2] <= 0.0) continue;
-    if constexpr (kPadTerms) {
-      for (int k = 0; k < 3; ++k)
-        if (d[k] > penetration) penetration = d[k], deepest_B = p[k];
-    }
-
-    const Vec n_B = Load(nb + 3 * e);
-    if (!spinning) {
-      if (!run_open ||
-          std::abs(n_B.x - run_n.x) + std::abs(n_B.y - run_n.y) + std::abs(n_B.z - run_n.z) > kSameNormal) {
-        flush();
-        run_open = true;
-        run_n = n_B;
-        const int cls = classes ? elements.normal_class[e] : -1;
-        if (cls >= 0 && class_done[cls]) {  // this normal's stresses are known from an earlier run
-          const ClassStress& c = class_stress[cls];
-          run_nz = c.nz;
-          run_leads = c.leads;
-          run_sigma = c.sigma;
-          run_sigma_dyn = c.sigma_dyn;
-          run_dynamic = c.dynamic;
-          run_sigma_comp = c.sigma_comp;
-          run_compaction = c.compaction;
-        } else {
-          const Eigen::Vector3d n_W = cls >= 0 ? rotate(Load(elements.class_normal_B.data() + 3 * cls)) : rotate(n_B);
-          StressOfNormal<kPadTerms>(law, pad_terms, compaction, n_W, v0, run_nz, run_leads, run_dynamic,
-                                    run_compaction, run_sigma, run_sigma_dyn, run_sigma_comp);
-          if (cls >= 0) {
-            class_done[cls] = true;
-            class_stress[cls] = {run_nz, run_leads, run_dynamic, run_compaction, run_sigma, run_sigma_dyn, run_sigma_comp};
-          }
-        }
-      }
-      if ((run_dynamic || run_compaction) && run_leads) {
-        const Submerged s = Clip<kPower, true>(areas[e], d, p, exponent, depth_scale);
-        submerged_area += s.area;
-        if (kPadTerms && footprint && run_nz < 0.0)
-          footprint_area -= run_nz * s.area, footprint_rate -= run_nz * s.area_rate * depth_rate0;
-        if (!(s.depth_integral > 0.0)) continue;
-        ++leading;
-        run_depth += s.depth_integral;
-        run_depth_moment = run_depth_moment + s.depth_moment;
-        run_area += s.area;
-        run_area_moment = run_area_moment + s.area_moment;
-      } else {
-        if (!run_leads && !(kPadTerms && footprint && run_nz < 0.0)) {
-          submerged_area += SubmergedArea(areas[e], d);  // a trailing face: its area is all it adds
-          continue;
-        }
-        const Submerged s = Clip<kPower, false>(areas[e], d, p, exponent, depth_scale);
-        submerged_area += s.area;
-        if (kPadTerms && footprint && run_nz < 0.0)
-          footprint_area -= run_nz * s.area, footprint_rate -= run_nz * s.area_rate * depth_rate0;
-        if (!run_leads || !(s.depth_integral > 0.0)) continue;
-        ++leading;
-        run_depth += s.depth_integral;
-        run_depth_moment = run_depth_moment + s.depth_moment;
-      }
-      continue;
-    }
-
-    // Rotating pad: each element has its own velocity. Worked in B up to the law; the leading
-    // elements are buffered and their stresses evaluated in batches (drain_rotating).
-    const Submerged s = Clip<kPower, false>(areas[e], d, p, exponent, depth_scale);
-    submerged_area += s.area;
-    if (kPadTerms && footprint) {
-      const Eigen::Vector3d n_W = rotate(n_B);
-      if (n_W.z() < 0.0) {
-        // d/dt (-n_z a) with n rotating (dn/dt = w x n) and each vertex depth at its own rate.
-        double grad[3];
-        ClippedAreaGradient(areas[e], d, grad);
-        double area_dot = 0.0;
-        for (int k = 0; k < 3; ++k)
-          if (grad[k] != 0.0) area_dot += grad[k] * (depth_rate0 + g_W.dot(w0.cross(rotate(p[k]))));
-        footprint_area -= n_W.z() * s.area;
-        footprint_rate -= n_W.z() * area_dot + w0.cross(n_W).z() * s.area;
-      }
-    }
-    if (!(s.depth_integral > 0.0)) continue;
-    const LeadingPart lead = LeadingPartOf(s, areas[e], d, p, n_B, u0b, w0b, /*clip_leading=*/!kPower);
-    const double weight = lead.weight;
-    if (!(weight > 0.0)) continue;
-    const double depth_integral = lead.part.depth_integral;
-    const Vec depth_moment = lead.part.depth_moment, v_B = lead.v;
-    const bool straddles = lead.straddles;
-    const Submerged& leading_part = lead.part;
-    ++leading;
-    RotatingElement& r = rotating[pending];
-    const Eigen::Vector3d n_W = rotate(n_B), v_W = rotate(v_B);
-    batch.nx[pending] = n_W.x();
-    batch.ny[pending] = n_W.y();
-    batch.nz[pending] = n_W.z();
-    batch.vx[pending] = v_W.x();
-    batch.vy[pending] = v_W.y();
-    batch.vz[pending] = v_W.z();
-    r.weight = weight;
-    r.depth_integral = depth_integral;
-    r.depth_moment = depth_moment;
-    if (area_terms) {
-      // Not proportional to depth: integrated over the submerged area, acting at its centroid.
-      const Submerged sa = straddles ? leading_part : ClipAndIntegrate<true>(areas[e], d, p);
-      r.area = sa.area;
-      r.area_moment = sa.area_moment;
-    }
-    if (++pending == kRotatingBatch) drain_rotating();
+    if (sum.Submerges(e, p, d)) sum.Add(e, d, p);
   }
-  if (pending > 0) drain_rotating();
-  // Moments of the rotating elements: sum (R m_B) x sigma = eps_ijk (R S)_jk, S = sum m_B sigma^T.
-  {
-    const Eigen::Matrix3d P = R * depth_moment_stress;
-    moment += Eigen::Vector3d(P(1, 2) - P(2, 1), P(2, 0) - P(0, 2), P(0, 1) - P(1, 0));
-  }
-  flush();
-  if (kPadTerms && compaction) {
-    const double decay = std::exp(-penetration / pad_terms.compaction_depth_m);
-    force += decay * compaction_force;
-    moment += decay * compaction_moment;
-  }
-  out.force_W = force;
-  out.moment_W = moment;
-  out.submerged_area_m2 = submerged_area;
-  out.leading_elements = leading;
-  out.penetration_m = penetration;
-  if (footprint) {
-    out.footprint_area_m2 = footprint_area;
-    out.footprint_area_rate_m2_s = footprint_rate;
-    out.penetration_rate_m_s = penetration > 0.0 ? depth_rate0 + g_W.dot(w0.cross(rotate(deepest_B))) : 0.0;
-  }
-  return out;
+  return sum.Finish();
 }
 }  // namespace
 
