@@ -60,8 +60,9 @@ struct ChildRun {
 };
 
 // Runs touchdown with `args` (no shell), stdout and stderr to /dev/null.
-ChildRun RunTouchdown(std::vector<std::string> args) {
-  args.insert(args.begin(), TOUCHDOWN_BINARY);
+ChildRun RunTouchdown(const std::vector<std::string>& arguments) {
+  std::vector<std::string> args{TOUCHDOWN_BINARY};
+  args.insert(args.end(), arguments.begin(), arguments.end());
   const auto start = std::chrono::steady_clock::now();
   const pid_t pid = fork();
   if (pid == 0) {

@@ -9,4 +9,6 @@ targets=("$@")
 [ ${#targets[@]} -gt 0 ] || targets=(touchdown)
 bash "$root/tools/install_deps.sh"
 cmake -S "$root" -B "$root/build" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+start=$SECONDS
 cmake --build "$root/build" --parallel "$(nproc)" --target "${targets[@]}"
+echo "build (${targets[*]}): $((SECONDS - start)) s on $(nproc) cores"

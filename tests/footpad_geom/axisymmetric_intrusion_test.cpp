@@ -12,18 +12,17 @@
 namespace touchdown::geom {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 constexpr double kZeta = 2.0e6;  // N/m^3
 const rft::Li2013Law kLaw;
 
 // alpha_z(pi/2, pi/2) of the generic fit, computed from its coefficients.
-double WallAlpha() { return rft::Li2013Alpha(kPi / 2, kPi / 2).z; }
+double WallAlpha() { return rft::Li2013Alpha(std::numbers::pi / 2, std::numbers::pi / 2).z; }
 
 TEST(FootpadFlat, ForceIsBottomPlusSideWallWhileShallow) {
   const double r = 0.05, h = 0.016;
   const AxisymmetricIntrusion pad(MakeFlatProfile(r, h), kLaw);
   for (double d : {0.0, 1e-4, 0.003, 0.008, 0.016}) {
-    const double closed = kZeta * (kPi * r * r * d + WallAlpha() * kPi * r * d * d);
+    const double closed = kZeta * (std::numbers::pi * r * r * d + WallAlpha() * std::numbers::pi * r * d * d);
     EXPECT_NEAR(pad.VerticalForce(d, kZeta), closed, 1e-12 * closed + 1e-12) << "d " << d;
   }
   // The published coefficient value of the wall term.
@@ -35,7 +34,7 @@ TEST(FootpadFlat, DeeperThanThicknessOnlyTheProfileCarries) {
   const double r = 0.05, h = 0.016;
   const AxisymmetricIntrusion pad(MakeFlatProfile(r, h), kLaw);
   for (double d : {0.017, 0.03, 0.1}) {
-    const double closed = kZeta * (kPi * r * r * d + WallAlpha() * kPi * r * (2 * d * h - h * h));
+    const double closed = kZeta * (std::numbers::pi * r * r * d + WallAlpha() * std::numbers::pi * r * (2 * d * h - h * h));
     EXPECT_NEAR(pad.VerticalForce(d, kZeta), closed, 1e-12 * closed) << "d " << d;
   }
 }
@@ -74,13 +73,13 @@ double QuadratureForce(const std::function<double(double)>& u, const std::functi
     for (int k = 0; k < 3; ++k) {
       const double x = 0.5 * (a + b) + 0.5 * (b - a) * gx[k];
       const double slope = du(x);
-      const double alpha = rft::Li2013Alpha(std::atan(slope), kPi / 2).z;
-      sum += 0.5 * (b - a) * gw[k] * alpha * (d - u(x)) * 2 * kPi * x * std::sqrt(1 + slope * slope);
+      const double alpha = rft::Li2013Alpha(std::atan(slope), std::numbers::pi / 2).z;
+      sum += 0.5 * (b - a) * gw[k] * alpha * (d - u(x)) * 2 * std::numbers::pi * x * std::sqrt(1 + slope * slope);
     }
   }
   // The vertical side wall from u(r) to h at radius r, below the surface where depth > 0.
   const double top = std::min(h, d), bottom = u(r);
-  if (top > bottom) sum += WallAlpha() * 2 * kPi * r * 0.5 * ((d - bottom) * (d - bottom) - (d - top) * (d - top));
+  if (top > bottom) sum += WallAlpha() * 2 * std::numbers::pi * r * 0.5 * ((d - bottom) * (d - bottom) - (d - top) * (d - top));
   return kZeta * sum;
 }
 
@@ -116,7 +115,7 @@ TEST(FootpadSphericalCap, SmallDepthMatchesParaboloidClosedForm) {
   const double R = 0.2;
   const AxisymmetricIntrusion pad(MakeSphericalCapProfile(0.05, 0.016, R, 2000), kLaw);
   const double d = 1e-4;
-  EXPECT_NEAR(pad.VerticalForce(d, kZeta), kZeta * kPi * R * d * d, 2e-3 * kZeta * kPi * R * d * d);
+  EXPECT_NEAR(pad.VerticalForce(d, kZeta), kZeta * std::numbers::pi * R * d * d, 2e-3 * kZeta * std::numbers::pi * R * d * d);
 }
 
 TEST(FootpadCone, ForceGrowsWithCubeOfDepth) {
@@ -128,8 +127,8 @@ TEST(FootpadCone, ForceGrowsWithCubeOfDepth) {
 TEST(FootpadArea, SubmergedAreaOfFlatPad) {
   const double r = 0.05;
   const AxisymmetricIntrusion pad(MakeFlatProfile(r, 0.016), kLaw);
-  EXPECT_NEAR(pad.SubmergedArea(0.005), kPi * r * r + 2 * kPi * r * 0.005, 1e-12);
-  EXPECT_NEAR(pad.SubmergedArea(1e-12), kPi * r * r, 1e-9);  // the bottom just under the surface
+  EXPECT_NEAR(pad.SubmergedArea(0.005), std::numbers::pi * r * r + 2 * std::numbers::pi * r * 0.005, 1e-12);
+  EXPECT_NEAR(pad.SubmergedArea(1e-12), std::numbers::pi * r * r, 1e-9);  // the bottom just under the surface
   EXPECT_EQ(pad.SubmergedArea(0.0), 0.0);
 }
 

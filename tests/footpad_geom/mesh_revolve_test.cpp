@@ -16,7 +16,6 @@
 namespace touchdown::geom {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 constexpr double kR = 0.05, kH = 0.016;  // the paper's pads: 100 mm diameter, 16 mm thick
 
 double Area(const TriangleMesh& m) {
@@ -34,7 +33,7 @@ double MinAngleDeg(const TriangleMesh& m) {
     for (int k = 0; k < 3; ++k) {
       const Eigen::Vector3d a = m.vertices[t[(k + 1) % 3]] - m.vertices[t[k]];
       const Eigen::Vector3d b = m.vertices[t[(k + 2) % 3]] - m.vertices[t[k]];
-      smallest = std::min(smallest, std::acos(std::clamp(a.normalized().dot(b.normalized()), -1.0, 1.0)) * 180 / kPi);
+      smallest = std::min(smallest, std::acos(std::clamp(a.normalized().dot(b.normalized()), -1.0, 1.0)) * 180 / std::numbers::pi);
     }
   return smallest;
 }
@@ -46,21 +45,21 @@ struct ShapeCase {
 };
 
 std::vector<ShapeCase> Shapes() {
-  const double c = 0.004, R = 0.1, half_angle = 80.0 * kPi / 180.0;
+  const double c = 0.004, R = 0.1, half_angle = 80.0 * std::numbers::pi / 180.0;
   const double cap = R - std::sqrt(R * R - kR * kR);           // cap height
   const double cone = kR / std::tan(half_angle);                // cone height
-  const double wall = 2 * kPi * kR;                             // side wall area per unit height
+  const double wall = 2 * std::numbers::pi * kR;                             // side wall area per unit height
   std::vector<ShapeCase> s;
-  s.push_back({"flat", MakeFlatProfile(kR, kH), kPi * kR * kR * kH, 2 * kPi * kR * kR + wall * kH});
+  s.push_back({"flat", MakeFlatProfile(kR, kH), std::numbers::pi * kR * kR * kH, 2 * std::numbers::pi * kR * kR + wall * kH});
   // Chamfer: the cylinder less the ring of triangular section c x c at the rim (Pappus).
   const double ring_centroid = kR - c / 3;
-  s.push_back({"chamfer", MakeChamferProfile(kR, kH, c), kPi * kR * kR * kH - 2 * kPi * ring_centroid * c * c / 2,
-               kPi * (kR - c) * (kR - c) + kPi * (2 * kR - c) * std::sqrt(2.0) * c + wall * (kH - c) + kPi * kR * kR});
+  s.push_back({"chamfer", MakeChamferProfile(kR, kH, c), std::numbers::pi * kR * kR * kH - 2 * std::numbers::pi * ring_centroid * c * c / 2,
+               std::numbers::pi * (kR - c) * (kR - c) + std::numbers::pi * (2 * kR - c) * std::sqrt(2.0) * c + wall * (kH - c) + std::numbers::pi * kR * kR});
   s.push_back({"spherical_cap", MakeSphericalCapProfile(kR, kH, R, 400),
-               kPi * kR * kR * kH - (kPi * R * kR * kR - 2 * kPi / 3 * (R * R * R - std::pow(R * R - kR * kR, 1.5))),
-               2 * kPi * R * cap + wall * (kH - cap) + kPi * kR * kR});
-  s.push_back({"cone", MakeConeProfile(kR, kH, half_angle), kPi * kR * kR * (kH - 2 * cone / 3),
-               kPi * kR * std::hypot(kR, cone) + wall * (kH - cone) + kPi * kR * kR});
+               std::numbers::pi * kR * kR * kH - (std::numbers::pi * R * kR * kR - 2 * std::numbers::pi / 3 * (R * R * R - std::pow(R * R - kR * kR, 1.5))),
+               2 * std::numbers::pi * R * cap + wall * (kH - cap) + std::numbers::pi * kR * kR});
+  s.push_back({"cone", MakeConeProfile(kR, kH, half_angle), std::numbers::pi * kR * kR * (kH - 2 * cone / 3),
+               std::numbers::pi * kR * std::hypot(kR, cone) + wall * (kH - cone) + std::numbers::pi * kR * kR});
   return s;
 }
 
@@ -91,9 +90,9 @@ TEST(RevolvedPads, FlatPadIsTheInscribedPolygonPrism) {
   // The bottom and top are planar triangulations of the rim polygon, so the volume is exact.
   for (int n : {6, 16, 100, 128}) {
     const TriangleMesh mesh = RevolveProfileToMesh(MakeFlatProfile(kR, kH), n);
-    const double polygon = 0.5 * n * kR * kR * std::sin(2 * kPi / n);
+    const double polygon = 0.5 * n * kR * kR * std::sin(2 * std::numbers::pi / n);
     EXPECT_NEAR(Volume(mesh), polygon * kH, 1e-12 * polygon * kH) << n;
-    EXPECT_NEAR(Area(mesh), 2 * polygon + n * 2 * kR * std::sin(kPi / n) * kH, 1e-12) << n;
+    EXPECT_NEAR(Area(mesh), 2 * polygon + n * 2 * kR * std::sin(std::numbers::pi / n) * kH, 1e-12) << n;
   }
 }
 
@@ -106,8 +105,8 @@ TEST(RevolvedPads, AreaAndVolumeConvergeToClosedForms) {
       const double volume_error = std::abs(Volume(mesh) / s.volume - 1);
       const double area_error = std::abs(Area(mesh) / s.area - 1);
       // Inscribed polygon: the error is O(1/n^2), (2 pi / n)^2 / 6 for the disc.
-      EXPECT_LT(volume_error, 1.5 * std::pow(2 * kPi / n, 2) / 6 + 1e-5) << n;
-      EXPECT_LT(area_error, 1.5 * std::pow(2 * kPi / n, 2) / 6 + 1e-5) << n;
+      EXPECT_LT(volume_error, 1.5 * std::pow(2 * std::numbers::pi / n, 2) / 6 + 1e-5) << n;
+      EXPECT_LT(area_error, 1.5 * std::pow(2 * std::numbers::pi / n, 2) / 6 + 1e-5) << n;
       EXPECT_LT(volume_error, previous_volume_error);
       EXPECT_LT(area_error, previous_area_error);
       previous_volume_error = volume_error;
@@ -125,10 +124,10 @@ TEST(RevolvedPads, FineProfilesAreThinnedToTheAngularError) {
     const ProfilePoint a = curved.points[i - 1], b = curved.points[i];
     // Trapezoid of the strip x in [a.x, b.x] between u(x) and h, revolved (exact for a line).
     const double dx = b.x_m - a.x_m, ha = kH - a.u_m, hb = kH - b.u_m;
-    pappus += 2 * kPi * dx * (ha * (2 * a.x_m + b.x_m) + hb * (a.x_m + 2 * b.x_m)) / 6;
+    pappus += 2 * std::numbers::pi * dx * (ha * (2 * a.x_m + b.x_m) + hb * (a.x_m + 2 * b.x_m)) / 6;
   }
   const TriangleMesh mesh = RevolveProfileToMesh(curved, 128);
-  EXPECT_NEAR(Volume(mesh) / pappus, 1.0, 3 * std::pow(2 * kPi / 128, 2) / 6);
+  EXPECT_NEAR(Volume(mesh) / pappus, 1.0, 3 * std::pow(2 * std::numbers::pi / 128, 2) / 6);
   EXPECT_LT(mesh.triangles.size(), 40000u);
 }
 

@@ -14,11 +14,10 @@
 namespace touchdown::rft {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 TEST(RftAgarwal, HorizontalPlateMovingDownGivesXi) {
   // FJS-1 loose (assumed rho = 1540 kg/m^3, phi = 37 deg): xi_n from the paper's scaling.
-  const double xi = AgarwalScalingXi(1540.0, 9.81, std::tan(37.0 * kPi / 180));
+  const double xi = AgarwalScalingXi(1540.0, 9.81, std::tan(37.0 * std::numbers::pi / 180));
   const Agarwal2023Law law(xi, 0.4);
   const SurfaceElements plate =
       testing::MakeBox(Eigen::Vector3d(-0.02, -0.03, 0.0), Eigen::Vector3d(0.02, 0.03, 1e-3), 2);
@@ -59,8 +58,8 @@ TEST(RftAgarwal, UpliftIsResisted) {
 TEST(RftAgarwal, StressOpposesMotionForTypicalLeadingFaces) {
   const Agarwal2023Law law(1.0, 0.4);
   int checked = 0;
-  for (double theta = 0.1; theta < kPi; theta += 0.3)    // normal polar angle from +z
-    for (double phi = 0.0; phi < 2 * kPi; phi += 0.7)    // normal azimuth
+  for (double theta = 0.1; theta < std::numbers::pi; theta += 0.3)    // normal polar angle from +z
+    for (double phi = 0.0; phi < 2 * std::numbers::pi; phi += 0.7)    // normal azimuth
       for (double gv = -1.3; gv <= 1.31; gv += 0.325) {  // velocity elevation
         const Eigen::Vector3d n(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi),
                                 std::cos(theta));

@@ -24,8 +24,7 @@ using testing::MeshBuilder;
 using testing::RotX;
 using testing::RotZ;
 
-constexpr double kPi = std::numbers::pi;
-constexpr double kZeta = 3.48e6;  // N/m^3 (fjs1_lp)
+constexpr double kZetaLp = 3.48e6;  // N/m^3 (fjs1_lp)
 
 // Pose putting the pad's lowest point (the origin of B for revolved pads) at depth d below z = 0.
 PadKinematics Sinking(double depth_m, Eigen::Vector3d v = Eigen::Vector3d(0, 0, -1)) {
@@ -38,7 +37,7 @@ PadKinematics Sinking(double depth_m, Eigen::Vector3d v = Eigen::Vector3d(0, 0, 
 TEST(RftContactWrench, FlatPadVerticalIntrusionMatchesClosedForm) {
   // F = zeta (pi r^2 d + 0.128 pi r d^2): bottom plus the submerged side wall (alpha_z(pi/2, pi/2)).
   const double r = 0.05, h = 0.016;
-  const Li2013TreersLaw law(kZeta);
+  const Li2013TreersLaw law(kZetaLp);
   const PlaneGround ground;
   double previous_error = 1.0;
   for (int sectors : {32, 64, 128, 256}) {
@@ -46,11 +45,11 @@ TEST(RftContactWrench, FlatPadVerticalIntrusionMatchesClosedForm) {
     double worst = 0.0;
     for (double d : {0.002, 0.008, 0.015}) {
       const ContactWrench w = ComputeContactWrench(pad, Sinking(d), ground, law);
-      const double alpha_wall = Li2013Alpha(kPi / 2, kPi / 2).z;
-      const double exact = kZeta * (kPi * r * r * d + alpha_wall * kPi * r * d * d);
+      const double alpha_wall = Li2013Alpha(std::numbers::pi / 2, std::numbers::pi / 2).z;
+      const double exact = kZetaLp * (std::numbers::pi * r * r * d + alpha_wall * std::numbers::pi * r * d * d);
       // The N-gon itself is integrated exactly (area N/2 r^2 sin(2 pi/N), perimeter 2 N r sin(pi/N)).
-      const double polygon = kZeta * (0.5 * sectors * r * r * std::sin(2 * kPi / sectors) * d +
-                                      alpha_wall * sectors * r * std::sin(kPi / sectors) * d * d);
+      const double polygon = kZetaLp * (0.5 * sectors * r * r * std::sin(2 * std::numbers::pi / sectors) * d +
+                                      alpha_wall * sectors * r * std::sin(std::numbers::pi / sectors) * d * d);
       EXPECT_NEAR(w.force_W.z(), polygon, 1e-10 * polygon) << sectors << " sectors, d " << d;
       EXPECT_NEAR(w.force_W.x(), 0.0, 1e-9 * polygon);
       EXPECT_NEAR(w.force_W.y(), 0.0, 1e-9 * polygon);
@@ -66,8 +65,8 @@ TEST(RftContactWrench, FlatPadVerticalIntrusionMatchesClosedForm) {
 TEST(RftContactWrench, SubmergedAreaAndLeadingCount) {
   const double r = 0.05, h = 0.016, d = 0.006;
   const SurfaceElements pad = MakeRevolvedPad(FlatProfile(r, h), 64);
-  const ContactWrench w = ComputeContactWrench(pad, Sinking(d), PlaneGround(), Li2013TreersLaw(kZeta));
-  const double area = 0.5 * 64 * r * r * std::sin(2 * kPi / 64) + 2 * 64 * r * std::sin(kPi / 64) * d;
+  const ContactWrench w = ComputeContactWrench(pad, Sinking(d), PlaneGround(), Li2013TreersLaw(kZetaLp));
+  const double area = 0.5 * 64 * r * r * std::sin(2 * std::numbers::pi / 64) + 2 * 64 * r * std::sin(std::numbers::pi / 64) * d;
   EXPECT_NEAR(w.submerged_area_m2, area, 1e-12);
   EXPECT_EQ(w.leading_elements, 64 + 2 * 64);  // bottom fan + both triangles of each wall quad
 }
@@ -77,7 +76,7 @@ TEST(RftContactWrench, TrailingElementsCarryNothing) {
   MeshBuilder m;
   m.Add(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(0.01, 0, 0), Eigen::Vector3d(0, 0.01, 0));
   const ContactWrench w =
-      ComputeContactWrench(m.Build(), Sinking(0.02), PlaneGround(), Li2013TreersLaw(kZeta));
+      ComputeContactWrench(m.Build(), Sinking(0.02), PlaneGround(), Li2013TreersLaw(kZetaLp));
   EXPECT_EQ(w.force_W, Eigen::Vector3d::Zero());
   EXPECT_EQ(w.moment_W, Eigen::Vector3d::Zero());
   EXPECT_EQ(w.leading_elements, 0);
@@ -87,7 +86,7 @@ TEST(RftContactWrench, TrailingElementsCarryNothing) {
   // so the box equals the sum of its leading faces alone.
   const SurfaceElements box = MakeBox(Eigen::Vector3d(-0.02, -0.01, 0), Eigen::Vector3d(0.02, 0.01, 0.01), 2);
   const Eigen::Vector3d v(0.3, -0.2, -1.0);
-  const Li2013TreersLaw law(kZeta);
+  const Li2013TreersLaw law(kZetaLp);
   const ContactWrench all = ComputeContactWrench(box, Sinking(0.03, v), PlaneGround(), law);
   SurfaceElements leading_only;
   std::vector<int> keep;
@@ -139,7 +138,7 @@ TEST(RftContactWrench, SingleElementMomentIsRCrossF) {
   const Eigen::Vector3d a(0.01, 0.00, -0.005), b(0.04, 0.01, -0.002), c(0.02, 0.035, -0.012);
   m.Add(a, c, b);  // facing down-ish
   const SurfaceElements tri = m.Build();
-  const Li2013TreersLaw law(kZeta);
+  const Li2013TreersLaw law(kZetaLp);
   PadKinematics k;
   k.R_WB = RotZ(0.4) * RotX(0.3);
   k.v_WB_W = Eigen::Vector3d(0.2, 0.1, -0.8);
@@ -163,7 +162,7 @@ TEST(RftContactWrench, ForceContinuousAsPadSinksThroughTriangleRows) {
   // A tilted pad with a wall of several rows: every vertex crossing the surface must leave the
   // force continuous (exact clipping; a centroid-in/centroid-out rule would jump).
   const SurfaceElements pad = MakeRevolvedPad(FlatProfile(0.05, 0.016, 4), 24);
-  const Li2013TreersLaw law(kZeta);
+  const Li2013TreersLaw law(kZetaLp);
   PadKinematics k;
   k.R_WB = RotZ(0.2) * RotX(0.15);
   k.v_WB_W = Eigen::Vector3d(0.2, 0.0, -1.0);
@@ -193,7 +192,7 @@ TEST(RftContactWrench, LeadingBoundaryOfARotatingPadSweepsSmoothlyAcrossElements
   // whenever the boundary crossed a centroid. Measured: largest step 1.74 N against a median of
   // 3.9e-4 N with the centroid rule; 0.057 N against 0.027 N (2.1x) with the clip.
   const SurfaceElements box = MakeBox(Eigen::Vector3d(-0.02, -0.02, 0), Eigen::Vector3d(0.02, 0.02, 0.01), 8);
-  const Li2013TreersLaw law(kZeta);
+  const Li2013TreersLaw law(kZetaLp);
   const PlaneGround ground;
   const double w = 2.0;  // rad/s about +x: v_z(y) = -v + w y
   std::vector<double> fz;
@@ -217,9 +216,9 @@ TEST(RftContactWrench, TiltedPadForceConvergesWithRefinement) {
   // A pad tilted 10 deg, moving obliquely: the N-gon converges to the round pad. Which wall
   // facets lead (and where the surface cuts them) aliases with N, so the error is not monotone
   // from one N to the next; over factors of 4 it falls steadily, towards a 2048-sector reference.
-  const Li2013TreersLaw law(kZeta);
+  const Li2013TreersLaw law(kZetaLp);
   PadKinematics k;
-  k.R_WB = RotX(10 * kPi / 180);
+  k.R_WB = RotX(10 * std::numbers::pi / 180);
   k.v_WB_W = Eigen::Vector3d(0.3, 0.1, -1.0);
   k.p_WB = Eigen::Vector3d(0, 0, -0.01);
   auto wrench = [&](int sectors) {
@@ -243,7 +242,7 @@ TEST(RftContactWrench, TiltedPadForceConvergesWithRefinement) {
 TEST(RftContactWrench, RotatingPadAboutVerticalLeavesVerticalForce) {
   const SurfaceElements pad = MakeRevolvedPad(FlatProfile(0.05, 0.016, 2), 40);
   for (const StressLaw3D* law :
-       std::initializer_list<const StressLaw3D*>{new Li2013TreersLaw(kZeta), new Agarwal2023Law(2e6, 0.4)}) {
+       std::initializer_list<const StressLaw3D*>{new Li2013TreersLaw(kZetaLp), new Agarwal2023Law(2e6, 0.4)}) {
     PadKinematics k;
     k.v_WB_W = Eigen::Vector3d(0, 0, -0.7);
     k.p_WB = Eigen::Vector3d(0, 0, -0.008);
@@ -265,7 +264,7 @@ TEST(RftContactWrench, RotatingPadAboutVerticalLeavesVerticalForce) {
 TEST(RftContactWrench, MotionAlongPlusAndMinusXIsMirrored) {
   // A pad tilted about x is symmetric under x -> -x (even number of sectors); so is the law.
   const SurfaceElements pad = MakeRevolvedPad(FlatProfile(0.05, 0.016, 2), 48);
-  const Li2013TreersLaw law(kZeta);
+  const Li2013TreersLaw law(kZetaLp);
   PadKinematics k;
   k.R_WB = RotX(0.25);
   k.p_WB = Eigen::Vector3d(0, 0, -0.012);
@@ -286,7 +285,7 @@ TEST(RftContactWrench, MotionAlongPlusAndMinusXIsMirrored) {
 
 TEST(RftContactWrench, HorizontalFacetsGiveNoNaN) {
   const SurfaceElements box = MakeBox(Eigen::Vector3d(-0.02, -0.02, 0), Eigen::Vector3d(0.02, 0.02, 0.01));
-  const Li2013TreersLaw li(kZeta);
+  const Li2013TreersLaw li(kZetaLp);
   const Agarwal2023Law ag(2e6, 0.4);
   for (const Eigen::Vector3d& v :
        {Eigen::Vector3d(0, 0, -1), Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(1, 0, 0),
@@ -303,7 +302,7 @@ TEST(RftContactWrench, HorizontalFacetsGiveNoNaN) {
 TEST(RftContactWrench, PadAtRestGetsNoStress) {
   const SurfaceElements pad = MakeRevolvedPad(FlatProfile(0.05, 0.016), 16);
   const ContactWrench w = ComputeContactWrench(pad, Sinking(0.005, Eigen::Vector3d::Zero()), PlaneGround(),
-                                               Li2013TreersLaw(kZeta));
+                                               Li2013TreersLaw(kZetaLp));
   EXPECT_EQ(w.force_W, Eigen::Vector3d::Zero());
   EXPECT_EQ(w.leading_elements, 0);
   EXPECT_GT(w.submerged_area_m2, 0.0);
@@ -321,7 +320,7 @@ TEST(RftContactWrench, SlopedPlaneMatchesGenericGroundPath) {
   k.R_WB = RotZ(0.3) * RotX(0.1);
   k.w_WB_W = Eigen::Vector3d(0.5, -0.2, 1.0);
   const WrappedPlane generic;
-  const Li2013TreersLaw law(kZeta);
+  const Li2013TreersLaw law(kZetaLp);
   const ContactWrench a = ComputeContactWrench(pad, k, generic.plane, law);
   const ContactWrench b = ComputeContactWrench(pad, k, generic, law);
   EXPECT_TRUE(a.force_W.isApprox(b.force_W, 1e-10));

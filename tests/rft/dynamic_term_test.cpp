@@ -12,9 +12,9 @@
 namespace touchdown::rft {
 namespace {
 
-constexpr double kZeta = 2.0e6, kLambda = 1.3, kRho = 1600.0;
+constexpr double kZetaDynamic = 2.0e6, kLambda = 1.3, kRho = 1600.0;
 
-DynamicTermLaw MakeLaw() { return DynamicTermLaw(std::make_unique<Li2013TreersLaw>(kZeta), kLambda, kRho); }
+DynamicTermLaw MakeLaw() { return DynamicTermLaw(std::make_unique<Li2013TreersLaw>(kZetaDynamic), kLambda, kRho); }
 
 TEST(RftDynamicTerm, StressIsLambdaRhoVnSquaredAgainstNormal) {
   const DynamicTermLaw law = MakeLaw();
@@ -26,7 +26,7 @@ TEST(RftDynamicTerm, StressIsLambdaRhoVnSquaredAgainstNormal) {
   EXPECT_EQ(law.DynamicStress(-n, v), Eigen::Vector3d::Zero());
   EXPECT_EQ(law.DynamicStress(Eigen::Vector3d(0, 1, 0), Eigen::Vector3d(1, 0, 0)), Eigen::Vector3d::Zero());
   // The quasi-static part is the wrapped law's.
-  EXPECT_EQ(law.StressPerDepth(n, v), Li2013TreersLaw(kZeta).StressPerDepth(n, v));
+  EXPECT_EQ(law.StressPerDepth(n, v), Li2013TreersLaw(kZetaDynamic).StressPerDepth(n, v));
 }
 
 TEST(RftDynamicTerm, PlateMovingDownGetsAreaTimesDynamicPressure) {

@@ -17,7 +17,7 @@
 namespace touchdown::rft {
 namespace {
 
-constexpr double kZeta = 2.0e6, kC = 4.0e4, kChi = 0.3, kCg = 1.5e4;
+constexpr double kZetaEffects = 2.0e6, kC = 4.0e4, kChi = 0.3, kCg = 1.5e4;
 const Eigen::Vector3d kDown(0, 0, -1);
 
 // A square plate L x L, 1 mm thick, its bottom at the pad frame's origin.
@@ -27,19 +27,19 @@ SurfaceElements Plate() {
 }
 
 TEST(RftRateDamping, StressIsCTimesNormalSpeedAgainstTheNormal) {
-  const RateDampingLaw law(std::make_unique<Li2013TreersLaw>(kZeta), kC);
+  const RateDampingLaw law(std::make_unique<Li2013TreersLaw>(kZetaEffects), kC);
   EXPECT_EQ(law.name(), "li2013+rate_damping");
   const Eigen::Vector3d n = Eigen::Vector3d(0.3, 0.0, -0.9).normalized(), v(0.5, 0.2, -2.0);
   EXPECT_TRUE(law.DynamicStress(n, v).isApprox(-kC * n.dot(v) * n, 1e-14));
   EXPECT_EQ(law.DynamicStress(-n, v), Eigen::Vector3d::Zero());  // trailing
   EXPECT_EQ(law.DynamicStress(Eigen::Vector3d(0, 1, 0), Eigen::Vector3d(1, 0, 0)), Eigen::Vector3d::Zero());  // sliding
-  EXPECT_EQ(law.StressPerDepth(n, v), Li2013TreersLaw(kZeta).StressPerDepth(n, v));
-  EXPECT_THROW(RateDampingLaw(std::make_unique<Li2013TreersLaw>(kZeta), -1.0), std::invalid_argument);
+  EXPECT_EQ(law.StressPerDepth(n, v), Li2013TreersLaw(kZetaEffects).StressPerDepth(n, v));
+  EXPECT_THROW(RateDampingLaw(std::make_unique<Li2013TreersLaw>(kZetaEffects), -1.0), std::invalid_argument);
 }
 
 TEST(RftRateDamping, HorizontalPlateMovingDownGetsExactlyCvA) {
   const SurfaceElements plate = Plate();
-  const RateDampingLaw law(std::make_unique<Li2013TreersLaw>(kZeta), kC);
+  const RateDampingLaw law(std::make_unique<Li2013TreersLaw>(kZetaEffects), kC);
   for (double speed : {0.3, 1.7})
     for (double depth : {0.004, 0.011}) {
       PadKinematics k;
@@ -58,10 +58,10 @@ TEST(RftRateDamping, HorizontalPlateMovingDownGetsExactlyCvA) {
 }
 
 TEST(RftGasCushion, ScalesTheQuasiStaticStressAndAddsDamping) {
-  const GasCushionLaw law(std::make_unique<Li2013TreersLaw>(kZeta), kChi, kCg);
+  const GasCushionLaw law(std::make_unique<Li2013TreersLaw>(kZetaEffects), kChi, kCg);
   EXPECT_EQ(law.name(), "li2013+gas_cushion");
   const Eigen::Vector3d n = Eigen::Vector3d(0.2, -0.1, -0.9).normalized(), v(0.3, 0.1, -1.2);
-  EXPECT_TRUE(law.StressPerDepth(n, v).isApprox((1 - kChi) * Li2013TreersLaw(kZeta).StressPerDepth(n, v), 1e-14));
+  EXPECT_TRUE(law.StressPerDepth(n, v).isApprox((1 - kChi) * Li2013TreersLaw(kZetaEffects).StressPerDepth(n, v), 1e-14));
   EXPECT_TRUE(law.DynamicStress(n, v).isApprox(-kCg * n.dot(v) * n, 1e-14));
   // A horizontal plate: (1 - chi) zeta A d quasi-static plus c_g v A.
   const SurfaceElements plate = Plate();
@@ -74,15 +74,15 @@ TEST(RftGasCushion, ScalesTheQuasiStaticStressAndAddsDamping) {
   EXPECT_NEAR(with, (1 - kChi) * qs + kCg * speed * kL * kL, 1e-9 * with);
   // The wrapped law's own dynamic term is kept, unscaled.
   const GasCushionLaw around_dynamic(
-      std::make_unique<DynamicTermLaw>(std::make_unique<Li2013TreersLaw>(kZeta), 1.5, 1600.0), kChi, 0.0);
+      std::make_unique<DynamicTermLaw>(std::make_unique<Li2013TreersLaw>(kZetaEffects), 1.5, 1600.0), kChi, 0.0);
   EXPECT_NEAR(around_dynamic.DynamicStress(kDown, 2.0 * kDown).z(), 1.5 * 1600.0 * 4.0, 1e-9);
-  EXPECT_THROW(GasCushionLaw(std::make_unique<Li2013TreersLaw>(kZeta), 1.0, 0.0), std::invalid_argument);
+  EXPECT_THROW(GasCushionLaw(std::make_unique<Li2013TreersLaw>(kZetaEffects), 1.0, 0.0), std::invalid_argument);
 }
 
 SoilParameters Soil() {
   SoilParameters s;
   s.name = "test_soil";
-  s.zeta_N_m3 = kZeta;
+  s.zeta_N_m3 = kZetaEffects;
   s.reference_gravity_m_s2 = 9.81;
   s.bulk_density_kg_m3 = 1540.0;
   return s;
@@ -114,7 +114,7 @@ TEST(RftEffectFactory, StacksTheTermsAndTheModelsInertialTermReplacesTheSoils) {
   const double v = 1.3;
   // Straight down on a horizontal face: every term along +z, summed.
   EXPECT_NEAR(law->DynamicStress(kDown, v * kDown).z(), 2.5 * 1540.0 * v * v + (kC + kCg) * v, 1e-9);
-  EXPECT_NEAR(law->StressPerDepth(kDown, kDown).z(), (1 - kChi) * kZeta, 1e-6);
+  EXPECT_NEAR(law->StressPerDepth(kDown, kDown).z(), (1 - kChi) * kZetaEffects, 1e-6);
   t = EffectTerms{};
   t.inertial_lambda = 1.0;
   s.bulk_density_kg_m3 = 0.0;

@@ -14,7 +14,6 @@
 namespace touchdown::rft {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 constexpr double kZeta = 2.0e6;
 
 TEST(RftTreers, AlgebraicAlphaEqualsLiFit) {
@@ -102,7 +101,7 @@ TEST_P(RftTreersThinPlate, ReproducesLi2DAlphas) {
 std::vector<std::pair<double, double>> PlateCases() {
   std::vector<std::pair<double, double>> cases;
   for (double b : {-1.2, -0.6, 0.0, 0.3, 0.9, 1.4})
-    for (double g : {-1.2, -0.5, 0.2, 0.8, 1.3, kPi / 2, 2.0, 2.8})
+    for (double g : {-1.2, -0.5, 0.2, 0.8, 1.3, std::numbers::pi / 2, 2.0, 2.8})
       if (std::abs(std::sin(b + g)) > 0.05) cases.push_back({b, g});  // one face clearly leads
   return cases;
 }
@@ -130,7 +129,7 @@ TEST(RftTreers, ContinuousAsAFacetTiltsThroughHorizontal) {
   const Eigen::Vector3d v(1.0, 0.2, -0.3);
   const Eigen::Vector3d flat = law.StressPerDepth(Eigen::Vector3d(0, 0, -1), v);
   ASSERT_TRUE(flat.allFinite());
-  for (double azimuth : {0.0, 0.7, kPi / 2, 2.5}) {
+  for (double azimuth : {0.0, 0.7, std::numbers::pi / 2, 2.5}) {
     Eigen::Vector3d previous = flat;
     // Steps of 1e-4 rad through the 1-degree blend: the stress changes by O(step), never O(1)
     // (the largest slope, 1.5 |difference| / band, gives under 0.005 zeta per step).

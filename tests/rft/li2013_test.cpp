@@ -12,24 +12,23 @@
 namespace touchdown::rft {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 TEST(RftLi2013, HorizontalPlatePushedDownIsExactlyOne) {
   // alpha_z(0, pi/2) = A00 + A10 + B11 + B01 + B-11 = 1.000: zeta is the plate's stress per depth.
-  EXPECT_NEAR(Li2013Alpha(0.0, kPi / 2).z, 1.0, 1e-12);
+  EXPECT_NEAR(Li2013Alpha(0.0, std::numbers::pi / 2).z, 1.0, 1e-12);
 }
 
 TEST(RftLi2013, PublishedCheckValues) {
-  EXPECT_NEAR(Li2013Alpha(kPi / 4, kPi / 2).z, 0.564, 5e-4);
-  EXPECT_NEAR(Li2013Alpha(kPi / 2, kPi / 2).z, 0.128, 5e-4);
-  EXPECT_NEAR(Li2013Alpha(0.0, -kPi / 2).z, -0.25, 5e-4);
-  EXPECT_NEAR(Li2013Alpha(0.0, kPi / 2).x, 0.0, 1e-12);
-  EXPECT_NEAR(Li2013Alpha(0.0, -kPi / 2).x, 0.0, 1e-12);
+  EXPECT_NEAR(Li2013Alpha(std::numbers::pi / 4, std::numbers::pi / 2).z, 0.564, 5e-4);
+  EXPECT_NEAR(Li2013Alpha(std::numbers::pi / 2, std::numbers::pi / 2).z, 0.128, 5e-4);
+  EXPECT_NEAR(Li2013Alpha(0.0, -std::numbers::pi / 2).z, -0.25, 5e-4);
+  EXPECT_NEAR(Li2013Alpha(0.0, std::numbers::pi / 2).x, 0.0, 1e-12);
+  EXPECT_NEAR(Li2013Alpha(0.0, -std::numbers::pi / 2).x, 0.0, 1e-12);
 }
 
 TEST(RftLi2013, VerticalIntrusionIsEvenInAttackAngle) {
-  for (double b = -kPi / 2; b <= kPi / 2; b += 0.1)
-    EXPECT_NEAR(Li2013Alpha(b, kPi / 2).z, Li2013Alpha(-b, kPi / 2).z, 1e-14) << "beta " << b;
+  for (double b = -std::numbers::pi / 2; b <= std::numbers::pi / 2; b += 0.1)
+    EXPECT_NEAR(Li2013Alpha(b, std::numbers::pi / 2).z, Li2013Alpha(-b, std::numbers::pi / 2).z, 1e-14) << "beta " << b;
 }
 
 class RftLi2013Mirror : public ::testing::TestWithParam<std::pair<double, double>> {};
@@ -37,22 +36,22 @@ class RftLi2013Mirror : public ::testing::TestWithParam<std::pair<double, double
 TEST_P(RftLi2013Mirror, MirrorIdentitiesHold) {
   const auto [beta, gamma] = GetParam();  // gamma in (pi/2, pi]: outside the fitted range
   const Alpha2 a = Li2013Alpha(beta, gamma);
-  const Alpha2 mirrored = Li2013FitRaw(Li2013Coefficients{}, -beta, kPi - gamma);
+  const Alpha2 mirrored = Li2013FitRaw(Li2013Coefficients{}, -beta, std::numbers::pi - gamma);
   EXPECT_NEAR(a.z, mirrored.z, 1e-14);
   EXPECT_NEAR(a.x, -mirrored.x, 1e-14);
   // And the law is the same however the angle is written.
-  const Alpha2 wrapped = Li2013Alpha(beta, gamma - 2 * kPi);
+  const Alpha2 wrapped = Li2013Alpha(beta, gamma - 2 * std::numbers::pi);
   EXPECT_NEAR(a.z, wrapped.z, 1e-12);
   EXPECT_NEAR(a.x, wrapped.x, 1e-12);
 }
 
 INSTANTIATE_TEST_SUITE_P(AnglesBeyondHalfPi, RftLi2013Mirror,
                          ::testing::Values(std::pair{0.0, 2.0}, std::pair{0.3, 2.5}, std::pair{-0.7, 3.0},
-                                           std::pair{1.2, kPi}, std::pair{-1.5, 1.9}));
+                                           std::pair{1.2, std::numbers::pi}, std::pair{-1.5, 1.9}));
 
 TEST(RftLi2013, MirrorRuleIsContinuousAtHalfPi) {
   for (double b = -1.5; b <= 1.5; b += 0.25) {
-    const Alpha2 below = Li2013Alpha(b, kPi / 2 - 1e-9), above = Li2013Alpha(b, kPi / 2 + 1e-9);
+    const Alpha2 below = Li2013Alpha(b, std::numbers::pi / 2 - 1e-9), above = Li2013Alpha(b, std::numbers::pi / 2 + 1e-9);
     EXPECT_NEAR(below.z, above.z, 1e-7) << "beta " << b;
   }
 }
@@ -61,7 +60,7 @@ TEST(RftLi2013, HorizontalMotionMirrorsHorizontalStress) {
   // Moving along -x is the mirror image of moving along +x: alpha_x flips, alpha_z stays.
   for (double b : {-0.8, -0.2, 0.0, 0.4, 1.1}) {
     const Alpha2 forward = Li2013Alpha(b, 0.3);
-    const Alpha2 backward = Li2013Alpha(-b, kPi - 0.3);
+    const Alpha2 backward = Li2013Alpha(-b, std::numbers::pi - 0.3);
     EXPECT_NEAR(forward.z, backward.z, 1e-14);
     EXPECT_NEAR(forward.x, -backward.x, 1e-14);
   }
@@ -69,7 +68,7 @@ TEST(RftLi2013, HorizontalMotionMirrorsHorizontalStress) {
 
 TEST(RftLi2013, PlateIsPeriodicInHalfTurns) {
   for (double g : {-1.0, 0.2, 1.4})
-    EXPECT_NEAR(Li2013Alpha(0.3, g).z, Li2013Alpha(0.3 + kPi, g).z, 1e-12);
+    EXPECT_NEAR(Li2013Alpha(0.3, g).z, Li2013Alpha(0.3 + std::numbers::pi, g).z, 1e-12);
 }
 
 TEST(RftLi2013, LawInterfaceMatchesFreeFunction) {

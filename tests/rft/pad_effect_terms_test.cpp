@@ -21,7 +21,6 @@
 namespace touchdown::rft {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 constexpr double kZref = 0.01;
 
 // A law with one constant stress per depth on every element, so the contact's force is
@@ -253,7 +252,7 @@ TEST(RftDepthExponent, LevelFlatPadIsTheRigsPowerLaw) {
   const double r = 0.05, zeta = 2.0e6, d = 0.008;
   const int sectors = 256;
   const SurfaceElements pad = testing::MakeRevolvedPad(testing::FlatProfile(r, 0.016), sectors);
-  const double area = 0.5 * sectors * r * r * std::sin(2 * kPi / sectors), perimeter = 2 * sectors * r * std::sin(kPi / sectors);
+  const double area = 0.5 * sectors * r * r * std::sin(2 * std::numbers::pi / sectors), perimeter = 2 * sectors * r * std::sin(std::numbers::pi / sectors);
   for (const double p : {0.6, 1.5}) {
     const Li2013TreersLaw law(zeta);
     PadKinematics k;
@@ -319,7 +318,7 @@ TEST(RftAddedMass, FootprintAndItsRateOnARevolvedPad) {
   const Li2013TreersLaw law(2.0e6);
   PadLevelTerms terms;
   terms.added_mass_density_kg_m3 = 800.0;
-  const double poly = 0.5 * sectors * std::sin(2 * kPi / sectors);  // polygon area / radius^2
+  const double poly = 0.5 * sectors * std::sin(2 * std::numbers::pi / sectors);  // polygon area / radius^2
   auto advanced = [](PadKinematics k, double dt) {  // the pose dt later (rigid motion)
     k.p_WB += dt * k.v_WB_W;
     const double angle = k.w_WB_W.norm() * dt;
@@ -356,12 +355,12 @@ TEST(RftAddedMass, FootprintAndItsRateOnARevolvedPad) {
     EXPECT_NEAR(w.penetration_rate_m_s, fd_depth, 1e-6) << d;
   }
   // The cone: (c_a rho / 3) A min(d, a), growing continuously from 0.
-  const double A = kPi * 0.04 * 0.04;
+  const double A = std::numbers::pi * 0.04 * 0.04;
   const EntrainedMass e = EntrainedCone(800.0, 0.002, 0.5, A, 0.0);
   EXPECT_NEAR(e.mass_kg, 800.0 / 3 * A * 0.002, 1e-15);
   EXPECT_NEAR(e.rate_kg_s, 800.0 / 3 * A * 0.5, 1e-12);
   const EntrainedMass whole = EntrainedCone(800.0, 0.05, 0.5, A, 0.0);
-  EXPECT_NEAR(whole.mass_kg, 800.0 * kPi / 3 * std::pow(0.04, 3), 1e-15);
+  EXPECT_NEAR(whole.mass_kg, 800.0 * std::numbers::pi / 3 * std::pow(0.04, 3), 1e-15);
   EXPECT_EQ(whole.rate_kg_s, 0.0);
   EXPECT_EQ(EntrainedCone(800.0, 0.0, 1.0, 1.0, 1.0).mass_kg, 0.0);
 }
@@ -416,8 +415,8 @@ TEST(RftPadEffectTerms, TogetherTheyAddTheirClosedForms) {
   const double r = 0.05, zeta = 2.0e6, d = 0.006, p = 1.4, kc = 2.0e4, dc = 0.004, v = 1.2;
   const int sectors = 256;
   const SurfaceElements pad = testing::MakeRevolvedPad(testing::FlatProfile(r, 0.016), sectors);
-  const double area = 0.5 * sectors * r * r * std::sin(2 * kPi / sectors),
-               perimeter = 2 * sectors * r * std::sin(kPi / sectors);
+  const double area = 0.5 * sectors * r * r * std::sin(2 * std::numbers::pi / sectors),
+               perimeter = 2 * sectors * r * std::sin(std::numbers::pi / sectors);
   const Li2013TreersLaw law(zeta);
   PadLevelTerms terms = CompactionTerms(kc, dc);
   terms.depth = {p, kZref};

@@ -18,7 +18,7 @@
 namespace touchdown::rft {
 namespace {
 
-SoilParameters Soil() {
+SoilParameters BatchSoil() {
   SoilParameters s;
   s.name = "test_soil";
   s.zeta_N_m3 = 3.48e6;
@@ -77,11 +77,11 @@ TEST(RftStressBatch, EveryLawGivesTheSameStressesAsElementByElement) {
   EffectTerms gas;
   gas.gas_chi = 0.4;
   std::vector<std::shared_ptr<const StressLaw3D>> laws;
-  laws.push_back(MakeStressLaw3D(LawKind::kLi2013, Soil(), 9.81));
-  laws.push_back(MakeStressLaw3D(LawKind::kAgarwal2023, Soil(), 9.81));
-  laws.push_back(MakeSoilContactModel(LawKind::kLi2013, Soil(), 1.62, gas).law);
-  laws.push_back(MakeSoilContactModel(LawKind::kLi2013, Soil(), 9.81, all).law);
-  laws.push_back(MakeSoilContactModel(LawKind::kAgarwal2023, Soil(), 3.71, all).law);
+  laws.push_back(MakeStressLaw3D(LawKind::kLi2013, BatchSoil(), 9.81));
+  laws.push_back(MakeStressLaw3D(LawKind::kAgarwal2023, BatchSoil(), 9.81));
+  laws.push_back(MakeSoilContactModel(LawKind::kLi2013, BatchSoil(), 1.62, gas).law);
+  laws.push_back(MakeSoilContactModel(LawKind::kLi2013, BatchSoil(), 9.81, all).law);
+  laws.push_back(MakeSoilContactModel(LawKind::kAgarwal2023, BatchSoil(), 3.71, all).law);
   for (const auto& law : laws) {
     const int total = static_cast<int>(n.size());
     for (int start = 0; start < total; start += StressBatch::kCapacity) {
@@ -111,7 +111,7 @@ TEST(RftStressBatch, EveryLawGivesTheSameStressesAsElementByElement) {
 }
 
 TEST(RftStressBatch, EmptyBatchIsANoOp) {
-  const auto law = MakeStressLaw3D(LawKind::kLi2013, Soil(), 9.81);
+  const auto law = MakeStressLaw3D(LawKind::kLi2013, BatchSoil(), 9.81);
   StressBatch b;
   b.count = 0;
   b.sx[0] = 42.0;

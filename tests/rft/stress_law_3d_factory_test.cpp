@@ -12,7 +12,7 @@
 namespace touchdown::rft {
 namespace {
 
-SoilParameters Soil() {
+SoilParameters FactorySoil() {
   SoilParameters s;
   s.name = "test_soil";
   s.zeta_N_m3 = 3.48e6;
@@ -22,32 +22,32 @@ SoilParameters Soil() {
   return s;
 }
 
-const Eigen::Vector3d kDown(0, 0, -1);
+const Eigen::Vector3d kDown_W(0, 0, -1);
 
 TEST(RftStressLawFactory, Li2013ScalesZetaWithGravity) {
-  const auto law = MakeStressLaw3D(LawKind::kLi2013, Soil(), 1.62);
+  const auto law = MakeStressLaw3D(LawKind::kLi2013, FactorySoil(), 1.62);
   EXPECT_EQ(law->name(), "li2013");
-  EXPECT_NEAR(law->StressPerDepth(kDown, kDown).z(), 3.48e6 * 1.62 / 9.81, 1e-6);
+  EXPECT_NEAR(law->StressPerDepth(kDown_W, kDown_W).z(), 3.48e6 * 1.62 / 9.81, 1e-6);
 }
 
 TEST(RftStressLawFactory, Agarwal2023UsesXiFromDensityAndFriction) {
-  const SoilParameters s = Soil();
+  const SoilParameters s = FactorySoil();
   const auto law = MakeStressLaw3D(LawKind::kAgarwal2023, s, 9.81);
   EXPECT_EQ(law->name(), "agarwal2023");
   const double xi = AgarwalScalingXi(1540.0, 9.81, std::tan(s.internal_friction_angle_rad));
-  EXPECT_NEAR(law->StressPerDepth(kDown, kDown).z(), xi, 1e-6 * xi);
+  EXPECT_NEAR(law->StressPerDepth(kDown_W, kDown_W).z(), xi, 1e-6 * xi);
 }
 
 TEST(RftStressLawFactory, DynamicTermIsSwitchedPerSoil) {
-  SoilParameters s = Soil();
-  EXPECT_EQ(MakeStressLaw3D(LawKind::kLi2013, s, 9.81)->DynamicStress(kDown, kDown), Eigen::Vector3d::Zero());
+  SoilParameters s = FactorySoil();
+  EXPECT_EQ(MakeStressLaw3D(LawKind::kLi2013, s, 9.81)->DynamicStress(kDown_W, kDown_W), Eigen::Vector3d::Zero());
   s.dynamic_term = true;
   s.dynamic_lambda = 2.0;
   const auto law = MakeStressLaw3D(LawKind::kLi2013, s, 9.81);
   EXPECT_EQ(law->name(), "li2013+dynamic");
-  EXPECT_NEAR(law->DynamicStress(kDown, 3.0 * kDown).z(), 2.0 * 1540.0 * 9.0, 1e-9);  // rho_c = bulk density
+  EXPECT_NEAR(law->DynamicStress(kDown_W, 3.0 * kDown_W).z(), 2.0 * 1540.0 * 9.0, 1e-9);  // rho_c = bulk density
   s.dynamic_density_kg_m3 = 2000.0;
-  EXPECT_NEAR(MakeStressLaw3D(LawKind::kAgarwal2023, s, 9.81)->DynamicStress(kDown, kDown).z(), 2.0 * 2000.0, 1e-9);
+  EXPECT_NEAR(MakeStressLaw3D(LawKind::kAgarwal2023, s, 9.81)->DynamicStress(kDown_W, kDown_W).z(), 2.0 * 2000.0, 1e-9);
 }
 
 TEST(RftStressLawFactory, BadInputThrowsNamingSoilAndField) {
@@ -59,7 +59,7 @@ TEST(RftStressLawFactory, BadInputThrowsNamingSoilAndField) {
     }
     return std::string("no error");
   };
-  SoilParameters s = Soil();
+  SoilParameters s = FactorySoil();
   EXPECT_EQ(message([&] { ParseLawKind("bekker", "soil.yaml", "law"); }),
             "soil.yaml: law: unknown 3D stress law 'bekker' (expected li2013 or agarwal2023)");
   for (const LawKind k : {LawKind::kLi2013, LawKind::kAgarwal2023})
@@ -69,15 +69,15 @@ TEST(RftStressLawFactory, BadInputThrowsNamingSoilAndField) {
   EXPECT_NE(message([&] { MakeStressLaw3D(LawKind::kAgarwal2023, s, 9.81); }).find("bulk_density_kg_m3"),
             std::string::npos);
   EXPECT_NO_THROW(MakeStressLaw3D(LawKind::kLi2013, s, 9.81));  // li2013 needs only zeta
-  s = Soil();
+  s = FactorySoil();
   s.internal_friction_angle_rad = 0.0;
   EXPECT_NE(message([&] { MakeStressLaw3D(LawKind::kAgarwal2023, s, 9.81); }).find("internal_friction_angle"),
             std::string::npos);
-  s = Soil();
+  s = FactorySoil();
   s.zeta_N_m3 = 0.0;
   EXPECT_NE(message([&] { MakeStressLaw3D(LawKind::kLi2013, s, 9.81); }).find("zeta"), std::string::npos);
-  EXPECT_THROW(MakeStressLaw3D(LawKind::kLi2013, Soil(), -1.0), InputError);
-  s = Soil();
+  EXPECT_THROW(MakeStressLaw3D(LawKind::kLi2013, FactorySoil(), -1.0), InputError);
+  s = FactorySoil();
   s.dynamic_term = true;
   s.bulk_density_kg_m3 = 0.0;
   EXPECT_NE(message([&] { MakeStressLaw3D(LawKind::kLi2013, s, 9.81); }).find("dynamic_density_kg_m3"),

@@ -62,7 +62,7 @@ void ExpectSameCampaign(const CampaignScenario& a, const CampaignScenario& b) {
 }
 
 // The resolved copies live in `dir`, as a campaign's output directory holds its copy.
-void RoundTrip(const std::string& source, const std::string& first, const std::string& second) {
+void RoundTripCampaign(const std::string& source, const std::string& first, const std::string& second) {
   const std::string out = fs::path(first).parent_path().string();
   testing_scratch::ExpectRoundTrip(
       LoadCampaignScenario(source), first, second,
@@ -71,7 +71,7 @@ void RoundTrip(const std::string& source, const std::string& first, const std::s
 }
 
 TEST_F(CampaignRoundTrip, PaperCampaign) {
-  RoundTrip(io::DataDirectory() + "/scenarios/sutoh2017_single_footpad.yaml", Path("paper_1.yaml"),
+  RoundTripCampaign(io::DataDirectory() + "/scenarios/sutoh2017_single_footpad.yaml", Path("paper_1.yaml"),
             Path("paper_2.yaml"));
   const std::string text = Slurp(Path("paper_1.yaml"));
   EXPECT_NE(text.find("type: campaign_resolved"), std::string::npos);
@@ -92,7 +92,7 @@ TEST_F(CampaignRoundTrip, PathsAndPerEntryNumbers) {
   ASSERT_EQ(loaded.cases.size(), 4u);
   EXPECT_EQ(loaded.reference_speed_m_s, 0.0);  // the first case's speed
   fs::create_directories(dir_ / "out");
-  RoundTrip(Path("campaign.yaml"), Path("out/resolved_1.yaml"), Path("out/resolved_2.yaml"));
+  RoundTripCampaign(Path("campaign.yaml"), Path("out/resolved_1.yaml"), Path("out/resolved_2.yaml"));
   const std::string text = Slurp(Path("out/resolved_1.yaml"));
   EXPECT_NE(text.find("file: ../my_soil.yaml"), std::string::npos);  // relative to the copy's directory
   EXPECT_NE(text.find("zeta_override_N_cm3: 1.7"), std::string::npos);

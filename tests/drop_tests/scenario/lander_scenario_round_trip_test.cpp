@@ -79,7 +79,7 @@ void ExpectSameScenario(const LanderScenario& a, const LanderScenario& b) {
   EXPECT_EQ(p.model.body_mass_kg, q.model.body_mass_kg);
 }
 
-void RoundTrip(const std::string& source, const std::string& first, const std::string& second) {
+void RoundTripLanderScenario(const std::string& source, const std::string& first, const std::string& second) {
   const std::string out = fs::path(first).parent_path().string();
   testing_scratch::ExpectRoundTrip(
       LoadLanderScenario(source), first, second,
@@ -91,7 +91,7 @@ TEST_F(LanderScenarioRoundTrip, BundledCases) {
   for (const char* c : {"A", "B", "C"}) {
     SCOPED_TRACE(c);
     const std::string name = std::string("lander_case_") + c;
-    RoundTrip(io::DataDirectory() + "/scenarios/" + name + ".yaml", Path(name + "_1.yaml"), Path(name + "_2.yaml"));
+    RoundTripLanderScenario(io::DataDirectory() + "/scenarios/" + name + ".yaml", Path(name + "_1.yaml"), Path(name + "_2.yaml"));
     EXPECT_NE(Slurp(Path(name + "_1.yaml")).find("roll_pitch_within_deg: 0.5"), std::string::npos);
   }
 }
@@ -106,7 +106,7 @@ TEST_F(LanderScenarioRoundTrip, OptionsAndAttitude) {
                                         "simulation: {duration_s: 0.5, sample_rate_hz: 500, atol: 1e-8,"
                                         " max_step_s: 0.001, stiff: true}\n";
   fs::create_directories(dir_ / "out");
-  RoundTrip(Path("tilted.yaml"), Path("out/tilted_1.yaml"), Path("out/tilted_2.yaml"));
+  RoundTripLanderScenario(Path("tilted.yaml"), Path("out/tilted_1.yaml"), Path("out/tilted_2.yaml"));
   const std::string text = Slurp(Path("out/tilted_1.yaml"));
   EXPECT_NE(text.find("max_step_s: 0.001"), std::string::npos);
   EXPECT_NE(text.find("source: ../tilted.yaml"), std::string::npos);

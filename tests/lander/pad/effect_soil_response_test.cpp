@@ -14,15 +14,15 @@
 #include "lander/integ/cvode_integrator.h"
 #include "lander/pad/rig_drop.h"
 #include "rft/stress_law.h"
+#include "tests/lander/pad/test_rig.h"
 
 namespace touchdown::pad {
 namespace {
 
 using rft::EffectTerms;
 
-
-constexpr double kPi = std::numbers::pi;
-constexpr double kR = 0.05, kZeta = 2.0e6, kRho = 1540.0, kMass = 1.6, kG = 9.81;
+using namespace test_rig;
+constexpr double kRho = 1540.0;
 // A flat pad with a negligible side wall (1e-7 m): the force is zeta pi r^2 d to 1e-6.
 constexpr double kThin = 1e-7;
 const rft::Li2013Law kLaw;
@@ -40,31 +40,31 @@ TEST(EffectGeometry, ConeIntegralsFootprintAndPowerLaw) {
   EXPECT_NEAR(cone.FootprintRadius(d), a, 1e-12);
   EXPECT_NEAR(cone.FootprintRadiusSlope(d), std::tan(theta), 1e-9);
   for (int k = 0; k <= 3; ++k) {
-    const double expected = std::pow(std::sin(theta), k) * kPi * a * a / std::sin(theta);
+    const double expected = std::pow(std::sin(theta), k) * std::numbers::pi * a * a / std::sin(theta);
     EXPECT_NEAR(cone.CosinePowerIntegral(d, k), expected, 1e-12 * expected) << "k " << k;
   }
   // p = 1 is the linear law; p = 2 against an independent midpoint quadrature along the slant.
   EXPECT_NEAR(cone.PowerLawVerticalForce(d, kZeta, 1.0, 0.01), cone.VerticalForce(d, kZeta), 1e-9 * cone.VerticalForce(d, kZeta));
-  const double alpha = kLaw.Alpha(kPi / 2 - theta, kPi / 2).z, length = a / std::sin(theta);
+  const double alpha = kLaw.Alpha(std::numbers::pi / 2 - theta, std::numbers::pi / 2).z, length = a / std::sin(theta);
   double sum = 0.0;
   const int n = 200000;
   for (int i = 0; i < n; ++i) {
     const double s = (i + 0.5) * length / n;  // arc length from the apex
     const double z = d - s * std::cos(theta), x = s * std::sin(theta);
-    sum += alpha * 0.01 * std::pow(z / 0.01, 2.0) * 2 * kPi * x * length / n;
+    sum += alpha * 0.01 * std::pow(z / 0.01, 2.0) * 2 * std::numbers::pi * x * length / n;
   }
   EXPECT_NEAR(cone.PowerLawVerticalForce(d, kZeta, 2.0, 0.01), kZeta * sum, 1e-6 * kZeta * sum);
   // The flat pad: footprint whole at once, I_k = pi r^2 for k >= 1, the wall in I_0 only.
   const geom::AxisymmetricIntrusion flat(geom::MakeFlatProfile(kR, 0.016), kLaw);
   EXPECT_NEAR(flat.FootprintRadius(1e-6), kR, 1e-15);
   EXPECT_EQ(flat.FootprintRadiusSlope(0.005), 0.0);
-  EXPECT_NEAR(flat.CosinePowerIntegral(0.005, 2), kPi * kR * kR, 1e-15);
-  EXPECT_NEAR(flat.CosinePowerIntegral(0.005, 0), kPi * kR * kR + 2 * kPi * kR * 0.005, 1e-15);
+  EXPECT_NEAR(flat.CosinePowerIntegral(0.005, 2), std::numbers::pi * kR * kR, 1e-15);
+  EXPECT_NEAR(flat.CosinePowerIntegral(0.005, 0), std::numbers::pi * kR * kR + 2 * std::numbers::pi * kR * 0.005, 1e-15);
 }
 
 TEST(EffectTerms, EachTermHasItsDocumentedLimit) {
   const geom::AxisymmetricIntrusion pad = ThinFlat();
-  const double A = kPi * kR * kR, d = 0.01, v = 1.3;
+  const double A = std::numbers::pi * kR * kR, d = 0.01, v = 1.3;
   const double qs = pad.VerticalForce(d, kZeta);
   EffectTerms none;
   EXPECT_EQ(Response(pad, none).Force(d, v), qs);
@@ -95,8 +95,8 @@ TEST(EffectTerms, EachTermHasItsDocumentedLimit) {
   const EffectSoilResponse r = Response(pad, am);
   EXPECT_EQ(r.AddedMass(0.0), 0.0);
   EXPECT_NEAR(r.AddedMass(1e-9), 0.0, 1e-7);  // slope x 1e-9 m
-  EXPECT_NEAR(r.AddedMassSlope(1e-9), 1.5 * kRho * kPi / 3 * kR * kR, 1e-9);
-  EXPECT_NEAR(r.AddedMass(0.2), 1.5 * kRho * kPi / 3 * kR * kR * kR, 1e-12);
+  EXPECT_NEAR(r.AddedMassSlope(1e-9), 1.5 * kRho * std::numbers::pi / 3 * kR * kR, 1e-9);
+  EXPECT_NEAR(r.AddedMass(0.2), 1.5 * kRho * std::numbers::pi / 3 * kR * kR * kR, 1e-12);
 }
 
 // m x'' = m g - k x - b x' (thin flat pad, rate damping): the stop is the first zero of x'.
@@ -104,7 +104,7 @@ TEST(EffectRig, RateDampingMatchesTheDampedOscillator) {
   const geom::AxisymmetricIntrusion pad = ThinFlat();
   EffectTerms t;
   t.damping_c_N_s_m3 = 12000.0;
-  const double A = kPi * kR * kR, k = kZeta * A, b = t.damping_c_N_s_m3 * A, v0 = 1.2;
+  const double A = std::numbers::pi * kR * kR, k = kZeta * A, b = t.damping_c_N_s_m3 * A, v0 = 1.2;
   const pad::RigDropResult r = pad::RunRigDrop({kMass, kG, v0}, Response(pad, t));
   const double gamma = b / (2 * kMass), wd = std::sqrt(k / kMass - gamma * gamma), y0 = -kMass * kG / k;
   const double B = (v0 + gamma * y0) / wd;
@@ -112,7 +112,7 @@ TEST(EffectRig, RateDampingMatchesTheDampedOscillator) {
   auto v = [&](double s) {
     return std::exp(-gamma * s) * ((-gamma * y0 + wd * B) * std::cos(wd * s) + (-gamma * B - wd * y0) * std::sin(wd * s));
   };
-  double lo = 1e-9, hi = kPi / wd;
+  double lo = 1e-9, hi = std::numbers::pi / wd;
   for (int i = 0; i < 200; ++i) (v(0.5 * (lo + hi)) > 0 ? lo : hi) = 0.5 * (lo + hi);
   const double t_stop = 0.5 * (lo + hi), d_stop = y(t_stop) - y0;
   EXPECT_NEAR(r.time_to_rest_s, t_stop, 1e-6 * t_stop);
@@ -161,7 +161,7 @@ TEST(EffectRig, InertialDragMatchesKatsuragiDurian) {
   const geom::AxisymmetricIntrusion pad = ThinFlat();
   EffectTerms t;
   t.inertial_lambda = 2.0;
-  const double A = kPi * kR * kR, k = kZeta * A, d1 = kMass / (t.inertial_lambda * kRho * A), v0 = 1.5;
+  const double A = std::numbers::pi * kR * kR, k = kZeta * A, d1 = kMass / (t.inertial_lambda * kRho * A), v0 = 1.5;
   const double Ac = kG * d1 + k * d1 * d1 / (2 * kMass), Bc = -k * d1 / kMass;
   auto s = [&](double z) { return Ac + Bc * z + (v0 * v0 - Ac) * std::exp(-2 * z / d1); };
   double lo = 1e-6, hi = 0.5;

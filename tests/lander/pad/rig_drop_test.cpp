@@ -8,14 +8,15 @@
 #include <numbers>
 
 #include "footpad_geom/axisymmetric_intrusion.h"
+#include "tests/lander/pad/test_rig.h"
 
 namespace touchdown::pad {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-constexpr double kR = 0.05, kH = 0.016, kMass = 1.6, kG = 9.81, kZeta = 2.0e6;
+using namespace test_rig;
+constexpr double kH = 0.016;
 
-double WallAlpha() { return rft::Li2013Alpha(kPi / 2, kPi / 2).z; }
+double WallAlpha() { return rft::Li2013Alpha(std::numbers::pi / 2, std::numbers::pi / 2).z; }
 
 VerticalResistance FlatPad(const geom::AxisymmetricIntrusion& pad) {
   return [&pad](double d, double) { return pad.VerticalForce(d, kZeta); };
@@ -24,7 +25,7 @@ VerticalResistance FlatPad(const geom::AxisymmetricIntrusion& pad) {
 // Depth at which the work of F_z(d) = zeta (pi r^2 d + a_w pi r d^2) equals 0.5 m v^2 + m g d.
 double ClosedFormFlatDepth(double v) {
   auto residual = [v](double d) {
-    const double work = kZeta * (kPi * kR * kR * d * d / 2 + WallAlpha() * kPi * kR * d * d * d / 3);
+    const double work = kZeta * (std::numbers::pi * kR * kR * d * d / 2 + WallAlpha() * std::numbers::pi * kR * d * d * d / 3);
     return work - 0.5 * kMass * v * v - kMass * kG * d;
   };
   double lo = 1e-9, hi = kH;  // all paper speeds stop shallower than the pad thickness
@@ -87,7 +88,7 @@ TEST(RigDrop, StopIsAnEventNotASample) {
   // Against a closed-form-free check: a linear spring F = k d stops at a quarter period.
   const double k = 1e4;
   const RigDropResult spring = RunRigDrop({1.0, 1e-12, 1.0}, [k](double d, double) { return k * d; });
-  EXPECT_NEAR(spring.time_to_rest_s, 0.25 * 2 * kPi / std::sqrt(k), 1e-7);
+  EXPECT_NEAR(spring.time_to_rest_s, 0.25 * 2 * std::numbers::pi / std::sqrt(k), 1e-7);
   EXPECT_NEAR(spring.final_penetration_m, 1.0 / std::sqrt(k), 1e-8);
 }
 
