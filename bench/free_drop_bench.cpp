@@ -23,7 +23,7 @@ void RunFreeDrop(benchmark::State& state, const char* pad_name, double tilt_deg,
                                                         Eigen::Vector3d(0.0, 0.0, pad.profile.thickness_m()));
   const rft::SoilParameters soil = touchdown::io::LoadSoil("fjs1_lp");
   const rft::SoilContactModel law = rft::MakeSoilContactModel(rft::LawKind::kLi2013, soil, 9.81, {});
-  const rft::PlaneGround ground;
+  const rft::Terrain bed = rft::UniformTerrain(soil.name, law);
   touchdown::pad::FreeDropInput in;
   in.impact_speed_m_s = 1.0;
   in.tilt_rad = tilt_deg * std::numbers::pi / 180.0;
@@ -32,7 +32,7 @@ void RunFreeDrop(benchmark::State& state, const char* pad_name, double tilt_deg,
   touchdown::pad::FreeDropResult r;
   const touchdown::pad::FreeDropOptions opt;  // the defaults `touchdown drop --free` uses
   for (auto _ : state) {
-    r = touchdown::pad::RunFreeDrop(body, law, ground, in, opt);
+    r = touchdown::pad::RunFreeDrop(body, bed, in, opt);
     benchmark::DoNotOptimize(r.final_penetration_m);
   }
   state.counters["triangles"] = body.surface.size();

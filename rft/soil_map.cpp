@@ -19,6 +19,13 @@ std::vector<Eigen::Vector2d> RectanglePolygon(double x0, double y0, double x1, d
   return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
 }
 
+Terrain UniformTerrain(std::string soil_name, SoilContactModel contact, std::shared_ptr<const GroundSurface> surface) {
+  Terrain t;
+  t.surface = std::move(surface);
+  t.soils.push_back({std::move(soil_name), std::move(contact)});
+  return t;
+}
+
 int Terrain::SoilAt(double x_m, double y_m) const {
   const Eigen::Vector2d p(x_m, y_m);
   for (const SoilPatch& patch : patches)

@@ -35,6 +35,10 @@ struct Terrain {
   int SoilAt(double x_m, double y_m) const;
 };
 
+// One soil everywhere on `surface`, no patches: a free drop's or a rig's uniform bed.
+Terrain UniformTerrain(std::string soil_name, SoilContactModel contact,
+                       std::shared_ptr<const GroundSurface> surface = std::make_shared<const PlaneGround>());
+
 // Even-odd point-in-polygon test (boundary points may fall either side).
 bool PolygonContains(const std::vector<Eigen::Vector2d>& polygon, const Eigen::Vector2d& p);
 

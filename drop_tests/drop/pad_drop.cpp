@@ -110,9 +110,10 @@ PadDrop SimulateDrop(const io::PadSpec& pad, const rft::SoilParameters& soil, co
     in.omega_W = conditions.omega_W;
     in.gravity_m_s2 = conditions.gravity_m_s2;
     const geom::PadBody& body = pad.body;
+    const rft::Terrain bed = rft::UniformTerrain(soil.name, law);
     const pad::FreeDropResult r = drop.mass_kg == body.mass_kg
-                                 ? RunFreeDrop(body, law, rft::PlaneGround(), in, options.free)
-                                 : RunFreeDrop(WithMass(body, drop.mass_kg), law, rft::PlaneGround(), in, options.free);
+                                 ? RunFreeDrop(body, bed, in, options.free)
+                                 : RunFreeDrop(WithMass(body, drop.mass_kg), bed, in, options.free);
     drop.result = AsRigResult(r);
     drop.free = r;
     return drop;

@@ -158,10 +158,10 @@ FreeDropResult Stroke(integ::HybridRun& run, const FreePadDynamics& pad, const E
 
 }  // namespace
 
-FreeDropResult RunFreeDrop(const geom::PadBody& body, const rft::SoilContactModel& soil, const rft::GroundSurface& ground,
-                           const FreeDropInput& in, const FreeDropOptions& options) {
+FreeDropResult RunFreeDrop(const geom::PadBody& body, const rft::Terrain& terrain, const FreeDropInput& in,
+                           const FreeDropOptions& options) {
   Validate(body, in);
-  const FreePadDynamics pad(body, soil, ground, in.gravity_m_s2);
+  const FreePadDynamics pad(body, terrain, in.gravity_m_s2);
   bool approaching = true;
   integ::CvodeIntegrator integrator(
       kSize, [&pad](double, Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::VectorXd> ydot) { pad.Derivative(y, ydot); },

@@ -23,8 +23,7 @@
 #include "footpad_geom/pad_body.h"
 #include "lander/integ/cvode_integrator.h"
 #include "lander/pad/pad_pose.h"
-#include "rft/ground.h"
-#include "rft/soil_contact_model.h"
+#include "rft/soil_map.h"
 
 namespace touchdown::pad {
 
@@ -84,7 +83,9 @@ struct FreeDropResult {
   integ::IntegratorSummary solver;
 };
 
-FreeDropResult RunFreeDrop(const geom::PadBody& body, const rft::SoilContactModel& soil, const rft::GroundSurface& ground,
-                           const FreeDropInput& input, const FreeDropOptions& options = {});
+// The pad lands on `terrain` (its surface and the soil under the pad: rft/soil_map.h); a uniform bed
+// is rft::UniformTerrain.
+FreeDropResult RunFreeDrop(const geom::PadBody& body, const rft::Terrain& terrain, const FreeDropInput& input,
+                           const FreeDropOptions& options = {});
 
 }  // namespace touchdown::pad

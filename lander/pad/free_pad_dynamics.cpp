@@ -15,17 +15,15 @@ double BodyRadius(const geom::PadBody& body) {
 }
 }  // namespace
 
-FreePadDynamics::FreePadDynamics(const geom::PadBody& body, const rft::SoilContactModel& soil,
-                                 const rft::GroundSurface& ground, double gravity_m_s2)
+FreePadDynamics::FreePadDynamics(const geom::PadBody& body, const rft::Terrain& terrain, double gravity_m_s2)
     : body_(body),
-      soil_(soil),
-      ground_(ground),
+      terrain_(terrain),
+      ground_(*terrain.surface),
       m_(body.mass_kg),
       g_(gravity_m_s2),
       I_(body.inertia_com_B),
       I_inv_(body.inertia_com_B.inverse()),
-      radius_(BodyRadius(body)),
-      added_density_(soil.pad_terms.added_mass_density_kg_m3) {}
+      radius_(BodyRadius(body)) {}
 
 FreePadPose FreePadDynamics::PoseOf(const Eigen::Ref<const Eigen::VectorXd>& y) const {
   FreePadPose s;
@@ -48,9 +46,14 @@ bool FreePadDynamics::Moving(const FreePadPose& s) const {
   return s.v_WB.squaredNorm() + s.w_W.squaredNorm() * radius_ * radius_ > 0.0;
 }
 
+const rft::SoilContactModel& FreePadDynamics::SoilUnder(const FreePadPose& s) const {
+  return terrain_.soils[terrain_.SoilAt(s.p_WB.x(), s.p_WB.y())].contact;
+}
+
 rft::ContactWrench FreePadDynamics::Wrench(const FreePadPose& s) const {
   rft::PadKinematics k{s.R_WB, s.p_WB, s.v_WB, s.w_W};
-  return rft::ComputeContactWrench(body_.surface, k, ground_, *soil_.law, soil_.pad_terms);
+  const rft::SoilContactModel& soil = SoilUnder(s);
+  return rft::ComputeContactWrench(body_.surface, k, ground_, *soil.law, soil.pad_terms);
 }
 
 // added_mass (rft/entrained_mass.h): the entrained cone moves with the centre of mass's vertical
@@ -61,8 +64,9 @@ rft::ContactWrench FreePadDynamics::Wrench(const FreePadPose& s) const {
 // the cone is defined by the vertical stroke.
 FreePadVertical FreePadDynamics::Vertical(const FreePadPose& s, const rft::ContactWrench& w) const {
   FreePadVertical out;
-  if (added_density_ > 0.0) {
-    const rft::EntrainedMass e = rft::EntrainedCone(added_density_, w.penetration_m, w.penetration_rate_m_s,
+  const double added_density = SoilUnder(s).pad_terms.added_mass_density_kg_m3;
+  if (added_density > 0.0) {
+    const rft::EntrainedMass e = rft::EntrainedCone(added_density, w.penetration_m, w.penetration_rate_m_s,
                                                     w.footprint_area_m2, w.footprint_area_rate_m2_s);
     const double v_z = s.v_WC.z();
     const double accretion = -std::max(e.rate_kg_s, 0.0) * v_z;  // upward while sinking
@@ -90,7 +94,7 @@ void FreePadDynamics::Derivative(const Eigen::Ref<const Eigen::VectorXd>& y, Eig
   ydot.segment<3>(kV) = w.force_W / m_ - Eigen::Vector3d(0.0, 0.0, g_);
   ydot.segment<3>(kW) = I_inv_ * (s.R_WB.transpose() * M_C - wb.cross(I_ * wb));
   ydot[kWork] = -(w.force_W.dot(s.v_WB) + w.moment_W.dot(s.w_W));
-  if (added_density_ > 0.0) {
+  if (SoilUnder(s).pad_terms.added_mass_density_kg_m3 > 0.0) {
     const FreePadVertical vz = Vertical(s, w);
     ydot[kV + 2] = vz.a_z;
     ydot[kWork] += vz.accretion_W;
@@ -99,7 +103,8 @@ void FreePadDynamics::Derivative(const Eigen::Ref<const Eigen::VectorXd>& y, Eig
 
 double FreePadDynamics::RestCapacity(const FreePadPose& s) const {
   rft::PadKinematics down{s.R_WB, s.p_WB, Eigen::Vector3d(0.0, 0.0, -1e-6), Eigen::Vector3d::Zero()};
-  return rft::ComputeContactWrench(body_.surface, down, ground_, *soil_.law, soil_.pad_terms).force_W.z();
+  const rft::SoilContactModel& soil = SoilUnder(s);
+  return rft::ComputeContactWrench(body_.surface, down, ground_, *soil.law, soil.pad_terms).force_W.z();
 }
 
 double FreePadDynamics::KineticEnergy(const FreePadPose& s) const {

@@ -11,6 +11,7 @@
 #include "rft/contact_wrench.h"
 #include "rft/ground.h"
 #include "rft/soil_contact_model.h"
+#include "rft/soil_map.h"
 
 namespace touchdown::pad {
 
@@ -31,15 +32,17 @@ struct FreePadVertical {
 
 class FreePadDynamics {
  public:
-  // References are kept: `body`, `soil` and `ground` must outlive this object.
-  FreePadDynamics(const geom::PadBody& body, const rft::SoilContactModel& soil, const rft::GroundSurface& ground,
-                  double gravity_m_s2);
+  // References are kept: `body` and `terrain` must outlive this object.
+  FreePadDynamics(const geom::PadBody& body, const rft::Terrain& terrain, double gravity_m_s2);
 
   FreePadPose PoseOf(const Eigen::Ref<const Eigen::VectorXd>& y) const;
   // Depth of the lowest point below the surface (negative above it).
   double Depth(const FreePadPose& s) const;
   // Whether the pad moves at all (translation or spin): the soil wrench needs a direction.
   bool Moving(const FreePadPose& s) const;
+  // The soil under the pad: the terrain's soil at the pad frame's origin (x, y), as a lander's pad
+  // takes the soil at its ball joint. A pad crossing a patch's edge meets the other soil at once.
+  const rft::SoilContactModel& SoilUnder(const FreePadPose& s) const;
   rft::ContactWrench Wrench(const FreePadPose& s) const;
   FreePadVertical Vertical(const FreePadPose& s, const rft::ContactWrench& w) const;
   // dy/dt at y.
@@ -59,12 +62,11 @@ class FreePadDynamics {
 
  private:
   const geom::PadBody& body_;
-  const rft::SoilContactModel& soil_;
+  const rft::Terrain& terrain_;
   const rft::GroundSurface& ground_;
   double m_, g_;
   Eigen::Matrix3d I_, I_inv_;
   double radius_;
-  double added_density_;
 };
 
 }  // namespace touchdown::pad

@@ -98,7 +98,7 @@ TEST(DropFactory, FreeDropRunsTheFactorysLaw) {
   in.impact_speed_m_s = 0.8;
   in.tilt_rad = 0.1;
   in.gravity_m_s2 = kMoonG;
-  const pad::FreeDropResult own = pad::RunFreeDrop(pad.body, law, rft::PlaneGround(), in, {});
+  const pad::FreeDropResult own = pad::RunFreeDrop(pad.body, rft::UniformTerrain("soil", law), in, {});
   EXPECT_EQ(drop.free->final_penetration_m, own.final_penetration_m);
   EXPECT_EQ(drop.free->peak_force_N, own.peak_force_N);
   EXPECT_EQ(drop.free->final_tilt_deg, own.final_tilt_deg);

@@ -25,7 +25,7 @@ TEST(FreeDrop, VerticalLevelDropMatchesTheRigDrop) {
   const rft::SoilContactModel law = rft::MakeSoilContactModel(rft::LawKind::kLi2013, soil, 9.81, {});
   FreeDropInput in;
   in.impact_speed_m_s = 1.0;
-  const FreeDropResult free = RunFreeDrop(pad.body, law, rft::PlaneGround(), in);
+  const FreeDropResult free = RunFreeDrop(pad.body, rft::UniformTerrain("soil", law), in);
   drop::DropConditions c;
   c.impact_speed_m_s = 1.0;
   const RigDropResult rig = drop::RunPadDrop(pad, soil, c).result;
@@ -78,7 +78,7 @@ TEST_P(ShippedPadFreeDrop, LandsAtEveryTiltAboutXAndY) {
         in.tilt_rad = tilt_deg * std::numbers::pi / 180.0;
         in.tilt_axis = pad::ParseTiltAxis(axis);
         FreeDropResult r;
-        ASSERT_NO_THROW(r = RunFreeDrop(pad.body, law, rft::PlaneGround(), in));
+        ASSERT_NO_THROW(r = RunFreeDrop(pad.body, rft::UniformTerrain("soil", law), in));
         ++drops;
         EXPECT_GT(r.final_penetration_m, 0.0);
         EXPECT_LT(r.final_penetration_m, 0.1);

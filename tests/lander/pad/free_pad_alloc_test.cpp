@@ -20,8 +20,10 @@ namespace {
 long AllocationsOfThreeDerivatives(const rft::SoilContactModel& soil) {
   const geom::AxisymmetricProfile profile = geom::MakeFlatProfile(0.05, 0.016);  // data/pads/flat.yaml
   const geom::PadBody body = geom::RevolveProfileToBody(profile, 24, 1.6, Eigen::Vector3d(0.0, 0.0, 0.016));
-  const rft::PlaneGround ground;
-  const FreePadDynamics pad(body, soil, ground, 9.81);
+  rft::Terrain terrain = rft::UniformTerrain("default", soil);
+  // A patch away from the pad: the soil lookup walks its polygon on every call.
+  terrain.patches.push_back({"far", rft::RectanglePolygon(5.0, 5.0, 6.0, 6.0), 0});
+  const FreePadDynamics pad(body, terrain, 9.81);
   // 10 degrees of tilt, 5 mm into the soil, sinking, sliding and spinning.
   Eigen::VectorXd y = Eigen::VectorXd::Zero(kSize);
   const Eigen::Quaterniond q(Eigen::AngleAxisd(0.17, Eigen::Vector3d::UnitX()));
