@@ -1,31 +1,43 @@
-// A case-A lander drop (the paper's Table II, LP under all four pads): 1 s of simulated time
-// from release 10 cm above the bed, four meshed pads of about 2k triangles each (data/landers,
-// 64 segments around the rim). Target: faster than 50x real time on one core, i.e. under 20 ms
-// per iteration. The counter `realtime_factor` reports simulated seconds per wall second.
+// Lander landings of 1 s simulated time from release 10 cm above the bed, four meshed pads of about
+// 2k triangles each (data/landers, 64 segments around the rim), one core. The symmetric case A
+// is the reference; issue 15's target is every other landing within 3x its time:
+//   CaseA                 the paper's Table II case A (LP under every pad)
+//   CaseB, CaseC          CP under pad 1 (B), pads 1 and 2 (C)
+//   CaseA_Attitude        case A rolled and pitched 5 deg at release, 0.5 m/s horizontally
+//   Slope10_Sideways      LP on a 10 deg slope (downhill +x), level lander, 0.5 m/s across it (+y)
+// Counters: the solver's (steps, right-hand sides, Jacobians, failures), the outcome (pad 1's
+// final depth, final roll and pitch), and `realtime_factor` (simulated seconds per wall second).
+// TD_RTOL / TD_ATOL / TD_BDF (BDF + dense Newton instead of Adams) override the integrator for
+// convergence studies.
 #include <benchmark/benchmark.h>
+
+#include <cmath>
 #include <cstdlib>
 
+#include "rft/units.h"
 #include "tests/lander/multibody/paper_lander.h"
 
 namespace {
 
 using namespace touchdown;
 
-void BM_LanderCaseA_1s(benchmark::State& state) {
-  // The paper's lander built in code from the catalogue's values (data/landers, data/soils,
-  // data/scenarios/lander_case_A.yaml), at the catalogue's 64 segments.
-  const test::PaperLander setup = test::MakePaperLander('A', 64);
+lander::LanderRunOptions Options() {
   lander::LanderRunOptions options;
   options.duration_s = 1.0;
   options.sample_rate_hz = 1000.0;  // lander_case_A.yaml: simulation
   if (getenv("TD_RTOL")) options.integrator.rtol = atof(getenv("TD_RTOL"));
   if (getenv("TD_ATOL")) options.integrator.atol = atof(getenv("TD_ATOL"));
-  if (getenv("TD_ADAMS")) options.integrator.stiff = false;
-  touchdown::lander::LanderRunResult last;
+  if (getenv("TD_BDF")) options.integrator.stiff = true;
+  return options;
+}
+
+void RunLanding(benchmark::State& state, const test::PaperLander& setup) {
+  const lander::LanderRunOptions options = Options();
+  lander::LanderRunResult last;
   for (auto _ : state) {
-    const touchdown::lander::LanderRunResult r = touchdown::lander::SimulateLander(setup.model, setup.terrain, setup.initial, options);
+    lander::LanderRunResult r = lander::SimulateLander(setup.model, setup.terrain, setup.initial, options);
     benchmark::DoNotOptimize(r.final_penetration_m[0]);
-    last = r;
+    last = std::move(r);
   }
   state.counters["triangles_per_pad"] = setup.model.legs[0].pad->surface.size();
   state.counters["solver_steps"] = static_cast<double>(last.solver.steps);
@@ -35,13 +47,47 @@ void BM_LanderCaseA_1s(benchmark::State& state) {
   state.counters["jac_evals"] = static_cast<double>(last.solver.jacobian_evaluations);
   state.counters["ncfn"] = static_cast<double>(last.solver.nonlinear_convergence_failures);
   state.counters["etf"] = static_cast<double>(last.solver.error_test_failures);
-  state.counters["pen0_mm"] = last.final_penetration_m[0]*1e3;
+  state.counters["pen1_mm"] = last.final_penetration_m[0] * 1e3;
+  state.counters["roll_deg"] = last.final_attitude.roll_rad / units::kDeg;
+  state.counters["pitch_deg"] = last.final_attitude.pitch_rad / units::kDeg;
+  state.counters["max_tilt_deg"] = last.max_tilt_rad / units::kDeg;
   state.counters["energy_err"] = last.initial_energy_J - last.dissipated_J - last.final_kinetic_J - last.final_potential_J;
   state.counters["rest_time_s"] = last.rest_time_s.value_or(-1.0);
   state.counters["realtime_factor"] =
       benchmark::Counter(options.duration_s * state.iterations(), benchmark::Counter::kIsRate);
 }
 
+// The paper's lander built in code from the catalogue's values (data/landers, data/soils,
+// data/scenarios/lander_case_*.yaml), at the catalogue's 64 segments.
+void BM_LanderCaseA_1s(benchmark::State& state) { RunLanding(state, test::MakePaperLander('A', 64)); }
+void BM_LanderCaseB_1s(benchmark::State& state) { RunLanding(state, test::MakePaperLander('B', 64)); }
+void BM_LanderCaseC_1s(benchmark::State& state) { RunLanding(state, test::MakePaperLander('C', 64)); }
+
+void BM_LanderCaseA_Attitude_1s(benchmark::State& state) {
+  test::PaperLander setup = test::MakePaperLander('A', 64);
+  lander::LanderInitialState& s = setup.initial;
+  s.R_WB = (Eigen::AngleAxisd(5.0 * units::kDeg, Eigen::Vector3d::UnitX()) *
+            Eigen::AngleAxisd(5.0 * units::kDeg, Eigen::Vector3d::UnitY()))
+               .toRotationMatrix();
+  for (Eigen::Matrix3d& R_WP : s.R_WP) R_WP = s.R_WB;
+  s.v_WB_W = Eigen::Vector3d(0.5, 0.0, 0.0);
+  s.p_WB.z() = lander::BodyHeightForClearance(setup.model, setup.terrain, s, setup.drop_height_m);
+  RunLanding(state, setup);
+}
+
+void BM_LanderSlope10_Sideways_1s(benchmark::State& state) {
+  test::PaperLander setup = test::MakePaperLander('A', 64);
+  setup.terrain.surface = std::make_shared<rft::PlaneGround>(0.0, -std::tan(10.0 * units::kDeg), 0.0);
+  lander::LanderInitialState& s = setup.initial;
+  s.v_WB_W = Eigen::Vector3d(0.0, 0.5, 0.0);
+  s.p_WB.z() = lander::BodyHeightForClearance(setup.model, setup.terrain, s, setup.drop_height_m);
+  RunLanding(state, setup);
+}
+
 BENCHMARK(BM_LanderCaseA_1s)->Unit(benchmark::kMillisecond)->MinTime(2.0);
+BENCHMARK(BM_LanderCaseB_1s)->Unit(benchmark::kMillisecond)->MinTime(0.5);
+BENCHMARK(BM_LanderCaseC_1s)->Unit(benchmark::kMillisecond)->MinTime(0.5);
+BENCHMARK(BM_LanderCaseA_Attitude_1s)->Unit(benchmark::kMillisecond)->MinTime(0.5);
+BENCHMARK(BM_LanderSlope10_Sideways_1s)->Unit(benchmark::kMillisecond)->MinTime(0.5);
 
 }  // namespace
