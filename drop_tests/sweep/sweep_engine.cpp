@@ -112,12 +112,16 @@ bool DropEngine::Finished() {
 
 void RunEngine(DropEngine& engine, const EngineDriver& d) {
   bool stopping = false;
-  engine.Feed(d.feed_low, d.next);
-  while (!engine.Finished()) {
+  auto honour_stop = [&] {
     if (!stopping && d.stop && d.stop->load() != 0) {
       engine.Stop();  // the drops running now finish; nothing new starts
       stopping = true;
     }
+  };
+  honour_stop();  // a stop asked for before the run starts none (Feed adds nothing once stopped)
+  engine.Feed(d.feed_low, d.next);
+  while (!engine.Finished()) {
+    honour_stop();
     d.commit(engine.Take(d.batch_size, d.commit_interval_s, d.feed_low, stopping ? nullptr : d.stop));
     engine.Feed(d.feed_low, d.next);
   }
