@@ -115,9 +115,10 @@ FreeDropResult Stroke(integ::HybridRun& run, const FreePadDynamics& pad, const E
     // At rest the soil carries the weight: report the static reaction, as the rig drop does.
     Eigen::Vector3d f(0.0, 0.0, m * g);
     if (moving) {
-      const rft::ContactWrench w = pad.Wrench(s);
+      const rft::SoilContactModel& soil = pad.SoilUnder(s);
+      const rft::ContactWrench w = pad.Wrench(s, soil);
       f = w.force_W;
-      f.z() = pad.Vertical(s, w).force_z;
+      f.z() = pad.Vertical(s, w, soil).force_z;
     }
     result.trace.push_back({t, std::max(pad.Depth(s), 0.0), -s.v_WC.z(), f.z(), f.x(), s.p_WC.x() - xy_C0.x(),
                             units::RadToDeg(TiltFromVertical(s.R_WB))});

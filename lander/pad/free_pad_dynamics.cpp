@@ -50,9 +50,8 @@ const rft::SoilContactModel& FreePadDynamics::SoilUnder(const FreePadPose& s) co
   return terrain_.soils[terrain_.SoilAt(s.p_WB.x(), s.p_WB.y())].contact;
 }
 
-rft::ContactWrench FreePadDynamics::Wrench(const FreePadPose& s) const {
+rft::ContactWrench FreePadDynamics::Wrench(const FreePadPose& s, const rft::SoilContactModel& soil) const {
   rft::PadKinematics k{s.R_WB, s.p_WB, s.v_WB, s.w_W};
-  const rft::SoilContactModel& soil = SoilUnder(s);
   return rft::ComputeContactWrench(body_.surface, k, ground_, *soil.law, soil.pad_terms);
 }
 
@@ -62,9 +61,10 @@ rft::ContactWrench FreePadDynamics::Wrench(const FreePadPose& s) const {
 // kinetic energy lost, |dm_a/dt| v_z^2 / 2 (accretion, or carried off by shed grains), counts as
 // dissipated with the soil's work. Horizontal motion and rotation keep the pad's own inertia:
 // the cone is defined by the vertical stroke.
-FreePadVertical FreePadDynamics::Vertical(const FreePadPose& s, const rft::ContactWrench& w) const {
+FreePadVertical FreePadDynamics::Vertical(const FreePadPose& s, const rft::ContactWrench& w,
+                                          const rft::SoilContactModel& soil) const {
   FreePadVertical out;
-  const double added_density = SoilUnder(s).pad_terms.added_mass_density_kg_m3;
+  const double added_density = soil.pad_terms.added_mass_density_kg_m3;
   if (added_density > 0.0) {
     const rft::EntrainedMass e = rft::EntrainedCone(added_density, w.penetration_m, w.penetration_rate_m_s,
                                                     w.footprint_area_m2, w.footprint_area_rate_m2_s);
@@ -83,7 +83,8 @@ FreePadVertical FreePadDynamics::Vertical(const FreePadPose& s, const rft::Conta
 
 void FreePadDynamics::Derivative(const Eigen::Ref<const Eigen::VectorXd>& y, Eigen::Ref<Eigen::VectorXd> ydot) const {
   const FreePadPose s = PoseOf(y);
-  const rft::ContactWrench w = Moving(s) ? Wrench(s) : rft::ContactWrench{};
+  const rft::SoilContactModel& soil = SoilUnder(s);
+  const rft::ContactWrench w = Moving(s) ? Wrench(s, soil) : rft::ContactWrench{};
   const Eigen::Vector3d M_C = w.moment_W + (s.p_WB - s.p_WC).cross(w.force_W);
   ydot.segment<3>(kP) = s.v_WC;
   const Eigen::Vector4d q = y.segment<4>(kQ);
@@ -94,8 +95,8 @@ void FreePadDynamics::Derivative(const Eigen::Ref<const Eigen::VectorXd>& y, Eig
   ydot.segment<3>(kV) = w.force_W / m_ - Eigen::Vector3d(0.0, 0.0, g_);
   ydot.segment<3>(kW) = I_inv_ * (s.R_WB.transpose() * M_C - wb.cross(I_ * wb));
   ydot[kWork] = -(w.force_W.dot(s.v_WB) + w.moment_W.dot(s.w_W));
-  if (SoilUnder(s).pad_terms.added_mass_density_kg_m3 > 0.0) {
-    const FreePadVertical vz = Vertical(s, w);
+  if (soil.pad_terms.added_mass_density_kg_m3 > 0.0) {
+    const FreePadVertical vz = Vertical(s, w, soil);
     ydot[kV + 2] = vz.a_z;
     ydot[kWork] += vz.accretion_W;
   }

@@ -43,8 +43,9 @@ class FreePadDynamics {
   // The soil under the pad: the terrain's soil at the pad frame's origin (x, y), as a lander's pad
   // takes the soil at its ball joint. A pad crossing a patch's edge meets the other soil at once.
   const rft::SoilContactModel& SoilUnder(const FreePadPose& s) const;
-  rft::ContactWrench Wrench(const FreePadPose& s) const;
-  FreePadVertical Vertical(const FreePadPose& s, const rft::ContactWrench& w) const;
+  // The soil wrench and the vertical motion at pose s on `soil` (SoilUnder(s), looked up once).
+  rft::ContactWrench Wrench(const FreePadPose& s, const rft::SoilContactModel& soil) const;
+  FreePadVertical Vertical(const FreePadPose& s, const rft::ContactWrench& w, const rft::SoilContactModel& soil) const;
   // dy/dt at y.
   void Derivative(const Eigen::Ref<const Eigen::VectorXd>& y, Eigen::Ref<Eigen::VectorXd> ydot) const;
   // The soil's quasi-static capacity for further straight-down motion at pose s: the vertical force
