@@ -27,6 +27,12 @@ std::string Text(double v) {
 }
 }  // namespace
 
+std::string EffectParameterInfo::RangeProblem(double v) const {
+  if (std::isfinite(v) && v >= lower && v <= upper) return "";
+  return "must be in [" + Text(lower / file_to_si) + ", " + Text(upper / file_to_si) + "], got " +
+         Text(v / file_to_si);
+}
+
 const std::vector<EffectInfo>& EffectLibrary() {
   // Ranges are physical bounds (no negative damping, chi < 1); scales and starts are typical
   // magnitudes for 0.1 m pads at ~1 m/s on lunar simulants (a 100 N term), used by fits only.
@@ -75,10 +81,8 @@ rft::EffectTerms MakeEffectTerms(const std::vector<Effect>& effects, const std::
     for (size_t i = 0; i < e.values.size(); ++i) {
       const EffectParameterInfo& p = info.parameters[i];
       const double v = e.values[i];
-      if (!(std::isfinite(v) && v >= p.lower && v <= p.upper))
-        throw MakeInputError(context, e.id + "." + p.key,
-                             "must be in [" + Text(p.lower / p.file_to_si) + ", " + Text(p.upper / p.file_to_si) +
-                                 "], got " + Text(v / p.file_to_si));
+      if (const std::string why = p.RangeProblem(v); !why.empty())
+        throw MakeInputError(context, e.id + "." + p.key, why);
     }
     const std::vector<double>& v = e.values;
     if (e.id == "inertial_drag") t.inertial_lambda = v[0];

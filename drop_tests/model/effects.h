@@ -40,6 +40,10 @@ struct EffectParameterInfo {
   double scale = 1.0;       // a typical magnitude (SI), for fitting
   double start = 0.0;       // starting value of a fit (SI)
   std::vector<double> scan;  // if given, a fit first picks the best of these starts (SI)
+
+  // Why the SI value v is not admissible ("must be in [lower, upper], got v", in file units), or
+  // empty when it is.
+  std::string RangeProblem(double v) const;
 };
 
 struct EffectInfo {

@@ -1,19 +1,12 @@
 #include "drop_tests/model/effects_yaml.h"
 
 #include <cmath>
-#include <sstream>
 
 #include "rft/input_error.h"
 
 namespace touchdown::model {
 
 namespace {
-std::string Text(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
-
 // An effect's interval_95 mapping: checked for shape; the pairs (SI) in parameter order when
 // every parameter has one.
 std::vector<std::pair<double, double>> ReadIntervals(const io::YamlFields& iv, const EffectInfo& info) {
@@ -56,9 +49,7 @@ std::vector<Effect> ParseEffects(const io::YamlFields& f, EffectIntervals* inter
     Effect effect{id, {}};
     for (const EffectParameterInfo& p : info.parameters) {
       const double v = e.Number(p.key) * p.file_to_si;
-      if (!(v >= p.lower && v <= p.upper))
-        e.Fail(p.key, "must be in [" + Text(p.lower / p.file_to_si) + ", " + Text(p.upper / p.file_to_si) +
-                          "], got " + Text(v / p.file_to_si));
+      if (const std::string why = p.RangeProblem(v); !why.empty()) e.Fail(p.key, why);
       effect.values.push_back(v);
     }
     std::vector<std::pair<double, double>> pairs;
