@@ -30,7 +30,8 @@ void RunFreeDrop(benchmark::State& state, const char* pad_name, double tilt_deg,
   in.horizontal_speed_m_s = horizontal_m_s;
   in.omega_W = Eigen::Vector3d(0.0, 0.0, spin_rad_s);
   touchdown::pad::FreeDropResult r;
-  const touchdown::pad::FreeDropOptions opt;  // the defaults `touchdown drop --free` uses
+  touchdown::pad::FreeDropOptions opt;  // the defaults `touchdown drop --free` uses
+  if (getenv("TD_RTOL")) opt.integrator.rtol = atof(getenv("TD_RTOL"));
   for (auto _ : state) {
     r = touchdown::pad::RunFreeDrop(body, bed, in, opt);
     benchmark::DoNotOptimize(r.final_penetration_m);
@@ -45,6 +46,8 @@ void RunFreeDrop(benchmark::State& state, const char* pad_name, double tilt_deg,
   state.counters["roots"] = r.solver.root_evaluations;
   state.counters["depth_mm"] = r.final_penetration_m * 1e3;
   state.counters["tilt_deg"] = r.final_tilt_deg;
+  state.counters["rest_s"] = r.time_to_rest_s;
+  state.counters["samples"] = static_cast<double>(r.trace.size());
 }
 
 void BM_FreeDropFlatVertical(benchmark::State& s) { RunFreeDrop(s, "flat", 0.0, 0.0, 0.0); }

@@ -7,12 +7,13 @@
 //   Slope10_Sideways      LP on a 10 deg slope (downhill +x), level lander, 0.5 m/s across it (+y)
 // Counters: the solver's (steps, right-hand sides, Jacobians, failures), the outcome (pad 1's
 // final depth, final roll and pitch), and `realtime_factor` (simulated seconds per wall second).
-// TD_RTOL / TD_ATOL / TD_BDF (BDF + dense Newton instead of Adams) override the integrator for
-// convergence studies.
+// TD_RTOL / TD_ATOL / TD_ADAMS (Adams instead of BDF) / TD_MSBJ (most steps between Jacobians)
+// override the integrator for convergence studies.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
 #include <cstdlib>
+#include <string>
 
 #include "rft/units.h"
 #include "tests/lander/multibody/paper_lander.h"
@@ -27,7 +28,8 @@ lander::LanderRunOptions Options() {
   options.sample_rate_hz = 1000.0;  // lander_case_A.yaml: simulation
   if (getenv("TD_RTOL")) options.integrator.rtol = atof(getenv("TD_RTOL"));
   if (getenv("TD_ATOL")) options.integrator.atol = atof(getenv("TD_ATOL"));
-  if (getenv("TD_BDF")) options.integrator.stiff = true;
+  if (getenv("TD_ADAMS")) options.integrator.stiff = false;
+  if (getenv("TD_MSBJ")) options.integrator.max_steps_between_jacobians = atol(getenv("TD_MSBJ"));
   return options;
 }
 
@@ -43,11 +45,14 @@ void RunLanding(benchmark::State& state, const test::PaperLander& setup) {
   state.counters["solver_steps"] = static_cast<double>(last.solver.steps);
   state.counters["rhs_evals"] = static_cast<double>(last.solver.rhs_evaluations);
   state.counters["jac_rhs_evals"] = static_cast<double>(last.solver.jacobian_rhs_evaluations);
+  state.counters["jac_pad_contacts"] = static_cast<double>(last.jacobian_pad_contacts);
+  state.counters["events"] = static_cast<double>(last.events.size());
   state.counters["root_evals"] = static_cast<double>(last.solver.root_evaluations);
   state.counters["jac_evals"] = static_cast<double>(last.solver.jacobian_evaluations);
   state.counters["ncfn"] = static_cast<double>(last.solver.nonlinear_convergence_failures);
   state.counters["etf"] = static_cast<double>(last.solver.error_test_failures);
-  state.counters["pen1_mm"] = last.final_penetration_m[0] * 1e3;
+  for (int i = 0; i < lander::kNumLegs; ++i)
+    state.counters["pen" + std::to_string(i + 1) + "_mm"] = last.final_penetration_m[i] * 1e3;
   state.counters["roll_deg"] = last.final_attitude.roll_rad / units::kDeg;
   state.counters["pitch_deg"] = last.final_attitude.pitch_rad / units::kDeg;
   state.counters["max_tilt_deg"] = last.max_tilt_rad / units::kDeg;

@@ -38,6 +38,7 @@ struct CvodeIntegrator::Impl {
   int n = 0;
   RhsFunction rhs;
   RootSpec roots;
+  JacobianFunction jacobian;
   SUNContext context = nullptr;
   N_Vector y = nullptr;
   SUNMatrix matrix = nullptr;
@@ -94,6 +95,23 @@ struct CvodeIntegrator::Impl {
       self->rhs(t, ym, dm);
       // A non-finite derivative is recoverable: CVODE retries with a smaller step.
       return dm.allFinite() ? 0 : 1;
+    } catch (...) {
+      self->pending = std::current_exception();
+      return -1;
+    }
+  }
+
+  static int Jacobian(realtype t, N_Vector y, N_Vector fy, SUNMatrix J, void* user, N_Vector, N_Vector, N_Vector) {
+    auto* self = static_cast<Impl*>(user);
+    try {
+      if (self->OutOfTime()) return -1;
+      Eigen::Map<const Eigen::VectorXd> ym(N_VGetArrayPointer(y), self->n);
+      Eigen::Map<const Eigen::VectorXd> fm(N_VGetArrayPointer(fy), self->n);
+      // SUNDIALS' dense matrix is column-major and contiguous, as Eigen's default.
+      Eigen::Map<Eigen::MatrixXd> jm(SM_DATA_D(J), self->n, self->n);
+      jm.setZero();
+      self->jacobian(t, ym, fm, jm);
+      return jm.allFinite() ? 0 : 1;
     } catch (...) {
       self->pending = std::current_exception();
       return -1;
@@ -192,6 +210,13 @@ CvodeIntegrator::CvodeIntegrator(int state_size, RhsFunction rhs, const Integrat
 }
 
 CvodeIntegrator::~CvodeIntegrator() = default;
+
+void CvodeIntegrator::SetJacobian(JacobianFunction jacobian) {
+  Impl& m = *impl_;
+  if (!m.linear_solver) throw std::logic_error("CvodeIntegrator::SetJacobian: only the stiff (BDF) mode uses a Jacobian");
+  m.jacobian = std::move(jacobian);
+  m.Check(CVodeSetJacFn(m.cvode, m.jacobian ? &Impl::Jacobian : nullptr), "CVodeSetJacFn");
+}
 
 void CvodeIntegrator::Reset(double t0, const Eigen::VectorXd& y0) {
   Impl& m = *impl_;

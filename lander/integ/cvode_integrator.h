@@ -19,6 +19,12 @@ using RhsFunction = std::function<void(double t, Eigen::Ref<const Eigen::VectorX
                                        Eigen::Ref<Eigen::VectorXd> ydot)>;
 using RootFunction = std::function<void(double t, Eigen::Ref<const Eigen::VectorXd> y,
                                         Eigen::Ref<Eigen::VectorXd> g)>;
+// d(ydot)/dy at (t, y), given ydot = f(t, y), into a zeroed n x n matrix. A model that knows its
+// Jacobian's structure forms it for far less than CVODE's difference quotients (one right-hand
+// side per state); an approximate one is fine as long as it captures the stiff part: it only
+// drives the Newton iteration, never the accuracy of the result.
+using JacobianFunction = std::function<void(double t, Eigen::Ref<const Eigen::VectorXd> y,
+                                            Eigen::Ref<const Eigen::VectorXd> ydot, Eigen::Ref<Eigen::MatrixXd> J)>;
 
 struct IntegratorOptions {
   double rtol = 1e-10;
@@ -103,6 +109,9 @@ class CvodeIntegrator {
  public:
   CvodeIntegrator(int state_size, RhsFunction rhs, const IntegratorOptions& options,
                   RootSpec roots = {});
+  // Stiff mode only: the Newton iteration's Jacobian comes from `jacobian` instead of difference
+  // quotients.
+  void SetJacobian(JacobianFunction jacobian);
   ~CvodeIntegrator();
   CvodeIntegrator(const CvodeIntegrator&) = delete;
   CvodeIntegrator& operator=(const CvodeIntegrator&) = delete;

@@ -101,6 +101,19 @@ double PadDepth(const LanderModel& model, const rft::Terrain& terrain, int leg, 
                                  *terrain.surface);
 }
 
+rft::ContactWrench FreePadSoilWrench(const LanderModel& model, const rft::SoilContactModel& contact, int leg,
+                                     const PadFrame& f, const rft::GroundSurface& surface) {
+  const Leg& l = model.legs[leg];
+  rft::PadKinematics k{f.R_WP, f.p_WJ, f.v_WJ_W, f.w_WP_W};
+  const double speed = f.v_WJ_W.norm() + f.w_WP_W.norm() * PadRadius(l);
+  rft::ContactWrench w = rft::ComputeContactWrench(l.pad->surface, k, surface, *contact.law, contact.pad_terms);
+  if (speed < kSoilRampSpeed) {
+    w.force_W *= speed / kSoilRampSpeed;
+    w.moment_W *= speed / kSoilRampSpeed;
+  }
+  return w;
+}
+
 rft::ContactWrench QuasiStaticWrench(const LanderModel& model, const rft::Terrain& terrain, int leg, const PadFrame& pad,
                                      const Eigen::Vector3d& direction_W) {
   rft::PadKinematics k{pad.R_WP, pad.p_WJ, kProbeSpeed * direction_W.normalized(), Eigen::Vector3d::Zero()};
@@ -120,7 +133,7 @@ struct Assembly {
 // Mass matrix and generalised forces without constraint forces. Fills e->soil, leg forces and
 // the dissipation of free pads, dampers and crushing.
 void Assemble(const LanderModel& model, const StateLayout& L, const rft::Terrain& terrain, const LanderModes& modes,
-              const Eigen::Ref<const Eigen::VectorXd>& y, LanderEvaluation* e, Assembly* a) {
+              const Eigen::Ref<const Eigen::VectorXd>& y, const GivenSoil* given, LanderEvaluation* e, Assembly* a) {
   const LanderPose& p = e->pose;
   const Eigen::Vector3d g(0, 0, -model.gravity_m_s2);
   a->M.setZero(L.nu, L.nu);
@@ -148,16 +161,11 @@ void Assemble(const LanderModel& model, const StateLayout& L, const rft::Terrain
     // Soil: RFT on a free pad in contact; a held pad's wrench is a constraint force (later).
     rft::ContactWrench& w = e->soil[i];
     w = rft::ContactWrench{};
-    if (modes.pad[i] == PadMode::kFree && PadDepth(model, terrain, i, f) > 0.0) {
-      rft::PadKinematics k{f.R_WP, f.p_WJ, f.v_WJ_W, f.w_WP_W};
-      const double speed = f.v_WJ_W.norm() + f.w_WP_W.norm() * PadRadius(leg);
+    const rft::ContactWrench* given_wrench = given ? given->wrench[i] : nullptr;
+    if (modes.pad[i] == PadMode::kFree && (given_wrench || PadDepth(model, terrain, i, f) > 0.0)) {
       const int soil = terrain.SoilAt(f.p_WJ.x(), f.p_WJ.y());
       const rft::SoilContactModel& contact = terrain.soils[soil].contact;
-      w = rft::ComputeContactWrench(leg.pad->surface, k, *terrain.surface, *contact.law, contact.pad_terms);
-      if (speed < kSoilRampSpeed) {
-        w.force_W *= speed / kSoilRampSpeed;
-        w.moment_W *= speed / kSoilRampSpeed;
-      }
+      w = given_wrench ? *given_wrench : FreePadSoilWrench(model, contact, i, f, *terrain.surface);
       e->dissipation_W -= w.force_W.dot(f.v_WJ_W) + w.moment_W.dot(f.w_WP_W);
       // added_mass (rft/entrained_mass.h): the entrained cone moves with the vertical velocity of
       // the pad's centre of mass, as in the free drop: a mass m_a on the row e_z^T J_C, with the
@@ -264,10 +272,11 @@ void EvaluateLander(const LanderModel& model, const StateLayout& L, const rft::T
 }
 
 void EvaluateLander(const LanderModel& model, const StateLayout& L, const rft::Terrain& terrain, const LanderModes& modes,
-                    const Eigen::Ref<const Eigen::VectorXd>& y, LanderEvaluation* e, LanderData* data) {
+                    const Eigen::Ref<const Eigen::VectorXd>& y, LanderEvaluation* e, LanderData* data,
+                    const GivenSoil* given) {
   e->pose = ComputePose(model, L, y);
   Assembly a;
-  Assemble(model, L, terrain, modes, y, e, &a);
+  Assemble(model, L, terrain, modes, y, given, e, &a);
   const Eigen::LLT<Mat> llt(a.M);
   Vec u_dot = llt.solve(a.Q);
 

@@ -122,6 +122,13 @@ struct LanderData {
   Eigen::CompleteOrthogonalDecomposition<RowsByRows> cod;
 };
 
+// Soil wrenches an evaluation takes as given instead of computing them: a Jacobian column that
+// moves one pad leaves the other pads' contact unchanged (their contact depends on their own
+// state and the body's only), and the contact is nearly all of a right-hand side's cost.
+struct GivenSoil {
+  std::array<const rft::ContactWrench*, kNumLegs> wrench{};  // nullptr: compute (free pads only)
+};
+
 // Pose and velocities of all bodies from y.
 LanderPose ComputePose(const LanderModel& model, const StateLayout& layout, const Eigen::Ref<const Eigen::VectorXd>& y);
 
@@ -131,7 +138,7 @@ double PadDepth(const LanderModel& model, const rft::Terrain& terrain, int leg, 
 // The equations of motion (pure function of model, terrain, modes and state).
 void EvaluateLander(const LanderModel& model, const StateLayout& layout, const rft::Terrain& terrain,
                     const LanderModes& modes, const Eigen::Ref<const Eigen::VectorXd>& y, LanderEvaluation* out,
-                    LanderData* data);
+                    LanderData* data, const GivenSoil* given = nullptr);
 // The same with scratch of its own (allocates: for samples and events, not right-hand sides).
 void EvaluateLander(const LanderModel& model, const StateLayout& layout, const rft::Terrain& terrain,
                     const LanderModes& modes, const Eigen::Ref<const Eigen::VectorXd>& y, LanderEvaluation* out);
@@ -142,6 +149,11 @@ void StateDerivative(const StateLayout& layout, const Eigen::Ref<const Eigen::Ve
 // Kinetic energy, and potential energy (gravity, absorber springs, cone stops) [J].
 double KineticEnergy(const LanderModel& model, const StateLayout& layout, const Eigen::Ref<const Eigen::VectorXd>& y);
 double PotentialEnergy(const LanderModel& model, const StateLayout& layout, const Eigen::Ref<const Eigen::VectorXd>& y);
+
+// RFT soil wrench on a free pad in contact with `contact` (moment about the joint centre), with
+// the low-speed ramp (kSoilRampSpeed).
+rft::ContactWrench FreePadSoilWrench(const LanderModel& model, const rft::SoilContactModel& contact, int leg,
+                                     const PadFrame& pad, const rft::GroundSurface& surface);
 
 // Soil wrench on a pad at rest that starts to move along `direction` (the quasi-static
 // capacity in that direction).

@@ -20,6 +20,11 @@ int LegRoot(int leg, int k) { return kNumLegs * kPadRoots + kLegRoots * leg + k;
 // A pad whose joint centre moves slower than this is kinematically at rest (numerical zero,
 // e.g. the fourth pad once three held pads have stopped a rigid-legged lander).
 constexpr double kAtRestSpeed = 1e-10;
+// A capture is offered to every pad within this fraction above the capture speed. Why: pads that
+// slow down together by symmetry (case B's pads 2 and 4) reach the capture speed at the same time
+// up to the integration error; holding one and not its twin would turn that error into a
+// different landing (0.015 mm of sinkage, 0.002 deg of roll and pitch).
+constexpr double kCaptureTogether = 1e-3;
 
 bool IsCrushable(const LanderModel& m, const StateLayout& L, int i) {
   return L.stroke_slot[i] >= 0 && m.legs[i].absorber->kind == ShockAbsorber::Kind::kCrushable;
@@ -203,7 +208,7 @@ void LanderHybrid::OfferCaptures(const LanderPose& pose, std::array<bool, kNumLe
   if (std::none_of(fresh.begin(), fresh.end(), [](bool b) { return b; })) return;
   for (int i = 0; i < kNumLegs; ++i)
     if (modes_.pad[i] == PadMode::kFree && PadDepth(model_, terrain_, i, pose.pads[i]) > 0.0 &&
-        pose.pads[i].v_WJ_W.norm() <= options_.capture_speed_m_s) {
+        pose.pads[i].v_WJ_W.norm() <= options_.capture_speed_m_s * (1.0 + kCaptureTogether)) {
       modes_.pad[i] = PadMode::kHeld;
       fresh[i] = true;
     }
@@ -307,6 +312,7 @@ void LanderHybrid::Finish(double t, const Eigen::VectorXd& y) {
   result_.dissipated_J = y[L_.work()];
   result_.end_time_s = t;
   result_.final_state = y;
+  result_.jacobian_pad_contacts = jacobian_data_.contact_evaluations;
 }
 
 }  // namespace touchdown::lander

@@ -9,6 +9,7 @@
 
 #include "lander/integ/hybrid_run.h"
 #include "lander/multibody/lander_dynamics.h"
+#include "lander/multibody/lander_jacobian.h"
 #include "lander/multibody/lander_run.h"
 
 namespace touchdown::lander {
@@ -26,6 +27,11 @@ class LanderHybrid {
   const StateLayout& layout() const { return L_; }
   void Derivative(Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::VectorXd> ydot);
   void Roots(Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::VectorXd> g);
+  // BDF's Newton Jacobian (lander_jacobian.h); `scale`: each state's typical size.
+  void Jacobian(Eigen::Ref<const Eigen::VectorXd> y, const Eigen::VectorXd& scale, Eigen::Ref<Eigen::MatrixXd> J) {
+    LanderJacobian(model_, L_, terrain_, modes_, y, scale, &data_, &jacobian_data_, J);
+  }
+  long jacobian_contact_evaluations() const { return jacobian_data_.contact_evaluations; }
   integ::RootSpec RootFunctions();
   void Record(double t, const Eigen::VectorXd& s);
   void TouchdownsAtRelease(const Eigen::VectorXd& y);
@@ -49,6 +55,7 @@ class LanderHybrid {
   LanderModes modes_;
   LanderData data_;  // scratch of the right-hand side and the root functions
   LanderEvaluation eval_, root_eval_;
+  LanderJacobianData jacobian_data_;
   std::array<Eigen::Vector3d, kNumLegs> held_at_;
 };
 

