@@ -33,8 +33,14 @@ lander::LanderRunOptions Options() {
   return options;
 }
 
-void RunLanding(benchmark::State& state, const test::PaperLander& setup) {
+void RunLanding(benchmark::State& state, const test::PaperLander& setup_in) {
   const lander::LanderRunOptions options = Options();
+  test::PaperLander setup = setup_in;
+  if (getenv("TD_PADI")) {
+    auto body = std::make_shared<geom::PadBody>(*setup.model.legs[0].pad);
+    body->inertia_com_B *= atof(getenv("TD_PADI"));
+    for (auto& leg : setup.model.legs) leg.pad = body;
+  }
   lander::LanderRunResult last;
   for (auto _ : state) {
     lander::LanderRunResult r = lander::SimulateLander(setup.model, setup.terrain, setup.initial, options);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 namespace touchdown::lander {
@@ -37,11 +38,18 @@ struct HoldCheck {
   Eigen::Vector3d slide_direction = Eigen::Vector3d::Zero();
 };
 
+// `sink_capacity` (optional): the pad's vertical capacity, NaN until known. A held pad does not
+// move, so its capacity straight down is the same until the next event; the root functions keep it
+// (on a slope, where pads stay held while the lander slides, the capacity checks were half of all
+// contact evaluations).
 HoldCheck CheckHold(const LanderModel& model, const rft::Terrain& terrain, int i, const PadFrame& f,
-                    const rft::ContactWrench& reaction) {
+                    const rft::ContactWrench& reaction, double* sink_capacity = nullptr) {
   HoldCheck h;
   h.lift = reaction.force_W.z();
-  h.sink = QuasiStaticWrench(model, terrain, i, f, Eigen::Vector3d(0, 0, -1)).force_W.z() - h.lift;
+  const bool known = sink_capacity && !std::isnan(*sink_capacity);
+  const double down = known ? *sink_capacity : QuasiStaticWrench(model, terrain, i, f, Eigen::Vector3d(0, 0, -1)).force_W.z();
+  if (sink_capacity) *sink_capacity = down;
+  h.sink = down - h.lift;
   Eigen::Vector3d horizontal(reaction.force_W.x(), reaction.force_W.y(), 0.0);
   const double load = horizontal.norm();
   if (load > 0.0) {
@@ -79,7 +87,7 @@ void LanderHybrid::Roots(Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::
       // has slowed down once more.
       g[PadRoot(i, 3)] = g[PadRoot(i, 0)] > 0.0 ? f.v_WJ_W.norm() - kSoilRampSpeed : 1.0;
     } else {
-      const HoldCheck h = CheckHold(model_, terrain_, i, f, root_eval_.soil[i]);
+      const HoldCheck h = CheckHold(model_, terrain_, i, f, root_eval_.soil[i], &sink_capacity_[i]);
       g[PadRoot(i, 1)] = h.lift;
       g[PadRoot(i, 2)] = h.sink;
       g[PadRoot(i, 3)] = h.slide;
@@ -278,6 +286,7 @@ bool LanderHybrid::RecordCaptures(double t, const Eigen::VectorXd& y, const std:
 }
 
 integ::EventAction LanderHybrid::OnEvent(double t, const std::vector<int>& found, Eigen::VectorXd& y) {
+  sink_capacity_.fill(std::numeric_limits<double>::quiet_NaN());  // holds and poses may change here
   Record(t, y);  // the state at the event, in the old modes (peak forces before a capture)
   const LanderPose pose = ComputePose(model_, L_, y);
   Touchdowns(t, found);

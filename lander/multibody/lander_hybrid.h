@@ -5,6 +5,7 @@
 // SimulateLander.
 #include <Eigen/Core>
 #include <array>
+#include <limits>
 #include <vector>
 
 #include "lander/integ/hybrid_run.h"
@@ -57,6 +58,9 @@ class LanderHybrid {
   LanderEvaluation eval_, root_eval_;
   LanderJacobianData jacobian_data_;
   std::array<Eigen::Vector3d, kNumLegs> held_at_;
+  // Vertical capacity of each held pad since the last event (NaN: not yet evaluated).
+  std::array<double, kNumLegs> sink_capacity_{kUnknown, kUnknown, kUnknown, kUnknown};
+  static constexpr double kUnknown = std::numeric_limits<double>::quiet_NaN();
 };
 
 }  // namespace touchdown::lander
