@@ -6,9 +6,10 @@
 //   CaseA_Attitude        case A rolled and pitched 5 deg at release, 0.5 m/s horizontally
 //   Slope10_Sideways      LP on a 10 deg slope (downhill +x), level lander, 0.5 m/s across it (+y)
 // Counters: the solver's (steps, right-hand sides, Jacobians, failures), the outcome (pad 1's
-// final depth, final roll and pitch), and `realtime_factor` (simulated seconds per wall second).
+// final depths, final roll and pitch), and `realtime_factor` (simulated seconds per wall second).
 // TD_RTOL / TD_ATOL / TD_ADAMS (Adams instead of BDF) / TD_MSBJ (most steps between Jacobians)
-// override the integrator for convergence studies.
+// override the integrator for convergence studies; TD_PADI scales the pads' rotational inertia (an
+// experiment: how much of the step count the pads' fast rotation in the soil causes).
 #include <benchmark/benchmark.h>
 
 #include <cmath>
