@@ -25,6 +25,13 @@ Eigen::Vector3d LanderCentreOfMass(const LanderModel& model, const LanderPose& p
   return moment / model.TotalMass();
 }
 
+double InsideEdgeDistance(const LanderPose& pose, int edge, const Eigen::Vector3d& point_W) {
+  const Eigen::Vector2d a = pose.pads[edge].p_WJ.head<2>(), b = pose.pads[(edge + 1) % kNumLegs].p_WJ.head<2>();
+  const Eigen::Vector2d e = b - a, r = point_W.head<2>() - a;
+  // Clockwise polygon seen from above: the inside is on the right of each edge.
+  return -(e.x() * r.y() - e.y() * r.x()) / e.norm();
+}
+
 Eigen::VectorXd RotateLanderState(const StateLayout& L, const Eigen::Ref<const Eigen::VectorXd>& y,
                                   const Eigen::Matrix3d& R_W, const Eigen::Vector3d& pivot_W) {
   Eigen::VectorXd out = y;
@@ -68,7 +75,7 @@ EdgeTipping TippingAboutEdge(const LanderModel& model, const LanderPose& pose, c
   const Eigen::Vector3d inward = e.cross(up).normalized();
   const Eigen::Vector3d normal_up = inward.cross(e);  // perpendicular to the edge, upward (z = |e x z|)
   const Eigen::Vector3d r = com - a;
-  edge.inside_m = r.dot(inward);  // as StabilityMargin measures it
+  edge.inside_m = InsideEdgeDistance(pose, from_leg, com);  // r . inward, as StabilityMargin has it
   edge.height_m = r.dot(normal_up);
   edge.tip_angle_rad = std::atan2(edge.inside_m, edge.height_m);
   const double radius = std::hypot(edge.inside_m, edge.height_m);
@@ -152,6 +159,7 @@ EnergyTipOver EnergyTipOverAtEdge(const LanderModel& model, const StateLayout& l
   EnergyTipOver out;
   out.barrier_J = EdgeTippings(model, layout, standing)[edge_from_leg].barrier_J;
   out.kinetic_J = KineticEnergy(model, layout, touchdown);
+  out.released_potential_J = PotentialEnergy(model, layout, touchdown) - PotentialEnergy(model, layout, standing);
   out.edge_kinetic_J = EdgeTippings(model, layout, touchdown)[edge_from_leg].EdgeKineticEnergy();
   return out;
 }

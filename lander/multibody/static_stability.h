@@ -27,8 +27,14 @@ struct SlopeGeometry {
 // The slope of a plane; a level plane descends along `downhill_if_level_W`.
 SlopeGeometry SlopeOf(const rft::PlaneGround& plane, const Eigen::Vector3d& downhill_if_level_W = Eigen::Vector3d::UnitX());
 
-// Centre of mass of the whole lander (body and pads), world frame [m].
+// Centre of mass of the whole lander (body and pads), world frame [m]; the point StabilityMargin
+// tests, with the same arithmetic.
 Eigen::Vector3d LanderCentreOfMass(const LanderModel& model, const LanderPose& pose);
+
+// Signed horizontal distance of point_W inside the support polygon's edge `edge` (from joint centre
+// `edge` to the next one clockwise seen from above; positive inside) [m]: StabilityMargin's
+// distance, with the same arithmetic (StabilityMargin = its minimum over the edges at the CoM).
+double InsideEdgeDistance(const LanderPose& pose, int edge, const Eigen::Vector3d& point_W);
 
 // The state turned rigidly by R_W about `pivot_W` (positions, attitudes and velocities; strokes and
 // the dissipated work unchanged): the same standing configuration on a tilted world.
@@ -69,20 +75,24 @@ struct StaticTipOver {
 StaticTipOver StaticTipOverOnSlope(const LanderModel& model, const StateLayout& layout,
                                    const Eigen::Ref<const Eigen::VectorXd>& y_rest, const SlopeGeometry& slope);
 
-// The energy criterion at a touchdown state y (docs/tip_over_criteria.md):
-//   necessary  kinetic_J > barrier_J of the edge (a lower bound on the tipping speed: energy
-//              conservation with dissipation >= 0, the edge where it is at rest);
-//   estimate   edge_kinetic_J > barrier_J (rigid rotation about the edge after a plastic capture of
-//              the edge's pads).
+// The energy criterion at a touchdown state (docs/tip_over_criteria.md):
+//   necessary  kinetic_J + released_potential_J > barrier_J: to tip, the lander must lift its CoM
+//              over the edge, and between touchdown and that moment the soil only takes energy out
+//              (a lower bound on the tipping speed, for a crossing about the edge where `standing`
+//              has it; pads that sink deeper than that lower the crossing, and the bound with it);
+//   estimate   edge_kinetic_J > barrier_J: the edge's pads stop at once (a plastic capture, the
+//              angular momentum about the edge kept, omega = H / I) and the lander then turns
+//              rigidly about the edge with nothing more dissipated.
 struct EnergyTipOver {
-  double barrier_J = 0.0;
-  double kinetic_J = 0.0;       // the whole lander's kinetic energy
-  double edge_kinetic_J = 0.0;  // the part that drives the rotation about the edge
-  bool NecessaryConditionMet() const { return kinetic_J > barrier_J; }
+  double barrier_J = 0.0;             // of `standing` about the edge
+  double kinetic_J = 0.0;             // the whole lander's at touchdown
+  double released_potential_J = 0.0;  // potential energy from touchdown down to `standing` (the sinking)
+  double edge_kinetic_J = 0.0;        // the part of kinetic_J that drives the rotation about the edge
+  bool NecessaryConditionMet() const { return kinetic_J + released_potential_J > barrier_J; }
   bool EstimateTips() const { return edge_kinetic_J > barrier_J; }
 };
-// `barrier_J` comes from `standing` (the lander at rest: the edge and the sinkage where the landing
-// leaves them), the kinetic energies from `touchdown` (the state as the edge's pads touch down).
+// `standing`: the lander at rest where the landing leaves it (the edge and the sinkage);
+// `touchdown`: the state as the pads touch down.
 EnergyTipOver EnergyTipOverAtEdge(const LanderModel& model, const StateLayout& layout,
                                   const Eigen::Ref<const Eigen::VectorXd>& standing,
                                   const Eigen::Ref<const Eigen::VectorXd>& touchdown, int edge_from_leg);
