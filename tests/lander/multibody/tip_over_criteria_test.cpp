@@ -322,7 +322,7 @@ TEST(TipOverCriteria, EnergyBoundsBracketTheDynamicTippingSpeed) {
   EXPECT_LT(tips, v_estimate);
 }
 
-// The brief's sharpest form of the lower bound: a downhill speed just under it never tips. Disabled
+// The sharpest form of the lower bound (issue 15): a downhill speed just under it never tips. Disabled
 // because this landing costs 80 s today (3.8 M steps: the downhill pads plough at mm/s without
 // being captured while the lander rocks on them); enable once such landings are fast (issue 15).
 TEST(TipOverCriteria, DISABLED_JustBelowTheEnergyLowerBoundNeverTips) {
