@@ -158,10 +158,11 @@ TEST(TipOverCriteria, EdgeKineticEnergyIsThePlasticCaptureAboutTheEdge) {
 // --- The criteria against the lander's own tip-over event -------------------------------------
 //
 // The paper's lander on legs 0.8 m longer (its body's CoM 0.8 m higher; masses, inertia, pads,
-// footprint and soil unchanged). Why not the paper's lander itself: on FJS-1 LP it does not stand
-// on slopes steeper than about 14 deg (its pads slide; 15-50 deg landings at 0.1 m/s never come to
-// rest), far below its static tip-over angle of 45 deg, so its quasi-static boundary is the soil's,
-// not the static criterion's. Raised, its static angle is 12.5 deg, where LP holds the pads.
+// footprint and soil unchanged). Why not the paper's lander itself: its static tip-over angle is
+// 45 deg, and today its slow landings on LP come to rest only below 14 deg (on 14 and 20 deg it
+// stops but its pads are never held, 150-230 s of creeping per landing; on 40-44 deg it slides and
+// tips), so there is no affordable landing near its static angle (docs/tip_over_criteria.md).
+// Raised, its static angle is 12.6 deg, where its landings cost 0.01-0.5 s.
 constexpr double kTipLegExtension_m = 0.8;
 constexpr double kTipTouchdownSpeed = 0.1;  // vertical, at the first pad's touchdown [m/s]
 
