@@ -304,7 +304,7 @@ TEST(TipOverCriteria, EnergyBoundsBracketTheDynamicTippingSpeed) {
   std::printf("[ energy ] slope 5 deg: barrier %.4f J, sinking releases %.4f J, lower bound %.4f m/s, plastic-capture "
               "estimate %.4f m/s\n", barrier, released, v_lower, v_estimate);
   // Below the lower bound: the landing without horizontal speed stands (TallLanderAtRestOn5Deg); one
-  // just below it (0.95 v_lower) is DISABLED_JustBelowTheEnergyLowerBoundNeverTips (80 s today).
+  // just below it (0.95 v_lower) is JustBelowTheEnergyLowerBoundNeverTips.
   ASSERT_FALSE(TallLanderAtRestOn5Deg().tipped_over);
   // The dynamic critical speed by halving, from 0.85 and 1.5 times the estimate (landings that cost
   // 0.1 s each today; speeds of 0.1-0.36 m/s, where the downhill pads plough without being captured
@@ -323,10 +323,10 @@ TEST(TipOverCriteria, EnergyBoundsBracketTheDynamicTippingSpeed) {
   EXPECT_LT(tips, v_estimate);
 }
 
-// The sharpest form of the lower bound (issue 15): a downhill speed just under it never tips. Disabled
-// because this landing costs 80 s today (3.8 M steps: the downhill pads plough at mm/s without
-// being captured while the lander rocks on them); enable once such landings are fast (issue 15).
-TEST(TipOverCriteria, DISABLED_JustBelowTheEnergyLowerBoundNeverTips) {
+// The sharpest form of the lower bound (issue 15): a downhill speed just under it never tips. (With
+// Adams this landing took 80 s, 3.8 M steps, while the downhill pads ploughed at mm/s; BDF with the
+// lander's Jacobian takes 0.15 s.)
+TEST(TipOverCriteria, JustBelowTheEnergyLowerBoundNeverTips) {
   const test::PaperLander tall = TallLanderOnSlope({});
   const StateLayout L(tall.model);
   const double slope = 5.0 * units::kDeg;
