@@ -439,19 +439,25 @@ Attitude BodyAttitude(const Eigen::Matrix3d& R) {
   return a;
 }
 
+Eigen::Vector3d LanderCentreOfMass(const LanderModel& model, const LanderPose& pose) {
+  Eigen::Vector3d moment = model.body_mass_kg * pose.p_WB;
+  for (int i = 0; i < kNumLegs; ++i)
+    moment += model.legs[i].pad->mass_kg * (pose.pads[i].p_WJ + pose.pads[i].c_JC_W);
+  return moment / model.TotalMass();
+}
+
+double InsideEdgeDistance(const LanderPose& pose, int edge, const Eigen::Vector3d& point_W) {
+  const Eigen::Vector2d a = pose.pads[edge].p_WJ.head<2>(), b = pose.pads[(edge + 1) % kNumLegs].p_WJ.head<2>();
+  const Eigen::Vector2d e = b - a, r = point_W.head<2>() - a;
+  // Clockwise polygon seen from above: the inside is on the right of each edge.
+  return -(e.x() * r.y() - e.y() * r.x()) / e.norm();
+}
+
 double StabilityMargin(const LanderModel& model, const StateLayout& L, const Eigen::Ref<const Eigen::VectorXd>& y) {
   const LanderPose p = ComputePose(model, L, y);
-  Eigen::Vector3d com = model.body_mass_kg * p.p_WB;
-  for (int i = 0; i < kNumLegs; ++i)
-    com += model.legs[i].pad->mass_kg * (p.pads[i].p_WJ + p.pads[i].c_JC_W);
-  com /= model.TotalMass();
+  const Eigen::Vector3d com = LanderCentreOfMass(model, p);
   double margin = std::numeric_limits<double>::infinity();
-  for (int i = 0; i < kNumLegs; ++i) {
-    const Eigen::Vector2d a = p.pads[i].p_WJ.head<2>(), b = p.pads[(i + 1) % kNumLegs].p_WJ.head<2>();
-    const Eigen::Vector2d e = b - a, r = com.head<2>() - a;
-    // Clockwise polygon seen from above: the inside is on the right of each edge.
-    margin = std::min(margin, -(e.x() * r.y() - e.y() * r.x()) / e.norm());
-  }
+  for (int i = 0; i < kNumLegs; ++i) margin = std::min(margin, InsideEdgeDistance(p, i, com));
   return margin;
 }
 

@@ -176,8 +176,16 @@ struct Attitude {
 };
 Attitude BodyAttitude(const Eigen::Matrix3d& R_WB);
 
+// Centre of mass of the whole lander (body and pads), world frame [m]; the point StabilityMargin
+// tests.
+Eigen::Vector3d LanderCentreOfMass(const LanderModel& model, const LanderPose& pose);
+
+// Signed horizontal distance of point_W inside the support polygon's edge `edge` (from joint centre
+// `edge` to the next one clockwise seen from above; positive inside) [m].
+double InsideEdgeDistance(const LanderPose& pose, int edge, const Eigen::Vector3d& point_W);
+
 // Signed horizontal distance of the lander's centre of mass inside the polygon of the joint
-// centres (positive inside) [m].
+// centres (positive inside) [m]: the least InsideEdgeDistance of LanderCentreOfMass.
 double StabilityMargin(const LanderModel& model, const StateLayout& layout, const Eigen::Ref<const Eigen::VectorXd>& y);
 
 }  // namespace touchdown::lander

@@ -145,7 +145,7 @@ void LanderHybrid::Record(double t, const Eigen::VectorXd& s) {
 
 // A pad already on the surface at release (touchdown_speed_m_s: 0 places the lowest pad there)
 // touches down at t = 0: CVODE never reports a root that holds at the start.
-void LanderHybrid::TouchdownsAtRelease(const Eigen::VectorXd& y) {
+bool LanderHybrid::TouchdownsAtRelease(const Eigen::VectorXd& y) {
   constexpr double kTouchingAtRelease_m = 1e-9;  // rounding of the placement, far below any sinkage
   const LanderPose pose = ComputePose(model_, L_, y);
   for (int i = 0; i < kNumLegs; ++i)
@@ -154,6 +154,11 @@ void LanderHybrid::TouchdownsAtRelease(const Eigen::VectorXd& y) {
       result_.touchdown_time_s[i] = 0.0;
       result_.first_touchdown_s = 0.0;
     }
+  // Standing at release with the centre of mass outside the support polygon: over at once (OnEvent).
+  if (!result_.first_touchdown_s || StabilityMargin(model_, L_, y) >= 0.0) return false;
+  result_.tipped_over = true;
+  result_.events.push_back({0.0, LanderEventKind::kTipOver, -1});
+  return true;
 }
 
 void LanderHybrid::Touchdowns(double t, const std::vector<int>& found) {
@@ -290,7 +295,12 @@ integ::EventAction LanderHybrid::OnEvent(double t, const std::vector<int>& found
   Record(t, y);  // the state at the event, in the old modes (peak forces before a capture)
   const LanderPose pose = ComputePose(model_, L_, y);
   Touchdowns(t, found);
-  if (found[kTipRoot] != 0) {
+  // The tip-over root fires when the margin falls through zero; a lander whose centre of mass is
+  // already outside its support polygon when a pad touches (aligned to a slope steeper than its
+  // static angle) would never see it fall.
+  bool touched = false;
+  for (int i = 0; i < kNumLegs; ++i) touched |= found[PadRoot(i, 0)] != 0;
+  if (found[kTipRoot] != 0 || (touched && StabilityMargin(model_, L_, y) < 0.0)) {
     result_.tipped_over = true;
     result_.events.push_back({t, LanderEventKind::kTipOver, -1});
     return integ::EventAction::kStop;

@@ -35,7 +35,9 @@ class LanderHybrid {
   long jacobian_contact_evaluations() const { return jacobian_data_.contact_evaluations; }
   integ::RootSpec RootFunctions();
   void Record(double t, const Eigen::VectorXd& s);
-  void TouchdownsAtRelease(const Eigen::VectorXd& y);
+  // Touchdowns of pads touching at release; true if the lander is over already (it stands with
+  // its centre of mass outside the support polygon).
+  bool TouchdownsAtRelease(const Eigen::VectorXd& y);
   integ::EventAction OnEvent(double t, const std::vector<int>& found, Eigen::VectorXd& y);
   bool at_rest() const { return result_.rest_time_s.has_value(); }
   void Finish(double t, const Eigen::VectorXd& y);

@@ -108,8 +108,13 @@ LanderRunResult SimulateLander(const LanderModel& model, const rft::Terrain& ter
   result.initial_energy_J = KineticEnergy(model, L, y0) + PotentialEnergy(model, L, y0);
   integ::HybridRun run(integrator);
   run.Start(0.0, y0);
-  lander.TouchdownsAtRelease(y0);
+  const bool over_at_release = lander.TouchdownsAtRelease(y0);
   lander.Record(0.0, y0);
+  if (over_at_release) {
+    lander.Finish(0.0, y0);
+    result.solver = run.summary().solver;
+    return result;
+  }
 
   integ::HybridPhase phase;
   phase.sample_rate_hz = options.sample_rate_hz;

@@ -18,20 +18,6 @@ SlopeGeometry SlopeOf(const rft::PlaneGround& plane, const Eigen::Vector3d& down
   return {std::atan(rise), -gradient / rise};
 }
 
-Eigen::Vector3d LanderCentreOfMass(const LanderModel& model, const LanderPose& pose) {
-  Eigen::Vector3d moment = model.body_mass_kg * pose.p_WB;
-  for (int i = 0; i < kNumLegs; ++i)
-    moment += model.legs[i].pad->mass_kg * (pose.pads[i].p_WJ + pose.pads[i].c_JC_W);
-  return moment / model.TotalMass();
-}
-
-double InsideEdgeDistance(const LanderPose& pose, int edge, const Eigen::Vector3d& point_W) {
-  const Eigen::Vector2d a = pose.pads[edge].p_WJ.head<2>(), b = pose.pads[(edge + 1) % kNumLegs].p_WJ.head<2>();
-  const Eigen::Vector2d e = b - a, r = point_W.head<2>() - a;
-  // Clockwise polygon seen from above: the inside is on the right of each edge.
-  return -(e.x() * r.y() - e.y() * r.x()) / e.norm();
-}
-
 Eigen::VectorXd RotateLanderState(const StateLayout& L, const Eigen::Ref<const Eigen::VectorXd>& y,
                                   const Eigen::Matrix3d& R_W, const Eigen::Vector3d& pivot_W) {
   Eigen::VectorXd out = y;

@@ -27,15 +27,6 @@ struct SlopeGeometry {
 // The slope of a plane; a level plane descends along `downhill_if_level_W`.
 SlopeGeometry SlopeOf(const rft::PlaneGround& plane, const Eigen::Vector3d& downhill_if_level_W = Eigen::Vector3d::UnitX());
 
-// Centre of mass of the whole lander (body and pads), world frame [m]; the point StabilityMargin
-// tests, with the same arithmetic.
-Eigen::Vector3d LanderCentreOfMass(const LanderModel& model, const LanderPose& pose);
-
-// Signed horizontal distance of point_W inside the support polygon's edge `edge` (from joint centre
-// `edge` to the next one clockwise seen from above; positive inside) [m]: StabilityMargin's
-// distance, with the same arithmetic (StabilityMargin = its minimum over the edges at the CoM).
-double InsideEdgeDistance(const LanderPose& pose, int edge, const Eigen::Vector3d& point_W);
-
 // The state turned rigidly by R_W about `pivot_W` (positions, attitudes and velocities; strokes and
 // the dissipated work unchanged): the same standing configuration on a tilted world.
 Eigen::VectorXd RotateLanderState(const StateLayout& layout, const Eigen::Ref<const Eigen::VectorXd>& y,

@@ -341,3 +341,36 @@ TEST(TipOverCriteria, JustBelowTheEnergyLowerBoundNeverTips) {
 
 }  // namespace
 }  // namespace touchdown::lander
+
+namespace touchdown::lander {
+namespace {
+
+// A lander aligned to a slope steeper than its static angle (the tall lander's is 12.6 deg) has its
+// centre of mass outside the support polygon before any pad touches: the margin never falls through
+// zero, so the tip-over is declared at the first touchdown, or at release if a pad already touches.
+TEST(TipOverCriteria, ALanderOutsideItsSupportPolygonAtTouchdownIsOver) {
+  const double slope = 20.0 * units::kDeg;
+  const test::PaperLander falling = TallLanderOnSlope({slope, 0.0, 0.0});
+  const StateLayout L(falling.model);
+  LanderRunOptions options;
+  options.duration_s = 0.5;
+  options.sample_rate_hz = 100.0;
+  const LanderRunResult r = SimulateLander(falling.model, falling.terrain, falling.initial, options);
+  ASSERT_TRUE(r.first_touchdown_s);
+  EXPECT_TRUE(r.tipped_over);
+  ASSERT_FALSE(r.events.empty());
+  EXPECT_EQ(r.events.back().kind, LanderEventKind::kTipOver);
+  EXPECT_EQ(r.events.back().t_s, *r.first_touchdown_s);
+  EXPECT_LT(StabilityMargin(falling.model, L, r.final_state), 0.0);
+
+  test::PaperLander standing = falling;
+  standing.initial.v_WB_W.setZero();
+  standing.initial.p_WB.z() = BodyHeightForClearance(standing.model, standing.terrain, standing.initial, 0.0);
+  const LanderRunResult at_release = SimulateLander(standing.model, standing.terrain, standing.initial, options);
+  EXPECT_TRUE(at_release.tipped_over);
+  EXPECT_EQ(at_release.end_time_s, 0.0);
+  EXPECT_EQ(at_release.solver.steps, 0);
+}
+
+}  // namespace
+}  // namespace touchdown::lander
