@@ -33,10 +33,11 @@ struct LanderRunOptions {
   // BDF with the lander's structured Jacobian (lander_jacobian.h), rtol 1e-7: a pad rocking on its
   // ball joint in the soil is stiff, so Adams' steps were limited by stability (2,000-12,000 per
   // asymmetric landing at rtol 1e-9). At 1e-7 the benchmark landings (cases A, B, C, attitude,
-  // 10 deg slope) agree with a reference at rtol 1e-11 to 3.2e-5 in every pad's depth and 1.3e-5
-  // deg in roll and pitch, 2.4-4 times faster than Adams at 1e-9 (docs/lander_dynamics.md, "Speed").
-  // A Jacobian at most every 200 steps (and at every convergence failure): 4-10 % fewer right-hand
-  // sides than CVODE's 51 on those landings.
+  // 10 deg slope) agree with a reference at rtol 1e-11 to 4.6e-5 in every pad's depth and 1e-5 deg
+  // in roll and pitch; the asymmetric ones run 2.9-4.4 times faster than with Adams at 1e-9, case A
+  // 1.5 times slower (docs/lander_dynamics.md, "Speed of asymmetric landings").
+  // A Jacobian at most every 200 steps (and at every convergence failure) instead of CVODE's 51:
+  // 10-28 % fewer Jacobians, 3-13 % less CPU on those landings.
   integ::IntegratorOptions integrator{.rtol = 1e-7,
                                       .atol = 1e-11,
                                       .max_step = 0.0,
