@@ -1,6 +1,7 @@
 #include "lander/multibody/lander_dynamics.h"
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/LU>
 #include <Eigen/QR>
 #include <algorithm>
 #include <cmath>
@@ -383,27 +384,19 @@ double PotentialEnergy(const LanderModel& model, const StateLayout& L, const Eig
   return V;
 }
 
-double ProjectOntoConstraints(const LanderModel& model, const StateLayout& L, const LanderModes& modes,
-                              Eigen::Ref<Eigen::VectorXd> y) {
-  LanderEvaluation e;
-  e.pose = ComputePose(model, L, y);
-  // Only the mass matrix and the constraint Jacobian are needed: assemble with free modes
-  // and no terrain contact by evaluating the Jacobians directly.
-  Mat M = Mat::Zero(L.nu, L.nu);
-  M.block<3, 3>(0, 0).diagonal().setConstant(model.body_mass_kg);
-  M.block<3, 3>(3, 3) = e.pose.R_WB * model.body_inertia_B * e.pose.R_WB.transpose();
-  const int rows = ConstraintRows(model, L, modes);
-  Eigen::MatrixXd G = Eigen::MatrixXd::Zero(rows, L.nu);
+namespace {
+// Rows of the constraints of `modes` (ConstraintRows: six per held pad, one per locked crushable
+// stroke) at `pose`: the same G as EvaluateLander's.
+Eigen::MatrixXd HoldJacobian(const LanderModel& model, const StateLayout& L, const LanderModes& modes,
+                             const LanderPose& pose, const Eigen::Ref<const Eigen::VectorXd>& y) {
+  Eigen::MatrixXd G = Eigen::MatrixXd::Zero(ConstraintRows(model, L, modes), L.nu);
   int r = 0;
   for (int i = 0; i < kNumLegs; ++i) {
-    const PadFrame& f = e.pose.pads[i];
-    const double sdot = L.stroke_slot[i] >= 0 ? y[L.stroke_rate(i)] : 0.0;
-    Mat J_C, J_J;
-    Eigen::Vector3d bC, bJ;
-    PadJacobians(L, i, f, e.pose.w_WB_W, sdot, &J_C, &J_J, &bC, &bJ);
-    M.noalias() += model.legs[i].pad->mass_kg * J_C.transpose() * J_C;
-    M.block<3, 3>(L.u_w_P(i), L.u_w_P(i)) += f.R_WP * model.legs[i].pad->inertia_com_B * f.R_WP.transpose();
     if (modes.pad[i] == PadMode::kHeld) {
+      const double sdot = L.stroke_slot[i] >= 0 ? y[L.stroke_rate(i)] : 0.0;
+      Mat J_C, J_J;
+      Eigen::Vector3d bC, bJ;
+      PadJacobians(L, i, pose.pads[i], pose.w_WB_W, sdot, &J_C, &J_J, &bC, &bJ);
       G.block(r, 0, 3, L.nu) = J_J;
       G.block<3, 3>(r + 3, L.u_w_P(i)).setIdentity();
       r += 6;
@@ -412,7 +405,29 @@ double ProjectOntoConstraints(const LanderModel& model, const StateLayout& L, co
         modes.stroke[i] != StrokeMode::kFree)
       G(r++, L.u_stroke(i)) = 1.0;
   }
-  if (rows == 0) return 0.0;
+  return G;
+}
+}  // namespace
+
+double ProjectOntoConstraints(const LanderModel& model, const StateLayout& L, const LanderModes& modes,
+                              Eigen::Ref<Eigen::VectorXd> y) {
+  const LanderPose pose = ComputePose(model, L, y);
+  // Only the mass matrix and the constraint Jacobian are needed: assemble with free modes
+  // and no terrain contact by evaluating the Jacobians directly.
+  Mat M = Mat::Zero(L.nu, L.nu);
+  M.block<3, 3>(0, 0).diagonal().setConstant(model.body_mass_kg);
+  M.block<3, 3>(3, 3) = pose.R_WB * model.body_inertia_B * pose.R_WB.transpose();
+  for (int i = 0; i < kNumLegs; ++i) {
+    const PadFrame& f = pose.pads[i];
+    const double sdot = L.stroke_slot[i] >= 0 ? y[L.stroke_rate(i)] : 0.0;
+    Mat J_C, J_J;
+    Eigen::Vector3d bC, bJ;
+    PadJacobians(L, i, f, pose.w_WB_W, sdot, &J_C, &J_J, &bC, &bJ);
+    M.noalias() += model.legs[i].pad->mass_kg * J_C.transpose() * J_C;
+    M.block<3, 3>(L.u_w_P(i), L.u_w_P(i)) += f.R_WP * model.legs[i].pad->inertia_com_B * f.R_WP.transpose();
+  }
+  const Eigen::MatrixXd G = HoldJacobian(model, L, modes, pose, y);
+  if (G.rows() == 0) return 0.0;
   const double T0 = KineticEnergy(model, L, y);
   // u+ = u - M^-1 G^T (G M^-1 G^T)^+ G u: the M-orthogonal projection onto G u = 0.
   const Eigen::LLT<Mat> llt(M);
@@ -421,6 +436,22 @@ double ProjectOntoConstraints(const LanderModel& model, const StateLayout& L, co
   const Eigen::VectorXd mu = (G * MinvGt).completeOrthogonalDecomposition().solve(G * u);
   y.segment(L.nq, L.nu) = u - MinvGt * mu;
   return T0 - KineticEnergy(model, L, y);
+}
+
+bool HoldsFixTheStance(const LanderModel& model, const StateLayout& L, const LanderModes& modes,
+                       const Eigen::Ref<const Eigen::VectorXd>& y) {
+  const Eigen::MatrixXd G = HoldJacobian(model, L, modes, ComputePose(model, L, y), y);
+  if (G.rows() == 0) return false;
+  // The speeds the holds allow (the null space of G) must not move the body or any stroke; a free
+  // pad's spin about its (then fixed) joint is all that may be left.
+  Eigen::FullPivLU<Eigen::MatrixXd> lu(G);
+  lu.setThreshold(1e-10);
+  const Eigen::MatrixXd allowed = lu.kernel();
+  if (lu.dimensionOfKernel() == 0) return true;
+  double stance = allowed.topRows(StateLayout::kBodySpeeds).cwiseAbs().maxCoeff();
+  for (int i = 0; i < kNumLegs; ++i)
+    if (L.stroke_slot[i] >= 0) stance = std::max(stance, allowed.row(L.u_stroke(i)).cwiseAbs().maxCoeff());
+  return stance < 1e-9;
 }
 
 void NormalizeQuaternions(const StateLayout& L, Eigen::Ref<Eigen::VectorXd> y) {

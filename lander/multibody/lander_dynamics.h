@@ -165,6 +165,11 @@ rft::ContactWrench QuasiStaticWrench(const LanderModel& model, const rft::Terrai
 double ProjectOntoConstraints(const LanderModel& model, const StateLayout& layout, const LanderModes& modes,
                               Eigen::Ref<Eigen::VectorXd> y);
 
+// True if the holds of `modes` leave the body and every stroke no freedom to move (three held pads
+// on rigid legs, for example): a pad left free can then only turn about its fixed ball joint.
+bool HoldsFixTheStance(const LanderModel& model, const StateLayout& layout, const LanderModes& modes,
+                       const Eigen::Ref<const Eigen::VectorXd>& y);
+
 // Renormalises every quaternion in y (done at each event; the drift is integration error,
 // not a joint violation).
 void NormalizeQuaternions(const StateLayout& layout, Eigen::Ref<Eigen::VectorXd> y);

@@ -314,12 +314,29 @@ integ::EventAction LanderHybrid::OnEvent(double t, const std::vector<int>& found
   SettleHolds(t, y, fresh, before);
   result_.capture_loss_J += y[L_.work()] - before[L_.work()];
   const bool all_held = RecordCaptures(t, y, fresh);
+  // At rest when every pad is held, or when the holds fix the body and every joint: a pad left
+  // free (lifted, or touching without load) could only swing about its fixed ball joint, a
+  // pendulum of a few grams-metres that moves nothing else (on slopes such a pad dangled and
+  // brushed the soil for the rest of the run).
+  const bool at_rest = all_held || HoldsFixTheStance(model_, L_, modes_, y);
+  if (at_rest && !all_held) StopFreePads(y);
   Record(t, y);
-  if (!(all_held && options_.stop_at_rest)) return integ::EventAction::kRestart;
+  if (!(at_rest && options_.stop_at_rest)) return integ::EventAction::kRestart;
   // Static from here on: the loads no longer change, so the holds stay valid.
   result_.rest_time_s = t;
   result_.events.push_back({t, LanderEventKind::kRest, -1});
   return integ::EventAction::kStop;
+}
+
+// The free pads' spin about their fixed joints set to zero at rest; its kinetic energy is counted as
+// dissipated, as a capture's.
+void LanderHybrid::StopFreePads(Eigen::VectorXd& y) {
+  const double before = KineticEnergy(model_, L_, y);
+  for (int i = 0; i < kNumLegs; ++i)
+    if (modes_.pad[i] == PadMode::kFree) y.segment<3>(L_.w_P(i)).setZero();
+  const double removed = before - KineticEnergy(model_, L_, y);
+  y[L_.work()] += removed;
+  result_.capture_loss_J += removed;
 }
 
 void LanderHybrid::Finish(double t, const Eigen::VectorXd& y) {

@@ -48,6 +48,7 @@ class LanderHybrid {
   void OfferCaptures(const LanderPose& pose, std::array<bool, kNumLegs>& fresh);
   void HoldStoppedPads(Eigen::VectorXd& y, std::array<bool, kNumLegs>& fresh);
   void SettleHolds(double t, Eigen::VectorXd& s, const std::array<bool, kNumLegs>& fresh, const Eigen::VectorXd& before);
+  void StopFreePads(Eigen::VectorXd& y);
   bool RecordCaptures(double t, const Eigen::VectorXd& y, const std::array<bool, kNumLegs>& fresh);
 
   const LanderModel& model_;

@@ -74,7 +74,7 @@ enum class LanderEventKind {
   kLock,            // it stops crushing
   kBottom,          // it reaches the end of its stroke
   kTipOver,         // the lander tips over
-  kRest,            // every pad held: the lander is static
+  kRest,            // the lander is static: every pad held, or the holds fix the body (HoldsFixTheStance)
 };
 // The event's name in outputs (events.csv): "touchdown", "release_liftoff", "tip_over", ...
 const char* LanderEventName(LanderEventKind kind);

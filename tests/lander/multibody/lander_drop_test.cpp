@@ -136,3 +136,41 @@ TEST(LanderDrop, ScaledTolerancesLandCaseBAsTheScalarOneInFewerSteps) {
 
 }  // namespace
 }  // namespace touchdown::lander
+
+namespace touchdown::lander {
+namespace {
+
+// Across a 10 deg slope (bench_lander's Slope10_Sideways at the tests' mesh): three pads are held and
+// fix the body; the fourth, lifted, could only swing about its fixed ball joint. The lander is at
+// rest there, with that pad's spin stopped and its kinetic energy counted as dissipated.
+TEST(LanderDrop, ThreeHeldPadsThatFixTheBodyAreARest) {
+  test::PaperLander setup = test::MakePaperLander('A');
+  setup.terrain.surface = std::make_shared<rft::PlaneGround>(0.0, -std::tan(10.0 * kDeg), 0.0);
+  setup.initial.v_WB_W = Eigen::Vector3d(0.0, 0.5, 0.0);
+  setup.initial.p_WB.z() = BodyHeightForClearance(setup.model, setup.terrain, setup.initial, setup.drop_height_m);
+  const LanderRunResult r = SimulateLander(setup.model, setup.terrain, setup.initial, CaseOptions());
+  ASSERT_TRUE(r.rest_time_s);
+  EXPECT_FALSE(r.tipped_over);
+  ASSERT_FALSE(r.events.empty());
+  EXPECT_EQ(r.events.back().kind, LanderEventKind::kRest);
+  int held = 0;
+  for (int h : r.trace.back().pad_held) held += h;
+  EXPECT_EQ(held, 3);
+  LanderModes modes;
+  for (int i = 0; i < kNumLegs; ++i) modes.pad[i] = r.trace.back().pad_held[i] ? PadMode::kHeld : PadMode::kFree;
+  const StateLayout L(setup.model);
+  EXPECT_TRUE(HoldsFixTheStance(setup.model, L, modes, r.final_state));
+  EXPECT_LT(r.final_kinetic_J, 1e-20);
+  const double turned_over = r.initial_energy_J - r.final_potential_J;
+  EXPECT_NEAR(r.final_kinetic_J + r.final_potential_J + r.dissipated_J, r.initial_energy_J, 1e-5 * turned_over);
+  // Two held pads leave the body free to turn about the line through their joints.
+  LanderModes two = modes;
+  for (int i = 0, kept = 0; i < kNumLegs; ++i)
+    if (two.pad[i] == PadMode::kHeld && ++kept > 2) two.pad[i] = PadMode::kFree;
+  EXPECT_FALSE(HoldsFixTheStance(setup.model, L, two, r.final_state));
+  std::printf("[ slope 10 deg ] at rest at %.4f s on three pads, tilt %.2f deg\n", *r.rest_time_s,
+              r.final_attitude.tilt_rad / kDeg);
+}
+
+}  // namespace
+}  // namespace touchdown::lander
