@@ -49,6 +49,83 @@ Eigen::Matrix<double, 6, 6> JointSensitivity(const LanderModel& model, const rft
   return D;
 }
 
+// One Jacobian's evaluation: the base point and the difference quotients around it.
+struct JacobianPass {
+  const LanderModel& model;
+  const StateLayout& L;
+  const rft::Terrain& terrain;
+  const LanderModes& modes;
+  const Eigen::Ref<const Eigen::VectorXd>& y;
+  const Eigen::VectorXd& scale;
+  LanderData* data;
+  LanderJacobianData& w;
+  Eigen::Ref<Eigen::MatrixXd> J;
+  // Free pads in contact: their wrench moves with the state; the others' does not (a held pad's is
+  // a constraint force, formed in every evaluation).
+  std::array<bool, kNumLegs> touching{};
+
+  double Step(int j) const {
+    return std::sqrt(std::numeric_limits<double>::epsilon()) * std::max(std::abs(y[j]), scale[j]);
+  }
+
+  // Column j of the speed and work rows from an evaluation at y + h e_j.
+  void Column(int j, const GivenSoil* given) {
+    const double h = Step(j);
+    const int rows = L.nu + 1;
+    w.y = y;
+    w.y[j] += h;
+    EvaluateLander(model, L, terrain, modes, w.y, &w.probe, data, given);
+    StateDerivative(L, w.y, w.probe, w.ydot);
+    J.block(L.nq, j, rows, 1) = (w.ydot.segment(L.nq, rows) - w.f0.segment(L.nq, rows)) / h;
+  }
+
+  // The body's columns: each pad's wrench predicted from its joint's motion (chain rule through
+  // JointSensitivity), so no contact is evaluated again.
+  void BodyColumns() {
+    std::array<Eigen::Matrix<double, 6, 6>, kNumLegs> D;
+    for (int i = 0; i < kNumLegs; ++i)
+      if (touching[i]) {
+        D[i] = JointSensitivity(model, terrain, i, w.base.pose.pads[i], w.base.soil[i], Step(L.p_B()), Step(L.v_B()));
+        w.contact_evaluations += 6;
+      }
+    std::array<int, StateLayout::kBodyPositions + StateLayout::kBodySpeeds> columns{};
+    for (int c = 0; c < StateLayout::kBodyPositions; ++c) columns[c] = c;
+    for (int c = 0; c < StateLayout::kBodySpeeds; ++c) columns[StateLayout::kBodyPositions + c] = L.nq + c;
+    for (int j : columns) {
+      w.y = y;  // Column() perturbs it the same way again
+      w.y[j] += Step(j);
+      const LanderPose moved = ComputePose(model, L, w.y);
+      GivenSoil given;
+      for (int i = 0; i < kNumLegs; ++i) {
+        if (!touching[i]) continue;
+        const PadFrame &now = moved.pads[i], &base = w.base.pose.pads[i];
+        Eigen::Matrix<double, 6, 1> dx;
+        dx << now.p_WJ - base.p_WJ, now.v_WJ_W - base.v_WJ_W;
+        const Eigen::Matrix<double, 6, 1> dw = D[i] * dx;
+        w.predicted[i] = w.base.soil[i];
+        w.predicted[i].force_W += dw.head<3>();
+        w.predicted[i].moment_W += dw.tail<3>();
+        given.wrench[i] = &w.predicted[i];
+      }
+      Column(j, &given);
+    }
+  }
+
+  // A pad's own columns (attitude, spin, stroke): only its contact is evaluated again.
+  void PadColumns(int i) {
+    GivenSoil given;
+    for (int k = 0; k < kNumLegs; ++k)
+      if (k != i && touching[k]) given.wrench[k] = &w.base.soil[k];
+    std::array<int, StateLayout::kPadPositions + StateLayout::kPadSpeeds + 2> columns{};
+    int n = 0;
+    for (int c = 0; c < StateLayout::kPadPositions; ++c) columns[n++] = L.quat_P(i) + c;
+    for (int c = 0; c < StateLayout::kPadSpeeds; ++c) columns[n++] = L.w_P(i) + c;
+    if (L.stroke_slot[i] >= 0) columns[n++] = L.stroke(i), columns[n++] = L.stroke_rate(i);
+    for (int c = 0; c < n; ++c) Column(columns[c], &given);
+    if (touching[i]) w.contact_evaluations += n;
+  }
+};
+
 }  // namespace
 
 void LanderJacobian(const LanderModel& model, const StateLayout& L, const rft::Terrain& terrain,
@@ -61,68 +138,11 @@ void LanderJacobian(const LanderModel& model, const StateLayout& L, const rft::T
   w.ydot.resize(L.size);
   StateDerivative(L, y, w.base, w.f0);
   w.contact_evaluations += kNumLegs;
-  const double root_eps = std::sqrt(std::numeric_limits<double>::epsilon());
-  auto step = [&](int j) { return root_eps * std::max(std::abs(y[j]), scale[j]); };
-  // Free pads in contact: their wrench moves with the state; the others' does not (a held pad's is
-  // a constraint force, formed in every evaluation).
-  std::array<bool, kNumLegs> touching{};
+  JacobianPass pass{model, L, terrain, modes, y, scale, data, w, J};
   for (int i = 0; i < kNumLegs; ++i)
-    touching[i] = modes.pad[i] == PadMode::kFree && PadDepth(model, terrain, i, w.base.pose.pads[i]) > 0.0;
-  const int rows = L.nu + 1;  // the speeds and the dissipated work
-  auto column = [&](int j, double h, const GivenSoil* given) {
-    EvaluateLander(model, L, terrain, modes, w.y, &w.probe, data, given);
-    StateDerivative(L, w.y, w.probe, w.ydot);
-    J.block(L.nq, j, rows, 1) = (w.ydot.segment(L.nq, rows) - w.f0.segment(L.nq, rows)) / h;
-  };
-
-  // The body's columns: each pad's wrench predicted from its joint's motion (chain rule through
-  // JointSensitivity), so no contact is evaluated again.
-  std::array<Eigen::Matrix<double, 6, 6>, kNumLegs> D;
-  for (int i = 0; i < kNumLegs; ++i)
-    if (touching[i]) {
-      D[i] = JointSensitivity(model, terrain, i, w.base.pose.pads[i], w.base.soil[i], step(L.p_B()), step(L.v_B()));
-      w.contact_evaluations += 6;
-    }
-  std::array<int, StateLayout::kBodyPositions + StateLayout::kBodySpeeds> body_columns{};
-  for (int c = 0; c < StateLayout::kBodyPositions; ++c) body_columns[c] = c;
-  for (int c = 0; c < StateLayout::kBodySpeeds; ++c) body_columns[StateLayout::kBodyPositions + c] = L.nq + c;
-  for (int j : body_columns) {
-    const double h = step(j);
-    w.y = y;
-    w.y[j] += h;
-    const LanderPose moved = ComputePose(model, L, w.y);
-    GivenSoil given;
-    for (int i = 0; i < kNumLegs; ++i) {
-      if (!touching[i]) continue;
-      Eigen::Matrix<double, 6, 1> dx;
-      dx << moved.pads[i].p_WJ - w.base.pose.pads[i].p_WJ, moved.pads[i].v_WJ_W - w.base.pose.pads[i].v_WJ_W;
-      const Eigen::Matrix<double, 6, 1> dw = D[i] * dx;
-      w.predicted[i] = w.base.soil[i];
-      w.predicted[i].force_W += dw.head<3>();
-      w.predicted[i].moment_W += dw.tail<3>();
-      given.wrench[i] = &w.predicted[i];
-    }
-    column(j, h, &given);
-  }
-
-  // A pad's own columns (attitude, spin, stroke): only its contact is evaluated again.
-  for (int i = 0; i < kNumLegs; ++i) {
-    GivenSoil given;
-    for (int k = 0; k < kNumLegs; ++k)
-      if (k != i && touching[k]) given.wrench[k] = &w.base.soil[k];
-    std::array<int, StateLayout::kPadPositions + StateLayout::kPadSpeeds + 2> cols{};
-    int n = 0;
-    for (int c = 0; c < StateLayout::kPadPositions; ++c) cols[n++] = L.quat_P(i) + c;
-    for (int c = 0; c < StateLayout::kPadSpeeds; ++c) cols[n++] = L.w_P(i) + c;
-    if (L.stroke_slot[i] >= 0) cols[n++] = L.stroke(i), cols[n++] = L.stroke_rate(i);
-    for (int c = 0; c < n; ++c) {
-      const double h = step(cols[c]);
-      w.y = y;
-      w.y[cols[c]] += h;
-      column(cols[c], h, &given);
-    }
-    if (touching[i]) w.contact_evaluations += n;
-  }
+    pass.touching[i] = modes.pad[i] == PadMode::kFree && PadDepth(model, terrain, i, w.base.pose.pads[i]) > 0.0;
+  pass.BodyColumns();
+  for (int i = 0; i < kNumLegs; ++i) pass.PadColumns(i);
 }
 
 }  // namespace touchdown::lander
