@@ -46,6 +46,20 @@
 //   grid: {pad_soils: [A, B, C]}
 //   grid: {pad_soils: [[fjs1_cp, fjs1_lp, fjs1_lp, fjs1_lp], [fjs1_lp, fjs1_cp, fjs1_cp, fjs1_lp]]}
 //
+// or, in the random block, a soil drawn independently for each pad (with optional probabilities,
+// default uniform; deterministic from the seed and the sample, like every random parameter):
+//
+//   random: {samples: 100, seed: 1, pad_soils: {per_pad_choice: [fjs1_lp, fjs1_cp], probabilities: [0.5, 0.5]}}
+//
+// (`choice` takes `probabilities` too.) The ground and the touchdown relative to it, each
+// defaulting to the scenario's: slope_deg (0 to 80) and downhill_azimuth_deg (from world +x
+// towards +y), yaw_relative_to_slope_deg (body x from the downhill direction),
+// horizontal_azimuth_deg (the direction of horizontal_speed_m_s, world azimuth as
+// downhill_azimuth_deg; a drop that sets only the speed moves along +x as before, one that sets
+// only the azimuth keeps the scenario's speed), and the body-axis angular rates at release
+// angular_rate_x_deg_s, angular_rate_y_deg_s, angular_rate_z_deg_s (the scenario's
+// initial.angular_rate_deg_s). Every lander drop records them all (results_db.h, format 5).
+//
 // It replaces the scenario's soil patches: the ground keeps the scenario's default soil, and each
 // pad whose soil differs from it gets a square patch of its soil centred below its ball joint at
 // release (half width `lander: {pad_patch_half_width_m}`, default: the scenario's own under_pad
@@ -78,10 +92,15 @@
 
 namespace touchdown::sweep {
 
+// Appended only: a parameter's enum value is its random stream (CounterUniform), so reordering
+// would change every random sweep's drops.
 enum class SweepParam {
-  kPad, kSoil, kImpactSpeed, kMass, kGravity, kTilt, kHorizontalSpeed, kZeta, kRoll, kPitch, kPadSoils
+  kPad, kSoil, kImpactSpeed, kMass, kGravity, kTilt, kHorizontalSpeed, kZeta, kRoll, kPitch, kPadSoils,
+  // Lander sweeps (stability studies, docs/stability_studies.md): the ground's slope and the
+  // touchdown conditions relative to it.
+  kSlope, kDownhillAzimuth, kYawToSlope, kHorizontalAzimuth, kRateX, kRateY, kRateZ
 };
-inline constexpr int kSweepParamCount = 11;
+inline constexpr int kSweepParamCount = 18;
 const char* SweepParamKey(SweepParam p);  // the YAML key, e.g. "impact_speed_m_s"
 
 enum class TraceStorage { kNone, kDecimated, kFull };
@@ -99,6 +118,11 @@ struct SweepDropParams {
   std::optional<double> zeta_N_m3;  // at the soil's reference gravity; default: the soil's
   double roll_rad = 0.0, pitch_rad = 0.0;  // lander sweeps
   int pad_soils = 0;  // lander sweeps: index into SweepPlan::pad_soil_sets
+  // Lander sweeps: ground slope and its downhill azimuth (from world +x towards +y), body x from
+  // the downhill direction, the horizontal velocity's azimuth (world, as downhill_azimuth), the
+  // body-axis angular rates at release.
+  double slope_rad = 0.0, downhill_azimuth_rad = 0.0, yaw_to_slope_rad = 0.0, horizontal_azimuth_rad = 0.0;
+  std::array<double, 3> angular_rate_rad_s{};
   uint32_t given = 0;  // bit p set when parameter p was set by the sweep (else: its default)
   bool Given(SweepParam p) const { return (given >> static_cast<int>(p)) & 1u; }
 };
@@ -110,9 +134,15 @@ struct SweepAxis {  // a grid dimension
 
 struct SweepRandom {  // a random parameter
   SweepParam param;
-  bool choice = false;         // choose uniformly among `values`, else uniform on [low, high)
+  bool choice = false;         // choose among `values` (uniformly, or by `probabilities`), else uniform on [low, high)
   double low = 0.0, high = 0.0;
   std::vector<double> values;  // SI; pad/soil: indices
+  std::vector<double> probabilities;  // of `values`, summing to 1; empty: uniform
+  // pad_soils only (`per_pad_choice`): `values` are soils (indices into SweepPlan::soils), drawn
+  // independently for each pad; the drop's pad_soils is the set for the four draws, which the
+  // plan holds from `first_set` on (set index first_set + sum pick_i k^i, k = values.size()).
+  bool per_pad = false;
+  int first_set = 0;
 };
 
 // The soils under a lander's four pads (a `pad_soils` value): indices into SweepPlan::soils,
