@@ -215,6 +215,37 @@ const char* TraceStorageName(TraceStorage t) {
 }
 }  // namespace
 
+std::optional<SweepParam> SweepParamFromKey(const std::string& key) { return ParamFromKey(key); }
+double SweepParamFromSi(SweepParam p, double si) { return FromSi(p, si); }
+double SweepParamToSi(SweepParam p, double file_value) { return ToSi(p, file_value); }
+bool IsLanderNumber(SweepParam p) {
+  return !IsName(p) && !IsSinglePadOnly(p);
+}
+
+double ParamValue(const SweepDropParams& d, SweepParam p) {
+  switch (p) {
+    case SweepParam::kImpactSpeed: return d.impact_speed_m_s;
+    case SweepParam::kGravity: return d.gravity_m_s2;
+    case SweepParam::kTilt: return d.tilt_rad;
+    case SweepParam::kHorizontalSpeed: return d.horizontal_speed_m_s;
+    case SweepParam::kRoll: return d.roll_rad;
+    case SweepParam::kPitch: return d.pitch_rad;
+    case SweepParam::kSlope: return d.slope_rad;
+    case SweepParam::kDownhillAzimuth: return d.downhill_azimuth_rad;
+    case SweepParam::kYawToSlope: return d.yaw_to_slope_rad;
+    case SweepParam::kHorizontalAzimuth: return d.horizontal_azimuth_rad;
+    case SweepParam::kRateX: return d.angular_rate_rad_s[0];
+    case SweepParam::kRateY: return d.angular_rate_rad_s[1];
+    case SweepParam::kRateZ: return d.angular_rate_rad_s[2];
+    case SweepParam::kMass: return d.mass_kg.value_or(std::nan(""));
+    case SweepParam::kZeta: return d.zeta_N_m3.value_or(std::nan(""));
+    case SweepParam::kPad: return d.pad;
+    case SweepParam::kSoil: return d.soil;
+    case SweepParam::kPadSoils: return d.pad_soils;
+  }
+  return std::nan("");
+}
+
 const char* SweepParamKey(SweepParam p) {
   switch (p) {
     case SweepParam::kPad: return "pad";

@@ -102,6 +102,12 @@ enum class SweepParam {
 };
 inline constexpr int kSweepParamCount = 18;
 const char* SweepParamKey(SweepParam p);  // the YAML key, e.g. "impact_speed_m_s"
+std::optional<SweepParam> SweepParamFromKey(const std::string& key);
+// A value of `p` from SI (radians, N/m^3) into the file's units (degrees, N/cm^3), and back.
+double SweepParamFromSi(SweepParam p, double si);
+double SweepParamToSi(SweepParam p, double file_value);
+// Whether `p` is a lander sweep's number (not a pad, soil or pad_soils index, nor single-pad only).
+bool IsLanderNumber(SweepParam p);
 
 enum class TraceStorage { kNone, kDecimated, kFull };
 
@@ -126,6 +132,10 @@ struct SweepDropParams {
   uint32_t given = 0;  // bit p set when parameter p was set by the sweep (else: its default)
   bool Given(SweepParam p) const { return (given >> static_cast<int>(p)) & 1u; }
 };
+
+struct SweepDropParams;
+// The value of number parameter `p` in a drop's parameters, SI.
+double ParamValue(const SweepDropParams& d, SweepParam p);
 
 struct SweepAxis {  // a grid dimension
   SweepParam param;
