@@ -69,6 +69,10 @@
 // there; roll_deg, pitch_deg and pad_soils are refused in single-pad sweeps. The model
 // (`model:`/--model) applies to the lander's soils as in `touchdown lander --model`.
 //
+// A stability study (`type: stability`, docs/stability_studies.md) is a lander sweep with a
+// `study` block that `touchdown stability` reads (drop_tests/stability/study.h); here it is a
+// sweep like any other, so `touchdown sweep STUDY.yaml` runs the same landings.
+//
 // Pads may be axisymmetric or `kind: mesh` (data/pads/hex.yaml). A mesh pad has no profile for
 // the rig's integral, so each of its drops is a free 6-DOF drop (lander/pad/free_drop.h), level
 // and straight down unless tilted or sliding; model effects without a 3D form are refused at load
