@@ -100,6 +100,25 @@ TEST_F(StabilityCli, SweepOnTheStudyFileRunsTheSameLandings) {
   EXPECT_NE(analyse.out.find("0 landings run now, 2 already done"), std::string::npos) << analyse.out;
 }
 
+// Shards run their landings only; merged, the study analyses to the same summary as one run.
+TEST_F(StabilityCli, ShardsMergedAnalyseToTheSameSummaryAsOneRun) {
+  const std::string study = Write("level.yaml", LevelStudy(3));
+  ASSERT_EQ(Run({"stability", study, "--out", Path("whole"), "--threads", "2", "--progress", "none"}).status, 0);
+  for (const char* shard : {"0/2", "1/2"}) {
+    const StabilityRun r = Run({"stability", study, "--out", Path(std::string("shard") + shard[0]), "--shard", shard,
+                                "--threads", "1", "--progress", "none"});
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("touchdown merge"), std::string::npos) << r.out;
+    EXPECT_FALSE(std::filesystem::exists(Path(std::string("shard") + shard[0]) + "/summary.json"));
+  }
+  const StabilityRun merge = Run({"merge", Path("shard0"), Path("shard1"), "--out", Path("merged")});
+  ASSERT_EQ(merge.status, 0) << merge.err;
+  const StabilityRun analyse = Run({"stability", study, "--out", Path("merged"), "--progress", "none"});
+  ASSERT_EQ(analyse.status, 0) << analyse.err;
+  EXPECT_NE(analyse.out.find("0 landings run now, 3 already done"), std::string::npos) << analyse.out;
+  EXPECT_EQ(Slurp(Path("merged") + "/summary.json"), Slurp(Path("whole") + "/summary.json"));
+}
+
 TEST_F(StabilityCli, BadStudiesExitTwoWithOneLineNamingFileAndField) {
   struct Bad {
     std::string text, field;
