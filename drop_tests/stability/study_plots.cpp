@@ -56,39 +56,48 @@ class DataWriter {
   fs::path dir_;
 };
 
-std::string MapFigure(const Study& study, const StudySummary& s, const std::vector<DropRecord>& records,
-                      DataWriter& data) {
-  const StudyMap& m = *study.map;
-  std::vector<Series> series;
+// The map's cells that hold landings, coloured by their probability (boxes centred on the cells).
+void AddCellSeries(const StudySummary& s, DataWriter& data, std::vector<Series>& series) {
   bool any_cell = false;
   for (const MapCell& c : s.map) any_cell = any_cell || c.landings > 0;
-  if (any_cell)
-    series.push_back({data.Write("map_cells",
-                                 [&](std::ostream& out) {
-                                   for (const MapCell& c : s.map)
-                                     if (c.landings > 0)
-                                       out << io::FormatNumber(0.5 * (c.x_low + c.x_high)) << ','
-                                           << io::FormatNumber(0.5 * (c.y_low + c.y_high)) << ','
-                                           << io::FormatNumber(0.5 * (c.x_high - c.x_low)) << ','
-                                           << io::FormatNumber(0.5 * (c.y_high - c.y_low)) << ','
-                                           << io::FormatNumber(c.probability) << '\n';
-                                 }),
-                      "using 1:2:3:4:5 with boxxyerror fillstyle solid 1.0 noborder linecolor palette",
-                      "tip-over probability per cell"});
-  // The boundary: marching squares over the cells' centres (cells without landings break it).
+  if (!any_cell) return;
+  series.push_back({data.Write("map_cells",
+                               [&](std::ostream& out) {
+                                 for (const MapCell& c : s.map)
+                                   if (c.landings > 0)
+                                     out << io::FormatNumber(0.5 * (c.x_low + c.x_high)) << ','
+                                         << io::FormatNumber(0.5 * (c.y_low + c.y_high)) << ','
+                                         << io::FormatNumber(0.5 * (c.x_high - c.x_low)) << ','
+                                         << io::FormatNumber(0.5 * (c.y_high - c.y_low)) << ','
+                                         << io::FormatNumber(c.probability) << '\n';
+                               }),
+                    "using 1:2:3:4:5 with boxxyerror fillstyle solid 1.0 noborder linecolor palette",
+                    "tip-over probability per cell"});
+}
+
+// The p = 0.5 boundary: marching squares over the cells' centres (cells without landings break
+// it); false when the map never crosses 0.5.
+bool AddBoundarySeries(const StudyMap& m, const StudySummary& s, DataWriter& data, std::vector<Series>& series) {
   std::vector<double> p, xc, yc;
   for (const MapCell& c : s.map) p.push_back(c.probability);
   for (int i = 0; i < m.x.bins; ++i) xc.push_back(m.x.low + (i + 0.5) * (m.x.high - m.x.low) / m.x.bins);
   for (int i = 0; i < m.y.bins; ++i) yc.push_back(m.y.low + (i + 0.5) * (m.y.high - m.y.low) / m.y.bins);
   const auto segments = ContourSegments(p, m.x.bins, m.y.bins, xc, yc, 0.5);
-  if (!segments.empty())
-    series.push_back({data.Write("map_boundary",
-                                 [&](std::ostream& out) {
-                                   for (const auto& seg : segments)
-                                     out << io::FormatNumber(seg[0].x) << ',' << io::FormatNumber(seg[0].y) << '\n'
-                                         << io::FormatNumber(seg[1].x) << ',' << io::FormatNumber(seg[1].y) << "\n\n";
-                                 }),
-                      "using 1:2 with lines linewidth 3 linecolor rgb 'black'", "p = 0.5 boundary"});
+  if (segments.empty()) return false;
+  series.push_back({data.Write("map_boundary",
+                               [&](std::ostream& out) {
+                                 for (const auto& seg : segments)
+                                   out << io::FormatNumber(seg[0].x) << ',' << io::FormatNumber(seg[0].y) << '\n'
+                                       << io::FormatNumber(seg[1].x) << ',' << io::FormatNumber(seg[1].y) << "\n\n";
+                               }),
+                    "using 1:2 with lines linewidth 3 linecolor rgb 'black'", "p = 0.5 boundary"});
+  return true;
+}
+
+// Every completed landing at its drawn coordinates: circles stayed up, crosses tipped over.
+void AddLandingSeries(const Study& study, const std::vector<DropRecord>& records, DataWriter& data,
+                      std::vector<Series>& series) {
+  const StudyMap& m = *study.map;
   for (const bool tipped : {false, true}) {
     int64_t n = 0;
     const std::string file = data.Write(tipped ? "map_tipped" : "map_landed", [&](std::ostream& out) {
@@ -102,12 +111,21 @@ std::string MapFigure(const Study& study, const StudySummary& s, const std::vect
     if (n > 0)
       series.push_back({file,
                         tipped ? "using 1:2 with points pointtype 2 pointsize 0.7 linecolor rgb 'black'"
-                               : "using 1:2 with points pointtype 6 pointsize 0.4 linecolor rgb '#505050'",
+                               : "using 1:2 with points pointtype 6 pointsize 0.5 linecolor rgb 'black'",
                         tipped ? "landing that tipped over" : "landing that stayed up"});
   }
+}
+
+std::string MapFigure(const Study& study, const StudySummary& s, const std::vector<DropRecord>& records,
+                      DataWriter& data) {
+  const StudyMap& m = *study.map;
+  std::vector<Series> series;
+  AddCellSeries(s, data, series);
+  const bool crossing = AddBoundarySeries(m, s, data, series);
+  AddLandingSeries(study, records, data, series);
   const std::string title = "Tip-over probability, " + std::to_string(s.landings) + " landings, " +
                             std::to_string(m.x.bins) + " x " + std::to_string(m.y.bins) + " cells" +
-                            (segments.empty() ? " (no p = 0.5 crossing)" : "");
+                            (crossing ? "" : " (no p = 0.5 crossing)");
   const std::string body =
       "set title " + io::GnuplotQuote(title) + "\nset xlabel " + io::GnuplotQuote(AxisLabel(m.x.param)) +
       "\nset ylabel " + io::GnuplotQuote(AxisLabel(m.y.param)) + "\nset xrange [" + io::FormatNumber(m.x.low) + ":" +
