@@ -17,5 +17,6 @@ void AddTradeCommand(CLI::App& app);      // touchdown trade SWEEP.yaml --out DI
 void AddLanderCommand(CLI::App& app);    // touchdown lander SCENARIO.yaml --out DIR
 void AddSynthCommand(CLI::App& app);     // touchdown synth SPEC.yaml --out DATASET_DIR
 void AddDiagnoseCommand(CLI::App& app);  // touchdown diagnose MEASURED_DIR [--model M] --out DIR
+void AddStabilityCommand(CLI::App& app);  // touchdown stability STUDY.yaml --out DIR [--samples N]
 
 }  // namespace touchdown::app

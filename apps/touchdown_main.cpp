@@ -28,6 +28,7 @@ int main(int argc, char** argv) {
   touchdown::app::AddLanderCommand(app);
   touchdown::app::AddSynthCommand(app);
   touchdown::app::AddDiagnoseCommand(app);
+  touchdown::app::AddStabilityCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

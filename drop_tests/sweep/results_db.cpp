@@ -51,6 +51,12 @@ constexpr size_t kNumbers1 = std::size(kNumberColumns1), kNumbers2 = std::size(k
 // Format 3: text columns after the numbers.
 constexpr const char* kTextColumns3[] = {"pad1_soil", "pad2_soil", "pad3_soil", "pad4_soil", "ground_case"};
 constexpr size_t kTexts3 = std::size(kTextColumns3);
+// Format 5: a stability study's lander metrics and conditions (after the format-4 columns).
+constexpr const char* kNumberColumns5[] = {
+    "max_tilt_deg", "peak_leg_force_N", "max_stroke_m", "pad1_peak_force_N", "pad2_peak_force_N",
+    "pad3_peak_force_N", "pad4_peak_force_N", "slope_deg", "downhill_azimuth_deg", "yaw_relative_to_slope_deg",
+    "horizontal_azimuth_deg", "angular_rate_x_deg_s", "angular_rate_y_deg_s", "angular_rate_z_deg_s"};
+constexpr size_t kNumbers5 = std::size(kNumberColumns5);
 // Format 4: the work limit a failed drop ran out of.
 constexpr const char* kLimitColumn = "failure_limit";
 constexpr const char* kLimitValueColumn = "failure_limit_value";
@@ -71,6 +77,14 @@ auto Numbers2(R& r) {
 static_assert(std::tuple_size_v<decltype(Numbers1(std::declval<DropRecord&>()))> == kNumbers1);
 static_assert(std::tuple_size_v<decltype(Numbers2(std::declval<DropRecord&>()))> == kNumbers2);
 template <typename R>
+auto Numbers5(R& r) {
+  return std::array{&r.max_tilt_deg, &r.peak_leg_force_N, &r.max_stroke_m, &r.pad_peak_force_N[0],
+                    &r.pad_peak_force_N[1], &r.pad_peak_force_N[2], &r.pad_peak_force_N[3], &r.slope_deg,
+                    &r.downhill_azimuth_deg, &r.yaw_relative_to_slope_deg, &r.horizontal_azimuth_deg,
+                    &r.angular_rate_deg_s[0], &r.angular_rate_deg_s[1], &r.angular_rate_deg_s[2]};
+}
+static_assert(std::tuple_size_v<decltype(Numbers5(std::declval<DropRecord&>()))> == kNumbers5);
+template <typename R>
 auto Texts3(R& r) {
   return std::array{&r.pad_soil[0], &r.pad_soil[1], &r.pad_soil[2], &r.pad_soil[3], &r.ground_case};
 }
@@ -84,10 +98,11 @@ std::string Columns() {
   for (const char* n : kNumberColumns2) c += std::string(", ") + n;
   for (const char* n : kTextColumns3) c += std::string(", ") + n;
   c += std::string(", ") + kLimitColumn + ", " + kLimitValueColumn;
+  for (const char* n : kNumberColumns5) c += std::string(", ") + n;
   return c;
 }
-constexpr int kColumnCount =
-    6 + static_cast<int>(kNumbers1) + 2 + static_cast<int>(kNumbers2) + static_cast<int>(kTexts3) + 2;  // after drop_index
+constexpr int kColumnCount = 6 + static_cast<int>(kNumbers1) + 2 + static_cast<int>(kNumbers2) +
+                             static_cast<int>(kTexts3) + 2 + static_cast<int>(kNumbers5);  // after drop_index
 
 class Statement {
  public:
@@ -138,6 +153,7 @@ void BindRecord(Statement& st, const DropRecord& r) {
   for (const std::string* t : Texts3(r)) st.Text(i++, *t);
   st.Text(i++, r.failure_limit);
   st.Real(i++, r.failure_limit_value);
+  for (const double* v : Numbers5(r)) st.Real(i++, *v);
 }
 
 DropRecord ReadRecord(Statement& st) {
@@ -159,6 +175,7 @@ DropRecord ReadRecord(Statement& st) {
   for (std::string* t : Texts3(r)) *t = st.ColumnText(i++);
   r.failure_limit = st.ColumnText(i++);
   r.failure_limit_value = st.ColumnReal(i++);
+  for (double* v : Numbers5(r)) *v = st.ColumnReal(i++);
   return r;
 }
 
@@ -209,6 +226,9 @@ bool SameRecord(const DropRecord& a, const DropRecord& b, bool compare_traces) {
   const auto a2 = Numbers2(a), b2 = Numbers2(b);
   for (size_t i = 0; i < a2.size(); ++i)
     if (!SameBits(*a2[i], *b2[i])) return false;
+  const auto a5 = Numbers5(a), b5 = Numbers5(b);
+  for (size_t i = 0; i < a5.size(); ++i)
+    if (!SameBits(*a5[i], *b5[i])) return false;
   if (a.index != b.index || a.drop_id != b.drop_id || a.ok != b.ok || a.failure != b.failure || a.kind != b.kind ||
       a.pad != b.pad || a.soil != b.soil || a.atmosphere != b.atmosphere || a.solver_steps != b.solver_steps ||
       a.pad_soil != b.pad_soil || a.ground_case != b.ground_case || a.failure_limit != b.failure_limit ||
@@ -248,6 +268,7 @@ std::string SerializeRecords(const std::vector<DropRecord>& records) {
     for (const std::string* t : Texts3(r)) PutString(out, *t);
     PutString(out, r.failure_limit);
     Put(out, r.failure_limit_value);
+    for (const double* v : Numbers5(r)) Put(out, *v);
     Put(out, r.solver_steps);
     Put<uint64_t>(out, r.trace.size());
     out.append(reinterpret_cast<const char*>(r.trace.data()), r.trace.size() * sizeof(pad::DropSample));
@@ -270,6 +291,7 @@ std::vector<DropRecord> DeserializeRecords(const std::string& bytes) {
     for (std::string* t : Texts3(r)) *t = in.GetString();
     r.failure_limit = in.GetString();
     r.failure_limit_value = in.Get<double>();
+    for (double* v : Numbers5(r)) *v = in.Get<double>();
     r.solver_steps = in.Get<int64_t>();
     r.trace.resize(in.Get<uint64_t>());
     for (pad::DropSample& s : r.trace) s = in.Get<pad::DropSample>();
@@ -313,10 +335,11 @@ void ResultsDb::CreateTables() {
   for (const char* n : kNumberColumns2) drops += std::string(", ") + n + " REAL";
   for (const char* n : kTextColumns3) drops += std::string(", ") + n + " TEXT NOT NULL DEFAULT ''";
   drops += std::string(", ") + kLimitColumn + " TEXT NOT NULL DEFAULT '', " + kLimitValueColumn + " REAL";
+  for (const char* n : kNumberColumns5) drops += std::string(", ") + n + " REAL";
   Exec("CREATE TABLE IF NOT EXISTS meta(key TEXT PRIMARY KEY, value TEXT NOT NULL);" + drops +
        ");CREATE TABLE IF NOT EXISTS traces(drop_index INTEGER PRIMARY KEY, samples INTEGER NOT NULL, "
        "data BLOB NOT NULL);");
-  // A format-1, -2 or -3 database (no format-2, -3 or -4 columns) gets them added, NULL or '', so it can still be read
+  // A format-1 to -4 database (no format-2 to -5 columns) gets them added, NULL or '', so it can still be read
   // (export, merge); `sweep` refuses to resume it (format_version in meta).
   std::vector<std::string> present;
   {
@@ -331,6 +354,8 @@ void ResultsDb::CreateTables() {
     if (!has(n)) Exec(std::string("ALTER TABLE drops ADD COLUMN ") + n + " TEXT NOT NULL DEFAULT ''");
   if (!has(kLimitColumn)) Exec(std::string("ALTER TABLE drops ADD COLUMN ") + kLimitColumn + " TEXT NOT NULL DEFAULT ''");
   if (!has(kLimitValueColumn)) Exec(std::string("ALTER TABLE drops ADD COLUMN ") + kLimitValueColumn + " REAL");
+  for (const char* n : kNumberColumns5)
+    if (!has(n)) Exec(std::string("ALTER TABLE drops ADD COLUMN ") + n + " REAL");
 }
 
 ResultsDb::~ResultsDb() { sqlite3_close(db_); }

@@ -12,7 +12,10 @@
 //         roll_deg, pitch_deg, pad1..pad4_final_penetration_m, final_roll_deg,
 //         final_pitch_deg, tipped_over,
 //         [format 3:] pad1_soil..pad4_soil, ground_case,
-//         [format 4:] failure_limit, failure_limit_value)
+//         [format 4:] failure_limit, failure_limit_value,
+//         [format 5:] max_tilt_deg, peak_leg_force_N, max_stroke_m, pad1..pad4_peak_force_N,
+//         slope_deg, downhill_azimuth_deg, yaw_relative_to_slope_deg, horizontal_azimuth_deg,
+//         angular_rate_x_deg_s, angular_rate_y_deg_s, angular_rate_z_deg_s)
 //   traces(drop_index PRIMARY KEY, samples, data BLOB of float64 [t, d, v, F] per sample)
 //
 // A batch of drops and their traces go in one transaction (WAL journal), so a process killed
@@ -36,7 +39,10 @@ namespace touchdown::sweep {
 // 3: the soil under each lander pad (pad1_soil..pad4_soil) and the paper's ground case.
 // 4: the work limit a failed drop ran out of (failure_limit, failure_limit_value), so a rerun
 //    with a higher limit retries it; meta records the limits and whether they depend on load.
-inline constexpr int kResultsDbVersion = 4;
+// 5: what a stability study summarises (drop_tests/stability): the lander's max tilt, peak leg
+//    load, max absorber stroke, each pad's peak force, and the ground and touchdown conditions
+//    (slope, azimuths, yaw to the slope, angular rates).
+inline constexpr int kResultsDbVersion = 5;
 
 // What was dropped: the pad on the vertical rod, the free 6-DOF pad, or the four-legged lander.
 // The database keeps it as text (drop_kind 'rig'|'free'|'lander'), converted where it is read
@@ -85,6 +91,27 @@ struct DropRecord {
   // "B", "C"; "" for another combination).
   std::array<std::string, 4> pad_soil;
   std::string ground_case;
+  // Lander drops only (NaN otherwise), format 5. Over the run: the largest tilt of the body from
+  // the vertical, the peak axial leg load (compression positive; an absorber leg's absorber force,
+  // a rigid leg's soil force on its pad along the leg axis, hip to joint, the pad's inertia
+  // neglected; at the trace's samples), the largest absorber stroke (NaN without absorbers), each
+  // pad's peak soil force. The conditions: ground slope, its downhill azimuth (from world +x
+  // towards +y), body x from the downhill direction, the horizontal velocity's azimuth (world),
+  // the body-axis angular rates at release.
+  double max_tilt_deg = std::numeric_limits<double>::quiet_NaN();
+  double peak_leg_force_N = std::numeric_limits<double>::quiet_NaN();
+  double max_stroke_m = std::numeric_limits<double>::quiet_NaN();
+  std::array<double, 4> pad_peak_force_N{std::numeric_limits<double>::quiet_NaN(),
+                                         std::numeric_limits<double>::quiet_NaN(),
+                                         std::numeric_limits<double>::quiet_NaN(),
+                                         std::numeric_limits<double>::quiet_NaN()};
+  double slope_deg = std::numeric_limits<double>::quiet_NaN();
+  double downhill_azimuth_deg = std::numeric_limits<double>::quiet_NaN();
+  double yaw_relative_to_slope_deg = std::numeric_limits<double>::quiet_NaN();
+  double horizontal_azimuth_deg = std::numeric_limits<double>::quiet_NaN();
+  std::array<double, 3> angular_rate_deg_s{std::numeric_limits<double>::quiet_NaN(),
+                                           std::numeric_limits<double>::quiet_NaN(),
+                                           std::numeric_limits<double>::quiet_NaN()};
   std::vector<pad::DropSample> trace;  // empty unless stored
 };
 

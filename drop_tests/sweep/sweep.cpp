@@ -147,6 +147,10 @@ SweepProgress::SweepProgress(std::ostream& out, ProgressMode mode, double interv
 void SweepProgress::Add(const std::vector<DropRecord>& records) {
   for (const DropRecord& r : records) {
     ++done_;
+    if (r.ok && r.kind == DropKind::kLander) {
+      ++landings_;
+      tipped_ += r.tipped_over == 1.0;
+    }
     if (r.ok) continue;
     ++failed_;
     if (silent_) continue;
@@ -167,8 +171,11 @@ void SweepProgress::Show(bool final) {
   const double fraction = total_ > 0 ? static_cast<double>(done) / total_ : 1.0;
   std::ostringstream s;
   s << done << "/" << total_ << " drops (" << std::fixed << std::setprecision(1) << 100.0 * fraction << "%), "
-    << std::setprecision(0) << rate << " drops/s, " << (final ? "elapsed " + Duration(elapsed) : "ETA " + Duration(eta))
+    << (rate > 0.0 && rate < 1.0 ? std::setprecision(1) : std::setprecision(0))  // landings take seconds each
+    << (rate > 0.0 && rate < 1.0 ? 1.0 / rate : rate) << (rate > 0.0 && rate < 1.0 ? " s/drop, " : " drops/s, ")
+    << (final ? "elapsed " + Duration(elapsed) : "ETA " + Duration(eta))
     << ", " << failed_ << " failed";
+  if (landings_ > 0) s << ", " << tipped_ << " of " << landings_ << " landings run now tipped over";
   if (bar_) {
     const int width = 30, filled = static_cast<int>(fraction * width);
     out_ << "\r\033[K[" << std::string(filled, '#') << std::string(width - filled, '.') << "] " << s.str();

@@ -112,7 +112,8 @@ struct MergeSummary {
 MergeSummary MergeSweepResults(const std::string& out_dir, const std::vector<std::string>& shard_dirs);
 
 // Progress on a terminal (a bar: done/total, drops/s, ETA) or as plain periodic lines, and
-// one line per failed drop. Used by RunSweep and the MPI runner.
+// one line per failed drop; for lander drops also how many of this run's landings tipped over
+// (what a stability study watches). Used by RunSweep and the MPI runner.
 class SweepProgress {
  public:
   SweepProgress(std::ostream& out, ProgressMode mode, double interval_s, int64_t total, int64_t done_before);
@@ -127,6 +128,7 @@ class SweepProgress {
   bool silent_;
   double interval_s_;
   int64_t total_, before_, done_ = 0, failed_ = 0;
+  int64_t landings_ = 0, tipped_ = 0;  // lander drops of this run
   double start_, last_shown_ = -1e9;
 };
 

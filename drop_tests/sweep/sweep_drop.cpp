@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <Eigen/Geometry>
+
 #include "drop_tests/scenario/lander_scenario.h"
 #include "drop_tests/drop/drop_factory.h"
 #include "drop_tests/drop/pad_drop.h"
@@ -57,9 +59,10 @@ void MarkFailed(DropRecord& r, const std::string& reason) {
   for (double* v : {&r.final_penetration_m, &r.peak_force_N, &r.time_to_rest_s, &r.max_deceleration_m_s2,
                     &r.impact_energy_J, &r.gravity_work_J, &r.dissipated_energy_J, &r.mean_conversion_rate_W,
                     &r.rest_creep_m, &r.final_tilt_deg, &r.horizontal_travel_m, &r.final_roll_deg, &r.final_pitch_deg,
-                    &r.tipped_over})
+                    &r.tipped_over, &r.max_tilt_deg, &r.peak_leg_force_N, &r.max_stroke_m})
     *v = std::nan("");
   r.pad_final_penetration_m.fill(std::nan(""));
+  r.pad_peak_force_N.fill(std::nan(""));
   r.trace.clear();
 }
 
@@ -108,6 +111,63 @@ DropRecord SimulatePadSweepDrop(const SweepModels& models, const SweepDropParams
   return r;
 }
 
+// The horizontal velocity a drop sets: speed and azimuth, each the scenario's unless given (a
+// drop that gives only the speed moves along world +x, as lander sweeps always did).
+Eigen::Vector2d HorizontalVelocity(const scenario::LanderScenario& sc, const SweepDropParams& p) {
+  const Eigen::Vector2d& v = sc.initial.horizontal_velocity_m_s;
+  const double speed = p.Given(SweepParam::kHorizontalSpeed) ? p.horizontal_speed_m_s : v.norm();
+  const double azimuth = p.Given(SweepParam::kHorizontalAzimuth) ? p.horizontal_azimuth_rad
+                         : p.Given(SweepParam::kHorizontalSpeed) ? 0.0
+                                                                 : std::atan2(v.y(), v.x());
+  return speed * Eigen::Vector2d(std::cos(azimuth), std::sin(azimuth));
+}
+
+// The ground's slope and the touchdown conditions relative to it that the drop sets.
+void ApplyGroundAndMotion(scenario::LanderScenario& sc, const SweepDropParams& p) {
+  if (p.Given(SweepParam::kSlope)) sc.ground.slope_rad = p.slope_rad;
+  if (p.Given(SweepParam::kDownhillAzimuth)) sc.ground.downhill_azimuth_rad = p.downhill_azimuth_rad;
+  if (p.Given(SweepParam::kYawToSlope)) sc.initial.yaw_relative_to_slope_rad = p.yaw_to_slope_rad;
+  if (p.Given(SweepParam::kHorizontalSpeed) || p.Given(SweepParam::kHorizontalAzimuth))
+    sc.initial.horizontal_velocity_m_s = HorizontalVelocity(sc, p);
+  const SweepParam rates[3] = {SweepParam::kRateX, SweepParam::kRateY, SweepParam::kRateZ};
+  for (int k = 0; k < 3; ++k)
+    if (p.Given(rates[k])) sc.initial.angular_rate_B[k] = p.angular_rate_rad_s[k];
+}
+
+// Over the trace: the peak axial leg load (compression positive: an absorber's force, or a rigid
+// leg's pad force along the leg axis, hip to joint) and the largest absorber stroke (NaN if no
+// leg has an absorber).
+void RecordLegLoads(const scenario::LanderSpec& lander, const lander::LanderRunResult& l, DropRecord& r) {
+  bool any_absorber = false;
+  for (const scenario::LanderLegSpec& leg : lander.legs) any_absorber = any_absorber || leg.absorber.has_value();
+  double peak = 0.0, stroke = 0.0;
+  for (const lander::LanderSample& s : l.trace) {
+    // R_WB from the sample's attitude: Rz(yaw) Ry(-pitch) Rx(roll) (lander::BodyAttitude).
+    const Eigen::Matrix3d R_WB = (Eigen::AngleAxisd(s.attitude.yaw_rad, Eigen::Vector3d::UnitZ()) *
+                                  Eigen::AngleAxisd(-s.attitude.pitch_rad, Eigen::Vector3d::UnitY()) *
+                                  Eigen::AngleAxisd(s.attitude.roll_rad, Eigen::Vector3d::UnitX()))
+                                     .toRotationMatrix();
+    for (int i = 0; i < lander::kNumLegs; ++i) {
+      const scenario::LanderLegSpec& leg = lander.legs[i];
+      const Eigen::Vector3d axis_W = R_WB * (leg.joint_B - leg.hip_B).normalized();
+      peak = std::max(peak, leg.absorber ? s.leg_force_N[i] : -s.pad_force_W[i].dot(axis_W));
+      stroke = std::max(stroke, std::abs(s.stroke_m[i]));
+    }
+  }
+  r.peak_leg_force_N = peak;
+  r.max_stroke_m = any_absorber ? stroke : std::nan("");
+}
+
+// The conditions a lander drop ran under, as recorded (degrees).
+void RecordConditions(const scenario::LanderScenario& sc, DropRecord& r) {
+  r.slope_deg = sc.ground.slope_rad / kDeg;
+  r.downhill_azimuth_deg = sc.ground.downhill_azimuth_rad / kDeg;
+  r.yaw_relative_to_slope_deg = sc.initial.yaw_relative_to_slope_rad / kDeg;
+  const Eigen::Vector2d& v = sc.initial.horizontal_velocity_m_s;
+  r.horizontal_azimuth_deg = std::atan2(v.y(), v.x()) / kDeg;
+  for (int k = 0; k < 3; ++k) r.angular_rate_deg_s[k] = sc.initial.angular_rate_B[k] / kDeg;
+}
+
 // One lander run: the plan's scenario with the drop's parameters.
 DropRecord SimulateLanderSweepDrop(const SweepModels& models, const SweepDropParams& p) {
   const SweepPlan& plan = models.plan();
@@ -119,7 +179,7 @@ DropRecord SimulateLanderSweepDrop(const SweepModels& models, const SweepDropPar
     sc.initial.release_vertical_speed_m_s = 0.0;
     sc.initial.touchdown_speed_m_s = p.impact_speed_m_s;
   }
-  if (p.Given(SweepParam::kHorizontalSpeed)) sc.initial.horizontal_velocity_m_s = Eigen::Vector2d(p.horizontal_speed_m_s, 0.0);
+  ApplyGroundAndMotion(sc, p);
   if (p.Given(SweepParam::kRoll)) sc.initial.roll_rad = p.roll_rad;
   if (p.Given(SweepParam::kPitch)) sc.initial.pitch_rad = p.pitch_rad;
   if (p.Given(SweepParam::kPadSoils)) {
@@ -158,6 +218,7 @@ DropRecord SimulateLanderSweepDrop(const SweepModels& models, const SweepDropPar
   r.tilt_deg = std::acos(std::clamp(std::cos(sc.initial.roll_rad) * std::cos(sc.initial.pitch_rad), -1.0, 1.0)) / kDeg;
   r.horizontal_speed_m_s = sc.initial.horizontal_velocity_m_s.norm();
   r.zeta_N_cm3 = units::ZetaToN_cm3(soil.ZetaAtGravity(sc.gravity_m_s2));
+  RecordConditions(sc, r);
   try {
     {  // the soil under each pad's joint at release, as the ground was built
       const scenario::LanderSetup setup = scenario::BuildLanderSetup(sc);
@@ -180,6 +241,9 @@ DropRecord SimulateLanderSweepDrop(const SweepModels& models, const SweepDropPar
     r.final_pitch_deg = l.final_attitude.pitch_rad / kDeg;
     r.final_tilt_deg = l.final_attitude.tilt_rad / kDeg;
     r.tipped_over = l.tipped_over ? 1.0 : 0.0;
+    r.max_tilt_deg = l.max_tilt_rad / kDeg;
+    for (int i = 0; i < lander::kNumLegs; ++i) r.pad_peak_force_N[i] = l.peak_pad_force_N[i];
+    RecordLegLoads(sc.lander, l, r);
     r.solver_steps = l.solver.steps;
     r.time_to_rest_s = l.rest_time_s && l.first_touchdown_s ? *l.rest_time_s - *l.first_touchdown_s : std::nan("");
     // At the first touchdown (an event, so a trace sample): kinetic energy, potential energy and

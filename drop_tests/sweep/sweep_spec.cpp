@@ -27,7 +27,12 @@ constexpr int64_t kMaxSweepDrops = int64_t{1} << 40;
 constexpr SweepParam kAll[kSweepParamCount] = {SweepParam::kPad,     SweepParam::kSoil, SweepParam::kImpactSpeed,
                                                SweepParam::kMass,    SweepParam::kGravity, SweepParam::kTilt,
                                                SweepParam::kHorizontalSpeed, SweepParam::kZeta, SweepParam::kRoll,
-                                               SweepParam::kPitch, SweepParam::kPadSoils};
+                                               SweepParam::kPitch, SweepParam::kPadSoils, SweepParam::kSlope,
+                                               SweepParam::kDownhillAzimuth, SweepParam::kYawToSlope,
+                                               SweepParam::kHorizontalAzimuth, SweepParam::kRateX, SweepParam::kRateY,
+                                               SweepParam::kRateZ};
+// Random streams of the per-pad soil draws: above every parameter's own stream (its enum value).
+constexpr uint64_t kPerPadStream = 0x100;
 
 std::optional<SweepParam> ParamFromKey(const std::string& key) {
   for (SweepParam p : kAll)
@@ -46,14 +51,26 @@ constexpr PaperCase kPaperCases[] = {{"A", {"fjs1_lp", "fjs1_lp", "fjs1_lp", "fj
                                      {"B", {"fjs1_cp", "fjs1_lp", "fjs1_lp", "fjs1_lp"}},
                                      {"C", {"fjs1_cp", "fjs1_cp", "fjs1_lp", "fjs1_lp"}}};
 
+// Parameters given in degrees (angles) or degrees per second (rates) in the file, radians inside.
+bool InDegrees(SweepParam p) {
+  switch (p) {
+    case SweepParam::kTilt: case SweepParam::kRoll: case SweepParam::kPitch: case SweepParam::kSlope:
+    case SweepParam::kDownhillAzimuth: case SweepParam::kYawToSlope: case SweepParam::kHorizontalAzimuth:
+    case SweepParam::kRateX: case SweepParam::kRateY: case SweepParam::kRateZ:
+      return true;
+    default:
+      return false;
+  }
+}
+
 double ToSi(SweepParam p, double v) {
-  if (p == SweepParam::kTilt || p == SweepParam::kRoll || p == SweepParam::kPitch) return v * kDeg;
+  if (InDegrees(p)) return v * kDeg;
   if (p == SweepParam::kZeta) return units::ZetaFromN_cm3(v);
   return v;
 }
 
 double FromSi(SweepParam p, double v) {
-  if (p == SweepParam::kTilt || p == SweepParam::kRoll || p == SweepParam::kPitch) return v / kDeg;
+  if (InDegrees(p)) return v / kDeg;
   if (p == SweepParam::kZeta) return units::ZetaToN_cm3(v);
   return v;
 }
@@ -77,6 +94,19 @@ void CheckValue(SweepParam p, double v, const std::string& file, const std::stri
     case SweepParam::kRoll:
     case SweepParam::kPitch:
       if (!(std::abs(v) < 80.0)) fail("between -80 and 80");
+      break;
+    case SweepParam::kSlope:  // as the scenario's ground.slope_deg
+      if (!(v >= 0.0 && v < 80.0)) fail("at least 0 and below 80");
+      break;
+    case SweepParam::kDownhillAzimuth:
+    case SweepParam::kYawToSlope:
+    case SweepParam::kHorizontalAzimuth:
+      if (!(std::abs(v) <= 360.0)) fail("between -360 and 360");
+      break;
+    case SweepParam::kRateX:
+    case SweepParam::kRateY:
+    case SweepParam::kRateZ:
+      if (!(std::abs(v) <= 3600.0)) fail("between -3600 and 3600 deg/s");
       break;
     default: break;
   }
@@ -173,7 +203,8 @@ std::string FileText(const std::string& path) {
 }
 
 bool IsLanderParam(SweepParam p) {
-  return p == SweepParam::kRoll || p == SweepParam::kPitch || p == SweepParam::kPadSoils;
+  return p == SweepParam::kRoll || p == SweepParam::kPitch || p == SweepParam::kPadSoils ||
+         static_cast<int>(p) >= static_cast<int>(SweepParam::kSlope);
 }
 bool IsSinglePadOnly(SweepParam p) {
   return p == SweepParam::kPad || p == SweepParam::kMass || p == SweepParam::kTilt || p == SweepParam::kZeta;
@@ -183,6 +214,37 @@ const char* TraceStorageName(TraceStorage t) {
   return t == TraceStorage::kNone ? "none" : t == TraceStorage::kFull ? "full" : "decimated";
 }
 }  // namespace
+
+std::optional<SweepParam> SweepParamFromKey(const std::string& key) { return ParamFromKey(key); }
+double SweepParamFromSi(SweepParam p, double si) { return FromSi(p, si); }
+double SweepParamToSi(SweepParam p, double file_value) { return ToSi(p, file_value); }
+bool IsLanderNumber(SweepParam p) {
+  return !IsName(p) && !IsSinglePadOnly(p);
+}
+
+double ParamValue(const SweepDropParams& d, SweepParam p) {
+  switch (p) {
+    case SweepParam::kImpactSpeed: return d.impact_speed_m_s;
+    case SweepParam::kGravity: return d.gravity_m_s2;
+    case SweepParam::kTilt: return d.tilt_rad;
+    case SweepParam::kHorizontalSpeed: return d.horizontal_speed_m_s;
+    case SweepParam::kRoll: return d.roll_rad;
+    case SweepParam::kPitch: return d.pitch_rad;
+    case SweepParam::kSlope: return d.slope_rad;
+    case SweepParam::kDownhillAzimuth: return d.downhill_azimuth_rad;
+    case SweepParam::kYawToSlope: return d.yaw_to_slope_rad;
+    case SweepParam::kHorizontalAzimuth: return d.horizontal_azimuth_rad;
+    case SweepParam::kRateX: return d.angular_rate_rad_s[0];
+    case SweepParam::kRateY: return d.angular_rate_rad_s[1];
+    case SweepParam::kRateZ: return d.angular_rate_rad_s[2];
+    case SweepParam::kMass: return d.mass_kg.value_or(std::nan(""));
+    case SweepParam::kZeta: return d.zeta_N_m3.value_or(std::nan(""));
+    case SweepParam::kPad: return d.pad;
+    case SweepParam::kSoil: return d.soil;
+    case SweepParam::kPadSoils: return d.pad_soils;
+  }
+  return std::nan("");
+}
 
 const char* SweepParamKey(SweepParam p) {
   switch (p) {
@@ -197,6 +259,13 @@ const char* SweepParamKey(SweepParam p) {
     case SweepParam::kRoll: return "roll_deg";
     case SweepParam::kPitch: return "pitch_deg";
     case SweepParam::kPadSoils: return "pad_soils";
+    case SweepParam::kSlope: return "slope_deg";
+    case SweepParam::kDownhillAzimuth: return "downhill_azimuth_deg";
+    case SweepParam::kYawToSlope: return "yaw_relative_to_slope_deg";
+    case SweepParam::kHorizontalAzimuth: return "horizontal_azimuth_deg";
+    case SweepParam::kRateX: return "angular_rate_x_deg_s";
+    case SweepParam::kRateY: return "angular_rate_y_deg_s";
+    case SweepParam::kRateZ: return "angular_rate_z_deg_s";
   }
   return "?";
 }
@@ -227,6 +296,23 @@ double CounterUniform(uint64_t seed, uint64_t sample, uint64_t stream) {
   return static_cast<double>(z >> 11) * 0x1.0p-53;
 }
 
+namespace {
+// The value a choice's uniform draw u in [0, 1) picks: uniformly, or by its probabilities
+// (cumulative; a value of probability 0 is never picked).
+size_t ChoicePick(const SweepRandom& r, double u) {
+  if (r.probabilities.empty()) return std::min(r.values.size() - 1, static_cast<size_t>(u * r.values.size()));
+  double cumulative = 0.0;
+  size_t last = 0;
+  for (size_t i = 0; i < r.probabilities.size(); ++i) {
+    if (r.probabilities[i] <= 0.0) continue;
+    cumulative += r.probabilities[i];
+    last = i;
+    if (u < cumulative) return i;
+  }
+  return last;  // u above a sum rounded below 1
+}
+}  // namespace
+
 int64_t SweepPlan::size() const {
   int64_t n = samples;
   for (const SweepAxis& a : grid) n *= static_cast<int64_t>(a.values.size());
@@ -249,9 +335,15 @@ SweepDropParams SweepPlan::DropAt(int64_t index) const {
   for (const SweepRandom& r : random) {
     const double u = CounterUniform(seed, s, static_cast<uint64_t>(r.param));
     double v;
-    if (r.choice) {
-      const size_t pick = std::min(r.values.size() - 1, static_cast<size_t>(u * r.values.size()));
-      v = r.values[pick];
+    if (r.per_pad) {
+      // One draw per pad, each on its own stream: pad i's soil does not depend on the others'.
+      const size_t k = r.values.size();
+      size_t set = 0, weight = 1;
+      for (uint64_t pad = 0; pad < 4; ++pad, weight *= k)
+        set += weight * ChoicePick(r, CounterUniform(seed, s, kPerPadStream * (pad + 1) + static_cast<uint64_t>(r.param)));
+      v = static_cast<double>(r.first_set + static_cast<int64_t>(set));
+    } else if (r.choice) {
+      v = r.values[ChoicePick(r, u)];
     } else {
       v = r.low + (r.high - r.low) * u;
     }
@@ -273,6 +365,11 @@ SweepDropParams SweepPlan::DropAt(int64_t index) const {
   if (has(SweepParam::kRoll)) d.roll_rad = at(SweepParam::kRoll);
   if (has(SweepParam::kPitch)) d.pitch_rad = at(SweepParam::kPitch);
   if (has(SweepParam::kPadSoils)) d.pad_soils = static_cast<int>(at(SweepParam::kPadSoils));
+  d.slope_rad = at(SweepParam::kSlope);
+  d.downhill_azimuth_rad = at(SweepParam::kDownhillAzimuth);
+  d.yaw_to_slope_rad = at(SweepParam::kYawToSlope);
+  d.horizontal_azimuth_rad = at(SweepParam::kHorizontalAzimuth);
+  d.angular_rate_rad_s = {at(SweepParam::kRateX), at(SweepParam::kRateY), at(SweepParam::kRateZ)};
   for (SweepParam p : kAll)
     if (has(p)) d.given |= 1u << static_cast<int>(p);
   return d;
@@ -316,6 +413,9 @@ std::string SweepPlan::DigestText() const {
     s += std::string("random:") + SweepParamKey(r.param) + (r.choice ? "=choice:" : "=uniform:") +
          io::FormatNumber(r.low) + ":" + io::FormatNumber(r.high) + ":";
     for (double v : r.values) s += io::FormatNumber(v) + ",";
+    if (r.per_pad) s += "per_pad:" + std::to_string(r.first_set) + ",";  // only when used: older digests stay
+    if (!r.probabilities.empty()) s += "p:";
+    for (double v : r.probabilities) s += io::FormatNumber(v) + ",";
     s += ";";
   }
   if (model) s += model::ModelDigestText(*model);
@@ -395,11 +495,14 @@ class ParamClaims {
   SweepParam Claim(const io::YamlFields& block, const std::string& key) {
     const std::optional<SweepParam> p = ParamFromKey(key);
     if (!p) block.Fail(key, "unknown parameter (pad, soil, impact_speed_m_s, pad_mass_kg, gravity_m_s2, tilt_deg, "
-                            "horizontal_speed_m_s, zeta_N_cm3; lander sweeps: roll_deg, pitch_deg, pad_soils)");
+                            "horizontal_speed_m_s, zeta_N_cm3; lander sweeps: roll_deg, pitch_deg, pad_soils, "
+                            "slope_deg, downhill_azimuth_deg, yaw_relative_to_slope_deg, horizontal_azimuth_deg, "
+                            "angular_rate_x_deg_s, angular_rate_y_deg_s, angular_rate_z_deg_s)");
     if (Seen(*p)) block.Fail(key, "set in more than one of fixed, grid and random");
     if (lander_ && IsSinglePadOnly(*p))
       block.Fail(key, "a single-pad parameter; a lander sweep varies impact_speed_m_s, horizontal_speed_m_s, "
-                      "roll_deg, pitch_deg, gravity_m_s2, soil and pad_soils");
+                      "horizontal_azimuth_deg, roll_deg, pitch_deg, yaw_relative_to_slope_deg, the angular rates, "
+                      "slope_deg, downhill_azimuth_deg, gravity_m_s2, soil and pad_soils");
     if (!lander_ && IsLanderParam(*p))
       block.Fail(key, "a lander parameter: it needs a `lander: {scenario: ...}` block (single pads take tilt_deg)");
     const SweepParam other = *p == SweepParam::kSoil ? SweepParam::kPadSoils : SweepParam::kSoil;
@@ -449,7 +552,43 @@ void ReadGrid(const io::YamlFields& block, ParamClaims& claims, Loader& loader, 
   }
 }
 
-// Seeded random samples: `uniform: [low, high]` or `choice: [...]` per parameter.
+// `probabilities: [...]` of a choice: one per value, each in [0, 1], summing to 1 (to 1e-9).
+std::vector<double> ReadProbabilities(const io::YamlFields& spec, size_t count) {
+  const YAML::Node n = spec.node()["probabilities"];
+  if (!n.IsSequence() || n.size() != count)
+    spec.Fail("probabilities", "must be a list of " + std::to_string(count) + " numbers, one per choice");
+  std::vector<double> out;
+  double sum = 0.0;
+  for (size_t i = 0; i < count; ++i) {
+    double v = 0.0;
+    const std::string path = spec.Path("probabilities") + "[" + std::to_string(i) + "]";
+    if (!n[i].IsScalar() || !YAML::convert<double>::decode(n[i], v) || !(v >= 0.0 && v <= 1.0))
+      throw MakeInputError(spec.file(), path, "must be a probability between 0 and 1");
+    out.push_back(v);
+    sum += v;
+  }
+  if (!(std::abs(sum - 1.0) <= 1e-9))
+    spec.Fail("probabilities", "must sum to 1, got " + io::FormatNumber(sum));
+  return out;
+}
+
+// `per_pad_choice`: every combination of the soils under the four pads becomes a pad_soils set
+// (k^4 of them), so a drop's draw is an index like any other pad_soils value.
+void AddPerPadSets(SweepRandom& r, const io::YamlFields& spec, SweepPlan& plan) {
+  const size_t k = r.values.size();
+  if (k > 8) spec.Fail("per_pad_choice", "at most 8 soils, got " + std::to_string(k));
+  r.first_set = static_cast<int>(plan.pad_soil_sets.size());
+  const size_t combinations = k * k * k * k;
+  for (size_t c = 0; c < combinations; ++c) {
+    PadSoilSet set;
+    size_t rest = c;
+    for (int pad = 0; pad < 4; ++pad, rest /= k) set.soil[pad] = static_cast<int>(r.values[rest % k]);
+    plan.pad_soil_sets.push_back(set);
+  }
+}
+
+// Seeded random samples: `uniform: [low, high]` or `choice: [...]` per parameter (pad_soils also
+// `per_pad_choice: [...]`), a choice optionally with `probabilities: [...]`.
 void ReadRandom(const io::YamlFields& block, ParamClaims& claims, Loader& loader, SweepPlan& plan) {
   plan.samples = block.PositiveInt("samples");
   if (!block.Has("seed")) block.Fail("seed", "missing (random samples need a seed to be reproducible)");
@@ -461,15 +600,22 @@ void ReadRandom(const io::YamlFields& block, ParamClaims& claims, Loader& loader
     if (key == "samples" || key == "seed") continue;
     const SweepParam p = claims.Claim(block, key);
     const io::YamlFields spec = block.Child(key);
-    spec.RequireOnly({"uniform", "choice"});
+    spec.RequireOnly({"uniform", "choice", "per_pad_choice", "probabilities"});
     SweepRandom r;
     r.param = p;
-    if (spec.Has("uniform") == spec.Has("choice")) spec.Fail("uniform", "give exactly one of uniform and choice");
-    if (spec.Has("choice")) {
+    const int given = int(spec.Has("uniform")) + int(spec.Has("choice")) + int(spec.Has("per_pad_choice"));
+    if (given != 1) spec.Fail("uniform", "give exactly one of uniform, choice and per_pad_choice");
+    if (spec.Has("per_pad_choice")) {
+      if (p != SweepParam::kPadSoils) spec.Fail("per_pad_choice", "only pad_soils draws a value per pad");
+      r.choice = r.per_pad = true;
+      r.values = loader.List(SweepParam::kSoil, spec.node()["per_pad_choice"], spec, spec.Path("per_pad_choice"));
+      AddPerPadSets(r, spec, plan);
+    } else if (spec.Has("choice")) {
       r.choice = true;
       r.values = loader.List(p, spec.node()["choice"], spec, spec.Path("choice"));
     } else {
       if (IsName(p)) spec.Fail("uniform", "pads and soils take `choice`, not `uniform`");
+      if (spec.Has("probabilities")) spec.Fail("probabilities", "only a choice takes probabilities");
       const YAML::Node u = spec.node()["uniform"];
       if (!u.IsSequence() || u.size() != 2) spec.Fail("uniform", "must be [low, high]");
       const double lo = loader.Scalar(p, u[0], spec, spec.Path("uniform") + "[0]");
@@ -478,6 +624,7 @@ void ReadRandom(const io::YamlFields& block, ParamClaims& claims, Loader& loader
       r.low = lo;
       r.high = hi;
     }
+    if (spec.Has("probabilities")) r.probabilities = ReadProbabilities(spec, r.values.size());
     plan.random.push_back(std::move(r));
   }
 }
@@ -488,8 +635,15 @@ SweepPlan LoadSweepPlan(const std::string& path, const std::string& model_overri
   const io::YamlFields f = io::YamlFields::LoadFile(path);
   f.RequireSchemaVersion(1);
   f.RequireOnly({"schema_version", "type", "name", "description", "model", "traces", "trace_max_samples",
-                 "rest_duration_s", "max_drop_evaluations", "max_drop_wall_time_s", "fixed", "grid", "random", "lander", "provenance"});
-  if (f.String("type") != "sweep") f.Fail("type", "must be 'sweep', got '" + f.String("type") + "'");
+                 "rest_duration_s", "max_drop_evaluations", "max_drop_wall_time_s", "fixed", "grid", "random", "lander",
+                 "study", "provenance"});
+  // A stability study (docs/stability_studies.md) is a lander sweep whose `study` block says how
+  // `touchdown stability` analyses its landings; the sweep itself ignores that block.
+  const std::string type = f.String("type");
+  if (type != "sweep" && type != "stability") f.Fail("type", "must be 'sweep' or 'stability', got '" + type + "'");
+  if (type == "stability" && !f.Has("lander"))
+    f.Fail("lander", "missing: a stability study lands a lander scenario (lander: {scenario: ...})");
+  if (f.Has("study") && type != "stability") f.Fail("study", "only a stability study (type: stability) takes it");
   const std::string base = fs::path(path).parent_path().string();
   SweepPlan plan;
   plan.source = path;
@@ -612,14 +766,23 @@ void WriteSweepPlan(const SweepPlan& plan, const std::string& path) {
       << plan.samples << YAML::Key << "seed" << YAML::Value << plan.seed;
     for (const SweepRandom& r : plan.random) {
       y << YAML::Key << SweepParamKey(r.param) << YAML::Value << YAML::Flow << YAML::BeginMap;
-      if (r.choice) {
+      if (r.per_pad) {
+        y << YAML::Key << "per_pad_choice" << YAML::Value << YAML::BeginSeq;
+        for (double v : r.values) y << SoilRef(plan, static_cast<int>(v));
+      } else if (r.choice) {
         y << YAML::Key << "choice" << YAML::Value << YAML::BeginSeq;
         for (double v : r.values) EmitValue(y, plan, r.param, v);
       } else {
         y << YAML::Key << "uniform" << YAML::Value << YAML::BeginSeq << FromSi(r.param, r.low)
           << FromSi(r.param, r.high);
       }
-      y << YAML::EndSeq << YAML::EndMap;
+      y << YAML::EndSeq;
+      if (!r.probabilities.empty()) {
+        y << YAML::Key << "probabilities" << YAML::Value << YAML::BeginSeq;
+        for (double v : r.probabilities) y << v;
+        y << YAML::EndSeq;
+      }
+      y << YAML::EndMap;
     }
     y << YAML::EndMap;
   }

@@ -46,6 +46,20 @@
 //   grid: {pad_soils: [A, B, C]}
 //   grid: {pad_soils: [[fjs1_cp, fjs1_lp, fjs1_lp, fjs1_lp], [fjs1_lp, fjs1_cp, fjs1_cp, fjs1_lp]]}
 //
+// or, in the random block, a soil drawn independently for each pad (with optional probabilities,
+// default uniform; deterministic from the seed and the sample, like every random parameter):
+//
+//   random: {samples: 100, seed: 1, pad_soils: {per_pad_choice: [fjs1_lp, fjs1_cp], probabilities: [0.5, 0.5]}}
+//
+// (`choice` takes `probabilities` too.) The ground and the touchdown relative to it, each
+// defaulting to the scenario's: slope_deg (0 to 80) and downhill_azimuth_deg (from world +x
+// towards +y), yaw_relative_to_slope_deg (body x from the downhill direction),
+// horizontal_azimuth_deg (the direction of horizontal_speed_m_s, world azimuth as
+// downhill_azimuth_deg; a drop that sets only the speed moves along +x as before, one that sets
+// only the azimuth keeps the scenario's speed), and the body-axis angular rates at release
+// angular_rate_x_deg_s, angular_rate_y_deg_s, angular_rate_z_deg_s (the scenario's
+// initial.angular_rate_deg_s). Every lander drop records them all (results_db.h, format 5).
+//
 // It replaces the scenario's soil patches: the ground keeps the scenario's default soil, and each
 // pad whose soil differs from it gets a square patch of its soil centred below its ball joint at
 // release (half width `lander: {pad_patch_half_width_m}`, default: the scenario's own under_pad
@@ -54,6 +68,10 @@
 // exclusive. pad, pad_mass_kg, tilt_deg and zeta_N_cm3 are single-pad parameters and refused
 // there; roll_deg, pitch_deg and pad_soils are refused in single-pad sweeps. The model
 // (`model:`/--model) applies to the lander's soils as in `touchdown lander --model`.
+//
+// A stability study (`type: stability`, docs/stability_studies.md) is a lander sweep with a
+// `study` block that `touchdown stability` reads (drop_tests/stability/study.h); here it is a
+// sweep like any other, so `touchdown sweep STUDY.yaml` runs the same landings.
 //
 // Pads may be axisymmetric or `kind: mesh` (data/pads/hex.yaml). A mesh pad has no profile for
 // the rig's integral, so each of its drops is a free 6-DOF drop (lander/pad/free_drop.h), level
@@ -78,11 +96,22 @@
 
 namespace touchdown::sweep {
 
+// Appended only: a parameter's enum value is its random stream (CounterUniform), so reordering
+// would change every random sweep's drops.
 enum class SweepParam {
-  kPad, kSoil, kImpactSpeed, kMass, kGravity, kTilt, kHorizontalSpeed, kZeta, kRoll, kPitch, kPadSoils
+  kPad, kSoil, kImpactSpeed, kMass, kGravity, kTilt, kHorizontalSpeed, kZeta, kRoll, kPitch, kPadSoils,
+  // Lander sweeps (stability studies, docs/stability_studies.md): the ground's slope and the
+  // touchdown conditions relative to it.
+  kSlope, kDownhillAzimuth, kYawToSlope, kHorizontalAzimuth, kRateX, kRateY, kRateZ
 };
-inline constexpr int kSweepParamCount = 11;
+inline constexpr int kSweepParamCount = 18;
 const char* SweepParamKey(SweepParam p);  // the YAML key, e.g. "impact_speed_m_s"
+std::optional<SweepParam> SweepParamFromKey(const std::string& key);
+// A value of `p` from SI (radians, N/m^3) into the file's units (degrees, N/cm^3), and back.
+double SweepParamFromSi(SweepParam p, double si);
+double SweepParamToSi(SweepParam p, double file_value);
+// Whether `p` is a lander sweep's number (not a pad, soil or pad_soils index, nor single-pad only).
+bool IsLanderNumber(SweepParam p);
 
 enum class TraceStorage { kNone, kDecimated, kFull };
 
@@ -99,9 +128,18 @@ struct SweepDropParams {
   std::optional<double> zeta_N_m3;  // at the soil's reference gravity; default: the soil's
   double roll_rad = 0.0, pitch_rad = 0.0;  // lander sweeps
   int pad_soils = 0;  // lander sweeps: index into SweepPlan::pad_soil_sets
+  // Lander sweeps: ground slope and its downhill azimuth (from world +x towards +y), body x from
+  // the downhill direction, the horizontal velocity's azimuth (world, as downhill_azimuth), the
+  // body-axis angular rates at release.
+  double slope_rad = 0.0, downhill_azimuth_rad = 0.0, yaw_to_slope_rad = 0.0, horizontal_azimuth_rad = 0.0;
+  std::array<double, 3> angular_rate_rad_s{};
   uint32_t given = 0;  // bit p set when parameter p was set by the sweep (else: its default)
   bool Given(SweepParam p) const { return (given >> static_cast<int>(p)) & 1u; }
 };
+
+struct SweepDropParams;
+// The value of number parameter `p` in a drop's parameters, SI.
+double ParamValue(const SweepDropParams& d, SweepParam p);
 
 struct SweepAxis {  // a grid dimension
   SweepParam param;
@@ -110,9 +148,15 @@ struct SweepAxis {  // a grid dimension
 
 struct SweepRandom {  // a random parameter
   SweepParam param;
-  bool choice = false;         // choose uniformly among `values`, else uniform on [low, high)
+  bool choice = false;         // choose among `values` (uniformly, or by `probabilities`), else uniform on [low, high)
   double low = 0.0, high = 0.0;
   std::vector<double> values;  // SI; pad/soil: indices
+  std::vector<double> probabilities;  // of `values`, summing to 1; empty: uniform
+  // pad_soils only (`per_pad_choice`): `values` are soils (indices into SweepPlan::soils), drawn
+  // independently for each pad; the drop's pad_soils is the set for the four draws, which the
+  // plan holds from `first_set` on (set index first_set + sum pick_i k^i, k = values.size()).
+  bool per_pad = false;
+  int first_set = 0;
 };
 
 // The soils under a lander's four pads (a `pad_soils` value): indices into SweepPlan::soils,

@@ -353,6 +353,15 @@ std::vector<Case> Cases() {
                {{"pad_soils_pad.yaml", Sweep(kSweepBase + "grid: {impact_speed_m_s: [1], pad_soils: [A]}\n")}}});
   c.push_back({"sweep YAML", "trade on a lander sweep", "trade trade_lander.yaml --out out_w15",
                {{"trade_lander.yaml", Sweep(lander_sweep + "grid: {impact_speed_m_s: [1.0, 1.4]}\n")}}});
+  // Stability study YAML (docs/stability_studies.md).
+  const std::string study = "schema_version: 1\ntype: stability\n" + lander_sweep + "grid: {slope_deg: [0, 5]}\n";
+  c.push_back({"study YAML", "map over a parameter the study does not vary",
+               "stability map.yaml --progress lines --out out_t1",
+               {{"map.yaml", study + "study: {map: {x: slope_deg, y: roll_deg}}\n"}}});
+  c.push_back({"study YAML", "--samples without random samples", "stability grid_only.yaml --samples 5 --out out_t2",
+               {{"grid_only.yaml", study}}});
+  c.push_back({"study YAML", "slope 90 deg", "stability steep.yaml --out out_t3",
+               {{"steep.yaml", "schema_version: 1\ntype: stability\n" + lander_sweep + "grid: {slope_deg: [0, 90]}\n"}}});
   // Lander scenario YAML.
   c.push_back({"lander YAML", "unknown lander", "lander no_lander.yaml --out out_l1",
                {{"no_lander.yaml", Lander("lander: apollo\n" + kLanderGround + kLanderInitial)}}});

@@ -1,0 +1,98 @@
+#include <csignal>
+#include <cstdlib>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <optional>
+
+#include "apps/commands.h"
+#include "drop_tests/io/output_path.h"
+#include "drop_tests/stability/study.h"
+#include "drop_tests/stability/study_outputs.h"
+#include "drop_tests/sweep/sweep.h"
+#include "drop_tests/sweep/sweep_mpi.h"
+#include "drop_tests/sweep/sweep_stop.h"
+
+namespace touchdown::app {
+
+namespace {
+struct StabilityArgs {
+  std::string study, out, shard, model, progress = "auto";
+  int threads = 0;
+  int64_t samples = 0;
+};
+
+void PrintStudyResult(const stability::Study& study, const stability::StudySummary& s, const std::string& out) {
+  std::cout << "stability " << study.plan.name << ": " << s.landings << " landings"
+            << (s.failed > 0 ? " (" + std::to_string(s.failed) + " failed, not counted)" : std::string()) << ", "
+            << s.tipped << " tipped over: P(tip-over) = " << std::setprecision(4) << s.tip_over_probability
+            << ", 95 % interval [" << s.interval.low << ", " << s.interval.high << "]\n";
+  for (const stability::MetricPercentiles& m : s.metrics)
+    if (m.count > 0 && (std::string(m.metric->name) == "max_tilt_deg" ||
+                        std::string(m.metric->name) == "max_pad_penetration_m"))
+      std::cout << "  " << m.metric->name << ": p50 " << m.p50 << ", p95 " << m.p95 << ", p99 " << m.p99 << ", max "
+                << m.max << " " << m.metric->unit << "\n";
+  std::cout << "wrote " << out << "/ (summary.json, percentiles.csv" << (study.map ? ", tip_over_map.csv" : "")
+            << ", plots/)\n";
+}
+}  // namespace
+
+void AddStabilityCommand(CLI::App& app) {
+  auto args = std::make_shared<StabilityArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "stability", "Landing-stability study: run (or resume) its lander sweep, then tip-over probability, "
+                   "percentiles, worst cases, tables and plots");
+  cmd->add_option("study", args->study, "study YAML (type: stability, e.g. data/studies/lunar_paper_lander.yaml)")
+      ->required();
+  cmd->add_option("--out", args->out, "output directory (results.sqlite, summary.json, *.csv, plots/); a rerun resumes")
+      ->required();
+  CLI::Option* samples = cmd->add_option("--samples", args->samples,
+                                         "random samples instead of the study's (a quick look; recorded in summary.json)")
+                             ->check(CLI::Range(int64_t{1}, int64_t{1} << 40));
+  cmd->add_option("--threads", args->threads, "worker threads per process (default: every core)")
+      ->check(CLI::Range(0, 4096));
+  cmd->add_option("--shard", args->shard,
+                  "I/N: run only landings with index mod N == I (merge the shards, then run stability on the merge)");
+  cmd->add_option("--model", args->model, "model file (MODEL.yaml) with per-soil zeta overrides");
+  cmd->add_option("--progress", args->progress, "auto (bar on a terminal, else lines), bar, lines or none")
+      ->check(CLI::IsMember({"auto", "bar", "lines", "none"}));
+  cmd->callback([args, samples] {
+    const std::optional<int64_t> override_samples =
+        samples->count() > 0 ? std::optional<int64_t>(args->samples) : std::nullopt;
+    const stability::Study study = stability::LoadStudy(args->study, args->model, override_samples);
+    sweep::SweepRunOptions options;
+    options.threads = args->threads;
+    if (!args->shard.empty()) options.shard = sweep::ParseShard(args->shard);
+    options.progress = args->progress == "bar"     ? sweep::ProgressMode::kBar
+                       : args->progress == "lines" ? sweep::ProgressMode::kLines
+                       : args->progress == "none"  ? sweep::ProgressMode::kNone
+                                                   : sweep::ProgressMode::kAuto;
+    io::OpenOutputDirectory({args->out, {args->study, args->model}}, io::OutputKind::kSweep);
+    const sweep::StopOnSignals stop_on_signals;
+    options.stop = &sweep::StopOnSignals::flag();
+    int rank = 0;
+    const sweep::SweepRunSummary run = sweep::LaunchedByMpirun()
+                                           ? sweep::RunSweepMpi(study.plan, args->out, options, &rank)
+                                           : sweep::RunSweep(study.plan, args->out, options);
+    if (run.stop_signal != 0) {
+      if (rank == 0)
+        std::cout << "stability " << study.plan.name << ": stopped by signal " << run.stop_signal
+                  << " after committing the landings in flight; run the same command again to resume\n";
+      std::exit(128 + run.stop_signal);
+    }
+    if (rank != 0) return;
+    std::cout << "stability " << study.plan.name << ": " << run.computed << " landings run now, "
+              << run.already_done << " already done, in " << std::fixed << std::setprecision(2) << run.seconds
+              << " s on " << run.ranks << " rank(s) x " << run.threads << " thread(s)\n"
+              << std::defaultfloat;
+    if (options.shard.count > 1) {
+      std::cout << "shard " << options.shard.Text() << " done; `touchdown merge` the shards' directories, then run "
+                << "`touchdown stability` on the merged one for the analysis\nwrote "
+                << sweep::ResultsDbPath(args->out) << "\n";
+      return;
+    }
+    PrintStudyResult(study, stability::WriteStudyAnalysis(study, args->out), args->out);
+  });
+}
+
+}  // namespace touchdown::app

@@ -1,0 +1,121 @@
+#include "drop_tests/stability/study.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "drop_tests/io/dataset_csv.h"
+#include "drop_tests/io/yaml_fields.h"
+#include "rft/input_error.h"
+
+namespace touchdown::stability {
+
+namespace {
+using sweep::SweepParam;
+
+constexpr int kMaxBins = 200;
+constexpr int kMaxListed = 100000;
+
+// The range a parameter takes over the plan, in file units; nullopt when the plan does not vary it.
+std::optional<std::pair<double, double>> PlanRange(const sweep::SweepPlan& plan, SweepParam p) {
+  std::vector<double> values;
+  for (const sweep::SweepAxis& axis : plan.grid)
+    if (axis.param == p) values = axis.values;
+  for (const sweep::SweepRandom& r : plan.random)
+    if (r.param == p) values = r.choice ? r.values : std::vector<double>{r.low, r.high};
+  if (values.empty()) return std::nullopt;
+  const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
+  const double a = sweep::SweepParamFromSi(p, *lo), b = sweep::SweepParamFromSi(p, *hi);
+  if (!(a < b)) return std::nullopt;
+  return std::make_pair(a, b);
+}
+
+MapAxis ReadMapAxis(const io::YamlFields& map, const std::string& key, int bins, const sweep::SweepPlan& plan) {
+  const std::string name = map.String(key);
+  const std::optional<SweepParam> p = sweep::SweepParamFromKey(name);
+  if (!p || !sweep::IsLanderNumber(*p))
+    map.Fail(key, "must be a number parameter of a lander sweep (e.g. slope_deg, horizontal_speed_m_s), got '" +
+                      name + "'");
+  const auto range = PlanRange(plan, *p);
+  if (!range) map.Fail(key, "'" + name + "' does not vary in this study (set it in grid or random)");
+  MapAxis axis;
+  axis.param = *p;
+  axis.low = range->first;
+  axis.high = range->second;
+  axis.bins = bins;
+  return axis;
+}
+
+StudyMap ReadMap(const io::YamlFields& study, const sweep::SweepPlan& plan) {
+  const io::YamlFields map = study.Child("map");
+  map.RequireOnly({"x", "y", "bins"});
+  int bins[2] = {10, 10};
+  if (map.Has("bins")) {
+    const YAML::Node n = map.node()["bins"];
+    if (!n.IsSequence() || n.size() != 2) map.Fail("bins", "must be [x bins, y bins]");
+    for (int i = 0; i < 2; ++i) {
+      double v = 0.0;
+      if (!n[i].IsScalar() || !YAML::convert<double>::decode(n[i], v) || v != std::floor(v) || v < 2 || v > kMaxBins)
+        throw MakeInputError(map.file(), map.Path("bins") + "[" + std::to_string(i) + "]",
+                             "must be a whole number from 2 to " + std::to_string(kMaxBins));
+      bins[i] = static_cast<int>(v);
+    }
+  }
+  StudyMap m{ReadMapAxis(map, "x", bins[0], plan), ReadMapAxis(map, "y", bins[1], plan)};
+  if (m.x.param == m.y.param) map.Fail("y", "must differ from x");
+  return m;
+}
+
+int ReadCount(const io::YamlFields& study, const std::string& key, int fallback) {
+  if (!study.Has(key)) return fallback;
+  const double v = study.NonNegative(key);
+  if (v != std::floor(v) || v > kMaxListed)
+    study.Fail(key, "must be a whole number from 0 to " + std::to_string(kMaxListed) + ", got " + io::FormatNumber(v));
+  return static_cast<int>(v);
+}
+}  // namespace
+
+Study LoadStudy(const std::string& path, const std::string& model_override, std::optional<int64_t> samples_override) {
+  Study study;
+  study.plan = sweep::LoadSweepPlan(path, model_override);
+  const io::YamlFields f = io::YamlFields::LoadFile(path);
+  if (f.String("type") != "stability")
+    f.Fail("type", "must be 'stability' for `touchdown stability` (a plain sweep runs with `touchdown sweep`)");
+  study.samples_in_file = study.plan.samples;
+  if (samples_override) {
+    if (study.plan.random.empty())
+      throw MakeInputError("", "--samples", "the study " + path + " has no random block whose samples it could set");
+    if (*samples_override < 1 || *samples_override > (int64_t{1} << 40))
+      throw MakeInputError("", "--samples", "must be a whole number from 1 to 2^40, got " +
+                                                std::to_string(*samples_override));
+    study.plan.samples = *samples_override;
+    study.samples_override = samples_override;
+  }
+  if (f.Has("study")) {
+    const io::YamlFields s = f.Child("study");
+    s.RequireOnly({"map", "worst_cases", "max_tip_over_cases"});
+    if (s.Has("map")) study.map = ReadMap(s, study.plan);
+    study.worst_cases = ReadCount(s, "worst_cases", study.worst_cases);
+    study.max_tip_over_cases = ReadCount(s, "max_tip_over_cases", study.max_tip_over_cases);
+  }
+  return study;
+}
+
+std::string AxisLabel(SweepParam p) {
+  switch (p) {
+    case SweepParam::kImpactSpeed: return "vertical touchdown speed [m/s]";
+    case SweepParam::kGravity: return "gravity [m/s^2]";
+    case SweepParam::kHorizontalSpeed: return "horizontal speed [m/s]";
+    case SweepParam::kRoll: return "roll at touchdown [deg]";
+    case SweepParam::kPitch: return "pitch at touchdown [deg]";
+    case SweepParam::kSlope: return "slope [deg]";
+    case SweepParam::kDownhillAzimuth: return "downhill azimuth [deg]";
+    case SweepParam::kYawToSlope: return "yaw relative to the slope [deg]";
+    case SweepParam::kHorizontalAzimuth: return "horizontal velocity azimuth [deg]";
+    case SweepParam::kRateX: return "angular rate about body x [deg/s]";
+    case SweepParam::kRateY: return "angular rate about body y [deg/s]";
+    case SweepParam::kRateZ: return "angular rate about body z [deg/s]";
+    default: return sweep::SweepParamKey(p);
+  }
+}
+
+}  // namespace touchdown::stability

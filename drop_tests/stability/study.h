@@ -1,0 +1,50 @@
+#pragma once
+// A stability study (`touchdown stability STUDY.yaml --out DIR [--samples N]`): a lander sweep
+// (drop_tests/sweep/sweep_spec.h, `type: stability`) whose landings are run by the sweep engine
+// into DIR/results.sqlite, plus a `study` block saying how to analyse them:
+//
+//   study:
+//     map: {x: slope_deg, y: horizontal_speed_m_s, bins: [10, 10]}  # optional
+//     worst_cases: 5          # the largest max tilts listed with their conditions (default 5)
+//     max_tip_over_cases: 100 # tip-overs listed with their conditions, at most (default 100)
+//
+// The map's axes are two number parameters the study varies (grid or random); its range is the
+// parameter's over the plan (a random parameter's [low, high], a grid's or choice's smallest and
+// largest value). Schema and outputs: docs/stability_studies.md.
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "drop_tests/sweep/sweep_spec.h"
+
+namespace touchdown::stability {
+
+struct MapAxis {
+  sweep::SweepParam param = sweep::SweepParam::kSlope;
+  double low = 0.0, high = 0.0;  // file units (deg, m/s, ...)
+  int bins = 10;
+};
+
+struct StudyMap {
+  MapAxis x, y;
+};
+
+struct Study {
+  sweep::SweepPlan plan;           // with --samples applied
+  int64_t samples_in_file = 1;     // the random block's sample count as written (1 without one)
+  std::optional<int64_t> samples_override;  // --samples
+  std::optional<StudyMap> map;
+  int worst_cases = 5;
+  int max_tip_over_cases = 100;
+};
+
+// Loads and validates the study (the sweep plan, then the study block) before anything runs.
+// `samples_override` (--samples N) replaces the random block's sample count; a study without a
+// random block refuses it (InputError naming --samples).
+Study LoadStudy(const std::string& path, const std::string& model_override = "",
+                std::optional<int64_t> samples_override = std::nullopt);
+
+// The label of a parameter on a plot axis, with its unit: "slope [deg]", "horizontal speed [m/s]".
+std::string AxisLabel(sweep::SweepParam p);
+
+}  // namespace touchdown::stability

@@ -1,0 +1,27 @@
+#pragma once
+// A stability study's outputs in its directory (beside results.sqlite), each file written
+// atomically through io::WriteFileAtomically (docs/stability_studies.md lists them):
+//   summary.json                 landings, tip-over probability and interval, percentiles, map, worst cases
+//   percentiles.csv              metric, unit, landings, p50, p95, p99, max
+//   tip_over_map.csv             per map cell: ranges, landings, tip-overs, probability, 95 % interval
+//   plots/tip_over_map.{png,svg} the map with the p = 0.5 boundary and the landings
+//   plots/exceedance.{png,svg}   P[X > x] of max tilt and of pad penetration
+//   plots/histograms.{png,svg}   max tilt, final tilt, deepest pad penetration, peak leg load
+#include <string>
+#include <vector>
+
+#include "drop_tests/stability/study.h"
+#include "drop_tests/stability/study_summary.h"
+
+namespace touchdown::stability {
+
+void WriteStudyTables(const Study& study, const StudySummary& summary, const std::string& dir);
+void WriteStudyPlots(const Study& study, const StudySummary& summary, const std::vector<sweep::DropRecord>& records,
+                     const std::string& dir);
+
+// Reads DIR/results.sqlite, which must hold every landing of the study (InputError naming the
+// database and how many are missing, e.g. after a shard's run: merge the shards first), and
+// writes the analysis; summary.json last, so its presence means the analysis is complete.
+StudySummary WriteStudyAnalysis(const Study& study, const std::string& out_dir);
+
+}  // namespace touchdown::stability

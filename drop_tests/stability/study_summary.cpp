@@ -1,0 +1,208 @@
+#include "drop_tests/stability/study_summary.h"
+
+#include <algorithm>
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+namespace touchdown::stability {
+
+namespace {
+using sweep::DropRecord;
+
+nlohmann::json Number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+
+bool Tipped(const DropRecord& r) { return r.tipped_over == 1.0; }
+
+std::vector<MapCell> EmptyMap(const StudyMap& map) {
+  std::vector<MapCell> cells;
+  const double wx = (map.x.high - map.x.low) / map.x.bins, wy = (map.y.high - map.y.low) / map.y.bins;
+  for (int ix = 0; ix < map.x.bins; ++ix)
+    for (int iy = 0; iy < map.y.bins; ++iy) {
+      MapCell c;
+      c.ix = ix;
+      c.iy = iy;
+      c.x_low = map.x.low + ix * wx;
+      c.x_high = ix + 1 == map.x.bins ? map.x.high : map.x.low + (ix + 1) * wx;
+      c.y_low = map.y.low + iy * wy;
+      c.y_high = iy + 1 == map.y.bins ? map.y.high : map.y.low + (iy + 1) * wy;
+      cells.push_back(c);
+    }
+  return cells;
+}
+
+// The bin of value v on an axis: [low + k w, low + (k + 1) w), the last bin closed at high.
+int Bin(const MapAxis& axis, double v) {
+  const int k = static_cast<int>(std::floor((v - axis.low) / (axis.high - axis.low) * axis.bins));
+  return std::clamp(k, 0, axis.bins - 1);
+}
+
+std::vector<MapCell> TipOverMap(const Study& study, const std::vector<DropRecord>& records) {
+  if (!study.map) return {};
+  std::vector<MapCell> cells = EmptyMap(*study.map);
+  for (const DropRecord& r : records) {
+    if (!r.ok) continue;
+    const int ix = Bin(study.map->x, MapCoordinate(study, study.map->x, r.index));
+    const int iy = Bin(study.map->y, MapCoordinate(study, study.map->y, r.index));
+    MapCell& c = cells[static_cast<size_t>(ix) * study.map->y.bins + iy];
+    ++c.landings;
+    c.tipped += Tipped(r);
+  }
+  for (MapCell& c : cells) {
+    c.probability = c.landings > 0 ? static_cast<double>(c.tipped) / c.landings : std::nan("");
+    c.interval = ClopperPearson(c.tipped, c.landings);
+  }
+  return cells;
+}
+}  // namespace
+
+const std::vector<StudyMetric>& StudyMetrics() {
+  static const std::vector<StudyMetric> metrics = {
+      {"max_tilt_deg", "deg", "largest tilt of the body from the vertical during the landing",
+       [](const DropRecord& r) { return r.max_tilt_deg; }},
+      {"final_tilt_deg", "deg", "tilt of the body from the vertical at rest (or at the end)",
+       [](const DropRecord& r) { return r.final_tilt_deg; }},
+      {"pad1_final_penetration_m", "m", "pad 1's final penetration (pads clockwise from front-left)",
+       [](const DropRecord& r) { return r.pad_final_penetration_m[0]; }},
+      {"pad2_final_penetration_m", "m", "pad 2's final penetration",
+       [](const DropRecord& r) { return r.pad_final_penetration_m[1]; }},
+      {"pad3_final_penetration_m", "m", "pad 3's final penetration",
+       [](const DropRecord& r) { return r.pad_final_penetration_m[2]; }},
+      {"pad4_final_penetration_m", "m", "pad 4's final penetration",
+       [](const DropRecord& r) { return r.pad_final_penetration_m[3]; }},
+      {"max_pad_penetration_m", "m", "the deepest pad's final penetration",
+       [](const DropRecord& r) { return r.final_penetration_m; }},
+      {"peak_pad_force_N", "N", "the largest soil force on any pad during the landing",
+       [](const DropRecord& r) { return r.peak_force_N; }},
+      {"peak_leg_force_N", "N",
+       "peak axial leg load, compression (absorber legs: the absorber's force; rigid legs: the pad's soil force "
+       "along the leg axis, the pad's inertia neglected), at the trace's samples",
+       [](const DropRecord& r) { return r.peak_leg_force_N; }},
+      {"max_body_deceleration_m_s2", "m/s^2", "largest upward acceleration of the body's centre of mass",
+       [](const DropRecord& r) { return r.max_deceleration_m_s2; }},
+      {"max_absorber_stroke_m", "m", "largest absorber stroke of any leg (none without absorbers)",
+       [](const DropRecord& r) { return r.max_stroke_m; }},
+  };
+  return metrics;
+}
+
+double MapCoordinate(const Study& study, const MapAxis& axis, int64_t index) {
+  return sweep::SweepParamFromSi(axis.param, sweep::ParamValue(study.plan.DropAt(index), axis.param));
+}
+
+bool StayedUp(const DropRecord& r) { return r.ok && !Tipped(r); }
+
+StudySummary Summarise(const Study& study, const std::vector<DropRecord>& records) {
+  StudySummary s;
+  s.planned = study.plan.size();
+  std::vector<const DropRecord*> ok;  // the landings that stayed up: percentiles and closest calls
+  for (const DropRecord& r : records) {
+    if (!r.ok) {
+      ++s.failed;
+      continue;
+    }
+    ++s.landings;
+    s.tipped += Tipped(r);
+    if (Tipped(r) && static_cast<int>(s.tip_overs.size()) < study.max_tip_over_cases) s.tip_overs.push_back(r);
+    if (Tipped(r)) continue;
+    ok.push_back(&r);
+    s.unsettled += std::isnan(r.time_to_rest_s);
+  }
+  s.tip_over_probability = s.landings > 0 ? static_cast<double>(s.tipped) / s.landings : std::nan("");
+  s.interval = ClopperPearson(s.tipped, s.landings);
+  for (const StudyMetric& m : StudyMetrics()) {
+    std::vector<double> v;
+    for (const DropRecord* r : ok)
+      if (!std::isnan(m.value(*r))) v.push_back(m.value(*r));
+    s.metrics.push_back({&m, static_cast<int64_t>(v.size()), Percentile(v, 50), Percentile(v, 95), Percentile(v, 99),
+                         Percentile(v, 100)});
+  }
+  // The worst tilts: largest first, ties in index order (stable, so the list never depends on threads).
+  std::stable_sort(ok.begin(), ok.end(), [](const DropRecord* a, const DropRecord* b) {
+    return a->max_tilt_deg > b->max_tilt_deg;
+  });
+  for (size_t i = 0; i < ok.size() && static_cast<int>(i) < study.worst_cases; ++i) s.worst_tilt.push_back(*ok[i]);
+  s.map = TipOverMap(study, records);
+  return s;
+}
+
+nlohmann::json LandingJson(const DropRecord& r) {
+  return {{"drop_id", r.drop_id},
+          {"drop_index", r.index},
+          {"tipped_over", r.tipped_over == 1.0},
+          {"max_tilt_deg", Number(r.max_tilt_deg)},
+          {"final_tilt_deg", Number(r.final_tilt_deg)},
+          {"max_pad_penetration_m", Number(r.final_penetration_m)},
+          {"conditions",
+           {{"impact_speed_m_s", Number(r.impact_speed_m_s)},
+            {"horizontal_speed_m_s", Number(r.horizontal_speed_m_s)},
+            {"horizontal_azimuth_deg", Number(r.horizontal_azimuth_deg)},
+            {"roll_deg", Number(r.roll_deg)},
+            {"pitch_deg", Number(r.pitch_deg)},
+            {"slope_deg", Number(r.slope_deg)},
+            {"downhill_azimuth_deg", Number(r.downhill_azimuth_deg)},
+            {"yaw_relative_to_slope_deg", Number(r.yaw_relative_to_slope_deg)},
+            {"angular_rate_deg_s",
+             {Number(r.angular_rate_deg_s[0]), Number(r.angular_rate_deg_s[1]), Number(r.angular_rate_deg_s[2])}},
+            {"gravity_m_s2", Number(r.gravity_m_s2)},
+            {"pad", r.pad},
+            {"soil", r.soil},
+            {"pad_soils", r.pad_soil},
+            {"ground_case", r.ground_case}}}};
+}
+
+namespace {
+nlohmann::json MapJson(const Study& study, const StudySummary& s) {
+  if (!study.map) return nullptr;
+  nlohmann::json cells = nlohmann::json::array();
+  for (const MapCell& c : s.map)
+    cells.push_back({{"x", {c.x_low, c.x_high}},
+                     {"y", {c.y_low, c.y_high}},
+                     {"landings", c.landings},
+                     {"tipped_over", c.tipped},
+                     {"tip_over_probability", Number(c.probability)},
+                     {"tip_over_probability_interval_95", {c.interval.low, c.interval.high}}});
+  const StudyMap& m = *study.map;
+  return {{"x", sweep::SweepParamKey(m.x.param)}, {"y", sweep::SweepParamKey(m.y.param)},
+          {"x_range", {m.x.low, m.x.high}},       {"y_range", {m.y.low, m.y.high}},
+          {"bins", {m.x.bins, m.y.bins}},         {"cells", cells}};
+}
+}  // namespace
+
+nlohmann::json SummaryJson(const Study& study, const StudySummary& s) {
+  nlohmann::json percentiles = nlohmann::json::object();
+  for (const MetricPercentiles& m : s.metrics)
+    percentiles[m.metric->name] = {{"unit", m.metric->unit}, {"meaning", m.metric->meaning},
+                                   {"landings", m.count},    {"p50", Number(m.p50)},
+                                   {"p95", Number(m.p95)},   {"p99", Number(m.p99)},
+                                   {"max", Number(m.max)}};
+  nlohmann::json worst = nlohmann::json::array(), tips = nlohmann::json::array();
+  for (const DropRecord& r : s.worst_tilt) worst.push_back(LandingJson(r));
+  for (const DropRecord& r : s.tip_overs) tips.push_back(LandingJson(r));
+  return {{"study", study.plan.name},
+          {"landings", s.landings},
+          {"landings_planned", s.planned},
+          {"landings_failed", s.failed},
+          {"samples", study.plan.samples},
+          {"samples_in_study_file", study.samples_in_file},
+          {"samples_overridden", study.samples_override.has_value()},
+          {"tipped_over", s.tipped},
+          {"landings_unsettled", s.unsettled},
+          {"landings_unsettled_meaning",
+           "landings that neither came to rest nor tipped over within the scenario's duration (counted as not "
+           "tipped over; a longer simulation.duration_s settles them)"},
+          {"tip_over_probability", Number(s.tip_over_probability)},
+          {"tip_over_probability_interval_95", {s.interval.low, s.interval.high}},
+          {"interval_method", "exact binomial (Clopper-Pearson), two-sided 95 %, 2.5 % in each tail"},
+          {"percentiles", percentiles},
+          {"percentile_definition",
+           "linear interpolation between order statistics: x(h), h = (n - 1) q / 100 on the sorted values "
+           "(Hyndman & Fan definition 7); max = the largest value; over the completed landings that did not tip "
+           "over (a tipped lander's final attitude and depths describe no landing)"},
+          {"map", MapJson(study, s)},
+          {"worst_max_tilt", worst},
+          {"worst_max_tilt_meaning", "the landings that stayed up with the largest max tilt (closest calls), largest first"},
+          {"tip_overs", tips},
+          {"tip_overs_listed", static_cast<int64_t>(s.tip_overs.size())}};
+}
+
+}  // namespace touchdown::stability

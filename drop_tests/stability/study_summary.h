@@ -1,0 +1,67 @@
+#pragma once
+// What a stability study's landings add up to: the tip-over probability with its exact 95 %
+// interval, percentiles of the landing metrics, the tip-over map, the worst cases with their
+// conditions (summary.json; docs/stability_studies.md defines every entry).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "drop_tests/stability/study.h"
+#include "drop_tests/stability/study_statistics.h"
+#include "drop_tests/sweep/results_db.h"
+
+namespace touchdown::stability {
+
+// A landing metric as stored (SI, angles in degrees): name (summary.json key), unit, meaning.
+struct StudyMetric {
+  const char* name;
+  const char* unit;
+  const char* meaning;
+  double (*value)(const sweep::DropRecord&);
+};
+// Every metric summary.json reports, in its order.
+const std::vector<StudyMetric>& StudyMetrics();
+
+struct MetricPercentiles {
+  const StudyMetric* metric = nullptr;
+  int64_t count = 0;  // landings with a value (NaN: none, e.g. absorber stroke without absorbers)
+  double p50 = 0.0, p95 = 0.0, p99 = 0.0, max = 0.0;
+};
+
+struct MapCell {
+  int ix = 0, iy = 0;
+  double x_low = 0.0, x_high = 0.0, y_low = 0.0, y_high = 0.0;
+  int64_t landings = 0, tipped = 0;
+  double probability = 0.0;  // NaN without landings
+  BinomialInterval interval;
+};
+
+struct StudySummary {
+  int64_t planned = 0;   // landings in the plan
+  int64_t landings = 0;  // completed (the statistics are over these)
+  int64_t failed = 0;    // the solver gave up (listed by `touchdown export`; not counted)
+  int64_t tipped = 0;
+  int64_t unsettled = 0;  // neither at rest nor tipped over at the end of the run (counted as not tipped)
+  double tip_over_probability = 0.0;  // tipped / landings; NaN without landings
+  BinomialInterval interval;          // 95 %, Clopper-Pearson
+  std::vector<MetricPercentiles> metrics;  // over the landings that stayed up (not tipped over)
+  std::vector<MapCell> map;  // x bin major (cell ix * y bins + iy); empty without a map
+  std::vector<sweep::DropRecord> worst_tilt;  // landings that stayed up with the largest max tilts, largest first
+  std::vector<sweep::DropRecord> tip_overs;   // in index order, at most max_tip_over_cases
+};
+
+// The value of a map axis for a landing: the plan's parameter for its index, in file units.
+double MapCoordinate(const Study& study, const MapAxis& axis, int64_t index);
+
+// Whether a landing completed without tipping over: the landings percentiles, exceedance curves
+// and histograms describe.
+bool StayedUp(const sweep::DropRecord& r);
+// The summary of the landings `records` (the whole study, in index order).
+StudySummary Summarise(const Study& study, const std::vector<sweep::DropRecord>& records);
+nlohmann::json SummaryJson(const Study& study, const StudySummary& summary);
+// A landing's conditions (every study variable) and outcome, as summary.json lists them.
+nlohmann::json LandingJson(const sweep::DropRecord& r);
+
+}  // namespace touchdown::stability

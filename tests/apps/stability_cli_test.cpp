@@ -1,0 +1,151 @@
+// `touchdown stability` as a user runs it: a quick look with --samples (recorded), a second run
+// that resumes and writes the same summary.json, `touchdown sweep` on the study file running the
+// same landings bit for bit, and bad study files refused with exit status 2 and one line naming
+// the file and the field.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sqlite3.h>
+#include <sstream>
+#include <sys/wait.h>
+
+#include "tests/scratch_dir_test.h"
+#include "tests/touchdown_process.h"
+
+namespace {
+
+struct StabilityRun {
+  int status = -1;
+  std::string out, err;
+};
+
+// Level ground, symmetric touchdowns at random speeds and gravities: cheap landings that never tip.
+std::string LevelStudy(int samples) {
+  return "schema_version: 1\ntype: stability\nname: level_quick\nlander: {scenario: lander_case_A}\n"
+         "random: {samples: " + std::to_string(samples) + ", seed: 3, impact_speed_m_s: {uniform: [0.6, 1.0]},\n"
+         "         gravity_m_s2: {uniform: [1.62, 9.81]}}\n"
+         "study: {map: {x: impact_speed_m_s, y: gravity_m_s2, bins: [2, 2]}}\n";
+}
+
+class StabilityCli : public touchdown::testing_scratch::ScratchDirTest {
+ protected:
+  StabilityRun Run(const std::vector<std::string>& args) {
+    const std::string out = Path("stdout"), err = Path("stderr");
+    const pid_t pid = touchdown::testing_process::StartTouchdown(args, "", out, err);
+    const int raw = touchdown::testing_process::WaitForStatus(pid);
+    return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, Slurp(out), Slurp(err)};
+  }
+  // Every drops row as text, in index order.
+  static std::string Rows(const std::string& db_path) {
+    sqlite3* db = nullptr;
+    sqlite3_open_v2(db_path.c_str(), &db, SQLITE_OPEN_READONLY, nullptr);
+    std::string text;
+    sqlite3_exec(
+        db, "SELECT * FROM drops ORDER BY drop_index",
+        [](void* out, int n, char** values, char**) {
+          for (int i = 0; i < n; ++i) *static_cast<std::string*>(out) += std::string(values[i] ? values[i] : "NULL") + "|";
+          *static_cast<std::string*>(out) += "\n";
+          return 0;
+        },
+        &text, nullptr);
+    sqlite3_close(db);
+    return text;
+  }
+};
+
+TEST_F(StabilityCli, SamplesOverrideIsRecordedAndARerunResumesToTheSameSummary) {
+  const std::string study = Write("level.yaml", LevelStudy(50));
+  const std::string out = Path("out");
+  const StabilityRun first = Run({"stability", study, "--out", out, "--samples", "3", "--threads", "2",
+                                  "--progress", "none"});
+  ASSERT_EQ(first.status, 0) << first.err;
+  const std::filesystem::path dir = out;
+  const nlohmann::json j = nlohmann::json::parse(Slurp(dir / "summary.json"));
+  EXPECT_EQ(j["landings"], 3);
+  EXPECT_EQ(j["samples"], 3);
+  EXPECT_EQ(j["samples_in_study_file"], 50);
+  EXPECT_EQ(j["samples_overridden"], true);
+  EXPECT_EQ(j["tip_over_probability"].get<double>(), 0.0);
+  EXPECT_NEAR(j["tip_over_probability_interval_95"][1].get<double>(), 1.0 - std::pow(0.025, 1.0 / 3.0), 1e-12);
+  for (const char* file : {"results.sqlite", "percentiles.csv", "tip_over_map.csv", "plots/tip_over_map.png",
+                           "plots/tip_over_map.svg", "plots/exceedance.png", "plots/exceedance.svg",
+                           "plots/histograms.png", "plots/histograms.svg"})
+    EXPECT_TRUE(std::filesystem::is_regular_file(dir / file)) << file;
+  // The rerun finds every landing done and writes the same summary, byte for byte.
+  const std::string summary = Slurp(dir / "summary.json");
+  const StabilityRun second = Run({"stability", study, "--out", out, "--samples", "3", "--progress", "none"});
+  ASSERT_EQ(second.status, 0) << second.err;
+  EXPECT_NE(second.out.find("0 landings run now, 3 already done"), std::string::npos) << second.out;
+  EXPECT_EQ(Slurp(dir / "summary.json"), summary);
+  // Without --samples it is another study: refused in that directory, naming the database.
+  const StabilityRun other = Run({"stability", study, "--out", out, "--progress", "none"});
+  EXPECT_EQ(other.status, 2);
+  EXPECT_NE(other.err.find("plan_digest"), std::string::npos) << other.err;
+}
+
+TEST_F(StabilityCli, SweepOnTheStudyFileRunsTheSameLandings) {
+  const std::string study = Write("level.yaml", LevelStudy(2));
+  ASSERT_EQ(Run({"stability", study, "--out", Path("study"), "--threads", "1", "--progress", "none"}).status, 0);
+  const StabilityRun sweep = Run({"sweep", study, "--out", Path("sweep"), "--threads", "2", "--progress", "none"});
+  ASSERT_EQ(sweep.status, 0) << sweep.err;
+  const std::string rows = Rows(Path("study") + "/results.sqlite");
+  EXPECT_EQ(std::count(rows.begin(), rows.end(), '\n'), 2);
+  EXPECT_EQ(Rows(Path("sweep") + "/results.sqlite"), rows);
+  // ... and `stability` on the sweep's directory only analyses them.
+  const StabilityRun analyse = Run({"stability", study, "--out", Path("sweep"), "--progress", "none"});
+  ASSERT_EQ(analyse.status, 0) << analyse.err;
+  EXPECT_NE(analyse.out.find("0 landings run now, 2 already done"), std::string::npos) << analyse.out;
+}
+
+// Shards run their landings only; merged, the study analyses to the same summary as one run.
+TEST_F(StabilityCli, ShardsMergedAnalyseToTheSameSummaryAsOneRun) {
+  const std::string study = Write("level.yaml", LevelStudy(3));
+  ASSERT_EQ(Run({"stability", study, "--out", Path("whole"), "--threads", "2", "--progress", "none"}).status, 0);
+  for (const char* shard : {"0/2", "1/2"}) {
+    const StabilityRun r = Run({"stability", study, "--out", Path(std::string("shard") + shard[0]), "--shard", shard,
+                                "--threads", "1", "--progress", "none"});
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("touchdown merge"), std::string::npos) << r.out;
+    EXPECT_FALSE(std::filesystem::exists(Path(std::string("shard") + shard[0]) + "/summary.json"));
+  }
+  const StabilityRun merge = Run({"merge", Path("shard0"), Path("shard1"), "--out", Path("merged")});
+  ASSERT_EQ(merge.status, 0) << merge.err;
+  const StabilityRun analyse = Run({"stability", study, "--out", Path("merged"), "--progress", "none"});
+  ASSERT_EQ(analyse.status, 0) << analyse.err;
+  EXPECT_NE(analyse.out.find("0 landings run now, 3 already done"), std::string::npos) << analyse.out;
+  EXPECT_EQ(Slurp(Path("merged") + "/summary.json"), Slurp(Path("whole") + "/summary.json"));
+}
+
+TEST_F(StabilityCli, BadStudiesExitTwoWithOneLineNamingFileAndField) {
+  struct Bad {
+    std::string text, field;
+    std::vector<std::string> extra;
+  };
+  const std::string head = "schema_version: 1\ntype: stability\nlander: {scenario: lander_case_A}\n";
+  const std::vector<Bad> cases = {
+      {head + "grid: {slope_deg: [0, 90]}\n", "grid.slope_deg[1]", {}},
+      {head + "grid: {slope_deg: [0, 5]}\nstudy: {map: {x: slope_deg, y: yaw_deg}}\n", "study.map.y", {}},
+      {head + "grid: {slope_deg: [0, 5]}\nstudy: {map: {x: slope_deg, y: roll_deg}}\n", "study.map.y", {}},
+      {head + "grid: {slope_deg: [0, 5]}\n", "--samples", {"--samples", "4"}},
+      {"schema_version: 1\ntype: sweep\nlander: {scenario: lander_case_A}\ngrid: {slope_deg: [0, 5]}\n", "type", {}},
+  };
+  int k = 0;
+  for (const Bad& bad : cases) {
+    SCOPED_TRACE(bad.text);
+    const std::string file = Write("bad" + std::to_string(k) + ".yaml", bad.text);
+    std::vector<std::string> args = {"stability", file, "--out", Path("out" + std::to_string(k++))};
+    args.insert(args.end(), bad.extra.begin(), bad.extra.end());
+    const StabilityRun r = Run(args);
+    EXPECT_EQ(r.status, 2) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find(bad.field), std::string::npos) << r.err;
+    if (bad.field != "--samples") {
+      EXPECT_NE(r.err.find(file), std::string::npos) << r.err;
+    }
+  }
+}
+
+}  // namespace

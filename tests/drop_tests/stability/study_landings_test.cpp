@@ -1,0 +1,60 @@
+// Tiny real studies whose answer is known by construction, run by the sweep engine and analysed:
+// every landing stays up (level ground, slow, symmetric: probability 0) or every landing tips
+// over (a 30 deg slope with 1.5 m/s downhill); the probability and its exact interval follow.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include "drop_tests/stability/study.h"
+#include "drop_tests/stability/study_outputs.h"
+#include "drop_tests/sweep/sweep.h"
+#include "tests/drop_tests/scenario/lander_test_support.h"
+#include "tests/scratch_dir_test.h"
+
+namespace touchdown::stability {
+namespace {
+
+struct StudyLandings : testing_scratch::ScratchDirTest {
+  StudySummary RunStudy(const std::string& body) {
+    Study study = LoadStudy(Write("study.yaml", std::string("schema_version: 1\ntype: stability\nname: known\n"
+                                                            "lander: {scenario: ") +
+                                                    TOUCHDOWN_SOURCE_DIR + "/data/scenarios/lander_case_A.yaml}\n" +
+                                                    body));
+    test::CoarsenPad(*study.plan.lander);  // a few hundred triangles per pad: milliseconds per landing
+    sweep::SweepRunOptions options;
+    options.threads = 2;
+    options.progress = sweep::ProgressMode::kNone;
+    sweep::RunSweep(study.plan, Path("out"), options);
+    return WriteStudyAnalysis(study, Path("out"));
+  }
+};
+
+TEST_F(StudyLandings, LevelSlowSymmetricLandingsNeverTipOver) {
+  const StudySummary s = RunStudy("grid: {impact_speed_m_s: [0.6, 1.0]}\n");
+  EXPECT_EQ(s.landings, 2);
+  EXPECT_EQ(s.failed, 0);
+  EXPECT_EQ(s.tipped, 0);
+  EXPECT_EQ(s.tip_over_probability, 0.0);
+  EXPECT_EQ(s.interval.low, 0.0);
+  EXPECT_NEAR(s.interval.high, 1.0 - std::sqrt(0.025), 1e-12);  // 0 of 2: 1 - 0.025^(1/2)
+  EXPECT_EQ(s.unsettled, 0);
+  EXPECT_LT(s.metrics.at(0).max, 0.01);  // symmetric: no tilt
+}
+
+TEST_F(StudyLandings, SteepSlopeWithFastDownhillSpeedAlwaysTipsOver) {
+  const StudySummary s = RunStudy(
+      "fixed: {slope_deg: 30, downhill_azimuth_deg: -90, yaw_relative_to_slope_deg: 90, horizontal_speed_m_s: 1.5,\n"
+      "        horizontal_azimuth_deg: -90}\n"
+      "grid: {impact_speed_m_s: [0.8, 1.0]}\n");
+  EXPECT_EQ(s.landings, 2);
+  EXPECT_EQ(s.tipped, 2);
+  EXPECT_EQ(s.tip_over_probability, 1.0);
+  EXPECT_NEAR(s.interval.low, std::sqrt(0.025), 1e-12);  // 2 of 2: 0.025^(1/2)
+  EXPECT_EQ(s.interval.high, 1.0);
+  EXPECT_EQ(s.tip_overs.size(), 2u);
+  EXPECT_EQ(s.metrics.at(0).count, 0);  // no landing stayed up
+}
+
+}  // namespace
+}  // namespace touchdown::stability
