@@ -96,7 +96,8 @@ std::string NanStl() {
   b.append(reinterpret_cast<const char*>(&n), 4);
   const float values[12] = {0, 0, 0, std::nanf(""), 0, 0, 1, 0, 0, 0, 1, 0};
   b.append(reinterpret_cast<const char*>(values), sizeof values);
-  return b + std::string(2, '\0');
+  b.append(2, '\0');  // the attribute byte count
+  return b;
 }
 
 const std::string kHugeListPly =
