@@ -116,6 +116,33 @@ Eigen::Matrix3d AxisRotation(const Eigen::Vector3d& axis, double angle) {
 }
 }  // namespace
 
+namespace {
+// The body's mass and CoM and the legs' joints and hips from the pad and the leg layout; "" or
+// "field: reason" when they do not fit.
+std::string PlaceLegs(LanderSpec& s) {
+  const geom::PadBody& pad = s.pad.body;
+  s.body_mass_kg = s.total_mass_kg - lander::kNumLegs * pad.mass_kg;
+  if (!(s.body_mass_kg > 0.0)) return "total_mass_kg: must exceed the four pads' mass";
+  // Standing level on the pad bottoms: the joint centre is -lowest_z_B above the bottom, the pad
+  // CoM com_B.z above the joint; the body CoM height follows from the whole lander's CoG height.
+  const double joint_height = -pad.lowest_z_B;
+  const double pad_com_height = joint_height + pad.com_B.z();
+  const double body_com_height =
+      (s.total_mass_kg * s.cog_height_m - lander::kNumLegs * pad.mass_kg * pad_com_height) / s.body_mass_kg;
+  if (!(body_com_height > joint_height)) return "cog_height_mm: puts the body's centre of mass below the joints";
+  if (!(s.layout.hip_height_m > joint_height)) return "hip_height_mm: must be above the ball-joint centres";
+  for (int i = 0; i < lander::kNumLegs; ++i) {
+    const double az = kPadAzimuthDeg[i] * kDeg;
+    const Eigen::Vector3d dir(std::cos(az), std::sin(az), 0.0);
+    s.legs[i].joint_B = s.layout.joint_radius_m * dir + Eigen::Vector3d(0, 0, joint_height - body_com_height);
+    s.legs[i].hip_B = s.layout.hip_radius_m * dir + Eigen::Vector3d(0, 0, s.layout.hip_height_m - body_com_height);
+    s.legs[i].absorber = s.layout.absorber;
+    s.legs[i].cone = s.layout.cone;
+  }
+  return "";
+}
+}  // namespace
+
 LanderSpec LoadLanderSpec(const std::string& name_or_path) {
   const std::string path = io::ResolveCatalogFile("landers", name_or_path);
   const io::YamlFields f = io::YamlFields::LoadFile(path);
@@ -139,41 +166,31 @@ LanderSpec LoadLanderSpec(const std::string& name_or_path) {
   } catch (const InputError& e) {
     f.Fail("pad", e.what());
   }
-  s.body_mass_kg = s.total_mass_kg - lander::kNumLegs * s.pad.body.mass_kg;
-  if (!(s.body_mass_kg > 0.0)) f.Fail("total_mass_kg", "must exceed the four pads' mass");
-
-  // Standing level on the pad bottoms: the joint centre is -lowest_z_B above the bottom, the pad
-  // CoM com_B.z above the joint; the body CoM height follows from the whole lander's CoG height.
-  const geom::PadBody& pad = s.pad.body;
-  const double joint_height = -pad.lowest_z_B;
-  const double pad_com_height = joint_height + pad.com_B.z();
-  const double body_com_height =
-      (s.total_mass_kg * s.cog_height_m - lander::kNumLegs * pad.mass_kg * pad_com_height) / s.body_mass_kg;
-  if (!(body_com_height > joint_height)) f.Fail("cog_height_mm", "puts the body's centre of mass below the joints");
-
   const io::YamlFields legs = f.Child("legs");
   legs.RequireOnly({"joint_radius_mm", "hip_radius_mm", "hip_height_mm", "absorber", "cone_limit"});
-  const double joint_radius = legs.Positive("joint_radius_mm") * kMm;
-  const double hip_radius = legs.NonNegative("hip_radius_mm") * kMm;
-  const double hip_height = legs.Positive("hip_height_mm") * kMm;
-  if (!(hip_height > joint_height)) legs.Fail("hip_height_mm", "must be above the ball-joint centres");
-  std::optional<lander::ShockAbsorber> absorber;
-  if (legs.Has("absorber")) absorber = ReadAbsorber(legs.Child("absorber"));
-  std::optional<lander::ConeLimit> cone;
+  s.layout.joint_radius_m = legs.Positive("joint_radius_mm") * kMm;
+  s.layout.hip_radius_m = legs.NonNegative("hip_radius_mm") * kMm;
+  s.layout.hip_height_m = legs.Positive("hip_height_mm") * kMm;
+  if (legs.Has("absorber")) s.layout.absorber = ReadAbsorber(legs.Child("absorber"));
   if (legs.Has("cone_limit")) {
     const io::YamlFields c = legs.Child("cone_limit");
     c.RequireOnly(io::FieldKeys(ConeFields()));
-    cone.emplace();
-    io::ReadFields(c, ConeFields(), *cone);
+    s.layout.cone.emplace();
+    io::ReadFields(c, ConeFields(), *s.layout.cone);
   }
-  for (int i = 0; i < lander::kNumLegs; ++i) {
-    const double az = kPadAzimuthDeg[i] * kDeg;
-    const Eigen::Vector3d dir(std::cos(az), std::sin(az), 0.0);
-    s.legs[i].joint_B = joint_radius * dir + Eigen::Vector3d(0, 0, joint_height - body_com_height);
-    s.legs[i].hip_B = hip_radius * dir + Eigen::Vector3d(0, 0, hip_height - body_com_height);
-    s.legs[i].absorber = absorber;
-    s.legs[i].cone = cone;
+  if (const std::string why = PlaceLegs(s); !why.empty()) {
+    const bool hips = why.starts_with("hip_height_mm");
+    (hips ? legs : f).Fail(why.substr(0, why.find(':')), why.substr(why.find(':') + 2));
   }
+  return s;
+}
+
+LanderSpec LanderSpecWithPad(const LanderSpec& spec, const io::PadSpec& pad) {
+  LanderSpec s = spec;
+  s.pad = pad;
+  if (const std::string why = PlaceLegs(s); !why.empty())
+    throw InputError("pad " + pad.name + " does not fit lander " + spec.name + " (its " + why + "; pad file " +
+                     pad.source + ")");
   return s;
 }
 

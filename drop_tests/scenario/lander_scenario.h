@@ -29,9 +29,17 @@ struct LanderLegSpec {
   std::optional<lander::ConeLimit> cone;
 };
 
+// The legs as the lander file gives them, before the pad places the joints (LanderSpecWithPad).
+struct LanderLegLayout {
+  double joint_radius_m = 0.0, hip_radius_m = 0.0, hip_height_m = 0.0;  // heights above the pad bottoms
+  std::optional<lander::ShockAbsorber> absorber;
+  std::optional<lander::ConeLimit> cone;
+};
+
 struct LanderSpec {
   std::string name;
   std::string source;
+  LanderLegLayout layout;
   double total_mass_kg = 0.0;      // body + pads (the paper's 4.3 kg)
   double body_mass_kg = 0.0;       // resolved: total - pads
   Eigen::Matrix3d body_inertia_B = Eigen::Matrix3d::Zero();
@@ -102,6 +110,11 @@ struct LanderRun {
 };
 
 LanderSpec LoadLanderSpec(const std::string& name_or_path);
+// The same lander on another pad (a study's pad design): the total mass and the whole lander's CoG
+// height stay, so the body's mass and CoM, and the joints (the pad's joint height above its
+// bottom), follow the pad. Throws InputError naming the pad file when the pad does not fit: the
+// four pads heavier than the lander, or the body's CoM or the hips below the joints.
+LanderSpec LanderSpecWithPad(const LanderSpec& spec, const io::PadSpec& pad);
 LanderScenario LoadLanderScenario(const std::string& path);
 // Builds the model, terrain and initial state (soils loaded from data/soils by name).
 LanderSetup BuildLanderSetup(const LanderScenario& scenario);

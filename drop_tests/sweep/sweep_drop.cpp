@@ -172,6 +172,7 @@ void RecordConditions(const scenario::LanderScenario& sc, DropRecord& r) {
 DropRecord SimulateLanderSweepDrop(const SweepModels& models, const SweepDropParams& p) {
   const SweepPlan& plan = models.plan();
   scenario::LanderScenario sc = *plan.lander;  // the model is already in it (LoadSweepPlan)
+  if (p.Given(SweepParam::kPad)) sc.lander = scenario::LanderSpecWithPad(sc.lander, plan.pads[p.pad]);
   if (p.Given(SweepParam::kGravity)) sc.gravity_m_s2 = p.gravity_m_s2;
   if (p.Given(SweepParam::kSoil)) sc.ground.default_soil = plan.soil_refs[p.soil];
   if (p.Given(SweepParam::kImpactSpeed)) {

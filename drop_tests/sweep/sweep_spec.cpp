@@ -499,10 +499,10 @@ class ParamClaims {
                             "slope_deg, downhill_azimuth_deg, yaw_relative_to_slope_deg, horizontal_azimuth_deg, "
                             "angular_rate_x_deg_s, angular_rate_y_deg_s, angular_rate_z_deg_s)");
     if (Seen(*p)) block.Fail(key, "set in more than one of fixed, grid and random");
-    if (lander_ && IsSinglePadOnly(*p))
+    if (lander_ && IsSinglePadOnly(*p) && *p != SweepParam::kPad)
       block.Fail(key, "a single-pad parameter; a lander sweep varies impact_speed_m_s, horizontal_speed_m_s, "
                       "horizontal_azimuth_deg, roll_deg, pitch_deg, yaw_relative_to_slope_deg, the angular rates, "
-                      "slope_deg, downhill_azimuth_deg, gravity_m_s2, soil and pad_soils");
+                      "slope_deg, downhill_azimuth_deg, gravity_m_s2, soil, pad_soils and pad (the pad design)");
     if (!lander_ && IsLanderParam(*p))
       block.Fail(key, "a lander parameter: it needs a `lander: {scenario: ...}` block (single pads take tilt_deg)");
     const SweepParam other = *p == SweepParam::kSoil ? SweepParam::kPadSoils : SweepParam::kSoil;
@@ -689,6 +689,14 @@ SweepPlan LoadSweepPlan(const std::string& path, const std::string& model_overri
         model::MakeModelStressLaw3D(plan.lander->ground.law, io::LoadSoil(ref), plan.lander->gravity_m_s2, model);
     } catch (const InputError& e) {
       f.Fail("lander", e.what());
+    }
+    // A pad design the study varies must fit the lander (its mass and joint height place the legs).
+    for (const io::PadSpec& pad : plan.pads) {
+      try {
+        scenario::LanderSpecWithPad(plan.lander->lander, pad);
+      } catch (const InputError& e) {
+        f.Fail("pad", e.what());
+      }
     }
   }
   return plan;

@@ -65,8 +65,10 @@
 // release (half width `lander: {pad_patch_half_width_m}`, default: the scenario's own under_pad
 // patches' half width, else 0.08 m as in data/scenarios/lander_case_B.yaml), so `A`, `B`, `C`
 // on lander_case_A reproduce the scenarios lander_case_A, _B, _C. soil and pad_soils are
-// exclusive. pad, pad_mass_kg, tilt_deg and zeta_N_cm3 are single-pad parameters and refused
-// there; roll_deg, pitch_deg and pad_soils are refused in single-pad sweeps. The model
+// exclusive. `pad` is the pad design on all four legs (scenario::LanderSpecWithPad: the lander's
+// total mass and CoG height stay, the joints sit at the pad's joint height; each pad is checked
+// against the lander at load). pad_mass_kg, tilt_deg and zeta_N_cm3 are single-pad parameters and
+// refused there; roll_deg, pitch_deg and pad_soils are refused in single-pad sweeps. The model
 // (`model:`/--model) applies to the lander's soils as in `touchdown lander --model`.
 //
 // A stability study (`type: stability`, docs/stability_studies.md) is a lander sweep with a

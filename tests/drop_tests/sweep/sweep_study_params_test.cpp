@@ -221,5 +221,44 @@ TEST_F(SweepStudyParams, SlopeAndMotionReachTheLanderAsTheScenarioFieldsWould) {
   EXPECT_TRUE(SameRecord(DeserializeRecords(SerializeRecords({r})).at(0), r));
 }
 
+// The pad design on all four legs: the lander's own pad gives back its legs exactly; a wider pad
+// (same mass and joint height) sinks less; a pad heavier than the lander can carry is refused at load.
+TEST_F(SweepStudyParams, PadDesignPlacesTheLegsAndSinksByItsSize) {
+  const std::string pad_text = std::string("schema_version: 1\nkind: axisymmetric\nmass_kg: 0.08\nangular_segments: 16\n") +
+                               "reference_point_mm: [0, 0, 20]\nprofile: {shape: flat, thickness_mm: 10, radius_mm: ";
+  const std::string own = WriteText("own_pad.yaml", "name: own\n" + pad_text + "27.5}\n");
+  const std::string wide = WriteText("wide_pad.yaml", "name: wide\n" + pad_text + "40}\n");
+  const SweepPlan plan =
+      LoadSweepPlan(WriteText("pads.yaml", StudyLanderHead() + "grid: {pad: [" + own + ", " + wide + "]}\n"));
+  ASSERT_EQ(plan.pads.size(), 2u);
+  const scenario::LanderSpec& spec = plan.lander->lander;
+  const scenario::LanderSpec again = scenario::LanderSpecWithPad(spec, spec.pad);
+  EXPECT_EQ(again.body_mass_kg, spec.body_mass_kg);
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_EQ(again.legs[i].joint_B, spec.legs[i].joint_B) << i;
+    EXPECT_EQ(again.legs[i].hip_B, spec.legs[i].hip_B) << i;
+  }
+  const SweepModels models(plan);
+  const DropRecord narrow_drop = SimulateSweepDrop(models, 0), wide_drop = SimulateSweepDrop(models, 1);
+  ASSERT_TRUE(narrow_drop.ok && wide_drop.ok) << narrow_drop.failure << wide_drop.failure;
+  EXPECT_EQ(narrow_drop.pad, "own");
+  EXPECT_EQ(wide_drop.pad, "wide");
+  // RFT: the force grows with the footprint, so the 2.1x larger pad stops in a shallower stroke.
+  EXPECT_LT(wide_drop.final_penetration_m, 0.8 * narrow_drop.final_penetration_m);
+
+  const std::string heavy =
+      WriteText("heavy_pad.yaml", "name: heavy\n" + std::string(pad_text).replace(pad_text.find("0.08"), 4, "1.2") + "27.5}\n");
+  const std::string file = WriteText("heavy.yaml", StudyLanderHead() + "fixed: {pad: " + heavy + "}\n");
+  try {
+    LoadSweepPlan(file);
+    ADD_FAILURE() << "a 1.2 kg pad on each leg of a 4.3 kg lander was accepted";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find(file), std::string::npos) << what;
+    EXPECT_NE(what.find("pad"), std::string::npos) << what;
+    EXPECT_NE(what.find("does not fit"), std::string::npos) << what;
+  }
+}
+
 }  // namespace
 }  // namespace touchdown::sweep

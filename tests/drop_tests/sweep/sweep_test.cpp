@@ -159,8 +159,11 @@ INSTANTIATE_TEST_SUITE_P(
                  "grid.roll_deg: a lander parameter"},
         BadSweep{"LanderBlockFields", "lander: {legs: 4}\n", "lander.legs: unknown field"},
         BadSweep{"LanderUnknownScenario", "lander: {scenario: no_such_case}\n", "lander.scenario: "},
-        BadSweep{"LanderTakesNoPad", "lander: {scenario: lander_case_A}\ngrid: {pad: [flat, c4]}\n",
-                 "grid.pad: a single-pad parameter"},
+        BadSweep{"LanderPadMustFit", "lander: {scenario: lander_case_A}\ngrid: {pad: [flat, c4]}\n",
+                 "pad: pad flat does not fit lander sutoh2017_lander (its total_mass_kg: must exceed the four pads' mass; "
+                 "pad file "},
+        BadSweep{"LanderTakesNoPadMass", "lander: {scenario: lander_case_A}\nfixed: {pad_mass_kg: 1}\n",
+                 "fixed.pad_mass_kg: a single-pad parameter"},
         BadSweep{"LanderStoresNoTraces", "lander: {scenario: lander_case_A}\ntraces: full\n",
                  "traces: a lander sweep stores summaries only"},
         BadSweep{"TwiceSet", "fixed: {pad: flat, soil: fjs1_lp, impact_speed_m_s: 1}\ngrid: {pad: [flat, c4]}\n",
