@@ -8,6 +8,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 
+#include "drop_tests/io/json_number.h"
 #include "drop_tests/io/output_path.h"
 #include "drop_tests/dataset/calibrate.h"
 #include "drop_tests/io/dataset_csv.h"
@@ -42,7 +43,6 @@ double RelError(double simulated, double measured) {
   return measured != 0.0 ? (simulated - measured) / measured : std::nan("");
 }
 
-nlohmann::json Number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 }  // namespace
 
 double InterpolateClamped(const std::vector<double>& xs, const std::vector<double>& ys, double x) {
@@ -245,14 +245,14 @@ nlohmann::json ComparisonJson(const Comparison& c) {
                      {"soil", d.soil},
                      {"atmosphere", d.atmosphere},
                      {"impact_speed_m_s", d.impact_speed_m_s},
-                     {"measured_final_penetration_m", Number(d.measured_final_penetration_m)},
-                     {"simulated_final_penetration_m", Number(d.simulated_final_penetration_m)},
-                     {"final_penetration_rel_error", Number(d.final_penetration_rel_error)},
-                     {"measured_peak_force_N", Number(d.measured_peak_force_N)},
-                     {"simulated_peak_force_N", Number(d.simulated_peak_force_N)},
-                     {"peak_force_rel_error", Number(d.peak_force_rel_error)},
-                     {"force_nrmse_time", Number(d.force_nrmse_time.value)},
-                     {"force_nrmse_penetration", Number(d.force_nrmse_penetration.value)},
+                     {"measured_final_penetration_m", io::FiniteOrNull(d.measured_final_penetration_m)},
+                     {"simulated_final_penetration_m", io::FiniteOrNull(d.simulated_final_penetration_m)},
+                     {"final_penetration_rel_error", io::FiniteOrNull(d.final_penetration_rel_error)},
+                     {"measured_peak_force_N", io::FiniteOrNull(d.measured_peak_force_N)},
+                     {"simulated_peak_force_N", io::FiniteOrNull(d.simulated_peak_force_N)},
+                     {"peak_force_rel_error", io::FiniteOrNull(d.peak_force_rel_error)},
+                     {"force_nrmse_time", io::FiniteOrNull(d.force_nrmse_time.value)},
+                     {"force_nrmse_penetration", io::FiniteOrNull(d.force_nrmse_penetration.value)},
                      {"penetration_samples", d.force_nrmse_penetration.samples},
                      {"penetration_samples_used", d.force_nrmse_penetration.used}});
   for (nlohmann::json& d : drops) DropUndefined(d);
@@ -265,12 +265,12 @@ nlohmann::json ComparisonJson(const Comparison& c) {
           {"drops_measured_zero",
            {{"final_penetration", c.zero_final_penetration_drops}, {"peak_force", c.zero_peak_force_drops}}},
           {"simulated_from", c.simulated_from},
-          {"final_penetration_rel_error", Number(c.final_penetration_rel_error)},
-          {"peak_force_rel_error", Number(c.peak_force_rel_error)},
-          {"force_nrmse", Number(c.force_nrmse)},
-          {"force_nrmse_penetration", Number(c.force_nrmse_penetration)},
-          {"final_penetration_bias", Number(c.final_penetration_bias)},
-          {"peak_force_bias", Number(c.peak_force_bias)},
+          {"final_penetration_rel_error", io::FiniteOrNull(c.final_penetration_rel_error)},
+          {"peak_force_rel_error", io::FiniteOrNull(c.peak_force_rel_error)},
+          {"force_nrmse", io::FiniteOrNull(c.force_nrmse)},
+          {"force_nrmse_penetration", io::FiniteOrNull(c.force_nrmse_penetration)},
+          {"final_penetration_bias", io::FiniteOrNull(c.final_penetration_bias)},
+          {"peak_force_bias", io::FiniteOrNull(c.peak_force_bias)},
           {"definitions",
            {{"final_penetration_rel_error", "mean over drops of |d_sim - d_meas| / d_meas"},
             {"peak_force_rel_error", "mean over drops of |F_sim - F_meas| / F_meas"},

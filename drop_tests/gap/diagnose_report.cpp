@@ -14,6 +14,7 @@
 
 #include "drop_tests/gap/diagnose.h"
 #include "drop_tests/io/dataset_csv.h"
+#include "drop_tests/io/json_number.h"
 #include "drop_tests/io/output_path.h"
 #include "drop_tests/io/plot_decimation.h"
 #include "drop_tests/io/plot_runner.h"
@@ -32,14 +33,13 @@ std::string Num(double v, int digits = 4) {
   return s.str();
 }
 
-nlohmann::json Finite(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
 nlohmann::json GapJson(const GapSummary& g) {
-  return {{"force_nrmse", Finite(g.force_nrmse)},
-          {"force_nrmse_penetration", Finite(g.force_nrmse_penetration)},
-          {"final_penetration_rel_error", Finite(g.final_penetration_rel_error)},
-          {"peak_force_rel_error", Finite(g.peak_force_rel_error)},
-          {"noise_floor_force_nrmse", Finite(g.noise_nrmse)},
+  return {{"force_nrmse", io::FiniteOrNull(g.force_nrmse)},
+          {"force_nrmse_penetration", io::FiniteOrNull(g.force_nrmse_penetration)},
+          {"final_penetration_rel_error", io::FiniteOrNull(g.final_penetration_rel_error)},
+          {"peak_force_rel_error", io::FiniteOrNull(g.peak_force_rel_error)},
+          {"noise_floor_force_nrmse", io::FiniteOrNull(g.noise_nrmse)},
           {"averaged_over", "held-out drops (mean; relative errors as mean |.|)"}};
 }
 

@@ -4,12 +4,13 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "drop_tests/io/json_number.h"
+
 namespace touchdown::stability {
 
 namespace {
 using sweep::DropRecord;
 
-nlohmann::json Number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
 bool Tipped(const DropRecord& r) { return r.tipped_over == 1.0; }
 
@@ -129,21 +130,21 @@ nlohmann::json LandingJson(const DropRecord& r) {
   return {{"drop_id", r.drop_id},
           {"drop_index", r.index},
           {"tipped_over", r.tipped_over == 1.0},
-          {"max_tilt_deg", Number(r.max_tilt_deg)},
-          {"final_tilt_deg", Number(r.final_tilt_deg)},
-          {"max_pad_penetration_m", Number(r.final_penetration_m)},
+          {"max_tilt_deg", io::FiniteOrNull(r.max_tilt_deg)},
+          {"final_tilt_deg", io::FiniteOrNull(r.final_tilt_deg)},
+          {"max_pad_penetration_m", io::FiniteOrNull(r.final_penetration_m)},
           {"conditions",
-           {{"impact_speed_m_s", Number(r.impact_speed_m_s)},
-            {"horizontal_speed_m_s", Number(r.horizontal_speed_m_s)},
-            {"horizontal_azimuth_deg", Number(r.horizontal_azimuth_deg)},
-            {"roll_deg", Number(r.roll_deg)},
-            {"pitch_deg", Number(r.pitch_deg)},
-            {"slope_deg", Number(r.slope_deg)},
-            {"downhill_azimuth_deg", Number(r.downhill_azimuth_deg)},
-            {"yaw_relative_to_slope_deg", Number(r.yaw_relative_to_slope_deg)},
+           {{"impact_speed_m_s", io::FiniteOrNull(r.impact_speed_m_s)},
+            {"horizontal_speed_m_s", io::FiniteOrNull(r.horizontal_speed_m_s)},
+            {"horizontal_azimuth_deg", io::FiniteOrNull(r.horizontal_azimuth_deg)},
+            {"roll_deg", io::FiniteOrNull(r.roll_deg)},
+            {"pitch_deg", io::FiniteOrNull(r.pitch_deg)},
+            {"slope_deg", io::FiniteOrNull(r.slope_deg)},
+            {"downhill_azimuth_deg", io::FiniteOrNull(r.downhill_azimuth_deg)},
+            {"yaw_relative_to_slope_deg", io::FiniteOrNull(r.yaw_relative_to_slope_deg)},
             {"angular_rate_deg_s",
-             {Number(r.angular_rate_deg_s[0]), Number(r.angular_rate_deg_s[1]), Number(r.angular_rate_deg_s[2])}},
-            {"gravity_m_s2", Number(r.gravity_m_s2)},
+             {io::FiniteOrNull(r.angular_rate_deg_s[0]), io::FiniteOrNull(r.angular_rate_deg_s[1]), io::FiniteOrNull(r.angular_rate_deg_s[2])}},
+            {"gravity_m_s2", io::FiniteOrNull(r.gravity_m_s2)},
             {"pad", r.pad},
             {"soil", r.soil},
             {"pad_soils", r.pad_soil},
@@ -159,7 +160,7 @@ nlohmann::json MapJson(const Study& study, const StudySummary& s) {
                      {"y", {c.y_low, c.y_high}},
                      {"landings", c.landings},
                      {"tipped_over", c.tipped},
-                     {"tip_over_probability", Number(c.probability)},
+                     {"tip_over_probability", io::FiniteOrNull(c.probability)},
                      {"tip_over_probability_interval_95", {c.interval.low, c.interval.high}}});
   const StudyMap& m = *study.map;
   return {{"x", sweep::SweepParamKey(m.x.param)}, {"y", sweep::SweepParamKey(m.y.param)},
@@ -172,9 +173,9 @@ nlohmann::json SummaryJson(const Study& study, const StudySummary& s) {
   nlohmann::json percentiles = nlohmann::json::object();
   for (const MetricPercentiles& m : s.metrics)
     percentiles[m.metric->name] = {{"unit", m.metric->unit}, {"meaning", m.metric->meaning},
-                                   {"landings", m.count},    {"p50", Number(m.p50)},
-                                   {"p95", Number(m.p95)},   {"p99", Number(m.p99)},
-                                   {"max", Number(m.max)}};
+                                   {"landings", m.count},    {"p50", io::FiniteOrNull(m.p50)},
+                                   {"p95", io::FiniteOrNull(m.p95)},   {"p99", io::FiniteOrNull(m.p99)},
+                                   {"max", io::FiniteOrNull(m.max)}};
   nlohmann::json worst = nlohmann::json::array(), tips = nlohmann::json::array();
   for (const DropRecord& r : s.worst_tilt) worst.push_back(LandingJson(r));
   for (const DropRecord& r : s.tip_overs) tips.push_back(LandingJson(r));
@@ -190,7 +191,7 @@ nlohmann::json SummaryJson(const Study& study, const StudySummary& s) {
           {"landings_unsettled_meaning",
            "landings that neither came to rest nor tipped over within the scenario's duration (counted as not "
            "tipped over; a longer simulation.duration_s settles them)"},
-          {"tip_over_probability", Number(s.tip_over_probability)},
+          {"tip_over_probability", io::FiniteOrNull(s.tip_over_probability)},
           {"tip_over_probability_interval_95", {s.interval.low, s.interval.high}},
           {"interval_method", "exact binomial (Clopper-Pearson), two-sided 95 %, 2.5 % in each tail"},
           {"percentiles", percentiles},

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <tuple>
 
+#include "drop_tests/io/json_number.h"
 #include "drop_tests/io/output_path.h"
 #include "drop_tests/io/dataset_csv.h"
 #include "drop_tests/io/plot_runner.h"
@@ -73,16 +74,15 @@ void MarkParetoFront(std::vector<TradeRow>& rows, const std::vector<size_t>& con
 
 nlohmann::json TradeJson(const std::vector<TradeRow>& rows) {
   nlohmann::json list = nlohmann::json::array();
-  auto number = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
   for (const TradeRow& r : rows)
     list.push_back({{"pad", r.pad},
                     {"soil", r.soil},
                     {"impact_speed_m_s", r.impact_speed_m_s},
                     {"drops", r.drops},
                     {"failed", r.failed},
-                    {"final_penetration_m", number(r.final_penetration_m)},
-                    {"peak_force_N", number(r.peak_force_N)},
-                    {"mean_conversion_rate_W", number(r.mean_conversion_rate_W)},
+                    {"final_penetration_m", io::FiniteOrNull(r.final_penetration_m)},
+                    {"peak_force_N", io::FiniteOrNull(r.peak_force_N)},
+                    {"mean_conversion_rate_W", io::FiniteOrNull(r.mean_conversion_rate_W)},
                     {"pareto", r.pareto}});
   return {{"rows", list},
           {"pareto_rule", "within each (soil, impact speed): pads no other pad beats on both final penetration "
