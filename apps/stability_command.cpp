@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "apps/commands.h"
+#include "apps/sweep_run_flags.h"
 #include "drop_tests/io/output_path.h"
 #include "drop_tests/stability/study.h"
 #include "drop_tests/stability/study_outputs.h"
@@ -17,16 +18,20 @@ namespace touchdown::app {
 
 namespace {
 struct StabilityArgs {
-  std::string study, out, shard, model, progress = "auto";
-  int threads = 0;
+  std::string study, out;
   int64_t samples = 0;
+  SweepRunFlags run;
 };
 
 void PrintStudyResult(const stability::Study& study, const stability::StudySummary& s, const std::string& out) {
   std::cout << "stability " << study.plan.name << ": " << s.landings << " landings"
             << (s.failed > 0 ? " (" + std::to_string(s.failed) + " failed, not counted)" : std::string()) << ", "
-            << s.tipped << " tipped over: P(tip-over) = " << std::setprecision(4) << s.tip_over_probability
-            << ", 95 % interval [" << s.interval.low << ", " << s.interval.high << "]\n";
+            << s.tipped << " tipped over: ";
+  if (s.landings == 0)
+    std::cout << "no tip-over probability without a finished landing\n";
+  else
+    std::cout << "P(tip-over) = " << std::setprecision(4) << s.tip_over_probability << ", 95 % interval ["
+              << s.interval.low << ", " << s.interval.high << "]\n";
   for (const stability::MetricPercentiles& m : s.metrics)
     if (m.count > 0 && (std::string(m.metric->name) == "max_tilt_deg" ||
                         std::string(m.metric->name) == "max_pad_penetration_m"))
@@ -49,25 +54,14 @@ void AddStabilityCommand(CLI::App& app) {
   CLI::Option* samples = cmd->add_option("--samples", args->samples,
                                          "random samples instead of the study's (a quick look; recorded in summary.json)")
                              ->check(CLI::Range(int64_t{1}, int64_t{1} << 40));
-  cmd->add_option("--threads", args->threads, "worker threads per process (default: every core)")
-      ->check(CLI::Range(0, 4096));
-  cmd->add_option("--shard", args->shard,
-                  "I/N: run only landings with index mod N == I (merge the shards, then run stability on the merge)");
-  cmd->add_option("--model", args->model, "model file (MODEL.yaml) with per-soil zeta overrides");
-  cmd->add_option("--progress", args->progress, "auto (bar on a terminal, else lines), bar, lines or none")
-      ->check(CLI::IsMember({"auto", "bar", "lines", "none"}));
+  AddSweepRunFlags(cmd, &args->run, "landings");
   cmd->callback([args, samples] {
     const std::optional<int64_t> override_samples =
         samples->count() > 0 ? std::optional<int64_t>(args->samples) : std::nullopt;
-    const stability::Study study = stability::LoadStudy(args->study, args->model, override_samples);
-    sweep::SweepRunOptions options;
-    options.threads = args->threads;
-    if (!args->shard.empty()) options.shard = sweep::ParseShard(args->shard);
-    options.progress = args->progress == "bar"     ? sweep::ProgressMode::kBar
-                       : args->progress == "lines" ? sweep::ProgressMode::kLines
-                       : args->progress == "none"  ? sweep::ProgressMode::kNone
-                                                   : sweep::ProgressMode::kAuto;
-    io::OpenOutputDirectory({args->out, {args->study, args->model}}, io::OutputKind::kSweep);
+    stability::Study study = stability::LoadStudy(args->study, args->run.model, override_samples);
+    ApplyDropLimits(args->run, &study.plan);
+    sweep::SweepRunOptions options = RunOptionsFrom(args->run);
+    io::OpenOutputDirectory({args->out, {args->study, args->run.model}}, io::OutputKind::kSweep);
     const sweep::StopOnSignals stop_on_signals;
     options.stop = &sweep::StopOnSignals::flag();
     int rank = 0;

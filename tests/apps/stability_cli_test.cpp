@@ -119,6 +119,31 @@ TEST_F(StabilityCli, ShardsMergedAnalyseToTheSameSummaryAsOneRun) {
   EXPECT_EQ(Slurp(Path("merged") + "/summary.json"), Slurp(Path("whole") + "/summary.json"));
 }
 
+// The per-landing work limit of `sweep` works on a study too: landings over it are recorded as
+// failed and left out of the statistics; a rerun with a higher limit runs exactly those again.
+TEST_F(StabilityCli, MaxDropEvaluationsFailsLandingsThatARerunWithAHigherLimitRunsAgain) {
+  const std::string study = Write("level.yaml", LevelStudy(2));
+  const std::string out = Path("limited");
+  const StabilityRun limited = Run({"stability", study, "--out", out, "--max-drop-evaluations", "20",
+                                    "--threads", "1", "--progress", "none"});
+  ASSERT_EQ(limited.status, 0) << limited.err;
+  nlohmann::json j = nlohmann::json::parse(Slurp(std::filesystem::path(out) / "summary.json"));
+  EXPECT_EQ(j["landings"], 0);
+  EXPECT_EQ(j["landings_failed"], 2);
+  EXPECT_TRUE(j["tip_over_probability"].is_null());
+  const StabilityRun rerun = Run({"stability", study, "--out", out, "--threads", "1", "--progress", "none"});
+  ASSERT_EQ(rerun.status, 0) << rerun.err;
+  EXPECT_NE(rerun.out.find("2 landings run now, 0 already done"), std::string::npos) << rerun.out;
+  j = nlohmann::json::parse(Slurp(std::filesystem::path(out) / "summary.json"));
+  EXPECT_EQ(j["landings"], 2);
+  EXPECT_EQ(j["landings_failed"], 0);
+  // A limit that is not a whole number is refused before any directory is made.
+  const StabilityRun bad = Run({"stability", study, "--out", Path("bad_limit"), "--max-drop-evaluations", "1.5"});
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.err.find("--max-drop-evaluations"), std::string::npos) << bad.err;
+  EXPECT_FALSE(std::filesystem::exists(Path("bad_limit")));
+}
+
 TEST_F(StabilityCli, BadStudiesExitTwoWithOneLineNamingFileAndField) {
   struct Bad {
     std::string text, field;
