@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Golden comparison for refactors that must not change a result: runs one touchdown executable
 # over a fixed set of jobs (the paper campaign, rig and free drops with an explicit --zeta, a
-# sweep and its export, lander cases A/B/C, a diagnose and a calibrate) and writes every output
+# sweep and its export, lander cases A/B/C, 24 landings of the lunar stability study, a diagnose
+# and a calibrate) and writes every output
 # under OUT. Run it with the executable before and after a change, then compare the two folders:
 #
 #   tools/golden_outputs.sh OLD/build/apps/touchdown /tmp/golden_old
@@ -55,6 +56,10 @@ rm -f sweep/results.sqlite*
 for c in A B C; do
   "$td" lander "$root/data/scenarios/lander_case_$c.yaml" --out "lander_case_$c"
 done
+
+"$td" stability "$root/data/studies/lunar_paper_lander.yaml" --out stability --samples 24 --threads 2 \
+  --progress none > /dev/null
+rm -f stability/results.sqlite*  # timestamps; the landings are compared through the summary and tables
 
 "$td" diagnose "$root/data/datasets/air_vs_vacuum_synthetic" --out diagnose --threads 2 > diagnose.txt
 "$td" calibrate "$root/data/datasets/air_vs_vacuum_synthetic" --out calibrate_model.yaml > calibrate.txt
