@@ -8,6 +8,7 @@
 #include <iostream>
 #include <new>
 
+#include "apps/command_help.h"
 #include "apps/commands.h"
 #include "lander/integ/cvode_integrator.h"
 #include "rft/input_error.h"
@@ -15,6 +16,7 @@
 int main(int argc, char** argv) {
   CLI::App app{"touchdown - lander footpad / regolith touchdown simulator (granular RFT)"};
   app.require_subcommand(1);
+  app.option_defaults()->always_capture_default();  // every option's default shows in --help
   app.set_version_flag("--version", "touchdown 0.1.0");
   touchdown::app::AddDropCommand(app);
   touchdown::app::AddCampaignCommand(app);
@@ -29,7 +31,9 @@ int main(int argc, char** argv) {
   touchdown::app::AddSynthCommand(app);
   touchdown::app::AddDiagnoseCommand(app);
   touchdown::app::AddStabilityCommand(app);
+  touchdown::app::AddHelpFooters(app);
   try {
+    touchdown::app::RejectUnknownCommand(app, argc, argv);
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);

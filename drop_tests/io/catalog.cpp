@@ -1,11 +1,13 @@
 #include "drop_tests/io/catalog.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <map>
 
 #include "drop_tests/io/field_table.h"
+#include "drop_tests/io/nearest_name.h"
 #include "drop_tests/io/output_path.h"
 #include "drop_tests/io/yaml_fields.h"
 #include "footpad_geom/mesh_io.h"
@@ -263,13 +265,22 @@ std::string ResolveCatalogFile(const std::string& kind, const std::string& name_
     return path;
   }
   if (!fs::is_regular_file(path)) {
+    const std::vector<std::string> names = CatalogNames(kind);
     std::string known;
-    std::error_code ec;
-    for (const auto& entry : fs::directory_iterator(DataDirectory() + "/" + kind, ec))
-      if (entry.path().extension() == ".yaml") known += (known.empty() ? "" : ", ") + entry.path().stem().string();
-    throw MakeInputError("", kind, "unknown name '" + name_or_path + "' (known: " + known + ")");
+    for (const std::string& n : names) known += (known.empty() ? "" : ", ") + n;
+    throw MakeInputError("", kind, "unknown name '" + name_or_path + "'" + DidYouMean(name_or_path, names) +
+                                       " (known: " + known + ")");
   }
   return path;
+}
+
+std::vector<std::string> CatalogNames(const std::string& kind) {
+  std::vector<std::string> names;
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(DataDirectory() + "/" + kind, ec))
+    if (entry.path().extension() == ".yaml") names.push_back(entry.path().stem().string());
+  std::sort(names.begin(), names.end());
+  return names;
 }
 
 PadSpec LoadPad(const std::string& name_or_path) {

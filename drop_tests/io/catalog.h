@@ -64,6 +64,8 @@ std::string DataDirectory();
 // `kind` is a data/ subfolder ("pads", "soils", "scenarios"). A name with a '/' or a
 // ".yaml"/".yml" ending is a path; otherwise data/<kind>/<name>.yaml.
 std::string ResolveCatalogFile(const std::string& kind, const std::string& name_or_path);
+// The names data/<kind>/ holds (its .yaml files without the ending), sorted.
+std::vector<std::string> CatalogNames(const std::string& kind);
 
 PadSpec LoadPad(const std::string& name_or_path);
 // A pad file that LoadPad reads back to the same pad (from pad.file; a mesh by its resolved path,
