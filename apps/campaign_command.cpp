@@ -19,7 +19,7 @@ void AddCampaignCommand(CLI::App& app) {
     const io::OutputTarget out(*out_dir, {*scenario_path});
     io::CheckOutputDirectory(out, io::OutputKind::kCampaign);
     const scenario::CampaignScenario scenario = scenario::LoadCampaignScenario(*scenario_path);
-    const scenario::CampaignResult result = scenario::RunCampaignToDirectory(scenario, out);  // traces streamed
+    const scenario::CampaignResult result = scenario::RunCampaignToDirectory(scenario, out, {io::ProgressMode::kAuto});  // traces streamed
     std::cout << std::left << std::setw(28) << "drop" << std::right << std::setw(12) << "depth [mm]" << std::setw(14)
               << "peak F [N]" << std::setw(14) << "t_rest [ms]" << "\n";
     for (size_t i = 0; i < result.drops.size(); ++i) {

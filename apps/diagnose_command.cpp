@@ -36,6 +36,7 @@ void AddDiagnoseCommand(CLI::App& app) {
     gap::DiagnoseOptions o;
     o.threads = args->threads > 0 ? args->threads : std::max(1u, std::thread::hardware_concurrency());
     o.try_pairs = !args->no_pairs;
+    o.progress.mode = io::ProgressMode::kAuto;
     if (!args->model.empty()) o.start_model = model::LoadModelFile(args->model);
     const dataset::Dataset ds = dataset::ReadDataset(args->measured);
     const gap::Diagnosis d = gap::RunDiagnosis(ds, o);

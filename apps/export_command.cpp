@@ -21,6 +21,7 @@ void AddExportCommand(CLI::App& app) {
   cmd->callback([dir, to, options] {
     const io::OutputTarget out(*to, {*dir});
     io::CheckOutputDirectory(out, io::OutputKind::kDataset);
+    options->progress.mode = io::ProgressMode::kAuto;
     const sweep::ExportSummary s = sweep::ExportSweep(*dir, out, *options);
     std::cout << "exported " << s.exported << (s.lander ? " lander drops" : " drops") << " to " << *to
               << (s.lander ? "/ (lander_drops.csv)" : "/ (drops.csv, traces/)");

@@ -365,14 +365,17 @@ Diagnosis RunDiagnosis(const dataset::Dataset& ds, const DiagnoseOptions& o) {
       if (it != o.start_model->soils.end())
         s.zeta_N_m3 = it->second.zeta_N_m3 * s.reference_gravity_m_s2 / it->second.reference_gravity_m_s2;
     }
+  io::Progress progress("diagnose", "fits", 1 + static_cast<int64_t>(model::EffectLibrary().size()), o.progress);
   // 1-2: the base model, its gap, where it concentrates.
   d.base = Score(d, ds, {}, o);
+  progress.Add(1, ", last: base");
   Relate(d.base, d.base);
   d.where = WhereAnalysis(ds, d.problem, d.base.gaps, o);
   // 3: singles, then pairs of the best three when no single explains enough.
   for (const model::EffectInfo& e : model::EffectLibrary()) {
     d.candidates.push_back(Score(d, ds, {e.id}, o));
     Relate(d.candidates.back(), d.base);
+    progress.Add(1, ", last: " + d.candidates.back().name);
   }
   std::vector<int> order;
   for (size_t i = 0; i < d.candidates.size(); ++i)
@@ -395,11 +398,14 @@ Diagnosis RunDiagnosis(const dataset::Dataset& ds, const DiagnoseOptions& o) {
         });
         pairs.push_back(ids);
       }
+    progress.SetTotal(1 + static_cast<int64_t>(model::EffectLibrary().size() + pairs.size()));
     for (const auto& ids : pairs) {
       d.candidates.push_back(Score(d, ds, ids, o));
       Relate(d.candidates.back(), d.base);
+      progress.Add(1, ", last: " + d.candidates.back().name);
     }
   }
+  progress.Finish();
   Decide(d, o);
   if (d.winner < 0) d.residual_description = DescribeResidual(d);
   else d.where_after = WhereAnalysis(ds, d.problem, d.candidates[d.winner].gaps, o);

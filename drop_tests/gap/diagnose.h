@@ -30,6 +30,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include "drop_tests/io/progress.h"
 #include "drop_tests/dataset/compare.h"
 #include "drop_tests/gap/diagnose_fit.h"
 
@@ -45,6 +46,7 @@ struct DiagnoseOptions {
   int permutations = 2000;
   unsigned seed = 12345;             // permutation tests only
   std::optional<model::ModelFile> start_model;  // --model: starting zeta (and the file it came from)
+  io::ProgressOptions progress{io::ProgressMode::kNone};  // of the candidate models fitted
 };
 
 struct DropGap {

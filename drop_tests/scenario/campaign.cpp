@@ -392,8 +392,10 @@ void WriteCampaignOutputs(const CampaignResult& r, const io::OutputTarget& out) 
   });
 }
 
-CampaignResult RunCampaignToDirectory(const CampaignScenario& scenario, const io::OutputTarget& out) {
+CampaignResult RunCampaignToDirectory(const CampaignScenario& scenario, const io::OutputTarget& out,
+                                      const io::ProgressOptions& progress_options) {
   CampaignResult r{scenario, {}};
+  io::Progress progress("campaign", "drops", static_cast<int64_t>(scenario.cases.size()), progress_options);
   io::WriteOutputDirectory(out, io::OutputKind::kCampaign, [&](const std::string& staging_dir) {
     const fs::path staging = staging_dir;
     fs::create_directories(staging / "traces");
@@ -405,7 +407,9 @@ CampaignResult RunCampaignToDirectory(const CampaignScenario& scenario, const io
       std::vector<pad::DropSample>().swap(d.result.trace);  // released: the file holds it
       if (d.free) std::vector<pad::FreeDropSample>().swap(d.free->trace);
       r.drops.push_back(std::move(d));
+      progress.Add(1);
     }
+    progress.Finish();
     WriteCampaignSummaries(r, staging, out.path);
   });
   return r;

@@ -8,6 +8,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include "drop_tests/io/progress.h"
 #include "drop_tests/drop/pad_drop.h"
 
 namespace touchdown::scenario {
@@ -65,6 +66,7 @@ void WriteCampaignOutputs(const CampaignResult& result, const io::OutputTarget& 
 // RunCampaign and WriteCampaignOutputs in one pass that streams: each drop's trace is written to
 // traces/ as the drop finishes and then released, so memory holds the summaries only (a
 // 10,000-drop campaign: bench/campaign_memory_bench.cpp). The drops come back without traces.
-CampaignResult RunCampaignToDirectory(const CampaignScenario& scenario, const io::OutputTarget& out);
+CampaignResult RunCampaignToDirectory(const CampaignScenario& scenario, const io::OutputTarget& out,
+                                      const io::ProgressOptions& progress = {io::ProgressMode::kNone});
 
 }  // namespace touchdown::scenario

@@ -37,13 +37,6 @@ std::string Hex(uint64_t v) {
 constexpr size_t kFeedChunk = 4096;
 constexpr size_t kFeedLow = 1024;
 
-std::string Duration(double s) {
-  if (!std::isfinite(s) || s < 0) return "?";
-  const long t = std::lround(s);
-  std::ostringstream o;
-  o << t / 3600 << ':' << std::setw(2) << std::setfill('0') << (t / 60) % 60 << ':' << std::setw(2) << t % 60;
-  return o.str();
-}
 }  // namespace
 
 std::string PlanDigest(const SweepPlan& plan) { return Hex(Fnv1a64(plan.DigestText())); }
@@ -138,55 +131,29 @@ std::vector<int64_t> RemainingDrops::Next(size_t max) {
 
 SweepProgress::SweepProgress(std::ostream& out, ProgressMode mode, double interval_s, int64_t total,
                              int64_t done_before)
-    : out_(out), interval_s_(interval_s), total_(total), before_(done_before), start_(Now()) {
-  const bool terminal = &out == &std::cerr && ::isatty(STDERR_FILENO);
-  bar_ = mode == ProgressMode::kBar || (mode == ProgressMode::kAuto && terminal);
-  silent_ = mode == ProgressMode::kNone;
+    : progress_("sweep", "drops", total, {mode, interval_s, /*quiet_s=*/0.0, &out}, done_before) {}
+
+std::string SweepProgress::Detail() const {
+  std::string s = ", " + std::to_string(failed_) + " failed";
+  if (landings_ > 0)
+    s += ", " + std::to_string(tipped_) + " of " + std::to_string(landings_) + " landings run now tipped over";
+  return s;
 }
 
 void SweepProgress::Add(const std::vector<DropRecord>& records) {
   for (const DropRecord& r : records) {
-    ++done_;
     if (r.ok && r.kind == DropKind::kLander) {
       ++landings_;
       tipped_ += r.tipped_over == 1.0;
     }
     if (r.ok) continue;
     ++failed_;
-    if (silent_) continue;
-    if (bar_) out_ << "\r\033[K";
-    out_ << "sweep: drop " << r.drop_id << " failed: " << r.failure << "\n";
+    progress_.Note("drop " + r.drop_id + " failed: " + r.failure);
   }
-  const double now = Now();
-  if (now - last_shown_ >= (bar_ ? 0.1 : interval_s_)) Show(false);
+  progress_.Add(static_cast<int64_t>(records.size()), Detail());
 }
 
-void SweepProgress::Show(bool final) {
-  if (silent_) return;
-  last_shown_ = Now();
-  const double elapsed = last_shown_ - start_;
-  const int64_t done = before_ + done_;
-  const double rate = elapsed > 0 ? done_ / elapsed : 0.0;
-  const double eta = rate > 0 ? (total_ - done) / rate : NAN;
-  const double fraction = total_ > 0 ? static_cast<double>(done) / total_ : 1.0;
-  std::ostringstream s;
-  s << done << "/" << total_ << " drops (" << std::fixed << std::setprecision(1) << 100.0 * fraction << "%), "
-    << (rate > 0.0 && rate < 1.0 ? std::setprecision(1) : std::setprecision(0))  // landings take seconds each
-    << (rate > 0.0 && rate < 1.0 ? 1.0 / rate : rate) << (rate > 0.0 && rate < 1.0 ? " s/drop, " : " drops/s, ")
-    << (final ? "elapsed " + Duration(elapsed) : "ETA " + Duration(eta))
-    << ", " << failed_ << " failed";
-  if (landings_ > 0) s << ", " << tipped_ << " of " << landings_ << " landings run now tipped over";
-  if (bar_) {
-    const int width = 30, filled = static_cast<int>(fraction * width);
-    out_ << "\r\033[K[" << std::string(filled, '#') << std::string(width - filled, '.') << "] " << s.str();
-    if (final) out_ << "\n";
-  } else {
-    out_ << "sweep: " << s.str() << "\n";
-  }
-  out_.flush();
-}
-
-void SweepProgress::Finish() { Show(true); }
+void SweepProgress::Finish() { progress_.Finish(Detail()); }
 
 SweepRunSummary RunSweep(const SweepPlan& plan, const std::string& out_dir, const SweepRunOptions& options) {
   const double start = Now();

@@ -28,6 +28,7 @@
 #include <string>
 #include <vector>
 
+#include "drop_tests/io/progress.h"
 #include "drop_tests/sweep/results_db.h"
 #include "drop_tests/sweep/sweep_lock.h"
 #include "drop_tests/sweep/sweep_spec.h"
@@ -42,7 +43,7 @@ struct Shard {
 // Parses "I/N" (0 <= I < N); throws InputError naming `context`.
 Shard ParseShard(const std::string& text, const std::string& context = "--shard");
 
-enum class ProgressMode { kAuto, kBar, kLines, kNone };
+using ProgressMode = io::ProgressMode;
 
 struct SweepRunOptions {
   int threads = 0;  // 0: every core
@@ -122,14 +123,10 @@ class SweepProgress {
   int64_t failed_now() const { return failed_; }
 
  private:
-  void Show(bool final);
-  std::ostream& out_;
-  bool bar_;
-  bool silent_;
-  double interval_s_;
-  int64_t total_, before_, done_ = 0, failed_ = 0;
+  std::string Detail() const;
+  io::Progress progress_;
+  int64_t failed_ = 0;
   int64_t landings_ = 0, tipped_ = 0;  // lander drops of this run
-  double start_, last_shown_ = -1e9;
 };
 
 }  // namespace touchdown::sweep

@@ -292,6 +292,7 @@ ExportSummary ExportPadSweep(const ResultsDb& db, const std::map<std::string, st
   std::unique_ptr<SweepModels> full_models;
   std::map<std::string, std::string> pad_files, soil_files;  // non-catalogue name -> absolute path
   std::map<std::string, bool> catalogued;                    // "pads/NAME", "soils/NAME"
+  io::Progress progress("export", "drops", db.Count(), options.progress);
   auto load_plan = [&] {
     if (plan) return;
     plan = ReloadPlan(db_path, meta);
@@ -340,6 +341,7 @@ ExportSummary ExportPadSweep(const ResultsDb& db, const std::map<std::string, st
               ++summary.resimulated;
             }
         }
+        progress.Add(static_cast<int64_t>(page.size()));
         for (const DropRecord& r : page) {
           if (!r.ok) {
             ++summary.failed;

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "drop_tests/io/progress.h"
 #include "drop_tests/dataset/dataset.h"
 #include "drop_tests/sweep/results_db.h"
 
@@ -24,6 +25,7 @@ namespace touchdown::sweep {
 struct ExportOptions {
   bool full_traces = false;  // simulate every drop again for its full trace
   int threads = 0;
+  io::ProgressOptions progress{io::ProgressMode::kNone};  // of the drops written
 };
 
 struct ExportSummary {
