@@ -776,7 +776,7 @@ void WriteLanderOutputs(const LanderRun& run, const io::OutputTarget& out) {
     io::WriteFileAtomically((staging / "summary.json").string(),
                         [&](std::ostream& out) { out << LanderSummaryJson(run).dump(2) << '\n'; });
     WriteResolvedLanderScenario(run.scenario, (staging / "scenario_resolved.yaml").string(), out.path);
-    WriteLanderPlots(run.scenario.name, run.result.trace, run.soil_under_pad, staging.string());
+    WriteLanderPlots(run, staging.string());
   });
 }
 

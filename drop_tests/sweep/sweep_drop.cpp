@@ -5,6 +5,7 @@
 
 #include <Eigen/Geometry>
 
+#include "drop_tests/scenario/lander_leg_load.h"
 #include "drop_tests/scenario/lander_scenario.h"
 #include "drop_tests/drop/drop_factory.h"
 #include "drop_tests/drop/pad_drop.h"
@@ -141,19 +142,11 @@ void RecordLegLoads(const scenario::LanderSpec& lander, const lander::LanderRunR
   bool any_absorber = false;
   for (const scenario::LanderLegSpec& leg : lander.legs) any_absorber = any_absorber || leg.absorber.has_value();
   double peak = 0.0, stroke = 0.0;
-  for (const lander::LanderSample& s : l.trace) {
-    // R_WB from the sample's attitude: Rz(yaw) Ry(-pitch) Rx(roll) (lander::BodyAttitude).
-    const Eigen::Matrix3d R_WB = (Eigen::AngleAxisd(s.attitude.yaw_rad, Eigen::Vector3d::UnitZ()) *
-                                  Eigen::AngleAxisd(-s.attitude.pitch_rad, Eigen::Vector3d::UnitY()) *
-                                  Eigen::AngleAxisd(s.attitude.roll_rad, Eigen::Vector3d::UnitX()))
-                                     .toRotationMatrix();
+  for (const lander::LanderSample& s : l.trace)
     for (int i = 0; i < lander::kNumLegs; ++i) {
-      const scenario::LanderLegSpec& leg = lander.legs[i];
-      const Eigen::Vector3d axis_W = R_WB * (leg.joint_B - leg.hip_B).normalized();
-      peak = std::max(peak, leg.absorber ? s.leg_force_N[i] : -s.pad_force_W[i].dot(axis_W));
+      peak = std::max(peak, scenario::LegAxialForce(lander, s, i));
       stroke = std::max(stroke, std::abs(s.stroke_m[i]));
     }
-  }
   r.peak_leg_force_N = peak;
   r.max_stroke_m = any_absorber ? stroke : std::nan("");
 }

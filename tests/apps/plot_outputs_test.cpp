@@ -72,8 +72,11 @@ TEST(PlotOutputs, CampaignAndLanderWithAnInjectionAttemptInOut) {
     EXPECT_TRUE(CompletePng(box.dir() / kInjection / "plots" / png)) << png;
   r = box.Touchdown("lander lander.yaml --out " + ShellQuote(kInjection + " lander"));
   ASSERT_EQ(r.status, 0) << r.err;
-  for (const char* png : {"penetration.png", "attitude.png"})
-    EXPECT_TRUE(CompletePng(box.dir() / (kInjection + " lander") / "plots" / png)) << png;
+  for (const std::string figure : {"penetration", "attitude", "loads"}) {
+    const fs::path plots = box.dir() / (kInjection + " lander") / "plots";
+    EXPECT_TRUE(CompletePng(plots / (figure + ".png"))) << figure;
+    EXPECT_GT(fs::file_size(plots / (figure + ".svg")), 1000u) << figure;
+  }
   EXPECT_FALSE(AnyPwned(box.dir()));
 }
 
