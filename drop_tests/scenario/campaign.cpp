@@ -373,9 +373,7 @@ void WriteCampaignSummaries(const CampaignResult& r, const fs::path& staging, co
   const nlohmann::json summary{{"scenario", r.scenario.name}, {"drops", drops}, {"paper_checks", checks}};
   io::WriteFileAtomically((staging / "summary.json").string(), [&](std::ostream& out) { out << summary.dump(2) << '\n'; });
   WriteResolvedScenario(r.scenario, (staging / "scenario_resolved.yaml").string(), out_dir);
-  std::vector<std::string> drop_ids;
-  for (const CampaignCase& c : r.scenario.cases) drop_ids.push_back(c.drop_id);
-  WriteCampaignPlots(r.drops, drop_ids, r.scenario.reference_speed_m_s, staging.string());
+  WriteCampaignPlots(r, staging.string());
 }
 
 std::string TracePath(const fs::path& staging, const CampaignCase& c) {

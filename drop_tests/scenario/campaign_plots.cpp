@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <functional>
 #include <iomanip>
 #include <map>
 #include <ostream>
@@ -11,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "drop_tests/io/dataset_csv.h"
+#include "drop_tests/io/figure_style.h"
 #include "drop_tests/io/output_path.h"
 #include "drop_tests/io/plot_runner.h"
 
@@ -19,151 +20,208 @@ namespace touchdown::scenario {
 namespace fs = std::filesystem;
 
 namespace {
-struct Line {
-  std::string trace;  // path relative to the output directory
-  std::string title;
-  double t_stop_s;
-};
-
-// One gnuplot `plot` command over traces; `columns` gives the using-clause of a line.
-std::string PlotLines(const std::vector<Line>& lines, const std::function<std::string(const Line&)>& columns) {
-  if (lines.empty()) return io::PlaceholderPlot("no drop to plot");
-  std::ostringstream s;
-  s << "plot ";
-  for (size_t i = 0; i < lines.size(); ++i)
-    s << (i ? ", \\\n     " : "") << io::GnuplotQuote(lines[i].trace) << " using " << columns(lines[i])
-      << " with lines lw 2 title " << io::GnuplotQuote(lines[i].title);
-  return s.str() + "\n";
-}
-
-std::string Header(const std::string& png, int width, int height) {
-  std::ostringstream s;
-  s << "set terminal pngcairo size " << width << "," << height << " font 'sans,10'\n"
-    << "set output 'plots/" << png << "'\nset termoption noenhanced\nset grid\nset key top right\n"
-    << "set datafile separator ','\nset autoscale\nunset xlabel\nunset ylabel\nunset title\n";
-  return s.str();
-}
+constexpr double kPlotSampleRateHz = 10000.0;  // 80-210 points per stroke at 1 m/s
 
 bool SameSpeed(double a, double b) { return std::abs(a - b) < 1e-9; }
 
-// Fig. 3: force and penetration against time of every case at the reference speed.
-std::string TimeHistories(const std::vector<Line>& reference, const std::string& speed) {
+struct Stroke {  // one reference-speed drop, densely sampled: plots/data/<drop_id>.csv
+  std::string file, pad, soil;
+  double t_stop_s = 0.0;
+};
+
+std::string Label(const std::string& pad, const std::string& soil) { return pad + ", " + soil; }
+
+// The reference-speed drops again at the plot's sampling, written up to kStrokeWindow times the
+// last stop (the time histories' range); columns: t [ms], penetration [mm], force [N].
+constexpr double kStrokeWindow = 1.15;
+
+std::vector<Stroke> DenseStrokes(const CampaignResult& r, const fs::path& dir) {
+  pad::RigDropOptions dense;
+  dense.sample_rate_hz = kPlotSampleRateHz;
+  std::vector<std::pair<const CampaignCase*, drop::PadDrop>> runs;
   double t_stop_max = 0.0;
-  for (const Line& l : reference) t_stop_max = std::max(t_stop_max, l.t_stop_s);
-  std::ostringstream gp;
-  gp << Header("fig3_time_histories.png", 1000, 800) << "set multiplot layout 2,1 title 'Time histories at "
-     << speed << " m/s (t = 0 at touchdown)'\n"
-     << "set xrange [0:" << 1.6 * t_stop_max * 1000 << "]\nset xlabel 't [ms]'\nset ylabel 'force on pad [N]'\n"
-     << PlotLines(reference, [](const Line&) { return std::string("($1*1000):4"); })
-     << "set ylabel 'penetration [mm]'\nset yrange [*:*] reverse\n"
-     << PlotLines(reference, [](const Line&) { return std::string("($1*1000):($2*1000)"); })
-     << "set yrange [*:*] noreverse\nunset multiplot\n";
-  return gp.str();
-}
-
-// Fig. 4: peak force and final penetration per case (rows) and speed (columns), from
-// plots/peaks.csv, which it writes.
-std::string Peaks(const std::vector<drop::PadDrop>& drops, const fs::path& dir) {
-  std::vector<double> speeds;
-  std::vector<std::string> cases;
-  for (const drop::PadDrop& d : drops) {
-    bool seen = false;
-    for (double v : speeds) seen |= SameSpeed(v, d.conditions.impact_speed_m_s);
-    if (!seen) speeds.push_back(d.conditions.impact_speed_m_s);
-    const std::string c = d.pad.name + "/" + d.soil.name;
-    if (std::find(cases.begin(), cases.end(), c) == cases.end()) cases.push_back(c);
+  for (const CampaignCase& c : r.scenario.cases) {
+    if (!SameSpeed(c.conditions.impact_speed_m_s, r.scenario.reference_speed_m_s)) continue;
+    runs.emplace_back(&c, drop::RunPadDrop(*c.pad, c.soil, c.conditions, dense));
+    t_stop_max = std::max(t_stop_max, runs.back().second.result.time_to_rest_s);
   }
-  io::WriteFileAtomically((dir / "plots" / "peaks.csv").string(), [&](std::ostream& out) {
-    out << std::setprecision(10) << "case";
-    for (double v : speeds) out << ",peak_force_N@" << v << ",final_penetration_mm@" << v;
-    out << '\n';
-    for (const std::string& c : cases) {
-      out << c;
-      for (double v : speeds) {
-        double force = NAN, depth = NAN;
-        for (const drop::PadDrop& d : drops)
-          if (d.pad.name + "/" + d.soil.name == c && SameSpeed(d.conditions.impact_speed_m_s, v))
-            force = d.result.peak_force_N, depth = d.result.final_penetration_m * 1000;
-        out << ',' << force << ',' << depth;
+  std::vector<Stroke> strokes;
+  for (const auto& [c, d] : runs) {
+    const std::string file = "plots/data/" + c->drop_id + ".csv";
+    io::WriteFileAtomically((dir / file).string(), [&](std::ostream& out) {
+      out << "t_ms,penetration_mm,force_N\n" << std::setprecision(6);  // a figure's resolution
+      for (const pad::DropSample& s : d.result.trace) {
+        if (s.t_s > kStrokeWindow * t_stop_max) break;
+        out << s.t_s * 1e3 << ',' << s.penetration_m * 1e3 << ',' << s.force_N << '\n';
       }
-      out << '\n';
-    }
-  });
-  std::ostringstream gp;
-  gp << Header("fig4_peaks.png", 1000, 800)
-     << "set multiplot layout 2,1 title 'Peak force and final penetration per case'\n"
-     << "set style data histograms\nset style histogram clustered gap 1\nset style fill solid 0.8 border -1\n"
-     << "set key top left\nset xtics rotate by -20\nset yrange [0:*]\nset xrange [-0.6:" << cases.size() - 0.4
-     << "]\nset ylabel 'peak force [N]'\n";
-  for (const int column : {2, 3}) {  // peak force, final penetration
-    if (column == 3) gp << "set ylabel 'final penetration [mm]'\n";
-    if (speeds.empty()) {
-      gp << io::PlaceholderPlot("no drop to plot");
-      continue;
-    }
-    gp << "plot ";
-    for (size_t k = 0; k < speeds.size(); ++k)
-      gp << (k ? ", " : "") << "'plots/peaks.csv' skip 1 using " << column + 2 * k << (k ? "" : ":xtic(1)")
-         << " title '" << speeds[k] << " m/s'";
-    gp << "\n";
+    });
+    strokes.push_back({file, c->pad->name, c->soil.name, d.result.time_to_rest_s});
   }
-  gp << "unset multiplot\nunset style\nset xtics norotate\nset yrange [*:*]\n";
-  return gp.str();
+  return strokes;
 }
 
-// Fig. 6: force against penetration at the reference speed: (a) the pads on the most used soil,
-// (b) the first pad on each soil. `reference` holds the drops at that speed, in order.
-std::string ForcePenetration(const std::vector<drop::PadDrop>& drops, double reference_speed_m_s,
-                             const std::vector<Line>& reference, const std::string& speed) {
+std::string StrokePlot(const std::vector<Stroke>& strokes, const std::string& columns, bool stroke_only) {
+  if (strokes.empty()) return io::PlaceholderPlot("no drop at the reference speed");
+  std::ostringstream s;
+  s << std::setprecision(10) << "plot ";
+  for (size_t i = 0; i < strokes.size(); ++i) {
+    const Stroke& k = strokes[i];
+    s << (i ? ", \\\n     " : "") << io::GnuplotQuote(k.file) << " skip 1 using ";
+    if (stroke_only) s << "($1 <= " << k.t_stop_s * 1e3 << " ? $2 : 1/0):3";  // force on penetration up to the stop
+    else s << columns;
+    s << " with lines " << io::PadSoilLine(k.pad, k.soil) << " title " << io::GnuplotQuote(Label(k.pad, k.soil));
+  }
+  return s.str() + "\n";
+}
+
+std::string TimeHistories(const std::vector<Stroke>& strokes, const std::string& speed) {
+  double t_stop_max = 0.0;
+  for (const Stroke& k : strokes) t_stop_max = std::max(t_stop_max, k.t_stop_s);
+  std::ostringstream body;
+  body << "set multiplot layout 2,1 title 'Time histories at " << speed << " m/s (t = 0 at touchdown)'\n"
+       << "set lmargin 12\nset rmargin 30\nset key outside right top\nset xrange [0:"
+       << std::max(kStrokeWindow * t_stop_max * 1e3, 1.0) << "]\nset xlabel 't [ms]'\nset ylabel 'force on pad [N]'\n"
+       << "set yrange [0:*]\n" << StrokePlot(strokes, "1:3", false)
+       << "set ylabel 'penetration [mm] (down)'\nset yrange [0:*] reverse\n" << StrokePlot(strokes, "1:2", false)
+       << "unset multiplot\n";
+  return io::Figure("plots/fig3_time_histories", body.str());
+}
+
+std::string ForcePenetration(const CampaignResult& r, const std::vector<Stroke>& strokes, const std::string& speed) {
   std::map<std::string, int> soil_count;
-  for (const drop::PadDrop& d : drops)
-    if (SameSpeed(d.conditions.impact_speed_m_s, reference_speed_m_s)) ++soil_count[d.soil.name];
+  for (const Stroke& k : strokes) ++soil_count[k.soil];
   std::string main_soil;
   for (const auto& [soil, n] : soil_count)
     if (main_soil.empty() || n > soil_count[main_soil]) main_soil = soil;
-  std::vector<Line> by_pad, by_soil;
-  std::map<std::string, bool> soil_seen;
-  const std::string first_pad = drops.empty() ? "" : drops.front().pad.name;
-  for (size_t i = 0, k = 0; i < drops.size(); ++i) {
-    const drop::PadDrop& d = drops[i];
-    if (!SameSpeed(d.conditions.impact_speed_m_s, reference_speed_m_s)) continue;
-    const Line& line = reference[k++];
-    if (d.soil.name == main_soil) by_pad.push_back(line);
-    if (d.pad.name == first_pad && !soil_seen[d.soil.name]) by_soil.push_back(line), soil_seen[d.soil.name] = true;
+  const std::string first_pad = r.scenario.cases.empty() ? "" : r.scenario.cases.front().pad->name;
+  std::vector<Stroke> by_pad, by_soil;
+  for (const Stroke& k : strokes) {
+    if (k.soil == main_soil) by_pad.push_back(k);
+    if (k.pad == first_pad &&
+        std::none_of(by_soil.begin(), by_soil.end(), [&](const Stroke& s) { return s.soil == k.soil; }))
+      by_soil.push_back(k);
   }
-  auto stroke_only = [](const Line& l) {  // force against penetration up to the stop
-    std::ostringstream s;
-    s << std::setprecision(10) << "($1 <= " << l.t_stop_s << " ? $2*1000 : 1/0):4";
-    return s.str();
-  };
-  std::ostringstream gp;
-  gp << Header("fig6_force_penetration.png", 1000, 800)
-     << "set multiplot layout 2,1 title 'Force against penetration (RFT stroke at " << speed << " m/s)'\n"
-     << "set key top left\nset xlabel 'penetration [mm]'\nset ylabel 'force [N]'\n"
-     << "set title " << io::GnuplotQuote("(a) influence of footpad shape, " + main_soil) << "\n"
-     << PlotLines(by_pad, stroke_only) << "set title "
-     << io::GnuplotQuote("(b) influence of ground condition, " + first_pad + " pad") << "\n"
-     << PlotLines(by_soil, stroke_only) << "unset multiplot\n";
-  return gp.str();
+  std::ostringstream body;
+  body << "set multiplot layout 1,2 title 'Force against penetration over the stroke at " << speed << " m/s'\n"
+       << "set key bottom right\nset xlabel 'penetration [mm]'\nset ylabel 'force [N]'\nset xrange [0:*]\nset yrange [0:*]\n"
+       << "set title " << io::GnuplotQuote("(a) footpad shape, " + main_soil) << "\n" << StrokePlot(by_pad, "", true)
+       << "set title " << io::GnuplotQuote("(b) ground condition, " + first_pad + " pad") << "\n"
+       << StrokePlot(by_soil, "", true) << "unset multiplot\n";
+  return io::Figure("plots/fig6_force_penetration", body.str(), io::kFigureStrip);
+}
+
+// `colour` ("#rrggbb") mixed with white: weight 1 keeps it, 0 is white.
+int Shade(const std::string& colour, double weight) {
+  const int rgb = std::stoi(colour.substr(1), nullptr, 16);
+  int out = 0;
+  for (int shift : {16, 8, 0}) {
+    const int c = (rgb >> shift) & 0xff;
+    out |= static_cast<int>(std::lround(255 - weight * (255 - c))) << shift;
+  }
+  return out;
+}
+
+std::string Hex(int rgb) {
+  std::ostringstream s;
+  s << '#' << std::hex << std::setw(6) << std::setfill('0') << rgb;
+  return s.str();
+}
+
+// Fig. 4: a bar per case and speed, grouped by case, in the pad's colour (lighter for slower
+// drops); plots/data/peaks.csv holds x, peak force, final penetration and the bar's colour.
+std::string Peaks(const CampaignResult& r, const fs::path& dir) {
+  std::vector<double> speeds;
+  std::vector<std::pair<std::string, std::string>> cases;  // (pad, soil)
+  for (const CampaignCase& c : r.scenario.cases) {
+    if (std::none_of(speeds.begin(), speeds.end(), [&](double v) { return SameSpeed(v, c.conditions.impact_speed_m_s); }))
+      speeds.push_back(c.conditions.impact_speed_m_s);
+    const std::pair<std::string, std::string> key{c.pad->name, c.soil.name};
+    if (std::find(cases.begin(), cases.end(), key) == cases.end()) cases.push_back(key);
+  }
+  std::sort(speeds.begin(), speeds.end());
+  if (cases.empty()) return io::Figure("plots/fig4_peaks", io::PlaceholderPlot("no drop to plot"));
+  const double width = 0.8 / static_cast<double>(speeds.size());
+  auto weight = [&](size_t k) { return speeds.size() == 1 ? 1.0 : 0.35 + 0.65 * k / (speeds.size() - 1.0); };
+  io::WriteFileAtomically((dir / "plots" / "data" / "peaks.csv").string(), [&](std::ostream& out) {
+    out << "x,case,speed_m_s,peak_force_N,final_penetration_mm,colour\n";
+    for (size_t i = 0; i < cases.size(); ++i)
+      for (size_t k = 0; k < speeds.size(); ++k)
+        for (size_t j = 0; j < r.scenario.cases.size(); ++j) {
+          const CampaignCase& c = r.scenario.cases[j];
+          if (c.pad->name != cases[i].first || c.soil.name != cases[i].second ||
+              !SameSpeed(c.conditions.impact_speed_m_s, speeds[k]))
+            continue;
+          out << io::FormatNumber(i + (k - 0.5 * (speeds.size() - 1.0)) * width) << ',' << c.drop_id << ','
+              << io::FormatNumber(speeds[k]) << ',' << io::FormatNumber(r.drops[j].result.peak_force_N) << ','
+              << io::FormatNumber(r.drops[j].result.final_penetration_m * 1e3) << ','
+              << Shade(io::PadColour(c.pad->name), weight(k)) << '\n';
+        }
+  });
+  std::ostringstream tics, key;
+  tics << "set xtics (";
+  for (size_t i = 0; i < cases.size(); ++i)
+    tics << (i ? ", " : "") << io::GnuplotQuote(cases[i].first + " / " + cases[i].second) << " " << i;
+  tics << ")\n";
+  key << ", \\\n     ";
+  for (size_t k = 0; k < speeds.size(); ++k)
+    key << (k ? ", \\\n     " : "") << "NaN with boxes fs solid 1 lc rgb '" << Hex(Shade("#404040", weight(k)))
+        << "' title " << io::GnuplotQuote(io::FormatNumber(speeds[k]) + " m/s");
+  std::ostringstream body;
+  body << "set multiplot layout 2,1 title 'Peak force and final penetration per case (bar colour: the pad)'\n"
+       << "set lmargin 12\nset rmargin 26\nset style fill solid 1 border lc rgb '#303030'\nset boxwidth " << width * 0.95
+       << "\nset key outside right top title 'impact speed'\n" << tics.str() << "set xrange [-0.6:"
+       << cases.size() - 0.4 << "]\nset yrange [0:*]\nset ylabel 'peak force [N]'\n"
+       << "plot 'plots/data/peaks.csv' skip 1 using 1:4:6 with boxes lc rgb variable notitle" << key.str() << "\n"
+       << "set ylabel 'final penetration [mm]'\n"
+       << "plot 'plots/data/peaks.csv' skip 1 using 1:5:6 with boxes lc rgb variable notitle" << key.str() << "\n"
+       << "unset multiplot\n";
+  return io::Figure("plots/fig4_peaks", body.str());
+}
+
+// Each paper check: the simulated ratio (bar) beside the paper's experiment (filled circle) and
+// its RFT (open triangle) where the paper gives them.
+std::string PaperChecks(const CampaignResult& r, const fs::path& dir) {
+  const std::vector<CheckOutcome> checks = EvaluateChecks(r);
+  if (checks.empty()) return io::Figure("plots/fig7_paper_checks", io::PlaceholderPlot("the scenario has no paper check"));
+  io::WriteFileAtomically((dir / "plots" / "data" / "paper_checks.csv").string(), [&](std::ostream& out) {
+    out << "x,check,simulated,paper_experiment,paper_rft\n";
+    for (size_t i = 0; i < checks.size(); ++i) {
+      const PaperCheck& c = checks[i].check;
+      auto number = [](double v) { return v > 0.0 ? io::FormatNumber(v) : std::string("NaN"); };
+      out << i << ',' << c.name << ',' << io::FormatNumber(checks[i].simulated) << ',' << number(c.paper_experiment)
+          << ',' << number(c.paper_rft) << '\n';
+    }
+  });
+  double top = 0.0;  // the frame holds every bar and mark
+  for (const CheckOutcome& c : checks)
+    for (double v : {c.simulated, c.check.paper_experiment, c.check.paper_rft}) top = std::max(top, std::isfinite(v) ? v : 0.0);
+  std::ostringstream tics;
+  tics << "set xtics (";
+  for (size_t i = 0; i < checks.size(); ++i)
+    tics << (i ? ", " : "") << io::GnuplotQuote(checks[i].check.name) << " " << i;
+  tics << ") rotate by -15\n";
+  std::ostringstream body;
+  body << "set title 'Paper checks: ratios of final penetration, simulated and published'\n" << tics.str()
+       << "set xrange [-0.6:" << checks.size() - 0.4 << "]\nset yrange [0:" << 1.15 * top << "]\nset ylabel 'ratio'\n"
+       << "set style fill solid 1 border lc rgb '#303030'\nset boxwidth 0.5\nset key outside right top\n"
+       << "plot 'plots/data/paper_checks.csv' skip 1 using 1:3 with boxes lc rgb '" << io::SeriesColour(0)
+       << "' title 'touchdown', \\\n     '' skip 1 using 1:4 with points " << io::kMeasuredPoints
+       << " title 'paper: experiment', \\\n     '' skip 1 using 1:5 with points pt 8 ps 2 lc rgb '#000000' title 'paper: RFT'\n";
+  return io::Figure("plots/fig7_paper_checks", body.str(), io::kFigureStrip);
 }
 }  // namespace
 
-void WriteCampaignPlots(const std::vector<drop::PadDrop>& drops, const std::vector<std::string>& drop_ids,
-                        double reference_speed_m_s, const std::string& out_dir) {
+void WriteCampaignPlots(const CampaignResult& r, const std::string& out_dir) {
   const fs::path dir = out_dir;
-  fs::create_directories(dir / "plots");
-  std::vector<Line> reference;  // every case at the reference speed
-  for (size_t i = 0; i < drops.size(); ++i) {
-    const drop::PadDrop& d = drops[i];
-    if (!SameSpeed(d.conditions.impact_speed_m_s, reference_speed_m_s)) continue;
-    reference.push_back({"traces/" + drop_ids[i] + ".csv", d.pad.name + ", " + d.soil.name, d.result.time_to_rest_s});
-  }
+  fs::create_directories(dir / "plots" / "data");
   std::ostringstream speed;
-  speed << std::setprecision(3) << reference_speed_m_s;
-  const std::string gp = TimeHistories(reference, speed.str()) + Peaks(drops, dir) +
-                         ForcePenetration(drops, reference_speed_m_s, reference, speed.str());
+  speed << std::setprecision(3) << r.scenario.reference_speed_m_s;
+  const std::vector<Stroke> strokes = DenseStrokes(r, dir);
+  const std::string gp = TimeHistories(strokes, speed.str()) + Peaks(r, dir) +
+                         ForcePenetration(r, strokes, speed.str()) + PaperChecks(r, dir);
   io::RenderPlots(dir, {"plots/campaign.gp", gp,
-                    {"plots/fig3_time_histories.png", "plots/fig4_peaks.png", "plots/fig6_force_penetration.png"}});
+                        {io::FigurePng("plots/fig3_time_histories"), io::FigurePng("plots/fig4_peaks"),
+                         io::FigurePng("plots/fig6_force_penetration"), io::FigurePng("plots/fig7_paper_checks")}});
 }
 
 }  // namespace touchdown::scenario

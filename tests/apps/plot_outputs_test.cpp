@@ -68,8 +68,10 @@ TEST(PlotOutputs, CampaignAndLanderWithAnInjectionAttemptInOut) {
   const std::string out = ShellQuote(kInjection);
   CliRun r = box.Touchdown("campaign " + Campaign() + " --out " + out);
   ASSERT_EQ(r.status, 0) << r.err;
-  for (const char* png : {"fig3_time_histories.png", "fig4_peaks.png", "fig6_force_penetration.png"})
-    EXPECT_TRUE(CompletePng(box.dir() / kInjection / "plots" / png)) << png;
+  for (const std::string figure : {"fig3_time_histories", "fig4_peaks", "fig6_force_penetration", "fig7_paper_checks"}) {
+    EXPECT_TRUE(CompletePng(box.dir() / kInjection / "plots" / (figure + ".png"))) << figure;
+    EXPECT_GT(fs::file_size(box.dir() / kInjection / "plots" / (figure + ".svg")), 1000u) << figure;
+  }
   r = box.Touchdown("lander lander.yaml --out " + ShellQuote(kInjection + " lander"));
   ASSERT_EQ(r.status, 0) << r.err;
   for (const std::string figure : {"penetration", "attitude", "loads"}) {
