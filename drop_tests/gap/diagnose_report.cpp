@@ -1,4 +1,5 @@
 // Outputs of `touchdown diagnose`: model.yaml, diagnosis.json, per_drop.csv, report.md, plots.
+#include <array>
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -17,6 +18,7 @@
 #include "drop_tests/io/json_number.h"
 #include "drop_tests/io/output_path.h"
 #include "drop_tests/io/plot_decimation.h"
+#include "drop_tests/io/figure_style.h"
 #include "drop_tests/io/plot_runner.h"
 #include "rft/units.h"
 
@@ -254,47 +256,95 @@ bool WriteResiduals(const Diagnosis& d, const dataset::Dataset& ds, const Candid
   return !residual_rows.str().empty();
 }
 
-// plots/diagnose.gp: overlays (force against time and against penetration), residuals, gap per drop.
-std::string DiagnosisPlotScript(const Diagnosis& d, const dataset::Dataset& ds, const std::vector<size_t>& held,
-                                const std::string& aug_title, bool residuals) {
-  std::ostringstream gp;
-  gp << "set terminal pngcairo size 1200,800 font 'sans,10'\nset termoption noenhanced\nset datafile separator ','\n"
-     << "set grid\nset key top right\n";
-  gp << "set output 'plots/overlays_force_time.png'\nset multiplot layout 2,3 title "
-     << io::GnuplotQuote("Held-out drops: measured, base and " + aug_title + " (force against time)") << "\n";
+// plots/diagnose.gp: overlays (force against time and against penetration), residuals, gap per
+// drop, each a Figure (PNG + SVG). Measured: black points; base model: grey, dashed; the model
+// with the effect: one accent colour that no pad uses elsewhere.
+constexpr const char* kBaseLine = "lw 2.5 dt 2 lc rgb '#6e6e6e'";
+constexpr const char* kAugmentedLine = "lw 2.5 lc rgb '#AA3377'";
+
+std::string OverlayFigure(const Diagnosis& d, const dataset::Dataset& ds, const std::vector<size_t>& held,
+                          const std::string& aug_title, bool against_penetration) {
+  std::ostringstream body;
+  body << "set multiplot layout 2,3 title "
+       << io::GnuplotQuote("Held-out drops: measured, base and " + aug_title +
+                           (against_penetration ? " (force against penetration)" : " (force against time)"))
+       << "\nset key top left\n";
   for (size_t i : held) {
-    const std::string id = ds.drops[d.problem.drops[i].dataset_index].drop_id;
-    gp << "set title " << io::GnuplotQuote(id) << "\nset xlabel 't [ms]'\nset ylabel 'force [N]'\n"
-       << "plot " << io::GnuplotQuote("data/" + id + ".csv") << " using ($1*1000):2 with points pt 7 ps 0.3 lc rgb 'gray50' title 'measured', "
-       << "'' using ($1*1000):3 with lines lw 2 lc rgb 'blue' title 'base', '' using ($1*1000):4 with lines lw 2 "
-          "lc rgb 'red' title 'augmented'\n";
+    const dataset::DatasetDrop& m = ds.drops[d.problem.drops[i].dataset_index];
+    const std::string columns = against_penetration ? "($5*1000):2" : "($1*1000):2";
+    body << "set title " << io::GnuplotQuote(m.drop_id + " (" + rft::AtmosphereName(m.atmosphere) + ")") << "\nset xlabel "
+         << (against_penetration ? "'penetration [mm]'" : "'t [ms]'") << "\nset ylabel 'force [N]'\nplot "
+         << io::GnuplotQuote("data/" + m.drop_id + ".csv") << " using " << columns << " with points pt 7 ps 0.4 lc rgb '#000000' title 'measured', "
+         << "'' using " << (against_penetration ? "($6*1000):3" : "($1*1000):3") << " with lines " << kBaseLine << " title 'base', "
+         << "'' using " << (against_penetration ? "($7*1000):4" : "($1*1000):4") << " with lines " << kAugmentedLine
+         << " title 'with effect'\n";
   }
-  gp << "unset multiplot\n";
-  gp << "set output 'plots/overlays_force_penetration.png'\nset multiplot layout 2,3 title 'Held-out drops: force against "
-        "penetration'\n";
-  for (size_t i : held) {
-    const std::string id = ds.drops[d.problem.drops[i].dataset_index].drop_id;
-    gp << "set title " << io::GnuplotQuote(id) << "\nset xlabel 'penetration [mm]'\nset ylabel 'force [N]'\n"
-       << "plot " << io::GnuplotQuote("data/" + id + ".csv") << " using ($5*1000):2 with points pt 7 ps 0.3 lc rgb 'gray50' title 'measured', "
-       << "'' using ($6*1000):3 with lines lw 2 lc rgb 'blue' title 'base', '' using ($7*1000):4 with lines lw 2 "
-          "lc rgb 'red' title 'augmented'\n";
+  if (held.empty()) body << io::PlaceholderPlot("no held-out drop could be simulated");
+  body << "unset multiplot\n";
+  return io::Figure(against_penetration ? "plots/overlays_force_penetration" : "plots/overlays_force_time", body.str());
+}
+
+// Residuals of every held-out drop, base and with the effect, drops in vacuum and in air apart
+// (the effects the library names often act in one atmosphere only).
+std::string ResidualFigure(const std::string& aug_title, bool residuals) {
+  std::ostringstream body;
+  body << "set multiplot layout 2,2 title 'Held-out force residual (simulated - measured) / measured peak force; one "
+          "line per drop'\nset xlabel 't [ms]'\nset ylabel 'normalised residual'\nunset key\n";
+  for (const char* atmosphere : {"vacuum", "air"})
+    for (int model = 0; model < 2; ++model) {
+      body << "set title " << io::GnuplotQuote(std::string(model == 0 ? "base" : aug_title) + ", drops in " + atmosphere) << "\n";
+      if (!residuals) {
+        body << io::PlaceholderPlot("no held-out drop could be simulated");
+        continue;
+      }
+      body << "plot 'data/residuals_held_out.csv' using ($1*1000):(strcol(4) eq '" << atmosphere << "' ? $"
+           << (model == 0 ? 2 : 3) << " : 1/0) with lines " << (model == 0 ? kBaseLine : kAugmentedLine)
+           << " notitle, 0 with lines lw 1 lc rgb '#000000' notitle\n";
+    }
+  body << "unset multiplot\n";
+  return io::Figure("plots/residuals", body.str());
+}
+
+// data/gap_<atmosphere>.csv: the drops in one atmosphere, numbered, with their force NRMSE before
+// and after and the noise floor; false when there is none.
+bool WriteGapPerDropData(const Diagnosis& d, const dataset::Dataset& ds, const CandidateScore& after,
+                         rft::Atmosphere atmosphere, const fs::path& dir) {
+  std::ostringstream rows;
+  int k = 0;
+  for (size_t i = 0; i < d.problem.drops.size(); ++i) {
+    const dataset::DatasetDrop& m = ds.drops[d.problem.drops[i].dataset_index];
+    if (m.atmosphere != atmosphere) continue;
+    rows << k++ << ',' << m.drop_id << (d.problem.drops[i].train ? "" : " (held out)") << ','
+         << io::FormatNumber(d.base.gaps[i].force_nrmse) << ',' << io::FormatNumber(after.gaps[i].force_nrmse) << ','
+         << io::FormatNumber(d.base.gaps[i].noise_nrmse) << '\n';
   }
-  gp << "unset multiplot\n";
-  // No held-out drop simulated: the residual panels say so (a plot of no data is a gnuplot error).
-  const std::string no_residuals = io::PlaceholderPlot("no held-out drop could be simulated");
-  gp << "set output 'plots/residuals.png'\nset multiplot layout 1,2 title 'Held-out force residual (simulated - measured) "
-        "/ measured peak'\nset xlabel 't [ms]'\nset ylabel 'normalised residual'\n"
-     << "set title 'base'\n"
-     << (residuals ? "plot 'data/residuals_held_out.csv' using ($1*1000):2 with lines lc rgb 'blue' notitle\n"
-                   : no_residuals)
-     << "set title " << io::GnuplotQuote(aug_title) << "\n"
-     << (residuals ? "plot 'data/residuals_held_out.csv' using ($1*1000):3 with lines lc rgb 'red' notitle\n"
-                   : no_residuals)
-     << "unset multiplot\n";
-  gp << "set output 'plots/gap_per_drop.png'\nset style data histograms\nset style histogram clustered\nset style fill "
-        "solid 0.8\nset xtics rotate by -45\nset ylabel 'force NRMSE'\nset title 'Force NRMSE per drop, before and after'\n"
-     << "plot 'per_drop.csv' using 7:xtic(1) title 'base', '' using 8 title 'after'\n";
-  return gp.str();
+  io::WriteFileAtomically((dir / "data" / ("gap_" + std::string(rft::AtmosphereName(atmosphere)) + ".csv")).string(),
+                          [&](std::ostream& out) { out << "k,drop,force_nrmse_before,force_nrmse_after,noise_floor\n" << rows.str(); });
+  return k > 0;
+}
+
+// Force NRMSE per drop before and after, drops in vacuum and in air in separate panels, with
+// the sensor-noise floor each drop cannot go below.
+std::string GapPerDropFigure(const std::string& aug_title, const std::array<bool, 2>& has_drops) {
+  std::ostringstream body;
+  body << "set multiplot layout 2,1 title " << io::GnuplotQuote("Force NRMSE per drop: base and " + aug_title)
+       << "\nset style fill solid 1 border lc rgb '#303030'\nset boxwidth 0.38\nset xtics rotate by -50 font ',10'\n"
+          "set bmargin 9\nset lmargin 12\nset rmargin 30\nset ylabel 'force NRMSE'\nset yrange [0:*]\n"
+          "set key outside right top\n";
+  int panel = 0;
+  for (const char* atmosphere : {"vacuum", "air"}) {
+    body << "set title 'drops in " << atmosphere << "'\n";
+    if (!has_drops[panel++]) {
+      body << io::PlaceholderPlot(std::string("no drop in ") + atmosphere);
+      continue;
+    }
+    const std::string file = std::string("'data/gap_") + atmosphere + ".csv'";
+    body << "plot " << file << " skip 1 using ($1-0.2):3:xtic(2) with boxes lc rgb '#9e9e9e' title 'base', "
+         << file << " skip 1 using ($1+0.2):4 with boxes lc rgb '#AA3377' title 'with effect', "
+         << file << " skip 1 using 1:5 with points pt 5 ps 1 lc rgb '#000000' title 'sensor-noise floor'\n";
+  }
+  body << "unset multiplot\n";
+  return io::Figure("plots/gap_per_drop", body.str(), io::kFigureWide);
 }
 
 void WriteReport(const Diagnosis& d, const dataset::Dataset& ds, const CandidateScore& after, const fs::path& file) {
@@ -389,9 +439,13 @@ void WriteDiagnosis(const Diagnosis& d, const dataset::Dataset& ds, const io::Ou
     const bool residuals = WriteResiduals(d, ds, shown, dir);
     const std::string aug_title = shown ? (d.winner >= 0 ? "base + " + shown->name : "best candidate " + shown->name + " (not named)")
                                         : std::string("base");
-    io::RenderPlots(dir, {"plots/diagnose.gp", DiagnosisPlotScript(d, ds, held, aug_title, residuals),
-                      {"plots/overlays_force_time.png", "plots/overlays_force_penetration.png", "plots/residuals.png",
-                       "plots/gap_per_drop.png"}});
+    const std::string gp = OverlayFigure(d, ds, held, aug_title, false) + OverlayFigure(d, ds, held, aug_title, true) +
+                           ResidualFigure(aug_title, residuals) +
+                           GapPerDropFigure(aug_title, {WriteGapPerDropData(d, ds, after, rft::Atmosphere::kVacuum, dir),
+                                                        WriteGapPerDropData(d, ds, after, rft::Atmosphere::kAir, dir)});
+    io::RenderPlots(dir, {"plots/diagnose.gp", gp,
+                          {io::FigurePng("plots/overlays_force_time"), io::FigurePng("plots/overlays_force_penetration"),
+                           io::FigurePng("plots/residuals"), io::FigurePng("plots/gap_per_drop")}});
     WriteReport(d, ds, after, dir / "report.md");
   });
 }
