@@ -14,6 +14,7 @@
 #include "drop_tests/io/dataset_csv.h"
 #include "drop_tests/drop/pad_drop.h"
 #include "drop_tests/io/plot_decimation.h"
+#include "drop_tests/io/figure_style.h"
 #include "drop_tests/io/plot_runner.h"
 #include "rft/input_error.h"
 #include "rft/units.h"
@@ -287,6 +288,57 @@ nlohmann::json ComparisonJson(const Comparison& c) {
   return summary;
 }
 
+namespace {
+// One drop: force against time and against penetration, measured (black points) and simulated
+// (the pad's colour, the soil's dash).
+std::string DropFigure(const DatasetDrop& m) {
+  const std::string meas = io::GnuplotQuote("plots/data/" + m.drop_id + "_measured.csv");
+  const std::string sim = io::GnuplotQuote("plots/data/" + m.drop_id + "_simulated.csv");
+  const std::string line = io::PadSoilLine(m.pad, m.soil);
+  const std::string body =
+      "set multiplot layout 1,2 title " +
+      io::GnuplotQuote(m.drop_id + ": " + m.pad + " on " + m.soil + " (" + rft::AtmosphereName(m.atmosphere) + "), " +
+                       io::FormatNumber(m.impact_speed_m_s) + " m/s") +
+      "\nset key top right\nset xlabel 't [ms]'\nset ylabel 'force [N]'\nplot " + meas +
+      " using ($1*1000):3 skip 1 with points pt 7 ps 0.6 lc rgb '#000000' title 'measured', " + sim +
+      " using ($1*1000):3 skip 1 with lines " + line + " title 'simulated'\nset xlabel 'penetration [mm]'\nplot " + meas +
+      " using ($2*1000):3 skip 1 with points pt 7 ps 0.6 lc rgb '#000000' title 'measured', " + sim +
+      " using ($2*1000):3 skip 1 with lines " + line + " title 'simulated'\nunset multiplot\n";
+  return io::Figure("plots/drops/" + m.drop_id, body, io::kFigureStrip, /*svg=*/false);
+}
+
+// Every drop at once: simulated against measured final penetration and peak force, the line of
+// agreement and +-10 % about it; a point's colour is its pad, filled in vacuum, open in air.
+// plots/data/parity.csv holds the points.
+std::string ParityFigure(const Comparison& c, const fs::path& dir) {
+  double top[2] = {0.0, 0.0};
+  io::WriteFileAtomically((dir / "plots" / "data" / "parity.csv").string(), [&](std::ostream& out) {
+    out << "measured_penetration_mm,simulated_penetration_mm,measured_peak_force_N,simulated_peak_force_N,colour,"
+           "point_type\n";
+    for (const DropComparison& d : c.drops) {
+      const double v[4] = {d.measured_final_penetration_m * 1e3, d.simulated_final_penetration_m * 1e3,
+                           d.measured_peak_force_N, d.simulated_peak_force_N};
+      for (int k = 0; k < 4; ++k) out << (std::isfinite(v[k]) ? io::FormatNumber(v[k]) : "NaN") << ',';
+      for (int k = 0; k < 4; ++k)
+        if (std::isfinite(v[k])) top[k / 2] = std::max(top[k / 2], v[k]);
+      out << std::stoi(io::PadColour(d.pad).substr(1), nullptr, 16) << ',' << (d.atmosphere == "air" ? 6 : 7) << '\n';
+    }
+  });
+  std::string body = "set multiplot layout 1,2 title 'Simulated against measured, every drop (colour: pad; filled: "
+                     "vacuum, open: air; dashed: +-10 %)'\nset key top left\nset size ratio -1\n";
+  const char* names[2] = {"final penetration [mm]", "peak force [N]"};
+  for (int p = 0; p < 2; ++p) {
+    const std::string hi = io::FormatNumber(top[p] > 0.0 ? 1.1 * top[p] : 1.0);
+    body += std::string("set xlabel 'measured ") + names[p] + "'\nset ylabel 'simulated " + names[p] + "'\nset xrange [0:" +
+            hi + "]\nset yrange [0:" + hi + "]\nplot x with lines lw 1.5 lc rgb '#000000' title 'agreement', 1.1*x with lines " +
+            io::kPaperBandLine + " notitle, 0.9*x with lines " + io::kPaperBandLine +
+            " notitle, 'plots/data/parity.csv' skip 1 using " + std::to_string(2 * p + 1) + ":" + std::to_string(2 * p + 2) +
+            ":6:5 with points pt variable ps 1.8 lc rgb variable notitle\n";
+  }
+  return io::Figure("plots/parity", body + "unset multiplot\n", io::kFigureStrip);
+}
+}  // namespace
+
 void WriteComparison(const Comparison& c, const Dataset& measured, const Dataset& simulated,
                      const std::vector<const DatasetDrop*>& partners, bool write_simulated, const io::OutputTarget& out) {
   const nlohmann::json summary = ComparisonJson(c);
@@ -308,13 +360,10 @@ void WriteComparison(const Comparison& c, const Dataset& measured, const Dataset
     // Plot data: each pair's traces copied beside the script, so the plots re-render anywhere;
     // decimated (plot_decimation.h) so a long trace is drawn from a few thousand rows.
     fs::create_directories(dir / "plots" / "data");
-    std::string gp = "set terminal pngcairo size 1100,450 font 'sans,10'\nset termoption noenhanced\n"
-                     "set datafile separator ','\nset grid\nset key top right\n";
-    io::PlotScript script{"plots/compare.gp", "", {}};
+    io::PlotScript script{"plots/compare.gp", ParityFigure(c, dir), {io::FigurePng("plots/parity")}};
     for (size_t i = 0; i < measured.drops.size(); ++i) {
       const DatasetDrop& m = measured.drops[i];
-      const DatasetDrop& s = *partners[i];
-      for (const auto& [tag, drop] : {std::pair<const char*, const DatasetDrop*>{"measured", &m}, {"simulated", &s}})
+      for (const auto& [tag, drop] : {std::pair<const char*, const DatasetDrop*>{"measured", &m}, {"simulated", partners[i]}})
         io::WriteFileAtomically((dir / "plots" / "data" / (m.drop_id + "_" + tag + ".csv")).string(), [&, drop = drop](std::ostream& out) {
           const DatasetTrace& t = drop->trace;
           out << "t_s,penetration_m,force_N\n";
@@ -322,19 +371,10 @@ void WriteComparison(const Comparison& c, const Dataset& measured, const Dataset
             out << io::FormatNumber(t.t_s[k]) << ',' << io::FormatNumber(t.penetration_m[k]) << ',' << io::FormatNumber(t.force_N[k])
                 << '\n';
         });
-      const std::string meas = io::GnuplotQuote("plots/data/" + m.drop_id + "_measured.csv");
-      const std::string sim = io::GnuplotQuote("plots/data/" + m.drop_id + "_simulated.csv");
-      gp += "set output " + io::GnuplotQuote("plots/" + m.drop_id + ".png") + "\nset multiplot layout 1,2 title " +
-            io::GnuplotQuote(m.drop_id + ": " + m.pad + " on " + m.soil + " (" + rft::AtmosphereName(m.atmosphere) + "), " +
-                         io::FormatNumber(m.impact_speed_m_s) + " m/s") +
-            "\nset xlabel 't [ms]'\nset ylabel 'force [N]'\nplot " + meas +
-            " using ($1*1000):3 skip 1 with points pt 7 ps 0.4 title 'measured', " + sim +
-            " using ($1*1000):3 skip 1 with lines lw 2 title 'simulated'\n"
-            "set xlabel 'penetration [mm]'\nplot " + meas + " using ($2*1000):3 skip 1 with points pt 7 ps 0.4 title "
-            "'measured', " + sim + " using ($2*1000):3 skip 1 with lines lw 2 title 'simulated'\nunset multiplot\n";
-      script.outputs.push_back("plots/" + m.drop_id + ".png");
+      script.text += DropFigure(m);
+      script.outputs.push_back(io::FigurePng("plots/drops/" + m.drop_id));
     }
-    script.text = gp;
+    fs::create_directories(dir / "plots" / "drops");
     if (write_simulated) {
       fs::create_directories(dir / "simulated");
       WriteDatasetFiles(simulated, (dir / "simulated").string());

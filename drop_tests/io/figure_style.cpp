@@ -3,6 +3,8 @@
 #include <array>
 #include <cstdint>
 
+#include "drop_tests/io/plot_runner.h"
+
 namespace touchdown::io {
 
 namespace {
@@ -27,11 +29,13 @@ std::string Style() {
 }
 }  // namespace
 
-std::string Figure(const std::string& base, const std::string& body, FigureSize size) {
+std::string Figure(const std::string& base, const std::string& body, FigureSize size, bool svg) {
   const std::string dims = " size " + std::to_string(size.width) + "," + std::to_string(size.height);
-  return "reset\n" + Style() + "set terminal pngcairo noenhanced" + dims + " font 'sans,16'\nset output '" + base +
-         ".png'\n" + body + "set terminal svg noenhanced" + dims + " font 'sans,16'\nset output '" + base + ".svg'\n" +
-         body + "unset output\n";
+  std::string script = "reset\n" + Style() + "set terminal pngcairo noenhanced" + dims + " font 'sans,16'\nset output " +
+                       GnuplotQuote(base + ".png") + "\n" + body;
+  if (svg)
+    script += "set terminal svg noenhanced" + dims + " font 'sans,16'\nset output " + GnuplotQuote(base + ".svg") + "\n" + body;
+  return script + "unset output\n";
 }
 
 std::string FigurePng(const std::string& base) { return base + ".png"; }

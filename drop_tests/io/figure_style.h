@@ -17,8 +17,9 @@ inline constexpr FigureSize kFigureStrip{1600, 600};
 inline constexpr FigureSize kFigureSquare{1100, 1000};
 
 // The script that draws `body` (gnuplot commands: titles, labels, `plot`s) to `base`.png and
-// `base`.svg ("plots/fig3_time_histories"): terminal, style, then body, for each file.
-std::string Figure(const std::string& base, const std::string& body, FigureSize size = kFigureWide);
+// `base`.svg ("plots/fig3_time_histories"): terminal, style, then body, for each file. `svg`
+// false: the PNG only (figures written per drop, which are looked at, not printed).
+std::string Figure(const std::string& base, const std::string& body, FigureSize size = kFigureWide, bool svg = true);
 
 // The files a Figure writes that RenderPlots must check (the PNG; the SVG is written by the same
 // commands).

@@ -152,7 +152,9 @@ TEST(CompareCli, SimulatedDatasetAgainstItselfHasZeroErrors) {
     EXPECT_TRUE(fs::is_regular_file(dir / out / "per_drop.csv"));
     EXPECT_TRUE(fs::is_regular_file(dir / out / "plots" / "compare.gp"));
     if (std::system("command -v gnuplot >/dev/null 2>&1") == 0) {
-      EXPECT_TRUE(fs::is_regular_file(dir / out / "plots" / "d0.png")) << out;
+      EXPECT_TRUE(fs::is_regular_file(dir / out / "plots" / "drops" / "d0.png")) << out;
+      EXPECT_TRUE(fs::is_regular_file(dir / out / "plots" / "parity.png")) << out;
+      EXPECT_TRUE(fs::is_regular_file(dir / out / "plots" / "parity.svg")) << out;
     }
   }
   EXPECT_TRUE(fs::is_regular_file(dir / "cmp" / "simulated" / "drops.csv"));
