@@ -28,23 +28,29 @@ void AddTradeCommand(CLI::App& app) {
   cmd->callback([args] {
     const sweep::SweepPlan plan = sweep::LoadSweepPlan(args->sweep, args->model);
     sweep::CheckTradePlan(plan);  // before anything runs or is written
+    const sweep::TradeLimits limits = sweep::LoadTradeLimits(args->sweep);
     io::OpenOutputDirectory({args->out, {args->sweep, args->model}}, io::OutputKind::kSweep);
     sweep::SweepRunOptions options;
     options.threads = args->threads;
     options.progress = sweep::ProgressMode::kNone;
     sweep::RunSweep(plan, args->out, options);
     const sweep::ResultsDb db(sweep::ResultsDbPath(args->out));
-    const std::vector<sweep::TradeRow> rows = sweep::TradeTable(db.ReadAll(/*with_traces=*/false));
-    sweep::WriteTradeOutputs(rows, args->out);
+    const std::vector<sweep::TradeRow> rows = sweep::TradeTable(db.ReadAll(/*with_traces=*/false), limits);
+    sweep::WriteTradeOutputs(rows, args->out, limits);
     std::cout << std::left << std::setw(12) << "pad" << std::setw(12) << "soil" << std::right << std::setw(10) << "v [m/s]"
               << std::setw(12) << "depth [mm]" << std::setw(12) << "peak F [N]" << std::setw(12) << "dE/dt [W]"
-              << "  pareto\n";
+              << "  margin  pareto best\n";
     for (const sweep::TradeRow& r : rows)
       std::cout << std::left << std::setw(12) << r.pad << std::setw(12) << r.soil << std::right << std::fixed
                 << std::setprecision(2) << std::setw(10) << r.impact_speed_m_s << std::setw(12)
                 << r.final_penetration_m * 1e3 << std::setw(12) << r.peak_force_N << std::setw(12)
-                << r.mean_conversion_rate_W << "  " << (r.pareto ? "*" : "") << "\n";
-    std::cout << "wrote " << args->out << "/ (trade.csv, summary.json, plots/trade.png, plots/pareto.png)\n";
+                << r.mean_conversion_rate_W << std::setw(8) << std::setprecision(2) << r.margin << "  "
+                << (r.pareto ? "*     " : "      ") << (r.best ? "<- best" : "") << "\n";
+    int feasible = 0, front = 0;
+    for (const sweep::TradeRow& r : rows) feasible += r.feasible, front += r.pareto;
+    std::cout << rows.size() << " rows, " << feasible << " within the limits"
+              << (limits.any() ? "" : " (the sweep file has no trade: limits)") << ", " << front << " on a front\n"
+              << "wrote " << args->out << "/ (trade.csv, summary.json, plots/trade, plots/pareto as PNG and SVG)\n";
   });
 }
 

@@ -9,6 +9,7 @@
 
 #include "drop_tests/io/dataset_csv.h"
 #include "drop_tests/io/output_path.h"
+#include "drop_tests/io/figure_style.h"
 #include "drop_tests/io/plot_runner.h"
 #include "drop_tests/stability/study_outputs.h"
 
@@ -34,12 +35,10 @@ std::string PlotCommand(const std::vector<Series>& series, const std::string& no
   return s + "\n";
 }
 
-// The figure `body` drawn twice: PNG (checked by the plot runner) and SVG.
+// The figure `body` in the one style (io::Figure: PNG, checked by the plot runner, and SVG), at
+// 1.6 times the given size: the style's fonts are drawn for slides.
 std::string Figure(const std::string& base, int width, int height, const std::string& body) {
-  const std::string size = " size " + std::to_string(width) + "," + std::to_string(height) + " font 'sans,10'\n";
-  return "reset\nset datafile separator ','\nset termoption noenhanced\n"
-         "set terminal pngcairo noenhanced" + size + "set output '" + base + ".png'\n" + body +
-         "set terminal svg noenhanced" + size + "set output '" + base + ".svg'\n" + body + "unset output\n";
+  return io::Figure(base, body, {width * 8 / 5, height * 8 / 5});
 }
 
 class DataWriter {
@@ -168,13 +167,14 @@ std::string ExceedanceFigure(const StudySummary& s, const std::vector<DropRecord
   if (const std::string f = ExceedanceFile(data, "exceedance_max_tilt",
                                            Values(records, [](const DropRecord& r) { return r.max_tilt_deg; }), 1.0);
       !f.empty())
-    tilt.push_back({f, style, "max tilt"});
+    tilt.push_back({f, style + " lc rgb '#000000'", "max tilt"});
   std::vector<Series> depth;
   for (int pad = 0; pad < 4; ++pad) {
     const std::string f =
         ExceedanceFile(data, "exceedance_pad" + std::to_string(pad + 1),
                        Values(records, [pad](const DropRecord& r) { return r.pad_final_penetration_m[pad]; }), 1e3);
-    if (!f.empty()) depth.push_back({f, style, "pad " + std::to_string(pad + 1)});
+    // Pad i in the colour it has in the lander's own figures (lander_plots.cpp).
+    if (!f.empty()) depth.push_back({f, style + " lc rgb '" + io::SeriesColour(pad) + "'", "pad " + std::to_string(pad + 1)});
   }
   if (const std::string f = ExceedanceFile(
           data, "exceedance_deepest_pad", Values(records, [](const DropRecord& r) { return r.final_penetration_m; }), 1e3);

@@ -636,7 +636,7 @@ SweepPlan LoadSweepPlan(const std::string& path, const std::string& model_overri
   f.RequireSchemaVersion(1);
   f.RequireOnly({"schema_version", "type", "name", "description", "model", "traces", "trace_max_samples",
                  "rest_duration_s", "max_drop_evaluations", "max_drop_wall_time_s", "fixed", "grid", "random", "lander",
-                 "study", "provenance"});
+                 "study", "trade", "provenance"});
   // A stability study (docs/stability_studies.md) is a lander sweep whose `study` block says how
   // `touchdown stability` analyses its landings; the sweep itself ignores that block.
   const std::string type = f.String("type");
@@ -644,6 +644,8 @@ SweepPlan LoadSweepPlan(const std::string& path, const std::string& model_overri
   if (type == "stability" && !f.Has("lander"))
     f.Fail("lander", "missing: a stability study lands a lander scenario (lander: {scenario: ...})");
   if (f.Has("study") && type != "stability") f.Fail("study", "only a stability study (type: stability) takes it");
+  // The design limits of `touchdown trade` (trade.h); the sweep itself ignores them.
+  if (f.Has("trade") && f.Has("lander")) f.Fail("trade", "trade limits are for single-pad sweeps, not a lander sweep");
   const std::string base = fs::path(path).parent_path().string();
   SweepPlan plan;
   plan.source = path;

@@ -1,6 +1,7 @@
 #include "drop_tests/sweep/trade.h"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -9,7 +10,9 @@
 #include "drop_tests/io/json_number.h"
 #include "drop_tests/io/output_path.h"
 #include "drop_tests/io/dataset_csv.h"
+#include "drop_tests/io/figure_style.h"
 #include "drop_tests/io/plot_runner.h"
+#include "drop_tests/io/yaml_fields.h"
 #include "rft/input_error.h"
 
 namespace touchdown::sweep {
@@ -24,7 +27,23 @@ void CheckTradePlan(const SweepPlan& plan) {
                          "`touchdown export`");
 }
 
-std::vector<TradeRow> TradeTable(const std::vector<DropRecord>& records) {
+bool TradeLimits::any() const {
+  return std::isfinite(max_final_penetration_m) || std::isfinite(max_peak_force_N) || std::isfinite(max_pad_mass_kg);
+}
+
+TradeLimits LoadTradeLimits(const std::string& sweep_file) {
+  const io::YamlFields f = io::YamlFields::LoadFile(sweep_file);
+  TradeLimits limits;
+  if (!f.Has("trade")) return limits;
+  const io::YamlFields t = f.Child("trade");
+  t.RequireOnly({"allowable_final_penetration_mm", "allowable_peak_force_N", "max_pad_mass_kg"});
+  if (t.Has("allowable_final_penetration_mm")) limits.max_final_penetration_m = t.Positive("allowable_final_penetration_mm") * 1e-3;
+  if (t.Has("allowable_peak_force_N")) limits.max_peak_force_N = t.Positive("allowable_peak_force_N");
+  if (t.Has("max_pad_mass_kg")) limits.max_pad_mass_kg = t.Positive("max_pad_mass_kg");
+  return limits;
+}
+
+std::vector<TradeRow> TradeTable(const std::vector<DropRecord>& records, const TradeLimits& limits) {
   for (const DropRecord& r : records)
     if (r.kind == DropKind::kLander)
       throw MakeInputError("drop " + r.drop_id, "drop_kind",
@@ -43,28 +62,45 @@ std::vector<TradeRow> TradeTable(const std::vector<DropRecord>& records) {
     row.final_penetration_m += r.final_penetration_m;
     row.peak_force_N += r.peak_force_N;
     row.mean_conversion_rate_W += r.mean_conversion_rate_W;
+    row.pad_mass_kg += r.pad_mass_kg;
   }
   std::vector<TradeRow> out;
   for (auto& [key, row] : rows) {
     const int ok = row.drops - row.failed;
-    for (double* v : {&row.final_penetration_m, &row.peak_force_N, &row.mean_conversion_rate_W})
+    for (double* v : {&row.final_penetration_m, &row.peak_force_N, &row.mean_conversion_rate_W, &row.pad_mass_kg})
       *v = ok > 0 ? *v / ok : std::nan("");
+    row.feasible = ok > 0 && row.final_penetration_m <= limits.max_final_penetration_m &&
+                   row.peak_force_N <= limits.max_peak_force_N && row.pad_mass_kg <= limits.max_pad_mass_kg;
+    if (limits.any() && ok > 0) {
+      row.margin = INFINITY;
+      for (const auto& [value, limit] : {std::pair{row.final_penetration_m, limits.max_final_penetration_m},
+                                         std::pair{row.peak_force_N, limits.max_peak_force_N},
+                                         std::pair{row.pad_mass_kg, limits.max_pad_mass_kg}})
+        if (std::isfinite(limit)) row.margin = std::min(row.margin, 1.0 - value / limit);
+    }
     out.push_back(row);
   }
   std::map<std::pair<std::string, double>, std::vector<size_t>> conditions;
   for (size_t i = 0; i < out.size(); ++i) conditions[{out[i].soil, out[i].impact_speed_m_s}].push_back(i);
-  for (const auto& [key, members] : conditions) MarkParetoFront(out, members);
+  for (const auto& [key, members] : conditions) {
+    MarkParetoFront(out, members);
+    int best = -1;
+    for (size_t i : members)
+      if (out[i].feasible && std::isfinite(out[i].margin) && (best < 0 || out[i].margin > out[best].margin))
+        best = static_cast<int>(i);
+    if (best >= 0) out[best].best = true;
+  }
   return out;
 }
 
 void MarkParetoFront(std::vector<TradeRow>& rows, const std::vector<size_t>& condition) {
   for (size_t i : condition) {
     const TradeRow& a = rows[i];
-    if (a.drops == a.failed) continue;  // nothing to rank
+    if (a.drops == a.failed || !a.feasible) continue;  // nothing to rank, or out of the limits
     bool beaten = false;
     for (size_t j : condition) {
       const TradeRow& b = rows[j];
-      if (j == i || b.drops == b.failed) continue;
+      if (j == i || b.drops == b.failed || !b.feasible) continue;
       beaten |= b.final_penetration_m <= a.final_penetration_m && b.peak_force_N <= a.peak_force_N &&
                 (b.final_penetration_m < a.final_penetration_m || b.peak_force_N < a.peak_force_N);
     }
@@ -72,7 +108,7 @@ void MarkParetoFront(std::vector<TradeRow>& rows, const std::vector<size_t>& con
   }
 }
 
-nlohmann::json TradeJson(const std::vector<TradeRow>& rows) {
+nlohmann::json TradeJson(const std::vector<TradeRow>& rows, const TradeLimits& limits) {
   nlohmann::json list = nlohmann::json::array();
   for (const TradeRow& r : rows)
     list.push_back({{"pad", r.pad},
@@ -83,88 +119,136 @@ nlohmann::json TradeJson(const std::vector<TradeRow>& rows) {
                     {"final_penetration_m", io::FiniteOrNull(r.final_penetration_m)},
                     {"peak_force_N", io::FiniteOrNull(r.peak_force_N)},
                     {"mean_conversion_rate_W", io::FiniteOrNull(r.mean_conversion_rate_W)},
-                    {"pareto", r.pareto}});
+                    {"pad_mass_kg", io::FiniteOrNull(r.pad_mass_kg)},
+                    {"feasible", r.feasible},
+                    {"margin", io::FiniteOrNull(r.margin)},
+                    {"pareto", r.pareto},
+                    {"best", r.best}});
+  int feasible = 0, front = 0;
+  for (const TradeRow& r : rows) feasible += r.feasible, front += r.pareto;
   return {{"rows", list},
-          {"pareto_rule", "within each (soil, impact speed): pads no other pad beats on both final penetration "
-                          "and peak force (lower is better)"},
+          {"limits", {{"allowable_final_penetration_m", io::FiniteOrNull(limits.max_final_penetration_m)},
+                      {"allowable_peak_force_N", io::FiniteOrNull(limits.max_peak_force_N)},
+                      {"max_pad_mass_kg", io::FiniteOrNull(limits.max_pad_mass_kg)}}},
+          {"rows_feasible", feasible},
+          {"rows_on_front", front},
+          {"pareto_rule", "within each (soil, impact speed): the feasible pads (within the limits; null: none) no "
+                          "other feasible pad beats on both final penetration and peak force (lower is better)"},
+          {"best_rule", "within each (soil, impact speed): the feasible pad with the largest margin, "
+                        "min over the limits given of 1 - value / limit"},
           {"conversion_rate", "impact energy / time to rest (Sutoh et al. 2017, dE/dt)"}};
 }
 
-void WriteTradeOutputs(const std::vector<TradeRow>& rows, const std::string& out_dir) {
-  const fs::path dir = out_dir;
-  fs::create_directories(dir / "plots" / "data");
-  io::WriteFileAtomically((dir / "trade.csv").string(), [&](std::ostream& out) {
-    out << "pad,soil,impact_speed_m_s,drops,failed,final_penetration_m,peak_force_N,mean_conversion_rate_W,pareto\n";
-    for (const TradeRow& r : rows)
-      out << r.pad << ',' << r.soil << ',' << io::FormatNumber(r.impact_speed_m_s) << ',' << r.drops << ',' << r.failed
-          << ',' << io::FormatNumber(r.final_penetration_m) << ',' << io::FormatNumber(r.peak_force_N) << ','
-          << io::FormatNumber(r.mean_conversion_rate_W) << ',' << (r.pareto ? 1 : 0) << '\n';
-  });
-  io::WriteFileAtomically((dir / "summary.json").string(), [&](std::ostream& out) { out << TradeJson(rows).dump(2) << '\n'; });
-
-  // One data file per (pad, soil) series against speed and one per condition's Pareto front.
+namespace {
+// One data file per (pad, soil) series against speed: speed, penetration, force, conversion rate,
+// feasible (1/0).
+std::vector<std::pair<std::string, std::string>> WriteSeries(const std::vector<TradeRow>& rows, const fs::path& dir) {
   std::map<std::pair<std::string, std::string>, std::vector<const TradeRow*>> series;
-  std::map<std::pair<std::string, double>, std::vector<const TradeRow*>> fronts;
-  for (const TradeRow& r : rows) {
-    if (r.drops == r.failed) continue;
-    series[{r.pad, r.soil}].push_back(&r);
-    if (r.pareto) fronts[{r.soil, r.impact_speed_m_s}].push_back(&r);
-  }
-  std::vector<std::pair<std::string, std::string>> series_files;  // file, title
+  for (const TradeRow& r : rows)
+    if (r.drops != r.failed) series[{r.pad, r.soil}].push_back(&r);
+  std::vector<std::pair<std::string, std::string>> files;  // file, "pad|soil"
   for (auto& [key, list] : series) {
     std::sort(list.begin(), list.end(), [](auto a, auto b) { return a->impact_speed_m_s < b->impact_speed_m_s; });
     const std::string file = "plots/data/" + key.first + "__" + key.second + ".csv";
     io::WriteFileAtomically((dir / file).string(), [&, &list = list](std::ostream& out) {
       for (const TradeRow* r : list)
         out << io::FormatNumber(r->impact_speed_m_s) << ',' << io::FormatNumber(r->final_penetration_m) << ','
-            << io::FormatNumber(r->peak_force_N) << ',' << io::FormatNumber(r->mean_conversion_rate_W) << '\n';
+            << io::FormatNumber(r->peak_force_N) << ',' << io::FormatNumber(r->mean_conversion_rate_W) << ','
+            << (r->feasible ? 1 : 0) << '\n';
     });
-    series_files.push_back({file, key.first + ", " + key.second});
+    files.push_back({file, key.first + "|" + key.second});
   }
-  std::vector<std::pair<std::string, std::string>> front_files;
-  int k = 0;
+  return files;
+}
+
+// One data file per condition's front (penetration, force, pad), sorted along it.
+std::vector<std::string> WriteFronts(const std::vector<TradeRow>& rows, const fs::path& dir) {
+  std::map<std::pair<std::string, double>, std::vector<const TradeRow*>> fronts;
+  for (const TradeRow& r : rows)
+    if (r.pareto) fronts[{r.soil, r.impact_speed_m_s}].push_back(&r);
+  std::vector<std::string> files;
   for (auto& [key, list] : fronts) {
     std::sort(list.begin(), list.end(), [](auto a, auto b) { return a->final_penetration_m < b->final_penetration_m; });
-    const std::string file = "plots/data/front_" + std::to_string(k++) + ".csv";
+    const std::string file = "plots/data/front_" + std::to_string(files.size()) + ".csv";
     io::WriteFileAtomically((dir / file).string(), [&, &list = list](std::ostream& out) {
       for (const TradeRow* r : list)
         out << io::FormatNumber(r->final_penetration_m) << ',' << io::FormatNumber(r->peak_force_N) << ',' << r->pad << '\n';
     });
-    front_files.push_back({file, "front: " + key.first + ", " + io::FormatNumber(key.second) + " m/s"});
+    files.push_back(file);
   }
+  return files;
+}
+
+std::string SeriesTitle(const std::string& key) { return key.substr(0, key.find('|')) + ", " + key.substr(key.find('|') + 1); }
+std::string SeriesLine(const std::string& key) { return io::PadSoilLine(key.substr(0, key.find('|')), key.substr(key.find('|') + 1)); }
+std::string SeriesColourOf(const std::string& key) { return io::PadColour(key.substr(0, key.find('|'))); }
+}  // namespace
+
+void WriteTradeOutputs(const std::vector<TradeRow>& rows, const std::string& out_dir, const TradeLimits& limits) {
+  const fs::path dir = out_dir;
+  fs::create_directories(dir / "plots" / "data");
+  io::WriteFileAtomically((dir / "trade.csv").string(), [&](std::ostream& out) {
+    out << "pad,soil,impact_speed_m_s,drops,failed,final_penetration_m,peak_force_N,mean_conversion_rate_W,pad_mass_kg,"
+           "feasible,margin,pareto,best\n";
+    for (const TradeRow& r : rows)
+      out << r.pad << ',' << r.soil << ',' << io::FormatNumber(r.impact_speed_m_s) << ',' << r.drops << ',' << r.failed
+          << ',' << io::FormatNumber(r.final_penetration_m) << ',' << io::FormatNumber(r.peak_force_N) << ','
+          << io::FormatNumber(r.mean_conversion_rate_W) << ',' << io::FormatNumber(r.pad_mass_kg) << ','
+          << (r.feasible ? 1 : 0) << ',' << io::FormatNumber(r.margin) << ',' << (r.pareto ? 1 : 0) << ','
+          << (r.best ? 1 : 0) << '\n';
+  });
+  io::WriteFileAtomically((dir / "summary.json").string(), [&](std::ostream& out) { out << TradeJson(rows, limits).dump(2) << '\n'; });
+
+  const std::vector<std::pair<std::string, std::string>> series = WriteSeries(rows, dir);
+  const std::vector<std::string> fronts = WriteFronts(rows, dir);
   // A sweep whose drops all failed has no series: each panel says so instead (a `plot` of
   // nothing is a gnuplot error).
   const std::string nothing = io::PlaceholderPlot("no completed drops: nothing to plot");
-  auto plot = [&](const std::string& columns) {
-    if (series_files.empty()) return nothing;
+  auto plot = [&](const std::string& columns, bool titles) {
+    if (series.empty()) return nothing;
     std::string s = "plot ";
-    for (size_t i = 0; i < series_files.size(); ++i)
-      s += (i ? ", \\\n     " : "") + io::GnuplotQuote(series_files[i].first) + " using " + columns +
-           " with linespoints lw 2 pt 7 title " + io::GnuplotQuote(series_files[i].second);
+    for (size_t i = 0; i < series.size(); ++i)
+      s += (i ? ", \\\n     " : "") + io::GnuplotQuote(series[i].first) + " using " + columns + " with linespoints " +
+           SeriesLine(series[i].second) + " pt 7 ps 1.2 " +
+           (titles ? "title " + io::GnuplotQuote(SeriesTitle(series[i].second)) : std::string("notitle"));
     return s + "\n";
   };
-  std::string gp =
-      "set datafile separator ','\nset termoption noenhanced\nset grid\nset key outside right\n"
-      "set terminal pngcairo noenhanced size 1500,450 font 'sans,10'\nset output 'plots/trade.png'\n"
+  const std::string speeds =
       "set multiplot layout 1,3 title 'Footpad trade study against impact speed'\nset xlabel 'impact speed [m/s]'\n"
-      "set key off\nset ylabel 'final penetration [mm]'\n" + plot("1:($2*1000)") +
-      "set ylabel 'peak force [N]'\n" + plot("1:3") + "set key outside right\nset ylabel 'energy-conversion rate [W]'\n" +
-      plot("1:4") + "unset multiplot\n";
-  gp += "set terminal pngcairo noenhanced size 900,650 font 'sans,10'\nset output 'plots/pareto.png'\n"
-        "set title 'Peak force against final penetration (lower-left is better); fronts per soil and speed'\n"
-        "set xlabel 'final penetration [mm]'\nset ylabel 'peak force [N]'\nset key outside right\n";
-  if (series_files.empty()) {
-    gp += nothing;
+      "set key outside bottom center horizontal\nset bmargin 8\nset ylabel 'final penetration [mm]'\n" +
+      plot("1:($2*1000)", false) + "set ylabel 'peak force [N]'\n" + plot("1:3", true) +
+      "set ylabel 'energy-conversion rate [W]'\n" + plot("1:4", false) + "unset multiplot\n";
+  // The allowable region (lower left, inside the limits) shaded; feasible rows filled, the others open.
+  std::string pareto = "set title " +
+                       io::GnuplotQuote(limits.any() ? "Peak force against penetration (shaded: the limits; filled: feasible; "
+                                                       "circles LP, squares CP; dashed: fronts)"
+                                                     : "Peak force against final penetration (no limits given: every pad is "
+                                                       "feasible); dashed = fronts per soil and speed") +
+                       "\nset xlabel 'final penetration [mm]'\nset ylabel 'peak force [N]'\nset key outside right top\n";
+  if (std::isfinite(limits.max_final_penetration_m) || std::isfinite(limits.max_peak_force_N))
+    pareto += "set object 1 rect from graph 0, graph 0 to " +
+              (std::isfinite(limits.max_final_penetration_m) ? "first " + io::FormatNumber(limits.max_final_penetration_m * 1e3)
+                                                               : std::string("graph 1")) +
+              ", " + (std::isfinite(limits.max_peak_force_N) ? "first " + io::FormatNumber(limits.max_peak_force_N) : std::string("graph 1")) +
+              " behind fc rgb '#e8f4e8' fs solid 1 noborder\n";
+  if (series.empty()) {
+    pareto += nothing;
   } else {
-    gp += "plot ";
-    for (size_t i = 0; i < series_files.size(); ++i)
-      gp += (i ? ", \\\n     " : "") + io::GnuplotQuote(series_files[i].first) + " using ($2*1000):3 with points pt 7 title " +
-            io::GnuplotQuote(series_files[i].second);
-    for (const auto& [file, title] : front_files)
-      gp += ", \\\n     " + io::GnuplotQuote(file) + " using ($1*1000):2 with lines lw 1 dt 2 lc rgb 'black' notitle";
-    gp += "\n";
+    pareto += "plot ";
+    for (size_t i = 0; i < series.size(); ++i) {
+      // Circles on loosely packed soil, squares on others; filled within the limits, open outside.
+      const bool lp = series[i].second.ends_with("_lp");
+      const std::string file = io::GnuplotQuote(series[i].first), colour = " lc rgb '" + SeriesColourOf(series[i].second) + "'";
+      pareto += (i ? ", \\\n     " : "") + file + " using ($2*1000):($5 > 0 ? $3 : 1/0) with points pt " + (lp ? "7" : "5") +
+                " ps 1.6" + colour + " title " + io::GnuplotQuote(SeriesTitle(series[i].second)) + ", \\\n     " + file +
+                " using ($2*1000):($5 > 0 ? 1/0 : $3) with points pt " + (lp ? "6" : "4") + " ps 1.6" + colour + " notitle";
+    }
+    for (const std::string& file : fronts)
+      pareto += ", \\\n     " + io::GnuplotQuote(file) + " using ($1*1000):2 with lines lw 1.2 dt 2 lc rgb '#000000' notitle";
+    pareto += "\n";
   }
-  io::RenderPlots(dir, {"plots/trade.gp", gp, {"plots/trade.png", "plots/pareto.png"}});
+  const std::string gp = io::Figure("plots/trade", speeds, io::kFigureStrip) + io::Figure("plots/pareto", pareto, io::kFigureWide);
+  io::RenderPlots(dir, {"plots/trade.gp", gp, {io::FigurePng("plots/trade"), io::FigurePng("plots/pareto")}});
 }
 
 }  // namespace touchdown::sweep

@@ -2,6 +2,7 @@
 // and `touchdown trade` on the paper's three pads (curved deepest and gentlest, as the paper).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -39,6 +40,51 @@ TEST(TradePareto, NonDominatedRowsOnly) {
   EXPECT_TRUE(rows[2].pareto);
   EXPECT_FALSE(rows[3].pareto);
   EXPECT_TRUE(rows[4].pareto);
+}
+
+// Limits: rows outside them are infeasible and off the front, whatever they trade off; the best
+// row of a condition is the feasible one furthest inside the limits.
+TEST(TradeLimitsTest, InfeasibleRowsLeaveTheFrontAndTheLargestMarginIsBest) {
+  std::vector<DropRecord> records;
+  const double depth[3] = {0.008, 0.009, 0.016}, force[3] = {228.0, 223.0, 206.0};  // flat, c4, curved at 1 m/s
+  const char* pads[3] = {"flat", "c4", "curved"};
+  for (int i = 0; i < 3; ++i) {
+    DropRecord r;
+    r.index = i;
+    r.pad = pads[i];
+    r.soil = "fjs1_lp";
+    r.impact_speed_m_s = 1.0;
+    r.ok = true;
+    r.final_penetration_m = depth[i];
+    r.peak_force_N = force[i];
+    r.pad_mass_kg = 1.6;
+    records.push_back(r);
+  }
+  const std::vector<TradeRow> free_rows = TradeTable(records);
+  for (const TradeRow& r : free_rows) {
+    EXPECT_TRUE(r.feasible && r.pareto) << r.pad;  // no limits: the three trade off, all on the front
+    EXPECT_TRUE(std::isnan(r.margin));
+    EXPECT_FALSE(r.best);
+  }
+  TradeLimits limits;
+  limits.max_final_penetration_m = 0.015;
+  limits.max_peak_force_N = 250.0;
+  const std::vector<TradeRow> rows = TradeTable(records, limits);
+  ASSERT_EQ(rows.size(), 3u);
+  for (const TradeRow& r : rows) {
+    const bool curved = r.pad == "curved";
+    EXPECT_EQ(r.feasible, !curved) << r.pad;
+    EXPECT_EQ(r.pareto, !curved) << r.pad;
+    // flat: min(1 - 8/15, 1 - 228/250) = 0.088; c4: min(1 - 9/15, 1 - 223/250) = 0.108 (best).
+    const double expected = r.pad == "flat" ? 1.0 - 228.0 / 250.0 : r.pad == "c4" ? 1.0 - 223.0 / 250.0 : 1.0 - 16.0 / 15.0;
+    EXPECT_NEAR(r.margin, expected, 1e-12) << r.pad;
+    EXPECT_EQ(r.best, r.pad == "c4") << r.pad;
+  }
+  const nlohmann::json j = TradeJson(rows, limits);
+  EXPECT_EQ(j["rows_feasible"], 2);
+  EXPECT_EQ(j["rows_on_front"], 2);
+  EXPECT_DOUBLE_EQ(j["limits"]["allowable_peak_force_N"].get<double>(), 250.0);
+  EXPECT_TRUE(j["limits"]["max_pad_mass_kg"].is_null());
 }
 
 TEST(TradeTable, RowsAreMeansOverTheirDropsAndFailuresAreCounted) {
