@@ -2,7 +2,6 @@
 // soil (`touchdown force --pad flat --soil fjs1_lp --depth 0.02`) and one drop on the paper's rig
 // (`touchdown drop --pad flat --soil fjs1_lp --speed 1`). Prints both as one JSON object, with the
 // same fields and numbers as the command line prints.
-#include <exception>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -11,9 +10,11 @@
 
 #include <drop_tests/drop/pad_drop.h>
 #include <drop_tests/io/catalog.h>
+#include <lander/integ/cvode_integrator.h>
 #include <lander/pad/pad_pose.h>
 #include <rft/contact_wrench.h>
 #include <rft/ground.h>
+#include <rft/input_error.h>
 #include <rft/stress_law_3d_factory.h>
 
 namespace td = touchdown;
@@ -47,9 +48,12 @@ int main(int argc, char** argv) {
 
     const nlohmann::json out{{"force", ForceAtDepth(pad, soil, 0.02)}, {"drop", td::drop::SummaryJson(drop)}};
     std::cout << out.dump(2) << std::endl;
-  } catch (const std::exception& e) {
+  } catch (const td::InputError& e) {  // a bad file or value: exit 2, as the command line
     std::cerr << "cpp_consumer: " << e.what() << "\n";
-    return 1;
+    return 2;
+  } catch (const td::integ::IntegrationFailure& e) {  // the solver failed: 3
+    std::cerr << "cpp_consumer: " << e.what() << "\n";
+    return 3;
   }
   return 0;
 }

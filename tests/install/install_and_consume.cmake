@@ -1,5 +1,5 @@
 # cmake -DBUILD_DIR=... -DSOURCE_DIR=... -DWORK_DIR=... -DGENERATOR=... -DCXX_COMPILER=...
-#       -DBUILD_TYPE=... [-DLAUNCHER=...] -P install_and_consume.cmake
+#       -DBUILD_TYPE=... [-DCXX_FLAGS=... -DCXX_FLAGS_BUILD_TYPE=... -DLAUNCHER=...] -P install_and_consume.cmake
 # Checks the installed package (tests/install/CMakeLists.txt): installs BUILD_DIR into WORK_DIR,
 # moves the prefix (nothing in it may name where it was installed), checks that CGAL stays
 # inside footpad_geom, builds examples/cpp_consumer against it, and compares the consumer's force
@@ -94,6 +94,10 @@ endif()
 set(consumer_build "${WORK_DIR}/consumer")
 set(configure_args -S "${SOURCE_DIR}/examples/cpp_consumer" -B "${consumer_build}" -G "${GENERATOR}"
   "-DCMAKE_PREFIX_PATH=${prefix}" "-DCMAKE_CXX_COMPILER=${CXX_COMPILER}" "-DCMAKE_BUILD_TYPE=${BUILD_TYPE}")
+if(BUILD_TYPE)
+  string(TOUPPER "${BUILD_TYPE}" build_type)
+  list(APPEND configure_args "-DCMAKE_CXX_FLAGS=${CXX_FLAGS}" "-DCMAKE_CXX_FLAGS_${build_type}=${CXX_FLAGS_BUILD_TYPE}")
+endif()
 if(LAUNCHER)
   list(APPEND configure_args "-DCMAKE_CXX_COMPILER_LAUNCHER=${LAUNCHER}")
 endif()
