@@ -16,7 +16,7 @@ jobs=${TOUCHDOWN_JOBS:-$(nproc)}
 bash "$root/tools/install_deps.sh"
 CC=clang CXX=clang++ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" \
-  -DTOUCHDOWN_SANITIZE=ON -DTOUCHDOWN_FUZZ=ON -DTOUCHDOWN_BUILD_BENCH=OFF >/dev/null
+  -DTOUCHDOWN_SANITIZE=ON -DTOUCHDOWN_FUZZ=ON -DTOUCHDOWN_BUILD_BENCH=OFF -DTOUCHDOWN_NATIVE=ON >/dev/null
 cmake --build "$build" --parallel "$jobs" --target touchdown_fuzzers
 
 targets=$(cd "$root/tests/fuzz/corpus" && ls)

@@ -17,7 +17,7 @@ jobs=${TOUCHDOWN_JOBS:-$(nproc)}
 bash "$root/tools/install_deps.sh"
 CC=clang CXX=clang++ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" \
-  -DTOUCHDOWN_SANITIZE=ON -DTOUCHDOWN_FUZZ=ON -DTOUCHDOWN_BUILD_BENCH=OFF >/dev/null
+  -DTOUCHDOWN_SANITIZE=ON -DTOUCHDOWN_FUZZ=ON -DTOUCHDOWN_BUILD_BENCH=OFF -DTOUCHDOWN_NATIVE=ON >/dev/null
 cmake --build "$build" --parallel "$jobs"
 
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:halt_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1:check_initialization_order=1

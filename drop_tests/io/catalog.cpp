@@ -5,6 +5,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <map>
+#include <optional>
+#include <system_error>
 
 #include "drop_tests/io/field_table.h"
 #include "drop_tests/io/nearest_name.h"
@@ -250,9 +252,26 @@ void LoadMeshPad(const YamlFields& f, PadSpec& pad) {
 }
 }  // namespace
 
+namespace {
+// The data installed with the running executable (`cmake --install`: <prefix>/bin/touchdown and
+// <prefix>/share/touchdown), if there is such a folder. /proc/self/exe names the executable file
+// itself, whatever link or relative path started it. None in the build tree (build/apps/touchdown
+// has no share/ beside it), nor for a program elsewhere that links the libraries.
+std::optional<std::string> DataBesideExecutable() {
+  std::error_code ec;
+  const fs::path executable = fs::read_symlink("/proc/self/exe", ec);
+  if (ec) return std::nullopt;
+  const fs::path data = (executable.parent_path() / TOUCHDOWN_DATA_DIR_FROM_BIN).lexically_normal();
+  if (!fs::is_directory(data, ec)) return std::nullopt;
+  return data.string();
+}
+}  // namespace
+
+// $TOUCHDOWN_DATA_DIR, else an installed copy's own data, else the source tree's data/ this
+// build was made from (docs/install.md).
 std::string DataDirectory() {
   if (const char* env = std::getenv("TOUCHDOWN_DATA_DIR"); env && *env) return env;
-  return TOUCHDOWN_DATA_DIR;
+  return DataBesideExecutable().value_or(TOUCHDOWN_DATA_DIR);
 }
 
 std::string ResolveCatalogFile(const std::string& kind, const std::string& name_or_path) {
