@@ -48,8 +48,9 @@ TEST_F(VtkCli, FreeDropWritesASeriesAndReplacesOnlyItsOwn) {
   fs::create_directories(user_dir);
   const std::string kept = Write("mine/notes.txt", "mine\n");
   EXPECT_EQ(RunTouchdown(With(kVtkHexDrop, {"--vtk", user_dir})), 2);
-  EXPECT_NE(Stderr().find(user_dir), std::string::npos) << Stderr();
-  EXPECT_EQ(std::count(Stderr().begin(), Stderr().end(), '\n'), 1) << Stderr();
+  const std::string refused = Stderr();
+  EXPECT_NE(refused.find(user_dir), std::string::npos) << refused;
+  EXPECT_EQ(std::count(refused.begin(), refused.end(), '\n'), 1) << refused;
   EXPECT_EQ(Slurp(kept), "mine\n");
   EXPECT_EQ(fs::directory_iterator(user_dir)->path().filename(), "notes.txt");
   const std::string user_file = Write("file.vtp", "mine\n");

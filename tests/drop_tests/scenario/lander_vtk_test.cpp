@@ -84,7 +84,7 @@ TEST_F(LanderVtkTest, OutputHoldsTheLandingForParaViewAndThePosesInTheTrace) {
   EXPECT_EQ(header.rfind("t_s,x_m,y_m,z_m,roll_deg,pitch_deg,yaw_deg,tilt_deg,", 0), 0u);
   const size_t poses = header.find(",kinetic_J,potential_J,dissipated_J,qw,qx,qy,qz,pad1_qw,pad1_qx,pad1_qy,pad1_qz,");
   ASSERT_NE(poses, std::string::npos);
-  EXPECT_EQ(header.substr(header.size() - 29), "joint4_x_m,joint4_y_m,joint4_z_m");
+  EXPECT_EQ(header.substr(header.size() - 32), "joint4_x_m,joint4_y_m,joint4_z_m");
   for (size_t n = 0; n <= k; ++n) std::getline(csv, row);
   std::vector<double> v;
   std::stringstream cells(row);
