@@ -3,9 +3,10 @@
 // why): surfaces and lines as PolyData (.vtp: points, polygons, lines, cell and point fields) and a
 // time series as a collection (.pvd) that lists each time step's files.
 //
-// Data are written as ASCII with 17 significant digits, so every double reads back exactly and the
-// files are the same byte for byte on every run (golden outputs compare them). Only formatting
-// happens here: where the files go, and that they never overwrite a user's, is output_path.h's.
+// Data are written as ASCII, each double as the shortest decimal that reads back as the same double
+// (std::to_chars), so every number is exact and the files are the same byte for byte on every run
+// (golden outputs compare them). Only formatting happens here: where the files go, and that they
+// never overwrite a user's, is output_path.h's.
 #include <Eigen/Core>
 #include <ostream>
 #include <string>

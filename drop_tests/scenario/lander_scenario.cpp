@@ -353,8 +353,8 @@ void ReadSimulation(const io::YamlFields& sim, lander::LanderRunOptions& options
     sim.Fail("duration_s", "must be at most 600 s, got " + io::FormatNumber(options.duration_s));
   if (options.sample_rate_hz > 1e6)
     sim.Fail("sample_rate_hz", "must be at most 1e6 Hz, got " + io::FormatNumber(options.sample_rate_hz));
-  // The whole trace is held in memory until it is written (about 0.4 kB a sample, plus the plots'
-  // copy): 1e6 samples keep a run under about 1 GB (1e7 needed over 4 GB).
+  // The whole trace is held in memory until it is written (816 bytes a sample with the bodies' and
+  // pads' poses, 0.4 kB before them, plus the plots' copy): 1e6 samples keep a run under about 1 GB.
   if (options.duration_s * options.sample_rate_hz > kLanderMaxTraceSamples)
     sim.Fail("sample_rate_hz", "duration_s x sample_rate_hz is " +
                                    io::FormatNumber(options.duration_s * options.sample_rate_hz) +

@@ -18,7 +18,7 @@
 
 namespace touchdown::scenario {
 
-// A lander run keeps its trace in memory (lander::LanderSample, about 0.4 kB each): duration_s x
+// A lander run keeps its trace in memory (lander::LanderSample, 816 bytes each with the poses): duration_s x
 // sample_rate_hz is capped at load.
 inline constexpr double kLanderMaxTraceSamples = 1e6;
 

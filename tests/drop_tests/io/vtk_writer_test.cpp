@@ -90,7 +90,7 @@ TEST(VtkWriter, PadPieceReadsBackAsWritten) {
     ExpectVtkRelative(stresses.depth_m[i], depth[i]);
     EXPECT_EQ(leading[i], stresses.leading[i]);
   }
-  // 17 significant digits: not only close, equal.
+  // The shortest exact decimal: not only close, equal.
   EXPECT_EQ(normal[1], 1.0 / 3.0);
 }
 
