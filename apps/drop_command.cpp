@@ -8,6 +8,7 @@
 #include "apps/commands.h"
 #include "drop_tests/io/output_path.h"
 #include "drop_tests/model/model_file.h"
+#include "drop_tests/drop/drop_vtk.h"
 #include "drop_tests/drop/pad_drop.h"
 #include "rft/input_error.h"
 #include "rft/units.h"
@@ -16,7 +17,7 @@ namespace touchdown::app {
 
 namespace {
 struct DropArgs {
-  std::string pad, soil, trace, model;
+  std::string pad, soil, trace, model, vtk;
   double speed_m_s = 0.0;
   std::optional<double> mass_kg, zeta_N_cm3;
   double gravity_m_s2 = 9.81;
@@ -47,6 +48,9 @@ void AddDropCommand(CLI::App& app) {
   cmd->add_option("--omega", args->omega, "--free: initial angular velocity WX,WY,WZ [rad/s]")
       ->expected(3)->delimiter(',');
   cmd->add_option("--law", args->law, "--free: li2013 or agarwal2023");
+  cmd->add_option("--vtk", args->vtk,
+                  "--free: write a ParaView time series into this new directory (drop.pvd: the pad with its "
+                  "per-element soil stresses at every trace sample, and the soil surface; docs/paraview.md)");
   cmd->callback([args] {
     drop::DropConditions c;
     c.impact_speed_m_s = args->speed_m_s;
@@ -76,6 +80,11 @@ void AddDropCommand(CLI::App& app) {
     drop::ValidateConditions(c, "command line");
     const io::OutputTarget trace(args->trace, {args->pad, args->soil, args->model});
     if (!args->trace.empty()) io::CheckOutputFile(trace);
+    const io::OutputTarget vtk(args->vtk, {args->pad, args->soil, args->model, args->trace});
+    if (!args->vtk.empty()) {
+      if (!c.IsFree()) throw MakeInputError("command line", "--vtk", "needs --free (the rig's pad is not drawn)");
+      drop::CheckDropVtkTarget(vtk);
+    }
     const io::PadSpec pad = io::LoadPad(args->pad);
     rft::SoilParameters soil = io::LoadSoil(args->soil);
     if (!args->model.empty()) {
@@ -86,6 +95,7 @@ void AddDropCommand(CLI::App& app) {
     }
     const drop::PadDrop result = drop::SimulateDrop(pad, soil, c, {});
     if (!args->trace.empty()) drop::WriteTraceCsv(result, trace);
+    if (!args->vtk.empty()) drop::WriteDropVtk(result, pad, vtk);
     std::cout << drop::SummaryJson(result).dump(2) << std::endl;
   });
 }

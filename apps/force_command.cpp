@@ -7,8 +7,11 @@
 
 #include "apps/commands.h"
 #include "drop_tests/io/catalog.h"
+#include "drop_tests/io/output_path.h"
+#include "drop_tests/io/vtk_pieces.h"
 #include "lander/pad/pad_pose.h"
 #include "rft/contact_wrench.h"
+#include "rft/element_stresses.h"
 #include "rft/input_error.h"
 #include "rft/physical_limits.h"
 #include "rft/stress_law_3d_factory.h"
@@ -18,7 +21,7 @@ namespace touchdown::app {
 
 namespace {
 struct ForceArgs {
-  std::string pad, soil, law = "li2013", tilt_axis = "x";
+  std::string pad, soil, law = "li2013", tilt_axis = "x", vtk;
   double depth_m = 0.0, tilt_deg = 0.0, gravity_m_s2 = 9.81;
   std::vector<double> velocity{0.0, 0.0, -1.0}, omega{0.0, 0.0, 0.0};
   std::optional<double> zeta_N_cm3;
@@ -37,6 +40,14 @@ void RequireFinite(double v, const std::string& field, bool positive) {
     throw MakeInputError("command line", field, s.str());
   }
 }
+// --vtk: the pad at its pose with the stress on each surface element (docs/paraview.md).
+void WriteForceVtk(const io::OutputTarget& target, const geom::PadBody& body, const rft::PadKinematics& k,
+                   const rft::StressLaw3D& law) {
+  rft::ElementStresses stresses;
+  rft::ComputeElementStresses(body.surface, k, rft::PlaneGround(), law, rft::DepthLaw{}, &stresses);
+  const io::VtkPolyData piece = io::PadSurfacePiece(io::MakePadSurfaceMesh(body.surface), k.R_WB, k.p_WB, stresses);
+  io::WriteOutputFile(target, [&](std::ostream& out) { io::WriteVtp({piece}, out); });
+}
 }  // namespace
 
 void AddForceCommand(CLI::App& app) {
@@ -53,6 +64,9 @@ void AddForceCommand(CLI::App& app) {
   cmd->add_option("--law", a->law, "li2013 (Treers et al. 2021 3D decomposition) or agarwal2023");
   cmd->add_option("--zeta", a->zeta_N_cm3, "override the soil's zeta [N/cm^3] (li2013)");
   cmd->add_option("--gravity", a->gravity_m_s2, "gravity [m/s^2] the soil stresses scale with (default 9.81)");
+  cmd->add_option("--vtk", a->vtk,
+                  "write the pad at this pose with the soil stress on each surface element to this new .vtp file "
+                  "(ParaView; docs/paraview.md)");
   cmd->callback([a] {
     limits::Require(limits::kDepth_m, a->depth_m, "command line", "--depth");
     limits::Require(limits::kForceTilt_deg, a->tilt_deg, "command line", "--tilt-deg");
@@ -66,6 +80,8 @@ void AddForceCommand(CLI::App& app) {
     if (k.v_WB_W.norm() == 0.0 && k.w_WB_W.norm() == 0.0)
       throw MakeInputError("command line", "velocity", "the pad must move (RFT needs a direction of motion)");
     const pad::TiltAxis axis = pad::ParseTiltAxis(a->tilt_axis);
+    const io::OutputTarget vtk(a->vtk, {a->pad, a->soil});
+    if (!a->vtk.empty()) io::CheckOutputFile(vtk);
     k.R_WB = pad::TiltRotation(axis, units::DegToRad(a->tilt_deg));
     const io::PadSpec pad = io::LoadPad(a->pad);
     rft::SoilParameters soil = io::LoadSoil(a->soil);
@@ -89,6 +105,7 @@ void AddForceCommand(CLI::App& app) {
         {"leading_elements", w.leading_elements},
         {"surface_elements", pad.body.surface.size()},
     };
+    if (!a->vtk.empty()) WriteForceVtk(vtk, pad.body, k, *law);
     std::cout << out.dump(2) << std::endl;
   });
 }

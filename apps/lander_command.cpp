@@ -20,7 +20,8 @@ void AddLanderCommand(CLI::App& app) {
   cmd->add_option("scenario", args->scenario, "lander scenario YAML (e.g. data/scenarios/lander_case_A.yaml)")
       ->required();
   cmd->add_option("--out", args->out, "output directory (summary.json, trace.csv, events.csv, plots/, "
-                                      "scenario_resolved.yaml), written complete or not at all")
+                                      "scenario_resolved.yaml, vtk/lander.pvd for ParaView: docs/paraview.md), "
+                                      "written complete or not at all")
       ->required();
   cmd->add_option("--model", args->model,
                   "model file (MODEL.yaml): zeta per soil and the effect terms with a 3D form (inertial_drag, "

@@ -24,10 +24,17 @@ nlohmann::json FreeDropJson(const pad::FreeDropResult& r) {
 }
 
 void WriteFreeDropTraceCsv(const pad::FreeDropResult& r, std::ostream& out) {
-  out << "t_s,penetration_m,velocity_m_s,force_N,force_x_N,horizontal_m,tilt_deg\n" << std::setprecision(10);
-  for (const pad::FreeDropSample& s : r.trace)
+  out << "t_s,penetration_m,velocity_m_s,force_N,force_x_N,horizontal_m,tilt_deg,"
+         "x_m,y_m,z_m,qw,qx,qy,qz,wx_rad_s,wy_rad_s,wz_rad_s\n"
+      << std::setprecision(10);
+  for (const pad::FreeDropSample& s : r.trace) {
     out << s.t_s << ',' << s.penetration_m << ',' << s.velocity_m_s << ',' << s.force_N << ',' << s.force_x_N << ','
-        << s.horizontal_m << ',' << s.tilt_deg << '\n';
+        << s.horizontal_m << ',' << s.tilt_deg;
+    for (int k = 0; k < 3; ++k) out << ',' << s.p_WB[k];
+    for (int k = 0; k < 4; ++k) out << ',' << s.q_WB[k];
+    for (int k = 0; k < 3; ++k) out << ',' << s.w_W[k];
+    out << '\n';
+  }
 }
 
 }  // namespace touchdown::drop

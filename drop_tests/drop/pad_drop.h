@@ -100,7 +100,7 @@ PadDrop RunPadDrop(const io::PadSpec& pad, const rft::SoilParameters& soil, cons
 // applied) and `effects_not_applied` ({id: reason}).
 nlohmann::json SummaryJson(const PadDrop& drop);
 // Writes the trace as CSV: t_s,penetration_m,velocity_m_s,force_N (a free drop adds
-// force_x_N,horizontal_m,tilt_deg).
+// force_x_N,horizontal_m,tilt_deg and the pose: free_drop_output.h).
 void WriteTraceCsv(const pad::RigDropResult& result, std::ostream& out);
 void WriteTraceCsv(const pad::RigDropResult& result, const std::string& path);  // a file in a directory touchdown owns
 // The user's --trace file: a new file (touchdown never overwrites one it may not have written).

@@ -316,6 +316,7 @@ const char* OutputKindName(OutputKind kind) {
     case OutputKind::kDataset: return "dataset";
     case OutputKind::kDiagnosis: return "diagnose";
     case OutputKind::kSweep: return "sweep";
+    case OutputKind::kDropVtk: return "drop";
   }
   return "?";
 }

@@ -13,6 +13,7 @@
 #include "drop_tests/io/dataset_csv.h"  // io::FormatNumber
 #include "drop_tests/io/field_table.h"
 #include "drop_tests/scenario/lander_plots.h"
+#include "drop_tests/scenario/lander_vtk.h"
 #include "drop_tests/io/paths_in_outputs.h"
 #include "drop_tests/io/yaml_fields.h"
 #include "rft/input_error.h"
@@ -352,8 +353,8 @@ void ReadSimulation(const io::YamlFields& sim, lander::LanderRunOptions& options
     sim.Fail("duration_s", "must be at most 600 s, got " + io::FormatNumber(options.duration_s));
   if (options.sample_rate_hz > 1e6)
     sim.Fail("sample_rate_hz", "must be at most 1e6 Hz, got " + io::FormatNumber(options.sample_rate_hz));
-  // The whole trace is held in memory until it is written (about 0.4 kB a sample, plus the plots'
-  // copy): 1e6 samples keep a run under about 1 GB (1e7 needed over 4 GB).
+  // The whole trace is held in memory until it is written (816 bytes a sample with the bodies' and
+  // pads' poses, 0.4 kB before them, plus the plots' copy): 1e6 samples keep a run under about 1 GB.
   if (options.duration_s * options.sample_rate_hz > kLanderMaxTraceSamples)
     sim.Fail("sample_rate_hz", "duration_s x sample_rate_hz is " +
                                    io::FormatNumber(options.duration_s * options.sample_rate_hz) +
@@ -630,7 +631,15 @@ void WriteLanderTraceCsv(const LanderRun& run, const std::string& path) {
     for (int i = 1; i <= lander::kNumLegs; ++i) out << ",fz" << i << "_N";
     for (int i = 1; i <= lander::kNumLegs; ++i) out << ",held" << i;
     for (int i = 1; i <= lander::kNumLegs; ++i) out << ",stroke" << i << "_m";
-    out << ",kinetic_J,potential_J,dissipated_J\n" << std::setprecision(10);
+    out << ",kinetic_J,potential_J,dissipated_J";
+    // The poses (after the columns above, which keep their order): the body's attitude as a unit
+    // quaternion, then each pad's attitude and ball-joint centre, so that anything can be animated.
+    out << ",qw,qx,qy,qz";
+    for (int i = 1; i <= lander::kNumLegs; ++i)
+      out << ",pad" << i << "_qw,pad" << i << "_qx,pad" << i << "_qy,pad" << i << "_qz";
+    for (int i = 1; i <= lander::kNumLegs; ++i)
+      out << ",joint" << i << "_x_m,joint" << i << "_y_m,joint" << i << "_z_m";
+    out << '\n' << std::setprecision(10);
     for (const lander::LanderSample& s : run.result.trace) {
       out << s.t_s << ',' << s.p_WB.x() << ',' << s.p_WB.y() << ',' << s.p_WB.z() << ',' << s.attitude.roll_rad / kDeg
           << ',' << s.attitude.pitch_rad / kDeg << ',' << s.attitude.yaw_rad / kDeg << ',' << s.attitude.tilt_rad / kDeg;
@@ -642,7 +651,13 @@ void WriteLanderTraceCsv(const LanderRun& run, const std::string& path) {
       for (int i = 0; i < lander::kNumLegs; ++i) out << ',' << s.pad_force_W[i].z();
       for (int i = 0; i < lander::kNumLegs; ++i) out << ',' << s.pad_held[i];
       for (int i = 0; i < lander::kNumLegs; ++i) out << ',' << s.stroke_m[i];
-      out << ',' << s.kinetic_J << ',' << s.potential_J << ',' << s.dissipated_J << '\n';
+      out << ',' << s.kinetic_J << ',' << s.potential_J << ',' << s.dissipated_J;
+      for (int k = 0; k < 4; ++k) out << ',' << s.q_WB[k];
+      for (int i = 0; i < lander::kNumLegs; ++i)
+        for (int k = 0; k < 4; ++k) out << ',' << s.q_WP[i][k];
+      for (int i = 0; i < lander::kNumLegs; ++i)
+        for (int k = 0; k < 3; ++k) out << ',' << s.p_WJ[i][k];
+      out << '\n';
     }
   });
 }
@@ -777,6 +792,7 @@ void WriteLanderOutputs(const LanderRun& run, const io::OutputTarget& out) {
                         [&](std::ostream& out) { out << LanderSummaryJson(run).dump(2) << '\n'; });
     WriteResolvedLanderScenario(run.scenario, (staging / "scenario_resolved.yaml").string(), out.path);
     WriteLanderPlots(run, staging.string());
+    WriteLanderVtk(run, (staging / "vtk").string());
   });
 }
 

@@ -18,7 +18,7 @@
 
 namespace touchdown::scenario {
 
-// A lander run keeps its trace in memory (lander::LanderSample, about 0.4 kB each): duration_s x
+// A lander run keeps its trace in memory (lander::LanderSample, 816 bytes each with the poses): duration_s x
 // sample_rate_hz is capped at load.
 inline constexpr double kLanderMaxTraceSamples = 1e6;
 
@@ -127,8 +127,8 @@ void WriteLanderTraceCsv(const LanderRun& run, const std::string& path);
 // (drop_tests/io/paths_in_outputs.h: no absolute paths of this machine).
 void WriteResolvedLanderScenario(const LanderScenario& scenario, const std::string& path,
                                  const std::string& output_dir);
-// summary.json, trace.csv, events.csv, scenario_resolved.yaml and plots/ into a staging
-// directory renamed to out_dir when complete.
+// summary.json, trace.csv, events.csv, scenario_resolved.yaml, plots/ and vtk/ (lander_vtk.h) into a
+// staging directory renamed to out_dir when complete.
 void WriteLanderOutputs(const LanderRun& run, const io::OutputTarget& out);
 
 }  // namespace touchdown::scenario

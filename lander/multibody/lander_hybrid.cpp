@@ -123,6 +123,7 @@ void LanderHybrid::Record(double t, const Eigen::VectorXd& s) {
   x.v_WB_W = e.pose.v_WB_W;
   x.w_WB_W = e.pose.w_WB_W;
   x.attitude = BodyAttitude(e.pose.R_WB);
+  x.q_WB = s.segment<4>(L_.quat_B()).normalized();
   x.a_WB_W = e.u_dot.head<3>();
   for (int i = 0; i < kNumLegs; ++i) {
     x.pad_depth_m[i] = PadDepth(model_, terrain_, i, e.pose.pads[i]);
@@ -130,6 +131,10 @@ void LanderHybrid::Record(double t, const Eigen::VectorXd& s) {
     x.stroke_m[i] = L_.stroke_slot[i] >= 0 ? s[L_.stroke(i)] : 0.0;
     x.leg_force_N[i] = e.leg_force_N[i];
     x.pad_held[i] = modes_.pad[i] == PadMode::kHeld;
+    x.q_WP[i] = s.segment<4>(L_.quat_P(i)).normalized();
+    x.p_WJ[i] = e.pose.pads[i].p_WJ;
+    x.v_WJ_W[i] = e.pose.pads[i].v_WJ_W;
+    x.w_WP_W[i] = e.pose.pads[i].w_WP_W;
     result_.peak_pad_force_N[i] = std::max(result_.peak_pad_force_N[i], e.soil[i].force_W.norm());
     if (modes_.pad[i] == PadMode::kHeld)
       result_.max_held_drift_m = std::max(result_.max_held_drift_m, (e.pose.pads[i].p_WJ - held_at_[i]).norm());

@@ -62,6 +62,12 @@ struct LanderSample {
   std::array<double, kNumLegs> leg_force_N{};
   std::array<int, kNumLegs> pad_held{};
   double kinetic_J = 0.0, potential_J = 0.0, dissipated_J = 0.0;
+  // The poses, so that outputs can draw the lander (ParaView) and anything can be animated: unit
+  // quaternions (w, x, y, z) of the body (B to W) and of each pad (P to W) as integrated, each
+  // pad's joint centre, its velocity and the pad's angular velocity (W).
+  Eigen::Vector4d q_WB{1.0, 0.0, 0.0, 0.0};
+  std::array<Eigen::Vector4d, kNumLegs> q_WP;
+  std::array<Eigen::Vector3d, kNumLegs> p_WJ, v_WJ_W, w_WP_W;
 };
 
 enum class LanderEventKind {

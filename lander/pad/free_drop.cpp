@@ -122,6 +122,11 @@ FreeDropResult Stroke(integ::HybridRun& run, const FreePadDynamics& pad, const E
     }
     result.trace.push_back({t, std::max(pad.Depth(s), 0.0), -s.v_WC.z(), f.z(), f.x(), s.p_WC.x() - xy_C0.x(),
                             units::RadToDeg(TiltFromVertical(s.R_WB))});
+    FreeDropSample& pose = result.trace.back();
+    pose.p_WB = s.p_WB;
+    pose.q_WB = state.segment<4>(kQ).normalized();
+    pose.v_WB_W = s.v_WB;
+    pose.w_W = s.w_W;
     result.peak_force_N = std::max(result.peak_force_N, f.z());
     if (moving) result.max_deceleration_m_s2 = std::max(result.max_deceleration_m_s2, f.z() / m - g);
   };

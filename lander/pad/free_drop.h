@@ -65,6 +65,13 @@ struct FreeDropSample {
   double force_x_N = 0.0;        // horizontal soil force along x
   double horizontal_m = 0.0;     // centre-of-mass travel along x since touchdown
   double tilt_deg = 0.0;         // pad z axis from the vertical
+  // The full pose, so that outputs can draw the pad (ParaView) and anything can be animated: the
+  // pad frame's origin (its reference point) and attitude (unit quaternion w, x, y, z, B to W, as
+  // integrated), the reference point's velocity and the angular velocity, both in W.
+  Eigen::Vector3d p_WB = Eigen::Vector3d::Zero();
+  Eigen::Vector4d q_WB{1.0, 0.0, 0.0, 0.0};
+  Eigen::Vector3d v_WB_W = Eigen::Vector3d::Zero();
+  Eigen::Vector3d w_W = Eigen::Vector3d::Zero();
 };
 
 struct FreeDropResult {

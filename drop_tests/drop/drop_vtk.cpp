@@ -1,0 +1,52 @@
+#include "drop_tests/drop/drop_vtk.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <stdexcept>
+
+#include "drop_tests/drop/drop_factory.h"
+#include "drop_tests/io/vtk_pieces.h"
+#include "drop_tests/io/vtk_series.h"
+#include "rft/element_stresses.h"
+
+namespace touchdown::drop {
+
+namespace {
+// The soil square: around the pad's path, two pad radii beyond it on every side.
+io::VtkPolyData SoilPiece(const pad::FreeDropResult& r, const io::PadSurfaceMesh& mesh) {
+  const double radius = mesh.points_B.colwise().norm().maxCoeff();
+  Eigen::Vector2d lo = r.trace.front().p_WB.head<2>(), hi = lo;
+  for (const pad::FreeDropSample& s : r.trace) {
+    lo = lo.cwiseMin(s.p_WB.head<2>());
+    hi = hi.cwiseMax(s.p_WB.head<2>());
+  }
+  const double half_width = 0.5 * (hi - lo).maxCoeff() + 2.0 * radius;
+  return io::SoilSurfacePiece(rft::PlaneGround(), 0.5 * (lo + hi), half_width, 20, [](double, double) { return 0; });
+}
+}  // namespace
+
+void CheckDropVtkTarget(const io::OutputTarget& dir) { io::CheckOutputDirectory(dir, io::OutputKind::kDropVtk); }
+
+void WriteDropVtk(const PadDrop& drop, const io::PadSpec& pad, const io::OutputTarget& dir) {
+  if (!drop.free) throw std::logic_error("WriteDropVtk: not a free drop");
+  const pad::FreeDropResult& r = *drop.free;
+  const DropConditions& c = drop.conditions;
+  const rft::SoilContactModel contact =
+      MakeFreeLaw(DropSoil(drop.soil, c.zeta_N_m3, c.atmosphere), c.law_3d, c.gravity_m_s2, c.effects, c.effects_source);
+  const io::PadSurfaceMesh mesh = io::MakePadSurfaceMesh(pad.body.surface);
+  const rft::PlaneGround ground;  // the free drop's bed (rft::UniformTerrain's surface)
+  io::WriteOutputDirectory(dir, io::OutputKind::kDropVtk, [&](const std::string& staging) {
+    io::VtkSeries series(staging, "drop");
+    rft::ElementStresses stresses;
+    for (const pad::FreeDropSample& s : r.trace) {
+      const Eigen::Matrix3d R_WB = Eigen::Quaterniond(s.q_WB[0], s.q_WB[1], s.q_WB[2], s.q_WB[3]).toRotationMatrix();
+      const rft::PadKinematics k{R_WB, s.p_WB, s.v_WB_W, s.w_W};
+      rft::ComputeElementStresses(pad.body.surface, k, ground, *contact.law, contact.pad_terms.depth, &stresses);
+      series.AddFrame(s.t_s, "pad", {io::PadSurfacePiece(mesh, R_WB, s.p_WB, stresses)});
+    }
+    series.AddStaticPart("soil", {SoilPiece(r, mesh)});
+    series.Finish();
+  });
+}
+
+}  // namespace touchdown::drop

@@ -1,0 +1,19 @@
+#pragma once
+// `touchdown drop --free ... --vtk DIR`: the free pad's drop as a ParaView time series
+// (docs/paraview.md). DIR/drop.pvd lists, at every sample of the trace, the pad's surface in world
+// coordinates with its per-element soil stresses (pad_NNNNNN.vtp) and the soil's surface (soil.vtp).
+#include "drop_tests/drop/pad_drop.h"
+#include "drop_tests/io/output_path.h"
+
+namespace touchdown::drop {
+
+// Refuses (InputError, exit 2) a DIR that is not a new or empty directory or an earlier --vtk
+// output: called before the drop runs, so a bad path costs nothing.
+void CheckDropVtkTarget(const io::OutputTarget& dir);
+
+// Writes the series of `drop` (a free drop of `pad`, which carries its 3D body) into `dir`, whole or
+// not at all. The stresses are computed here, at the trace's samples, with the contact model the drop
+// ran with (the drop factory's MakeFreeLaw).
+void WriteDropVtk(const PadDrop& drop, const io::PadSpec& pad, const io::OutputTarget& dir);
+
+}  // namespace touchdown::drop

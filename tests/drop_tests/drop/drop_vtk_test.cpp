@@ -1,0 +1,134 @@
+// `drop --free --vtk DIR` (drop_tests/drop/drop_vtk.h) and the free drop's pose columns: the series
+// lists every sample with its time, its frames hold the stresses the contact gives at that pose, and
+// the trace carries the pose that draws it.
+#include "drop_tests/drop/drop_vtk.h"
+
+#include <Eigen/Geometry>
+#include <filesystem>
+#include <gtest/gtest.h>
+#include <sstream>
+
+#include "drop_tests/drop/drop_factory.h"
+#include "drop_tests/drop/free_drop_output.h"
+#include "rft/element_stresses.h"
+#include "rft/input_error.h"
+#include "rft/units.h"
+#include "tests/drop_tests/io/vtk_xml_reader.h"
+#include "tests/scratch_dir_test.h"
+
+namespace touchdown::drop {
+namespace {
+
+using testing_vtk::DataArray;
+using testing_vtk::ReadXmlFile;
+
+class DropVtkTest : public testing_scratch::ScratchDirTest {
+ protected:
+  static void SetUpTestSuite() {
+    pad_ = new io::PadSpec(io::LoadPad("hex"));
+    soil_ = new rft::SoilParameters(io::LoadSoil("fjs1_cp"));
+    DropConditions c;
+    c.impact_speed_m_s = 1.0;
+    c.free = true;
+    c.tilt_rad = units::DegToRad(5.0);
+    c.tilt_axis = pad::TiltAxis::kY;
+    c.omega_W = Eigen::Vector3d(0.0, 0.0, 2.0);
+    drop_ = new PadDrop(SimulateDrop(*pad_, *soil_, c, {}));
+  }
+  static void TearDownTestSuite() {
+    delete drop_;
+    delete soil_;
+    delete pad_;
+  }
+  static io::PadSpec* pad_;
+  static rft::SoilParameters* soil_;
+  static PadDrop* drop_;
+};
+io::PadSpec* DropVtkTest::pad_ = nullptr;
+rft::SoilParameters* DropVtkTest::soil_ = nullptr;
+PadDrop* DropVtkTest::drop_ = nullptr;
+
+TEST_F(DropVtkTest, SeriesListsEverySampleWithItsTimeAndTheStressesAtThatPose) {
+  const std::string out = Path("vtk");
+  WriteDropVtk(*drop_, *pad_, out);
+  const std::vector<pad::FreeDropSample>& trace = drop_->free->trace;
+  const auto sets = ReadXmlFile(out + "/drop.pvd").One("Collection").All("DataSet");
+  // Samples at the same time (the rest event on the output grid) make one frame.
+  std::vector<double> times;
+  for (const pad::FreeDropSample& s : trace)
+    if (times.empty() || s.t_s > times.back()) times.push_back(s.t_s);
+  ASSERT_GT(times.size(), 10u);
+  ASSERT_EQ(sets.size(), 2 * times.size());  // the pad and the soil at each time
+  for (size_t i = 0; i < times.size(); ++i) {
+    EXPECT_EQ(std::stod(sets[2 * i].Attribute("timestep")), times[i]);
+    EXPECT_EQ(sets[2 * i].Attribute("name"), "pad");
+    EXPECT_EQ(sets[2 * i + 1].Attribute("file"), "soil.vtp");
+    EXPECT_EQ(std::stod(sets[2 * i + 1].Attribute("timestep")), times[i]);
+    EXPECT_TRUE(std::filesystem::is_regular_file(out + "/" + sets[2 * i].Attribute("file")));
+  }
+
+  // A frame in the stroke: its cells are the pad's elements, with the stresses at that sample's pose.
+  const size_t k = trace.size() / 3;
+  const pad::FreeDropSample& s = trace[k];
+  const auto frame = ReadXmlFile(out + "/" + sets[2 * k].Attribute("file"));
+  const auto pieces = testing_vtk::VtpPieces(frame);
+  ASSERT_EQ(pieces.size(), 1u);
+  const rft::SurfaceElements& surface = pad_->body.surface;
+  ASSERT_EQ(pieces[0].Attribute("NumberOfPolys"), std::to_string(surface.size()));
+  const DropConditions& c = drop_->conditions;
+  const rft::SoilContactModel contact =
+      MakeFreeLaw(DropSoil(*soil_, c.zeta_N_m3, c.atmosphere), c.law_3d, c.gravity_m_s2, c.effects, "");
+  const Eigen::Matrix3d R = Eigen::Quaterniond(s.q_WB[0], s.q_WB[1], s.q_WB[2], s.q_WB[3]).toRotationMatrix();
+  rft::ElementStresses expected;
+  rft::ComputeElementStresses(surface, {R, s.p_WB, s.v_WB_W, s.w_W}, rft::PlaneGround(), *contact.law,
+                              contact.pad_terms.depth, &expected);
+  const testing_vtk::XmlElement cells = pieces[0].One("CellData");
+  const std::vector<double> normal = DataArray(cells, "normal_stress_Pa").Numbers();
+  const std::vector<double> depth = DataArray(cells, "depth_m").Numbers();
+  ASSERT_EQ(normal.size(), static_cast<size_t>(surface.size()));
+  double largest = 0.0;
+  for (int i = 0; i < surface.size(); ++i) {
+    EXPECT_NEAR(normal[i], expected.normal_Pa[i], 1e-12 * std::abs(expected.normal_Pa[i]));
+    EXPECT_NEAR(depth[i], expected.depth_m[i], 1e-12 * std::abs(expected.depth_m[i]));
+    largest = std::max(largest, normal[i]);
+  }
+  EXPECT_GT(largest, 1000.0);  // the pad is in the soil: real stresses, not zeros
+  // The elements' forces are the drop's soil force at that sample (vertical, within the contact's
+  // reuse of stresses per normal class).
+  EXPECT_NEAR(expected.force_W.row(2).sum(), s.force_N, 1e-9 * s.force_N);
+}
+
+TEST_F(DropVtkTest, RefusesADirectoryOfTheUsers) {
+  std::filesystem::create_directories(Path("mine"));
+  Write("mine/keep.txt", "mine\n");
+  EXPECT_THROW(CheckDropVtkTarget(Path("mine")), InputError);
+  EXPECT_THROW(WriteDropVtk(*drop_, *pad_, Path("mine")), InputError);
+  EXPECT_EQ(Slurp(Path("mine/keep.txt")), "mine\n");
+}
+
+TEST_F(DropVtkTest, TraceCarriesThePoseAfterTheEarlierColumns) {
+  std::ostringstream out;
+  WriteFreeDropTraceCsv(*drop_->free, out);
+  std::istringstream in(out.str());
+  std::string header, row;
+  std::getline(in, header);
+  EXPECT_EQ(header,
+            "t_s,penetration_m,velocity_m_s,force_N,force_x_N,horizontal_m,tilt_deg,"
+            "x_m,y_m,z_m,qw,qx,qy,qz,wx_rad_s,wy_rad_s,wz_rad_s");
+  for (const pad::FreeDropSample& s : drop_->free->trace) {
+    ASSERT_TRUE(std::getline(in, row));
+    std::vector<double> v;
+    std::stringstream cells(row);
+    for (std::string cell; std::getline(cells, cell, ',');) v.push_back(std::stod(cell));
+    ASSERT_EQ(v.size(), 17u);
+    const Eigen::Quaterniond q(v[10], v[11], v[12], v[13]);
+    EXPECT_NEAR(q.norm(), 1.0, 1e-9);
+    // The attitude gives the tilt column (10 significant digits written).
+    EXPECT_NEAR(units::RadToDeg(std::acos(std::clamp(q.toRotationMatrix()(2, 2), -1.0, 1.0))), v[6], 1e-6);
+    EXPECT_NEAR(v[9], s.p_WB.z(), 1e-9 * (1.0 + std::abs(s.p_WB.z())));
+    EXPECT_NEAR(v[16], s.w_W.z(), 1e-9 * (1.0 + std::abs(s.w_W.z())));
+  }
+}
+
+}  // namespace
+}  // namespace touchdown::drop
