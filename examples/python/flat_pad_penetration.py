@@ -29,7 +29,7 @@ def simulate():
 
 
 def plot(drops):
-    fig, ax = plt.subplots(figsize=(6.4, 4.0), dpi=150, layout="constrained")
+    fig, ax = plt.subplots(figsize=(7.2, 4.0), dpi=150, layout="constrained")
     end_ms = 0.0
     for (soil, speed), (summary, trace) in drops.items():
         label, colour = SOILS[soil]
@@ -43,7 +43,7 @@ def plot(drops):
     ax.set_ylabel("penetration [mm]")
     ax.set_title("Flat pad, 1.6 kg, vacuum: simulated (granular RFT)")
     ax.grid(True, alpha=0.3)
-    ax.legend(title="soil, impact speed", fontsize="small", loc="lower right")
+    ax.legend(title="soil, impact speed", fontsize="small", loc="upper left", bbox_to_anchor=(1.02, 1.0))  # off the curves
     return fig
 
 
@@ -57,16 +57,21 @@ def main(argv):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--out", default=".", help="directory for the figure (created if missing)")
     args = parser.parse_args(argv)
+    paths = [os.path.join(args.out, "flat_pad_penetration." + ext) for ext in ("png", "svg")]
+    for path in paths:  # before simulating: say at once that a file is in the way
+        if os.path.lexists(path):
+            print(f"{path}: exists; not replaced (give another --out)", file=sys.stderr)
+            return 2
     drops = simulate()
     for (soil, speed), (summary, _) in drops.items():
         print(f"{soil} {speed:.1f} m/s: final penetration {summary['final_penetration_m'] * 1e3:.2f} mm")
     os.makedirs(args.out, exist_ok=True)
     fig = plot(drops)
-    for ext in ("png", "svg"):
+    for path in paths:
         try:
-            save_new(fig, os.path.join(args.out, "flat_pad_penetration." + ext))
-        except FileExistsError as e:
-            print(f"{e.filename}: exists; not replaced (give another --out)", file=sys.stderr)
+            save_new(fig, path)
+        except FileExistsError:  # appeared meanwhile
+            print(f"{path}: exists; not replaced (give another --out)", file=sys.stderr)
             return 2
     return 0
 

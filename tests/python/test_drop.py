@@ -108,3 +108,22 @@ def test_bad_arguments_raise_the_command_lines_message_with_python_names():
         touchdown.force(pad="flat", soil="fjs1_lp", depth=20.0)
     with pytest.raises(ValueError, match=r"unknown name 'sand' \(known: "):
         touchdown.drop(pad="flat", soil="sand", speed=1.0)
+
+
+def test_drops_in_threads_equal_the_same_drops_in_turn():
+    # The simulation runs without the GIL: two threads simulate at once, with the same results.
+    from concurrent.futures import ThreadPoolExecutor
+
+    speeds = [0.7, 1.0, 1.5, 2.0]
+    in_turn = [touchdown.drop(pad="curved", soil="fjs1_lp", speed=v) for v in speeds]
+    with ThreadPoolExecutor(max_workers=2) as pool:
+        threaded = list(pool.map(lambda v: touchdown.drop(pad="curved", soil="fjs1_lp", speed=v), speeds))
+    assert threaded == in_turn
+
+
+def test_a_mesh_pad_dict_reads_its_mesh_relative_to_the_working_directory(monkeypatch):
+    with open(data_file("pads", "hex.yaml"), encoding="utf-8") as f:
+        hex_pad = yaml.safe_load(f)  # mesh: {file: meshes/hex_pad.stl}, relative to data/pads
+    monkeypatch.chdir(data_file("pads"))
+    kwargs = dict(soil="fjs1_cp", depth=0.005, velocity=(0.0, 0.0, -0.3))
+    assert touchdown.force(pad=hex_pad, **kwargs) == touchdown.force(pad="hex", **kwargs)

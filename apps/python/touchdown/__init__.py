@@ -14,6 +14,7 @@ and the readers give pandas DataFrames of a sweep's database, a dataset and a st
 the command line's one-line message, a path the system refuses OSError, a failed solver
 RuntimeError. docs/python.md describes every function and field.
 """
+import collections.abc
 import contextlib
 import json
 import math
@@ -21,7 +22,18 @@ import numbers
 import os
 import tempfile
 
-from . import _touchdown
+
+def _installed_data_dir():
+    """An installed package (PREFIX/lib/python3/dist-packages/touchdown) uses the data installed
+    beside it (PREFIX/share/touchdown), unless TOUCHDOWN_DATA_DIR says otherwise."""
+    prefix = os.path.abspath(os.path.join(os.path.dirname(__file__), *[os.pardir] * 4))
+    data = os.path.join(prefix, "share", "touchdown")
+    if not os.environ.get("TOUCHDOWN_DATA_DIR") and os.path.isdir(os.path.join(data, "pads")):
+        os.environ["TOUCHDOWN_DATA_DIR"] = data
+
+
+_installed_data_dir()
+from . import _touchdown  # noqa: E402
 from .readers import StabilityStudy, read_dataset, read_stability, read_sweep
 
 __all__ = ["drop", "force", "lander", "data_dir", "read_sweep", "read_dataset", "read_stability", "StabilityStudy"]
@@ -78,7 +90,7 @@ def _catalog_files(**entries):
     with tempfile.TemporaryDirectory(prefix="touchdown_") as tmp:
         files, renames = {}, {}
         for kind, value in entries.items():
-            if isinstance(value, dict):
+            if isinstance(value, collections.abc.Mapping):
                 path = os.path.join(tmp, kind + ".yaml")
                 with open(path, "w", encoding="utf-8") as f:
                     f.write(_yaml_text(_absolute_mesh(value)) + "\n")
@@ -108,7 +120,7 @@ def _absolute_mesh(pad):
 def _yaml_text(value):
     """A dict, list or scalar as YAML flow text: strings quoted, floats in their shortest exact
     form (repr), non-finite floats as YAML's .nan and .inf, so the loader's checks see them."""
-    if isinstance(value, dict):
+    if isinstance(value, collections.abc.Mapping):
         return "{" + ", ".join(_yaml_text(str(k)) + ": " + _yaml_text(v) for k, v in value.items()) + "}"
     if isinstance(value, (list, tuple)):
         return "[" + ", ".join(_yaml_text(v) for v in value) + "]"
