@@ -17,6 +17,9 @@
 #include "drop_tests/io/catalog.h"
 #include "drop_tests/io/output_path.h"
 #include "drop_tests/scenario/lander_scenario.h"
+#include "drop_tests/stability/study.h"
+#include "drop_tests/stability/study_outputs.h"
+#include "drop_tests/sweep/sweep.h"
 #include "lander/integ/cvode_integrator.h"
 #include "rft/input_error.h"
 
@@ -85,6 +88,46 @@ std::string Lander(const std::string& scenario_path, const std::string& model, c
   return scenario::LanderSummaryJson(run).dump(2);
 }
 
+// touchdown sweep (one process, no progress output): runs, or resumes, the plan's drops into
+// out/results.sqlite; the run's counts.
+py::dict RunCounts(const sweep::SweepRunSummary& s) {
+  py::dict d;
+  d["total"] = s.total, d["already_done"] = s.already_done, d["computed"] = s.computed, d["failed"] = s.failed;
+  d["threads"] = s.threads, d["seconds"] = s.seconds;
+  return d;
+}
+
+py::dict Sweep(const std::string& plan_path, const std::string& out, const std::string& model, int threads) {
+  sweep::SweepRunSummary s;
+  {
+    py::gil_scoped_release unlocked;
+    const sweep::SweepPlan plan = sweep::LoadSweepPlan(plan_path, model);
+    io::OpenOutputDirectory({out, {plan_path, model}}, io::OutputKind::kSweep);
+    sweep::SweepRunOptions options;
+    options.threads = threads;
+    options.progress = sweep::ProgressMode::kNone;
+    s = sweep::RunSweep(plan, out, options);
+  }
+  return RunCounts(s);
+}
+
+// touchdown stability: the study's landings as a sweep into `out`, then its analysis there.
+py::dict Stability(const std::string& study_path, const std::string& out, const std::string& model,
+                   std::optional<int64_t> samples, int threads) {
+  sweep::SweepRunSummary s;
+  {
+    py::gil_scoped_release unlocked;
+    const stability::Study study = stability::LoadStudy(study_path, model, samples);
+    io::OpenOutputDirectory({out, {study_path, model}}, io::OutputKind::kSweep);
+    sweep::SweepRunOptions options;
+    options.threads = threads;
+    options.progress = sweep::ProgressMode::kNone;
+    s = sweep::RunSweep(study.plan, out, options);
+    stability::WriteStudyAnalysis(study, out);
+  }
+  return RunCounts(s);
+}
+
 // The command line's exit statuses as Python exceptions, with the same one-line messages:
 // bad input (2) ValueError, a path the OS refused (2) OSError, a failed solver (3) RuntimeError.
 void TranslateErrors(std::exception_ptr error) {
@@ -137,4 +180,7 @@ PYBIND11_MODULE(_touchdown, m) {
       py::arg("pad"), py::arg("soil"), py::arg("depth"), py::arg("tilt_deg"), py::arg("tilt_axis"),
       py::arg("velocity"), py::arg("omega"), py::arg("law"), py::arg("zeta"), py::arg("gravity"));
   m.def("lander", &python::Lander, py::arg("scenario"), py::arg("model"), py::arg("out"));
+  m.def("sweep", &python::Sweep, py::arg("plan"), py::arg("out"), py::arg("model"), py::arg("threads"));
+  m.def("stability", &python::Stability, py::arg("study"), py::arg("out"), py::arg("model"), py::arg("samples"),
+        py::arg("threads"));
 }

@@ -74,3 +74,22 @@ def test_read_stability_gives_summary_tables_and_landings(tmp_path):
     # The table's numbers are the database's, read back exactly.
     p_max = result.percentiles.set_index("metric").loc["max_tilt_deg", "max"]
     assert p_max == result.landings["max_tilt_deg"].max()
+
+
+def test_sweep_from_python_equals_the_command_lines(tiny_sweep, tmp_path):
+    out, _ = tiny_sweep
+    drops = touchdown.sweep(out.parent / "tiny.yaml", tmp_path / "py", threads=2)
+    assert drops.attrs["run"]["computed"] == 4 and drops.attrs["run"]["failed"] == 0
+    pd.testing.assert_frame_equal(drops, touchdown.read_sweep(out), check_exact=True)
+    # A rerun resumes: nothing left to compute.
+    assert touchdown.sweep(out.parent / "tiny.yaml", tmp_path / "py").attrs["run"]["computed"] == 0
+
+
+def test_stability_from_python_writes_the_study(tmp_path):
+    study = tmp_path / "study.yaml"
+    study.write_text("schema_version: 1\ntype: stability\nname: level\n"
+                     f"lander: {{scenario: {data_file('scenarios', 'lander_case_A.yaml')}}}\n"
+                     "grid: {impact_speed_m_s: [0.8]}\n")
+    result = touchdown.stability(study, tmp_path / "out", threads=1)
+    assert result.summary["landings"] == 1 and result.tip_over_map is None
+    assert len(result.landings) == 1 and result.landings["tipped_over"].iloc[0] == 0.0

@@ -36,7 +36,7 @@ _installed_data_dir()
 from . import _touchdown  # noqa: E402
 from .readers import StabilityStudy, read_dataset, read_stability, read_sweep
 
-__all__ = ["drop", "force", "lander", "data_dir", "read_sweep", "read_dataset", "read_stability", "StabilityStudy"]
+__all__ = ["drop", "force", "lander", "sweep", "stability", "data_dir", "read_sweep", "read_dataset", "read_stability", "StabilityStudy"]
 
 
 def data_dir():
@@ -76,6 +76,24 @@ def lander(scenario, *, model=None, out=None):
     outputs (summary.json, trace.csv, events.csv, plots/) into the new directory DIR."""
     return json.loads(_touchdown.lander(scenario=_path_text(scenario), model=_path_text(model),
                                         out=_path_text(out)))
+
+
+def sweep(plan, out, *, model=None, threads=0):
+    """A sweep file run as `touchdown sweep PLAN --out OUT` (one process, every core unless
+    `threads`; a rerun resumes): the drops as read_sweep(out) gives them. df.attrs["run"] holds
+    this run's counts (total, already_done, computed, failed, threads, seconds)."""
+    run = _touchdown.sweep(plan=_path_text(plan), out=_path_text(out), model=_path_text(model), threads=threads)
+    drops = read_sweep(out)
+    drops.attrs["run"] = run
+    return drops
+
+
+def stability(study, out, *, model=None, samples=None, threads=0):
+    """A stability study run as `touchdown stability STUDY --out OUT [--samples N]`: its landings,
+    then summary.json, the CSV tables and plots in OUT; returns read_stability(out)."""
+    _touchdown.stability(study=_path_text(study), out=_path_text(out), model=_path_text(model), samples=samples,
+                         threads=threads)
+    return read_stability(out)
 
 
 def _path_text(path):
