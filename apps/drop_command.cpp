@@ -1,31 +1,22 @@
-#include <cmath>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
 
-#include <sstream>
-
 #include "apps/commands.h"
-#include "drop_tests/io/output_path.h"
-#include "drop_tests/model/model_file.h"
+#include "drop_tests/drop/drop_request.h"
 #include "drop_tests/drop/drop_vtk.h"
-#include "drop_tests/drop/pad_drop.h"
+#include "drop_tests/io/catalog.h"
 #include "rft/input_error.h"
-#include "rft/units.h"
+#include "drop_tests/io/output_path.h"
 
 namespace touchdown::app {
 
 namespace {
-struct DropArgs {
-  std::string pad, soil, trace, model, vtk;
-  double speed_m_s = 0.0;
-  std::optional<double> mass_kg, zeta_N_cm3;
-  double gravity_m_s2 = 9.81;
-  // --free: the 6-DOF pad
-  bool free = false;
-  double tilt_deg = 0.0, horizontal_speed_m_s = 0.0;
-  std::string tilt_axis = "x", law = "li2013";
-  std::vector<double> omega{0.0, 0.0, 0.0};
+// The request (drop_tests/drop/drop_request.h: checked and run there, as for the Python module)
+// and where its trace goes.
+struct DropArgs : drop::DropRequest {
+  std::string trace, vtk;
+  std::vector<double> omega{0.0, 0.0, 0.0};  // CLI11 fills a vector; the request takes its three components
 };
 }  // namespace
 
@@ -52,32 +43,9 @@ void AddDropCommand(CLI::App& app) {
                   "--free: write a ParaView time series into this new directory (drop.pvd: the pad with its "
                   "per-element soil stresses at every trace sample, and the soil surface; docs/paraview.md)");
   cmd->callback([args] {
-    drop::DropConditions c;
-    c.impact_speed_m_s = args->speed_m_s;
-    c.mass_kg = args->mass_kg;
-    c.gravity_m_s2 = args->gravity_m_s2;
-    if (args->zeta_N_cm3) c.zeta_N_m3 = units::ZetaFromN_cm3(*args->zeta_N_cm3);
-    for (double v : {args->tilt_deg, args->horizontal_speed_m_s, args->omega[0], args->omega[1], args->omega[2]})
-      if (!std::isfinite(v))
-        throw MakeInputError("command line", "--free", "tilt, horizontal speed and omega must be finite");
-    if (!(std::abs(args->tilt_deg) < 90.0)) {
-      std::ostringstream s;
-      s << "must be between -90 and 90 deg, got " << args->tilt_deg;
-      throw MakeInputError("command line", "--tilt-deg", s.str());
-    }
-    if (args->free) {
-      c.free = true;
-      c.tilt_rad = units::DegToRad(args->tilt_deg);
-      c.tilt_axis = pad::ParseTiltAxis(args->tilt_axis, "command line");
-      c.horizontal_speed_m_s = args->horizontal_speed_m_s;
-      c.omega_W = Eigen::Vector3d(args->omega[0], args->omega[1], args->omega[2]);
-      c.law_3d = rft::ParseLawKind(args->law, "command line", "--law");
-    } else if (args->tilt_deg != 0.0 || args->horizontal_speed_m_s != 0.0 ||
-               args->omega != std::vector<double>{0.0, 0.0, 0.0}) {
-      throw MakeInputError("command line", "--free",
-                           "--tilt-deg, --horizontal-speed and --omega need --free (the rig drop is vertical)");
-    }
-    drop::ValidateConditions(c, "command line");
+    drop::DropRequest r = *args;
+    r.omega_rad_s = {args->omega[0], args->omega[1], args->omega[2]};
+    const drop::DropConditions c = drop::RequestConditions(r, drop::RequestNaming{});
     const io::OutputTarget trace(args->trace, {args->pad, args->soil, args->model});
     if (!args->trace.empty()) io::CheckOutputFile(trace);
     const io::OutputTarget vtk(args->vtk, {args->pad, args->soil, args->model, args->trace});
@@ -85,17 +53,10 @@ void AddDropCommand(CLI::App& app) {
       if (!c.IsFree()) throw MakeInputError("command line", "--vtk", "needs --free (the rig's pad is not drawn)");
       drop::CheckDropVtkTarget(vtk);
     }
-    const io::PadSpec pad = io::LoadPad(args->pad);
-    rft::SoilParameters soil = io::LoadSoil(args->soil);
-    if (!args->model.empty()) {
-      const model::ModelFile model = model::LoadModelFile(args->model);
-      soil = model::ApplyModel(model, soil);
-      c.effects = model::ModelEffectTerms(model);
-      c.effects_source = args->model;
-    }
-    const drop::PadDrop result = drop::SimulateDrop(pad, soil, c, {});
+    const drop::PadDrop result = drop::RunDropRequest(r, c);
     if (!args->trace.empty()) drop::WriteTraceCsv(result, trace);
-    if (!args->vtk.empty()) drop::WriteDropVtk(result, pad, vtk);
+    // The pad again with its 3D body (a PadDrop keeps the pad without it): the frames draw its surface.
+    if (!args->vtk.empty()) drop::WriteDropVtk(result, io::LoadPad(args->pad), vtk);
     std::cout << drop::SummaryJson(result).dump(2) << std::endl;
   });
 }

@@ -1,53 +1,21 @@
 // touchdown force: the quasi-static soil wrench on a pad held at a depth, tilt and rigid motion.
-#include <cmath>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
 #include "apps/commands.h"
-#include "drop_tests/io/catalog.h"
+#include "drop_tests/drop/force_request.h"
 #include "drop_tests/io/output_path.h"
-#include "drop_tests/io/vtk_pieces.h"
-#include "lander/pad/pad_pose.h"
-#include "rft/contact_wrench.h"
-#include "rft/element_stresses.h"
-#include "rft/input_error.h"
-#include "rft/physical_limits.h"
-#include "rft/stress_law_3d_factory.h"
-#include "rft/units.h"
 
 namespace touchdown::app {
 
 namespace {
-struct ForceArgs {
-  std::string pad, soil, law = "li2013", tilt_axis = "x", vtk;
-  double depth_m = 0.0, tilt_deg = 0.0, gravity_m_s2 = 9.81;
+// The request (drop_tests/drop/force_request.h: checked and computed there, as for the Python
+// module); CLI11 fills vectors, the request takes their three components.
+struct ForceArgs : drop::ForceRequest {
   std::vector<double> velocity{0.0, 0.0, -1.0}, omega{0.0, 0.0, 0.0};
-  std::optional<double> zeta_N_cm3;
+  std::string vtk;
 };
-
-Eigen::Vector3d Vector3(const std::vector<double>& v, const std::string& field) {
-  for (double c : v)
-    if (!std::isfinite(c)) throw MakeInputError("command line", field, "components must be finite");
-  return {v[0], v[1], v[2]};
-}
-
-void RequireFinite(double v, const std::string& field, bool positive) {
-  if (!std::isfinite(v) || (positive && !(v > 0.0))) {
-    std::ostringstream s;
-    s << "must be " << (positive ? "positive and " : "") << "finite, got " << v;
-    throw MakeInputError("command line", field, s.str());
-  }
-}
-// --vtk: the pad at its pose with the stress on each surface element (docs/paraview.md).
-void WriteForceVtk(const io::OutputTarget& target, const geom::PadBody& body, const rft::PadKinematics& k,
-                   const rft::StressLaw3D& law) {
-  rft::ElementStresses stresses;
-  rft::ComputeElementStresses(body.surface, k, rft::PlaneGround(), law, rft::DepthLaw{}, &stresses);
-  const io::VtkPolyData piece = io::PadSurfacePiece(io::MakePadSurfaceMesh(body.surface), k.R_WB, k.p_WB, stresses);
-  io::WriteOutputFile(target, [&](std::ostream& out) { io::WriteVtp({piece}, out); });
-}
 }  // namespace
 
 void AddForceCommand(CLI::App& app) {
@@ -65,48 +33,15 @@ void AddForceCommand(CLI::App& app) {
   cmd->add_option("--zeta", a->zeta_N_cm3, "override the soil's zeta [N/cm^3] (li2013)");
   cmd->add_option("--gravity", a->gravity_m_s2, "gravity [m/s^2] the soil stresses scale with (default 9.81)");
   cmd->add_option("--vtk", a->vtk,
-                  "write the pad at this pose with the soil stress on each surface element to this new .vtp file "
+                  "write the pad at its pose with the soil stress on each surface element to this new .vtp file "
                   "(ParaView; docs/paraview.md)");
   cmd->callback([a] {
-    limits::Require(limits::kDepth_m, a->depth_m, "command line", "--depth");
-    limits::Require(limits::kForceTilt_deg, a->tilt_deg, "command line", "--tilt-deg");
-    RequireFinite(a->gravity_m_s2, "gravity_m_s2", true);
-    if (a->zeta_N_cm3) limits::Require(limits::kZeta_N_cm3, *a->zeta_N_cm3, "command line", "--zeta");
-    rft::PadKinematics k;
-    k.v_WB_W = Vector3(a->velocity, "velocity");
-    k.w_WB_W = Vector3(a->omega, "omega");
-    limits::Require(limits::kSpeed_m_s, k.v_WB_W.stableNorm(), "command line", "--velocity (its magnitude)");
-    limits::Require(limits::kAngularSpeed_rad_s, k.w_WB_W.stableNorm(), "command line", "--omega (its magnitude)");
-    if (k.v_WB_W.norm() == 0.0 && k.w_WB_W.norm() == 0.0)
-      throw MakeInputError("command line", "velocity", "the pad must move (RFT needs a direction of motion)");
-    const pad::TiltAxis axis = pad::ParseTiltAxis(a->tilt_axis);
+    drop::ForceRequest r = *a;
+    r.velocity_m_s = {a->velocity[0], a->velocity[1], a->velocity[2]};
+    r.omega_rad_s = {a->omega[0], a->omega[1], a->omega[2]};
     const io::OutputTarget vtk(a->vtk, {a->pad, a->soil});
     if (!a->vtk.empty()) io::CheckOutputFile(vtk);
-    k.R_WB = pad::TiltRotation(axis, units::DegToRad(a->tilt_deg));
-    const io::PadSpec pad = io::LoadPad(a->pad);
-    rft::SoilParameters soil = io::LoadSoil(a->soil);
-    if (a->zeta_N_cm3) soil.zeta_N_m3 = units::ZetaFromN_cm3(*a->zeta_N_cm3);
-    const std::unique_ptr<rft::StressLaw3D> law = rft::MakeStressLaw3D(rft::ParseLawKind(a->law, "command line", "--law"), soil, a->gravity_m_s2);
-    k.p_WB = pad::PlaceAtDepth(pad.body, k.R_WB, a->depth_m);
-    const rft::ContactWrench w = rft::ComputeContactWrench(pad.body.surface, k, rft::PlaneGround(), *law);
-    const nlohmann::json out{
-        {"pad", pad.name},
-        {"soil", soil.name},
-        {"law", std::string(law->name())},
-        {"depth_m", a->depth_m},
-        {"tilt_deg", a->tilt_deg},
-        {"tilt_axis", pad::TiltAxisName(axis)},
-        {"velocity_m_s", a->velocity},
-        {"omega_rad_s", a->omega},
-        {"reference_point_m", {k.p_WB.x(), k.p_WB.y(), k.p_WB.z()}},
-        {"force_N", {w.force_W.x(), w.force_W.y(), w.force_W.z()}},
-        {"moment_Nm", {w.moment_W.x(), w.moment_W.y(), w.moment_W.z()}},
-        {"submerged_area_m2", w.submerged_area_m2},
-        {"leading_elements", w.leading_elements},
-        {"surface_elements", pad.body.surface.size()},
-    };
-    if (!a->vtk.empty()) WriteForceVtk(vtk, pad.body, k, *law);
-    std::cout << out.dump(2) << std::endl;
+    std::cout << drop::ForceJson(r, drop::RequestNaming{}, a->vtk.empty() ? nullptr : &vtk).dump(2) << std::endl;
   });
 }
 

@@ -10,6 +10,7 @@ packages=(
   gnuplot-nox
   libsqlite3-dev sqlite3 libopenmpi-dev openmpi-bin libboost-dev
   clang libclang-rt-14-dev
+  pybind11-dev python3-dev python3-pybind11 python3-numpy python3-pandas python3-pytest python3-matplotlib python3-yaml
 )
 missing=()
 for p in "${packages[@]}"; do

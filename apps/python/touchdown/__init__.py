@@ -1,0 +1,160 @@
+"""touchdown from Python: lander footpads hitting granular soil (granular RFT).
+
+The functions mirror the command line and return what it prints, as Python objects:
+
+    import touchdown
+    summary = touchdown.drop(pad="flat", soil="fjs1_lp", speed=1.0)      # touchdown drop ...
+    summary, trace = touchdown.drop(pad="flat", soil="fjs1_lp", speed=1.0, trace=True)
+    touchdown.force(pad="flat", soil="fjs1_lp", depth=0.01)             # touchdown force ...
+    touchdown.lander("data/scenarios/lander_case_A.yaml")                # touchdown lander ...
+
+and the readers give pandas DataFrames of a sweep's database, a dataset and a stability study
+(read_sweep, read_dataset, read_stability). Pads and soils are catalogue names ("flat",
+"fjs1_lp"), YAML files, or dicts with a YAML file's content. Bad input raises ValueError with
+the command line's one-line message, a path the system refuses OSError, a failed solver
+RuntimeError. docs/python.md describes every function and field.
+"""
+import collections.abc
+import contextlib
+import json
+import math
+import numbers
+import os
+import tempfile
+
+
+def _installed_data_dir():
+    """An installed package (PREFIX/lib/python3/dist-packages/touchdown) uses the data installed
+    beside it (PREFIX/share/touchdown), unless TOUCHDOWN_DATA_DIR says otherwise."""
+    prefix = os.path.abspath(os.path.join(os.path.dirname(__file__), *[os.pardir] * 4))
+    data = os.path.join(prefix, "share", "touchdown")
+    if not os.environ.get("TOUCHDOWN_DATA_DIR") and os.path.isdir(os.path.join(data, "pads")):
+        os.environ["TOUCHDOWN_DATA_DIR"] = data
+
+
+_installed_data_dir()
+from . import _touchdown  # noqa: E402
+from .readers import StabilityStudy, read_dataset, read_stability, read_sweep
+
+__all__ = ["drop", "force", "lander", "sweep", "stability", "data_dir", "read_sweep", "read_dataset", "read_stability", "StabilityStudy"]
+
+
+def data_dir():
+    """The directory of the bundled pads, soils and scenarios ($TOUCHDOWN_DATA_DIR when set)."""
+    return _touchdown.data_dir()
+
+
+def drop(pad, soil, speed, *, mass=None, gravity=9.81, zeta=None, model=None, free=False, tilt_deg=0.0,
+         tilt_axis="x", horizontal_speed=0.0, omega=(0.0, 0.0, 0.0), law="li2013", trace=False):
+    """One drop, as `touchdown drop`: the summary dict the command prints as JSON.
+
+    With trace=True, returns (summary, trace): trace maps the trace CSV's column names (t_s,
+    penetration_m, velocity_m_s, force_N; a free drop adds force_x_N, horizontal_m, tilt_deg) to
+    NumPy arrays.
+    """
+    with _catalog_files(pad=pad, soil=soil) as files:
+        summary, columns = _touchdown.drop(
+            pad=files["pad"], soil=files["soil"], speed=speed, mass=mass, gravity=gravity, zeta=zeta,
+            model=_path_text(model), free=free, tilt_deg=tilt_deg, tilt_axis=tilt_axis,
+            horizontal_speed=horizontal_speed, omega=tuple(omega), law=law, trace=trace)
+    result = json.loads(summary)
+    return (result, columns) if trace else result
+
+
+def force(pad, soil, depth, *, tilt_deg=0.0, tilt_axis="x", velocity=(0.0, 0.0, -1.0), omega=(0.0, 0.0, 0.0),
+          law="li2013", zeta=None, gravity=9.81):
+    """The quasi-static soil wrench on a pad held at a depth, as `touchdown force` (a dict)."""
+    with _catalog_files(pad=pad, soil=soil) as files:
+        text = _touchdown.force(pad=files["pad"], soil=files["soil"], depth=depth, tilt_deg=tilt_deg,
+                                tilt_axis=tilt_axis, velocity=tuple(velocity), omega=tuple(omega), law=law,
+                                zeta=zeta, gravity=gravity)
+    return json.loads(text)
+
+
+def lander(scenario, *, model=None, out=None):
+    """A lander scenario file run as `touchdown lander`: its summary dict. With out=DIR, also its
+    outputs (summary.json, trace.csv, events.csv, plots/) into the new directory DIR."""
+    return json.loads(_touchdown.lander(scenario=_path_text(scenario), model=_path_text(model),
+                                        out=_path_text(out)))
+
+
+def sweep(plan, out, *, model=None, threads=0):
+    """A sweep file run as `touchdown sweep PLAN --out OUT` (one process, every core unless
+    `threads`; a rerun resumes): the drops as read_sweep(out) gives them. df.attrs["run"] holds
+    this run's counts (total, already_done, computed, failed, threads, seconds)."""
+    run = _touchdown.sweep(plan=_path_text(plan), out=_path_text(out), model=_path_text(model), threads=threads)
+    drops = read_sweep(out)
+    drops.attrs["run"] = run
+    return drops
+
+
+def stability(study, out, *, model=None, samples=None, threads=0):
+    """A stability study run as `touchdown stability STUDY --out OUT [--samples N]`: its landings,
+    then summary.json, the CSV tables and plots in OUT; returns read_stability(out)."""
+    _touchdown.stability(study=_path_text(study), out=_path_text(out), model=_path_text(model), samples=samples,
+                         threads=threads)
+    return read_stability(out)
+
+
+def _path_text(path):
+    return "" if path is None else os.fspath(path)
+
+
+@contextlib.contextmanager
+def _catalog_files(**entries):
+    """Names and paths as they are; each dict written as a YAML file into a temporary directory
+    that the loaders read like any other (same validation, same errors: the temporary path in a
+    message becomes "pad dict" or "soil dict")."""
+    with tempfile.TemporaryDirectory(prefix="touchdown_") as tmp:
+        files, renames = {}, {}
+        for kind, value in entries.items():
+            if isinstance(value, collections.abc.Mapping):
+                path = os.path.join(tmp, kind + ".yaml")
+                with open(path, "w", encoding="utf-8") as f:
+                    f.write(_yaml_text(_absolute_mesh(value)) + "\n")
+                files[kind], renames[path] = path, kind + " dict"
+            else:
+                files[kind] = os.fspath(value)
+        try:
+            yield files
+        except (ValueError, OSError, RuntimeError) as e:
+            message = str(e)
+            if not any(path in message for path in renames):
+                raise
+            for path, name in renames.items():
+                message = message.replace(path, name)
+            raise type(e)(message) from None
+
+
+def _absolute_mesh(pad):
+    """A mesh file named relative in a dict is relative to the working directory (a pad file's is
+    relative to the file)."""
+    mesh = pad.get("mesh")
+    if isinstance(mesh, dict) and isinstance(mesh.get("file"), (str, os.PathLike)):
+        return {**pad, "mesh": {**mesh, "file": os.path.abspath(mesh["file"])}}
+    return pad
+
+
+def _yaml_text(value):
+    """A dict, list or scalar as YAML flow text: strings quoted, floats in their shortest exact
+    form (repr), non-finite floats as YAML's .nan and .inf, so the loader's checks see them."""
+    if isinstance(value, collections.abc.Mapping):
+        return "{" + ", ".join(_yaml_text(str(k)) + ": " + _yaml_text(v) for k, v in value.items()) + "}"
+    if isinstance(value, (list, tuple)):
+        return "[" + ", ".join(_yaml_text(v) for v in value) + "]"
+    if value is None:
+        return "null"
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, numbers.Integral):
+        return str(int(value))
+    if isinstance(value, numbers.Real):
+        x = float(value)
+        if math.isnan(x):
+            return ".nan"
+        if math.isinf(x):
+            return ".inf" if x > 0 else "-.inf"
+        return repr(x)
+    if hasattr(value, "tolist"):  # a NumPy array or scalar
+        return _yaml_text(value.tolist())
+    return json.dumps(os.fspath(value) if isinstance(value, os.PathLike) else str(value), ensure_ascii=False)

@@ -1,0 +1,110 @@
+"""Readers of touchdown's outputs as pandas DataFrames (pure Python: sqlite3, csv, json).
+
+    read_sweep(path)        a sweep's results database (DIR/results.sqlite, or DIR)
+    read_dataset(dir)       a dataset directory (drops.csv and its traces)
+    read_stability(dir)     a stability study's outputs (summary.json, CSV tables, landings)
+
+The formats: drop_tests/sweep/results_db.h, drop_tests/dataset/dataset.h,
+drop_tests/stability/study_outputs.h. Numbers read back exactly (the database holds IEEE doubles;
+CSV numbers are parsed with pandas' round-trip parser).
+"""
+import json
+import os
+import sqlite3
+from dataclasses import dataclass
+
+# The columns of a trace BLOB in the sweep database (pad::DropSample, four float64 per sample).
+SWEEP_TRACE_COLUMNS = ("t_s", "penetration_m", "velocity_m_s", "force_N")
+
+
+def _pandas():
+    import pandas  # imported when a reader is used, so `import touchdown` works without pandas
+
+    return pandas
+
+
+def _results_db(path):
+    path = os.fspath(path)
+    if os.path.isdir(path):
+        path = os.path.join(path, "results.sqlite")
+    if not os.path.isfile(path):
+        raise ValueError(f"{path}: no sweep results database (results.sqlite)")
+    return path
+
+
+def read_sweep(path, traces=False):
+    """A sweep's drops as a DataFrame, one row per stored drop in drop_index order, the columns of
+    the database's `drops` table (NULL metrics, failed or not applicable, as NaN). `path` is the
+    results.sqlite file or the sweep's output directory. df.attrs["meta"] holds the meta table.
+
+    With traces=True, returns (drops, traces): traces maps drop_index to a DataFrame with the
+    columns t_s, penetration_m, velocity_m_s, force_N (drops stored with traces only).
+    """
+    pd = _pandas()
+    uri = "file:" + _results_db(path) + "?mode=ro"
+    with sqlite3.connect(uri, uri=True) as db:
+        drops = pd.read_sql_query("SELECT * FROM drops ORDER BY drop_index", db)
+        drops.attrs["meta"] = dict(db.execute("SELECT key, value FROM meta").fetchall())
+        if not traces:
+            return drops
+        rows = db.execute("SELECT drop_index, samples, data FROM traces ORDER BY drop_index").fetchall()
+    import numpy as np
+
+    by_drop = {}
+    for index, samples, blob in rows:
+        values = np.frombuffer(blob, dtype="<f8").reshape(samples, len(SWEEP_TRACE_COLUMNS))
+        by_drop[index] = pd.DataFrame(values.copy(), columns=list(SWEEP_TRACE_COLUMNS))
+    return drops, by_drop
+
+
+def _read_csv(path, **kwargs):
+    return _pandas().read_csv(path, float_precision="round_trip", **kwargs)
+
+
+# drops.csv columns that are text (drop ids such as "001" stay text).
+_DATASET_TEXT_COLUMNS = {"drop_id": str, "pad": str, "soil": str, "atmosphere": str, "trace": str}
+
+
+def read_dataset(directory, traces=False):
+    """A dataset's drops.csv as a DataFrame (the columns drop_id, pad, soil, atmosphere,
+    impact_speed_m_s, pad_mass_kg, gravity_m_s2, trace, then the optional and extra columns).
+
+    With traces=True, returns (drops, traces): traces maps drop_id to the trace's DataFrame
+    (t_s, penetration_m, force_N and any further columns).
+    """
+    directory = os.fspath(directory)
+    drops_csv = os.path.join(directory, "drops.csv")
+    if not os.path.isfile(drops_csv):
+        raise ValueError(f"{directory}: no dataset (drops.csv missing)")
+    drops = _read_csv(drops_csv, dtype=_DATASET_TEXT_COLUMNS, keep_default_na=False, na_values={
+        c: [""] for c in ("final_penetration_m", "peak_force_N")})
+    if not traces:
+        return drops
+    by_drop = {row.drop_id: _read_csv(os.path.join(directory, row.trace)) for row in drops.itertuples()}
+    return drops, by_drop
+
+
+@dataclass
+class StabilityStudy:
+    """A stability study's outputs (docs/stability_studies.md)."""
+
+    summary: dict          # summary.json: landings, tip-over probability and interval, percentiles, map
+    percentiles: object    # percentiles.csv: metric, unit, landings, p50, p95, p99, max
+    tip_over_map: object   # tip_over_map.csv: per map cell, ranges, landings, tip-overs, probability (None: no map)
+    landings: object       # results.sqlite's drops (read_sweep): one row per landing
+
+
+def read_stability(directory):
+    """The outputs of `touchdown stability STUDY.yaml --out DIR` (a finished study: summary.json
+    is written last) as a StabilityStudy of a dict and DataFrames."""
+    directory = os.fspath(directory)
+    summary_json = os.path.join(directory, "summary.json")
+    if not os.path.isfile(summary_json):
+        raise ValueError(f"{directory}: no finished stability study (summary.json missing)")
+    with open(summary_json, encoding="utf-8") as f:
+        summary = json.load(f)
+    map_csv = os.path.join(directory, "tip_over_map.csv")  # only for a study with a `map`
+    return StabilityStudy(summary=summary,
+                          percentiles=_read_csv(os.path.join(directory, "percentiles.csv")),
+                          tip_over_map=_read_csv(map_csv) if os.path.isfile(map_csv) else None,
+                          landings=read_sweep(directory))

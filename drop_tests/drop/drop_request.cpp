@@ -1,0 +1,71 @@
+#include "drop_tests/drop/drop_request.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "drop_tests/model/model_file.h"
+#include "rft/input_error.h"
+#include "rft/units.h"
+
+namespace touchdown::drop {
+
+std::string RequestNaming::Field(std::string_view option) const {
+  std::string name(option);
+  if (command_line) return "--" + name;
+  for (char& c : name)
+    if (c == '-') c = '_';
+  return name;
+}
+
+namespace {
+// Tilt, horizontal speed and angular rate: finite, the tilt below 90 deg, and only for a free pad.
+void CheckFreeMotion(const DropRequest& r, const RequestNaming& n) {
+  for (double v : {r.tilt_deg, r.horizontal_speed_m_s, r.omega_rad_s[0], r.omega_rad_s[1], r.omega_rad_s[2]})
+    if (!std::isfinite(v))
+      throw MakeInputError(n.context, n.Field("free"), "tilt, horizontal speed and omega must be finite");
+  if (!(std::abs(r.tilt_deg) < 90.0)) {
+    std::ostringstream s;
+    s << "must be between -90 and 90 deg, got " << r.tilt_deg;
+    throw MakeInputError(n.context, n.Field("tilt-deg"), s.str());
+  }
+  const bool moves = r.tilt_deg != 0.0 || r.horizontal_speed_m_s != 0.0 ||
+                     r.omega_rad_s != std::array<double, 3>{0.0, 0.0, 0.0};
+  if (!r.free && moves)
+    throw MakeInputError(n.context, n.Field("free"),
+                         n.Field("tilt-deg") + ", " + n.Field("horizontal-speed") + " and " + n.Field("omega") +
+                             " need " + n.Field("free") + " (the rig drop is vertical)");
+}
+}  // namespace
+
+DropConditions RequestConditions(const DropRequest& r, const RequestNaming& naming) {
+  DropConditions c;
+  c.impact_speed_m_s = r.speed_m_s;
+  c.mass_kg = r.mass_kg;
+  c.gravity_m_s2 = r.gravity_m_s2;
+  if (r.zeta_N_cm3) c.zeta_N_m3 = units::ZetaFromN_cm3(*r.zeta_N_cm3);
+  CheckFreeMotion(r, naming);
+  if (r.free) {
+    c.free = true;
+    c.tilt_rad = units::DegToRad(r.tilt_deg);
+    c.tilt_axis = pad::ParseTiltAxis(r.tilt_axis, naming.context);
+    c.horizontal_speed_m_s = r.horizontal_speed_m_s;
+    c.omega_W = Eigen::Vector3d(r.omega_rad_s[0], r.omega_rad_s[1], r.omega_rad_s[2]);
+    c.law_3d = rft::ParseLawKind(r.law, naming.context, naming.Field("law"));
+  }
+  ValidateConditions(c, naming.context);
+  return c;
+}
+
+PadDrop RunDropRequest(const DropRequest& r, DropConditions conditions) {
+  const io::PadSpec pad = io::LoadPad(r.pad);
+  rft::SoilParameters soil = io::LoadSoil(r.soil);
+  if (!r.model.empty()) {
+    const model::ModelFile model = model::LoadModelFile(r.model);
+    soil = model::ApplyModel(model, soil);
+    conditions.effects = model::ModelEffectTerms(model);
+    conditions.effects_source = r.model;
+  }
+  return SimulateDrop(pad, soil, conditions, {});
+}
+
+}  // namespace touchdown::drop

@@ -1,0 +1,45 @@
+#pragma once
+// A drop as a user asks for it, by pad and soil name and in the units of the command line (tilt
+// in degrees, zeta in N/cm^3): the options of `touchdown drop` and the arguments of the Python
+// module's touchdown.drop(). Both check, load and run it here, so both print the same summary
+// (SummaryJson) and refuse the same requests with the same one-line InputError.
+#include <array>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "drop_tests/drop/pad_drop.h"
+
+namespace touchdown::drop {
+
+// How an InputError names a request's fields: the command line's options ("command line",
+// "--tilt-deg") or the Python module's keyword arguments ("touchdown.drop", "tilt_deg").
+struct RequestNaming {
+  std::string context = "command line";
+  bool command_line = true;
+
+  // `option` as the command line spells it without dashes ("tilt-deg"): "--tilt-deg" or "tilt_deg".
+  std::string Field(std::string_view option) const;
+};
+
+struct DropRequest {
+  std::string pad, soil;  // catalogue names or YAML files (io::LoadPad, io::LoadSoil)
+  std::string model;      // a model file (MODEL.yaml), or none
+  double speed_m_s = 0.0;
+  std::optional<double> mass_kg, zeta_N_cm3;
+  double gravity_m_s2 = 9.81;
+  // The free 6-DOF pad: asked for with `free`; tilt, horizontal speed and omega need it.
+  bool free = false;
+  double tilt_deg = 0.0, horizontal_speed_m_s = 0.0;
+  std::string tilt_axis = "x", law = "li2013";
+  std::array<double, 3> omega_rad_s{0.0, 0.0, 0.0};
+};
+
+// The request's conditions (without the model's effects, which RunDropRequest adds), validated:
+// InputError naming the field as `naming` spells it.
+DropConditions RequestConditions(const DropRequest& request, const RequestNaming& naming);
+// Loads the pad, the soil and the model and runs the drop under `conditions`
+// (RequestConditions). A failing integration throws integ::IntegrationFailure.
+PadDrop RunDropRequest(const DropRequest& request, DropConditions conditions);
+
+}  // namespace touchdown::drop

@@ -1,0 +1,32 @@
+#pragma once
+// The quasi-static soil wrench on a pad held at a depth, tilt and rigid motion, as a user asks for
+// it: the options of `touchdown force` and the arguments of the Python module's touchdown.force().
+// Both check and compute it here and get the same JSON (ForceJson).
+#include <array>
+#include <optional>
+#include <string>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "drop_tests/drop/drop_request.h"
+#include "drop_tests/io/output_path.h"
+
+namespace touchdown::drop {
+
+struct ForceRequest {
+  std::string pad, soil;  // catalogue names or YAML files
+  std::string law = "li2013", tilt_axis = "x";
+  double depth_m = 0.0, tilt_deg = 0.0, gravity_m_s2 = 9.81;
+  std::array<double, 3> velocity_m_s{0.0, 0.0, -1.0}, omega_rad_s{0.0, 0.0, 0.0};
+  std::optional<double> zeta_N_cm3;  // overrides the soil's
+};
+
+// Validates the request (InputError naming the field as `naming` spells it), loads the pad and
+// the soil and returns the wrench: pad, soil, law, the request, reference_point_m, force_N,
+// moment_Nm, submerged_area_m2, leading_elements, surface_elements (SI, world frame, z up).
+// With `vtk`: also the pad at its pose with the stress on each surface element, as a .vtp file
+// (ParaView; docs/paraview.md), written whole or not at all.
+nlohmann::json ForceJson(const ForceRequest& request, const RequestNaming& naming,
+                         const io::OutputTarget* vtk = nullptr);
+
+}  // namespace touchdown::drop

@@ -1,0 +1,95 @@
+"""The readers give pandas DataFrames of a sweep database, a dataset and a stability study, with
+the formats' columns and one row per drop or landing, numbers as written."""
+import numpy as np
+import pandas as pd
+
+import touchdown
+from conftest import data_file, run_touchdown, touchdown_json
+
+SWEEP_COLUMNS = ["drop_index", "drop_id", "status", "failure", "pad", "soil", "atmosphere", "impact_speed_m_s",
+                 "pad_mass_kg", "gravity_m_s2", "tilt_deg", "horizontal_speed_m_s", "zeta_N_cm3",
+                 "final_penetration_m", "peak_force_N", "time_to_rest_s", "drop_kind", "tipped_over"]
+
+
+def test_read_sweep_gives_one_row_per_drop(tiny_sweep):
+    out, _ = tiny_sweep
+    drops = touchdown.read_sweep(out)
+    assert isinstance(drops, pd.DataFrame)
+    assert len(drops) == 4
+    assert set(SWEEP_COLUMNS) <= set(drops.columns)
+    assert list(drops["drop_index"]) == [0, 1, 2, 3]
+    assert set(drops["status"]) == {"ok"} and set(drops["drop_kind"]) == {"rig"}
+    assert drops.attrs["meta"]["sweep_name"] == "tiny"
+    assert drops["tipped_over"].isna().all()  # a lander column: NULL for rig drops
+    # The database's metric is the drop's own: the same doubles as touchdown.drop gives.
+    row = drops[(drops["soil"] == "fjs1_lp") & (drops["impact_speed_m_s"] == 1.0)].iloc[0]
+    summary = touchdown.drop(pad="flat", soil="fjs1_lp", speed=1.0)
+    assert row["final_penetration_m"] == summary["final_penetration_m"]
+    assert row["peak_force_N"] == summary["peak_force_N"]
+
+
+def test_read_sweep_traces(tiny_sweep):
+    out, _ = tiny_sweep
+    drops, traces = touchdown.read_sweep(out / "results.sqlite", traces=True)
+    assert sorted(traces) == list(drops["drop_index"])
+    for index, trace in traces.items():
+        assert list(trace.columns) == ["t_s", "penetration_m", "velocity_m_s", "force_N"]
+        assert 2 <= len(trace) <= 16
+        assert np.all(np.diff(trace["t_s"]) > 0)
+        final = drops.loc[drops["drop_index"] == index, "final_penetration_m"].iloc[0]
+        assert abs(trace["penetration_m"].iloc[-1] - final) < 1e-6 * final
+
+
+def test_read_dataset_gives_the_exported_drops(tiny_sweep):
+    out, dataset = tiny_sweep
+    drops, traces = touchdown.read_dataset(dataset, traces=True)
+    assert list(drops.columns[:8]) == ["drop_id", "pad", "soil", "atmosphere", "impact_speed_m_s", "pad_mass_kg",
+                                       "gravity_m_s2", "trace"]
+    assert len(drops) == 4 and len(traces) == 4
+    # Written in shortest round-trip form, read back exactly: the database's doubles.
+    sweep = touchdown.read_sweep(out)
+    assert list(drops["final_penetration_m"]) == list(sweep["final_penetration_m"])
+    for trace in traces.values():
+        assert list(trace.columns[:3]) == ["t_s", "penetration_m", "force_N"]
+    assert len(touchdown.read_dataset(dataset)) == 4
+
+
+def test_read_stability_gives_summary_tables_and_landings(tmp_path):
+    # Four slow, level landings of the paper's lander (case A) on a 2 x 2 map: none tips over.
+    study = tmp_path / "study.yaml"
+    study.write_text("schema_version: 1\ntype: stability\nname: tiny\n"
+                     f"lander: {{scenario: {data_file('scenarios', 'lander_case_A.yaml')}}}\n"
+                     "grid: {impact_speed_m_s: [0.6, 1.0], horizontal_speed_m_s: [0, 0.2]}\n"
+                     "study: {map: {x: impact_speed_m_s, y: horizontal_speed_m_s, bins: [2, 2]}}\n")
+    run_touchdown("stability", study, "--out", tmp_path / "out")
+    result = touchdown.read_stability(tmp_path / "out")
+    assert result.summary["landings"] == 4 and result.summary["tipped_over"] == 0
+    assert list(result.percentiles.columns) == ["metric", "unit", "landings", "p50", "p95", "p99", "max"]
+    assert "max_tilt_deg" in set(result.percentiles["metric"])
+    assert list(result.tip_over_map.columns[:4]) == ["impact_speed_m_s_low", "impact_speed_m_s_high",
+                                                     "horizontal_speed_m_s_low", "horizontal_speed_m_s_high"]
+    assert len(result.tip_over_map) == 4 and list(result.tip_over_map["landings"]) == [1, 1, 1, 1]
+    assert len(result.landings) == 4 and set(result.landings["drop_kind"]) == {"lander"}
+    assert list(result.landings["tipped_over"]) == [0.0] * 4
+    # The table's numbers are the database's, read back exactly.
+    p_max = result.percentiles.set_index("metric").loc["max_tilt_deg", "max"]
+    assert p_max == result.landings["max_tilt_deg"].max()
+
+
+def test_sweep_from_python_equals_the_command_lines(tiny_sweep, tmp_path):
+    out, _ = tiny_sweep
+    drops = touchdown.sweep(out.parent / "tiny.yaml", tmp_path / "py", threads=2)
+    assert drops.attrs["run"]["computed"] == 4 and drops.attrs["run"]["failed"] == 0
+    pd.testing.assert_frame_equal(drops, touchdown.read_sweep(out), check_exact=True)
+    # A rerun resumes: nothing left to compute.
+    assert touchdown.sweep(out.parent / "tiny.yaml", tmp_path / "py").attrs["run"]["computed"] == 0
+
+
+def test_stability_from_python_writes_the_study(tmp_path):
+    study = tmp_path / "study.yaml"
+    study.write_text("schema_version: 1\ntype: stability\nname: level\n"
+                     f"lander: {{scenario: {data_file('scenarios', 'lander_case_A.yaml')}}}\n"
+                     "grid: {impact_speed_m_s: [0.8]}\n")
+    result = touchdown.stability(study, tmp_path / "out", threads=1)
+    assert result.summary["landings"] == 1 and result.tip_over_map is None
+    assert len(result.landings) == 1 and result.landings["tipped_over"].iloc[0] == 0.0
