@@ -47,6 +47,19 @@ py::dict TraceArrays(const drop::PadDrop& d) {
     trace["force_x_N"] = column(s, &S::force_x_N);
     trace["horizontal_m"] = column(s, &S::horizontal_m);
     trace["tilt_deg"] = column(s, &S::tilt_deg);
+    // The pose columns of the trace CSV (drop_tests/drop/free_drop_output.cpp), in its order.
+    auto component = [&s](auto field, int k) {
+      py::array_t<double> a(static_cast<py::ssize_t>(s.size()));
+      double* out = a.mutable_data();
+      for (const S& x : s) *out++ = (x.*field)[k];
+      return a;
+    };
+    const char* position[3] = {"x_m", "y_m", "z_m"};
+    const char* quaternion[4] = {"qw", "qx", "qy", "qz"};
+    const char* rate[3] = {"wx_rad_s", "wy_rad_s", "wz_rad_s"};
+    for (int k = 0; k < 3; ++k) trace[position[k]] = component(&S::p_WB, k);
+    for (int k = 0; k < 4; ++k) trace[quaternion[k]] = component(&S::q_WB, k);
+    for (int k = 0; k < 3; ++k) trace[rate[k]] = component(&S::w_W, k);
   } else {
     const auto& s = d.result.trace;
     using S = pad::DropSample;
