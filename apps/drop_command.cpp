@@ -23,7 +23,8 @@ struct DropArgs {
   // --free: the 6-DOF pad
   bool free = false;
   double tilt_deg = 0.0, horizontal_speed_m_s = 0.0;
-  std::string tilt_axis = "x", law = "li2013";
+  std::string tilt_axis = "x";
+  std::optional<std::string> law;  // none: the soil's own law
   std::vector<double> omega{0.0, 0.0, 0.0};
 };
 }  // namespace
@@ -46,7 +47,8 @@ void AddDropCommand(CLI::App& app) {
   cmd->add_option("--horizontal-speed", args->horizontal_speed_m_s, "--free: horizontal speed along +x [m/s]");
   cmd->add_option("--omega", args->omega, "--free: initial angular velocity WX,WY,WZ [rad/s]")
       ->expected(3)->delimiter(',');
-  cmd->add_option("--law", args->law, "--free: li2013 or agarwal2023");
+  cmd->add_option("--law", args->law,
+                  "li2013, agarwal2023 (--free only) or bekker (default: the soil's own law; docs/bekker_soil.md)");
   cmd->callback([args] {
     drop::DropConditions c;
     c.impact_speed_m_s = args->speed_m_s;
@@ -67,12 +69,12 @@ void AddDropCommand(CLI::App& app) {
       c.tilt_axis = pad::ParseTiltAxis(args->tilt_axis, "command line");
       c.horizontal_speed_m_s = args->horizontal_speed_m_s;
       c.omega_W = Eigen::Vector3d(args->omega[0], args->omega[1], args->omega[2]);
-      c.law_3d = rft::ParseLawKind(args->law, "command line", "--law");
     } else if (args->tilt_deg != 0.0 || args->horizontal_speed_m_s != 0.0 ||
                args->omega != std::vector<double>{0.0, 0.0, 0.0}) {
       throw MakeInputError("command line", "--free",
                            "--tilt-deg, --horizontal-speed and --omega need --free (the rig drop is vertical)");
     }
+    if (args->law) c.law_3d = rft::ParseLawKind(*args->law, "command line", "--law");
     drop::ValidateConditions(c, "command line");
     const io::OutputTarget trace(args->trace, {args->pad, args->soil, args->model});
     if (!args->trace.empty()) io::CheckOutputFile(trace);

@@ -8,6 +8,7 @@
 #include "apps/commands.h"
 #include "drop_tests/io/catalog.h"
 #include "lander/pad/pad_pose.h"
+#include "rft/bekker_law.h"
 #include "rft/contact_wrench.h"
 #include "rft/input_error.h"
 #include "rft/physical_limits.h"
@@ -18,7 +19,8 @@ namespace touchdown::app {
 
 namespace {
 struct ForceArgs {
-  std::string pad, soil, law = "li2013", tilt_axis = "x";
+  std::string pad, soil, tilt_axis = "x";
+  std::optional<std::string> law;  // none: the soil's own law
   double depth_m = 0.0, tilt_deg = 0.0, gravity_m_s2 = 9.81;
   std::vector<double> velocity{0.0, 0.0, -1.0}, omega{0.0, 0.0, 0.0};
   std::optional<double> zeta_N_cm3;
@@ -50,7 +52,8 @@ void AddForceCommand(CLI::App& app) {
   cmd->add_option("--velocity", a->velocity, "rigid velocity of the reference point VX,VY,VZ [m/s] (default 0,0,-1)")
       ->expected(3)->delimiter(',');
   cmd->add_option("--omega", a->omega, "angular velocity WX,WY,WZ [rad/s]")->expected(3)->delimiter(',');
-  cmd->add_option("--law", a->law, "li2013 (Treers et al. 2021 3D decomposition) or agarwal2023");
+  cmd->add_option("--law", a->law,
+                  "li2013 (Treers et al. 2021 3D decomposition), agarwal2023 or bekker (default: the soil's own law)");
   cmd->add_option("--zeta", a->zeta_N_cm3, "override the soil's zeta [N/cm^3] (li2013)");
   cmd->add_option("--gravity", a->gravity_m_s2, "gravity [m/s^2] the soil stresses scale with (default 9.81)");
   cmd->callback([a] {
@@ -70,10 +73,15 @@ void AddForceCommand(CLI::App& app) {
     const io::PadSpec pad = io::LoadPad(a->pad);
     rft::SoilParameters soil = io::LoadSoil(a->soil);
     if (a->zeta_N_cm3) soil.zeta_N_m3 = units::ZetaFromN_cm3(*a->zeta_N_cm3);
-    const std::unique_ptr<rft::StressLaw3D> law = rft::MakeStressLaw3D(rft::ParseLawKind(a->law, "command line", "--law"), soil, a->gravity_m_s2);
+    const rft::LawKind kind = a->law ? rft::ParseLawKind(*a->law, "command line", "--law") : soil.rft_law_3d;
+    const double plate_b_m = kind == rft::LawKind::kBekker ? rft::BekkerPlateB(pad.body.surface) : 0.0;
+    // The contact model (law and pad-level terms): Bekker's z^n is a pad-level depth law.
+    const rft::SoilContactModel model = rft::MakeSoilContactModel(kind, soil, a->gravity_m_s2, {}, plate_b_m);
+    const rft::StressLaw3D* law = model.law.get();
     k.p_WB = pad::PlaceAtDepth(pad.body, k.R_WB, a->depth_m);
-    const rft::ContactWrench w = rft::ComputeContactWrench(pad.body.surface, k, rft::PlaneGround(), *law);
-    const nlohmann::json out{
+    const rft::ContactWrench w =
+        rft::ComputeContactWrench(pad.body.surface, k, rft::PlaneGround(), *law, model.pad_terms);
+    nlohmann::json out{
         {"pad", pad.name},
         {"soil", soil.name},
         {"law", std::string(law->name())},
@@ -89,6 +97,7 @@ void AddForceCommand(CLI::App& app) {
         {"leading_elements", w.leading_elements},
         {"surface_elements", pad.body.surface.size()},
     };
+    if (kind == rft::LawKind::kBekker) out["bekker_plate_b_m"] = plate_b_m;
     std::cout << out.dump(2) << std::endl;
   });
 }

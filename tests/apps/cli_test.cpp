@@ -205,7 +205,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"ForceNanDepth", "force --pad flat --soil fjs1_lp --depth nan", "--depth: must be between -10 and 10 m, got nan"},
         BadInput{"ForceNoMotion", "force --pad flat --soil fjs1_lp --depth 0.01 --velocity 0,0,0",
                  "the pad must move"},
-        BadInput{"ForceUnknownLaw", "force --pad flat --soil fjs1_lp --depth 0.01 --law bekker", "bekker"}),
+        BadInput{"ForceUnknownLaw", "force --pad flat --soil fjs1_lp --depth 0.01 --law wong", "wong"}),
     [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace
