@@ -422,6 +422,10 @@ void WritePad(const PadSpec& pad, const std::string& path) {
 }
 
 void WriteSoil(const rft::SoilParameters& soil, const std::string& path) {
+  WriteFileAtomically(path, [&](std::ostream& out) { WriteSoil(soil, out); });
+}
+
+void WriteSoil(const rft::SoilParameters& soil, std::ostream& out) {
   YAML::Emitter y;
   y << YAML::BeginMap << YAML::Key << "schema_version" << YAML::Value << 1 << YAML::Key << "name" << YAML::Value
     << soil.name << YAML::Key << "atmosphere" << YAML::Value << rft::AtmosphereName(soil.atmosphere);
@@ -439,7 +443,7 @@ void WriteSoil(const rft::SoilParameters& soil, const std::string& path) {
   }
   if (soil.dynamic_term) y << YAML::Key << "dynamic_term" << YAML::Value << true;
   y << YAML::EndMap;
-  WriteFileAtomically(path, [&](std::ostream& out) { out << y.c_str() << '\n'; });
+  out << y.c_str() << '\n';
 }
 
 }  // namespace touchdown::io
