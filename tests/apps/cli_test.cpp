@@ -205,7 +205,13 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"ForceNanDepth", "force --pad flat --soil fjs1_lp --depth nan", "--depth: must be between -10 and 10 m, got nan"},
         BadInput{"ForceNoMotion", "force --pad flat --soil fjs1_lp --depth 0.01 --velocity 0,0,0",
                  "the pad must move"},
-        BadInput{"ForceUnknownLaw", "force --pad flat --soil fjs1_lp --depth 0.01 --law wong", "wong"}),
+        BadInput{"ForceUnknownLaw", "force --pad flat --soil fjs1_lp --depth 0.01 --law wong", "wong"},
+        BadInput{"DropBekkerOnRftSoil", "drop --pad flat --soil fjs1_lp --speed 1 --law bekker",
+                 "bekker.k_phi_kN_m_n2: k_c and k_phi cannot both be 0"},
+        BadInput{"CalibrateBekkerNoShear",
+                 "calibrate " TOUCHDOWN_SOURCE_DIR "/data/datasets/air_vs_vacuum_synthetic --law bekker --soil fjs1_lp "
+                 "--pad flat --atmosphere vacuum --out {dir}/fit.yaml",
+                 "--shear-from: soil 'fjs1_lp' has no bekker block"}),
     [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace

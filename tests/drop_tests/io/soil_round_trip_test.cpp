@@ -36,7 +36,8 @@ void ExpectSameSoil(const rft::SoilParameters& a, const rft::SoilParameters& b) 
 
 void RoundTrip(const rft::SoilParameters& loaded, const std::string& first, const std::string& second) {
   testing_scratch::ExpectRoundTrip(
-      loaded, first, second, WriteSoil, [](const std::string& path) { return LoadSoil(path); }, ExpectSameSoil);
+      loaded, first, second, [](const rft::SoilParameters& s, const std::string& path) { WriteSoil(s, path); },
+      [](const std::string& path) { return LoadSoil(path); }, ExpectSameSoil);
 }
 
 TEST_F(SoilRoundTrip, BundledSoils) {
