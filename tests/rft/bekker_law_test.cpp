@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "rft/contact_wrench.h"
+#include "rft/input_error.h"
 #include "rft/stress_law_3d_factory.h"
 #include "tests/rft/pad_meshes.h"
 
