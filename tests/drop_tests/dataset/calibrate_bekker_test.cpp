@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "drop_tests/dataset/calibrate_bekker.h"
+#include "drop_tests/dataset/synth.h"
 #include "drop_tests/drop/pad_drop.h"
 #include "drop_tests/io/catalog.h"
 #include "rft/bekker_law.h"
@@ -86,6 +87,30 @@ TEST_F(CalibrateBekkerTest, MeshPadsAndEmptySelectionsAreRefused) {
   EXPECT_THROW(CalibrateBekker(ds, only_other), InputError);
   ds.drops[0].pad = "hex";
   EXPECT_THROW(CalibrateBekker(ds, {}), InputError);
+}
+
+}  // namespace
+}  // namespace touchdown::dataset
+
+namespace touchdown::dataset {
+namespace {
+
+TEST(CalibrateBekkerSynth, SynthRunsBekkerSoilsOnTheirLawAndCalibrateFindsThem) {
+  // A synthetic dataset on the lunar Bekker soil (noise as synth's defaults): its drops run on the
+  // bekker law, and calibrate --law bekker finds n = 1 and the flat pad's modulus k_c / b + k_phi.
+  SynthSpec spec;
+  spec.name = "bekker_unit";
+  spec.source = "bekker_unit.yaml";
+  spec.seed = 11;
+  spec.rest_duration_s = 0.01;
+  for (double v : {0.7, 1.0, 1.5})
+    spec.drops.push_back({"flat", "lunar_nominal_bekker", rft::Atmosphere::kVacuum, v, std::nullopt, 1.62, 0});
+  Dataset ds = Synthesize(spec);
+  ds.directory = ".";
+  const BekkerFit fit = CalibrateBekker(ds, {});
+  const double modulus = rft::BekkerModulus(io::LoadSoil("lunar_nominal_bekker").bekker, 0.05);
+  EXPECT_NEAR(fit.bekker.n, 1.0, 0.02);
+  EXPECT_NEAR(fit.bekker.k_phi_N_m_n2, modulus, 0.05 * modulus);
 }
 
 }  // namespace
