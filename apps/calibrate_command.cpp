@@ -6,6 +6,9 @@
 #include "apps/commands.h"
 #include "drop_tests/io/output_path.h"
 #include "drop_tests/dataset/calibrate.h"
+#include "drop_tests/dataset/calibrate_bekker.h"
+#include "drop_tests/io/catalog.h"
+#include "rft/input_error.h"
 #include "rft/units.h"
 
 namespace touchdown::app {
@@ -14,7 +17,47 @@ namespace {
 struct CalibrateArgs {
   std::string measured, param = "zeta", per = "soil", out, atmosphere = "all";
   double confidence = 0.95;
+  // --law bekker: a Bekker soil file instead of a model file (docs/bekker_soil.md)
+  std::string law = "rft", soil, pad, shear_from;
 };
+
+// The first line of a soil file calibrate --law bekker writes: such a file may be replaced.
+constexpr const char* kBekkerFitMark = "# touchdown calibrate --law bekker";
+
+// calibrate --law bekker: n, k_c and k_phi fitted; c, phi and K from the soil (or --shear-from).
+void CalibrateBekkerSoil(const CalibrateArgs& args) {
+  const io::OutputTarget out(args.out, {args.measured});
+  io::CheckOutputFile(out, kBekkerFitMark);
+  const dataset::Dataset measured = dataset::ReadDataset(args.measured);
+  dataset::BekkerCalibrationOptions options;
+  if (args.atmosphere != "all") options.atmosphere = rft::ParseAtmosphere(args.atmosphere);
+  options.soil = args.soil;
+  options.pad = args.pad;
+  const dataset::BekkerFit fit = dataset::CalibrateBekker(measured, options);
+  rft::SoilParameters soil =
+      dataset::CalibratedBekkerSoil(fit, measured, std::filesystem::path(args.out).stem().string());
+  if (!args.shear_from.empty()) {
+    const rft::BekkerParameters shear = io::LoadSoil(args.shear_from).bekker;
+    soil.bekker.cohesion_Pa = shear.cohesion_Pa;
+    soil.bekker.friction_angle_rad = shear.friction_angle_rad;
+    soil.bekker.shear_modulus_K_m = shear.shear_modulus_K_m;
+  }
+  if (!(soil.bekker.shear_modulus_K_m > 0.0))
+    throw MakeInputError("command line", "--shear-from",
+                         "soil '" + fit.soils.front() + "' has no bekker block: name a Bekker soil for c, phi and K");
+  io::WriteOutputFile(out, [&](std::ostream& o) {
+    o << kBekkerFitMark << "\n# on " << args.measured << " (soils:";
+    for (const std::string& s : fit.soils) o << ' ' << s;
+    o << "; " << fit.drops << " drops, " << fit.samples << " samples, residual RMS " << fit.residual_rms_N << " N)\n# fit: "
+      << fit.method << "\n# c, phi and K: " << (args.shear_from.empty() ? "the soil's own" : "from " + args.shear_from)
+      << ", not fitted\n";
+    io::WriteSoil(soil, o);
+  }, kBekkerFitMark);
+  std::cout << "bekker: n = " << std::setprecision(4) << fit.bekker.n << ", k_c = " << fit.bekker.k_c_N_m_n1 / 1e3
+            << " kN/m^(n+1), k_phi = " << fit.bekker.k_phi_N_m_n2 / 1e3 << " kN/m^(n+2) from " << fit.drops << " drops, "
+            << fit.samples << " samples, residual RMS " << std::setprecision(3) << fit.residual_rms_N << " N ("
+            << fit.pad_sizes << " pad size" << (fit.pad_sizes == 1 ? ": k_c = 0" : "s") << ")\nwrote " << args.out << "\n";
+}
 }  // namespace
 
 void AddCalibrateCommand(CLI::App& app) {
@@ -28,8 +71,16 @@ void AddCalibrateCommand(CLI::App& app) {
       ->check(CLI::IsMember({"vacuum", "air", "all"}));
   cmd->add_option("--confidence", args->confidence, "confidence level of the interval (default 0.95)")
       ->check(CLI::Range(0.5, 0.9999));
-  cmd->add_option("--out", args->out, "model file to write (MODEL.yaml)")->required();
+  cmd->add_option("--out", args->out, "model file to write (MODEL.yaml); with --law bekker a soil file (SOIL.yaml)")
+      ->required();
+  cmd->add_option("--law", args->law, "rft: fit zeta (default); bekker: fit Bekker's n, k_c and k_phi (a soil file)")
+      ->check(CLI::IsMember({"rft", "bekker"}));
+  cmd->add_option("--soil", args->soil, "--law bekker: only the drops on this soil (as drops.csv names it)");
+  cmd->add_option("--pad", args->pad, "--law bekker: only the drops of this pad (as drops.csv names it)");
+  cmd->add_option("--shear-from", args->shear_from,
+                  "--law bekker: the Bekker soil whose cohesion, friction angle and K the fitted soil takes");
   cmd->callback([args] {
+    if (args->law == "bekker") return CalibrateBekkerSoil(*args);
     const io::OutputTarget out(args->out, {args->measured});
     io::CheckOutputFile(out, model::kModelFileMark);
     const dataset::Dataset measured = dataset::ReadDataset(args->measured);

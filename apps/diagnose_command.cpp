@@ -16,7 +16,7 @@ namespace {
 struct DiagnoseArgs {
   std::string measured, model, out;
   int threads = 0;
-  bool no_pairs = false;
+  bool no_pairs = false, law_candidate = false;
 };
 }  // namespace
 
@@ -30,6 +30,8 @@ void AddDiagnoseCommand(CLI::App& app) {
   cmd->add_option("--threads", args->threads, "threads (default: all cores)")
       ->check(CLI::Range(0, 4096));
   cmd->add_flag("--no-pairs", args->no_pairs, "do not try pairs of effects");
+  cmd->add_flag("--law-candidate", args->law_candidate,
+                "also fit the Bekker law per soil on the training drops and score it (docs/bekker_soil.md)");
   cmd->callback([args] {
     const io::OutputTarget out(args->out, {args->measured, args->model});
     io::CheckOutputDirectory(out, io::OutputKind::kDiagnosis);
@@ -37,6 +39,7 @@ void AddDiagnoseCommand(CLI::App& app) {
     o.threads = args->threads > 0 ? args->threads : std::max(1u, std::thread::hardware_concurrency());
     o.try_pairs = !args->no_pairs;
     o.progress.mode = io::ProgressMode::kAuto;
+    o.law_candidate = args->law_candidate;
     if (!args->model.empty()) o.start_model = model::LoadModelFile(args->model);
     const dataset::Dataset ds = dataset::ReadDataset(args->measured);
     const gap::Diagnosis d = gap::RunDiagnosis(ds, o);

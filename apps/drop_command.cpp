@@ -38,7 +38,8 @@ void AddDropCommand(CLI::App& app) {
   cmd->add_option("--horizontal-speed", args->horizontal_speed_m_s, "--free: horizontal speed along +x [m/s]");
   cmd->add_option("--omega", args->omega, "--free: initial angular velocity WX,WY,WZ [rad/s]")
       ->expected(3)->delimiter(',');
-  cmd->add_option("--law", args->law, "--free: li2013 or agarwal2023");
+  cmd->add_option("--law", args->law,
+                  "li2013, agarwal2023 (--free only) or bekker (default: the soil's own law; docs/bekker_soil.md)");
   cmd->add_option("--vtk", args->vtk,
                   "--free: write a ParaView time series into this new directory (drop.pvd: the pad with its "
                   "per-element soil stresses at every trace sample, and the soil surface; docs/paraview.md)");

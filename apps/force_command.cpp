@@ -29,7 +29,8 @@ void AddForceCommand(CLI::App& app) {
   cmd->add_option("--velocity", a->velocity, "rigid velocity of the reference point VX,VY,VZ [m/s] (default 0,0,-1)")
       ->expected(3)->delimiter(',');
   cmd->add_option("--omega", a->omega, "angular velocity WX,WY,WZ [rad/s]")->expected(3)->delimiter(',');
-  cmd->add_option("--law", a->law, "li2013 (Treers et al. 2021 3D decomposition) or agarwal2023");
+  cmd->add_option("--law", a->law,
+                  "li2013 (Treers et al. 2021 3D decomposition), agarwal2023 or bekker (default: the soil's own law)");
   cmd->add_option("--zeta", a->zeta_N_cm3, "override the soil's zeta [N/cm^3] (li2013)");
   cmd->add_option("--gravity", a->gravity_m_s2, "gravity [m/s^2] the soil stresses scale with (default 9.81)");
   cmd->add_option("--vtk", a->vtk,

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "rft/atmosphere.h"
+#include "rft/bekker_parameters.h"
 #include "rft/law_kind.h"
 
 namespace touchdown::rft {
@@ -18,7 +19,9 @@ struct SoilParameters {
   Atmosphere atmosphere = Atmosphere::kVacuum;
 
   // 3D laws (rft/stress_law_3d_factory.h). All defaulted, so 2D users are unaffected.
-  LawKind rft_law_3d = LawKind::kLi2013;  // preferred 3D law
+  LawKind rft_law_3d = LawKind::kLi2013;  // preferred 3D law (kBekker: the soil's `law: bekker`)
+  // Bekker-Wong-Janosi parameters (rft/bekker_law.h); used by the bekker law only (no zeta then).
+  BekkerParameters bekker;
   // Intruder-surface friction coefficient mu_surf [-] of Agarwal et al. 2023 (only that law).
   // 0.4 is an assumption (a typical sand-on-metal value), not a measured pad value.
   double surface_friction_coefficient = 0.4;

@@ -17,7 +17,8 @@ struct SoilContactModel {
   // as outputs name the model that ran.
   std::string name() const {
     std::string out(law->name());
-    if (pad_terms.has_power_depth()) out += "+depth_exponent";
+    // Bekker's z^n is the bekker law's own depth law, not the depth_exponent effect.
+    if (pad_terms.has_power_depth() && law->name() != "bekker") out += "+depth_exponent";
     if (pad_terms.has_compaction()) out += "+compaction_peak";
     if (pad_terms.has_added_mass()) out += "+added_mass";
     return out;

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "rft/agarwal2023.h"
+#include "rft/bekker_law.h"
 #include "rft/dynamic_term.h"
 #include "rft/gas_cushion_term.h"
 #include "rft/input_error.h"
@@ -29,15 +30,42 @@ void Require(bool ok, const SoilParameters& soil, const std::string& field, cons
   if (!ok) throw MakeInputError(SoilLabel(soil), field, message + " (" + Str(value) + ")");
 }
 
+std::unique_ptr<StressLaw3D> MakeBekkerLaw(const SoilParameters& soil, double plate_b_m) {
+  RequireBekkerParameters(soil);
+  Require(std::isfinite(plate_b_m) && plate_b_m > 0.0, soil, "bekker",
+          "the bekker law needs the pad's footprint dimension b > 0 [m]", plate_b_m);
+  return std::make_unique<BekkerLaw3D>(soil.bekker, plate_b_m);
+}
+
 }  // namespace
 
+void RequireBekkerParameters(const SoilParameters& soil) {
+  const BekkerParameters& b = soil.bekker;
+  Require(std::isfinite(b.n) && b.n > 0.0, soil, "bekker.n", "must be positive", b.n);
+  Require(std::isfinite(b.k_c_N_m_n1) && b.k_c_N_m_n1 >= 0.0, soil, "bekker.k_c_kN_m_n1",
+          "must be non-negative [N/m^(n+1)]", b.k_c_N_m_n1);
+  Require(std::isfinite(b.k_phi_N_m_n2) && b.k_phi_N_m_n2 >= 0.0, soil, "bekker.k_phi_kN_m_n2",
+          "must be non-negative [N/m^(n+2)]", b.k_phi_N_m_n2);
+  Require(b.k_c_N_m_n1 + b.k_phi_N_m_n2 > 0.0, soil, "bekker.k_phi_kN_m_n2",
+          "k_c and k_phi cannot both be 0 (the bekker law needs a bekker block)", b.k_phi_N_m_n2);
+  Require(std::isfinite(b.cohesion_Pa) && b.cohesion_Pa >= 0.0, soil, "bekker.cohesion_kPa",
+          "must be non-negative [Pa]", b.cohesion_Pa);
+  Require(std::isfinite(b.friction_angle_rad) && b.friction_angle_rad >= 0.0 &&
+              b.friction_angle_rad < std::numbers::pi / 2,
+          soil, "bekker.friction_angle_deg", "must be in [0, 90) deg, in rad", b.friction_angle_rad);
+  Require(std::isfinite(b.shear_modulus_K_m) && b.shear_modulus_K_m > 0.0, soil, "bekker.shear_modulus_K_mm",
+          "must be positive [m]", b.shear_modulus_K_m);
+}
+
 std::unique_ptr<StressLaw3D> MakeStressLaw3D(LawKind law, const SoilParameters& soil,
-                                             double gravity_m_s2) {
+                                             double gravity_m_s2, double bekker_plate_b_m) {
   if (!(std::isfinite(gravity_m_s2) && gravity_m_s2 > 0.0))
     throw MakeInputError(SoilLabel(soil), "gravity_m_s2", "must be positive (" + Str(gravity_m_s2) + ")");
 
   std::unique_ptr<StressLaw3D> quasi_static;
-  if (law == LawKind::kLi2013) {
+  if (law == LawKind::kBekker) {
+    quasi_static = MakeBekkerLaw(soil, bekker_plate_b_m);
+  } else if (law == LawKind::kLi2013) {
     Require(std::isfinite(soil.zeta_N_m3) && soil.zeta_N_m3 > 0.0, soil, "zeta",
             "li2013 needs a positive zeta", soil.zeta_N_m3);
     Require(std::isfinite(soil.reference_gravity_m_s2) && soil.reference_gravity_m_s2 > 0.0, soil,
@@ -67,7 +95,7 @@ std::unique_ptr<StressLaw3D> MakeStressLaw3D(LawKind law, const SoilParameters& 
 }
 
 SoilContactModel MakeSoilContactModel(LawKind law, const SoilParameters& soil, double gravity_m_s2,
-                                      const EffectTerms& terms) {
+                                      const EffectTerms& terms, double bekker_plate_b_m) {
   Require(std::isfinite(terms.inertial_lambda) && terms.inertial_lambda >= 0.0, soil, "inertial_drag.lambda",
           "must be non-negative", terms.inertial_lambda);
   Require(std::isfinite(terms.damping_c_N_s_m3) && terms.damping_c_N_s_m3 >= 0.0, soil, "rate_damping.c_N_s_m3",
@@ -89,7 +117,10 @@ SoilContactModel MakeSoilContactModel(LawKind law, const SoilParameters& soil, d
   SoilParameters base = soil;
   const bool inertial = terms.inertial_lambda > 0.0;
   if (inertial) base.dynamic_term = false;  // the model's inertial term replaces the soil's own
-  std::unique_ptr<StressLaw3D> out = MakeStressLaw3D(law, base, gravity_m_s2);
+  if (law == LawKind::kBekker)
+    Require(terms.depth_exponent == 1.0, soil, "depth_exponent.p",
+            "does not apply to the bekker law (its own exponent is bekker.n)", terms.depth_exponent);
+  std::unique_ptr<StressLaw3D> out = MakeStressLaw3D(law, base, gravity_m_s2, bekker_plate_b_m);
   // DynamicTermLaw replaces its inner law's dynamic stress, so it goes innermost; the other
   // decorators add theirs to their inner law's.
   if (inertial) {
@@ -103,6 +134,8 @@ SoilContactModel MakeSoilContactModel(LawKind law, const SoilParameters& soil, d
   if (terms.damping_c_N_s_m3 > 0.0) out = std::make_unique<RateDampingLaw>(std::move(out), terms.damping_c_N_s_m3);
   SoilContactModel model;
   if (terms.depth_exponent != 1.0) model.pad_terms.depth = {terms.depth_exponent, terms.depth_reference_m};
+  // Bekker's z^n: the depth law with z_ref = 1 m, so z_ref (z / z_ref)^n = z^n in SI.
+  if (law == LawKind::kBekker && soil.bekker.n != 1.0) model.pad_terms.depth = {soil.bekker.n, 1.0};
   if (terms.compaction_k_kg_m3 > 0.0) {
     model.pad_terms.compaction_k_kg_m3 = terms.compaction_k_kg_m3;
     model.pad_terms.compaction_depth_m = terms.compaction_depth_m;

@@ -16,8 +16,12 @@ namespace touchdown::rft {
 // xi_n = rho g (894 mu^3 - 386 mu^2 + 89 mu), mu = tan(phi), and mu_surf). When the soil's
 // dynamic_term is on, the law is wrapped in DynamicTermLaw (lambda, rho_c). Throws InputError
 // on missing/invalid soil data, naming the soil and the field.
+// kBekker (rft/bekker_law.h) needs the pad's dimension b, `bekker_plate_b_m` (BekkerPlateB; > 0),
+// and the soil's bekker block; gravity does not enter (Bekker's moduli do not scale with g).
 std::unique_ptr<StressLaw3D> MakeStressLaw3D(LawKind law, const SoilParameters& soil,
-                                             double gravity_m_s2);
+                                             double gravity_m_s2, double bekker_plate_b_m = 0.0);
+// Checks a soil's bekker block (what kBekker needs), naming the soil and the field on an error.
+void RequireBekkerParameters(const SoilParameters& soil);
 
 // The soil's law with the effect terms (rft/effect_terms.h) in their 3D form. The per-element
 // terms wrap the law above:
@@ -33,7 +37,9 @@ std::unique_ptr<StressLaw3D> MakeStressLaw3D(LawKind law, const SoilParameters& 
 // neutral terms the law is exactly the one above. The sensor offsets are not physics and are
 // ignored. Throws InputError naming the soil when a term's value is invalid or a term needs the
 // bulk density and the soil has none.
+// kBekker: the depth law is Bekker's z^n ({n, 1 m}), so the depth_exponent term does not apply
+// (InputError).
 SoilContactModel MakeSoilContactModel(LawKind law, const SoilParameters& soil, double gravity_m_s2,
-                                      const EffectTerms& terms);
+                                      const EffectTerms& terms, double bekker_plate_b_m = 0.0);
 
 }  // namespace touchdown::rft

@@ -168,7 +168,7 @@ PYBIND11_MODULE(_touchdown, m) {
       "drop",
       [](std::string pad, std::string soil, double speed, std::optional<double> mass, double gravity,
          std::optional<double> zeta, std::string model, bool free, double tilt_deg, std::string tilt_axis,
-         double horizontal_speed, std::array<double, 3> omega, std::string law, bool trace) {
+         double horizontal_speed, std::array<double, 3> omega, std::optional<std::string> law, bool trace) {
         drop::DropRequest r;
         r.pad = std::move(pad), r.soil = std::move(soil), r.model = std::move(model);
         r.speed_m_s = speed, r.mass_kg = mass, r.gravity_m_s2 = gravity, r.zeta_N_cm3 = zeta;
@@ -182,7 +182,7 @@ PYBIND11_MODULE(_touchdown, m) {
   m.def(
       "force",
       [](std::string pad, std::string soil, double depth, double tilt_deg, std::string tilt_axis,
-         std::array<double, 3> velocity, std::array<double, 3> omega, std::string law, std::optional<double> zeta,
+         std::array<double, 3> velocity, std::array<double, 3> omega, std::optional<std::string> law, std::optional<double> zeta,
          double gravity) {
         drop::ForceRequest r;
         r.pad = std::move(pad), r.soil = std::move(soil), r.depth_m = depth, r.tilt_deg = tilt_deg;

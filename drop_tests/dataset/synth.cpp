@@ -180,13 +180,19 @@ Dataset Synthesize(const SynthSpec& spec) {
     }
     if (!soils.count(sd.soil)) soils[sd.soil] = io::LoadSoil(sd.soil);
     const io::PadSpec& pad = pads[sd.pad];
+    // A Bekker soil's drops run on its own law (its profile integral, kept beside the Li 2013 one).
+    const bool bekker = drop::RunsOnBekker(soils[sd.soil], std::nullopt);
+    const std::string bekker_key = sd.pad + "\n(bekker)";
+    if (bekker && !intrusions.count(bekker_key)) intrusions[bekker_key] = drop::MakeBekkerRigIntrusion(pad.profile);
     // The true zeta, where the spec states one, overrides the catalogue's.
     std::optional<double> true_zeta;
     for (const auto& [name, zeta] : spec.true_zeta_N_m3)
       if (name == sd.soil) true_zeta = zeta;
     const rft::SoilParameters soil = drop::DropSoil(soils[sd.soil], true_zeta, sd.atmosphere);
     const double mass = sd.mass_kg.value_or(pad.mass_kg);
-    const pad::EffectSoilResponse response = drop::MakeRigResponse(*intrusions[sd.pad], soil, sd.gravity_m_s2, terms);
+    const pad::EffectSoilResponse response =
+        bekker ? drop::MakeBekkerRigResponse(*intrusions[bekker_key], soil, terms)
+               : drop::MakeRigResponse(*intrusions[sd.pad], soil, sd.gravity_m_s2, terms);
     pad::RigDropOptions options;
     options.rest_duration_s = spec.rest_duration_s + std::abs(terms.sensor_dt_s) + 2.0 / spec.sample_rate_hz;
     pad::RigDropResult sim;

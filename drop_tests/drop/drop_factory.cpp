@@ -1,6 +1,9 @@
 #include "drop_tests/drop/drop_factory.h"
 
+#include "rft/bekker_law.h"
+#include "rft/input_error.h"
 #include "rft/stress_law.h"
+#include "rft/stress_law_3d_factory.h"
 
 namespace touchdown::drop {
 
@@ -20,6 +23,29 @@ std::unique_ptr<geom::AxisymmetricIntrusion> MakeRigIntrusion(const geom::Axisym
   return std::make_unique<geom::AxisymmetricIntrusion>(profile, rft::Li2013Law{});
 }
 
+bool RunsOnBekker(const rft::SoilParameters& drop_soil, const std::optional<rft::LawKind>& law) {
+  return law.value_or(drop_soil.rft_law_3d) == rft::LawKind::kBekker;
+}
+
+std::unique_ptr<geom::AxisymmetricIntrusion> MakeBekkerRigIntrusion(const geom::AxisymmetricProfile& profile) {
+  return std::make_unique<geom::AxisymmetricIntrusion>(profile, rft::BekkerLaw2D{});
+}
+
+pad::EffectSoilResponse MakeBekkerRigResponse(const geom::AxisymmetricIntrusion& intrusion,
+                                              const rft::SoilParameters& drop_soil, const rft::EffectTerms& terms) {
+  rft::RequireBekkerParameters(drop_soil);
+  if (terms.HasDepthExponent())
+    throw MakeInputError(drop_soil.name, "depth_exponent", "does not apply to the bekker law (its exponent is bekker.n)");
+  rft::EffectTerms bekker_terms = terms;
+  // Bekker's z^n as the rig's depth law, z_ref = 1 m: z_ref (z / z_ref)^n = z^n in SI.
+  bekker_terms.depth_exponent = drop_soil.bekker.n;
+  bekker_terms.depth_reference_m = 1.0;
+  const pad::SoilResponseInputs in{rft::BekkerModulus(drop_soil.bekker, intrusion.radius_m()),
+                                   drop_soil.bulk_density_kg_m3, drop_soil.atmosphere == rft::Atmosphere::kAir,
+                                   bekker_terms};
+  return pad::EffectSoilResponse(intrusion, in);
+}
+
 pad::EffectSoilResponse MakeRigResponse(const geom::AxisymmetricIntrusion& intrusion,
                                         const rft::SoilParameters& drop_soil, double gravity_m_s2,
                                         const rft::EffectTerms& terms) {
@@ -30,9 +56,9 @@ pad::EffectSoilResponse MakeRigResponse(const geom::AxisymmetricIntrusion& intru
 
 rft::SoilContactModel MakeFreeLaw(const rft::SoilParameters& drop_soil, const std::optional<rft::LawKind>& law_3d,
                                   double gravity_m_s2, const rft::EffectTerms& terms,
-                                  const std::string& effects_source) {
+                                  const std::string& effects_source, double bekker_plate_b_m) {
   return model::MakeEffectLaw3D(law_3d.value_or(drop_soil.rft_law_3d), drop_soil, gravity_m_s2, terms,
-                                drop_soil.atmosphere == rft::Atmosphere::kAir, effects_source);
+                                drop_soil.atmosphere == rft::Atmosphere::kAir, effects_source, bekker_plate_b_m);
 }
 
 }  // namespace touchdown::drop

@@ -34,6 +34,20 @@ double ZetaAtGravity(const rft::SoilParameters& drop_soil, double gravity_m_s2);
 // as long as that holds.)
 std::unique_ptr<geom::AxisymmetricIntrusion> MakeRigIntrusion(const geom::AxisymmetricProfile& profile);
 
+// Whether a drop runs on the bekker law (rft/bekker_law.h): the law asked for (`law`, a drop's
+// --law), else the soil's own. Li 2013 and Agarwal 2023 soils keep the rig's Li 2013 integral.
+bool RunsOnBekker(const rft::SoilParameters& drop_soil, const std::optional<rft::LawKind>& law);
+
+// The rig's profile integral under Bekker's pressure (rft::BekkerLaw2D: the footprint integral).
+std::unique_ptr<geom::AxisymmetricIntrusion> MakeBekkerRigIntrusion(const geom::AxisymmetricProfile& profile);
+
+// The rig's soil response on a Bekker soil for a pad's Bekker integral (MakeBekkerRigIntrusion):
+// p = (k_c / b + k_phi) z^n with b the pad's radius (its footprint's equal-area radius, as
+// rft::BekkerPlateB takes it for a mesh), no gravity scaling, and the effect terms in their rig
+// form (depth_exponent excluded: n is the law's own). Throws InputError naming the soil's field.
+pad::EffectSoilResponse MakeBekkerRigResponse(const geom::AxisymmetricIntrusion& intrusion,
+                                              const rft::SoilParameters& drop_soil, const rft::EffectTerms& terms);
+
 // The rig's vertical soil response for a pad's integral on `drop_soil` (DropSoil) at the drop's
 // gravity, with the effect terms in their rig form (gas cushion only in air). Throws InputError
 // if an effect needs the bulk density and the soil has none.
@@ -43,8 +57,10 @@ pad::EffectSoilResponse MakeRigResponse(const geom::AxisymmetricIntrusion& intru
 
 // The free pad's contact model: the 3D law `law_3d` (the soil's rft_law_3d when none) on
 // `drop_soil` at the drop's gravity, with the effect terms (model::MakeEffectLaw3D).
+// `bekker_plate_b_m`: the pad's footprint dimension (rft::BekkerPlateB of its surface), used by the
+// bekker law only.
 rft::SoilContactModel MakeFreeLaw(const rft::SoilParameters& drop_soil, const std::optional<rft::LawKind>& law_3d,
                                   double gravity_m_s2, const rft::EffectTerms& terms,
-                                  const std::string& effects_source);
+                                  const std::string& effects_source, double bekker_plate_b_m = 0.0);
 
 }  // namespace touchdown::drop

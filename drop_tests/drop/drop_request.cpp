@@ -50,8 +50,8 @@ DropConditions RequestConditions(const DropRequest& r, const RequestNaming& nami
     c.tilt_axis = pad::ParseTiltAxis(r.tilt_axis, naming.context);
     c.horizontal_speed_m_s = r.horizontal_speed_m_s;
     c.omega_W = Eigen::Vector3d(r.omega_rad_s[0], r.omega_rad_s[1], r.omega_rad_s[2]);
-    c.law_3d = rft::ParseLawKind(r.law, naming.context, naming.Field("law"));
   }
+  if (r.law) c.law_3d = rft::ParseLawKind(*r.law, naming.context, naming.Field("law"));
   ValidateConditions(c, naming.context);
   return c;
 }

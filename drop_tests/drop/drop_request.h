@@ -31,7 +31,8 @@ struct DropRequest {
   // The free 6-DOF pad: asked for with `free`; tilt, horizontal speed and omega need it.
   bool free = false;
   double tilt_deg = 0.0, horizontal_speed_m_s = 0.0;
-  std::string tilt_axis = "x", law = "li2013";
+  std::string tilt_axis = "x";
+  std::optional<std::string> law;  // li2013, agarwal2023 (free only) or bekker; none: the soil's own law
   std::array<double, 3> omega_rad_s{0.0, 0.0, 0.0};
 };
 

@@ -9,6 +9,7 @@
 #include "lander/pad/pad_pose.h"
 #include "drop_tests/io/vtk_pieces.h"
 #include "drop_tests/io/vtk_writer.h"
+#include "rft/bekker_law.h"
 #include "rft/contact_wrench.h"
 #include "rft/element_stresses.h"
 #include "rft/input_error.h"
@@ -50,9 +51,9 @@ rft::PadKinematics RequestKinematics(const ForceRequest& r, const RequestNaming&
 }
 
 void WriteForceVtk(const io::OutputTarget& target, const geom::PadBody& body, const rft::PadKinematics& k,
-                   const rft::StressLaw3D& law) {
+                   const rft::StressLaw3D& law, const rft::DepthLaw& depth) {
   rft::ElementStresses stresses;
-  rft::ComputeElementStresses(body.surface, k, rft::PlaneGround(), law, rft::DepthLaw{}, &stresses);
+  rft::ComputeElementStresses(body.surface, k, rft::PlaneGround(), law, depth, &stresses);
   const io::VtkPolyData piece = io::PadSurfacePiece(io::MakePadSurfaceMesh(body.surface), k.R_WB, k.p_WB, stresses);
   io::WriteOutputFile(target, [&](std::ostream& out) { io::WriteVtp({piece}, out); });
 }
@@ -65,15 +66,18 @@ nlohmann::json ForceJson(const ForceRequest& r, const RequestNaming& naming, con
   const io::PadSpec pad = io::LoadPad(r.pad);
   rft::SoilParameters soil = io::LoadSoil(r.soil);
   if (r.zeta_N_cm3) soil.zeta_N_m3 = units::ZetaFromN_cm3(*r.zeta_N_cm3);
-  const std::unique_ptr<rft::StressLaw3D> law =
-      rft::MakeStressLaw3D(rft::ParseLawKind(r.law, naming.context, naming.Field("law")), soil, r.gravity_m_s2);
+  const rft::LawKind kind = r.law ? rft::ParseLawKind(*r.law, naming.context, naming.Field("law")) : soil.rft_law_3d;
+  const double plate_b_m = kind == rft::LawKind::kBekker ? rft::BekkerPlateB(pad.body.surface) : 0.0;
+  // The contact model (law and pad-level terms): Bekker's z^n is a pad-level depth law.
+  const rft::SoilContactModel model = rft::MakeSoilContactModel(kind, soil, r.gravity_m_s2, {}, plate_b_m);
+  const rft::StressLaw3D& law = *model.law;
   k.p_WB = pad::PlaceAtDepth(pad.body, k.R_WB, r.depth_m);
-  const rft::ContactWrench w = rft::ComputeContactWrench(pad.body.surface, k, rft::PlaneGround(), *law);
-  if (vtk) WriteForceVtk(*vtk, pad.body, k, *law);
-  return nlohmann::json{
+  const rft::ContactWrench w = rft::ComputeContactWrench(pad.body.surface, k, rft::PlaneGround(), law, model.pad_terms);
+  if (vtk) WriteForceVtk(*vtk, pad.body, k, law, model.pad_terms.depth);
+  nlohmann::json out{
       {"pad", pad.name},
       {"soil", soil.name},
-      {"law", std::string(law->name())},
+      {"law", std::string(law.name())},
       {"depth_m", r.depth_m},
       {"tilt_deg", r.tilt_deg},
       {"tilt_axis", pad::TiltAxisName(axis)},
@@ -86,6 +90,8 @@ nlohmann::json ForceJson(const ForceRequest& r, const RequestNaming& naming, con
       {"leading_elements", w.leading_elements},
       {"surface_elements", pad.body.surface.size()},
   };
+  if (kind == rft::LawKind::kBekker) out["bekker_plate_b_m"] = plate_b_m;
+  return out;
 }
 
 }  // namespace touchdown::drop

@@ -15,7 +15,8 @@ namespace touchdown::drop {
 
 struct ForceRequest {
   std::string pad, soil;  // catalogue names or YAML files
-  std::string law = "li2013", tilt_axis = "x";
+  std::optional<std::string> law;  // li2013, agarwal2023 or bekker; none: the soil's own law
+  std::string tilt_axis = "x";
   double depth_m = 0.0, tilt_deg = 0.0, gravity_m_s2 = 9.81;
   std::array<double, 3> velocity_m_s{0.0, 0.0, -1.0}, omega_rad_s{0.0, 0.0, 0.0};
   std::optional<double> zeta_N_cm3;  // overrides the soil's

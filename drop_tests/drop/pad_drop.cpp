@@ -10,6 +10,7 @@
 #include "drop_tests/drop/free_drop_output.h"
 #include "footpad_geom/axisymmetric_intrusion.h"
 #include "lander/pad/effect_soil_response.h"
+#include "rft/bekker_law.h"
 #include "rft/ground.h"
 #include "rft/input_error.h"
 #include "rft/physical_limits.h"
@@ -99,8 +100,10 @@ PadDrop SimulateDrop(const io::PadSpec& pad, const rft::SoilParameters& soil, co
                conditions.mass_kg.value_or(pad.mass_kg), ZetaAtGravity(drop_soil, conditions.gravity_m_s2), {}, {}, {}};
 
   if (free) {
-    const rft::SoilContactModel law = MakeFreeLaw(drop_soil, conditions.law_3d, conditions.gravity_m_s2,
-                                                  conditions.effects, conditions.effects_source);
+    const bool bekker = RunsOnBekker(drop_soil, conditions.law_3d);
+    const rft::SoilContactModel law =
+        MakeFreeLaw(drop_soil, conditions.law_3d, conditions.gravity_m_s2, conditions.effects,
+                    conditions.effects_source, bekker ? rft::BekkerPlateB(pad.body.surface) : 0.0);
     drop.law_3d = law.name();
     pad::FreeDropInput in;
     in.impact_speed_m_s = conditions.impact_speed_m_s;
@@ -119,18 +122,23 @@ PadDrop SimulateDrop(const io::PadSpec& pad, const rft::SoilParameters& soil, co
     return drop;
   }
 
+  // A Bekker drop has its own integral (a caller's cached one is Li 2013's).
+  const bool bekker = RunsOnBekker(drop_soil, conditions.law_3d);
   std::unique_ptr<geom::AxisymmetricIntrusion> own;
-  if (!options.intrusion) own = MakeRigIntrusion(pad.profile);
-  const geom::AxisymmetricIntrusion& intrusion = options.intrusion ? *options.intrusion : *own;
-  // With no effect terms this is exactly the quasi-static RFT force F_z(d; zeta).
+  if (bekker) own = MakeBekkerRigIntrusion(pad.profile);
+  else if (!options.intrusion) own = MakeRigIntrusion(pad.profile);
+  const geom::AxisymmetricIntrusion& intrusion = own ? *own : *options.intrusion;
+  // With no effect terms this is exactly the quasi-static RFT force F_z(d; zeta) (or Bekker's).
   std::optional<pad::EffectSoilResponse> response;
   try {
-    response.emplace(MakeRigResponse(intrusion, drop_soil, conditions.gravity_m_s2, conditions.effects));
+    if (bekker) response.emplace(MakeBekkerRigResponse(intrusion, drop_soil, conditions.effects));
+    else response.emplace(MakeRigResponse(intrusion, drop_soil, conditions.gravity_m_s2, conditions.effects));
   } catch (const InputError& e) {
     throw MakeInputError(soil.name, "", e.what());
   }
   drop.result =
       pad::RunRigDrop({drop.mass_kg, conditions.gravity_m_s2, conditions.impact_speed_m_s}, *response, options.rig);
+  if (bekker) drop.law_3d = "bekker";
   return drop;
 }
 
@@ -175,6 +183,7 @@ nlohmann::json SummaryJson(const PadDrop& d) {
         {"rest_creep_m", r.rest_creep_m},
         {"solver_steps", r.solver.steps},
     };
+    if (d.law_3d == "bekker") j["law"] = "bekker";  // RFT rig summaries stay as they were
   }
   const std::vector<std::string> active = model::ActiveEffects(d.conditions.effects);
   if (!active.empty()) {

@@ -365,12 +365,14 @@ Diagnosis RunDiagnosis(const dataset::Dataset& ds, const DiagnoseOptions& o) {
       if (it != o.start_model->soils.end())
         s.zeta_N_m3 = it->second.zeta_N_m3 * s.reference_gravity_m_s2 / it->second.reference_gravity_m_s2;
     }
+  StartZetaWhereMissing(ds, d.problem);  // a Bekker soil's RFT base (law_candidate.h)
   io::Progress progress("diagnose", "fits", 1 + static_cast<int64_t>(model::EffectLibrary().size()), o.progress);
   // 1-2: the base model, its gap, where it concentrates.
   d.base = Score(d, ds, {}, o);
   progress.Add(1, ", last: base");
   Relate(d.base, d.base);
   d.where = WhereAnalysis(ds, d.problem, d.base.gaps, o);
+  if (o.law_candidate) d.law_candidate = ScoreBekkerLaw(ds, d.problem, d.base.held_out.force_nrmse);
   // 3: singles, then pairs of the best three when no single explains enough.
   for (const model::EffectInfo& e : model::EffectLibrary()) {
     d.candidates.push_back(Score(d, ds, {e.id}, o));

@@ -33,6 +33,7 @@
 #include "drop_tests/io/progress.h"
 #include "drop_tests/dataset/compare.h"
 #include "drop_tests/gap/diagnose_fit.h"
+#include "drop_tests/gap/law_candidate.h"
 
 namespace touchdown::gap {
 
@@ -47,6 +48,7 @@ struct DiagnoseOptions {
   unsigned seed = 12345;             // permutation tests only
   std::optional<model::ModelFile> start_model;  // --model: starting zeta (and the file it came from)
   io::ProgressOptions progress{io::ProgressMode::kNone};  // of the candidate models fitted
+  bool law_candidate = false;        // --law-candidate: also fit and score the Bekker law (law_candidate.h)
 };
 
 struct DropGap {
@@ -104,6 +106,7 @@ struct Diagnosis {
   std::vector<Finding> where_after;        // the same analysis after the named effect
   double seconds = 0.0;
   long simulations = 0;
+  std::optional<LawCandidate> law_candidate;  // only with DiagnoseOptions::law_candidate
 };
 
 Diagnosis RunDiagnosis(const dataset::Dataset& measured, const DiagnoseOptions& options = {});

@@ -123,6 +123,7 @@ nlohmann::json DiagnosisJson(const Diagnosis& d) {
                           {"train", nlohmann::json::array()}, {"held_out", nlohmann::json::array()}};
   for (const FitDrop& f : d.problem.drops) split[f.train ? "train" : "held_out"].push_back(f.drop_id);
   j["split"] = split;
+  if (d.law_candidate) j["law_candidate"] = LawCandidateJson(*d.law_candidate);
   j["dataset"] = d.dataset_dir;
   j["simulations"] = d.simulations;
   j["seconds"] = d.seconds;
@@ -394,6 +395,14 @@ void WriteReport(const Diagnosis& d, const dataset::Dataset& ds, const Candidate
       out << "| " << c.name << (d.winner >= 0 && &c == &d.candidates[d.winner] ? " **(named)**" : "") << " | "
           << params.str() << " | " << Num(c.held_out.force_nrmse) << " | " << Num(100 * c.gap_reduction, 3) << " % | "
           << Num(100 * c.explained, 3) << " % | " << Num(c.delta_bic, 5) << " |\n";
+    }
+    if (d.law_candidate) {  // --law-candidate: "the gap is the law" (law_candidate.h)
+      const LawCandidate& l = *d.law_candidate;
+      out << "\nThe law as a candidate (" << l.law << ", fitted per soil on the training drops): ";
+      if (!l.applies) out << "does not apply (" << l.why_not << ").\n";
+      else
+        out << "held-out force NRMSE " << Num(l.held_out_force_nrmse) << " against RFT's " << Num(l.base_held_out_force_nrmse)
+            << " (" << Num(100 * l.gap_reduction, 3) << " % of the gap; reported, not part of the decision).\n";
     }
     out << "\n## 4. Model\n\n`model.yaml`: the base model's zeta per soil"
         << (d.winner >= 0 ? " plus `" + d.named_effect + "` with its fitted parameters and 95 % intervals" : "")

@@ -48,6 +48,33 @@ const FieldTable<rft::SoilParameters>& SoilNumberFields() {
   return fields;
 }
 
+// The `bekker:` block of a soil file (rft/bekker_parameters.h): kN, kPa, deg and mm in the file.
+const FieldTable<rft::BekkerParameters>& BekkerFields() {
+  using B = rft::BekkerParameters;
+  static const FieldTable<B> fields{
+      {"n", &B::n, 1.0, Sign::kPositive, false, false},
+      {"k_c_kN_m_n1", &B::k_c_N_m_n1, 1e3, Sign::kNonNegative, false, false},
+      {"k_phi_kN_m_n2", &B::k_phi_N_m_n2, 1e3, Sign::kNonNegative, false, false},
+      {"cohesion_kPa", &B::cohesion_Pa, 1e3, Sign::kNonNegative, false, false},
+      {"friction_angle_deg", &B::friction_angle_rad, kDeg, Sign::kNonNegative, false, false},
+      {"shear_modulus_K_mm", &B::shear_modulus_K_m, kMm, Sign::kPositive, false, false},
+  };
+  return fields;
+}
+
+rft::BekkerParameters ReadBekkerBlock(const YamlFields& f) {
+  const YamlFields b = f.Child("bekker");
+  std::vector<std::string> known = FieldKeys(BekkerFields());
+  known.push_back("provenance");
+  b.RequireOnly(known);
+  rft::BekkerParameters out;
+  ReadFields(b, BekkerFields(), out);
+  if (out.n > 5.0) b.Fail("n", "must be at most 5 (Bekker exponents are about 0.5 to 1.5)");
+  if (out.friction_angle_rad >= 90.0 * kDeg) b.Fail("friction_angle_deg", "must be below 90");
+  if (!(out.k_c_N_m_n1 + out.k_phi_N_m_n2 > 0.0)) b.Fail("k_phi_kN_m_n2", "k_c and k_phi cannot both be 0");
+  return out;
+}
+
 std::vector<geom::ProfilePoint> ReadProfileTable(const YamlFields& f, PadFileFields& file) {
   std::vector<geom::ProfilePoint> points;
   const YAML::Node list = f.node()["points_mm"];
@@ -333,7 +360,7 @@ rft::SoilParameters LoadSoil(const std::string& name_or_path) {
   const YamlFields f = YamlFields::LoadFile(path);
   f.RequireSchemaVersion(1);
   std::vector<std::string> known{"schema_version", "name", "description", "atmosphere", "zeta_N_cm3", "provenance",
-                                 "dynamic_term"};
+                                 "dynamic_term", "law", "bekker"};
   for (const std::string& key : FieldKeys(SoilNumberFields())) known.push_back(key);
   f.RequireOnly(known);
   rft::SoilParameters soil;
@@ -348,8 +375,23 @@ rft::SoilParameters LoadSoil(const std::string& name_or_path) {
   // The 3D laws' soil fields (rft/soil.h): Agarwal 2023's intruder-surface friction, and the
   // dynamic term lambda rho_c (v.n)^2 of the 3D contact (free drops, force, lander).
   if (soil.surface_friction_coefficient > 10.0) f.Fail("mu_surf", "must be at most 10 (a friction coefficient)");
-  if (!f.Has("zeta_N_cm3")) f.Fail("zeta_N_cm3", "missing (a number, or 'agarwal2023' to derive it)");
-  if (f.node()["zeta_N_cm3"].IsScalar() && f.node()["zeta_N_cm3"].Scalar() == "agarwal2023") {
+  // `law: bekker` (rft/bekker_law.h): the bekker block is the soil's law and zeta is optional; a
+  // bekker block beside an RFT law is kept for `--law bekker`.
+  if (f.Has("law")) {
+    try {
+      soil.rft_law_3d = rft::ParseLawKind(f.String("law"), "", "");
+    } catch (const InputError& e) {
+      f.Fail("law", e.what());
+    }
+  }
+  const bool bekker = soil.rft_law_3d == rft::LawKind::kBekker;
+  if (bekker && !f.Has("bekker")) f.Fail("bekker", "missing (law: bekker needs its bekker block)");
+  if (f.Has("bekker")) soil.bekker = ReadBekkerBlock(f);
+  if (bekker && !f.Has("zeta_N_cm3")) {
+    // no RFT scaling: the soil runs on Bekker's law only
+  } else if (!f.Has("zeta_N_cm3")) {
+    f.Fail("zeta_N_cm3", "missing (a number, or 'agarwal2023' to derive it)");
+  } else if (f.node()["zeta_N_cm3"].IsScalar() && f.node()["zeta_N_cm3"].Scalar() == "agarwal2023") {
     if (soil.bulk_density_kg_m3 == 0.0 || soil.internal_friction_angle_rad == 0.0)
       f.Fail("zeta_N_cm3", "'agarwal2023' needs bulk_density_kg_m3 and internal_friction_angle_deg");
     soil.zeta_N_m3 = rft::AgarwalScalingXi(soil.bulk_density_kg_m3, soil.reference_gravity_m_s2,
@@ -410,14 +452,28 @@ void WritePad(const PadSpec& pad, const std::string& path) {
 }
 
 void WriteSoil(const rft::SoilParameters& soil, const std::string& path) {
+  WriteFileAtomically(path, [&](std::ostream& out) { WriteSoil(soil, out); });
+}
+
+void WriteSoil(const rft::SoilParameters& soil, std::ostream& out) {
   YAML::Emitter y;
   y << YAML::BeginMap << YAML::Key << "schema_version" << YAML::Value << 1 << YAML::Key << "name" << YAML::Value
-    << soil.name << YAML::Key << "atmosphere" << YAML::Value << rft::AtmosphereName(soil.atmosphere) << YAML::Key << "zeta_N_cm3"
-    << YAML::Value << units::ZetaToN_cm3(soil.zeta_N_m3);
+    << soil.name << YAML::Key << "atmosphere" << YAML::Value << rft::AtmosphereName(soil.atmosphere);
+  const bool bekker = soil.rft_law_3d == rft::LawKind::kBekker;
+  // A Bekker soil without zeta leaves it out (0 would not read back); RFT soils always state it.
+  if (!bekker || soil.zeta_N_m3 > 0.0)
+    y << YAML::Key << "zeta_N_cm3" << YAML::Value << units::ZetaToN_cm3(soil.zeta_N_m3);
   WriteFields(y, SoilNumberFields(), soil);
+  if (soil.rft_law_3d != rft::LawKind::kLi2013)
+    y << YAML::Key << "law" << YAML::Value << std::string(rft::LawKindName(soil.rft_law_3d));
+  if (bekker || soil.bekker.k_c_N_m_n1 + soil.bekker.k_phi_N_m_n2 > 0.0) {
+    y << YAML::Key << "bekker" << YAML::Value << YAML::BeginMap;
+    WriteFields(y, BekkerFields(), soil.bekker);
+    y << YAML::EndMap;
+  }
   if (soil.dynamic_term) y << YAML::Key << "dynamic_term" << YAML::Value << true;
   y << YAML::EndMap;
-  WriteFileAtomically(path, [&](std::ostream& out) { out << y.c_str() << '\n'; });
+  out << y.c_str() << '\n';
 }
 
 }  // namespace touchdown::io

@@ -9,6 +9,8 @@
 
 #include "footpad_geom/axisymmetric_profile.h"
 #include "footpad_geom/pad_body.h"
+#include <iosfwd>
+
 #include "rft/soil.h"
 
 namespace touchdown::io {
@@ -74,5 +76,7 @@ void WritePad(const PadSpec& pad, const std::string& path);
 rft::SoilParameters LoadSoil(const std::string& name_or_path);
 // A soil file that LoadSoil reads back to the same soil (zeta as a number, in N/cm^3).
 void WriteSoil(const rft::SoilParameters& soil, const std::string& path);
+// The same text to a stream (an output file another command writes: calibrate --law bekker).
+void WriteSoil(const rft::SoilParameters& soil, std::ostream& out);
 
 }  // namespace touchdown::io

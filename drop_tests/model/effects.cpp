@@ -121,14 +121,15 @@ std::vector<std::pair<std::string, std::string>> EffectsNotApplied(const rft::Ef
 }
 
 rft::SoilContactModel MakeEffectLaw3D(rft::LawKind law, const rft::SoilParameters& soil, double gravity_m_s2,
-                                      const rft::EffectTerms& t, bool in_air, const std::string& model_source) {
+                                      const rft::EffectTerms& t, bool in_air, const std::string& model_source,
+                                      double bekker_plate_b_m) {
   rft::EffectTerms terms = t;
   if (!in_air) terms.gas_chi = terms.gas_c_N_s_m3 = 0.0;  // the gas cushion acts on beds in air only
   if ((terms.inertial_lambda > 0.0 || terms.added_mass_ca > 0.0) && !(soil.bulk_density_kg_m3 > 0.0))
     throw MakeInputError(soil.name, "bulk_density_kg_m3",
                          "the soil must state its bulk density for inertial_drag and added_mass (model " +
                              model_source + ")");
-  return rft::MakeSoilContactModel(law, soil, gravity_m_s2, terms);
+  return rft::MakeSoilContactModel(law, soil, gravity_m_s2, terms, bekker_plate_b_m);
 }
 
 }  // namespace touchdown::model

@@ -80,8 +80,10 @@ std::vector<std::pair<std::string, std::string>> EffectsNotApplied(const rft::Ef
 // added_mass (rho = the soil's bulk density, as in the rig), rate_damping, compaction_peak,
 // depth_exponent, and gas_cushion when `in_air`. Throws InputError naming the soil and
 // `model_source` when an effect needs the bulk density and the soil has none.
+// `bekker_plate_b_m`: the pad's footprint dimension b for the bekker law (rft::BekkerPlateB).
 rft::SoilContactModel MakeEffectLaw3D(rft::LawKind law, const rft::SoilParameters& soil, double gravity_m_s2,
-                                      const rft::EffectTerms& terms, bool in_air, const std::string& model_source);
+                                      const rft::EffectTerms& terms, bool in_air, const std::string& model_source,
+                                      double bekker_plate_b_m = 0.0);
 
 // Per effect, the [low, high] (SI) of each parameter in EffectInfo order (a fit's confidence
 // intervals; informational). Reading and writing the `effects:` mapping of a model file:

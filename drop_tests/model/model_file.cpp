@@ -132,10 +132,13 @@ rft::EffectTerms ModelEffectTerms(const ModelFile& m) {
 }
 
 rft::SoilContactModel MakeModelStressLaw3D(rft::LawKind law, const rft::SoilParameters& soil,
-                                           double gravity_m_s2, const ModelFile* model) {
-  if (!model) return MakeEffectLaw3D(law, soil, gravity_m_s2, rft::EffectTerms{}, soil.atmosphere == rft::Atmosphere::kAir, "");
+                                           double gravity_m_s2, const ModelFile* model, double bekker_plate_b_m) {
+  if (!model)
+    return MakeEffectLaw3D(law, soil, gravity_m_s2, rft::EffectTerms{}, soil.atmosphere == rft::Atmosphere::kAir, "",
+                           bekker_plate_b_m);
   return MakeEffectLaw3D(law, ApplyModel(*model, soil), gravity_m_s2, ModelEffectTerms(*model),
-                         soil.atmosphere == rft::Atmosphere::kAir, model->source.empty() ? "model " + model->name : model->source);
+                         soil.atmosphere == rft::Atmosphere::kAir, model->source.empty() ? "model " + model->name : model->source,
+                         bekker_plate_b_m);
 }
 
 nlohmann::json ModelEffectsJson(const ModelFile& m) {

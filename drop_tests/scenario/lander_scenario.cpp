@@ -16,6 +16,7 @@
 #include "drop_tests/scenario/lander_vtk.h"
 #include "drop_tests/io/paths_in_outputs.h"
 #include "drop_tests/io/yaml_fields.h"
+#include "rft/bekker_law.h"
 #include "rft/input_error.h"
 #include "rft/physical_limits.h"
 #include "rft/stress_law_3d_factory.h"
@@ -263,6 +264,9 @@ LanderPatchSpec ReadPatch(const io::YamlFields& p, const SoilCheck& check_soil) 
   return patch;
 }
 
+// A footprint dimension for checking a soil against the bekker law before the pad is placed.
+constexpr double kAnyPlateB_m = 1.0;
+
 // The ground: plane or slope, the 3D law, the default soil and the soil patches (every soil
 // loaded and checked against the law at `gravity_m_s2`).
 // A resolved copy's ground also has its `soils` and `model` (checked and read by the caller).
@@ -274,15 +278,18 @@ LanderGroundSpec ReadGround(const io::YamlFields& g, double gravity_m_s2, bool r
     g.RequireOnly({"height_m", "slope_deg", "downhill_azimuth_deg", "law", "soil", "patches"});
   io::ReadFields(g, GroundNumberFields(), ground);
   if (ground.slope_rad >= 80 * kDeg) g.Fail("slope_deg", "must be below 80");
-  try {
-    ground.law = rft::ParseLawKind(g.StringOr("law", "li2013"), "", "");
-  } catch (const InputError& e) {
-    g.Fail("law", e.what());
-  }
   ground.default_soil = g.String("soil");
+  try {
+    // No `law`: the default soil's own (li2013 for every RFT soil file, bekker for a Bekker soil).
+    ground.law = g.Has("law") ? rft::ParseLawKind(g.String("law"), "", "")
+                              : io::LoadSoil(ground.default_soil).rft_law_3d;
+  } catch (const InputError& e) {
+    g.Fail(g.Has("law") ? "law" : "soil", e.what());
+  }
   const SoilCheck check_soil = [&](const io::YamlFields& where, const std::string& key, const std::string& soil) {
     try {
-      rft::MakeStressLaw3D(ground.law, io::LoadSoil(soil), gravity_m_s2);
+      // The pad is not known yet: any b checks the soil (its checks do not depend on b).
+      rft::MakeStressLaw3D(ground.law, io::LoadSoil(soil), gravity_m_s2, kAnyPlateB_m);
     } catch (const InputError& e) {
       where.Fail(key, e.what());
     }
@@ -538,9 +545,11 @@ LanderSetup BuildLanderSetup(const LanderScenario& sc) {
     }
     out.terrain.patches.push_back(patch);
   }
+  // The bekker law's b is the lander's pad's (the same pad on every leg).
+  const double plate_b_m = sc.ground.law == rft::LawKind::kBekker ? rft::BekkerPlateB(sc.lander.pad.body.surface) : 0.0;
   for (const std::string& name : soil_names)
-    out.terrain.soils.push_back(
-        {name, model::MakeModelStressLaw3D(sc.ground.law, io::LoadSoil(name), g, sc.model ? &*sc.model : nullptr)});
+    out.terrain.soils.push_back({name, model::MakeModelStressLaw3D(sc.ground.law, io::LoadSoil(name), g,
+                                                                   sc.model ? &*sc.model : nullptr, plate_b_m)});
   return out;
 }
 

@@ -12,6 +12,7 @@
 #include "drop_tests/io/output_path.h"
 #include "drop_tests/sweep/sweep_drop.h"
 #include "drop_tests/io/yaml_fields.h"
+#include "rft/bekker_law.h"
 #include "rft/input_error.h"
 #include "rft/physical_limits.h"
 #include "rft/units.h"
@@ -688,7 +689,8 @@ SweepPlan LoadSweepPlan(const std::string& path, const std::string& model_overri
     try {
       scenario::BuildLanderSetup(*plan.lander);  // the scenario's own soils under the model
       for (const std::string& ref : plan.soil_refs)
-        model::MakeModelStressLaw3D(plan.lander->ground.law, io::LoadSoil(ref), plan.lander->gravity_m_s2, model);
+        model::MakeModelStressLaw3D(plan.lander->ground.law, io::LoadSoil(ref), plan.lander->gravity_m_s2, model,
+                                    rft::BekkerPlateB(plan.lander->lander.pad.body.surface));
     } catch (const InputError& e) {
       f.Fail("lander", e.what());
     }

@@ -81,6 +81,22 @@ TEST_F(Cli, ForceOfFlatPadMatchesTheClosedForm) {
   EXPECT_LT(nlohmann::json::parse(t.out)["force_N"][0].get<double>(), 0.0);
 }
 
+TEST_F(Cli, ForceAndDropOnABekkerSoil) {
+  // The soil's own law (bekker): F = A (k_c / b + k_phi) d on the revolved flat pad's footprint.
+  const CliRun r = Touchdown("force --pad flat --soil lunar_nominal_bekker --depth 0.005");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["law"], "bekker");
+  const double b = j["bekker_plate_b_m"].get<double>(), d = 0.005;
+  EXPECT_NEAR(b, 0.05, 0.05 * 2e-3);  // the revolved polygon's equal-area radius
+  const double closed = M_PI * b * b * (1.4e3 / b + 820e3) * d;
+  EXPECT_NEAR(j["force_N"][2].get<double>(), closed, 1e-9 * closed);
+  // The same soil on the rig, and --law bekker asked for on it.
+  const CliRun rig = Touchdown("drop --pad flat --soil lunar_nominal_bekker --speed 1 --gravity 1.62 --law bekker");
+  ASSERT_EQ(rig.status, 0) << rig.err;
+  EXPECT_EQ(nlohmann::json::parse(rig.out)["law"], "bekker");
+}
+
 // Issue 13 section 4: `force` and `drop` never print null or NaN for a number, at the edges of
 // the physical ranges (rft/physical_limits.h) too; beyond them the input is refused (exit 2).
 void ExpectOnlyFiniteNumbers(const nlohmann::json& v, const std::string& where) {
@@ -205,7 +221,13 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"ForceNanDepth", "force --pad flat --soil fjs1_lp --depth nan", "--depth: must be between -10 and 10 m, got nan"},
         BadInput{"ForceNoMotion", "force --pad flat --soil fjs1_lp --depth 0.01 --velocity 0,0,0",
                  "the pad must move"},
-        BadInput{"ForceUnknownLaw", "force --pad flat --soil fjs1_lp --depth 0.01 --law bekker", "bekker"}),
+        BadInput{"ForceUnknownLaw", "force --pad flat --soil fjs1_lp --depth 0.01 --law wong", "wong"},
+        BadInput{"DropBekkerOnRftSoil", "drop --pad flat --soil fjs1_lp --speed 1 --law bekker",
+                 "bekker.k_phi_kN_m_n2: k_c and k_phi cannot both be 0"},
+        BadInput{"CalibrateBekkerNoShear",
+                 "calibrate " TOUCHDOWN_SOURCE_DIR "/data/datasets/air_vs_vacuum_synthetic --law bekker --soil fjs1_lp "
+                 "--pad flat --atmosphere vacuum --out {dir}/fit.yaml",
+                 "--shear-from: soil 'fjs1_lp' has no bekker block"}),
     [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace

@@ -45,7 +45,7 @@ def data_dir():
 
 
 def drop(pad, soil, speed, *, mass=None, gravity=9.81, zeta=None, model=None, free=False, tilt_deg=0.0,
-         tilt_axis="x", horizontal_speed=0.0, omega=(0.0, 0.0, 0.0), law="li2013", trace=False):
+         tilt_axis="x", horizontal_speed=0.0, omega=(0.0, 0.0, 0.0), law=None, trace=False):
     """One drop, as `touchdown drop`: the summary dict the command prints as JSON.
 
     With trace=True, returns (summary, trace): trace maps the trace CSV's column names (t_s,
@@ -62,7 +62,7 @@ def drop(pad, soil, speed, *, mass=None, gravity=9.81, zeta=None, model=None, fr
 
 
 def force(pad, soil, depth, *, tilt_deg=0.0, tilt_axis="x", velocity=(0.0, 0.0, -1.0), omega=(0.0, 0.0, 0.0),
-          law="li2013", zeta=None, gravity=9.81):
+          law=None, zeta=None, gravity=9.81):
     """The quasi-static soil wrench on a pad held at a depth, as `touchdown force` (a dict)."""
     with _catalog_files(pad=pad, soil=soil) as files:
         text = _touchdown.force(pad=files["pad"], soil=files["soil"], depth=depth, tilt_deg=tilt_deg,

@@ -25,15 +25,23 @@ void ExpectSameSoil(const rft::SoilParameters& a, const rft::SoilParameters& b) 
   EXPECT_EQ(a.dynamic_lambda, b.dynamic_lambda);
   EXPECT_EQ(a.dynamic_density_kg_m3, b.dynamic_density_kg_m3);
   EXPECT_EQ(a.rft_law_3d, b.rft_law_3d);
+  // The bekker block goes through kN, kPa, degrees and mm.
+  EXPECT_DOUBLE_EQ(a.bekker.n, b.bekker.n);
+  EXPECT_DOUBLE_EQ(a.bekker.k_c_N_m_n1, b.bekker.k_c_N_m_n1);
+  EXPECT_DOUBLE_EQ(a.bekker.k_phi_N_m_n2, b.bekker.k_phi_N_m_n2);
+  EXPECT_DOUBLE_EQ(a.bekker.cohesion_Pa, b.bekker.cohesion_Pa);
+  EXPECT_DOUBLE_EQ(a.bekker.friction_angle_rad, b.bekker.friction_angle_rad);
+  EXPECT_DOUBLE_EQ(a.bekker.shear_modulus_K_m, b.bekker.shear_modulus_K_m);
 }
 
 void RoundTrip(const rft::SoilParameters& loaded, const std::string& first, const std::string& second) {
   testing_scratch::ExpectRoundTrip(
-      loaded, first, second, WriteSoil, [](const std::string& path) { return LoadSoil(path); }, ExpectSameSoil);
+      loaded, first, second, [](const rft::SoilParameters& s, const std::string& path) { WriteSoil(s, path); },
+      [](const std::string& path) { return LoadSoil(path); }, ExpectSameSoil);
 }
 
 TEST_F(SoilRoundTrip, BundledSoils) {
-  for (const char* name : {"fjs1_lp", "fjs1_cp"}) {
+  for (const char* name : {"fjs1_lp", "fjs1_cp", "lunar_nominal_bekker", "soft_sand_bekker", "toyoura_bekker"}) {
     SCOPED_TRACE(name);
     RoundTrip(LoadSoil(name), Path(std::string(name) + "_1.yaml"), Path(std::string(name) + "_2.yaml"));
   }
