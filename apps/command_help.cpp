@@ -42,7 +42,7 @@ const std::vector<CommandExamples>& Examples() {
       {"synth", {"touchdown synth data/datasets/air_vs_vacuum_synthetic.synth.yaml --out runs/synthetic_dataset"}},
       {"diagnose", {"touchdown diagnose data/datasets/air_vs_vacuum_synthetic --out runs/diagnose"}},
       {"stability",
-       {"touchdown stability data/studies/lunar_paper_lander.yaml --out runs/lunar_quick --samples 20   # a quick look"}},
+       {"touchdown stability data/studies/lunar_paper_lander.yaml --out runs/lunar_quick --samples 10   # a quick look"}},
   };
   return examples;
 }

@@ -9,7 +9,7 @@ td="$root/build/apps/touchdown"
 mkdir -p "$out"
 "$td" campaign "$root/data/scenarios/sutoh2017_single_footpad.yaml" --out "$out/single_footpad"
 # The paper's four-legged lander, Table II cases A (LP LP LP LP), B (CP LP LP LP) and C
-# (CP CP LP LP), in vacuum; B and C take 9-13 s each (see README, known limits).
+# (CP CP LP LP), in vacuum (each well under a second of CPU: docs/lander_dynamics.md, "Speed").
 for c in A B C; do
   "$td" lander "$root/data/scenarios/lander_case_$c.yaml" --out "$out/lander_case_$c"
 done
