@@ -32,7 +32,8 @@ void AddTradeCommand(CLI::App& app) {
     io::OpenOutputDirectory({args->out, {args->sweep, args->model}}, io::OutputKind::kSweep);
     sweep::SweepRunOptions options;
     options.threads = args->threads;
-    options.progress = sweep::ProgressMode::kNone;
+    options.progress = sweep::ProgressMode::kAuto;  // shown once the sweep has run a second
+    options.progress_quiet_s = 1.0;
     sweep::RunSweep(plan, args->out, options);
     const sweep::ResultsDb db(sweep::ResultsDbPath(args->out));
     const std::vector<sweep::TradeRow> rows = sweep::TradeTable(db.ReadAll(/*with_traces=*/false), limits);

@@ -17,6 +17,7 @@
 #include "drop_tests/io/catalog.h"
 #include "drop_tests/io/output_path.h"
 #include "drop_tests/scenario/lander_scenario.h"
+#include "drop_tests/scenario/lander_trace_columns.h"
 #include "drop_tests/stability/study.h"
 #include "drop_tests/stability/study_outputs.h"
 #include "drop_tests/sweep/sweep.h"
@@ -89,16 +90,33 @@ std::string Force(const drop::ForceRequest& request) {
   return drop::ForceJson(request, {"touchdown.force", false}).dump(2);
 }
 
-// touchdown lander: the summary JSON text; the outputs into `out` when given (a new directory).
-std::string Lander(const std::string& scenario_path, const std::string& model, const std::string& out) {
-  py::gil_scoped_release unlocked;
-  const io::OutputTarget target(out, {scenario_path, model});
-  if (!out.empty()) io::CheckOutputDirectory(target, io::OutputKind::kLander);
-  scenario::LanderScenario scenario = scenario::LoadLanderScenario(scenario_path);
-  if (!model.empty()) scenario.model = model::LoadModelFile(model);
-  const scenario::LanderRun run = scenario::RunLanderScenario(scenario);
-  if (!out.empty()) scenario::WriteLanderOutputs(run, target);
-  return scenario::LanderSummaryJson(run).dump(2);
+// The lander trace's columns (trace.csv's, scenario::LanderTraceColumns) as arrays.
+py::dict LanderTraceArrays(const std::vector<lander::LanderSample>& trace) {
+  py::dict arrays;
+  for (const scenario::LanderTraceColumn& c : scenario::LanderTraceColumns()) {
+    py::array_t<double> a(static_cast<py::ssize_t>(trace.size()));
+    double* out = a.mutable_data();
+    for (const lander::LanderSample& s : trace) *out++ = c.value(s);
+    arrays[py::str(c.name)] = a;
+  }
+  return arrays;
+}
+
+// touchdown lander: the summary JSON text and, when asked, the trace's columns (else None); the
+// outputs into `out` when given (a new directory).
+py::tuple Lander(const std::string& scenario_path, const std::string& model, const std::string& out, bool with_trace) {
+  std::optional<scenario::LanderRun> run;
+  {
+    py::gil_scoped_release unlocked;
+    const io::OutputTarget target(out, {scenario_path, model});
+    if (!out.empty()) io::CheckOutputDirectory(target, io::OutputKind::kLander);
+    scenario::LanderScenario scenario = scenario::LoadLanderScenario(scenario_path);
+    if (!model.empty()) scenario.model = model::LoadModelFile(model);
+    run = scenario::RunLanderScenario(scenario);
+    if (!out.empty()) scenario::WriteLanderOutputs(*run, target);
+  }
+  const std::string summary = scenario::LanderSummaryJson(*run).dump(2);
+  return py::make_tuple(summary, with_trace ? py::object(LanderTraceArrays(run->result.trace)) : py::object(py::none()));
 }
 
 // touchdown sweep (one process, no progress output): runs, or resumes, the plan's drops into
@@ -192,7 +210,7 @@ PYBIND11_MODULE(_touchdown, m) {
       },
       py::arg("pad"), py::arg("soil"), py::arg("depth"), py::arg("tilt_deg"), py::arg("tilt_axis"),
       py::arg("velocity"), py::arg("omega"), py::arg("law"), py::arg("zeta"), py::arg("gravity"));
-  m.def("lander", &python::Lander, py::arg("scenario"), py::arg("model"), py::arg("out"));
+  m.def("lander", &python::Lander, py::arg("scenario"), py::arg("model"), py::arg("out"), py::arg("trace"));
   m.def("sweep", &python::Sweep, py::arg("plan"), py::arg("out"), py::arg("model"), py::arg("threads"));
   m.def("stability", &python::Stability, py::arg("study"), py::arg("out"), py::arg("model"), py::arg("samples"),
         py::arg("threads"));

@@ -13,6 +13,7 @@
 #include "drop_tests/io/dataset_csv.h"  // io::FormatNumber
 #include "drop_tests/io/field_table.h"
 #include "drop_tests/scenario/lander_plots.h"
+#include "drop_tests/scenario/lander_trace_columns.h"
 #include "drop_tests/scenario/lander_vtk.h"
 #include "drop_tests/io/paths_in_outputs.h"
 #include "drop_tests/io/yaml_fields.h"
@@ -632,40 +633,12 @@ nlohmann::json LanderSummaryJson(const LanderRun& run) {
 }
 
 void WriteLanderTraceCsv(const LanderRun& run, const std::string& path) {
+  const std::vector<LanderTraceColumn>& columns = LanderTraceColumns();
   io::WriteFileAtomically(path, [&](std::ostream& out) {
-    out << "t_s,x_m,y_m,z_m,roll_deg,pitch_deg,yaw_deg,tilt_deg,vx_m_s,vy_m_s,vz_m_s,wx_rad_s,wy_rad_s,wz_rad_s,"
-           "az_m_s2";
-    for (int i = 1; i <= lander::kNumLegs; ++i) out << ",depth" << i << "_m";
-    for (int i = 1; i <= lander::kNumLegs; ++i) out << ",force" << i << "_N";
-    for (int i = 1; i <= lander::kNumLegs; ++i) out << ",fz" << i << "_N";
-    for (int i = 1; i <= lander::kNumLegs; ++i) out << ",held" << i;
-    for (int i = 1; i <= lander::kNumLegs; ++i) out << ",stroke" << i << "_m";
-    out << ",kinetic_J,potential_J,dissipated_J";
-    // The poses (after the columns above, which keep their order): the body's attitude as a unit
-    // quaternion, then each pad's attitude and ball-joint centre, so that anything can be animated.
-    out << ",qw,qx,qy,qz";
-    for (int i = 1; i <= lander::kNumLegs; ++i)
-      out << ",pad" << i << "_qw,pad" << i << "_qx,pad" << i << "_qy,pad" << i << "_qz";
-    for (int i = 1; i <= lander::kNumLegs; ++i)
-      out << ",joint" << i << "_x_m,joint" << i << "_y_m,joint" << i << "_z_m";
+    for (size_t c = 0; c < columns.size(); ++c) out << (c ? "," : "") << columns[c].name;
     out << '\n' << std::setprecision(10);
     for (const lander::LanderSample& s : run.result.trace) {
-      out << s.t_s << ',' << s.p_WB.x() << ',' << s.p_WB.y() << ',' << s.p_WB.z() << ',' << s.attitude.roll_rad / kDeg
-          << ',' << s.attitude.pitch_rad / kDeg << ',' << s.attitude.yaw_rad / kDeg << ',' << s.attitude.tilt_rad / kDeg;
-      for (int k = 0; k < 3; ++k) out << ',' << s.v_WB_W[k];
-      for (int k = 0; k < 3; ++k) out << ',' << s.w_WB_W[k];
-      out << ',' << s.a_WB_W.z();
-      for (int i = 0; i < lander::kNumLegs; ++i) out << ',' << s.pad_depth_m[i];
-      for (int i = 0; i < lander::kNumLegs; ++i) out << ',' << s.pad_force_W[i].norm();
-      for (int i = 0; i < lander::kNumLegs; ++i) out << ',' << s.pad_force_W[i].z();
-      for (int i = 0; i < lander::kNumLegs; ++i) out << ',' << s.pad_held[i];
-      for (int i = 0; i < lander::kNumLegs; ++i) out << ',' << s.stroke_m[i];
-      out << ',' << s.kinetic_J << ',' << s.potential_J << ',' << s.dissipated_J;
-      for (int k = 0; k < 4; ++k) out << ',' << s.q_WB[k];
-      for (int i = 0; i < lander::kNumLegs; ++i)
-        for (int k = 0; k < 4; ++k) out << ',' << s.q_WP[i][k];
-      for (int i = 0; i < lander::kNumLegs; ++i)
-        for (int k = 0; k < 3; ++k) out << ',' << s.p_WJ[i][k];
+      for (size_t c = 0; c < columns.size(); ++c) out << (c ? "," : "") << columns[c].value(s);
       out << '\n';
     }
   });

@@ -52,6 +52,7 @@ struct SweepRunOptions {
   double commit_interval_s = 0.5;  // and a transaction at least this often while drops finish
   ProgressMode progress = ProgressMode::kAuto;  // auto: a bar on a terminal, else lines
   double progress_interval_s = 10.0;            // for lines
+  double progress_quiet_s = 0.0;                // nothing shown before (trade: a quick study prints nothing)
   std::ostream* log = nullptr;                  // progress and failed drops; default std::cerr
   // When it becomes non-zero (a signal number, StopOnSignals::flag()), the run stops: running
   // drops finish and are committed, the rest is left for a restart. nullptr: never.
@@ -117,7 +118,8 @@ MergeSummary MergeSweepResults(const std::string& out_dir, const std::vector<std
 // (what a stability study watches). Used by RunSweep and the MPI runner.
 class SweepProgress {
  public:
-  SweepProgress(std::ostream& out, ProgressMode mode, double interval_s, int64_t total, int64_t done_before);
+  SweepProgress(std::ostream& out, ProgressMode mode, double interval_s, int64_t total, int64_t done_before,
+                double quiet_s = 0.0);
   void Add(const std::vector<DropRecord>& records);  // prints failures, updates the display
   void Finish();
   int64_t failed_now() const { return failed_; }

@@ -30,3 +30,18 @@ def test_a_missing_scenario_raises_value_error_naming_it(tmp_path):
     missing = tmp_path / "nope.yaml"
     with pytest.raises(ValueError, match="nope.yaml"):
         touchdown.lander(missing)
+
+
+def test_lander_trace_arrays_match_the_trace_csv(tmp_path):
+    np = pytest.importorskip("numpy")
+    summary, trace = touchdown.lander(data_file("scenarios", "lander_case_B.yaml"), out=tmp_path / "b", trace=True)
+    with open(tmp_path / "b" / "trace.csv", encoding="utf-8") as f:
+        header = f.readline().strip().split(",")
+        rows = [line.strip().split(",") for line in f]
+    assert list(trace) == header  # same columns, same order
+    for k, name in enumerate(header):
+        array = trace[name]
+        assert isinstance(array, np.ndarray) and array.dtype == np.float64
+        # trace.csv holds 10 significant digits: the arrays, printed so, give every cell's text.
+        assert ["%.10g" % v for v in array] == [row[k] for row in rows], name
+    assert [trace["depth%d_m" % i][-1] for i in range(1, 5)] == pytest.approx(summary["final_penetration_m"], rel=1e-9)

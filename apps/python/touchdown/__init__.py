@@ -71,11 +71,13 @@ def force(pad, soil, depth, *, tilt_deg=0.0, tilt_axis="x", velocity=(0.0, 0.0, 
     return json.loads(text)
 
 
-def lander(scenario, *, model=None, out=None):
+def lander(scenario, *, model=None, out=None, trace=False):
     """A lander scenario file run as `touchdown lander`: its summary dict. With out=DIR, also its
-    outputs (summary.json, trace.csv, events.csv, plots/) into the new directory DIR."""
-    return json.loads(_touchdown.lander(scenario=_path_text(scenario), model=_path_text(model),
-                                        out=_path_text(out)))
+    outputs (summary.json, trace.csv, events.csv, plots/, vtk/) into the new directory DIR. With
+    trace=True: (summary, {column: float64 array}), the columns of trace.csv under its names."""
+    summary, arrays = _touchdown.lander(scenario=_path_text(scenario), model=_path_text(model),
+                                        out=_path_text(out), trace=trace)
+    return (json.loads(summary), arrays) if trace else json.loads(summary)
 
 
 def sweep(plan, out, *, model=None, threads=0):
