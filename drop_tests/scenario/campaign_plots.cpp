@@ -46,7 +46,9 @@ std::vector<Stroke> DenseStrokes(const CampaignResult& r, const fs::path& dir) {
     t_stop_max = std::max(t_stop_max, runs.back().second.result.time_to_rest_s);
   }
   std::vector<Stroke> strokes;
-  for (const auto& [c, d] : runs) {
+  for (const auto& run : runs) {
+    const CampaignCase* c = run.first;
+    const drop::PadDrop& d = run.second;  // named, not a structured binding: clang 14 cannot capture those
     const std::string file = "plots/data/" + c->drop_id + ".csv";
     io::WriteFileAtomically((dir / file).string(), [&](std::ostream& out) {
       out << "t_ms,penetration_mm,force_N\n" << std::setprecision(6);  // a figure's resolution
