@@ -265,6 +265,42 @@ LanderPatchSpec ReadPatch(const io::YamlFields& p, const SoilCheck& check_soil) 
   return patch;
 }
 
+// `ground.soil_field` (soil_field.h): soils checked like any patch's, probabilities summing to 1,
+// at most 400 cells a side.
+SoilFieldSpec ReadSoilField(const io::YamlFields& f, const SoilCheck& check_soil) {
+  f.RequireOnly({"soils", "probabilities", "cell_size_m", "half_extent_m", "seed"});
+  SoilFieldSpec field;
+  const YAML::Node soils = f.node()["soils"];
+  if (!soils || !soils.IsSequence() || soils.size() < 1 || soils.size() > 8)
+    f.Fail("soils", "must be a list of 1 to 8 soils");
+  for (size_t k = 0; k < soils.size(); ++k) {
+    field.soils.push_back(soils[k].as<std::string>());
+    check_soil(f, "soils[" + std::to_string(k) + "]", field.soils.back());
+  }
+  field.probabilities = f.NumberList("probabilities", /*allow_zero=*/true);
+  if (field.probabilities.size() != field.soils.size())
+    f.Fail("probabilities", "must give one probability per soil (" + std::to_string(field.soils.size()) + ")");
+  double sum = 0.0;
+  for (double p : field.probabilities) {
+    if (!(p >= 0.0 && p <= 1.0)) f.Fail("probabilities", "each must be in [0, 1], got " + io::FormatNumber(p));
+    sum += p;
+  }
+  if (!(std::abs(sum - 1.0) <= 1e-9)) f.Fail("probabilities", "must sum to 1, got " + io::FormatNumber(sum));
+  field.cell_size_m = f.Positive("cell_size_m");
+  field.half_extent_m = f.Positive("half_extent_m");
+  if (!(field.half_extent_m / field.cell_size_m <= 200.0))
+    f.Fail("half_extent_m", "makes more than 400 cells a side (half_extent_m / cell_size_m at most 200)");
+  if (f.node()["seed"] && f.node()["seed"].IsScalar() && f.node()["seed"].Scalar() == "per_landing") {
+    field.seed_per_landing = true;
+  } else {
+    const double seed = f.Number("seed");
+    if (!(seed >= 0.0 && seed <= 9.0e15 && seed == std::floor(seed)))
+      f.Fail("seed", "must be a whole number from 0 to 9e15, or per_landing (in a study)");
+    field.seed = static_cast<uint64_t>(seed);
+  }
+  return field;
+}
+
 // A footprint dimension for checking a soil against the bekker law before the pad is placed.
 constexpr double kAnyPlateB_m = 1.0;
 
@@ -276,7 +312,7 @@ LanderGroundSpec ReadGround(const io::YamlFields& g, double gravity_m_s2, bool r
   if (resolved)
     g.RequireOnly({"height_m", "slope_deg", "downhill_azimuth_deg", "law", "soil", "soils", "model", "patches"});
   else
-    g.RequireOnly({"height_m", "slope_deg", "downhill_azimuth_deg", "law", "soil", "patches"});
+    g.RequireOnly({"height_m", "slope_deg", "downhill_azimuth_deg", "law", "soil", "patches", "soil_field"});
   io::ReadFields(g, GroundNumberFields(), ground);
   if (ground.slope_rad >= 80 * kDeg) g.Fail("slope_deg", "must be below 80");
   ground.default_soil = g.String("soil");
@@ -306,6 +342,7 @@ LanderGroundSpec ReadGround(const io::YamlFields& g, double gravity_m_s2, bool r
       ground.patches.push_back(patch);
     }
   }
+  if (g.Has("soil_field")) ground.soil_field = ReadSoilField(g.Child("soil_field"), check_soil);
   return ground;
 }
 
@@ -548,6 +585,19 @@ LanderSetup BuildLanderSetup(const LanderScenario& sc) {
   }
   // The bekker law's b is the lander's pad's (the same pad on every leg).
   const double plate_b_m = sc.ground.law == rft::LawKind::kBekker ? rft::BekkerPlateB(sc.lander.pad.body.surface) : 0.0;
+  if (sc.ground.soil_field) {
+    // After the explicit patches (first match wins); cells of the default soil need no patch.
+    // seed: per_landing is a study's (its landings get their seeds, sweep_drop.cpp); a plan's
+    // check of the scenario builds with the file's seed (0), RunLanderScenario refuses to run it.
+    const SoilFieldSpec& field = *sc.ground.soil_field;
+    int k = 0;
+    for (const SoilFieldCell& cell : DrawSoilField(field, s.p_WB.x(), s.p_WB.y())) {
+      ++k;
+      if (field.soils[cell.soil] == sc.ground.default_soil) continue;
+      out.terrain.patches.push_back({"soil_field_" + std::to_string(k), rft::RectanglePolygon(cell.x0, cell.y0, cell.x1, cell.y1),
+                                     soil_index(field.soils[cell.soil])});
+    }
+  }
   for (const std::string& name : soil_names)
     out.terrain.soils.push_back({name, model::MakeModelStressLaw3D(sc.ground.law, io::LoadSoil(name), g,
                                                                    sc.model ? &*sc.model : nullptr, plate_b_m)});
@@ -555,6 +605,9 @@ LanderSetup BuildLanderSetup(const LanderScenario& sc) {
 }
 
 LanderRun RunLanderScenario(const LanderScenario& scenario) {
+  if (scenario.ground.soil_field && scenario.ground.soil_field->seed_per_landing)
+    throw MakeInputError(scenario.source, "ground.soil_field.seed",
+                         "per_landing draws a field for each landing of a study; a single landing needs a number");
   LanderRun run;
   run.scenario = scenario;
   run.setup = BuildLanderSetup(scenario);

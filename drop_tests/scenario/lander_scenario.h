@@ -12,6 +12,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include "drop_tests/scenario/soil_field.h"
 #include "drop_tests/io/catalog.h"
 #include "drop_tests/model/model_file.h"
 #include "lander/multibody/lander_simulation.h"
@@ -61,6 +62,7 @@ struct LanderGroundSpec {
   rft::LawKind law = rft::LawKind::kLi2013;  // 3D stress law for every soil
   std::string default_soil;
   std::vector<LanderPatchSpec> patches;
+  std::optional<SoilFieldSpec> soil_field;  // a random patch field, after the patches (soil_field.h)
 };
 
 struct LanderInitialSpec {

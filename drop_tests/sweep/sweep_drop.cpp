@@ -188,6 +188,12 @@ DropRecord SimulateLanderSweepDrop(const SweepModels& models, const SweepDropPar
           {"pad_soils_under_pad_" + std::to_string(i + 1), ref, {Eigen::Vector2d(i + 1, plan.pad_patch_half_width_m)}});
     }
   }
+  // A random patch field drawn per landing: its seed from the study's and the landing's index, so
+  // the landing has the same ground whatever the threads, ranks or shards (soil_field.h).
+  if (sc.ground.soil_field && sc.ground.soil_field->seed_per_landing) {
+    sc.ground.soil_field->seed = scenario::PerLandingFieldSeed(plan.seed, p.index);
+    sc.ground.soil_field->seed_per_landing = false;
+  }
   // The sweep's limits replace the scenario's (none given there: a lander run has only max_num_steps).
   sc.options.integrator.max_wall_time_s = plan.rig.integrator.max_wall_time_s;
   sc.options.integrator.max_rhs_evaluations = plan.rig.integrator.max_rhs_evaluations;

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "drop_tests/io/splitmix.h"
 #include "drop_tests/io/dataset_csv.h"
 #include "drop_tests/io/output_path.h"
 #include "drop_tests/sweep/sweep_drop.h"
@@ -287,12 +288,7 @@ uint64_t Fnv1a64(const std::string& text) {
 }
 
 double CounterUniform(uint64_t seed, uint64_t sample, uint64_t stream) {
-  auto mix = [](uint64_t z) {  // splitmix64 finaliser
-    z += 0x9e3779b97f4a7c15ull;
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    return z ^ (z >> 31);
-  };
+  const auto mix = io::SplitMix64;
   const uint64_t z = mix(mix(mix(seed) ^ sample) ^ (stream * 0x632be59bd9b4e019ull));
   return static_cast<double>(z >> 11) * 0x1.0p-53;
 }
@@ -679,6 +675,8 @@ SweepPlan LoadSweepPlan(const std::string& path, const std::string& model_overri
   for (const SweepAxis& a : plan.grid) drops *= static_cast<double>(a.values.size());
   if (!(drops <= static_cast<double>(kMaxSweepDrops)) || plan.size() <= 0)
     f.Fail("grid", "the sweep has too many drops (" + io::FormatNumber(drops) + ", at most 2^40)");
+  if (plan.lander && plan.lander->ground.soil_field && claims.Seen(SweepParam::kPadSoils))
+    f.Fail("lander", "the scenario's ground.soil_field and pad_soils both set the soil under the pads; keep one");
   if (plan.model)
     for (rft::SoilParameters& soil : plan.soils) soil = model::ApplyModel(*plan.model, soil);
 

@@ -100,6 +100,21 @@ TEST_F(StabilityCli, SweepOnTheStudyFileRunsTheSameLandings) {
   EXPECT_NE(analyse.out.find("0 landings run now, 2 already done"), std::string::npos) << analyse.out;
 }
 
+// A random patch field drawn per landing (data/studies/lunar_patchy_ground.yaml): the landings get
+// different grounds, and the same ones whatever the number of threads.
+TEST_F(StabilityCli, PatchFieldsPerLandingAreTheSameOnOneThreadAndOnTwo) {
+  const std::string study = std::string(TOUCHDOWN_SOURCE_DIR) + "/data/studies/lunar_patchy_ground.yaml";
+  for (const char* threads : {"1", "2"}) {
+    const StabilityRun r = Run({"stability", study, "--out", Path(std::string("patchy") + threads), "--samples", "3",
+                                "--threads", threads, "--progress", "none"});
+    ASSERT_EQ(r.status, 0) << r.err;
+  }
+  const std::string rows = Rows(Path("patchy1") + "/results.sqlite");
+  EXPECT_EQ(Rows(Path("patchy2") + "/results.sqlite"), rows);
+  EXPECT_NE(rows.find("fjs1_cp"), std::string::npos);  // some pad on the field's closely packed cells
+  EXPECT_NE(rows.find("fjs1_lp"), std::string::npos);
+}
+
 // Shards run their landings only; merged, the study analyses to the same summary as one run.
 TEST_F(StabilityCli, ShardsMergedAnalyseToTheSameSummaryAsOneRun) {
   const std::string study = Write("level.yaml", LevelStudy(3));
