@@ -27,26 +27,7 @@ void AddCompareCommand(CLI::App& app) {
   cmd->add_option("--out", args->out, "output directory: new, empty, or an earlier output of this command (replaced whole when complete)")->required();
   cmd->callback([args] {
     const io::OutputTarget out(args->out, {args->measured, args->simulated, args->model});
-    io::CheckOutputDirectory(out, io::OutputKind::kComparison);
-    const dataset::Dataset measured = dataset::ReadDataset(args->measured);
-    dataset::Dataset simulated;
-    std::vector<const dataset::DatasetDrop*> partners;
-    std::string from;
-    const bool simulate_here = args->simulated.empty();
-    if (simulate_here) {
-      std::optional<model::ModelFile> model;
-      if (!args->model.empty()) model = model::LoadModelFile(args->model);
-      simulated = dataset::SimulateMeasuredDrops(measured, model);
-      for (const dataset::DatasetDrop& d : simulated.drops) partners.push_back(&d);
-      from = model ? "model " + args->model : "catalogue soils";
-    } else {
-      simulated = dataset::ReadDataset(args->simulated);
-      partners = dataset::JoinOnConditions(measured, simulated);
-      from = "dataset " + args->simulated;
-    }
-    dataset::Comparison c = dataset::CompareDrops(measured, partners);
-    c.simulated_from = from;
-    dataset::WriteComparison(c, measured, simulated, partners, simulate_here, out);
+    const dataset::Comparison c = dataset::RunComparison(args->measured, args->simulated, args->model, out);
     std::cout << std::left << std::setw(24) << "drop" << std::right << std::setw(14) << "depth err" << std::setw(14)
               << "peak F err" << std::setw(14) << "NRMSE(t)" << std::setw(14) << "NRMSE(d)" << "\n";
     auto pct = [](double v) {

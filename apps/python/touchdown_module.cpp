@@ -8,10 +8,14 @@
 
 #include <array>
 #include <filesystem>
+#include <iterator>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 
+#include "drop_tests/dataset/compare.h"
+#include "drop_tests/scenario/campaign.h"
 #include "drop_tests/drop/drop_request.h"
 #include "drop_tests/drop/force_request.h"
 #include "drop_tests/io/catalog.h"
@@ -142,6 +146,24 @@ py::dict Sweep(const std::string& plan_path, const std::string& out, const std::
   return RunCounts(s);
 }
 
+// touchdown campaign: the drops into `out` (a new directory); its summary.json's text.
+std::string Campaign(const std::string& scenario_path, const std::string& out) {
+  py::gil_scoped_release unlocked;
+  const io::OutputTarget target(out, {scenario_path});
+  io::CheckOutputDirectory(target, io::OutputKind::kCampaign);
+  scenario::RunCampaignToDirectory(scenario::LoadCampaignScenario(scenario_path), target);
+  std::ifstream in(std::filesystem::path(out) / "summary.json");
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+// touchdown compare: the comparison (summary.json's content) and its outputs in `out`.
+std::string Compare(const std::string& measured, const std::string& simulated, const std::string& model,
+                    const std::string& out) {
+  py::gil_scoped_release unlocked;
+  const io::OutputTarget target(out, {measured, simulated, model});
+  return dataset::ComparisonJson(dataset::RunComparison(measured, simulated, model, target)).dump(2);
+}
+
 // touchdown stability: the study's landings as a sweep into `out`, then its analysis there.
 py::dict Stability(const std::string& study_path, const std::string& out, const std::string& model,
                    std::optional<int64_t> samples, int threads) {
@@ -211,6 +233,8 @@ PYBIND11_MODULE(_touchdown, m) {
       py::arg("pad"), py::arg("soil"), py::arg("depth"), py::arg("tilt_deg"), py::arg("tilt_axis"),
       py::arg("velocity"), py::arg("omega"), py::arg("law"), py::arg("zeta"), py::arg("gravity"));
   m.def("lander", &python::Lander, py::arg("scenario"), py::arg("model"), py::arg("out"), py::arg("trace"));
+  m.def("campaign", &python::Campaign, py::arg("scenario"), py::arg("out"));
+  m.def("compare", &python::Compare, py::arg("measured"), py::arg("simulated"), py::arg("model"), py::arg("out"));
   m.def("sweep", &python::Sweep, py::arg("plan"), py::arg("out"), py::arg("model"), py::arg("threads"));
   m.def("stability", &python::Stability, py::arg("study"), py::arg("out"), py::arg("model"), py::arg("samples"),
         py::arg("threads"));

@@ -383,4 +383,29 @@ void WriteComparison(const Comparison& c, const Dataset& measured, const Dataset
   });
 }
 
+Comparison RunComparison(const std::string& measured_dir, const std::string& simulated_dir,
+                         const std::string& model_file, const io::OutputTarget& out) {
+  io::CheckOutputDirectory(out, io::OutputKind::kComparison);
+  const Dataset measured = ReadDataset(measured_dir);
+  Dataset simulated;
+  std::vector<const DatasetDrop*> partners;
+  std::string from;
+  const bool simulate_here = simulated_dir.empty();
+  if (simulate_here) {
+    std::optional<model::ModelFile> model;
+    if (!model_file.empty()) model = model::LoadModelFile(model_file);
+    simulated = SimulateMeasuredDrops(measured, model);
+    for (const DatasetDrop& d : simulated.drops) partners.push_back(&d);
+    from = model ? "model " + model_file : "catalogue soils";
+  } else {
+    simulated = ReadDataset(simulated_dir);
+    partners = JoinOnConditions(measured, simulated);
+    from = "dataset " + simulated_dir;
+  }
+  Comparison c = CompareDrops(measured, partners);
+  c.simulated_from = from;
+  WriteComparison(c, measured, simulated, partners, simulate_here, out);
+  return c;
+}
+
 }  // namespace touchdown::dataset

@@ -88,10 +88,18 @@ std::vector<const DatasetDrop*> JoinOnConditions(const Dataset& measured, const 
 Comparison CompareDrops(const Dataset& measured, const std::vector<const DatasetDrop*>& partners);
 nlohmann::json ComparisonJson(const Comparison& c);
 // out_dir (replaced when complete): summary.json, per_drop.csv, simulated/ (when simulated here),
-// plots/compare.gp and plots/<drop_id>.png (measured over simulated: force against time and
+// plots/compare.gp, plots/parity (every drop: simulated against measured final penetration and
+// peak force) and plots/drops/<drop_id>.png (measured over simulated: force against time and
 // against penetration) drawn by RenderPlots (plot_runner.h) from plots/data/, the traces
 // decimated for plotting (plot_decimation.h).
 void WriteComparison(const Comparison& c, const Dataset& measured, const Dataset& simulated,
                      const std::vector<const DatasetDrop*>& partners, bool write_simulated, const io::OutputTarget& out);
+
+// `touchdown compare` whole, for the command line and the Python module: reads the measured
+// dataset, simulates its drops here (with `model_file`, or the catalogue's soils) or joins them to
+// the `simulated_dir` dataset on their conditions, compares, and writes the outputs to `out`
+// (checked first). Returns the comparison.
+Comparison RunComparison(const std::string& measured_dir, const std::string& simulated_dir,
+                         const std::string& model_file, const io::OutputTarget& out);
 
 }  // namespace touchdown::dataset

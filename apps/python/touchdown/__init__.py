@@ -80,6 +80,22 @@ def lander(scenario, *, model=None, out=None, trace=False):
     return (json.loads(summary), arrays) if trace else json.loads(summary)
 
 
+def campaign(scenario, out):
+    """A campaign scenario file run as `touchdown campaign SCENARIO --out OUT`: the drops' tables,
+    traces and figures into the new directory OUT; returns its summary.json as a dict."""
+    return json.loads(_touchdown.campaign(scenario=_path_text(scenario), out=_path_text(out)))
+
+
+def compare(measured, out, *, simulated=None, model=None):
+    """`touchdown compare MEASURED --out OUT [--simulated DIR | --model MODEL]`: the measured dataset
+    against drops simulated here (with `model`, or the catalogue's soils) or the `simulated` dataset
+    joined on the conditions; the outputs into the new directory OUT; returns summary.json's dict."""
+    if simulated is not None and model is not None:
+        raise ValueError("compare: give simulated or model, not both")
+    return json.loads(_touchdown.compare(measured=_path_text(measured), simulated=_path_text(simulated),
+                                         model=_path_text(model), out=_path_text(out)))
+
+
 def sweep(plan, out, *, model=None, threads=0):
     """A sweep file run as `touchdown sweep PLAN --out OUT` (one process, every core unless
     `threads`; a rerun resumes): the drops as read_sweep(out) gives them. df.attrs["run"] holds
