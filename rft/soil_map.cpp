@@ -1,5 +1,7 @@
 #include "rft/soil_map.h"
 
+#include <cmath>
+
 namespace touchdown::rft {
 
 bool PolygonContains(const std::vector<Eigen::Vector2d>& poly, const Eigen::Vector2d& p) {
@@ -26,11 +28,18 @@ Terrain UniformTerrain(std::string soil_name, SoilContactModel contact, std::sha
   return t;
 }
 
+int SoilGrid::SoilAt(double x_m, double y_m) const {
+  const double u = std::floor((x_m - x0_m) / cell_m), v = std::floor((y_m - y0_m) / cell_m);
+  if (!(u >= 0.0 && u < nx && v >= 0.0 && v < ny)) return -1;
+  return soil[static_cast<size_t>(v) * static_cast<size_t>(nx) + static_cast<size_t>(u)];
+}
+
 int Terrain::SoilAt(double x_m, double y_m) const {
   const Eigen::Vector2d p(x_m, y_m);
   for (const SoilPatch& patch : patches)
     if (PolygonContains(patch.polygon_W, p)) return patch.soil;
-  return 0;
+  const int cell = grid.nx > 0 ? grid.SoilAt(x_m, y_m) : -1;
+  return cell >= 0 ? cell : 0;
 }
 
 }  // namespace touchdown::rft

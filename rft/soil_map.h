@@ -21,6 +21,19 @@ struct SoilPatch {
   int soil = 0;                            // index into Terrain::soils
 };
 
+// A square grid of soil cells (a random patch field's draw, drop_tests/scenario/soil_field.h):
+// cell (i, j) covers [x0 + i c, x0 + (i + 1) c) x [y0 + j c, y0 + (j + 1) c). Looked up in O(1):
+// a field of thousands of cells as polygon patches would cost a polygon test per cell in every
+// right-hand side.
+struct SoilGrid {
+  double x0_m = 0.0, y0_m = 0.0, cell_m = 1.0;
+  int nx = 0, ny = 0;
+  std::vector<int> soil;  // row by row (j * nx + i): indices into Terrain::soils
+
+  // The soil of the cell holding (x, y), or -1 outside the grid.
+  int SoilAt(double x_m, double y_m) const;
+};
+
 struct TerrainSoil {
   std::string name;
   SoilContactModel contact;
@@ -30,8 +43,10 @@ struct Terrain {
   std::shared_ptr<const rft::GroundSurface> surface;
   std::vector<TerrainSoil> soils;  // soils[0] is the default soil
   std::vector<SoilPatch> patches;
+  SoilGrid grid;  // after the patches; empty (nx = 0) without a patch field
 
-  // Index into soils of the soil at (x, y).
+  // Index into soils of the soil at (x, y): the first patch holding it, else the grid's cell,
+  // else the default soil.
   int SoilAt(double x_m, double y_m) const;
 };
 

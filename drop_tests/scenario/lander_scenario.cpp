@@ -590,13 +590,13 @@ LanderSetup BuildLanderSetup(const LanderScenario& sc) {
     // seed: per_landing is a study's (its landings get their seeds, sweep_drop.cpp); a plan's
     // check of the scenario builds with the file's seed (0), RunLanderScenario refuses to run it.
     const SoilFieldSpec& field = *sc.ground.soil_field;
-    int k = 0;
-    for (const SoilFieldCell& cell : DrawSoilField(field, s.p_WB.x(), s.p_WB.y())) {
-      ++k;
-      if (field.soils[cell.soil] == sc.ground.default_soil) continue;
-      out.terrain.patches.push_back({"soil_field_" + std::to_string(k), rft::RectanglePolygon(cell.x0, cell.y0, cell.x1, cell.y1),
-                                     soil_index(field.soils[cell.soil])});
-    }
+    const std::vector<SoilFieldCell> cells = DrawSoilField(field, s.p_WB.x(), s.p_WB.y());  // n x n, row by row
+    rft::SoilGrid& grid = out.terrain.grid;
+    grid.nx = grid.ny = static_cast<int>(std::lround(std::sqrt(static_cast<double>(cells.size()))));
+    grid.x0_m = cells.front().x0;
+    grid.y0_m = cells.front().y0;
+    grid.cell_m = field.cell_size_m;
+    for (const SoilFieldCell& cell : cells) grid.soil.push_back(soil_index(field.soils[cell.soil]));
   }
   for (const std::string& name : soil_names)
     out.terrain.soils.push_back({name, model::MakeModelStressLaw3D(sc.ground.law, io::LoadSoil(name), g,
@@ -771,11 +771,21 @@ void WriteResolvedLanderScenario(const LanderScenario& s, const std::string& pat
   WriteSoilsBlock(y, s, setup);
   if (s.model) y << YAML::Key << "model" << YAML::Value << file(s.model->source);
   y << YAML::Key << "patches" << YAML::Value << YAML::BeginSeq;
-  for (const rft::SoilPatch& p : setup.terrain.patches) {
+  auto write_patch = [&](const rft::SoilPatch& p) {
     y << YAML::BeginMap << YAML::Key << "name" << YAML::Value << p.name << YAML::Key << "soil" << YAML::Value
       << setup.terrain.soils[p.soil].name << YAML::Key << "polygon_m" << YAML::Value << YAML::BeginSeq;
     for (const Eigen::Vector2d& c : p.polygon_W) y << YAML::Flow << YAML::BeginSeq << c.x() << c.y() << YAML::EndSeq;
     y << YAML::EndSeq << YAML::EndMap;
+  };
+  for (const rft::SoilPatch& p : setup.terrain.patches) write_patch(p);
+  // A patch field's cells of another soil than the default, as patches: the resolved copy reads
+  // back to the same ground.
+  const rft::SoilGrid& grid = setup.terrain.grid;
+  for (int k = 0; k < grid.nx * grid.ny; ++k) {
+    if (grid.soil[k] == 0) continue;
+    const double x0 = grid.x0_m + (k % grid.nx) * grid.cell_m, y0 = grid.y0_m + (k / grid.nx) * grid.cell_m;
+    write_patch({"soil_field_" + std::to_string(k + 1), rft::RectanglePolygon(x0, y0, x0 + grid.cell_m, y0 + grid.cell_m),
+                 grid.soil[k]});
   }
   y << YAML::EndSeq << YAML::EndMap;
   const LanderInitialSpec& ic = s.initial;

@@ -9,6 +9,7 @@
 #include <fstream>
 
 #include "drop_tests/scenario/lander_scenario.h"
+#include "rft/soil_map.h"
 #include "rft/input_error.h"
 #include "tests/drop_tests/scenario/lander_test_support.h"
 
@@ -77,3 +78,29 @@ TEST(SoilFieldLander, AllClosePackedCellsPutEveryPadOnIt) {
 
 }  // namespace
 }  // namespace touchdown::scenario
+
+namespace touchdown::rft {
+namespace {
+
+// The grid a field is looked up through: the cell holding a point, -1 outside, patches first.
+TEST(SoilGridLookup, FindsTheCellOrNoneAndPatchesComeFirst) {
+  Terrain t;
+  t.grid.x0_m = -1.0;
+  t.grid.y0_m = 2.0;
+  t.grid.cell_m = 0.5;
+  t.grid.nx = 3;
+  t.grid.ny = 2;
+  t.grid.soil = {0, 1, 2, 3, 4, 5};
+  EXPECT_EQ(t.grid.SoilAt(-0.9, 2.1), 0);
+  EXPECT_EQ(t.grid.SoilAt(-0.4, 2.1), 1);  // i = 1
+  EXPECT_EQ(t.grid.SoilAt(0.4, 2.9), 5);   // i = 2, j = 1
+  EXPECT_EQ(t.grid.SoilAt(0.6, 2.1), -1);  // right of the grid
+  EXPECT_EQ(t.grid.SoilAt(-0.9, 1.9), -1);  // below it
+  EXPECT_EQ(t.SoilAt(0.6, 2.1), 0);        // outside: the default soil
+  EXPECT_EQ(t.SoilAt(0.4, 2.9), 5);
+  t.patches.push_back({"first", RectanglePolygon(0.0, 2.5, 1.0, 3.5), 7});
+  EXPECT_EQ(t.SoilAt(0.4, 2.9), 7);
+}
+
+}  // namespace
+}  // namespace touchdown::rft
