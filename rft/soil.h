@@ -4,6 +4,7 @@
 
 #include "rft/atmosphere.h"
 #include "rft/bekker_parameters.h"
+#include "rft/gravity_scaling.h"
 #include "rft/law_kind.h"
 
 namespace touchdown::rft {
@@ -32,10 +33,19 @@ struct SoilParameters {
   double dynamic_lambda = 1.0;
   double dynamic_density_kg_m3 = 0.0;
 
-  // RFT stresses scale with the lithostatic pressure rho g z (Agarwal et al. 2023,
-  // xi = rho g f(mu)), so zeta scales linearly with gravity.
+  // How zeta changes with gravity (rft/gravity_scaling.h): lithostatic (zeta proportional to g,
+  // the default) or none.
+  GravityScaling gravity_scaling = GravityScaling::kLithostatic;
+
   double ZetaAtGravity(double gravity_m_s2) const {
+    if (gravity_scaling == GravityScaling::kNone) return zeta_N_m3;
     return zeta_N_m3 * gravity_m_s2 / reference_gravity_m_s2;
+  }
+  // Sets zeta so that ZetaAtGravity(gravity_m_s2) is `zeta_at_gravity_N_m3` (a zeta fitted or
+  // given at another gravity than this soil's reference).
+  void SetZetaAtGravity(double zeta_at_gravity_N_m3, double gravity_m_s2) {
+    zeta_N_m3 = gravity_scaling == GravityScaling::kNone ? zeta_at_gravity_N_m3
+                                                         : zeta_at_gravity_N_m3 * reference_gravity_m_s2 / gravity_m_s2;
   }
 };
 

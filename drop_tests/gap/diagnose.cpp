@@ -363,7 +363,7 @@ Diagnosis RunDiagnosis(const dataset::Dataset& ds, const DiagnoseOptions& o) {
     for (rft::SoilParameters& s : d.problem.soils) {
       const auto it = o.start_model->soils.find(s.name);
       if (it != o.start_model->soils.end())
-        s.zeta_N_m3 = it->second.zeta_N_m3 * s.reference_gravity_m_s2 / it->second.reference_gravity_m_s2;
+        s.SetZetaAtGravity(it->second.zeta_N_m3, it->second.reference_gravity_m_s2);
     }
   StartZetaWhereMissing(ds, d.problem);  // a Bekker soil's RFT base (law_candidate.h)
   io::Progress progress("diagnose", "fits", 1 + static_cast<int64_t>(model::EffectLibrary().size()), o.progress);

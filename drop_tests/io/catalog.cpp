@@ -360,7 +360,7 @@ rft::SoilParameters LoadSoil(const std::string& name_or_path) {
   const YamlFields f = YamlFields::LoadFile(path);
   f.RequireSchemaVersion(1);
   std::vector<std::string> known{"schema_version", "name", "description", "atmosphere", "zeta_N_cm3", "provenance",
-                                 "dynamic_term", "law", "bekker"};
+                                 "dynamic_term", "law", "bekker", "gravity_scaling"};
   for (const std::string& key : FieldKeys(SoilNumberFields())) known.push_back(key);
   f.RequireOnly(known);
   rft::SoilParameters soil;
@@ -370,6 +370,12 @@ rft::SoilParameters LoadSoil(const std::string& name_or_path) {
   const std::optional<rft::Atmosphere> parsed = rft::ParseAtmosphere(atmosphere);
   if (!parsed) f.Fail("atmosphere", "must be 'vacuum' or 'air', got '" + atmosphere + "'");
   soil.atmosphere = *parsed;
+  if (f.Has("gravity_scaling")) {
+    const std::string scaling = f.String("gravity_scaling");
+    const std::optional<rft::GravityScaling> s = rft::ParseGravityScaling(scaling);
+    if (!s) f.Fail("gravity_scaling", "must be 'lithostatic' or 'none', got '" + scaling + "'");
+    soil.gravity_scaling = *s;
+  }
   ReadFields(f, SoilNumberFields(), soil);
   if (soil.internal_friction_angle_rad >= 90.0 * kDeg) f.Fail("internal_friction_angle_deg", "must be below 90");
   // The 3D laws' soil fields (rft/soil.h): Agarwal 2023's intruder-surface friction, and the
@@ -459,6 +465,8 @@ void WriteSoil(const rft::SoilParameters& soil, std::ostream& out) {
   YAML::Emitter y;
   y << YAML::BeginMap << YAML::Key << "schema_version" << YAML::Value << 1 << YAML::Key << "name" << YAML::Value
     << soil.name << YAML::Key << "atmosphere" << YAML::Value << rft::AtmosphereName(soil.atmosphere);
+  if (soil.gravity_scaling != rft::GravityScaling::kLithostatic)
+    y << YAML::Key << "gravity_scaling" << YAML::Value << rft::GravityScalingName(soil.gravity_scaling);
   const bool bekker = soil.rft_law_3d == rft::LawKind::kBekker;
   // A Bekker soil without zeta leaves it out (0 would not read back); RFT soils always state it.
   if (!bekker || soil.zeta_N_m3 > 0.0)

@@ -123,7 +123,7 @@ rft::SoilParameters ApplyModel(const ModelFile& m, const rft::SoilParameters& so
   const auto it = m.soils.find(soil.name);
   if (it == m.soils.end()) return out;
   // The model's zeta holds at its own reference gravity; the soil keeps its reference.
-  out.zeta_N_m3 = it->second.zeta_N_m3 * soil.reference_gravity_m_s2 / it->second.reference_gravity_m_s2;
+  out.SetZetaAtGravity(it->second.zeta_N_m3, it->second.reference_gravity_m_s2);
   return out;
 }
 

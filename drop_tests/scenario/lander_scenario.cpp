@@ -747,7 +747,9 @@ void WriteSoilsBlock(YAML::Emitter& y, const LanderScenario& s, const LanderSetu
     const rft::SoilParameters p = s.model ? model::ApplyModel(*s.model, io::LoadSoil(soil.name)) : io::LoadSoil(soil.name);
     y << YAML::BeginMap << YAML::Key << "name" << YAML::Value << p.name << YAML::Key << "zeta_N_cm3_at_gravity"
       << YAML::Value << units::ZetaToN_cm3(p.ZetaAtGravity(s.gravity_m_s2)) << YAML::Key << "atmosphere" << YAML::Value
-      << rft::AtmosphereName(p.atmosphere) << YAML::Key << "law_3d" << YAML::Value << soil.contact.name() << YAML::EndMap;
+      << rft::AtmosphereName(p.atmosphere) << YAML::Key << "gravity_scaling" << YAML::Value
+      << rft::GravityScalingName(p.gravity_scaling) << YAML::Key << "law_3d" << YAML::Value << soil.contact.name()
+      << YAML::EndMap;
   }
   y << YAML::EndSeq;
 }

@@ -4,7 +4,9 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "drop_tests/io/catalog.h"
 #include "drop_tests/io/json_number.h"
+#include "drop_tests/model/model_file.h"
 
 namespace touchdown::stability {
 
@@ -167,6 +169,28 @@ nlohmann::json MapJson(const Study& study, const StudySummary& s) {
           {"x_range", {m.x.low, m.x.high}},       {"y_range", {m.y.low, m.y.high}},
           {"bins", {m.x.bins, m.y.bins}},         {"cells", cells}};
 }
+// Every soil the study's landings can stand on, with the model choices it carries (issue 16: a
+// lunar study records how its soils were scaled to the study's gravity).
+nlohmann::json SoilModelsJson(const Study& study) {
+  std::vector<rft::SoilParameters> soils = study.plan.soils;
+  if (study.plan.lander) {
+    const scenario::LanderGroundSpec& g = study.plan.lander->ground;
+    std::vector<std::string> names{g.default_soil};
+    for (const scenario::LanderPatchSpec& p : g.patches) names.push_back(p.soil);
+    if (g.soil_field) names.insert(names.end(), g.soil_field->soils.begin(), g.soil_field->soils.end());
+    for (const std::string& name : names) {
+      const rft::SoilParameters soil = io::LoadSoil(name);
+      soils.push_back(study.plan.model ? model::ApplyModel(*study.plan.model, soil) : soil);
+    }
+  }
+  nlohmann::json out = nlohmann::json::object();
+  for (const rft::SoilParameters& soil : soils)
+    out[soil.name] = {{"law", rft::LawKindName(soil.rft_law_3d)},
+                      {"gravity_scaling", rft::GravityScalingName(soil.gravity_scaling)},
+                      {"dynamic_term", soil.dynamic_term}};
+  return out;
+}
+
 }  // namespace
 
 nlohmann::json SummaryJson(const Study& study, const StudySummary& s) {
@@ -181,6 +205,7 @@ nlohmann::json SummaryJson(const Study& study, const StudySummary& s) {
   for (const DropRecord& r : s.tip_overs) tips.push_back(LandingJson(r));
   return {{"study", study.plan.name},
           {"landings", s.landings},
+          {"soils", SoilModelsJson(study)},
           {"landings_planned", s.planned},
           {"landings_failed", s.failed},
           {"samples", study.plan.samples},

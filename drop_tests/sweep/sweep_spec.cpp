@@ -398,7 +398,8 @@ std::string SweepPlan::DigestText() const {
   if (!pad_soil_sets.empty()) s += "pad_patch_half_width=" + io::FormatNumber(pad_patch_half_width_m) + ";";
   for (const rft::SoilParameters& soil : soils)
     s += "soil:" + soil.name + ":" + rft::AtmosphereName(soil.atmosphere) + ":" + io::FormatNumber(soil.zeta_N_m3) + ":" +
-         io::FormatNumber(soil.reference_gravity_m_s2) + ";";
+         io::FormatNumber(soil.reference_gravity_m_s2) +
+         (soil.gravity_scaling == rft::GravityScaling::kLithostatic ? "" : ":gravity_scaling=none") + ";";
   for (int p = 0; p < kSweepParamCount; ++p)
     if (fixed[p]) s += std::string("fixed:") + SweepParamKey(kAll[p]) + "=" + io::FormatNumber(*fixed[p]) + ";";
   for (const SweepAxis& a : grid) {

@@ -85,6 +85,24 @@ TEST(RftSoil, AgarwalScalingAndGravity) {
   s.zeta_N_m3 = 2e6;
   s.reference_gravity_m_s2 = 9.81;
   EXPECT_NEAR(s.ZetaAtGravity(1.62), 2e6 * 1.62 / 9.81, 1e-6);
+  // A zeta given at lunar gravity: the soil's reference zeta is scaled up to 9.81.
+  s.SetZetaAtGravity(0.5e6, 1.62);
+  EXPECT_NEAR(s.zeta_N_m3, 0.5e6 * 9.81 / 1.62, 1e-6);
+  EXPECT_NEAR(s.ZetaAtGravity(1.62), 0.5e6, 1e-6);
+}
+
+TEST(RftSoil, WithoutGravityScalingZetaIsTheSameAtEveryGravity) {
+  SoilParameters s;
+  s.zeta_N_m3 = 2e6;
+  s.gravity_scaling = GravityScaling::kNone;
+  EXPECT_EQ(s.ZetaAtGravity(1.62), 2e6);
+  EXPECT_EQ(s.ZetaAtGravity(9.81), 2e6);
+  s.SetZetaAtGravity(0.5e6, 1.62);
+  EXPECT_EQ(s.zeta_N_m3, 0.5e6);
+  EXPECT_EQ(ParseGravityScaling("lithostatic"), GravityScaling::kLithostatic);
+  EXPECT_EQ(ParseGravityScaling("none"), GravityScaling::kNone);
+  EXPECT_FALSE(ParseGravityScaling("linear").has_value());
+  EXPECT_STREQ(GravityScalingName(GravityScaling::kNone), "none");
 }
 
 }  // namespace

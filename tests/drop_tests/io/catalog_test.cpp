@@ -143,6 +143,9 @@ TEST_F(CatalogFiles, BadSoilsGiveOneClearError) {
   EXPECT_NE(SoilError("zeta_N_cm3: agarwal2023\n").find("needs bulk_density_kg_m3"), std::string::npos);
   EXPECT_NE(SoilError("zeta_N_cm3: 2\natmosphere: mars\n").find("atmosphere: must be 'vacuum' or 'air'"),
             std::string::npos);
+  EXPECT_NE(SoilError("zeta_N_cm3: 2\ngravity_scaling: linear\n")
+                .find("gravity_scaling: must be 'lithostatic' or 'none', got 'linear'"),
+            std::string::npos);
   EXPECT_NE(SoilError("zeta_N_cm3: 2\ninternal_friction_angle_deg: 95\n").find("below 90"), std::string::npos);
   EXPECT_EQ(SoilError("zeta_N_cm3: 2.5\natmosphere: air\n"), "(no error)");
 }

@@ -25,6 +25,7 @@ void ExpectSameSoil(const rft::SoilParameters& a, const rft::SoilParameters& b) 
   EXPECT_EQ(a.dynamic_lambda, b.dynamic_lambda);
   EXPECT_EQ(a.dynamic_density_kg_m3, b.dynamic_density_kg_m3);
   EXPECT_EQ(a.rft_law_3d, b.rft_law_3d);
+  EXPECT_EQ(a.gravity_scaling, b.gravity_scaling);
   // The bekker block goes through kN, kPa, degrees and mm.
   EXPECT_DOUBLE_EQ(a.bekker.n, b.bekker.n);
   EXPECT_DOUBLE_EQ(a.bekker.k_c_N_m_n1, b.bekker.k_c_N_m_n1);
@@ -51,8 +52,9 @@ TEST_F(SoilRoundTrip, EveryOptionalField) {
   std::ofstream(Path("full.yaml")) << "schema_version: 1\nname: lab_sand\natmosphere: air\nzeta_N_cm3: 2.37\n"
                                       "reference_gravity_m_s2: 1.62\nbulk_density_kg_m3: 1580\n"
                                       "internal_friction_angle_deg: 37.5\nmu_surf: 0.55\ndynamic_term: true\n"
-                                      "dynamic_lambda: 1.7\ndynamic_density_kg_m3: 1600\n";
+                                      "dynamic_lambda: 1.7\ndynamic_density_kg_m3: 1600\ngravity_scaling: none\n";
   const rft::SoilParameters soil = LoadSoil(Path("full.yaml"));
+  EXPECT_EQ(soil.gravity_scaling, rft::GravityScaling::kNone);
   EXPECT_EQ(soil.atmosphere, rft::Atmosphere::kAir);
   EXPECT_DOUBLE_EQ(soil.zeta_N_m3, 2.37e6);
   EXPECT_EQ(soil.reference_gravity_m_s2, 1.62);
