@@ -31,6 +31,9 @@ struct EffectTerms {
   double gas_c_N_s_m3 = 0.0;         // c_g [N s/m^3]
   double sensor_dz_m = 0.0;          // dz [m]
   double sensor_dt_s = 0.0;          // dt [s]
+  // inertial_drag is stated (by a model or a fit), even at lambda 0: it replaces the soil's own
+  // dynamic term (rft/stress_law_3d_factory.h WithSoilDynamicTerm) instead of adding to it.
+  bool inertial_replaces_soil = false;
   // Needs the soil's bulk density (inertial_drag, added_mass).
   bool NeedsDensity() const { return inertial_lambda != 0.0 || added_mass_ca != 0.0; }
   bool HasDepthExponent() const { return depth_exponent != 1.0; }

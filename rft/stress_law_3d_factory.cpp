@@ -84,18 +84,25 @@ std::unique_ptr<StressLaw3D> MakeStressLaw3D(LawKind law, const SoilParameters& 
     quasi_static = std::make_unique<Agarwal2023Law>(xi_n, soil.surface_friction_coefficient);
   }
 
-  if (!soil.dynamic_term) return quasi_static;
-  const double rho_c =
-      soil.dynamic_density_kg_m3 > 0.0 ? soil.dynamic_density_kg_m3 : soil.bulk_density_kg_m3;
+  return quasi_static;
+}
+
+EffectTerms WithSoilDynamicTerm(const EffectTerms& terms, const SoilParameters& soil) {
+  if (!soil.dynamic_term || terms.inertial_replaces_soil || terms.inertial_lambda > 0.0) return terms;
   Require(std::isfinite(soil.dynamic_lambda) && soil.dynamic_lambda >= 0.0, soil, "dynamic_lambda",
           "must be non-negative", soil.dynamic_lambda);
-  Require(std::isfinite(rho_c) && rho_c > 0.0, soil, "dynamic_density_kg_m3",
-          "the dynamic term needs a density (dynamic_density_kg_m3 or bulk_density_kg_m3)", rho_c);
-  return std::make_unique<DynamicTermLaw>(std::move(quasi_static), soil.dynamic_lambda, rho_c);
+  Require(std::isfinite(soil.bulk_density_kg_m3) && soil.bulk_density_kg_m3 > 0.0, soil, "bulk_density_kg_m3",
+          "the dynamic term needs the bulk density", soil.bulk_density_kg_m3);
+  const double rho_c = soil.dynamic_density_kg_m3 > 0.0 ? soil.dynamic_density_kg_m3 : soil.bulk_density_kg_m3;
+  EffectTerms out = terms;
+  out.inertial_lambda = rho_c == soil.bulk_density_kg_m3 ? soil.dynamic_lambda
+                                                         : soil.dynamic_lambda * rho_c / soil.bulk_density_kg_m3;
+  return out;
 }
 
 SoilContactModel MakeSoilContactModel(LawKind law, const SoilParameters& soil, double gravity_m_s2,
-                                      const EffectTerms& terms, double bekker_plate_b_m) {
+                                      const EffectTerms& model_terms, double bekker_plate_b_m) {
+  const EffectTerms terms = WithSoilDynamicTerm(model_terms, soil);
   Require(std::isfinite(terms.inertial_lambda) && terms.inertial_lambda >= 0.0, soil, "inertial_drag.lambda",
           "must be non-negative", terms.inertial_lambda);
   Require(std::isfinite(terms.damping_c_N_s_m3) && terms.damping_c_N_s_m3 >= 0.0, soil, "rate_damping.c_N_s_m3",
@@ -114,13 +121,11 @@ SoilContactModel MakeSoilContactModel(LawKind law, const SoilParameters& soil, d
           "must be positive", terms.compaction_depth_m);
   Require(std::isfinite(terms.added_mass_ca) && terms.added_mass_ca >= 0.0, soil, "added_mass.c_a",
           "must be non-negative", terms.added_mass_ca);
-  SoilParameters base = soil;
   const bool inertial = terms.inertial_lambda > 0.0;
-  if (inertial) base.dynamic_term = false;  // the model's inertial term replaces the soil's own
   if (law == LawKind::kBekker)
     Require(terms.depth_exponent == 1.0, soil, "depth_exponent.p",
             "does not apply to the bekker law (its own exponent is bekker.n)", terms.depth_exponent);
-  std::unique_ptr<StressLaw3D> out = MakeStressLaw3D(law, base, gravity_m_s2, bekker_plate_b_m);
+  std::unique_ptr<StressLaw3D> out = MakeStressLaw3D(law, soil, gravity_m_s2, bekker_plate_b_m);
   // DynamicTermLaw replaces its inner law's dynamic stress, so it goes innermost; the other
   // decorators add theirs to their inner law's.
   if (inertial) {

@@ -13,21 +13,28 @@ namespace touchdown::rft {
 
 // law: kLi2013 (Li 2013 via Treers et al. 2021; needs zeta, scaled to gravity_m_s2 from the
 // soil's reference gravity) or kAgarwal2023 (needs bulk density and internal friction angle;
-// xi_n = rho g (894 mu^3 - 386 mu^2 + 89 mu), mu = tan(phi), and mu_surf). When the soil's
-// dynamic_term is on, the law is wrapped in DynamicTermLaw (lambda, rho_c). Throws InputError
+// xi_n = rho g (894 mu^3 - 386 mu^2 + 89 mu), mu = tan(phi), and mu_surf): the quasi-static law
+// only (a soil's own dynamic term is an effect term, WithSoilDynamicTerm). Throws InputError
 // on missing/invalid soil data, naming the soil and the field.
 // kBekker (rft/bekker_law.h) needs the pad's dimension b, `bekker_plate_b_m` (BekkerPlateB; > 0),
 // and the soil's bekker block; gravity does not enter (Bekker's moduli do not scale with g).
 std::unique_ptr<StressLaw3D> MakeStressLaw3D(LawKind law, const SoilParameters& soil,
                                              double gravity_m_s2, double bekker_plate_b_m = 0.0);
+// The effect terms a drop on `soil` runs under: `terms` with the soil's own dynamic term
+// (dynamic_term, dynamic_lambda) as inertial_drag, unless `terms` has an inertial term of its own
+// (lambda > 0, or stated by a model: inertial_replaces_soil, even at lambda 0). The soil's term is lambda rho_c (v.n)^2; as
+// inertial_drag (lambda' rho (v.n)^2, rho the bulk density) it is lambda' = lambda rho_c / rho.
+// Every simulation (the rig's response, the 3D contact) takes its terms from here, so a soil's
+// dynamic term acts alike on the rig, free pads and the lander.
+EffectTerms WithSoilDynamicTerm(const EffectTerms& terms, const SoilParameters& soil);
 // Checks a soil's bekker block (what kBekker needs), naming the soil and the field on an error.
 void RequireBekkerParameters(const SoilParameters& soil);
 
 // The soil's law with the effect terms (rft/effect_terms.h) in their 3D form. The per-element
 // terms wrap the law above:
 //   inertial_lambda > 0  DynamicTermLaw (rft/dynamic_term.h), lambda rho (v.n)^2 on leading
-//                        elements with rho the soil's bulk density; it replaces the soil's own
-//                        dynamic_term;
+//                        elements with rho the soil's bulk density (the soil's own dynamic
+//                        term is folded in first, WithSoilDynamicTerm);
 //   damping_c_N_s_m3     RateDampingLaw (rft/rate_damping_term.h), c (v.n) on leading elements;
 //   gas_chi, gas_c       GasCushionLaw (rft/gas_cushion_term.h), stress per depth x (1 - chi)
 //                        plus c_g (v.n); the caller passes them only for a bed in air.

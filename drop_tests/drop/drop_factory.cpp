@@ -36,7 +36,7 @@ pad::EffectSoilResponse MakeBekkerRigResponse(const geom::AxisymmetricIntrusion&
   rft::RequireBekkerParameters(drop_soil);
   if (terms.HasDepthExponent())
     throw MakeInputError(drop_soil.name, "depth_exponent", "does not apply to the bekker law (its exponent is bekker.n)");
-  rft::EffectTerms bekker_terms = terms;
+  rft::EffectTerms bekker_terms = rft::WithSoilDynamicTerm(terms, drop_soil);
   // Bekker's z^n as the rig's depth law, z_ref = 1 m: z_ref (z / z_ref)^n = z^n in SI.
   bekker_terms.depth_exponent = drop_soil.bekker.n;
   bekker_terms.depth_reference_m = 1.0;
@@ -50,7 +50,8 @@ pad::EffectSoilResponse MakeRigResponse(const geom::AxisymmetricIntrusion& intru
                                         const rft::SoilParameters& drop_soil, double gravity_m_s2,
                                         const rft::EffectTerms& terms) {
   const pad::SoilResponseInputs in{ZetaAtGravity(drop_soil, gravity_m_s2), drop_soil.bulk_density_kg_m3,
-                                   drop_soil.atmosphere == rft::Atmosphere::kAir, terms};
+                                   drop_soil.atmosphere == rft::Atmosphere::kAir,
+                                   rft::WithSoilDynamicTerm(terms, drop_soil)};
   return pad::EffectSoilResponse(intrusion, in);
 }
 

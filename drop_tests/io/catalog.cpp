@@ -408,8 +408,8 @@ rft::SoilParameters LoadSoil(const std::string& name_or_path) {
     soil.zeta_N_m3 = units::ZetaFromN_cm3(zeta_N_cm3);
   }
   if (f.Has("dynamic_term")) soil.dynamic_term = f.Bool("dynamic_term");
-  if (soil.dynamic_term && soil.dynamic_density_kg_m3 == 0.0 && soil.bulk_density_kg_m3 == 0.0)
-    f.Fail("dynamic_term", "needs a density: dynamic_density_kg_m3 or bulk_density_kg_m3");
+  if (soil.dynamic_term && soil.bulk_density_kg_m3 == 0.0)
+    f.Fail("dynamic_term", "needs the soil's bulk_density_kg_m3");
   return soil;
 }
 

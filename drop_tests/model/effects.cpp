@@ -85,7 +85,7 @@ rft::EffectTerms MakeEffectTerms(const std::vector<Effect>& effects, const std::
         throw MakeInputError(context, e.id + "." + p.key, why);
     }
     const std::vector<double>& v = e.values;
-    if (e.id == "inertial_drag") t.inertial_lambda = v[0];
+    if (e.id == "inertial_drag") t.inertial_lambda = v[0], t.inertial_replaces_soil = true;
     else if (e.id == "rate_damping") t.damping_c_N_s_m3 = v[0];
     else if (e.id == "added_mass") t.added_mass_ca = v[0];
     else if (e.id == "compaction_peak") t.compaction_k_kg_m3 = v[0], t.compaction_depth_m = v[1];

@@ -187,7 +187,7 @@ nlohmann::json SoilModelsJson(const Study& study) {
   for (const rft::SoilParameters& soil : soils)
     out[soil.name] = {{"law", rft::LawKindName(soil.rft_law_3d)},
                       {"gravity_scaling", rft::GravityScalingName(soil.gravity_scaling)},
-                      {"dynamic_term", soil.dynamic_term}};
+                      {"dynamic_lambda", soil.dynamic_term ? nlohmann::json(soil.dynamic_lambda) : nlohmann::json()}};
   return out;
 }
 

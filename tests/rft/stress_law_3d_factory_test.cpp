@@ -40,14 +40,24 @@ TEST(RftStressLawFactory, Agarwal2023UsesXiFromDensityAndFriction) {
 
 TEST(RftStressLawFactory, DynamicTermIsSwitchedPerSoil) {
   SoilParameters s = FactorySoil();
-  EXPECT_EQ(MakeStressLaw3D(LawKind::kLi2013, s, 9.81)->DynamicStress(kDown_W, kDown_W), Eigen::Vector3d::Zero());
+  EXPECT_EQ(MakeSoilContactModel(LawKind::kLi2013, s, 9.81, {}).law->DynamicStress(kDown_W, kDown_W),
+            Eigen::Vector3d::Zero());
   s.dynamic_term = true;
   s.dynamic_lambda = 2.0;
-  const auto law = MakeStressLaw3D(LawKind::kLi2013, s, 9.81);
+  // The quasi-static law alone; the soil's term comes in as an effect term, in every simulation.
+  EXPECT_EQ(MakeStressLaw3D(LawKind::kLi2013, s, 9.81)->name(), "li2013");
+  EXPECT_EQ(WithSoilDynamicTerm({}, s).inertial_lambda, 2.0);
+  const auto law = MakeSoilContactModel(LawKind::kLi2013, s, 9.81, {}).law;
   EXPECT_EQ(law->name(), "li2013+dynamic");
   EXPECT_NEAR(law->DynamicStress(kDown_W, 3.0 * kDown_W).z(), 2.0 * 1540.0 * 9.0, 1e-9);  // rho_c = bulk density
   s.dynamic_density_kg_m3 = 2000.0;
-  EXPECT_NEAR(MakeStressLaw3D(LawKind::kAgarwal2023, s, 9.81)->DynamicStress(kDown_W, kDown_W).z(), 2.0 * 2000.0, 1e-9);
+  EXPECT_NEAR(MakeSoilContactModel(LawKind::kAgarwal2023, s, 9.81, {}).law->DynamicStress(kDown_W, kDown_W).z(),
+              2.0 * 2000.0, 1e-9);
+  // A model that states inertial_drag replaces the soil's term, even at lambda 0.
+  EffectTerms stated;
+  stated.inertial_replaces_soil = true;
+  EXPECT_EQ(WithSoilDynamicTerm(stated, s).inertial_lambda, 0.0);
+  EXPECT_EQ(MakeSoilContactModel(LawKind::kLi2013, s, 9.81, stated).law->name(), "li2013");
 }
 
 TEST(RftStressLawFactory, BadInputThrowsNamingSoilAndField) {
@@ -80,7 +90,7 @@ TEST(RftStressLawFactory, BadInputThrowsNamingSoilAndField) {
   s = FactorySoil();
   s.dynamic_term = true;
   s.bulk_density_kg_m3 = 0.0;
-  EXPECT_NE(message([&] { MakeStressLaw3D(LawKind::kLi2013, s, 9.81); }).find("dynamic_density_kg_m3"),
+  EXPECT_NE(message([&] { MakeSoilContactModel(LawKind::kLi2013, s, 9.81, {}); }).find("bulk_density_kg_m3"),
             std::string::npos);
 }
 

@@ -179,7 +179,7 @@ TEST_F(InputFiles, SoilFieldsTheReadmeDocumentsAreRead) {
   EXPECT_EQ(soil.dynamic_density_kg_m3, 1500.0);
   const std::string no_density = Write("nodens.yaml", "schema_version: 1\nzeta_N_cm3: 3\ndynamic_term: true\n");
   EXPECT_EQ(ErrorOf([&] { LoadSoil(no_density); }),
-            no_density + ": dynamic_term: needs a density: dynamic_density_kg_m3 or bulk_density_kg_m3");
+            no_density + ": dynamic_term: needs the soil's bulk_density_kg_m3");
   const std::string bad = Write("bad.yaml", "schema_version: 1\nzeta_N_cm3: 3\ndynamic_term: maybe\n");
   EXPECT_EQ(ErrorOf([&] { LoadSoil(bad); }), bad + ": dynamic_term: must be true or false, got 'maybe'");
   const std::string huge = Write("huge.yaml", "schema_version: 1\nzeta_N_cm3: 1e308\n");

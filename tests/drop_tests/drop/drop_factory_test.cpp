@@ -50,6 +50,31 @@ TEST(DropFactory, RigResponseIsQuasiStaticRftAtTheDropsZeta) {
   EXPECT_EQ(response.QuasiStaticForce(d), intrusion->VerticalForce(d, zeta_g));
 }
 
+// A soil's own dynamic term is the effect library's inertial_drag at the same lambda, on the rig
+// and on the free pad alike, and a model's inertial_drag replaces it.
+TEST(DropFactory, SoilsDynamicTermIsInertialDragOnRigAndFreePad) {
+  const io::PadSpec pad = io::LoadPad("flat");
+  rft::SoilParameters plain = io::LoadSoil("fjs1_lp"), dynamic = plain;
+  dynamic.dynamic_term = true;
+  dynamic.dynamic_lambda = 0.8;
+  for (const bool free : {false, true}) {
+    SCOPED_TRACE(free ? "free pad" : "rig");
+    DropConditions c;
+    c.impact_speed_m_s = 1.5;
+    c.free = free;
+    DropConditions with_effect = c;
+    with_effect.effects.inertial_lambda = 0.8;
+    const PadDrop a = RunPadDrop(pad, dynamic, c), b = RunPadDrop(pad, plain, with_effect);
+    EXPECT_EQ(a.result.final_penetration_m, b.result.final_penetration_m);
+    EXPECT_EQ(a.result.peak_force_N, b.result.peak_force_N);
+    EXPECT_LT(a.result.final_penetration_m, RunPadDrop(pad, plain, c).result.final_penetration_m);
+    DropConditions replaced = c;
+    replaced.effects.inertial_replaces_soil = true;  // a model's inertial_drag at lambda 0
+    EXPECT_EQ(RunPadDrop(pad, dynamic, replaced).result.final_penetration_m,
+              RunPadDrop(pad, plain, c).result.final_penetration_m);
+  }
+}
+
 TEST(DropFactory, SimulateDropIsTheFactorysRigDropBitForBit) {
   const io::PadSpec pad = io::LoadPad("curved");
   const rft::SoilParameters soil = io::LoadSoil("fjs1_lp");
