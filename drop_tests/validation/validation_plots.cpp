@@ -3,9 +3,7 @@
 #include <cmath>
 #include <filesystem>
 #include <functional>
-#include <fstream>
 #include <iomanip>
-#include <sstream>
 
 #include <nlohmann/json.hpp>
 

@@ -1,16 +1,11 @@
 // validate's outputs: validation.json, validation.md, the console summary and the plots.
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <iomanip>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
 
-#include "drop_tests/io/figure_style.h"
 #include "drop_tests/io/json_number.h"
-#include "drop_tests/io/output_path.h"
-#include "drop_tests/io/plot_runner.h"
 #include "drop_tests/validation/validate.h"
 #include "rft/units.h"
 
