@@ -13,6 +13,7 @@
 #include "drop_tests/model/effects.h"
 #include "drop_tests/validation/power_law_fit.h"
 #include "footpad_geom/axisymmetric_intrusion.h"
+#include "lander/integ/cvode_integrator.h"
 #include "rft/input_error.h"
 
 namespace touchdown::validation {
@@ -54,7 +55,14 @@ class SourceRunner {
     if (v.dynamic) c.effects = model::MakeEffectTerms({{"inertial_drag", {lambda_}}}, source_.file);
     c.effects_source = source_.file;
     drop::ValidateConditions(c, source_.file);
-    return Pick(drop::SimulateDrop(source_.pad, soil, c, RunOptions(intrusion_.get())), q);
+    try {
+      return Pick(drop::SimulateDrop(source_.pad, soil, c, RunOptions(intrusion_.get())), q);
+    } catch (const integ::IntegrationFailure& e) {
+      // Name the drop: the source, the variant and its conditions.
+      throw integ::IntegrationFailure(source_.id + ", " + v.Name() + ", impact speed " + std::to_string(speed_m_s) +
+                                      " m/s, gravity " + std::to_string(gravity_m_s2) + " m/s^2, zeta " +
+                                      std::to_string(zeta_N_m3 * 1e-6) + " N/cm^3: " + e.what());
+    }
   }
 
  private:
@@ -69,7 +77,11 @@ double CalibrateZeta(const SourceRunner& runner, const ValidationSource& s, cons
   const MeasuredPoint& p = *std::find_if(s.points.begin(), s.points.end(),
                                          [&](const MeasuredPoint& q) { return q.id == s.calibrated_on; });
   const auto misfit = [&](double log_zeta) {
-    return std::log(runner.Run(v, std::exp(log_zeta), p.quantity, p.impact_speed_m_s, s.gravity_m_s2) / p.value);
+    try {
+      return std::log(runner.Run(v, std::exp(log_zeta), p.quantity, p.impact_speed_m_s, s.gravity_m_s2) / p.value);
+    } catch (const integ::IntegrationFailure&) {
+      return 10.0;  // a soil too soft to stop the pad: far too deep
+    }
   };
   double lo = std::log(1e3), hi = std::log(1e9);
   if (misfit(lo) < 0.0 || misfit(hi) > 0.0)

@@ -59,6 +59,19 @@ TEST(ValidateShipped, ExponentsAreTheLogLogFitOfTheSimulatedValues) {
   EXPECT_EQ(trends, 2 * 1 + 4 * 5 + 4 * 1);
 }
 
+TEST(ValidateShipped, ACalibratedSourceReproducesItsDesignatedPointOnly) {
+  const SourceResult& r = SourceNamed("katsuragi_durian_2007");
+  ASSERT_EQ(r.source->zeta_route, ZetaRoute::kCalibratedOn);
+  for (const PointResult& p : r.points)
+    for (size_t k = 0; k < r.variants.size(); ++k) {
+      if (p.point->id == r.source->calibrated_on) EXPECT_NEAR(p.relative_error[k], 0.0, 1e-9) << r.variants[k].Name();
+      else EXPECT_GT(std::abs(p.relative_error[k]), 1e-4) << p.point->id;  // predictions, not fits
+    }
+  // Zeta is fitted per variant, and the dynamic term's share at rest is small: close but not equal.
+  EXPECT_NE(r.zeta_N_m3[0], r.zeta_N_m3[1]);
+  EXPECT_NEAR(r.zeta_N_m3[1] / r.zeta_N_m3[0], 1.0, 0.1);
+}
+
 TEST(ValidateShipped, QuasiStaticLithostaticDepthFromRestDoesNotDependOnGravity) {
   // Weight and lithostatic resistance both scale with g: the stroke is the same, only slower.
   const SourceResult& r = SourceNamed("altshuler_2013");
