@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <optional>
+#include <utility>
 
 #include <boost/math/tools/roots.hpp>
 
@@ -44,7 +46,8 @@ class SourceRunner {
   SourceRunner(const ValidationSource& source, double lambda)
       : source_(source), lambda_(lambda), intrusion_(drop::MakeRigIntrusion(source.pad.profile)) {}
 
-  double Run(const Variant& v, double zeta_N_m3, Quantity q, double speed_m_s, double gravity_m_s2) const {
+  double Run(const Variant& v, double zeta_N_m3, Quantity q, double speed_m_s, double gravity_m_s2,
+             std::optional<double> mass_kg = std::nullopt) const {
     rft::SoilParameters soil = source_.soil;
     // zeta fixed: the soil's zeta holds at every gravity (its reference gravity is the drop's).
     if (v.zeta_fixed) soil.reference_gravity_m_s2 = gravity_m_s2;
@@ -52,6 +55,7 @@ class SourceRunner {
     c.impact_speed_m_s = speed_m_s;
     c.gravity_m_s2 = gravity_m_s2;
     c.zeta_N_m3 = zeta_N_m3;
+    c.mass_kg = mass_kg;
     if (v.dynamic) c.effects = model::MakeEffectTerms({{"inertial_drag", {lambda_}}}, source_.file);
     c.effects_source = source_.file;
     drop::ValidateConditions(c, source_.file);
@@ -112,17 +116,48 @@ void RunPoints(const SourceRunner& runner, SourceResult& r) {
   }
 }
 
+// The sphere of the pad's radius at density rho [kg].
+double SphereMass(const ValidationSource& s, double rho_kg_m3) {
+  const double radius = s.pad.profile.points.back().x_m;
+  return rho_kg_m3 * 4.0 / 3.0 * std::acos(-1.0) * radius * radius * radius;
+}
+
+// One trend point of one variant: (abscissa of the fit, simulated quantity).
+std::pair<double, double> TrendPoint(const SourceRunner& runner, const SourceResult& r, size_t k,
+                                     const MeasuredTrend& t, double value) {
+  const Variant& v = r.variants[k];
+  switch (t.vary) {
+    case Variable::kImpactSpeed:
+      return {value, runner.Run(v, r.zeta_N_m3[k], t.quantity, value, t.at_gravity_m_s2)};
+    case Variable::kGravity:
+      return {value, runner.Run(v, r.zeta_N_m3[k], t.quantity, t.at_impact_speed_m_s, value)};
+    case Variable::kTotalDropDistance: {
+      const double speed = std::sqrt(2.0 * t.at_gravity_m_s2 * value);
+      const double y = runner.Run(v, r.zeta_N_m3[k], t.quantity, speed, t.at_gravity_m_s2);
+      const double depth = t.quantity == Quantity::kFinalDepth
+                               ? y
+                               : runner.Run(v, r.zeta_N_m3[k], Quantity::kFinalDepth, speed, t.at_gravity_m_s2);
+      return {value + depth, y};
+    }
+    case Variable::kProjectileDensity:
+      return {value, runner.Run(v, r.zeta_N_m3[k], t.quantity, t.at_impact_speed_m_s, t.at_gravity_m_s2,
+                                SphereMass(*r.source, value))};
+  }
+  return {0.0, 0.0};
+}
+
 void RunTrends(const SourceRunner& runner, SourceResult& r) {
   for (const MeasuredTrend& t : r.source->trends) {
-    TrendResult tr{&t, {}, {}, {}};
+    TrendResult tr{&t, {}, {}, {}, {}};
     for (size_t k = 0; k < r.variants.size(); ++k) {
-      std::vector<double> y;
-      for (const double x : t.values) {
-        const bool speed = t.vary == Variable::kImpactSpeed;
-        y.push_back(runner.Run(r.variants[k], r.zeta_N_m3[k], t.quantity, speed ? x : t.at_impact_speed_m_s,
-                               speed ? t.at_gravity_m_s2 : x));
+      std::vector<double> x, y;
+      for (const double value : t.values) {
+        const auto [xi, yi] = TrendPoint(runner, r, k, t, value);
+        x.push_back(xi);
+        y.push_back(yi);
       }
-      const double exponent = FitPowerLaw(t.values, y).exponent;
+      const double exponent = FitPowerLaw(x, y).exponent;
+      tr.x.push_back(std::move(x));
       tr.simulated.push_back(std::move(y));
       tr.exponent.push_back(exponent);
       tr.reproduced.push_back(TrendReproduced(t, exponent));
@@ -174,8 +209,8 @@ void Score(SourceResult& r) {
 }  // namespace
 
 double SimulateQuantity(const ValidationSource& source, const Variant& variant, double zeta_N_m3, double lambda,
-                        Quantity quantity, double impact_speed_m_s, double gravity_m_s2) {
-  return SourceRunner(source, lambda).Run(variant, zeta_N_m3, quantity, impact_speed_m_s, gravity_m_s2);
+                        Quantity quantity, double impact_speed_m_s, double gravity_m_s2, std::optional<double> mass_kg) {
+  return SourceRunner(source, lambda).Run(variant, zeta_N_m3, quantity, impact_speed_m_s, gravity_m_s2, mass_kg);
 }
 
 bool TrendReproduced(const MeasuredTrend& trend, double simulated_exponent) {

@@ -8,6 +8,7 @@
 //    gravity, today's default) and with zeta fixed at its reference-gravity value.
 // Zeta follows the source's route: the soil's (derived) or fitted on the one designated point,
 // per variant; every other point is then a prediction.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,7 +32,10 @@ struct PointResult {
 
 struct TrendResult {
   const MeasuredTrend* trend = nullptr;
-  std::vector<std::vector<double>> simulated;  // per variant, per value (SI)
+  // Per variant, per value (SI): the abscissa of the fit (the trend's values, or for
+  // kTotalDropDistance h + d) and the simulated quantity.
+  std::vector<std::vector<double>> x;
+  std::vector<std::vector<double>> simulated;
   std::vector<double> exponent;                // per variant: log-log least squares
   std::vector<bool> reproduced;                // per variant
 };
@@ -67,8 +71,10 @@ struct ValidationResult {
 ValidationResult RunValidation(const ValidationSet& set);
 
 // The simulated quantity of one drop (SI): exposed for the tests.
+// `mass_kg`: the projectile's mass when not the pad's.
 double SimulateQuantity(const ValidationSource& source, const Variant& variant, double zeta_N_m3, double lambda,
-                        Quantity quantity, double impact_speed_m_s, double gravity_m_s2);
+                        Quantity quantity, double impact_speed_m_s, double gravity_m_s2,
+                        std::optional<double> mass_kg = std::nullopt);
 
 // Whether a simulated exponent reproduces a measured trend.
 bool TrendReproduced(const MeasuredTrend& trend, double simulated_exponent);

@@ -63,16 +63,19 @@ std::string TrendFigure(const std::string& dir, const SourceResult& r, const Tre
   const std::string base = "plots/" + r.source->id + "_" + m.id;
   const double f = QuantityToReport(m.quantity);
   const size_t mid = m.values.size() / 2;
+  // Columns: per variant its abscissa and value, then the measured slope's line (on variant 0's x).
   WriteTable(dir + "/" + base + ".csv", [&](std::ostream& out) {
     for (size_t i = 0; i < m.values.size(); ++i) {
-      out << m.values[i];
-      for (const std::vector<double>& sim : t.simulated) out << "," << sim[i] * f;
+      for (size_t k = 0; k < t.simulated.size(); ++k) out << (k ? "," : "") << t.x[k][i] << "," << t.simulated[k][i] * f;
       const double slope = m.direction == Direction::kExponent ? m.exponent : 0.0;
-      out << "," << t.simulated[0][mid] * f * std::pow(m.values[i] / m.values[mid], slope) << "\n";
+      out << "," << t.x[0][i] << "," << t.simulated[0][mid] * f * std::pow(t.x[0][i] / t.x[0][mid], slope) << "\n";
     }
   });
   const std::string file = r.source->id + "_" + m.id;
-  const std::string x_label = m.vary == Variable::kImpactSpeed ? "impact speed [m/s]" : "gravity [m/s^2]";
+  const std::string x_label = m.vary == Variable::kImpactSpeed         ? "impact speed [m/s]"
+                              : m.vary == Variable::kGravity           ? "gravity [m/s^2]"
+                              : m.vary == Variable::kTotalDropDistance ? "total drop distance h + d [m]"
+                                                                       : "projectile density [kg/m^3]";
   const std::string measured = m.direction == Direction::kExponent
                                    ? "measured exponent " + std::to_string(m.exponent).substr(0, 5)
                                    : std::string("measured: ") + (m.direction == Direction::kIncreasing ? "increasing" : "decreasing");
@@ -82,11 +85,13 @@ std::string TrendFigure(const std::string& dir, const SourceResult& r, const Tre
                      "\nset key top left\nplot ";
   std::vector<std::string> items;
   for (size_t k = 0; k < r.variants.size(); ++k)
-    items.push_back(io::GnuplotQuote("plots/" + file + ".csv") + " using 1:" + std::to_string(k + 2) +
+    items.push_back(io::GnuplotQuote("plots/" + file + ".csv") + " using " + std::to_string(2 * k + 1) + ":" +
+                    std::to_string(2 * k + 2) +
                     " with linespoints " + VariantLine(r.variants[k], k) + " pt 7 title " +
                     io::GnuplotQuote(r.variants[k].Name()));
   // A direction has no slope to draw: the key says what was measured.
-  items.push_back(io::GnuplotQuote("plots/" + file + ".csv") + " using 1:" + std::to_string(r.variants.size() + 2) +
+  items.push_back(io::GnuplotQuote("plots/" + file + ".csv") + " using " + std::to_string(2 * r.variants.size() + 1) +
+                  ":" + std::to_string(2 * r.variants.size() + 2) +
                   " with lines " + std::string(m.direction == Direction::kExponent ? io::kPaperBandLine : "lw 0 lc rgb '#ffffff'") +
                   " title " + io::GnuplotQuote(m.direction == Direction::kExponent ? measured + " (slope; anchored)" : measured));
   for (size_t i = 0; i < items.size(); ++i) body += (i ? ", " : "") + items[i];

@@ -68,6 +68,7 @@ nlohmann::json TrendJson(const SourceResult& r, const TrendResult& t) {
   for (size_t k = 0; k < r.variants.size(); ++k)
     j["simulated"][r.variants[k].Name()] = {{"exponent", io::FiniteOrNull(t.exponent[k])},
                                             {"reproduced", static_cast<bool>(t.reproduced[k])},
+                                            {"x_SI", t.x[k]},
                                             {"values_SI", t.simulated[k]}};
   return j;
 }

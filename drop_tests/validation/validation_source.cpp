@@ -16,7 +16,15 @@ namespace fs = std::filesystem;
 const char* QuantityName(Quantity q) { return q == Quantity::kFinalDepth ? "final_depth" : "stop_time"; }
 const char* QuantityUnit(Quantity q) { return q == Quantity::kFinalDepth ? "mm" : "ms"; }
 double QuantityToReport(Quantity) { return 1e3; }
-const char* VariableName(Variable v) { return v == Variable::kImpactSpeed ? "impact_speed_m_s" : "gravity_m_s2"; }
+const char* VariableName(Variable v) {
+  switch (v) {
+    case Variable::kImpactSpeed: return "impact_speed_m_s";
+    case Variable::kGravity: return "gravity_m_s2";
+    case Variable::kTotalDropDistance: return "drop_height_m";
+    case Variable::kProjectileDensity: return "projectile_density_kg_m3";
+  }
+  return "";
+}
 const char* ProvenanceName(Provenance p) {
   switch (p) {
     case Provenance::kQuoted: return "quoted";
@@ -121,7 +129,9 @@ Variable ReadVariable(const io::YamlFields& f) {
   const std::string v = f.String("vary");
   if (v == "impact_speed_m_s") return Variable::kImpactSpeed;
   if (v == "gravity_m_s2") return Variable::kGravity;
-  f.Fail("vary", "must be impact_speed_m_s or gravity_m_s2, got '" + v + "'");
+  if (v == "drop_height_m") return Variable::kTotalDropDistance;
+  if (v == "projectile_density_kg_m3") return Variable::kProjectileDensity;
+  f.Fail("vary", "must be impact_speed_m_s, gravity_m_s2, drop_height_m or projectile_density_kg_m3, got '" + v + "'");
 }
 
 void ReadTrendLaw(const io::YamlFields& f, MeasuredTrend& t) {
@@ -153,12 +163,15 @@ MeasuredTrend ReadTrend(const io::YamlFields& f, const ValidationSource& s) {
       t.values.front() == t.values.back())
     f.Fail("values", "must be two or more increasing values spanning the measured range");
   t.at_gravity_m_s2 = f.PositiveOr("at_gravity_m_s2", s.gravity_m_s2);
-  if (t.vary == Variable::kImpactSpeed) {
+  const bool varies_speed = t.vary == Variable::kImpactSpeed || t.vary == Variable::kTotalDropDistance;
+  if (varies_speed) {
     if (f.Has("at_impact_speed_m_s")) f.Fail("at_impact_speed_m_s", "the trend varies the impact speed");
   } else {
-    if (f.Has("at_gravity_m_s2")) f.Fail("at_gravity_m_s2", "the trend varies gravity");
     t.at_impact_speed_m_s = f.NonNegative("at_impact_speed_m_s");
   }
+  if (t.vary == Variable::kGravity && f.Has("at_gravity_m_s2")) f.Fail("at_gravity_m_s2", "the trend varies gravity");
+  if (t.vary == Variable::kProjectileDensity && s.pad.file.shape != "spherical_cap")
+    f.Fail("vary", "projectile_density_kg_m3 needs a sphere (a spherical_cap pad)");
   ReadTrendLaw(f, t);
   t.how = ReadProvenance(f);
   t.where = f.String("where");

@@ -21,9 +21,12 @@ const char* QuantityName(Quantity q);   // "final_depth", "stop_time"
 const char* QuantityUnit(Quantity q);   // the unit the reports print: "mm", "ms"
 double QuantityToReport(Quantity q);    // SI -> report unit factor (1e3 for both)
 
-// What a trend varies.
-enum class Variable { kImpactSpeed, kGravity };
-const char* VariableName(Variable v);  // "impact_speed_m_s", "gravity_m_s2"
+// What a trend varies. kTotalDropDistance: the drop height h (values) in free fall, the trend
+// taken against the total drop distance H = h + d (Uehara et al.'s variable, d the final depth).
+// kProjectileDensity: the sphere's density at its fixed size (a spherical_cap pad: the sphere of
+// the pad's radius), i.e. its mass.
+enum class Variable { kImpactSpeed, kGravity, kTotalDropDistance, kProjectileDensity };
+const char* VariableName(Variable v);  // "impact_speed_m_s", "gravity_m_s2", "drop_height_m", "projectile_density_kg_m3"
 
 // How a number came out of its source.
 enum class Provenance { kQuoted, kReadOffFigure, kDerivedFromMeasuredLaw };

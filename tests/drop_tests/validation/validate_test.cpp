@@ -52,11 +52,16 @@ TEST(ValidateShipped, ExponentsAreTheLogLogFitOfTheSimulatedValues) {
     for (const TrendResult& t : r.trends)
       for (size_t k = 0; k < r.variants.size(); ++k) {
         ASSERT_EQ(t.simulated[k].size(), t.trend->values.size());
-        EXPECT_EQ(t.exponent[k], FitPowerLaw(t.trend->values, t.simulated[k]).exponent) << t.trend->id;
+        EXPECT_EQ(t.exponent[k], FitPowerLaw(t.x[k], t.simulated[k]).exponent) << t.trend->id;
+        for (size_t i = 0; i < t.x[k].size(); ++i) {
+          // The abscissa is the trend's value, or for the total drop distance h + d (d simulated).
+          const double h_plus_d = t.trend->values[i] + t.simulated[k][i];
+          EXPECT_EQ(t.x[k][i], t.trend->vary == Variable::kTotalDropDistance ? h_plus_d : t.trend->values[i]);
+        }
         EXPECT_EQ(t.reproduced[k], TrendReproduced(*t.trend, t.exponent[k])) << t.trend->id;
         ++trends;
       }
-  EXPECT_EQ(trends, 2 * 1 + 4 * 5 + 4 * 1);
+  EXPECT_EQ(trends, 4 * 1 + 2 * 2 + 2 * 1 + 4 * 5);  // altshuler, ambroso, katsuragi_durian, murdoch
 }
 
 TEST(ValidateShipped, ACalibratedSourceReproducesItsDesignatedPointOnly) {
@@ -95,15 +100,15 @@ TEST(ValidateShipped, TrendVerdictsFollowTheTolerance) {
 
 TEST(ValidateShipped, JsonAndReportCarryEverySource) {
   const nlohmann::json j = ValidationJson(ShippedRun());
-  ASSERT_EQ(j["sources"].size(), 3u);
+  ASSERT_EQ(j["sources"].size(), 4u);
   EXPECT_DOUBLE_EQ(j["dynamic_rft"]["inertial_drag_lambda"].get<double>(), 1.1);
-  const nlohmann::json& kd = j["sources"][1];
+  const nlohmann::json& kd = j["sources"][2];
   EXPECT_EQ(kd["id"], "katsuragi_durian_2007");
   const PointResult& p = SourceNamed("katsuragi_durian_2007").points[0];
   EXPECT_DOUBLE_EQ(kd["points"][0]["measured"].get<double>(), p.point->value * 1e3);
   EXPECT_DOUBLE_EQ(kd["points"][0]["simulated"]["dynamic"]["relative_error"].get<double>(), p.relative_error[1]);
   const std::string md = ValidationMarkdown(ShippedRun());
-  for (const char* id : {"altshuler_2013", "katsuragi_durian_2007", "murdoch_2017"})
+  for (const char* id : {"altshuler_2013", "ambroso_2005", "katsuragi_durian_2007", "murdoch_2017"})
     EXPECT_NE(md.find(std::string("### ") + id), std::string::npos);
 }
 
@@ -117,7 +122,7 @@ TEST_F(ValidateOutputs, WritesTheReportAndEveryPlot) {
   EXPECT_TRUE(std::filesystem::exists(out + "/plots/katsuragi_durian_2007_final_depth.png"));
   EXPECT_TRUE(std::filesystem::exists(out + "/plots/murdoch_2017_depth_vs_gravity.svg"));
   const nlohmann::json j = nlohmann::json::parse(Slurp(out + "/validation.json"));
-  EXPECT_EQ(j["sources"].size(), 3u);
+  EXPECT_EQ(j["sources"].size(), 4u);
 }
 
 }  // namespace

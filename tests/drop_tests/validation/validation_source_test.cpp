@@ -42,19 +42,21 @@ class ValidationSourceLoad : public testing_scratch::ScratchDirTest {
 
 TEST_F(ValidationSourceLoad, ShippedSourcesLoadWithTheirNumbers) {
   const ValidationSet set = LoadValidationSet(kShippedSources);
-  ASSERT_EQ(set.sources.size(), 3u);
+  ASSERT_EQ(set.sources.size(), 4u);
   EXPECT_EQ(set.sources[0].id, "altshuler_2013");
-  EXPECT_EQ(set.sources[1].id, "katsuragi_durian_2007");
-  EXPECT_EQ(set.sources[2].id, "murdoch_2017");
+  EXPECT_EQ(set.sources[1].id, "ambroso_2005");
+  EXPECT_EQ(set.sources[2].id, "katsuragi_durian_2007");
+  EXPECT_EQ(set.sources[3].id, "murdoch_2017");
   EXPECT_DOUBLE_EQ(set.dynamic.lambda, 1.1);
-  const ValidationSource& kd = set.sources[1];
+  const ValidationSource& kd = set.sources[2];
   ASSERT_TRUE(kd.law.has_value());
   EXPECT_DOUBLE_EQ(kd.law->d1_m, 0.087);
   EXPECT_DOUBLE_EQ(kd.law->k_over_m_s2, 1040.0);
   EXPECT_EQ(kd.points.size(), 13u);
   EXPECT_NEAR(kd.points[0].impact_speed_m_s, std::sqrt(2 * 9.81 * 0.83), 1e-12);
   EXPECT_DOUBLE_EQ(kd.pad.mass_kg, 0.0692);
-  EXPECT_TRUE(set.sources[2].low_gravity);
+  EXPECT_TRUE(set.sources[3].low_gravity);
+  EXPECT_EQ(set.sources[1].trends[1].vary, Variable::kProjectileDensity);
 }
 
 TEST_F(ValidationSourceLoad, AMinimalSourceLoads) {
