@@ -105,8 +105,9 @@ struct DynamicRftModel {
 };
 DynamicRftModel LoadDynamicRftModel(const std::string& path);
 
-// Every `*.yaml` of `directory` whose `type` is validation_source, sorted by id, and its
-// dynamic_rft.yaml. InputError when the directory holds no source or no model.
+// Every `*.yaml` of `directory` but dynamic_rft.yaml is a source (`type: validation_source`),
+// loaded in file-name order, and dynamic_rft.yaml is the model. InputError when the directory holds
+// no source or no model, or any file is not what it must be.
 struct ValidationSet {
   std::vector<ValidationSource> sources;
   DynamicRftModel dynamic;
