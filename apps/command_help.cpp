@@ -43,6 +43,7 @@ const std::vector<CommandExamples>& Examples() {
       {"diagnose", {"touchdown diagnose data/datasets/air_vs_vacuum_synthetic --out runs/diagnose"}},
       {"stability",
        {"touchdown stability data/studies/lunar_paper_lander.yaml --out runs/lunar_quick --samples 10   # a quick look"}},
+      {"validate", {"touchdown validate --out runs/validation"}},
   };
   return examples;
 }

@@ -18,5 +18,6 @@ void AddLanderCommand(CLI::App& app);    // touchdown lander SCENARIO.yaml --out
 void AddSynthCommand(CLI::App& app);     // touchdown synth SPEC.yaml --out DATASET_DIR
 void AddDiagnoseCommand(CLI::App& app);  // touchdown diagnose MEASURED_DIR [--model M] --out DIR
 void AddStabilityCommand(CLI::App& app);  // touchdown stability STUDY.yaml --out DIR [--samples N]
+void AddValidateCommand(CLI::App& app);   // touchdown validate [--sources DIR] [--out DIR]
 
 }  // namespace touchdown::app

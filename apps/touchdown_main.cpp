@@ -31,6 +31,7 @@ int main(int argc, char** argv) {
   touchdown::app::AddSynthCommand(app);
   touchdown::app::AddDiagnoseCommand(app);
   touchdown::app::AddStabilityCommand(app);
+  touchdown::app::AddValidateCommand(app);
   touchdown::app::AddHelpFooters(app);
   try {
     touchdown::app::RejectUnknownCommand(app, argc, argv);

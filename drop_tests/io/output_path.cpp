@@ -317,6 +317,7 @@ const char* OutputKindName(OutputKind kind) {
     case OutputKind::kDiagnosis: return "diagnose";
     case OutputKind::kSweep: return "sweep";
     case OutputKind::kDropVtk: return "drop";
+    case OutputKind::kValidation: return "validate";
   }
   return "?";
 }

@@ -24,8 +24,9 @@ inline constexpr const char* kOutputMarker = ".touchdown-output";
 
 // Which command wrote an output directory: one command never replaces another's output.
 // A trade study's tables go into its sweep's output, so they are of the sweep kind.
-// `touchdown drop --vtk DIR` writes a ParaView time series (kDropVtk).
-enum class OutputKind { kCampaign, kLander, kComparison, kDataset, kDiagnosis, kSweep, kDropVtk };
+// `touchdown drop --vtk DIR` writes a ParaView time series (kDropVtk); `touchdown validate` its
+// report (kValidation).
+enum class OutputKind { kCampaign, kLander, kComparison, kDataset, kDiagnosis, kSweep, kDropVtk, kValidation };
 const char* OutputKindName(OutputKind kind);
 
 // An output path as the user gave it, with the paths the command reads from.

@@ -19,7 +19,7 @@ struct HelpRun {
 
 const std::vector<std::string> kHelpCommands = {"drop",    "campaign", "force", "sweep", "export",
                                                 "merge",   "compare",  "calibrate", "trade", "lander",
-                                                "synth",   "diagnose", "stability"};
+                                                "synth",   "diagnose", "stability", "validate"};
 
 class CliHelp : public touchdown::testing_scratch::ScratchDirTest {
  protected:

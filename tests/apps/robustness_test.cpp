@@ -363,6 +363,11 @@ std::vector<Case> Cases() {
                {{"grid_only.yaml", study}}});
   c.push_back({"study YAML", "slope 90 deg", "stability steep.yaml --out out_t3",
                {{"steep.yaml", "schema_version: 1\ntype: stability\n" + lander_sweep + "grid: {slope_deg: [0, 90]}\n"}}});
+  // Validation sources (docs/validation.md).
+  c.push_back({"validation sources", "--sources is not a directory", "validate --sources no_such_dir --out out_v1"});
+  c.push_back({"validation sources", "a source whose id is not its file name", "validate --sources vs --out out_v2",
+               {{"vs/dynamic_rft.yaml", "schema_version: 1\ntype: validation_model\ninertial_drag_lambda: 1.1\nsource: s\n"},
+                {"vs/a.yaml", "schema_version: 1\ntype: validation_source\nid: b\n"}}});
   // Lander scenario YAML.
   c.push_back({"lander YAML", "unknown lander", "lander no_lander.yaml --out out_l1",
                {{"no_lander.yaml", Lander("lander: apollo\n" + kLanderGround + kLanderInitial)}}});

@@ -1,0 +1,41 @@
+#include <iostream>
+#include <memory>
+
+#include "apps/commands.h"
+#include "drop_tests/io/catalog.h"
+#include "drop_tests/io/output_path.h"
+#include "drop_tests/validation/validate.h"
+
+namespace touchdown::app {
+
+namespace {
+struct ValidateArgs {
+  std::string sources, out;
+};
+}  // namespace
+
+void AddValidateCommand(CLI::App& app) {
+  auto args = std::make_shared<ValidateArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "validate",
+      "Validation against published granular-impact measurements: per source measured, simulated (quasi-static and "
+      "dynamic RFT), error, and whether each measured trend is reproduced (docs/validation.md)");
+  cmd->add_option("--sources", args->sources,
+                  "directory of validation sources and dynamic_rft.yaml (default: the data's validation/)");
+  cmd->add_option("--out", args->out, "output directory (validation.json, validation.md, plots/)");
+  cmd->callback([args] {
+    const std::string dir = args->sources.empty() ? io::DataDirectory() + "/validation" : args->sources;
+    const validation::ValidationSet set = validation::LoadValidationSet(dir);
+    std::vector<std::string> inputs;
+    for (const validation::ValidationSource& s : set.sources) inputs.push_back(s.file);
+    if (!args->out.empty()) io::CheckOutputDirectory({args->out, inputs}, io::OutputKind::kValidation);
+    const validation::ValidationResult result = validation::RunValidation(set);
+    std::cout << validation::ValidationSummary(result);
+    if (!args->out.empty()) {
+      validation::WriteValidationOutputs(result, args->out);
+      std::cout << "wrote " << args->out << "/ (validation.json, validation.md, plots/ as PNG and SVG)\n";
+    }
+  });
+}
+
+}  // namespace touchdown::app

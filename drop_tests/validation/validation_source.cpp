@@ -1,0 +1,271 @@
+#include "drop_tests/validation/validation_source.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <set>
+
+#include "drop_tests/io/yaml_fields.h"
+#include "drop_tests/validation/katsuragi_durian.h"
+#include "rft/input_error.h"
+
+namespace touchdown::validation {
+
+namespace fs = std::filesystem;
+
+const char* QuantityName(Quantity q) { return q == Quantity::kFinalDepth ? "final_depth" : "stop_time"; }
+const char* QuantityUnit(Quantity q) { return q == Quantity::kFinalDepth ? "mm" : "ms"; }
+double QuantityToReport(Quantity) { return 1e3; }
+const char* VariableName(Variable v) {
+  switch (v) {
+    case Variable::kImpactSpeed: return "impact_speed_m_s";
+    case Variable::kGravity: return "gravity_m_s2";
+    case Variable::kTotalDropDistance: return "drop_height_m";
+    case Variable::kProjectileDensity: return "projectile_density_kg_m3";
+  }
+  return "";
+}
+const char* ProvenanceName(Provenance p) {
+  switch (p) {
+    case Provenance::kQuoted: return "quoted";
+    case Provenance::kReadOffFigure: return "read_off_figure";
+    case Provenance::kDerivedFromMeasuredLaw: return "derived_from_measured_law";
+  }
+  return "";
+}
+
+namespace {
+
+Quantity ReadQuantity(const io::YamlFields& f) {
+  const std::string q = f.String("quantity");
+  if (q == "final_depth") return Quantity::kFinalDepth;
+  if (q == "stop_time") return Quantity::kStopTime;
+  f.Fail("quantity", "must be final_depth or stop_time, got '" + q + "'");
+}
+
+Provenance ReadProvenance(const io::YamlFields& f) {
+  const std::string how = f.String("how");
+  if (how == "quoted") return Provenance::kQuoted;
+  if (how == "read_off_figure") return Provenance::kReadOffFigure;
+  if (how == "derived_from_measured_law") return Provenance::kDerivedFromMeasuredLaw;
+  f.Fail("how", "must be quoted, read_off_figure or derived_from_measured_law, got '" + how + "'");
+}
+
+// A pad or soil path as the file gives it: relative to the file's directory.
+std::string Beside(const io::YamlFields& f, const std::string& key) {
+  const fs::path given = f.String(key);
+  const fs::path resolved = given.is_absolute() ? given : fs::path(f.file()).parent_path() / given;
+  if (!fs::exists(resolved)) f.Fail(key, "no such file '" + resolved.string() + "'");
+  return resolved.string();
+}
+
+template <typename Load>
+auto LoadNamed(const io::YamlFields& f, const std::string& key, Load load) {
+  const std::string path = Beside(f, key);
+  try {
+    return load(path);
+  } catch (const InputError& e) {
+    f.Fail(key, e.what());
+  }
+}
+
+KatsuragiDurianLaw ReadLaw(const io::YamlFields& f) {
+  f.RequireOnly({"kind", "d1_mm", "d1_uncertainty_mm", "k_over_m_per_s2", "k_over_m_uncertainty_per_s2", "how",
+                 "where"});
+  if (f.String("kind") != "katsuragi_durian")
+    f.Fail("kind", "must be katsuragi_durian, got '" + f.String("kind") + "'");
+  KatsuragiDurianLaw law;
+  law.d1_m = f.Positive("d1_mm") * 1e-3;
+  law.d1_uncertainty_m = f.NonNegative("d1_uncertainty_mm") * 1e-3;
+  law.k_over_m_s2 = f.Positive("k_over_m_per_s2");
+  law.k_over_m_uncertainty_s2 = f.NonNegative("k_over_m_uncertainty_per_s2");
+  if (law.d1_uncertainty_m >= law.d1_m) f.Fail("d1_uncertainty_mm", "must be below d1_mm");
+  if (law.k_over_m_uncertainty_s2 >= law.k_over_m_s2) f.Fail("k_over_m_uncertainty_per_s2", "must be below k_over_m_per_s2");
+  law.how = ReadProvenance(f);
+  law.where = f.String("where");
+  return law;
+}
+
+// The impact speed of a point or trend: given, or from a drop height in free fall at gravity g.
+double ReadImpactSpeed(const io::YamlFields& f, double gravity_m_s2, std::optional<double>& drop_height_m) {
+  if (f.Has("impact_speed_m_s") == f.Has("drop_height_mm"))
+    f.Fail("impact_speed_m_s", "give exactly one of impact_speed_m_s and drop_height_mm");
+  if (f.Has("impact_speed_m_s")) return f.NonNegative("impact_speed_m_s");
+  drop_height_m = f.NonNegative("drop_height_mm") * 1e-3;
+  return std::sqrt(2.0 * gravity_m_s2 * *drop_height_m);
+}
+
+MeasuredPoint ReadPoint(const io::YamlFields& f, const ValidationSource& s) {
+  f.RequireOnly({"id", "impact_speed_m_s", "drop_height_mm", "quantity", "depth_mm", "stop_time_ms", "uncertainty_mm",
+                 "uncertainty_ms", "from_law", "how", "where"});
+  MeasuredPoint p;
+  p.id = f.String("id");
+  p.impact_speed_m_s = ReadImpactSpeed(f, s.gravity_m_s2, p.drop_height_m);
+  p.quantity = ReadQuantity(f);
+  const bool from_law = f.Has("from_law") && f.Bool("from_law");
+  const char* value_key = p.quantity == Quantity::kFinalDepth ? "depth_mm" : "stop_time_ms";
+  const char* uncertainty_key = p.quantity == Quantity::kFinalDepth ? "uncertainty_mm" : "uncertainty_ms";
+  if (from_law) {
+    if (!s.law) f.Fail("from_law", "the source has no measured_law");
+    if (p.quantity != Quantity::kFinalDepth) f.Fail("from_law", "the law gives final_depth only");
+    if (f.Has(value_key)) f.Fail(value_key, "give a value or from_law: true, not both");
+    const DepthWithUncertainty d = KatsuragiDurianStopDepthRange({s.law->d1_m, s.law->k_over_m_s2, s.gravity_m_s2},
+                                                                 s.law->d1_uncertainty_m,
+                                                                 s.law->k_over_m_uncertainty_s2, p.impact_speed_m_s);
+    p.value = d.depth_m;
+    p.uncertainty = d.half_range_m;
+  } else {
+    p.value = f.Positive(value_key) * 1e-3;
+    if (f.Has(uncertainty_key)) p.uncertainty = f.NonNegative(uncertainty_key) * 1e-3;
+  }
+  p.how = ReadProvenance(f);
+  if (from_law != (p.how == Provenance::kDerivedFromMeasuredLaw))
+    f.Fail("how", "derived_from_measured_law goes with from_law: true, and only with it");
+  p.where = f.String("where");
+  return p;
+}
+
+Variable ReadVariable(const io::YamlFields& f) {
+  const std::string v = f.String("vary");
+  if (v == "impact_speed_m_s") return Variable::kImpactSpeed;
+  if (v == "gravity_m_s2") return Variable::kGravity;
+  if (v == "drop_height_m") return Variable::kTotalDropDistance;
+  if (v == "projectile_density_kg_m3") return Variable::kProjectileDensity;
+  f.Fail("vary", "must be impact_speed_m_s, gravity_m_s2, drop_height_m or projectile_density_kg_m3, got '" + v + "'");
+}
+
+void ReadTrendLaw(const io::YamlFields& f, MeasuredTrend& t) {
+  if (f.Has("exponent") == f.Has("direction")) f.Fail("exponent", "give exactly one of exponent and direction");
+  if (f.Has("direction")) {
+    const std::string d = f.String("direction");
+    if (d == "increasing") t.direction = Direction::kIncreasing;
+    else if (d == "decreasing") t.direction = Direction::kDecreasing;
+    else f.Fail("direction", "must be increasing or decreasing, got '" + d + "'");
+    return;
+  }
+  t.exponent = f.Number("exponent");
+  t.tolerance = f.Positive("tolerance");
+  const std::string from = f.String("tolerance_source");
+  if (from != "stated" && from != "assumed") f.Fail("tolerance_source", "must be stated or assumed, got '" + from + "'");
+  t.tolerance_assumed = from == "assumed";
+  if (t.tolerance_assumed) t.tolerance_note = f.String("tolerance_note");
+}
+
+MeasuredTrend ReadTrend(const io::YamlFields& f, const ValidationSource& s) {
+  f.RequireOnly({"id", "quantity", "vary", "values", "at_impact_speed_m_s", "at_gravity_m_s2", "exponent", "tolerance",
+                 "tolerance_source", "tolerance_note", "direction", "how", "where"});
+  MeasuredTrend t;
+  t.id = f.String("id");
+  t.quantity = ReadQuantity(f);
+  t.vary = ReadVariable(f);
+  t.values = f.NumberList("values", /*allow_zero=*/false);
+  if (t.values.size() < 2 || !std::is_sorted(t.values.begin(), t.values.end()) ||
+      t.values.front() == t.values.back())
+    f.Fail("values", "must be two or more increasing values spanning the measured range");
+  t.at_gravity_m_s2 = f.PositiveOr("at_gravity_m_s2", s.gravity_m_s2);
+  const bool varies_speed = t.vary == Variable::kImpactSpeed || t.vary == Variable::kTotalDropDistance;
+  if (varies_speed) {
+    if (f.Has("at_impact_speed_m_s")) f.Fail("at_impact_speed_m_s", "the trend varies the impact speed");
+  } else {
+    t.at_impact_speed_m_s = f.NonNegative("at_impact_speed_m_s");
+  }
+  if (t.vary == Variable::kGravity && f.Has("at_gravity_m_s2")) f.Fail("at_gravity_m_s2", "the trend varies gravity");
+  if (t.vary == Variable::kProjectileDensity && s.pad.file.shape != "spherical_cap")
+    f.Fail("vary", "projectile_density_kg_m3 needs a sphere (a spherical_cap pad)");
+  ReadTrendLaw(f, t);
+  t.how = ReadProvenance(f);
+  t.where = f.String("where");
+  return t;
+}
+
+void ReadMedium(const io::YamlFields& m, ValidationSource& s) {
+  m.RequireOnly({"soil", "description", "zeta_route", "calibrated_on"});
+  s.soil = LoadNamed(m, "soil", [](const std::string& p) { return io::LoadSoil(p); });
+  s.medium = m.String("description");
+  const std::string route = m.String("zeta_route");
+  if (route == "derived") {
+    if (m.Has("calibrated_on")) m.Fail("calibrated_on", "only with zeta_route: calibrated_on");
+  } else if (route == "calibrated_on") {
+    s.zeta_route = ZetaRoute::kCalibratedOn;
+    s.calibrated_on = m.String("calibrated_on");
+  } else {
+    m.Fail("zeta_route", "must be derived or calibrated_on, got '" + route + "'");
+  }
+}
+
+void CheckIds(const io::YamlFields& f, const ValidationSource& s) {
+  std::set<std::string> ids;
+  for (const MeasuredPoint& p : s.points)
+    if (!ids.insert(p.id).second) f.Fail("points", "repeated id '" + p.id + "'");
+  for (const MeasuredTrend& t : s.trends)
+    if (!ids.insert(t.id).second) f.Fail("trends", "repeated id '" + t.id + "'");
+  if (s.points.empty() && s.trends.empty()) f.Fail("points", "a source needs measured points or trends");
+  if (s.zeta_route == ZetaRoute::kCalibratedOn) {
+    const auto it = std::find_if(s.points.begin(), s.points.end(),
+                                 [&](const MeasuredPoint& p) { return p.id == s.calibrated_on; });
+    if (it == s.points.end() || it->quantity != Quantity::kFinalDepth)
+      f.Fail("medium.calibrated_on", "'" + s.calibrated_on + "' is not a final_depth point of this source");
+  }
+}
+
+}  // namespace
+
+ValidationSource LoadValidationSource(const std::string& path) {
+  const io::YamlFields f = io::YamlFields::LoadFile(path);
+  f.RequireSchemaVersion(1);
+  f.RequireOnly({"schema_version", "type", "id", "citation", "read_at", "projectile", "medium", "gravity_m_s2",
+                 "low_gravity", "measured_law", "points", "trends", "provenance"});
+  if (f.String("type") != "validation_source") f.Fail("type", "must be validation_source, got '" + f.String("type") + "'");
+  ValidationSource s;
+  s.file = path;
+  s.id = f.String("id");
+  if (s.id != fs::path(path).stem().string()) f.Fail("id", "must be the file's name without .yaml, got '" + s.id + "'");
+  s.citation = f.String("citation");
+  s.read_at = f.String("read_at");
+  const io::YamlFields projectile = f.Child("projectile");
+  projectile.RequireOnly({"pad", "description"});
+  s.pad = LoadNamed(projectile, "pad", [](const std::string& p) { return io::LoadPad(p); });
+  if (!s.pad.is_axisymmetric()) projectile.Fail("pad", "must be an axisymmetric pad (the rig drop)");
+  s.projectile = projectile.String("description");
+  ReadMedium(f.Child("medium"), s);
+  s.gravity_m_s2 = f.Positive("gravity_m_s2");
+  if (f.Has("low_gravity")) s.low_gravity = f.Bool("low_gravity");
+  if (f.Has("measured_law")) s.law = ReadLaw(f.Child("measured_law"));
+  if (f.Has("points"))
+    for (const io::YamlFields& p : f.List("points")) s.points.push_back(ReadPoint(p, s));
+  if (f.Has("trends"))
+    for (const io::YamlFields& t : f.List("trends")) s.trends.push_back(ReadTrend(t, s));
+  CheckIds(f, s);
+  return s;
+}
+
+DynamicRftModel LoadDynamicRftModel(const std::string& path) {
+  const io::YamlFields f = io::YamlFields::LoadFile(path);
+  f.RequireSchemaVersion(1);
+  f.RequireOnly({"schema_version", "type", "inertial_drag_lambda", "source", "provenance"});
+  if (f.String("type") != "validation_model") f.Fail("type", "must be validation_model, got '" + f.String("type") + "'");
+  DynamicRftModel m;
+  m.lambda = f.Positive("inertial_drag_lambda");
+  if (m.lambda > 1e3) f.Fail("inertial_drag_lambda", "must be at most 1000 (an O(1) coefficient)");
+  m.source = f.String("source");
+  m.file = path;
+  return m;
+}
+
+ValidationSet LoadValidationSet(const std::string& directory) {
+  std::error_code ec;
+  if (!fs::is_directory(directory, ec)) throw MakeInputError(directory, "", "not a directory of validation sources");
+  std::vector<std::string> files;
+  for (const fs::directory_entry& e : fs::directory_iterator(directory, ec))
+    if (e.path().extension() == ".yaml" && e.path().filename() != "dynamic_rft.yaml") files.push_back(e.path().string());
+  std::sort(files.begin(), files.end());
+  ValidationSet set;
+  for (const std::string& file : files) set.sources.push_back(LoadValidationSource(file));
+  if (set.sources.empty()) throw MakeInputError(directory, "", "holds no validation source (*.yaml)");
+  const fs::path model = fs::path(directory) / "dynamic_rft.yaml";
+  if (!fs::exists(model)) throw MakeInputError(model.string(), "", "missing (the dynamic variant's lambda)");
+  set.dynamic = LoadDynamicRftModel(model.string());
+  return set;
+}
+
+}  // namespace touchdown::validation
