@@ -41,6 +41,25 @@ def test_calibrate_equals_the_command_line(tmp_path):
         assert model["soils"][f["group"]]["zeta_N_cm3"] == float(f"{f['zeta_N_cm3']:.10g}")
 
 
+def test_calibrate_bekker_equals_the_command_line(tmp_path):
+    args = ("--law", "bekker", "--soil", "fjs1_lp", "--atmosphere", "vacuum", "--shear-from", "fjs1_lp_bekker")
+    printed = run_touchdown("calibrate", MEASURED, "--out", tmp_path / "soil.yaml", *args)
+    (tmp_path / "cli").mkdir()
+    (tmp_path / "soil.yaml").rename(tmp_path / "cli" / "soil.yaml")
+    fit = touchdown.calibrate(MEASURED, tmp_path / "soil.yaml", law="bekker", soil="fjs1_lp", atmosphere="vacuum",
+                              shear_from="fjs1_lp_bekker")
+    assert (tmp_path / "soil.yaml").read_bytes() == (tmp_path / "cli" / "soil.yaml").read_bytes()
+    assert fit["law"] == "bekker" and fit["soils"] == ["fjs1_lp"] and fit["k_c_kN_m_n1"] == 0.0
+    line = re.search(r"n = (\S+), k_c = \S+ kN/m\^\(n\+1\), k_phi = (\S+) kN/m\^\(n\+2\) from (\d+) drops, (\d+) samples",
+                     printed)
+    assert line, printed
+    assert float(line.group(1)) == pytest.approx(fit["n"], rel=5e-4)
+    assert float(line.group(2)) == pytest.approx(fit["k_phi_kN_m_n2"], rel=5e-4)
+    assert (int(line.group(3)), int(line.group(4))) == (fit["drops"], fit["samples"])
+    soil = yaml.safe_load((tmp_path / "soil.yaml").read_text())
+    assert soil["bekker"]["n"] == pytest.approx(fit["n"], rel=1e-9)
+
+
 def test_calibrate_refuses_bad_arguments(tmp_path):
     with pytest.raises(ValueError, match="touchdown.calibrate: law: must be rft or bekker, got 'rtf'"):
         touchdown.calibrate(MEASURED, tmp_path / "m.yaml", law="rtf")
