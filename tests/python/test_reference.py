@@ -289,6 +289,8 @@ def test_sweep_and_stability_outputs_match_their_tables(tmp_path):
     plan = tmp_path / "study.yaml"
     plan.write_text(STUDY_PLAN.format(scenario=data_file("scenarios", "lander_case_A.yaml")))
     run_touchdown("stability", plan, "--out", tmp_path / "s", "--threads", 2)
+    # A study stores summaries only: no ParaView series (docs/paraview.md).
+    assert not [p for p in (tmp_path / "s").rglob("*") if p.suffix in (".vtp", ".pvd")]
     with sqlite3.connect(tmp_path / "s" / "results.sqlite") as db:
         _check_columns("sweep.drops", [row[1] for row in db.execute("PRAGMA table_info(drops)")])
         _check_keys("sweep.meta", [row[0] for row in db.execute("SELECT key FROM meta")])
