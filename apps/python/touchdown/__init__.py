@@ -8,7 +8,9 @@ The functions mirror the command line and return what it prints, as Python objec
     touchdown.force(pad="flat", soil="fjs1_lp", depth=0.01)             # touchdown force ...
     touchdown.lander("data/scenarios/lander_case_A.yaml")                # touchdown lander ...
 
-and the readers give pandas DataFrames of a sweep's database, a dataset and a stability study
+the workflows run as their commands do (campaign, compare, calibrate, diagnose, trade, synth,
+export, sweep, stability: outputs into a new directory, the summary returned), and the readers
+give pandas DataFrames of a sweep's database, a dataset and a stability study
 (read_sweep, read_dataset, read_stability). Pads and soils are catalogue names ("flat",
 "fjs1_lp"), YAML files, or dicts with a YAML file's content. Bad input raises ValueError with
 the command line's one-line message, a path the system refuses OSError, a failed solver
