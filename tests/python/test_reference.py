@@ -207,6 +207,20 @@ def _pad_with(tmp, pad):
     return ["drop", "--pad", _write(tmp / "pad.yaml", _inject(pad, ["profile"])), "--soil", "fjs1_lp", "--speed", 1]
 
 
+def _model_with_effects(tmp, effects):
+    model = {"schema_version": 1, "type": "model", "name": "m", "effects": effects}
+    return ["drop", "--pad", "flat", "--soil", "fjs1_lp", "--speed", 1, "--model", _write(tmp / "model.yaml", model)]
+
+
+def test_effect_tables_list_the_effect_library(tmp_path):
+    ids = [k.rstrip(")") for k in _known_keys(_model_with_effects(tmp_path, {UNKNOWN: {}}), tmp_path)]
+    assert ids == TABLES["model.effects"]  # in the library's order
+    for effect in ids:
+        known = _known_keys(_model_with_effects(tmp_path, {effect: {UNKNOWN: 1}}), tmp_path)
+        documented = [p.split(".", 1)[1] for p in TABLES["model.effects.parameters"] if p.startswith(effect + ".")]
+        assert sorted(known) == sorted(["interval_95"] + documented), effect
+
+
 def test_sweep_parameter_table_lists_every_parameter(tmp_path):
     known = _known_keys(_sweep(tmp_path, ["fixed"]), tmp_path)
     assert known == TABLES["sweep_params"]  # in the code's order
