@@ -147,6 +147,12 @@ def _sweep(tmp, path, base=("sweeps", "pad_trade.yaml"), command=None):
 
 SOIL_FIELD = {"ground": {"soil": "fjs1_lp", "soil_field": {"soils": ["fjs1_lp", "fjs1_cp"], "probabilities": [0.5, 0.5],
                                                            "cell_size_m": 0.1, "half_extent_m": 1.0, "seed": 1}}}
+def _synth(tmp, path):
+    spec = _load("datasets", "air_vs_vacuum_synthetic.synth.yaml")
+    f = _write(tmp / "synth.yaml", _inject(spec, path))
+    return ["synth", f, "--out", tmp / "out"]
+
+
 CONE = {"cone_limit": {"half_angle_deg": 30, "stiffness_N_m_rad": 100}}
 STUDY = ("studies", "lunar_paper_lander.yaml")
 INPUTS = {
@@ -176,6 +182,9 @@ INPUTS = {
     "sweep.trade": lambda t: _sweep(t, ["trade"], command="trade"),  # only trade reads its limits
     "sweep.lander": lambda t: _sweep(t, ["lander"], base=STUDY),
     "study": lambda t: _sweep(t, ["study"], base=STUDY),
+    "synth": lambda t: _synth(t, []),
+    "synth.drops": lambda t: _synth(t, ["drops", 0]),
+    "synth.noise": lambda t: _synth(t, ["noise"]),
 }
 
 
@@ -318,3 +327,16 @@ def test_sweep_and_stability_outputs_match_their_tables(tmp_path):
         assert [row["metric"] for row in csv.DictReader(f)] == TABLES["stability.metrics"]
     _check_columns("stability.tip_over_map", _header(tmp_path / "s" / "tip_over_map.csv"),
                    {"<x>": "roll_deg", "<y>": "pitch_deg"})
+
+
+def test_trade_outputs_match_their_tables(tmp_path):
+    plan = tmp_path / "trade.yaml"
+    plan.write_text("schema_version: 1\ntype: sweep\nname: t\nfixed: {gravity_m_s2: 9.81}\n"
+                    "grid: {pad: [flat, c4], soil: [fjs1_lp], impact_speed_m_s: [1.0]}\n"
+                    "trade: {allowable_final_penetration_mm: 15}\n")
+    run_touchdown("trade", plan, "--out", tmp_path / "t", "--threads", 1)
+    _check_columns("trade.csv", _header(tmp_path / "t" / "trade.csv"))
+    with open(tmp_path / "t" / "summary.json", encoding="utf-8") as f:
+        summary = json.load(f)
+    _check_keys("trade.summary", summary)
+    assert [list(row) for row in summary["rows"]][0] == sorted(TABLES["trade.csv"])  # JSON: sorted keys
