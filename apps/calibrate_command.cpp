@@ -1,14 +1,11 @@
-#include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "apps/commands.h"
-#include "drop_tests/io/output_path.h"
-#include "drop_tests/dataset/calibrate.h"
-#include "drop_tests/dataset/calibrate_bekker.h"
-#include "drop_tests/io/catalog.h"
-#include "rft/input_error.h"
+#include "drop_tests/dataset/calibration_run.h"
 #include "rft/units.h"
 
 namespace touchdown::app {
@@ -21,42 +18,20 @@ struct CalibrateArgs {
   std::string law = "rft", soil, pad, shear_from;
 };
 
-// The first line of a soil file calibrate --law bekker writes: such a file may be replaced.
-constexpr const char* kBekkerFitMark = "# touchdown calibrate --law bekker";
-
-// calibrate --law bekker: n, k_c and k_phi fitted; c, phi and K from the soil (or --shear-from).
-void CalibrateBekkerSoil(const CalibrateArgs& args) {
-  const io::OutputTarget out(args.out, {args.measured});
-  io::CheckOutputFile(out, kBekkerFitMark);
-  const dataset::Dataset measured = dataset::ReadDataset(args.measured);
-  dataset::BekkerCalibrationOptions options;
-  if (args.atmosphere != "all") options.atmosphere = rft::ParseAtmosphere(args.atmosphere);
-  options.soil = args.soil;
-  options.pad = args.pad;
-  const dataset::BekkerFit fit = dataset::CalibrateBekker(measured, options);
-  rft::SoilParameters soil =
-      dataset::CalibratedBekkerSoil(fit, measured, std::filesystem::path(args.out).stem().string());
-  if (!args.shear_from.empty()) {
-    const rft::BekkerParameters shear = io::LoadSoil(args.shear_from).bekker;
-    soil.bekker.cohesion_Pa = shear.cohesion_Pa;
-    soil.bekker.friction_angle_rad = shear.friction_angle_rad;
-    soil.bekker.shear_modulus_K_m = shear.shear_modulus_K_m;
-  }
-  if (!(soil.bekker.shear_modulus_K_m > 0.0))
-    throw MakeInputError("command line", "--shear-from",
-                         "soil '" + fit.soils.front() + "' has no bekker block: name a Bekker soil for c, phi and K");
-  io::WriteOutputFile(out, [&](std::ostream& o) {
-    o << kBekkerFitMark << "\n# on " << args.measured << " (soils:";
-    for (const std::string& s : fit.soils) o << ' ' << s;
-    o << "; " << fit.drops << " drops, " << fit.samples << " samples, residual RMS " << fit.residual_rms_N << " N)\n# fit: "
-      << fit.method << "\n# c, phi and K: " << (args.shear_from.empty() ? "the soil's own" : "from " + args.shear_from)
-      << ", not fitted\n";
-    io::WriteSoil(soil, o);
-  }, kBekkerFitMark);
+void PrintBekkerFit(const dataset::BekkerFit& fit, const std::string& out) {
   std::cout << "bekker: n = " << std::setprecision(4) << fit.bekker.n << ", k_c = " << fit.bekker.k_c_N_m_n1 / 1e3
             << " kN/m^(n+1), k_phi = " << fit.bekker.k_phi_N_m_n2 / 1e3 << " kN/m^(n+2) from " << fit.drops << " drops, "
             << fit.samples << " samples, residual RMS " << std::setprecision(3) << fit.residual_rms_N << " N ("
-            << fit.pad_sizes << " pad size" << (fit.pad_sizes == 1 ? ": k_c = 0" : "s") << ")\nwrote " << args.out << "\n";
+            << fit.pad_sizes << " pad size" << (fit.pad_sizes == 1 ? ": k_c = 0" : "s") << ")\nwrote " << out << "\n";
+}
+
+void PrintZetaFits(const std::vector<dataset::ZetaFit>& fits, const std::string& out) {
+  for (const dataset::ZetaFit& f : fits)
+    std::cout << f.group << ": zeta = " << std::fixed << std::setprecision(4) << units::ZetaToN_cm3(f.zeta_N_m3) << " N/cm^3, "
+              << std::setprecision(0) << 100 * f.confidence << " % interval [" << std::setprecision(4)
+              << units::ZetaToN_cm3(f.low_N_m3) << ", " << units::ZetaToN_cm3(f.high_N_m3) << "] from " << f.drops << " drops, " << f.samples
+              << " samples, residual RMS " << std::setprecision(3) << f.residual_rms_N << " N\n";
+  std::cout << "wrote " << out << "\n";
 }
 }  // namespace
 
@@ -80,24 +55,17 @@ void AddCalibrateCommand(CLI::App& app) {
   cmd->add_option("--shear-from", args->shear_from,
                   "--law bekker: the Bekker soil whose cohesion, friction angle and K the fitted soil takes");
   cmd->callback([args] {
-    if (args->law == "bekker") return CalibrateBekkerSoil(*args);
-    const io::OutputTarget out(args->out, {args->measured});
-    io::CheckOutputFile(out, model::kModelFileMark);
-    const dataset::Dataset measured = dataset::ReadDataset(args->measured);
-    dataset::CalibrationOptions options;
-    options.per_soil = args->per == "soil";
-    if (args->atmosphere != "all") options.atmosphere = rft::ParseAtmosphere(args->atmosphere);
-    options.confidence = args->confidence;
-    const std::vector<dataset::ZetaFit> fits = dataset::CalibrateZeta(measured, options);
-    const model::ModelFile model =
-        dataset::CalibrationModel(fits, measured, std::filesystem::path(args->out).stem().string());
-    model::WriteModelFile(model, out);
-    for (const dataset::ZetaFit& f : fits)
-      std::cout << f.group << ": zeta = " << std::fixed << std::setprecision(4) << units::ZetaToN_cm3(f.zeta_N_m3) << " N/cm^3, "
-                << std::setprecision(0) << 100 * options.confidence << " % interval [" << std::setprecision(4)
-                << units::ZetaToN_cm3(f.low_N_m3) << ", " << units::ZetaToN_cm3(f.high_N_m3) << "] from " << f.drops << " drops, " << f.samples
-                << " samples, residual RMS " << std::setprecision(3) << f.residual_rms_N << " N\n";
-    std::cout << "wrote " << args->out << "\n";
+    dataset::CalibrationRequest r;
+    r.measured = args->measured, r.out = args->out;
+    r.law = args->law == "bekker" ? dataset::CalibrationLaw::kBekker : dataset::CalibrationLaw::kRft;
+    if (args->atmosphere != "all") r.atmosphere = rft::ParseAtmosphere(args->atmosphere);
+    r.per_soil = args->per == "soil", r.confidence = args->confidence;
+    r.soil = args->soil, r.pad = args->pad, r.shear_from = args->shear_from;
+    const dataset::CalibrationRun run = dataset::RunCalibration(r);
+    if (run.bekker)
+      PrintBekkerFit(*run.bekker, args->out);
+    else
+      PrintZetaFits(run.fits, args->out);
   });
 }
 

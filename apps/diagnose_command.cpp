@@ -33,17 +33,13 @@ void AddDiagnoseCommand(CLI::App& app) {
   cmd->add_flag("--law-candidate", args->law_candidate,
                 "also fit the Bekker law per soil on the training drops and score it (docs/bekker_soil.md)");
   cmd->callback([args] {
-    const io::OutputTarget out(args->out, {args->measured, args->model});
-    io::CheckOutputDirectory(out, io::OutputKind::kDiagnosis);
     gap::DiagnoseOptions o;
     o.threads = args->threads > 0 ? args->threads : std::max(1u, std::thread::hardware_concurrency());
     o.try_pairs = !args->no_pairs;
     o.progress.mode = io::ProgressMode::kAuto;
     o.law_candidate = args->law_candidate;
     if (!args->model.empty()) o.start_model = model::LoadModelFile(args->model);
-    const dataset::Dataset ds = dataset::ReadDataset(args->measured);
-    const gap::Diagnosis d = gap::RunDiagnosis(ds, o);
-    gap::WriteDiagnosis(d, ds, out);
+    const gap::Diagnosis d = gap::DiagnoseToDirectory(args->measured, o, {args->out, {args->measured, args->model}});
     const nlohmann::json j = gap::DiagnosisJson(d);
     std::cout << nlohmann::json{{"named_effect", j["named_effect"]},     {"decision", j["decision"]},
                                 {"gap_before", j["gap_before"]["force_nrmse"]}, {"gap_after", j["gap_after"]["force_nrmse"]},

@@ -11,6 +11,7 @@ namespace touchdown::app {
 namespace {
 struct LanderArgs {
   std::string scenario, out, model;
+  bool no_vtk = false;
 };
 }  // namespace
 
@@ -26,13 +27,14 @@ void AddLanderCommand(CLI::App& app) {
   cmd->add_option("--model", args->model,
                   "model file (MODEL.yaml): zeta per soil and the effect terms with a 3D form (inertial_drag, "
                   "rate_damping, gas_cushion on beds in air); others are refused");
+  cmd->add_flag("--no-vtk", args->no_vtk, "leave out vtk/ (the ParaView series: about 35 MB and 1 s a landing)");
   cmd->callback([args] {
     const io::OutputTarget out(args->out, {args->scenario, args->model});
     io::CheckOutputDirectory(out, io::OutputKind::kLander);
     scenario::LanderScenario scenario = scenario::LoadLanderScenario(args->scenario);
     if (!args->model.empty()) scenario.model = model::LoadModelFile(args->model);
     const scenario::LanderRun run = scenario::RunLanderScenario(scenario);
-    scenario::WriteLanderOutputs(run, out);
+    scenario::WriteLanderOutputs(run, out, {.vtk = !args->no_vtk});
     const nlohmann::json j = scenario::LanderSummaryJson(run);
     std::cout << j.dump(2) << std::endl;
   });

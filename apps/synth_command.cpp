@@ -21,12 +21,9 @@ void AddSynthCommand(CLI::App& app) {
   cmd->add_option("spec", args->spec, "synth spec YAML (see docs/model_gap.md)")->required();
   cmd->add_option("--out", args->out, "dataset directory: new, empty, or an earlier dataset touchdown wrote (replaced whole when complete)")->required();
   cmd->callback([args] {
-    const io::OutputTarget out(args->out, {args->spec});
-    io::CheckOutputDirectory(out, io::OutputKind::kDataset);
-    const dataset::SynthSpec spec = dataset::LoadSynthSpec(args->spec);
-    const dataset::Dataset ds = dataset::Synthesize(spec);
-    dataset::WriteSyntheticDataset(spec, ds, out);
-    std::cout << "wrote SYNTHETIC dataset " << args->out << " (" << ds.drops.size() << " drops"
+    const dataset::SynthRun run = dataset::SynthesizeToDirectory(args->spec, {args->out, {args->spec}});
+    const dataset::SynthSpec& spec = run.spec;
+    std::cout << "wrote SYNTHETIC dataset " << args->out << " (" << run.drops << " drops"
               << (spec.hidden_effect ? ", hidden effect " + spec.hidden_effect->id
                                      : spec.floor ? std::string(", hidden floor_stiffening") : std::string())
               << ")" << std::endl;

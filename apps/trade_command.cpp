@@ -3,9 +3,7 @@
 #include <memory>
 
 #include "apps/commands.h"
-#include "drop_tests/io/output_path.h"
-#include "drop_tests/sweep/sweep.h"
-#include "drop_tests/sweep/trade.h"
+#include "drop_tests/sweep/trade_run.h"
 
 namespace touchdown::app {
 
@@ -26,18 +24,13 @@ void AddTradeCommand(CLI::App& app) {
       ->check(CLI::Range(0, 4096));
   cmd->add_option("--model", args->model, "model file with per-soil zeta overrides");
   cmd->callback([args] {
-    const sweep::SweepPlan plan = sweep::LoadSweepPlan(args->sweep, args->model);
-    sweep::CheckTradePlan(plan);  // before anything runs or is written
-    const sweep::TradeLimits limits = sweep::LoadTradeLimits(args->sweep);
-    io::OpenOutputDirectory({args->out, {args->sweep, args->model}}, io::OutputKind::kSweep);
     sweep::SweepRunOptions options;
     options.threads = args->threads;
     options.progress = sweep::ProgressMode::kAuto;  // shown once the sweep has run a second
     options.progress_quiet_s = 1.0;
-    sweep::RunSweep(plan, args->out, options);
-    const sweep::ResultsDb db(sweep::ResultsDbPath(args->out));
-    const std::vector<sweep::TradeRow> rows = sweep::TradeTable(db.ReadAll(/*with_traces=*/false), limits);
-    sweep::WriteTradeOutputs(rows, args->out, limits);
+    const sweep::TradeRun run = sweep::RunTrade(args->sweep, args->model, args->out, options);
+    const std::vector<sweep::TradeRow>& rows = run.rows;
+    const sweep::TradeLimits& limits = run.limits;
     std::cout << std::left << std::setw(12) << "pad" << std::setw(12) << "soil" << std::right << std::setw(10) << "v [m/s]"
               << std::setw(12) << "depth [mm]" << std::setw(12) << "peak F [N]" << std::setw(12) << "dE/dt [W]"
               << "  margin  pareto best\n";

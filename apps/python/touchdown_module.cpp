@@ -6,6 +6,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <array>
 #include <filesystem>
 #include <iterator>
@@ -13,8 +14,12 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <thread>
 
+#include "drop_tests/dataset/calibration_run.h"
 #include "drop_tests/dataset/compare.h"
+#include "drop_tests/dataset/synth.h"
+#include "drop_tests/gap/diagnose.h"
 #include "drop_tests/scenario/campaign.h"
 #include "drop_tests/drop/drop_request.h"
 #include "drop_tests/drop/force_request.h"
@@ -25,6 +30,8 @@
 #include "drop_tests/stability/study.h"
 #include "drop_tests/stability/study_outputs.h"
 #include "drop_tests/sweep/sweep.h"
+#include "drop_tests/sweep/sweep_export.h"
+#include "drop_tests/sweep/trade_run.h"
 #include "lander/integ/cvode_integrator.h"
 #include "rft/input_error.h"
 
@@ -108,7 +115,8 @@ py::dict LanderTraceArrays(const std::vector<lander::LanderSample>& trace) {
 
 // touchdown lander: the summary JSON text and, when asked, the trace's columns (else None); the
 // outputs into `out` when given (a new directory).
-py::tuple Lander(const std::string& scenario_path, const std::string& model, const std::string& out, bool with_trace) {
+py::tuple Lander(const std::string& scenario_path, const std::string& model, const std::string& out, bool with_trace,
+                 bool vtk) {
   std::optional<scenario::LanderRun> run;
   {
     py::gil_scoped_release unlocked;
@@ -117,7 +125,7 @@ py::tuple Lander(const std::string& scenario_path, const std::string& model, con
     scenario::LanderScenario scenario = scenario::LoadLanderScenario(scenario_path);
     if (!model.empty()) scenario.model = model::LoadModelFile(model);
     run = scenario::RunLanderScenario(scenario);
-    if (!out.empty()) scenario::WriteLanderOutputs(*run, target);
+    if (!out.empty()) scenario::WriteLanderOutputs(*run, target, {.vtk = vtk});
   }
   const std::string summary = scenario::LanderSummaryJson(*run).dump(2);
   return py::make_tuple(summary, with_trace ? py::object(LanderTraceArrays(run->result.trace)) : py::object(py::none()));
@@ -181,6 +189,87 @@ py::dict Stability(const std::string& study_path, const std::string& out, const 
   return RunCounts(s);
 }
 
+// touchdown calibrate: the fit (dataset::CalibrationJson) and the model or soil file `out`.
+std::string Calibrate(const std::string& measured, const std::string& out, const std::string& law,
+                      const std::string& per, const std::string& atmosphere, double confidence, const std::string& soil,
+                      const std::string& pad, const std::string& shear_from) {
+  const auto fail = [](const std::string& field, const std::string& allowed, const std::string& value) {
+    throw MakeInputError("touchdown.calibrate", field, "must be " + allowed + ", got '" + value + "'");
+  };
+  dataset::CalibrationRequest r;
+  r.measured = measured, r.out = out, r.confidence = confidence;
+  if (law != "rft" && law != "bekker") fail("law", "rft or bekker", law);
+  r.law = law == "bekker" ? dataset::CalibrationLaw::kBekker : dataset::CalibrationLaw::kRft;
+  if (per != "soil" && per != "all") fail("per", "soil or all", per);
+  r.per_soil = per == "soil";
+  if (atmosphere != "all") {
+    r.atmosphere = rft::ParseAtmosphere(atmosphere);
+    if (!r.atmosphere) fail("atmosphere", "vacuum, air or all", atmosphere);
+  }
+  if (!(confidence >= 0.5 && confidence <= 0.9999))
+    throw MakeInputError("touchdown.calibrate", "confidence", "must be between 0.5 and 0.9999, got " + std::to_string(confidence));
+  r.soil = soil, r.pad = pad, r.shear_from = shear_from;
+  py::gil_scoped_release unlocked;
+  return dataset::CalibrationJson(dataset::RunCalibration(r)).dump(2);
+}
+
+// touchdown diagnose: diagnosis.json's content, the outputs in `out`.
+std::string Diagnose(const std::string& measured, const std::string& model, const std::string& out, int threads,
+                     bool pairs, bool law_candidate) {
+  py::gil_scoped_release unlocked;
+  gap::DiagnoseOptions o;
+  o.threads = threads > 0 ? threads : std::max(1u, std::thread::hardware_concurrency());
+  o.try_pairs = pairs;
+  o.law_candidate = law_candidate;
+  if (!model.empty()) o.start_model = model::LoadModelFile(model);
+  return gap::DiagnosisJson(gap::DiagnoseToDirectory(measured, o, {out, {measured, model}})).dump(2);
+}
+
+// touchdown trade: summary.json's content (sweep::TradeJson) and the sweep's run counts.
+py::tuple Trade(const std::string& plan_path, const std::string& out, const std::string& model, int threads) {
+  std::optional<sweep::TradeRun> run;
+  {
+    py::gil_scoped_release unlocked;
+    sweep::SweepRunOptions options;
+    options.threads = threads;
+    options.progress = sweep::ProgressMode::kNone;
+    run = sweep::RunTrade(plan_path, model, out, options);
+  }
+  return py::make_tuple(sweep::TradeJson(run->rows, run->limits).dump(2), RunCounts(run->sweep));
+}
+
+// touchdown synth: the dataset into `out`; what the command reports (drops, the hidden effect).
+py::dict Synth(const std::string& spec_path, const std::string& out) {
+  std::optional<dataset::SynthRun> run;
+  {
+    py::gil_scoped_release unlocked;
+    run = dataset::SynthesizeToDirectory(spec_path, {out, {spec_path}});
+  }
+  py::dict d;
+  d["drops"] = run->drops;
+  d["hidden_effect"] = run->spec.hidden_effect ? py::object(py::str(run->spec.hidden_effect->id))
+                       : run->spec.floor      ? py::object(py::str("floor_stiffening"))
+                                              : py::object(py::none());
+  return d;
+}
+
+// touchdown export: the sweep `dir` as the dataset `to`; the counts the command reports.
+py::dict Export(const std::string& dir, const std::string& to, bool full_traces, int threads) {
+  sweep::ExportSummary s;
+  {
+    py::gil_scoped_release unlocked;
+    const io::OutputTarget out(to, {dir});
+    io::CheckOutputDirectory(out, io::OutputKind::kDataset);
+    sweep::ExportOptions options;
+    options.full_traces = full_traces;
+    options.threads = threads;
+    s = sweep::ExportSweep(dir, out, options);
+  }
+  py::dict d;
+  d["exported"] = s.exported, d["failed"] = s.failed, d["resimulated"] = s.resimulated, d["lander"] = s.lander;
+  return d;
+}
+
 // The command line's exit statuses as Python exceptions, with the same one-line messages:
 // bad input (2) ValueError, a path the OS refused (2) OSError, a failed solver (3) RuntimeError.
 void TranslateErrors(std::exception_ptr error) {
@@ -232,7 +321,15 @@ PYBIND11_MODULE(_touchdown, m) {
       },
       py::arg("pad"), py::arg("soil"), py::arg("depth"), py::arg("tilt_deg"), py::arg("tilt_axis"),
       py::arg("velocity"), py::arg("omega"), py::arg("law"), py::arg("zeta"), py::arg("gravity"));
-  m.def("lander", &python::Lander, py::arg("scenario"), py::arg("model"), py::arg("out"), py::arg("trace"));
+  m.def("lander", &python::Lander, py::arg("scenario"), py::arg("model"), py::arg("out"), py::arg("trace"),
+        py::arg("vtk"));
+  m.def("calibrate", &python::Calibrate, py::arg("measured"), py::arg("out"), py::arg("law"), py::arg("per"),
+        py::arg("atmosphere"), py::arg("confidence"), py::arg("soil"), py::arg("pad"), py::arg("shear_from"));
+  m.def("diagnose", &python::Diagnose, py::arg("measured"), py::arg("model"), py::arg("out"), py::arg("threads"),
+        py::arg("pairs"), py::arg("law_candidate"));
+  m.def("trade", &python::Trade, py::arg("plan"), py::arg("out"), py::arg("model"), py::arg("threads"));
+  m.def("synth", &python::Synth, py::arg("spec"), py::arg("out"));
+  m.def("export", &python::Export, py::arg("sweep"), py::arg("to"), py::arg("full_traces"), py::arg("threads"));
   m.def("campaign", &python::Campaign, py::arg("scenario"), py::arg("out"));
   m.def("compare", &python::Compare, py::arg("measured"), py::arg("simulated"), py::arg("model"), py::arg("out"));
   m.def("sweep", &python::Sweep, py::arg("plan"), py::arg("out"), py::arg("model"), py::arg("threads"));

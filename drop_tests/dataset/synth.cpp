@@ -289,4 +289,13 @@ void WriteSyntheticDataset(const SynthSpec& spec, const Dataset& dataset, const 
   });
 }
 
+SynthRun SynthesizeToDirectory(const std::string& spec_path, const io::OutputTarget& out) {
+  io::CheckOutputDirectory(out, io::OutputKind::kDataset);
+  SynthRun run{LoadSynthSpec(spec_path), 0};
+  const Dataset dataset = Synthesize(run.spec);
+  WriteSyntheticDataset(run.spec, dataset, out);
+  run.drops = dataset.drops.size();
+  return run;
+}
+
 }  // namespace touchdown::dataset

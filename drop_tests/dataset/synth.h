@@ -91,5 +91,12 @@ Dataset Synthesize(const SynthSpec& spec);
 // Writes the dataset (issue-5 format) plus README.md, synthetic.yaml and synthetic_truth.yaml,
 // all through a staged directory.
 void WriteSyntheticDataset(const SynthSpec& spec, const Dataset& dataset, const io::OutputTarget& out);
+// `touchdown synth SPEC --out DIR` as one call (the command and touchdown.synth): checks DIR, loads
+// the spec, synthesises and writes the dataset; the spec and the number of drops written.
+struct SynthRun {
+  SynthSpec spec;
+  size_t drops = 0;
+};
+SynthRun SynthesizeToDirectory(const std::string& spec_path, const io::OutputTarget& out);
 
 }  // namespace touchdown::dataset

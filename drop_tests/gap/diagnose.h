@@ -114,5 +114,9 @@ nlohmann::json DiagnosisJson(const Diagnosis& d);
 // DIR (replaced when complete): model.yaml, diagnosis.json, report.md, per_drop.csv, data/,
 // plots/ (PNG via gnuplot when installed, with the script).
 void WriteDiagnosis(const Diagnosis& d, const dataset::Dataset& measured, const io::OutputTarget& out);
+// `touchdown diagnose MEASURED --out DIR` as one call (the command and touchdown.diagnose): checks
+// DIR before anything runs, reads the dataset, diagnoses and writes DIR.
+Diagnosis DiagnoseToDirectory(const std::string& measured_dir, const DiagnoseOptions& options,
+                              const io::OutputTarget& out);
 
 }  // namespace touchdown::gap

@@ -459,4 +459,13 @@ void WriteDiagnosis(const Diagnosis& d, const dataset::Dataset& ds, const io::Ou
   });
 }
 
+Diagnosis DiagnoseToDirectory(const std::string& measured_dir, const DiagnoseOptions& options,
+                              const io::OutputTarget& out) {
+  io::CheckOutputDirectory(out, io::OutputKind::kDiagnosis);
+  const dataset::Dataset measured = dataset::ReadDataset(measured_dir);
+  Diagnosis d = RunDiagnosis(measured, options);
+  WriteDiagnosis(d, measured, out);
+  return d;
+}
+
 }  // namespace touchdown::gap

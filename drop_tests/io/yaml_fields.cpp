@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 
+#include "drop_tests/io/nearest_name.h"
 #include "rft/input_error.h"
 #include "rft/input_file.h"
 
@@ -164,8 +165,14 @@ std::vector<double> YamlFields::NumberList(const std::string& key, bool allow_ze
 void YamlFields::RequireOnly(const std::vector<std::string>& known) const {
   for (const auto& item : node_) {
     const std::string key = item.first.Scalar();
-    if (std::find(known.begin(), known.end(), key) == known.end())
-      Fail(key, "unknown field (a typo?)");
+    if (std::find(known.begin(), known.end(), key) == known.end()) {
+      // The fields this block takes, as the loader lists them (docs/reference.md documents each;
+      // tests/python/test_reference.py reads this list to keep that reference true).
+      std::string listed;
+      for (const std::string& k : known) listed += (listed.empty() ? "" : ", ") + k;
+      const std::string hint = DidYouMean(key, known);
+      Fail(key, "unknown field" + (hint.empty() ? std::string(" (a typo?)") : hint) + "; known: " + listed);
+    }
   }
 }
 

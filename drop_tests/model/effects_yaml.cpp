@@ -1,6 +1,7 @@
 #include "drop_tests/model/effects_yaml.h"
 
 #include <cmath>
+#include <string>
 
 #include "rft/input_error.h"
 
@@ -38,8 +39,9 @@ std::vector<Effect> ParseEffects(const io::YamlFields& f, EffectIntervals* inter
     try {
       FindEffect(id);
     } catch (const InputError&) {
-      f.Fail(id, "unknown effect (known: inertial_drag, rate_damping, added_mass, compaction_peak, "
-                 "depth_exponent, gas_cushion, sensor_offset)");
+      std::string known;  // the library's ids, in its order (docs/reference.md lists them)
+      for (const EffectInfo& e : EffectLibrary()) known += (known.empty() ? "" : ", ") + e.id;
+      f.Fail(id, "unknown effect (known: " + known + ")");
     }
     const EffectInfo& info = FindEffect(id);
     const io::YamlFields e = f.Child(id);

@@ -826,7 +826,7 @@ void WriteResolvedLanderScenario(const LanderScenario& s, const std::string& pat
   io::WriteFileAtomically(path, [&](std::ostream& out) { out << y.c_str() << '\n'; });
 }
 
-void WriteLanderOutputs(const LanderRun& run, const io::OutputTarget& out) {
+void WriteLanderOutputs(const LanderRun& run, const io::OutputTarget& out, const LanderOutputOptions& options) {
   io::WriteOutputDirectory(out, io::OutputKind::kLander, [&](const std::string& staging_dir) {
     const fs::path staging = staging_dir;
     WriteLanderTraceCsv(run, (staging / "trace.csv").string());
@@ -839,7 +839,7 @@ void WriteLanderOutputs(const LanderRun& run, const io::OutputTarget& out) {
                         [&](std::ostream& out) { out << LanderSummaryJson(run).dump(2) << '\n'; });
     WriteResolvedLanderScenario(run.scenario, (staging / "scenario_resolved.yaml").string(), out.path);
     WriteLanderPlots(run, staging.string());
-    WriteLanderVtk(run, (staging / "vtk").string());
+    if (options.vtk) WriteLanderVtk(run, (staging / "vtk").string());
   });
 }
 

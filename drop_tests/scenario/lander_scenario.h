@@ -129,8 +129,13 @@ void WriteLanderTraceCsv(const LanderRun& run, const std::string& path);
 // (drop_tests/io/paths_in_outputs.h: no absolute paths of this machine).
 void WriteResolvedLanderScenario(const LanderScenario& scenario, const std::string& path,
                                  const std::string& output_dir);
+// What WriteLanderOutputs writes beside the summary, traces and plots: the ParaView series vtk/
+// (about 35 MB and 1 s a landing) only when asked (`touchdown lander --no-vtk` leaves it out).
+struct LanderOutputOptions {
+  bool vtk = true;
+};
 // summary.json, trace.csv, events.csv, scenario_resolved.yaml, plots/ and vtk/ (lander_vtk.h) into a
 // staging directory renamed to out_dir when complete.
-void WriteLanderOutputs(const LanderRun& run, const io::OutputTarget& out);
+void WriteLanderOutputs(const LanderRun& run, const io::OutputTarget& out, const LanderOutputOptions& options = {});
 
 }  // namespace touchdown::scenario

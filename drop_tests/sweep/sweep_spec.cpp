@@ -485,6 +485,18 @@ void ReadRunOptions(const io::YamlFields& f, SweepPlan& plan) {
   }
 }
 
+// Every parameter's key, the lander sweeps' after theirs: "pad, soil, ...; lander sweeps: roll_deg, ..."
+// (docs/reference.md lists them; tests/python/test_reference.py reads this list).
+std::string KnownParams() {
+  std::string single, lander;
+  for (int i = 0; i < kSweepParamCount; ++i) {
+    const SweepParam p = static_cast<SweepParam>(i);
+    std::string& list = IsLanderParam(p) ? lander : single;
+    list += (list.empty() ? "" : ", ") + std::string(SweepParamKey(p));
+  }
+  return single + "; lander sweeps: " + lander;
+}
+
 // Which parameters the blocks set: each at most once, and only where the sweep's kind takes it.
 class ParamClaims {
  public:
@@ -492,10 +504,7 @@ class ParamClaims {
   bool Seen(SweepParam p) const { return seen_[static_cast<int>(p)]; }
   SweepParam Claim(const io::YamlFields& block, const std::string& key) {
     const std::optional<SweepParam> p = ParamFromKey(key);
-    if (!p) block.Fail(key, "unknown parameter (pad, soil, impact_speed_m_s, pad_mass_kg, gravity_m_s2, tilt_deg, "
-                            "horizontal_speed_m_s, zeta_N_cm3; lander sweeps: roll_deg, pitch_deg, pad_soils, "
-                            "slope_deg, downhill_azimuth_deg, yaw_relative_to_slope_deg, horizontal_azimuth_deg, "
-                            "angular_rate_x_deg_s, angular_rate_y_deg_s, angular_rate_z_deg_s)");
+    if (!p) block.Fail(key, "unknown parameter (" + KnownParams() + ")");
     if (Seen(*p)) block.Fail(key, "set in more than one of fixed, grid and random");
     if (lander_ && IsSinglePadOnly(*p) && *p != SweepParam::kPad)
       block.Fail(key, "a single-pad parameter; a lander sweep varies impact_speed_m_s, horizontal_speed_m_s, "

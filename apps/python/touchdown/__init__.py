@@ -8,7 +8,9 @@ The functions mirror the command line and return what it prints, as Python objec
     touchdown.force(pad="flat", soil="fjs1_lp", depth=0.01)             # touchdown force ...
     touchdown.lander("data/scenarios/lander_case_A.yaml")                # touchdown lander ...
 
-and the readers give pandas DataFrames of a sweep's database, a dataset and a stability study
+the workflows run as their commands do (campaign, compare, calibrate, diagnose, trade, synth,
+export, sweep, stability: outputs into a new directory, the summary returned), and the readers
+give pandas DataFrames of a sweep's database, a dataset and a stability study
 (read_sweep, read_dataset, read_stability). Pads and soils are catalogue names ("flat",
 "fjs1_lp"), YAML files, or dicts with a YAML file's content. Bad input raises ValueError with
 the command line's one-line message, a path the system refuses OSError, a failed solver
@@ -36,7 +38,8 @@ _installed_data_dir()
 from . import _touchdown  # noqa: E402
 from .readers import StabilityStudy, read_dataset, read_stability, read_sweep
 
-__all__ = ["drop", "force", "lander", "sweep", "stability", "data_dir", "read_sweep", "read_dataset", "read_stability", "StabilityStudy"]
+__all__ = ["drop", "force", "lander", "sweep", "stability", "campaign", "compare", "calibrate", "diagnose", "trade",
+           "synth", "export", "data_dir", "read_sweep", "read_dataset", "read_stability", "StabilityStudy"]
 
 
 def data_dir():
@@ -71,12 +74,13 @@ def force(pad, soil, depth, *, tilt_deg=0.0, tilt_axis="x", velocity=(0.0, 0.0, 
     return json.loads(text)
 
 
-def lander(scenario, *, model=None, out=None, trace=False):
+def lander(scenario, *, model=None, out=None, trace=False, vtk=True):
     """A lander scenario file run as `touchdown lander`: its summary dict. With out=DIR, also its
-    outputs (summary.json, trace.csv, events.csv, plots/, vtk/) into the new directory DIR. With
-    trace=True: (summary, {column: float64 array}), the columns of trace.csv under its names."""
+    outputs (summary.json, trace.csv, events.csv, plots/, vtk/; vtk=False leaves vtk/ out, as
+    --no-vtk) into the new directory DIR. With trace=True: (summary, {column: float64 array}), the
+    columns of trace.csv under its names."""
     summary, arrays = _touchdown.lander(scenario=_path_text(scenario), model=_path_text(model),
-                                        out=_path_text(out), trace=trace)
+                                        out=_path_text(out), trace=trace, vtk=vtk)
     return (json.loads(summary), arrays) if trace else json.loads(summary)
 
 
@@ -94,6 +98,55 @@ def compare(measured, out, *, simulated=None, model=None):
         raise ValueError("compare: give simulated or model, not both")
     return json.loads(_touchdown.compare(measured=_path_text(measured), simulated=_path_text(simulated),
                                          model=_path_text(model), out=_path_text(out)))
+
+
+def calibrate(measured, out, *, law="rft", per="soil", atmosphere="all", confidence=0.95, soil=None, pad=None,
+              shear_from=None):
+    """`touchdown calibrate MEASURED --out OUT` (`--law --per --atmosphere --confidence --soil --pad
+    --shear-from`): fits the measured dataset's drops and writes OUT, a model file (law "rft": zeta
+    per soil, or one for all with per="all") or a Bekker soil file (law "bekker"). Returns the fit:
+    {"law": "rft", "fits": [{group, soils, zeta_N_cm3, low_N_cm3, high_N_cm3, ...}]} or {"law":
+    "bekker", soils, n, k_c_kN_m_n1, k_phi_kN_m_n2, drops, samples, residual_rms_N, ...}."""
+    return json.loads(_touchdown.calibrate(
+        measured=_path_text(measured), out=_path_text(out), law=law, per=per, atmosphere=atmosphere,
+        confidence=confidence, soil=_path_text(soil), pad=_path_text(pad), shear_from=_path_text(shear_from)))
+
+
+def diagnose(measured, out, *, model=None, threads=0, pairs=True, law_candidate=False):
+    """`touchdown diagnose MEASURED --out OUT [--model M] [--threads N] [--no-pairs] [--law-candidate]`:
+    the model-gap workflow into the new directory OUT (docs/model_gap.md); returns diagnosis.json
+    as a dict (the command prints a part of it)."""
+    return json.loads(_touchdown.diagnose(measured=_path_text(measured), model=_path_text(model), out=_path_text(out),
+                                          threads=threads, pairs=pairs, law_candidate=law_candidate))
+
+
+def trade(plan, out, *, model=None, threads=0):
+    """`touchdown trade PLAN --out OUT [--model M] [--threads N]` (no progress output): runs, or
+    resumes, the sweep into OUT, then writes trade.csv, summary.json and plots/; returns
+    summary.json as a dict, with this run's counts under "run" (total, already_done, computed,
+    failed, threads, seconds; not in the file)."""
+    summary, run = _touchdown.trade(plan=_path_text(plan), out=_path_text(out), model=_path_text(model),
+                                    threads=threads)
+    result = json.loads(summary)
+    result["run"] = run
+    return result
+
+
+def synth(spec, out):
+    """`touchdown synth SPEC --out OUT`: a SYNTHETIC measured-like dataset into the new directory
+    OUT; returns read_dataset(out), with df.attrs["synth"] = {"drops": n, "hidden_effect": id or
+    None}."""
+    made = _touchdown.synth(spec=_path_text(spec), out=_path_text(out))
+    drops = read_dataset(out)
+    drops.attrs["synth"] = made
+    return drops
+
+
+def export(sweep, to, *, full_traces=False, threads=0):
+    """`touchdown export SWEEP_DIR --to DATASET_DIR [--full-traces] [--threads N]`: a sweep's
+    results as a dataset (drops.csv and traces/, or lander_drops.csv for a lander sweep) in the new
+    directory `to`. Returns the counts the command prints: exported, failed, resimulated, lander."""
+    return _touchdown.export(sweep=_path_text(sweep), to=_path_text(to), full_traces=full_traces, threads=threads)
 
 
 def sweep(plan, out, *, model=None, threads=0):

@@ -99,5 +99,15 @@ TEST_F(LanderVtkTest, OutputHoldsTheLandingForParaViewAndThePosesInTheTrace) {
   }
 }
 
+TEST_F(LanderVtkTest, NoVtkLeavesOutOnlyTheSeries) {
+  // `touchdown lander --no-vtk`: every other output as before, no vtk/.
+  const LanderRun run = RunLanderScenario(test::CoarseScenario("lander_case_A"));
+  const std::string out = Path("no_vtk");
+  WriteLanderOutputs(run, out, {.vtk = false});
+  EXPECT_FALSE(std::filesystem::exists(out + "/vtk"));
+  for (const char* file : {"summary.json", "trace.csv", "events.csv", "scenario_resolved.yaml", "plots"})
+    EXPECT_TRUE(std::filesystem::exists(out + "/" + file)) << file;
+}
+
 }  // namespace
 }  // namespace touchdown::scenario

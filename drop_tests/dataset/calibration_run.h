@@ -1,0 +1,51 @@
+#pragma once
+// `touchdown calibrate MEASURED --out FILE` as one call, for the command and the Python module
+// (touchdown.calibrate): reads the dataset, fits, and writes the model file (law rft: zeta per
+// soil, calibrate.h) or the Bekker soil file (law bekker: n, k_c, k_phi, calibrate_bekker.h) to
+// `out` (a new file, or one an earlier calibrate wrote).
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "drop_tests/dataset/calibrate.h"
+#include "drop_tests/dataset/calibrate_bekker.h"
+
+namespace touchdown::dataset {
+
+enum class CalibrationLaw { kRft, kBekker };
+
+struct CalibrationRequest {
+  std::string measured;  // dataset directory
+  std::string out;       // MODEL.yaml (rft) or SOIL.yaml (bekker)
+  CalibrationLaw law = CalibrationLaw::kRft;
+  std::optional<rft::Atmosphere> atmosphere;  // only the drops in it; none: all
+  // law rft
+  bool per_soil = true;
+  double confidence = 0.95;
+  // law bekker: only the drops of this soil and pad ("" all); the soil whose c, phi and K the
+  // fitted soil takes ("" the fitted soil's own)
+  std::string soil, pad, shear_from;
+};
+
+struct CalibrationRun {
+  CalibrationLaw law = CalibrationLaw::kRft;
+  std::vector<ZetaFit> fits;        // law rft: one per group
+  std::optional<BekkerFit> bekker;  // law bekker
+};
+
+// The first line of a soil file calibrate --law bekker writes: such a file may be replaced.
+inline constexpr const char* kBekkerFitMark = "# touchdown calibrate --law bekker";
+
+// Checks `out` first (InputError: a user's file), then fits and writes it.
+CalibrationRun RunCalibration(const CalibrationRequest& request);
+
+// The fit as JSON (what touchdown.calibrate returns): law rft {"law", "fits": [{group, soils,
+// zeta_N_cm3, low_N_cm3, high_N_cm3, standard_error_N_cm3, confidence, degrees_of_freedom, drops,
+// samples, residual_rms_N, method}]}; law bekker {"law", soils, n, k_c_kN_m_n1, k_phi_kN_m_n2,
+// drops, samples, pad_sizes, residual_rms_N, method}. Numbers are the fit's doubles (the command
+// prints them rounded).
+nlohmann::json CalibrationJson(const CalibrationRun& run);
+
+}  // namespace touchdown::dataset
