@@ -199,7 +199,7 @@ struct ClassStress {
 // the stresses as they were (the caller skips them).
 template <bool kPadTerms>
 [[gnu::always_inline]] inline void StressOfNormal(const StressLaw3D& law, const PadLevelTerms& pad_terms,
-                                                  bool compaction, const Eigen::Vector3d& n_W,
+                                                  bool compaction, double unmobilised, const Eigen::Vector3d& n_W,
                                                   const Eigen::Vector3d& v_W, ClassStress& s) {
   s.nz = n_W.z();
   const double speed2 = v_W.squaredNorm();
@@ -208,6 +208,10 @@ template <bool kPadTerms>
   if (!s.leads) return;
   s.sigma = weight * law.StressPerDepth(n_W, v_W);
   s.sigma_dyn = weight * law.DynamicStress(n_W, v_W);
+  if (unmobilised != 0.0) {  // Janosi's shear, not yet fully mobilised (PadKinematics::shear_mobilisation)
+    s.sigma -= (weight * unmobilised) * law.MobilisedShearPerDepth(n_W, v_W);
+    s.sigma_dyn -= (weight * unmobilised) * law.MobilisedShearStress(n_W, v_W);
+  }
   s.dynamic = !IsZero(s.sigma_dyn);
   if (kPadTerms && compaction) {
     s.sigma_comp = weight * pad_terms.CompactionStress(n_W, v_W);
@@ -275,7 +279,8 @@ class WrenchSum {
         cull_(elements.HasBounds() && plane_ != nullptr),
         classes_(elements.HasBounds() && !spinning_ && elements.class_normal_B.cols() > 0),
         dynamic_terms_(law.has_dynamic_stress()),
-        area_terms_(dynamic_terms_ || (kPadTerms && compaction)) {
+        area_terms_(dynamic_terms_ || (kPadTerms && compaction)),
+        unmobilised_(law.has_mobilised_shear() ? 1.0 - kinematics.shear_mobilisation : 0.0) {
     if (plane_ != nullptr) depth_ = PlaneDepthInB::Of(*plane_, kinematics);
     const Eigen::Matrix3d& R = kinematics.R_WB;
     const Eigen::Vector3d u0_B = R.transpose() * kinematics.v_WB_W, w0_B = R.transpose() * kinematics.w_WB_W;
@@ -391,7 +396,7 @@ class WrenchSum {
       return;
     }
     const Eigen::Vector3d n_W = cls >= 0 ? rotate_(Load(elements_.class_normal_B.data() + 3 * cls)) : rotate_(n_B);
-    StressOfNormal<kPadTerms>(law_, pad_terms_, compaction_, n_W, kinematics_.v_WB_W, run_);
+    StressOfNormal<kPadTerms>(law_, pad_terms_, compaction_, unmobilised_, n_W, kinematics_.v_WB_W, run_);
     if (cls >= 0) {
       class_done_[cls] = true;
       class_stress_[cls] = run_;
@@ -467,7 +472,12 @@ class WrenchSum {
     law_.StressPerDepthBatch(batch_);
     for (int i = 0; i < batch_.count; ++i) {
       const RotatingElement& r = rotating_[i];
-      const Eigen::Vector3d sigma = r.weight * Eigen::Vector3d(batch_.sx[i], batch_.sy[i], batch_.sz[i]);
+      Eigen::Vector3d sigma = r.weight * Eigen::Vector3d(batch_.sx[i], batch_.sy[i], batch_.sz[i]);
+      if (unmobilised_ != 0.0) {  // Janosi's shear, not yet fully mobilised
+        const Eigen::Vector3d n_W(batch_.nx[i], batch_.ny[i], batch_.nz[i]),
+            v_W(batch_.vx[i], batch_.vy[i], batch_.vz[i]);
+        sigma -= (r.weight * unmobilised_) * law_.MobilisedShearPerDepth(n_W, v_W);
+      }
       force_ += r.depth_integral * sigma;
       depth_moment_stress_ +=
           Eigen::Vector3d(r.depth_moment.x, r.depth_moment.y, r.depth_moment.z) * sigma.transpose();
@@ -475,7 +485,8 @@ class WrenchSum {
       const Eigen::Vector3d n_W(batch_.nx[i], batch_.ny[i], batch_.nz[i]), v_W(batch_.vx[i], batch_.vy[i], batch_.vz[i]);
       const Eigen::Vector3d r_W = rotate_(r.area_moment);
       if (dynamic_terms_) {
-        const Eigen::Vector3d sigma_dyn = r.weight * law_.DynamicStress(n_W, v_W);
+        Eigen::Vector3d sigma_dyn = r.weight * law_.DynamicStress(n_W, v_W);
+        if (unmobilised_ != 0.0) sigma_dyn -= (r.weight * unmobilised_) * law_.MobilisedShearStress(n_W, v_W);
         force_ += r.area * sigma_dyn;
         moment_ += r_W.cross(sigma_dyn);
       }
@@ -504,6 +515,9 @@ class WrenchSum {
   // up an angular velocity of order 1e-16 rad/s from rounding in its moment, and the stress,
   // Lipschitz in the velocity with constant ~ 1 / kTrailingBand, then moves by < 1e-10.
   const bool spinning_, cull_, classes_, dynamic_terms_, area_terms_;
+  // 1 - m for a law with Janosi's shear at mobilisation m (PadKinematics::shear_mobilisation): the
+  // part of its shear to take off again; exactly 0 for every other law (nothing changes for them).
+  const double unmobilised_;
   PlaneDepthInB depth_;
   Vec u0b_, w0b_;  // v and w in B (the leading boundary)
   Eigen::Vector3d g_W_;
@@ -561,7 +575,8 @@ ContactWrench ComputeContactWrench(const SurfaceElements& elements, const PadKin
   const bool footprint = pad_terms.has_added_mass();
   const bool power = pad_terms.has_power_depth();
   if (!compaction && !footprint && !power && elements.size() > 0 && elements.HasBounds() &&
-      !law.has_dynamic_stress() && IsSpinning(elements, kinematics)) {
+      !law.has_dynamic_stress() && !(law.has_mobilised_shear() && kinematics.shear_mobilisation != 1.0) &&
+      IsSpinning(elements, kinematics)) {
     if (const auto* plane = dynamic_cast<const PlaneGround*>(&ground))
       return RotatingWrenchOverPlane(elements, kinematics, *plane, law);
   }

@@ -85,6 +85,10 @@ struct FreeDropResult {
   double touchdown_tilt_deg = 0.0;
   double final_tilt_deg = 0.0;
   double horizontal_travel_m = 0.0;    // centre of mass, in the horizontal plane, touchdown to rest
+  // Only on a terrain with Janosi's shear (FreePadDynamics::has_shear_state): j at rest [m] and the
+  // lift-offs that reset it.
+  double final_shear_displacement_m = 0.0;
+  int lift_offs = 0;
   double final_kinetic_energy_J = 0.0;  // at the rest event (below the threshold)
   std::vector<FreeDropSample> trace;
   integ::IntegratorSummary solver;
