@@ -134,6 +134,7 @@ FreeDropResult Stroke(integ::HybridRun& run, const FreePadDynamics& pad, const E
     pose.q_WB = state.segment<4>(kQ).normalized();
     pose.v_WB_W = s.v_WB;
     pose.w_W = s.w_W;
+    pose.shear_displacement_m = s.shear_displacement_m;
     result.peak_force_N = std::max(result.peak_force_N, f.z());
     if (moving) result.max_deceleration_m_s2 = std::max(result.max_deceleration_m_s2, f.z() / m - g);
   };
@@ -193,6 +194,7 @@ FreeDropResult RunFreeDrop(const geom::PadBody& body, const rft::Terrain& terrai
   Eigen::VectorXd y = ReleaseState(pad, in, clearance);
   if (clearance > 0.0) y = Approach(run, pad, y, clearance);
   y[kWork] = 0.0;
+  if (pad.has_shear_state()) y[kShearDisplacement] = 0.0;  // j since touchdown (the approach may graze)
   approaching = false;
   run.Start(0.0, y);
   return Stroke(run, pad, y, options);

@@ -72,6 +72,7 @@ struct FreeDropSample {
   Eigen::Vector4d q_WB{1.0, 0.0, 0.0, 0.0};
   Eigen::Vector3d v_WB_W = Eigen::Vector3d::Zero();
   Eigen::Vector3d w_W = Eigen::Vector3d::Zero();
+  double shear_displacement_m = 0.0;  // Janosi's j (FreePadDynamics::has_shear_state), else 0
 };
 
 struct FreeDropResult {
