@@ -14,7 +14,7 @@ namespace touchdown::app {
 
 namespace {
 struct DiagnoseArgs {
-  std::string measured, model, out;
+  std::string measured, model, out, base = "rft";
   int threads = 0;
   bool no_pairs = false, law_candidate = false;
 };
@@ -30,6 +30,10 @@ void AddDiagnoseCommand(CLI::App& app) {
   cmd->add_option("--threads", args->threads, "threads (default: all cores)")
       ->check(CLI::Range(0, 4096));
   cmd->add_flag("--no-pairs", args->no_pairs, "do not try pairs of effects");
+  cmd->add_option("--base", args->base,
+                  "the model the effects are fitted on: rft (zeta per soil, default) or bekker (n, k_c, k_phi per "
+                  "soil fitted as calibrate --law bekker; docs/bekker_soil.md)")
+      ->check(CLI::IsMember({"rft", "bekker"}));
   cmd->add_flag("--law-candidate", args->law_candidate,
                 "also fit the Bekker law per soil on the training drops and score it (docs/bekker_soil.md)");
   cmd->callback([args] {
@@ -38,6 +42,7 @@ void AddDiagnoseCommand(CLI::App& app) {
     o.try_pairs = !args->no_pairs;
     o.progress.mode = io::ProgressMode::kAuto;
     o.law_candidate = args->law_candidate;
+    o.base = args->base == "bekker" ? gap::DiagnoseBase::kBekker : gap::DiagnoseBase::kRft;
     if (!args->model.empty()) o.start_model = model::LoadModelFile(args->model);
     const gap::Diagnosis d = gap::DiagnoseToDirectory(args->measured, o, {args->out, {args->measured, args->model}});
     const nlohmann::json j = gap::DiagnosisJson(d);

@@ -59,6 +59,15 @@ Eigen::Vector3d BekkerLaw3D::StressPerDepth(const Eigen::Vector3d& n_W, const Ei
   return s;
 }
 
+Eigen::Vector3d BekkerLaw3D::MobilisedShearPerDepth(const Eigen::Vector3d& n_W, const Eigen::Vector3d& v_W) const {
+  if (!(tan_phi_ > 0.0)) return Eigen::Vector3d::Zero();
+  return (modulus_ * tan_phi_) * ShearDirection(n_W, v_W);
+}
+
+Eigen::Vector3d BekkerLaw3D::MobilisedShearStress(const Eigen::Vector3d& n_W, const Eigen::Vector3d& v_W) const {
+  return cohesion_ * ShearDirection(n_W, v_W);
+}
+
 Eigen::Vector3d BekkerLaw3D::DynamicStress(const Eigen::Vector3d& n_W, const Eigen::Vector3d& v_W) const {
   return cohesion_ * ShearDirection(n_W, v_W);
 }

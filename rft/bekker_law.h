@@ -46,9 +46,11 @@ inline constexpr double kBekkerShearRegularisationSpeed_m_s = 1e-3;
 // The 3D law of a Bekker soil for a pad of dimension b. On an element that leads (the contact
 // decides): the pressure (k_c / b + k_phi) against the outward normal, per unit depth^n (the
 // contact weights it by z^n through PadLevelTerms::depth = {n, 1 m}; MakeSoilContactModel sets it),
-// and, on the element's footprint (its downward-facing part, -n_z dA), the Janosi shear fully
-// mobilised (j >> K: docs/bekker_soil.md says why) against the horizontal slip: tan(phi) times the
-// pressure per unit depth^n here, the cohesion c as the depth-independent DynamicStress.
+// and, on the element's footprint (its downward-facing part, -n_z dA), the Janosi shear against the
+// horizontal slip: tan(phi) times the pressure per unit depth^n here, the cohesion c as the
+// depth-independent DynamicStress, both fully mobilised; the contact scales them by
+// 1 - exp(-j / K) for the pad's shear displacement j (a state of the free pad and of the lander's
+// pads, docs/bekker_soil.md), through MobilisedShearPerDepth / MobilisedShearStress.
 class BekkerLaw3D final : public StressLaw3D {
  public:
   BekkerLaw3D(const BekkerParameters& soil, double plate_b_m);
@@ -56,6 +58,11 @@ class BekkerLaw3D final : public StressLaw3D {
   Eigen::Vector3d StressPerDepth(const Eigen::Vector3d& n_W, const Eigen::Vector3d& v_W) const override;
   bool has_dynamic_stress() const override { return cohesion_ > 0.0; }
   Eigen::Vector3d DynamicStress(const Eigen::Vector3d& n_W, const Eigen::Vector3d& v_W) const override;
+  // The Janosi shear of the two stresses above (tan phi p and c on the footprint), which the
+  // contact scales by 1 - exp(-j / K) (PadKinematics::shear_mobilisation).
+  bool has_mobilised_shear() const override { return tan_phi_ > 0.0 || cohesion_ > 0.0; }
+  Eigen::Vector3d MobilisedShearPerDepth(const Eigen::Vector3d& n_W, const Eigen::Vector3d& v_W) const override;
+  Eigen::Vector3d MobilisedShearStress(const Eigen::Vector3d& n_W, const Eigen::Vector3d& v_W) const override;
   double modulus() const { return modulus_; }
   double plate_b_m() const { return b_; }
 

@@ -148,9 +148,19 @@ template <bool kAreaMoment>
 
 // The integrals of ClipAndIntegrate<true> over the part of a triangle where the depth d > 0 and an
 // affine function t >= 0 (vertex values d[k], t[k]): the triangle is clipped by both half-planes
-// (Sutherland-Hodgman, at most five corners) and fanned into triangles, each integrated exactly.
-// Used where a rotating element's leading boundary (t = 0) crosses it.
-inline Submerged ClipTwiceAndIntegrate(double area, const double d[3], const Vec p[3], const double t[3]) {
+// (Sutherland-Hodgman, at most five corners) and fanned into triangles, each integrated exactly by
+// `add(sub_area, d0, d1, d2, p0, p1, p2, s)` (AddTriangle<true> for the linear depth law; the z^p
+// depth law integrates its sub-triangles in closed form, contact_wrench.cpp). Used where a rotating
+// element's leading boundary (t = 0) crosses it.
+struct AddLinearSubTriangle {
+  [[gnu::always_inline]] inline void operator()(double sub, double d0, double d1, double d2, Vec p0, Vec p1, Vec p2,
+                                                Submerged& s) const {
+    AddTriangle<true>(sub, d0, d1, d2, p0, p1, p2, 1.0, s);
+  }
+};
+template <class AddSub = AddLinearSubTriangle>
+inline Submerged ClipTwiceAndIntegrate(double area, const double d[3], const Vec p[3], const double t[3],
+                                       const AddSub& add = {}) {
   struct Corner {
     Vec p;
     double d, t;
@@ -188,8 +198,7 @@ inline Submerged ClipTwiceAndIntegrate(double area, const double d[3], const Vec
   const double scale = area / whole;
   for (int k = 1; k + 1 < na; ++k) {
     const double sub = scale * twice_area(a[0].p, a[k].p, a[k + 1].p);
-    AddTriangle<true>(sub, std::max(a[0].d, 0.0), std::max(a[k].d, 0.0), std::max(a[k + 1].d, 0.0), a[0].p, a[k].p,
-                      a[k + 1].p, 1.0, s);
+    add(sub, std::max(a[0].d, 0.0), std::max(a[k].d, 0.0), std::max(a[k + 1].d, 0.0), a[0].p, a[k].p, a[k + 1].p, s);
   }
   return s;
 }
@@ -219,16 +228,17 @@ inline Submerged ClipTwiceAndIntegrate(double area, const double d[3], const Vec
 // (a rotating pad's leading boundary crosses it) and `clip_leading`, only the part with t >= 0
 // carries stress, taken exactly, with the law at that part's own centroid. The centroid rule alone
 // switched the whole element on or off as the boundary passed its centroid: a kink in the force
-// per element, and thousands of small steps while a tilted pad rights itself. (The z^p depth law
-// integrates without this clip: clip_leading = false.)
+// per element, and thousands of small steps while a tilted pad rights itself. `add` integrates the
+// clipped part's sub-triangles (ClipTwiceAndIntegrate): the z^p depth law clips too, with its own.
 struct LeadingPart {
   double weight = 0.0;  // LeadWeight at the part's centroid; 0: no stress
   bool straddles = false;
   Submerged part;       // the leading part's integrals when it straddles, else `s`
   Vec v{0.0, 0.0, 0.0};  // velocity at the part's depth-weighted centroid
 };
+template <class AddSub = AddLinearSubTriangle>
 inline LeadingPart LeadingPartOf(const Submerged& s, double area, const double d[3], const Vec p[3], const Vec& n,
-                                 const Vec& u, const Vec& w, bool clip_leading) {
+                                 const Vec& u, const Vec& w, bool clip_leading, const AddSub& add = {}) {
   LeadingPart out;
   out.part = s;
   out.v = CentroidVelocity(s.depth_integral, s.depth_moment, u, w);
@@ -240,7 +250,7 @@ inline LeadingPart LeadingPartOf(const Submerged& s, double area, const double d
     for (int k = 0; k < 3; ++k) t[k] = a + b.x * p[k].x + b.y * p[k].y + b.z * p[k].z;
     if (t[0] < 0.0 && t[1] < 0.0 && t[2] < 0.0) return out;  // trails beyond the band everywhere
     if (t[0] < 0.0 || t[1] < 0.0 || t[2] < 0.0) {
-      out.part = ClipTwiceAndIntegrate(area, d, p, t);
+      out.part = ClipTwiceAndIntegrate(area, d, p, t, add);
       if (!(out.part.depth_integral > 0.0)) return out;
       out.straddles = true;
       out.v = CentroidVelocity(out.part.depth_integral, out.part.depth_moment, u, w);

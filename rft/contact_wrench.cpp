@@ -44,10 +44,11 @@ inline void ClippedAreaGradient(double area, const double d[3], double grad[3]) 
 // J2 = D^-3 int_alpha^beta t^p (t - alpha)^2 dt, in closed form. The closed forms cancel when D is
 // small against alpha (relative error ~ eps (beta / D)^3); there, |D| <= kFanQuadrature min(alpha,
 // beta), the integrand is analytic on s in [0, 1] with its branch point t = 0 at least
-// 1 / kFanQuadrature fan lengths away, and 8-point Gauss-Legendre is exact to about 1e-19
-// (Bernstein ellipse rho ~ 18: error ~ rho^-16). The closed forms are used elsewhere, where their
+// 1 / kFanQuadrature fan lengths away, and its binomial series in x = D / alpha (|x| <= 1/4)
+// converges geometrically: summed to 1e-17 (Fan). The closed forms are used elsewhere, where their
 // cancellation costs at most a factor ~ 3 / 0.2^3 = 375 eps ~ 1e-13 relative.
 constexpr double kFanQuadrature = 0.25;
+constexpr int kFanSeriesTerms = 64;  // a bound; the series stops far earlier (see Fan)
 
 struct FanIntegrals {
   double j1 = 0.0, j2 = 0.0;
@@ -58,19 +59,24 @@ inline FanIntegrals Fan(double alpha, double beta, double p) {
   const double D = beta - alpha;
   if (std::abs(D) <= kFanQuadrature * std::min(alpha, beta)) {
     if (!(alpha > 0.0)) return out;  // alpha = beta = 0: no depth
-    // 8-point Gauss-Legendre on [0, 1].
-    static constexpr double kX[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267,
-                                     0.9602898564975363};
-    static constexpr double kW[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745,
-                                     0.1012285362903763};
-    for (int k = 0; k < 4; ++k) {
-      for (const double sign : {-1.0, 1.0}) {
-        const double s = 0.5 * (1.0 + sign * kX[k]), w = 0.5 * kW[k];
-        const double g = std::pow(alpha + s * D, p) * s * w;
-        out.j1 += g;
-        out.j2 += g * s;
-      }
+    // The binomial series of (alpha + s D)^p = alpha^p (1 + s x)^p, x = D / alpha, |x| <= 1/4:
+    //   J1 = alpha^p sum_k C(p, k) x^k / (k + 2),   J2 = alpha^p sum_k C(p, k) x^k / (k + 3).
+    // Its terms fall at least as |x|^k k^(-p-1) |C| (|C(p, k)| <= 10 for p <= 5), so it stops below
+    // 1e-17 of the sum within ~30 terms; one pow where the 8-point Gauss-Legendre rule used before
+    // took 8 (the pows were half the cost of a lander on a Bekker soil with n != 1).
+    const double x = D / alpha;
+    double c = 1.0, xk = 1.0, s1 = 0.5, s2 = 1.0 / 3.0;
+    for (int k = 0; k < kFanSeriesTerms; ++k) {
+      c *= (p - k) / (k + 1.0);
+      xk *= x;
+      const double term = c * xk;
+      s1 += term / (k + 3.0);
+      s2 += term / (k + 4.0);
+      if (std::abs(term) < 1e-17 * s1) break;
     }
+    const double ap = std::pow(alpha, p);
+    out.j1 = ap * s1;
+    out.j2 = ap * s2;
     return out;
   }
   const double p1 = p + 1.0, p2 = p + 2.0, p3 = p + 3.0;
@@ -167,6 +173,25 @@ template <bool kAreaMoment>
   return s;
 }
 
+// A sub-triangle of a rotating element's leading part (ClipTwiceAndIntegrate) under the z^p depth
+// law: its area terms as the linear law's, its depth integrals int d^p dA, int d^p r dA in closed
+// form (AddPowerTriangle; its vertex depths are >= 0), scaled by z_ref^(1 - p).
+struct AddPowerSubTriangle {
+  double exponent, scale;
+  [[gnu::always_inline]] inline void operator()(double sub, double d0, double d1, double d2, Vec p0, Vec p1, Vec p2,
+                                                Submerged& s) const {
+    Submerged linear;
+    AddTriangle<true>(sub, d0, d1, d2, p0, p1, p2, 1.0, linear);
+    s.area += linear.area;
+    s.area_moment = s.area_moment + linear.area_moment;
+    double integral = 0.0;
+    Vec moment{0.0, 0.0, 0.0};
+    AddPowerTriangle(sub, d0, d1, d2, p0, p1, p2, exponent, integral, moment);
+    s.depth_integral += scale * integral;
+    s.depth_moment = s.depth_moment + scale * moment;
+  }
+};
+
 template <bool kPower, bool kAreaMoment>
 [[gnu::always_inline]] inline Submerged Clip(double area, const double d[3], const Vec p[3], double exponent,
                                              double scale) {
@@ -199,7 +224,7 @@ struct ClassStress {
 // the stresses as they were (the caller skips them).
 template <bool kPadTerms>
 [[gnu::always_inline]] inline void StressOfNormal(const StressLaw3D& law, const PadLevelTerms& pad_terms,
-                                                  bool compaction, const Eigen::Vector3d& n_W,
+                                                  bool compaction, double unmobilised, const Eigen::Vector3d& n_W,
                                                   const Eigen::Vector3d& v_W, ClassStress& s) {
   s.nz = n_W.z();
   const double speed2 = v_W.squaredNorm();
@@ -208,6 +233,10 @@ template <bool kPadTerms>
   if (!s.leads) return;
   s.sigma = weight * law.StressPerDepth(n_W, v_W);
   s.sigma_dyn = weight * law.DynamicStress(n_W, v_W);
+  if (unmobilised != 0.0) {  // Janosi's shear, not yet fully mobilised (PadKinematics::shear_mobilisation)
+    s.sigma -= (weight * unmobilised) * law.MobilisedShearPerDepth(n_W, v_W);
+    s.sigma_dyn -= (weight * unmobilised) * law.MobilisedShearStress(n_W, v_W);
+  }
   s.dynamic = !IsZero(s.sigma_dyn);
   if (kPadTerms && compaction) {
     s.sigma_comp = weight * pad_terms.CompactionStress(n_W, v_W);
@@ -275,7 +304,8 @@ class WrenchSum {
         cull_(elements.HasBounds() && plane_ != nullptr),
         classes_(elements.HasBounds() && !spinning_ && elements.class_normal_B.cols() > 0),
         dynamic_terms_(law.has_dynamic_stress()),
-        area_terms_(dynamic_terms_ || (kPadTerms && compaction)) {
+        area_terms_(dynamic_terms_ || (kPadTerms && compaction)),
+        unmobilised_(law.has_mobilised_shear() ? 1.0 - kinematics.shear_mobilisation : 0.0) {
     if (plane_ != nullptr) depth_ = PlaneDepthInB::Of(*plane_, kinematics);
     const Eigen::Matrix3d& R = kinematics.R_WB;
     const Eigen::Vector3d u0_B = R.transpose() * kinematics.v_WB_W, w0_B = R.transpose() * kinematics.w_WB_W;
@@ -391,7 +421,7 @@ class WrenchSum {
       return;
     }
     const Eigen::Vector3d n_W = cls >= 0 ? rotate_(Load(elements_.class_normal_B.data() + 3 * cls)) : rotate_(n_B);
-    StressOfNormal<kPadTerms>(law_, pad_terms_, compaction_, n_W, kinematics_.v_WB_W, run_);
+    StressOfNormal<kPadTerms>(law_, pad_terms_, compaction_, unmobilised_, n_W, kinematics_.v_WB_W, run_);
     if (cls >= 0) {
       class_done_[cls] = true;
       class_stress_[cls] = run_;
@@ -422,7 +452,12 @@ class WrenchSum {
     submerged_area_ += s.area;
     if (kPadTerms && footprint_) AddRotatingFootprint(area, d, p, n_B, s);
     if (!(s.depth_integral > 0.0)) return;
-    const LeadingPart lead = LeadingPartOf(s, area, d, p, n_B, u0b_, w0b_, /*clip_leading=*/!kPower);
+    // The leading part, clipped at the leading boundary (exactly, under either depth law).
+    LeadingPart lead;
+    if constexpr (kPower)
+      lead = LeadingPartOf(s, area, d, p, n_B, u0b_, w0b_, true, AddPowerSubTriangle{exponent_, depth_scale_});
+    else
+      lead = LeadingPartOf(s, area, d, p, n_B, u0b_, w0b_, true);
     if (!(lead.weight > 0.0)) return;
     ++leading_;
     int& pending = batch_.count;
@@ -467,7 +502,12 @@ class WrenchSum {
     law_.StressPerDepthBatch(batch_);
     for (int i = 0; i < batch_.count; ++i) {
       const RotatingElement& r = rotating_[i];
-      const Eigen::Vector3d sigma = r.weight * Eigen::Vector3d(batch_.sx[i], batch_.sy[i], batch_.sz[i]);
+      Eigen::Vector3d sigma = r.weight * Eigen::Vector3d(batch_.sx[i], batch_.sy[i], batch_.sz[i]);
+      if (unmobilised_ != 0.0) {  // Janosi's shear, not yet fully mobilised
+        const Eigen::Vector3d n_W(batch_.nx[i], batch_.ny[i], batch_.nz[i]),
+            v_W(batch_.vx[i], batch_.vy[i], batch_.vz[i]);
+        sigma -= (r.weight * unmobilised_) * law_.MobilisedShearPerDepth(n_W, v_W);
+      }
       force_ += r.depth_integral * sigma;
       depth_moment_stress_ +=
           Eigen::Vector3d(r.depth_moment.x, r.depth_moment.y, r.depth_moment.z) * sigma.transpose();
@@ -475,7 +515,8 @@ class WrenchSum {
       const Eigen::Vector3d n_W(batch_.nx[i], batch_.ny[i], batch_.nz[i]), v_W(batch_.vx[i], batch_.vy[i], batch_.vz[i]);
       const Eigen::Vector3d r_W = rotate_(r.area_moment);
       if (dynamic_terms_) {
-        const Eigen::Vector3d sigma_dyn = r.weight * law_.DynamicStress(n_W, v_W);
+        Eigen::Vector3d sigma_dyn = r.weight * law_.DynamicStress(n_W, v_W);
+        if (unmobilised_ != 0.0) sigma_dyn -= (r.weight * unmobilised_) * law_.MobilisedShearStress(n_W, v_W);
         force_ += r.area * sigma_dyn;
         moment_ += r_W.cross(sigma_dyn);
       }
@@ -504,6 +545,9 @@ class WrenchSum {
   // up an angular velocity of order 1e-16 rad/s from rounding in its moment, and the stress,
   // Lipschitz in the velocity with constant ~ 1 / kTrailingBand, then moves by < 1e-10.
   const bool spinning_, cull_, classes_, dynamic_terms_, area_terms_;
+  // 1 - m for a law with Janosi's shear at mobilisation m (PadKinematics::shear_mobilisation): the
+  // part of its shear to take off again; exactly 0 for every other law (nothing changes for them).
+  const double unmobilised_;
   PlaneDepthInB depth_;
   Vec u0b_, w0b_;  // v and w in B (the leading boundary)
   Eigen::Vector3d g_W_;
@@ -561,7 +605,8 @@ ContactWrench ComputeContactWrench(const SurfaceElements& elements, const PadKin
   const bool footprint = pad_terms.has_added_mass();
   const bool power = pad_terms.has_power_depth();
   if (!compaction && !footprint && !power && elements.size() > 0 && elements.HasBounds() &&
-      !law.has_dynamic_stress() && IsSpinning(elements, kinematics)) {
+      !law.has_dynamic_stress() && !(law.has_mobilised_shear() && kinematics.shear_mobilisation != 1.0) &&
+      IsSpinning(elements, kinematics)) {
     if (const auto* plane = dynamic_cast<const PlaneGround*>(&ground))
       return RotatingWrenchOverPlane(elements, kinematics, *plane, law);
   }

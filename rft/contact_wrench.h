@@ -43,6 +43,10 @@ struct PadKinematics {
   Eigen::Vector3d p_WB = Eigen::Vector3d::Zero();    // reference point [m]
   Eigen::Vector3d v_WB_W = Eigen::Vector3d::Zero();  // velocity of the reference point [m/s]
   Eigen::Vector3d w_WB_W = Eigen::Vector3d::Zero();  // angular velocity [rad/s]
+  // How far a law's Janosi shear is mobilised, 1 - exp(-j / K) in [0, 1] for the pad's shear
+  // displacement j (StressLaw3D::has_mobilised_shear; ignored by every other law): 1 takes the
+  // shear fully mobilised.
+  double shear_mobilisation = 1.0;
 };
 
 struct ContactWrench {

@@ -24,6 +24,10 @@ class DynamicTermLaw final : public ForwardingLaw3D {
   // Throws std::invalid_argument on a null law.
   DynamicTermLaw(std::unique_ptr<StressLaw3D> quasi_static, double lambda, double rho_c_kg_m3);  // "li2013+dynamic"
   Eigen::Vector3d DynamicStress(const Eigen::Vector3d& n_W, const Eigen::Vector3d& v_W) const override;
+  // DynamicStress replaces the inner law's, so none of the inner's depth-independent shear is left.
+  Eigen::Vector3d MobilisedShearStress(const Eigen::Vector3d&, const Eigen::Vector3d&) const override {
+    return Eigen::Vector3d::Zero();
+  }
   bool has_dynamic_stress() const override { return true; }
   const StressLaw3D& quasi_static() const { return inner(); }
   double lambda() const { return lambda_; }

@@ -24,6 +24,13 @@ class ForwardingLaw3D : public StressLaw3D {
   Eigen::Vector3d DynamicStress(const Eigen::Vector3d& n_W, const Eigen::Vector3d& v_W) const override {
     return inner_->DynamicStress(n_W, v_W);
   }
+  bool has_mobilised_shear() const override { return inner_->has_mobilised_shear(); }
+  Eigen::Vector3d MobilisedShearPerDepth(const Eigen::Vector3d& n_W, const Eigen::Vector3d& v_W) const override {
+    return inner_->MobilisedShearPerDepth(n_W, v_W);
+  }
+  Eigen::Vector3d MobilisedShearStress(const Eigen::Vector3d& n_W, const Eigen::Vector3d& v_W) const override {
+    return inner_->MobilisedShearStress(n_W, v_W);
+  }
   const StressLaw3D& inner() const { return *inner_; }
 
  protected:

@@ -28,6 +28,9 @@ class GasCushionLaw final : public ForwardingLaw3D {
   }
   Eigen::Vector3d DynamicStress(const Eigen::Vector3d& n_W, const Eigen::Vector3d& v_W) const override;
   bool has_dynamic_stress() const override { return true; }
+  Eigen::Vector3d MobilisedShearPerDepth(const Eigen::Vector3d& n_W, const Eigen::Vector3d& v_W) const override {
+    return (1.0 - chi_) * inner_->MobilisedShearPerDepth(n_W, v_W);  // scaled as StressPerDepth
+  }
   void StressPerDepthBatch(StressBatch& batch) const override {
     inner_->StressPerDepthBatch(batch);
     for (int i = 0; i < batch.count; ++i) {

@@ -48,6 +48,19 @@ class StressLaw3D {
   virtual Eigen::Vector3d DynamicStress(const Eigen::Vector3d& /*n_W*/, const Eigen::Vector3d& /*v_W*/) const {
     return Eigen::Vector3d::Zero();
   }
+  // Janosi-Hanamoto's shear (rft/bekker_law.h): the part of StressPerDepth (per unit depth) and of
+  // DynamicStress (depth-independent) that grows with the pad's shear displacement j as
+  // m = 1 - exp(-j / K). Both are included fully in the two stresses above; the contact takes
+  // (1 - m) of them off again for a pad whose PadKinematics::shear_mobilisation m < 1. Laws without
+  // such a shear return false and zero (the contact then never calls them). A decorator that scales
+  // or replaces its inner law's stress does the same to these.
+  virtual bool has_mobilised_shear() const { return false; }
+  virtual Eigen::Vector3d MobilisedShearPerDepth(const Eigen::Vector3d& /*n_W*/, const Eigen::Vector3d& /*v_W*/) const {
+    return Eigen::Vector3d::Zero();
+  }
+  virtual Eigen::Vector3d MobilisedShearStress(const Eigen::Vector3d& /*n_W*/, const Eigen::Vector3d& /*v_W*/) const {
+    return Eigen::Vector3d::Zero();
+  }
 };
 
 }  // namespace touchdown::rft

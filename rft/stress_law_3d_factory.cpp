@@ -141,6 +141,8 @@ SoilContactModel MakeSoilContactModel(LawKind law, const SoilParameters& soil, d
   if (terms.depth_exponent != 1.0) model.pad_terms.depth = {terms.depth_exponent, terms.depth_reference_m};
   // Bekker's z^n: the depth law with z_ref = 1 m, so z_ref (z / z_ref)^n = z^n in SI.
   if (law == LawKind::kBekker && soil.bekker.n != 1.0) model.pad_terms.depth = {soil.bekker.n, 1.0};
+  if (law == LawKind::kBekker && out->has_mobilised_shear())
+    model.janosi_K_m = soil.bekker.shear_modulus_K_m;
   if (terms.compaction_k_kg_m3 > 0.0) {
     model.pad_terms.compaction_k_kg_m3 = terms.compaction_k_kg_m3;
     model.pad_terms.compaction_depth_m = terms.compaction_depth_m;

@@ -7,6 +7,7 @@
 #include "drop_tests/drop/drop_factory.h"
 #include "drop_tests/io/vtk_pieces.h"
 #include "drop_tests/io/vtk_series.h"
+#include "rft/bekker_law.h"
 #include "rft/element_stresses.h"
 
 namespace touchdown::drop {
@@ -31,8 +32,11 @@ void WriteDropVtk(const PadDrop& drop, const io::PadSpec& pad, const io::OutputT
   if (!drop.free) throw std::logic_error("WriteDropVtk: not a free drop");
   const pad::FreeDropResult& r = *drop.free;
   const DropConditions& c = drop.conditions;
+  const rft::SoilParameters drop_soil = DropSoil(drop.soil, c.zeta_N_m3, c.atmosphere);
+  // As the drop itself ran (pad_drop.cpp): a Bekker soil needs the pad's footprint dimension b.
+  const double plate_b_m = RunsOnBekker(drop_soil, c.law_3d) ? rft::BekkerPlateB(pad.body.surface) : 0.0;
   const rft::SoilContactModel contact =
-      MakeFreeLaw(DropSoil(drop.soil, c.zeta_N_m3, c.atmosphere), c.law_3d, c.gravity_m_s2, c.effects, c.effects_source);
+      MakeFreeLaw(drop_soil, c.law_3d, c.gravity_m_s2, c.effects, c.effects_source, plate_b_m);
   const io::PadSurfaceMesh mesh = io::MakePadSurfaceMesh(pad.body.surface);
   const rft::PlaneGround ground;  // the free drop's bed (rft::UniformTerrain's surface)
   io::WriteOutputDirectory(dir, io::OutputKind::kDropVtk, [&](const std::string& staging) {
@@ -40,7 +44,8 @@ void WriteDropVtk(const PadDrop& drop, const io::PadSpec& pad, const io::OutputT
     rft::ElementStresses stresses;
     for (const pad::FreeDropSample& s : r.trace) {
       const Eigen::Matrix3d R_WB = Eigen::Quaterniond(s.q_WB[0], s.q_WB[1], s.q_WB[2], s.q_WB[3]).toRotationMatrix();
-      const rft::PadKinematics k{R_WB, s.p_WB, s.v_WB_W, s.w_W};
+      rft::PadKinematics k{R_WB, s.p_WB, s.v_WB_W, s.w_W};
+      if (contact.has_janosi_shear()) k.shear_mobilisation = contact.ShearMobilisation(s.shear_displacement_m);
       rft::ComputeElementStresses(pad.body.surface, k, ground, *contact.law, contact.pad_terms.depth, &stresses);
       series.AddFrame(s.t_s, "pad", {io::PadSurfacePiece(mesh, R_WB, s.p_WB, stresses)});
     }

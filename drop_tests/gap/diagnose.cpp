@@ -359,13 +359,19 @@ Diagnosis RunDiagnosis(const dataset::Dataset& ds, const DiagnoseOptions& o) {
   d.dataset_dir = ds.directory;
   d.held_out = HeldOutSplit(ds);
   d.problem = MakeFitProblem(ds, d.held_out, o.threads);
-  if (o.start_model)
-    for (rft::SoilParameters& s : d.problem.soils) {
-      const auto it = o.start_model->soils.find(s.name);
-      if (it != o.start_model->soils.end())
-        s.SetZetaAtGravity(it->second.zeta_N_m3, it->second.reference_gravity_m_s2);
-    }
-  StartZetaWhereMissing(ds, d.problem);  // a Bekker soil's RFT base (law_candidate.h)
+  if (o.base == DiagnoseBase::kBekker) {
+    if (o.start_model)
+      throw MakeInputError(o.start_model->name, "soils", "--model starts RFT's zeta; the Bekker base fits its own soils");
+    d.bekker_base = UseBekkerBase(ds, d.problem);
+  } else {
+    if (o.start_model)
+      for (rft::SoilParameters& s : d.problem.soils) {
+        const auto it = o.start_model->soils.find(s.name);
+        if (it != o.start_model->soils.end())
+          s.SetZetaAtGravity(it->second.zeta_N_m3, it->second.reference_gravity_m_s2);
+      }
+    StartZetaWhereMissing(ds, d.problem);  // a Bekker soil's RFT base (law_candidate.h)
+  }
   io::Progress progress("diagnose", "fits", 1 + static_cast<int64_t>(model::EffectLibrary().size()), o.progress);
   // 1-2: the base model, its gap, where it concentrates.
   d.base = Score(d, ds, {}, o);

@@ -37,6 +37,8 @@
 
 namespace touchdown::gap {
 
+enum class DiagnoseBase { kRft, kBekker };
+
 struct DiagnoseOptions {
   int threads = 2;
   bool try_pairs = true;
@@ -48,6 +50,10 @@ struct DiagnoseOptions {
   unsigned seed = 12345;             // permutation tests only
   std::optional<model::ModelFile> start_model;  // --model: starting zeta (and the file it came from)
   io::ProgressOptions progress{io::ProgressMode::kNone};  // of the candidate models fitted
+  // --base: the model the effects are fitted on top of. kRft: quasi-static RFT, zeta per soil (the
+  // default). kBekker: Bekker's pressure-sinkage law, n, k_c, k_phi per soil fitted on the training
+  // drops (calibrate --law bekker), its moduli scaled per soil with the effects (UseBekkerBase).
+  DiagnoseBase base = DiagnoseBase::kRft;
   bool law_candidate = false;        // --law-candidate: also fit and score the Bekker law (law_candidate.h)
 };
 
@@ -107,6 +113,7 @@ struct Diagnosis {
   double seconds = 0.0;
   long simulations = 0;
   std::optional<LawCandidate> law_candidate;  // only with DiagnoseOptions::law_candidate
+  std::vector<dataset::BekkerFit> bekker_base;  // --base bekker: the base's soils (else empty)
 };
 
 Diagnosis RunDiagnosis(const dataset::Dataset& measured, const DiagnoseOptions& options = {});

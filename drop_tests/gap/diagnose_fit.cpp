@@ -68,9 +68,15 @@ void Bounds(const FitProblem&, const Layout& L, Eigen::VectorXd* lo, Eigen::Vect
 // The model's recorded trace for one drop, or nullopt when the simulation fails.
 std::optional<dataset::DatasetTrace> Recorded(const FitProblem& p, const FitDrop& d, const ModelValues& m,
                                      const rft::EffectTerms& terms) {
-  const rft::SoilParameters soil = drop::DropSoil(p.soils[d.soil], m.zeta_N_m3[d.soil], d.atmosphere);
+  rft::SoilParameters soil = drop::DropSoil(p.soils[d.soil], m.zeta_N_m3[d.soil], d.atmosphere);
+  if (p.bekker_base) {  // zeta is the scale of the Bekker soil's moduli
+    soil.bekker.k_c_N_m_n1 *= m.zeta_N_m3[d.soil];
+    soil.bekker.k_phi_N_m_n2 *= m.zeta_N_m3[d.soil];
+  }
   try {
-    const pad::EffectSoilResponse response = drop::MakeRigResponse(*p.intrusions[d.pad], soil, d.gravity_m_s2, terms);
+    const pad::EffectSoilResponse response =
+        p.bekker_base ? drop::MakeBekkerRigResponse(*p.bekker_intrusions[d.pad], soil, terms)
+                      : drop::MakeRigResponse(*p.intrusions[d.pad], soil, d.gravity_m_s2, terms);
     const pad::RigDropResult r = pad::RunRigDrop({d.mass_kg, d.gravity_m_s2, d.speed_m_s}, response, p.rig);
     dataset::DatasetTrace out;
     const dataset::DatasetTrace& tr = *d.trace;
@@ -198,6 +204,10 @@ FitProblem MakeFitProblem(const dataset::Dataset& ds, const std::vector<bool>& h
 bool CandidateApplies(const FitProblem& p, const std::vector<std::string>& ids, std::string* why) {
   for (const std::string& id : ids) {
     const model::EffectInfo& e = model::FindEffect(id);
+    if (p.bekker_base && id == "depth_exponent") {
+      *why = "depth_exponent does not apply to the Bekker base (its depth exponent is the soil's fitted n)";
+      return false;
+    }
     if (e.air_only && !(p.has_air && p.has_vacuum)) {
       *why = id + " needs drops in air and in vacuum (otherwise it is confounded with zeta)";
       return false;
@@ -382,8 +392,12 @@ void Estimates(const FitProblem& p, const Layout& L, const Objective& obj, const
     out.estimates.push_back(e);
     ++k;
   };
-  for (const rft::SoilParameters& soil : p.soils)
-    estimate("", "zeta_N_cm3:" + soil.name, soil.zeta_N_m3, units::kN_m3_per_N_cm3, "N/m^3");
+  for (const rft::SoilParameters& soil : p.soils) {
+    if (p.bekker_base)
+      estimate("", "bekker_modulus_scale:" + soil.name, 1.0, 1.0, "-");
+    else
+      estimate("", "zeta_N_cm3:" + soil.name, soil.zeta_N_m3, units::kN_m3_per_N_cm3, "N/m^3");
+  }
   for (const model::EffectInfo* e : L.infos)
     for (const model::EffectParameterInfo& q : e->parameters) estimate(e->id, q.key, q.scale, q.file_to_si, q.unit);
 }

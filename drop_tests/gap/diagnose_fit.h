@@ -49,6 +49,12 @@ struct FitProblem {
   pad::RigDropOptions rig;
   int threads = 2;
   bool has_air = false, has_vacuum = false;
+  // The Bekker base (diagnose --base bekker, law_candidate.h UseBekkerBase): every soil is a Bekker
+  // soil fitted on its training drops (n, k_c, k_phi as calibrate --law bekker), the drops run on
+  // the pads' Bekker integrals, and the per-soil parameter fitted with the effects is a scale of
+  // the soil's moduli k_c and k_phi (its zeta_N_m3 is then 1, so the fitted "zeta" is the scale).
+  bool bekker_base = false;
+  std::vector<std::unique_ptr<geom::AxisymmetricIntrusion>> bekker_intrusions;  // per pad
 };
 
 // Prepares every dataset drop; `held_out` marks the drops not used for fitting.

@@ -119,6 +119,21 @@ nlohmann::json DiagnosisJson(const Diagnosis& d) {
   }
   j["candidates"] = cands;
   j["base"] = {{"bic", d.base.fit.bic}, {"parameter_count", d.base.fit.parameters}};
+  if (d.problem.bekker_base) {  // the RFT base's JSON is unchanged (golden outputs)
+    j["base"]["law"] = "bekker";
+    nlohmann::json soils = nlohmann::json::array();
+    for (size_t s = 0; s < d.bekker_base.size(); ++s) {
+      const dataset::BekkerFit& f = d.bekker_base[s];
+      soils.push_back({{"soil", d.problem.soils[s].name},
+                       {"n", f.bekker.n},
+                       {"k_c_kN_m_n1", f.bekker.k_c_N_m_n1 / 1e3},
+                       {"k_phi_kN_m_n2", f.bekker.k_phi_N_m_n2 / 1e3},
+                       {"modulus_scale_fitted", d.base.fit.zeta_N_m3[s]},
+                       {"training_drops", f.drops},
+                       {"method", f.method}});
+    }
+    j["base"]["bekker_soils"] = soils;
+  }
   nlohmann::json split = {{"rule", "per (pad, soil, atmosphere) cell, ordered by speed then drop id: ranks 1, 4, 7, ... held out"},
                           {"train", nlohmann::json::array()}, {"held_out", nlohmann::json::array()}};
   for (const FitDrop& f : d.problem.drops) split[f.train ? "train" : "held_out"].push_back(f.drop_id);
@@ -137,9 +152,12 @@ namespace {
 model::ModelFile DiagnosedModel(const Diagnosis& d, const dataset::Dataset& ds, const CandidateScore& after) {
   model::ModelFile model;
   model.name = "diagnosed_" + fs::path(ds.directory).filename().string();
-  model.description = "touchdown diagnose: base quasi-static RFT (zeta per soil, fitted)" +
+  model.description = std::string(d.problem.bekker_base
+                                      ? "touchdown diagnose: base Bekker (n, k_c, k_phi per soil, fitted; in "
+                                        "diagnosis.json base.bekker_soils, not in this file)"
+                                      : "touchdown diagnose: base quasi-static RFT (zeta per soil, fitted)") +
                       (d.winner >= 0 ? " plus " + d.named_effect : std::string(" (no effect named)"));
-  for (size_t s = 0; s < d.problem.soils.size(); ++s) {
+  for (size_t s = 0; s < d.problem.soils.size() && !d.problem.bekker_base; ++s) {
     const ParameterEstimate& e = after.fit.estimates[s];
     model::SoilOverride o;
     o.zeta_N_m3 = e.value;
@@ -360,9 +378,23 @@ void WriteReport(const Diagnosis& d, const dataset::Dataset& ds, const Candidate
     for (const FitDrop& f : d.problem.drops) n_train += f.train;
     out << "## 1. Split and calibration\n\n" << d.problem.drops.size() << " drops: " << n_train << " training, "
         << d.problem.drops.size() - n_train
-        << " held out (per pad/soil/atmosphere cell, ordered by speed then id, ranks 1, 4, 7, ... held out).\n\n"
-        << "| soil | zeta base [N/cm^3] | 95 % interval | zeta with effect [N/cm^3] |\n| --- | --- | --- | --- |\n";
-    for (size_t s = 0; s < d.problem.soils.size(); ++s) {
+        << " held out (per pad/soil/atmosphere cell, ordered by speed then id, ranks 1, 4, 7, ... held out).\n\n";
+    if (d.problem.bekker_base) {
+      out << "**Base model: Bekker** (`--base bekker`, docs/bekker_soil.md): n, k_c, k_phi per soil fitted on the "
+             "training drops as `calibrate --law bekker` does; the effects are fitted on top with a scale of the "
+             "soil's moduli.\n\n| soil | n | k_c [kN/m^(n+1)] | k_phi [kN/m^(n+2)] | modulus scale, base | 95 % "
+             "interval | with effect |\n| --- | --- | --- | --- | --- | --- | --- |\n";
+      for (size_t s = 0; s < d.problem.soils.size(); ++s) {
+        const ParameterEstimate& b = d.base.fit.estimates[s];
+        const rft::BekkerParameters& k = d.bekker_base[s].bekker;
+        out << "| " << d.problem.soils[s].name << " | " << Num(k.n) << " | " << Num(k.k_c_N_m_n1 / 1e3) << " | "
+            << Num(k.k_phi_N_m_n2 / 1e3) << " | " << Num(b.value) << " | [" << Num(b.low) << ", " << Num(b.high)
+            << "] | " << Num(after.fit.estimates[s].value) << " |\n";
+      }
+    } else {
+      out << "| soil | zeta base [N/cm^3] | 95 % interval | zeta with effect [N/cm^3] |\n| --- | --- | --- | --- |\n";
+    }
+    for (size_t s = 0; s < d.problem.soils.size() && !d.problem.bekker_base; ++s) {
       const ParameterEstimate& b = d.base.fit.estimates[s];
       out << "| " << d.problem.soils[s].name << " | " << Num(units::ZetaToN_cm3(b.value)) << " | [" << Num(units::ZetaToN_cm3(b.low)) << ", "
           << Num(units::ZetaToN_cm3(b.high)) << "] | " << Num(units::ZetaToN_cm3(after.fit.estimates[s].value)) << " |\n";
@@ -404,7 +436,9 @@ void WriteReport(const Diagnosis& d, const dataset::Dataset& ds, const Candidate
         out << "held-out force NRMSE " << Num(l.held_out_force_nrmse) << " against RFT's " << Num(l.base_held_out_force_nrmse)
             << " (" << Num(100 * l.gap_reduction, 3) << " % of the gap; reported, not part of the decision).\n";
     }
-    out << "\n## 4. Model\n\n`model.yaml`: the base model's zeta per soil"
+    out << "\n## 4. Model\n\n`model.yaml`: "
+        << (d.problem.bekker_base ? "(Bekker base: its soils are in `diagnosis.json`, `base.bekker_soils`)"
+                                  : "the base model's zeta per soil")
         << (d.winner >= 0 ? " plus `" + d.named_effect + "` with its fitted parameters and 95 % intervals" : "")
         << ". Intervals are cluster-robust over the training drops.\n\n## 5. Before and after (held-out drops)\n\n"
         << "| drop | force NRMSE before | after | final penetration error before | after |\n| --- | --- | --- | --- | --- |\n";

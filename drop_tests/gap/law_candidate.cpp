@@ -5,6 +5,7 @@
 
 #include "drop_tests/dataset/calibrate.h"
 #include "drop_tests/dataset/compare.h"
+#include "drop_tests/drop/drop_factory.h"
 #include "drop_tests/drop/pad_drop.h"
 #include "lander/integ/cvode_integrator.h"
 #include "lander/pad/effect_soil_response.h"
@@ -56,7 +57,33 @@ double HeldOutNrmse(const FitProblem& p, const FitDrop& d, const rft::SoilParame
   }
 }
 
+// The training drops of soil s.
+dataset::Dataset TrainingDropsOf(const dataset::Dataset& measured, const FitProblem& p, size_t s) {
+  dataset::Dataset training;
+  training.directory = measured.directory;
+  training.extra_columns = measured.extra_columns;
+  for (const FitDrop& d : p.drops)
+    if (d.soil == static_cast<int>(s) && d.train) training.drops.push_back(measured.drops[d.dataset_index]);
+  return training;
+}
+
 }  // namespace
+
+std::vector<dataset::BekkerFit> UseBekkerBase(const dataset::Dataset& measured, FitProblem& p) {
+  std::vector<dataset::BekkerFit> fits;
+  for (size_t s = 0; s < p.soils.size(); ++s) {
+    const dataset::Dataset training = TrainingDropsOf(measured, p, s);
+    if (training.drops.empty())
+      throw MakeInputError(measured.directory, "soil " + p.soils[s].name, "no training drops for the Bekker base");
+    fits.push_back(dataset::CalibrateBekker(training, {}));
+    p.soils[s] = FittedRigSoil(fits.back(), p.soils[s]);
+    p.soils[s].zeta_N_m3 = 1.0;
+  }
+  p.bekker_intrusions.clear();
+  for (const io::PadSpec& pad : p.pads) p.bekker_intrusions.push_back(drop::MakeBekkerRigIntrusion(pad.profile));
+  p.bekker_base = true;
+  return fits;
+}
 
 void StartZetaWhereMissing(const dataset::Dataset& measured, FitProblem& p) {
   for (size_t s = 0; s < p.soils.size(); ++s) {

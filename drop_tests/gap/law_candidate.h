@@ -34,4 +34,11 @@ nlohmann::json LawCandidateJson(const LawCandidate& c);
 // drops (dataset::CalibrateZeta), as a model file's zeta would; soils with a zeta are left alone.
 void StartZetaWhereMissing(const dataset::Dataset& measured, FitProblem& problem);
 
+// diagnose --base bekker: each soil of `problem` becomes the Bekker soil fitted on its training
+// drops (dataset::CalibrateBekker, as `calibrate --law bekker`; c = phi = 0, K = 1 m, which the
+// vertical rig never uses), with zeta_N_m3 = 1 so that diagnose's per-soil parameter is the scale
+// of its moduli; the pads get their Bekker integrals. Returns the fits, one per soil. Throws
+// InputError (a mesh pad, a soil without training drops).
+std::vector<dataset::BekkerFit> UseBekkerBase(const dataset::Dataset& measured, FitProblem& problem);
+
 }  // namespace touchdown::gap

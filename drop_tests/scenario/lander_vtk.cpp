@@ -23,7 +23,8 @@ void PadStresses(const LanderRun& run, const lander::LanderSample& s, int i, rft
   const lander::Leg& leg = run.setup.model.legs[i];
   const rft::Terrain& terrain = run.setup.terrain;
   const rft::SoilContactModel& contact = terrain.soils[terrain.SoilAt(s.p_WJ[i].x(), s.p_WJ[i].y())].contact;
-  const rft::PadKinematics k{Rotation(s.q_WP[i]), s.p_WJ[i], s.v_WJ_W[i], s.w_WP_W[i]};
+  rft::PadKinematics k{Rotation(s.q_WP[i]), s.p_WJ[i], s.v_WJ_W[i], s.w_WP_W[i]};
+  if (contact.has_janosi_shear()) k.shear_mobilisation = contact.ShearMobilisation(s.shear_displacement_m[i]);
   rft::ComputeElementStresses(leg.pad->surface, k, *terrain.surface, *contact.law, contact.pad_terms.depth, out);
   const double radius = leg.pad->vertices_B.colwise().norm().maxCoeff();
   const double speed = s.v_WJ_W[i].norm() + s.w_WP_W[i].norm() * radius;

@@ -53,11 +53,17 @@ void PadJacobians(const StateLayout& L, int i, const PadFrame& pf, const Eigen::
 }
 }  // namespace
 
-StateLayout::StateLayout(const LanderModel& model) {
+StateLayout::StateLayout(const LanderModel& model, bool shear_states) : has_shear(shear_states) {
   for (int i = 0; i < kNumLegs; ++i) stroke_slot[i] = model.legs[i].absorber ? num_strokes++ : -1;
   nq = kFirstStroke + num_strokes;
   nu = kFirstStrokeRate + num_strokes;
-  size = nq + nu + 1;
+  size = nq + nu + 1 + (has_shear ? kNumLegs : 0);
+}
+
+bool HasJanosiShear(const rft::Terrain& terrain) {
+  for (const rft::TerrainSoil& soil : terrain.soils)
+    if (soil.contact.has_janosi_shear()) return true;
+  return false;
 }
 
 void FinishModel(LanderModel& model) {
@@ -92,6 +98,7 @@ LanderPose ComputePose(const LanderModel& model, const StateLayout& L, const Eig
     f.R_WP = QuatAt(y, L.quat_P(i)).toRotationMatrix();
     f.w_WP_W = y.segment<3>(L.w_P(i));
     f.c_JC_W = f.R_WP * leg.pad->com_B;
+    f.shear_displacement_m = L.has_shear ? y[L.shear(i)] : 0.0;
   }
   return p;
 }
@@ -106,6 +113,7 @@ rft::ContactWrench FreePadSoilWrench(const LanderModel& model, const rft::SoilCo
                                      const PadFrame& f, const rft::GroundSurface& surface) {
   const Leg& l = model.legs[leg];
   rft::PadKinematics k{f.R_WP, f.p_WJ, f.v_WJ_W, f.w_WP_W};
+  if (contact.has_janosi_shear()) k.shear_mobilisation = contact.ShearMobilisation(f.shear_displacement_m);
   const double speed = f.v_WJ_W.norm() + f.w_WP_W.norm() * PadRadius(l);
   rft::ContactWrench w = rft::ComputeContactWrench(l.pad->surface, k, surface, *contact.law, contact.pad_terms);
   if (speed < kSoilRampSpeed) {
@@ -120,6 +128,9 @@ rft::ContactWrench QuasiStaticWrench(const LanderModel& model, const rft::Terrai
   rft::PadKinematics k{pad.R_WP, pad.p_WJ, kProbeSpeed * direction_W.normalized(), Eigen::Vector3d::Zero()};
   const int soil = terrain.SoilAt(pad.p_WJ.x(), pad.p_WJ.y());
   const rft::SoilContactModel& contact = terrain.soils[soil].contact;
+  // The capacity at the pad's own j: a pad that has not slid yet offers no Janosi shear to a load
+  // that would make it slide (as the free pad's force after the release would not).
+  if (contact.has_janosi_shear()) k.shear_mobilisation = contact.ShearMobilisation(pad.shear_displacement_m);
   return rft::ComputeContactWrench(model.legs[leg].pad->surface, k, *terrain.surface, *contact.law, contact.pad_terms);
 }
 
@@ -162,12 +173,16 @@ void Assemble(const LanderModel& model, const StateLayout& L, const rft::Terrain
     // Soil: RFT on a free pad in contact; a held pad's wrench is a constraint force (later).
     rft::ContactWrench& w = e->soil[i];
     w = rft::ContactWrench{};
+    e->shear_rate_m_s[i] = 0.0;
     const rft::ContactWrench* given_wrench = given ? given->wrench[i] : nullptr;
     if (modes.pad[i] == PadMode::kFree && (given_wrench || PadDepth(model, terrain, i, f) > 0.0)) {
       const int soil = terrain.SoilAt(f.p_WJ.x(), f.p_WJ.y());
       const rft::SoilContactModel& contact = terrain.soils[soil].contact;
       w = given_wrench ? *given_wrench : FreePadSoilWrench(model, contact, i, f, *terrain.surface);
       e->dissipation_W -= w.force_W.dot(f.v_WJ_W) + w.moment_W.dot(f.w_WP_W);
+      // Janosi's j grows with the slip of the contact's reference point, the joint centre
+      // (docs/bekker_soil.md says why that point); a held pad does not slip.
+      if (L.has_shear && w.submerged_area_m2 > 0.0) e->shear_rate_m_s[i] = std::hypot(f.v_WJ_W.x(), f.v_WJ_W.y());
       // added_mass (rft/entrained_mass.h): the entrained cone moves with the vertical velocity of
       // the pad's centre of mass, as in the free drop: a mass m_a on the row e_z^T J_C, with the
       // accretion force -max(dm_a/dt, 0) v_z (grains join at rest, leave with the pad) and the
@@ -349,6 +364,8 @@ void StateDerivative(const StateLayout& L, const Eigen::Ref<const Eigen::VectorX
   }
   ydot.segment(L.nq, L.nu) = e.u_dot;
   ydot[L.work()] = e.dissipation_W;
+  if (L.has_shear)
+    for (int i = 0; i < kNumLegs; ++i) ydot[L.shear(i)] = e.shear_rate_m_s[i];
 }
 
 double KineticEnergy(const LanderModel& model, const StateLayout& L, const Eigen::Ref<const Eigen::VectorXd>& y) {

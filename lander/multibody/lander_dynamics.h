@@ -5,6 +5,8 @@
 //   positions  q = [p_WB (3), quat_WB (4), quat_WP_i (4 x 4), s_k (one per absorber leg)]
 //   speeds     u = [v_WB_W (3), w_WB_W (3), w_WP_i_W (4 x 3), ds_k/dt]
 //   y = [q, u, W]   W: work dissipated so far (soil, dampers, crushing, capture) [J]
+//   then, only on a terrain with a Bekker soil with shear (HasJanosiShear), each pad's Janosi
+//   shear displacement j_i [m]: y = [q, u, W, j_1..j_4]
 //
 // Every body b has a centre-of-mass velocity v_b = J_b u and an angular velocity w_b = S_b u
 // (S_b a constant selection: angular velocities are world-frame speeds), so
@@ -40,7 +42,9 @@ struct StateLayout {
   static constexpr int kFirstStrokeRate = kBodySpeeds + kPadSpeeds * kNumLegs;    // in u
   static constexpr int kMaxSpeeds = kFirstStrokeRate + kNumLegs;                  // every leg an absorber
 
-  explicit StateLayout(const LanderModel& model);
+  // shear_states: each pad carries Janosi's shear displacement j after W (HasJanosiShear).
+  explicit StateLayout(const LanderModel& model, bool shear_states = false);
+  bool has_shear = false;
   int stroke_slot[kNumLegs];  // index among strokes, -1 for a rigid leg
   int num_strokes = 0;
   int nq = 0, nu = 0, size = 0;
@@ -53,6 +57,7 @@ struct StateLayout {
   int w_P(int leg) const { return nq + u_w_P(leg); }
   int stroke_rate(int leg) const { return nq + u_stroke(leg); }
   int work() const { return nq + nu; }
+  int shear(int leg) const { return nq + nu + 1 + leg; }  // only with has_shear
   // Column of a generalised speed in u (not in y).
   int u_w_P(int leg) const { return kBodySpeeds + kPadSpeeds * leg; }
   int u_stroke(int leg) const { return kFirstStrokeRate + stroke_slot[leg]; }
@@ -83,6 +88,7 @@ struct PadFrame {
   Eigen::Vector3d r_BJ_W;                // body CoM to joint centre
   Eigen::Vector3d axis_W;                // leg axis (hip to foot)
   Eigen::Vector3d c_JC_W;                // joint centre to pad CoM
+  double shear_displacement_m = 0.0;     // Janosi's j (StateLayout::has_shear), else 0
 };
 
 struct LanderPose {
@@ -98,6 +104,7 @@ struct LanderEvaluation {
   std::array<rft::ContactWrench, kNumLegs> soil;      // soil on pad, moment about the joint centre
   std::array<double, kNumLegs> leg_force_N{};         // axial absorber force, compression positive
   double dissipation_W = 0.0;                         // dW/dt
+  std::array<double, kNumLegs> shear_rate_m_s{};      // dj/dt (StateLayout::has_shear)
   bool constrained = false;                           // any held pad or locked stroke
 };
 
@@ -128,6 +135,12 @@ struct LanderData {
 struct GivenSoil {
   std::array<const rft::ContactWrench*, kNumLegs> wrench{};  // nullptr: compute (free pads only)
 };
+
+// Whether a soil of the terrain has Janosi's shear (rft::SoilContactModel::has_janosi_shear): the
+// pads then carry their shear displacement j as a state (StateLayout's shear_states). j grows with
+// the horizontal slip of the pad's joint centre while the pad is free in the soil; it is reset at
+// the pad's next touchdown (j does not grow in the air, so that is the reset at lift-off).
+bool HasJanosiShear(const rft::Terrain& terrain);
 
 // Pose and velocities of all bodies from y.
 LanderPose ComputePose(const LanderModel& model, const StateLayout& layout, const Eigen::Ref<const Eigen::VectorXd>& y);

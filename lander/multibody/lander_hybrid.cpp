@@ -135,6 +135,7 @@ void LanderHybrid::Record(double t, const Eigen::VectorXd& s) {
     x.p_WJ[i] = e.pose.pads[i].p_WJ;
     x.v_WJ_W[i] = e.pose.pads[i].v_WJ_W;
     x.w_WP_W[i] = e.pose.pads[i].w_WP_W;
+    x.shear_displacement_m[i] = e.pose.pads[i].shear_displacement_m;
     result_.peak_pad_force_N[i] = std::max(result_.peak_pad_force_N[i], e.soil[i].force_W.norm());
     if (modes_.pad[i] == PadMode::kHeld)
       result_.max_held_drift_m = std::max(result_.max_held_drift_m, (e.pose.pads[i].p_WJ - held_at_[i]).norm());
@@ -166,13 +167,18 @@ bool LanderHybrid::TouchdownsAtRelease(const Eigen::VectorXd& y) {
   return true;
 }
 
-void LanderHybrid::Touchdowns(double t, const std::vector<int>& found) {
+bool LanderHybrid::Touchdowns(double t, const std::vector<int>& found, Eigen::VectorXd& y) {
+  bool reset = false;
   for (int i = 0; i < kNumLegs; ++i)
     if (found[PadRoot(i, 0)] != 0) {
+      // Janosi's j counts the slip since this touchdown: it grows only in contact, so setting it
+      // to 0 here is the reset at the last lift-off.
+      if (L_.has_shear && y[L_.shear(i)] != 0.0) y[L_.shear(i)] = 0.0, reset = true;
       result_.events.push_back({t, LanderEventKind::kTouchdown, i});
       if (!result_.touchdown_time_s[i]) result_.touchdown_time_s[i] = t;
       if (!result_.first_touchdown_s) result_.first_touchdown_s = t;
     }
+  return reset;
 }
 
 // The mode changes the roots ask for: captures, releases, crushing, lock and bottoming. Returns
@@ -299,7 +305,7 @@ integ::EventAction LanderHybrid::OnEvent(double t, const std::vector<int>& found
   sink_capacity_.fill(std::numeric_limits<double>::quiet_NaN());  // holds and poses may change here
   Record(t, y);  // the state at the event, in the old modes (peak forces before a capture)
   const LanderPose pose = ComputePose(model_, L_, y);
-  Touchdowns(t, found);
+  const bool shear_reset = Touchdowns(t, found, y);
   // The tip-over root fires when the margin falls through zero; a lander whose centre of mass is
   // already outside its support polygon when a pad touches (aligned to a slope steeper than its
   // static angle) would never see it fall.
@@ -312,7 +318,8 @@ integ::EventAction LanderHybrid::OnEvent(double t, const std::vector<int>& found
   }
   const Eigen::VectorXd before = y;
   std::array<bool, kNumLegs> fresh{};
-  if (!SwitchModes(t, found, pose, fresh)) return integ::EventAction::kContinue;
+  if (!SwitchModes(t, found, pose, fresh))
+    return shear_reset ? integ::EventAction::kRestart : integ::EventAction::kContinue;
   OfferCaptures(pose, fresh);
   NormalizeQuaternions(L_, y);
   HoldStoppedPads(y, fresh);

@@ -21,7 +21,7 @@ class LanderHybrid {
  public:
   LanderHybrid(const LanderModel& model, const rft::Terrain& terrain, const LanderRunOptions& options,
                LanderRunResult& result)
-      : model_(model), L_(model), terrain_(terrain), options_(options), result_(result) {
+      : model_(model), L_(model, HasJanosiShear(terrain)), terrain_(terrain), options_(options), result_(result) {
     for (int i = 0; i < kNumLegs; ++i) modes_.stroke[i] = StrokeMode::kLocked;
     eval_.u_dot = Eigen::VectorXd::Zero(L_.nu);
   }
@@ -43,7 +43,8 @@ class LanderHybrid {
   void Finish(double t, const Eigen::VectorXd& y);
 
  private:
-  void Touchdowns(double t, const std::vector<int>& found);
+  // Records the touchdowns; resets their pads' j (true if any changed: the run must restart).
+  bool Touchdowns(double t, const std::vector<int>& found, Eigen::VectorXd& y);
   bool SwitchModes(double t, const std::vector<int>& found, const LanderPose& pose, std::array<bool, kNumLegs>& fresh);
   void OfferCaptures(const LanderPose& pose, std::array<bool, kNumLegs>& fresh);
   void HoldStoppedPads(Eigen::VectorXd& y, std::array<bool, kNumLegs>& fresh);

@@ -71,7 +71,7 @@ struct JacobianPass {
   // Column j of the speed and work rows from an evaluation at y + h e_j.
   void Column(int j, const GivenSoil* given) {
     const double h = Step(j);
-    const int rows = L.nu + 1;
+    const int rows = L.size - L.nq;  // speeds, work and the pads' shear displacements
     w.y = y;
     w.y[j] += h;
     EvaluateLander(model, L, terrain, modes, w.y, &w.probe, data, given);
@@ -116,11 +116,12 @@ struct JacobianPass {
     GivenSoil given;
     for (int k = 0; k < kNumLegs; ++k)
       if (k != i && touching[k]) given.wrench[k] = &w.base.soil[k];
-    std::array<int, StateLayout::kPadPositions + StateLayout::kPadSpeeds + 2> columns{};
+    std::array<int, StateLayout::kPadPositions + StateLayout::kPadSpeeds + 3> columns{};
     int n = 0;
     for (int c = 0; c < StateLayout::kPadPositions; ++c) columns[n++] = L.quat_P(i) + c;
     for (int c = 0; c < StateLayout::kPadSpeeds; ++c) columns[n++] = L.w_P(i) + c;
     if (L.stroke_slot[i] >= 0) columns[n++] = L.stroke(i), columns[n++] = L.stroke_rate(i);
+    if (L.has_shear) columns[n++] = L.shear(i);  // Janosi's j reaches the pad's own contact only
     for (int c = 0; c < n; ++c) Column(columns[c], &given);
     if (touching[i]) w.contact_evaluations += n;
   }

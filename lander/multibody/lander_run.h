@@ -68,6 +68,7 @@ struct LanderSample {
   Eigen::Vector4d q_WB{1.0, 0.0, 0.0, 0.0};
   std::array<Eigen::Vector4d, kNumLegs> q_WP;
   std::array<Eigen::Vector3d, kNumLegs> p_WJ, v_WJ_W, w_WP_W;
+  std::array<double, kNumLegs> shear_displacement_m{};  // Janosi's j (0 without the state)
 };
 
 enum class LanderEventKind {

@@ -67,6 +67,8 @@ integ::IntegratorOptions ScaledTolerances(const LanderModel& model, const StateL
     o.component_atol[L.stroke_rate(i)] = r * V;
   }
   o.component_atol[L.work()] = r * E;
+  if (L.has_shear)
+    for (int i = 0; i < kNumLegs; ++i) o.component_atol[L.shear(i)] = r * length;
   return o;
 }
 

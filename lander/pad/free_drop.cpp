@@ -26,14 +26,14 @@ namespace {
 //   the horizontal speed, spin times L and sqrt(g L); angle: 1 rad; angular speed V / L;
 //   energy: m V^2 / 2 + m g L.
 integ::IntegratorOptions WithScaledTolerances(integ::IntegratorOptions options, const geom::PadBody& body,
-                                              const FreeDropInput& in, double radius) {
+                                              const FreeDropInput& in, double radius, int size) {
   if (!options.component_atol.empty()) return options;
   const double L = radius > 0.0 ? radius : 1.0;
   const double V = std::max({in.impact_speed_m_s, std::abs(in.horizontal_speed_m_s), in.omega_W.norm() * L,
                              std::sqrt(in.gravity_m_s2 * L)});
   const double E = 0.5 * body.mass_kg * V * V + body.mass_kg * in.gravity_m_s2 * L;
   const double r = options.rtol;
-  options.component_atol.assign(kSize, 0.0);
+  options.component_atol.assign(size, 0.0);
   for (int i = 0; i < 3; ++i) {
     options.component_atol[kP + i] = r * L;
     options.component_atol[kV + i] = r * V;
@@ -41,6 +41,7 @@ integ::IntegratorOptions WithScaledTolerances(integ::IntegratorOptions options, 
   }
   for (int i = 0; i < 4; ++i) options.component_atol[kQ + i] = r;
   options.component_atol[kWork] = r * E;
+  if (size > kSize) options.component_atol[kShearDisplacement] = r * L;
   return options;
 }
 
@@ -54,17 +55,23 @@ void Validate(const geom::PadBody& body, const FreeDropInput& in) {
 
 // Roots: [0] touchdown (depth rises through 0), looked for during the approach only (the stroke
 // starts on the surface, depth 0 at t = 0, which CVODE would report as a root at its start; a pad
-// that bounces off the soil flies on in the same stroke); [1] rest (speed falls below the threshold).
+// that bounces off the soil flies on in the same stroke); [1] rest (speed falls below the threshold);
+// only with Janosi's j as a state: [2] lift-off (the lowest point rises kLiftOffClearance above the
+// surface: not at the stroke's start, where the depth is 0), which resets j.
+constexpr double kLiftOffClearance = 1e-9;  // [m], a numerical margin
 integ::RootSpec FreeDropRoots(const FreePadDynamics& pad, double rest_speed, const bool& approaching) {
   integ::RootSpec roots;
-  roots.count = 2;
+  const bool shear = pad.has_shear_state();
+  roots.count = shear ? 3 : 2;
   roots.directions = {+1, -1};
+  if (shear) roots.directions.push_back(-1);
   const double radius = pad.radius_m();
   roots.function = [&pad, rest_speed, radius, &approaching](double, Eigen::Ref<const Eigen::VectorXd> y,
                                                              Eigen::Ref<Eigen::VectorXd> gv) {
     const FreePadPose s = pad.PoseOf(y);
     gv[0] = approaching ? pad.Depth(s) : -1.0;
     gv[1] = s.v_WC.squaredNorm() + s.w_W.squaredNorm() * radius * radius - rest_speed * rest_speed;
+    if (gv.size() > 2) gv[2] = approaching ? 1.0 : pad.Depth(s) + kLiftOffClearance;
   };
   return roots;
 }
@@ -75,7 +82,7 @@ Eigen::VectorXd ReleaseState(const FreePadDynamics& pad, const FreeDropInput& in
   const double g = pad.gravity_m_s2(), v_td = in.impact_speed_m_s;
   const Eigen::Matrix3d R0 = TiltRotation(in.tilt_axis, in.tilt_rad);
   const Eigen::Quaterniond q0(R0);
-  Eigen::VectorXd y = Eigen::VectorXd::Zero(kSize);
+  Eigen::VectorXd y = Eigen::VectorXd::Zero(pad.size());
   y.segment<3>(kP) = PlaceAtDepth(pad.body(), R0, -clearance) + R0 * pad.body().com_B;
   y.segment<4>(kQ) << q0.w(), q0.x(), q0.y(), q0.z();
   y.segment<3>(kV) << in.horizontal_speed_m_s, 0.0, -std::sqrt(std::max(v_td * v_td - 2.0 * g * clearance, 0.0));
@@ -127,6 +134,7 @@ FreeDropResult Stroke(integ::HybridRun& run, const FreePadDynamics& pad, const E
     pose.q_WB = state.segment<4>(kQ).normalized();
     pose.v_WB_W = s.v_WB;
     pose.w_W = s.w_W;
+    pose.shear_displacement_m = s.shear_displacement_m;
     result.peak_force_N = std::max(result.peak_force_N, f.z());
     if (moving) result.max_deceleration_m_s2 = std::max(result.max_deceleration_m_s2, f.z() / m - g);
   };
@@ -140,6 +148,11 @@ FreeDropResult Stroke(integ::HybridRun& run, const FreePadDynamics& pad, const E
   integ::HybridCallbacks calls;
   calls.sample = record;
   calls.event = [&](double t, const std::vector<int>& found, Eigen::VectorXd& s) {
+    if (found.size() > 2 && found[2] != 0) {  // lift-off: the next contact shears fresh soil
+      ++result.lift_offs;
+      s[kShearDisplacement] = 0.0;
+      return integ::EventAction::kRestart;
+    }
     if (found[1] == 0) return integ::EventAction::kContinue;  // not the rest event
     // Slow enough: rest if pushing straight down meets at least the weight.
     const FreePadPose probe = pad.PoseOf(s);
@@ -158,6 +171,7 @@ FreeDropResult Stroke(integ::HybridRun& run, const FreePadDynamics& pad, const E
   result.gravity_work_J = m * g * (z_C0 - end.p_WC.z());
   result.final_tilt_deg = units::RadToDeg(TiltFromVertical(end.R_WB));
   result.horizontal_travel_m = (end.p_WC.head<2>() - xy_C0).norm();
+  if (pad.has_shear_state()) result.final_shear_displacement_m = rest.y[kShearDisplacement];
   result.solver = run.summary().solver;
   return result;
 }
@@ -170,8 +184,8 @@ FreeDropResult RunFreeDrop(const geom::PadBody& body, const rft::Terrain& terrai
   const FreePadDynamics pad(body, terrain, in.gravity_m_s2);
   bool approaching = true;
   integ::CvodeIntegrator integrator(
-      kSize, [&pad](double, Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::VectorXd> ydot) { pad.Derivative(y, ydot); },
-      WithScaledTolerances(options.integrator, body, in, pad.radius_m()),
+      pad.size(), [&pad](double, Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::VectorXd> ydot) { pad.Derivative(y, ydot); },
+      WithScaledTolerances(options.integrator, body, in, pad.radius_m(), pad.size()),
       FreeDropRoots(pad, options.rest_speed_m_s, approaching));
   integ::HybridRun run(integrator);
 
@@ -180,6 +194,7 @@ FreeDropResult RunFreeDrop(const geom::PadBody& body, const rft::Terrain& terrai
   Eigen::VectorXd y = ReleaseState(pad, in, clearance);
   if (clearance > 0.0) y = Approach(run, pad, y, clearance);
   y[kWork] = 0.0;
+  if (pad.has_shear_state()) y[kShearDisplacement] = 0.0;  // j since touchdown (the approach may graze)
   approaching = false;
   run.Start(0.0, y);
   return Stroke(run, pad, y, options);

@@ -72,6 +72,7 @@ struct FreeDropSample {
   Eigen::Vector4d q_WB{1.0, 0.0, 0.0, 0.0};
   Eigen::Vector3d v_WB_W = Eigen::Vector3d::Zero();
   Eigen::Vector3d w_W = Eigen::Vector3d::Zero();
+  double shear_displacement_m = 0.0;  // Janosi's j (FreePadDynamics::has_shear_state), else 0
 };
 
 struct FreeDropResult {
@@ -85,6 +86,10 @@ struct FreeDropResult {
   double touchdown_tilt_deg = 0.0;
   double final_tilt_deg = 0.0;
   double horizontal_travel_m = 0.0;    // centre of mass, in the horizontal plane, touchdown to rest
+  // Only on a terrain with Janosi's shear (FreePadDynamics::has_shear_state): j at rest [m] and the
+  // lift-offs that reset it.
+  double final_shear_displacement_m = 0.0;
+  int lift_offs = 0;
   double final_kinetic_energy_J = 0.0;  // at the rest event (below the threshold)
   std::vector<FreeDropSample> trace;
   integ::IntegratorSummary solver;

@@ -23,7 +23,9 @@ FreePadDynamics::FreePadDynamics(const geom::PadBody& body, const rft::Terrain& 
       g_(gravity_m_s2),
       I_(body.inertia_com_B),
       I_inv_(body.inertia_com_B.inverse()),
-      radius_(BodyRadius(body)) {}
+      radius_(BodyRadius(body)) {
+  for (const rft::TerrainSoil& soil : terrain.soils) shear_state_ |= soil.contact.has_janosi_shear();
+}
 
 FreePadPose FreePadDynamics::PoseOf(const Eigen::Ref<const Eigen::VectorXd>& y) const {
   FreePadPose s;
@@ -35,6 +37,7 @@ FreePadPose FreePadDynamics::PoseOf(const Eigen::Ref<const Eigen::VectorXd>& y) 
   s.w_W = s.R_WB * s.w_B;
   s.p_WB = s.p_WC - s.R_WB * body_.com_B;
   s.v_WB = s.v_WC + s.w_W.cross(s.p_WB - s.p_WC);
+  if (shear_state_) s.shear_displacement_m = y[kShearDisplacement];
   return s;
 }
 
@@ -52,6 +55,7 @@ const rft::SoilContactModel& FreePadDynamics::SoilUnder(const FreePadPose& s) co
 
 rft::ContactWrench FreePadDynamics::Wrench(const FreePadPose& s, const rft::SoilContactModel& soil) const {
   rft::PadKinematics k{s.R_WB, s.p_WB, s.v_WB, s.w_W};
+  if (soil.has_janosi_shear()) k.shear_mobilisation = soil.ShearMobilisation(s.shear_displacement_m);
   return rft::ComputeContactWrench(body_.surface, k, ground_, *soil.law, soil.pad_terms);
 }
 
@@ -100,6 +104,8 @@ void FreePadDynamics::Derivative(const Eigen::Ref<const Eigen::VectorXd>& y, Eig
     ydot[kV + 2] = vz.a_z;
     ydot[kWork] += vz.accretion_W;
   }
+  // Janosi's j: the horizontal slip of the contact's reference point while the pad is in the soil.
+  if (shear_state_) ydot[kShearDisplacement] = w.submerged_area_m2 > 0.0 ? std::hypot(s.v_WB.x(), s.v_WB.y()) : 0.0;
 }
 
 double FreePadDynamics::RestCapacity(const FreePadPose& s) const {

@@ -4,7 +4,8 @@
 // about the centre of mass, with the pad-level added mass of the soil contact model.
 //
 // State y (kSize = 14): centre of mass p_WC, attitude quaternion q_WB (w, x, y, z), velocity v_WC,
-// body-frame angular velocity w_B, and the work done against the soil (dissipated energy).
+// body-frame angular velocity w_B, and the work done against the soil (dissipated energy); on a
+// terrain with a Bekker soil with shear, Janosi's shear displacement j after them (kShearDisplacement).
 #include <Eigen/Core>
 
 #include "footpad_geom/pad_body.h"
@@ -16,11 +17,16 @@
 namespace touchdown::pad {
 
 enum FreePadState : int { kP = 0, kQ = 3, kV = 7, kW = 10, kWork = 13, kSize = 14 };
+// Janosi's shear displacement j [m] follows the 14 states above only when a soil of the pad's
+// terrain has a shear that mobilises with it (rft::SoilContactModel::has_janosi_shear): then
+// FreePadDynamics::size() is kSize + 1. Every other drop keeps the 14 states, and its results.
+constexpr int kShearDisplacement = kSize;
 
 // Kinematics of the pad at one state.
 struct FreePadPose {
   Eigen::Matrix3d R_WB;
   Eigen::Vector3d p_WC, p_WB, v_WC, w_B, w_W, v_WB;
+  double shear_displacement_m = 0.0;  // Janosi's j (0 without the state)
 };
 
 // The vertical motion of the centre of mass with the entrained grains of added_mass.
@@ -56,6 +62,11 @@ class FreePadDynamics {
   double KineticEnergy(const FreePadPose& s) const;
 
   const geom::PadBody& body() const { return body_; }
+  // Whether the state carries Janosi's j (kShearDisplacement), and the state's size. j grows with
+  // the horizontal slip speed of the pad's reference point while the pad is in the soil (a rotating
+  // pad's slip reduced to that one point: docs/bekker_soil.md argues it) and is reset at lift-off.
+  bool has_shear_state() const { return shear_state_; }
+  int size() const { return shear_state_ ? kSize + 1 : kSize; }
   double mass_kg() const { return m_; }
   double gravity_m_s2() const { return g_; }
   // Radius about the centre of mass: spin times it is a speed.
@@ -68,6 +79,7 @@ class FreePadDynamics {
   double m_, g_;
   Eigen::Matrix3d I_, I_inv_;
   double radius_;
+  bool shear_state_ = false;
 };
 
 }  // namespace touchdown::pad

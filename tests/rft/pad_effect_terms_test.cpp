@@ -246,6 +246,30 @@ TEST(RftDepthExponent, ExponentOneIsTheLinearLawBitForBit) {
   }
 }
 
+// A rotating pad's leading boundary clips its elements under the z^p depth law as under the linear
+// one (contact_internal.h LeadingPartOf): with p a hair from 1 the power path (its own closed forms,
+// its own clip) lands on the linear path's wrench to the size of the hair. Without the clip the
+// elements the boundary crosses were taken whole or not at all.
+TEST(RftDepthExponent, RotatingPadIsClippedAtItsLeadingBoundaryAsTheLinearLaw) {
+  const SurfaceElements pad = testing::MakeRevolvedPad({{0.0, 0.0}, {0.04, 0.0}, {0.05, 0.008}, {0.05, 0.016}}, 48);
+  const Li2013TreersLaw base(2.0e6);
+  for (const double hair : {1e-9, -1e-9}) {
+    PadKinematics k;
+    k.R_WB = testing::RotX(0.2) * testing::RotY(-0.1);
+    k.p_WB = Eigen::Vector3d(0.0, 0.0, -0.012);
+    k.v_WB_W = Eigen::Vector3d(0.3, 0.1, -0.2);
+    k.w_WB_W = Eigen::Vector3d(4.0, -6.0, 1.0);  // the leading boundary crosses the pad
+    PadLevelTerms power = DepthTerms(1.0 + hair);
+    power.depth.reference_m = 1.0;  // z_ref^(1 - p) = 1: only the exponent differs
+    const ContactWrench linear = ComputeContactWrench(pad, k, PlaneGround(), base);
+    const ContactWrench clipped = ComputeContactWrench(pad, k, PlaneGround(), base, power);
+    EXPECT_EQ(clipped.leading_elements, linear.leading_elements);
+    // |ln z| <= 4 over these depths: the hair moves the wrench by < 1e-8 of it.
+    EXPECT_LT((clipped.force_W - linear.force_W).norm(), 1e-8 * linear.force_W.norm()) << hair;
+    EXPECT_LT((clipped.moment_W - linear.moment_W).norm(), 1e-8 * linear.moment_W.norm()) << hair;
+  }
+}
+
 // A level flat disc pushed straight down: zeta z_ref^(1-p) A d^p on the bottom, plus the side
 // wall alpha_z(pi/2, pi/2) zeta z_ref^(1-p) P d^(p+1) / (p+1) - the rig's closed form.
 TEST(RftDepthExponent, LevelFlatPadIsTheRigsPowerLaw) {

@@ -98,6 +98,26 @@ TEST_F(DropVtkTest, SeriesListsEverySampleWithItsTimeAndTheStressesAtThatPose) {
   EXPECT_NEAR(expected.force_W.row(2).sum(), s.force_N, 1e-9 * s.force_N);
 }
 
+// A free drop on a Bekker soil with shear (sliding): the series is written with the pad's b, and the
+// samples carry Janosi's j, growing with the slip, which the frames' stresses take (docs/bekker_soil.md).
+TEST_F(DropVtkTest, BekkerSoilWithShearWritesItsSeriesAndCarriesJ) {
+  const io::PadSpec flat = io::LoadPad("flat");
+  DropConditions c;
+  c.impact_speed_m_s = 1.0;
+  c.gravity_m_s2 = 1.62;
+  c.free = true;
+  c.horizontal_speed_m_s = 0.3;
+  const PadDrop bekker = SimulateDrop(flat, io::LoadSoil("lunar_nominal_bekker"), c, {});
+  ASSERT_TRUE(bekker.free);
+  const std::vector<pad::FreeDropSample>& trace = bekker.free->trace;
+  EXPECT_EQ(trace.front().shear_displacement_m, 0.0);
+  EXPECT_GT(trace.back().shear_displacement_m, 0.5 * bekker.free->horizontal_travel_m);
+  for (size_t i = 1; i < trace.size(); ++i) EXPECT_GE(trace[i].shear_displacement_m, trace[i - 1].shear_displacement_m);
+  const std::string out = Path("bekker_vtk");
+  WriteDropVtk(bekker, flat, out);
+  EXPECT_GT(ReadXmlFile(out + "/drop.pvd").One("Collection").All("DataSet").size(), 10u);
+}
+
 TEST_F(DropVtkTest, RefusesADirectoryOfTheUsers) {
   std::filesystem::create_directories(Path("mine"));
   Write("mine/keep.txt", "mine\n");

@@ -33,6 +33,8 @@ TEST(LawCandidate, BekkerClosesTheGapOfDropsMadeOnABekkerSoil) {
   const Diagnosis plain = RunDiagnosis(ds, o);
   EXPECT_FALSE(plain.law_candidate);
   EXPECT_FALSE(DiagnosisJson(plain).contains("law_candidate"));
+  EXPECT_FALSE(plain.problem.bekker_base);  // the default base is RFT's, and its JSON says nothing new
+  EXPECT_FALSE(DiagnosisJson(plain)["base"].contains("law"));
   o.law_candidate = true;
   const Diagnosis d = RunDiagnosis(ds, o);
   ASSERT_TRUE(d.law_candidate);
@@ -46,6 +48,37 @@ TEST(LawCandidate, BekkerClosesTheGapOfDropsMadeOnABekkerSoil) {
               l.held_out_force_nrmse);
   EXPECT_GT(l.gap_reduction, 0.5);
   EXPECT_EQ(DiagnosisJson(d)["law_candidate"]["law"], "bekker");
+}
+
+// diagnose --base bekker on the same synthetic Toyoura drops (n = 0.63, k_c = 0, k_phi = 1796 kN/m^4,
+// data/soils/toyoura_bekker.yaml): the base's Bekker soil is recovered, its modulus scale stays 1,
+// the base fits to the noise and the outputs say which base ran; the default base is RFT's.
+TEST(BekkerBase, RecoversTheSoilOfDropsMadeOnABekkerSoil) {
+  const dataset::Dataset ds = ToyouraBekkerDrops();
+  DiagnoseOptions o;
+  o.threads = 2;
+  o.try_pairs = false;
+  o.permutations = 200;
+  EXPECT_EQ(o.base, DiagnoseBase::kRft);
+  o.base = DiagnoseBase::kBekker;
+  const Diagnosis d = RunDiagnosis(ds, o);
+  ASSERT_TRUE(d.problem.bekker_base);
+  ASSERT_EQ(d.bekker_base.size(), 1u);
+  EXPECT_NEAR(d.bekker_base[0].bekker.n, 0.63, 0.005);  // measured 0.6290
+  EXPECT_NEAR(d.bekker_base[0].bekker.k_phi_N_m_n2 / 1796e3, 1.0, 0.02);  // measured 1786.9 kN/m^(n+2)
+  EXPECT_NEAR(d.base.fit.zeta_N_m3[0], 1.0, 0.01);  // the scale of the calibrated moduli (measured 1.0015)
+  std::printf("[ bekker base ] n %.4f k_phi %.1f kN/m^(n+2) scale %.4f held-out force NRMSE %.4f (noise %.4f)\n",
+              d.bekker_base[0].bekker.n, d.bekker_base[0].bekker.k_phi_N_m_n2 / 1e3, d.base.fit.zeta_N_m3[0],
+              d.base.held_out.force_nrmse, d.base.held_out.noise_nrmse);
+  EXPECT_LT(d.base.held_out.force_nrmse, 0.01);  // measured 0.0024, below the noise floor 0.0080
+  const nlohmann::json j = DiagnosisJson(d);
+  EXPECT_EQ(j["base"]["law"], "bekker");
+  EXPECT_EQ(j["base"]["bekker_soils"][0]["soil"], "toyoura_bekker");
+  for (const CandidateScore& c : d.candidates)
+    if (c.name == "depth_exponent") {
+      EXPECT_FALSE(c.applies);
+    }
+  EXPECT_EQ(d.named_effect, "none");
 }
 
 }  // namespace
