@@ -147,8 +147,11 @@ std::string PlaceLegs(LanderSpec& s) {
 }  // namespace
 
 LanderSpec LoadLanderSpec(const std::string& name_or_path) {
-  const std::string path = io::ResolveCatalogFile("landers", name_or_path);
-  const io::YamlFields f = io::YamlFields::LoadFile(path);
+  return LoadLanderSpec(io::YamlFields::LoadFile(io::ResolveCatalogFile("landers", name_or_path)));
+}
+
+LanderSpec LoadLanderSpec(const io::YamlFields& f) {
+  const std::string& path = f.file();
   f.RequireSchemaVersion(1);
   f.RequireOnly({"schema_version", "name", "description", "total_mass_kg", "cog_height_mm", "body_inertia_kg_m2",
                  "pad", "legs", "provenance"});

@@ -112,6 +112,8 @@ struct LanderRun {
 };
 
 LanderSpec LoadLanderSpec(const std::string& name_or_path);
+// A lander from its file's YAML as read, possibly edited in memory first (calibrate --targets).
+LanderSpec LoadLanderSpec(const io::YamlFields& f);
 // The same lander on another pad (a study's pad design): the total mass and the whole lander's CoG
 // height stay, so the body's mass and CoM, and the joints (the pad's joint height above its
 // bottom), follow the pad. Throws InputError naming the pad file when the pad does not fit: the
