@@ -49,7 +49,9 @@ void CalibrateTargets(const CalibrateArgs& args) {
   targets::TargetsFitOptions options;
   options.threads = args.threads > 0 ? args.threads : int(std::max(1u, std::thread::hardware_concurrency()));
   const targets::TargetsFitResult fit = targets::FitTargets(file, options);
-  model::WriteModelFile(targets::TargetsModel(file, fit, std::filesystem::path(args.out).stem().string()), out);
+  const std::filesystem::path model_path(args.out);
+  model::WriteModelFile(
+      targets::TargetsModel(file, fit, model_path.stem().string(), model_path.parent_path().string()), out);
   if (report) {
     // The report's first line is its mark (a rerun may replace it; a user's file never): the JSON
     // object opens with a "written_by" entry on that line.

@@ -80,6 +80,8 @@ struct LanderInitialSpec {
 struct LanderPaperCheck {
   double roll_pitch_within_deg = 0.0;  // the paper's +-0.5 deg in vacuum; 0 = none
   std::string source;
+  bool used_for_fit = false;  // as a campaign's PaperCheck: used to fit a parameter, by `fit_by`
+  std::string fit_by;
 };
 
 struct LanderScenario {

@@ -12,6 +12,17 @@
 namespace touchdown::targets {
 
 namespace {
+// The fit runs on u = 1 + (x - lower) / (upper - lower), in [1, 2] for every parameter: the
+// trust region and the difference steps (relative_step * u) then mean the same share of every
+// parameter's range, whatever its unit (N/cm^3, 1/mm, mm). (Not [0, 1]: a relative step at 0
+// would vanish.)
+double ToFit(const Parameter& p, double x) { return 1.0 + (x - p.lower) / (p.upper - p.lower); }
+double FromFit(const Parameter& p, double u) {
+  const double range = p.upper - p.lower;
+  if (u >= 2.0) return p.upper + (u - 2.0) * range;  // exactly the bound at u = 2 (and at u = 1 below)
+  return p.lower + (u - 1.0) * range;
+}
+
 // The fitted targets' residuals for Ceres. Ceres is C code at heart for errors: an exception of a
 // simulation is kept and rethrown after Solve (Ceres sees a failed evaluation and stops).
 class FitResiduals {
@@ -22,7 +33,8 @@ class FitResiduals {
   bool operator()(double const* const* parameters, double* residuals) const {
     if (failure_) return false;
     try {
-      const std::vector<double> values(parameters[0], parameters[0] + file_.parameters.size());
+      std::vector<double> values(file_.parameters.size());
+      for (size_t i = 0; i < values.size(); ++i) values[i] = FromFit(file_.parameters[i], parameters[0][i]);
       const std::vector<ScenarioOutcome> outcomes = evaluator_.Run(values, true);
       int k = 0;
       for (const Target& t : file_.targets)
@@ -95,7 +107,7 @@ void AddIntervals(ceres::Problem& problem, std::vector<double>& x, const Targets
   const double z = boost::math::quantile(boost::math::normal(), 0.5 + 0.5 * file.settings.confidence);
   for (size_t i = 0; i < n; ++i) {
     if (!out[i].interval_note.empty()) continue;
-    out[i].sigma = std::sqrt(c[i * n + i]);
+    out[i].sigma = std::sqrt(c[i * n + i]) * (file.parameters[i].upper - file.parameters[i].lower);
     out[i].low = out[i].value - z * *out[i].sigma;
     out[i].high = out[i].value + z * *out[i].sigma;
   }
@@ -112,11 +124,16 @@ void Solve(const TargetsFile& file, TargetEvaluator& evaluator, std::vector<doub
   ceres::Problem problem;
   problem.AddResidualBlock(cost, nullptr, x.data());
   for (size_t i = 0; i < x.size(); ++i) {
-    problem.SetParameterLowerBound(x.data(), int(i), file.parameters[i].lower);
-    problem.SetParameterUpperBound(x.data(), int(i), file.parameters[i].upper);
+    problem.SetParameterLowerBound(x.data(), int(i), 1.0);
+    problem.SetParameterUpperBound(x.data(), int(i), 2.0);
   }
   ceres::Solver::Options options;
   options.linear_solver_type = ceres::DENSE_QR;
+  // A trust region in u: the first step moves at most a tenth of each range (Ceres' default, 1e4,
+  // lets the first step jump to a corner of the box, where the projected steps then stall).
+  options.trust_region_strategy_type = ceres::DOGLEG;
+  options.jacobi_scaling = false;
+  options.initial_trust_region_radius = 0.1;
   options.max_num_iterations = file.settings.max_iterations;
   options.num_threads = 1;
   options.logging_type = ceres::SILENT;
@@ -130,11 +147,12 @@ void Solve(const TargetsFile& file, TargetEvaluator& evaluator, std::vector<doub
   result.termination = summary.message;
   result.converged = summary.termination_type == ceres::CONVERGENCE;
   for (size_t i = 0; i < x.size(); ++i) {
-    result.parameters[i].value = x[i];
-    result.parameters[i].at_bound = AtBound(file.parameters[i], x[i]);
+    result.parameters[i].value = FromFit(file.parameters[i], x[i]);
+    result.parameters[i].at_bound = AtBound(file.parameters[i], result.parameters[i].value);
   }
   AddIntervals(problem, x, file, result.parameters);
   if (failure) std::rethrow_exception(failure);
+  for (size_t i = 0; i < x.size(); ++i) x[i] = result.parameters[i].value;
 }
 }  // namespace
 
@@ -143,12 +161,13 @@ TargetsFitResult FitTargets(const TargetsFile& file, const TargetsFitOptions& op
   TargetsFitResult result;
   std::vector<double> x;
   for (const Parameter& p : file.parameters) {
-    x.push_back(p.start);
+    x.push_back(ToFit(p, p.start));
     result.parameters.push_back({p.start, AtBound(p, p.start), {}, {}, {}, ""});
   }
   if (x.empty() || FittedTargets(file) == 0) {
     result.termination = "no fit: " + std::string(x.empty() ? "no free parameters" : "no target has use: fit");
     for (ParameterResult& p : result.parameters) p.interval_note = "not fitted";
+    for (size_t i = 0; i < x.size(); ++i) x[i] = file.parameters[i].start;
   } else {
     Solve(file, evaluator, x, result);
   }

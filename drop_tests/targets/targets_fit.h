@@ -52,7 +52,9 @@ nlohmann::json TargetsReportJson(const TargetsFile& file, const TargetsFitResult
 // A short fixed-width table of the same.
 std::string TargetsReportTable(const TargetsFile& file, const TargetsFitResult& fit);
 // The fitted zeta per soil as a model file (`--model`), with the fit's provenance and the other
-// parameters' values and how to apply them.
-model::ModelFile TargetsModel(const TargetsFile& file, const TargetsFitResult& fit, const std::string& name);
+// parameters' values and how to apply them. The targets file is named as seen from `output_dir`,
+// the directory the model file lives in (drop_tests/io/paths_in_outputs.h).
+model::ModelFile TargetsModel(const TargetsFile& file, const TargetsFitResult& fit, const std::string& name,
+                              const std::string& output_dir);
 
 }  // namespace touchdown::targets

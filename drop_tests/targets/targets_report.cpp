@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <yaml-cpp/yaml.h>
 
+#include "drop_tests/io/paths_in_outputs.h"
 #include "drop_tests/targets/targets_fit.h"
 #include "rft/units.h"
 
@@ -39,9 +40,10 @@ std::string ApplyHint(const Parameter& p) {
   switch (p.kind) {
     case ParameterKind::kSoilZeta: return "in this model file: --model MODEL.yaml";
     case ParameterKind::kPadField:
-      return "not in the model file: set " + p.field + " in a copy of the pad file " + p.file + " and name that copy";
+      return "not in the model file: set " + p.field + " in a copy of pad " + p.object + "'s file and name that copy";
     case ParameterKind::kLanderField:
-      return "not in the model file: set " + p.field + " in a copy of the lander file " + p.file + " and name that copy";
+      return "not in the model file: set " + p.field + " in a copy of lander " + p.object +
+             "'s file and name that copy";
   }
   return "";
 }
@@ -131,7 +133,8 @@ std::string TargetsReportTable(const TargetsFile& file, const TargetsFitResult& 
   return o.str();
 }
 
-model::ModelFile TargetsModel(const TargetsFile& file, const TargetsFitResult& fit, const std::string& name) {
+model::ModelFile TargetsModel(const TargetsFile& file, const TargetsFitResult& fit, const std::string& name,
+                              const std::string& output_dir) {
   std::vector<double> values;
   for (const ParameterResult& r : fit.parameters) values.push_back(r.value);
   model::ModelFile m;
@@ -154,7 +157,7 @@ model::ModelFile TargetsModel(const TargetsFile& file, const TargetsFitResult& f
   y << YAML::BeginMap << YAML::Key << "fit" << YAML::Value
     << "touchdown calibrate --targets " + std::filesystem::path(file.source).filename().string() +
            ": bounded least squares of (simulated - value) / uncertainty (Ceres)";
-  y << YAML::Key << "targets_file" << YAML::Value << file.source;
+  y << YAML::Key << "targets_file" << YAML::Value << io::PathForOutput(file.source, output_dir);
   y << YAML::Key << "targets_used" << YAML::Value << YAML::Flow << TargetNames(file, true);
   y << YAML::Key << "targets_predicted" << YAML::Value << YAML::Flow << TargetNames(file, false);
   y << YAML::Key << "parameters" << YAML::Value << YAML::BeginMap;
