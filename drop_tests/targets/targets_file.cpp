@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <map>
 #include <set>
+#include <sstream>
 
 #include "drop_tests/io/yaml_fields.h"
 #include "drop_tests/scenario/campaign.h"
