@@ -2,10 +2,16 @@
 #include <iostream>
 #include <memory>
 #include <string>
+#include <thread>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "apps/commands.h"
 #include "drop_tests/dataset/calibration_run.h"
+#include "drop_tests/io/output_path.h"
+#include "drop_tests/targets/targets_fit.h"
+#include "rft/input_error.h"
 #include "rft/units.h"
 
 namespace touchdown::app {
@@ -16,7 +22,45 @@ struct CalibrateArgs {
   double confidence = 0.95;
   // --law bekker: a Bekker soil file instead of a model file (docs/bekker_soil.md)
   std::string law = "rft", soil, pad, shear_from;
+  // --targets: published scalar targets instead of a dataset (docs/calibration_targets.md)
+  std::string targets, report;
+  int threads = 0;
+  bool evaluate_only = false;
 };
+
+constexpr const char* kTargetsReportMark = "{\"written_by\": \"touchdown calibrate --targets (it may replace this file)\",";
+
+// calibrate --targets: the free parameters fitted to a targets file; the model file gets the fitted
+// zeta, the report every parameter and target.
+void CalibrateTargets(const CalibrateArgs& args) {
+  const io::OutputTarget out(args.out, {args.targets});
+  io::CheckOutputFile(out, model::kModelFileMark);
+  std::optional<io::OutputTarget> report;
+  if (!args.report.empty()) {
+    report.emplace(args.report, std::vector<std::string>{args.targets});
+    if (std::filesystem::absolute(args.report).lexically_normal() == std::filesystem::absolute(args.out).lexically_normal())
+      throw MakeInputError("command line", "--report", "must differ from --out (" + args.report + ")");
+    io::CheckOutputFile(*report, kTargetsReportMark);
+  }
+  targets::TargetsFile file = targets::LoadTargetsFile(args.targets);
+  if (args.evaluate_only)
+    for (targets::Target& t : file.targets) t.fit = false;
+  targets::TargetsFitOptions options;
+  options.threads = args.threads > 0 ? args.threads : int(std::max(1u, std::thread::hardware_concurrency()));
+  const targets::TargetsFitResult fit = targets::FitTargets(file, options);
+  const std::filesystem::path model_path(args.out);
+  model::WriteModelFile(
+      targets::TargetsModel(file, fit, model_path.stem().string(), model_path.parent_path().string()), out);
+  if (report) {
+    // The report's first line is its mark (a rerun may replace it; a user's file never): the JSON
+    // object opens with a "written_by" entry on that line.
+    const std::string json = targets::TargetsReportJson(file, fit).dump(2);
+    io::WriteOutputFile(*report, [&](std::ostream& o) { o << kTargetsReportMark << '\n' << json.substr(2) << '\n'; },
+                        kTargetsReportMark);
+  }
+  std::cout << targets::TargetsReportTable(file, fit) << "wrote " << args.out << (report ? " and " + args.report : "")
+            << "\n";
+}
 
 void PrintBekkerFit(const dataset::BekkerFit& fit, const std::string& out) {
   std::cout << "bekker: n = " << std::setprecision(4) << fit.bekker.n << ", k_c = " << fit.bekker.k_c_N_m_n1 / 1e3
@@ -38,7 +82,15 @@ void PrintZetaFits(const std::vector<dataset::ZetaFit>& fits, const std::string&
 void AddCalibrateCommand(CLI::App& app) {
   auto args = std::make_shared<CalibrateArgs>();
   CLI::App* cmd = app.add_subcommand("calibrate", "Fit zeta to measured drops (least squares of force on penetration)");
-  cmd->add_option("measured", args->measured, "measured dataset directory")->required();
+  cmd->add_option("measured", args->measured, "measured dataset directory (or --targets)");
+  cmd->add_option("--targets", args->targets,
+                  "a targets file: fit the free parameters it names to published scalar results instead "
+                  "(docs/calibration_targets.md)");
+  cmd->add_option("--report", args->report, "--targets: also write the fit's report as JSON to this file");
+  cmd->add_option("--threads", args->threads, "--targets: scenarios run side by side (default: every core)")
+      ->check(CLI::Range(1, 1024));
+  cmd->add_flag("--evaluate-only", args->evaluate_only,
+                "--targets: no fit; every target at the parameters' start values (use: predict for all)");
   cmd->add_option("--param", args->param, "parameter to fit (zeta)")->check(CLI::IsMember({"zeta"}));
   cmd->add_option("--per", args->per, "soil: one zeta per soil (default); all: one zeta for every soil")
       ->check(CLI::IsMember({"soil", "all"}));
@@ -55,6 +107,13 @@ void AddCalibrateCommand(CLI::App& app) {
   cmd->add_option("--shear-from", args->shear_from,
                   "--law bekker: the Bekker soil whose cohesion, friction angle and K the fitted soil takes");
   cmd->callback([args] {
+    if (args->targets.empty() == args->measured.empty())
+      throw MakeInputError("command line", args->targets.empty() ? "measured" : "--targets",
+                           "give a measured dataset directory or --targets FILE (exactly one)");
+    if (!args->targets.empty()) {
+      if (args->law != "rft") throw MakeInputError("command line", "--law", "--targets fits its own parameters: no --law");
+      return CalibrateTargets(*args);
+    }
     dataset::CalibrationRequest r;
     r.measured = args->measured, r.out = args->out;
     r.law = args->law == "bekker" ? dataset::CalibrationLaw::kBekker : dataset::CalibrationLaw::kRft;

@@ -8,6 +8,7 @@ packages=(
   libgtest-dev libbenchmark-dev
   libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
   gnuplot-nox
+  libceres-dev
   libsqlite3-dev sqlite3 libopenmpi-dev openmpi-bin libboost-dev
   clang libclang-rt-14-dev
   pybind11-dev python3-dev python3-pybind11 python3-numpy python3-pandas python3-pytest python3-matplotlib python3-yaml

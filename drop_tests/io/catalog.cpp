@@ -330,13 +330,15 @@ std::vector<std::string> CatalogNames(const std::string& kind) {
 }
 
 PadSpec LoadPad(const std::string& name_or_path) {
-  const std::string path = ResolveCatalogFile("pads", name_or_path);
-  const YamlFields f = YamlFields::LoadFile(path);
+  return LoadPad(YamlFields::LoadFile(ResolveCatalogFile("pads", name_or_path)));
+}
+
+PadSpec LoadPad(const YamlFields& f) {
   f.RequireSchemaVersion(1);
   PadSpec pad;
-  pad.source = path;
+  pad.source = f.file();
   const std::string kind = f.StringOr("kind", "axisymmetric");
-  pad.name = f.StringOr("name", fs::path(path).stem().string());
+  pad.name = f.StringOr("name", fs::path(f.file()).stem().string());
   pad.file.description = f.StringOr("description", "");
   if (!IsValidUtf8(pad.name)) f.Fail("name", "the pad name (from the file name) is not valid UTF-8 text");
   if (kind == "axisymmetric") {

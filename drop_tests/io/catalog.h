@@ -15,6 +15,8 @@
 
 namespace touchdown::io {
 
+class YamlFields;
+
 // A pad is `kind: axisymmetric` (a profile, data/pads/flat.yaml) or `kind: mesh` (a mesh file,
 // data/pads/hex.yaml). Every pad gets its rigid body: an axisymmetric pad is revolved
 // (`angular_segments` around the rim, default geom::kDefaultAngularSegments). The pad frame B
@@ -70,6 +72,9 @@ std::string ResolveCatalogFile(const std::string& kind, const std::string& name_
 std::vector<std::string> CatalogNames(const std::string& kind);
 
 PadSpec LoadPad(const std::string& name_or_path);
+// A pad from its file's YAML as read (YamlFields::LoadFile of the resolved file), possibly edited in
+// memory first (calibrate --targets changes a profile constant without touching the file).
+PadSpec LoadPad(const YamlFields& f);
 // A pad file that LoadPad reads back to the same pad (from pad.file; a mesh by its resolved path,
 // relative to `path`'s directory).
 void WritePad(const PadSpec& pad, const std::string& path);

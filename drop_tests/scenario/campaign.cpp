@@ -70,7 +70,7 @@ const io::FieldTable<PaperCheck>& PaperFigureFields() {
 }
 
 PaperCheck ReadCheck(const io::YamlFields& f) {
-  f.RequireOnly({"name", "quantity", "numerator", "denominator", "speed_m_s", "paper", "source"});
+  f.RequireOnly({"name", "quantity", "numerator", "denominator", "speed_m_s", "paper", "source", "used_for_fit", "fit_by"});
   PaperCheck c;
   c.name = f.String("name");
   c.quantity = f.String("quantity");
@@ -88,6 +88,10 @@ PaperCheck ReadCheck(const io::YamlFields& f) {
     io::ReadFields(p, PaperFigureFields(), c);
   }
   c.source = f.StringOr("source", "");
+  if (f.Has("used_for_fit")) c.used_for_fit = f.Bool("used_for_fit");
+  c.fit_by = f.StringOr("fit_by", "");
+  if (c.used_for_fit && c.fit_by.empty()) f.Fail("fit_by", "missing (used_for_fit: true names the fit that used it)");
+  if (!c.used_for_fit && !c.fit_by.empty()) f.Fail("fit_by", "only with used_for_fit: true");
   return c;
 }
 
@@ -107,6 +111,8 @@ void WriteCheck(YAML::Emitter& y, const PaperCheck& c) {
     y << YAML::EndMap;
   }
   if (!c.source.empty()) y << YAML::Key << "source" << YAML::Value << c.source;
+  if (c.used_for_fit)
+    y << YAML::Key << "used_for_fit" << YAML::Value << true << YAML::Key << "fit_by" << YAML::Value << c.fit_by;
   y << YAML::EndMap;
 }
 
@@ -368,6 +374,8 @@ void WriteCampaignSummaries(const CampaignResult& r, const fs::path& staging, co
                      {"simulated", c.simulated}, {"source", c.check.source}};
     if (c.check.paper_experiment > 0) j["paper_experiment"] = c.check.paper_experiment;
     if (c.check.paper_rft > 0) j["paper_rft"] = c.check.paper_rft;
+    j["used_for_fit"] = c.check.used_for_fit;
+    if (c.check.used_for_fit) j["fit_by"] = c.check.fit_by;
     checks.push_back(j);
   }
   const nlohmann::json summary{{"scenario", r.scenario.name}, {"drops", drops}, {"paper_checks", checks}};

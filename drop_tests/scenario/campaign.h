@@ -32,6 +32,10 @@ struct PaperCheck {
   double paper_experiment = 0.0;  // 0 when the paper gives none
   double paper_rft = 0.0;
   std::string source;
+  // Whether this agreement was used to fit a parameter (then it is no evidence), and by what: a
+  // targets file (docs/calibration_targets.md) or the fit named in a data file.
+  bool used_for_fit = false;
+  std::string fit_by;
 };
 
 struct CampaignScenario {

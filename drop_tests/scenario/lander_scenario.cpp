@@ -147,8 +147,11 @@ std::string PlaceLegs(LanderSpec& s) {
 }  // namespace
 
 LanderSpec LoadLanderSpec(const std::string& name_or_path) {
-  const std::string path = io::ResolveCatalogFile("landers", name_or_path);
-  const io::YamlFields f = io::YamlFields::LoadFile(path);
+  return LoadLanderSpec(io::YamlFields::LoadFile(io::ResolveCatalogFile("landers", name_or_path)));
+}
+
+LanderSpec LoadLanderSpec(const io::YamlFields& f) {
+  const std::string& path = f.file();
   f.RequireSchemaVersion(1);
   f.RequireOnly({"schema_version", "name", "description", "total_mass_kg", "cog_height_mm", "body_inertia_kg_m2",
                  "pad", "legs", "provenance"});
@@ -509,10 +512,15 @@ LanderScenario LoadLanderScenario(const std::string& path) {
   if (f.Has("simulation")) ReadSimulation(f.Child("simulation"), s.options);
   if (f.Has("paper")) {
     const io::YamlFields p = f.Child("paper");
-    p.RequireOnly({"ground_case", "roll_pitch_within_deg", "source"});
+    p.RequireOnly({"ground_case", "roll_pitch_within_deg", "source", "used_for_fit", "fit_by"});
     s.paper_ground_case = p.StringOr("ground_case", "");
     if (p.Has("roll_pitch_within_deg"))
-      s.paper = LanderPaperCheck{p.Positive("roll_pitch_within_deg"), p.StringOr("source", "")};
+      s.paper = LanderPaperCheck{p.Positive("roll_pitch_within_deg"), p.StringOr("source", ""),
+                                 p.Has("used_for_fit") && p.Bool("used_for_fit"), p.StringOr("fit_by", "")};
+    const bool used = s.paper && s.paper->used_for_fit, by = p.Has("fit_by");
+    if ((p.Has("used_for_fit") || by) && !s.paper) p.Fail("used_for_fit", "needs roll_pitch_within_deg (the check it marks)");
+    if (used && !by) p.Fail("fit_by", "missing (used_for_fit: true names the fit that used it)");
+    if (by && !used) p.Fail("fit_by", "only with used_for_fit: true");
   }
   if (resolved) RequireResolvedValuesMatch(f, s);
   return s;
@@ -680,7 +688,9 @@ nlohmann::json LanderSummaryJson(const LanderRun& run) {
                         {"simulated_roll_deg", roll},
                         {"simulated_pitch_deg", pitch},
                         {"within_paper_band", std::abs(roll) <= within && std::abs(pitch) <= within},
-                        {"source", run.scenario.paper->source}};
+                        {"source", run.scenario.paper->source},
+                        {"used_for_fit", run.scenario.paper->used_for_fit}};
+    if (run.scenario.paper->used_for_fit) j["paper_check"]["fit_by"] = run.scenario.paper->fit_by;
   }
   return j;
 }
@@ -819,6 +829,8 @@ void WriteResolvedLanderScenario(const LanderScenario& s, const std::string& pat
     if (s.paper) {
       y << YAML::Key << "roll_pitch_within_deg" << YAML::Value << s.paper->roll_pitch_within_deg;
       if (!s.paper->source.empty()) y << YAML::Key << "source" << YAML::Value << s.paper->source;
+      if (s.paper->used_for_fit)
+        y << YAML::Key << "used_for_fit" << YAML::Value << true << YAML::Key << "fit_by" << YAML::Value << s.paper->fit_by;
     }
     y << YAML::EndMap;
   }

@@ -80,6 +80,8 @@ struct LanderInitialSpec {
 struct LanderPaperCheck {
   double roll_pitch_within_deg = 0.0;  // the paper's +-0.5 deg in vacuum; 0 = none
   std::string source;
+  bool used_for_fit = false;  // as a campaign's PaperCheck: used to fit a parameter, by `fit_by`
+  std::string fit_by;
 };
 
 struct LanderScenario {
@@ -112,6 +114,8 @@ struct LanderRun {
 };
 
 LanderSpec LoadLanderSpec(const std::string& name_or_path);
+// A lander from its file's YAML as read, possibly edited in memory first (calibrate --targets).
+LanderSpec LoadLanderSpec(const io::YamlFields& f);
 // The same lander on another pad (a study's pad design): the total mass and the whole lander's CoG
 // height stay, so the body's mass and CoM, and the joints (the pad's joint height above its
 // bottom), follow the pad. Throws InputError naming the pad file when the pad does not fit: the

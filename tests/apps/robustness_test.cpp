@@ -497,6 +497,23 @@ std::vector<Case> Cases() {
                  {{"evals.yaml", Sweep("max_drop_evaluations: -1\n" + kSweepBase + "grid: {impact_speed_m_s: [1]}\n")}}});
   }
   AddExitStatusAndInputCases(c);
+  // Targets YAML (calibrate --targets, docs/calibration_targets.md).
+  {
+    const std::string target = "targets: [{name: d, drop: {pad: flat, soil: fjs1_lp, speed_m_s: 1}, quantity: "
+                               "final_penetration_m, value: 0.01, uncertainty: 0.001, use: fit, source: s}]\n";
+    const auto targets = [&](const std::string& parameter) {
+      return "schema_version: 1\ntype: targets\nparameters: [" + parameter + "]\n" + target;
+    };
+    c.push_back({"targets YAML", "bounds inverted", "calibrate --targets t_bounds.yaml --out t1.yaml",
+                 {{"t_bounds.yaml", targets("{name: z, soil: fjs1_lp, field: zeta_N_cm3, lower: 8, upper: 1, start: 3, source: s}")}}});
+    c.push_back({"targets YAML", "start outside the bounds", "calibrate --targets t_start.yaml --out t2.yaml",
+                 {{"t_start.yaml", targets("{name: z, soil: fjs1_lp, field: zeta_N_cm3, lower: 1, upper: 8, start: 9, source: s}")}}});
+    c.push_back({"targets YAML", "unknown pad field", "calibrate --targets t_field.yaml --out t3.yaml",
+                 {{"t_field.yaml", targets("{name: a, pad: flat, field: profile.a1_per_mm, lower: 1, upper: 8, start: 3, source: s}")}}});
+    c.push_back({"targets YAML", "target names an unknown lander scenario", "calibrate --targets t_lander.yaml --out t4.yaml",
+                 {{"t_lander.yaml", "schema_version: 1\ntype: targets\ntargets: [{name: r, lander: lander_case_Q, quantity: "
+                                    "final_roll_deg, value: 0, uncertainty: 1, use: fit, source: s}]\n"}}});
+  }
   return c;
 }
 

@@ -58,6 +58,8 @@ void ExpectSameCampaign(const CampaignScenario& a, const CampaignScenario& b) {
     EXPECT_EQ(p.paper_experiment, q.paper_experiment);
     EXPECT_EQ(p.paper_rft, q.paper_rft);
     EXPECT_EQ(p.source, q.source);
+    EXPECT_EQ(p.used_for_fit, q.used_for_fit);
+    EXPECT_EQ(p.fit_by, q.fit_by);
   }
 }
 

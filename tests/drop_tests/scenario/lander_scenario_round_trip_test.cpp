@@ -62,6 +62,8 @@ void ExpectSameScenario(const LanderScenario& a, const LanderScenario& b) {
   if (a.paper) {
     EXPECT_EQ(a.paper->roll_pitch_within_deg, b.paper->roll_pitch_within_deg);
     EXPECT_EQ(a.paper->source, b.paper->source);
+    EXPECT_EQ(a.paper->used_for_fit, b.paper->used_for_fit);
+    EXPECT_EQ(a.paper->fit_by, b.paper->fit_by);
   }
   // The setup the run starts from: patches resolved to the same corners, the same soils and pose.
   const LanderSetup p = BuildLanderSetup(a), q = BuildLanderSetup(b);
@@ -110,6 +112,26 @@ TEST_F(LanderScenarioRoundTrip, OptionsAndAttitude) {
   const std::string text = Slurp(Path("out/tilted_1.yaml"));
   EXPECT_NE(text.find("max_step_s: 0.001"), std::string::npos);
   EXPECT_NE(text.find("source: ../tilted.yaml"), std::string::npos);
+}
+
+TEST_F(LanderScenarioRoundTrip, APaperCheckUsedForAFitSaysByWhat) {
+  const std::string head = "schema_version: 1\ntype: lander\nname: fitted\nlander: sutoh2017_lander\n"
+                           "ground: {soil: fjs1_lp}\ninitial: {drop_height_m: 0.1}\n";
+  std::ofstream(Path("fitted.yaml")) << head << "paper: {roll_pitch_within_deg: 0.5, source: s, used_for_fit: true,"
+                                                " fit_by: data/targets/sutoh2017.yaml}\n";
+  fs::create_directories(dir_ / "out");
+  RoundTripLanderScenario(Path("fitted.yaml"), Path("out/fitted_1.yaml"), Path("out/fitted_2.yaml"));
+  const LanderScenario s = LoadLanderScenario(Path("fitted.yaml"));
+  ASSERT_TRUE(s.paper.has_value());
+  EXPECT_TRUE(s.paper->used_for_fit);
+  EXPECT_EQ(s.paper->fit_by, "data/targets/sutoh2017.yaml");
+  EXPECT_FALSE(LoadLanderScenario(io::DataDirectory() + "/scenarios/lander_case_B.yaml").paper->used_for_fit);
+  // used_for_fit needs its fit_by, and fit_by its used_for_fit: true.
+  for (const char* paper : {"{roll_pitch_within_deg: 0.5, used_for_fit: true}", "{roll_pitch_within_deg: 0.5, fit_by: x}",
+                            "{ground_case: A, used_for_fit: false}"}) {
+    std::ofstream(Path("bad.yaml")) << head << "paper: " << paper << "\n";
+    EXPECT_THROW(LoadLanderScenario(Path("bad.yaml")), InputError) << paper;
+  }
 }
 
 TEST_F(LanderScenarioRoundTrip, ResolvedCopyMustMatchItsFiles) {

@@ -79,8 +79,13 @@ TEST_F(PaperCampaign, RatiosPrintedBesideThePapers) {
                 c.check.paper_experiment, c.check.paper_rft);
     simulated[c.check.name] = c.simulated;
   }
-  // The curved pad's a0, a1 were fitted to the paper's RFT ratio of 2.0 (data/pads/curved.yaml).
+  // The curved pad's a0, a1 were fitted to the paper's RFT ratio of 2.0 (data/pads/curved.yaml),
+  // and the check says so; the others are predictions.
   EXPECT_NEAR(simulated["curved_over_flat_penetration_lp"], 2.0, 0.01);
+  for (const CheckOutcome& c : checks) {
+    EXPECT_EQ(c.check.used_for_fit, c.check.name == "curved_over_flat_penetration_lp") << c.check.name;
+    EXPECT_EQ(c.check.fit_by.empty(), !c.check.used_for_fit) << c.check.name;
+  }
   // Derived (not fitted) soils: the LP/CP ratio is reported, and must lie on the right side of 1.
   EXPECT_GT(simulated["lp_over_cp_penetration_flat"], 1.0);
 }

@@ -1,0 +1,341 @@
+#include "drop_tests/targets/targets_file.h"
+
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "drop_tests/io/yaml_fields.h"
+#include "drop_tests/scenario/campaign.h"
+#include "drop_tests/targets/object_edit.h"
+#include "rft/input_error.h"
+#include "rft/units.h"
+
+namespace fs = std::filesystem;
+
+namespace touchdown::targets {
+
+namespace {
+struct QuantityEntry {
+  Quantity quantity;
+  const char* name;
+  bool lander;
+};
+constexpr QuantityEntry kQuantities[] = {
+    {Quantity::kFinalPenetration, "final_penetration_m", false},
+    {Quantity::kPeakForce, "peak_force_N", false},
+    {Quantity::kTimeToRest, "time_to_rest_s", false},
+    {Quantity::kFinalRoll, "final_roll_deg", true},
+    {Quantity::kFinalPitch, "final_pitch_deg", true},
+    {Quantity::kMaxTilt, "max_tilt_deg", true},
+    {Quantity::kPadDepth, "pad_depth_m", true},
+    {Quantity::kPadDepthSpread, "pad_depth_spread", true},
+};
+
+std::string KnownQuantities(bool lander) {
+  std::string s;
+  for (const QuantityEntry& q : kQuantities)
+    if (q.lander == lander) s += (s.empty() ? "" : ", ") + std::string(q.name);
+  return s;
+}
+
+std::string Number(double v) {
+  std::ostringstream o;
+  o << v;
+  return o.str();
+}
+
+// A file a targets file names: beside the targets file when a relative path is found there, else
+// as the catalogue resolves it (a bundled name, or a path from the working directory).
+std::string ResolveNear(const io::YamlFields& f, const std::string& kind, const std::string& key) {
+  const std::string name = f.String(key);
+  const bool is_path = name.find('/') != std::string::npos || name.ends_with(".yaml") || name.ends_with(".yml");
+  if (is_path && fs::path(name).is_relative()) {
+    const fs::path beside = fs::path(f.file()).parent_path() / name;
+    if (fs::is_regular_file(beside)) return beside.lexically_normal().string();
+  }
+  try {
+    return io::ResolveCatalogFile(kind, name);
+  } catch (const InputError& e) {
+    f.Fail(key, e.what());
+  }
+}
+
+std::string Canonical(const std::string& path) { return fs::weakly_canonical(path).string(); }
+
+void ReadBounds(const io::YamlFields& p, Parameter& out) {
+  out.lower = p.Number("lower");
+  out.upper = p.Number("upper");
+  out.start = p.Number("start");
+  if (!(out.lower < out.upper))
+    p.Fail("upper", "must exceed lower (" + Number(out.lower) + "), got " + Number(out.upper));
+  if (out.start < out.lower || out.start > out.upper)
+    p.Fail("start", "must lie within [lower, upper] = [" + Number(out.lower) + ", " + Number(out.upper) + "], got " +
+                        Number(out.start));
+}
+
+Parameter ReadParameter(const io::YamlFields& p) {
+  p.RequireOnly({"name", "soil", "pad", "lander", "field", "lower", "upper", "start", "source"});
+  Parameter out;
+  out.name = p.String("name");
+  out.source = p.String("source");
+  out.field = p.String("field");
+  const int given = int(p.Has("soil")) + int(p.Has("pad")) + int(p.Has("lander"));
+  if (given != 1) p.Fail("soil", "give exactly one of soil, pad, lander (what the parameter changes)");
+  ReadBounds(p, out);
+  if (p.Has("soil")) {
+    out.kind = ParameterKind::kSoilZeta;
+    out.object = p.String("soil");
+    out.file = ResolveNear(p, "soils", "soil");
+    if (out.field != "zeta_N_cm3") p.Fail("field", "a soil parameter is zeta_N_cm3, got '" + out.field + "'");
+    rft::SoilParameters soil;
+    try {
+      soil = io::LoadSoil(out.file);
+    } catch (const InputError& e) {
+      p.Fail("soil", e.what());
+    }
+    out.soil_name = soil.name;
+    out.soil_reference_gravity_m_s2 = soil.reference_gravity_m_s2;
+    if (!(out.lower > 0.0)) p.Fail("lower", "zeta must be positive, got " + Number(out.lower));
+  } else {
+    const bool pad = p.Has("pad");
+    out.kind = pad ? ParameterKind::kPadField : ParameterKind::kLanderField;
+    out.object = p.String(pad ? "pad" : "lander");
+    out.file = Canonical(ResolveNear(p, pad ? "pads" : "landers", pad ? "pad" : "lander"));
+    CheckEditable(out, p);  // the field exists, and the file loads at lower, start and upper
+  }
+  return out;
+}
+
+Quantity ReadQuantity(const io::YamlFields& m, bool lander) {
+  const std::string name = m.String("quantity");
+  for (const QuantityEntry& q : kQuantities)
+    if (name == q.name) {
+      if (q.lander != lander)
+        m.Fail("quantity", "'" + name + "' is not a quantity of a " + (lander ? "lander" : "drop") + " (" +
+                               KnownQuantities(lander) + ")");
+      return q.quantity;
+    }
+  m.Fail("quantity", "unknown quantity '" + name + "' (drops: " + KnownQuantities(false) +
+                         "; landers: " + KnownQuantities(true) + ")");
+}
+}  // namespace
+
+const char* QuantityName(Quantity q) {
+  for (const QuantityEntry& e : kQuantities)
+    if (e.quantity == q) return e.name;
+  return "?";
+}
+
+bool IsLanderQuantity(Quantity q) {
+  for (const QuantityEntry& e : kQuantities)
+    if (e.quantity == q) return e.lander;
+  return false;
+}
+
+std::string Parameter::Address() const {
+  switch (kind) {
+    case ParameterKind::kSoilZeta: return "soil " + object + ": " + field;
+    case ParameterKind::kPadField: return "pad " + object + ": " + field;
+    case ParameterKind::kLanderField: return "lander " + object + ": " + field;
+  }
+  return "";
+}
+
+namespace {
+// Reads the scenarios of the targets, each distinct one once (keyed by what it runs).
+class ScenarioReader {
+ public:
+  explicit ScenarioReader(std::vector<ScenarioRun>& runs) : runs_(runs) {}
+
+  Measure ReadMeasure(const io::YamlFields& m) {
+    const int given = int(m.Has("drop")) + int(m.Has("campaign")) + int(m.Has("lander"));
+    if (given != 1) m.Fail("drop", "give exactly one of drop, campaign, lander (the scenario)");
+    Measure out;
+    if (m.Has("lander")) {
+      out.scenario = Lander(m);
+      out.quantity = ReadQuantity(m, true);
+      if (out.quantity == Quantity::kPadDepth) {
+        out.pad = m.PositiveInt("pad");
+        if (out.pad > lander::kNumLegs) m.Fail("pad", "must be 1..4, got " + std::to_string(out.pad));
+      } else if (m.Has("pad")) {
+        m.Fail("pad", "only pad_depth_m names a pad");
+      }
+      return out;
+    }
+    out.scenario = m.Has("drop") ? Drop(m.Child("drop")) : CampaignRow(m.Child("campaign"));
+    out.quantity = ReadQuantity(m, false);
+    if (m.Has("pad")) m.Fail("pad", "only a lander's pad_depth_m names a pad");
+    return out;
+  }
+
+ private:
+  size_t Add(const std::string& key, ScenarioRun run) {
+    const auto [it, fresh] = index_.emplace(key, runs_.size());
+    if (fresh) runs_.push_back(std::move(run));
+    return it->second;
+  }
+
+  std::shared_ptr<const io::PadSpec> Pad(const std::string& file) {
+    auto& pad = pads_[file];
+    if (!pad) pad = std::make_shared<const io::PadSpec>(io::LoadPad(file));
+    return pad;
+  }
+
+  size_t Drop(const io::YamlFields& d) {
+    d.RequireOnly({"pad", "soil", "speed_m_s", "gravity_m_s2"});
+    ScenarioRun run;
+    run.kind = ScenarioRun::Kind::kDrop;
+    const std::string pad_file = Canonical(ResolveNear(d, "pads", "pad"));
+    const std::string soil_file = Canonical(ResolveNear(d, "soils", "soil"));
+    run.pad = Pad(pad_file);
+    run.soil = io::LoadSoil(soil_file);
+    drop::DropRow row;
+    row.impact_speed_m_s = d.Positive("speed_m_s");
+    row.gravity_m_s2 = d.PositiveOr("gravity_m_s2", 9.81);
+    run.conditions = drop::DropConditionsFor(row, {}, "", d.file() + ": " + d.prefix());
+    run.label = "drop " + run.pad->name + " on " + run.soil.name + " at " + Number(row.impact_speed_m_s) + " m/s, g " +
+                Number(row.gravity_m_s2);
+    return Add("drop|" + pad_file + "|" + soil_file + "|" + Number(row.impact_speed_m_s) + "|" +
+                   Number(row.gravity_m_s2),
+               std::move(run));
+  }
+
+  size_t CampaignRow(const io::YamlFields& c) {
+    c.RequireOnly({"file", "pad", "soil", "speed_m_s"});
+    const std::string file = Canonical(ResolveNear(c, "scenarios", "file"));
+    auto& campaign = campaigns_[file];
+    if (!campaign) {
+      try {
+        campaign = std::make_shared<scenario::CampaignScenario>(scenario::LoadCampaignScenario(file));
+      } catch (const InputError& e) {
+        c.Fail("file", e.what());
+      }
+    }
+    const std::string pad = c.String("pad"), soil = c.String("soil");
+    const double speed = c.Positive("speed_m_s");
+    for (size_t i = 0; i < campaign->cases.size(); ++i) {
+      const scenario::CampaignCase& k = campaign->cases[i];
+      if (k.pad->name != pad || k.soil.name != soil || std::abs(k.conditions.impact_speed_m_s - speed) > 1e-12) continue;
+      ScenarioRun run;
+      run.kind = ScenarioRun::Kind::kCampaign;
+      run.pad = k.pad;
+      run.soil = k.soil;
+      run.conditions = k.conditions;
+      run.label = "campaign " + campaign->name + " row " + k.drop_id;
+      return Add("campaign|" + file + "|" + k.drop_id, std::move(run));
+    }
+    c.Fail("pad", "campaign " + file + " has no row with pad '" + pad + "', soil '" + soil + "' and speed " +
+                      Number(speed) + " m/s");
+  }
+
+  size_t Lander(const io::YamlFields& m) {
+    const std::string file = Canonical(ResolveNear(m, "scenarios", "lander"));
+    ScenarioRun run;
+    run.kind = ScenarioRun::Kind::kLander;
+    try {
+      run.lander = std::make_shared<const scenario::LanderScenario>(scenario::LoadLanderScenario(file));
+    } catch (const InputError& e) {
+      m.Fail("lander", e.what());
+    }
+    run.label = "lander " + run.lander->name;
+    return Add("lander|" + file, std::move(run));
+  }
+
+  std::vector<ScenarioRun>& runs_;
+  std::map<std::string, size_t> index_;
+  std::map<std::string, std::shared_ptr<const io::PadSpec>> pads_;
+  std::map<std::string, std::shared_ptr<scenario::CampaignScenario>> campaigns_;
+};
+
+Target ReadTarget(const io::YamlFields& t, ScenarioReader& reader) {
+  t.RequireOnly({"name", "drop", "campaign", "lander", "quantity", "pad", "ratio", "value", "at_most", "at_least",
+                 "uncertainty", "use", "source"});
+  Target out;
+  out.name = t.String("name");
+  out.source = t.String("source");
+  if (t.Has("ratio")) {
+    for (const char* k : {"drop", "campaign", "lander", "quantity", "pad"})
+      if (t.Has(k)) t.Fail(k, "a ratio target gives its scenarios in ratio.numerator and ratio.denominator");
+    const io::YamlFields r = t.Child("ratio");
+    r.RequireOnly({"numerator", "denominator"});
+    out.measure = reader.ReadMeasure(r.Child("numerator"));
+    out.denominator = reader.ReadMeasure(r.Child("denominator"));
+  } else {
+    out.measure = reader.ReadMeasure(t);
+  }
+  if (t.Has("value")) out.value = t.Number("value");
+  if (t.Has("at_most")) out.at_most = t.Number("at_most");
+  if (t.Has("at_least")) out.at_least = t.Number("at_least");
+  if (out.value && (out.at_most || out.at_least)) t.Fail("value", "give a value or bounds (at_most, at_least), not both");
+  if (!out.value && !out.at_most && !out.at_least) t.Fail("value", "missing (a value, or at_most and/or at_least)");
+  if (out.at_most && out.at_least && !(*out.at_least < *out.at_most))
+    t.Fail("at_most", "must exceed at_least (" + Number(*out.at_least) + "), got " + Number(*out.at_most));
+  out.uncertainty = t.Positive("uncertainty");
+  const std::string use = t.String("use");
+  if (use != "fit" && use != "predict") t.Fail("use", "must be 'fit' or 'predict', got '" + use + "'");
+  out.fit = use == "fit";
+  return out;
+}
+
+void ReadSettings(const io::YamlFields& f, FitSettings& s) {
+  f.RequireOnly({"relative_step", "max_iterations", "confidence"});
+  if (f.Has("relative_step")) s.relative_step = f.Positive("relative_step");
+  if (s.relative_step > 0.1) f.Fail("relative_step", "must be at most 0.1, got " + Number(s.relative_step));
+  if (f.Has("max_iterations")) s.max_iterations = f.PositiveInt("max_iterations");
+  if (f.Has("confidence")) s.confidence = f.Positive("confidence");
+  if (s.confidence < 0.5 || s.confidence >= 1.0) f.Fail("confidence", "must be in [0.5, 1), got " + Number(s.confidence));
+}
+
+void CheckUnique(const io::YamlFields& f, const std::vector<std::string>& names, const char* list) {
+  std::set<std::string> seen;
+  for (size_t i = 0; i < names.size(); ++i)
+    if (!seen.insert(names[i]).second)
+      f.Fail(std::string(list) + "[" + std::to_string(i) + "].name", "'" + names[i] + "' is given twice");
+}
+}  // namespace
+
+TargetsFile LoadTargetsFile(const std::string& path) {
+  const io::YamlFields f = io::YamlFields::LoadFile(path);
+  f.RequireSchemaVersion(1);
+  f.RequireOnly({"schema_version", "type", "name", "description", "parameters", "targets", "fit", "provenance"});
+  if (f.String("type") != "targets") f.Fail("type", "must be 'targets', got '" + f.String("type") + "'");
+  TargetsFile out;
+  out.source = path;
+  out.name = f.StringOr("name", fs::path(path).stem().string());
+  out.description = f.StringOr("description", "");
+  if (f.Has("fit")) ReadSettings(f.Child("fit"), out.settings);
+  std::vector<std::string> names, addresses;
+  if (f.Has("parameters"))
+    for (const io::YamlFields& p : f.List("parameters")) {
+      out.parameters.push_back(ReadParameter(p));
+      names.push_back(out.parameters.back().name);
+      addresses.push_back(out.parameters.back().file + "|" + out.parameters.back().field);
+    }
+  CheckUnique(f, names, "parameters");
+  CheckUnique(f, addresses, "parameters");
+  ScenarioReader reader(out.scenarios);
+  names.clear();
+  for (const io::YamlFields& t : f.List("targets")) {
+    out.targets.push_back(ReadTarget(t, reader));
+    names.push_back(out.targets.back().name);
+  }
+  CheckUnique(f, names, "targets");
+  for (size_t i = 0; i < out.parameters.size(); ++i)
+    if (!ChangesAnyScenario(out.parameters[i], out.scenarios))
+      f.Fail("parameters[" + std::to_string(i) + "]", "'" + out.parameters[i].Address() +
+                                                           "' changes none of the targets' scenarios");
+  return out;
+}
+
+std::string Target::Describe(const std::vector<ScenarioRun>& scenarios) const {
+  auto one = [&](const Measure& m) {
+    std::string s = std::string(QuantityName(m.quantity));
+    if (m.quantity == Quantity::kPadDepth) s += " of pad " + std::to_string(m.pad);
+    return s + " (" + scenarios[m.scenario].label + ")";
+  };
+  return denominator ? one(measure) + " / " + one(*denominator) : one(measure);
+}
+
+}  // namespace touchdown::targets

@@ -1,0 +1,185 @@
+#include "drop_tests/targets/targets_fit.h"
+
+#include <cmath>
+#include <exception>
+#include <memory>
+
+#include <boost/math/distributions/normal.hpp>
+#include <ceres/ceres.h>
+
+#include "drop_tests/targets/target_evaluation.h"
+
+namespace touchdown::targets {
+
+namespace {
+// The fit runs on u = 1 + (x - lower) / (upper - lower), in [1, 2] for every parameter: the
+// trust region and the difference steps (relative_step * u) then mean the same share of every
+// parameter's range, whatever its unit (N/cm^3, 1/mm, mm). (Not [0, 1]: a relative step at 0
+// would vanish.)
+double ToFit(const Parameter& p, double x) { return 1.0 + (x - p.lower) / (p.upper - p.lower); }
+double FromFit(const Parameter& p, double u) {
+  const double range = p.upper - p.lower;
+  if (u >= 2.0) return p.upper + (u - 2.0) * range;  // exactly the bound at u = 2 (and at u = 1 below)
+  return p.lower + (u - 1.0) * range;
+}
+
+// The fitted targets' residuals for Ceres. Ceres is C code at heart for errors: an exception of a
+// simulation is kept and rethrown after Solve (Ceres sees a failed evaluation and stops).
+class FitResiduals {
+ public:
+  FitResiduals(const TargetsFile& file, TargetEvaluator& evaluator, std::exception_ptr& failure)
+      : file_(file), evaluator_(evaluator), failure_(failure) {}
+
+  bool operator()(double const* const* parameters, double* residuals) const {
+    if (failure_) return false;
+    try {
+      std::vector<double> values(file_.parameters.size());
+      for (size_t i = 0; i < values.size(); ++i) values[i] = FromFit(file_.parameters[i], parameters[0][i]);
+      const std::vector<ScenarioOutcome> outcomes = evaluator_.Run(values, true);
+      int k = 0;
+      for (const Target& t : file_.targets)
+        if (t.fit) residuals[k++] = Residual(t, Simulated(t, outcomes));
+      return true;
+    } catch (...) {
+      failure_ = std::current_exception();
+      return false;
+    }
+  }
+
+ private:
+  const TargetsFile& file_;
+  TargetEvaluator& evaluator_;
+  std::exception_ptr& failure_;
+};
+
+int FittedTargets(const TargetsFile& file) {
+  int n = 0;
+  for (const Target& t : file.targets) n += t.fit ? 1 : 0;
+  return n;
+}
+
+ParameterResult::Bound AtBound(const Parameter& p, double v) {
+  const double tolerance = 1e-9 * (p.upper - p.lower);
+  if (v <= p.lower + tolerance) return ParameterResult::Bound::kLower;
+  if (v >= p.upper - tolerance) return ParameterResult::Bound::kUpper;
+  return ParameterResult::Bound::kNone;
+}
+
+// Whether each parameter moves a fitted residual at the solution (a zero column of the Jacobian:
+// every target it changes is inside its bound there).
+std::vector<bool> MovesResiduals(ceres::Problem& problem, size_t n) {
+  ceres::CRSMatrix jacobian;
+  problem.Evaluate(ceres::Problem::EvaluateOptions(), nullptr, nullptr, nullptr, &jacobian);
+  std::vector<bool> moves(n, false);
+  for (size_t k = 0; k < jacobian.values.size(); ++k)
+    if (jacobian.values[k] != 0.0) moves[size_t(jacobian.cols[k])] = true;
+  return moves;
+}
+
+// Ceres' covariance over the parameters free at the solution (not at a bound, moving a residual).
+void AddIntervals(ceres::Problem& problem, std::vector<double>& x, const TargetsFile& file,
+                  std::vector<ParameterResult>& out) {
+  const size_t n = x.size();
+  const std::vector<bool> moves = MovesResiduals(problem, n);
+  std::vector<int> held;
+  for (size_t i = 0; i < n; ++i) {
+    if (out[i].at_bound != ParameterResult::Bound::kNone) {
+      out[i].interval_note = "at a bound: no symmetric interval";
+      held.push_back(int(i));
+    } else if (!moves[i]) {
+      out[i].interval_note = "not determined: every fitted target it changes is inside its bound";
+      held.push_back(int(i));
+    }
+  }
+  if (held.size() == n) return;
+  if (!held.empty()) problem.SetManifold(x.data(), new ceres::SubsetManifold(int(n), held));
+  ceres::Covariance::Options options;
+  options.algorithm_type = ceres::DENSE_SVD;
+  options.num_threads = 1;
+  ceres::Covariance covariance(options);
+  std::vector<std::pair<const double*, const double*>> blocks{{x.data(), x.data()}};
+  std::vector<double> c(n * n, 0.0);
+  if (!covariance.Compute(blocks, &problem) || !covariance.GetCovarianceBlock(x.data(), x.data(), c.data())) {
+    for (ParameterResult& p : out)
+      if (p.interval_note.empty()) p.interval_note = "not determined: the fitted targets do not fix these parameters jointly";
+    return;
+  }
+  const double z = boost::math::quantile(boost::math::normal(), 0.5 + 0.5 * file.settings.confidence);
+  for (size_t i = 0; i < n; ++i) {
+    if (!out[i].interval_note.empty()) continue;
+    out[i].sigma = std::sqrt(c[i * n + i]) * (file.parameters[i].upper - file.parameters[i].lower);
+    out[i].low = out[i].value - z * *out[i].sigma;
+    out[i].high = out[i].value + z * *out[i].sigma;
+  }
+}
+
+void Solve(const TargetsFile& file, TargetEvaluator& evaluator, std::vector<double>& x, TargetsFitResult& result) {
+  std::exception_ptr failure;
+  ceres::NumericDiffOptions diff;
+  diff.relative_step_size = file.settings.relative_step;
+  auto* cost = new ceres::DynamicNumericDiffCostFunction<FitResiduals, ceres::CENTRAL>(
+      new FitResiduals(file, evaluator, failure), ceres::TAKE_OWNERSHIP, diff);
+  cost->AddParameterBlock(int(x.size()));
+  cost->SetNumResiduals(FittedTargets(file));
+  ceres::Problem problem;
+  problem.AddResidualBlock(cost, nullptr, x.data());
+  for (size_t i = 0; i < x.size(); ++i) {
+    problem.SetParameterLowerBound(x.data(), int(i), 1.0);
+    problem.SetParameterUpperBound(x.data(), int(i), 2.0);
+  }
+  ceres::Solver::Options options;
+  options.linear_solver_type = ceres::DENSE_QR;
+  // A trust region in u: the first step moves at most a tenth of each range (Ceres' default, 1e4,
+  // lets the first step jump to a corner of the box, where the projected steps then stall).
+  options.trust_region_strategy_type = ceres::DOGLEG;
+  options.jacobi_scaling = false;
+  options.initial_trust_region_radius = 0.1;
+  options.max_num_iterations = file.settings.max_iterations;
+  options.num_threads = 1;
+  options.logging_type = ceres::SILENT;
+  options.function_tolerance = 1e-12;
+  options.parameter_tolerance = 1e-10;
+  options.gradient_tolerance = 1e-14;
+  ceres::Solver::Summary summary;
+  ceres::Solve(options, &problem, &summary);
+  if (failure) std::rethrow_exception(failure);
+  result.iterations = int(summary.iterations.size()) - 1;
+  result.termination = summary.message;
+  result.converged = summary.termination_type == ceres::CONVERGENCE;
+  for (size_t i = 0; i < x.size(); ++i) {
+    result.parameters[i].value = FromFit(file.parameters[i], x[i]);
+    result.parameters[i].at_bound = AtBound(file.parameters[i], result.parameters[i].value);
+  }
+  AddIntervals(problem, x, file, result.parameters);
+  if (failure) std::rethrow_exception(failure);
+  for (size_t i = 0; i < x.size(); ++i) x[i] = result.parameters[i].value;
+}
+}  // namespace
+
+TargetsFitResult FitTargets(const TargetsFile& file, const TargetsFitOptions& options) {
+  TargetEvaluator evaluator(file, options.threads);
+  TargetsFitResult result;
+  std::vector<double> x;
+  for (const Parameter& p : file.parameters) {
+    x.push_back(ToFit(p, p.start));
+    result.parameters.push_back({p.start, AtBound(p, p.start), {}, {}, {}, ""});
+  }
+  if (x.empty() || FittedTargets(file) == 0) {
+    result.termination = "no fit: " + std::string(x.empty() ? "no free parameters" : "no target has use: fit");
+    for (ParameterResult& p : result.parameters) p.interval_note = "not fitted";
+    for (size_t i = 0; i < x.size(); ++i) x[i] = file.parameters[i].start;
+  } else {
+    Solve(file, evaluator, x, result);
+  }
+  const std::vector<ScenarioOutcome> outcomes = evaluator.Run(x, false);
+  for (const Target& t : file.targets) {
+    const double simulated = Simulated(t, outcomes);
+    const double r = Residual(t, simulated);
+    result.targets.push_back({simulated, r});
+    if (t.fit) result.cost += 0.5 * r * r;
+  }
+  result.scenario_runs = evaluator.scenario_runs();
+  return result;
+}
+
+}  // namespace touchdown::targets

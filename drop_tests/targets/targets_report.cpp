@@ -1,0 +1,176 @@
+// The report of a targets fit: JSON, a short table, and the model file of the fitted zeta.
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+#include <yaml-cpp/yaml.h>
+
+#include "drop_tests/io/paths_in_outputs.h"
+#include "drop_tests/targets/targets_fit.h"
+#include "rft/units.h"
+
+namespace touchdown::targets {
+
+namespace {
+const char* BoundName(ParameterResult::Bound b) {
+  switch (b) {
+    case ParameterResult::Bound::kLower: return "lower";
+    case ParameterResult::Bound::kUpper: return "upper";
+    case ParameterResult::Bound::kNone: break;
+  }
+  return "none";
+}
+
+std::string TargetText(const Target& t) {
+  char buffer[96];
+  if (t.value) {
+    std::snprintf(buffer, sizeof buffer, "%.6g", *t.value);
+  } else if (t.at_most && t.at_least) {
+    std::snprintf(buffer, sizeof buffer, "[%.6g, %.6g]", *t.at_least, *t.at_most);
+  } else if (t.at_most) {
+    std::snprintf(buffer, sizeof buffer, "<= %.6g", *t.at_most);
+  } else {
+    std::snprintf(buffer, sizeof buffer, ">= %.6g", *t.at_least);
+  }
+  return buffer;
+}
+
+std::string ApplyHint(const Parameter& p) {
+  switch (p.kind) {
+    case ParameterKind::kSoilZeta: return "in this model file: --model MODEL.yaml";
+    case ParameterKind::kPadField:
+      return "not in the model file: set " + p.field + " in a copy of pad " + p.object + "'s file and name that copy";
+    case ParameterKind::kLanderField:
+      return "not in the model file: set " + p.field + " in a copy of lander " + p.object +
+             "'s file and name that copy";
+  }
+  return "";
+}
+
+std::vector<std::string> TargetNames(const TargetsFile& file, bool fit) {
+  std::vector<std::string> names;
+  for (const Target& t : file.targets)
+    if (t.fit == fit) names.push_back(t.name);
+  return names;
+}
+}  // namespace
+
+nlohmann::json TargetsReportJson(const TargetsFile& file, const TargetsFitResult& fit) {
+  nlohmann::json params = nlohmann::json::array(), targets = nlohmann::json::array();
+  for (size_t i = 0; i < file.parameters.size(); ++i) {
+    const Parameter& p = file.parameters[i];
+    const ParameterResult& r = fit.parameters[i];
+    nlohmann::json j{{"name", p.name},   {"address", p.Address()}, {"value", r.value}, {"lower", p.lower},
+                     {"upper", p.upper}, {"start", p.start},       {"at_bound", BoundName(r.at_bound)},
+                     {"source", p.source}};
+    if (r.sigma) {
+      j["sigma"] = *r.sigma;
+      j["interval"] = {*r.low, *r.high};
+    } else {
+      j["interval_note"] = r.interval_note;
+    }
+    params.push_back(j);
+  }
+  for (size_t i = 0; i < file.targets.size(); ++i) {
+    const Target& t = file.targets[i];
+    nlohmann::json j{{"name", t.name},
+                     {"what", t.Describe(file.scenarios)},
+                     {"use", t.fit ? "fit" : "predict"},
+                     {"uncertainty", t.uncertainty},
+                     {"simulated", fit.targets[i].simulated},
+                     {"residual", fit.targets[i].residual},
+                     {"source", t.source}};
+    if (t.value) j["value"] = *t.value;
+    if (t.at_most) j["at_most"] = *t.at_most;
+    if (t.at_least) j["at_least"] = *t.at_least;
+    targets.push_back(j);
+  }
+  return {{"targets_file", file.source},
+          {"name", file.name},
+          {"method", "bounded least squares (Ceres, Levenberg-Marquardt, central differences, relative step " +
+                         std::to_string(file.settings.relative_step) + ") of (simulated - value) / uncertainty"},
+          {"interval_method", "Ceres covariance of the normalised residuals, (J^T J)^-1 at the solution, value -+ z sigma"},
+          {"confidence", file.settings.confidence},
+          {"parameters", params},
+          {"targets", targets},
+          {"cost", fit.cost},
+          {"iterations", fit.iterations},
+          {"scenario_runs", fit.scenario_runs},
+          {"converged", fit.converged},
+          {"termination", fit.termination}};
+}
+
+std::string TargetsReportTable(const TargetsFile& file, const TargetsFitResult& fit) {
+  std::ostringstream o;
+  char line[256];
+  std::snprintf(line, sizeof line, "%-22s %12s %12s %12s  %-6s %s\n", "parameter", "value", "lower", "upper", "bound",
+                "interval");
+  o << line;
+  for (size_t i = 0; i < file.parameters.size(); ++i) {
+    const Parameter& p = file.parameters[i];
+    const ParameterResult& r = fit.parameters[i];
+    char interval[96];
+    if (r.sigma)
+      std::snprintf(interval, sizeof interval, "[%.6g, %.6g]", *r.low, *r.high);
+    else
+      std::snprintf(interval, sizeof interval, "(%s)", r.interval_note.c_str());
+    std::snprintf(line, sizeof line, "%-22s %12.6g %12.6g %12.6g  %-6s %s\n", p.name.c_str(), r.value, p.lower, p.upper,
+                  BoundName(r.at_bound), interval);
+    o << line;
+  }
+  std::snprintf(line, sizeof line, "\n%-30s %-8s %16s %12s %10s\n", "target", "use", "value", "simulated", "residual");
+  o << line;
+  for (size_t i = 0; i < file.targets.size(); ++i) {
+    const Target& t = file.targets[i];
+    std::snprintf(line, sizeof line, "%-30s %-8s %16s %12.6g %10.4g\n", t.name.c_str(), t.fit ? "fit" : "predict",
+                  TargetText(t).c_str(), fit.targets[i].simulated, fit.targets[i].residual);
+    o << line;
+  }
+  std::snprintf(line, sizeof line, "\ncost %.6g after %d iterations, %d simulations: %s\n", fit.cost, fit.iterations,
+                fit.scenario_runs, fit.termination.c_str());
+  o << line;
+  return o.str();
+}
+
+model::ModelFile TargetsModel(const TargetsFile& file, const TargetsFitResult& fit, const std::string& name,
+                              const std::string& output_dir) {
+  std::vector<double> values;
+  for (const ParameterResult& r : fit.parameters) values.push_back(r.value);
+  model::ModelFile m;
+  m.name = name;
+  m.description = "zeta per soil fitted to the scalar targets of " + file.name;
+  for (size_t i = 0; i < file.parameters.size(); ++i) {
+    const Parameter& p = file.parameters[i];
+    if (p.kind != ParameterKind::kSoilZeta) continue;
+    model::SoilOverride& o = m.soils[p.soil_name];
+    o.zeta_N_m3 = units::ZetaFromN_cm3(values[i]);
+    o.reference_gravity_m_s2 = p.soil_reference_gravity_m_s2;
+    if (fit.parameters[i].sigma) {
+      o.zeta_low_N_m3 = units::ZetaFromN_cm3(*fit.parameters[i].low);
+      o.zeta_high_N_m3 = units::ZetaFromN_cm3(*fit.parameters[i].high);
+      o.confidence = file.settings.confidence;
+    }
+  }
+  YAML::Emitter y;
+  y.SetDoublePrecision(10);
+  y << YAML::BeginMap << YAML::Key << "fit" << YAML::Value
+    << "touchdown calibrate --targets " + std::filesystem::path(file.source).filename().string() +
+           ": bounded least squares of (simulated - value) / uncertainty (Ceres)";
+  y << YAML::Key << "targets_file" << YAML::Value << io::PathForOutput(file.source, output_dir);
+  y << YAML::Key << "targets_used" << YAML::Value << YAML::Flow << TargetNames(file, true);
+  y << YAML::Key << "targets_predicted" << YAML::Value << YAML::Flow << TargetNames(file, false);
+  y << YAML::Key << "parameters" << YAML::Value << YAML::BeginMap;
+  for (size_t i = 0; i < file.parameters.size(); ++i) {
+    const Parameter& p = file.parameters[i];
+    y << YAML::Key << p.name << YAML::Value << YAML::BeginMap << YAML::Key << "address" << YAML::Value << p.Address()
+      << YAML::Key << "value" << YAML::Value << values[i] << YAML::Key << "bounds" << YAML::Value << YAML::Flow
+      << YAML::BeginSeq << p.lower << p.upper << YAML::EndSeq << YAML::Key << "at_bound" << YAML::Value
+      << BoundName(fit.parameters[i].at_bound) << YAML::Key << "apply" << YAML::Value << ApplyHint(p) << YAML::EndMap;
+  }
+  y << YAML::EndMap << YAML::EndMap;
+  m.provenance_yaml = y.c_str();
+  return m;
+}
+
+}  // namespace touchdown::targets

@@ -1,0 +1,109 @@
+// Loading a targets file: scenarios shared between targets, campaign rows and lander files found,
+// and every bad entry refused at load with its file, field and value.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "drop_tests/targets/targets_file.h"
+#include "rft/input_error.h"
+#include "tests/scratch_dir_test.h"
+
+namespace touchdown::targets {
+namespace {
+
+const char* kGoodParameter =
+    "  - {name: zeta_lp, soil: fjs1_lp, field: zeta_N_cm3, lower: 1.0, upper: 8.0, start: 3.0, source: test}\n";
+const char* kGoodTarget =
+    "  - {name: depth, drop: {pad: flat, soil: fjs1_lp, speed_m_s: 1.0}, quantity: final_penetration_m,"
+    " value: 0.02, uncertainty: 0.001, use: fit, source: test}\n";
+
+class TargetsFileLoad : public testing_scratch::ScratchDirTest {
+ protected:
+  std::string WriteTargets(const std::string& parameters, const std::string& targets) {
+    return Write("t.yaml", "schema_version: 1\ntype: targets\nparameters:\n" + parameters + "targets:\n" + targets);
+  }
+  // The one-line message of the InputError the file raises ("" if it loads).
+  std::string ErrorOf(const std::string& parameters, const std::string& targets) {
+    try {
+      LoadTargetsFile(WriteTargets(parameters, targets));
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "";
+  }
+};
+
+TEST_F(TargetsFileLoad, SharesScenariosAndFindsCampaignRowsAndLanders) {
+  const std::string campaign = std::string(TOUCHDOWN_SOURCE_DIR) + "/data/scenarios/sutoh2017_single_footpad.yaml";
+  const TargetsFile f = LoadTargetsFile(WriteTargets(
+      std::string(kGoodParameter) +
+          "  - {name: r, lander: sutoh2017_lander, field: legs.joint_radius_mm, lower: 200, upper: 400, start: 300, source: t}\n",
+      std::string(kGoodTarget) +
+          "  - {name: force, drop: {pad: flat, soil: fjs1_lp, speed_m_s: 1.0}, quantity: peak_force_N, at_most: 900,"
+          " uncertainty: 10, use: predict, source: test}\n"
+          "  - {name: row, campaign: {file: " + campaign + ", pad: curved, soil: fjs1_lp, speed_m_s: 1.5},"
+          " quantity: final_penetration_m, at_least: 0.01, at_most: 0.05, uncertainty: 0.001, use: fit, source: test}\n"
+          "  - {name: roll, lander: lander_case_B, quantity: final_roll_deg, at_least: -0.5, at_most: 0.5,"
+          " uncertainty: 0.1, use: fit, source: test}\n"
+          "  - {name: pad3, lander: lander_case_B, quantity: pad_depth_m, pad: 3, value: 0.02, uncertainty: 0.001,"
+          " use: predict, source: test}\n"));
+  ASSERT_EQ(f.scenarios.size(), 3u);  // the drop once, the campaign row, the lander once
+  EXPECT_EQ(f.targets[0].measure.scenario, f.targets[1].measure.scenario);
+  EXPECT_EQ(f.scenarios[1].kind, ScenarioRun::Kind::kCampaign);
+  EXPECT_EQ(f.scenarios[1].pad->name, "curved");
+  EXPECT_DOUBLE_EQ(f.scenarios[1].conditions.impact_speed_m_s, 1.5);
+  EXPECT_EQ(f.scenarios[2].kind, ScenarioRun::Kind::kLander);
+  EXPECT_EQ(f.targets[4].measure.pad, 3);
+  EXPECT_FALSE(f.targets[1].fit);
+  EXPECT_EQ(f.parameters[1].kind, ParameterKind::kLanderField);
+  EXPECT_EQ(f.parameters[1].Address(), "lander sutoh2017_lander: legs.joint_radius_mm");
+}
+
+TEST_F(TargetsFileLoad, RefusesBadEntriesNamingFileFieldAndValue) {
+  const std::string p = kGoodParameter, t = kGoodTarget;
+  struct Case {
+    std::string parameters, targets, field, value;
+  };
+  const std::vector<Case> cases{
+      {"  - {name: z, soil: fjs1_xx, field: zeta_N_cm3, lower: 1, upper: 8, start: 3, source: s}\n", t,
+       "parameters[0].soil", "fjs1_xx"},
+      {"  - {name: z, pad: curved, field: profile.a9_per_mm, lower: 1, upper: 8, start: 3, source: s}\n", t,
+       "parameters[0].field", "profile.a9_per_mm"},
+      {"  - {name: z, soil: fjs1_lp, field: zeta_N_cm3, lower: 8, upper: 1, start: 3, source: s}\n", t,
+       "parameters[0].upper", "1"},
+      {"  - {name: z, soil: fjs1_lp, field: zeta_N_cm3, lower: 1, upper: 8, start: 9, source: s}\n", t,
+       "parameters[0].start", "9"},
+      {"  - {name: z, pad: curved, field: profile.a1_per_mm, lower: -0.01, upper: 0.08, start: 0.03, source: s}\n",
+       "  - {name: d, drop: {pad: curved, soil: fjs1_lp, speed_m_s: 1.0}, quantity: final_penetration_m, value: 0.02,"
+       " uncertainty: 0.001, use: fit, source: s}\n",
+       "parameters[0].lower", "-0.01"},
+      {"  - {name: z, lander: sutoh2017_lander, field: legs.joint_radius_mm, lower: 200, upper: 400, start: 300, source: s}\n",
+       t, "parameters[0]", "legs.joint_radius_mm"},  // changes none of the targets' scenarios
+      {p, "  - {name: d, lander: lander_case_Q, quantity: final_roll_deg, value: 0, uncertainty: 1, use: fit, source: s}\n",
+       "targets[0].lander", "lander_case_Q"},
+      {p, "  - {name: d, campaign: {file: sutoh2017_single_footpad, pad: flat, soil: fjs1_lp, speed_m_s: 1.2},"
+          " quantity: final_penetration_m, value: 0.02, uncertainty: 0.001, use: fit, source: s}\n",
+       "targets[0].campaign.pad", "1.2"},
+      {p, "  - {name: d, drop: {pad: flat, soil: fjs1_lp, speed_m_s: 1.0}, quantity: final_roll_deg, value: 0,"
+          " uncertainty: 1, use: fit, source: s}\n",
+       "targets[0].quantity", "final_roll_deg"},
+      {p, "  - {name: d, drop: {pad: flat, soil: fjs1_lp, speed_m_s: 1.0}, quantity: final_penetration_m, value: 0.02,"
+          " uncertainty: 0.001, use: maybe, source: s}\n",
+       "targets[0].use", "maybe"},
+      {p, "  - {name: d, drop: {pad: flat, soil: fjs1_lp, speed_m_s: 1.0}, quantity: final_penetration_m, at_least: 0.03,"
+          " at_most: 0.02, uncertainty: 0.001, use: fit, source: s}\n",
+       "targets[0].at_most", "0.02"},
+      {p, t + t, "targets[1].name", "depth"},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.field);
+    const std::string message = ErrorOf(c.parameters, c.targets);
+    EXPECT_NE(message.find("t.yaml"), std::string::npos) << message;
+    EXPECT_NE(message.find(c.field), std::string::npos) << message;
+    EXPECT_NE(message.find(c.value), std::string::npos) << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  }
+}
+
+}  // namespace
+}  // namespace touchdown::targets

@@ -1,0 +1,189 @@
+// The targets fit on rig drops: a known answer recovered from another start, bounds, ratios,
+// predicted targets, a parameter held at its bound, and results independent of threads.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "drop_tests/targets/target_evaluation.h"
+#include "drop_tests/targets/targets_fit.h"
+#include "rft/units.h"
+#include "tests/scratch_dir_test.h"
+
+namespace touchdown::targets {
+namespace {
+
+// A rig drop's result as the targets see it: zeta in N/cm^3 at the soil's reference gravity.
+drop::PadDrop RigDropAtZeta(const std::string& pad, const std::string& soil, double zeta_N_cm3, double speed = 1.0) {
+  drop::DropConditions c;
+  c.impact_speed_m_s = speed;
+  c.zeta_N_m3 = units::ZetaFromN_cm3(zeta_N_cm3);
+  return drop::RunPadDrop(io::LoadPad(pad), io::LoadSoil(soil), c);
+}
+
+std::string Num(double v) {
+  char b[40];
+  std::snprintf(b, sizeof b, "%.17g", v);
+  return b;
+}
+
+const char* kZetaLp =
+    "  - {name: zeta_lp, soil: fjs1_lp, field: zeta_N_cm3, lower: 1.0, upper: 8.0, start: 4.0, source: test}\n";
+
+std::string DropTarget(const std::string& name, const std::string& pad, const std::string& soil,
+                       const std::string& quantity, const std::string& bound, const std::string& use = "fit") {
+  return "  - {name: " + name + ", drop: {pad: " + pad + ", soil: " + soil + ", speed_m_s: 1.0}, quantity: " +
+         quantity + ", " + bound + ", use: " + use + ", source: test}\n";
+}
+
+class TargetsFit : public testing_scratch::ScratchDirTest {
+ protected:
+  TargetsFile Load(const std::string& parameters, const std::string& targets) {
+    return LoadTargetsFile(Write("targets.yaml", "schema_version: 1\ntype: targets\nname: t\nparameters:\n" +
+                                                     parameters + "targets:\n" + targets));
+  }
+};
+
+TEST_F(TargetsFit, RecoversTheZetaThatMadeItsTargetsFromAnotherStart) {
+  const drop::PadDrop truth = RigDropAtZeta("flat", "fjs1_lp", 2.5);
+  const double d = truth.result.final_penetration_m, f = truth.result.peak_force_N;
+  const TargetsFile file =
+      Load(kZetaLp, DropTarget("depth", "flat", "fjs1_lp", "final_penetration_m",
+                               "value: " + Num(d) + ", uncertainty: " + Num(0.01 * d)) +
+                        DropTarget("force", "flat", "fjs1_lp", "peak_force_N",
+                                   "value: " + Num(f) + ", uncertainty: " + Num(0.01 * f)));
+  const TargetsFitResult fit = FitTargets(file);
+  ASSERT_TRUE(fit.converged) << fit.termination;
+  EXPECT_NEAR(fit.parameters[0].value, 2.5, 1e-6);
+  EXPECT_EQ(fit.parameters[0].at_bound, ParameterResult::Bound::kNone);
+  EXPECT_NEAR(fit.targets[0].simulated, d, 1e-9 * d);
+  EXPECT_LT(std::abs(fit.targets[0].residual), 1e-5);
+  EXPECT_LT(fit.cost, 1e-10);
+  // The interval: (J^T J)^-1 of two 1 % targets; depth ~ zeta^-1/2 near the stop, so sigma is
+  // well under 1 % of zeta and positive.
+  ASSERT_TRUE(fit.parameters[0].sigma.has_value());
+  EXPECT_GT(*fit.parameters[0].sigma, 1e-4 * 2.5);
+  EXPECT_LT(*fit.parameters[0].sigma, 0.02 * 2.5);
+  EXPECT_NEAR(*fit.parameters[0].high - 2.5, 1.959963985 * *fit.parameters[0].sigma, 1e-6);
+}
+
+TEST_F(TargetsFit, RecoversZetaAndACurvedProfileConstantJointly) {
+  // The curved pad at a coarser profile and body (each evaluation reloads it: the test stays fast);
+  // truth: zeta 2.5 and a1 = 0.045 /mm, the same pad copied with that constant.
+  std::string curved = Slurp(std::string(TOUCHDOWN_SOURCE_DIR) + "/data/pads/curved.yaml");
+  curved.replace(curved.find("segments: 400"), 13, "segments: 60");
+  curved += "angular_segments: 8\n";
+  const std::string coarse = Write("curved_coarse.yaml", curved);
+  curved.replace(curved.find("a1_per_mm: 0.031901"), 19, "a1_per_mm: 0.045");
+  const std::string pad_file = Write("curved_truth.yaml", curved);
+  const double flat = RigDropAtZeta("flat", "fjs1_lp", 2.5).result.final_penetration_m;
+  const double bent = RigDropAtZeta(pad_file, "fjs1_lp", 2.5).result.final_penetration_m;
+  const TargetsFile file = Load(
+      std::string(kZetaLp) +
+          "  - {name: a1, pad: " + coarse + ", field: profile.a1_per_mm, lower: 0.01, upper: 0.08, start: 0.03, source: test}\n",
+      DropTarget("flat", "flat", "fjs1_lp", "final_penetration_m", "value: " + Num(flat) + ", uncertainty: 1e-4") +
+          DropTarget("curved", coarse, "fjs1_lp", "final_penetration_m", "value: " + Num(bent) + ", uncertainty: 1e-4"));
+  const TargetsFitResult fit = FitTargets(file);
+  ASSERT_TRUE(fit.converged) << fit.termination;
+  EXPECT_NEAR(fit.parameters[0].value, 2.5, 1e-5);
+  EXPECT_NEAR(fit.parameters[1].value, 0.045, 1e-6);
+}
+
+TEST_F(TargetsFit, ABoundIsZeroInsideAndActiveOutside) {
+  Target t;
+  t.at_most = 0.02;
+  t.uncertainty = 0.001;
+  EXPECT_EQ(Residual(t, 0.015), 0.0);
+  EXPECT_EQ(Residual(t, 0.02), 0.0);
+  EXPECT_NEAR(Residual(t, 0.023), 3.0, 1e-12);
+  t.at_least = 0.01;
+  EXPECT_NEAR(Residual(t, 0.008), -2.0, 1e-12);
+  EXPECT_EQ(Residual(t, 0.012), 0.0);
+  Target v;
+  v.value = 1.9;
+  v.uncertainty = 0.1;
+  EXPECT_NEAR(Residual(v, 2.1), 2.0, 1e-12);
+
+  // A fit to a bound the start violates ends on the bound, not beyond it.
+  const double at_start = RigDropAtZeta("flat", "fjs1_lp", 4.0).result.final_penetration_m;
+  const double limit = 0.8 * at_start;  // shallower: needs a stiffer soil
+  const TargetsFitResult fit = FitTargets(
+      Load(kZetaLp, DropTarget("shallow", "flat", "fjs1_lp", "final_penetration_m",
+                               "at_most: " + Num(limit) + ", uncertainty: 1e-4")));
+  EXPECT_GT(fit.parameters[0].value, 4.0 / (0.8 * 0.8) * 0.9);
+  EXPECT_LT(fit.targets[0].simulated, limit + 1e-7);
+  EXPECT_LT(std::abs(fit.targets[0].residual), 1e-3);
+}
+
+TEST_F(TargetsFit, FitsARatioOfTwoScenarios) {
+  const std::string params =
+      "  - {name: zeta_cp, soil: fjs1_cp, field: zeta_N_cm3, lower: 1.0, upper: 30.0, start: 5.0, source: test}\n";
+  const TargetsFile file = Load(params,
+                                "  - {name: lp_over_cp, ratio: {numerator: {drop: {pad: flat, soil: fjs1_lp, speed_m_s: 1.0},"
+                                " quantity: final_penetration_m}, denominator: {drop: {pad: flat, soil: fjs1_cp, speed_m_s: 1.0},"
+                                " quantity: final_penetration_m}}, value: 1.9, uncertainty: 0.01, use: fit, source: test}\n");
+  ASSERT_EQ(file.scenarios.size(), 2u);
+  const TargetsFitResult fit = FitTargets(file);
+  ASSERT_TRUE(fit.converged) << fit.termination;
+  EXPECT_NEAR(fit.targets[0].simulated, 1.9, 1e-7);
+  // The same ratio from two drops run here at the fitted zeta.
+  drop::DropConditions own;
+  own.impact_speed_m_s = 1.0;
+  const double lp = drop::RunPadDrop(io::LoadPad("flat"), io::LoadSoil("fjs1_lp"), own).result.final_penetration_m;
+  const double cp = RigDropAtZeta("flat", "fjs1_cp", fit.parameters[0].value).result.final_penetration_m;
+  EXPECT_NEAR(lp / cp, fit.targets[0].simulated, 1e-12);
+}
+
+TEST_F(TargetsFit, PredictedTargetsAreReportedButNotFitted) {
+  const double d = RigDropAtZeta("flat", "fjs1_lp", 3.0).result.final_penetration_m;
+  const std::string fitted =
+      DropTarget("depth", "flat", "fjs1_lp", "final_penetration_m", "value: " + Num(d) + ", uncertainty: 1e-4");
+  const TargetsFitResult alone = FitTargets(Load(kZetaLp, fitted));
+  const TargetsFitResult with_prediction = FitTargets(Load(
+      kZetaLp, fitted + DropTarget("force", "c4", "fjs1_lp", "peak_force_N", "value: 1, uncertainty: 0.1", "predict")));
+  EXPECT_EQ(alone.parameters[0].value, with_prediction.parameters[0].value);  // bit for bit
+  EXPECT_EQ(alone.cost, with_prediction.cost);
+  const double force = RigDropAtZeta("c4", "fjs1_lp", with_prediction.parameters[0].value).result.peak_force_N;
+  EXPECT_NEAR(with_prediction.targets[1].simulated, force, 1e-9 * force);
+  EXPECT_NEAR(with_prediction.targets[1].residual, (force - 1.0) / 0.1, 1e-6);
+}
+
+TEST_F(TargetsFit, AParameterPushedPastItsBoundStaysThereWithoutAnInterval) {
+  const double deep = RigDropAtZeta("flat", "fjs1_lp", 0.5).result.final_penetration_m;  // needs zeta 0.5 < lower
+  const TargetsFile file =
+      Load(kZetaLp, DropTarget("deep", "flat", "fjs1_lp", "final_penetration_m", "value: " + Num(deep) + ", uncertainty: 1e-4"));
+  const TargetsFitResult fit = FitTargets(file);
+  EXPECT_EQ(fit.parameters[0].value, 1.0);
+  EXPECT_EQ(fit.parameters[0].at_bound, ParameterResult::Bound::kLower);
+  EXPECT_FALSE(fit.parameters[0].sigma.has_value());
+  EXPECT_NE(fit.parameters[0].interval_note.find("at a bound"), std::string::npos);
+  EXPECT_LT(fit.targets[0].simulated, deep);
+  const nlohmann::json report = TargetsReportJson(file, fit);
+  EXPECT_EQ(report["parameters"][0]["at_bound"], "lower");
+  EXPECT_FALSE(report["parameters"][0].contains("interval"));
+}
+
+TEST_F(TargetsFit, ResultsDoNotDependOnThreads) {
+  const double d = RigDropAtZeta("flat", "fjs1_lp", 2.0).result.final_penetration_m;
+  const TargetsFile file = Load(
+      std::string(kZetaLp) +
+          "  - {name: zeta_cp, soil: fjs1_cp, field: zeta_N_cm3, lower: 1.0, upper: 30.0, start: 5.0, source: test}\n",
+      DropTarget("depth", "flat", "fjs1_lp", "final_penetration_m", "value: " + Num(d) + ", uncertainty: 1e-4") +
+          "  - {name: ratio, ratio: {numerator: {drop: {pad: c4, soil: fjs1_lp, speed_m_s: 1.0}, quantity: final_penetration_m},"
+          " denominator: {drop: {pad: flat, soil: fjs1_cp, speed_m_s: 1.0}, quantity: final_penetration_m}},"
+          " value: 2.0, uncertainty: 0.01, use: fit, source: test}\n");
+  TargetsFitOptions one, two;
+  one.threads = 1;
+  two.threads = 2;
+  const TargetsFitResult a = FitTargets(file, one), b = FitTargets(file, two);
+  EXPECT_EQ(TargetsReportJson(file, a).dump(), TargetsReportJson(file, b).dump());
+  const model::ModelFile m = TargetsModel(file, a, "fitted", Path(""));
+  ASSERT_EQ(m.soils.size(), 2u);
+  EXPECT_NEAR(units::ZetaToN_cm3(m.soils.at("fjs1_lp").zeta_N_m3), a.parameters[0].value, 1e-12);
+  EXPECT_NE(m.provenance_yaml.find("targets_used: [depth, ratio]"), std::string::npos) << m.provenance_yaml;
+}
+
+}  // namespace
+}  // namespace touchdown::targets
