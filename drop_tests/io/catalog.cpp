@@ -320,6 +320,17 @@ std::string ResolveCatalogFile(const std::string& kind, const std::string& name_
   return path;
 }
 
+std::string ResolveCatalogFileNear(const std::string& referring_file, const std::string& kind,
+                                   const std::string& name_or_path) {
+  const bool is_path = name_or_path.find('/') != std::string::npos || name_or_path.ends_with(".yaml") ||
+                       name_or_path.ends_with(".yml");
+  if (is_path && fs::path(name_or_path).is_relative()) {
+    const fs::path beside = fs::path(referring_file).parent_path() / name_or_path;
+    if (fs::is_regular_file(beside)) return beside.lexically_normal().string();
+  }
+  return ResolveCatalogFile(kind, name_or_path);
+}
+
 std::vector<std::string> CatalogNames(const std::string& kind) {
   std::vector<std::string> names;
   std::error_code ec;

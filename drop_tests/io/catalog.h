@@ -68,6 +68,10 @@ std::string DataDirectory();
 // `kind` is a data/ subfolder ("pads", "soils", "scenarios"). A name with a '/' or a
 // ".yaml"/".yml" ending is a path; otherwise data/<kind>/<name>.yaml.
 std::string ResolveCatalogFile(const std::string& kind, const std::string& name_or_path);
+// As ResolveCatalogFile, but a relative path is first looked for beside `referring_file` (the file
+// that names it), so a scenario's or targets file's own files travel with it.
+std::string ResolveCatalogFileNear(const std::string& referring_file, const std::string& kind,
+                                   const std::string& name_or_path);
 // The names data/<kind>/ holds (its .yaml files without the ending), sorted.
 std::vector<std::string> CatalogNames(const std::string& kind);
 

@@ -49,13 +49,8 @@ std::vector<double> FixedList(const io::YamlFields& f, const std::string& key, s
 }
 
 std::string ResolveRelative(const io::YamlFields& f, const std::string& kind, const std::string& name) {
-  const bool is_path = name.find('/') != std::string::npos || name.ends_with(".yaml") || name.ends_with(".yml");
-  if (is_path && fs::path(name).is_relative()) {
-    const fs::path beside = fs::path(f.file()).parent_path() / name;
-    if (fs::is_regular_file(beside)) return beside.lexically_normal().string();
-  }
   try {
-    return io::ResolveCatalogFile(kind, name);
+    return io::ResolveCatalogFileNear(f.file(), kind, name);
   } catch (const InputError& e) {
     f.Fail(kind == "pads" ? "pad" : kind, e.what());
   }

@@ -117,7 +117,11 @@ ObjectEditor::ObjectEditor(const std::vector<Parameter>& parameters) : parameter
 }
 
 YAML::Node ObjectEditor::EditedNode(const std::string& file, const std::vector<double>& values) const {
-  YAML::Node copy = YAML::Clone(files_.at(file));
+  YAML::Node copy;
+  {
+    const std::lock_guard<std::mutex> lock(clone_mutex_);
+    copy = YAML::Clone(files_.at(file));
+  }
   for (size_t i = 0; i < parameters_.size(); ++i)
     if (parameters_[i].kind != ParameterKind::kSoilZeta && parameters_[i].file == file)
       At(copy, parameters_[i].field) = Exact(values[i]);

@@ -5,6 +5,7 @@
 // are never written.
 #include <map>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
@@ -37,6 +38,9 @@ class ObjectEditor {
   YAML::Node EditedNode(const std::string& file, const std::vector<double>& values) const;
   const std::vector<Parameter>& parameters_;
   std::map<std::string, YAML::Node> files_;  // pad and lander files as read, by canonical path
+  // yaml-cpp nodes are not safe to read from two threads at once (iterating a node updates its
+  // cached sizes), and the scenarios are evaluated on the work pool: one clone at a time.
+  mutable std::mutex clone_mutex_;
 };
 
 }  // namespace touchdown::targets

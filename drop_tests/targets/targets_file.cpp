@@ -49,14 +49,8 @@ std::string Number(double v) {
 // A file a targets file names: beside the targets file when a relative path is found there, else
 // as the catalogue resolves it (a bundled name, or a path from the working directory).
 std::string ResolveNear(const io::YamlFields& f, const std::string& kind, const std::string& key) {
-  const std::string name = f.String(key);
-  const bool is_path = name.find('/') != std::string::npos || name.ends_with(".yaml") || name.ends_with(".yml");
-  if (is_path && fs::path(name).is_relative()) {
-    const fs::path beside = fs::path(f.file()).parent_path() / name;
-    if (fs::is_regular_file(beside)) return beside.lexically_normal().string();
-  }
   try {
-    return io::ResolveCatalogFile(kind, name);
+    return io::ResolveCatalogFileNear(f.file(), kind, f.String(key));
   } catch (const InputError& e) {
     f.Fail(key, e.what());
   }

@@ -19,23 +19,13 @@ struct RockingState {
 const RockingState& Rocking() {
   static const RockingState state = [] {
     RockingState s;
-    LanderRunOptions options;
-    options.duration_s = 1.0;
-    const LanderRunResult touchdown = SimulateLander(s.setup.model, s.setup.terrain, s.setup.initial, options);
-    options.duration_s = *touchdown.first_touchdown_s + 0.004;
-    s.y = SimulateLander(s.setup.model, s.setup.terrain, s.setup.initial, options).final_state;
+    s.y = test::StateAfterFirstTouchdown(s.setup, 0.004);
     return s;
   }();
   return state;
 }
 
-Eigen::VectorXd Rhs(const RockingState& s, const Eigen::VectorXd& y) {
-  LanderEvaluation e;
-  EvaluateLander(s.setup.model, s.layout, s.setup.terrain, LanderModes{}, y, &e);
-  Eigen::VectorXd ydot(s.layout.size);
-  StateDerivative(s.layout, y, e, ydot);
-  return ydot;
-}
+Eigen::VectorXd Rhs(const RockingState& s, const Eigen::VectorXd& y) { return test::FreeModesRhs(s.setup, s.layout, y); }
 
 TEST(LanderJacobian, MatchesCentralDifferencesOfTheWholeRightHandSide) {
   const RockingState& s = Rocking();

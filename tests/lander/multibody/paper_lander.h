@@ -12,6 +12,7 @@
 #include "footpad_geom/axisymmetric_profile.h"
 #include "footpad_geom/pad_body_builder.h"
 #include "footpad_geom/revolve.h"
+#include "lander/multibody/lander_dynamics.h"
 #include "lander/multibody/lander_simulation.h"
 #include "rft/ground.h"
 #include "rft/soil_map.h"
@@ -87,6 +88,26 @@ inline PaperLander MakePaperLander(char ground_case, int segments = kTestAngular
                                    rft::RectanglePolygon(c.x() - h, c.y() - h, c.x() + h, c.y() + h), 1});
   }
   return out;
+}
+
+// The state `after_s` seconds after the first touchdown of `setup`'s landing (a state in the middle
+// of the contact, for Jacobian checks).
+inline Eigen::VectorXd StateAfterFirstTouchdown(const PaperLander& setup, double after_s) {
+  lander::LanderRunOptions options;
+  options.duration_s = 1.0;
+  const lander::LanderRunResult touchdown = lander::SimulateLander(setup.model, setup.terrain, setup.initial, options);
+  options.duration_s = *touchdown.first_touchdown_s + after_s;
+  return lander::SimulateLander(setup.model, setup.terrain, setup.initial, options).final_state;
+}
+
+// The right-hand side dy/dt of `setup`'s lander at y, in free modes (no pad held).
+inline Eigen::VectorXd FreeModesRhs(const PaperLander& setup, const lander::StateLayout& layout,
+                                    const Eigen::VectorXd& y) {
+  lander::LanderEvaluation e;
+  lander::EvaluateLander(setup.model, layout, setup.terrain, lander::LanderModes{}, y, &e);
+  Eigen::VectorXd ydot(layout.size);
+  lander::StateDerivative(layout, y, e, ydot);
+  return ydot;
 }
 
 }  // namespace touchdown::test
