@@ -4,6 +4,7 @@
 #include <exception>
 #include <memory>
 
+#include <Eigen/Dense>
 #include <boost/math/distributions/normal.hpp>
 #include <ceres/ceres.h>
 
@@ -67,47 +68,50 @@ ParameterResult::Bound AtBound(const Parameter& p, double v) {
 
 // Whether each parameter moves a fitted residual at the solution (a zero column of the Jacobian:
 // every target it changes is inside its bound there).
-std::vector<bool> MovesResiduals(ceres::Problem& problem, size_t n) {
-  ceres::CRSMatrix jacobian;
-  problem.Evaluate(ceres::Problem::EvaluateOptions(), nullptr, nullptr, nullptr, &jacobian);
-  std::vector<bool> moves(n, false);
-  for (size_t k = 0; k < jacobian.values.size(); ++k)
-    if (jacobian.values[k] != 0.0) moves[size_t(jacobian.cols[k])] = true;
-  return moves;
+// The Jacobian of the fitted residuals at the solution (m x n, dense: n is a handful).
+Eigen::MatrixXd DenseJacobian(ceres::Problem& problem, size_t n) {
+  ceres::CRSMatrix crs;
+  problem.Evaluate(ceres::Problem::EvaluateOptions(), nullptr, nullptr, nullptr, &crs);
+  Eigen::MatrixXd jacobian = Eigen::MatrixXd::Zero(crs.num_rows, Eigen::Index(n));
+  for (int r = 0; r < crs.num_rows; ++r)
+    for (int k = crs.rows[size_t(r)]; k < crs.rows[size_t(r) + 1]; ++k) jacobian(r, crs.cols[size_t(k)]) = crs.values[size_t(k)];
+  return jacobian;
 }
 
-// Ceres' covariance over the parameters free at the solution (not at a bound, moving a residual).
+// The covariance (J_f^T J_f)^-1 of the parameters free at the solution (not at a bound, moving a
+// residual), J_f their columns of the normalised residuals' Jacobian: the Gauss-Newton covariance
+// ceres::Covariance computes. Formed here with Eigen: ceres::Covariance on the parameter block, with
+// a SubsetManifold set on it after the solve to hold the other parameters, aborted with a corrupted
+// heap in a joint lander fit (Ceres 2.1, Debian 12).
 void AddIntervals(ceres::Problem& problem, std::vector<double>& x, const TargetsFile& file,
                   std::vector<ParameterResult>& out) {
   const size_t n = x.size();
-  const std::vector<bool> moves = MovesResiduals(problem, n);
-  std::vector<int> held;
+  const Eigen::MatrixXd jacobian = DenseJacobian(problem, n);
+  std::vector<Eigen::Index> free;
   for (size_t i = 0; i < n; ++i) {
-    if (out[i].at_bound != ParameterResult::Bound::kNone) {
+    if (out[i].at_bound != ParameterResult::Bound::kNone)
       out[i].interval_note = "at a bound: no symmetric interval";
-      held.push_back(int(i));
-    } else if (!moves[i]) {
+    else if (jacobian.col(Eigen::Index(i)).isZero(0.0))
       out[i].interval_note = "not determined: every fitted target it changes is inside its bound";
-      held.push_back(int(i));
-    }
+    else
+      free.push_back(Eigen::Index(i));
   }
-  if (held.size() == n) return;
-  if (!held.empty()) problem.SetManifold(x.data(), new ceres::SubsetManifold(int(n), held));
-  ceres::Covariance::Options options;
-  options.algorithm_type = ceres::DENSE_SVD;
-  options.num_threads = 1;
-  ceres::Covariance covariance(options);
-  std::vector<std::pair<const double*, const double*>> blocks{{x.data(), x.data()}};
-  std::vector<double> c(n * n, 0.0);
-  if (!covariance.Compute(blocks, &problem) || !covariance.GetCovarianceBlock(x.data(), x.data(), c.data())) {
+  if (free.empty()) return;
+  Eigen::MatrixXd jf(jacobian.rows(), Eigen::Index(free.size()));
+  for (size_t k = 0; k < free.size(); ++k) jf.col(Eigen::Index(k)) = jacobian.col(free[k]);
+  const Eigen::MatrixXd normal = jf.transpose() * jf;
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(normal, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  const Eigen::VectorXd& sv = svd.singularValues();
+  if (!(sv(sv.size() - 1) > 1e-12 * sv(0))) {
     for (ParameterResult& p : out)
       if (p.interval_note.empty()) p.interval_note = "not determined: the fitted targets do not fix these parameters jointly";
     return;
   }
+  const Eigen::MatrixXd c = svd.matrixV() * sv.cwiseInverse().asDiagonal() * svd.matrixU().transpose();
   const double z = boost::math::quantile(boost::math::normal(), 0.5 + 0.5 * file.settings.confidence);
-  for (size_t i = 0; i < n; ++i) {
-    if (!out[i].interval_note.empty()) continue;
-    out[i].sigma = std::sqrt(c[i * n + i]) * (file.parameters[i].upper - file.parameters[i].lower);
+  for (size_t k = 0; k < free.size(); ++k) {
+    const size_t i = size_t(free[k]);
+    out[i].sigma = std::sqrt(c(Eigen::Index(k), Eigen::Index(k))) * (file.parameters[i].upper - file.parameters[i].lower);
     out[i].low = out[i].value - z * *out[i].sigma;
     out[i].high = out[i].value + z * *out[i].sigma;
   }

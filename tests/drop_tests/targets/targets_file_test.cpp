@@ -59,6 +59,26 @@ TEST_F(TargetsFileLoad, SharesScenariosAndFindsCampaignRowsAndLanders) {
   EXPECT_EQ(f.parameters[1].Address(), "lander sutoh2017_lander: legs.joint_radius_mm");
 }
 
+// The shipped targets files load; the spot variant runs its lander cases on the spot soil, from
+// scenario files found beside it.
+TEST_F(TargetsFileLoad, ShippedTargetsFilesLoad) {
+  const std::string dir = std::string(TOUCHDOWN_SOURCE_DIR) + "/data/targets/";
+  for (const char* name : {"sutoh2017", "sutoh2017_single_footpad", "sutoh2017_spots", "sutoh2017_other_reading"}) {
+    SCOPED_TRACE(name);
+    const TargetsFile f = LoadTargetsFile(dir + name + ".yaml");
+    EXPECT_FALSE(f.parameters.empty());
+    EXPECT_FALSE(f.targets.empty());
+  }
+  const TargetsFile spots = LoadTargetsFile(dir + "sutoh2017_spots.yaml");
+  int spot_landers = 0;
+  for (const ScenarioRun& run : spots.scenarios)
+    if (run.kind == ScenarioRun::Kind::kLander && run.lander->name.ends_with("_spots")) ++spot_landers;
+  EXPECT_EQ(spot_landers, 2);
+  bool spot_zeta = false;
+  for (const Parameter& p : spots.parameters) spot_zeta |= p.soil_name == "fjs1_cp_spot";
+  EXPECT_TRUE(spot_zeta);
+}
+
 TEST_F(TargetsFileLoad, RefusesBadEntriesNamingFileFieldAndValue) {
   const std::string p = kGoodParameter, t = kGoodTarget;
   struct Case {
