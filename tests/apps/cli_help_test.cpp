@@ -71,7 +71,7 @@ TEST_F(CliHelp, HelpListsTheCatalogueAndShowsNoDefaultForRequiredOptions) {
   const HelpRun help = RunIn({"drop", "--help"}, "");
   ASSERT_EQ(help.status, 0);
   EXPECT_NE(help.out.find("c4, curved, flat, hex"), std::string::npos) << help.out;
-  EXPECT_NE(help.out.find("fjs1_cp, fjs1_cp_bekker, fjs1_lp, fjs1_lp_bekker, lunar_nominal_bekker"), std::string::npos)
+  EXPECT_NE(help.out.find("fjs1_cp, fjs1_cp_bekker, fjs1_cp_spot, fjs1_lp, fjs1_lp_bekker, lunar_nominal_bekker"), std::string::npos)
       << help.out;
   EXPECT_NE(help.out.find("--gravity FLOAT=9.81"), std::string::npos) << help.out;
   EXPECT_NE(help.out.find("--speed FLOAT REQUIRED"), std::string::npos) << help.out;
