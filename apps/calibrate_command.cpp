@@ -2,15 +2,11 @@
 #include <iostream>
 #include <memory>
 #include <string>
-#include <thread>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "apps/commands.h"
 #include "drop_tests/dataset/calibration_run.h"
-#include "drop_tests/io/output_path.h"
-#include "drop_tests/targets/targets_fit.h"
+#include "drop_tests/targets/targets_calibration.h"
 #include "rft/input_error.h"
 #include "rft/units.h"
 
@@ -28,38 +24,13 @@ struct CalibrateArgs {
   bool evaluate_only = false;
 };
 
-constexpr const char* kTargetsReportMark = "{\"written_by\": \"touchdown calibrate --targets (it may replace this file)\",";
-
 // calibrate --targets: the free parameters fitted to a targets file; the model file gets the fitted
 // zeta, the report every parameter and target.
 void CalibrateTargets(const CalibrateArgs& args) {
-  const io::OutputTarget out(args.out, {args.targets});
-  io::CheckOutputFile(out, model::kModelFileMark);
-  std::optional<io::OutputTarget> report;
-  if (!args.report.empty()) {
-    report.emplace(args.report, std::vector<std::string>{args.targets});
-    if (std::filesystem::absolute(args.report).lexically_normal() == std::filesystem::absolute(args.out).lexically_normal())
-      throw MakeInputError("command line", "--report", "must differ from --out (" + args.report + ")");
-    io::CheckOutputFile(*report, kTargetsReportMark);
-  }
-  targets::TargetsFile file = targets::LoadTargetsFile(args.targets);
-  if (args.evaluate_only)
-    for (targets::Target& t : file.targets) t.fit = false;
-  targets::TargetsFitOptions options;
-  options.threads = args.threads > 0 ? args.threads : int(std::max(1u, std::thread::hardware_concurrency()));
-  const targets::TargetsFitResult fit = targets::FitTargets(file, options);
-  const std::filesystem::path model_path(args.out);
-  model::WriteModelFile(
-      targets::TargetsModel(file, fit, model_path.stem().string(), model_path.parent_path().string()), out);
-  if (report) {
-    // The report's first line is its mark (a rerun may replace it; a user's file never): the JSON
-    // object opens with a "written_by" entry on that line.
-    const std::string json = targets::TargetsReportJson(file, fit).dump(2);
-    io::WriteOutputFile(*report, [&](std::ostream& o) { o << kTargetsReportMark << '\n' << json.substr(2) << '\n'; },
-                        kTargetsReportMark);
-  }
-  std::cout << targets::TargetsReportTable(file, fit) << "wrote " << args.out << (report ? " and " + args.report : "")
-            << "\n";
+  const targets::TargetsCalibration c =
+      targets::RunTargetsCalibration({args.targets, args.out, args.report, args.threads, args.evaluate_only});
+  std::cout << targets::TargetsReportTable(c.file, c.fit) << "wrote " << args.out
+            << (args.report.empty() ? "" : " and " + args.report) << "\n";
 }
 
 void PrintBekkerFit(const dataset::BekkerFit& fit, const std::string& out) {

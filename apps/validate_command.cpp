@@ -24,17 +24,10 @@ void AddValidateCommand(CLI::App& app) {
                   "directory of validation sources and dynamic_rft.yaml (default: the data's validation/)");
   cmd->add_option("--out", args->out, "output directory (validation.json, validation.md, plots/)");
   cmd->callback([args] {
-    const std::string dir = args->sources.empty() ? io::DataDirectory() + "/validation" : args->sources;
-    const validation::ValidationSet set = validation::LoadValidationSet(dir);
-    std::vector<std::string> inputs;
-    for (const validation::ValidationSource& s : set.sources) inputs.push_back(s.file);
-    if (!args->out.empty()) io::CheckOutputDirectory({args->out, inputs}, io::OutputKind::kValidation);
-    const validation::ValidationResult result = validation::RunValidation(set);
+    const validation::ValidationResult result = validation::ValidateSources(args->sources, args->out);
     std::cout << validation::ValidationSummary(result);
-    if (!args->out.empty()) {
-      validation::WriteValidationOutputs(result, args->out);
+    if (!args->out.empty())
       std::cout << "wrote " << args->out << "/ (validation.json, validation.md, plots/ as PNG and SVG)\n";
-    }
   });
 }
 

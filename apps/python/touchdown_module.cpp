@@ -32,6 +32,8 @@
 #include "drop_tests/sweep/sweep.h"
 #include "drop_tests/sweep/sweep_export.h"
 #include "drop_tests/sweep/trade_run.h"
+#include "drop_tests/targets/targets_calibration.h"
+#include "drop_tests/validation/validate.h"
 #include "lander/integ/cvode_integrator.h"
 #include "rft/input_error.h"
 
@@ -213,6 +215,20 @@ std::string Calibrate(const std::string& measured, const std::string& out, const
   return dataset::CalibrationJson(dataset::RunCalibration(r)).dump(2);
 }
 
+// touchdown calibrate --targets: the report's content (targets::TargetsReportJson), the model file in `out`.
+std::string CalibrateTargets(const std::string& targets_file, const std::string& out, const std::string& report,
+                             int threads, bool evaluate_only) {
+  py::gil_scoped_release unlocked;
+  const targets::TargetsCalibration c = targets::RunTargetsCalibration({targets_file, out, report, threads, evaluate_only});
+  return targets::TargetsReportJson(c.file, c.fit).dump(2);
+}
+
+// touchdown validate: validation.json's content; the outputs in `out` when given.
+std::string Validate(const std::string& sources, const std::string& out) {
+  py::gil_scoped_release unlocked;
+  return validation::ValidationJson(validation::ValidateSources(sources, out)).dump(2);
+}
+
 // touchdown diagnose: diagnosis.json's content, the outputs in `out`.
 std::string Diagnose(const std::string& measured, const std::string& model, const std::string& out, int threads,
                      bool pairs, bool law_candidate) {
@@ -327,6 +343,9 @@ PYBIND11_MODULE(_touchdown, m) {
         py::arg("atmosphere"), py::arg("confidence"), py::arg("soil"), py::arg("pad"), py::arg("shear_from"));
   m.def("diagnose", &python::Diagnose, py::arg("measured"), py::arg("model"), py::arg("out"), py::arg("threads"),
         py::arg("pairs"), py::arg("law_candidate"));
+  m.def("calibrate_targets", &python::CalibrateTargets, py::arg("targets"), py::arg("out"), py::arg("report"),
+        py::arg("threads"), py::arg("evaluate_only"));
+  m.def("validate", &python::Validate, py::arg("sources"), py::arg("out"));
   m.def("trade", &python::Trade, py::arg("plan"), py::arg("out"), py::arg("model"), py::arg("threads"));
   m.def("synth", &python::Synth, py::arg("spec"), py::arg("out"));
   m.def("export", &python::Export, py::arg("sweep"), py::arg("to"), py::arg("full_traces"), py::arg("threads"));

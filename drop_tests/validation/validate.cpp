@@ -223,7 +223,7 @@ bool TrendReproduced(const MeasuredTrend& trend, double simulated_exponent) {
 }
 
 ValidationResult RunValidation(const ValidationSet& set) {
-  ValidationResult result{&set, {}};
+  ValidationResult result{&set, nullptr, {}};
   for (const ValidationSource& s : set.sources) {
     SourceResult r;
     r.source = &s;

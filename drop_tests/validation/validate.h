@@ -9,6 +9,7 @@
 // Zeta follows the source's route: the soil's (derived) or fitted on the one designated point,
 // per variant; every other point is then a prediction.
 #include <optional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -63,6 +64,7 @@ struct SourceResult {
 
 struct ValidationResult {
   const ValidationSet* set = nullptr;
+  std::shared_ptr<const ValidationSet> owned_set;  // `set`, when the result owns it (ValidateSources)
   std::vector<SourceResult> sources;
 };
 
@@ -88,5 +90,9 @@ std::string ValidationSummary(const ValidationResult& result);
 // Writes DIR/validation.json, DIR/validation.md and DIR/plots/ (measured points vs simulated
 // curves per source, PNG + SVG) as one whole output (io::OutputKind::kValidation).
 void WriteValidationOutputs(const ValidationResult& result, const std::string& out_dir);
+// `touchdown validate` as one call (the command line and the Python module): the sources of
+// `sources_dir` (empty: the data's validation/) loaded, the output directory `out_dir` (empty: none)
+// checked before anything runs, every source run, the outputs written.
+ValidationResult ValidateSources(const std::string& sources_dir, const std::string& out_dir);
 
 }  // namespace touchdown::validation

@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "drop_tests/io/catalog.h"
 #include "drop_tests/io/figure_style.h"
 #include "drop_tests/io/output_path.h"
 #include "drop_tests/io/plot_runner.h"
@@ -129,6 +130,18 @@ void WriteValidationOutputs(const ValidationResult& result, const std::string& o
     });
     WritePlots(dir, result);
   });
+}
+
+ValidationResult ValidateSources(const std::string& sources_dir, const std::string& out_dir) {
+  const auto set = std::make_shared<const ValidationSet>(
+      LoadValidationSet(sources_dir.empty() ? io::DataDirectory() + "/validation" : sources_dir));
+  std::vector<std::string> inputs;
+  for (const ValidationSource& s : set->sources) inputs.push_back(s.file);
+  if (!out_dir.empty()) io::CheckOutputDirectory({out_dir, inputs}, io::OutputKind::kValidation);
+  ValidationResult result = RunValidation(*set);
+  result.owned_set = set;
+  if (!out_dir.empty()) WriteValidationOutputs(result, out_dir);
+  return result;
 }
 
 }  // namespace touchdown::validation

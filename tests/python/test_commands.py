@@ -139,3 +139,42 @@ def test_export_equals_the_command_line(tiny_sweep, tmp_path):
     with pytest.raises(ValueError, match="mine"):
         touchdown.export(out, tmp_path / "mine")  # a directory of the user's is never written into
     assert sorted(p.name for p in (tmp_path / "mine").iterdir()) == ["notes.txt"]
+
+
+TINY_TARGETS = ("schema_version: 1\ntype: targets\nname: tiny_targets\nparameters:\n"
+                "  - {name: zeta_lp, soil: fjs1_lp, field: zeta_N_cm3, lower: 1.0, upper: 8.0, start: 2.0, source: test}\n"
+                "targets:\n"
+                "  - {name: depth, drop: {pad: flat, soil: fjs1_lp, speed_m_s: 1.0}, quantity: final_penetration_m,"
+                " value: 0.009, uncertainty: 0.0005, use: fit, source: test}\n"
+                "  - {name: force, drop: {pad: flat, soil: fjs1_lp, speed_m_s: 1.0}, quantity: peak_force_N,"
+                " at_most: 1000, uncertainty: 10, use: predict, source: test}\n")
+
+
+def test_calibrate_targets_equals_the_command_line(tmp_path):
+    targets = tmp_path / "t.yaml"
+    targets.write_text(TINY_TARGETS)
+    (tmp_path / "cli").mkdir()
+    (tmp_path / "py").mkdir()
+    run_touchdown("calibrate", "--targets", targets, "--out", tmp_path / "cli" / "m.yaml",
+                  "--report", tmp_path / "cli" / "r.json", "--threads", "1")
+    report = touchdown.calibrate_targets(targets, tmp_path / "py" / "m.yaml", report=tmp_path / "py" / "r.json",
+                                         threads=1)
+    # The model files are the same but for the directory they name (how to apply the other parameters).
+    cli = (tmp_path / "cli" / "m.yaml").read_text().replace(str(tmp_path / "cli"), "DIR")
+    assert (tmp_path / "py" / "m.yaml").read_text().replace(str(tmp_path / "py"), "DIR") == cli
+    assert (tmp_path / "py" / "r.json").read_bytes() == (tmp_path / "cli" / "r.json").read_bytes()
+    # The returned report is the written one (which opens with its "written_by" mark).
+    written = _json(tmp_path / "py" / "r.json")
+    assert {k: v for k, v in written.items() if k != "written_by"} == report
+    fitted = [t for t in report["targets"] if t["use"] == "fit"]
+    assert len(fitted) == 1 and abs(fitted[0]["residual"]) < 1e-6
+
+
+def test_validate_equals_the_command_line(tmp_path):
+    run_touchdown("validate", "--out", tmp_path / "cli")
+    result = touchdown.validate(out=tmp_path / "py")
+    assert result == _json(tmp_path / "cli" / "validation.json")
+    assert (tmp_path / "py" / "validation.md").read_bytes() == (tmp_path / "cli" / "validation.md").read_bytes()
+    assert touchdown.validate() == result  # without out: nothing written, the same numbers
+    with pytest.raises(ValueError, match="not a directory of validation sources"):
+        touchdown.validate(sources=tmp_path / "missing")

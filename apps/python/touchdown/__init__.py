@@ -38,7 +38,7 @@ _installed_data_dir()
 from . import _touchdown  # noqa: E402
 from .readers import StabilityStudy, read_dataset, read_stability, read_sweep
 
-__all__ = ["drop", "force", "lander", "sweep", "stability", "campaign", "compare", "calibrate", "diagnose", "trade",
+__all__ = ["drop", "force", "lander", "sweep", "stability", "campaign", "compare", "calibrate", "calibrate_targets", "validate", "diagnose", "trade",
            "synth", "export", "data_dir", "read_sweep", "read_dataset", "read_stability", "StabilityStudy"]
 
 
@@ -110,6 +110,25 @@ def calibrate(measured, out, *, law="rft", per="soil", atmosphere="all", confide
     return json.loads(_touchdown.calibrate(
         measured=_path_text(measured), out=_path_text(out), law=law, per=per, atmosphere=atmosphere,
         confidence=confidence, soil=_path_text(soil), pad=_path_text(pad), shear_from=_path_text(shear_from)))
+
+
+def calibrate_targets(targets, out, *, report=None, threads=0, evaluate_only=False):
+    """`touchdown calibrate --targets TARGETS --out OUT [--report R] [--threads N] [--evaluate-only]`:
+    fits the free parameters of a targets file to its published scalar targets (bounded least
+    squares; docs/calibration_targets.md), writes the model file OUT (and the JSON report R), and
+    returns the report as a dict: per parameter its value, bounds and interval, per target its value,
+    simulated value, residual and whether it was fitted or predicted."""
+    return json.loads(_touchdown.calibrate_targets(targets=_path_text(targets), out=_path_text(out),
+                                                   report=_path_text(report), threads=threads,
+                                                   evaluate_only=evaluate_only))
+
+
+def validate(*, sources=None, out=None):
+    """`touchdown validate [--sources DIR] [--out OUT]`: simulates the published measurements of the
+    validation sources (default: the bundled ones; docs/validation.md) and returns validation.json as
+    a dict (per source measured, simulated and error per variant, and each trend's exponents); with
+    `out`, also writes validation.json, validation.md and plots/ into that new directory."""
+    return json.loads(_touchdown.validate(sources=_path_text(sources), out=_path_text(out)))
 
 
 def diagnose(measured, out, *, model=None, threads=0, pairs=True, law_candidate=False):

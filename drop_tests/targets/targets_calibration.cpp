@@ -1,0 +1,50 @@
+#include "drop_tests/targets/targets_calibration.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <optional>
+#include <ostream>
+#include <thread>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "drop_tests/io/output_path.h"
+#include "drop_tests/model/model_file.h"
+#include "rft/input_error.h"
+
+namespace touchdown::targets {
+
+namespace {
+// The report's first line: a report touchdown wrote may be replaced by a rerun, a user's file never.
+constexpr const char* kTargetsReportMark = "{\"written_by\": \"touchdown calibrate --targets (it may replace this file)\",";
+}  // namespace
+
+TargetsCalibration RunTargetsCalibration(const TargetsCalibrationRequest& r) {
+  const io::OutputTarget out(r.out, {r.targets});
+  io::CheckOutputFile(out, model::kModelFileMark);
+  std::optional<io::OutputTarget> report;
+  if (!r.report.empty()) {
+    report.emplace(r.report, std::vector<std::string>{r.targets});
+    if (std::filesystem::absolute(r.report).lexically_normal() == std::filesystem::absolute(r.out).lexically_normal())
+      throw MakeInputError("command line", "--report", "must differ from --out (" + r.report + ")");
+    io::CheckOutputFile(*report, kTargetsReportMark);
+  }
+  TargetsCalibration c{LoadTargetsFile(r.targets), {}};
+  if (r.evaluate_only)
+    for (Target& t : c.file.targets) t.fit = false;
+  TargetsFitOptions options;
+  options.threads = r.threads > 0 ? r.threads : int(std::max(1u, std::thread::hardware_concurrency()));
+  c.fit = FitTargets(c.file, options);
+  const std::filesystem::path model_path(r.out);
+  model::WriteModelFile(TargetsModel(c.file, c.fit, model_path.stem().string(), model_path.parent_path().string()), out);
+  if (report) {
+    // The JSON object opens with its "written_by" entry on the mark's line.
+    const std::string json = TargetsReportJson(c.file, c.fit).dump(2);
+    io::WriteOutputFile(*report, [&](std::ostream& o) { o << kTargetsReportMark << '\n' << json.substr(2) << '\n'; },
+                        kTargetsReportMark);
+  }
+  return c;
+}
+
+}  // namespace touchdown::targets

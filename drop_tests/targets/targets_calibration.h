@@ -1,0 +1,27 @@
+#pragma once
+// `calibrate --targets` as one call, for the command line and the Python module alike: the targets
+// file loaded, its parameters fitted (or only evaluated), the model file written to `out` (and the
+// report to `report`), through io::OutputTarget, so a user's file is never replaced.
+#include <string>
+
+#include "drop_tests/targets/targets_fit.h"
+
+namespace touchdown::targets {
+
+struct TargetsCalibrationRequest {
+  std::string targets;        // the targets file
+  std::string out;            // the model file to write
+  std::string report;         // the JSON report to write; empty: none
+  int threads = 0;            // scenarios side by side; 0: every core
+  bool evaluate_only = false;  // no fit: every target at the parameters' start values
+};
+
+struct TargetsCalibration {
+  TargetsFile file;
+  TargetsFitResult fit;
+};
+
+// Throws InputError for a bad request or file (naming it), before anything runs or is written.
+TargetsCalibration RunTargetsCalibration(const TargetsCalibrationRequest& request);
+
+}  // namespace touchdown::targets
