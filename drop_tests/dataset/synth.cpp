@@ -269,7 +269,7 @@ void WriteSyntheticDataset(const SynthSpec& spec, const Dataset& dataset, const 
     io::WriteFileAtomically((dir / "README.md").string(), [&](std::ostream& out) {
       out << "# SYNTHETIC dataset: " << spec.name << "\n\n"
           << "**These are not measurements.** Every trace was made by `touchdown synth` from the spec `"
-          << fs::path(spec.source).filename().string() << "`: a simulated axisymmetric rig drop (quasi-static RFT"
+          << fs::path(spec.source).filename().string() << "`: a simulated axisymmetric rig drop (RFT on the soils as given, each with its own dynamic term if it carries one"
           << (spec.hidden_effect || spec.floor ? ", plus a hidden effect" : "") << "), recorded with simulated "
           << "sensor noise, drift and quantisation. drops.csv marks every row `data_origin = synthetic`.\n\n"
           << (spec.description.empty() ? "" : spec.description + "\n\n") << "- drops: " << dataset.drops.size()

@@ -1,5 +1,7 @@
 #include "drop_tests/targets/target_evaluation.h"
 
+#include <sstream>
+
 #include <algorithm>
 #include <cmath>
 
@@ -72,6 +74,13 @@ TargetEvaluator::TargetEvaluator(const TargetsFile& file, int threads)
     }
 }
 
+std::string TargetEvaluator::ParameterValuesText(const std::vector<double>& values) const {
+  std::ostringstream out;
+  out.precision(17);  // enough to rerun the failing case exactly
+  for (size_t p = 0; p < values.size(); ++p) out << (p ? ", " : "") << file_.parameters[p].name << " = " << values[p];
+  return out.str();
+}
+
 std::vector<double> TargetEvaluator::OwnValues(size_t scenario, const std::vector<double>& values) const {
   std::vector<double> own;
   for (size_t p : depends_on_[scenario]) own.push_back(values[p]);
@@ -105,7 +114,14 @@ std::vector<ScenarioOutcome> TargetEvaluator::Run(const std::vector<double>& val
     else
       to_run.push_back(s);
   }
-  io::ParallelFor(to_run.size(), threads_, [&](size_t k) { outcomes[to_run[k]] = RunScenario(to_run[k], values); });
+  io::ParallelFor(to_run.size(), threads_, [&](size_t k) {
+    try {
+      outcomes[to_run[k]] = RunScenario(to_run[k], values);
+    } catch (const integ::IntegrationFailure& e) {  // name the run and the parameters it failed at
+      throw integ::IntegrationFailure(file_.scenarios[to_run[k]].label + " at " + ParameterValuesText(values) +
+                                      ": " + e.what());
+    }
+  });
   for (size_t s : to_run) cache_[s].emplace(OwnValues(s, values), outcomes[s]);
   scenario_runs_ += int(to_run.size());
   return outcomes;

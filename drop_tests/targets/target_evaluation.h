@@ -36,6 +36,8 @@ class TargetEvaluator {
 
  private:
   ScenarioOutcome RunScenario(size_t index, const std::vector<double>& values) const;
+  // "zeta_lp = 3.48, curved_a1 = 0.0319": what an error names.
+  std::string ParameterValuesText(const std::vector<double>& values) const;
   std::vector<double> OwnValues(size_t scenario, const std::vector<double>& values) const;
 
   const TargetsFile& file_;

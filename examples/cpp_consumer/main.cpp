@@ -19,16 +19,19 @@
 
 namespace td = touchdown;
 
-// The quasi-static RFT wrench on the pad's lowest point `depth_m` below a level surface, the pad
-// moving straight down at 1 m/s (RFT stresses depend on the direction of motion, not its speed).
+// The soil's RFT wrench on the pad with its lowest point `depth_m` below a level surface, the pad
+// moving straight down at 1 m/s: quasi-static RFT (its stresses depend on the direction of motion,
+// not its speed) plus the soil's own dynamic term, lambda rho (v.n)^2 on leading elements.
 nlohmann::json ForceAtDepth(const td::io::PadSpec& pad, const td::rft::SoilParameters& soil, double depth_m) {
   const double gravity_m_s2 = 9.81;
-  const auto law = td::rft::MakeStressLaw3D(td::rft::LawKind::kLi2013, soil, gravity_m_s2);
+  const td::rft::SoilContactModel contact = td::rft::MakeSoilContactModel(
+      td::rft::LawKind::kLi2013, soil, gravity_m_s2, td::rft::WithSoilDynamicTerm({}, soil));
+  const td::rft::StressLaw3D& law = *contact.law;
   td::rft::PadKinematics k;
   k.R_WB = td::pad::TiltRotation(td::pad::TiltAxis::kX, 0.0);
   k.v_WB_W = Eigen::Vector3d(0.0, 0.0, -1.0);
   k.p_WB = td::pad::PlaceAtDepth(pad.body, k.R_WB, depth_m);
-  const td::rft::ContactWrench w = td::rft::ComputeContactWrench(pad.body.surface, k, td::rft::PlaneGround(), *law);
+  const td::rft::ContactWrench w = td::rft::ComputeContactWrench(pad.body.surface, k, td::rft::PlaneGround(), law);
   return {{"depth_m", depth_m},
           {"force_N", {w.force_W.x(), w.force_W.y(), w.force_W.z()}},
           {"submerged_area_m2", w.submerged_area_m2}};

@@ -66,12 +66,15 @@ TEST_F(Cli, DropPrintsJsonWithTheContractedKeys) {
 }
 
 TEST_F(Cli, ForceOfFlatPadMatchesTheClosedForm) {
-  // Straight down: zeta (pi r^2 d + 0.128 pi r d^2), the revolved mesh within 0.5 % of it.
+  // Straight down at 1 m/s: zeta (pi r^2 d + 0.128 pi r d^2) plus the soil's dynamic term
+  // lambda rho v^2 pi r^2 on the bottom face (the wall has v.n = 0), the revolved mesh within
+  // 0.5 % of it.
   const CliRun r = Touchdown("force --pad flat --soil fjs1_lp --depth 0.005");
   ASSERT_EQ(r.status, 0) << r.err;
   const nlohmann::json j = nlohmann::json::parse(r.out);
-  const double zeta = 3.4810783e6, radius = 0.05, d = 0.005;
-  const double closed = zeta * (M_PI * radius * radius * d + 0.1284 * M_PI * radius * d * d);
+  const double zeta = 3.4810783e6, radius = 0.05, d = 0.005, lambda = 1.1, rho = 1540.0, v = 1.0;
+  const double closed = zeta * (M_PI * radius * radius * d + 0.1284 * M_PI * radius * d * d) +
+                        lambda * rho * v * v * M_PI * radius * radius;
   EXPECT_NEAR(j["force_N"][2].get<double>(), closed, 5e-3 * closed);
   EXPECT_NEAR(j["force_N"][0].get<double>(), 0.0, 1e-9);
   EXPECT_GT(j["leading_elements"].get<int>(), 0);

@@ -64,6 +64,9 @@ class ModelEffects : public ::testing::Test {
     c.impact_speed_m_s = 1.2;
     c.atmosphere = rft::ParseAtmosphere(atmosphere);
     rft::SoilParameters soil = io::LoadSoil("fjs1_lp");
+    // The effects are defined on top of quasi-static RFT; the soil's own dynamic term (the shipped
+    // lambda 1.1) is tested in DropFactory.SoilsDynamicTermIsInertialDragOnRigAndFreePad.
+    soil.dynamic_term = false;
     if (!path.empty()) {
       const ModelFile m = LoadModelFile(path);
       soil = ApplyModel(m, soil);
@@ -136,6 +139,7 @@ TEST_F(ModelEffects, FreeVerticalDropWithEffectsMatchesTheRigDrop) {
   // element x exp(-z_pad/d_c): the rig's k_c v^2 exp(-d/d_c) I3), depth_exponent (z^p integrated
   // exactly per triangle: the rig's exact power law per profile piece) and added_mass (the cone on
   // the footprint, the rig's m_a(d), on the pad's vertical inertia; force as the load cell reads it).
+  // The shipped soil's own dynamic term (lambda 1.1) acts in both, hence "+dynamic" in every law.
   struct Case {
     const char* name;
     const char* effects;
@@ -144,11 +148,11 @@ TEST_F(ModelEffects, FreeVerticalDropWithEffectsMatchesTheRigDrop) {
   };
   const Case cases[] = {
       {"drag", "{inertial_drag: {lambda: 2}, rate_damping: {c_N_s_m3: 15000}}", "flat", "li2013+dynamic+rate_damping"},
-      {"compaction", "{compaction_peak: {k_c_kg_m3: 30000, d_c_mm: 3}}", "flat", "li2013+compaction_peak"},
-      {"depth", "{depth_exponent: {p: 1.4}}", "flat", "li2013+depth_exponent"},
-      {"depth_curved", "{depth_exponent: {p: 0.7}}", "curved", "li2013+depth_exponent"},
-      {"mass", "{added_mass: {c_a: 3}}", "flat", "li2013+added_mass"},
-      {"mass_curved", "{added_mass: {c_a: 3}}", "curved", "li2013+added_mass"},
+      {"compaction", "{compaction_peak: {k_c_kg_m3: 30000, d_c_mm: 3}}", "flat", "li2013+dynamic+compaction_peak"},
+      {"depth", "{depth_exponent: {p: 1.4}}", "flat", "li2013+dynamic+depth_exponent"},
+      {"depth_curved", "{depth_exponent: {p: 0.7}}", "curved", "li2013+dynamic+depth_exponent"},
+      {"mass", "{added_mass: {c_a: 3}}", "flat", "li2013+dynamic+added_mass"},
+      {"mass_curved", "{added_mass: {c_a: 3}}", "curved", "li2013+dynamic+added_mass"},
   };
   for (const Case& k : cases) {
     const std::string model = Model(k.name, k.effects);
@@ -264,10 +268,10 @@ TEST_F(ModelEffects, LanderSoilsCarryTheModelsTerms) {
               1.5 * io::LoadSoil("fjs1_lp").bulk_density_kg_m3 * 4.0, 1e-9);
   // gas_cushion only where the bed is in air (fjs1_lp is a vacuum bed).
   s.model = LoadModelFile(Model("gas", "{gas_cushion: {chi: 0.3, c_g_N_s_m3: 5000}}"));
-  EXPECT_EQ(scenario::BuildLanderSetup(s).terrain.soils[0].contact.name(), "li2013");
+  EXPECT_EQ(scenario::BuildLanderSetup(s).terrain.soils[0].contact.name(), "li2013+dynamic");  // the soil's own term
   rft::SoilParameters air = io::LoadSoil("fjs1_lp");
   air.atmosphere = rft::Atmosphere::kAir;
-  EXPECT_EQ(MakeModelStressLaw3D(rft::LawKind::kLi2013, air, 9.81, &*s.model).name(), "li2013+gas_cushion");
+  EXPECT_EQ(MakeModelStressLaw3D(rft::LawKind::kLi2013, air, 9.81, &*s.model).name(), "li2013+dynamic+gas_cushion");
 }
 
 // compare --model with a sensor_offset: the simulated traces are shifted as the rig records them

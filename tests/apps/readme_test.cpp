@@ -65,7 +65,7 @@ TEST_F(Readme, EveryExampleRunsAsWritten) {
     const int raw = std::system(command.c_str());
     EXPECT_TRUE(WIFEXITED(raw) && WEXITSTATUS(raw) == 0) << line << "\n" << Slurp(err);
     if (python) {
-      EXPECT_NEAR(std::stod(Slurp(out)), 0.00818, 1e-5) << line;
+      EXPECT_NEAR(std::stod(Slurp(out)), 0.00785, 1e-5) << line;
     }
   }
   EXPECT_TRUE(fs::is_regular_file(root / "runs" / "hex_vtk" / "drop.pvd"));

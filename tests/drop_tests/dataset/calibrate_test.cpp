@@ -70,9 +70,13 @@ TEST(Calibrate, NoiseFreeSyntheticDataGiveZetaExactly) {
   ds.directory = ".";
   const std::vector<ZetaFit> fits = CalibrateZeta(ds, {});
   ASSERT_EQ(fits.size(), 1u);
-  EXPECT_NEAR(fits[0].zeta_N_m3 / kZetaTrue, 1.0, 1e-9);
+  // Not to rounding: fjs1_lp's dynamic term (2 % of the force at 1 m/s) is taken off with the sink
+  // rate from central differences of the 1 kHz trace (8e-5 relative and 0.06 N rms measured; the
+  // exact case is FactoryDrops.CalibrateRegressesOnTheFactorysRigIntegral).
+  EXPECT_NEAR(fits[0].zeta_N_m3 / kZetaTrue, 1.0, 2e-4);
   EXPECT_EQ(fits[0].drops, 6);
-  EXPECT_NEAR(fits[0].residual_rms_N, 0.0, 1e-6);
+  EXPECT_LT(fits[0].residual_rms_N, 0.2);
+  EXPECT_NE(fits[0].method.find("dynamic term"), std::string::npos);
 }
 
 TEST(Calibrate, NoisySyntheticDataGiveZetaWithinTheReportedInterval) {

@@ -2,6 +2,7 @@
 // surface, input errors and the summary (the lander on its own: tests/lander/multibody/).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <nlohmann/json.hpp>
@@ -27,15 +28,18 @@ const scenario::LanderRun& CaseRun(const std::string& name) {
 
 TEST(LanderDrop, RigidLanderLandingFlatMatchesSinglePadWithAQuarterOfTheMass) {
   const scenario::LanderRun& run = CaseRun("lander_case_A");
-  // The same pad, the same 3D contact, on the rig's vertical rod with a quarter of the mass.
+  // The same pad, the same 3D contact (the soil's dynamic term included), on the rig's vertical
+  // rod with a quarter of the mass.
   const geom::PadBody& pad = run.scenario.lander.pad.body;
   const rft::PlaneGround ground;
-  const auto law = rft::MakeStressLaw3D(rft::LawKind::kLi2013, io::LoadSoil("fjs1_lp"), run.scenario.gravity_m_s2);
-  const pad::VerticalResistance resistance = [&](double depth, double) {
+  const rft::SoilParameters soil = io::LoadSoil("fjs1_lp");
+  const rft::SoilContactModel contact = rft::MakeSoilContactModel(
+      rft::LawKind::kLi2013, soil, run.scenario.gravity_m_s2, rft::WithSoilDynamicTerm({}, soil));
+  const pad::VerticalResistance resistance = [&](double depth, double speed_down) {
     rft::PadKinematics k;
     k.p_WB = Eigen::Vector3d(0, 0, -pad.lowest_z_B - depth);
-    k.v_WB_W = Eigen::Vector3d(0, 0, -1.0);
-    return rft::ComputeContactWrench(pad.surface, k, ground, *law).force_W.z();
+    k.v_WB_W = Eigen::Vector3d(0, 0, -std::max(speed_down, 1e-12));  // at rest: the direction only
+    return rft::ComputeContactWrench(pad.surface, k, ground, *contact.law).force_W.z();
   };
   pad::RigDropInput in;
   in.mass_kg = run.scenario.lander.total_mass_kg / 4.0;

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <map>
 
+#include "drop_tests/drop/pad_drop.h"
 #include "drop_tests/scenario/campaign.h"
 
 namespace touchdown::scenario {
@@ -70,6 +71,16 @@ TEST_F(PaperCampaign, FasterIsDeeper) {
     EXPECT_LT(Drop(pad, "fjs1_lp", 0.7).result.final_penetration_m, Drop(pad, "fjs1_lp", 1.5).result.final_penetration_m);
 }
 
+TEST_F(PaperCampaign, CurvedPadFitGivesThePapersRftRatioUnderQuasiStaticRft) {
+  rft::SoilParameters lp = io::LoadSoil("fjs1_lp");
+  lp.dynamic_term = false;  // the paper's RFT
+  drop::DropConditions c;
+  c.impact_speed_m_s = 1.0;
+  const double ratio = drop::RunPadDrop(io::LoadPad("curved"), lp, c).result.final_penetration_m /
+                       drop::RunPadDrop(io::LoadPad("flat"), lp, c).result.final_penetration_m;
+  EXPECT_NEAR(ratio, 2.0, 1e-3);  // tools/fit_curved_pad solves it to 1e-4 of a1
+}
+
 TEST_F(PaperCampaign, RatiosPrintedBesideThePapers) {
   const std::vector<CheckOutcome> checks = EvaluateChecks(*result_);
   ASSERT_EQ(checks.size(), 3u);
@@ -79,9 +90,11 @@ TEST_F(PaperCampaign, RatiosPrintedBesideThePapers) {
                 c.check.paper_experiment, c.check.paper_rft);
     simulated[c.check.name] = c.simulated;
   }
-  // The curved pad's a0, a1 were fitted to the paper's RFT ratio of 2.0 (data/pads/curved.yaml),
-  // and the check says so; the others are predictions.
-  EXPECT_NEAR(simulated["curved_over_flat_penetration_lp"], 2.0, 0.01);
+  // The curved pad's a0, a1 were fitted to the paper's RFT ratio of 2.0 (data/pads/curved.yaml)
+  // under the paper's quasi-static RFT, and the check says so; the others are predictions. The
+  // shipped soils' dynamic term moves the ratio to 2.044 (measured; the curved pad's cos^3 area is
+  // smaller, so the term holds it back less).
+  EXPECT_NEAR(simulated["curved_over_flat_penetration_lp"], 2.044, 0.005);
   for (const CheckOutcome& c : checks) {
     EXPECT_EQ(c.check.used_for_fit, c.check.name == "curved_over_flat_penetration_lp") << c.check.name;
     EXPECT_EQ(c.check.fit_by.empty(), !c.check.used_for_fit) << c.check.name;

@@ -131,14 +131,16 @@ grid: {pad: [coarse_hex.yaml, flat], impact_speed_m_s: [1.0]}
   EXPECT_NEAR(*sim.drops[0].final_penetration_m, hex.final_penetration_m, 1e-12);
   EXPECT_NEAR(*sim.drops[1].final_penetration_m, flat.final_penetration_m, 1e-12);
   // ... and calibrate: the mesh pad's regressor is its 3D force straight down, so the simulated
-  // drops (the soil file's zeta) give that zeta back, from both pads (noise-free: 1e-6 relative).
+  // drops (the soil file's zeta) give that zeta back, from both pads. Noise-free, but the soil's
+  // dynamic term (2 % of the force) is taken off with the sink rate from central differences of
+  // the 1 kHz trace: 7e-5 relative measured, 2e-4 allowed.
   const std::vector<dataset::ZetaFit> fits = dataset::CalibrateZeta(ds, {});
   ASSERT_EQ(fits.size(), 1u);
   EXPECT_EQ(fits[0].drops, 2);
-  EXPECT_NEAR(fits[0].zeta_N_m3 / plan.soils[0].zeta_N_m3, 1.0, 1e-6);
+  EXPECT_NEAR(fits[0].zeta_N_m3 / plan.soils[0].zeta_N_m3, 1.0, 2e-4);
   dataset::Dataset hex_only = ds;
   hex_only.drops.resize(1);
-  EXPECT_NEAR(dataset::CalibrateZeta(hex_only, {}).at(0).zeta_N_m3 / plan.soils[0].zeta_N_m3, 1.0, 1e-6);
+  EXPECT_NEAR(dataset::CalibrateZeta(hex_only, {}).at(0).zeta_N_m3 / plan.soils[0].zeta_N_m3, 1.0, 2e-4);
 }
 
 TEST_F(SweepDrop, MeshPadSweepAppliesEveryModelEffectInItsFreeDrops) {

@@ -113,7 +113,8 @@ grid: {tilt_deg: [0, 2], horizontal_speed_m_s: [0, 0.1]}
 }
 
 TEST_F(SweepKinds, ModelEffectsActOnSweepDrops) {
-  Write("drag.yaml", "schema_version: 1\ntype: model\neffects: {inertial_drag: {lambda: 2}}\n");
+  // The model's lambda 4 replaces the soil's own dynamic term (lambda 1.1).
+  Write("drag.yaml", "schema_version: 1\ntype: model\neffects: {inertial_drag: {lambda: 4}}\n");
   const std::string sweep = R"(schema_version: 1
 type: sweep
 traces: none
@@ -129,7 +130,7 @@ grid: {impact_speed_m_s: [0.8, 1.2]}
     EXPECT_LT(a[i].final_penetration_m, 0.97 * b[i].final_penetration_m) << i;
     drop::DropConditions c;
     c.impact_speed_m_s = a[i].impact_speed_m_s;
-    c.effects.inertial_lambda = 2.0;
+    c.effects.inertial_lambda = 4.0;
     pad::RigDropOptions rig;
     rig.rest_duration_s = 0.0;  // a sweep's default: summaries only
     EXPECT_EQ(drop::RunPadDrop(io::LoadPad("flat"), io::LoadSoil("fjs1_lp"), c, rig).result.final_penetration_m,
@@ -207,7 +208,7 @@ fixed: {pitch_deg: 2, roll_deg: -1, gravity_m_s2: 1.62, horizontal_speed_m_s: 0.
   }
   const SweepPlan with_model = LoadSweepPlan(Write("with_model.yaml", text + "model: mass.yaml\n"));
   ASSERT_TRUE(with_model.lander.has_value());
-  EXPECT_EQ(scenario::BuildLanderSetup(*with_model.lander).terrain.soils.at(0).contact.name(), "li2013+added_mass");
+  EXPECT_EQ(scenario::BuildLanderSetup(*with_model.lander).terrain.soils.at(0).contact.name(), "li2013+dynamic+added_mass");
 }
 
 }  // namespace
