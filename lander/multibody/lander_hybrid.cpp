@@ -318,8 +318,13 @@ integ::EventAction LanderHybrid::OnEvent(double t, const std::vector<int>& found
   }
   const Eigen::VectorXd before = y;
   std::array<bool, kNumLegs> fresh{};
+  // A touchdown restarts the integrator. With a soil's dynamic term it is a discontinuity of the
+  // right-hand side (a level pad's whole bottom meets the soil at once, and lambda rho v^2 A with
+  // it), and after a restart CVODE sets aside a root function that is exactly zero there (a level
+  // pad's depth is 0 to rounding at its touchdown); continuing instead, CVODE reported that zero
+  // as the same touchdown again and again (20,000 events at one instant in a calibrate --targets run).
   if (!SwitchModes(t, found, pose, fresh))
-    return shear_reset ? integ::EventAction::kRestart : integ::EventAction::kContinue;
+    return shear_reset || touched ? integ::EventAction::kRestart : integ::EventAction::kContinue;
   OfferCaptures(pose, fresh);
   NormalizeQuaternions(L_, y);
   HoldStoppedPads(y, fresh);
