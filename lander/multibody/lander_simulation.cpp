@@ -38,17 +38,7 @@ Eigen::VectorXd Pack(const StateLayout& L, const LanderInitialState& s) {
 // in their own unit, radians per second included (docs/lander_dynamics.md has the step counts).
 //   length L: the largest distance of a ball joint from the body's centre of mass; pad size l:
 //   the largest pad vertex distance from its joint; speed V: the initial speed plus sqrt(2 g L);
-//   angles 1 rad; angular speeds V / L (body) and kPadSpinScale V / l (pads); energy
-//   M V^2 / 2 + M g L.
-// The pads' spin to ten times their rim speed scale V / l. Why: while the pads rock in the soil
-// their spin is a fast mode slaved to the body's motion (a 0.08 kg pad against the soil's moment,
-// which the soil damps within microseconds), and at V / l it was the state that limited the steps
-// (measured: 1.6-1.9 times more steps on the asymmetric landings). Ten times looser keeps every
-// benchmark landing within issue 15's tolerances of a reference at rtol 1e-11 (depths 1e-4
-// relative, roll and pitch 0.01 deg); a hundred times looser captured case C's twin front pads
-// apart (docs/lander_dynamics.md, "Speed of asymmetric landings": convergence study).
-constexpr double kPadSpinScale = 10.0;
-
+//   angles 1 rad; angular speeds V / L (body) and V / l (pads); energy M V^2 / 2 + M g L.
 integ::IntegratorOptions ScaledTolerances(const LanderModel& model, const StateLayout& L,
                                           const LanderInitialState& initial, const LanderRunOptions& options) {
   integ::IntegratorOptions o = options.integrator;
@@ -69,7 +59,7 @@ integ::IntegratorOptions ScaledTolerances(const LanderModel& model, const StateL
     o.component_atol[L.p_B() + k] = r * length;
     o.component_atol[L.v_B() + k] = r * V;
     o.component_atol[L.w_B() + k] = r * V / length;
-    for (int i = 0; i < kNumLegs; ++i) o.component_atol[L.w_P(i) + k] = r * kPadSpinScale * V / pad;
+    for (int i = 0; i < kNumLegs; ++i) o.component_atol[L.w_P(i) + k] = r * V / pad;
   }
   for (int i = 0; i < kNumLegs; ++i) {
     if (L.stroke_slot[i] < 0) continue;
