@@ -5,6 +5,7 @@
 
 #include "lander/multibody/lander_jacobian.h"
 #include "tests/lander/multibody/paper_lander.h"
+#include "tests/malloc_counter.h"
 
 namespace touchdown::lander {
 namespace {
@@ -96,6 +97,36 @@ TEST(LanderJacobian, WithoutAttitudeSensitivityCostsNineContactsPerPad) {
   }
   EXPECT_LT(worst, 3e-5);
   EXPECT_GT(worst_attitude, 0.1);  // what is left out is not small: it is not stiff
+}
+
+// House style: nothing allocates in a Jacobian once its scratch exists (the first call sizes it),
+// with and without the evaluation at y given.
+TEST(LanderJacobian, DoesNotAllocateOnceItsScratchExists) {
+  if (!testing_alloc::kCountsMalloc) GTEST_SKIP() << "malloc is not counted under AddressSanitizer";
+  const RockingState& s = Rocking();
+  const int n = s.layout.size;
+  LanderData data;
+  LanderJacobianData work;
+  LanderEvaluation at_y;
+  EvaluateLander(s.setup.model, s.layout, s.setup.terrain, LanderModes{}, s.y, &at_y, &data);
+  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(n, n);
+  const Eigen::VectorXd scale = Eigen::VectorXd::Ones(n);
+  auto jacobian = [&](const LanderEvaluation* given) {
+    LanderJacobian(s.setup.model, s.layout, s.setup.terrain, LanderModes{}, s.y, scale, &data, &work, J, given);
+  };
+  jacobian(nullptr);
+  EXPECT_EQ(testing_alloc::CountAllocations([&] {
+              jacobian(nullptr);
+              jacobian(&at_y);
+            }),
+            0);
+  // Given the evaluation at y, the same Jacobian without its four base contacts.
+  const Eigen::MatrixXd evaluated = J;
+  const long before = work.contact_evaluations;
+  J.setZero();
+  jacobian(&at_y);
+  EXPECT_EQ(work.contact_evaluations - before, kNumLegs * 12);
+  EXPECT_EQ(J, evaluated);
 }
 
 }  // namespace
