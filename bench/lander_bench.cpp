@@ -7,12 +7,15 @@
 //   Slope10_Sideways      LP on a 10 deg slope (downhill +x), level lander, 0.5 m/s across it (+y)
 // Counters: the solver's (steps, right-hand sides, Jacobians, failures), the outcome (pad 1's
 // final depths, final roll and pitch), and `realtime_factor` (simulated seconds per wall second).
-// TD_RTOL / TD_ATOL / TD_ADAMS (Adams instead of BDF) / TD_MSBJ (most steps between Jacobians)
-// override the integrator for convergence studies; TD_PADI scales the pads' rotational inertia (an
+// TD_RTOL / TD_ATOL / TD_ADAMS (Adams instead of BDF) / TD_MSBJ (most steps between Jacobians) /
+// TD_ATTJAC (the Jacobian's contact derivatives with respect to the pads' attitude too)
+// override the integrator for convergence studies, and TD_PRINT prints each landing's final depths,
+// roll and pitch to stderr at full precision; TD_PADI scales the pads' rotational inertia (an
 // experiment: how much of the step count the pads' fast rotation in the soil causes).
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <string>
 
@@ -33,10 +36,11 @@ lander::LanderRunOptions Options() {
   if (getenv("TD_ATOL")) options.integrator.atol = atof(getenv("TD_ATOL"));
   if (getenv("TD_ADAMS")) options.integrator.stiff = false;
   if (getenv("TD_MSBJ")) options.integrator.max_steps_between_jacobians = atol(getenv("TD_MSBJ"));
+  if (getenv("TD_ATTJAC")) options.jacobian_attitude_sensitivity = true;
   return options;
 }
 
-void RunLanding(benchmark::State& state, const test::PaperLander& setup_in) {
+void RunLanding(benchmark::State& state, const test::PaperLander& setup_in, const char* name) {
   const lander::LanderRunOptions options = Options();
   test::PaperLander setup = setup_in;
   if (getenv("TD_PADI")) {
@@ -50,11 +54,18 @@ void RunLanding(benchmark::State& state, const test::PaperLander& setup_in) {
     benchmark::DoNotOptimize(r.final_penetration_m[0]);
     last = std::move(r);
   }
+  if (getenv("TD_PRINT"))  // full precision for convergence studies
+    std::fprintf(stderr, "%s depths_mm %.9f %.9f %.9f %.9f roll_deg %.9f pitch_deg %.9f\n", name,
+                 last.final_penetration_m[0] * 1e3, last.final_penetration_m[1] * 1e3, last.final_penetration_m[2] * 1e3,
+                 last.final_penetration_m[3] * 1e3, last.final_attitude.roll_rad / units::kDeg,
+                 last.final_attitude.pitch_rad / units::kDeg);
   state.counters["triangles_per_pad"] = setup.model.legs[0].pad->surface.size();
   state.counters["solver_steps"] = static_cast<double>(last.solver.steps);
   state.counters["rhs_evals"] = static_cast<double>(last.solver.rhs_evaluations);
   state.counters["jac_rhs_evals"] = static_cast<double>(last.solver.jacobian_rhs_evaluations);
   state.counters["jac_pad_contacts"] = static_cast<double>(last.jacobian_pad_contacts);
+  state.counters["rhs_pad_contacts"] = static_cast<double>(last.rhs_pad_contacts);
+  state.counters["root_pad_contacts"] = static_cast<double>(last.root_pad_contacts);
   state.counters["events"] = static_cast<double>(last.events.size());
   state.counters["root_evals"] = static_cast<double>(last.solver.root_evaluations);
   state.counters["jac_evals"] = static_cast<double>(last.solver.jacobian_evaluations);
@@ -73,9 +84,9 @@ void RunLanding(benchmark::State& state, const test::PaperLander& setup_in) {
 
 // The paper's lander built in code from the catalogue's values (data/landers, data/soils,
 // data/scenarios/lander_case_*.yaml), at the catalogue's 64 segments.
-void BM_LanderCaseA_1s(benchmark::State& state) { RunLanding(state, test::MakePaperLander('A', 64)); }
-void BM_LanderCaseB_1s(benchmark::State& state) { RunLanding(state, test::MakePaperLander('B', 64)); }
-void BM_LanderCaseC_1s(benchmark::State& state) { RunLanding(state, test::MakePaperLander('C', 64)); }
+void BM_LanderCaseA_1s(benchmark::State& state) { RunLanding(state, test::MakePaperLander('A', 64), "A"); }
+void BM_LanderCaseB_1s(benchmark::State& state) { RunLanding(state, test::MakePaperLander('B', 64), "B"); }
+void BM_LanderCaseC_1s(benchmark::State& state) { RunLanding(state, test::MakePaperLander('C', 64), "C"); }
 
 void BM_LanderCaseA_Attitude_1s(benchmark::State& state) {
   test::PaperLander setup = test::MakePaperLander('A', 64);
@@ -86,7 +97,7 @@ void BM_LanderCaseA_Attitude_1s(benchmark::State& state) {
   for (Eigen::Matrix3d& R_WP : s.R_WP) R_WP = s.R_WB;
   s.v_WB_W = Eigen::Vector3d(0.5, 0.0, 0.0);
   s.p_WB.z() = lander::BodyHeightForClearance(setup.model, setup.terrain, s, setup.drop_height_m);
-  RunLanding(state, setup);
+  RunLanding(state, setup, "attitude");
 }
 
 void BM_LanderSlope10_Sideways_1s(benchmark::State& state) {
@@ -95,7 +106,7 @@ void BM_LanderSlope10_Sideways_1s(benchmark::State& state) {
   lander::LanderInitialState& s = setup.initial;
   s.v_WB_W = Eigen::Vector3d(0.0, 0.5, 0.0);
   s.p_WB.z() = lander::BodyHeightForClearance(setup.model, setup.terrain, s, setup.drop_height_m);
-  RunLanding(state, setup);
+  RunLanding(state, setup, "slope");
 }
 
 // The paper's lander at lunar gravity on a Bekker soil (issue 18, docs/bekker_soil.md): 4 deg slope,
@@ -117,7 +128,7 @@ void BM_LanderBekker_Slope4_1s(benchmark::State& state) {
   for (Eigen::Matrix3d& R_WP : s.R_WP) R_WP = s.R_WB;
   s.v_WB_W = Eigen::Vector3d(0.22, 0.0, 0.0);
   s.p_WB.z() = lander::BodyHeightForClearance(setup.model, setup.terrain, s, setup.drop_height_m);
-  RunLanding(state, setup);
+  RunLanding(state, setup, "bekker");
 }
 
 BENCHMARK(BM_LanderCaseA_1s)->Unit(benchmark::kMillisecond)->MinTime(2.0);

@@ -156,6 +156,7 @@ void Assemble(const LanderModel& model, const StateLayout& L, const rft::Terrain
   a->Q.segment<3>(0) = model.body_mass_kg * g;
   a->Q.segment<3>(3) = -p.w_WB_W.cross(I_B * p.w_WB_W);
   e->dissipation_W = 0.0;
+  e->pad_contacts = 0;
   Mat J_C;
   Eigen::Vector3d bias_C;
   for (int i = 0; i < kNumLegs; ++i) {
@@ -178,7 +179,12 @@ void Assemble(const LanderModel& model, const StateLayout& L, const rft::Terrain
     if (modes.pad[i] == PadMode::kFree && (given_wrench || PadDepth(model, terrain, i, f) > 0.0)) {
       const int soil = terrain.SoilAt(f.p_WJ.x(), f.p_WJ.y());
       const rft::SoilContactModel& contact = terrain.soils[soil].contact;
-      w = given_wrench ? *given_wrench : FreePadSoilWrench(model, contact, i, f, *terrain.surface);
+      if (given_wrench) {
+        w = *given_wrench;
+      } else {
+        w = FreePadSoilWrench(model, contact, i, f, *terrain.surface);
+        ++e->pad_contacts;
+      }
       e->dissipation_W -= w.force_W.dot(f.v_WJ_W) + w.moment_W.dot(f.w_WP_W);
       // Janosi's j grows with the slip of the contact's reference point, the joint centre
       // (docs/bekker_soil.md says why that point); a held pad does not slip.

@@ -106,6 +106,7 @@ struct LanderEvaluation {
   double dissipation_W = 0.0;                         // dW/dt
   std::array<double, kNumLegs> shear_rate_m_s{};      // dj/dt (StateLayout::has_shear)
   bool constrained = false;                           // any held pad or locked stroke
+  int pad_contacts = 0;                               // soil contacts evaluated (not given)
 };
 
 // Scratch of EvaluateLander (house style: Pinocchio's Data next to the fixed Model): the

@@ -42,11 +42,13 @@ struct HoldCheck {
 // move, so its capacity straight down is the same until the next event; the root functions keep it
 // (on a slope, where pads stay held while the lander slides, the capacity checks were half of all
 // contact evaluations).
+// `contacts` (optional) counts the contacts evaluated.
 HoldCheck CheckHold(const LanderModel& model, const rft::Terrain& terrain, int i, const PadFrame& f,
-                    const rft::ContactWrench& reaction, double* sink_capacity = nullptr) {
+                    const rft::ContactWrench& reaction, double* sink_capacity = nullptr, long* contacts = nullptr) {
   HoldCheck h;
   h.lift = reaction.force_W.z();
   const bool known = sink_capacity && !std::isnan(*sink_capacity);
+  if (contacts) *contacts += known ? 1 : 2;
   const double down = known ? *sink_capacity : QuasiStaticWrench(model, terrain, i, f, Eigen::Vector3d(0, 0, -1)).force_W.z();
   if (sink_capacity) *sink_capacity = down;
   h.sink = down - h.lift;
@@ -66,6 +68,9 @@ HoldCheck CheckHold(const LanderModel& model, const rft::Terrain& terrain, int i
 
 void LanderHybrid::Derivative(Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::VectorXd> ydot) {
   EvaluateLander(model_, L_, terrain_, modes_, y, &eval_, &data_);
+  last_rhs_y_ = y;
+  last_rhs_valid_ = true;
+  rhs_contacts_ += eval_.pad_contacts;
   StateDerivative(L_, y, eval_, ydot);
 }
 
@@ -74,7 +79,10 @@ void LanderHybrid::Roots(Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::
   bool need_forces = false;
   for (int i = 0; i < kNumLegs; ++i)
     need_forces |= modes_.pad[i] == PadMode::kHeld || (IsCrushable(model_, L_, i) && modes_.stroke[i] == StrokeMode::kLocked);
-  if (need_forces) EvaluateLander(model_, L_, terrain_, modes_, y, &root_eval_, &data_);
+  if (need_forces) {
+    EvaluateLander(model_, L_, terrain_, modes_, y, &root_eval_, &data_);
+    root_contacts_ += root_eval_.pad_contacts;
+  }
   const LanderPose pose = need_forces ? root_eval_.pose : ComputePose(model_, L_, y);
   for (int i = 0; i < kNumLegs; ++i) {
     const PadFrame& f = pose.pads[i];
@@ -87,7 +95,7 @@ void LanderHybrid::Roots(Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::
       // has slowed down once more.
       g[PadRoot(i, 3)] = g[PadRoot(i, 0)] > 0.0 ? f.v_WJ_W.norm() - kSoilRampSpeed : 1.0;
     } else {
-      const HoldCheck h = CheckHold(model_, terrain_, i, f, root_eval_.soil[i], &sink_capacity_[i]);
+      const HoldCheck h = CheckHold(model_, terrain_, i, f, root_eval_.soil[i], &sink_capacity_[i], &root_contacts_);
       g[PadRoot(i, 1)] = h.lift;
       g[PadRoot(i, 2)] = h.sink;
       g[PadRoot(i, 3)] = h.slide;
@@ -303,6 +311,7 @@ bool LanderHybrid::RecordCaptures(double t, const Eigen::VectorXd& y, const std:
 
 integ::EventAction LanderHybrid::OnEvent(double t, const std::vector<int>& found, Eigen::VectorXd& y) {
   sink_capacity_.fill(std::numeric_limits<double>::quiet_NaN());  // holds and poses may change here
+  last_rhs_valid_ = false;
   Record(t, y);  // the state at the event, in the old modes (peak forces before a capture)
   const LanderPose pose = ComputePose(model_, L_, y);
   const bool shear_reset = Touchdowns(t, found, y);
@@ -366,6 +375,8 @@ void LanderHybrid::Finish(double t, const Eigen::VectorXd& y) {
   result_.end_time_s = t;
   result_.final_state = y;
   result_.jacobian_pad_contacts = jacobian_data_.contact_evaluations;
+  result_.rhs_pad_contacts = rhs_contacts_;
+  result_.root_pad_contacts = root_contacts_;
 }
 
 }  // namespace touchdown::lander

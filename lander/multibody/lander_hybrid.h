@@ -24,13 +24,17 @@ class LanderHybrid {
       : model_(model), L_(model, HasJanosiShear(terrain)), terrain_(terrain), options_(options), result_(result) {
     for (int i = 0; i < kNumLegs; ++i) modes_.stroke[i] = StrokeMode::kLocked;
     eval_.u_dot = Eigen::VectorXd::Zero(L_.nu);
+    last_rhs_y_ = Eigen::VectorXd::Zero(L_.size);
+    jacobian_data_.attitude_sensitivity = options.jacobian_attitude_sensitivity;
   }
   const StateLayout& layout() const { return L_; }
   void Derivative(Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::VectorXd> ydot);
   void Roots(Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::VectorXd> g);
   // BDF's Newton Jacobian (lander_jacobian.h); `scale`: each state's typical size.
   void Jacobian(Eigen::Ref<const Eigen::VectorXd> y, const Eigen::VectorXd& scale, Eigen::Ref<Eigen::MatrixXd> J) {
-    LanderJacobian(model_, L_, terrain_, modes_, y, scale, &data_, &jacobian_data_, J);
+    // CVODE forms its Jacobian at the predicted state, where it has just evaluated the right-hand side.
+    const bool at_last_rhs = last_rhs_valid_ && y == last_rhs_y_;
+    LanderJacobian(model_, L_, terrain_, modes_, y, scale, &data_, &jacobian_data_, J, at_last_rhs ? &eval_ : nullptr);
   }
   long jacobian_contact_evaluations() const { return jacobian_data_.contact_evaluations; }
   integ::RootSpec RootFunctions();
@@ -60,8 +64,12 @@ class LanderHybrid {
   LanderModes modes_;
   LanderData data_;  // scratch of the right-hand side and the root functions
   LanderEvaluation eval_, root_eval_;
+  // The state of eval_, the last right-hand side (false after an event: the modes may have changed).
+  Eigen::VectorXd last_rhs_y_;
+  bool last_rhs_valid_ = false;
   LanderJacobianData jacobian_data_;
   std::array<Eigen::Vector3d, kNumLegs> held_at_;
+  long rhs_contacts_ = 0, root_contacts_ = 0;  // pad contacts evaluated (LanderRunResult)
   // Vertical capacity of each held pad since the last event (NaN: not yet evaluated).
   std::array<double, kNumLegs> sink_capacity_{kUnknown, kUnknown, kUnknown, kUnknown};
   static constexpr double kUnknown = std::numeric_limits<double>::quiet_NaN();

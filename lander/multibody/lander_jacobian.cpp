@@ -33,18 +33,49 @@ void PositionRows(const StateLayout& L, const Eigen::Ref<const Eigen::VectorXd>&
   }
 }
 
-// d(soil wrench)/d(joint position, joint velocity) of pad i, by difference quotients of its own
-// contact (six evaluations): the body's states reach a pad's contact only through these two.
-Eigen::Matrix<double, 6, 6> JointSensitivity(const LanderModel& model, const rft::Terrain& terrain, int i,
-                                             const PadFrame& f, const rft::ContactWrench& w0, double h_p, double h_v) {
+// Small rotation (world frame) taking R0 to R1: vee of the skew part of R1 R0^T.
+Eigen::Vector3d RotationBetween(const Eigen::Matrix3d& R0, const Eigen::Matrix3d& R1) {
+  const Eigen::Matrix3d A = R1 * R0.transpose();
+  return 0.5 * Eigen::Vector3d(A(2, 1) - A(1, 2), A(0, 2) - A(2, 0), A(1, 0) - A(0, 1));
+}
+
+// How far a pad moved between two poses, as the contact sees it: joint position, attitude (small
+// world-frame rotation), joint velocity, spin.
+PadMotion MotionBetween(const PadFrame& from, const PadFrame& to) {
+  PadMotion dx;
+  dx << to.p_WJ - from.p_WJ, RotationBetween(from.R_WP, to.R_WP), to.v_WJ_W - from.v_WJ_W, to.w_WP_W - from.w_WP_W;
+  return dx;
+}
+
+// d(soil wrench)/d(pad motion) of pad i by one-sided difference quotients of its own contact: the
+// wrench depends on the pad's state only through its joint's position and velocity, its attitude
+// and its spin (and Janosi's j), so twelve contacts give every column of the Jacobian by the chain
+// rule. `attitude` false: without the three attitude columns (see lander_jacobian.h).
+struct SensitivitySteps {
+  double position, angle, velocity, spin;
+};
+ContactSensitivity PadSensitivity(const LanderModel& model, const rft::Terrain& terrain, int i, const PadFrame& f,
+                                  const rft::ContactWrench& w0, const SensitivitySteps& h, bool attitude,
+                                  long* contacts) {
   const rft::SoilContactModel& contact = terrain.soils[terrain.SoilAt(f.p_WJ.x(), f.p_WJ.y())].contact;
-  Eigen::Matrix<double, 6, 6> D;
-  for (int k = 0; k < 6; ++k) {
+  ContactSensitivity D = ContactSensitivity::Zero();
+  for (int k = 0; k < 12; ++k) {
+    if (k / 3 == 1 && !attitude) continue;
     PadFrame g = f;
-    const double h = k < 3 ? h_p : h_v;
-    (k < 3 ? g.p_WJ : g.v_WJ_W)[k % 3] += h;
+    const int axis = k % 3;
+    double step = 0.0;
+    switch (k / 3) {
+      case 0: step = h.position, g.p_WJ[axis] += step; break;
+      case 1:
+        step = h.angle;
+        g.R_WP = Eigen::AngleAxisd(step, Eigen::Vector3d::Unit(axis)).toRotationMatrix() * f.R_WP;
+        break;
+      case 2: step = h.velocity, g.v_WJ_W[axis] += step; break;
+      default: step = h.spin, g.w_WP_W[axis] += step; break;
+    }
     const rft::ContactWrench w = FreePadSoilWrench(model, contact, i, g, *terrain.surface);
-    D.col(k) << (w.force_W - w0.force_W) / h, (w.moment_W - w0.moment_W) / h;
+    D.col(k) << (w.force_W - w0.force_W) / step, (w.moment_W - w0.moment_W) / step;
+    ++*contacts;
   }
   return D;
 }
@@ -79,51 +110,40 @@ struct JacobianPass {
     J.block(L.nq, j, rows, 1) = (w.ydot.segment(L.nq, rows) - w.f0.segment(L.nq, rows)) / h;
   }
 
-  // The body's columns: each pad's wrench predicted from its joint's motion (chain rule through
-  // JointSensitivity), so no contact is evaluated again.
-  void BodyColumns() {
-    std::array<Eigen::Matrix<double, 6, 6>, kNumLegs> D;
+  void Sensitivities() {
     for (int i = 0; i < kNumLegs; ++i)
       if (touching[i]) {
-        D[i] = JointSensitivity(model, terrain, i, w.base.pose.pads[i], w.base.soil[i], Step(L.p_B()), Step(L.v_B()));
-        w.contact_evaluations += 6;
+        const SensitivitySteps h{Step(L.p_B()), Step(L.quat_P(i)), Step(L.v_B()), Step(L.w_P(i))};
+        w.sensitivity[i] = PadSensitivity(model, terrain, i, w.base.pose.pads[i], w.base.soil[i], h, w.attitude_sensitivity,
+                                          &w.contact_evaluations);
       }
-    std::array<int, StateLayout::kBodyPositions + StateLayout::kBodySpeeds> columns{};
-    for (int c = 0; c < StateLayout::kBodyPositions; ++c) columns[c] = c;
-    for (int c = 0; c < StateLayout::kBodySpeeds; ++c) columns[StateLayout::kBodyPositions + c] = L.nq + c;
-    for (int j : columns) {
-      w.y = y;  // Column() perturbs it the same way again
-      w.y[j] += Step(j);
-      const LanderPose moved = ComputePose(model, L, w.y);
-      GivenSoil given;
-      for (int i = 0; i < kNumLegs; ++i) {
-        if (!touching[i]) continue;
-        const PadFrame &now = moved.pads[i], &base = w.base.pose.pads[i];
-        Eigen::Matrix<double, 6, 1> dx;
-        dx << now.p_WJ - base.p_WJ, now.v_WJ_W - base.v_WJ_W;
-        const Eigen::Matrix<double, 6, 1> dw = D[i] * dx;
-        w.predicted[i] = w.base.soil[i];
-        w.predicted[i].force_W += dw.head<3>();
-        w.predicted[i].moment_W += dw.tail<3>();
-        given.wrench[i] = &w.predicted[i];
-      }
-      Column(j, &given);
-    }
   }
 
-  // A pad's own columns (attitude, spin, stroke): only its contact is evaluated again.
-  void PadColumns(int i) {
+  // Column j with every touching pad's wrench predicted to first order from its motion (chain rule
+  // through the sensitivities): no contact is evaluated again.
+  void PredictedColumn(int j) {
+    w.y = y;  // Column() perturbs it the same way again
+    w.y[j] += Step(j);
+    const LanderPose moved = ComputePose(model, L, w.y);
+    GivenSoil given;
+    for (int i = 0; i < kNumLegs; ++i) {
+      if (!touching[i]) continue;
+      const Eigen::Matrix<double, 6, 1> dw = w.sensitivity[i] * MotionBetween(w.base.pose.pads[i], moved.pads[i]);
+      w.predicted[i] = w.base.soil[i];
+      w.predicted[i].force_W += dw.head<3>();
+      w.predicted[i].moment_W += dw.tail<3>();
+      given.wrench[i] = &w.predicted[i];
+    }
+    Column(j, &given);
+  }
+
+  // Janosi's j reaches only its own pad's contact (not through the pad's motion): evaluated again.
+  void ShearColumn(int i) {
     GivenSoil given;
     for (int k = 0; k < kNumLegs; ++k)
       if (k != i && touching[k]) given.wrench[k] = &w.base.soil[k];
-    std::array<int, StateLayout::kPadPositions + StateLayout::kPadSpeeds + 3> columns{};
-    int n = 0;
-    for (int c = 0; c < StateLayout::kPadPositions; ++c) columns[n++] = L.quat_P(i) + c;
-    for (int c = 0; c < StateLayout::kPadSpeeds; ++c) columns[n++] = L.w_P(i) + c;
-    if (L.stroke_slot[i] >= 0) columns[n++] = L.stroke(i), columns[n++] = L.stroke_rate(i);
-    if (L.has_shear) columns[n++] = L.shear(i);  // Janosi's j reaches the pad's own contact only
-    for (int c = 0; c < n; ++c) Column(columns[c], &given);
-    if (touching[i]) w.contact_evaluations += n;
+    Column(L.shear(i), &given);
+    if (touching[i]) ++w.contact_evaluations;
   }
 };
 
@@ -131,19 +151,26 @@ struct JacobianPass {
 
 void LanderJacobian(const LanderModel& model, const StateLayout& L, const rft::Terrain& terrain,
                     const LanderModes& modes, const Eigen::Ref<const Eigen::VectorXd>& y, const Eigen::VectorXd& scale,
-                    LanderData* data, LanderJacobianData* work, Eigen::Ref<Eigen::MatrixXd> J) {
+                    LanderData* data, LanderJacobianData* work, Eigen::Ref<Eigen::MatrixXd> J,
+                    const LanderEvaluation* at_y) {
   PositionRows(L, y, J);
   LanderJacobianData& w = *work;
-  EvaluateLander(model, L, terrain, modes, y, &w.base, data);
+  if (at_y != nullptr) {
+    w.base = *at_y;
+  } else {
+    EvaluateLander(model, L, terrain, modes, y, &w.base, data);
+    w.contact_evaluations += w.base.pad_contacts;
+  }
   w.f0.resize(L.size);
   w.ydot.resize(L.size);
   StateDerivative(L, y, w.base, w.f0);
-  w.contact_evaluations += kNumLegs;
   JacobianPass pass{model, L, terrain, modes, y, scale, data, w, J};
   for (int i = 0; i < kNumLegs; ++i)
     pass.touching[i] = modes.pad[i] == PadMode::kFree && PadDepth(model, terrain, i, w.base.pose.pads[i]) > 0.0;
-  pass.BodyColumns();
-  for (int i = 0; i < kNumLegs; ++i) pass.PadColumns(i);
+  pass.Sensitivities();
+  for (int j = 0; j < L.nq + L.nu; ++j) pass.PredictedColumn(j);
+  if (L.has_shear)
+    for (int i = 0; i < kNumLegs; ++i) pass.ShearColumn(i);
 }
 
 }  // namespace touchdown::lander

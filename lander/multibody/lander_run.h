@@ -38,6 +38,10 @@ struct LanderRunOptions {
   // 1.5 times slower (docs/lander_dynamics.md, "Speed of asymmetric landings").
   // A Jacobian at most every 200 steps (and at every convergence failure) instead of CVODE's 51:
   // 10-28 % fewer Jacobians, 3-13 % less CPU on those landings.
+  // The Jacobian differentiates each pad's contact with respect to its joint's position and
+  // velocity and its spin (nine contacts per pad in the soil, lander_jacobian.h); true adds its
+  // attitude (twelve).
+  bool jacobian_attitude_sensitivity = false;
   integ::IntegratorOptions integrator{.rtol = 1e-7,
                                       .atol = 1e-11,
                                       .max_step = 0.0,
@@ -111,7 +115,12 @@ struct LanderRunResult {
   double end_time_s = 0.0;
   Eigen::VectorXd final_state;
   integ::IntegratorSummary solver;
-  long jacobian_pad_contacts = 0;  // pad contacts evaluated for Jacobians (a right-hand side evaluates four)
+  // Pad contacts (rft::ComputeContactWrench calls, each a pass over a pad's triangles) evaluated
+  // for Jacobians, right-hand sides and root functions (held pads' capacities included): where the
+  // CPU goes.
+  long jacobian_pad_contacts = 0;
+  long rhs_pad_contacts = 0;
+  long root_pad_contacts = 0;
 };
 
 }  // namespace touchdown::lander

@@ -5,6 +5,7 @@
 
 #include "lander/multibody/lander_jacobian.h"
 #include "tests/lander/multibody/paper_lander.h"
+#include "tests/malloc_counter.h"
 
 namespace touchdown::lander {
 namespace {
@@ -27,47 +28,105 @@ const RockingState& Rocking() {
 
 Eigen::VectorXd Rhs(const RockingState& s, const Eigen::VectorXd& y) { return test::FreeModesRhs(s.setup, s.layout, y); }
 
-TEST(LanderJacobian, MatchesCentralDifferencesOfTheWholeRightHandSide) {
-  const RockingState& s = Rocking();
+// Central differences of the whole right-hand side, every contact evaluated again, step 1e-7 in SI
+// units.
+Eigen::MatrixXd CentralDifferences(const RockingState& s) {
   const int n = s.layout.size;
-  for (int i = 0; i < kNumLegs; ++i)
-    ASSERT_GT(PadDepth(s.setup.model, s.setup.terrain, i, ComputePose(s.setup.model, s.layout, s.y).pads[i]), 0.0);
-  LanderData data;
-  LanderJacobianData work;
-  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(n, n);
-  LanderJacobian(s.setup.model, s.layout, s.setup.terrain, LanderModes{}, s.y, Eigen::VectorXd::Ones(n), &data, &work,
-                 J);
-  // Reference: central differences, every contact evaluated again, step 1e-7 in SI units.
   Eigen::MatrixXd reference(n, n);
   for (int j = 0; j < n; ++j) {
     Eigen::VectorXd plus = s.y, minus = s.y;
     plus[j] += 1e-7, minus[j] -= 1e-7;
     reference.col(j) = (Rhs(s, plus) - Rhs(s, minus)) / 2e-7;
   }
-  // Column by column, relative to the column's size: the chain rule through the joints' motion
-  // and the frozen wrenches of the other pads are first-order exact, so what is left is the
-  // difference quotients' own error (one-sided, sqrt(eps) steps).
-  double worst = 0.0;
-  for (int j = 0; j < n; ++j) {
-    const double size = std::max(reference.col(j).norm(), 1e-6);
-    worst = std::max(worst, (J.col(j) - reference.col(j)).norm() / size);
-  }
-  std::printf("[ jacobian ] worst column error %.2e relative\n", worst);
-  EXPECT_LT(worst, 3e-5);  // measured 5.9e-6
+  return reference;
 }
 
-TEST(LanderJacobian, CostsThirteenContactsPerPadInTheSoil) {
+// The Jacobian at the rocking state; `attitude`: LanderJacobianData::attitude_sensitivity.
+Eigen::MatrixXd RockingJacobian(const RockingState& s, bool attitude, long* contacts) {
+  const int n = s.layout.size;
+  LanderData data;
+  LanderJacobianData work;
+  work.attitude_sensitivity = attitude;
+  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(n, n);
+  LanderJacobian(s.setup.model, s.layout, s.setup.terrain, LanderModes{}, s.y, Eigen::VectorXd::Ones(n), &data, &work,
+                 J);
+  *contacts = work.contact_evaluations;
+  return J;
+}
+
+// Worst error of column j of J against the reference, relative to the column's size. Columns whose
+// reference is below 1e-3 (in their rows' units: the body's x and y change nothing on a level bed,
+// exactly 0) are compared absolutely: the chain rule leaves rounding there (7e-9 measured).
+double ColumnError(const Eigen::MatrixXd& J, const Eigen::MatrixXd& reference, int j) {
+  return (J.col(j) - reference.col(j)).norm() / std::max(reference.col(j).norm(), 1e-3);
+}
+
+TEST(LanderJacobian, MatchesCentralDifferencesOfTheWholeRightHandSide) {
+  const RockingState& s = Rocking();
+  for (int i = 0; i < kNumLegs; ++i)
+    ASSERT_GT(PadDepth(s.setup.model, s.setup.terrain, i, ComputePose(s.setup.model, s.layout, s.y).pads[i]), 0.0);
+  long contacts = 0;
+  const Eigen::MatrixXd J = RockingJacobian(s, true, &contacts);
+  const Eigen::MatrixXd reference = CentralDifferences(s);
+  // The chain rule through each pad's motion (joint position and velocity, attitude, spin) and the
+  // frozen wrenches of the other pads are first-order exact, so what is left is the difference
+  // quotients' own error (one-sided, sqrt(eps) steps).
+  double worst = 0.0;
+  for (int j = 0; j < s.layout.size; ++j) worst = std::max(worst, ColumnError(J, reference, j));
+  std::printf("[ jacobian ] worst column error %.2e relative\n", worst);
+  EXPECT_LT(worst, 3e-5);  // measured 1.3e-5
+  // One evaluation of all four (the base point), then twelve per pad for its motion: 52, where
+  // difference quotients of the whole right-hand side would evaluate 4 x 42 = 168.
+  EXPECT_EQ(contacts, kNumLegs + kNumLegs * 12);
+}
+
+// SimulateLander's Jacobian leaves out the contact's derivatives with respect to the pads'
+// attitudes: nine contacts per pad. Every column but the pads' quaternions' is the same as above;
+// those lose the soil's moment gradient (not stiff at the steps taken, lander_jacobian.h).
+TEST(LanderJacobian, WithoutAttitudeSensitivityCostsNineContactsPerPad) {
+  const RockingState& s = Rocking();
+  long contacts = 0;
+  const Eigen::MatrixXd J = RockingJacobian(s, false, &contacts);
+  EXPECT_EQ(contacts, kNumLegs + kNumLegs * 9);
+  const Eigen::MatrixXd reference = CentralDifferences(s);
+  double worst = 0.0, worst_attitude = 0.0;
+  for (int j = 0; j < s.layout.size; ++j) {
+    bool pad_attitude = false;
+    for (int i = 0; i < kNumLegs; ++i) pad_attitude |= j >= s.layout.quat_P(i) && j < s.layout.quat_P(i) + 4;
+    (pad_attitude ? worst_attitude : worst) = std::max(pad_attitude ? worst_attitude : worst, ColumnError(J, reference, j));
+  }
+  EXPECT_LT(worst, 3e-5);
+  EXPECT_GT(worst_attitude, 0.1);  // what is left out is not small: it is not stiff
+}
+
+// House style: nothing allocates in a Jacobian once its scratch exists (the first call sizes it),
+// with and without the evaluation at y given.
+TEST(LanderJacobian, DoesNotAllocateOnceItsScratchExists) {
+  if (!testing_alloc::kCountsMalloc) GTEST_SKIP() << "malloc is not counted under AddressSanitizer";
   const RockingState& s = Rocking();
   const int n = s.layout.size;
   LanderData data;
   LanderJacobianData work;
+  LanderEvaluation at_y;
+  EvaluateLander(s.setup.model, s.layout, s.setup.terrain, LanderModes{}, s.y, &at_y, &data);
   Eigen::MatrixXd J = Eigen::MatrixXd::Zero(n, n);
-  LanderJacobian(s.setup.model, s.layout, s.setup.terrain, LanderModes{}, s.y, Eigen::VectorXd::Ones(n), &data, &work,
-                 J);
-  // One evaluation of all four (the base point), then per pad six for the joint's motion and
-  // seven for its own attitude and spin: 56, where difference quotients of the whole right-hand
-  // side would evaluate 4 x 42 = 168.
-  EXPECT_EQ(work.contact_evaluations, kNumLegs + kNumLegs * (6 + 7));
+  const Eigen::VectorXd scale = Eigen::VectorXd::Ones(n);
+  auto jacobian = [&](const LanderEvaluation* given) {
+    LanderJacobian(s.setup.model, s.layout, s.setup.terrain, LanderModes{}, s.y, scale, &data, &work, J, given);
+  };
+  jacobian(nullptr);
+  EXPECT_EQ(testing_alloc::CountAllocations([&] {
+              jacobian(nullptr);
+              jacobian(&at_y);
+            }),
+            0);
+  // Given the evaluation at y, the same Jacobian without its four base contacts.
+  const Eigen::MatrixXd evaluated = J;
+  const long before = work.contact_evaluations;
+  J.setZero();
+  jacobian(&at_y);
+  EXPECT_EQ(work.contact_evaluations - before, kNumLegs * 12);
+  EXPECT_EQ(J, evaluated);
 }
 
 }  // namespace
