@@ -605,7 +605,7 @@ ContactWrench ComputeContactWrench(const SurfaceElements& elements, const PadKin
   const bool footprint = pad_terms.has_added_mass();
   const bool power = pad_terms.has_power_depth();
   if (!compaction && !footprint && !power && elements.size() > 0 && elements.HasBounds() &&
-      !law.has_dynamic_stress() && !(law.has_mobilised_shear() && kinematics.shear_mobilisation != 1.0) &&
+      !(law.has_mobilised_shear() && kinematics.shear_mobilisation != 1.0) &&
       IsSpinning(elements, kinematics)) {
     if (const auto* plane = dynamic_cast<const PlaneGround*>(&ground))
       return RotatingWrenchOverPlane(elements, kinematics, *plane, law);
