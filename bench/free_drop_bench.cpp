@@ -51,6 +51,9 @@ void RunFreeDrop(benchmark::State& state, const char* pad_name, double tilt_deg,
   state.counters["tilt_deg"] = r.final_tilt_deg;
   state.counters["rest_s"] = r.time_to_rest_s;
   state.counters["samples"] = static_cast<double>(r.trace.size());
+  // The energy balance's residual relative to the energy put in (impact and gravity's work).
+  const double input = r.impact_energy_J + r.gravity_work_J;
+  state.counters["energy_rel"] = (input - r.dissipated_energy_J - r.final_kinetic_energy_J) / input;
 }
 
 void BM_FreeDropFlatVertical(benchmark::State& s) { RunFreeDrop(s, "flat", 0.0, 0.0, 0.0); }
