@@ -2,7 +2,7 @@
 // at 96 rim segments. Target: under 50 ms per drop on one core (issue 3). Counters report the
 // mesh size and the integrator's work so a slow case shows why it is slow. TD_RTOL overrides the
 // relative tolerance (convergence studies);
-// TD_DQ_JACOBIAN=1 takes CVODE's difference-quotient Jacobian instead of the structured one.
+// TD_MSBJ sets the most steps between Jacobians; TD_DQ_JACOBIAN=1 takes CVODE's difference-quotient Jacobian instead of the structured one.
 #include <benchmark/benchmark.h>
 
 #include <numbers>
@@ -34,6 +34,7 @@ void RunFreeDrop(benchmark::State& state, const char* pad_name, double tilt_deg,
   touchdown::pad::FreeDropResult r;
   touchdown::pad::FreeDropOptions opt;  // the defaults `touchdown drop --free` uses
   if (getenv("TD_RTOL")) opt.integrator.rtol = atof(getenv("TD_RTOL"));
+  if (getenv("TD_MSBJ")) opt.integrator.max_steps_between_jacobians = atol(getenv("TD_MSBJ"));
   if (getenv("TD_DQ_JACOBIAN")) opt.structured_jacobian = false;  // CVODE's difference quotients
   for (auto _ : state) {
     r = touchdown::pad::RunFreeDrop(body, bed, in, opt);

@@ -90,13 +90,9 @@ struct BlockPass {
 
 // Leading elements waiting for their stresses (beside the StressBatch of their normals and
 // velocities in W): lead weight, depth integral, depth moment (in B).
-// With a law's dynamic (depth-independent) stress, also each element's leading submerged area and
-// its first moment (in B), over which that stress acts.
 struct PendingLeading {
   alignas(64) double weight[StressBatch::kCapacity], depth[StressBatch::kCapacity];
   alignas(64) double mx[StressBatch::kCapacity], my[StressBatch::kCapacity], mz[StressBatch::kCapacity];
-  alignas(64) double area[StressBatch::kCapacity];
-  alignas(64) double ax[StressBatch::kCapacity], ay[StressBatch::kCapacity], az[StressBatch::kCapacity];
 };
 
 // What the drained elements add up to: the force and S = sum m_B sigma_W^T, entry (j, k) =
@@ -107,28 +103,10 @@ struct LeadingSums {
   int leading = 0;
 };
 
-// The law's dynamic stress on the waiting elements (StressLaw3D::DynamicStress at the normal and
-// velocity the quasi-static stress takes), times their areas, into the sums: the force, and S, since
-// the moment of a stress acting at the area's centroid is (R a_B) x sigma with a_B its area moment.
-inline void DrainDynamic(const StressLaw3D& law, const StressBatch& batch, const PendingLeading& pending,
-                         LeadingSums& sums) {
-  for (int i = 0; i < batch.count; ++i) {
-    const Eigen::Vector3d sigma =
-        pending.weight[i] * law.DynamicStress(Eigen::Vector3d(batch.nx[i], batch.ny[i], batch.nz[i]),
-                                              Eigen::Vector3d(batch.vx[i], batch.vy[i], batch.vz[i]));
-    const double a = pending.area[i];
-    sums.fx += a * sigma.x(), sums.fy += a * sigma.y(), sums.fz += a * sigma.z();
-    sums.S[0] += pending.ax[i] * sigma.x(), sums.S[1] += pending.ax[i] * sigma.y(), sums.S[2] += pending.ax[i] * sigma.z();
-    sums.S[3] += pending.ay[i] * sigma.x(), sums.S[4] += pending.ay[i] * sigma.y(), sums.S[5] += pending.ay[i] * sigma.z();
-    sums.S[6] += pending.az[i] * sigma.x(), sums.S[7] += pending.az[i] * sigma.y(), sums.S[8] += pending.az[i] * sigma.z();
-  }
-}
-
 // The law on the waiting elements in one batch; their stresses times their integrals into the sums.
-[[gnu::always_inline]] inline void Drain(const StressLaw3D& law, bool dynamic, StressBatch& batch,
-                                         const PendingLeading& pending, LeadingSums& sums) {
+[[gnu::always_inline]] inline void Drain(const StressLaw3D& law, StressBatch& batch, const PendingLeading& pending,
+                                         LeadingSums& sums) {
   law.StressPerDepthBatch(batch);
-  if (dynamic) DrainDynamic(law, batch, pending, sums);
   for (int i = 0; i < batch.count; ++i) {
     const double sx = pending.weight[i] * batch.sx[i], sy = pending.weight[i] * batch.sy[i],
                  sz = pending.weight[i] * batch.sz[i];
@@ -144,13 +122,10 @@ inline void DrainDynamic(const StressLaw3D& law, const StressBatch& batch, const
 
 // Queues one leading element (normal n, velocity v at its centroid, both in B) for the law,
 // draining the batch first when it is full.
-// `area`, `area_moment`: the element's leading submerged area and its moment (read only with a
-// dynamic stress).
-[[gnu::always_inline]] inline void Append(const StressLaw3D& law, bool dynamic, const RotationToW& rotate,
-                                          const Vec& n, const Vec& v, double weight, double depth_integral,
-                                          const Vec& m, double area, const Vec& area_moment, StressBatch& batch,
-                                          PendingLeading& pending, LeadingSums& sums) {
-  if (batch.count == StressBatch::kCapacity) Drain(law, dynamic, batch, pending, sums);
+[[gnu::always_inline]] inline void Append(const StressLaw3D& law, const RotationToW& rotate, const Vec& n,
+                                          const Vec& v, double weight, double depth_integral, const Vec& m,
+                                          StressBatch& batch, PendingLeading& pending, LeadingSums& sums) {
+  if (batch.count == StressBatch::kCapacity) Drain(law, batch, pending, sums);
   const int i = batch.count++;
   const Eigen::Vector3d n_W = rotate(n), v_W = rotate(v);
   batch.nx[i] = n_W.x();
@@ -164,10 +139,6 @@ inline void DrainDynamic(const StressLaw3D& law, const StressBatch& batch, const
   pending.mx[i] = m.x;
   pending.my[i] = m.y;
   pending.mz[i] = m.z;
-  pending.area[i] = area;
-  pending.ax[i] = area_moment.x;
-  pending.ay[i] = area_moment.y;
-  pending.az[i] = area_moment.z;
   ++sums.leading;
 }
 
@@ -187,8 +158,6 @@ ContactWrench RotatingWrenchOverPlane(const SurfaceElements& elements, const Pad
   const double* nb = elements.n_B.data();
   const double* areas = elements.area_m2.data();
 
-  const bool dynamic = law.has_dynamic_stress();
-  constexpr double kThird = 1.0 / 3.0;
   double submerged_area = 0.0;
   StressBatch batch;
   PendingLeading pending;
@@ -204,29 +173,25 @@ ContactWrench RotatingWrenchOverPlane(const SurfaceElements& elements, const Pad
       const Vec nrm = Load(nb + 3 * e);
       if (pass.whole[i] != 0.0) {
         submerged_area += areas[e];
-        if (pass.weight[i] > 0.0) {
-          // The whole triangle's area moment, as AddTriangle<true> forms it (read with a dynamic stress).
-          const Vec psum = Load(p0 + 3 * e) + Load(p1 + 3 * e) + Load(p2 + 3 * e);
-          Append(law, dynamic, rotate, nrm, Vec{pass.vx[i], pass.vy[i], pass.vz[i]}, pass.weight[i], pass.depth[i],
-                 Vec{pass.mx[i], pass.my[i], pass.mz[i]}, areas[e], (areas[e] * kThird) * psum, batch, pending,
-                 sums);
-        }
+        if (pass.weight[i] > 0.0)
+          Append(law, rotate, nrm, Vec{pass.vx[i], pass.vy[i], pass.vz[i]}, pass.weight[i], pass.depth[i],
+                 Vec{pass.mx[i], pass.my[i], pass.mz[i]}, batch, pending, sums);
         continue;
       }
       // Cut by the surface or by the leading boundary: the general path's code.
       const Vec p[3] = {Load(p0 + 3 * e), Load(p1 + 3 * e), Load(p2 + 3 * e)};
       double d[3];
       for (int k = 0; k < 3; ++k) d[k] = depth.At(p[k]);
-      const Submerged s = dynamic ? ClipAndIntegrate<true>(areas[e], d, p) : ClipAndIntegrate<false>(areas[e], d, p);
+      const Submerged s = ClipAndIntegrate<false>(areas[e], d, p);
       submerged_area += s.area;
       if (!(s.depth_integral > 0.0)) continue;
       const LeadingPart lead = LeadingPartOf(s, areas[e], d, p, nrm, u, w, /*clip_leading=*/true);
       if (lead.weight > 0.0)
-        Append(law, dynamic, rotate, nrm, lead.v, lead.weight, lead.part.depth_integral, lead.part.depth_moment,
-               lead.part.area, lead.part.area_moment, batch, pending, sums);
+        Append(law, rotate, nrm, lead.v, lead.weight, lead.part.depth_integral, lead.part.depth_moment, batch,
+               pending, sums);
     }
   }
-  if (batch.count > 0) Drain(law, dynamic, batch, pending, sums);
+  if (batch.count > 0) Drain(law, batch, pending, sums);
 
   ContactWrench out;
   out.force_W = Eigen::Vector3d(sums.fx, sums.fy, sums.fz);
