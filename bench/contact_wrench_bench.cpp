@@ -8,11 +8,13 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <memory>
 #include <numbers>
 #include <vector>
 
 #include "rft/agarwal2023.h"
 #include "rft/contact_wrench.h"
+#include "rft/dynamic_term.h"
 #include "rft/li2013_3d.h"
 #include "rft/soil.h"
 
@@ -89,12 +91,18 @@ void Run(benchmark::State& state, const StressLaw3D& law, bool curved, double ti
 const Li2013TreersLaw kLi(3.48e6);
 const Agarwal2023Law kAgarwal(AgarwalScalingXi(1540.0, 9.81, std::tan(37.0 * std::numbers::pi / 180)), 0.4);
 constexpr double kTilt = 10.0 * std::numbers::pi / 180;
+// Li 2013 with dynamic RFT's inertial term (lambda 1.1, rho 1540 kg/m^3), as fjs1_lp and fjs1_cp
+// carry it by default: area terms per element, the general path even when the pad spins.
+const DynamicTermLaw kLiDynamic(std::make_unique<Li2013TreersLaw>(3.48e6), 1.1, 1540.0);
 
 // Flat pad, tilted 10 deg, lowest point 5 mm deep: about a third of the bottom is in the soil.
 void BM_Flat_Li2013_Tilted(benchmark::State& s) { Run(s, kLi, false, kTilt, 0.005, 0.0); }
 void BM_Flat_Agarwal2023_Tilted(benchmark::State& s) { Run(s, kAgarwal, false, kTilt, 0.005, 0.0); }
 void BM_Flat_Li2013_TiltedSpinning(benchmark::State& s) { Run(s, kLi, false, kTilt, 0.005, 3.0); }
 // Flat pad level, 6 mm deep: the whole bottom and part of the wall in the soil.
+void BM_Flat_Dynamic_Tilted(benchmark::State& s) { Run(s, kLiDynamic, false, kTilt, 0.005, 0.0); }
+void BM_Flat_Dynamic_TiltedSpinning(benchmark::State& s) { Run(s, kLiDynamic, false, kTilt, 0.005, 3.0); }
+void BM_Curved_Dynamic_Level(benchmark::State& s) { Run(s, kLiDynamic, true, 0.0, 0.006, 0.0); }
 void BM_Flat_Li2013_LevelDeep(benchmark::State& s) { Run(s, kLi, false, 0.0, 0.006, 0.0); }
 // Curved pad level, 6 mm deep (its bottom rises 15 mm to the rim): one law call per element.
 void BM_Curved_Li2013_Level(benchmark::State& s) { Run(s, kLi, true, 0.0, 0.006, 0.0); }
@@ -103,6 +111,9 @@ void BM_Curved_Agarwal2023_Level(benchmark::State& s) { Run(s, kAgarwal, true, 0
 BENCHMARK(BM_Flat_Li2013_Tilted)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Flat_Agarwal2023_Tilted)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Flat_Li2013_TiltedSpinning)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Flat_Dynamic_Tilted)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Flat_Dynamic_TiltedSpinning)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Curved_Dynamic_Level)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Flat_Li2013_LevelDeep)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Curved_Li2013_Level)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Curved_Agarwal2023_Level)->Unit(benchmark::kMicrosecond);

@@ -1,7 +1,8 @@
 // A free 6-DOF pad drop (3D contact) with a meshed pad of about 5k triangles: the flat pad revolved
 // at 96 rim segments. Target: under 50 ms per drop on one core (issue 3). Counters report the
 // mesh size and the integrator's work so a slow case shows why it is slow. TD_RTOL overrides the
-// relative tolerance (convergence studies).
+// relative tolerance (convergence studies);
+// TD_MSBJ sets the most steps between Jacobians; TD_DQ_JACOBIAN=1 takes CVODE's difference-quotient Jacobian instead of the structured one.
 #include <benchmark/benchmark.h>
 
 #include <numbers>
@@ -33,6 +34,8 @@ void RunFreeDrop(benchmark::State& state, const char* pad_name, double tilt_deg,
   touchdown::pad::FreeDropResult r;
   touchdown::pad::FreeDropOptions opt;  // the defaults `touchdown drop --free` uses
   if (getenv("TD_RTOL")) opt.integrator.rtol = atof(getenv("TD_RTOL"));
+  if (getenv("TD_MSBJ")) opt.integrator.max_steps_between_jacobians = atol(getenv("TD_MSBJ"));
+  if (getenv("TD_DQ_JACOBIAN")) opt.structured_jacobian = false;  // CVODE's difference quotients
   for (auto _ : state) {
     r = touchdown::pad::RunFreeDrop(body, bed, in, opt);
     benchmark::DoNotOptimize(r.final_penetration_m);
@@ -49,6 +52,9 @@ void RunFreeDrop(benchmark::State& state, const char* pad_name, double tilt_deg,
   state.counters["tilt_deg"] = r.final_tilt_deg;
   state.counters["rest_s"] = r.time_to_rest_s;
   state.counters["samples"] = static_cast<double>(r.trace.size());
+  // The energy balance's residual relative to the energy put in (impact and gravity's work).
+  const double input = r.impact_energy_J + r.gravity_work_J;
+  state.counters["energy_rel"] = (input - r.dissipated_energy_J - r.final_kinetic_energy_J) / input;
 }
 
 void BM_FreeDropFlatVertical(benchmark::State& s) { RunFreeDrop(s, "flat", 0.0, 0.0, 0.0); }

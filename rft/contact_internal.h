@@ -282,4 +282,11 @@ inline bool IsSpinning(const SurfaceElements& elements, const PadKinematics& k) 
 ContactWrench RotatingWrenchOverPlane(const SurfaceElements& elements, const PadKinematics& kinematics,
                                       const PlaneGround& plane, const StressLaw3D& law);
 
+// The same for a law with a dynamic stress (StressLaw3D::has_dynamic_stress): that stress is taken
+// over each leading element's submerged area, at its centroid, as the general path does
+// (contact_wrench_rotating_dynamic.cpp).
+ContactWrench RotatingWrenchWithDynamicStressOverPlane(const SurfaceElements& elements,
+                                                      const PadKinematics& kinematics, const PlaneGround& plane,
+                                                      const StressLaw3D& law);
+
 }  // namespace touchdown::rft::contact_internal

@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "rft/deepest_point.h"
 #include "rft/entrained_mass.h"
@@ -25,6 +26,10 @@ FreePadDynamics::FreePadDynamics(const geom::PadBody& body, const rft::Terrain& 
       I_inv_(body.inertia_com_B.inverse()),
       radius_(BodyRadius(body)) {
   for (const rft::TerrainSoil& soil : terrain.soils) shear_state_ |= soil.contact.has_janosi_shear();
+  if (const auto* plane = dynamic_cast<const rft::PlaneGround*>(&ground_)) {
+    depth_only_ = true;
+    g_W_ = Eigen::Vector3d(plane->slope_x(), plane->slope_y(), -1.0);
+  }
 }
 
 FreePadPose FreePadDynamics::PoseOf(const Eigen::Ref<const Eigen::VectorXd>& y) const {
@@ -106,6 +111,67 @@ void FreePadDynamics::Derivative(const Eigen::Ref<const Eigen::VectorXd>& y, Eig
   }
   // Janosi's j: the horizontal slip of the contact's reference point while the pad is in the soil.
   if (shear_state_) ydot[kShearDisplacement] = w.submerged_area_m2 > 0.0 ? std::hypot(s.v_WB.x(), s.v_WB.y()) : 0.0;
+}
+
+int FreePadDynamics::JacobianContacts() const { return (depth_only_ ? 1 : 3) + 3 + 3 + 3 + (shear_state_ ? 1 : 0); }
+
+void FreePadDynamics::Jacobian(const Eigen::Ref<const Eigen::VectorXd>& y, const Eigen::Ref<const Eigen::VectorXd>& f0,
+                               const Eigen::Ref<const Eigen::VectorXd>& scale, Eigen::Ref<Eigen::MatrixXd> J) const {
+  using State = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kSize + 1, 1>;  // on the stack
+  const int n = size(), soil_rows = n - kV;
+  const double root_eps = std::sqrt(std::numeric_limits<double>::epsilon());
+  State yp = y, fp(n);
+  J.setZero();
+  // The soil's rows (v, w, work, j) of one column: a forward difference of step h along yp - y.
+  auto difference = [&](double h) -> Eigen::Ref<const Eigen::VectorXd> {
+    Derivative(yp, fp);
+    fp.tail(soil_rows) = (fp.tail(soil_rows) - f0.tail(soil_rows)) / h;
+    yp = y;
+    return fp.tail(soil_rows);
+  };
+  auto step = [&](int i) { return root_eps * std::max(std::abs(y[i]), scale[i]); };
+  // Position: dp/dt = v; the soil's columns.
+  for (int i = 0; i < 3; ++i) J(kP + i, kV + i) = 1.0;
+  if (depth_only_) {  // d/dp = g_W d/d(depth); the difference along -z (depth grows by h)
+    const double h = step(kP + 2);
+    yp[kP + 2] -= h;
+    const Eigen::Ref<const Eigen::VectorXd> dF = difference(h);
+    for (int i = 0; i < 3; ++i) J.col(kP + i).tail(soil_rows) = g_W_[i] * dF;
+  } else {
+    for (int i = 0; i < 3; ++i) {
+      const double h = step(kP + i);
+      yp[kP + i] += h;
+      J.col(kP + i).tail(soil_rows) = difference(h);
+    }
+  }
+  // Attitude: dq/dt = q (x) (0, w) / 2 is linear in q and w. The soil's rows depend on q / |q|
+  // alone: differences along body-frame rotations theta_k, q' = q (x) (cos h/2, sin h/2 e_k) (same
+  // norm); then d/dq_i = (2 / |q|) sum_k (q^ (x) e_k)_i d/dtheta_k, the tangent part of e_i.
+  const Eigen::Vector4d q = y.segment<4>(kQ);
+  const Eigen::Vector3d w = y.segment<3>(kW);
+  Eigen::Matrix4d dqdot_dq;
+  dqdot_dq << 0.0, -w.x(), -w.y(), -w.z(), w.x(), 0.0, w.z(), -w.y(), w.y(), -w.z(), 0.0, w.x(), w.z(), w.y(), -w.x(), 0.0;
+  J.block<4, 4>(kQ, kQ) = 0.5 * dqdot_dq;
+  Eigen::Matrix<double, 4, 3> qe;  // column k: q (x) (0, e_k)
+  qe << -q[1], -q[2], -q[3], q[0], -q[3], q[2], q[3], q[0], -q[1], -q[2], q[1], q[0];
+  J.block<4, 3>(kQ, kW) = 0.5 * qe;
+  const double norm = q.norm(), h_rot = root_eps;
+  for (int k = 0; k < 3; ++k) {
+    yp.segment<4>(kQ) = std::cos(0.5 * h_rot) * q + std::sin(0.5 * h_rot) * qe.col(k);
+    const Eigen::Ref<const Eigen::VectorXd> dF = difference(h_rot);
+    for (int i = 0; i < 4; ++i) J.col(kQ + i).tail(soil_rows) += (2.0 * qe(i, k) / (norm * norm)) * dF;
+  }
+  // Velocity, angular velocity and (with Janosi's shear) j: plain differences; work: no column.
+  for (const int i : {int{kV}, kV + 1, kV + 2, int{kW}, kW + 1, kW + 2}) {
+    const double h = step(i);
+    yp[i] += h;
+    J.col(i).tail(soil_rows) = difference(h);
+  }
+  if (shear_state_) {
+    const double h = step(kShearDisplacement);
+    yp[kShearDisplacement] += h;
+    J.col(kShearDisplacement).tail(soil_rows) = difference(h);
+  }
 }
 
 double FreePadDynamics::RestCapacity(const FreePadPose& s) const {

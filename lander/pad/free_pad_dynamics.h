@@ -54,6 +54,17 @@ class FreePadDynamics {
   FreePadVertical Vertical(const FreePadPose& s, const rft::ContactWrench& w, const rft::SoilContactModel& soil) const;
   // dy/dt at y.
   void Derivative(const Eigen::Ref<const Eigen::VectorXd>& y, Eigen::Ref<Eigen::VectorXd> ydot) const;
+  // d(ydot)/dy at y, ydot = Derivative(y), into J (size() x size()), formed from the structure:
+  // the kinematic rows (p, q) exactly; the soil's columns by forward differences of Derivative
+  // along the pose's and twist's own coordinates: over a plane the wrench depends on
+  // the position only through the depth (one difference, not three); the attitude through the
+  // normalised quaternion (three rotations, not four quaternion components); the work done never
+  // feeds back (no column). JacobianContacts() differences, where CVODE's own Jacobian takes one per
+  // state (14). `scale`: each state's typical size, sizing its difference (as CVODE's 1 / ewt).
+  // Nothing allocates.
+  void Jacobian(const Eigen::Ref<const Eigen::VectorXd>& y, const Eigen::Ref<const Eigen::VectorXd>& ydot,
+                const Eigen::Ref<const Eigen::VectorXd>& scale, Eigen::Ref<Eigen::MatrixXd> J) const;
+  int JacobianContacts() const;
   // The soil's quasi-static capacity for further straight-down motion at pose s: the vertical force
   // on a probe moving down at 1 um/s (RFT depends on the direction only; speed-dependent terms must
   // not count as static capacity).
@@ -80,6 +91,12 @@ class FreePadDynamics {
   Eigen::Matrix3d I_, I_inv_;
   double radius_;
   bool shear_state_ = false;
+  // Over a plane the wrench on one soil depends on the position through the depth alone, depth =
+  // h0 + g_W . p (g_W = (slope_x, slope_y, -1)); the soil under the pad is piecewise constant in
+  // (x, y), so its changes have no derivative for the Jacobian to carry (a difference across a
+  // patch edge would be a spike). The drop on a patch then takes the uniform bed's Newton steps.
+  bool depth_only_ = false;
+  Eigen::Vector3d g_W_ = Eigen::Vector3d(0.0, 0.0, -1.0);
 };
 
 }  // namespace touchdown::pad

@@ -208,7 +208,7 @@ grid:
   tilt_deg: [0, 3]
   impact_speed_m_s: {from: 0.4, to: 1.6, count: 6}
 )");
-  ExpectSameAtAnyThreadCountAndShards(box, "--max-drop-evaluations 700");
+  ExpectSameAtAnyThreadCountAndShards(box, "--max-drop-evaluations 150");
   const std::vector<std::string> rows = Dump(box.dir() / "t1" / "results.sqlite", "drops", "drop_index");
   ASSERT_EQ(rows.size(), 12u);
   const auto failed = std::count_if(rows.begin(), rows.end(), [](const std::string& r) {

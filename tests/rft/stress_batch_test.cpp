@@ -141,5 +141,37 @@ TEST(RftStressBatch, RotatingContactIsTheSameWithAndWithoutAreaTerms) {
   EXPECT_LE((a.moment_W - b.moment_W).norm(), 1e-12 * a.moment_W.norm());
 }
 
+// The vectorised path for a rotating pad over a plane (contact_wrench_rotating.cpp) carries the
+// law's dynamic stress too: the same wrench as the general element-by-element path, which a pad
+// without bounds takes, to rounding. Tilted and sinking (elements cut by the surface), spinning
+// (elements cut by the leading boundary), lambda 1.1 as the shipped soils; the dynamic part is a
+// good share of the force at 2 m/s.
+TEST(RftStressBatch, RotatingVectorisedPathCarriesTheDynamicStress) {
+  SurfaceElements bounded = testing::MakeRevolvedPad(testing::FlatProfile(0.05, 0.016, 3), 48);
+  bounded.UpdateBounds();  // as footpad_geom does for every pad
+  SurfaceElements unbounded = bounded;
+  unbounded.Resize(bounded.size());  // keeps the size, drops the bounds: the general path
+  unbounded.p0_B = bounded.p0_B, unbounded.p1_B = bounded.p1_B, unbounded.p2_B = bounded.p2_B;
+  unbounded.n_B = bounded.n_B, unbounded.area_m2 = bounded.area_m2;
+  ASSERT_FALSE(unbounded.HasBounds());
+  const DynamicTermLaw dynamic(std::make_unique<Li2013TreersLaw>(3.48e6), 1.1, 1540.0);
+  const Li2013TreersLaw quasi_static(3.48e6);
+  PadKinematics k;
+  k.R_WB = testing::RotX(0.15);
+  k.p_WB = Eigen::Vector3d(0.0, 0.0, -0.006);
+  k.v_WB_W = Eigen::Vector3d(0.6, -0.2, -1.6);
+  k.w_WB_W = Eigen::Vector3d(8.0, -4.0, 6.0);
+  const ContactWrench fast = ComputeContactWrench(bounded, k, PlaneGround(), dynamic);
+  const ContactWrench general = ComputeContactWrench(unbounded, k, PlaneGround(), dynamic);
+  const ContactWrench without = ComputeContactWrench(bounded, k, PlaneGround(), quasi_static);
+  ASSERT_GT(general.leading_elements, StressBatch::kCapacity);
+  EXPECT_EQ(fast.leading_elements, general.leading_elements);
+  EXPECT_NEAR(fast.submerged_area_m2, general.submerged_area_m2, 1e-14);
+  EXPECT_GT((general.force_W - without.force_W).norm(), 0.05 * general.force_W.norm());  // the term matters
+  EXPECT_GT((general.moment_W - without.moment_W).norm(), 0.02 * general.moment_W.norm());
+  EXPECT_LE((fast.force_W - general.force_W).norm(), 1e-12 * general.force_W.norm());
+  EXPECT_LE((fast.moment_W - general.moment_W).norm(), 1e-12 * general.moment_W.norm());
+}
+
 }  // namespace
 }  // namespace touchdown::rft

@@ -36,7 +36,8 @@ TEST(FreeDrop, VerticalLevelDropMatchesTheRigDrop) {
   // Energy: kinetic at touchdown + the weight's work = work against the soil (+ the tiny
   // kinetic energy left below the rest threshold).
   const double input = free.impact_energy_J + free.gravity_work_J;
-  EXPECT_NEAR(free.dissipated_energy_J + free.final_kinetic_energy_J, input, 1e-6 * input);
+  // To the integration's accuracy (the free drop's rtol 1e-6 closes it to 2e-5, FreeDropOptions).
+  EXPECT_NEAR(free.dissipated_energy_J + free.final_kinetic_energy_J, input, 1e-4 * input);
 }
 
 }  // namespace
@@ -83,11 +84,13 @@ TEST_P(ShippedPadFreeDrop, LandsAtEveryTiltAboutXAndY) {
         EXPECT_GT(r.final_penetration_m, 0.0);
         EXPECT_LT(r.final_penetration_m, 0.1);
         EXPECT_GT(r.time_to_rest_s, 0.0);
-        EXPECT_NEAR(r.touchdown_tilt_deg, tilt_deg, 1e-6);
+        EXPECT_NEAR(r.touchdown_tilt_deg, tilt_deg, 1e-4);  // to the integration's accuracy (rtol 1e-6)
         // The first sample is at the surface: no force yet but rounding (the defect's was 1e12 N).
         EXPECT_LT(std::abs(r.trace.front().force_N), 1e-9);
         const double input = r.impact_energy_J + r.gravity_work_J;
-        EXPECT_NEAR(r.dissipated_energy_J + r.final_kinetic_energy_J, input, 1e-5 * input);
+        // To the integration's accuracy at the free drop's rtol 1e-6 (FreeDropOptions): at most 1.2e-4,
+        // the level hex and curved pads at 0.5 m/s.
+        EXPECT_NEAR(r.dissipated_energy_J + r.final_kinetic_energy_J, input, 3e-4 * input);
       }
     }
   }

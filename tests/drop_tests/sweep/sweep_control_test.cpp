@@ -203,7 +203,7 @@ TEST_F(SweepControl, TheEvaluationLimitFailsTheSameDropsAtAnyThreadCountNamingTh
   EXPECT_EQ(plan.rig.integrator.max_wall_time_s, 0.0);
   // The limit decides whether a drop finishes, never what it computes: not in the digest.
   const std::string digest = plan.DigestText();
-  plan.rig.integrator.max_rhs_evaluations = 700;
+  plan.rig.integrator.max_rhs_evaluations = 150;
   EXPECT_EQ(plan.DigestText(), digest);
   const std::vector<DropRecord> one = RunSweepInMemory(plan, 1), two = RunSweepInMemory(plan, 2);
   ExpectSameRecords(one, two);
@@ -212,8 +212,8 @@ TEST_F(SweepControl, TheEvaluationLimitFailsTheSameDropsAtAnyThreadCountNamingTh
     if (r.ok) continue;
     ++failed;
     EXPECT_EQ(r.failure_limit, "max_rhs_evaluations") << r.failure;
-    EXPECT_EQ(r.failure_limit_value, 700.0);
-    EXPECT_NE(r.failure.find("more than 700 right-hand-side evaluations"), std::string::npos) << r.failure;
+    EXPECT_EQ(r.failure_limit_value, 150.0);
+    EXPECT_NE(r.failure.find("more than 150 right-hand-side evaluations"), std::string::npos) << r.failure;
   }
   EXPECT_GT(failed, 0);
   EXPECT_LT(failed, static_cast<int>(one.size()));  // the limit separates cheap drops from costly ones
@@ -239,15 +239,15 @@ TEST_F(SweepControl, ARerunWithAHigherLimitRetriesTheDropsThatRanOutOfTheLowerOn
     EXPECT_EQ(status, 0) << Slurp(c.err_path);
     return Slurp(c.out_path);
   };
-  run({"--max-drop-evaluations", "700"});
+  run({"--max-drop-evaluations", "150"});
   const std::vector<DropRecord> low = Records(out);
   int64_t low_failed = 0;
   for (const DropRecord& r : low) low_failed += !r.ok;
   ASSERT_GT(low_failed, 0);
-  EXPECT_EQ(ResultsDb(ResultsDbPath(out.string())).Meta().at("max_drop_evaluations"), "700");
+  EXPECT_EQ(ResultsDb(ResultsDbPath(out.string())).Meta().at("max_drop_evaluations"), "150");
   EXPECT_EQ(ResultsDb(ResultsDbPath(out.string())).Meta().at("load_dependent_failures"), "no");
   // The same or a lower limit: nothing is retried.
-  std::string text = run({"--max-drop-evaluations", "500"});
+  std::string text = run({"--max-drop-evaluations", "120"});
   EXPECT_NE(text.find(", 0 run now"), std::string::npos) << text;
   // A higher one (the default): exactly the drops that ran out are computed again, and the
   // database equals a run with the default limit from the start.

@@ -44,7 +44,8 @@ TEST(FreeDrop, SidewaysDropTravelsAndStaysLevelEnough) {
   EXPECT_GT(r.final_penetration_m, 0.0);
   EXPECT_LT(r.final_tilt_deg, 10.0);
   const double input = r.impact_energy_J + r.gravity_work_J;
-  EXPECT_NEAR(r.dissipated_energy_J + r.final_kinetic_energy_J, input, 1e-5 * input);
+  // To the integration's accuracy: 2e-5 at the default rtol 1e-6 (FreeDropOptions).
+  EXPECT_NEAR(r.dissipated_energy_J + r.final_kinetic_energy_J, input, 1e-4 * input);
 }
 
 // The free drop's absolute tolerances are rtol times each state's scale (free_drop.cpp). A tilted
@@ -58,7 +59,8 @@ TEST(FreeDrop, ScaledTolerancesMatchATighterRunInFewerSteps) {
   FreeDropInput in;
   in.impact_speed_m_s = 1.0;
   in.tilt_rad = 5.0 * std::numbers::pi / 180.0;
-  const FreeDropOptions defaults;
+  FreeDropOptions defaults;
+  defaults.integrator.rtol = 1e-8;  // the scales' effect as measured when they came (the default is 1e-6 now)
   const FreeDropResult r = RunFreeDrop(body, rft::UniformTerrain("soil", law), in, defaults);
   FreeDropOptions tight = defaults;
   tight.integrator.rtol = 1e-10;
