@@ -45,7 +45,9 @@ struct PaperLander {
 // data/landers/sutoh2017_lander.yaml on the ground of data/scenarios/lander_case_<ground_case>.yaml
 // ('A': LP under every pad; 'B': CP under pad 1; 'C': CP under pads 1 and 2), released with the
 // pad bottoms drop_height_m above the surface (0: placed on it).
-inline PaperLander MakePaperLander(char ground_case, int segments = kTestAngularSegments, double drop_height_m = 0.10) {
+// `shipped_soils`: the soils' dynamic term as data/soils ships it (else quasi-static, as the tests pin).
+inline PaperLander MakePaperLander(char ground_case, int segments = kTestAngularSegments, double drop_height_m = 0.10,
+                                   bool shipped_soils = false) {
   PaperLander out;
   out.total_mass_kg = 4.3;                  // sutoh2017_lander.yaml: total_mass_kg
   const double cog_height = 230 * kMm;      // sutoh2017_lander.yaml: cog_height_mm
@@ -73,14 +75,14 @@ inline PaperLander MakePaperLander(char ground_case, int segments = kTestAngular
   lander::FinishModel(m);
 
   out.terrain.surface = std::make_shared<rft::PlaneGround>(0.0, 0.0, 0.0);
-  out.terrain.soils.push_back({"fjs1_lp", Fjs1Law(false, m.gravity_m_s2)});  // lander_case_*.yaml: ground.soil
+  out.terrain.soils.push_back({"fjs1_lp", Fjs1Law(false, m.gravity_m_s2, shipped_soils)});  // lander_case_*.yaml: ground.soil
   lander::LanderInitialState& s = out.initial;
   for (int i = 0; i < lander::kNumLegs; ++i) s.R_WP[i] = s.R_WB;
   out.drop_height_m = drop_height_m;  // lander_case_*.yaml: initial.drop_height_m
   s.p_WB.z() = lander::BodyHeightForClearance(m, out.terrain, s, drop_height_m);
   // lander_case_{B,C}.yaml: ground.patches, CP squares of half width 0.08 m under pads 1 (and 2).
   const int cp_pads = ground_case == 'B' ? 1 : ground_case == 'C' ? 2 : 0;
-  if (cp_pads > 0) out.terrain.soils.push_back({"fjs1_cp", Fjs1Law(true, m.gravity_m_s2)});
+  if (cp_pads > 0) out.terrain.soils.push_back({"fjs1_cp", Fjs1Law(true, m.gravity_m_s2, shipped_soils)});
   for (int leg = 0; leg < cp_pads; ++leg) {
     const double h = 0.08;
     const Eigen::Vector3d c = s.p_WB + s.R_WB * m.legs[leg].joint_B;
