@@ -284,7 +284,7 @@ ContactWrench RotatingWrenchOverPlane(const SurfaceElements& elements, const Pad
 
 // The same for a law with a dynamic stress (StressLaw3D::has_dynamic_stress): that stress is taken
 // over each leading element's submerged area, at its centroid, as the general path does
-// (contact_wrench_rotating_dynamic.cpp).
+// (contact_wrench_rotating.cpp, the same template).
 ContactWrench RotatingWrenchWithDynamicStressOverPlane(const SurfaceElements& elements,
                                                       const PadKinematics& kinematics, const PlaneGround& plane,
                                                       const StressLaw3D& law);

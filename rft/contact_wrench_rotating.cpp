@@ -9,6 +9,10 @@
 // (StressLaw3D::StressPerDepthBatch); the others - cut by the free surface or by the leading
 // boundary - take the same per-element code as the general path (contact_internal.h). The sums are
 // the general path's, grouped differently (tests/rft/stress_batch_test.cpp compares the two).
+//
+// A law with a dynamic (depth-independent) stress (dynamic RFT's inertial term, on by default in the
+// shipped soils) takes the same pass with each leading element's submerged area and area moment kept
+// beside its depth integrals, and the law's DynamicStress added over them (kDynamic below).
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -90,9 +94,13 @@ struct BlockPass {
 
 // Leading elements waiting for their stresses (beside the StressBatch of their normals and
 // velocities in W): lead weight, depth integral, depth moment (in B).
+// With a law's dynamic (depth-independent) stress, also each element's leading submerged area and
+// its first moment (in B), over which that stress acts.
 struct PendingLeading {
   alignas(64) double weight[StressBatch::kCapacity], depth[StressBatch::kCapacity];
   alignas(64) double mx[StressBatch::kCapacity], my[StressBatch::kCapacity], mz[StressBatch::kCapacity];
+  alignas(64) double area[StressBatch::kCapacity];
+  alignas(64) double ax[StressBatch::kCapacity], ay[StressBatch::kCapacity], az[StressBatch::kCapacity];
 };
 
 // What the drained elements add up to: the force and S = sum m_B sigma_W^T, entry (j, k) =
@@ -103,10 +111,29 @@ struct LeadingSums {
   int leading = 0;
 };
 
+// The law's dynamic stress on the waiting elements (StressLaw3D::DynamicStress at the normal and
+// velocity the quasi-static stress takes), times their areas, into the sums: the force, and S, since
+// the moment of a stress acting at the area's centroid is (R a_B) x sigma with a_B its area moment.
+inline void DrainDynamic(const StressLaw3D& law, const StressBatch& batch, const PendingLeading& pending,
+                         LeadingSums& sums) {
+  for (int i = 0; i < batch.count; ++i) {
+    const Eigen::Vector3d sigma =
+        pending.weight[i] * law.DynamicStress(Eigen::Vector3d(batch.nx[i], batch.ny[i], batch.nz[i]),
+                                              Eigen::Vector3d(batch.vx[i], batch.vy[i], batch.vz[i]));
+    const double a = pending.area[i];
+    sums.fx += a * sigma.x(), sums.fy += a * sigma.y(), sums.fz += a * sigma.z();
+    sums.S[0] += pending.ax[i] * sigma.x(), sums.S[1] += pending.ax[i] * sigma.y(), sums.S[2] += pending.ax[i] * sigma.z();
+    sums.S[3] += pending.ay[i] * sigma.x(), sums.S[4] += pending.ay[i] * sigma.y(), sums.S[5] += pending.ay[i] * sigma.z();
+    sums.S[6] += pending.az[i] * sigma.x(), sums.S[7] += pending.az[i] * sigma.y(), sums.S[8] += pending.az[i] * sigma.z();
+  }
+}
+
 // The law on the waiting elements in one batch; their stresses times their integrals into the sums.
+template <bool kDynamic>
 [[gnu::always_inline]] inline void Drain(const StressLaw3D& law, StressBatch& batch, const PendingLeading& pending,
                                          LeadingSums& sums) {
   law.StressPerDepthBatch(batch);
+  if constexpr (kDynamic) DrainDynamic(law, batch, pending, sums);
   for (int i = 0; i < batch.count; ++i) {
     const double sx = pending.weight[i] * batch.sx[i], sy = pending.weight[i] * batch.sy[i],
                  sz = pending.weight[i] * batch.sz[i];
@@ -122,10 +149,14 @@ struct LeadingSums {
 
 // Queues one leading element (normal n, velocity v at its centroid, both in B) for the law,
 // draining the batch first when it is full.
+// `area`, `area_moment`: the element's leading submerged area and its moment (kept with a dynamic
+// stress only).
+template <bool kDynamic>
 [[gnu::always_inline]] inline void Append(const StressLaw3D& law, const RotationToW& rotate, const Vec& n,
                                           const Vec& v, double weight, double depth_integral, const Vec& m,
-                                          StressBatch& batch, PendingLeading& pending, LeadingSums& sums) {
-  if (batch.count == StressBatch::kCapacity) Drain(law, batch, pending, sums);
+                                          double area, const Vec& area_moment, StressBatch& batch,
+                                          PendingLeading& pending, LeadingSums& sums) {
+  if (batch.count == StressBatch::kCapacity) Drain<kDynamic>(law, batch, pending, sums);
   const int i = batch.count++;
   const Eigen::Vector3d n_W = rotate(n), v_W = rotate(v);
   batch.nx[i] = n_W.x();
@@ -139,13 +170,22 @@ struct LeadingSums {
   pending.mx[i] = m.x;
   pending.my[i] = m.y;
   pending.mz[i] = m.z;
+  if constexpr (kDynamic) {
+    pending.area[i] = area;
+    pending.ax[i] = area_moment.x;
+    pending.ay[i] = area_moment.y;
+    pending.az[i] = area_moment.z;
+  }
   ++sums.leading;
 }
 
 }  // namespace
 
-ContactWrench RotatingWrenchOverPlane(const SurfaceElements& elements, const PadKinematics& kinematics,
-                                      const PlaneGround& plane, const StressLaw3D& law) {
+// kDynamic: the law has a dynamic stress.
+namespace {
+template <bool kDynamic>
+ContactWrench RotatingWrench(const SurfaceElements& elements, const PadKinematics& kinematics,
+                             const PlaneGround& plane, const StressLaw3D& law) {
   const int count = elements.size();
   const Eigen::Matrix3d& R = kinematics.R_WB;
   const PlaneDepthInB depth = PlaneDepthInB::Of(plane, kinematics);  // as the general path
@@ -158,6 +198,7 @@ ContactWrench RotatingWrenchOverPlane(const SurfaceElements& elements, const Pad
   const double* nb = elements.n_B.data();
   const double* areas = elements.area_m2.data();
 
+  constexpr double kThird = 1.0 / 3.0;
   double submerged_area = 0.0;
   StressBatch batch;
   PendingLeading pending;
@@ -173,25 +214,30 @@ ContactWrench RotatingWrenchOverPlane(const SurfaceElements& elements, const Pad
       const Vec nrm = Load(nb + 3 * e);
       if (pass.whole[i] != 0.0) {
         submerged_area += areas[e];
-        if (pass.weight[i] > 0.0)
-          Append(law, rotate, nrm, Vec{pass.vx[i], pass.vy[i], pass.vz[i]}, pass.weight[i], pass.depth[i],
-                 Vec{pass.mx[i], pass.my[i], pass.mz[i]}, batch, pending, sums);
+        if (pass.weight[i] > 0.0) {
+          // The whole triangle's area moment, as AddTriangle<true> forms it (kept with a dynamic stress).
+          Vec psum{0.0, 0.0, 0.0};
+          if constexpr (kDynamic) psum = Load(p0 + 3 * e) + Load(p1 + 3 * e) + Load(p2 + 3 * e);
+          Append<kDynamic>(law, rotate, nrm, Vec{pass.vx[i], pass.vy[i], pass.vz[i]}, pass.weight[i], pass.depth[i],
+                 Vec{pass.mx[i], pass.my[i], pass.mz[i]}, areas[e], (areas[e] * kThird) * psum, batch, pending,
+                 sums);
+        }
         continue;
       }
       // Cut by the surface or by the leading boundary: the general path's code.
       const Vec p[3] = {Load(p0 + 3 * e), Load(p1 + 3 * e), Load(p2 + 3 * e)};
       double d[3];
       for (int k = 0; k < 3; ++k) d[k] = depth.At(p[k]);
-      const Submerged s = ClipAndIntegrate<false>(areas[e], d, p);
+      const Submerged s = ClipAndIntegrate<kDynamic>(areas[e], d, p);
       submerged_area += s.area;
       if (!(s.depth_integral > 0.0)) continue;
       const LeadingPart lead = LeadingPartOf(s, areas[e], d, p, nrm, u, w, /*clip_leading=*/true);
       if (lead.weight > 0.0)
-        Append(law, rotate, nrm, lead.v, lead.weight, lead.part.depth_integral, lead.part.depth_moment, batch,
-               pending, sums);
+        Append<kDynamic>(law, rotate, nrm, lead.v, lead.weight, lead.part.depth_integral, lead.part.depth_moment,
+               lead.part.area, lead.part.area_moment, batch, pending, sums);
     }
   }
-  if (batch.count > 0) Drain(law, batch, pending, sums);
+  if (batch.count > 0) Drain<kDynamic>(law, batch, pending, sums);
 
   ContactWrench out;
   out.force_W = Eigen::Vector3d(sums.fx, sums.fy, sums.fz);
@@ -201,6 +247,19 @@ ContactWrench RotatingWrenchOverPlane(const SurfaceElements& elements, const Pad
   out.submerged_area_m2 = submerged_area;
   out.leading_elements = sums.leading;
   return out;
+}
+
+}  // namespace
+
+ContactWrench RotatingWrenchOverPlane(const SurfaceElements& elements, const PadKinematics& kinematics,
+                                      const PlaneGround& plane, const StressLaw3D& law) {
+  return RotatingWrench<false>(elements, kinematics, plane, law);
+}
+
+ContactWrench RotatingWrenchWithDynamicStressOverPlane(const SurfaceElements& elements,
+                                                      const PadKinematics& kinematics, const PlaneGround& plane,
+                                                      const StressLaw3D& law) {
+  return RotatingWrench<true>(elements, kinematics, plane, law);
 }
 
 }  // namespace touchdown::rft::contact_internal
