@@ -105,7 +105,9 @@ TEST(LanderJanosi, JacobianMatchesCentralDifferencesWithTheShearStates) {
     return (J.col(j) - reference.col(j)).norm() / std::max(reference.col(j).norm(), 1e-6);
   };
   double worst = 0.0, worst_j = 0.0;
-  for (int j = 0; j < n; ++j) worst = std::max(worst, column_error(j));
+  int worst_column = -1;
+  for (int j = 0; j < n; ++j)
+    if (column_error(j) > worst) worst = column_error(j), worst_column = j;
   for (int i = 0; i < kNumLegs; ++i) worst_j = std::max(worst_j, column_error(s.layout.shear(i)));
   // The j rows: dj/dt = |horizontal joint velocity| against every state.
   double worst_row = 0.0;
@@ -113,12 +115,14 @@ TEST(LanderJanosi, JacobianMatchesCentralDifferencesWithTheShearStates) {
     const int r = s.layout.shear(i);
     worst_row = std::max(worst_row, (J.row(r) - reference.row(r)).norm() / std::max(reference.row(r).norm(), 1e-6));
   }
-  std::printf("[ jacobian ] sliding with j: worst column %.2e, j columns %.2e, j rows %.2e relative\n", worst, worst_j,
-              worst_row);
-  // Measured 2.0e-4 in the body's attitude columns and 3.3e-5 in two pads' spin columns (the
-  // difference quotients' own error in a sliding contact, where the shear's direction turns with
-  // the slip); the j rows and columns 4e-7 and below.
-  EXPECT_LT(worst, 1e-3);
+  std::printf("[ jacobian ] sliding with j: worst column %.2e (state %d), j columns %.2e, j rows %.2e relative\n", worst,
+              worst_column, worst_j, worst_row);
+  // Measured in a body attitude column (a quaternion component): 4.7e-4 with gcc, 1.0e-3 with clang
+  // (the sanitizer build). It is the one-sided difference quotients of each pad's contact with
+  // respect to its motion that the chain rule builds on (lander_jacobian.h), in a sliding contact
+  // where the shear's direction turns with the slip; 2.0e-4 before the chain rule. A missing
+  // coupling would be of order 1. The j rows and columns 4e-7 and below.
+  EXPECT_LT(worst, 3e-3);
   EXPECT_LT(worst_j, 3e-5);
   EXPECT_LT(worst_row, 3e-5);
   // The j columns are not empty: a pad's j moves its own shear force.
