@@ -275,18 +275,13 @@ inline bool IsSpinning(const SurfaceElements& elements, const PadKinematics& k) 
   return k.w_WB_W.squaredNorm() * r2 > kNegligibleSpin * kNegligibleSpin * k.v_WB_W.squaredNorm();
 }
 
-// The wrench on a rotating pad over a plane for a law without area terms (no dynamic stress,
-// compaction, added mass) and the linear depth law: ComputeContactWrench's result (to rounding),
-// with the common element - wholly submerged, wholly leading - worked in vectorised passes over
-// each block of elements. Needs elements with bounds (SurfaceElements::HasBounds).
+// The wrench on a rotating pad over a plane for a law without pad-level terms (compaction, added
+// mass, a power depth law): ComputeContactWrench's result (to rounding), with the common element -
+// wholly submerged, wholly leading - worked in vectorised passes over each block of elements. A law
+// with a dynamic stress (StressLaw3D::has_dynamic_stress) has that stress taken over each leading
+// element's submerged area, at its centroid, as the general path does. Needs elements with bounds
+// (SurfaceElements::HasBounds).
 ContactWrench RotatingWrenchOverPlane(const SurfaceElements& elements, const PadKinematics& kinematics,
                                       const PlaneGround& plane, const StressLaw3D& law);
-
-// The same for a law with a dynamic stress (StressLaw3D::has_dynamic_stress): that stress is taken
-// over each leading element's submerged area, at its centroid, as the general path does
-// (contact_wrench_rotating.cpp, the same template).
-ContactWrench RotatingWrenchWithDynamicStressOverPlane(const SurfaceElements& elements,
-                                                      const PadKinematics& kinematics, const PlaneGround& plane,
-                                                      const StressLaw3D& law);
 
 }  // namespace touchdown::rft::contact_internal

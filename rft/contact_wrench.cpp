@@ -605,19 +605,9 @@ ContactWrench ComputeContactWrench(const SurfaceElements& elements, const PadKin
   const bool footprint = pad_terms.has_added_mass();
   const bool power = pad_terms.has_power_depth();
   if (!compaction && !footprint && !power && elements.size() > 0 && elements.HasBounds() &&
-      !law.has_dynamic_stress() && !(law.has_mobilised_shear() && kinematics.shear_mobilisation != 1.0) &&
-      IsSpinning(elements, kinematics)) {
+      !(law.has_mobilised_shear() && kinematics.shear_mobilisation != 1.0) && IsSpinning(elements, kinematics)) {
     if (const auto* plane = dynamic_cast<const PlaneGround*>(&ground))
       return RotatingWrenchOverPlane(elements, kinematics, *plane, law);
-  }
-  // A law with a dynamic stress takes the same path (it carries the stress) under its own test: the
-  // one above stays as it was compiled before, since IsSpinning's rounding (contracted multiply-adds)
-  // decides near its threshold which path a barely turning pad takes.
-  if (law.has_dynamic_stress() && !compaction && !footprint && !power && elements.size() > 0 &&
-      elements.HasBounds() && !(law.has_mobilised_shear() && kinematics.shear_mobilisation != 1.0) &&
-      IsSpinning(elements, kinematics)) {
-    if (const auto* plane = dynamic_cast<const PlaneGround*>(&ground))
-      return RotatingWrenchWithDynamicStressOverPlane(elements, kinematics, *plane, law);
   }
   if (compaction || footprint) {
     return power ? ContactWrenchImpl<true, true>(elements, kinematics, ground, law, pad_terms, compaction, footprint)

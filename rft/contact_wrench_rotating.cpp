@@ -253,13 +253,8 @@ ContactWrench RotatingWrench(const SurfaceElements& elements, const PadKinematic
 
 ContactWrench RotatingWrenchOverPlane(const SurfaceElements& elements, const PadKinematics& kinematics,
                                       const PlaneGround& plane, const StressLaw3D& law) {
-  return RotatingWrench<false>(elements, kinematics, plane, law);
-}
-
-ContactWrench RotatingWrenchWithDynamicStressOverPlane(const SurfaceElements& elements,
-                                                      const PadKinematics& kinematics, const PlaneGround& plane,
-                                                      const StressLaw3D& law) {
-  return RotatingWrench<true>(elements, kinematics, plane, law);
+  return law.has_dynamic_stress() ? RotatingWrench<true>(elements, kinematics, plane, law)
+                                  : RotatingWrench<false>(elements, kinematics, plane, law);
 }
 
 }  // namespace touchdown::rft::contact_internal
