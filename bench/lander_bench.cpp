@@ -51,7 +51,7 @@ void RunLanding(benchmark::State& state, const test::PaperLander& setup_in, cons
   lander::LanderRunResult last;
   for (auto _ : state) {
     lander::LanderRunResult r = lander::SimulateLander(setup.model, setup.terrain, setup.initial, options);
-    benchmark::DoNotOptimize(r.final_penetration_m[0]);
+    benchmark::DoNotOptimize(r.final_penetration_m);
     last = std::move(r);
   }
   if (getenv("TD_PRINT"))  // full precision for convergence studies

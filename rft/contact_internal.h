@@ -83,7 +83,36 @@ struct PlaneDepthInB {
                            (gz > 0.0 ? gz * hi[2] : gz * lo[2]);
     return deepest < -kCullMargin;
   }
+  // Whether block b's box lies wholly below the ground (by more than kCullMargin): every vertex of
+  // its elements is submerged.
+  [[gnu::always_inline]] inline bool BlockBelow(const SurfaceElements& elements, int b) const {
+    const double* lo = elements.block_min_B.data() + 3 * b;
+    const double* hi = elements.block_max_B.data() + 3 * b;
+    const double shallowest = depth0 + (gx > 0.0 ? gx * lo[0] : gx * hi[0]) + (gy > 0.0 ? gy * lo[1] : gy * hi[1]) +
+                              (gz > 0.0 ? gz * lo[2] : gz * hi[2]);
+    return shallowest > kCullMargin;
+  }
 };
+
+// Whether every element of block b trails the pad's motion (twist u + w x r, in B) by more than the
+// trailing band, so that none carries stress. With a the block's normal axis, delta its spread, c
+// and rho its centre and radius (SurfaceElements), any point r = c + s of it (|s| <= rho) and any
+// of its normals n = a + e (|e| <= delta):
+//   n.v(r) = n.u + w.(r x n) <= a.u + delta |u| + w.(c x a) + |w| (|c| delta + rho)
+//   |v(r)| <= |u + w x c| + |w| rho
+// Every element's lead test, n.v(r) + kTrailingBand |v(r')| >= 0 at points r, r' of the element
+// (contact_internal.h, LeadingPartOf and PassBlock), then fails. The margin keeps the test on the
+// safe side of the elements' own rounding.
+inline bool BlockTrails(const SurfaceElements& elements, int b, const Eigen::Vector3d& u,
+                                               const Eigen::Vector3d& w) {
+  const Eigen::Vector3d a = elements.block_normal_axis_B.col(b), c = elements.block_centre_B.col(b);
+  const double delta = elements.block_normal_spread[b], rho = elements.block_radius_m[b];
+  const double w_norm = w.norm();
+  const double lead = a.dot(u) + delta * u.norm() + w.dot(c.cross(a)) + w_norm * (c.norm() * delta + rho);
+  const double speed = (u + w.cross(c)).norm() + w_norm * rho;
+  constexpr double kMargin = 1e-9;
+  return lead + (kTrailingBand + kMargin) * speed < 0.0;
+}
 
 // Exact integrals over the submerged part of one triangle, depth d linear on it (pad frame B):
 // depth_integral = int d dA, depth_moment = int d r dA, area = int dA, area_moment = int r dA.

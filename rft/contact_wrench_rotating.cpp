@@ -9,6 +9,9 @@
 // (StressLaw3D::StressPerDepthBatch); the others - cut by the free surface or by the leading
 // boundary - take the same per-element code as the general path (contact_internal.h). The sums are
 // the general path's, grouped differently (tests/rft/stress_batch_test.cpp compares the two).
+// A block wholly below the surface whose every element trails the motion (BlockTrails: the top of
+// a buried pad that sinks, the back of one that slides) adds only its area, without the pass: its
+// elements would carry no stress (tests/rft/contact_block_cull_test.cpp, bit for bit).
 //
 // A law with a dynamic (depth-independent) stress (dynamic RFT's inertial term, on by default in the
 // shipped soils) takes the same pass with each leading element's submerged area and area moment kept
@@ -207,6 +210,11 @@ ContactWrench RotatingWrench(const SurfaceElements& elements, const PadKinematic
   for (int block = 0; block < elements.block_count(); ++block) {
     if (depth.BlockAbove(elements, block)) continue;  // wholly above the ground
     const int first = block * kBlock, n = std::min(kBlock, count - first);
+    if (depth.BlockBelow(elements, block) && BlockTrails(elements, block, u_B, w_B)) {
+      // Wholly submerged and wholly trailing: only the submerged area, as the pass would add it.
+      for (int e = first; e < first + n; ++e) submerged_area += areas[e];
+      continue;
+    }
     PassBlock(elements, first, n, depth, u, w, pass);
     for (int i = 0; i < n; ++i) {
       if (pass.touches[i] == 0.0) continue;

@@ -45,6 +45,26 @@ TEST(RftSurfaceElements, BoundsEncloseEveryBlockAndTheRadiusIsTheFarthestVertex)
   EXPECT_FALSE(pad.HasBounds());  // resizing drops bounds that no longer fit
 }
 
+TEST(RftSurfaceElements, BlockConesHoldEveryNormalAndTheirSpheresEveryVertex) {
+  SurfaceElements pad = MakeRevolvedPad(FlatProfile(0.0275, 0.01, 3), 64);
+  pad.UpdateBounds();
+  ASSERT_EQ(pad.block_normal_axis_B.cols(), pad.block_count());
+  int flat_blocks = 0;
+  for (int b = 0; b < pad.block_count(); ++b) {
+    EXPECT_NEAR(pad.block_normal_axis_B.col(b).norm(), 1.0, 1e-15);
+    double spread = 0.0;
+    for (int e = b * SurfaceElements::kBlockSize; e < std::min(pad.size(), (b + 1) * SurfaceElements::kBlockSize); ++e) {
+      spread = std::max(spread, (pad.n_B.col(e) - pad.block_normal_axis_B.col(b)).norm());
+      for (const Eigen::Matrix3Xd* p : {&pad.p0_B, &pad.p1_B, &pad.p2_B})
+        EXPECT_LE((p->col(e) - pad.block_centre_B.col(b)).norm(), pad.block_radius_m[b]);
+    }
+    EXPECT_EQ(spread, pad.block_normal_spread[b]);
+    flat_blocks += pad.block_normal_spread[b] == 0.0;
+  }
+  // The bottom and top discs' blocks lie in one plane each: a cone of zero width.
+  EXPECT_GE(flat_blocks, 2 * 64 / SurfaceElements::kBlockSize);
+}
+
 TEST(RftSurfaceElements, NormalClassesGroupEqualNormalsUpToTheirCap) {
   // A revolved flat pad: one class for the bottom, one for the top, one per sector of the side wall.
   SurfaceElements pad = MakeRevolvedPad(FlatProfile(0.0275, 0.01, 3), 64);

@@ -1,0 +1,114 @@
+// The rotating contact's skip of wholly trailing blocks (contact_internal.h, BlockTrails, and
+// contact_wrench_rotating.cpp): the bound must never skip a block with an element that could lead,
+// and skipping must leave every wrench bit for bit as the full pass computes it, while it does skip
+// the top of a buried pad that sinks and the back of one that slides.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "rft/contact_internal.h"
+#include "rft/contact_wrench.h"
+#include "rft/dynamic_term.h"
+#include "rft/li2013_3d.h"
+#include "tests/rft/pad_meshes.h"
+
+namespace touchdown::rft {
+namespace {
+
+// A flat pad like the lander's (27.5 mm radius, 10 mm thick, 20 mm below its reference point),
+// with its bottom in three rings and its wall in two rows, so blocks hold one face each.
+SurfaceElements BoundedPad() {
+  const double r = 0.0275, h = 0.010;
+  SurfaceElements pad = testing::MakeRevolvedPad({{0.0, 0.0}, {r / 3, 0.0}, {2 * r / 3, 0.0}, {r, 0.0}, {r, h / 2}, {r, h}}, 64);
+  for (int e = 0; e < pad.size(); ++e)
+    for (Eigen::Matrix3Xd* p : {&pad.p0_B, &pad.p1_B, &pad.p2_B}) p->col(e).z() -= 0.020;
+  pad.UpdateBounds();
+  return pad;
+}
+
+// The same pad with every block's normal cone opened to the whole sphere: nothing is skipped.
+SurfaceElements WithoutSkips(SurfaceElements pad) {
+  pad.block_normal_spread.setConstant(2.0);
+  return pad;
+}
+
+Eigen::Vector3d Velocity(const Eigen::Vector3d& u, const Eigen::Vector3d& w, const Eigen::Vector3d& r) {
+  return u + w.cross(r);
+}
+
+TEST(RftContactBlockCull, ASkippedBlockHasNoElementThatCouldLead) {
+  const SurfaceElements pad = BoundedPad();
+  std::mt19937 rng(15);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  std::uniform_real_distribution<double> spin_scale(0.0, 40.0);
+  int skipped = 0;
+  for (int trial = 0; trial < 2000; ++trial) {
+    const Eigen::Vector3d u(normal(rng), normal(rng), normal(rng));
+    const Eigen::Vector3d w = spin_scale(rng) * Eigen::Vector3d(normal(rng), normal(rng), normal(rng)).normalized();
+    for (int b = 0; b < pad.block_count(); ++b) {
+      if (!contact_internal::BlockTrails(pad, b, u, w)) continue;
+      ++skipped;
+      for (int e = b * SurfaceElements::kBlockSize; e < std::min(pad.size(), (b + 1) * SurfaceElements::kBlockSize); ++e) {
+        // n.v is affine and |v| convex over a triangle: their largest values are at vertices.
+        double lead = -INFINITY, speed = 0.0;
+        for (const Eigen::Matrix3Xd* p : {&pad.p0_B, &pad.p1_B, &pad.p2_B}) {
+          const Eigen::Vector3d v = Velocity(u, w, p->col(e));
+          lead = std::max(lead, pad.n_B.col(e).dot(v));
+          speed = std::max(speed, v.norm());
+        }
+        ASSERT_LT(lead + contact_internal::kTrailingBand * speed, 0.0) << "trial " << trial << " element " << e;
+      }
+    }
+  }
+  EXPECT_GT(skipped, 1000);  // the test exercises the skip
+}
+
+TEST(RftContactBlockCull, SkippingLeavesEveryWrenchBitForBit) {
+  const SurfaceElements pad = BoundedPad();
+  const SurfaceElements full = WithoutSkips(pad);
+  const Li2013TreersLaw quasi_static(3.48e6);
+  const DynamicTermLaw dynamic(std::make_unique<Li2013TreersLaw>(3.48e6), 1.1, 1540.0);
+  struct Case {
+    const char* name;
+    Eigen::Matrix3d R;
+    double joint_height_m;
+    Eigen::Vector3d v, w;
+    bool skips;  // whether some block is skipped (buried, the top or back trailing)
+  };
+  const std::vector<Case> cases = {
+      {"buried, sinking and rocking", testing::RotX(0.07), -0.004, {0.02, -0.01, -0.3}, {0.5, -0.3, 0.1}, true},
+      {"buried, sliding and pitching", testing::RotY(0.2), -0.010, {0.4, 0.1, -0.05}, {0.0, 3.0, 0.0}, true},
+      {"buried, rising", Eigen::Matrix3d::Identity(), -0.008, {0.0, 0.05, 0.2}, {0.2, 0.0, 0.1}, true},
+      {"buried, spinning fast", testing::RotX(0.3), -0.012, {0.1, 0.0, -0.1}, {20.0, -15.0, 5.0}, false},
+      {"partly submerged, tilted", testing::RotX(0.15), 0.014, {0.3, -0.1, -0.8}, {4.0, -2.0, 3.0}, false},
+  };
+  for (const Case& c : cases) {
+    PadKinematics k;
+    k.R_WB = c.R;
+    k.p_WB = Eigen::Vector3d(0.0, 0.0, c.joint_height_m);
+    k.v_WB_W = c.v;
+    k.w_WB_W = c.w;
+    int skipped = 0;
+    const contact_internal::PlaneDepthInB depth = contact_internal::PlaneDepthInB::Of(PlaneGround(), k);
+    for (int b = 0; b < pad.block_count(); ++b)
+      skipped += depth.BlockBelow(pad, b) &&
+                 contact_internal::BlockTrails(pad, b, c.R.transpose() * c.v, c.R.transpose() * c.w);
+    EXPECT_EQ(skipped > 0, c.skips) << c.name << ": " << skipped << " blocks skipped";
+    for (const StressLaw3D* law : {static_cast<const StressLaw3D*>(&quasi_static), static_cast<const StressLaw3D*>(&dynamic)}) {
+      const ContactWrench a = ComputeContactWrench(pad, k, PlaneGround(), *law);
+      const ContactWrench b = ComputeContactWrench(full, k, PlaneGround(), *law);
+      ASSERT_GT(a.leading_elements, 0) << c.name;
+      EXPECT_EQ(a.leading_elements, b.leading_elements) << c.name;
+      EXPECT_EQ(a.submerged_area_m2, b.submerged_area_m2) << c.name;
+      for (int i = 0; i < 3; ++i) {
+        EXPECT_EQ(a.force_W[i], b.force_W[i]) << c.name;
+        EXPECT_EQ(a.moment_W[i], b.moment_W[i]) << c.name;
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace touchdown::rft
