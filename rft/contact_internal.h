@@ -103,8 +103,7 @@ struct PlaneDepthInB {
 // Every element's lead test, n.v(r) + kTrailingBand |v(r')| >= 0 at points r, r' of the element
 // (contact_internal.h, LeadingPartOf and PassBlock), then fails. The margin keeps the test on the
 // safe side of the elements' own rounding.
-inline bool BlockTrails(const SurfaceElements& elements, int b, const Eigen::Vector3d& u,
-                                               const Eigen::Vector3d& w) {
+inline bool BlockTrails(const SurfaceElements& elements, int b, const Eigen::Vector3d& u, const Eigen::Vector3d& w) {
   const Eigen::Vector3d a = elements.block_normal_axis_B.col(b), c = elements.block_centre_B.col(b);
   const double delta = elements.block_normal_spread[b], rho = elements.block_radius_m[b];
   const double w_norm = w.norm();

@@ -4,7 +4,9 @@
 // the top of a buried pad that sinks and the back of one that slides.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <memory>
 #include <random>
 #include <vector>
 
@@ -21,7 +23,8 @@ namespace {
 // with its bottom in three rings and its wall in two rows, so blocks hold one face each.
 SurfaceElements BoundedPad() {
   const double r = 0.0275, h = 0.010;
-  SurfaceElements pad = testing::MakeRevolvedPad({{0.0, 0.0}, {r / 3, 0.0}, {2 * r / 3, 0.0}, {r, 0.0}, {r, h / 2}, {r, h}}, 64);
+  SurfaceElements pad =
+      testing::MakeRevolvedPad({{0.0, 0.0}, {r / 3, 0.0}, {2 * r / 3, 0.0}, {r, 0.0}, {r, h / 2}, {r, h}}, 64);
   for (int e = 0; e < pad.size(); ++e)
     for (Eigen::Matrix3Xd* p : {&pad.p0_B, &pad.p1_B, &pad.p2_B}) p->col(e).z() -= 0.020;
   pad.UpdateBounds();
@@ -50,7 +53,8 @@ TEST(RftContactBlockCull, ASkippedBlockHasNoElementThatCouldLead) {
     for (int b = 0; b < pad.block_count(); ++b) {
       if (!contact_internal::BlockTrails(pad, b, u, w)) continue;
       ++skipped;
-      for (int e = b * SurfaceElements::kBlockSize; e < std::min(pad.size(), (b + 1) * SurfaceElements::kBlockSize); ++e) {
+      const int last = std::min(pad.size(), (b + 1) * SurfaceElements::kBlockSize);
+      for (int e = b * SurfaceElements::kBlockSize; e < last; ++e) {
         // n.v is affine and |v| convex over a triangle: their largest values are at vertices.
         double lead = -INFINITY, speed = 0.0;
         for (const Eigen::Matrix3Xd* p : {&pad.p0_B, &pad.p1_B, &pad.p2_B}) {
@@ -96,7 +100,8 @@ TEST(RftContactBlockCull, SkippingLeavesEveryWrenchBitForBit) {
       skipped += depth.BlockBelow(pad, b) &&
                  contact_internal::BlockTrails(pad, b, c.R.transpose() * c.v, c.R.transpose() * c.w);
     EXPECT_EQ(skipped > 0, c.skips) << c.name << ": " << skipped << " blocks skipped";
-    for (const StressLaw3D* law : {static_cast<const StressLaw3D*>(&quasi_static), static_cast<const StressLaw3D*>(&dynamic)}) {
+    const std::vector<const StressLaw3D*> laws = {&quasi_static, &dynamic};
+    for (const StressLaw3D* law : laws) {
       const ContactWrench a = ComputeContactWrench(pad, k, PlaneGround(), *law);
       const ContactWrench b = ComputeContactWrench(full, k, PlaneGround(), *law);
       ASSERT_GT(a.leading_elements, 0) << c.name;

@@ -53,7 +53,8 @@ TEST(RftSurfaceElements, BlockConesHoldEveryNormalAndTheirSpheresEveryVertex) {
   for (int b = 0; b < pad.block_count(); ++b) {
     EXPECT_NEAR(pad.block_normal_axis_B.col(b).norm(), 1.0, 1e-15);
     double spread = 0.0;
-    for (int e = b * SurfaceElements::kBlockSize; e < std::min(pad.size(), (b + 1) * SurfaceElements::kBlockSize); ++e) {
+    const int last = std::min(pad.size(), (b + 1) * SurfaceElements::kBlockSize);
+    for (int e = b * SurfaceElements::kBlockSize; e < last; ++e) {
       spread = std::max(spread, (pad.n_B.col(e) - pad.block_normal_axis_B.col(b)).norm());
       for (const Eigen::Matrix3Xd* p : {&pad.p0_B, &pad.p1_B, &pad.p2_B})
         EXPECT_LE((p->col(e) - pad.block_centre_B.col(b)).norm(), pad.block_radius_m[b]);
