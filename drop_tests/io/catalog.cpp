@@ -344,6 +344,14 @@ PadSpec LoadPad(const std::string& name_or_path) {
   return LoadPad(YamlFields::LoadFile(ResolveCatalogFile("pads", name_or_path)));
 }
 
+PadSpec PadWithAngularSegments(const PadSpec& pad, int angular_segments) {
+  if (!pad.is_axisymmetric())
+    throw MakeInputError(pad.source, "angular_segments", "pad '" + pad.name + "' is a mesh, not a revolved profile");
+  YAML::Node node = YAML::Clone(YamlFields::LoadFile(pad.source).node());
+  node["angular_segments"] = angular_segments;
+  return LoadPad(YamlFields(node, pad.source, ""));
+}
+
 PadSpec LoadPad(const YamlFields& f) {
   f.RequireSchemaVersion(1);
   PadSpec pad;

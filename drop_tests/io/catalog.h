@@ -79,6 +79,10 @@ PadSpec LoadPad(const std::string& name_or_path);
 // A pad from its file's YAML as read (YamlFields::LoadFile of the resolved file), possibly edited in
 // memory first (calibrate --targets changes a profile constant without touching the file).
 PadSpec LoadPad(const YamlFields& f);
+// An axisymmetric pad revolved at another number of rim segments: its file read again with
+// `angular_segments` replaced (everything else as the file says). InputError naming the pad file
+// for a mesh pad or a count outside the range LoadPad accepts.
+PadSpec PadWithAngularSegments(const PadSpec& pad, int angular_segments);
 // A pad file that LoadPad reads back to the same pad (from pad.file; a mesh by its resolved path,
 // relative to `path`'s directory).
 void WritePad(const PadSpec& pad, const std::string& path);

@@ -388,7 +388,8 @@ LanderInitialSpec ReadInitial(const io::YamlFields& in, bool resolved) {
 
 // The run options: duration, sampling, capture speed and the integrator's tolerances.
 void ReadSimulation(const io::YamlFields& sim, lander::LanderRunOptions& options) {
-  sim.RequireOnly({"duration_s", "sample_rate_hz", "capture_speed_m_s", "rtol", "atol", "max_step_s", "stiff"});
+  sim.RequireOnly({"duration_s", "sample_rate_hz", "capture_speed_m_s", "rtol", "atol", "max_step_s", "stiff",
+                   "pad_angular_segments"});
   io::ReadFields(sim, RunNumberFields(), options);
   // Resolution caps (the trace keeps duration x rate samples; a hand-written 1e9 must not
   // exhaust memory or run for days).
@@ -504,7 +505,18 @@ LanderScenario LoadLanderScenario(const std::string& path) {
     }
   }
   s.initial = ReadInitial(f.Child("initial"), resolved);
-  if (f.Has("simulation")) ReadSimulation(f.Child("simulation"), s.options);
+  if (f.Has("simulation")) {
+    const io::YamlFields sim = f.Child("simulation");
+    ReadSimulation(sim, s.options);
+    if (sim.Has("pad_angular_segments")) {
+      s.pad_angular_segments = sim.PositiveInt("pad_angular_segments");
+      try {
+        s.lander = LanderSpecWithPad(s.lander, io::PadWithAngularSegments(s.lander.pad, s.pad_angular_segments));
+      } catch (const InputError& e) {
+        sim.Fail("pad_angular_segments", e.what());
+      }
+    }
+  }
   if (f.Has("paper")) {
     const io::YamlFields p = f.Child("paper");
     p.RequireOnly({"ground_case", "roll_pitch_within_deg", "source", "used_for_fit", "fit_by"});
@@ -817,7 +829,9 @@ void WriteResolvedLanderScenario(const LanderScenario& s, const std::string& pat
   // Without `atol` the absolute tolerances are rtol times each state's scale (lander_simulation.h).
   if (!s.options.scale_tolerances) y << YAML::Key << "atol" << YAML::Value << s.options.integrator.atol;
   if (s.options.integrator.max_step != lander::LanderRunOptions{}.integrator.max_step) y << YAML::Key << "max_step_s" << YAML::Value << s.options.integrator.max_step;
-  y << YAML::Key << "stiff" << YAML::Value << s.options.integrator.stiff << YAML::EndMap;
+  y << YAML::Key << "stiff" << YAML::Value << s.options.integrator.stiff;
+  if (s.pad_angular_segments > 0) y << YAML::Key << "pad_angular_segments" << YAML::Value << s.pad_angular_segments;
+  y << YAML::EndMap;
   if (!s.paper_ground_case.empty() || s.paper) {
     y << YAML::Key << "paper" << YAML::Value << YAML::BeginMap;
     if (!s.paper_ground_case.empty()) y << YAML::Key << "ground_case" << YAML::Value << s.paper_ground_case;

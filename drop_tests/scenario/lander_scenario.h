@@ -93,6 +93,9 @@ struct LanderScenario {
   LanderGroundSpec ground;
   LanderInitialSpec initial;
   lander::LanderRunOptions options;
+  // simulation.pad_angular_segments: the lander's (revolved) pads re-meshed at this many rim
+  // segments, a numerical resolution like rtol (0: as the pad file says).
+  int pad_angular_segments = 0;
   std::optional<LanderPaperCheck> paper;
   std::string paper_ground_case;  // e.g. "CP LP LP LP" (Table II), informational
   // `touchdown lander --model`: zeta per soil and the effect terms (3D forms), for every soil

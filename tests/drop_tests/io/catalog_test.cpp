@@ -210,6 +210,30 @@ TEST_F(CatalogFiles, AxisymmetricPadBodyOptions) {
               1e-12);
 }
 
+TEST_F(CatalogFiles, ARevolvedPadAtOtherAngularSegmentsIsItsFileWithThatCount) {
+  const std::string file = Write("pad.yaml",
+                                 "mass_kg: 0.08\nangular_segments: 64\nreference_point_mm: [0, 0, 20]\n"
+                                 "profile: {shape: flat, radius_mm: 27.5, thickness_mm: 10}\n");
+  const PadSpec fine = LoadPad(file);
+  const PadSpec coarse = PadWithAngularSegments(fine, 32);
+  const PadSpec written = LoadPad(Write("coarse.yaml",
+                                        "mass_kg: 0.08\nangular_segments: 32\nreference_point_mm: [0, 0, 20]\n"
+                                        "profile: {shape: flat, radius_mm: 27.5, thickness_mm: 10}\n"));
+  EXPECT_EQ(coarse.file.angular_segments, 32);
+  EXPECT_EQ(coarse.source, fine.source);
+  ASSERT_EQ(coarse.body.surface.size(), written.body.surface.size());
+  EXPECT_LT(4 * coarse.body.surface.size(), fine.body.surface.size() + 100);  // rings scale with the rim too
+  EXPECT_EQ(coarse.body.surface.p0_B, written.body.surface.p0_B);
+  EXPECT_EQ(coarse.mass_kg, fine.mass_kg);
+  EXPECT_EQ(coarse.body.lowest_z_B, fine.body.lowest_z_B);
+  try {
+    PadWithAngularSegments(fine, 3);
+    ADD_FAILURE() << "3 segments accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("angular_segments: must be at least 6, got 3"), std::string::npos) << e.what();
+  }
+}
+
 class MeshPads : public CatalogFiles {
  protected:
   void SetUp() override {
@@ -247,6 +271,17 @@ TEST_F(MeshPads, MeshPadFromUserFile) {
   EXPECT_DOUBLE_EQ(given.body.inertia_com_B(0, 1), -0.0001);
   EXPECT_DOUBLE_EQ(given.body.inertia_com_B(1, 0), -0.0001);
   EXPECT_GT(given.body.surface.size(), 12);  // remeshed
+}
+
+TEST_F(MeshPads, AMeshPadHasNoAngularSegmentsToChange) {
+  const PadSpec pad = LoadPad(Write("box.yaml", "kind: mesh\nmesh: {file: meshes/box.off, unit: mm}\ndensity_kg_m3: 1000\n"));
+  try {
+    PadWithAngularSegments(pad, 32);
+    ADD_FAILURE() << "a mesh pad re-meshed";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("box.yaml"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("is a mesh"), std::string::npos) << e.what();
+  }
 }
 
 TEST_F(MeshPads, BadMeshPadsGiveOneClearError) {

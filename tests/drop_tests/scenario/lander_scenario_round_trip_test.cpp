@@ -57,6 +57,8 @@ void ExpectSameScenario(const LanderScenario& a, const LanderScenario& b) {
   EXPECT_EQ(a.options.integrator.rtol, b.options.integrator.rtol);
   EXPECT_EQ(a.options.integrator.max_step, b.options.integrator.max_step);
   EXPECT_EQ(a.options.integrator.stiff, b.options.integrator.stiff);
+  EXPECT_EQ(a.pad_angular_segments, b.pad_angular_segments);
+  EXPECT_EQ(a.lander.pad.body.surface.size(), b.lander.pad.body.surface.size());
   EXPECT_EQ(a.paper_ground_case, b.paper_ground_case);
   ASSERT_EQ(a.paper.has_value(), b.paper.has_value());
   if (a.paper) {
@@ -112,6 +114,37 @@ TEST_F(LanderScenarioRoundTrip, OptionsAndAttitude) {
   const std::string text = Slurp(Path("out/tilted_1.yaml"));
   EXPECT_NE(text.find("max_step_s: 0.001"), std::string::npos);
   EXPECT_NE(text.find("source: ../tilted.yaml"), std::string::npos);
+}
+
+// simulation.pad_angular_segments re-meshes the lander's revolved pads (a resolution, like rtol): the
+// lander keeps its mass, CoG and joints; the resolved copy says it and loads to the same pads.
+TEST_F(LanderScenarioRoundTrip, PadAngularSegmentsReMeshTheLandersPads) {
+  const std::string head = "schema_version: 1\ntype: lander\nname: coarse\nlander: sutoh2017_lander\n"
+                           "ground: {soil: fjs1_lp}\ninitial: {drop_height_m: 0.1}\n";
+  std::ofstream(Path("fine.yaml")) << head;
+  std::ofstream(Path("coarse.yaml")) << head << "simulation: {pad_angular_segments: 32}\n";
+  const LanderScenario fine = LoadLanderScenario(Path("fine.yaml"));
+  const LanderScenario coarse = LoadLanderScenario(Path("coarse.yaml"));
+  EXPECT_EQ(fine.pad_angular_segments, 0);
+  EXPECT_EQ(coarse.pad_angular_segments, 32);
+  EXPECT_EQ(coarse.lander.pad.body.surface.size(),
+            io::PadWithAngularSegments(fine.lander.pad, 32).body.surface.size());
+  EXPECT_LT(3 * coarse.lander.pad.body.surface.size(), fine.lander.pad.body.surface.size());
+  EXPECT_EQ(coarse.lander.body_mass_kg, fine.lander.body_mass_kg);
+  for (int i = 0; i < lander::kNumLegs; ++i) EXPECT_EQ(coarse.lander.legs[i].joint_B, fine.lander.legs[i].joint_B);
+  fs::create_directories(dir_ / "out");
+  RoundTripLanderScenario(Path("coarse.yaml"), Path("out/coarse_1.yaml"), Path("out/coarse_2.yaml"));
+  EXPECT_NE(Slurp(Path("out/coarse_1.yaml")).find("pad_angular_segments: 32"), std::string::npos);
+
+  std::ofstream(Path("bad.yaml")) << head << "simulation: {pad_angular_segments: 3}\n";
+  try {
+    LoadLanderScenario(Path("bad.yaml"));
+    ADD_FAILURE() << "3 segments accepted";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("simulation.pad_angular_segments"), std::string::npos) << what;
+    EXPECT_NE(what.find("at least 6, got 3"), std::string::npos) << what;
+  }
 }
 
 TEST_F(LanderScenarioRoundTrip, APaperCheckUsedForAFitSaysByWhat) {
