@@ -30,9 +30,13 @@ class ObjectEditor {
  public:
   explicit ObjectEditor(const std::vector<Parameter>& parameters);
   // The pad of `pad_file` with the pad parameters' values; none when no parameter changes it.
-  std::optional<io::PadSpec> EditedPad(const std::string& pad_file, const std::vector<double>& values) const;
-  // The lander as the scenario has it, with the lander's and its pad's parameters applied.
-  scenario::LanderSpec EditedLander(const scenario::LanderSpec& lander, const std::vector<double>& values) const;
+  // `angular_segments` > 0: revolved at that many rim segments (a scenario's pad_angular_segments).
+  std::optional<io::PadSpec> EditedPad(const std::string& pad_file, const std::vector<double>& values,
+                                       int angular_segments = 0) const;
+  // The lander as the scenario has it, with the lander's and its pad's parameters applied, its pad
+  // at the scenario's `angular_segments` (> 0) whether or not a parameter reloads it.
+  scenario::LanderSpec EditedLander(const scenario::LanderSpec& lander, const std::vector<double>& values,
+                                    int angular_segments = 0) const;
 
  private:
   YAML::Node EditedNode(const std::string& file, const std::vector<double>& values) const;
