@@ -103,12 +103,18 @@ struct PlaneDepthInB {
 // Every element's lead test, n.v(r) + kTrailingBand |v(r')| >= 0 at points r, r' of the element
 // (contact_internal.h, LeadingPartOf and PassBlock), then fails. The margin keeps the test on the
 // safe side of the elements' own rounding.
-inline bool BlockTrails(const SurfaceElements& elements, int b, const Eigen::Vector3d& u, const Eigen::Vector3d& w) {
+// The pad's twist in B with its norms, formed once per contact rather than once per block.
+struct TwistInB {
+  TwistInB(const Eigen::Vector3d& u_B, const Eigen::Vector3d& w_B)
+      : u(u_B), w(w_B), u_norm(u_B.norm()), w_norm(w_B.norm()) {}
+  Eigen::Vector3d u, w;
+  double u_norm, w_norm;
+};
+inline bool BlockTrails(const SurfaceElements& elements, int b, const TwistInB& t) {
   const Eigen::Vector3d a = elements.block_normal_axis_B.col(b), c = elements.block_centre_B.col(b);
   const double delta = elements.block_normal_spread[b], rho = elements.block_radius_m[b];
-  const double w_norm = w.norm();
-  const double lead = a.dot(u) + delta * u.norm() + w.dot(c.cross(a)) + w_norm * (c.norm() * delta + rho);
-  const double speed = (u + w.cross(c)).norm() + w_norm * rho;
+  const double lead = a.dot(t.u) + delta * t.u_norm + t.w.dot(c.cross(a)) + t.w_norm * (c.norm() * delta + rho);
+  const double speed = (t.u + t.w.cross(c)).norm() + t.w_norm * rho;
   constexpr double kMargin = 1e-9;
   return lead + (kTrailingBand + kMargin) * speed < 0.0;
 }

@@ -194,6 +194,7 @@ ContactWrench RotatingWrench(const SurfaceElements& elements, const PadKinematic
   const PlaneDepthInB depth = PlaneDepthInB::Of(plane, kinematics);  // as the general path
   const Eigen::Vector3d u_B = R.transpose() * kinematics.v_WB_W, w_B = R.transpose() * kinematics.w_WB_W;
   const Vec u{u_B.x(), u_B.y(), u_B.z()}, w{w_B.x(), w_B.y(), w_B.z()};
+  const TwistInB twist(u_B, w_B);
   const RotationToW rotate(R);
   const double* p0 = elements.p0_B.data();
   const double* p1 = elements.p1_B.data();
@@ -210,7 +211,7 @@ ContactWrench RotatingWrench(const SurfaceElements& elements, const PadKinematic
   for (int block = 0; block < elements.block_count(); ++block) {
     if (depth.BlockAbove(elements, block)) continue;  // wholly above the ground
     const int first = block * kBlock, n = std::min(kBlock, count - first);
-    if (depth.BlockBelow(elements, block) && BlockTrails(elements, block, u_B, w_B)) {
+    if (depth.BlockBelow(elements, block) && BlockTrails(elements, block, twist)) {
       // Wholly submerged and wholly trailing: only the submerged area, as the pass would add it.
       for (int e = first; e < first + n; ++e) submerged_area += areas[e];
       continue;

@@ -51,7 +51,7 @@ TEST(RftContactBlockCull, ASkippedBlockHasNoElementThatCouldLead) {
     const Eigen::Vector3d u(normal(rng), normal(rng), normal(rng));
     const Eigen::Vector3d w = spin_scale(rng) * Eigen::Vector3d(normal(rng), normal(rng), normal(rng)).normalized();
     for (int b = 0; b < pad.block_count(); ++b) {
-      if (!contact_internal::BlockTrails(pad, b, u, w)) continue;
+      if (!contact_internal::BlockTrails(pad, b, contact_internal::TwistInB(u, w))) continue;
       ++skipped;
       const int last = std::min(pad.size(), (b + 1) * SurfaceElements::kBlockSize);
       for (int e = b * SurfaceElements::kBlockSize; e < last; ++e) {
@@ -95,10 +95,10 @@ TEST(RftContactBlockCull, SkippingLeavesEveryWrenchBitForBit) {
     k.v_WB_W = c.v;
     k.w_WB_W = c.w;
     int skipped = 0;
+    const contact_internal::TwistInB twist(c.R.transpose() * c.v, c.R.transpose() * c.w);
     const contact_internal::PlaneDepthInB depth = contact_internal::PlaneDepthInB::Of(PlaneGround(), k);
     for (int b = 0; b < pad.block_count(); ++b)
-      skipped += depth.BlockBelow(pad, b) &&
-                 contact_internal::BlockTrails(pad, b, c.R.transpose() * c.v, c.R.transpose() * c.w);
+      skipped += depth.BlockBelow(pad, b) && contact_internal::BlockTrails(pad, b, twist);
     EXPECT_EQ(skipped > 0, c.skips) << c.name << ": " << skipped << " blocks skipped";
     const std::vector<const StressLaw3D*> laws = {&quasi_static, &dynamic};
     for (const StressLaw3D* law : laws) {
