@@ -37,6 +37,10 @@ void PrintStudyResult(const stability::Study& study, const stability::StudySumma
                         std::string(m.metric->name) == "max_pad_penetration_m"))
       std::cout << "  " << m.metric->name << ": p50 " << m.p50 << ", p95 " << m.p95 << ", p99 " << m.p99 << ", max "
                 << m.max << " " << m.metric->unit << "\n";
+  if (s.swung_past_edge_on > 0)
+    std::cout << "  " << s.swung_past_edge_on << " of the landings (" << s.tipped_swung_past_edge_on
+              << " of the tip-overs) swung a pad past edge-on on its ball joint: these answers depend on the joints' "
+                 "range (legs.cone_limit; docs/stability_studies.md, \"The pads' ball joints\")\n";
   std::cout << "wrote " << out << "/ (summary.json, percentiles.csv" << (study.map ? ", tip_over_map.csv" : "")
             << ", plots/)\n";
 }

@@ -659,6 +659,7 @@ nlohmann::json LanderSummaryJson(const LanderRun& run) {
       {"final_roll_deg", roll},
       {"final_pitch_deg", pitch},
       {"max_tilt_deg", r.max_tilt_rad / kDeg},
+      {"max_joint_swing_deg", r.max_joint_swing_rad / kDeg},
       {"tipped_over", r.tipped_over},
       {"peak_pad_force_N", arr(r.peak_pad_force_N)},
       {"max_body_deceleration_m_s2", r.max_body_deceleration_m_s2},

@@ -84,6 +84,10 @@ const std::vector<StudyMetric>& StudyMetrics() {
        [](const DropRecord& r) { return r.max_deceleration_m_s2; }},
       {"max_absorber_stroke_m", "m", "largest absorber stroke of any leg (none without absorbers)",
        [](const DropRecord& r) { return r.max_stroke_m; }},
+      {"max_joint_swing_deg", "deg",
+       "largest swing of any pad on its ball joint (its axis from the body's z axis); past 90 deg it turned beyond "
+       "edge-on",
+       [](const DropRecord& r) { return r.max_joint_swing_deg; }},
   };
   return metrics;
 }
@@ -105,6 +109,9 @@ StudySummary Summarise(const Study& study, const std::vector<DropRecord>& record
     }
     ++s.landings;
     s.tipped += Tipped(r);
+    const bool past_edge_on = r.max_joint_swing_deg > kEdgeOnSwingDeg;  // NaN (an older database): no
+    s.swung_past_edge_on += past_edge_on;
+    s.tipped_swung_past_edge_on += past_edge_on && Tipped(r);
     if (Tipped(r) && static_cast<int>(s.tip_overs.size()) < study.max_tip_over_cases) s.tip_overs.push_back(r);
     if (Tipped(r)) continue;
     ok.push_back(&r);
@@ -216,6 +223,12 @@ nlohmann::json SummaryJson(const Study& study, const StudySummary& s) {
           {"landings_unsettled_meaning",
            "landings that neither came to rest nor tipped over within the scenario's duration (counted as not "
            "tipped over; a longer simulation.duration_s settles them)"},
+          {"landings_swung_past_edge_on", s.swung_past_edge_on},
+          {"tip_overs_swung_past_edge_on", s.tipped_swung_past_edge_on},
+          {"swung_past_edge_on_meaning",
+           "landings (and tip-overs among them) in which a pad swung more than 90 deg on its ball joint, beyond "
+           "edge-on: no real joint turns so far, so their answers depend on the joints' range, which a lander "
+           "without legs.cone_limit leaves free (docs/stability_studies.md, \"The pads' ball joints\")"},
           {"tip_over_probability", io::FiniteOrNull(s.tip_over_probability)},
           {"tip_over_probability_interval_95", {s.interval.low, s.interval.high}},
           {"interval_method", "exact binomial (Clopper-Pearson), two-sided 95 %, 2.5 % in each tail"},

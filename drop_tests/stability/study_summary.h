@@ -38,12 +38,18 @@ struct MapCell {
   BinomialInterval interval;
 };
 
+// A pad whose axis is more than this from the body's z axis has turned beyond edge-on [deg].
+inline constexpr double kEdgeOnSwingDeg = 90.0;
+
 struct StudySummary {
   int64_t planned = 0;   // landings in the plan
   int64_t landings = 0;  // completed (the statistics are over these)
   int64_t failed = 0;    // the solver gave up (listed by `touchdown export`; not counted)
   int64_t tipped = 0;
   int64_t unsettled = 0;  // neither at rest nor tipped over at the end of the run (counted as not tipped)
+  // Landings (and, of them, tip-overs) in which a pad swung past edge-on on its ball joint
+  // (max_joint_swing_deg > kEdgeOnSwingDeg): their answers hang on the joints' range.
+  int64_t swung_past_edge_on = 0, tipped_swung_past_edge_on = 0;
   double tip_over_probability = 0.0;  // tipped / landings; NaN without landings
   BinomialInterval interval;          // 95 %, Clopper-Pearson
   std::vector<MetricPercentiles> metrics;  // over the landings that stayed up (not tipped over)

@@ -15,7 +15,8 @@
 //         [format 4:] failure_limit, failure_limit_value,
 //         [format 5:] max_tilt_deg, peak_leg_force_N, max_stroke_m, pad1..pad4_peak_force_N,
 //         slope_deg, downhill_azimuth_deg, yaw_relative_to_slope_deg, horizontal_azimuth_deg,
-//         angular_rate_x_deg_s, angular_rate_y_deg_s, angular_rate_z_deg_s)
+//         angular_rate_x_deg_s, angular_rate_y_deg_s, angular_rate_z_deg_s,
+//         [format 6:] max_joint_swing_deg)
 //   traces(drop_index PRIMARY KEY, samples, data BLOB of float64 [t, d, v, F] per sample)
 //
 // A batch of drops and their traces go in one transaction (WAL journal), so a process killed
@@ -42,7 +43,8 @@ namespace touchdown::sweep {
 // 5: what a stability study summarises (drop_tests/stability): the lander's max tilt, peak leg
 //    load, max absorber stroke, each pad's peak force, and the ground and touchdown conditions
 //    (slope, azimuths, yaw to the slope, angular rates).
-inline constexpr int kResultsDbVersion = 5;
+// 6: the pads' largest swing on their ball joints (max_joint_swing_deg).
+inline constexpr int kResultsDbVersion = 6;
 
 // What was dropped: the pad on the vertical rod, the free 6-DOF pad, or the four-legged lander.
 // The database keeps it as text (drop_kind 'rig'|'free'|'lander'), converted where it is read
@@ -99,6 +101,9 @@ struct DropRecord {
   // towards +y), body x from the downhill direction, the horizontal velocity's azimuth (world),
   // the body-axis angular rates at release.
   double max_tilt_deg = std::numeric_limits<double>::quiet_NaN();
+  // The largest swing of any pad on its ball joint, its axis from the body's z axis (lander::
+  // LanderRunResult::max_joint_swing_rad); past 90 deg a pad turned beyond edge-on.
+  double max_joint_swing_deg = std::numeric_limits<double>::quiet_NaN();
   double peak_leg_force_N = std::numeric_limits<double>::quiet_NaN();
   double max_stroke_m = std::numeric_limits<double>::quiet_NaN();
   std::array<double, 4> pad_peak_force_N{std::numeric_limits<double>::quiet_NaN(),

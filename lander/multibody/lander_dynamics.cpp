@@ -398,8 +398,7 @@ double PotentialEnergy(const LanderModel& model, const StateLayout& L, const Eig
     if (L.stroke_slot[i] >= 0 && leg.absorber->kind == ShockAbsorber::Kind::kSpringDamper)
       V += 0.5 * leg.absorber->stiffness_N_m * y[L.stroke(i)] * y[L.stroke(i)];
     if (leg.cone) {
-      const Eigen::Vector3d zB = p.R_WB.col(2), zP = f.R_WP.col(2);
-      const double theta = std::atan2(zB.cross(zP).norm(), zB.dot(zP));
+      const double theta = JointSwingAngle(p.R_WB, f.R_WP);
       const double over = std::max(theta - leg.cone->half_angle_rad, 0.0);
       V += 0.5 * leg.cone->stiffness_N_m_rad * over * over;
     }
@@ -491,6 +490,11 @@ Attitude BodyAttitude(const Eigen::Matrix3d& R) {
   a.yaw_rad = std::atan2(R(1, 0), R(0, 0));
   a.tilt_rad = std::acos(std::clamp(R(2, 2), -1.0, 1.0));
   return a;
+}
+
+double JointSwingAngle(const Eigen::Matrix3d& R_WB, const Eigen::Matrix3d& R_WP) {
+  const Eigen::Vector3d zB = R_WB.col(2), zP = R_WP.col(2);
+  return std::atan2(zB.cross(zP).norm(), zB.dot(zP));
 }
 
 Eigen::Vector3d LanderCentreOfMass(const LanderModel& model, const LanderPose& pose) {

@@ -195,6 +195,10 @@ struct Attitude {
 };
 Attitude BodyAttitude(const Eigen::Matrix3d& R_WB);
 
+// The ball joint's swing: the angle of the pad's axis (z_P) from the body's z axis [rad], the angle
+// a ConeLimit bounds.
+double JointSwingAngle(const Eigen::Matrix3d& R_WB, const Eigen::Matrix3d& R_WP);
+
 // Centre of mass of the whole lander (body and pads), world frame [m]; the point StabilityMargin
 // tests.
 Eigen::Vector3d LanderCentreOfMass(const LanderModel& model, const LanderPose& pose);

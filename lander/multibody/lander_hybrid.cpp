@@ -144,6 +144,8 @@ void LanderHybrid::Record(double t, const Eigen::VectorXd& s) {
     x.v_WJ_W[i] = e.pose.pads[i].v_WJ_W;
     x.w_WP_W[i] = e.pose.pads[i].w_WP_W;
     x.shear_displacement_m[i] = e.pose.pads[i].shear_displacement_m;
+    result_.max_joint_swing_rad =
+        std::max(result_.max_joint_swing_rad, JointSwingAngle(e.pose.R_WB, e.pose.pads[i].R_WP));
     result_.peak_pad_force_N[i] = std::max(result_.peak_pad_force_N[i], e.soil[i].force_W.norm());
     if (modes_.pad[i] == PadMode::kHeld)
       result_.max_held_drift_m = std::max(result_.max_held_drift_m, (e.pose.pads[i].p_WJ - held_at_[i]).norm());

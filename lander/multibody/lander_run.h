@@ -104,6 +104,10 @@ struct LanderRunResult {
   std::array<std::optional<double>, kNumLegs> touchdown_time_s;
   Attitude final_attitude;
   double max_tilt_rad = 0.0;
+  // Largest swing of any pad on its ball joint (JointSwingAngle: its axis from the body's z axis), at
+  // the samples and events: past pi/2 a pad has turned beyond edge-on, which only a joint without a
+  // range (no cone_limit) allows.
+  double max_joint_swing_rad = 0.0;
   bool tipped_over = false;
   std::optional<double> rest_time_s;          // since release
   std::optional<double> first_touchdown_s;

@@ -28,7 +28,8 @@ std::string SummaryStudyText(const std::string& extra = "") {
 }
 
 // Ten landings: 3, 6 and 9 tipped over; max tilt 1..10 deg by index, final tilt a tenth of it;
-// drop 7 failed (not counted).
+// a pad's largest swing on its joint 20 deg times the index (past 90 deg from index 5 on); drop 7
+// failed (not counted).
 std::vector<sweep::DropRecord> HandMadeRecords() {
   std::vector<sweep::DropRecord> records;
   for (int i = 0; i < 10; ++i) {
@@ -41,6 +42,7 @@ std::vector<sweep::DropRecord> HandMadeRecords() {
     r.tipped_over = r.ok ? (i % 3 == 0 && i > 0 ? 1.0 : 0.0) : std::nan("");
     r.max_tilt_deg = i + 1.0;
     r.final_tilt_deg = 0.1 * (i + 1.0);
+    r.max_joint_swing_deg = 20.0 * i;
     r.final_penetration_m = 0.01 * i;
     r.pad_final_penetration_m = {0.01 * i, 0.0, 0.0, 0.0};
     r.time_to_rest_s = i == 5 ? std::nan("") : 0.5;  // drop 5: still moving at the end
@@ -60,6 +62,9 @@ TEST_F(StudySummaryTest, CountsProbabilityAndPercentilesOfHandMadeRecords) {
   EXPECT_EQ(s.failed, 1);
   EXPECT_EQ(s.tipped, 3);
   EXPECT_EQ(s.unsettled, 1);
+  // Swung past edge-on: 5, 6, 8 and 9 (7 failed); of the tip-overs 6 and 9.
+  EXPECT_EQ(s.swung_past_edge_on, 4);
+  EXPECT_EQ(s.tipped_swung_past_edge_on, 2);
   EXPECT_DOUBLE_EQ(s.tip_over_probability, 3.0 / 9.0);
   const BinomialInterval expected = ClopperPearson(3, 9);
   EXPECT_EQ(s.interval.low, expected.low);
@@ -103,6 +108,10 @@ TEST_F(StudySummaryTest, CountsProbabilityAndPercentilesOfHandMadeRecords) {
   EXPECT_EQ(j["tip_overs"].size(), 2u);
   EXPECT_EQ(j["worst_max_tilt"][0]["conditions"]["slope_deg"].get<double>(), 16.0);
   EXPECT_EQ(j["samples_overridden"], false);
+  EXPECT_EQ(j["landings_swung_past_edge_on"], 4);
+  EXPECT_EQ(j["tip_overs_swung_past_edge_on"], 2);
+  // Over the landings that stayed up (0, 1, 2, 4, 5, 8): 0 ... 160 deg.
+  EXPECT_EQ(j["percentiles"]["max_joint_swing_deg"]["max"].get<double>(), 160.0);
 }
 
 TEST_F(StudySummaryTest, AnalysisWritesItsTablesAndPlotsFromTheDatabase) {
