@@ -94,6 +94,14 @@ struct PlaneDepthInB {
   }
 };
 
+// The pad's twist in B with its norms, formed once per contact rather than once per block.
+struct TwistInB {
+  TwistInB(const Eigen::Vector3d& u_B, const Eigen::Vector3d& w_B)
+      : u(u_B), w(w_B), u_norm(u_B.norm()), w_norm(w_B.norm()) {}
+  Eigen::Vector3d u, w;
+  double u_norm, w_norm;
+};
+
 // Whether every element of block b trails the pad's motion (twist u + w x r, in B) by more than the
 // trailing band, so that none carries stress. With a the block's normal axis, delta its spread, c
 // and rho its centre and radius (SurfaceElements), any point r = c + s of it (|s| <= rho) and any
@@ -103,13 +111,6 @@ struct PlaneDepthInB {
 // Every element's lead test, n.v(r) + kTrailingBand |v(r')| >= 0 at points r, r' of the element
 // (contact_internal.h, LeadingPartOf and PassBlock), then fails. The margin keeps the test on the
 // safe side of the elements' own rounding.
-// The pad's twist in B with its norms, formed once per contact rather than once per block.
-struct TwistInB {
-  TwistInB(const Eigen::Vector3d& u_B, const Eigen::Vector3d& w_B)
-      : u(u_B), w(w_B), u_norm(u_B.norm()), w_norm(w_B.norm()) {}
-  Eigen::Vector3d u, w;
-  double u_norm, w_norm;
-};
 inline bool BlockTrails(const SurfaceElements& elements, int b, const TwistInB& t) {
   const Eigen::Vector3d a = elements.block_normal_axis_B.col(b), c = elements.block_centre_B.col(b);
   const double delta = elements.block_normal_spread[b], rho = elements.block_radius_m[b];
