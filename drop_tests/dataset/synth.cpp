@@ -107,6 +107,9 @@ SynthSpec LoadSynthSpec(const std::string& path) {
     }
     const std::vector<double> speeds = g.NumberList("impact_speeds_m_s", /*allow_zero=*/false);
     for (const std::string& pad : pads)
+      if (!io::LoadPad(pad).is_axisymmetric())
+        g.Fail("pads", "'" + pad + "' is a mesh pad; synth simulates rig drops, which need an axisymmetric pad");
+    for (const std::string& pad : pads)
       for (const std::string& soil : soils)
         for (rft::Atmosphere atm : atmospheres)
           for (double v : speeds)

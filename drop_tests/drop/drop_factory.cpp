@@ -1,5 +1,7 @@
 #include "drop_tests/drop/drop_factory.h"
 
+#include <stdexcept>
+
 #include "rft/bekker_law.h"
 #include "rft/input_error.h"
 #include "rft/stress_law.h"
@@ -20,6 +22,8 @@ double ZetaAtGravity(const rft::SoilParameters& drop_soil, double gravity_m_s2) 
 }
 
 std::unique_ptr<geom::AxisymmetricIntrusion> MakeRigIntrusion(const geom::AxisymmetricProfile& profile) {
+  // A mesh pad has no profile; its callers refuse it at load, naming the input (a bug otherwise).
+  if (profile.points.empty()) throw std::invalid_argument("MakeRigIntrusion: a pad without a profile (a mesh pad)");
   return std::make_unique<geom::AxisymmetricIntrusion>(profile, rft::Li2013Law{});
 }
 
@@ -28,6 +32,7 @@ bool RunsOnBekker(const rft::SoilParameters& drop_soil, const std::optional<rft:
 }
 
 std::unique_ptr<geom::AxisymmetricIntrusion> MakeBekkerRigIntrusion(const geom::AxisymmetricProfile& profile) {
+  if (profile.points.empty()) throw std::invalid_argument("MakeBekkerRigIntrusion: a pad without a profile (a mesh pad)");
   return std::make_unique<geom::AxisymmetricIntrusion>(profile, rft::BekkerLaw2D{});
 }
 

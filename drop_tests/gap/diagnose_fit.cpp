@@ -166,6 +166,9 @@ FitProblem MakeFitProblem(const dataset::Dataset& ds, const std::vector<bool>& h
     if (!pads.count(pad_ref)) {
       pads[pad_ref] = static_cast<int>(p.pads.size());
       p.pads.push_back(io::LoadPad(pad_ref));
+      if (!p.pads.back().is_axisymmetric())
+        throw MakeInputError(ds.directory, "drop " + dd.drop_id,
+                             "pad '" + dd.pad + "' is a mesh; diagnose fits rig drops, which need an axisymmetric pad");
       p.intrusions.push_back(drop::MakeRigIntrusion(p.pads.back().profile));
     }
     if (!soils.count(soil_ref)) {

@@ -135,6 +135,19 @@ void WriteMarker(const fs::path& directory, OutputKind kind, const std::set<std:
   });
 }
 
+// touchdown never makes a symbolic link in an output, so one inside an output it fills in place is
+// the user's, and writing there would write through it into whatever it points to.
+void RefuseLinksInside(const std::string& path, const fs::path& directory) {
+  std::error_code ec;
+  for (fs::recursive_directory_iterator it(directory, ec), end; !ec && it != end; it.increment(ec)) {
+    std::error_code ignored;
+    if (it->is_symlink(ignored))
+      Refuse(path, "holds '" + it->path().lexically_relative(directory).generic_string() +
+                       "', a symbolic link touchdown did not make (it writes through no link); remove it or give "
+                       "another directory");
+  }
+}
+
 // The checks shared by whole and in-place outputs; returns the normalised target.
 fs::path CheckDirectory(const OutputTarget& target, OutputKind kind, bool whole) {
   const fs::path p = Normal(target.path);
@@ -160,6 +173,7 @@ fs::path CheckDirectory(const OutputTarget& target, OutputKind kind, bool whole)
       if (marker.kind != OutputKindName(kind))
         Refuse(path, "holds the output of `touchdown " + marker.kind + "`, not of `" + OutputKindName(kind) +
                          "`; give another directory");
+      if (!whole) RefuseLinksInside(path, p);
       if (whole && marker.has_manifest) {
         for (const std::string& entry : Entries(p))
           if (!marker.files.count(entry))
@@ -281,6 +295,15 @@ void ReplaceDirectory(const fs::path& staging, const fs::path& target) {
   RemoveOutput(old);
 }
 
+// The error with the staging directory, which the user never asked for, named as their path.
+InputError NamingTheTarget(const InputError& e, const fs::path& staging, const std::string& shown_path) {
+  std::string message = e.what();
+  const std::string staged = staging.string();
+  for (size_t at = message.find(staged); at != std::string::npos; at = message.find(staged, at))
+    message.replace(at, staged.size(), shown_path);
+  return InputError(message);
+}
+
 // Writes `file` from scratch; on any failure removes it and throws, naming `shown_path`.
 void WriteNewFile(const fs::path& file, const std::function<void(std::ostream&)>& write,
                   const std::string& shown_path) {
@@ -351,12 +374,7 @@ void WriteOutputDirectory(const OutputTarget& target, OutputKind kind,
     }
   } catch (const InputError& e) {
     RemoveOutput(staging);
-    // Name the user's path, not the staging directory they never asked for.
-    std::string message = e.what();
-    const std::string shown = staging.string();
-    for (size_t at = message.find(shown); at != std::string::npos; at = message.find(shown, at))
-      message.replace(at, shown.size(), target.path);
-    throw InputError(message);
+    throw NamingTheTarget(e, staging, target.path);
   } catch (...) {
     RemoveOutput(staging);
     throw;
@@ -371,6 +389,115 @@ void OpenOutputDirectory(const OutputTarget& target, OutputKind kind) {
   if (!ReadMarker(p).present) WriteMarker(p, kind, nullptr);
   for (const fs::directory_entry& e : fs::directory_iterator(p, ec))
     CleanLeftovers(e.path());
+}
+
+namespace {
+
+constexpr const char* kDerivedManifest = ".touchdown-derived";
+
+// The derived outputs an earlier run wrote (relative generic paths, directories with a trailing
+// '/'); `present` false for a directory written before the list was kept.
+std::set<std::string> ReadDerivedManifest(const fs::path& directory, bool& present) {
+  std::set<std::string> files;
+  std::ifstream in(directory / kDerivedManifest);
+  present = static_cast<bool>(in);
+  for (std::string line; std::getline(in, line);)
+    if (!line.empty()) files.insert(line);
+  return files;
+}
+
+void WriteDerivedManifest(const fs::path& directory, const std::set<std::string>& files) {
+  WriteFileAtomically((directory / kDerivedManifest).string(), [&](std::ostream& out) {
+    for (const std::string& f : files) out << f << '\n';
+  });
+}
+
+// The first component of a relative generic path ("plots/data/x.csv" -> "plots").
+std::string TopName(const std::string& entry) { return entry.substr(0, entry.find('/')); }
+
+// `name` and everything below it in `directory`, as Entries() lists them; empty when absent.
+std::set<std::string> EntriesUnder(const fs::path& directory, const std::string& name) {
+  std::set<std::string> entries;
+  std::error_code ec;
+  const fs::file_status status = fs::symlink_status(directory / name, ec);
+  if (status.type() == fs::file_type::not_found) return entries;
+  if (status.type() != fs::file_type::directory) return {name};
+  entries.insert(name + "/");
+  for (const std::string& e : Entries(directory / name)) entries.insert(name + "/" + e);
+  return entries;
+}
+
+// Puts the staged entry `name` in the place of the directory's own (absent or touchdown's).
+void MoveIntoPlace(const fs::path& staging, const fs::path& directory, const std::string& name) {
+  const fs::path from = staging / name, to = directory / name;
+  std::error_code ec;
+  if (fs::is_directory(from, ec) && fs::exists(fs::symlink_status(to, ec))) {
+    ReplaceDirectory(from, to);
+    return;
+  }
+  if (!fs::is_directory(from, ec)) {
+    fs::rename(from, to, ec);  // a file replaces a file in one step
+    if (ec) Refuse(to.string(), "cannot move the finished file into place: " + Reason(ec));
+  } else if (!RenameNoReplace(from, to)) {
+    Refuse(to.string(), "appeared while touchdown was writing it; touchdown does not overwrite it");
+  }
+}
+
+}  // namespace
+
+void ReplaceDerivedOutputs(const std::string& directory, OutputKind kind, const std::string& complete,
+                           const std::function<void(const std::string& staging)>& fill) {
+  const fs::path dir = Normal(directory);
+  RefuseLinksInside(directory, dir);
+  const fs::path staging_name = dir / "derived";
+  CleanLeftovers(staging_name);  // a killed run's staging directory
+  const fs::path staging = StagingPath(staging_name);
+  std::error_code ec;
+  if (fs::exists(staging, ec)) RemoveOutput(staging);
+  fs::create_directory(staging, ec);
+  if (ec) Refuse(directory, "cannot create the staging directory: " + Reason(ec));
+  std::set<std::string> fresh;
+  try {
+    WriteMarker(staging, kind, nullptr);  // so that the next run knows a killed run's staging is touchdown's
+    fill(staging.string());
+    fresh = Entries(staging);
+  } catch (const InputError& e) {
+    RemoveOutput(staging);
+    throw NamingTheTarget(e, staging, directory);
+  } catch (...) {
+    RemoveOutput(staging);
+    throw;
+  }
+  try {
+    if (!fresh.count(complete)) Refuse(directory, "the analysis wrote no '" + complete + "'");
+    bool listed = false;
+    const std::set<std::string> earlier = ReadDerivedManifest(dir, listed);
+    std::set<std::string> names;  // top-level entries, earlier and new
+    for (const std::string& e : fresh) names.insert(TopName(e));
+    for (const std::string& e : earlier) names.insert(TopName(e));
+    // Everything the new outputs replace must be touchdown's: listed by the earlier run (a directory
+    // written before the list was kept holds no link, checked above, and only what it wrote).
+    for (const std::string& name : names)
+      for (const std::string& e : EntriesUnder(dir, name))
+        if (listed && !earlier.count(e))
+          Refuse(directory, "holds '" + e + "', which touchdown did not write; move it away so that the analysis can "
+                            "be replaced");
+    std::set<std::string> both = earlier;
+    both.insert(fresh.begin(), fresh.end());
+    WriteDerivedManifest(dir, both);  // a kill from here on leaves nothing the next run does not know
+    fs::remove(dir / complete, ec);   // first out, last in: present only beside a whole analysis
+    for (const std::string& name : names) {
+      if (name == complete) continue;
+      if (fs::exists(fs::symlink_status(staging / name, ec))) MoveIntoPlace(staging, dir, name);
+      else fs::remove_all(dir / name, ec);  // an earlier output this analysis no longer makes
+    }
+    WriteDerivedManifest(dir, fresh);
+    MoveIntoPlace(staging, dir, complete);
+  } catch (...) {
+    RemoveOutput(staging);
+    throw;
+  }
+  RemoveOutput(staging);
 }
 
 void CheckOutputFile(const OutputTarget& target, const std::string& mark) {

@@ -47,8 +47,20 @@ void WriteOutputDirectory(const OutputTarget& target, OutputKind kind,
                           const std::function<void(const std::string& staging)>& fill);
 
 // An output filled in place over several runs (a sweep's database, which a rerun resumes): created
-// with its marker, or reopened when it is an earlier output of the same kind. Nothing is removed.
+// with its marker, or reopened when it is an earlier output of the same kind and holds no symbolic
+// link (touchdown makes none, and would write through it). Nothing is removed.
 void OpenOutputDirectory(const OutputTarget& target, OutputKind kind);
+
+// The outputs a command derives from a directory it fills in place (a stability study's or a trade
+// study's tables, plots and summary, beside the sweep database), replaced as one whole: `fill`
+// writes all of them into a staging directory it is given; then `complete` (the file whose presence
+// says the analysis is whole, e.g. summary.json) is removed, the other entries take the places of
+// the earlier ones, and `complete` comes last. A failure or a kill before that leaves the earlier
+// analysis untouched; one during it leaves no `complete`. Refuses (InputError) a directory holding
+// a symbolic link or, among the outputs it replaces, anything the earlier run did not write (their
+// list is kept in the directory as `.touchdown-derived`).
+void ReplaceDerivedOutputs(const std::string& directory, OutputKind kind, const std::string& complete,
+                           const std::function<void(const std::string& staging)>& fill);
 
 // A single output file (a trace, a model file). An existing file is replaced only when its first line
 // is `mark` (a line touchdown writes first in such files), so a file of the user's is never lost.

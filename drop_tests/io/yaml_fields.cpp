@@ -22,17 +22,43 @@ std::string Shown(const YAML::Node& n) {
 
 std::string LineOf(const YAML::Node& n) { return "line " + std::to_string(n.Mark().line + 1); }
 
+// What a walk over the tree may meet. yaml-cpp keeps an alias as a second reference to its anchor's
+// node, so a walk visits an aliased subtree once per reference: an alias inside its own anchor
+// (`a: &a [*a]`) makes the tree infinitely deep, and aliases of aliases multiply ("billion laughs":
+// nine levels of ten references are 10^9 nodes). Every touchdown file is a few hundred nodes and a
+// few levels deep; these bounds are far above that and are reached in milliseconds.
+constexpr int kMaxYamlDepth = 64;
+constexpr long kMaxYamlNodes = 1'000'000;
+
+struct TreeWalk {
+  const std::string& file;
+  long nodes = 0;
+};
+
 // What yaml-cpp accepts but a touchdown file must not contain, checked once over the whole
-// tree: a key given twice in one mapping (yaml-cpp keeps both pairs and lookups see the first,
-// so the second would be dropped silently), and text that is not UTF-8 (names and ids go
-// into JSON and file names).
-void CheckTree(const YAML::Node& node, const std::string& file, const std::string& path) {
-  auto join = [&](const std::string& key) { return path.empty() ? key : path + "." + key; };
+// tree: a tree beyond the bounds above, a key given twice in one mapping (yaml-cpp keeps both
+// pairs and lookups see the first, so the second would be dropped silently), and text that is not
+// UTF-8 (names and ids go into JSON and file names).
+void CheckTree(const YAML::Node& node, TreeWalk& walk, const std::string& path, int depth) {
+  const std::string& file = walk.file;
+  // Paths name the field a message is about; past a few levels they stop growing (a path 64
+  // levels deep would be no clearer).
+  constexpr int kShownDepth = 8;
+  auto join = [&](const std::string& key) {
+    return depth >= kShownDepth ? path : path.empty() ? key : path + "." + key;
+  };
+  auto index = [&](size_t i) { return depth >= kShownDepth ? path : path + "[" + std::to_string(i) + "]"; };
+  if (depth > kMaxYamlDepth)
+    throw MakeInputError(file, path, "nested more than " + std::to_string(kMaxYamlDepth) +
+                                         " levels deep (an alias inside its own anchor?) at " + LineOf(node));
+  if (++walk.nodes > kMaxYamlNodes)
+    throw MakeInputError(file, path, "expands to more than " + std::to_string(kMaxYamlNodes) +
+                                         " values (aliases of aliases?) at " + LineOf(node));
   if (node.IsScalar()) {
     if (!IsValidUtf8(node.Scalar()))
       throw MakeInputError(file, path.empty() ? LineOf(node) : path, "not valid UTF-8 text (" + LineOf(node) + ")");
   } else if (node.IsSequence()) {
-    for (size_t i = 0; i < node.size(); ++i) CheckTree(node[i], file, path + "[" + std::to_string(i) + "]");
+    for (size_t i = 0; i < node.size(); ++i) CheckTree(node[i], walk, index(i), depth + 1);
   } else if (node.IsMap()) {
     std::map<std::string, YAML::Node> seen;
     for (const auto& item : node) {
@@ -43,7 +69,7 @@ void CheckTree(const YAML::Node& node, const std::string& file, const std::strin
       if (!fresh)
         throw MakeInputError(file, join(key),
                              "duplicate key (" + LineOf(item.first) + "; first at " + LineOf(first->second) + ")");
-      CheckTree(item.second, file, join(key));
+      CheckTree(item.second, walk, join(key), depth + 1);
     }
   }
 }
@@ -52,9 +78,16 @@ void CheckTree(const YAML::Node& node, const std::string& file, const std::strin
 YamlFields YamlFields::LoadFile(const std::string& path) {
   const std::string text = ReadInputFile(path);
   try {
-    YAML::Node root = YAML::Load(text);
+    // Every document is parsed: one that follows the first would otherwise be dropped unread.
+    const std::vector<YAML::Node> documents = YAML::LoadAll(text);
+    for (size_t i = 1; i < documents.size(); ++i)
+      if (documents[i].IsDefined() && !documents[i].IsNull())
+        throw MakeInputError(path, "", "holds a second YAML document (" + LineOf(documents[i]) +
+                                           "); a touchdown file is one document: remove the '---' and what follows");
+    YAML::Node root = documents.empty() ? YAML::Node() : documents.front();
     if (!root.IsMap()) throw MakeInputError(path, "", "top level must be a YAML mapping");
-    CheckTree(root, path, "");
+    TreeWalk walk{path};
+    CheckTree(root, walk, "", 0);
     return YamlFields(root, path, "");
   } catch (const YAML::Exception& e) {
     throw MakeInputError(path, "", std::string("malformed YAML: ") + e.what());

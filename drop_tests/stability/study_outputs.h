@@ -1,6 +1,6 @@
 #pragma once
-// A stability study's outputs in its directory (beside results.sqlite), each file written
-// atomically through io::WriteFileAtomically (docs/stability_studies.md lists them):
+// A stability study's outputs in its directory (beside results.sqlite), written together by
+// WriteStudyAnalysis (docs/stability_studies.md lists them):
 //   summary.json                 landings, tip-over probability and interval, percentiles, map, worst cases
 //   percentiles.csv              metric, unit, landings, p50, p95, p99, max
 //   tip_over_map.csv             per map cell: ranges, landings, tip-overs, probability, 95 % interval
@@ -21,7 +21,8 @@ void WriteStudyPlots(const Study& study, const StudySummary& summary, const std:
 
 // Reads DIR/results.sqlite, which must hold every landing of the study (InputError naming the
 // database and how many are missing, e.g. after a shard's run: merge the shards first), and
-// writes the analysis; summary.json last, so its presence means the analysis is complete.
+// replaces the analysis as one whole (io::ReplaceDerivedOutputs): summary.json last, so its
+// presence means the analysis is complete.
 StudySummary WriteStudyAnalysis(const Study& study, const std::string& out_dir);
 
 }  // namespace touchdown::stability

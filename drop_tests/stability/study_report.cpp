@@ -26,10 +26,12 @@ StudySummary WriteStudyAnalysis(const Study& study, const std::string& out_dir) 
                              "the merged directory)");
   const std::vector<sweep::DropRecord> records = db.ReadAll(/*with_traces=*/false);
   const StudySummary summary = Summarise(study, records);
-  WriteStudyTables(study, summary, out_dir);
-  WriteStudyPlots(study, summary, records, out_dir);
-  io::WriteFileAtomically((std::filesystem::path(out_dir) / "summary.json").string(),
-                          [&](std::ostream& out) { out << SummaryJson(study, summary).dump(2) << '\n'; });
+  io::ReplaceDerivedOutputs(out_dir, io::OutputKind::kSweep, "summary.json", [&](const std::string& staging) {
+    WriteStudyTables(study, summary, staging);
+    WriteStudyPlots(study, summary, records, staging);
+    io::WriteFileAtomically((std::filesystem::path(staging) / "summary.json").string(),
+                            [&](std::ostream& out) { out << SummaryJson(study, summary).dump(2) << '\n'; });
+  });
   return summary;
 }
 

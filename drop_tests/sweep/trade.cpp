@@ -184,8 +184,8 @@ std::string SeriesLine(const std::string& key) { return io::PadSoilLine(key.subs
 std::string SeriesColourOf(const std::string& key) { return io::PadColour(key.substr(0, key.find('|'))); }
 }  // namespace
 
-void WriteTradeOutputs(const std::vector<TradeRow>& rows, const std::string& out_dir, const TradeLimits& limits) {
-  const fs::path dir = out_dir;
+namespace {
+void WriteTradeFiles(const std::vector<TradeRow>& rows, const fs::path& dir, const TradeLimits& limits) {
   fs::create_directories(dir / "plots" / "data");
   io::WriteFileAtomically((dir / "trade.csv").string(), [&](std::ostream& out) {
     out << "pad,soil,impact_speed_m_s,drops,failed,final_penetration_m,peak_force_N,mean_conversion_rate_W,pad_mass_kg,"
@@ -249,6 +249,12 @@ void WriteTradeOutputs(const std::vector<TradeRow>& rows, const std::string& out
   }
   const std::string gp = io::Figure("plots/trade", speeds, io::kFigureStrip) + io::Figure("plots/pareto", pareto, io::kFigureWide);
   io::RenderPlots(dir, {"plots/trade.gp", gp, {io::FigurePng("plots/trade"), io::FigurePng("plots/pareto")}});
+}
+}  // namespace
+
+void WriteTradeOutputs(const std::vector<TradeRow>& rows, const std::string& out_dir, const TradeLimits& limits) {
+  io::ReplaceDerivedOutputs(out_dir, io::OutputKind::kSweep, "summary.json",
+                            [&](const std::string& staging) { WriteTradeFiles(rows, staging, limits); });
 }
 
 }  // namespace touchdown::sweep

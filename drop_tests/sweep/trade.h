@@ -64,6 +64,8 @@ std::vector<TradeRow> TradeTable(const std::vector<DropRecord>& records, const T
 // Marks rows[i].pareto for the feasible rows of one condition (indices), by the rule above.
 void MarkParetoFront(std::vector<TradeRow>& rows, const std::vector<size_t>& condition);
 nlohmann::json TradeJson(const std::vector<TradeRow>& rows, const TradeLimits& limits = {});
+// trade.csv, summary.json and plots/ in a sweep output, replacing an earlier trade analysis as one
+// whole (io::ReplaceDerivedOutputs).
 void WriteTradeOutputs(const std::vector<TradeRow>& rows, const std::string& out_dir, const TradeLimits& limits = {});
 
 }  // namespace touchdown::sweep

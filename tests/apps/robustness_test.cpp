@@ -243,6 +243,52 @@ void AddExitStatusAndInputCases(std::vector<Case>& c) {
                                     "drops:\n  - {pads: [flat], soils: [fjs1_lp], impact_speeds_m_s: [1.0]}\n"}}});
 }
 
+// Inputs that crashed, hung or lost data when touchdown was tried as a new user would.
+void AddNewUserDefectCases(std::vector<Case>& c) {
+  // Aliases: one inside its own anchor, and aliases of aliases, in any YAML file.
+  c.push_back({"pad YAML", "an alias inside its own anchor", "drop --pad rec.yaml --soil fjs1_lp --speed 1",
+               {{"rec.yaml", "a: &a [*a]\n"}}});
+  std::string laughs = "l0: &l0 [x, x, x, x, x, x, x, x, x, x]\n";
+  for (int level = 1; level <= 8; ++level) {
+    const std::string prev = "*l" + std::to_string(level - 1);
+    laughs += "l" + std::to_string(level) + ": &l" + std::to_string(level) + " [" + prev;
+    for (int i = 1; i < 10; ++i) laughs += ", " + prev;
+    laughs += "]\n";
+  }
+  c.push_back({"soil YAML", "aliases of aliases (10^9 values)", with_soil_cmd() + "laughs.yaml",
+               {{"laughs.yaml", Soil("zeta_N_cm3: 3\n" + laughs)}}});
+  c.push_back({"pad YAML", "a second YAML document", "drop --pad two_docs.yaml --soil fjs1_lp --speed 1",
+               {{"two_docs.yaml", Pad(kFlatProfile) + "---\nmass_kg: 9\n"}}});
+  // A mesh pad where only rig drops run.
+  c.push_back({"synth YAML", "a mesh pad (rig drops only)", "synth hex.synth.yaml --out out_n1",
+               {{"hex.synth.yaml", "schema_version: 1\ntype: synth\nseed: 1\n"
+                                   "drops:\n  - {pads: [hex], soils: [fjs1_lp], impact_speeds_m_s: [1.0]}\n"}}});
+  c.push_back({"dataset CSV", "diagnose with a mesh pad", "diagnose ds_hex --out out_n2",
+               Dataset("ds_hex", kDropsHeader + "d0,hex,fjs1_lp,vacuum,1.0,1.6,9.81,t.csv\n"
+                                 "d1,hex,fjs1_lp,vacuum,1.0,1.6,9.81,t.csv\nd2,hex,fjs1_lp,vacuum,1.0,1.6,9.81,t.csv\n",
+                       "t_s,penetration_m,force_N\n0,0,0\n0.001,0.0005,30\n0.002,0.0009,60\n0.003,0.001,20\n"
+                       "0.004,0.001,20\n0.005,0.001,20\n")});
+  // A symbolic link the user put in an output touchdown fills in place is never written through.
+  const auto linked_plots = [](const std::string& out) {
+    return [out](const fs::path& d) {
+      fs::create_directories(d / out);
+      std::ofstream(d / out / ".touchdown-output") << "touchdown output\nkind: sweep\n";
+      fs::create_directories(d / "mine");
+      std::ofstream(d / "mine" / "exceedance.png") << "mine\n";
+      fs::create_directory_symlink("../mine", d / out / "plots");
+    };
+  };
+  c.push_back({"output path", "stability output whose plots/ is a link to the user's directory",
+               "stability link_study.yaml --out out_n3",
+               {{"link_study.yaml", "schema_version: 1\ntype: stability\nlander: {scenario: lander_case_A}\n"
+                                    "grid: {slope_deg: [0]}\n"}},
+               linked_plots("out_n3")});
+  c.push_back({"output path", "trade output whose plots/ is a link to the user's directory",
+               "trade link_trade.yaml --out out_n4",
+               {{"link_trade.yaml", Sweep("traces: none\nfixed: {soil: fjs1_lp}\ngrid: {pad: [flat], impact_speed_m_s: [1.0]}\n")}},
+               linked_plots("out_n4")});
+}
+
 std::vector<Case> Cases() {
   std::vector<Case> c;
   // Pad YAML.
@@ -497,6 +543,7 @@ std::vector<Case> Cases() {
                  {{"evals.yaml", Sweep("max_drop_evaluations: -1\n" + kSweepBase + "grid: {impact_speed_m_s: [1]}\n")}}});
   }
   AddExitStatusAndInputCases(c);
+  AddNewUserDefectCases(c);
   // Targets YAML (calibrate --targets, docs/calibration_targets.md).
   {
     const std::string target = "targets: [{name: d, drop: {pad: flat, soil: fjs1_lp, speed_m_s: 1}, quantity: "

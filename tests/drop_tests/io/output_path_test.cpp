@@ -257,5 +257,83 @@ TEST_F(OutputPathTest, InPlaceOutputIsCreatedReopenedAndNeverEmptied) {
   EXPECT_EQ(Read("s/results.sqlite"), "db");
 }
 
+// A link the user put inside an in-place output (`rm -r st/plots; ln -s ~/mine st/plots`) would be
+// written through by a rerun: the output is refused, and what the link points to is untouched.
+TEST_F(OutputPathTest, InPlaceOutputHoldingASymbolicLinkIsRefused) {
+  OpenOutputDirectory("s", OutputKind::kSweep);
+  fs::create_directory("mine");
+  Write("mine/exceedance.png", "mine");
+  fs::create_directory_symlink(dir_ / "mine", "s/plots");
+  EXPECT_NE(Refusal([] { OpenOutputDirectory("s", OutputKind::kSweep); }).find("'plots', a symbolic link"),
+            std::string::npos);
+  EXPECT_NE(Refusal([] { ReplaceDerivedOutputs("s", OutputKind::kSweep, "summary.json", [](const std::string&) {}); })
+                .find("'plots', a symbolic link"),
+            std::string::npos);
+  EXPECT_EQ(Read("mine/exceedance.png"), "mine");
+}
+
+// An analysis of `version`: a summary, a table and a plot in plots/.
+auto Analysis(const std::string& version) {
+  return [version](const std::string& staging) {
+    fs::create_directories(fs::path(staging) / "plots");
+    Write(fs::path(staging) / "plots" / "map.png", version);
+    Write(fs::path(staging) / "table.csv", version);
+    Write(fs::path(staging) / "summary.json", version);
+  };
+}
+
+TEST_F(OutputPathTest, DerivedOutputsAreReplacedAsOneWhole) {
+  OpenOutputDirectory("s", OutputKind::kSweep);
+  Write("s/results.sqlite", "db");
+  ReplaceDerivedOutputs("s", OutputKind::kSweep, "summary.json", Analysis("1"));
+  EXPECT_EQ(Read("s/plots/map.png"), "1");
+  ReplaceDerivedOutputs("s", OutputKind::kSweep, "summary.json", Analysis("2"));
+  EXPECT_EQ(Read("s/plots/map.png"), "2");
+  EXPECT_EQ(Read("s/table.csv"), "2");
+  EXPECT_EQ(Read("s/summary.json"), "2");
+  EXPECT_EQ(Read("s/results.sqlite"), "db");
+  // A failure while the new analysis is drawn (gnuplot failing, a kill) leaves the earlier one whole.
+  EXPECT_THROW(ReplaceDerivedOutputs("s", OutputKind::kSweep, "summary.json",
+                                     [](const std::string& staging) {
+                                       Analysis("3")(staging);
+                                       throw InputError("gnuplot failed");
+                                     }),
+               InputError);
+  EXPECT_EQ(Read("s/plots/map.png"), "2");
+  EXPECT_EQ(Read("s/summary.json"), "2");
+  // Nothing is left beside it: the results, the marker, the list of outputs and the outputs.
+  EXPECT_EQ(Entries("s"), 6);
+  // An output the new analysis no longer makes goes with the old one.
+  ReplaceDerivedOutputs("s", OutputKind::kSweep, "summary.json", [](const std::string& staging) {
+    Write(fs::path(staging) / "summary.json", "4");
+  });
+  EXPECT_FALSE(fs::exists("s/plots"));
+  EXPECT_FALSE(fs::exists("s/table.csv"));
+  EXPECT_EQ(Read("s/summary.json"), "4");
+}
+
+TEST_F(OutputPathTest, DerivedOutputsNeverReplaceAFileOfTheUsers) {
+  OpenOutputDirectory("s", OutputKind::kSweep);
+  ReplaceDerivedOutputs("s", OutputKind::kSweep, "summary.json", Analysis("1"));
+  Write("s/plots/notes.txt", "mine");
+  EXPECT_NE(Refusal([] { ReplaceDerivedOutputs("s", OutputKind::kSweep, "summary.json", Analysis("2")); })
+                .find("holds 'plots/notes.txt', which touchdown did not write"),
+            std::string::npos);
+  EXPECT_EQ(Read("s/plots/notes.txt"), "mine");
+  EXPECT_EQ(Read("s/summary.json"), "1");
+}
+
+// A run killed while it staged its analysis leaves a staging directory; the next run removes it.
+TEST_F(OutputPathTest, DerivedOutputsStagingOfAKilledRunIsRemoved) {
+  OpenOutputDirectory("s", OutputKind::kSweep);
+  const fs::path left = "s/.derived.partial-" + std::to_string(DeadPid());
+  fs::create_directories(left / "plots");
+  Write(left / kOutputMarker, "touchdown output\nkind: sweep\n");
+  Write(left / "plots" / "map.png", "half");
+  ReplaceDerivedOutputs("s", OutputKind::kSweep, "summary.json", Analysis("1"));
+  EXPECT_FALSE(fs::exists(left));
+  EXPECT_EQ(Read("s/plots/map.png"), "1");
+}
+
 }  // namespace
 }  // namespace touchdown::io
