@@ -1,4 +1,5 @@
-// touchdown force: the quasi-static soil wrench on a pad held at a depth, tilt and rigid motion.
+// touchdown force: the quasi-static soil wrench on a pad held at a depth, tilt and rigid motion
+// (with --dynamic, plus the soil's dynamic term at that motion).
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -26,13 +27,17 @@ void AddForceCommand(CLI::App& app) {
   cmd->add_option("--depth", a->depth_m, "depth of the pad's lowest point below the level surface [m]")->required();
   cmd->add_option("--tilt-deg", a->tilt_deg, "tilt of the pad about --tilt-axis [deg]");
   cmd->add_option("--tilt-axis", a->tilt_axis, "x or y (axes of the world frame, z up)");
-  cmd->add_option("--velocity", a->velocity, "rigid velocity of the reference point VX,VY,VZ [m/s] (default 0,0,-1)")
+  cmd->add_option("--velocity", a->velocity, "rigid velocity of the reference point VX,VY,VZ [m/s] (default 0,0,-1): the direction of motion, and the "
+                  "speed of the dynamic term with --dynamic")
       ->expected(3)->delimiter(',');
   cmd->add_option("--omega", a->omega, "angular velocity WX,WY,WZ [rad/s]")->expected(3)->delimiter(',');
   cmd->add_option("--law", a->law,
                   "li2013 (Treers et al. 2021 3D decomposition), agarwal2023 or bekker (default: the soil's own law)");
   cmd->add_option("--zeta", a->zeta_N_cm3, "override the soil's zeta [N/cm^3] (li2013)");
   cmd->add_option("--gravity", a->gravity_m_s2, "gravity [m/s^2] the soil stresses scale with (default 9.81)");
+  cmd->add_flag("--dynamic", a->dynamic,
+                "add the soil's dynamic term (lambda rho (v.n)^2 on leading elements) at --velocity; without it "
+                "the force is quasi-static and --velocity gives only the direction of motion");
   cmd->add_option("--vtk", a->vtk,
                   "write the pad at its pose with the soil stress on each surface element to this new .vtp file "
                   "(ParaView; docs/paraview.md)");

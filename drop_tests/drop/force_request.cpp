@@ -66,6 +66,7 @@ nlohmann::json ForceJson(const ForceRequest& r, const RequestNaming& naming, con
   const io::PadSpec pad = io::LoadPad(r.pad);
   rft::SoilParameters soil = io::LoadSoil(r.soil);
   if (r.zeta_N_cm3) soil.zeta_N_m3 = units::ZetaFromN_cm3(*r.zeta_N_cm3);
+  soil.dynamic_term = soil.dynamic_term && r.dynamic;
   const rft::LawKind kind = r.law ? rft::ParseLawKind(*r.law, naming.context, naming.Field("law")) : soil.rft_law_3d;
   const double plate_b_m = kind == rft::LawKind::kBekker ? rft::BekkerPlateB(pad.body.surface) : 0.0;
   // The contact model (law and pad-level terms): Bekker's z^n is a pad-level depth law.
@@ -89,6 +90,7 @@ nlohmann::json ForceJson(const ForceRequest& r, const RequestNaming& naming, con
       {"submerged_area_m2", w.submerged_area_m2},
       {"leading_elements", w.leading_elements},
       {"surface_elements", pad.body.surface.size()},
+      {"dynamic_term", soil.dynamic_term},
   };
   if (kind == rft::LawKind::kBekker) out["bekker_plate_b_m"] = plate_b_m;
   return out;

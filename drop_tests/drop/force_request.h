@@ -1,7 +1,9 @@
 #pragma once
 // The quasi-static soil wrench on a pad held at a depth, tilt and rigid motion, as a user asks for
 // it: the options of `touchdown force` and the arguments of the Python module's touchdown.force().
-// Both check and compute it here and get the same JSON (ForceJson).
+// Both check and compute it here and get the same JSON (ForceJson). The motion gives RFT its
+// direction only; the soil's rate-dependent term (dynamic RFT's lambda rho (v.n)^2), which a
+// held pad does not feel, is added only when asked for (`dynamic`), at the velocity given.
 #include <array>
 #include <optional>
 #include <string>
@@ -20,11 +22,13 @@ struct ForceRequest {
   double depth_m = 0.0, tilt_deg = 0.0, gravity_m_s2 = 9.81;
   std::array<double, 3> velocity_m_s{0.0, 0.0, -1.0}, omega_rad_s{0.0, 0.0, 0.0};
   std::optional<double> zeta_N_cm3;  // overrides the soil's
+  bool dynamic = false;               // add the soil's dynamic term at velocity_m_s (if it has one)
 };
 
 // Validates the request (InputError naming the field as `naming` spells it), loads the pad and
 // the soil and returns the wrench: pad, soil, law, the request, reference_point_m, force_N,
-// moment_Nm, submerged_area_m2, leading_elements, surface_elements (SI, world frame, z up).
+// moment_Nm, submerged_area_m2, leading_elements, surface_elements (SI, world frame, z up), and
+// dynamic_term: whether the soil's dynamic term is in the force.
 // With `vtk`: also the pad at its pose with the stress on each surface element, as a .vtp file
 // (ParaView; docs/paraview.md), written whole or not at all.
 nlohmann::json ForceJson(const ForceRequest& request, const RequestNaming& naming,

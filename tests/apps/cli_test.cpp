@@ -66,16 +66,26 @@ TEST_F(Cli, DropPrintsJsonWithTheContractedKeys) {
 }
 
 TEST_F(Cli, ForceOfFlatPadMatchesTheClosedForm) {
-  // Straight down at 1 m/s: zeta (pi r^2 d + 0.128 pi r d^2) plus the soil's dynamic term
-  // lambda rho v^2 pi r^2 on the bottom face (the wall has v.n = 0), the revolved mesh within
-  // 0.5 % of it.
+  // Straight down: quasi-static zeta (pi r^2 d + 0.128 pi r d^2), the revolved mesh within 0.5 %
+  // of it; with --dynamic at 1 m/s, plus the soil's dynamic term lambda rho v^2 pi r^2 on the
+  // bottom face (the wall has v.n = 0).
   const CliRun r = Touchdown("force --pad flat --soil fjs1_lp --depth 0.005");
   ASSERT_EQ(r.status, 0) << r.err;
   const nlohmann::json j = nlohmann::json::parse(r.out);
   const double zeta = 3.4810783e6, radius = 0.05, d = 0.005, lambda = 1.1, rho = 1540.0, v = 1.0;
-  const double closed = zeta * (M_PI * radius * radius * d + 0.1284 * M_PI * radius * d * d) +
-                        lambda * rho * v * v * M_PI * radius * radius;
-  EXPECT_NEAR(j["force_N"][2].get<double>(), closed, 5e-3 * closed);
+  const double quasi_static = zeta * (M_PI * radius * radius * d + 0.1284 * M_PI * radius * d * d);
+  EXPECT_NEAR(j["force_N"][2].get<double>(), quasi_static, 5e-3 * quasi_static);
+  EXPECT_FALSE(j["dynamic_term"].get<bool>());
+  const CliRun slow = Touchdown("force --pad flat --soil fjs1_lp --depth 0.005 --velocity 0,0,-0.01");
+  ASSERT_EQ(slow.status, 0) << slow.err;
+  EXPECT_NEAR(nlohmann::json::parse(slow.out)["force_N"][2].get<double>(), j["force_N"][2].get<double>(),
+              1e-12 * quasi_static);  // quasi-static: the speed does not matter, only the direction
+  const CliRun dynamic = Touchdown("force --pad flat --soil fjs1_lp --depth 0.005 --dynamic");
+  ASSERT_EQ(dynamic.status, 0) << dynamic.err;
+  const nlohmann::json jd = nlohmann::json::parse(dynamic.out);
+  const double closed = quasi_static + lambda * rho * v * v * M_PI * radius * radius;
+  EXPECT_NEAR(jd["force_N"][2].get<double>(), closed, 5e-3 * closed);
+  EXPECT_TRUE(jd["dynamic_term"].get<bool>());
   EXPECT_NEAR(j["force_N"][0].get<double>(), 0.0, 1e-9);
   EXPECT_GT(j["leading_elements"].get<int>(), 0);
   // Tilted and moving sideways: a horizontal force opposing the motion appears.
