@@ -50,6 +50,7 @@ inline constexpr Range kAngularRate_deg_s{"deg/s", -3600.0, 3600.0, false};
 // A drop height or a terrain's elevation: positions are integrated to a relative tolerance (1e-7 for
 // a lander), so at 100 m the error allowed is 10 um; much higher, a pad's millimetres would be lost.
 inline constexpr Range kHeight_m{"m", -100.0, 100.0, false};
+inline constexpr Range kDropHeight_m{"m", 0.0, kHeight_m.high, false};  // a release height above the ground
 
 // Bekker-Wong soils (rft/bekker_parameters.h), in the soil file's units: about 100 times the
 // stiffest soils tabulated (clays and LETE sand: k_phi up to 1e4 kN/m^(n+2), cohesion up to 100 kPa,

@@ -355,7 +355,7 @@ LanderInitialSpec ReadInitial(const io::YamlFields& in, bool resolved) {
   if (in.Has("drop_height_m") == in.Has("touchdown_speed_m_s"))
     in.Fail("drop_height_m", "give exactly one of drop_height_m and touchdown_speed_m_s");
   if (in.Has("drop_height_m"))
-    ic.drop_height_m = io::ReadNumber(in, "drop_height_m", io::Sign::kNonNegative, &limits::kHeight_m);
+    ic.drop_height_m = io::ReadNumber(in, "drop_height_m", io::Sign::kNonNegative, &limits::kDropHeight_m);
   if (in.Has("touchdown_speed_m_s"))
     ic.touchdown_speed_m_s = io::ReadNumber(in, "touchdown_speed_m_s", io::Sign::kNonNegative, &limits::kSpeed_m_s);
   if (in.Has("release_vertical_speed_m_s")) {

@@ -74,9 +74,9 @@ TEST(LanderRanges, ScenarioMagnitudes) {
   ExpectRefused(ScenarioError("ground: {soil: fjs1_lp, downhill_azimuth_deg: 1e6}\n" + kInitial),
                 "ground.downhill_azimuth_deg", "between -360 and 360 deg");
   ExpectRefused(ScenarioError(kGround + "initial: {drop_height_m: 1e6}\n"), "initial.drop_height_m",
-                "between -100 and 100 m");
-  // A height and a gravity each in range, but a touchdown at 140 m/s.
-  ExpectRefused(ScenarioError(kGround + "initial: {drop_height_m: 100}\n"),
+                "between 0 and 100 m");
+  // A height and a gravity each in range, but a touchdown at 141 m/s.
+  ExpectRefused(ScenarioError("gravity_m_s2: 100\n" + kGround + "initial: {drop_height_m: 100}\n"),
                 "initial.drop_height_m (the touchdown speed it gives)", "between 0 and 100 m/s");
   ExpectRefused(ScenarioError(kGround + "initial: {drop_height_m: 0.1, release_vertical_speed_m_s: -1e9}\n"),
                 "initial.release_vertical_speed_m_s", "between -100 and 100 m/s");
