@@ -46,7 +46,8 @@ void AddDropCommand(CLI::App& app) {
   cmd->callback([args] {
     drop::DropRequest r = *args;
     r.omega_rad_s = {args->omega[0], args->omega[1], args->omega[2]};
-    const drop::DropConditions c = drop::RequestConditions(r, drop::RequestNaming{});
+    const drop::RequestNaming naming;
+    const drop::DropConditions c = drop::RequestConditions(r, naming);
     const io::OutputTarget trace(args->trace, {args->pad, args->soil, args->model});
     if (!args->trace.empty()) io::CheckOutputFile(trace);
     const io::OutputTarget vtk(args->vtk, {args->pad, args->soil, args->model, args->trace});
@@ -54,7 +55,7 @@ void AddDropCommand(CLI::App& app) {
       if (!c.IsFree()) throw MakeInputError("command line", "--vtk", "needs --free (the rig's pad is not drawn)");
       drop::CheckDropVtkTarget(vtk);
     }
-    const drop::PadDrop result = drop::RunDropRequest(r, c);
+    const drop::PadDrop result = drop::RunDropRequest(r, c, naming);
     if (!args->trace.empty()) drop::WriteTraceCsv(result, trace);
     // The pad again with its 3D body (a PadDrop keeps the pad without it): the frames draw its surface.
     if (!args->vtk.empty()) drop::WriteDropVtk(result, io::LoadPad(args->pad), vtk);

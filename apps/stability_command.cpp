@@ -1,3 +1,4 @@
+#include <cmath>
 #include <csignal>
 #include <cstdlib>
 #include <iomanip>
@@ -13,15 +14,35 @@
 #include "drop_tests/sweep/sweep.h"
 #include "drop_tests/sweep/sweep_mpi.h"
 #include "drop_tests/sweep/sweep_stop.h"
+#include "rft/input_error.h"
+#include "rft/physical_limits.h"
 
 namespace touchdown::app {
 
 namespace {
 struct StabilityArgs {
-  std::string study, out;
-  int64_t samples = 0;
+  std::string study, out, samples;
   SweepRunFlags run;
 };
+
+// --samples: a whole number within the bound a study file's random.samples has
+// (limits::kSamples); text that is not a number is told so, not quoted a range.
+int64_t ParseSamples(const std::string& text) {
+  const auto not_whole = [&] {
+    return MakeInputError("", "--samples", "must be a whole number of samples, got '" + text + "'");
+  };
+  double v = 0.0;
+  size_t used = 0;
+  try {
+    v = std::stod(text, &used);
+  } catch (const std::exception&) {
+    throw not_whole();
+  }
+  if (used != text.size()) throw not_whole();
+  limits::Require(limits::kSamples, v, "", "--samples");
+  if (v != std::floor(v)) throw not_whole();
+  return static_cast<int64_t>(v);
+}
 
 void PrintStudyResult(const stability::Study& study, const stability::StudySummary& s, const std::string& out) {
   std::cout << "stability " << study.plan.name << ": " << s.landings << " landings"
@@ -55,13 +76,13 @@ void AddStabilityCommand(CLI::App& app) {
       ->required();
   cmd->add_option("--out", args->out, "output directory (results.sqlite, summary.json, *.csv, plots/); a rerun resumes")
       ->required();
-  CLI::Option* samples = cmd->add_option("--samples", args->samples,
-                                         "random samples instead of the study's (a quick look; recorded in summary.json)")
-                             ->check(CLI::Range(int64_t{1}, int64_t{1} << 40));
+  CLI::Option* samples = cmd->add_option(
+      "--samples", args->samples,
+      "random samples instead of the study's, 1 to 1e9 (a quick look; recorded in summary.json)");
   AddSweepRunFlags(cmd, &args->run, "landings");
   cmd->callback([args, samples] {
     const std::optional<int64_t> override_samples =
-        samples->count() > 0 ? std::optional<int64_t>(args->samples) : std::nullopt;
+        samples->count() > 0 ? std::optional<int64_t>(ParseSamples(args->samples)) : std::nullopt;
     stability::Study study = stability::LoadStudy(args->study, args->run.model, override_samples);
     ApplyDropLimits(args->run, &study.plan);
     sweep::SweepRunOptions options = RunOptionsFrom(args->run);

@@ -26,6 +26,47 @@ inline constexpr Range kZeta_N_cm3{"N/cm^3", 0.0, 1e4, true};           // RFT s
 inline constexpr Range kPadSize_m{"m", 0.0, 10.0, true};                // pad radius, thickness, mesh extent
 inline constexpr Range kPadSize_mm{"mm", 0.0, kPadSize_m.high * 1e3, true};  // the same, as pad YAML gives it
 
+// Bodies and the world they land in. Each bound is far beyond any lander, and keeps the
+// products the dynamics forms (m g, k x, I w^2) finite and the integrator's tolerances meaningful.
+inline constexpr Range kGravity_m_s2{"m/s^2", 0.0, 1000.0, true};  // ~100 g; the Sun's photosphere is 274
+inline constexpr Range kMass_kg{"kg", 0.0, 1e6, true};             // a 1000 t lander, a pad, a dropped mass
+inline constexpr Range kLanderSize_mm{"mm", 0.0, 1e5, false};      // CoG height, leg radii, stroke: 100 m
+// A principal moment of inertia: the mass bound times the size bound squared (1e6 kg x (100 m)^2).
+inline constexpr Range kInertia_kg_m2{"kg m^2", 0.0, 1e10, true};
+inline constexpr Range kDensity_kg_m3{"kg/m^3", 0.0, 1e5, true};  // osmium, the densest element, is 22,590
+// Leg absorbers: a steel bar 1 m^2 in section and 0.2 m long is 1e12 N/m; critical damping of that
+// spring under the heaviest mass is 2e9 N s/m; the heaviest mass at the highest gravity weighs 1e9 N.
+inline constexpr Range kStiffness_N_m{"N/m", 0.0, 1e12, true};
+inline constexpr Range kDamping_N_s_m{"N s/m", 0.0, 1e10, false};
+inline constexpr Range kForce_N{"N", 0.0, 1e9, true};
+// The ball joints' cone limit: the same bounds about a 1 m lever; a joint swings at most 180 deg.
+inline constexpr Range kTorsionStiffness_N_m_rad{"N m/rad", 0.0, 1e12, true};
+inline constexpr Range kTorsionDamping_N_m_s_rad{"N m s/rad", 0.0, 1e10, false};
+inline constexpr Range kConeHalfAngle_deg{"deg", 0.0, 180.0, true};
+// Headings and azimuths: one turn either way says every direction.
+inline constexpr Range kAzimuth_deg{"deg", -360.0, 360.0, false};
+// A body's angular rate, per axis: 10 rev/s, a tumbling lander (a single pad's |omega|: kAngularSpeed_rad_s).
+inline constexpr Range kAngularRate_deg_s{"deg/s", -3600.0, 3600.0, false};
+// A drop height or a terrain's elevation: positions are integrated to a relative tolerance (1e-7 for
+// a lander), so at 100 m the error allowed is 10 um; much higher, a pad's millimetres would be lost.
+inline constexpr Range kHeight_m{"m", -100.0, 100.0, false};
+inline constexpr Range kDropHeight_m{"m", 0.0, kHeight_m.high, false};  // a release height above the ground
+
+// Bekker-Wong soils (rft/bekker_parameters.h), in the soil file's units: about 100 times the
+// stiffest soils tabulated (clays and LETE sand: k_phi up to 1e4 kN/m^(n+2), cohesion up to 100 kPa,
+// K up to 50 mm).
+inline constexpr Range kBekkerKc_kN_m_n1{"kN/m^(n+1)", 0.0, 1e6, false};
+inline constexpr Range kBekkerKphi_kN_m_n2{"kN/m^(n+2)", 0.0, 1e6, false};
+inline constexpr Range kCohesion_kPa{"kPa", 0.0, 1e4, false};
+inline constexpr Range kShearModulusK_mm{"mm", 0.0, 1e4, true};
+
+// Random samples of a sweep or study (the file's and --samples): a billion landings is years of CPU.
+inline constexpr Range kSamples{"samples", 1.0, 1e9, false};
+// The deterministic work limit of one run (drop or landing): right-hand-side evaluations of its
+// integrator, the same on any machine under any load (docs/sweeps.md); the benchmark landings take
+// at most a few hundred thousand.
+inline constexpr long kDefaultMaxRunEvaluations = 2000000;
+
 inline bool Within(const Range& r, double v) {
   return std::isfinite(v) && (r.low_open ? v > r.low : v >= r.low) && v <= r.high;
 }

@@ -92,7 +92,7 @@ py::tuple Drop(const drop::DropRequest& request, bool with_trace) {
   std::optional<drop::PadDrop> result;
   {
     py::gil_scoped_release unlocked;
-    result = drop::RunDropRequest(request, conditions);
+    result = drop::RunDropRequest(request, conditions, naming);
   }
   const std::string summary = drop::SummaryJson(*result).dump(2);
   return py::make_tuple(summary, with_trace ? py::object(TraceArrays(*result)) : py::object(py::none()));

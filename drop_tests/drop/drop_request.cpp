@@ -3,8 +3,10 @@
 #include <cmath>
 #include <sstream>
 
+#include "drop_tests/drop/drop_factory.h"
 #include "drop_tests/model/model_file.h"
 #include "rft/input_error.h"
+#include "rft/stress_law_3d_factory.h"
 #include "rft/units.h"
 
 namespace touchdown::drop {
@@ -35,6 +37,27 @@ void CheckFreeMotion(const DropRequest& r, const RequestNaming& n) {
                          n.Field("tilt-deg") + ", " + n.Field("horizontal-speed") + " and " + n.Field("omega") +
                              " need " + n.Field("free") + " (the rig drop is vertical)");
 }
+
+// The soil must take the law the drop runs on, before anything runs: a soil running on the bekker
+// law has no zeta to override, and li2013 needs a zeta (a Bekker soil may have none), checked as a
+// lander's ground checks its soils (rft::MakeStressLaw3D).
+void CheckSoilTakesLaw(const rft::SoilParameters& soil, const DropConditions& c, const RequestNaming& n) {
+  if (RunsOnBekker(soil, c.law_3d)) {
+    if (c.zeta_N_m3)
+      throw MakeInputError(n.context, n.Field("zeta"),
+                           "soil " + soil.name + " runs on the bekker law, which has no zeta (" + n.Field("law") +
+                               " li2013 runs it on RFT with this zeta)");
+    return;
+  }
+  // The footprint dimension only matters to the bekker law, which is not this one.
+  constexpr double kAnyPlateB_m = 1.0;
+  try {
+    rft::MakeStressLaw3D(c.law_3d.value_or(soil.rft_law_3d), DropSoil(soil, c.zeta_N_m3, c.atmosphere),
+                         c.gravity_m_s2, kAnyPlateB_m);
+  } catch (const InputError& e) {
+    throw MakeInputError(n.context, c.law_3d ? n.Field("law") : n.Field("soil"), e.what());
+  }
+}
 }  // namespace
 
 DropConditions RequestConditions(const DropRequest& r, const RequestNaming& naming) {
@@ -56,7 +79,7 @@ DropConditions RequestConditions(const DropRequest& r, const RequestNaming& nami
   return c;
 }
 
-PadDrop RunDropRequest(const DropRequest& r, DropConditions conditions) {
+PadDrop RunDropRequest(const DropRequest& r, DropConditions conditions, const RequestNaming& naming) {
   const io::PadSpec pad = io::LoadPad(r.pad);
   rft::SoilParameters soil = io::LoadSoil(r.soil);
   if (!r.model.empty()) {
@@ -65,6 +88,7 @@ PadDrop RunDropRequest(const DropRequest& r, DropConditions conditions) {
     conditions.effects = model::ModelEffectTerms(model);
     conditions.effects_source = r.model;
   }
+  CheckSoilTakesLaw(soil, conditions, naming);
   return SimulateDrop(pad, soil, conditions, {});
 }
 

@@ -40,7 +40,9 @@ struct DropRequest {
 // InputError naming the field as `naming` spells it.
 DropConditions RequestConditions(const DropRequest& request, const RequestNaming& naming);
 // Loads the pad, the soil and the model and runs the drop under `conditions`
-// (RequestConditions). A failing integration throws integ::IntegrationFailure.
-PadDrop RunDropRequest(const DropRequest& request, DropConditions conditions);
+// (RequestConditions). A soil that does not take the drop's law (li2013 on a Bekker soil without
+// zeta, a zeta for a soil running on the bekker law) throws InputError naming the field as
+// `naming` spells it; a failing integration throws integ::IntegrationFailure.
+PadDrop RunDropRequest(const DropRequest& request, DropConditions conditions, const RequestNaming& naming);
 
 }  // namespace touchdown::drop

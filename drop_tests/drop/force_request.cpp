@@ -26,19 +26,11 @@ Eigen::Vector3d FiniteVector3(const std::array<double, 3>& v, const std::string&
   return {v[0], v[1], v[2]};
 }
 
-void RequireFinite(double v, const std::string& context, const std::string& field, bool positive) {
-  if (!std::isfinite(v) || (positive && !(v > 0.0))) {
-    std::ostringstream s;
-    s << "must be " << (positive ? "positive and " : "") << "finite, got " << v;
-    throw MakeInputError(context, field, s.str());
-  }
-}
-
 // The pad's pose and motion, checked (the pad must move: RFT needs a direction of motion).
 rft::PadKinematics RequestKinematics(const ForceRequest& r, const RequestNaming& n) {
   limits::Require(limits::kDepth_m, r.depth_m, n.context, n.Field("depth"));
   limits::Require(limits::kForceTilt_deg, r.tilt_deg, n.context, n.Field("tilt-deg"));
-  RequireFinite(r.gravity_m_s2, n.context, "gravity_m_s2", true);
+  limits::Require(limits::kGravity_m_s2, r.gravity_m_s2, n.context, "gravity_m_s2");
   if (r.zeta_N_cm3) limits::Require(limits::kZeta_N_cm3, *r.zeta_N_cm3, n.context, n.Field("zeta"));
   rft::PadKinematics k;
   k.v_WB_W = FiniteVector3(r.velocity_m_s, n.context, "velocity");

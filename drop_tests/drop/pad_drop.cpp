@@ -55,8 +55,8 @@ void ValidateConditions(const DropConditions& c, const std::string& context) {
     throw MakeInputError(context, field, s.str());
   };
   limits::Require(limits::kSpeed_m_s, c.impact_speed_m_s, context, "impact_speed_m_s");
-  if (c.mass_kg && !(*c.mass_kg > 0.0 && std::isfinite(*c.mass_kg))) bad("mass_kg", *c.mass_kg, "positive and finite");
-  if (!(c.gravity_m_s2 > 0.0 && std::isfinite(c.gravity_m_s2))) bad("gravity_m_s2", c.gravity_m_s2, "positive and finite");
+  if (c.mass_kg) limits::Require(limits::kMass_kg, *c.mass_kg, context, "mass_kg");
+  limits::Require(limits::kGravity_m_s2, c.gravity_m_s2, context, "gravity_m_s2");
   if (c.zeta_N_m3) limits::Require(limits::kZeta_N_cm3, units::ZetaToN_cm3(*c.zeta_N_m3), context, "zeta_N_cm3");
   if (!(std::abs(c.tilt_rad) < 90.0 * kDeg)) bad("tilt_deg", c.tilt_rad / kDeg, "between -90 and 90");
   limits::Require(limits::kAbsSpeed_m_s, c.horizontal_speed_m_s, context, "horizontal_speed_m_s");

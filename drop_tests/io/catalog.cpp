@@ -38,12 +38,12 @@ constexpr int kMaxProfileSegments = 10000;
 const FieldTable<rft::SoilParameters>& SoilNumberFields() {
   using S = rft::SoilParameters;
   static const FieldTable<S> fields{
-      {"reference_gravity_m_s2", &S::reference_gravity_m_s2, 1.0, Sign::kPositive, true, true},
-      {"bulk_density_kg_m3", &S::bulk_density_kg_m3, 1.0, Sign::kPositive, true, true},
+      {"reference_gravity_m_s2", &S::reference_gravity_m_s2, 1.0, Sign::kPositive, true, true, &limits::kGravity_m_s2},
+      {"bulk_density_kg_m3", &S::bulk_density_kg_m3, 1.0, Sign::kPositive, true, true, &limits::kDensity_kg_m3},
       {"internal_friction_angle_deg", &S::internal_friction_angle_rad, kDeg, Sign::kPositive, true, true},
       {"mu_surf", &S::surface_friction_coefficient, 1.0, Sign::kNonNegative, true, true},
       {"dynamic_lambda", &S::dynamic_lambda, 1.0, Sign::kNonNegative, true, true},
-      {"dynamic_density_kg_m3", &S::dynamic_density_kg_m3, 1.0, Sign::kPositive, true, true},
+      {"dynamic_density_kg_m3", &S::dynamic_density_kg_m3, 1.0, Sign::kPositive, true, true, &limits::kDensity_kg_m3},
   };
   return fields;
 }
@@ -53,11 +53,11 @@ const FieldTable<rft::BekkerParameters>& BekkerFields() {
   using B = rft::BekkerParameters;
   static const FieldTable<B> fields{
       {"n", &B::n, 1.0, Sign::kPositive, false, false},
-      {"k_c_kN_m_n1", &B::k_c_N_m_n1, 1e3, Sign::kNonNegative, false, false},
-      {"k_phi_kN_m_n2", &B::k_phi_N_m_n2, 1e3, Sign::kNonNegative, false, false},
-      {"cohesion_kPa", &B::cohesion_Pa, 1e3, Sign::kNonNegative, false, false},
+      {"k_c_kN_m_n1", &B::k_c_N_m_n1, 1e3, Sign::kNonNegative, false, false, &limits::kBekkerKc_kN_m_n1},
+      {"k_phi_kN_m_n2", &B::k_phi_N_m_n2, 1e3, Sign::kNonNegative, false, false, &limits::kBekkerKphi_kN_m_n2},
+      {"cohesion_kPa", &B::cohesion_Pa, 1e3, Sign::kNonNegative, false, false, &limits::kCohesion_kPa},
       {"friction_angle_deg", &B::friction_angle_rad, kDeg, Sign::kNonNegative, false, false},
-      {"shear_modulus_K_mm", &B::shear_modulus_K_m, kMm, Sign::kPositive, false, false},
+      {"shear_modulus_K_mm", &B::shear_modulus_K_m, kMm, Sign::kPositive, false, false, &limits::kShearModulusK_mm},
   };
   return fields;
 }
@@ -186,16 +186,12 @@ Eigen::Vector3d ReadPointMm(const YamlFields& f, const std::string& key, std::op
   return p * kMm;
 }
 
+double Mass(const YamlFields& f, const std::string& key) { return ReadNumber(f, key, Sign::kPositive, &limits::kMass_kg); }
+
 // The optional explicit inertia and centre of mass, shared by both pad kinds.
 void ReadMassDistribution(const YamlFields& f, geom::PadMassModel& mass, PadFileFields& file) {
   if (f.Has("inertia_kg_m2")) {
-    const YamlFields i = f.Child("inertia_kg_m2");
-    i.RequireOnly({"ixx", "iyy", "izz", "ixy", "ixz", "iyz"});
-    auto product = [&](const char* key) { return i.Has(key) ? i.Number(key) : 0.0; };
-    Eigen::Matrix3d m;
-    m << i.Positive("ixx"), product("ixy"), product("ixz"),  //
-        product("ixy"), i.Positive("iyy"), product("iyz"),   //
-        product("ixz"), product("iyz"), i.Positive("izz");
+    const Eigen::Matrix3d m = ReadInertia(f.Child("inertia_kg_m2"));
     mass.inertia_com_kg_m2 = m;
     file.inertia_kg_m2 = std::array<double, 6>{m(0, 0), m(1, 1), m(2, 2), m(0, 1), m(0, 2), m(1, 2)};
   }
@@ -217,7 +213,7 @@ geom::PadBody GuardedBody(const YamlFields& f, Build build) {
 }
 
 void LoadAxisymmetricPad(const YamlFields& f, PadSpec& pad) {
-  pad.file.mass_kg = f.Positive("mass_kg");
+  pad.file.mass_kg = Mass(f, "mass_kg");
   pad.mass_kg = pad.file.mass_kg;
   pad.profile = ReadProfile(f.Child("profile"), pad.file);
   geom::ValidateProfile(pad.profile, f.file());
@@ -260,8 +256,9 @@ void LoadMeshPad(const YamlFields& f, PadSpec& pad) {
 
   geom::PadMassModel mass;
   if (f.Has("mass_kg") == f.Has("density_kg_m3")) f.Fail("mass_kg", "give exactly one of mass_kg and density_kg_m3");
-  if (f.Has("mass_kg")) mass.mass_kg = pad.file.mass_kg = f.Positive("mass_kg");
-  if (f.Has("density_kg_m3")) mass.density_kg_m3 = pad.file.density_kg_m3 = f.Positive("density_kg_m3");
+  if (f.Has("mass_kg")) mass.mass_kg = pad.file.mass_kg = Mass(f, "mass_kg");
+  if (f.Has("density_kg_m3"))
+    mass.density_kg_m3 = pad.file.density_kg_m3 = ReadNumber(f, "density_kg_m3", Sign::kPositive, &limits::kDensity_kg_m3);
   ReadMassDistribution(f, mass, pad.file);
   Eigen::Vector3d reference;
   if (f.Has("reference_point_mm")) {
@@ -276,8 +273,22 @@ void LoadMeshPad(const YamlFields& f, PadSpec& pad) {
   }
   pad.body = GuardedBody(f, [&] { return geom::MakePadBody(mesh, mass, reference, f.file()); });
   pad.mass_kg = pad.body.mass_kg;
+  if (mass.density_kg_m3)
+    limits::Require(limits::kMass_kg, pad.mass_kg, f.file(), f.Path("density_kg_m3") + " (the pad's mass it gives)");
 }
 }  // namespace
+
+Eigen::Matrix3d ReadInertia(const YamlFields& i) {
+  i.RequireOnly({"ixx", "iyy", "izz", "ixy", "ixz", "iyz"});
+  const auto moment = [&](const char* key) { return ReadNumber(i, key, Sign::kPositive, &limits::kInertia_kg_m2); };
+  const auto product = [&](const char* key) { return i.Has(key) ? i.Number(key) : 0.0; };
+  Eigen::Matrix3d m;
+  m << moment("ixx"), product("ixy"), product("ixz"),  //
+      product("ixy"), moment("iyy"), product("iyz"),   //
+      product("ixz"), product("iyz"), moment("izz");
+  geom::ValidateInertia(m, i.file(), i.prefix());
+  return m;
+}
 
 namespace {
 // The data installed with the running executable (`cmake --install`: <prefix>/bin/touchdown and

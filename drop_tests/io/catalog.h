@@ -79,6 +79,11 @@ PadSpec LoadPad(const std::string& name_or_path);
 // A pad from its file's YAML as read (YamlFields::LoadFile of the resolved file), possibly edited in
 // memory first (calibrate --targets changes a profile constant without touching the file).
 PadSpec LoadPad(const YamlFields& f);
+
+// An inertia tensor block {ixx, iyy, izz, ixy, ixz, iyz} [kg m^2], products 0 when absent: the
+// moments within limits::kInertia_kg_m2 and the tensor a rigid body's (geom::ValidateInertia:
+// positive definite, I1 + I2 >= I3). A pad's inertia_kg_m2 and a lander's body_inertia_kg_m2.
+Eigen::Matrix3d ReadInertia(const YamlFields& block);
 // An axisymmetric pad revolved at another number of rim segments: its file read again with
 // `angular_segments` replaced (everything else as the file says). InputError naming the pad file
 // for a mesh pad or a count outside the range LoadPad accepts.

@@ -4,8 +4,8 @@
 // (unit-suffixed, as in the file), the member holding the SI value, the factor from file units,
 // the sign it must have, whether it may be absent (then the member keeps its default) and
 // whether the writer leaves out a value equal to that default (a 0 that means "unknown" and
-// would not read back as a positive number). Checks that tie several fields together stay with
-// the loader that needs them.
+// would not read back as a positive number), and the physical range it must lie in (file units,
+// rft/physical_limits.h). Checks that tie several fields together stay with the loader that needs them.
 //
 // Private to the .cpp files of the YAML edge (it reads YamlFields and writes YAML).
 #include <iomanip>
@@ -16,6 +16,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "drop_tests/io/yaml_fields.h"
+#include "rft/physical_limits.h"
 
 namespace touchdown::io {
 
@@ -29,6 +30,7 @@ struct NumberField {
   Sign sign = Sign::kAny;
   bool optional = true;
   bool omit_default = false;
+  const limits::Range* range = nullptr;  // in file units; none: any value of the sign
 };
 
 template <typename T>
@@ -42,15 +44,22 @@ std::vector<std::string> FieldKeys(const FieldTable<T>& fields) {
   return keys;
 }
 
+// One number of `f` (file units): of `sign`, and within `range` when there is one.
+inline double ReadNumber(const YamlFields& f, const std::string& key, Sign sign,
+                         const limits::Range* range = nullptr) {
+  const double v = sign == Sign::kPositive      ? f.Positive(key)
+                   : sign == Sign::kNonNegative ? f.NonNegative(key)
+                                                : f.Number(key);
+  if (range) limits::Require(*range, v, f.file(), f.Path(key));
+  return v;
+}
+
 // Reads every field `f` has (a missing required field fails) into `out`.
 template <typename T>
 void ReadFields(const YamlFields& f, const FieldTable<T>& fields, T& out) {
   for (const NumberField<T>& field : fields) {
     if (field.optional && !f.Has(field.key)) continue;
-    const double v = field.sign == Sign::kPositive      ? f.Positive(field.key)
-                     : field.sign == Sign::kNonNegative ? f.NonNegative(field.key)
-                                                        : f.Number(field.key);
-    out.*field.member = v * field.file_to_si;
+    out.*field.member = ReadNumber(f, field.key, field.sign, field.range) * field.file_to_si;
   }
 }
 

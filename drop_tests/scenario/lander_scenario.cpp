@@ -7,8 +7,6 @@
 #include <nlohmann/json.hpp>
 #include <unistd.h>
 
-#include <Eigen/Eigenvalues>
-
 #include "drop_tests/io/output_path.h"
 #include "drop_tests/io/dataset_csv.h"  // io::FormatNumber
 #include "drop_tests/io/field_table.h"
@@ -17,6 +15,7 @@
 #include "drop_tests/scenario/lander_vtk.h"
 #include "drop_tests/io/paths_in_outputs.h"
 #include "drop_tests/io/yaml_fields.h"
+#include "lander/integ/cvode_integrator.h"
 #include "rft/bekker_law.h"
 #include "rft/input_error.h"
 #include "rft/physical_limits.h"
@@ -66,12 +65,12 @@ const char* AbsorberKindName(lander::ShockAbsorber::Kind kind) {
 const io::FieldTable<lander::ShockAbsorber>& AbsorberFields(lander::ShockAbsorber::Kind kind) {
   using A = lander::ShockAbsorber;
   static const io::FieldTable<A> spring_damper{
-      {"stiffness_N_m", &A::stiffness_N_m, 1.0, io::Sign::kPositive, false},
-      {"damping_N_s_m", &A::damping_N_s_m, 1.0, io::Sign::kNonNegative, true},
+      {"stiffness_N_m", &A::stiffness_N_m, 1.0, io::Sign::kPositive, false, false, &limits::kStiffness_N_m},
+      {"damping_N_s_m", &A::damping_N_s_m, 1.0, io::Sign::kNonNegative, true, false, &limits::kDamping_N_s_m},
   };
   static const io::FieldTable<A> crushable{
-      {"crush_force_N", &A::crush_force_N, 1.0, io::Sign::kPositive, false},
-      {"stroke_mm", &A::stroke_limit_m, kMm, io::Sign::kPositive, false},
+      {"crush_force_N", &A::crush_force_N, 1.0, io::Sign::kPositive, false, false, &limits::kForce_N},
+      {"stroke_mm", &A::stroke_limit_m, kMm, io::Sign::kPositive, false, false, &limits::kLanderSize_mm},
   };
   return kind == A::Kind::kSpringDamper ? spring_damper : crushable;
 }
@@ -79,9 +78,11 @@ const io::FieldTable<lander::ShockAbsorber>& AbsorberFields(lander::ShockAbsorbe
 const io::FieldTable<lander::ConeLimit>& ConeFields() {
   using C = lander::ConeLimit;
   static const io::FieldTable<C> fields{
-      {"half_angle_deg", &C::half_angle_rad, kDeg, io::Sign::kPositive, false},
-      {"stiffness_N_m_rad", &C::stiffness_N_m_rad, 1.0, io::Sign::kPositive, false},
-      {"damping_N_m_s_rad", &C::damping_N_m_s_rad, 1.0, io::Sign::kNonNegative, true},
+      {"half_angle_deg", &C::half_angle_rad, kDeg, io::Sign::kPositive, false, false, &limits::kConeHalfAngle_deg},
+      {"stiffness_N_m_rad", &C::stiffness_N_m_rad, 1.0, io::Sign::kPositive, false, false,
+       &limits::kTorsionStiffness_N_m_rad},
+      {"damping_N_m_s_rad", &C::damping_N_m_s_rad, 1.0, io::Sign::kNonNegative, true, false,
+       &limits::kTorsionDamping_N_m_s_rad},
   };
   return fields;
 }
@@ -153,15 +154,9 @@ LanderSpec LoadLanderSpec(const io::YamlFields& f) {
   LanderSpec s;
   s.source = path;
   s.name = f.StringOr("name", fs::path(path).stem().string());
-  s.total_mass_kg = f.Positive("total_mass_kg");
-  s.cog_height_m = f.Positive("cog_height_mm") * kMm;
-  const io::YamlFields in = f.Child("body_inertia_kg_m2");
-  in.RequireOnly({"ixx", "iyy", "izz", "ixy", "ixz", "iyz"});
-  auto off = [&](const char* k) { return in.Has(k) ? in.Number(k) : 0.0; };
-  s.body_inertia_B << in.Positive("ixx"), off("ixy"), off("ixz"), off("ixy"), in.Positive("iyy"), off("iyz"),
-      off("ixz"), off("iyz"), in.Positive("izz");
-  if (Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(s.body_inertia_B).eigenvalues().minCoeff() <= 0.0)
-    in.Fail("ixx", "the inertia tensor must be positive definite");
+  s.total_mass_kg = io::ReadNumber(f, "total_mass_kg", io::Sign::kPositive, &limits::kMass_kg);
+  s.cog_height_m = io::ReadNumber(f, "cog_height_mm", io::Sign::kPositive, &limits::kLanderSize_mm) * kMm;
+  s.body_inertia_B = io::ReadInertia(f.Child("body_inertia_kg_m2"));
   try {
     s.pad = io::LoadPad(ResolveRelative(f, "pads", f.String("pad")));
   } catch (const InputError& e) {
@@ -169,9 +164,12 @@ LanderSpec LoadLanderSpec(const io::YamlFields& f) {
   }
   const io::YamlFields legs = f.Child("legs");
   legs.RequireOnly({"joint_radius_mm", "hip_radius_mm", "hip_height_mm", "absorber", "cone_limit"});
-  s.layout.joint_radius_m = legs.Positive("joint_radius_mm") * kMm;
-  s.layout.hip_radius_m = legs.NonNegative("hip_radius_mm") * kMm;
-  s.layout.hip_height_m = legs.Positive("hip_height_mm") * kMm;
+  const auto size = [&](const char* key, io::Sign sign) {
+    return io::ReadNumber(legs, key, sign, &limits::kLanderSize_mm) * kMm;
+  };
+  s.layout.joint_radius_m = size("joint_radius_mm", io::Sign::kPositive);
+  s.layout.hip_radius_m = size("hip_radius_mm", io::Sign::kNonNegative);
+  s.layout.hip_height_m = size("hip_height_mm", io::Sign::kPositive);
   if (legs.Has("absorber")) s.layout.absorber = ReadAbsorber(legs.Child("absorber"));
   if (legs.Has("cone_limit")) {
     const io::YamlFields c = legs.Child("cone_limit");
@@ -201,9 +199,9 @@ namespace {
 const io::FieldTable<LanderGroundSpec>& GroundNumberFields() {
   using G = LanderGroundSpec;
   static const io::FieldTable<G> fields{
-      {"height_m", &G::height_m},
+      {"height_m", &G::height_m, 1.0, io::Sign::kAny, true, false, &limits::kHeight_m},
       {"slope_deg", &G::slope_rad, kDeg, io::Sign::kNonNegative},
-      {"downhill_azimuth_deg", &G::downhill_azimuth_rad, kDeg},
+      {"downhill_azimuth_deg", &G::downhill_azimuth_rad, kDeg, io::Sign::kAny, true, false, &limits::kAzimuth_deg},
   };
   return fields;
 }
@@ -213,7 +211,8 @@ const io::FieldTable<LanderInitialSpec>& AttitudeNumberFields() {
   static const io::FieldTable<I> fields{
       {"roll_deg", &I::roll_rad, kDeg},
       {"pitch_deg", &I::pitch_rad, kDeg},
-      {"yaw_relative_to_slope_deg", &I::yaw_relative_to_slope_rad, kDeg},
+      {"yaw_relative_to_slope_deg", &I::yaw_relative_to_slope_rad, kDeg, io::Sign::kAny, true, false,
+       &limits::kAzimuth_deg},
   };
   return fields;
 }
@@ -223,7 +222,7 @@ const io::FieldTable<lander::LanderRunOptions>& RunNumberFields() {
   static const io::FieldTable<R> fields{
       {"duration_s", &R::duration_s, 1.0, io::Sign::kPositive},
       {"sample_rate_hz", &R::sample_rate_hz, 1.0, io::Sign::kPositive},
-      {"capture_speed_m_s", &R::capture_speed_m_s, 1.0, io::Sign::kNonNegative},
+      {"capture_speed_m_s", &R::capture_speed_m_s, 1.0, io::Sign::kNonNegative, true, false, &limits::kSpeed_m_s},
   };
   return fields;
 }
@@ -355,18 +354,20 @@ LanderInitialSpec ReadInitial(const io::YamlFields& in, bool resolved) {
   in.RequireOnly(known);
   if (in.Has("drop_height_m") == in.Has("touchdown_speed_m_s"))
     in.Fail("drop_height_m", "give exactly one of drop_height_m and touchdown_speed_m_s");
-  if (in.Has("drop_height_m")) ic.drop_height_m = in.NonNegative("drop_height_m");
-  if (in.Has("touchdown_speed_m_s")) {
-    ic.touchdown_speed_m_s = in.NonNegative("touchdown_speed_m_s");
-    limits::Require(limits::kSpeed_m_s, *ic.touchdown_speed_m_s, in.file(), in.Path("touchdown_speed_m_s"));
-  }
+  if (in.Has("drop_height_m"))
+    ic.drop_height_m = io::ReadNumber(in, "drop_height_m", io::Sign::kNonNegative, &limits::kDropHeight_m);
+  if (in.Has("touchdown_speed_m_s"))
+    ic.touchdown_speed_m_s = io::ReadNumber(in, "touchdown_speed_m_s", io::Sign::kNonNegative, &limits::kSpeed_m_s);
   if (in.Has("release_vertical_speed_m_s")) {
     if (!in.Has("drop_height_m")) in.Fail("release_vertical_speed_m_s", "only with drop_height_m");
-    ic.release_vertical_speed_m_s = in.Number("release_vertical_speed_m_s");
+    ic.release_vertical_speed_m_s =
+        io::ReadNumber(in, "release_vertical_speed_m_s", io::Sign::kAny, &limits::kAbsSpeed_m_s);
   }
   if (in.Has("horizontal_velocity_m_s")) {
     const std::vector<double> v = FixedList(in, "horizontal_velocity_m_s", 2);
     ic.horizontal_velocity_m_s = Eigen::Vector2d(v[0], v[1]);
+    limits::Require(limits::kSpeed_m_s, ic.horizontal_velocity_m_s.stableNorm(), in.file(),
+                    in.Path("horizontal_velocity_m_s") + " (its magnitude)");
   }
   io::ReadFields(in, AttitudeNumberFields(), ic);
   if (std::abs(ic.roll_rad) >= 80 * kDeg) in.Fail("roll_deg", "must be within +-80");
@@ -378,6 +379,9 @@ LanderInitialSpec ReadInitial(const io::YamlFields& in, bool resolved) {
   }
   if (in.Has("angular_rate_deg_s")) {
     const std::vector<double> w = FixedList(in, "angular_rate_deg_s", 3);
+    for (size_t k = 0; k < w.size(); ++k)
+      limits::Require(limits::kAngularRate_deg_s, w[k], in.file(),
+                      in.Path("angular_rate_deg_s") + "[" + std::to_string(k) + "]");
     ic.angular_rate_B = Eigen::Vector3d(w[0], w[1], w[2]) * kDeg;
   }
   ic.pad_attitude = in.StringOr("pad_attitude", "body");
@@ -468,6 +472,12 @@ void RequireResolvedValuesMatch(const io::YamlFields& f, const LanderScenario& s
 }
 }  // namespace
 
+double TouchdownSpeed(const LanderScenario& s) {
+  const LanderInitialSpec& ic = s.initial;
+  if (!ic.drop_height_m) return *ic.touchdown_speed_m_s;
+  return std::sqrt(std::pow(ic.release_vertical_speed_m_s, 2) + 2.0 * s.gravity_m_s2 * *ic.drop_height_m);
+}
+
 LanderScenario LoadLanderScenario(const std::string& path) {
   const io::YamlFields f = io::YamlFields::LoadFile(path);
   f.RequireSchemaVersion(1);
@@ -487,7 +497,8 @@ LanderScenario LoadLanderScenario(const std::string& path) {
   s.source = resolved ? io::PathFromOutput(f.String("source"), dir) : path;
   s.name = f.StringOr("name", fs::path(path).stem().string());
   s.description = f.StringOr("description", "");
-  s.gravity_m_s2 = f.Has("gravity_m_s2") ? f.Positive("gravity_m_s2") : 9.81;
+  s.gravity_m_s2 = f.Has("gravity_m_s2") ? io::ReadNumber(f, "gravity_m_s2", io::Sign::kPositive, &limits::kGravity_m_s2)
+                                         : 9.81;
   try {
     s.lander = resolved ? LoadLanderSpec(io::PathFromOutput(f.Child("lander").String("file"), dir))
                         : LoadLanderSpec(ResolveRelative(f, "landers", f.String("lander")));
@@ -505,6 +516,11 @@ LanderScenario LoadLanderScenario(const std::string& path) {
     }
   }
   s.initial = ReadInitial(f.Child("initial"), resolved);
+  if (s.initial.drop_height_m)  // a height and a gravity each in range can still make too fast a landing
+    limits::Require(limits::kSpeed_m_s, TouchdownSpeed(s), path, "initial.drop_height_m (the touchdown speed it gives)");
+  // A landing gets the deterministic work limit a sweep's landing has by default: a stiff or
+  // chattering one fails (exit 3) instead of running for hours, the same on every machine.
+  s.options.integrator.max_rhs_evaluations = limits::kDefaultMaxRunEvaluations;
   if (f.Has("simulation")) {
     const io::YamlFields sim = f.Child("simulation");
     ReadSimulation(sim, s.options);
@@ -626,7 +642,15 @@ LanderRun RunLanderScenario(const LanderScenario& scenario) {
   LanderRun run;
   run.scenario = scenario;
   run.setup = BuildLanderSetup(scenario);
-  run.result = lander::SimulateLander(run.setup.model, run.setup.terrain, run.setup.initial, scenario.options);
+  // A failed landing names its scenario (the integrator's message names only the failure).
+  const std::string which = "lander scenario " + scenario.name + " (" + scenario.source + "): ";
+  try {
+    run.result = lander::SimulateLander(run.setup.model, run.setup.terrain, run.setup.initial, scenario.options);
+  } catch (const integ::LimitExceeded& e) {
+    throw integ::LimitExceeded(which + e.what(), e.limit(), e.value());
+  } catch (const integ::IntegrationFailure& e) {
+    throw integ::IntegrationFailure(which + e.what());
+  }
   const lander::StateLayout L(run.setup.model);
   const lander::LanderPose pose = lander::ComputePose(run.setup.model, L, run.result.final_state);
   for (int i = 0; i < lander::kNumLegs; ++i) {
@@ -682,11 +706,7 @@ nlohmann::json LanderSummaryJson(const LanderRun& run) {
     j["rest_time_since_release_s"] = *r.rest_time_s;
     if (r.first_touchdown_s) j["time_to_rest_s"] = *r.rest_time_s - *r.first_touchdown_s;
   }
-  if (run.scenario.initial.drop_height_m)
-    j["touchdown_speed_m_s"] = std::sqrt(std::pow(run.scenario.initial.release_vertical_speed_m_s, 2) +
-                                         2.0 * run.scenario.gravity_m_s2 * *run.scenario.initial.drop_height_m);
-  else
-    j["touchdown_speed_m_s"] = *run.scenario.initial.touchdown_speed_m_s;
+  j["touchdown_speed_m_s"] = TouchdownSpeed(run.scenario);
   if (run.scenario.model) j["model"] = model::ModelEffectsJson(*run.scenario.model);
   if (!run.scenario.paper_ground_case.empty()) j["paper_ground_case"] = run.scenario.paper_ground_case;
   if (run.scenario.paper) {

@@ -125,6 +125,8 @@ LanderSpec LoadLanderSpec(const io::YamlFields& f);
 // four pads heavier than the lander, or the body's CoM or the hips below the joints.
 LanderSpec LanderSpecWithPad(const LanderSpec& spec, const io::PadSpec& pad);
 LanderScenario LoadLanderScenario(const std::string& path);
+// The first pad's touchdown speed [m/s]: as given, or from the drop height, release speed and gravity.
+double TouchdownSpeed(const LanderScenario& scenario);
 // Builds the model, terrain and initial state (soils loaded from data/soils by name).
 LanderSetup BuildLanderSetup(const LanderScenario& scenario);
 LanderRun RunLanderScenario(const LanderScenario& scenario);

@@ -6,6 +6,7 @@
 #include "drop_tests/io/dataset_csv.h"
 #include "drop_tests/io/yaml_fields.h"
 #include "rft/input_error.h"
+#include "rft/physical_limits.h"
 
 namespace touchdown::stability {
 
@@ -84,9 +85,7 @@ Study LoadStudy(const std::string& path, const std::string& model_override, std:
   if (samples_override) {
     if (study.plan.random.empty())
       throw MakeInputError("", "--samples", "the study " + path + " has no random block whose samples it could set");
-    if (*samples_override < 1 || *samples_override > (int64_t{1} << 40))
-      throw MakeInputError("", "--samples", "must be a whole number from 1 to 2^40, got " +
-                                                std::to_string(*samples_override));
+    limits::Require(limits::kSamples, static_cast<double>(*samples_override), "", "--samples");
     study.plan.samples = *samples_override;
     study.samples_override = samples_override;
   }

@@ -88,8 +88,8 @@ void CheckValue(SweepParam p, double v, const std::string& file, const std::stri
     case SweepParam::kImpactSpeed: limits::Require(limits::kSpeed_m_s, v, file, path); break;
     case SweepParam::kHorizontalSpeed: limits::Require(limits::kAbsSpeed_m_s, v, file, path); break;
     case SweepParam::kZeta: limits::Require(limits::kZeta_N_cm3, v, file, path); break;
-    case SweepParam::kMass:
-    case SweepParam::kGravity: if (!(v > 0.0)) fail("positive"); break;
+    case SweepParam::kMass: limits::Require(limits::kMass_kg, v, file, path); break;
+    case SweepParam::kGravity: limits::Require(limits::kGravity_m_s2, v, file, path); break;
     case SweepParam::kTilt:
       if (!(std::abs(v) < 90.0)) fail("between -90 and 90");
       break;
@@ -102,14 +102,10 @@ void CheckValue(SweepParam p, double v, const std::string& file, const std::stri
       break;
     case SweepParam::kDownhillAzimuth:
     case SweepParam::kYawToSlope:
-    case SweepParam::kHorizontalAzimuth:
-      if (!(std::abs(v) <= 360.0)) fail("between -360 and 360");
-      break;
+    case SweepParam::kHorizontalAzimuth: limits::Require(limits::kAzimuth_deg, v, file, path); break;
     case SweepParam::kRateX:
     case SweepParam::kRateY:
-    case SweepParam::kRateZ:
-      if (!(std::abs(v) <= 3600.0)) fail("between -3600 and 3600 deg/s");
-      break;
+    case SweepParam::kRateZ: limits::Require(limits::kAngularRate_deg_s, v, file, path); break;
     default: break;
   }
 }
@@ -597,6 +593,8 @@ void AddPerPadSets(SweepRandom& r, const io::YamlFields& spec, SweepPlan& plan) 
 // Seeded random samples: `uniform: [low, high]` or `choice: [...]` per parameter (pad_soils also
 // `per_pad_choice: [...]`), a choice optionally with `probabilities: [...]`.
 void ReadRandom(const io::YamlFields& block, ParamClaims& claims, Loader& loader, SweepPlan& plan) {
+  // The bound --samples has too (rft/physical_limits.h).
+  limits::Require(limits::kSamples, block.Number("samples"), block.file(), block.Path("samples"));
   plan.samples = block.PositiveInt("samples");
   if (!block.Has("seed")) block.Fail("seed", "missing (random samples need a seed to be reproducible)");
   const double seed = block.Number("seed");

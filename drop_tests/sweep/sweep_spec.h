@@ -95,6 +95,7 @@
 #include "drop_tests/scenario/lander_scenario.h"
 #include "drop_tests/model/model_file.h"
 #include "lander/pad/rig_drop.h"
+#include "rft/physical_limits.h"
 
 namespace touchdown::sweep {
 
@@ -205,7 +206,7 @@ struct SweepPlan {
 // what a finished drop computes, so a restart may change them (and then retries the drops that
 // ran out of a lower one). The default evaluation limit is far above what any shipped sweep's
 // drop needs (bench/sweep_bench.cpp and tests/drop_tests/sweep_limits_test.cpp measure them).
-inline constexpr long kDefaultMaxDropEvaluations = 2000000;
+inline constexpr long kDefaultMaxDropEvaluations = limits::kDefaultMaxRunEvaluations;
 inline constexpr double kDefaultMaxDropWallTimeS = 0.0;  // none: wall-clock limits are opt-in
 SweepPlan LoadSweepPlan(const std::string& path, const std::string& model_override = "");
 // A sweep file that LoadSweepPlan reads back to the same plan (same DigestText, limits and

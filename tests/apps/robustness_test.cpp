@@ -222,6 +222,65 @@ void AddExitStatusAndInputCases(std::vector<Case>& c) {
                {{"nested.yaml", MeshPad("nested.off")}, {"nested.off", NestedBoxOff()}}});
   c.push_back({"extreme", "force at the limits (100 m/s, 1000 rad/s, 10 m deep, tilt 180 deg)",
                "force --pad flat --soil fjs1_lp --depth 10 --tilt-deg 180 --velocity 60,0,-80 --omega 0,0,1000"});
+  // Section 4: every magnitude a lander, study, drop, soil or pad takes has one range
+  // (rft/physical_limits.h), refused at load with it wherever it is given.
+  {
+    const std::string body = "schema_version: 1\ncog_height_mm: 230\npad: flat\n";
+    const std::string inertia = "body_inertia_kg_m2: {ixx: 0.05, iyy: 0.05, izz: 0.06}\n";
+    const std::string legs = "legs: {joint_radius_mm: 300, hip_radius_mm: 120, hip_height_mm: 200";
+    const std::string mass = "total_mass_kg: 20\n";
+    const auto lander = [&](const std::string& name, const std::string& what, const std::string& file,
+                            std::vector<std::pair<std::string, std::string>> files = {}) {
+      files.push_back({name + "_lander.yaml", file});
+      files.push_back({name + ".yaml", Lander("lander: " + name + "_lander.yaml\n" + kLanderGround + kLanderInitial)});
+      c.push_back({"lander YAML", what, "lander " + name + ".yaml --out out_" + name, files});
+    };
+    lander("pr_mass", "total_mass_kg 1e30", body + "total_mass_kg: 1e30\n" + inertia + legs + "}\n");
+    lander("pr_cog", "cog_height_mm 1e9", "schema_version: 1\ncog_height_mm: 1e9\npad: flat\n" + mass + inertia + legs + "}\n");
+    lander("pr_joint", "joint_radius_mm 1e12",
+           body + mass + inertia + "legs: {joint_radius_mm: 1e12, hip_radius_mm: 120, hip_height_mm: 200}\n");
+    lander("pr_inertia", "body inertia ixx 1e30 kg m^2 (ran for minutes)",
+           body + mass + "body_inertia_kg_m2: {ixx: 1e30, iyy: 0.05, izz: 0.06}\n" + legs + "}\n");
+    lander("pr_triangle", "body inertia breaking I1 + I2 >= I3 (0.01, 0.01, 0.06)",
+           body + mass + "body_inertia_kg_m2: {ixx: 0.01, iyy: 0.01, izz: 0.06}\n" + legs + "}\n");
+    lander("pr_cone", "cone_limit half_angle_deg 500",
+           body + mass + inertia + legs + ", cone_limit: {half_angle_deg: 500, stiffness_N_m_rad: 10}}\n");
+    lander("pr_stiff", "absorber stiffness_N_m 1e300",
+           body + mass + inertia + legs + ", absorber: {kind: spring_damper, stiffness_N_m: 1e300}}\n");
+    lander("pr_damp", "absorber damping_N_s_m 1e300",
+           body + mass + inertia + legs + ", absorber: {kind: spring_damper, stiffness_N_m: 1e4, damping_N_s_m: 1e300}}\n");
+    const auto scenario = [&](const std::string& name, const std::string& what, const std::string& file) {
+      c.push_back({"lander YAML", what, "lander " + name + ".yaml --out out_" + name, {{name + ".yaml", Lander(file)}}});
+    };
+    const std::string shipped = "lander: sutoh2017_lander\n";
+    scenario("pr_vh", "horizontal_velocity_m_s [1e10, 0]",
+             shipped + kLanderGround + "initial: {drop_height_m: 0.1, horizontal_velocity_m_s: [1e10, 0]}\n");
+    scenario("pr_rate", "angular_rate_deg_s [1e10, 0, 0]",
+             shipped + kLanderGround + "initial: {drop_height_m: 0.1, angular_rate_deg_s: [1e10, 0, 0]}\n");
+    scenario("pr_g", "gravity_m_s2 1e12", shipped + "gravity_m_s2: 1e12\n" + kLanderGround + kLanderInitial);
+    scenario("pr_height", "ground height_m 1e300 (ran, another answer)",
+             shipped + "ground: {soil: fjs1_lp, height_m: 1e300}\n" + kLanderInitial);
+    const std::string study = "schema_version: 1\ntype: stability\nlander: {scenario: lander_case_A}\n";
+    c.push_back({"study YAML", "gravity 1e6 m/s^2", "stability pr_gs.yaml --out out_pr_gs",
+                 {{"pr_gs.yaml", study + "grid: {gravity_m_s2: [1.62, 1e6]}\n"}}});
+    const std::string sampled = study + "random: {samples: 10, seed: 1, slope_deg: {uniform: [0, 5]}}\n";
+    c.push_back({"CLI flag", "stability --samples 1e12 (the study file's bound is 1e9)",
+                 "stability pr_s.yaml --samples 1e12 --out out_pr_s1", {{"pr_s.yaml", sampled}}});
+    c.push_back({"CLI flag", "stability --samples abc", "stability pr_s.yaml --samples abc --out out_pr_s2",
+                 {{"pr_s.yaml", sampled}}});
+    c.push_back({"CLI flag", "drop --gravity 1e300", rig + "--speed 1 --gravity 1e300"});
+    c.push_back({"CLI flag", "drop --law li2013 on a Bekker soil without zeta",
+                 "drop --pad flat --soil lunar_nominal_bekker --speed 1 --law li2013"});
+    c.push_back({"CLI flag", "drop --zeta 5 on a soil running on the bekker law",
+                 "drop --pad flat --soil lunar_nominal_bekker --speed 1 --zeta 5"});
+    c.push_back({"soil YAML", "bekker k_phi 1e300", with_soil_cmd() + "pr_kphi.yaml",
+                 {{"pr_kphi.yaml", Soil("law: bekker\nbekker: {n: 1, k_c_kN_m_n1: 0, k_phi_kN_m_n2: 1e300, "
+                                        "cohesion_kPa: 0.2, friction_angle_deg: 30, shear_modulus_K_mm: 10}\n")}}});
+    c.push_back({"mesh", "density_kg_m3 1e30", "force --pad pr_dense.yaml" + force,
+                 {{"pr_dense.yaml", "schema_version: 1\nkind: mesh\nmesh: {file: box.off, unit: mm}\n"
+                                    "density_kg_m3: 1e30\n"},
+                  {"box.off", BoxOff()}}});
+  }
   // Section 4: the soil fields the README documents.
   c.push_back({"soil YAML", "mu_surf and the dynamic term (README fields)",
                "force --pad flat --law agarwal2023 --depth 0.005 --soil dynamic.yaml",
