@@ -48,7 +48,7 @@ void AddDropCommand(CLI::App& app) {
     r.omega_rad_s = {args->omega[0], args->omega[1], args->omega[2]};
     const drop::DropConditions c = drop::RequestConditions(r, drop::RequestNaming{});
     const io::OutputTarget trace(args->trace, {args->pad, args->soil, args->model});
-    if (!args->trace.empty()) io::CheckOutputFile(trace);
+    if (!args->trace.empty()) drop::CheckTraceTarget(trace);
     const io::OutputTarget vtk(args->vtk, {args->pad, args->soil, args->model, args->trace});
     if (!args->vtk.empty()) {
       if (!c.IsFree()) throw MakeInputError("command line", "--vtk", "needs --free (the rig's pad is not drawn)");
