@@ -38,17 +38,15 @@ function(touchdown_write_install_check)
   set(checks "")
   foreach(target ${targets})
     string(APPEND checks "if(NOT EXISTS \"$<TARGET_FILE:${target}>\")\n"
-      "  list(APPEND missing \"$<TARGET_FILE:${target}>\")\n  list(APPEND missing_targets ${target})\nendif()\n")
+      "  list(APPEND missing \"$<TARGET_FILE:${target}>\")\nendif()\n")
   endforeach()
   file(GENERATE OUTPUT "${PROJECT_BINARY_DIR}/touchdown_install_check.cmake" CONTENT
 "# Generated (cmake/TouchdownInstall.cmake): run first by `cmake --install`.
 set(missing \"\")
-set(missing_targets \"\")
 ${checks}if(missing)
   list(JOIN missing \"\\n  \" files)
-  list(JOIN missing_targets \" \" names)
   message(FATAL_ERROR \"nothing installed: not built yet:\\n  \${files}\\n\"
-    \"build them first: cmake --build ${PROJECT_BINARY_DIR} --target \${names} (or the whole build)\")
+    \"Build them first: cmake --build ${PROJECT_BINARY_DIR} --target touchdown_quickstart (or the whole build)\")
 endif()
 ")
 endfunction()

@@ -20,12 +20,17 @@ if(installed_count LESS 17)  # 15 module libraries, the executable and the Pytho
   message(FATAL_ERROR "the install check lists ${installed_count} built files, expected at least 17")
 endif()
 if(NINJA)
-  execute_process(COMMAND "${NINJA}" -C "${BUILD_DIR}" -t inputs touchdown_quickstart
-    OUTPUT_VARIABLE inputs RESULT_VARIABLE status)
-  if(NOT status EQUAL 0)
-    message(FATAL_ERROR "ninja -t inputs touchdown_quickstart failed (${status})")
-  endif()
-  string(REPLACE "\n" ";" inputs "${inputs}")
+  # `-t query`: the target's own inputs (the executable, the module); `-t inputs`: theirs, recursively.
+  set(inputs "")
+  foreach(tool query inputs)
+    execute_process(COMMAND "${NINJA}" -C "${BUILD_DIR}" -t ${tool} touchdown_quickstart
+      OUTPUT_VARIABLE listed RESULT_VARIABLE status)
+    if(NOT status EQUAL 0)
+      message(FATAL_ERROR "ninja -t ${tool} touchdown_quickstart failed (${status})")
+    endif()
+    string(REGEX REPLACE "\n *" ";" listed "${listed}")
+    list(APPEND inputs ${listed})
+  endforeach()
   foreach(check ${checks})
     string(REGEX REPLACE "^if\\(NOT EXISTS \"([^\"]*)\"\\).*" "\\1" file "${check}")
     file(RELATIVE_PATH relative "${BUILD_DIR}" "${file}")
@@ -36,17 +41,22 @@ if(NINJA)
   endforeach()
 endif()
 
-# 2. The README's Python line, as written, from a root whose build/ is this build.
+# 2. The README's Python line, as written, from a root whose build/ is this build (run by bash from a
+#    script file, as tests/apps/readme_test.cpp runs the examples).
 file(STRINGS "${SOURCE_DIR}/README.md" lines REGEX "^PYTHONPATH=build/python python3 ")
 list(LENGTH lines count)
 if(NOT count EQUAL 1)
   message(FATAL_ERROR "README.md: expected one line `PYTHONPATH=build/python python3 ...`, found ${count}")
 endif()
+file(READ "${SOURCE_DIR}/README.md" readme)  # the line itself unescaped (file(STRINGS) escapes its ';')
+string(REGEX MATCH "\nPYTHONPATH=build/python python3 [^\n]*" line "${readme}")
+string(STRIP "${line}" line)
 set(root "${WORK_DIR}/root")
 file(MAKE_DIRECTORY "${root}")
 file(CREATE_LINK "${BUILD_DIR}" "${root}/build" SYMBOLIC)
 file(CREATE_LINK "${SOURCE_DIR}/data" "${root}/data" SYMBOLIC)
-execute_process(COMMAND bash -c "${lines}" WORKING_DIRECTORY "${root}"
+file(WRITE "${WORK_DIR}/python_line.sh" "${line}\n")
+execute_process(COMMAND bash "${WORK_DIR}/python_line.sh" WORKING_DIRECTORY "${root}"
   RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
 string(STRIP "${out}" out)
 if(NOT status EQUAL 0 OR NOT out MATCHES "^0\\.0078")
