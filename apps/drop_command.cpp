@@ -49,7 +49,7 @@ void AddDropCommand(CLI::App& app) {
     const drop::RequestNaming naming;
     const drop::DropConditions c = drop::RequestConditions(r, naming);
     const io::OutputTarget trace(args->trace, {args->pad, args->soil, args->model});
-    if (!args->trace.empty()) io::CheckOutputFile(trace);
+    if (!args->trace.empty()) drop::CheckTraceTarget(trace);
     const io::OutputTarget vtk(args->vtk, {args->pad, args->soil, args->model, args->trace});
     if (!args->vtk.empty()) {
       if (!c.IsFree()) throw MakeInputError("command line", "--vtk", "needs --free (the rig's pad is not drawn)");

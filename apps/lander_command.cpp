@@ -25,9 +25,11 @@ void AddLanderCommand(CLI::App& app) {
                                       "written complete or not at all")
       ->required();
   cmd->add_option("--model", args->model,
-                  "model file (MODEL.yaml): zeta per soil and the effect terms with a 3D form (inertial_drag, "
-                  "rate_damping, gas_cushion on beds in air); others are refused");
-  cmd->add_flag("--no-vtk", args->no_vtk, "leave out vtk/ (the ParaView series: about 35 MB and 1 s a landing)");
+                  "model file (MODEL.yaml): zeta per soil and every effect term in its 3D form (gas_cushion on "
+                  "beds in air only; sensor_offset, a measurement effect, is not applied: summary.json's "
+                  "model.effects_not_applied)");
+  cmd->add_flag("--no-vtk", args->no_vtk,
+                "leave out vtk/ (the ParaView series: for case A 36 MB and 1-1.5 s more; docs/paraview.md)");
   cmd->callback([args] {
     const io::OutputTarget out(args->out, {args->scenario, args->model});
     io::CheckOutputDirectory(out, io::OutputKind::kLander);

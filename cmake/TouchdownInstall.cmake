@@ -3,6 +3,7 @@
 # package (P/lib/cmake/touchdown) whose targets are touchdown::touchdown and touchdown::<module>.
 include(CMakePackageConfigHelpers)
 
+touchdown_installs_target(touchdown)
 install(TARGETS touchdown RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 # The executable finds it beside itself (drop_tests/io/catalog.cpp: DataDirectory).
 install(DIRECTORY "${PROJECT_SOURCE_DIR}/data/" DESTINATION ${TOUCHDOWN_INSTALL_DATADIR})
@@ -26,3 +27,26 @@ configure_package_config_file(cmake/touchdownConfig.cmake.in "${PROJECT_BINARY_D
 write_basic_package_version_file("${PROJECT_BINARY_DIR}/touchdownConfigVersion.cmake" COMPATIBILITY SameMinorVersion)
 install(FILES "${PROJECT_BINARY_DIR}/touchdownConfig.cmake" "${PROJECT_BINARY_DIR}/touchdownConfigVersion.cmake"
   DESTINATION ${touchdown_config_dir})
+
+# The first install rule (top-level CMakeLists.txt: it runs before those of the subdirectories):
+# every built file the install copies must exist, or the install stops before copying anything and
+# names the files and the targets to build. Without it an install of a build that made only some
+# targets (`--target touchdown`) copied the libraries and stopped at the first missing one,
+# leaving a prefix without bin/, share/ or lib/cmake/.
+function(touchdown_write_install_check)
+  get_property(targets GLOBAL PROPERTY TOUCHDOWN_INSTALLED_TARGETS)
+  set(checks "")
+  foreach(target ${targets})
+    string(APPEND checks "if(NOT EXISTS \"$<TARGET_FILE:${target}>\")\n"
+      "  list(APPEND missing \"$<TARGET_FILE:${target}>\")\nendif()\n")
+  endforeach()
+  file(GENERATE OUTPUT "${PROJECT_BINARY_DIR}/touchdown_install_check.cmake" CONTENT
+"# Generated (cmake/TouchdownInstall.cmake): run first by `cmake --install`.
+set(missing \"\")
+${checks}if(missing)
+  list(JOIN missing \"\\n  \" files)
+  message(FATAL_ERROR \"nothing installed: not built yet:\\n  \${files}\\n\"
+    \"Build them first: cmake --build ${PROJECT_BINARY_DIR} --target touchdown_quickstart (or the whole build)\")
+endif()
+")
+endfunction()

@@ -11,6 +11,7 @@ function(touchdown_module target name)
     $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}> $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
   set_target_properties(${target} PROPERTIES EXPORT_NAME ${name})
   add_library(touchdown::${name} ALIAS ${target})
+  touchdown_installs_target(${target})
   install(TARGETS ${target} EXPORT touchdownTargets
     ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
     LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
@@ -18,4 +19,11 @@ function(touchdown_module target name)
   file(RELATIVE_PATH folder "${PROJECT_SOURCE_DIR}" "${CMAKE_CURRENT_SOURCE_DIR}")
   install(DIRECTORY "${CMAKE_CURRENT_SOURCE_DIR}/" DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}/${folder}"
     FILES_MATCHING PATTERN "*.h")
+endfunction()
+
+# touchdown_installs_target(TARGET): `cmake --install` copies TARGET's file. An install first checks
+# that every such file is built (touchdown_install_check, cmake/TouchdownInstall.cmake), so that one
+# not built stops it before it copies anything rather than half-way.
+function(touchdown_installs_target target)
+  set_property(GLOBAL APPEND PROPERTY TOUCHDOWN_INSTALLED_TARGETS ${target})
 endfunction()

@@ -1,12 +1,14 @@
 #!/usr/bin/env bash
 # Configures and builds touchdown (Release) into build/ at the repository root.
-#   bash tools/build.sh            the `touchdown` executable only (what tools/run_main.sh needs)
+#   bash tools/build.sh            the quick start's target `touchdown_quickstart` (tools/run_main.sh):
+#                                  the `touchdown` executable and the Python module (build/python), so
+#                                  everything `cmake --install build` installs
 #   bash tools/build.sh all        every target: tests, benchmarks, tools (tools/run_tests.sh)
 #   bash tools/build.sh T1 T2 ...  the named targets
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(touchdown)
+[ ${#targets[@]} -gt 0 ] || targets=(touchdown_quickstart)
 bash "$root/tools/install_deps.sh"
 # Native instruction set (-march=native): the in-tree runs are on the machine that built them; an
 # install for other machines is configured without it (docs/install.md).

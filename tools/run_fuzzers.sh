@@ -2,7 +2,7 @@
 # Runs every libFuzzer target for a bounded time (FUZZ_SECONDS, default 25) from its seed corpus
 # in tests/fuzz/corpus/<name>/ (target fuzz_<name>), FUZZ_PARALLEL targets at a time (default:
 # the number of cores). The targets are built with clang, ASan and UBSan in build-hard/ (the
-# build tools/run_sanitized_tests.sh uses; configured here if it does not exist yet). Any crash,
+# build tools/run_sanitized_tests.sh uses, tools/hardened_build.sh; configured here if it does not exist yet). Any crash,
 # sanitizer report, timeout (10 s per input) or out-of-memory (2 GB) fails the script and leaves
 # the input in build-hard/fuzz/crashes/; fix the parser and add the input to the parser's unit
 # tests (tests/<module>/<unit>_test.cpp). New inputs libFuzzer found stay in
@@ -12,12 +12,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 build=${TOUCHDOWN_HARDENING_DIR:-$root/build-hard}
 seconds=${FUZZ_SECONDS:-25}
 parallel=${FUZZ_PARALLEL:-$(nproc)}
-jobs=${TOUCHDOWN_JOBS:-$(nproc)}
-bash "$root/tools/install_deps.sh"
-CC=clang CXX=clang++ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" \
-  -DTOUCHDOWN_SANITIZE=ON -DTOUCHDOWN_FUZZ=ON -DTOUCHDOWN_BUILD_BENCH=OFF -DTOUCHDOWN_NATIVE=ON >/dev/null
-cmake --build "$build" --parallel "$jobs" --target touchdown_fuzzers
+bash "$root/tools/hardened_build.sh" touchdown_fuzzers  # already built when run_sanitized_tests.sh ran first
 
 targets=$(cd "$root/tests/fuzz/corpus" && ls)
 out="$build/fuzz"

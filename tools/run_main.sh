@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
-# The main job on the bundled data: install, build, and reproduce the paper's single-footpad
-# drop campaign in vacuum. Results, traces and plots go to results/ (or the folder given).
+# The main job on the bundled data: install, build (the `touchdown` executable and the Python
+# module in build/python, what the README's quick start promises: tools/build.sh), and reproduce the
+# paper's single-footpad drop campaign in vacuum. Results, traces and plots go to results/ (or the
+# folder given).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 out=${1:-"$root/results"}

@@ -212,11 +212,31 @@ void WriteTraceCsv(const pad::RigDropResult& result, const std::string& path) {
   io::WriteFileAtomically(path, [&](std::ostream& out) { WriteTraceCsv(result, out); });
 }
 
+namespace {
+
+// The header lines of touchdown's traces, the rig's and a free drop's, as the writers print them. A
+// file starting with one is a trace of touchdown's, which a rerun may replace: no other file starts
+// so (datasets, comparisons and sweep exports order their columns t_s,penetration_m,force_N).
+std::vector<std::string> TraceHeaders() {
+  std::ostringstream rig, free;
+  WriteTraceCsv(pad::RigDropResult{}, rig);
+  WriteFreeDropTraceCsv(pad::FreeDropResult{}, free);
+  auto first_line = [](const std::string& text) { return text.substr(0, text.find('\n')); };
+  return {first_line(rig.str()), first_line(free.str())};
+}
+
+}  // namespace
+
+void CheckTraceTarget(const io::OutputTarget& target) { io::CheckOutputFile(target, TraceHeaders()); }
+
 void WriteTraceCsv(const PadDrop& drop, const io::OutputTarget& target) {
-  io::WriteOutputFile(target, [&](std::ostream& out) {
-    if (drop.free) WriteFreeDropTraceCsv(*drop.free, out);
-    else WriteTraceCsv(drop.result, out);
-  });
+  io::WriteOutputFile(
+      target,
+      [&](std::ostream& out) {
+        if (drop.free) WriteFreeDropTraceCsv(*drop.free, out);
+        else WriteTraceCsv(drop.result, out);
+      },
+      TraceHeaders());
 }
 
 }  // namespace touchdown::drop

@@ -103,7 +103,9 @@ nlohmann::json SummaryJson(const PadDrop& drop);
 // force_x_N,horizontal_m,tilt_deg and the pose: free_drop_output.h).
 void WriteTraceCsv(const pad::RigDropResult& result, std::ostream& out);
 void WriteTraceCsv(const pad::RigDropResult& result, const std::string& path);  // a file in a directory touchdown owns
-// The user's --trace file: a new file (touchdown never overwrites one it may not have written).
+// The user's --trace file: a new file or an earlier trace of touchdown's (its first line is one of the
+// traces' headers), never a file touchdown may not have written, in an existing directory.
+void CheckTraceTarget(const io::OutputTarget& target);
 void WriteTraceCsv(const PadDrop& drop, const io::OutputTarget& target);
 
 }  // namespace touchdown::drop

@@ -1,5 +1,6 @@
 #include "drop_tests/io/output_path.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <csignal>
 #include <cstdio>
@@ -329,6 +330,16 @@ void WriteNewFile(const fs::path& file, const std::function<void(std::ostream&)>
   if (out.fail()) fail("error writing", errno ? errno : EIO);
 }
 
+// A single file's directory must exist: a typo in it (`--trace /nonexistent/x.csv`) is reported
+// instead of leaving a directory tree behind, as `cp` or a compiler's `-o` would.
+void RefuseMissingDirectory(const std::string& path, const fs::path& p) {
+  std::error_code ec;
+  const fs::path parent = p.parent_path();
+  if (!fs::exists(parent, ec))
+    Refuse(path, "directory '" + parent.string() + "' does not exist; create it first (a single output file "
+                 "goes into an existing directory)");
+}
+
 }  // namespace
 
 const char* OutputKindName(OutputKind kind) {
@@ -501,6 +512,10 @@ void ReplaceDerivedOutputs(const std::string& directory, OutputKind kind, const 
 }
 
 void CheckOutputFile(const OutputTarget& target, const std::string& mark) {
+  CheckOutputFile(target, mark.empty() ? std::vector<std::string>{} : std::vector<std::string>{mark});
+}
+
+void CheckOutputFile(const OutputTarget& target, const std::vector<std::string>& marks) {
   const std::string& path = target.path;
   if (!path.empty() && (path.back() == '/')) Refuse(path, "names a directory; give a file name");
   const fs::path p = Normal(path);
@@ -511,28 +526,33 @@ void CheckOutputFile(const OutputTarget& target, const std::string& mark) {
   if (status.type() == fs::file_type::regular) {
     std::ifstream in(p);
     std::string first;
-    if (mark.empty() || !in || !std::getline(in, first) || first != mark)
+    const bool marked = in && std::getline(in, first) && std::find(marks.begin(), marks.end(), first) != marks.end();
+    if (!marked)
       Refuse(path, "exists and was not written by touchdown; touchdown does not overwrite it (give a new file name)");
   } else if (status.type() != fs::file_type::not_found) {
     Refuse(path, "exists and is " + TypeName(status.type()) + "; give a new file name");
   }
+  RefuseMissingDirectory(path, p);
   RefuseUnwritableParent(path, p);
 }
 
 void WriteOutputFile(const OutputTarget& target, const std::function<void(std::ostream&)>& write,
                      const std::string& mark) {
-  CheckOutputFile(target, mark);
+  WriteOutputFile(target, write, mark.empty() ? std::vector<std::string>{} : std::vector<std::string>{mark});
+}
+
+void WriteOutputFile(const OutputTarget& target, const std::function<void(std::ostream&)>& write,
+                     const std::vector<std::string>& marks) {
+  CheckOutputFile(target, marks);
   const fs::path p = Normal(target.path);
   CleanLeftovers(p);
   std::error_code ec;
-  fs::create_directories(p.parent_path(), ec);
-  if (ec) Refuse(target.path, "cannot create '" + p.parent_path().string() + "': " + Reason(ec));
   const bool existed = fs::exists(p, ec);
   const fs::path staging = StagingPath(p);
   WriteNewFile(staging, write, target.path);
   try {
     if (existed) {
-      CheckOutputFile(target, mark);
+      CheckOutputFile(target, marks);
       fs::rename(staging, p, ec);
       if (ec) Refuse(target.path, Reason(ec));
     } else if (!RenameNoReplace(staging, p)) {

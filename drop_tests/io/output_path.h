@@ -63,10 +63,16 @@ void ReplaceDerivedOutputs(const std::string& directory, OutputKind kind, const 
                            const std::function<void(const std::string& staging)>& fill);
 
 // A single output file (a trace, a model file). An existing file is replaced only when its first line
-// is `mark` (a line touchdown writes first in such files), so a file of the user's is never lost.
+// is `mark`, or one of `marks` (a line touchdown writes first in such files: a comment, or a CSV header
+// only touchdown writes), so a file of the user's is never lost. The file's directory must exist:
+// touchdown creates no directory for a single file (an output directory, by contrast, is touchdown's
+// and is created with its missing parents).
 void CheckOutputFile(const OutputTarget& target, const std::string& mark = "");
+void CheckOutputFile(const OutputTarget& target, const std::vector<std::string>& marks);
 void WriteOutputFile(const OutputTarget& target, const std::function<void(std::ostream&)>& write,
                      const std::string& mark = "");
+void WriteOutputFile(const OutputTarget& target, const std::function<void(std::ostream&)>& write,
+                     const std::vector<std::string>& marks);
 
 // A file inside a directory touchdown owns (a staging directory, a sweep output): written beside the
 // path and renamed over it, so no reader ever sees it half written. Write errors name the path and

@@ -65,6 +65,32 @@ TEST_F(Cli, DropPrintsJsonWithTheContractedKeys) {
   EXPECT_EQ(csv.substr(0, csv.find('\n')), "t_s,penetration_m,velocity_m_s,force_N");
 }
 
+// Rerunning a drop onto its own trace replaces it (a rig trace by a free one too): its first line is a
+// trace header only touchdown writes. A file of the user's stays refused, and so does a trace into a
+// directory that does not exist, which touchdown does not create.
+TEST_F(Cli, DropReplacesItsOwnTraceButCreatesNoDirectory) {
+  const std::string trace = (dir_ / "t.csv").string();
+  const std::string drop = "drop --pad flat --soil fjs1_lp --speed 1.0 --trace ";
+  ASSERT_EQ(Touchdown(drop + trace).status, 0);
+  const CliRun again = Touchdown(drop + trace);
+  EXPECT_EQ(again.status, 0) << again.err;
+  const CliRun free = Touchdown(drop + trace + " --free");
+  EXPECT_EQ(free.status, 0) << free.err;
+  EXPECT_NE(Slurp(trace).find("force_x_N"), std::string::npos);
+  const std::string mine = (dir_ / "mine.csv").string();
+  { std::ofstream(mine) << "t_s,penetration_m\n"; }
+  const CliRun refused = Touchdown(drop + mine);
+  EXPECT_EQ(refused.status, 2);
+  EXPECT_NE(refused.err.find("was not written by touchdown"), std::string::npos) << refused.err;
+  const fs::path missing = dir_ / "no_such_dir" / "x.csv";
+  const CliRun nowhere = Touchdown(drop + missing.string());
+  EXPECT_EQ(nowhere.status, 2);
+  EXPECT_NE(nowhere.err.find(missing.string() + ": directory '" + missing.parent_path().string() + "' does not exist"),
+            std::string::npos)
+      << nowhere.err;
+  EXPECT_FALSE(fs::exists(missing.parent_path()));
+}
+
 TEST_F(Cli, ForceOfFlatPadMatchesTheClosedForm) {
   // Straight down: quasi-static zeta (pi r^2 d + 0.128 pi r d^2), the revolved mesh within 0.5 %
   // of it; with --dynamic at 1 m/s, plus the soil's dynamic term lambda rho v^2 pi r^2 on the

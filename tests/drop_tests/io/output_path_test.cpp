@@ -234,6 +234,28 @@ TEST_F(OutputPathTest, SingleFilesAreNewOrMarkedAsTouchdowns) {
   EXPECT_EQ(Entries("."), 3);
 }
 
+TEST_F(OutputPathTest, SingleFilesAcceptAnyOfSeveralMarks) {
+  const std::vector<std::string> marks = {"t_s,force_N", "t_s,force_N,x_m"};
+  WriteOutputFile("t.csv", [](std::ostream& out) { out << "t_s,force_N,x_m\n1,2,3\n"; }, marks);
+  WriteOutputFile("t.csv", [](std::ostream& out) { out << "t_s,force_N\n1,2\n"; }, marks);
+  EXPECT_EQ(Read("t.csv"), "t_s,force_N\n1,2\n");
+  Write("mine.csv", "t_s,force_N,other\n");
+  EXPECT_FALSE(Refusal([&] { WriteOutputFile("mine.csv", [](std::ostream&) {}, marks); }).empty());
+  EXPECT_EQ(Read("mine.csv"), "t_s,force_N,other\n");
+}
+
+TEST_F(OutputPathTest, SingleFileIntoAMissingDirectoryIsRefusedAndCreatesNothing) {
+  EXPECT_NE(Refusal([] { CheckOutputFile("nowhere/deeper/t.csv"); }).find("does not exist; create it first"),
+            std::string::npos);
+  EXPECT_NE(Refusal([] { WriteOutputFile("nowhere/t.csv", [](std::ostream& out) { out << "x"; }); })
+                .find("nowhere/t.csv: directory '"),
+            std::string::npos);
+  EXPECT_FALSE(fs::exists("nowhere"));
+  fs::create_directory("somewhere");
+  WriteOutputFile("somewhere/t.csv", [](std::ostream& out) { out << "x"; });
+  EXPECT_EQ(Read("somewhere/t.csv"), "x");
+}
+
 TEST_F(OutputPathTest, SingleFileOntoADirectoryIsRefusedAndLeavesNothing) {
   fs::create_directory("d");
   for (const char* path : {"d", "d/", "."}) {
