@@ -323,6 +323,19 @@ void CheckUnique(const io::YamlFields& f, const std::vector<std::string>& names,
     if (!seen.insert(names[i]).second)
       f.Fail(std::string(list) + "[" + std::to_string(i) + "].name", "'" + names[i] + "' is given twice");
 }
+// Two parameters may not free the same field of the same file (`addresses`: file and field, one
+// per parameter); the message names both as the user wrote them.
+void CheckSameFieldOnce(const io::YamlFields& f, const std::vector<Parameter>& parameters,
+                        const std::vector<std::string>& addresses) {
+  std::map<std::string, size_t> seen;
+  for (size_t i = 0; i < addresses.size(); ++i) {
+    const auto [it, inserted] = seen.emplace(addresses[i], i);
+    if (!inserted)
+      f.Fail("parameters[" + std::to_string(i) + "]",
+             "'" + parameters[i].name + "' frees " + parameters[i].Address() + ", which parameters[" +
+                 std::to_string(it->second) + "] ('" + parameters[it->second].name + "') frees already");
+  }
+}
 }  // namespace
 
 TargetsFile LoadTargetsFile(const std::string& path) {
@@ -343,7 +356,7 @@ TargetsFile LoadTargetsFile(const std::string& path) {
       addresses.push_back(out.parameters.back().file + "|" + out.parameters.back().field);
     }
   CheckUnique(f, names, "parameters");
-  CheckUnique(f, addresses, "parameters");
+  CheckSameFieldOnce(f, out.parameters, addresses);
   ScenarioReader reader(out.scenarios);
   names.clear();
   for (const io::YamlFields& t : f.List("targets")) {
