@@ -50,26 +50,24 @@ std::string PolygonProblem(const std::vector<Eigen::Vector2d>& polygon) {
     twice_area += a.x() * b.y() - b.x() * a.y();
     extent = std::max(extent, (b - polygon[0]).cwiseAbs().maxCoeff());
   }
-  if (!(std::abs(twice_area) > 1e-12 * extent * extent)) return "encloses no area (its corners lie on one line)";
-  // Every pair of edges that are not neighbours must be apart; neighbours share only their corner.
+  // Edges that are not neighbours must be apart (a figure eight, a bow tie: whose signed area may
+  // even cancel to zero).
   for (size_t i = 0; i < n; ++i)
-    for (size_t j = i + 1; j < n; ++j) {
-      const bool neighbours = j == i + 1 || (i == 0 && j == n - 1);
-      const Eigen::Vector2d &a = polygon[i], &b = polygon[(i + 1) % n], &c = polygon[j], &d = polygon[(j + 1) % n];
-      if (neighbours) {
-        // Folding back along the previous edge: the shared corner's other ends are on one line, overlapping.
-        const Eigen::Vector2d& shared = j == i + 1 ? b : a;
-        const Eigen::Vector2d& p = j == i + 1 ? a : b;
-        const Eigen::Vector2d& q = j == i + 1 ? d : c;
-        if (Cross(shared, p, q) == 0.0 && (p - shared).dot(q - shared) > 0.0)
-          return "edges " + std::to_string(i) + " and " + std::to_string(j) + " fold back over each other";
-        continue;
-      }
-      if (SegmentsMeet(a, b, c, d))
+    for (size_t j = i + 2; j < n; ++j) {
+      if (i == 0 && j == n - 1) continue;  // neighbours across the closing corner
+      if (SegmentsMeet(polygon[i], polygon[(i + 1) % n], polygon[j], polygon[(j + 1) % n]))
         return "edges " + std::to_string(i) + " (corners " + std::to_string(i) + "-" + std::to_string((i + 1) % n) +
                ") and " + std::to_string(j) + " (corners " + std::to_string(j) + "-" + std::to_string((j + 1) % n) +
                ") cross or touch: the polygon must not intersect itself";
     }
+  // A polygon whose edges do not cross and that has no area has every corner on one line.
+  if (!(std::abs(twice_area) > 1e-12 * extent * extent)) return "encloses no area (its corners lie on one line)";
+  // Neighbouring edges share only their corner: not one folding back along the other.
+  for (size_t i = 0; i < n; ++i) {
+    const Eigen::Vector2d &p = polygon[(i + n - 1) % n], &corner = polygon[i], &q = polygon[(i + 1) % n];
+    if (Cross(corner, p, q) == 0.0 && (p - corner).dot(q - corner) > 0.0)
+      return "at corner " + std::to_string(i) + " the polygon folds back along its previous edge";
+  }
   return "";
 }
 

@@ -295,6 +295,12 @@ void AddMessageCases(std::vector<Case>& c) {
                                                "speed_m_s: 1}, quantity: peak_force_N}, denominator: {drop: {pad: flat, "
                                                "soil: fjs1_lp, speed_m_s: 2}, quantity: peak_force_N}}, value: -0.5, "
                                                "uncertainty: 0.1, use: fit, source: s}]\n"}}});
+  c.push_back({"targets YAML", "fit pressed against a lower bound of 4, relative_step 0.1 (stays within the bounds)",
+               "calibrate --targets t_edge.yaml --out t8.yaml",
+               {{"t_edge.yaml", head + "fit: {relative_step: 0.1}\nparameters: [{name: z, soil: fjs1_lp, field: "
+                                       "zeta_N_cm3, lower: 4, upper: 52, start: 4.2, source: s}]\n" +
+                                       "targets: [{name: d, drop: {pad: flat, soil: fjs1_lp, speed_m_s: 1}, quantity: "
+                                       "final_penetration_m, value: 0.05, uncertainty: 0.0001, use: fit, source: s}]\n"}}});
   c.push_back({"CLI flag", "calibrate --report without --targets", "calibrate ds_u8 --out ds_u8.yaml --report r.json",
                Dataset("ds_u8", kDropsHeader + "d0,flat,fjs1_lp,vacuum,1.0,1.6,9.81,t.csv\n")});
   // Messages naming the field, the value and the valid range.
