@@ -85,6 +85,14 @@ void AddCalibrateCommand(CLI::App& app) {
       if (args->law != "rft") throw MakeInputError("command line", "--law", "--targets fits its own parameters: no --law");
       return CalibrateTargets(*args);
     }
+    // The --targets options mean nothing to a dataset calibration: refused, not ignored.
+    if (!args->report.empty())
+      throw MakeInputError("command line", "--report", "writes the report of a --targets fit; give --targets FILE, "
+                                                       "or leave --report out (got '" + args->report + "')");
+    if (args->evaluate_only)
+      throw MakeInputError("command line", "--evaluate-only", "evaluates a --targets file; give --targets FILE");
+    if (args->threads != 0)
+      throw MakeInputError("command line", "--threads", "runs a --targets fit's scenarios side by side; give --targets FILE");
     dataset::CalibrationRequest r;
     r.measured = args->measured, r.out = args->out;
     r.law = args->law == "bekker" ? dataset::CalibrationLaw::kBekker : dataset::CalibrationLaw::kRft;

@@ -1,5 +1,6 @@
 #include "apps/command_help.h"
 
+#include <cstdio>
 #include <string>
 #include <utility>
 #include <vector>
@@ -7,6 +8,7 @@
 #include "drop_tests/io/catalog.h"
 #include "drop_tests/io/nearest_name.h"
 #include "rft/input_error.h"
+#include "rft/input_file.h"
 
 namespace touchdown::app {
 
@@ -97,6 +99,31 @@ void RejectUnknownCommand(const CLI::App& app, int argc, char** argv) {
   for (const std::string& n : names)
     if (n == typed) return;
   throw InputError("unknown command '" + typed + "'" + io::DidYouMean(typed, names) + "; commands: " + Joined(names));
+}
+
+namespace {
+// `text` with every byte outside printable ASCII as \xNN, so the message itself is UTF-8.
+std::string Escaped(const std::string& text) {
+  std::string out;
+  for (unsigned char c : text) {
+    if (c >= 0x20 && c < 0x7f) {
+      out += char(c);
+    } else {
+      char hex[5];
+      std::snprintf(hex, sizeof hex, "\\x%02x", c);
+      out += hex;
+    }
+  }
+  return out;
+}
+}  // namespace
+
+void RejectNonUtf8Arguments(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i)
+    if (!IsValidUtf8(argv[i]))
+      throw InputError("argument '" + Escaped(argv[i]) +
+                       "' is not valid UTF-8 text: touchdown records paths and names in UTF-8 outputs "
+                       "(JSON), so file names and names must be UTF-8; rename it");
 }
 
 }  // namespace touchdown::app

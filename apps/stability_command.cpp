@@ -14,6 +14,7 @@
 #include "drop_tests/sweep/sweep.h"
 #include "drop_tests/sweep/sweep_mpi.h"
 #include "drop_tests/sweep/sweep_stop.h"
+#include "lander/integ/cvode_integrator.h"
 #include "rft/input_error.h"
 #include "rft/physical_limits.h"
 
@@ -65,6 +66,16 @@ void PrintStudyResult(const stability::Study& study, const stability::StudySumma
   std::cout << "wrote " << out << "/ (summary.json, percentiles.csv" << (study.map ? ", tip_over_map.csv" : "")
             << ", plots/)\n";
 }
+
+// A study whose every landing failed has no answer (no probability, no percentiles): the solver
+// failed, exit 3, naming the first failure. Its outputs are written all the same (summary.json
+// says why each number is absent), and a rerun with other limits runs the failed landings again.
+void RequireACompletedLanding(const stability::Study& study, const stability::StudySummary& s, const std::string& out) {
+  if (s.landings > 0 || s.failed == 0) return;
+  throw integ::IntegrationFailure("stability " + study.plan.name + ": all " + std::to_string(s.failed) +
+                                  " landings failed, so there is no tip-over probability (first: " + s.first_failure +
+                                  "); " + out + "/summary.json records them, and a rerun runs them again");
+}
 }  // namespace
 
 void AddStabilityCommand(CLI::App& app) {
@@ -100,6 +111,11 @@ void AddStabilityCommand(CLI::App& app) {
       std::exit(128 + run.stop_signal);
     }
     if (rank != 0) return;
+    std::optional<stability::StudySummary> summary;
+    if (options.shard.count <= 1) {
+      summary = stability::WriteStudyAnalysis(study, args->out);
+      RequireACompletedLanding(study, *summary, args->out);
+    }
     std::cout << "stability " << study.plan.name << ": " << run.computed << " landings run now, "
               << run.already_done << " already done, in " << std::fixed << std::setprecision(2) << run.seconds
               << " s on " << run.ranks << " rank(s) x " << run.threads << " thread(s)\n"
@@ -110,7 +126,7 @@ void AddStabilityCommand(CLI::App& app) {
                 << sweep::ResultsDbPath(args->out) << "\n";
       return;
     }
-    PrintStudyResult(study, stability::WriteStudyAnalysis(study, args->out), args->out);
+    PrintStudyResult(study, *summary, args->out);
   });
 }
 

@@ -34,6 +34,7 @@ int main(int argc, char** argv) {
   touchdown::app::AddValidateCommand(app);
   touchdown::app::AddHelpFooters(app);
   try {
+    touchdown::app::RejectNonUtf8Arguments(argc, argv);
     touchdown::app::RejectUnknownCommand(app, argc, argv);
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

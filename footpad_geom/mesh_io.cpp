@@ -138,22 +138,27 @@ double SignedVolume(const Mesh& mesh) {
   return six_v / 6.0;
 }
 
-// Closed shells lying inside other shells. After orient_to_bound_a_volume a shell directly
-// inside another bounds a cavity and is oriented inward (negative volume); every nesting has
-// at least one such shell. A pad is one solid (or several side by side): an inner shell would
-// add its surface to the contact sums as if the soil reached it.
-std::size_t NestedShells(Mesh& mesh) {
+// The mesh's closed shells: how many, and how many lie inside another. After
+// orient_to_bound_a_volume a shell directly inside another bounds a cavity and is oriented
+// inward (negative volume); every nesting has at least one such shell. A pad is one solid: an
+// inner shell would add its surface to the contact sums as if the soil reached it, and a second
+// solid beside the first is a second pad that the one body (one mass, one inertia, one joint)
+// would carry rigidly, which no lander has.
+struct Shells {
+  std::size_t count = 0, nested = 0;
+};
+Shells CountShells(Mesh& mesh) {
   auto component = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:component", 0).first;
-  const std::size_t n = PMP::connected_components(mesh, component);
-  std::size_t nested = 0;
-  if (n > 1) {
-    std::vector<double> six_v(n, 0.0);
+  Shells shells;
+  shells.count = PMP::connected_components(mesh, component);
+  if (shells.count > 1) {
+    std::vector<double> six_v(shells.count, 0.0);
     for (Mesh::Face_index f : mesh.faces()) six_v[component[f]] += SixTimesSignedVolume(mesh, f);
     for (double v : six_v)
-      if (v < 0.0) ++nested;
+      if (v < 0.0) ++shells.nested;
   }
   mesh.remove_property_map(component);
-  return nested;
+  return shells;
 }
 
 std::string Lower(std::string s) {
@@ -227,9 +232,13 @@ PreparedMesh PrepareTriangleMesh(PolygonSoup soup, const std::string& source) {
   const double volume_after = SignedVolume(mesh);
   out.reoriented = reversed > 0 || !outward || volume_after != volume_before;
   if (!(volume_after > 0.0)) throw Defect(source, "mesh encloses no volume");
-  if (const std::size_t nested = NestedShells(mesh); nested > 0)
-    throw Defect(source, Count(nested, "closed shell lies", "closed shells lie") +
+  const Shells shells = CountShells(mesh);
+  if (shells.nested > 0)
+    throw Defect(source, Count(shells.nested, "closed shell lies", "closed shells lie") +
                              " inside another (a pad must be one solid, not nested shells)");
+  if (shells.count > 1)
+    throw Defect(source, Count(shells.count, "separate closed shell", "separate closed shells") +
+                             " (a pad must be one connected solid: join the pieces, or make each its own pad)");
 
   // No element was removed, so vertex and face indices are contiguous.
   out.mesh.vertices.reserve(mesh.number_of_vertices());

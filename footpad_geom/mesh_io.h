@@ -10,8 +10,9 @@
 //     two otherwise separate sheets;
 //   - no triangle has zero area and no two triangles intersect (other than along a shared
 //     edge or vertex);
-//   - no closed shell lies inside another (a box inside a box is refused; separate solids
-//     side by side are accepted), and the mesh is at most limits::kPadSize_m (10 m) across;
+//   - the mesh is one closed shell: no shell inside another (a box inside a box), no second
+//     solid beside the first (one pad is one solid), and it is at most limits::kPadSize_m
+//     (10 m) across;
 // and it is then oriented so that it bounds a volume with outward normals: an inverted mesh
 // (all normals inward, as some exporters write) is reversed and reported, not refused.
 // Every defect throws InputError with one line: "<file>: <count> <defect>", e.g.

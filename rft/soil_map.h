@@ -57,6 +57,12 @@ Terrain UniformTerrain(std::string soil_name, SoilContactModel contact,
 // Even-odd point-in-polygon test (boundary points may fall either side).
 bool PolygonContains(const std::vector<Eigen::Vector2d>& polygon, const Eigen::Vector2d& p);
 
+// "" when `polygon` (corners in order, closed implicitly) is a simple polygon with an area;
+// otherwise why not: two consecutive corners coincide, the corners enclose no area (all on one
+// line), or two edges cross or touch (a figure eight, a bow tie). The even-odd test of
+// PolygonContains gives such shapes an inside the user did not draw.
+std::string PolygonProblem(const std::vector<Eigen::Vector2d>& polygon);
+
 // Rectangle [x0, x1] x [y0, y1] as a polygon.
 std::vector<Eigen::Vector2d> RectanglePolygon(double x0, double y0, double x1, double y1);
 

@@ -66,8 +66,13 @@ std::unique_ptr<StressLaw3D> MakeStressLaw3D(LawKind law, const SoilParameters& 
   if (law == LawKind::kBekker) {
     quasi_static = MakeBekkerLaw(soil, bekker_plate_b_m);
   } else if (law == LawKind::kLi2013) {
-    Require(std::isfinite(soil.zeta_N_m3) && soil.zeta_N_m3 > 0.0, soil, "zeta",
-            "li2013 needs a positive zeta", soil.zeta_N_m3);
+    // A Bekker soil file may leave zeta out: say that, not "zeta 0", when it meets an RFT law.
+    if (soil.rft_law_3d == LawKind::kBekker && !(soil.zeta_N_m3 > 0.0))
+      throw MakeInputError(SoilLabel(soil), "zeta_N_cm3",
+                           "missing: it is a Bekker soil (law: bekker) and the law here is li2013, which needs "
+                           "zeta_N_cm3; use the bekker law with it (a lander's ground.law: bekker) or an RFT soil");
+    Require(std::isfinite(soil.zeta_N_m3) && soil.zeta_N_m3 > 0.0, soil, "zeta_N_cm3",
+            "li2013 needs a positive zeta [N/cm^3]", soil.zeta_N_m3 * 1e-6);
     Require(std::isfinite(soil.reference_gravity_m_s2) && soil.reference_gravity_m_s2 > 0.0, soil,
             "reference_gravity_m_s2", "must be positive", soil.reference_gravity_m_s2);
     quasi_static = std::make_unique<Li2013TreersLaw>(soil.ZetaAtGravity(gravity_m_s2));

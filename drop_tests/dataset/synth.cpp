@@ -16,6 +16,7 @@
 #include "drop_tests/io/dataset_csv.h"
 #include "drop_tests/io/yaml_fields.h"
 #include "drop_tests/model/effects_yaml.h"
+#include "lander/integ/cvode_integrator.h"
 #include "lander/pad/effect_soil_response.h"
 #include "rft/input_error.h"
 #include "rft/units.h"
@@ -96,7 +97,9 @@ SynthSpec LoadSynthSpec(const std::string& path) {
                                   io::FormatNumber(s.rest_duration_s));
   if (trials > kSynthMaxTrials)
     f.Fail("trials", "must be at most " + std::to_string(kSynthMaxTrials) + ", got " + std::to_string(trials));
+  int group = -1;
   for (const io::YamlFields& g : f.List("drops")) {
+    ++group;
     g.RequireOnly({"pads", "soils", "atmospheres", "impact_speeds_m_s", "mass_kg", "gravity_m_s2"});
     const std::vector<std::string> pads = StringList(g, "pads"), soils = StringList(g, "soils");
     std::vector<rft::Atmosphere> atmospheres;
@@ -117,7 +120,7 @@ SynthSpec LoadSynthSpec(const std::string& path) {
               if (s.drops.size() == kSynthMaxDrops)
                 f.Fail("drops", "more than " + std::to_string(kSynthMaxDrops) + " drops (pads x soils x atmospheres x "
                                 "impact speeds x trials)");
-              SynthDrop d{pad, soil, atm, v, std::nullopt, g.PositiveOr("gravity_m_s2", 9.81), t};
+              SynthDrop d{pad, soil, atm, v, std::nullopt, g.PositiveOr("gravity_m_s2", 9.81), t, group};
               if (g.Has("mass_kg")) d.mass_kg = g.Positive("mass_kg");
               s.drops.push_back(d);
             }
@@ -175,13 +178,23 @@ Dataset Synthesize(const SynthSpec& spec) {
   std::map<std::string, rft::SoilParameters> soils;
   std::map<std::string, std::unique_ptr<geom::AxisymmetricIntrusion>> intrusions;
   const rft::EffectTerms terms = spec.hidden_effect ? model::MakeEffectTerms({*spec.hidden_effect}, spec.source) : rft::EffectTerms{};
+  std::map<std::string, int> made_by;  // drop id -> the drops[] group that made it
   for (size_t i = 0; i < spec.drops.size(); ++i) {
     const SynthDrop& sd = spec.drops[i];
-    if (!pads.count(sd.pad)) {
-      pads[sd.pad] = io::LoadPad(sd.pad);
-      intrusions[sd.pad] = drop::MakeRigIntrusion(pads[sd.pad].profile);
+    const std::string group = "drops[" + std::to_string(sd.group) + "]";
+    try {
+      if (!pads.count(sd.pad)) {
+        pads[sd.pad] = io::LoadPad(sd.pad);
+        intrusions[sd.pad] = drop::MakeRigIntrusion(pads[sd.pad].profile);
+      }
+    } catch (const InputError& e) {
+      throw MakeInputError(spec.source, group + ".pads", e.what());
     }
-    if (!soils.count(sd.soil)) soils[sd.soil] = io::LoadSoil(sd.soil);
+    try {
+      if (!soils.count(sd.soil)) soils[sd.soil] = io::LoadSoil(sd.soil);
+    } catch (const InputError& e) {
+      throw MakeInputError(spec.source, group + ".soils", e.what());
+    }
     const io::PadSpec& pad = pads[sd.pad];
     // A Bekker soil's drops run on its own law (its profile integral, kept beside the Li 2013 one).
     const bool bekker = drop::RunsOnBekker(soils[sd.soil], std::nullopt);
@@ -200,8 +213,14 @@ Dataset Synthesize(const SynthSpec& spec) {
     options.rest_duration_s = spec.rest_duration_s + std::abs(terms.sensor_dt_s) + 2.0 / spec.sample_rate_hz;
     pad::RigDropResult sim;
     const pad::RigDropInput input{mass, sd.gravity_m_s2, sd.impact_speed_m_s};
-    if (spec.floor) sim = pad::RunRigDrop(input, FloorStiffenedResponse(response, *spec.floor), options);
-    else sim = pad::RunRigDrop(input, response, options);
+    try {
+      if (spec.floor) sim = pad::RunRigDrop(input, FloorStiffenedResponse(response, *spec.floor), options);
+      else sim = pad::RunRigDrop(input, response, options);
+    } catch (const integ::IntegrationFailure& e) {
+      throw integ::IntegrationFailure(spec.source + ": " + group + ": the drop of pad " + sd.pad + " on soil " +
+                                      sd.soil + " at " + io::FormatNumber(sd.impact_speed_m_s) + " m/s (trial " +
+                                      std::to_string(sd.trial) + "): " + e.what());
+    }
 
     // The recorder: a seeded stream per drop, so adding drops never changes the others.
     std::mt19937_64 rng(spec.seed * 0x9E3779B97F4A7C15ULL + i + 1);
@@ -213,6 +232,18 @@ Dataset Synthesize(const SynthSpec& spec) {
     std::ostringstream id;
     id << pad.name << '_' << soil.name << '_' << rft::AtmosphereName(sd.atmosphere) << "_v" << SpeedTag(sd.impact_speed_m_s) << "_t" << sd.trial;
     d.drop_id = id.str();
+    // The dataset's rules on ids and names, checked here so a refusal names the spec's field, not
+    // the output directory (WriteDatasetFiles checks them again).
+    if (const std::string problem = DropIdProblem(d.drop_id); !problem.empty())
+      throw MakeInputError(spec.source, group, "the drop of pad " + sd.pad + " on soil " + sd.soil + ": " + problem);
+    for (const auto& [key, name] : {std::pair<const char*, const std::string&>{"pads", sd.pad}, {"soils", sd.soil}})
+      if (name.find_first_of(",\n\r") != std::string::npos)
+        throw MakeInputError(spec.source, group + "." + key,
+                             "'" + name + "' contains a comma or a line break, which drops.csv cannot hold");
+    if (const auto [it, inserted] = made_by.emplace(d.drop_id, sd.group); !inserted)
+      throw MakeInputError(spec.source, group,
+                           "makes drop '" + d.drop_id + "' again (drops[" + std::to_string(it->second) +
+                               "] made it already): a pad, soil, atmosphere, speed and trial may appear once");
     d.pad = sd.pad;
     d.soil = sd.soil;
     d.atmosphere = sd.atmosphere;

@@ -57,6 +57,7 @@ struct SynthDrop {
   std::optional<double> mass_kg;
   double gravity_m_s2 = 9.81;
   int trial = 0;
+  int group = 0;  // the spec's drops[group] that made it (named in messages)
 };
 
 struct FloorStiffening {

@@ -8,6 +8,7 @@
 #include <csignal>
 #include <cstring>
 #include <fstream>
+#include <regex>
 
 #include "drop_tests/io/output_path.h"
 #include "drop_tests/io/external_program.h"
@@ -40,6 +41,32 @@ std::string WriteFailureReason(const fs::path& directory, const fs::path& file) 
   if (NoSpaceLeft(directory)) return std::strerror(ENOSPC);
   if (AtFileSizeLimit(file)) return std::strerror(EFBIG);
   return "gnuplot stopped writing it (is the file system full?)";
+}
+
+// gnuplot's first error line in its log: the "<script>", line N: <what> line when there is one
+// (gnuplot echoes the offending command and a caret line before it), else the first line with
+// text; "" when the log is empty or unreadable. At most 300 characters.
+std::string FirstErrorLine(const fs::path& log) {
+  std::ifstream in(log, std::ios::binary);
+  std::string line, first;
+  const std::regex located(R"(line [0-9]+:)");
+  while (std::getline(in, line)) {
+    while (!line.empty() && (line.back() == '\r' || line.back() == ' ' || line.back() == '\t')) line.pop_back();
+    if (line.find_first_not_of(" \t^") == std::string::npos) continue;  // blank, or the caret under the echo
+    if (std::regex_search(line, located)) {
+      first = line;
+      break;
+    }
+    if (first.empty()) first = line;
+  }
+  if (first.size() > 300) first = first.substr(0, 300) + "...";
+  return first;
+}
+
+// Why gnuplot stopped, for the message: its status, or the signal that killed it.
+std::string HowItStopped(const ExternalProgramError& e) {
+  if (e.signal() != 0) return "was killed by signal " + std::to_string(e.signal()) + " (" + ::strsignal(e.signal()) + ")";
+  return "exited with status " + std::to_string(e.exit_status());
 }
 
 }  // namespace
@@ -95,8 +122,10 @@ void RenderPlots(const fs::path& directory, const PlotScript& script) {
     if (e.signal() == SIGXFSZ || NoSpaceLeft(directory))
       throw InputError(script.path + ": gnuplot could not write its plots: " +
                        std::strerror(e.signal() == SIGXFSZ ? EFBIG : ENOSPC));
-    throw ExternalProgramError(std::string(e.what()) + " rendering " + script.path, e.program(), e.spawn_errno(),
-                               e.exit_status(), e.signal(), e.log());
+    const std::string first = FirstErrorLine(log);
+    throw InputError(script.path + ": gnuplot " + HowItStopped(e) + (first.empty() ? "" : ": " + first) +
+                     " (check the gnuplot installation: the pngcairo terminal and its fonts; log: " +
+                     (fs::path(script.path).parent_path() / "gnuplot.log").string() + " in the output directory)");
   }
   for (const std::string& png : script.outputs) {
     const std::string problem = PngProblem(directory / png);

@@ -14,8 +14,13 @@
 //   - a PNG missing or truncated, gnuplot killed by SIGXFSZ, or gnuplot failing on a file system
 //     with no space left                                          -> InputError (exit 2) naming
 //     the file (relative to the output directory) and the OS reason;
-//   - any other gnuplot error: the script touchdown wrote is wrong -> ExternalProgramError
-//     (exit 1: a bug), carrying gnuplot's message.
+//   - any other gnuplot failure (a non-zero exit, killed by a signal)   -> InputError (exit 2)
+//     naming the script, how gnuplot stopped and gnuplot's first error line, and pointing at
+//     the installation. Every script touchdown writes is rendered by its test suite
+//     (tests/apps/plot_outputs_test.cpp and the placeholder cases), so a gnuplot that fails on
+//     the user's machine is far more likely that machine's gnuplot (no pngcairo terminal, a
+//     missing font, killed by the OOM killer or a time limit) than touchdown's script; the
+//     message carries gnuplot's own words either way, so a real script bug is still reportable.
 // gnuplot's stderr goes to plots/gnuplot.log, removed when everything is fine.
 #include <filesystem>
 #include <string>

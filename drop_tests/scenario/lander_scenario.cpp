@@ -251,6 +251,8 @@ LanderPatchSpec ReadPatch(const io::YamlFields& p, const SoilCheck& check_soil) 
         p.Fail("polygon_m[" + std::to_string(k) + "]", "must be a pair of finite numbers [x, y]");
       patch.polygon_W.emplace_back(x, y);
     }
+    if (const std::string problem = rft::PolygonProblem(patch.polygon_W); !problem.empty())
+      p.Fail("polygon_m", "must be a simple polygon with an area: " + problem);
   } else {
     const int pad = p.PositiveInt("under_pad");
     if (pad > lander::kNumLegs) p.Fail("under_pad", "must be 1..4, got " + std::to_string(pad));
@@ -329,9 +331,12 @@ LanderGroundSpec ReadGround(const io::YamlFields& g, double gravity_m_s2, bool r
     }
   };
   check_soil(g, "soil", ground.default_soil);
-  // `patches: []` (a resolved copy of a ground without patches) is no patches.
+  // `patches: []` is how a resolved copy writes a ground without patches; in a user's scenario it
+  // says nothing (a list emptied by mistake?), so it is refused there.
   const bool no_patches =
       g.Has("patches") && g.node()["patches"].IsSequence() && g.node()["patches"].size() == 0;
+  if (no_patches && !resolved)
+    g.Fail("patches", "is an empty list: give at least one patch, or leave patches out for one soil everywhere");
   if (g.Has("patches") && !no_patches) {
     for (const io::YamlFields& p : g.List("patches")) {
       LanderPatchSpec patch = ReadPatch(p, check_soil);

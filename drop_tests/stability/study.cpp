@@ -30,6 +30,27 @@ std::optional<std::pair<double, double>> PlanRange(const sweep::SweepPlan& plan,
   return std::make_pair(a, b);
 }
 
+// What a YAML node holds, for a message: 'text' for a scalar, else "a list of N" or "a mapping".
+std::string GivenAs(const YAML::Node& n) {
+  if (n.IsScalar()) return "'" + n.Scalar() + "'";
+  if (n.IsSequence()) return "a list of " + std::to_string(n.size());
+  return n.IsMap() ? "a mapping" : "nothing";
+}
+
+// Why parameter `p` cannot be a map axis: a map bins a range, so the plan must give it two values
+// or more (a grid axis with one value, or a choice of one, has no range to bin).
+std::string NoRangeReason(const sweep::SweepPlan& plan, SweepParam p, const std::string& name) {
+  for (const sweep::SweepAxis& axis : plan.grid)
+    if (axis.param == p)
+      return "'" + name + "' takes the single value " + io::FormatNumber(sweep::SweepParamFromSi(p, axis.values.front())) +
+             " in the grid: a map axis needs two values or more (a list, or a from/to range)";
+  for (const sweep::SweepRandom& r : plan.random)
+    if (r.param == p)
+      return "'" + name + "' takes a single value in random: a map axis needs a range (uniform: [low, high]) or a "
+             "choice of two values or more";
+  return "'" + name + "' does not vary in this study: give it two values or more in grid or random";
+}
+
 MapAxis ReadMapAxis(const io::YamlFields& map, const std::string& key, int bins, const sweep::SweepPlan& plan) {
   const std::string name = map.String(key);
   const std::optional<SweepParam> p = sweep::SweepParamFromKey(name);
@@ -37,7 +58,7 @@ MapAxis ReadMapAxis(const io::YamlFields& map, const std::string& key, int bins,
     map.Fail(key, "must be a number parameter of a lander sweep (e.g. slope_deg, horizontal_speed_m_s), got '" +
                       name + "'");
   const auto range = PlanRange(plan, *p);
-  if (!range) map.Fail(key, "'" + name + "' does not vary in this study (set it in grid or random)");
+  if (!range) map.Fail(key, NoRangeReason(plan, *p, name));
   MapAxis axis;
   axis.param = *p;
   axis.low = range->first;
@@ -52,12 +73,15 @@ StudyMap ReadMap(const io::YamlFields& study, const sweep::SweepPlan& plan) {
   int bins[2] = {10, 10};
   if (map.Has("bins")) {
     const YAML::Node n = map.node()["bins"];
-    if (!n.IsSequence() || n.size() != 2) map.Fail("bins", "must be [x bins, y bins]");
+    if (!n.IsSequence() || n.size() != 2)
+      map.Fail("bins", "must be [x bins, y bins] (two whole numbers from 2 to " + std::to_string(kMaxBins) + "), got " +
+                           GivenAs(n));
     for (int i = 0; i < 2; ++i) {
       double v = 0.0;
       if (!n[i].IsScalar() || !YAML::convert<double>::decode(n[i], v) || v != std::floor(v) || v < 2 || v > kMaxBins)
         throw MakeInputError(map.file(), map.Path("bins") + "[" + std::to_string(i) + "]",
-                             "must be a whole number from 2 to " + std::to_string(kMaxBins));
+                             "must be a whole number from 2 to " + std::to_string(kMaxBins) + ", got " +
+                                 GivenAs(n[i]));
       bins[i] = static_cast<int>(v);
     }
   }

@@ -104,7 +104,7 @@ StudySummary Summarise(const Study& study, const std::vector<DropRecord>& record
   std::vector<const DropRecord*> ok;  // the landings that stayed up: percentiles and closest calls
   for (const DropRecord& r : records) {
     if (!r.ok) {
-      ++s.failed;
+      if (s.failed++ == 0) s.first_failure = r.drop_id + ": " + r.failure;
       continue;
     }
     ++s.landings;
@@ -161,16 +161,41 @@ nlohmann::json LandingJson(const DropRecord& r) {
 }
 
 namespace {
+// A tip-over probability with its interval; with no landing there is none, so the key is left
+// out (never null, which a reader would take for a number) and "reason" says why.
+void AddProbability(nlohmann::json& out, int64_t landings, double probability, const BinomialInterval& interval,
+                    const std::string& reason) {
+  if (landings > 0 && std::isfinite(probability)) {
+    out["tip_over_probability"] = probability;
+    out["tip_over_probability_interval_95"] = {interval.low, interval.high};
+  } else {
+    out["tip_over_probability_reason"] = reason;
+  }
+}
+
+// A metric's percentiles over `count` landings; with none, no percentile keys and a reason.
+nlohmann::json PercentilesJson(const MetricPercentiles& m) {
+  nlohmann::json out = {{"unit", m.metric->unit}, {"meaning", m.metric->meaning}, {"landings", m.count}};
+  if (m.count == 0) {
+    out["reason"] = "no completed landing that stayed up has this value";
+    return out;
+  }
+  out["p50"] = io::FiniteOrNull(m.p50);
+  out["p95"] = io::FiniteOrNull(m.p95);
+  out["p99"] = io::FiniteOrNull(m.p99);
+  out["max"] = io::FiniteOrNull(m.max);
+  return out;
+}
+
 nlohmann::json MapJson(const Study& study, const StudySummary& s) {
   if (!study.map) return nullptr;
   nlohmann::json cells = nlohmann::json::array();
-  for (const MapCell& c : s.map)
-    cells.push_back({{"x", {c.x_low, c.x_high}},
-                     {"y", {c.y_low, c.y_high}},
-                     {"landings", c.landings},
-                     {"tipped_over", c.tipped},
-                     {"tip_over_probability", io::FiniteOrNull(c.probability)},
-                     {"tip_over_probability_interval_95", {c.interval.low, c.interval.high}}});
+  for (const MapCell& c : s.map) {
+    nlohmann::json cell = {{"x", {c.x_low, c.x_high}}, {"y", {c.y_low, c.y_high}}, {"landings", c.landings},
+                           {"tipped_over", c.tipped}};
+    AddProbability(cell, c.landings, c.probability, c.interval, "no landing fell in this cell");
+    cells.push_back(cell);
+  }
   const StudyMap& m = *study.map;
   return {{"x", sweep::SweepParamKey(m.x.param)}, {"y", sweep::SweepParamKey(m.y.param)},
           {"x_range", {m.x.low, m.x.high}},       {"y_range", {m.y.low, m.y.high}},
@@ -202,15 +227,11 @@ nlohmann::json SoilModelsJson(const Study& study) {
 
 nlohmann::json SummaryJson(const Study& study, const StudySummary& s) {
   nlohmann::json percentiles = nlohmann::json::object();
-  for (const MetricPercentiles& m : s.metrics)
-    percentiles[m.metric->name] = {{"unit", m.metric->unit}, {"meaning", m.metric->meaning},
-                                   {"landings", m.count},    {"p50", io::FiniteOrNull(m.p50)},
-                                   {"p95", io::FiniteOrNull(m.p95)},   {"p99", io::FiniteOrNull(m.p99)},
-                                   {"max", io::FiniteOrNull(m.max)}};
+  for (const MetricPercentiles& m : s.metrics) percentiles[m.metric->name] = PercentilesJson(m);
   nlohmann::json worst = nlohmann::json::array(), tips = nlohmann::json::array();
   for (const DropRecord& r : s.worst_tilt) worst.push_back(LandingJson(r));
   for (const DropRecord& r : s.tip_overs) tips.push_back(LandingJson(r));
-  return {{"study", study.plan.name},
+  nlohmann::json summary = {{"study", study.plan.name},
           {"landings", s.landings},
           {"soils", SoilModelsJson(study)},
           {"landings_planned", s.planned},
@@ -229,8 +250,6 @@ nlohmann::json SummaryJson(const Study& study, const StudySummary& s) {
            "landings (and tip-overs among them) in which a pad swung more than 90 deg on its ball joint, beyond "
            "edge-on: no real joint turns so far, so their answers depend on the joints' range, which a lander "
            "without legs.cone_limit leaves free (docs/stability_studies.md, \"The pads' ball joints\")"},
-          {"tip_over_probability", io::FiniteOrNull(s.tip_over_probability)},
-          {"tip_over_probability_interval_95", {s.interval.low, s.interval.high}},
           {"interval_method", "exact binomial (Clopper-Pearson), two-sided 95 %, 2.5 % in each tail"},
           {"percentiles", percentiles},
           {"percentile_definition",
@@ -242,6 +261,11 @@ nlohmann::json SummaryJson(const Study& study, const StudySummary& s) {
           {"worst_max_tilt_meaning", "the landings that stayed up with the largest max tilt (closest calls), largest first"},
           {"tip_overs", tips},
           {"tip_overs_listed", static_cast<int64_t>(s.tip_overs.size())}};
+  const std::string none = s.failed > 0 ? "no landing completed: all " + std::to_string(s.failed) +
+                                              " failed (first: " + s.first_failure + ")"
+                                        : "no landing completed";
+  AddProbability(summary, s.landings, s.tip_over_probability, s.interval, none);
+  return summary;
 }
 
 }  // namespace touchdown::stability

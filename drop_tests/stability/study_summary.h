@@ -45,6 +45,7 @@ struct StudySummary {
   int64_t planned = 0;   // landings in the plan
   int64_t landings = 0;  // completed (the statistics are over these)
   int64_t failed = 0;    // the solver gave up (listed by `touchdown export`; not counted)
+  std::string first_failure;  // "<drop id>: <reason>" of the first failed landing, in index order
   int64_t tipped = 0;
   int64_t unsettled = 0;  // neither at rest nor tipped over at the end of the run (counted as not tipped)
   // Landings (and, of them, tip-overs) in which a pad swung past edge-on on its ball joint

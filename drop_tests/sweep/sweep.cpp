@@ -203,9 +203,14 @@ MergeSummary MergeSweepResults(const std::string& out_dir, const std::vector<std
   if (shard_dirs.empty()) throw MakeInputError("", "merge", "no shard directories given");
   std::map<std::string, std::string> reference;
   std::vector<std::unique_ptr<ResultsDb>> shards;
+  // Each shard once: a directory named twice, or two copies of one shard, would count its drops
+  // once and hide that another shard is missing from the list.
+  std::map<std::string, std::string> dir_of_path, dir_of_shard;
   for (const std::string& dir : shard_dirs) {
     const std::string path = ResultsDbPath(dir);
     if (!fs::is_regular_file(path)) throw MakeInputError(path, "", "no sweep results here");
+    if (const auto [it, fresh] = dir_of_path.emplace(fs::weakly_canonical(path).string(), dir); !fresh)
+      throw MakeInputError(dir, "", "given twice (as " + it->second + " too): list each shard directory once");
     auto db = std::make_unique<ResultsDb>(path);
     std::map<std::string, std::string> meta = db->Meta();
     if (meta.empty()) throw MakeInputError(path, "", "not a sweep results database (no meta)");
@@ -214,6 +219,9 @@ MergeSummary MergeSweepResults(const std::string& out_dir, const std::vector<std
       if (meta[key] != reference[key])
         throw MakeInputError(path, key, "differs from " + shard_dirs.front() + " ('" + meta[key] + "' vs '" +
                                             reference[key] + "'): not shards of one sweep");
+    if (const auto [it, fresh] = dir_of_shard.emplace(meta["shard"], dir); !fresh && !meta["shard"].empty())
+      throw MakeInputError(path, "shard", "holds shard " + meta["shard"] + ", as " + it->second +
+                                              " does: two copies of one shard (list each shard once)");
     shards.push_back(std::move(db));
   }
   io::OpenOutputDirectory(io::OutputTarget(out_dir, shard_dirs), io::OutputKind::kSweep);

@@ -555,18 +555,26 @@ void ReadGrid(const io::YamlFields& block, ParamClaims& claims, Loader& loader, 
   }
 }
 
+// What a YAML node holds, for a message: 'text' for a scalar, else "a list of N" or "a mapping".
+std::string GivenAs(const YAML::Node& n) {
+  if (n.IsScalar()) return "'" + n.Scalar() + "'";
+  if (n.IsSequence()) return "a list of " + std::to_string(n.size());
+  return n.IsMap() ? "a mapping" : "nothing";
+}
+
 // `probabilities: [...]` of a choice: one per value, each in [0, 1], summing to 1 (to 1e-9).
 std::vector<double> ReadProbabilities(const io::YamlFields& spec, size_t count) {
   const YAML::Node n = spec.node()["probabilities"];
   if (!n.IsSequence() || n.size() != count)
-    spec.Fail("probabilities", "must be a list of " + std::to_string(count) + " numbers, one per choice");
+    spec.Fail("probabilities", "must be a list of " + std::to_string(count) + " numbers, one per choice, got " +
+                                   GivenAs(n));
   std::vector<double> out;
   double sum = 0.0;
   for (size_t i = 0; i < count; ++i) {
     double v = 0.0;
     const std::string path = spec.Path("probabilities") + "[" + std::to_string(i) + "]";
     if (!n[i].IsScalar() || !YAML::convert<double>::decode(n[i], v) || !(v >= 0.0 && v <= 1.0))
-      throw MakeInputError(spec.file(), path, "must be a probability between 0 and 1");
+      throw MakeInputError(spec.file(), path, "must be a probability between 0 and 1, got " + GivenAs(n[i]));
     out.push_back(v);
     sum += v;
   }
@@ -598,7 +606,8 @@ void ReadRandom(const io::YamlFields& block, ParamClaims& claims, Loader& loader
   plan.samples = block.PositiveInt("samples");
   if (!block.Has("seed")) block.Fail("seed", "missing (random samples need a seed to be reproducible)");
   const double seed = block.Number("seed");
-  if (seed < 0 || seed != std::floor(seed) || seed > 9.0e15) block.Fail("seed", "must be a whole number >= 0");
+  if (seed < 0 || seed != std::floor(seed) || seed > 9.0e15)
+    block.Fail("seed", "must be a whole number from 0 to 9e15, got " + block.node()["seed"].Scalar());
   plan.seed = static_cast<uint64_t>(seed);
   for (const auto& item : block.node()) {
     const std::string key = item.first.Scalar();

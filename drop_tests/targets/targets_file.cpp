@@ -5,11 +5,13 @@
 #include <map>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 
 #include "drop_tests/io/yaml_fields.h"
 #include "drop_tests/scenario/campaign.h"
 #include "drop_tests/targets/object_edit.h"
 #include "rft/input_error.h"
+#include "rft/physical_limits.h"
 #include "rft/units.h"
 
 namespace fs = std::filesystem;
@@ -21,17 +23,41 @@ struct QuantityEntry {
   Quantity quantity;
   const char* name;
   bool lander;
+  bool signed_value;  // roll and pitch take either sign; the others are magnitudes (>= 0)
 };
 constexpr QuantityEntry kQuantities[] = {
-    {Quantity::kFinalPenetration, "final_penetration_m", false},
-    {Quantity::kPeakForce, "peak_force_N", false},
-    {Quantity::kTimeToRest, "time_to_rest_s", false},
-    {Quantity::kFinalRoll, "final_roll_deg", true},
-    {Quantity::kFinalPitch, "final_pitch_deg", true},
-    {Quantity::kMaxTilt, "max_tilt_deg", true},
-    {Quantity::kPadDepth, "pad_depth_m", true},
-    {Quantity::kPadDepthSpread, "pad_depth_spread", true},
+    {Quantity::kFinalPenetration, "final_penetration_m", false, false},
+    {Quantity::kPeakForce, "peak_force_N", false, false},
+    {Quantity::kTimeToRest, "time_to_rest_s", false, false},
+    {Quantity::kFinalRoll, "final_roll_deg", true, true},
+    {Quantity::kFinalPitch, "final_pitch_deg", true, true},
+    {Quantity::kMaxTilt, "max_tilt_deg", true, false},
+    {Quantity::kPadDepth, "pad_depth_m", true, false},
+    {Quantity::kPadDepthSpread, "pad_depth_spread", true, false},
 };
+
+const QuantityEntry& EntryOf(Quantity q) {
+  for (const QuantityEntry& e : kQuantities)
+    if (e.quantity == q) return e;
+  throw std::logic_error("a quantity without an entry in kQuantities");
+}
+
+std::string Number(double v);
+
+// A target on a magnitude, or on a ratio of two, that is negative can never be met: refused
+// rather than fitted towards (a sign slip in a ratio otherwise drives the fit to a bound).
+void RequireReachableSign(const io::YamlFields& t, const Target& out) {
+  const QuantityEntry& q = EntryOf(out.measure.quantity);
+  if (q.signed_value || (out.denominator && EntryOf(out.denominator->quantity).signed_value)) return;
+  const std::string what = out.denominator ? "a ratio of " + std::string(q.name) + " to " +
+                                                 EntryOf(out.denominator->quantity).name
+                                           : std::string(q.name);
+  const std::pair<const char*, const std::optional<double>*> given[] = {
+      {"value", &out.value}, {"at_most", &out.at_most}, {"at_least", &out.at_least}};
+  for (const auto& [key, v] : given)
+    if (*v && **v < 0.0)
+      t.Fail(key, "must be at least 0 (" + what + " is never negative), got " + Number(**v));
+}
 
 std::string KnownQuantities(bool lander) {
   std::string s;
@@ -64,6 +90,10 @@ void ReadBounds(const io::YamlFields& p, Parameter& out) {
   out.start = p.Number("start");
   if (!(out.lower < out.upper))
     p.Fail("upper", "must exceed lower (" + Number(out.lower) + "), got " + Number(out.upper));
+  // The fit works on (x - lower) / (upper - lower): a range that overflows has no such scale.
+  if (!std::isfinite(out.upper - out.lower))
+    p.Fail("upper", "upper - lower must be a finite number (at most 1.8e308), got [" + Number(out.lower) + ", " +
+                        Number(out.upper) + "]");
   if (out.start < out.lower || out.start > out.upper)
     p.Fail("start", "must lie within [lower, upper] = [" + Number(out.lower) + ", " + Number(out.upper) + "], got " +
                         Number(out.start));
@@ -91,7 +121,11 @@ Parameter ReadParameter(const io::YamlFields& p) {
     }
     out.soil_name = soil.name;
     out.soil_reference_gravity_m_s2 = soil.reference_gravity_m_s2;
-    if (!(out.lower > 0.0)) p.Fail("lower", "zeta must be positive, got " + Number(out.lower));
+    // Every value between the bounds is simulated: both must be zetas a soil file may hold.
+    for (const char* bound : {"lower", "upper"}) {
+      const double v = std::string(bound) == "lower" ? out.lower : out.upper;
+      if (!limits::Within(limits::kZeta_N_cm3, v)) p.Fail(bound, "zeta " + limits::Describe(limits::kZeta_N_cm3, v));
+    }
   } else {
     const bool pad = p.Has("pad");
     out.kind = pad ? ParameterKind::kPadField : ParameterKind::kLanderField;
@@ -266,6 +300,7 @@ Target ReadTarget(const io::YamlFields& t, ScenarioReader& reader) {
   if (!out.value && !out.at_most && !out.at_least) t.Fail("value", "missing (a value, or at_most and/or at_least)");
   if (out.at_most && out.at_least && !(*out.at_least < *out.at_most))
     t.Fail("at_most", "must exceed at_least (" + Number(*out.at_least) + "), got " + Number(*out.at_most));
+  RequireReachableSign(t, out);
   out.uncertainty = t.Positive("uncertainty");
   const std::string use = t.String("use");
   if (use != "fit" && use != "predict") t.Fail("use", "must be 'fit' or 'predict', got '" + use + "'");
@@ -288,6 +323,19 @@ void CheckUnique(const io::YamlFields& f, const std::vector<std::string>& names,
     if (!seen.insert(names[i]).second)
       f.Fail(std::string(list) + "[" + std::to_string(i) + "].name", "'" + names[i] + "' is given twice");
 }
+// Two parameters may not free the same field of the same file (`addresses`: file and field, one
+// per parameter); the message names both as the user wrote them.
+void CheckSameFieldOnce(const io::YamlFields& f, const std::vector<Parameter>& parameters,
+                        const std::vector<std::string>& addresses) {
+  std::map<std::string, size_t> seen;
+  for (size_t i = 0; i < addresses.size(); ++i) {
+    const auto [it, inserted] = seen.emplace(addresses[i], i);
+    if (!inserted)
+      f.Fail("parameters[" + std::to_string(i) + "]",
+             "'" + parameters[i].name + "' frees " + parameters[i].Address() + ", which parameters[" +
+                 std::to_string(it->second) + "] ('" + parameters[it->second].name + "') frees already");
+  }
+}
 }  // namespace
 
 TargetsFile LoadTargetsFile(const std::string& path) {
@@ -308,7 +356,7 @@ TargetsFile LoadTargetsFile(const std::string& path) {
       addresses.push_back(out.parameters.back().file + "|" + out.parameters.back().field);
     }
   CheckUnique(f, names, "parameters");
-  CheckUnique(f, addresses, "parameters");
+  CheckSameFieldOnce(f, out.parameters, addresses);
   ScenarioReader reader(out.scenarios);
   names.clear();
   for (const io::YamlFields& t : f.List("targets")) {

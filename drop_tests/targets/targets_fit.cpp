@@ -1,12 +1,15 @@
 #include "drop_tests/targets/targets_fit.h"
 
 #include <cmath>
+#include <algorithm>
 #include <exception>
+#include <limits>
 #include <memory>
 
 #include <Eigen/Dense>
 #include <boost/math/distributions/normal.hpp>
 #include <ceres/ceres.h>
+#include <glog/logging.h>
 
 #include "drop_tests/targets/target_evaluation.h"
 
@@ -20,22 +23,36 @@ namespace {
 double ToFit(const Parameter& p, double x) { return 1.0 + (x - p.lower) / (p.upper - p.lower); }
 double FromFit(const Parameter& p, double u) {
   const double range = p.upper - p.lower;
-  if (u >= 2.0) return p.upper + (u - 2.0) * range;  // exactly the bound at u = 2 (and at u = 1 below)
-  return p.lower + (u - 1.0) * range;
+  if (u >= 2.0) return p.upper;  // exactly the bound at u = 2 (and at u = 1 below)
+  return std::clamp(p.lower + (u - 1.0) * range, p.lower, p.upper);  // not past a bound by a rounding
+}
+
+// Ceres logs through glog: without InitGoogleLogging, glog prefixes its first message with
+// "WARNING: Logging before InitGoogleLogging()", and Ceres logs warnings (a failed evaluation,
+// trust_region_minimizer.cc) whatever Solver::Options::logging_type says. touchdown reports the
+// fit itself (its termination, the report), so nothing of Ceres' reaches the user: every glog
+// message below FATAL is dropped before it is formatted, and nothing goes to log files.
+void SilenceCeresLogging() {
+  FLAGS_logtostderr = false;
+  FLAGS_alsologtostderr = false;
+  FLAGS_stderrthreshold = google::GLOG_FATAL;
+  FLAGS_minloglevel = google::GLOG_FATAL;
 }
 
 // The fitted targets' residuals for Ceres. Ceres is C code at heart for errors: an exception of a
 // simulation is kept and rethrown after Solve (Ceres sees a failed evaluation and stops).
 class FitResiduals {
  public:
-  FitResiduals(const TargetsFile& file, TargetEvaluator& evaluator, std::exception_ptr& failure)
-      : file_(file), evaluator_(evaluator), failure_(failure) {}
+  FitResiduals(const TargetsFile& file, TargetEvaluator& evaluator, const TargetsFitOptions& options,
+               std::exception_ptr& failure)
+      : file_(file), evaluator_(evaluator), options_(options), failure_(failure) {}
 
-  bool operator()(double const* const* parameters, double* residuals) const {
+  bool operator()(const double* u, double* residuals) const {
     if (failure_) return false;
     try {
       std::vector<double> values(file_.parameters.size());
-      for (size_t i = 0; i < values.size(); ++i) values[i] = FromFit(file_.parameters[i], parameters[0][i]);
+      for (size_t i = 0; i < values.size(); ++i) values[i] = FromFit(file_.parameters[i], u[i]);
+      if (options_.on_evaluation) options_.on_evaluation(values);
       const std::vector<ScenarioOutcome> outcomes = evaluator_.Run(values, true);
       int k = 0;
       for (const Target& t : file_.targets)
@@ -50,7 +67,60 @@ class FitResiduals {
  private:
   const TargetsFile& file_;
   TargetEvaluator& evaluator_;
+  const TargetsFitOptions& options_;
   std::exception_ptr& failure_;
+};
+
+// The residuals and their Jacobian by differences that never leave the box u in [1, 2]: a
+// parameter's bounds are the user's statement of where the model is meaningful (a zeta below its
+// lower bound may be negative), so no simulation may run outside them. Inside the box by at least
+// one step this is Ceres' central difference, operation for operation (step |u| * relative_step,
+// at least sqrt(epsilon); (r(u + h) - r(u - h)) * (1 / h / 2)); within a step of a bound it is the
+// one-sided difference on the inner side. (ceres::NumericDiffCostFunction steps across bounds: it
+// does not know them.)
+class BoundedDifferenceCost : public ceres::CostFunction {
+ public:
+  BoundedDifferenceCost(const FitResiduals& residuals, int parameters, int outputs, double relative_step)
+      : residuals_(residuals), relative_step_(relative_step) {
+    mutable_parameter_block_sizes()->push_back(parameters);
+    set_num_residuals(outputs);
+  }
+
+  bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
+    if (!residuals_(parameters[0], residuals)) return false;
+    if (jacobians == nullptr || jacobians[0] == nullptr) return true;
+    const int n = parameter_block_sizes()[0], m = num_residuals();
+    std::vector<double> u(parameters[0], parameters[0] + n), plus(size_t(m), 0.0), minus(size_t(m), 0.0);
+    const double min_step = std::sqrt(std::numeric_limits<double>::epsilon());
+    for (int j = 0; j < n; ++j) {
+      const double centre = u[size_t(j)];
+      const double h = std::max(min_step, std::abs(centre) * relative_step_);
+      const bool up = centre + h <= kHigh, down = centre - h >= kLow;
+      double one_over_h = 1.0 / h;
+      if (up) {
+        u[size_t(j)] = centre + h;
+        if (!residuals_(u.data(), plus.data())) return false;
+      } else {
+        plus.assign(residuals, residuals + m);
+      }
+      if (down) {
+        u[size_t(j)] = centre - h;
+        if (!residuals_(u.data(), minus.data())) return false;
+      } else {
+        minus.assign(residuals, residuals + m);
+      }
+      if (up && down) one_over_h /= 2;
+      u[size_t(j)] = centre;
+      for (int i = 0; i < m; ++i) jacobians[0][i * n + j] = (plus[size_t(i)] - minus[size_t(i)]) * one_over_h;
+    }
+    return true;
+  }
+
+  static constexpr double kLow = 1.0, kHigh = 2.0;  // the box of ToFit
+
+ private:
+  const FitResiduals& residuals_;
+  double relative_step_;
 };
 
 int FittedTargets(const TargetsFile& file) {
@@ -117,19 +187,17 @@ void AddIntervals(ceres::Problem& problem, std::vector<double>& x, const Targets
   }
 }
 
-void Solve(const TargetsFile& file, TargetEvaluator& evaluator, std::vector<double>& x, TargetsFitResult& result) {
+void Solve(const TargetsFile& file, TargetEvaluator& evaluator, const TargetsFitOptions& fit_options,
+           std::vector<double>& x, TargetsFitResult& result) {
+  SilenceCeresLogging();
   std::exception_ptr failure;
-  ceres::NumericDiffOptions diff;
-  diff.relative_step_size = file.settings.relative_step;
-  auto* cost = new ceres::DynamicNumericDiffCostFunction<FitResiduals, ceres::CENTRAL>(
-      new FitResiduals(file, evaluator, failure), ceres::TAKE_OWNERSHIP, diff);
-  cost->AddParameterBlock(int(x.size()));
-  cost->SetNumResiduals(FittedTargets(file));
-  ceres::Problem problem;
+  const FitResiduals residuals(file, evaluator, fit_options, failure);
+  auto* cost = new BoundedDifferenceCost(residuals, int(x.size()), FittedTargets(file), file.settings.relative_step);
+  ceres::Problem problem;  // owns `cost`
   problem.AddResidualBlock(cost, nullptr, x.data());
   for (size_t i = 0; i < x.size(); ++i) {
-    problem.SetParameterLowerBound(x.data(), int(i), 1.0);
-    problem.SetParameterUpperBound(x.data(), int(i), 2.0);
+    problem.SetParameterLowerBound(x.data(), int(i), BoundedDifferenceCost::kLow);
+    problem.SetParameterUpperBound(x.data(), int(i), BoundedDifferenceCost::kHigh);
   }
   ceres::Solver::Options options;
   options.linear_solver_type = ceres::DENSE_QR;
@@ -173,7 +241,7 @@ TargetsFitResult FitTargets(const TargetsFile& file, const TargetsFitOptions& op
     for (ParameterResult& p : result.parameters) p.interval_note = "not fitted";
     for (size_t i = 0; i < x.size(); ++i) x[i] = file.parameters[i].start;
   } else {
-    Solve(file, evaluator, x, result);
+    Solve(file, evaluator, options, x, result);
   }
   const std::vector<ScenarioOutcome> outcomes = evaluator.Run(x, false);
   for (const Target& t : file.targets) {

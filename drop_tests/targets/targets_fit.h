@@ -5,6 +5,7 @@
 // predicted, evaluated at the result. Intervals: Ceres' covariance of the normalised residuals,
 // (J^T J)^-1 at the solution (the targets' uncertainties taken as one standard deviation, not
 // rescaled by the residuals), over the parameters not at a bound; a parameter at a bound gets none.
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -41,6 +42,9 @@ struct TargetsFitResult {
 
 struct TargetsFitOptions {
   int threads = 1;  // scenarios of one evaluation run side by side; results do not depend on it
+  // Called with the parameters (file units) of every evaluation the fit makes, derivatives'
+  // included: every one lies within the parameters' [lower, upper].
+  std::function<void(const std::vector<double>&)> on_evaluation = {};
 };
 
 // Throws integ::IntegrationFailure when a simulation fails.

@@ -348,6 +348,120 @@ void AddNewUserDefectCases(std::vector<Case>& c) {
                linked_plots("out_n4")});
 }
 
+// Two 10 x 10 x 5 mm boxes 10 mm apart: two closed shells, neither inside the other.
+std::string TwoSeparateBoxesOff() {
+  std::string v = "0 0 0\n10 0 0\n10 10 0\n0 10 0\n0 0 5\n10 0 5\n10 10 5\n0 10 5\n"
+                  "20 0 0\n30 0 0\n30 10 0\n20 10 0\n20 0 5\n30 0 5\n30 10 5\n20 10 5\n";
+  const std::vector<std::string> quads = {"0 3 2 1", "4 5 6 7", "0 1 5 4", "1 2 6 5", "2 3 7 6", "3 0 4 7"};
+  std::string f;
+  for (int offset : {0, 8})
+    for (const std::string& q : quads) {
+      int a, b, c, d;
+      std::sscanf(q.c_str(), "%d %d %d %d", &a, &b, &c, &d);
+      f += "4 " + std::to_string(a + offset) + " " + std::to_string(b + offset) + " " + std::to_string(c + offset) +
+           " " + std::to_string(d + offset) + "\n";
+    }
+  return "OFF\n16 12 0\n" + v + f;
+}
+
+// Wrong exit statuses and unclear or missing messages: file names that are not UTF-8, the
+// targets fit's bounds, messages that now name the field, the value and the valid range, and
+// inputs that were accepted silently.
+void AddMessageCases(std::vector<Case>& c) {
+  // Arguments that are not UTF-8 (the shell's printf makes the byte 0xff).
+  const std::string lander = Lander("lander: sutoh2017_lander\n" + kLanderGround + kLanderInitial);
+  const auto latin1_file = [](const std::string& name, const std::string& bytes) {
+    return [name, bytes](const fs::path& d) { std::ofstream(d / name, std::ios::binary) << bytes; };
+  };
+  c.push_back({"input path", "lander scenario file name not UTF-8", "lander \"$(printf 'l\\377.yaml')\" --out out_u1",
+               {}, latin1_file("l\xff.yaml", lander)});
+  c.push_back({"input path", "study file name not UTF-8", "stability \"$(printf 's\\377.yaml')\" --out out_u2", {},
+               latin1_file("s\xff.yaml", "schema_version: 1\ntype: stability\nlander: {scenario: lander_case_A}\n"
+                                          "grid: {slope_deg: [0, 5]}\n")});
+  c.push_back({"input path", "campaign file name not UTF-8", "campaign \"$(printf 'c\\377.yaml')\" --out out_u3", {},
+               latin1_file("c\xff.yaml", "drops:\n  - {pad: flat, soil: fjs1_lp, impact_speeds_m_s: [1.0]}\n")});
+  c.push_back({"output path", "calibrate --out name not UTF-8", "calibrate ds_u4 --out \"$(printf 'm\\377.yaml')\"",
+               Dataset("ds_u4", kDropsHeader + "d0,flat,fjs1_lp,vacuum,1.0,1.6,9.81,t.csv\n")});
+  // calibrate --targets.
+  const std::string target = "targets: [{name: d, drop: {pad: flat, soil: fjs1_lp, speed_m_s: 1}, quantity: "
+                             "final_penetration_m, value: 0.01, uncertainty: 0.001, use: fit, source: s}]\n";
+  const std::string zeta = "parameters: [{name: z, soil: fjs1_lp, field: zeta_N_cm3, lower: 1, upper: 8, start: 3, "
+                           "source: s}]\n";
+  const std::string head = "schema_version: 1\ntype: targets\n";
+  c.push_back({"targets YAML", "upper 1e300", "calibrate --targets t_huge.yaml --out t5.yaml",
+               {{"t_huge.yaml", head + "parameters: [{name: z, soil: fjs1_lp, field: zeta_N_cm3, lower: 1, "
+                                       "upper: 1e300, start: 3, source: s}]\n" + target}}});
+  c.push_back({"targets YAML", "one field freed by two parameters", "calibrate --targets t_twice.yaml --out t6.yaml",
+               {{"t_twice.yaml", head + "parameters: [{name: z, soil: fjs1_lp, field: zeta_N_cm3, lower: 1, upper: 8, "
+                                        "start: 3, source: s}, {name: z2, soil: fjs1_lp, field: zeta_N_cm3, lower: 1, "
+                                        "upper: 8, start: 3, source: s}]\n" + target}}});
+  c.push_back({"targets YAML", "negative ratio target", "calibrate --targets t_ratio.yaml --out t7.yaml",
+               {{"t_ratio.yaml", head + zeta + "targets: [{name: r, ratio: {numerator: {drop: {pad: flat, soil: fjs1_lp, "
+                                               "speed_m_s: 1}, quantity: peak_force_N}, denominator: {drop: {pad: flat, "
+                                               "soil: fjs1_lp, speed_m_s: 2}, quantity: peak_force_N}}, value: -0.5, "
+                                               "uncertainty: 0.1, use: fit, source: s}]\n"}}});
+  c.push_back({"targets YAML", "fit pressed against a lower bound of 4, relative_step 0.1 (stays within the bounds)",
+               "calibrate --targets t_edge.yaml --out t8.yaml",
+               {{"t_edge.yaml", head + "fit: {relative_step: 0.1}\nparameters: [{name: z, soil: fjs1_lp, field: "
+                                       "zeta_N_cm3, lower: 4, upper: 52, start: 4.2, source: s}]\n" +
+                                       "targets: [{name: d, drop: {pad: flat, soil: fjs1_lp, speed_m_s: 1}, quantity: "
+                                       "final_penetration_m, value: 0.05, uncertainty: 0.0001, use: fit, source: s}]\n"}}});
+  c.push_back({"CLI flag", "calibrate --report without --targets", "calibrate ds_u8 --out ds_u8.yaml --report r.json",
+               Dataset("ds_u8", kDropsHeader + "d0,flat,fjs1_lp,vacuum,1.0,1.6,9.81,t.csv\n")});
+  // Messages naming the field, the value and the valid range.
+  const std::string lander_sweep = "lander: {scenario: lander_case_A}\n";
+  const std::string study = "schema_version: 1\ntype: stability\n" + lander_sweep;
+  c.push_back({"sweep YAML", "random seed 1e20", "sweep seed_big.yaml --threads 1 --progress lines --out out_u9",
+               {{"seed_big.yaml", Sweep(kSweepBase + "random: {samples: 2, seed: 1e20, impact_speed_m_s: {uniform: "
+                                                     "[0.5, 2]}}\n")}}});
+  c.push_back({"study YAML", "map.bins [1, 300]", "stability bins.yaml --out out_u10",
+               {{"bins.yaml", study + "grid: {slope_deg: [0, 5], roll_deg: [0, 5]}\n"
+                                      "study: {map: {x: slope_deg, y: roll_deg, bins: [1, 300]}}\n"}}});
+  c.push_back({"study YAML", "map.bins: 5 (not a pair)", "stability bins5.yaml --out out_u11",
+               {{"bins5.yaml", study + "grid: {slope_deg: [0, 5], roll_deg: [0, 5]}\n"
+                                       "study: {map: {x: slope_deg, y: roll_deg, bins: 5}}\n"}}});
+  c.push_back({"sweep YAML", "choice probabilities: three for two values",
+               "sweep probs.yaml --threads 1 --progress lines --out out_u12",
+               {{"probs.yaml", Sweep(kSweepBase + "random: {samples: 2, seed: 1, impact_speed_m_s: {choice: [1, 2], "
+                                                  "probabilities: [0.2, 0.3, 0.5]}}\n")}}});
+  c.push_back({"sweep YAML", "choice probability 1.5", "sweep prob15.yaml --threads 1 --progress lines --out out_u13",
+               {{"prob15.yaml", Sweep(kSweepBase + "random: {samples: 2, seed: 1, impact_speed_m_s: {choice: [1, 2], "
+                                                   "probabilities: [1.5, -0.5]}}\n")}}});
+  c.push_back({"study YAML", "map over a one-value grid axis", "stability one_value.yaml --out out_u14",
+               {{"one_value.yaml", study + "grid: {slope_deg: [5], roll_deg: [0, 5]}\n"
+                                           "study: {map: {x: slope_deg, y: roll_deg}}\n"}}});
+  c.push_back({"lander YAML", "a Bekker soil patch on an RFT (li2013) ground", "lander bekker_patch.yaml --out out_u15",
+               {{"bekker_patch.yaml", Lander("lander: sutoh2017_lander\nground: {soil: fjs1_lp, patches: [{soil: "
+                                             "soft_sand_bekker, rectangle_m: [-1, -1, 0, 1]}]}\n" + kLanderInitial)}}});
+  c.push_back({"synth YAML", "unknown pad in drops[1]", "synth pad.synth.yaml --out out_u16",
+               {{"pad.synth.yaml", "schema_version: 1\ntype: synth\nseed: 1\ndrops:\n"
+                                   "  - {pads: [flat], soils: [fjs1_lp], impact_speeds_m_s: [1.0]}\n"
+                                   "  - {pads: [hexagon], soils: [fjs1_lp], impact_speeds_m_s: [1.0]}\n"}}});
+  c.push_back({"synth YAML", "the same drop made twice", "synth twice.synth.yaml --out out_u17",
+               {{"twice.synth.yaml", "schema_version: 1\ntype: synth\nseed: 1\ndrops:\n"
+                                     "  - {pads: [flat], soils: [fjs1_lp], impact_speeds_m_s: [1.0]}\n"
+                                     "  - {pads: [flat], soils: [fjs1_lp], impact_speeds_m_s: [1.0]}\n"}}});
+  c.push_back({"synth YAML", "a drop that never stops (true zeta 1e-6)", "synth stuck.synth.yaml --out out_u18",
+               {{"stuck.synth.yaml", "schema_version: 1\ntype: synth\nseed: 1\ntrue_zeta_N_cm3: {fjs1_lp: 0.000001}\n"
+                                     "drops:\n  - {pads: [flat], soils: [fjs1_lp], impact_speeds_m_s: [1.0]}\n"}}});
+  // Accepted silently before.
+  const std::string ground = "lander: sutoh2017_lander\n" + kLanderInitial;
+  c.push_back({"lander YAML", "patches: []", "lander no_patches.yaml --out out_u19",
+               {{"no_patches.yaml", Lander(ground + "ground: {soil: fjs1_lp, patches: []}\n")}}});
+  c.push_back({"lander YAML", "patch polygon crossing itself (bow tie)", "lander bow_tie.yaml --out out_u20",
+               {{"bow_tie.yaml", Lander(ground + "ground: {soil: fjs1_lp, patches: [{soil: fjs1_cp, "
+                                                 "polygon_m: [[0, 0], [1, 1], [1, 0], [0, 1]]}]}\n")}}});
+  c.push_back({"lander YAML", "patch polygon with no area (corners on a line)", "lander flat_polygon.yaml --out out_u21",
+               {{"flat_polygon.yaml", Lander(ground + "ground: {soil: fjs1_lp, patches: [{soil: fjs1_cp, "
+                                                      "polygon_m: [[0, 0], [1, 1], [2, 2]]}]}\n")}}});
+  c.push_back({"mesh", "two separate boxes (two shells)", "force --pad two_shells.yaml --soil fjs1_lp --depth 0.002",
+               {{"two_shells.yaml", MeshPad("two_shells.off")}, {"two_shells.off", TwoSeparateBoxesOff()}}});
+  c.push_back({"sweep results", "merge the same shard twice", "merge out_w9 ./out_w9 --out out_u23"});
+  c.push_back({"study YAML", "every landing fails (--max-drop-evaluations 20)",
+               "stability all_fail.yaml --max-drop-evaluations 20 --threads 1 --progress none --out out_u24",
+               {{"all_fail.yaml", study + "grid: {slope_deg: [0, 5]}\n"}}});
+}
+
 std::vector<Case> Cases() {
   std::vector<Case> c;
   // Pad YAML.
@@ -620,6 +734,7 @@ std::vector<Case> Cases() {
                  {{"t_lander.yaml", "schema_version: 1\ntype: targets\ntargets: [{name: r, lander: lander_case_Q, quantity: "
                                     "final_roll_deg, value: 0, uncertainty: 1, use: fit, source: s}]\n"}}});
   }
+  AddMessageCases(c);
   return c;
 }
 

@@ -141,11 +141,23 @@ TEST_F(StabilityCli, MaxDropEvaluationsFailsLandingsThatARerunWithAHigherLimitRu
   const std::string out = Path("limited");
   const StabilityRun limited = Run({"stability", study, "--out", out, "--max-drop-evaluations", "20",
                                     "--threads", "1", "--progress", "none"});
-  ASSERT_EQ(limited.status, 0) << limited.err;
+  // Every landing failed: no answer, exit 3 naming the first failure; the outputs are written.
+  EXPECT_EQ(limited.status, 3) << limited.err;
+  EXPECT_NE(limited.err.find("all 2 landings failed, so there is no tip-over probability (first: "), std::string::npos)
+      << limited.err;
+  EXPECT_TRUE(limited.out.empty()) << limited.out;
   nlohmann::json j = nlohmann::json::parse(Slurp(std::filesystem::path(out) / "summary.json"));
   EXPECT_EQ(j["landings"], 0);
   EXPECT_EQ(j["landings_failed"], 2);
-  EXPECT_TRUE(j["tip_over_probability"].is_null());
+  // No number is written as null: the probability and the percentiles are absent, with a reason.
+  EXPECT_FALSE(j.contains("tip_over_probability"));
+  EXPECT_NE(j["tip_over_probability_reason"].get<std::string>().find("all 2 failed (first: "), std::string::npos);
+  EXPECT_FALSE(j["percentiles"]["max_tilt_deg"].contains("p50"));
+  EXPECT_EQ(j["percentiles"]["max_tilt_deg"]["landings"], 0);
+  for (const nlohmann::json& cell : j["map"]["cells"]) {  // no landing in any cell
+    EXPECT_FALSE(cell.contains("tip_over_probability")) << cell.dump();
+    EXPECT_EQ(cell["tip_over_probability_reason"], "no landing fell in this cell");
+  }
   const StabilityRun rerun = Run({"stability", study, "--out", out, "--threads", "1", "--progress", "none"});
   ASSERT_EQ(rerun.status, 0) << rerun.err;
   EXPECT_NE(rerun.out.find("2 landings run now, 0 already done"), std::string::npos) << rerun.out;

@@ -226,12 +226,14 @@ TEST(MeshDefects, SelfIntersectionIsRefused) {
   const PolygonSoup two = testing::Union(TriangulatedBox(), TriangulatedBox(1, 1, 1, {0.5, 0.5, 0.5}));
   const std::string message = DefectOf(two);
   EXPECT_NE(message.find("pad.stl: mesh intersects itself ("), std::string::npos) << message;
-  // Two separate boxes are a valid (two-piece) pad.
-  EXPECT_EQ(DefectOf(testing::Union(TriangulatedBox(), TriangulatedBox(1, 1, 1, {2, 0, 0}))), "(no error)");
+  // Two separate boxes are two solids, not one pad.
+  EXPECT_EQ(DefectOf(testing::Union(TriangulatedBox(), TriangulatedBox(1, 1, 1, {2, 0, 0}))),
+            "pad.stl: 2 separate closed shells (a pad must be one connected solid: join the pieces, or make each its "
+            "own pad)");
 }
 
 // Issue 13: a box inside a box added the inner shell's surface to the contact (15 % more
-// submerged area); a pad must be one solid. Boxes side by side stay valid (above).
+// submerged area); a pad must be one solid. Boxes side by side are refused too (above).
 TEST(MeshDefects, NestedShellsAreRefused) {
   const PolygonSoup nested = testing::Union(TriangulatedBox(1, 1, 1), TriangulatedBox(0.5, 0.5, 0.5, {0.25, 0.25, 0.25}));
   EXPECT_EQ(DefectOf(nested), "pad.stl: 1 closed shell lies inside another (a pad must be one solid, not nested shells)");

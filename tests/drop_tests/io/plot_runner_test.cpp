@@ -154,19 +154,55 @@ TEST_F(PlotRunnerTest, RelativeDirectoryWorks) {
   EXPECT_EQ(PngProblem(dir_ / "plots" / "a.png"), "");
 }
 
-TEST_F(PlotRunnerTest, ScriptErrorIsAnExternalProgramErrorNotAnInputError) {
+// gnuplot failing is, on a user's machine, gnuplot's installation failing (every script is
+// rendered by the test suite): exit 2 with gnuplot's own first error line, on one line.
+TEST_F(PlotRunnerTest, GnuplotErrorIsAnInputErrorWithItsFirstErrorLine) {
   try {
-    RenderPlots(dir_, {"plots/bad.gp", "set output 'plots/b.png'\nplot \n", {"plots/b.png"}});
-    FAIL() << "an invalid script passed";
+    RenderPlots(dir_, {"plots/bad.gp", "set terminal nosuchterminal\nset output 'plots/b.png'\nplot x\n", {"plots/b.png"}});
+    FAIL() << "a failing gnuplot passed";
   } catch (const InputError& e) {
-    FAIL() << "a script error is touchdown's bug (exit 1), not the user's: " << e.what();
-  } catch (const ExternalProgramError& e) {
     const std::string what = e.what();
-    EXPECT_EQ(e.program(), "gnuplot");
-    EXPECT_NE(what.find("gnuplot exited with status 1"), std::string::npos) << what;
-    EXPECT_NE(what.find("plots/bad.gp"), std::string::npos) << what;
+    EXPECT_NE(what.find("plots/bad.gp: gnuplot exited with status 1"), std::string::npos) << what;
+    EXPECT_NE(what.find("line 1: unknown or ambiguous terminal type"), std::string::npos) << what;
+    EXPECT_NE(what.find("log: plots/gnuplot.log"), std::string::npos) << what;
     EXPECT_EQ(what.find('\n'), std::string::npos) << what;
   }
+  EXPECT_TRUE(fs::exists(dir_ / "plots" / "gnuplot.log"));  // kept for the user
+}
+
+// A gnuplot that starts but fails on this machine (here a stand-in on the PATH that prints two
+// lines and exits 1; the same for one killed by a signal): the first line is the one shown.
+TEST_F(PlotRunnerTest, BrokenGnuplotInstallationIsAnInputErrorNamingItsFirstLine) {
+  const fs::path bin = root_ / "broken_bin";
+  fs::create_directories(bin);
+  std::ofstream(bin / "gnuplot") << "#!/bin/sh\necho 'Could not find/open font when opening font \"sans\"' >&2\n"
+                                    "echo 'second line' >&2\nexit 1\n";
+  fs::permissions(bin / "gnuplot", fs::perms::owner_all);
+  const std::string path = std::getenv("PATH") ? std::getenv("PATH") : "";
+  ::setenv("PATH", (bin.string() + ":" + path).c_str(), 1);
+  std::string message;
+  try {
+    RenderPlots(dir_, {"plots/a.gp", kFigure, {"plots/a.png"}});
+  } catch (const InputError& e) {
+    message = e.what();
+  } catch (const std::exception& e) {
+    message = std::string("not an InputError: ") + e.what();
+  }
+  // Killed: a stand-in that kills itself.
+  std::ofstream(bin / "gnuplot", std::ios::trunc) << "#!/bin/sh\nkill -9 $$\n";
+  std::string killed;
+  try {
+    RenderPlots(dir_, {"plots/a.gp", kFigure, {"plots/a.png"}});
+  } catch (const InputError& e) {
+    killed = e.what();
+  } catch (const std::exception& e) {
+    killed = std::string("not an InputError: ") + e.what();
+  }
+  ::setenv("PATH", path.c_str(), 1);
+  EXPECT_EQ(message.find("not an InputError"), std::string::npos) << message;
+  EXPECT_NE(message.find("gnuplot exited with status 1: Could not find/open font"), std::string::npos) << message;
+  EXPECT_EQ(message.find("second line"), std::string::npos) << message;
+  EXPECT_NE(killed.find("plots/a.gp: gnuplot was killed by signal 9"), std::string::npos) << killed;
 }
 
 TEST_F(PlotRunnerTest, OutputNotWrittenIsAnInputErrorNamingTheFile) {

@@ -104,7 +104,10 @@ TEST_F(StudySummaryTest, CountsProbabilityAndPercentilesOfHandMadeRecords) {
   EXPECT_EQ(j["landings"], 9);
   EXPECT_EQ(j["tip_over_probability_interval_95"][0].get<double>(), expected.low);
   EXPECT_EQ(j["percentiles"]["max_tilt_deg"]["p50"].get<double>(), 4.0);
-  EXPECT_TRUE(j["percentiles"]["max_absorber_stroke_m"]["p50"].is_null());  // no stroke recorded
+  // No stroke recorded: no percentile keys (never null), the count and a reason.
+  EXPECT_FALSE(j["percentiles"]["max_absorber_stroke_m"].contains("p50"));
+  EXPECT_EQ(j["percentiles"]["max_absorber_stroke_m"]["landings"], 0);
+  EXPECT_TRUE(j["percentiles"]["max_absorber_stroke_m"]["reason"].is_string());
   EXPECT_EQ(j["tip_overs"].size(), 2u);
   EXPECT_EQ(j["worst_max_tilt"][0]["conditions"]["slope_deg"].get<double>(), 16.0);
   EXPECT_EQ(j["samples_overridden"], false);

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -163,6 +164,30 @@ TEST_F(TargetsFit, AParameterPushedPastItsBoundStaysThereWithoutAnInterval) {
   const nlohmann::json report = TargetsReportJson(file, fit);
   EXPECT_EQ(report["parameters"][0]["at_bound"], "lower");
   EXPECT_FALSE(report["parameters"][0].contains("interval"));
+}
+
+// The bounds are where the model means something: no evaluation of the fit, the differences of
+// its derivatives included, runs outside them, even with the largest step (a tenth of u in [1, 2],
+// which stepped a zeta bounded below by 4 to -0.78) and a solution pressed against the lower bound.
+TEST_F(TargetsFit, NoEvaluationLeavesTheBounds) {
+  const double deep = RigDropAtZeta("flat", "fjs1_lp", 0.5).result.final_penetration_m;  // needs zeta 0.5 < lower
+  const TargetsFile file = LoadTargetsFile(Write(
+      "bounded.yaml", "schema_version: 1\ntype: targets\nname: t\nfit: {relative_step: 0.1}\nparameters:\n"
+                      "  - {name: zeta_lp, soil: fjs1_lp, field: zeta_N_cm3, lower: 4.0, upper: 52.0, start: 5.0, "
+                      "source: test}\ntargets:\n" +
+                          DropTarget("deep", "flat", "fjs1_lp", "final_penetration_m",
+                                     "value: " + Num(deep) + ", uncertainty: 1e-4")));
+  std::vector<double> evaluated;
+  TargetsFitOptions options;
+  options.on_evaluation = [&](const std::vector<double>& values) { evaluated.push_back(values.at(0)); };
+  const TargetsFitResult fit = FitTargets(file, options);
+  ASSERT_GT(evaluated.size(), 3u);
+  for (double zeta : evaluated) {
+    EXPECT_GE(zeta, 4.0);
+    EXPECT_LE(zeta, 52.0);
+  }
+  EXPECT_EQ(fit.parameters[0].value, 4.0);
+  EXPECT_EQ(fit.parameters[0].at_bound, ParameterResult::Bound::kLower);
 }
 
 TEST_F(TargetsFit, ResultsDoNotDependOnThreads) {
