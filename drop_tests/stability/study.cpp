@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "drop_tests/drop/drop_request.h"
 #include "drop_tests/io/dataset_csv.h"
 #include "drop_tests/io/yaml_fields.h"
 #include "rft/input_error.h"
@@ -75,6 +76,11 @@ int ReadCount(const io::YamlFields& study, const std::string& key, int fallback)
 }  // namespace
 
 Study LoadStudy(const std::string& path, const std::string& model_override, std::optional<int64_t> samples_override) {
+  return LoadStudy(path, model_override, samples_override, drop::RequestNaming{"", true});
+}
+
+Study LoadStudy(const std::string& path, const std::string& model_override, std::optional<int64_t> samples_override,
+                const drop::RequestNaming& naming) {
   Study study;
   study.plan = sweep::LoadSweepPlan(path, model_override);
   const io::YamlFields f = io::YamlFields::LoadFile(path);
@@ -83,9 +89,9 @@ Study LoadStudy(const std::string& path, const std::string& model_override, std:
   study.samples_in_file = study.plan.samples;
   if (samples_override) {
     if (study.plan.random.empty())
-      throw MakeInputError("", "--samples", "the study " + path + " has no random block whose samples it could set");
+      throw MakeInputError(naming.context, naming.Field("samples"), "the study " + path + " has no random block whose samples it could set");
     if (*samples_override < 1 || *samples_override > (int64_t{1} << 40))
-      throw MakeInputError("", "--samples", "must be a whole number from 1 to 2^40, got " +
+      throw MakeInputError(naming.context, naming.Field("samples"), "must be a whole number from 1 to 2^40, got " +
                                                 std::to_string(*samples_override));
     study.plan.samples = *samples_override;
     study.samples_override = samples_override;

@@ -206,7 +206,7 @@ MergeSummary MergeSweepResults(const std::string& out_dir, const std::vector<std
   for (const std::string& dir : shard_dirs) {
     const std::string path = ResultsDbPath(dir);
     if (!fs::is_regular_file(path)) throw MakeInputError(path, "", "no sweep results here");
-    auto db = std::make_unique<ResultsDb>(path);
+    auto db = std::make_unique<ResultsDb>(path, ResultsDb::Access::kReadOnly);  // a shard may sit on read-only storage
     std::map<std::string, std::string> meta = db->Meta();
     if (meta.empty()) throw MakeInputError(path, "", "not a sweep results database (no meta)");
     if (reference.empty()) reference = meta;
