@@ -356,25 +356,32 @@ std::string FileUri(const std::string& path, const std::string& query) {
   return uri + "?" + query;
 }
 
-// How a reader opens the file. SQLite reads a WAL database through a -shm index beside it, which
-// it must be able to create; where it cannot (the directory not writable: read-only storage, or
-// another user's) and no -wal file holds commits, the file alone is the whole database and is
-// opened immutable (no -shm, no locks; nobody can write there either). Otherwise read-only: a
-// -wal file's commits are read, and a writer running there is waited for.
-std::string ReadOnlyUri(const std::string& path) {
+// How a reader opens the file: read-write where this process may write the file and its directory
+// (query_only then keeps the reader from writing; SQLite's -wal and -shm files come and go as for
+// any connection, the last to close removing them), else read-only storage: SQLITE_OPEN_READONLY. There
+// SQLite reads a WAL database through a -shm index it must create beside the file; where it
+// cannot (the directory not writable) and no -wal file holds commits, the file alone is the whole
+// database and is opened immutable (no -shm, no locks; nobody can write there either).
+struct ReaderOpen {
+  std::string uri;
+  int flags;
+};
+ReaderOpen HowReaderOpens(const std::string& path) {
   const std::filesystem::path file(path);
   const std::filesystem::path dir = file.has_parent_path() ? file.parent_path() : std::filesystem::path(".");
+  const bool writable_dir = ::access(dir.c_str(), W_OK) == 0;
+  if (writable_dir && ::access(path.c_str(), W_OK) == 0) return {FileUri(path, "mode=rw"), SQLITE_OPEN_READWRITE};
   std::error_code ec;
   const bool wal = std::filesystem::exists(path + "-wal", ec);
-  const bool writable_dir = ::access(dir.c_str(), W_OK) == 0;
-  return FileUri(path, !wal && !writable_dir ? "immutable=1" : "mode=ro");
+  return {FileUri(path, !wal && !writable_dir ? "mode=ro&immutable=1" : "mode=ro"), SQLITE_OPEN_READONLY};
 }
 }  // namespace
 
 ResultsDb::ResultsDb(const std::string& path, Access access) : path_(path) {
   const bool read_only = access == Access::kReadOnly;
-  const std::string name = read_only ? ReadOnlyUri(path) : path;
-  const int flags = read_only ? SQLITE_OPEN_READONLY | SQLITE_OPEN_URI : SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE;
+  const ReaderOpen reader = read_only ? HowReaderOpens(path) : ReaderOpen{};
+  const std::string& name = read_only ? reader.uri : path;
+  const int flags = read_only ? reader.flags | SQLITE_OPEN_URI : SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE;
   if (const int rc = sqlite3_open_v2(name.c_str(), &db_, flags | SQLITE_OPEN_NOMUTEX, nullptr); rc != SQLITE_OK) {
     const std::string message = db_ ? sqlite3_errmsg(db_) : "out of memory";
     sqlite3_close(db_);
@@ -423,7 +430,7 @@ void ResultsDb::AdaptTables() {
   auto has_table = [&](const char* t) { return std::find(tables.begin(), tables.end(), t) != tables.end(); };
   if (!has_table("meta")) Exec(MetaTableSql("TEMP TABLE"));
   if (!has_table("traces")) Exec(TracesTableSql("TEMP TABLE"));
-  if (!has_table("drops")) return Exec(DropsTableSql("TEMP TABLE"));
+  if (!has_table("drops")) return Exec(DropsTableSql("TEMP TABLE") + ";PRAGMA query_only=1");
   std::vector<std::string> present;
   {
     Statement info(db_, "PRAGMA main.table_info(drops)");
@@ -439,6 +446,7 @@ void ResultsDb::AdaptTables() {
     view += ", " + (has ? c.name : c.value_when_absent + " AS " + c.name);
   }
   if (!complete) Exec(view + " FROM main.drops");
+  Exec("PRAGMA query_only=1");  // whichever way the file was opened, this connection writes nothing
 }
 
 ResultsDb::~ResultsDb() { sqlite3_close(db_); }

@@ -130,8 +130,9 @@ std::vector<DropRecord> DeserializeRecords(const std::string& bytes);
 class ResultsDb {
  public:
   // kReadWrite: a sweep's own database, created if needed and brought up to this format.
-  // kReadOnly: a reader's (export, merge's shards): nothing is written, so results on read-only
-  // storage can be read; an older format reads through the same columns, the newer ones NULL or ''.
+  // kReadOnly: a reader's (export, merge's shards): nothing is written (PRAGMA query_only; opened
+  // SQLITE_OPEN_READONLY where the file or its directory may not be written), so results on
+  // read-only storage can be read; an older format reads with the newer columns NULL or ''.
   enum class Access { kReadWrite, kReadOnly };
   // Opens the database file. Throws InputError when SQLite cannot use it, std::runtime_error on
   // other SQLite errors.

@@ -47,14 +47,24 @@ def _results_db(path):
     return path
 
 
-def _read_only_uri(path):
-    """The database opened read-only, as the command line's readers open it (ResultsDb, kReadOnly).
-    SQLite reads a WAL database through a -shm index it must be able to create beside the file;
-    where it cannot (the directory not writable: read-only storage) and no -wal file holds commits,
-    the file alone is the whole database and is opened immutable."""
+def _connect_reader(path):
+    """The database opened as the command line's readers open it (ResultsDb::Access::kReadOnly),
+    writing nothing: where this process may write the file and its directory, read-write with
+    query_only (SQLite's -wal and -shm files come and go as for any connection); else read-only
+    storage, mode=ro. There SQLite reads a WAL database through a -shm index it must create beside
+    the file; where it cannot (the directory not writable) and no -wal file holds commits, the file
+    alone is the whole database and is opened immutable."""
     directory = os.path.dirname(path) or "."
-    immutable = not os.path.exists(path + "-wal") and not os.access(directory, os.W_OK)
-    return "file:" + urllib.parse.quote(os.path.abspath(path)) + ("?immutable=1" if immutable else "?mode=ro")
+    writable_dir = os.access(directory, os.W_OK)
+    if writable_dir and os.access(path, os.W_OK):
+        mode = "mode=rw"
+    elif not writable_dir and not os.path.exists(path + "-wal"):
+        mode = "mode=ro&immutable=1"
+    else:
+        mode = "mode=ro"
+    db = sqlite3.connect("file:" + urllib.parse.quote(os.path.abspath(path)) + "?" + mode, uri=True)
+    db.execute("PRAGMA query_only=1")
+    return db
 
 
 def read_sweep(path, traces=False):
@@ -68,7 +78,7 @@ def read_sweep(path, traces=False):
     pd = _pandas()
     path = _results_db(path)
     try:
-        db = sqlite3.connect(_read_only_uri(path), uri=True)
+        db = _connect_reader(path)
         try:
             drops = pd.read_sql_query("SELECT * FROM drops ORDER BY drop_index", db)
             drops.attrs["meta"] = dict(db.execute("SELECT key, value FROM meta").fetchall())
