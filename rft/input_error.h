@@ -12,18 +12,6 @@ class InputError : public std::runtime_error {
   explicit InputError(const std::string& message) : std::runtime_error(message) {}
 };
 
-// An input file the OS would not open (rft/input_file.h), with the OS's error number, so a caller
-// that tells such errors apart (the Python module: FileNotFoundError, PermissionError) need not
-// parse the message.
-class InputFileError : public InputError {
- public:
-  InputFileError(const std::string& message, int os_error) : InputError(message), os_error_(os_error) {}
-  int os_error() const { return os_error_; }
-
- private:
-  int os_error_;
-};
-
 // "file: field: message (value)" - the single shape every input error takes.
 inline InputError MakeInputError(const std::string& file, const std::string& field,
                                  const std::string& message) {

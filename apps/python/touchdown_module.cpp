@@ -42,6 +42,7 @@
 #include "drop_tests/validation/validate.h"
 #include "lander/integ/cvode_integrator.h"
 #include "rft/input_error.h"
+#include "rft/input_file.h"
 #include "rft/physical_limits.h"
 
 namespace py = pybind11;
@@ -269,6 +270,7 @@ std::string Calibrate(const std::string& measured, const std::string& out, const
   if (!(confidence >= 0.5 && confidence <= 0.9999))
     throw MakeInputError("touchdown.calibrate", "confidence", "must be between 0.5 and 0.9999, got " + std::to_string(confidence));
   r.soil = soil, r.pad = pad, r.shear_from = shear_from;
+  r.naming = {"touchdown.calibrate", false};
   py::gil_scoped_release unlocked;
   return dataset::CalibrationJson(dataset::RunCalibration(r)).dump(2);
 }
@@ -278,7 +280,8 @@ std::string CalibrateTargets(const std::string& targets_file, const std::string&
                              const py::object& threads_arg, bool evaluate_only) {
   const int threads = ThreadsArgument(threads_arg, "touchdown.calibrate_targets");
   py::gil_scoped_release unlocked;
-  const targets::TargetsCalibration c = targets::RunTargetsCalibration({targets_file, out, report, threads, evaluate_only});
+  const targets::TargetsCalibration c = targets::RunTargetsCalibration(
+      {targets_file, out, report, threads, evaluate_only, {"touchdown.calibrate_targets", false}});
   return targets::TargetsReportJson(c.file, c.fit).dump(2);
 }
 
