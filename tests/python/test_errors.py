@@ -67,7 +67,7 @@ def test_samples_out_of_range_names_the_python_argument(tmp_path):
     study = tmp_path / "study.yaml"
     study.write_text("schema_version: 1\ntype: stability\nname: mc\n"
                      f"lander: {{scenario: {data_file('scenarios', 'lander_case_A.yaml')}}}\n"
-                     "samples: 4\nseed: 1\nrandom: {impact_speed_m_s: {uniform: [0.5, 1.0]}}\n")
+                     "random: {samples: 4, seed: 1, impact_speed_m_s: {uniform: [0.5, 1.0]}}\n")
     with pytest.raises(ValueError, match=r"^touchdown\.stability: samples: must be a whole number from 1 to 2\^40, got 0$"):
         touchdown.stability(study, tmp_path / "out", samples=0)
     grid = _study(tmp_path / "grid.yaml", "[0.8]")
@@ -182,7 +182,7 @@ def _stored_landings(db_path):
 
 
 def test_ctrl_c_stops_a_study_keeping_the_committed_landings(tmp_path):
-    study = _study(tmp_path / "study.yaml", "[" + ", ".join(f"{0.5 + 0.01 * k:.2f}" for k in range(60)) + "]")
+    study = _study(tmp_path / "study.yaml", "[" + ", ".join(f"{0.5 + 0.01 * k:.2f}" for k in range(30)) + "]")
     out = tmp_path / "out"
     child = subprocess.Popen([sys.executable, "-c", textwrap.dedent(f"""
         import touchdown
@@ -206,8 +206,8 @@ def test_ctrl_c_stops_a_study_keeping_the_committed_landings(tmp_path):
     assert child.returncode == 130 and stdout.strip() == "KeyboardInterrupt", stderr
     assert stopped_after < 10  # the landing in flight, not the study's other ones
     landings = _stored_landings(out / "results.sqlite")
-    assert 0 < landings < 60
+    assert 0 < landings < 30
     assert not (out / "summary.json").exists()  # no analysis of a stopped study
     # A rerun resumes from what was committed.
     result = touchdown.stability(study, out, threads=2)
-    assert result.summary["landings"] == 60
+    assert result.summary["landings"] == 30
