@@ -28,7 +28,7 @@ struct CalibrateArgs {
 // zeta, the report every parameter and target.
 void CalibrateTargets(const CalibrateArgs& args) {
   const targets::TargetsCalibration c =
-      targets::RunTargetsCalibration({args.targets, args.out, args.report, args.threads, args.evaluate_only});
+      targets::RunTargetsCalibration({args.targets, args.out, args.report, args.threads, args.evaluate_only, {}});
   std::cout << targets::TargetsReportTable(c.file, c.fit) << "wrote " << args.out
             << (args.report.empty() ? "" : " and " + args.report) << "\n";
 }

@@ -9,6 +9,7 @@
 #include "apps/commands.h"
 #include "drop_tests/io/output_path.h"
 #include "drop_tests/gap/diagnose.h"
+#include "rft/physical_limits.h"
 
 namespace touchdown::app {
 
@@ -28,7 +29,7 @@ void AddDiagnoseCommand(CLI::App& app) {
   cmd->add_option("--model", args->model, "model file whose zeta per soil starts the calibration");
   cmd->add_option("--out", args->out, "output directory: new, empty, or an earlier output of this command (replaced whole when complete)")->required();
   cmd->add_option("--threads", args->threads, "threads (default: all cores)")
-      ->check(CLI::Range(0, 4096));
+      ->check(CLI::Range(0, limits::kMaxThreads));
   cmd->add_flag("--no-pairs", args->no_pairs, "do not try pairs of effects");
   cmd->add_option("--base", args->base,
                   "the model the effects are fitted on: rft (zeta per soil, default) or bekker (n, k_c, k_phi per "

@@ -4,6 +4,7 @@
 #include "apps/commands.h"
 #include "drop_tests/io/output_path.h"
 #include "drop_tests/sweep/sweep_export.h"
+#include "rft/physical_limits.h"
 
 namespace touchdown::app {
 
@@ -17,7 +18,7 @@ void AddExportCommand(CLI::App& app) {
   cmd->add_flag("--full-traces", options->full_traces,
                 "simulate every drop again for its full 1 kHz trace (default: stored traces; re-simulated if none)");
   cmd->add_option("--threads", options->threads, "threads for re-simulated traces (default: every core)")
-      ->check(CLI::Range(0, 4096));
+      ->check(CLI::Range(0, limits::kMaxThreads));
   cmd->callback([dir, to, options] {
     const io::OutputTarget out(*to, {*dir});
     io::CheckOutputDirectory(out, io::OutputKind::kDataset);

@@ -3,12 +3,13 @@
 #include <cmath>
 
 #include "rft/input_error.h"
+#include "rft/physical_limits.h"
 
 namespace touchdown::app {
 
 void AddSweepRunFlags(CLI::App* cmd, SweepRunFlags* flags, const std::string& runs) {
   cmd->add_option("--threads", flags->threads, "worker threads per process (default: every core)")
-      ->check(CLI::Range(0, 4096));
+      ->check(CLI::Range(0, limits::kMaxThreads));
   cmd->add_option("--shard", flags->shard,
                   "I/N: run only " + runs + " with index mod N == I (job arrays; combine the shards with merge)");
   cmd->add_option("--model", flags->model, "model file (MODEL.yaml) with per-soil zeta overrides");

@@ -4,6 +4,7 @@
 
 #include "apps/commands.h"
 #include "drop_tests/sweep/trade_run.h"
+#include "rft/physical_limits.h"
 
 namespace touchdown::app {
 
@@ -21,7 +22,7 @@ void AddTradeCommand(CLI::App& app) {
   cmd->add_option("sweep", args->sweep, "sweep YAML (e.g. data/sweeps/pad_trade.yaml)")->required();
   cmd->add_option("--out", args->out, "output directory (results.sqlite, trade.csv, summary.json, plots/)")->required();
   cmd->add_option("--threads", args->threads, "worker threads (default: every core)")
-      ->check(CLI::Range(0, 4096));
+      ->check(CLI::Range(0, limits::kMaxThreads));
   cmd->add_option("--model", args->model, "model file with per-soil zeta overrides");
   cmd->callback([args] {
     sweep::SweepRunOptions options;

@@ -42,7 +42,10 @@ class InputFd {
     if (path.empty()) throw MakeInputError("", "", "empty " + what + " path");
     // O_NONBLOCK: opening a FIFO must not wait for a writer; it is refused just below.
     fd_ = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY);
-    if (fd_ < 0) throw MakeInputError(path, "", OpenFailure(errno, what));
+    if (fd_ < 0) {
+      const int error = errno;
+      throw InputFileError(MakeInputError(path, "", OpenFailure(error, what)).what(), error);
+    }
     struct stat st {};
     if (::fstat(fd_, &st) != 0) {
       const int error = errno;

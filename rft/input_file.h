@@ -7,7 +7,21 @@
 #include <string>
 #include <string_view>
 
+#include "rft/input_error.h"
+
 namespace touchdown {
+
+// An input file the OS would not open: the InputError "<path>: <reason>" with the OS's error
+// number, so a caller that tells such errors apart (the Python module: FileNotFoundError,
+// PermissionError) need not parse the message.
+class InputFileError : public InputError {
+ public:
+  InputFileError(const std::string& message, int os_error) : InputError(message), os_error_(os_error) {}
+  int os_error() const { return os_error_; }
+
+ private:
+  int os_error_;
+};
 
 // Throws InputError "<path>: <reason>" unless `path` is a regular file this process can read.
 // `what` names the file in the "not found" message ("file", "mesh file", "trace file").

@@ -25,6 +25,11 @@ inline constexpr Range kDepth_m{"m", -10.0, 10.0, false};               // below
 inline constexpr Range kZeta_N_cm3{"N/cm^3", 0.0, 1e4, true};           // RFT scaling factor
 inline constexpr Range kPadSize_m{"m", 0.0, 10.0, true};                // pad radius, thickness, mesh extent
 inline constexpr Range kPadSize_mm{"mm", 0.0, kPadSize_m.high * 1e3, true};  // the same, as pad YAML gives it
+// Worker threads a run may start (--threads, the Python module's `threads`; 0: every core). Far
+// beyond any machine's cores, and checked before a thread starts: a process that cannot start the
+// threads it asked for ends in std::terminate, not in an error message.
+inline constexpr int kMaxThreads = 4096;
+inline constexpr Range kThreads{"threads", 0.0, double(kMaxThreads), false};
 
 // Bodies and the world they land in. Each bound is far beyond any lander, and keeps the
 // products the dynamics forms (m g, k x, I w^2) finite and the integrator's tolerances meaningful.

@@ -1,14 +1,20 @@
 // The Python module's compiled part, touchdown._touchdown: the commands' library functions with
 // keyword arguments, each returning the JSON text the command prints (the package, __init__.py,
 // parses it, resolves pads and soils given as dicts, and adds the readers). Simulations run with
-// the GIL released, so other Python threads go on meanwhile.
+// the GIL released, so other Python threads go on meanwhile; a sweep or study stops on Ctrl-C.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
 #include <algorithm>
 #include <array>
+#include <atomic>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <csignal>
 #include <filesystem>
+#include <future>
 #include <iterator>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -36,11 +42,61 @@
 #include "drop_tests/validation/validate.h"
 #include "lander/integ/cvode_integrator.h"
 #include "rft/input_error.h"
+#include "rft/input_file.h"
+#include "rft/physical_limits.h"
 
 namespace py = pybind11;
 
 namespace touchdown::python {
 namespace {
+
+// A `threads` keyword argument checked as --threads is (limits::kThreads, 0: every core), before
+// anything runs: a whole number, else InputError naming the argument ("touchdown.sweep: threads").
+int ThreadsArgument(const py::object& value, const std::string& function) {
+  const bool whole = PyIndex_Check(value.ptr()) && !PyBool_Check(value.ptr());
+  if (!whole) {
+    throw MakeInputError(function, "threads",
+                         "must be a whole number from 0 (every core) to " + std::to_string(limits::kMaxThreads) +
+                             ", got " + py::repr(value).cast<std::string>());
+  }
+  const py::int_ whole_value(value);
+  double n = PyLong_AsDouble(whole_value.ptr());
+  if (n == -1.0 && PyErr_Occurred()) {  // beyond a double: out of range all the same
+    PyErr_Clear();
+    n = whole_value > py::int_(0) ? HUGE_VAL : -HUGE_VAL;
+  }
+  limits::Require(limits::kThreads, n, function, "threads");
+  return static_cast<int>(n);
+}
+
+// Runs `work` (C++ only, no Python) on a worker thread, the GIL released, while this thread runs
+// Python's signal handlers every 0.1 s. One that raises (Ctrl-C: KeyboardInterrupt) sets `stop`:
+// the sweep lets its running drops finish, commits them and returns, and the exception goes on to
+// the caller. Python runs signal handlers only in its main thread, so a call from another thread
+// runs to the end.
+template <typename Work>
+auto RunInterruptible(std::atomic<int>& stop, Work work) {
+  auto done = std::async(std::launch::async, std::move(work));
+  bool interrupted = false;
+  for (;;) {
+    {
+      py::gil_scoped_release unlocked;
+      if (done.wait_for(std::chrono::milliseconds(100)) == std::future_status::ready) break;
+    }
+    if (!interrupted && PyErr_CheckSignals() != 0) {
+      interrupted = true;
+      stop.store(SIGINT);
+    }
+  }
+  if (interrupted) {
+    try {
+      done.get();
+    } catch (...) {  // the interruption is what the caller asked for; a later failure gives way to it
+    }
+    throw py::error_already_set();
+  }
+  return done.get();
+}
 
 // A drop's trace as columns named as in its trace CSV (drop::WriteTraceCsv), at full precision.
 py::dict TraceArrays(const drop::PadDrop& d) {
@@ -142,18 +198,19 @@ py::dict RunCounts(const sweep::SweepRunSummary& s) {
   return d;
 }
 
-py::dict Sweep(const std::string& plan_path, const std::string& out, const std::string& model, int threads) {
-  sweep::SweepRunSummary s;
-  {
-    py::gil_scoped_release unlocked;
+py::dict Sweep(const std::string& plan_path, const std::string& out, const std::string& model,
+               const py::object& threads_arg) {
+  const int threads = ThreadsArgument(threads_arg, "touchdown.sweep");
+  std::atomic<int> stop{0};
+  return RunCounts(RunInterruptible(stop, [&] {
     const sweep::SweepPlan plan = sweep::LoadSweepPlan(plan_path, model);
     io::OpenOutputDirectory({out, {plan_path, model}}, io::OutputKind::kSweep);
     sweep::SweepRunOptions options;
     options.threads = threads;
     options.progress = sweep::ProgressMode::kNone;
-    s = sweep::RunSweep(plan, out, options);
-  }
-  return RunCounts(s);
+    options.stop = &stop;
+    return sweep::RunSweep(plan, out, options);
+  }));
 }
 
 // touchdown campaign: the drops into `out` (a new directory); its summary.json's text.
@@ -175,20 +232,22 @@ std::string Compare(const std::string& measured, const std::string& simulated, c
 }
 
 // touchdown stability: the study's landings as a sweep into `out`, then its analysis there.
+// Stopped (Ctrl-C), the committed landings stay for a rerun to resume; no analysis is written.
 py::dict Stability(const std::string& study_path, const std::string& out, const std::string& model,
-                   std::optional<int64_t> samples, int threads) {
-  sweep::SweepRunSummary s;
-  {
-    py::gil_scoped_release unlocked;
-    const stability::Study study = stability::LoadStudy(study_path, model, samples);
+                   std::optional<int64_t> samples, const py::object& threads_arg) {
+  const int threads = ThreadsArgument(threads_arg, "touchdown.stability");
+  std::atomic<int> stop{0};
+  return RunCounts(RunInterruptible(stop, [&] {
+    const stability::Study study = stability::LoadStudy(study_path, model, samples, {"touchdown.stability", false});
     io::OpenOutputDirectory({out, {study_path, model}}, io::OutputKind::kSweep);
     sweep::SweepRunOptions options;
     options.threads = threads;
     options.progress = sweep::ProgressMode::kNone;
-    s = sweep::RunSweep(study.plan, out, options);
-    stability::WriteStudyAnalysis(study, out);
-  }
-  return RunCounts(s);
+    options.stop = &stop;
+    const sweep::SweepRunSummary s = sweep::RunSweep(study.plan, out, options);
+    if (s.stop_signal == 0) stability::WriteStudyAnalysis(study, out);
+    return s;
+  }));
 }
 
 // touchdown calibrate: the fit (dataset::CalibrationJson) and the model or soil file `out`.
@@ -211,15 +270,18 @@ std::string Calibrate(const std::string& measured, const std::string& out, const
   if (!(confidence >= 0.5 && confidence <= 0.9999))
     throw MakeInputError("touchdown.calibrate", "confidence", "must be between 0.5 and 0.9999, got " + std::to_string(confidence));
   r.soil = soil, r.pad = pad, r.shear_from = shear_from;
+  r.naming = {"touchdown.calibrate", false};
   py::gil_scoped_release unlocked;
   return dataset::CalibrationJson(dataset::RunCalibration(r)).dump(2);
 }
 
 // touchdown calibrate --targets: the report's content (targets::TargetsReportJson), the model file in `out`.
 std::string CalibrateTargets(const std::string& targets_file, const std::string& out, const std::string& report,
-                             int threads, bool evaluate_only) {
+                             const py::object& threads_arg, bool evaluate_only) {
+  const int threads = ThreadsArgument(threads_arg, "touchdown.calibrate_targets");
   py::gil_scoped_release unlocked;
-  const targets::TargetsCalibration c = targets::RunTargetsCalibration({targets_file, out, report, threads, evaluate_only});
+  const targets::TargetsCalibration c = targets::RunTargetsCalibration(
+      {targets_file, out, report, threads, evaluate_only, {"touchdown.calibrate_targets", false}});
   return targets::TargetsReportJson(c.file, c.fit).dump(2);
 }
 
@@ -230,8 +292,9 @@ std::string Validate(const std::string& sources, const std::string& out) {
 }
 
 // touchdown diagnose: diagnosis.json's content, the outputs in `out`.
-std::string Diagnose(const std::string& measured, const std::string& model, const std::string& out, int threads,
-                     bool pairs, bool law_candidate) {
+std::string Diagnose(const std::string& measured, const std::string& model, const std::string& out,
+                     const py::object& threads_arg, bool pairs, bool law_candidate) {
+  const int threads = ThreadsArgument(threads_arg, "touchdown.diagnose");
   py::gil_scoped_release unlocked;
   gap::DiagnoseOptions o;
   o.threads = threads > 0 ? threads : std::max(1u, std::thread::hardware_concurrency());
@@ -242,7 +305,9 @@ std::string Diagnose(const std::string& measured, const std::string& model, cons
 }
 
 // touchdown trade: summary.json's content (sweep::TradeJson) and the sweep's run counts.
-py::tuple Trade(const std::string& plan_path, const std::string& out, const std::string& model, int threads) {
+py::tuple Trade(const std::string& plan_path, const std::string& out, const std::string& model,
+                const py::object& threads_arg) {
+  const int threads = ThreadsArgument(threads_arg, "touchdown.trade");
   std::optional<sweep::TradeRun> run;
   {
     py::gil_scoped_release unlocked;
@@ -270,7 +335,8 @@ py::dict Synth(const std::string& spec_path, const std::string& out) {
 }
 
 // touchdown export: the sweep `dir` as the dataset `to`; the counts the command reports.
-py::dict Export(const std::string& dir, const std::string& to, bool full_traces, int threads) {
+py::dict Export(const std::string& dir, const std::string& to, bool full_traces, const py::object& threads_arg) {
+  const int threads = ThreadsArgument(threads_arg, "touchdown.export");
   sweep::ExportSummary s;
   {
     py::gil_scoped_release unlocked;
@@ -286,11 +352,26 @@ py::dict Export(const std::string& dir, const std::string& to, bool full_traces,
   return d;
 }
 
+// An input file the OS would not open as the OSError subclass Python raises for its errno
+// (FileNotFoundError, PermissionError, ...), with the command line's message and e.errno set.
+void SetInputFileError(const InputFileError& e) {
+  PyObject* type = e.os_error() == ENOENT || e.os_error() == ENOTDIR ? PyExc_FileNotFoundError
+                   : e.os_error() == EACCES || e.os_error() == EPERM  ? PyExc_PermissionError
+                   : e.os_error() == EISDIR                           ? PyExc_IsADirectoryError
+                                                                      : PyExc_OSError;
+  py::object exception = py::reinterpret_borrow<py::object>(type)(e.what());
+  exception.attr("errno") = e.os_error();
+  PyErr_SetObject(type, exception.ptr());
+}
+
 // The command line's exit statuses as Python exceptions, with the same one-line messages:
-// bad input (2) ValueError, a path the OS refused (2) OSError, a failed solver (3) RuntimeError.
+// bad input (2) ValueError, an input file or a path the OS refused (2) OSError (an input file
+// not found: FileNotFoundError), a failed solver (3) RuntimeError.
 void TranslateErrors(std::exception_ptr error) {
   try {
     if (error) std::rethrow_exception(error);
+  } catch (const InputFileError& e) {
+    SetInputFileError(e);
   } catch (const InputError& e) {
     PyErr_SetString(PyExc_ValueError, e.what());
   } catch (const integ::IntegrationFailure& e) {

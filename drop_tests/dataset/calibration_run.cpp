@@ -31,7 +31,7 @@ BekkerFit CalibrateBekkerSoil(const CalibrationRequest& r) {
     soil.bekker.shear_modulus_K_m = shear.shear_modulus_K_m;
   }
   if (!(soil.bekker.shear_modulus_K_m > 0.0))
-    throw MakeInputError("command line", "--shear-from",
+    throw MakeInputError(r.naming.context, r.naming.Field("shear-from"),
                          "soil '" + fit.soils.front() + "' has no bekker block: name a Bekker soil for c, phi and K");
   io::WriteOutputFile(out, [&](std::ostream& o) {
     o << kBekkerFitMark << "\n# on " << r.measured << " (soils:";

@@ -10,6 +10,7 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include "drop_tests/dataset/calibrate.h"
+#include "drop_tests/drop/drop_request.h"
 #include "drop_tests/dataset/calibrate_bekker.h"
 
 namespace touchdown::dataset {
@@ -27,6 +28,7 @@ struct CalibrationRequest {
   // law bekker: only the drops of this soil and pad ("" all); the soil whose c, phi and K the
   // fitted soil takes ("" the fitted soil's own)
   std::string soil, pad, shear_from;
+  drop::RequestNaming naming;  // how errors name the options (--shear-from, or the Python module's shear_from)
 };
 
 struct CalibrationRun {

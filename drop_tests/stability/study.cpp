@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "drop_tests/drop/drop_request.h"
 #include "drop_tests/io/dataset_csv.h"
 #include "drop_tests/io/yaml_fields.h"
 #include "rft/input_error.h"
@@ -100,6 +101,11 @@ int ReadCount(const io::YamlFields& study, const std::string& key, int fallback)
 }  // namespace
 
 Study LoadStudy(const std::string& path, const std::string& model_override, std::optional<int64_t> samples_override) {
+  return LoadStudy(path, model_override, samples_override, drop::RequestNaming{"", true});
+}
+
+Study LoadStudy(const std::string& path, const std::string& model_override, std::optional<int64_t> samples_override,
+                const drop::RequestNaming& naming) {
   Study study;
   study.plan = sweep::LoadSweepPlan(path, model_override);
   const io::YamlFields f = io::YamlFields::LoadFile(path);
@@ -108,8 +114,8 @@ Study LoadStudy(const std::string& path, const std::string& model_override, std:
   study.samples_in_file = study.plan.samples;
   if (samples_override) {
     if (study.plan.random.empty())
-      throw MakeInputError("", "--samples", "the study " + path + " has no random block whose samples it could set");
-    limits::Require(limits::kSamples, static_cast<double>(*samples_override), "", "--samples");
+      throw MakeInputError(naming.context, naming.Field("samples"), "the study " + path + " has no random block whose samples it could set");
+    limits::Require(limits::kSamples, static_cast<double>(*samples_override), naming.context, naming.Field("samples"));
     study.plan.samples = *samples_override;
     study.samples_override = samples_override;
   }

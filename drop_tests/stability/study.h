@@ -17,6 +17,10 @@
 
 #include "drop_tests/sweep/sweep_spec.h"
 
+namespace touchdown::drop {
+struct RequestNaming;
+}
+
 namespace touchdown::stability {
 
 struct MapAxis {
@@ -40,9 +44,12 @@ struct Study {
 
 // Loads and validates the study (the sweep plan, then the study block) before anything runs.
 // `samples_override` (--samples N) replaces the random block's sample count; a study without a
-// random block refuses it (InputError naming --samples).
+// random block refuses it (InputError naming --samples, or as `naming` names it: the Python
+// module's "touchdown.stability: samples").
 Study LoadStudy(const std::string& path, const std::string& model_override = "",
                 std::optional<int64_t> samples_override = std::nullopt);
+Study LoadStudy(const std::string& path, const std::string& model_override, std::optional<int64_t> samples_override,
+                const drop::RequestNaming& naming);
 
 // The label of a parameter on a plot axis, with its unit: "slope [deg]", "horizontal speed [m/s]".
 std::string AxisLabel(sweep::SweepParam p);

@@ -3,10 +3,13 @@
 #include <sqlite3.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <stdexcept>
+
+#include <unistd.h>
 
 #include "drop_tests/io/paths_in_outputs.h"
 #include "rft/input_error.h"
@@ -306,10 +309,80 @@ std::string ResultsDbPath(const std::string& out_dir) {
   return (std::filesystem::path(out_dir) / "results.sqlite").string();
 }
 
-ResultsDb::ResultsDb(const std::string& path) : path_(path) {
-  if (const int rc = sqlite3_open_v2(path.c_str(), &db_, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE | SQLITE_OPEN_NOMUTEX,
-                                    nullptr);
-      rc != SQLITE_OK) {
+namespace {
+// The CREATE statements of the three tables, for the file (`kind` "TABLE IF NOT EXISTS") or as a
+// reader's TEMP stand-ins ("TEMP TABLE").
+std::string MetaTableSql(const std::string& kind) {
+  return "CREATE " + kind + " meta(key TEXT PRIMARY KEY, value TEXT NOT NULL)";
+}
+std::string TracesTableSql(const std::string& kind) {
+  return "CREATE " + kind + " traces(drop_index INTEGER PRIMARY KEY, samples INTEGER NOT NULL, data BLOB NOT NULL)";
+}
+// The drops columns after the format-1 ones, each with its type and default: what an older
+// database gains (ALTER TABLE ... ADD COLUMN) or a reader of one sees in its place.
+struct AddedColumn {
+  std::string name, declaration, value_when_absent;
+};
+std::vector<AddedColumn> AddedColumns() {
+  std::vector<AddedColumn> c{{"drop_kind", "TEXT NOT NULL DEFAULT 'rig'", "'rig'"}};
+  for (const char* n : kNumberColumns2) c.push_back({n, "REAL", "NULL"});
+  for (const char* n : kTextColumns3) c.push_back({n, "TEXT NOT NULL DEFAULT ''", "''"});
+  c.push_back({kLimitColumn, "TEXT NOT NULL DEFAULT ''", "''"});
+  c.push_back({kLimitValueColumn, "REAL", "NULL"});
+  for (const char* n : kNumberColumns5) c.push_back({n, "REAL", "NULL"});
+  return c;
+}
+std::string DropsTableSql(const std::string& kind) {
+  std::string drops = "CREATE " + kind + " drops(drop_index INTEGER PRIMARY KEY, drop_id TEXT NOT NULL, "
+                      "status TEXT NOT NULL, failure TEXT NOT NULL, pad TEXT NOT NULL, soil TEXT NOT NULL, "
+                      "atmosphere TEXT NOT NULL";
+  for (const char* n : kNumberColumns1) drops += std::string(", ") + n + " REAL";
+  drops += ", solver_steps INTEGER";
+  for (const AddedColumn& c : AddedColumns()) drops += ", " + c.name + " " + c.declaration;
+  return drops + ")";
+}
+
+// A percent-encoded file: URI (RFC 8089, as sqlite3_open_v2 reads it with SQLITE_OPEN_URI).
+std::string FileUri(const std::string& path, const std::string& query) {
+  static const char* hex = "0123456789ABCDEF";
+  std::string uri = "file:";
+  for (size_t i = 0; i < path.size(); ++i) {
+    const unsigned char c = static_cast<unsigned char>(path[i]);
+    // '/' as it is, except a second leading one (file:// starts an authority).
+    const bool plain = std::isalnum(c) || std::strchr("-._~", c) || (c == '/' && i != 1);
+    if (c != 0 && plain) uri += static_cast<char>(c);
+    else uri += {'%', hex[c >> 4], hex[c & 15]};
+  }
+  return uri + "?" + query;
+}
+
+// How a reader opens the file: read-write where this process may write the file and its directory
+// (query_only then keeps the reader from writing; SQLite's -wal and -shm files come and go as for
+// any connection, the last to close removing them), else read-only storage: SQLITE_OPEN_READONLY. There
+// SQLite reads a WAL database through a -shm index it must create beside the file; where it
+// cannot (the directory not writable) and no -wal file holds commits, the file alone is the whole
+// database and is opened immutable (no -shm, no locks; nobody can write there either).
+struct ReaderOpen {
+  std::string uri;
+  int flags;
+};
+ReaderOpen HowReaderOpens(const std::string& path) {
+  const std::filesystem::path file(path);
+  const std::filesystem::path dir = file.has_parent_path() ? file.parent_path() : std::filesystem::path(".");
+  const bool writable_dir = ::access(dir.c_str(), W_OK) == 0;
+  if (writable_dir && ::access(path.c_str(), W_OK) == 0) return {FileUri(path, "mode=rw"), SQLITE_OPEN_READWRITE};
+  std::error_code ec;
+  const bool wal = std::filesystem::exists(path + "-wal", ec);
+  return {FileUri(path, !wal && !writable_dir ? "mode=ro&immutable=1" : "mode=ro"), SQLITE_OPEN_READONLY};
+}
+}  // namespace
+
+ResultsDb::ResultsDb(const std::string& path, Access access) : path_(path) {
+  const bool read_only = access == Access::kReadOnly;
+  const ReaderOpen reader = read_only ? HowReaderOpens(path) : ReaderOpen{};
+  const std::string& name = read_only ? reader.uri : path;
+  const int flags = read_only ? reader.flags | SQLITE_OPEN_URI : SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE;
+  if (const int rc = sqlite3_open_v2(name.c_str(), &db_, flags | SQLITE_OPEN_NOMUTEX, nullptr); rc != SQLITE_OK) {
     const std::string message = db_ ? sqlite3_errmsg(db_) : "out of memory";
     sqlite3_close(db_);
     db_ = nullptr;
@@ -317,7 +390,8 @@ ResultsDb::ResultsDb(const std::string& path) : path_(path) {
   }
   sqlite3_busy_timeout(db_, 10000);
   try {
-    CreateTables();
+    if (read_only) AdaptTables();
+    else CreateTables();
   } catch (...) {  // the destructor does not run for a constructor that throws
     sqlite3_close(db_);
     db_ = nullptr;
@@ -330,18 +404,8 @@ void ResultsDb::CreateTables() {
   // (only an OS crash may lose the last ones, never half of one).
   Exec("PRAGMA journal_mode=WAL");
   Exec("PRAGMA synchronous=NORMAL");
-  std::string drops = "CREATE TABLE IF NOT EXISTS drops(drop_index INTEGER PRIMARY KEY, drop_id TEXT NOT NULL, "
-                      "status TEXT NOT NULL, failure TEXT NOT NULL, pad TEXT NOT NULL, soil TEXT NOT NULL, "
-                      "atmosphere TEXT NOT NULL";
-  for (const char* n : kNumberColumns1) drops += std::string(", ") + n + " REAL";
-  drops += ", solver_steps INTEGER, drop_kind TEXT NOT NULL DEFAULT 'rig'";
-  for (const char* n : kNumberColumns2) drops += std::string(", ") + n + " REAL";
-  for (const char* n : kTextColumns3) drops += std::string(", ") + n + " TEXT NOT NULL DEFAULT ''";
-  drops += std::string(", ") + kLimitColumn + " TEXT NOT NULL DEFAULT '', " + kLimitValueColumn + " REAL";
-  for (const char* n : kNumberColumns5) drops += std::string(", ") + n + " REAL";
-  Exec("CREATE TABLE IF NOT EXISTS meta(key TEXT PRIMARY KEY, value TEXT NOT NULL);" + drops +
-       ");CREATE TABLE IF NOT EXISTS traces(drop_index INTEGER PRIMARY KEY, samples INTEGER NOT NULL, "
-       "data BLOB NOT NULL);");
+  const std::string kind = "TABLE IF NOT EXISTS";
+  Exec(MetaTableSql(kind) + ";" + DropsTableSql(kind) + ";" + TracesTableSql(kind) + ";");
   // A format-1 to -5 database (no format-2 to -6 columns) gets them added, NULL or '', so it can still be read
   // (export, merge); `sweep` refuses to resume it (format_version in meta).
   std::vector<std::string> present;
@@ -349,16 +413,40 @@ void ResultsDb::CreateTables() {
     Statement info(db_, "PRAGMA table_info(drops)");
     while (info.Step() == SQLITE_ROW) present.push_back(info.ColumnText(1));
   }
-  auto has = [&](const std::string& c) { return std::find(present.begin(), present.end(), c) != present.end(); };
-  if (!has("drop_kind")) Exec("ALTER TABLE drops ADD COLUMN drop_kind TEXT NOT NULL DEFAULT 'rig'");
-  for (const char* n : kNumberColumns2)
-    if (!has(n)) Exec(std::string("ALTER TABLE drops ADD COLUMN ") + n + " REAL");
-  for (const char* n : kTextColumns3)
-    if (!has(n)) Exec(std::string("ALTER TABLE drops ADD COLUMN ") + n + " TEXT NOT NULL DEFAULT ''");
-  if (!has(kLimitColumn)) Exec(std::string("ALTER TABLE drops ADD COLUMN ") + kLimitColumn + " TEXT NOT NULL DEFAULT ''");
-  if (!has(kLimitValueColumn)) Exec(std::string("ALTER TABLE drops ADD COLUMN ") + kLimitValueColumn + " REAL");
-  for (const char* n : kNumberColumns5)
-    if (!has(n)) Exec(std::string("ALTER TABLE drops ADD COLUMN ") + n + " REAL");
+  for (const AddedColumn& c : AddedColumns())
+    if (std::find(present.begin(), present.end(), c.name) == present.end())
+      Exec("ALTER TABLE drops ADD COLUMN " + c.name + " " + c.declaration);
+}
+
+void ResultsDb::AdaptTables() {
+  // TEMP objects live in the connection's own temporary database, which a read-only connection
+  // may write, and an unqualified name finds them before main's: a missing table reads as empty,
+  // an older drops table through a view with the newer columns at their defaults.
+  std::vector<std::string> tables;
+  {
+    Statement st(db_, "SELECT name FROM main.sqlite_master WHERE type = 'table'");
+    while (st.Step() == SQLITE_ROW) tables.push_back(st.ColumnText(0));
+  }
+  auto has_table = [&](const char* t) { return std::find(tables.begin(), tables.end(), t) != tables.end(); };
+  if (!has_table("meta")) Exec(MetaTableSql("TEMP TABLE"));
+  if (!has_table("traces")) Exec(TracesTableSql("TEMP TABLE"));
+  if (!has_table("drops")) return Exec(DropsTableSql("TEMP TABLE") + ";PRAGMA query_only=1");
+  std::vector<std::string> present;
+  {
+    Statement info(db_, "PRAGMA main.table_info(drops)");
+    while (info.Step() == SQLITE_ROW) present.push_back(info.ColumnText(1));
+  }
+  std::string view = "CREATE TEMP VIEW drops AS SELECT drop_index, drop_id, status, failure, pad, soil, atmosphere";
+  for (const char* n : kNumberColumns1) view += std::string(", ") + n;
+  view += ", solver_steps";
+  bool complete = true;
+  for (const AddedColumn& c : AddedColumns()) {
+    const bool has = std::find(present.begin(), present.end(), c.name) != present.end();
+    complete = complete && has;
+    view += ", " + (has ? c.name : c.value_when_absent + " AS " + c.name);
+  }
+  if (!complete) Exec(view + " FROM main.drops");
+  Exec("PRAGMA query_only=1");  // whichever way the file was opened, this connection writes nothing
 }
 
 ResultsDb::~ResultsDb() { sqlite3_close(db_); }

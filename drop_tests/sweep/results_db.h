@@ -129,8 +129,14 @@ std::vector<DropRecord> DeserializeRecords(const std::string& bytes);
 
 class ResultsDb {
  public:
-  // Opens (creating if needed) the database file. Throws std::runtime_error on SQLite errors.
-  explicit ResultsDb(const std::string& path);
+  // kReadWrite: a sweep's own database, created if needed and brought up to this format.
+  // kReadOnly: a reader's (export, merge's shards): nothing is written (PRAGMA query_only; opened
+  // SQLITE_OPEN_READONLY where the file or its directory may not be written), so results on
+  // read-only storage can be read; an older format reads with the newer columns NULL or ''.
+  enum class Access { kReadWrite, kReadOnly };
+  // Opens the database file. Throws InputError when SQLite cannot use it, std::runtime_error on
+  // other SQLite errors.
+  explicit ResultsDb(const std::string& path, Access access = Access::kReadWrite);
   ~ResultsDb();
   ResultsDb(const ResultsDb&) = delete;
   ResultsDb& operator=(const ResultsDb&) = delete;
@@ -162,6 +168,7 @@ class ResultsDb {
  private:
   void Exec(const std::string& sql) const;
   void CreateTables();  // the schema, created or brought up to date (older formats gain their columns)
+  void AdaptTables();   // read-only: TEMP stand-ins for the tables and columns an older file lacks
   std::string path_;
   sqlite3* db_ = nullptr;
 };

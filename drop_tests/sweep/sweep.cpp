@@ -211,7 +211,7 @@ MergeSummary MergeSweepResults(const std::string& out_dir, const std::vector<std
     if (!fs::is_regular_file(path)) throw MakeInputError(path, "", "no sweep results here");
     if (const auto [it, fresh] = dir_of_path.emplace(fs::weakly_canonical(path).string(), dir); !fresh)
       throw MakeInputError(dir, "", "given twice (as " + it->second + " too): list each shard directory once");
-    auto db = std::make_unique<ResultsDb>(path);
+    auto db = std::make_unique<ResultsDb>(path, ResultsDb::Access::kReadOnly);  // a shard may sit on read-only storage
     std::map<std::string, std::string> meta = db->Meta();
     if (meta.empty()) throw MakeInputError(path, "", "not a sweep results database (no meta)");
     if (reference.empty()) reference = meta;

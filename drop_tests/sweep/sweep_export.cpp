@@ -33,8 +33,8 @@ void RequireResultsFile(const std::string& db_path) {
   RequireReadableFile(db_path, "results database");
 }
 
-// Export reads every format up to this build's (ResultsDb adds the newer columns to older
-// databases); a newer or unknown one is refused, as `sweep` refuses to resume it.
+// Export reads every format up to this build's (ResultsDb reads an older one through the newer
+// columns, NULL or ''); a newer or unknown one is refused, as `sweep` refuses to resume it.
 void RequireReadableFormat(const std::string& db_path, const std::map<std::string, std::string>& meta) {
   const auto it = meta.find("format_version");
   const std::string version = it == meta.end() ? "" : it->second;
@@ -115,7 +115,7 @@ dataset::Dataset SweepToDataset(const std::string& sweep_dir, const ExportOption
                        std::vector<DropRecord>* failed_out) {
   const std::string db_path = ResultsDbPath(sweep_dir);
   RequireResultsFile(db_path);
-  const ResultsDb db(db_path);
+  const ResultsDb db(db_path, ResultsDb::Access::kReadOnly);
   const std::map<std::string, std::string> meta = ReadableMeta(db);
   std::vector<DropRecord> records = db.ReadAll(/*with_traces=*/true);
   ExportSummary summary;
@@ -389,7 +389,7 @@ ExportSummary ExportPadSweep(const ResultsDb& db, const std::map<std::string, st
 ExportSummary ExportSweep(const std::string& sweep_dir, const io::OutputTarget& dataset_dir, const ExportOptions& options) {
   const std::string db_path = ResultsDbPath(sweep_dir);
   RequireResultsFile(db_path);
-  const ResultsDb db(db_path);
+  const ResultsDb db(db_path, ResultsDb::Access::kReadOnly);
   const std::map<std::string, std::string> meta = ReadableMeta(db);
   const std::vector<DropRecord> first = db.ReadPage(std::numeric_limits<int64_t>::min(), 1, /*with_traces=*/false);
   if (!first.empty() && first.front().kind == DropKind::kLander) return ExportLanderSweep(db, dataset_dir);

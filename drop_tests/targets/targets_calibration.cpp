@@ -27,7 +27,8 @@ TargetsCalibration RunTargetsCalibration(const TargetsCalibrationRequest& r) {
   if (!r.report.empty()) {
     report.emplace(r.report, std::vector<std::string>{r.targets});
     if (std::filesystem::absolute(r.report).lexically_normal() == std::filesystem::absolute(r.out).lexically_normal())
-      throw MakeInputError("command line", "--report", "must differ from --out (" + r.report + ")");
+      throw MakeInputError(r.naming.context, r.naming.Field("report"),
+                           "must differ from " + r.naming.Field("out") + " (" + r.report + ")");
     io::CheckOutputFile(*report, kTargetsReportMark);
   }
   TargetsCalibration c{LoadTargetsFile(r.targets), {}};

@@ -4,6 +4,7 @@
 // report to `report`), through io::OutputTarget, so a user's file is never replaced.
 #include <string>
 
+#include "drop_tests/drop/drop_request.h"
 #include "drop_tests/targets/targets_fit.h"
 
 namespace touchdown::targets {
@@ -14,6 +15,7 @@ struct TargetsCalibrationRequest {
   std::string report;         // the JSON report to write; empty: none
   int threads = 0;            // scenarios side by side; 0: every core
   bool evaluate_only = false;  // no fit: every target at the parameters' start values
+  drop::RequestNaming naming;  // how errors name the options (--report, or the Python module's report)
 };
 
 struct TargetsCalibration {

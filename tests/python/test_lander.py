@@ -26,9 +26,9 @@ def test_lander_never_writes_into_an_existing_directory(tmp_path):
     assert os.listdir(tmp_path) == ["mine.txt"]
 
 
-def test_a_missing_scenario_raises_value_error_naming_it(tmp_path):
+def test_a_missing_scenario_raises_file_not_found_naming_it(tmp_path):
     missing = tmp_path / "nope.yaml"
-    with pytest.raises(ValueError, match="nope.yaml"):
+    with pytest.raises(FileNotFoundError, match="nope.yaml"):
         touchdown.lander(missing)
 
 

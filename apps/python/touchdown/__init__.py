@@ -13,8 +13,10 @@ export, sweep, stability: outputs into a new directory, the summary returned), a
 give pandas DataFrames of a sweep's database, a dataset and a stability study
 (read_sweep, read_dataset, read_stability). Pads and soils are catalogue names ("flat",
 "fjs1_lp"), YAML files, or dicts with a YAML file's content. Bad input raises ValueError with
-the command line's one-line message, a path the system refuses OSError, a failed solver
-RuntimeError. docs/python.md describes every function and field.
+the command line's one-line message (naming the Python argument: "touchdown.sweep: threads: ..."),
+an input file that is not there FileNotFoundError, a path the system refuses OSError, a failed
+solver RuntimeError. Ctrl-C stops a sweep or study once its running drops are committed
+(KeyboardInterrupt; a rerun resumes). docs/python.md describes every function and field.
 """
 import collections.abc
 import contextlib
@@ -170,8 +172,10 @@ def export(sweep, to, *, full_traces=False, threads=0):
 
 def sweep(plan, out, *, model=None, threads=0):
     """A sweep file run as `touchdown sweep PLAN --out OUT` (one process, every core unless
-    `threads`; a rerun resumes): the drops as read_sweep(out) gives them. df.attrs["run"] holds
-    this run's counts (total, already_done, computed, failed, threads, seconds)."""
+    `threads`, 0 to 4096; a rerun resumes): the drops as read_sweep(out) gives them. df.attrs["run"]
+    holds this run's counts (total, already_done, computed, failed, threads, seconds). Ctrl-C
+    stops it as it stops the command: the running drops finish and are committed, then
+    KeyboardInterrupt."""
     run = _touchdown.sweep(plan=_path_text(plan), out=_path_text(out), model=_path_text(model), threads=threads)
     drops = read_sweep(out)
     drops.attrs["run"] = run
@@ -180,7 +184,9 @@ def sweep(plan, out, *, model=None, threads=0):
 
 def stability(study, out, *, model=None, samples=None, threads=0):
     """A stability study run as `touchdown stability STUDY --out OUT [--samples N]`: its landings,
-    then summary.json, the CSV tables and plots in OUT; returns read_stability(out)."""
+    then summary.json, the CSV tables and plots in OUT; returns read_stability(out). Ctrl-C stops
+    it once the running landings are committed (KeyboardInterrupt, no analysis written; a rerun
+    resumes)."""
     _touchdown.stability(study=_path_text(study), out=_path_text(out), model=_path_text(model), samples=samples,
                          threads=threads)
     return read_stability(out)
@@ -213,7 +219,10 @@ def _catalog_files(**entries):
                 raise
             for path, name in renames.items():
                 message = message.replace(path, name)
-            raise type(e)(message) from None
+            renamed = type(e)(message)
+            if isinstance(e, OSError):
+                renamed.errno = e.errno
+            raise renamed from None
 
 
 def _absolute_mesh(pad):

@@ -7,10 +7,16 @@
 The formats: drop_tests/sweep/results_db.h, drop_tests/dataset/dataset.h,
 drop_tests/stability/study_outputs.h. Numbers read back exactly (the database holds IEEE doubles;
 CSV numbers are parsed with pandas' round-trip parser).
+
+A file that is not there raises FileNotFoundError; one that cannot be read as its format
+(not a database, truncated JSON, an empty CSV) ValueError naming the file; both the messages of
+the command line's readers.
 """
+import errno
 import json
 import os
 import sqlite3
+import urllib.parse
 from dataclasses import dataclass
 
 # The columns of a trace BLOB in the sweep database (pad::DropSample, four float64 per sample).
@@ -23,13 +29,42 @@ def _pandas():
     return pandas
 
 
+def _missing(path, what):
+    """FileNotFoundError with the command line's one-line message and errno set."""
+    error = FileNotFoundError(f"{path}: {what}")
+    error.errno = errno.ENOENT
+    return error
+
+
 def _results_db(path):
     path = os.fspath(path)
     if os.path.isdir(path):
         path = os.path.join(path, "results.sqlite")
+    if not os.path.exists(path):
+        raise _missing(path, "no sweep results database (results.sqlite)")
     if not os.path.isfile(path):
-        raise ValueError(f"{path}: no sweep results database (results.sqlite)")
+        raise ValueError(f"{path}: is not a file (a sweep results database, results.sqlite)")
     return path
+
+
+def _connect_reader(path):
+    """The database opened as the command line's readers open it (ResultsDb::Access::kReadOnly),
+    writing nothing: where this process may write the file and its directory, read-write with
+    query_only (SQLite's -wal and -shm files come and go as for any connection); else read-only
+    storage, mode=ro. There SQLite reads a WAL database through a -shm index it must create beside
+    the file; where it cannot (the directory not writable) and no -wal file holds commits, the file
+    alone is the whole database and is opened immutable."""
+    directory = os.path.dirname(path) or "."
+    writable_dir = os.access(directory, os.W_OK)
+    if writable_dir and os.access(path, os.W_OK):
+        mode = "mode=rw"
+    elif not writable_dir and not os.path.exists(path + "-wal"):
+        mode = "mode=ro&immutable=1"
+    else:
+        mode = "mode=ro"
+    db = sqlite3.connect("file:" + urllib.parse.quote(os.path.abspath(path)) + "?" + mode, uri=True)
+    db.execute("PRAGMA query_only=1")
+    return db
 
 
 def read_sweep(path, traces=False):
@@ -41,13 +76,20 @@ def read_sweep(path, traces=False):
     columns t_s, penetration_m, velocity_m_s, force_N (drops stored with traces only).
     """
     pd = _pandas()
-    uri = "file:" + _results_db(path) + "?mode=ro"
-    with sqlite3.connect(uri, uri=True) as db:
-        drops = pd.read_sql_query("SELECT * FROM drops ORDER BY drop_index", db)
-        drops.attrs["meta"] = dict(db.execute("SELECT key, value FROM meta").fetchall())
-        if not traces:
-            return drops
-        rows = db.execute("SELECT drop_index, samples, data FROM traces ORDER BY drop_index").fetchall()
+    path = _results_db(path)
+    try:
+        db = _connect_reader(path)
+        try:
+            drops = pd.read_sql_query("SELECT * FROM drops ORDER BY drop_index", db)
+            drops.attrs["meta"] = dict(db.execute("SELECT key, value FROM meta").fetchall())
+            rows = db.execute("SELECT drop_index, samples, data FROM traces ORDER BY drop_index").fetchall() \
+                if traces else None
+        finally:
+            db.close()
+    except (sqlite3.Error, pd.errors.DatabaseError) as e:
+        raise ValueError(f"{path}: SQLite cannot use this database: {_sqlite_reason(e)}") from None
+    if not traces:
+        return drops
     import numpy as np
 
     by_drop = {}
@@ -57,8 +99,21 @@ def read_sweep(path, traces=False):
     return drops, by_drop
 
 
+def _sqlite_reason(error):
+    """SQLite's own words; pandas wraps them as 'Execution failed on sql ...: reason'."""
+    cause = error.__cause__ or error.__context__
+    return str(cause if isinstance(cause, sqlite3.Error) else error)
+
+
 def _read_csv(path, **kwargs):
-    return _pandas().read_csv(path, float_precision="round_trip", **kwargs)
+    pd = _pandas()
+    path = os.fspath(path)
+    if not os.path.exists(path):
+        raise _missing(path, "file not found")
+    try:
+        return pd.read_csv(path, float_precision="round_trip", **kwargs)
+    except (pd.errors.EmptyDataError, pd.errors.ParserError, UnicodeDecodeError, ValueError) as e:
+        raise ValueError(f"{path}: not a readable CSV table: {e}") from None
 
 
 # drops.csv columns that are text (drop ids such as "001" stay text).
@@ -75,7 +130,7 @@ def read_dataset(directory, traces=False):
     directory = os.fspath(directory)
     drops_csv = os.path.join(directory, "drops.csv")
     if not os.path.isfile(drops_csv):
-        raise ValueError(f"{directory}: no dataset (drops.csv missing)")
+        raise _missing(directory, "no dataset (drops.csv missing)")
     drops = _read_csv(drops_csv, dtype=_DATASET_TEXT_COLUMNS, keep_default_na=False, na_values={
         c: [""] for c in ("final_penetration_m", "peak_force_N")})
     if not traces:
@@ -100,9 +155,12 @@ def read_stability(directory):
     directory = os.fspath(directory)
     summary_json = os.path.join(directory, "summary.json")
     if not os.path.isfile(summary_json):
-        raise ValueError(f"{directory}: no finished stability study (summary.json missing)")
-    with open(summary_json, encoding="utf-8") as f:
-        summary = json.load(f)
+        raise _missing(directory, "no finished stability study (summary.json missing)")
+    try:
+        with open(summary_json, encoding="utf-8") as f:
+            summary = json.load(f)
+    except (json.JSONDecodeError, UnicodeDecodeError) as e:
+        raise ValueError(f"{summary_json}: not valid JSON: {e}") from None
     map_csv = os.path.join(directory, "tip_over_map.csv")  # only for a study with a `map`
     return StabilityStudy(summary=summary,
                           percentiles=_read_csv(os.path.join(directory, "percentiles.csv")),
