@@ -211,3 +211,13 @@ def test_ctrl_c_stops_a_study_keeping_the_committed_landings(tmp_path):
     # A rerun resumes from what was committed.
     result = touchdown.stability(study, out, threads=2)
     assert result.summary["landings"] == 30
+
+
+def test_options_in_messages_are_named_as_python_arguments(tmp_path):
+    # The libraries' checks of command-line options name the Python arguments when Python calls.
+    same = tmp_path / "model.yaml"
+    with pytest.raises(ValueError, match=rf"^touchdown\.calibrate_targets: report: must differ from out \({same}\)$"):
+        touchdown.calibrate_targets(tmp_path / "targets.yaml", same, report=same)
+    with pytest.raises(ValueError, match=r"^touchdown\.calibrate: shear_from: soil 'fjs1_lp' has no bekker block"):
+        touchdown.calibrate(data_file("datasets", "air_vs_vacuum_synthetic"), tmp_path / "soil.yaml", law="bekker",
+                            soil="fjs1_lp", atmosphere="vacuum", shear_from="fjs1_lp")

@@ -59,9 +59,11 @@ class ResultsDbReadOnly : public touchdown::testing_scratch::ScratchDirTest {
     return names;
   }
 
+  // The drops table's columns, read immutable so that this look leaves no -wal or -shm behind.
   static std::vector<std::string> DropsColumns(const fs::path& path) {
     sqlite3* db = nullptr;
-    sqlite3_open_v2(path.c_str(), &db, SQLITE_OPEN_READONLY, nullptr);
+    sqlite3_open_v2(("file:" + path.string() + "?immutable=1").c_str(), &db, SQLITE_OPEN_READONLY | SQLITE_OPEN_URI,
+                    nullptr);
     sqlite3_stmt* st = nullptr;
     std::vector<std::string> columns;
     sqlite3_prepare_v2(db, "PRAGMA table_info(drops)", -1, &st, nullptr);
