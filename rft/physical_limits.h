@@ -68,8 +68,8 @@ inline constexpr Range kShearModulusK_mm{"mm", 0.0, 1e4, true};
 // Random samples of a sweep or study (the file's and --samples): a billion landings is years of CPU.
 inline constexpr Range kSamples{"samples", 1.0, 1e9, false};
 // The deterministic work limit of one run (drop or landing): right-hand-side evaluations of its
-// integrator, the same on any machine under any load (docs/sweeps.md); the benchmark landings take
-// at most a few hundred thousand.
+// integrator, the same on any machine under any load; far above what any shipped drop or landing
+// needs (bench/sweep_bench.cpp and the sweep limit tests measure them).
 inline constexpr long kDefaultMaxRunEvaluations = 2000000;
 
 inline bool Within(const Range& r, double v) {
