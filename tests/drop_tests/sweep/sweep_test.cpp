@@ -245,6 +245,20 @@ TEST_F(Sweep, ShardsMergedEqualTheSingleRun) {
                 (dir_ / "bad").string());
   EXPECT_EQ(m.status, 2);
   EXPECT_NE(m.err.find("not shards of one sweep"), std::string::npos) << m.err;
+  // Each shard once: a directory named twice, or a copy of a shard beside it, is refused (its
+  // drops would count once and hide a missing shard) and nothing is written.
+  m = Touchdown("merge " + (dir_ / "shard0").string() + " " + (dir_ / "." / "shard0").string() + " --out " +
+                (dir_ / "twice").string());
+  EXPECT_EQ(m.status, 2);
+  EXPECT_NE(m.err.find("given twice"), std::string::npos) << m.err;
+  fs::copy(dir_ / "shard0", dir_ / "shard0_copy", fs::copy_options::recursive);
+  m = Touchdown("merge " + (dir_ / "shard0").string() + " " + (dir_ / "shard0_copy").string() + " --out " +
+                (dir_ / "twice").string());
+  EXPECT_EQ(m.status, 2);
+  EXPECT_NE(m.err.find("holds shard 0/3, as " + (dir_ / "shard0").string() + " does: two copies of one shard"),
+            std::string::npos)
+      << m.err;
+  EXPECT_FALSE(fs::exists(dir_ / "twice"));
 }
 
 TEST_F(Sweep, MpirunTwoRanksEqualsTheSingleProcess) {
