@@ -19,7 +19,7 @@
 
 #include "tests/drop_tests/scenario/lander_test_support.h"
 
-namespace touchdown::lander {
+namespace touchdown::lander::similitude_test {
 namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
@@ -94,7 +94,9 @@ TEST(LanderSimilitude, FullScaleAtASixthOfTheGravityLandsAsTheModelWithDepthsAnd
     depth = std::max(depth, std::abs(b.final_penetration_m[i] / (kLength * a.final_penetration_m[i]) - 1.0));
     force = std::max(force, std::abs(b.peak_pad_force_N[i] / (kForce * a.peak_pad_force_N[i]) - 1.0));
     ASSERT_EQ(a.touchdown_time_s[i].has_value(), b.touchdown_time_s[i].has_value());
-    if (a.touchdown_time_s[i]) EXPECT_NEAR(*b.touchdown_time_s[i] / (kTime * *a.touchdown_time_s[i]), 1.0, kRelative);
+    if (a.touchdown_time_s[i]) {
+      EXPECT_NEAR(*b.touchdown_time_s[i] / (kTime * *a.touchdown_time_s[i]), 1.0, kRelative);
+    }
   }
   const auto deg = [](double rad) { return rad / kDeg; };
   std::printf("[ similitude ] roll %.9f / %.9f deg, pitch %.9f / %.9f deg, max tilt %.9f / %.9f deg, "
@@ -118,9 +120,11 @@ TEST(LanderSimilitude, FullScaleAtASixthOfTheGravityLandsAsTheModelWithDepthsAnd
   EXPECT_GT(std::abs(deg(a.final_attitude.roll_rad)) + std::abs(deg(a.final_attitude.pitch_rad)), 1.0);
   EXPECT_GT(deg(a.max_joint_swing_rad), 5.0);
   ASSERT_EQ(a.rest_time_s.has_value(), b.rest_time_s.has_value());
-  if (a.rest_time_s) EXPECT_NEAR(*b.rest_time_s / (kTime * *a.rest_time_s), 1.0, kRelative);
+  if (a.rest_time_s) {
+    EXPECT_NEAR(*b.rest_time_s / (kTime * *a.rest_time_s), 1.0, kRelative);
+  }
   EXPECT_NEAR(b.dissipated_J / (kMass * a.dissipated_J), 1.0, kRelative);
 }
 
 }  // namespace
-}  // namespace touchdown::lander
+}  // namespace touchdown::lander::similitude_test
