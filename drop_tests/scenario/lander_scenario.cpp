@@ -601,9 +601,15 @@ LanderSetup BuildLanderSetup(const LanderScenario& sc) {
     clearance = *ic.drop_height_m;
     vz_down = ic.release_vertical_speed_m_s;
   } else {
-    // Release just above the surface so the first pad touches at the requested speed.
+    // Release just above the surface so the first pad touches at the requested speed: at most half
+    // the pad's height above it (5 mm for the paper's 10 mm pad). A length of the lander's own, so
+    // that a geometrically similar lander is released at the homologous height and its landing is
+    // the model's scaled (docs/lander_dynamics.md, "Similitude"); a fixed length would shift the
+    // touchdown point and time of one of them against its patches.
     const double v = *ic.touchdown_speed_m_s;
-    clearance = g > 0.0 ? std::min(0.005, v * v / (4.0 * g)) : 0.005;
+    const double pad_height = m.legs[0].pad->vertices_B.row(2).maxCoeff() - m.legs[0].pad->lowest_z_B;
+    const double release_gap = 0.5 * pad_height;
+    clearance = g > 0.0 ? std::min(release_gap, v * v / (4.0 * g)) : release_gap;
     vz_down = std::sqrt(std::max(v * v - 2.0 * g * clearance, 0.0));
   }
   s.v_WB_W = Eigen::Vector3d(ic.horizontal_velocity_m_s.x(), ic.horizontal_velocity_m_s.y(), -vz_down);

@@ -210,7 +210,10 @@ void Assemble(const LanderModel& model, const StateLayout& L, const rft::Terrain
     a->Q.noalias() += J_C.transpose() * F;
     Eigen::Vector3d tau = w.moment_W - f.c_JC_W.cross(w.force_W) - f.w_WP_W.cross(I_P * f.w_WP_W);
 
-    // Cone limit of the ball joint: compliant stop beyond the half-angle.
+    // Cone limit of the ball joint: a stiff stop beyond the half-angle. The stop is one-sided, as
+    // the socket's rim is: it pushes the pad back and never pulls it, so the torque is clamped at
+    // zero when the damping of a pad leaving the rim would outweigh the spring. What the stop takes
+    // out of the motion beyond the spring's energy, (torque - k over) rate, is dissipated.
     if (leg.cone) {
       const Eigen::Vector3d zB = p.R_WB.col(2), zP = f.R_WP.col(2);
       const Eigen::Vector3d cr = zB.cross(zP);
@@ -218,11 +221,13 @@ void Assemble(const LanderModel& model, const StateLayout& L, const rft::Terrain
       if (theta > leg.cone->half_angle_rad && cr.norm() > 0.0) {
         const Eigen::Vector3d n = cr.normalized();
         const double rate = n.dot(f.w_WP_W - p.w_WB_W);
-        const double torque = leg.cone->stiffness_N_m_rad * (theta - leg.cone->half_angle_rad) +
-                              leg.cone->damping_N_m_s_rad * rate;
+        const double spring = leg.cone->stiffness_N_m_rad * (theta - leg.cone->half_angle_rad);
+        const double damping = leg.cone->damping_N_m_s_rad * rate;
+        const bool pushes = spring + damping > 0.0;
+        const double torque = pushes ? spring + damping : 0.0;
         tau -= torque * n;
         a->Q.segment<3>(3) += torque * n;
-        e->dissipation_W += leg.cone->damping_N_m_s_rad * rate * rate;
+        e->dissipation_W += pushes ? damping * rate : -spring * rate;
       }
     }
     a->Q.segment<3>(L.u_w_P(i)) += tau;
