@@ -12,7 +12,9 @@ targets=("$@")
 bash "$root/tools/install_deps.sh"
 # Native instruction set (-march=native): the in-tree runs are on the machine that built them; an
 # install for other machines is configured without it (docs/install.md).
-cmake -S "$root" -B "$root/build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DTOUCHDOWN_NATIVE=ON >/dev/null
+source "$root/tools/compiler_cache.sh"
+cmake -S "$root" -B "$root/build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DTOUCHDOWN_NATIVE=ON \
+  "${compiler_cache_args[@]}" >/dev/null
 start=$SECONDS
 cmake --build "$root/build" --parallel "$(nproc)" --target "${targets[@]}"
 echo "build (${targets[*]}): $((SECONDS - start)) s on $(nproc) cores"

@@ -13,7 +13,8 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 build=${TOUCHDOWN_HARDENING_DIR:-$root/build-hard}
 jobs=${TOUCHDOWN_JOBS:-$(nproc)}
 bash "$root/tools/install_deps.sh"
-CC=clang CXX=clang++ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+source "$root/tools/compiler_cache.sh"
+CC=clang CXX=clang++ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo "${compiler_cache_args[@]}" \
   "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" \
   -DTOUCHDOWN_SANITIZE=ON -DTOUCHDOWN_FUZZ=ON -DTOUCHDOWN_BUILD_BENCH=OFF -DTOUCHDOWN_BUILD_TOOLS=OFF \
   -DTOUCHDOWN_NATIVE=ON >/dev/null

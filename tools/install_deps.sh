@@ -3,7 +3,7 @@
 # Idempotent and quiet: apt-get runs only when a package is missing.
 set -euo pipefail
 packages=(
-  cmake g++ ninja-build pkg-config
+  cmake g++ ninja-build pkg-config ccache
   libeigen3-dev libcgal-dev libsundials-dev
   libgtest-dev libbenchmark-dev
   libyaml-cpp-dev libcli11-dev nlohmann-json3-dev

@@ -409,15 +409,15 @@ PYBIND11_MODULE(_touchdown, m) {
       "force",
       [](std::string pad, std::string soil, double depth, double tilt_deg, std::string tilt_axis,
          std::array<double, 3> velocity, std::array<double, 3> omega, std::optional<std::string> law, std::optional<double> zeta,
-         double gravity) {
+         double gravity, bool dynamic) {
         drop::ForceRequest r;
         r.pad = std::move(pad), r.soil = std::move(soil), r.depth_m = depth, r.tilt_deg = tilt_deg;
         r.tilt_axis = std::move(tilt_axis), r.velocity_m_s = velocity, r.omega_rad_s = omega;
-        r.law = std::move(law), r.zeta_N_cm3 = zeta, r.gravity_m_s2 = gravity;
+        r.law = std::move(law), r.zeta_N_cm3 = zeta, r.gravity_m_s2 = gravity, r.dynamic = dynamic;
         return python::Force(r);
       },
       py::arg("pad"), py::arg("soil"), py::arg("depth"), py::arg("tilt_deg"), py::arg("tilt_axis"),
-      py::arg("velocity"), py::arg("omega"), py::arg("law"), py::arg("zeta"), py::arg("gravity"));
+      py::arg("velocity"), py::arg("omega"), py::arg("law"), py::arg("zeta"), py::arg("gravity"), py::arg("dynamic"));
   m.def("lander", &python::Lander, py::arg("scenario"), py::arg("model"), py::arg("out"), py::arg("trace"),
         py::arg("vtk"));
   m.def("calibrate", &python::Calibrate, py::arg("measured"), py::arg("out"), py::arg("law"), py::arg("per"),

@@ -19,13 +19,15 @@
 
 namespace td = touchdown;
 
-// The soil's RFT wrench on the pad with its lowest point `depth_m` below a level surface, the pad
-// moving straight down at 1 m/s: quasi-static RFT (its stresses depend on the direction of motion,
-// not its speed) plus the soil's own dynamic term, lambda rho (v.n)^2 on leading elements.
-nlohmann::json ForceAtDepth(const td::io::PadSpec& pad, const td::rft::SoilParameters& soil, double depth_m) {
+// The soil's quasi-static RFT wrench on the pad with its lowest point `depth_m` below a level
+// surface, the pad moving straight down: its stresses depend on the direction of motion, not its
+// speed, so the soil's rate-dependent dynamic term is left out (as `touchdown force` without
+// --dynamic).
+nlohmann::json ForceAtDepth(const td::io::PadSpec& pad, td::rft::SoilParameters soil, double depth_m) {
   const double gravity_m_s2 = 9.81;
-  const td::rft::SoilContactModel contact = td::rft::MakeSoilContactModel(
-      td::rft::LawKind::kLi2013, soil, gravity_m_s2, td::rft::WithSoilDynamicTerm({}, soil));
+  soil.dynamic_term = false;
+  const td::rft::SoilContactModel contact =
+      td::rft::MakeSoilContactModel(td::rft::LawKind::kLi2013, soil, gravity_m_s2, {});
   const td::rft::StressLaw3D& law = *contact.law;
   td::rft::PadKinematics k;
   k.R_WB = td::pad::TiltRotation(td::pad::TiltAxis::kX, 0.0);

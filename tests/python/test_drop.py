@@ -58,6 +58,12 @@ def test_force_equals_the_command_line_json():
                          omega=(0.0, 0.2, 0.0), law="agarwal2023")
     assert py == cli
     assert py["force_N"][2] > 0.0  # the soil pushes up
+    # The soil's dynamic term only when asked for, as --dynamic.
+    cli = touchdown_json("force", "--pad", "flat", "--soil", "fjs1_lp", "--depth", "0.01", "--dynamic")
+    py = touchdown.force(pad="flat", soil="fjs1_lp", depth=0.01, dynamic=True)
+    assert py == cli and py["dynamic_term"]
+    quasi_static = touchdown.force(pad="flat", soil="fjs1_lp", depth=0.01)
+    assert not quasi_static["dynamic_term"] and quasi_static["force_N"][2] < py["force_N"][2]
 
 
 def _soil_dict(name="fjs1_lp"):

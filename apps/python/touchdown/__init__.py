@@ -67,12 +67,15 @@ def drop(pad, soil, speed, *, mass=None, gravity=9.81, zeta=None, model=None, fr
 
 
 def force(pad, soil, depth, *, tilt_deg=0.0, tilt_axis="x", velocity=(0.0, 0.0, -1.0), omega=(0.0, 0.0, 0.0),
-          law=None, zeta=None, gravity=9.81):
-    """The quasi-static soil wrench on a pad held at a depth, as `touchdown force` (a dict)."""
+          law=None, zeta=None, gravity=9.81, dynamic=False):
+    """The quasi-static soil wrench on a pad held at a depth, as `touchdown force` (a dict): force_N,
+    moment_Nm [N m] about the reference point, world frame, z up. `velocity` [m/s] and `omega`
+    [rad/s] give RFT its direction of motion; dynamic=True adds the soil's dynamic term at that
+    velocity (`touchdown force --dynamic`)."""
     with _catalog_files(pad=pad, soil=soil) as files:
         text = _touchdown.force(pad=files["pad"], soil=files["soil"], depth=depth, tilt_deg=tilt_deg,
                                 tilt_axis=tilt_axis, velocity=tuple(velocity), omega=tuple(omega), law=law,
-                                zeta=zeta, gravity=gravity)
+                                zeta=zeta, gravity=gravity, dynamic=bool(dynamic))
     return json.loads(text)
 
 

@@ -1,0 +1,17 @@
+# Sourced by tools/build.sh and tools/hardened_build.sh: the CMake arguments that put ccache
+# (Debian's `ccache`, installed by tools/install_deps.sh) in front of the compilers, in
+# `compiler_cache_args`. A clean clone on a machine that has built touchdown before (a developer's,
+# or CI's, which runs on the submitting machine) then compiles only what changed: CCACHE_BASEDIR
+# makes the clone's absolute paths relative, so another checkout of the same sources hits the same
+# entries. A cold cache costs what a plain build costs plus a few percent. The cached object is
+# the compiler's own output for the same preprocessed input and flags, so results do not change.
+# TOUCHDOWN_NO_CCACHE=1 turns it off.
+compiler_cache_args=()
+if [ -z "${TOUCHDOWN_NO_CCACHE:-}" ] && command -v ccache >/dev/null 2>&1; then
+  export CCACHE_BASEDIR="$root"
+  export CCACHE_NOHASHDIR=1
+  # Precompiled headers (the project's touchdown_pch_* targets) are cacheable only with these.
+  export CCACHE_SLOPPINESS=pch_defines,time_macros,include_file_mtime,include_file_ctime
+  export CCACHE_MAXSIZE=${CCACHE_MAXSIZE:-10G}
+  compiler_cache_args=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
+fi
