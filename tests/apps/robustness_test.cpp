@@ -140,10 +140,10 @@ void MakeResultsDb(const fs::path& path, const std::string& version) {
   sqlite3_close(db);
 }
 
-// The box of BoxOff() with a second, smaller closed box inside it.
-std::string NestedBoxOff() {
-  std::string v = "0 0 0\n10 0 0\n10 10 0\n0 10 0\n0 0 5\n10 0 5\n10 10 5\n0 10 5\n"
-                  "2 2 1\n8 2 1\n8 8 1\n2 8 1\n2 2 4\n8 2 4\n8 8 4\n2 8 4\n";
+// Two closed boxes as one OFF mesh: the 10 x 10 x 5 mm box of BoxOff() and a second box whose
+// eight corners (in BoxOff()'s order) are `second`.
+std::string TwoBoxesOff(const std::string& second) {
+  const std::string v = "0 0 0\n10 0 0\n10 10 0\n0 10 0\n0 0 5\n10 0 5\n10 10 5\n0 10 5\n" + second;
   const std::vector<std::string> quads = {"0 3 2 1", "4 5 6 7", "0 1 5 4", "1 2 6 5", "2 3 7 6", "3 0 4 7"};
   std::string f;
   for (int offset : {0, 8})
@@ -155,6 +155,9 @@ std::string NestedBoxOff() {
     }
   return "OFF\n16 12 0\n" + v + f;
 }
+
+// The box of BoxOff() with a second, smaller closed box inside it.
+std::string NestedBoxOff() { return TwoBoxesOff("2 2 1\n8 2 1\n8 8 1\n2 8 1\n2 2 4\n8 2 4\n8 8 4\n2 8 4\n"); }
 
 std::string with_soil_cmd() { return "drop --pad flat --speed 1 --soil "; }
 
@@ -350,18 +353,7 @@ void AddNewUserDefectCases(std::vector<Case>& c) {
 
 // Two 10 x 10 x 5 mm boxes 10 mm apart: two closed shells, neither inside the other.
 std::string TwoSeparateBoxesOff() {
-  std::string v = "0 0 0\n10 0 0\n10 10 0\n0 10 0\n0 0 5\n10 0 5\n10 10 5\n0 10 5\n"
-                  "20 0 0\n30 0 0\n30 10 0\n20 10 0\n20 0 5\n30 0 5\n30 10 5\n20 10 5\n";
-  const std::vector<std::string> quads = {"0 3 2 1", "4 5 6 7", "0 1 5 4", "1 2 6 5", "2 3 7 6", "3 0 4 7"};
-  std::string f;
-  for (int offset : {0, 8})
-    for (const std::string& q : quads) {
-      int a, b, c, d;
-      std::sscanf(q.c_str(), "%d %d %d %d", &a, &b, &c, &d);
-      f += "4 " + std::to_string(a + offset) + " " + std::to_string(b + offset) + " " + std::to_string(c + offset) +
-           " " + std::to_string(d + offset) + "\n";
-    }
-  return "OFF\n16 12 0\n" + v + f;
+  return TwoBoxesOff("20 0 0\n30 0 0\n30 10 0\n20 10 0\n20 0 5\n30 0 5\n30 10 5\n20 10 5\n");
 }
 
 // Wrong exit statuses and unclear or missing messages: file names that are not UTF-8, the
