@@ -221,3 +221,29 @@ def test_options_in_messages_are_named_as_python_arguments(tmp_path):
     with pytest.raises(ValueError, match=r"^touchdown\.calibrate: shear_from: soil 'fjs1_lp' has no bekker block"):
         touchdown.calibrate(data_file("datasets", "air_vs_vacuum_synthetic"), tmp_path / "soil.yaml", law="bekker",
                             soil="fjs1_lp", atmosphere="vacuum", shear_from="fjs1_lp")
+
+
+def test_hostile_yaml_and_mesh_pads_raise_value_error_instead_of_killing_python(tmp_path):
+    # An alias inside its own anchor made the loader recurse until the interpreter died; nested
+    # aliases ran for minutes. Both are refused by the one YAML loader, from Python as from the CLI.
+    rec = tmp_path / "rec.yaml"
+    rec.write_text("a: &a [*a]\n", encoding="utf-8")
+    with pytest.raises(ValueError, match=r"nested more than 64 levels deep"):
+        touchdown.drop(pad=str(rec), soil="fjs1_lp", speed=1.0)
+    with pytest.raises(ValueError, match=r"nested more than 64 levels deep"):
+        touchdown.lander(str(rec))
+    laughs = "l0: &l0 [x, x, x, x, x, x, x, x, x, x]\n" + "".join(
+        "l%d: &l%d [%s]\n" % (k, k, ", ".join(["*l%d" % (k - 1)] * 10)) for k in range(1, 9))
+    bomb = tmp_path / "bomb.yaml"
+    bomb.write_text("schema_version: 1\nname: s\nzeta_N_cm3: 3\n" + laughs, encoding="utf-8")
+    start = time.monotonic()
+    with pytest.raises(ValueError, match=r"expands to more than 1000000 values"):
+        touchdown.drop(pad="flat", soil=str(bomb), speed=1.0)
+    assert time.monotonic() - start < 10.0
+    # synth with a mesh pad killed the interpreter; it is refused naming the spec's field.
+    spec = tmp_path / "hex.synth.yaml"
+    spec.write_text("schema_version: 1\ntype: synth\nseed: 1\n"
+                    "drops:\n  - {pads: [hex], soils: [fjs1_lp], impact_speeds_m_s: [1.0]}\n", encoding="utf-8")
+    with pytest.raises(ValueError, match=r"drops\[0\]\.pads: 'hex' is a mesh pad"):
+        touchdown.synth(str(spec), out=str(tmp_path / "out"))
+    assert not (tmp_path / "out").exists()
