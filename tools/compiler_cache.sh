@@ -1,10 +1,11 @@
 # Sourced by tools/build.sh and tools/hardened_build.sh: the CMake arguments that put ccache
 # (Debian's `ccache`, installed by tools/install_deps.sh) in front of the compilers, in
-# `compiler_cache_args`. A clean clone on a machine that has built touchdown before (a developer's,
-# or CI's, which runs on the submitting machine) then compiles only what changed: CCACHE_BASEDIR
-# makes the clone's absolute paths relative, so another checkout of the same sources hits the same
-# entries. A cold cache costs what a plain build costs plus a few percent. The cached object is
-# the compiler's own output for the same preprocessed input and flags, so results do not change.
+# `compiler_cache_args`. What it saves: a rebuild of the same checkout after `rm -rf build`, a
+# branch switched back, and in another checkout the units that use no precompiled header. Units
+# that use one (most: the touchdown_pch_* targets) miss in a checkout in another folder, because
+# GCC's .gch embeds the paths it was built from (seen on a clean clone in /tmp: most of its
+# compiles missed a warm cache). A cold cache costs a plain build plus a few percent. The cached
+# object is the compiler's own output for the same input and flags, so results do not change.
 # TOUCHDOWN_NO_CCACHE=1 turns it off.
 compiler_cache_args=()
 if [ -z "${TOUCHDOWN_NO_CCACHE:-}" ] && command -v ccache >/dev/null 2>&1; then
