@@ -27,6 +27,19 @@ constexpr double kAtRestSpeed = 1e-10;
 // different landing (0.015 mm of sinkage, 0.002 deg of roll and pitch).
 constexpr double kCaptureTogether = 1e-3;
 
+// The lander's own scales, for thresholds that must scale with it: a geometrically similar lander
+// (lengths x k, masses x k^3, gravity / k) lands homologously (docs/lander_dynamics.md,
+// "Similitude"), and a threshold in fixed newtons or metres would hold one of the two to a tighter
+// or looser test than the other.
+//   length: the largest distance of a ball joint from the body's centre of mass (as the
+//   integrator's tolerances, lander_simulation.cpp); force: a pad's share of the lander's weight.
+double LengthScale(const LanderModel& m) {
+  double length = 0.0;
+  for (const Leg& leg : m.legs) length = std::max(length, leg.joint_B.norm());
+  return length;
+}
+double PadWeightShare(const LanderModel& m) { return m.TotalMass() * m.gravity_m_s2 / kNumLegs; }
+
 bool IsCrushable(const LanderModel& m, const StateLayout& L, int i) {
   return L.stroke_slot[i] >= 0 && m.legs[i].absorber->kind == ShockAbsorber::Kind::kCrushable;
 }
@@ -162,10 +175,11 @@ void LanderHybrid::Record(double t, const Eigen::VectorXd& s) {
 // A pad already on the surface at release (touchdown_speed_m_s: 0 places the lowest pad there)
 // touches down at t = 0: CVODE never reports a root that holds at the start.
 bool LanderHybrid::TouchdownsAtRelease(const Eigen::VectorXd& y) {
-  constexpr double kTouchingAtRelease_m = 1e-9;  // rounding of the placement, far below any sinkage
+  // Rounding of the placement, far below any sinkage: 1e-9 of the lander's size.
+  const double touching = 1e-9 * LengthScale(model_);
   const LanderPose pose = ComputePose(model_, L_, y);
   for (int i = 0; i < kNumLegs; ++i)
-    if (PadDepth(model_, terrain_, i, pose.pads[i]) >= -kTouchingAtRelease_m) {
+    if (PadDepth(model_, terrain_, i, pose.pads[i]) >= -touching) {
       result_.events.push_back({0.0, LanderEventKind::kTouchdown, i});
       result_.touchdown_time_s[i] = 0.0;
       result_.first_touchdown_s = 0.0;
@@ -276,7 +290,10 @@ void LanderHybrid::SettleHolds(double t, Eigen::VectorXd& s, const std::array<bo
     for (int i = 0; i < kNumLegs; ++i) {
       if (modes_.pad[i] != PadMode::kHeld) continue;
       const HoldCheck h = CheckHold(model_, terrain_, i, e.pose.pads[i], e.soil[i]);
-      const double scale = std::max(1.0, std::abs(e.soil[i].force_W.z()));
+      // Relative to the pad's load, and to its share of the weight for a pad that carries (almost)
+      // nothing, so that rounding in the margins never releases a hold.
+      const double scale = std::max({PadWeightShare(model_), std::abs(e.soil[i].force_W.z()),
+                                     std::numeric_limits<double>::min()});
       const double v = std::min({h.lift, h.sink, h.slide}) / scale;
       if (v < -1e-9 && v < worst_value) worst = i, worst_value = v, worst_check = h;
     }
