@@ -9,6 +9,9 @@ namespace touchdown::geom {
 namespace {
 constexpr double kPi = std::numbers::pi;
 
+// cos^k for k = 0..3, without pow.
+double CosineWeight(double c, int k) { return k == 0 ? 1.0 : k == 1 ? c : k == 2 ? c * c : c * c * c; }
+
 // Fraction T in [0, 1] of a piece (u0 -> u0 + du, du >= 0) that lies below depth d.
 double SubmergedFraction(double u0, double du, double depth_m) {
   if (depth_m <= u0) return 0.0;
@@ -43,6 +46,31 @@ AxisymmetricIntrusion::AxisymmetricIntrusion(const AxisymmetricProfile& profile,
     cos_sum_[k].assign(1, 0.0);
     for (const Piece& p : pieces_)
       cos_sum_[k].push_back(cos_sum_[k].back() + std::pow(p.cos_beta, k) * kPi * p.length * (2 * p.x0 + p.dx));
+    SmoothJoints(profile, k);
+  }
+}
+
+void AxisymmetricIntrusion::SmoothJoints(const AxisymmetricProfile& profile, int k) {
+  // dI_k/dT at either end of piece j, T its submerged fraction: the ring's weighted circumference
+  // times the piece length.
+  auto slope = [&](const Piece& p, double t) { return CosineWeight(p.cos_beta, k) * 2 * kPi * p.length * (p.x0 + p.dx * t); };
+  blend_lo_[k].assign(pieces_.size(), 0.0);
+  blend_hi_[k].assign(pieces_.size(), 0.0);
+  for (size_t j = 1; j < pieces_.size(); ++j) {
+    const Piece& below = pieces_[j - 1];
+    const Piece& above = pieces_[j];
+    if (!profile.points[j].smooth || !(below.du > 0.0) || !(above.du > 0.0)) continue;
+    // The smooth curve's dI_k/dd at the joint: the mean of its two chords' (their angles
+    // bracket the curve's there).
+    const double joint = 0.5 * (slope(below, 1.0) / below.du + slope(above, 0.0) / above.du);
+    blend_hi_[k][j - 1] = joint * below.du - slope(below, 1.0);
+    blend_lo_[k][j] = joint * above.du - slope(above, 0.0);
+  }
+  bias_[k].assign(pieces_.size() + 1, 0.0);
+  for (size_t j = 1; j < pieces_.size(); ++j) {
+    if (!profile.points[j].smooth || !(pieces_[j - 1].du > 0.0) || !(pieces_[j].du > 0.0)) continue;
+    auto excess = [&](size_t i) { return (blend_lo_[k][i] - blend_hi_[k][i]) / 12; };
+    bias_[k][j] = 0.5 * (excess(j - 1) + excess(j));
   }
 }
 
@@ -74,8 +102,7 @@ double AxisymmetricIntrusion::SubmergedArea(double depth_m) const {
 double AxisymmetricIntrusion::CosinePowerIntegral(double depth_m, int k) const {
   if (!(depth_m > 0.0)) return 0.0;
   const size_t n = std::upper_bound(top_u_.begin(), top_u_.end(), depth_m) - top_u_.begin();
-  auto weight = [k](double c) { return k == 0 ? 1.0 : k == 1 ? c : k == 2 ? c * c : c * c * c; };
-  if (k < 0 || k > 3) {  // rare: a direct sum
+  if (k < 0 || k > 3) {  // rare: a direct sum over the polyline
     double sum = 0.0;
     for (const Piece& p : pieces_) {
       const double T = SubmergedFraction(p.u0, p.du, depth_m);
@@ -88,7 +115,14 @@ double AxisymmetricIntrusion::CosinePowerIntegral(double depth_m, int k) const {
   if (n < pieces_.size()) {
     const Piece& p = pieces_[n];
     const double T = SubmergedFraction(p.u0, p.du, depth_m);
-    sum += weight(p.cos_beta) * 2 * kPi * p.length * (p.x0 * T + p.dx * T * T / 2);
+    sum += CosineWeight(p.cos_beta, k) * 2 * kPi * p.length * (p.x0 * T + p.dx * T * T / 2);
+    // Next to a smooth joint: the chord's quadratic plus T (1 - T) [(1 - T) lo - T hi] (the Hermite
+    // cubic through the same end values, with the joint's slope) minus 5/2 (lo - hi) T^2 (1 - T)^2,
+    // which has no value or slope at the ends and takes the cubic's mean excess over the chord's,
+    // (lo - hi) / 12, away: the piece keeps the polyline's mean over its depth span too.
+    const double lo = blend_lo_[k][n], hi = blend_hi_[k][n];
+    if (lo != 0.0 || hi != 0.0)
+      sum += T * (1 - T) * ((1 - T) * lo - T * hi) - ((1 - T) * bias_[k][n] + T * bias_[k][n + 1]);
   }
   return sum;
 }
