@@ -51,26 +51,35 @@ AxisymmetricIntrusion::AxisymmetricIntrusion(const AxisymmetricProfile& profile,
 }
 
 void AxisymmetricIntrusion::SmoothJoints(const AxisymmetricProfile& profile, int k) {
-  // dI_k/dT at either end of piece j, T its submerged fraction: the ring's weighted circumference
+  // dI_k/dT at either end of a piece, T its submerged fraction: the ring's weighted circumference
   // times the piece length.
-  auto slope = [&](const Piece& p, double t) { return CosineWeight(p.cos_beta, k) * 2 * kPi * p.length * (p.x0 + p.dx * t); };
-  blend_lo_[k].assign(pieces_.size(), 0.0);
-  blend_hi_[k].assign(pieces_.size(), 0.0);
+  auto slope = [&](const Piece& p, double t) {
+    return CosineWeight(p.cos_beta, k) * 2 * kPi * p.length * (p.x0 + p.dx * t);
+  };
+  auto smooth = [&](size_t j) {  // profile point j joins pieces j - 1 and j without a corner
+    return j > 0 && j < pieces_.size() && profile.points[j].smooth && pieces_[j - 1].du > 0.0 && pieces_[j].du > 0.0;
+  };
+  std::vector<Blend>& blend = blend_[k];
+  blend.assign(pieces_.size(), Blend{});
   for (size_t j = 1; j < pieces_.size(); ++j) {
+    if (!smooth(j)) continue;
     const Piece& below = pieces_[j - 1];
     const Piece& above = pieces_[j];
-    if (!profile.points[j].smooth || !(below.du > 0.0) || !(above.du > 0.0)) continue;
-    // The smooth curve's dI_k/dd at the joint: the mean of its two chords' (their angles
-    // bracket the curve's there).
+    // The curve's dI_k/dd at the joint: the mean of its two chords' (their angles bracket the curve's).
     const double joint = 0.5 * (slope(below, 1.0) / below.du + slope(above, 0.0) / above.du);
-    blend_hi_[k][j - 1] = joint * below.du - slope(below, 1.0);
-    blend_lo_[k][j] = joint * above.du - slope(above, 0.0);
+    blend[j - 1].hi = joint * below.du - slope(below, 1.0);
+    blend[j].lo = joint * above.du - slope(above, 0.0);
+    blend[j - 1].active = blend[j].active = true;
   }
-  bias_[k].assign(pieces_.size() + 1, 0.0);
+  // The cubic's mean excess over the chord's quadratic on a piece is (lo - hi) / 12; it varies
+  // slowly from piece to piece, so a bias linear across each piece between the joints' means of
+  // it takes it away without a kink of the first order.
+  auto excess = [&](size_t j) { return (blend[j].lo - blend[j].hi) / 12; };
   for (size_t j = 1; j < pieces_.size(); ++j) {
-    if (!profile.points[j].smooth || !(pieces_[j - 1].du > 0.0) || !(pieces_[j].du > 0.0)) continue;
-    auto excess = [&](size_t i) { return (blend_lo_[k][i] - blend_hi_[k][i]) / 12; };
-    bias_[k][j] = 0.5 * (excess(j - 1) + excess(j));
+    if (!smooth(j)) continue;
+    const double bias = 0.5 * (excess(j - 1) + excess(j));
+    blend[j - 1].bias_hi = bias;
+    blend[j].bias_lo = bias;
   }
 }
 
@@ -116,13 +125,10 @@ double AxisymmetricIntrusion::CosinePowerIntegral(double depth_m, int k) const {
     const Piece& p = pieces_[n];
     const double T = SubmergedFraction(p.u0, p.du, depth_m);
     sum += CosineWeight(p.cos_beta, k) * 2 * kPi * p.length * (p.x0 * T + p.dx * T * T / 2);
-    // Next to a smooth joint: the chord's quadratic plus T (1 - T) [(1 - T) lo - T hi] (the Hermite
-    // cubic through the same end values, with the joint's slope) minus 5/2 (lo - hi) T^2 (1 - T)^2,
-    // which has no value or slope at the ends and takes the cubic's mean excess over the chord's,
-    // (lo - hi) / 12, away: the piece keeps the polyline's mean over its depth span too.
-    const double lo = blend_lo_[k][n], hi = blend_hi_[k][n];
-    if (lo != 0.0 || hi != 0.0)
-      sum += T * (1 - T) * ((1 - T) * lo - T * hi) - ((1 - T) * bias_[k][n] + T * bias_[k][n + 1]);
+    // Next to a smooth joint: the Hermite cubic through the same end values with the joints'
+    // slopes, the chord's quadratic plus T (1 - T) [(1 - T) lo - T hi], less the bias.
+    const Blend& b = blend_[k][n];
+    if (b.active) sum += T * (1 - T) * ((1 - T) * b.lo - T * b.hi) - ((1 - T) * b.bias_lo + T * b.bias_hi);
   }
   return sum;
 }
