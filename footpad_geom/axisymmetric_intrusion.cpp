@@ -9,6 +9,9 @@ namespace touchdown::geom {
 namespace {
 constexpr double kPi = std::numbers::pi;
 
+// cos^k for k = 0..3, without pow.
+double CosineWeight(double c, int k) { return k == 0 ? 1.0 : k == 1 ? c : k == 2 ? c * c : c * c * c; }
+
 // Fraction T in [0, 1] of a piece (u0 -> u0 + du, du >= 0) that lies below depth d.
 double SubmergedFraction(double u0, double du, double depth_m) {
   if (depth_m <= u0) return 0.0;
@@ -43,6 +46,40 @@ AxisymmetricIntrusion::AxisymmetricIntrusion(const AxisymmetricProfile& profile,
     cos_sum_[k].assign(1, 0.0);
     for (const Piece& p : pieces_)
       cos_sum_[k].push_back(cos_sum_[k].back() + std::pow(p.cos_beta, k) * kPi * p.length * (2 * p.x0 + p.dx));
+    SmoothJoints(profile, k);
+  }
+}
+
+void AxisymmetricIntrusion::SmoothJoints(const AxisymmetricProfile& profile, int k) {
+  // dI_k/dT at either end of a piece, T its submerged fraction: the ring's weighted circumference
+  // times the piece length.
+  auto slope = [&](const Piece& p, double t) {
+    return CosineWeight(p.cos_beta, k) * 2 * kPi * p.length * (p.x0 + p.dx * t);
+  };
+  auto smooth = [&](size_t j) {  // profile point j joins pieces j - 1 and j without a corner
+    return j > 0 && j < pieces_.size() && profile.points[j].smooth && pieces_[j - 1].du > 0.0 && pieces_[j].du > 0.0;
+  };
+  std::vector<Blend>& blend = blend_[k];
+  blend.assign(pieces_.size(), Blend{});
+  for (size_t j = 1; j < pieces_.size(); ++j) {
+    if (!smooth(j)) continue;
+    const Piece& below = pieces_[j - 1];
+    const Piece& above = pieces_[j];
+    // The curve's dI_k/dd at the joint: the mean of its two chords' (their angles bracket the curve's).
+    const double joint = 0.5 * (slope(below, 1.0) / below.du + slope(above, 0.0) / above.du);
+    blend[j - 1].hi = joint * below.du - slope(below, 1.0);
+    blend[j].lo = joint * above.du - slope(above, 0.0);
+    blend[j - 1].active = blend[j].active = true;
+  }
+  // The cubic's mean excess over the chord's quadratic on a piece is (lo - hi) / 12; it varies
+  // slowly from piece to piece, so a bias linear across each piece between the joints' means of
+  // it takes it away without a kink of the first order.
+  auto excess = [&](size_t j) { return (blend[j].lo - blend[j].hi) / 12; };
+  for (size_t j = 1; j < pieces_.size(); ++j) {
+    if (!smooth(j)) continue;
+    const double bias = 0.5 * (excess(j - 1) + excess(j));
+    blend[j - 1].bias_hi = bias;
+    blend[j].bias_lo = bias;
   }
 }
 
@@ -74,8 +111,7 @@ double AxisymmetricIntrusion::SubmergedArea(double depth_m) const {
 double AxisymmetricIntrusion::CosinePowerIntegral(double depth_m, int k) const {
   if (!(depth_m > 0.0)) return 0.0;
   const size_t n = std::upper_bound(top_u_.begin(), top_u_.end(), depth_m) - top_u_.begin();
-  auto weight = [k](double c) { return k == 0 ? 1.0 : k == 1 ? c : k == 2 ? c * c : c * c * c; };
-  if (k < 0 || k > 3) {  // rare: a direct sum
+  if (k < 0 || k > 3) {  // rare: a direct sum over the polyline
     double sum = 0.0;
     for (const Piece& p : pieces_) {
       const double T = SubmergedFraction(p.u0, p.du, depth_m);
@@ -88,7 +124,11 @@ double AxisymmetricIntrusion::CosinePowerIntegral(double depth_m, int k) const {
   if (n < pieces_.size()) {
     const Piece& p = pieces_[n];
     const double T = SubmergedFraction(p.u0, p.du, depth_m);
-    sum += weight(p.cos_beta) * 2 * kPi * p.length * (p.x0 * T + p.dx * T * T / 2);
+    sum += CosineWeight(p.cos_beta, k) * 2 * kPi * p.length * (p.x0 * T + p.dx * T * T / 2);
+    // Next to a smooth joint: the Hermite cubic through the same end values with the joints'
+    // slopes, the chord's quadratic plus T (1 - T) [(1 - T) lo - T hi], less the bias.
+    const Blend& b = blend_[k][n];
+    if (b.active) sum += T * (1 - T) * ((1 - T) * b.lo - T * b.hi) - ((1 - T) * b.bias_lo + T * b.bias_hi);
   }
   return sum;
 }

@@ -31,6 +31,16 @@ class AxisymmetricIntrusion {
   // an element of attack angle beta has v.n = v cos(beta) (n the outward normal, v down).
   // Integral of cos^k(beta) dA over the submerged leading surface [m^2], k = 0..3; k = 0 is
   // SubmergedArea, k = 2 weights a normal stress c (v.n), k = 3 the vertical part of lambda (v.n)^2.
+  // On a polyline with corners only (flat, chamfer, cone, table) it is exact: the chords'
+  // quadratics in d. A sampled smooth curve (ProfilePoint::smooth: the exponential and
+  // spherical-cap bottoms) is different: there the chords' slopes dI_k/dd = 2 pi x cos^k(beta) /
+  // sin(beta) jump at every joint while the curve's do not, and a speed term rides on I_k through
+  // the whole stroke, so hundreds of kinks would cut the integrator's step at each (8 times the
+  // steps of the quasi-static drop). Next to a smooth joint a piece takes instead the Hermite
+  // cubic through the polyline's values with the mean of the chords' slopes at the joints, less
+  // its mean excess over the chord (a bias linear across the piece): I_k is then C1 through the
+  // curve as the real pad's is, and keeps the polyline's mean over every piece, so drops agree
+  // with the polyline's to their integration tolerance (tests/lander/pad/rig_drop_steps_test.cpp).
   double CosinePowerIntegral(double depth_m, int k) const;
   // Radius of the submerged footprint [m]: the radius at which the profile crosses the free
   // surface (the rim once the bottom is under). 0 at d <= 0; a flat pad jumps to r at d = 0+.
@@ -55,6 +65,14 @@ class AxisymmetricIntrusion {
   std::vector<double> slope_sum_;  // prefix sums over whole pieces: F/zeta = slope * d + offset
   std::vector<double> offset_sum_;
   std::vector<double> cos_sum_[4];  // prefix sums over whole pieces of cos^k(beta) times their area
+  // A piece next to a smooth joint (CosinePowerIntegral): the corrections to dI_k/dT [m^2] at its
+  // lower and upper end that give the joints' slopes, and the bias [m^2] taken off at either end.
+  struct Blend {
+    bool active = false;
+    double lo = 0.0, hi = 0.0, bias_lo = 0.0, bias_hi = 0.0;
+  };
+  std::vector<Blend> blend_[4];  // per piece
+  void SmoothJoints(const AxisymmetricProfile& profile, int k);
   double radius_m_;
   double thickness_m_;
 };

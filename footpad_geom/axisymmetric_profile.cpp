@@ -81,7 +81,7 @@ AxisymmetricProfile MakeExponentialProfile(double radius_m, double thickness_m, 
   std::vector<ProfilePoint> bottom;
   for (int i = 0; i <= segments; ++i) {
     const double x = radius_m * i / segments;
-    bottom.push_back({x, a0_m * std::expm1(a1_per_m * x)});
+    bottom.push_back({x, a0_m * std::expm1(a1_per_m * x), i > 0 && i < segments});
   }
   return WithSideWall(std::move(bottom), thickness_m);
 }
@@ -99,7 +99,7 @@ AxisymmetricProfile MakeSphericalCapProfile(double radius_m, double thickness_m,
   for (int i = 0; i <= segments; ++i) {
     // Even steps in the polar angle give even arc lengths on the cap.
     const double theta = std::asin(radius_m / sphere_radius_m) * i / segments;
-    bottom.push_back({sphere_radius_m * std::sin(theta), sphere_radius_m * (1 - std::cos(theta))});
+    bottom.push_back({sphere_radius_m * std::sin(theta), sphere_radius_m * (1 - std::cos(theta)), i > 0 && i < segments});
   }
   bottom.back().x_m = radius_m;
   return WithSideWall(std::move(bottom), thickness_m);

@@ -16,6 +16,10 @@ namespace touchdown::geom {
 struct ProfilePoint {
   double x_m = 0.0;  // radius [m]
   double u_m = 0.0;  // height above the lowest point [m]
+  // The generator curve has no corner here: the point samples a smooth curve (the exponential
+  // and spherical-cap bottoms between axis and rim), so the pieces on either side are chords of
+  // one curve, not two faces meeting at an edge. Corners (rim, chamfer, tabulated points) keep false.
+  bool smooth = false;
 };
 
 struct AxisymmetricProfile {
