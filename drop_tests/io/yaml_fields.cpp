@@ -73,18 +73,48 @@ void CheckTree(const YAML::Node& node, TreeWalk& walk, const std::string& path, 
     }
   }
 }
+// The line (1-based) where a second YAML document starts, or 0. Documents are separated by a
+// line that begins with "---" or ends one with "..." (column 0, then a space or the line's end);
+// no scalar may hold such a line, so a text scan finds them exactly.
+int SecondDocumentLine(const std::string& text) {
+  auto marker = [](const std::string& l, const char* m) {
+    return l.compare(0, 3, m) == 0 && (l.size() == 3 || l[3] == ' ' || l[3] == '\t' || l[3] == '\r');
+  };
+  bool content = false, ended = false;
+  int number = 0;
+  size_t start = 0;
+  while (start <= text.size()) {
+    size_t end = text.find('\n', start);
+    if (end == std::string::npos) end = text.size();
+    const std::string line = text.substr(start, end - start);
+    ++number;
+    start = end + 1;
+    const size_t first = line.find_first_not_of(" \t\r");
+    const bool blank = first == std::string::npos || line[first] == '#';
+    if (marker(line, "---")) {
+      if (content || ended) return number;
+      const size_t rest = line.find_first_not_of(" \t\r", 3);
+      content = rest != std::string::npos && line[rest] != '#';
+    } else if (marker(line, "...")) {
+      ended = true;
+    } else if (!blank && line[0] != '%') {
+      if (ended) return number;
+      content = true;
+    }
+  }
+  return 0;
+}
 }  // namespace
 
 YamlFields YamlFields::LoadFile(const std::string& path) {
   const std::string text = ReadInputFile(path);
   try {
-    // Every document is parsed: one that follows the first would otherwise be dropped unread.
-    const std::vector<YAML::Node> documents = YAML::LoadAll(text);
-    for (size_t i = 1; i < documents.size(); ++i)
-      if (documents[i].IsDefined() && !documents[i].IsNull())
-        throw MakeInputError(path, "", "holds a second YAML document (" + LineOf(documents[i]) +
-                                           "); a touchdown file is one document: remove the '---' and what follows");
-    YAML::Node root = documents.empty() ? YAML::Node() : documents.front();
+    // yaml-cpp reads the first document only: one that follows would be dropped unread. (Its
+    // LoadAll, which would see them all, loops forever on some malformed text: found by fuzzing.)
+    if (const int line = SecondDocumentLine(text); line > 0)
+      throw MakeInputError(path, "", "holds a second YAML document (line " + std::to_string(line) +
+                                         "); a touchdown file is one document: remove the '---' and what follows");
+    YAML::Node root = YAML::Load(text);
     if (!root.IsMap()) throw MakeInputError(path, "", "top level must be a YAML mapping");
     TreeWalk walk{path};
     CheckTree(root, walk, "", 0);

@@ -58,11 +58,22 @@ TEST_F(YamlLoad, ModestAliasesLoad) {
 }
 
 TEST_F(YamlLoad, ASecondDocumentIsRefused) {
-  EXPECT_NE(Refusal("mass_kg: 1\n---\nmass_kg: 2\n").find("holds a second YAML document (line 3)"),
+  EXPECT_NE(Refusal("mass_kg: 1\n---\nmass_kg: 2\n").find("holds a second YAML document (line 2)"),
+            std::string::npos);
+  EXPECT_NE(Refusal("mass_kg: 1\n...\nmass_kg: 2\n").find("holds a second YAML document (line 3)"),
             std::string::npos);
   // A document end marker with nothing after it is one document.
   EXPECT_EQ(Refusal("mass_kg: 1\n...\n"), "");
   EXPECT_EQ(Refusal("---\nmass_kg: 1\n"), "");
+}
+
+// Malformed text on which yaml-cpp's LoadAll never returned (found by the soil and model YAML
+// fuzzers): refused at once.
+TEST_F(YamlLoad, MalformedTextIsRefusedAtOnce) {
+  EXPECT_NE(Refusal(", The lunar soar soiekker-Wongeters), vacuum.\natmosphere: vacuum\nlaw: bekker\nbekker:\n"
+                    "  n: 2\n  k_c_re do not depend on it.\n"),
+            "");
+  EXPECT_NE(Refusal(",ype: \nsoils: Dfjs2_lp:3{z 2],onz i"), "");
 }
 
 }  // namespace
