@@ -5,4 +5,6 @@ set -euo pipefail
 costs="$1/Testing/Temporary/CTestCostData.txt"
 [ -f "$costs" ] || { echo "no test timings in $1"; exit 0; }
 echo "slowest tests (s):"
-awk 'NF == 3 && $1 != "---" { printf "%8.1f  %s\n", $3, $1 }' "$costs" | sort -rn | head -"${2:-10}"
+# The last stage reads all its input (head would exit early, and with pipefail sort's SIGPIPE,
+# status 141, would fail the script once the list outgrows the pipe's buffer).
+awk 'NF == 3 && $1 != "---" { printf "%8.1f  %s\n", $3, $1 }' "$costs" | sort -rn | awk -v n="${2:-10}" 'NR <= n'
