@@ -140,35 +140,37 @@ void AddStabilityCommand(CLI::App& app) {
       std::exit(128 + run.stop_signal);
     }
     if (rank != 0) return;
-    std::optional<stability::StudySummary> summary;
-    std::optional<stability::StudyFollowUps> follow_ups;
-    if (options.shard.count <= 1) {
-      // The follow-ups on this process alone (rank 0 under MPI), with its threads: they are few.
-      follow_ups = stability::RunStudyFollowUps(study, stability::ReadStudyRecords(study, args->out), args->out,
-                                                options, &std::cout);
-      if (follow_ups->stop_signal != 0) {
-        std::cout << "stability " << study.plan.name << ": stopped by signal " << follow_ups->stop_signal
-                  << " during its follow-ups, after committing the landings in flight; run the same command again "
-                     "to resume\n";
-        std::exit(128 + follow_ups->stop_signal);
-      }
-      summary = stability::WriteStudyAnalysis(study, args->out, *follow_ups);
-      RequireACompletedLanding(study, *summary, args->out);
-    }
-    std::cout << "stability " << study.plan.name << ": " << run.computed << " landings run now, "
-              << run.already_done << " already done, in " << std::fixed << std::setprecision(2) << run.seconds
-              << " s on " << run.ranks << " rank(s) x " << run.threads << " thread(s)\n"
-              << std::defaultfloat;
-    if (follow_ups && follow_ups->computed + follow_ups->already_done > 0)
-      std::cout << "stability " << study.plan.name << ": follow-ups " << follow_ups->computed << " landings run now, "
-                << follow_ups->already_done << " already done\n";
+    const auto print_run = [&] {
+      std::cout << "stability " << study.plan.name << ": " << run.computed << " landings run now, "
+                << run.already_done << " already done, in " << std::fixed << std::setprecision(2) << run.seconds
+                << " s on " << run.ranks << " rank(s) x " << run.threads << " thread(s)\n"
+                << std::defaultfloat;
+    };
     if (options.shard.count > 1) {
+      print_run();
       std::cout << "shard " << options.shard.Text() << " done; `touchdown merge` the shards' directories, then run "
-                << "`touchdown stability` on the merged one for the analysis\nwrote "
+                << "`touchdown stability` on the merged one for the follow-ups and the analysis\nwrote "
                 << sweep::ResultsDbPath(args->out) << "\n";
       return;
     }
-    PrintStudyResult(study, *summary, args->out);
+    // The follow-ups on this process alone (rank 0 under MPI), with its threads: they are few.
+    // What each one runs is said beside the progress (stderr).
+    const stability::StudyFollowUps follow_ups =
+        stability::RunStudyFollowUps(study, stability::ReadStudyRecords(study, args->out), args->out, options,
+                                     options.progress == sweep::ProgressMode::kNone ? nullptr : &std::cerr);
+    if (follow_ups.stop_signal != 0) {
+      std::cout << "stability " << study.plan.name << ": stopped by signal " << follow_ups.stop_signal
+                << " during its follow-ups, after committing the landings in flight; run the same command again to "
+                   "resume\n";
+      std::exit(128 + follow_ups.stop_signal);
+    }
+    const stability::StudySummary summary = stability::WriteStudyAnalysis(study, args->out, follow_ups);
+    RequireACompletedLanding(study, summary, args->out);
+    print_run();
+    if (follow_ups.computed + follow_ups.already_done > 0)
+      std::cout << "stability " << study.plan.name << ": follow-ups " << follow_ups.computed << " landings run now, "
+                << follow_ups.already_done << " already done\n";
+    PrintStudyResult(study, summary, args->out);
   });
 }
 
