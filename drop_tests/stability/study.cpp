@@ -135,7 +135,8 @@ JointRangeSettings ReadJointRange(const io::YamlFields& study) {
   const std::string key = "joint_range_sensitivity";
   if (!study.Has(key)) return j;
   if (study.node()[key].IsScalar()) {
-    if (study.String(key) != "none") study.Fail(key, "must be none or a mapping {samples}, got '" + study.String(key) + "'");
+    if (study.String(key) != "none")
+      study.Fail(key, "must be none or a mapping {samples}, got '" + study.String(key) + "'");
     j.enabled = false;
     return j;
   }

@@ -255,8 +255,10 @@ TEST_F(StabilityCli, BadStudiesExitTwoWithOneLineNamingFileAndField) {
       {head + "grid: {slope_deg: [0, 5]}\n", "--samples", {"--samples", "4"}},
       {"schema_version: 1\ntype: sweep\nlander: {scenario: lander_case_A}\ngrid: {slope_deg: [0, 5]}\n", "type", {}},
       {head + "grid: {slope_deg: [0, 5]}\nstudy: {recheck: {rtol: 1e-6}}\n", "study.recheck.rtol", {}},
-      {head + "grid: {slope_deg: [0, 5]}\nstudy: {recheck: {tilt_margin_deg: 100}}\n", "study.recheck.tilt_margin_deg", {}},
-      {head + "grid: {slope_deg: [0, 5]}\nstudy: {recheck: {rtol: 1e-9, tolerance: 1}}\n", "study.recheck.tolerance", {}},
+      {head + "grid: {slope_deg: [0, 5]}\nstudy: {recheck: {tilt_margin_deg: 100}}\n",
+       "study.recheck.tilt_margin_deg", {}},
+      {head + "grid: {slope_deg: [0, 5]}\nstudy: {recheck: {rtol: 1e-9, tolerance: 1}}\n", "study.recheck.tolerance",
+       {}},
   };
   int k = 0;
   for (const Bad& bad : cases) {

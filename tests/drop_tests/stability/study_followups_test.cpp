@@ -95,7 +95,8 @@ TEST_F(StudyFollowUpsTest, DerivedPlansChangeTheirModelAndTheirDigest) {
 
 TEST_F(StudyFollowUpsTest, StandingTipAngleIsTheSmallestEdgesAndKSpreadsOverTheStudy) {
   Study study = LoadCaseA("random: {samples: 10, seed: 1, slope_deg: {uniform: [0, 20]}}\n"
-                          "study: {joint_range_sensitivity: {samples: 4}, recheck: {rtol: 1e-9, tilt_margin_deg: 5}}\n");
+                          "study: {joint_range_sensitivity: {samples: 4},\n"
+                          "        recheck: {rtol: 1e-9, tilt_margin_deg: 5}}\n");
   EXPECT_EQ(study.recheck.rtol, 1e-9);
   EXPECT_EQ(study.recheck.tilt_margin_deg, 5.0);
   // The paper's lander standing level: its four edges alike, the CoM as far inside each edge as

@@ -184,7 +184,8 @@ TEST_F(StudySummaryTest, BadStudyBlocksNameFileAndField) {
   expect_error(head + "study: {worst_cases: -1}\n", "study.worst_cases", "");
   expect_error(head + "study: {colour: red}\n", "study.colour", "");
   // The follow-ups' settings (lander_case_A runs at rtol 1e-7).
-  expect_error(head + "study: {recheck: {rtol: 1e-7}}\n", "study.recheck.rtol", "below the study scenario's rtol 1e-07");
+  expect_error(head + "study: {recheck: {rtol: 1e-7}}\n", "study.recheck.rtol",
+               "below the study scenario's rtol 1e-07");
   expect_error(head + "study: {recheck: {rtol: 0}}\n", "study.recheck.rtol", "above 0");
   expect_error(head + "study: {recheck: {tilt_margin_deg: 91}}\n", "study.recheck.tilt_margin_deg", "from 0 to 90");
   expect_error(head + "study: {recheck: {tilt_margin_deg: -1}}\n", "study.recheck.tilt_margin_deg", "from 0 to 90");
