@@ -10,6 +10,7 @@
 #include "apps/sweep_run_flags.h"
 #include "drop_tests/io/output_path.h"
 #include "drop_tests/stability/study.h"
+#include "drop_tests/stability/study_followups.h"
 #include "drop_tests/stability/study_outputs.h"
 #include "drop_tests/sweep/sweep.h"
 #include "drop_tests/sweep/sweep_mpi.h"
@@ -45,6 +46,33 @@ int64_t ParseSamples(const std::string& text) {
   return static_cast<int64_t>(v);
 }
 
+// One line for the re-checks and one per joint-range variant (or why it did not run).
+void PrintFollowUps(const stability::StudySummary& s) {
+  if (s.recheck && s.recheck->enabled)
+    std::cout << "  re-checked " << s.recheck->rechecked << " landing(s) near the boundary with the reference model "
+              << "(rtol " << s.recheck->rtol << ", tip-over angle " << s.recheck->tip_angle_deg << " deg, margin "
+              << s.recheck->margin_deg << " deg): " << s.recheck->outcome_changed << " changed outcome"
+              << (s.recheck->reference_failed > 0
+                      ? ", " + std::to_string(s.recheck->reference_failed) + " failed (fast result kept)"
+                      : std::string())
+              << "\n";
+  if (!s.joint_range) return;
+  const stability::JointRangeReport& j = *s.joint_range;
+  if (!j.ran) {
+    std::cout << "  joint-range sensitivity not run: " << j.reason << "\n";
+    return;
+  }
+  for (const stability::JointRangeVariant& v : j.variants) {
+    std::cout << "  joint range x" << v.factor << " (half angle " << v.half_angle_deg << " deg), " << v.landings
+              << " landings: ";
+    if (v.landings == 0)
+      std::cout << "none completed\n";
+    else
+      std::cout << "P(tip-over) = " << v.probability << ", 95 % interval [" << v.interval.low << ", "
+                << v.interval.high << "], " << v.differs_from_study << " differ from x1\n";
+  }
+}
+
 void PrintStudyResult(const stability::Study& study, const stability::StudySummary& s, const std::string& out) {
   std::cout << "stability " << study.plan.name << ": " << s.landings << " landings"
             << (s.failed > 0 ? " (" + std::to_string(s.failed) + " failed, not counted)" : std::string()) << ", "
@@ -63,6 +91,7 @@ void PrintStudyResult(const stability::Study& study, const stability::StudySumma
     std::cout << "  " << s.swung_past_edge_on << " of the landings (" << s.tipped_swung_past_edge_on
               << " of the tip-overs) swung a pad past edge-on on its ball joint: these answers depend on the joints' "
                  "range (legs.cone_limit; docs/stability_studies.md, \"The pads' ball joints\")\n";
+  PrintFollowUps(s);
   std::cout << "wrote " << out << "/ (summary.json, percentiles.csv" << (study.map ? ", tip_over_map.csv" : "")
             << ", plots/)\n";
 }
@@ -111,22 +140,37 @@ void AddStabilityCommand(CLI::App& app) {
       std::exit(128 + run.stop_signal);
     }
     if (rank != 0) return;
-    std::optional<stability::StudySummary> summary;
-    if (options.shard.count <= 1) {
-      summary = stability::WriteStudyAnalysis(study, args->out);
-      RequireACompletedLanding(study, *summary, args->out);
-    }
-    std::cout << "stability " << study.plan.name << ": " << run.computed << " landings run now, "
-              << run.already_done << " already done, in " << std::fixed << std::setprecision(2) << run.seconds
-              << " s on " << run.ranks << " rank(s) x " << run.threads << " thread(s)\n"
-              << std::defaultfloat;
+    const auto print_run = [&] {
+      std::cout << "stability " << study.plan.name << ": " << run.computed << " landings run now, "
+                << run.already_done << " already done, in " << std::fixed << std::setprecision(2) << run.seconds
+                << " s on " << run.ranks << " rank(s) x " << run.threads << " thread(s)\n"
+                << std::defaultfloat;
+    };
     if (options.shard.count > 1) {
+      print_run();
       std::cout << "shard " << options.shard.Text() << " done; `touchdown merge` the shards' directories, then run "
-                << "`touchdown stability` on the merged one for the analysis\nwrote "
+                << "`touchdown stability` on the merged one for the follow-ups and the analysis\nwrote "
                 << sweep::ResultsDbPath(args->out) << "\n";
       return;
     }
-    PrintStudyResult(study, *summary, args->out);
+    // The follow-ups on this process alone (rank 0 under MPI), with its threads: they are few.
+    // What each one runs is said beside the progress (stderr).
+    const stability::StudyFollowUps follow_ups =
+        stability::RunStudyFollowUps(study, stability::ReadStudyRecords(study, args->out), args->out, options,
+                                     options.progress == sweep::ProgressMode::kNone ? nullptr : &std::cerr);
+    if (follow_ups.stop_signal != 0) {
+      std::cout << "stability " << study.plan.name << ": stopped by signal " << follow_ups.stop_signal
+                << " during its follow-ups, after committing the landings in flight; run the same command again to "
+                   "resume\n";
+      std::exit(128 + follow_ups.stop_signal);
+    }
+    const stability::StudySummary summary = stability::WriteStudyAnalysis(study, args->out, follow_ups);
+    RequireACompletedLanding(study, summary, args->out);
+    print_run();
+    if (follow_ups.computed + follow_ups.already_done > 0)
+      std::cout << "stability " << study.plan.name << ": follow-ups " << follow_ups.computed << " landings run now, "
+                << follow_ups.already_done << " already done\n";
+    PrintStudyResult(study, summary, args->out);
   });
 }
 

@@ -34,6 +34,7 @@
 #include "drop_tests/scenario/lander_scenario.h"
 #include "drop_tests/scenario/lander_trace_columns.h"
 #include "drop_tests/stability/study.h"
+#include "drop_tests/stability/study_followups.h"
 #include "drop_tests/stability/study_outputs.h"
 #include "drop_tests/sweep/sweep.h"
 #include "drop_tests/sweep/sweep_export.h"
@@ -245,7 +246,11 @@ py::dict Stability(const std::string& study_path, const std::string& out, const 
     options.progress = sweep::ProgressMode::kNone;
     options.stop = &stop;
     const sweep::SweepRunSummary s = sweep::RunSweep(study.plan, out, options);
-    if (s.stop_signal == 0) stability::WriteStudyAnalysis(study, out);
+    if (s.stop_signal != 0) return s;
+    // The follow-ups (re-checks, joint-range sensitivity) on the same threads, stopped alike.
+    const stability::StudyFollowUps f =
+        stability::RunStudyFollowUps(study, stability::ReadStudyRecords(study, out), out, options);
+    if (f.stop_signal == 0) stability::WriteStudyAnalysis(study, out, f);
     return s;
   }));
 }

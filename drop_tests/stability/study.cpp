@@ -98,6 +98,58 @@ int ReadCount(const io::YamlFields& study, const std::string& key, int fallback)
     study.Fail(key, "must be a whole number from 0 to " + std::to_string(kMaxListed) + ", got " + io::FormatNumber(v));
   return static_cast<int>(v);
 }
+// The integrator tolerance the study's landings run at (the lander scenario's).
+double ScenarioRtol(const sweep::SweepPlan& plan) {
+  return plan.lander ? plan.lander->options.integrator.rtol : lander::LanderRunOptions{}.integrator.rtol;
+}
+
+// `recheck: none`, or `recheck: {rtol, tilt_margin_deg}` (each optional): the reference tolerance
+// must be tighter than the scenario's, the margin an angle from 0 to 90 deg.
+RecheckSettings ReadRecheck(const io::YamlFields& study, RecheckSettings r, double scenario_rtol) {
+  if (!study.Has("recheck")) return r;
+  if (study.node()["recheck"].IsScalar()) {
+    if (study.String("recheck") != "none")
+      study.Fail("recheck", "must be none or a mapping {rtol, tilt_margin_deg}, got '" + study.String("recheck") + "'");
+    r.enabled = false;
+    return r;
+  }
+  const io::YamlFields f = study.Child("recheck");
+  f.RequireOnly({"rtol", "tilt_margin_deg"});
+  if (f.Has("rtol")) {
+    r.rtol = f.Number("rtol");
+    if (!(r.rtol > 0.0 && r.rtol < scenario_rtol))
+      f.Fail("rtol", "must be above 0 and below the study scenario's rtol " + io::FormatNumber(scenario_rtol) +
+                         " (the reference is the tighter one), got " + io::FormatNumber(r.rtol));
+  }
+  if (f.Has("tilt_margin_deg")) {
+    r.tilt_margin_deg = f.Number("tilt_margin_deg");
+    if (!(r.tilt_margin_deg >= 0.0 && r.tilt_margin_deg <= 90.0))
+      f.Fail("tilt_margin_deg", "must be from 0 to 90 deg, got " + io::FormatNumber(r.tilt_margin_deg));
+  }
+  return r;
+}
+
+// `joint_range_sensitivity: none`, or `{samples: K}` (1 to 1e9, default 1000).
+JointRangeSettings ReadJointRange(const io::YamlFields& study) {
+  JointRangeSettings j;
+  const std::string key = "joint_range_sensitivity";
+  if (!study.Has(key)) return j;
+  if (study.node()[key].IsScalar()) {
+    if (study.String(key) != "none")
+      study.Fail(key, "must be none or a mapping {samples}, got '" + study.String(key) + "'");
+    j.enabled = false;
+    return j;
+  }
+  const io::YamlFields f = study.Child(key);
+  f.RequireOnly({"samples"});
+  if (f.Has("samples")) {
+    const double v = f.Number("samples");
+    limits::Require(limits::kSamples, v, f.file(), f.Path("samples"));
+    if (v != std::floor(v)) f.Fail("samples", "must be a whole number, got " + io::FormatNumber(v));
+    j.samples = static_cast<int64_t>(v);
+  }
+  return j;
+}
 }  // namespace
 
 Study LoadStudy(const std::string& path, const std::string& model_override, std::optional<int64_t> samples_override) {
@@ -119,12 +171,16 @@ Study LoadStudy(const std::string& path, const std::string& model_override, std:
     study.plan.samples = *samples_override;
     study.samples_override = samples_override;
   }
+  // The reference tolerance by default: 1e-8, or a hundredth of a scenario's already as tight.
+  if (!(study.recheck.rtol < ScenarioRtol(study.plan))) study.recheck.rtol = ScenarioRtol(study.plan) / 100.0;
   if (f.Has("study")) {
     const io::YamlFields s = f.Child("study");
-    s.RequireOnly({"map", "worst_cases", "max_tip_over_cases"});
+    s.RequireOnly({"map", "worst_cases", "max_tip_over_cases", "recheck", "joint_range_sensitivity"});
     if (s.Has("map")) study.map = ReadMap(s, study.plan);
     study.worst_cases = ReadCount(s, "worst_cases", study.worst_cases);
     study.max_tip_over_cases = ReadCount(s, "max_tip_over_cases", study.max_tip_over_cases);
+    study.recheck = ReadRecheck(s, study.recheck, ScenarioRtol(study.plan));
+    study.joint_range = ReadJointRange(s);
   }
   return study;
 }

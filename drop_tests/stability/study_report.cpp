@@ -10,7 +10,7 @@
 
 namespace touchdown::stability {
 
-StudySummary WriteStudyAnalysis(const Study& study, const std::string& out_dir) {
+std::vector<sweep::DropRecord> ReadStudyRecords(const Study& study, const std::string& out_dir) {
   const std::string db_path = sweep::ResultsDbPath(out_dir);
   if (!std::filesystem::is_regular_file(db_path)) throw MakeInputError(db_path, "", "no study results here");
   const sweep::ResultsDb db(db_path);
@@ -24,8 +24,14 @@ StudySummary WriteStudyAnalysis(const Study& study, const std::string& out_dir) 
                          std::to_string(study.plan.size() - stored) + " of " + std::to_string(study.plan.size()) +
                              " landings missing (a shard's run? merge the shards, then run `touchdown stability` on "
                              "the merged directory)");
-  const std::vector<sweep::DropRecord> records = db.ReadAll(/*with_traces=*/false);
-  const StudySummary summary = Summarise(study, records);
+  return db.ReadAll(/*with_traces=*/false);
+}
+
+StudySummary WriteStudyAnalysis(const Study& study, const std::string& out_dir, const StudyFollowUps& follow_ups) {
+  const std::vector<sweep::DropRecord>& records = follow_ups.records;
+  StudySummary summary = Summarise(study, records);
+  summary.recheck = follow_ups.recheck;
+  summary.joint_range = follow_ups.joint_range;
   io::ReplaceDerivedOutputs(out_dir, io::OutputKind::kSweep, "summary.json", [&](const std::string& staging) {
     WriteStudyTables(study, summary, staging);
     WriteStudyPlots(study, summary, records, staging);
@@ -33,6 +39,12 @@ StudySummary WriteStudyAnalysis(const Study& study, const std::string& out_dir) 
                             [&](std::ostream& out) { out << SummaryJson(study, summary).dump(2) << '\n'; });
   });
   return summary;
+}
+
+StudySummary WriteStudyAnalysis(const Study& study, const std::string& out_dir) {
+  sweep::SweepRunOptions quiet;
+  quiet.progress = sweep::ProgressMode::kNone;
+  return WriteStudyAnalysis(study, out_dir, RunStudyFollowUps(study, ReadStudyRecords(study, out_dir), out_dir, quiet));
 }
 
 }  // namespace touchdown::stability

@@ -265,6 +265,8 @@ nlohmann::json SummaryJson(const Study& study, const StudySummary& s) {
                                               " failed (first: " + s.first_failure + ")"
                                         : "no landing completed";
   AddProbability(summary, s.landings, s.tip_over_probability, s.interval, none);
+  if (s.recheck) summary["recheck"] = RecheckJson(*s.recheck);
+  if (s.joint_range) summary["joint_range_sensitivity"] = JointRangeJson(*s.joint_range);
   return summary;
 }
 

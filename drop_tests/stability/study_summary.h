@@ -3,12 +3,14 @@
 // interval, percentiles of the landing metrics, the tip-over map, the worst cases with their
 // conditions (summary.json; docs/stability_studies.md defines every entry).
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json_fwd.hpp>
 
 #include "drop_tests/stability/study.h"
+#include "drop_tests/stability/study_followups.h"
 #include "drop_tests/stability/study_statistics.h"
 #include "drop_tests/sweep/results_db.h"
 
@@ -57,6 +59,9 @@ struct StudySummary {
   std::vector<MapCell> map;  // x bin major (cell ix * y bins + iy); empty without a map
   std::vector<sweep::DropRecord> worst_tilt;  // landings that stayed up with the largest max tilts, largest first
   std::vector<sweep::DropRecord> tip_overs;   // in index order, at most max_tip_over_cases
+  // The follow-ups (study_followups.h) the records above include; absent: not run.
+  std::optional<RecheckReport> recheck;
+  std::optional<JointRangeReport> joint_range;
 };
 
 // The value of a map axis for a landing: the plan's parameter for its index, in file units.

@@ -2,6 +2,7 @@
 
 #include "drop_tests/io/output_path.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cinttypes>
 #include <cmath>
@@ -9,6 +10,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <iterator>
 #include <sstream>
 #include <unistd.h>
 
@@ -36,6 +38,26 @@ std::string Hex(uint64_t v) {
 // memory bounded by these, never by the plan.
 constexpr size_t kFeedChunk = 4096;
 constexpr size_t kFeedLow = 1024;
+
+// The listed drops of the shard (SweepRunOptions::indices), ascending, each once; a drop outside
+// the plan is a caller's bug.
+std::vector<int64_t> ListedDropsOfShard(std::vector<int64_t> listed, int64_t total, const Shard& shard) {
+  std::sort(listed.begin(), listed.end());
+  listed.erase(std::unique(listed.begin(), listed.end()), listed.end());
+  if (!listed.empty() && (listed.front() < 0 || listed.back() >= total))
+    throw std::invalid_argument("RunSweep: a listed drop index is outside the plan's " + std::to_string(total));
+  std::erase_if(listed, [&](int64_t i) { return i % shard.count != shard.index; });
+  return listed;
+}
+
+// The listed drops not yet in the database (one range query over the list's span).
+std::vector<int64_t> ListedDropsToDo(const std::vector<int64_t>& listed, const ResultsDb& db) {
+  if (listed.empty()) return {};
+  const std::vector<int64_t> stored = db.StoredIndices(listed.front(), listed.back() + 1);
+  std::vector<int64_t> todo;
+  std::set_difference(listed.begin(), listed.end(), stored.begin(), stored.end(), std::back_inserter(todo));
+  return todo;
+}
 
 }  // namespace
 
@@ -161,8 +183,17 @@ SweepRunSummary RunSweep(const SweepPlan& plan, const std::string& out_dir, cons
   ResultsDb& db = *store.db;
   SweepRunSummary summary;
   summary.total = plan.size();
-  summary.in_shard = (plan.size() - options.shard.index + options.shard.count - 1) / options.shard.count;
-  summary.already_done = db.CountBelow(plan.size());
+  // With a list of drops, only those (and only their part of the shard) are this run's.
+  std::vector<int64_t> listed_todo;
+  if (options.indices) {
+    const std::vector<int64_t> listed = ListedDropsOfShard(*options.indices, plan.size(), options.shard);
+    listed_todo = ListedDropsToDo(listed, db);
+    summary.in_shard = static_cast<int64_t>(listed.size());
+    summary.already_done = summary.in_shard - static_cast<int64_t>(listed_todo.size());
+  } else {
+    summary.in_shard = (plan.size() - options.shard.index + options.shard.count - 1) / options.shard.count;
+    summary.already_done = db.CountBelow(plan.size());
+  }
   summary.retried = store.retried;
   summary.threads = options.threads > 0 ? options.threads : DefaultThreads();
   SweepProgress progress(options.log ? *options.log : std::cerr, options.progress, options.progress_interval_s,
@@ -171,9 +202,16 @@ SweepRunSummary RunSweep(const SweepPlan& plan, const std::string& out_dir, cons
     const SweepModels models(plan);
     DropEngine engine(models, summary.threads);
     RemainingDrops todo(plan.size(), db, options.shard);
+    size_t listed_fed = 0;
     EngineDriver driver;
     driver.feed_low = kFeedLow;
-    driver.next = [&] { return todo.Next(kFeedChunk); };
+    driver.next = [&] {
+      if (!options.indices) return todo.Next(kFeedChunk);
+      const size_t n = std::min(kFeedChunk, listed_todo.size() - listed_fed);
+      std::vector<int64_t> chunk(listed_todo.begin() + listed_fed, listed_todo.begin() + listed_fed + n);
+      listed_fed += n;
+      return chunk;
+    };
     driver.commit = [&](std::vector<DropRecord> batch) {
       db.Insert(batch);  // one transaction: all of the batch or none of it
       summary.computed += static_cast<int64_t>(batch.size());

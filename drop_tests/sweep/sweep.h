@@ -25,6 +25,7 @@
 #include <cstdint>
 #include <iosfwd>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -57,11 +58,15 @@ struct SweepRunOptions {
   // When it becomes non-zero (a signal number, StopOnSignals::flag()), the run stops: running
   // drops finish and are committed, the rest is left for a restart. nullptr: never.
   const std::atomic<int>* stop = nullptr;
+  // Only these drops of the plan (each in [0, plan size); order and repeats do not matter), the
+  // shard's share of them (i mod N == I); the others are neither run nor counted. Absent: every
+  // drop. A stability study's follow-ups run the landings they re-run this way.
+  std::optional<std::vector<int64_t>> indices;
 };
 
 struct SweepRunSummary {
   int64_t total = 0;         // drops in the sweep
-  int64_t in_shard = 0;      // drops this run is responsible for
+  int64_t in_shard = 0;      // drops this run is responsible for (of SweepRunOptions::indices, if given)
   int64_t already_done = 0;  // found in the database at the start
   int64_t computed = 0;      // run now
   int64_t failed = 0;        // failed drops stored (in the shard), old and new

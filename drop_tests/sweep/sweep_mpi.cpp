@@ -94,6 +94,8 @@ void RunWorkerRank(DropEngine& engine, const SweepRunOptions& options, SweepRunS
 
 SweepRunSummary RunSweepMpi(const SweepPlan& plan, const std::string& out_dir, const SweepRunOptions& options,
                             int* rank_out) {
+  // A list of drops (a study's follow-ups) runs on one rank with RunSweep.
+  if (options.indices) throw std::invalid_argument("RunSweepMpi runs every drop of the plan, not a list of them");
   MpiSession session;
   int rank = 0, ranks = 1;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);

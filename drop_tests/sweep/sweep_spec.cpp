@@ -414,6 +414,7 @@ std::string SweepPlan::DigestText() const {
   }
   if (model) s += model::ModelDigestText(*model);
   if (lander) s += "lander:" + lander->name + ":" + lander_digest + ";";
+  if (!variant.empty()) s += "variant:" + variant + ";";  // only when set: a loaded plan's digest stays
   return s;
 }
 

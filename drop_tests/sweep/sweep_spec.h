@@ -191,6 +191,11 @@ struct SweepPlan {
   TraceStorage traces = TraceStorage::kDecimated;
   int trace_max_samples = 64;
   pad::RigDropOptions rig;  // rest_duration_s and integrator.max_rhs_evaluations/max_wall_time_s from the file
+  // What a plan derived in memory from a loaded one changes (a stability study's re-checks at a
+  // tighter tolerance, its joint-range variants: drop_tests/stability/study_followups.h), as text;
+  // part of DigestText, so a derived plan's database is never taken for the original's. Empty
+  // for a plan as loaded (its digest as before); not written by WriteSweepPlan.
+  std::string variant;
 
   int64_t size() const;
   SweepDropParams DropAt(int64_t index) const;

@@ -103,7 +103,16 @@ TEST_F(StabilityCli, SweepOnTheStudyFileRunsTheSameLandings) {
 // A random patch field drawn per landing (data/studies/lunar_patchy_ground.yaml): the landings get
 // different grounds, and the same ones whatever the number of threads.
 TEST_F(StabilityCli, PatchFieldsPerLandingAreTheSameOnOneThreadAndOnTwo) {
-  const std::string study = std::string(TOUCHDOWN_SOURCE_DIR) + "/data/studies/lunar_patchy_ground.yaml";
+  // The shipped study without its joint-range sensitivity (its pads reach their stops: the
+  // follow-ups would run each landing twice more; FollowUps* below tests them).
+  const std::string dir = std::string(TOUCHDOWN_SOURCE_DIR) + "/data/studies/";
+  std::string text = Slurp(dir + "lunar_patchy_ground.yaml");
+  const std::string scenario = "scenario: lunar_patchy_ground_scenario.yaml", cases = "  max_tip_over_cases: 100\n";
+  ASSERT_NE(text.find(scenario), std::string::npos);
+  ASSERT_NE(text.find(cases), std::string::npos);
+  text.replace(text.find(scenario), scenario.size(), "scenario: " + dir + "lunar_patchy_ground_scenario.yaml");
+  text.replace(text.find(cases), cases.size(), cases + "  joint_range_sensitivity: none\n");
+  const std::string study = Write("patchy.yaml", text);
   for (const char* threads : {"1", "2"}) {
     const StabilityRun r = Run({"stability", study, "--out", Path(std::string("patchy") + threads), "--samples", "3",
                                 "--threads", threads, "--progress", "none"});
@@ -171,6 +180,68 @@ TEST_F(StabilityCli, MaxDropEvaluationsFailsLandingsThatARerunWithAHigherLimitRu
   EXPECT_FALSE(std::filesystem::exists(Path("bad_limit")));
 }
 
+// Two landings on a coarse pad: level (stays up, far from the boundary) and a 30 deg slope
+// (tips over, its pads at their stops); the joint-range sensitivity on K = 1 landing.
+std::string FollowUpStudy(const std::string& scenario) {
+  return "schema_version: 1\ntype: stability\nname: followups\nlander: {scenario: " + scenario +
+         "}\n"
+         "fixed: {downhill_azimuth_deg: -90, yaw_relative_to_slope_deg: 90}\n"
+         "grid: {slope_deg: [0, 30]}\n"
+         "study: {joint_range_sensitivity: {samples: 1}}\n";
+}
+const char* kCoarseScenario = R"(schema_version: 1
+type: lander
+name: coarse_case
+lander: sutoh2017_lander
+gravity_m_s2: 9.81
+ground: {soil: fjs1_lp}
+initial: {touchdown_speed_m_s: 1.0}
+simulation: {duration_s: 1.0, sample_rate_hz: 200, pad_angular_segments: 16}
+)";
+
+// The landing that tipped over ran again with the reference model; summary.json's counts match
+// the records; a rerun computes nothing and writes the same summary; so does a run on two threads.
+TEST_F(StabilityCli, FollowUpsRecheckTheTipOverAndRunTheJointRangeOnce) {
+  const std::string study = Write("study.yaml", FollowUpStudy(Write("coarse.yaml", kCoarseScenario)));
+  const StabilityRun first = Run({"stability", study, "--out", Path("one"), "--threads", "1", "--progress", "none"});
+  ASSERT_EQ(first.status, 0) << first.err;
+  const nlohmann::json j = nlohmann::json::parse(Slurp(Path("one") + "/summary.json"));
+  const nlohmann::json& recheck = j["recheck"];
+  // Drop 1 tipped over; drop 0 stood level, far below tip_angle_deg - margin_deg: only drop 1 re-runs.
+  EXPECT_EQ(j["tipped_over"], 1);
+  EXPECT_EQ(recheck["rechecked"], 1);
+  EXPECT_EQ(recheck["outcome_changed"], 0);
+  EXPECT_EQ(recheck["changed_landings"].size(), 0u);
+  EXPECT_EQ(j["tip_overs"][0]["drop_index"], 1);
+  EXPECT_LT(j["worst_max_tilt"][0]["max_tilt_deg"].get<double>(),
+            recheck["tip_angle_deg"].get<double>() - recheck["margin_deg"].get<double>());
+  const std::string rechecked = Rows(Path("one") + "/recheck/results.sqlite");
+  EXPECT_EQ(std::count(rechecked.begin(), rechecked.end(), '\n'), 1);
+  EXPECT_EQ(rechecked.substr(0, 2), "1|") << rechecked;  // drop 1, under its study index
+  // The tipping landing swung its pads to the stops (1 of 2 > 5 %): x0.5, x1, x1.5 on drop 0.
+  const nlohmann::json& range = j["joint_range_sensitivity"];
+  EXPECT_EQ(range["landings_at_stops"], 1);
+  ASSERT_EQ(range["ran"], true) << range.dump();
+  EXPECT_EQ(range["samples"], 1);
+  ASSERT_EQ(range["variants"].size(), 3u);
+  for (const char* factor : {"0.5", "1.5"}) {
+    const std::string rows = Rows(Path("one") + "/joint_range_x" + factor + "/results.sqlite");
+    EXPECT_EQ(rows.substr(0, 2), "0|") << rows;
+  }
+  EXPECT_NE(first.out.find("joint range x0.5 (half angle 15 deg), 1 landings: P(tip-over) = "), std::string::npos)
+      << first.out;
+  EXPECT_NE(first.out.find("follow-ups 3 landings run now, 0 already done"), std::string::npos) << first.out;
+
+  const std::string summary = Slurp(Path("one") + "/summary.json");
+  const StabilityRun rerun = Run({"stability", study, "--out", Path("one"), "--threads", "2", "--progress", "none"});
+  ASSERT_EQ(rerun.status, 0) << rerun.err;
+  EXPECT_NE(rerun.out.find("follow-ups 0 landings run now, 3 already done"), std::string::npos) << rerun.out;
+  EXPECT_EQ(Slurp(Path("one") + "/summary.json"), summary);
+  const StabilityRun two = Run({"stability", study, "--out", Path("two"), "--threads", "2", "--progress", "none"});
+  ASSERT_EQ(two.status, 0) << two.err;
+  EXPECT_EQ(Slurp(Path("two") + "/summary.json"), summary);
+}
+
 TEST_F(StabilityCli, BadStudiesExitTwoWithOneLineNamingFileAndField) {
   struct Bad {
     std::string text, field;
@@ -183,6 +254,11 @@ TEST_F(StabilityCli, BadStudiesExitTwoWithOneLineNamingFileAndField) {
       {head + "grid: {slope_deg: [0, 5]}\nstudy: {map: {x: slope_deg, y: roll_deg}}\n", "study.map.y", {}},
       {head + "grid: {slope_deg: [0, 5]}\n", "--samples", {"--samples", "4"}},
       {"schema_version: 1\ntype: sweep\nlander: {scenario: lander_case_A}\ngrid: {slope_deg: [0, 5]}\n", "type", {}},
+      {head + "grid: {slope_deg: [0, 5]}\nstudy: {recheck: {rtol: 1e-6}}\n", "study.recheck.rtol", {}},
+      {head + "grid: {slope_deg: [0, 5]}\nstudy: {recheck: {tilt_margin_deg: 100}}\n",
+       "study.recheck.tilt_margin_deg", {}},
+      {head + "grid: {slope_deg: [0, 5]}\nstudy: {recheck: {rtol: 1e-9, tolerance: 1}}\n", "study.recheck.tolerance",
+       {}},
   };
   int k = 0;
   for (const Bad& bad : cases) {

@@ -40,6 +40,15 @@ TEST_F(StudyLandings, LevelSlowSymmetricLandingsNeverTipOver) {
   EXPECT_NEAR(s.interval.high, 1.0 - std::sqrt(0.025), 1e-12);  // 0 of 2: 1 - 0.025^(1/2)
   EXPECT_EQ(s.unsettled, 0);
   EXPECT_LT(s.metrics.at(0).max, 0.01);  // symmetric: no tilt
+  // Nothing near the boundary to re-check; the pads never reach their stops.
+  ASSERT_TRUE(s.recheck && s.joint_range);
+  EXPECT_EQ(s.recheck->rechecked, 0);
+  EXPECT_FALSE(std::filesystem::exists(Path("out/recheck")));
+  EXPECT_TRUE(s.joint_range->cone_limit);
+  EXPECT_EQ(s.joint_range->at_stops, 0);
+  EXPECT_FALSE(s.joint_range->ran);
+  EXPECT_NE(s.joint_range->reason.find("not more than 5 %"), std::string::npos) << s.joint_range->reason;
+  EXPECT_FALSE(std::filesystem::exists(Path("out/joint_range_x0.5")));
 }
 
 TEST_F(StudyLandings, SteepSlopeWithFastDownhillSpeedAlwaysTipsOver) {
@@ -54,6 +63,22 @@ TEST_F(StudyLandings, SteepSlopeWithFastDownhillSpeedAlwaysTipsOver) {
   EXPECT_EQ(s.interval.high, 1.0);
   EXPECT_EQ(s.tip_overs.size(), 2u);
   EXPECT_EQ(s.metrics.at(0).count, 0);  // no landing stayed up
+  // Both tip-overs re-run with the reference model (its records in out/recheck/), and both tip.
+  ASSERT_TRUE(s.recheck && s.joint_range);
+  EXPECT_EQ(s.recheck->rechecked, 2);
+  EXPECT_EQ(s.recheck->outcome_changed, 0);
+  EXPECT_EQ(sweep::ResultsDb(sweep::ResultsDbPath(Path("out/recheck"))).Count(), 2);
+  // Tipping over swings the pads to their stops: the range's sensitivity on K = 2 landings.
+  const JointRangeReport& j = *s.joint_range;
+  EXPECT_EQ(j.at_stops, 2);
+  ASSERT_TRUE(j.ran) << j.reason;
+  EXPECT_EQ(j.samples, 2);
+  ASSERT_EQ(j.variants.size(), 3u);
+  EXPECT_EQ(j.variants[1].tipped, 2);  // x1: the study's own (reference) records
+  EXPECT_NEAR(j.variants[0].half_angle_deg, 15.0, 1e-12);
+  EXPECT_NEAR(j.variants[2].half_angle_deg, 45.0, 1e-12);
+  for (const JointRangeVariant& v : j.variants) EXPECT_EQ(v.landings, 2);
+  EXPECT_EQ(sweep::ResultsDb(sweep::ResultsDbPath(Path("out/joint_range_x1.5"))).Count(), 2);
 }
 
 }  // namespace

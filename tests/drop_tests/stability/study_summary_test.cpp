@@ -118,7 +118,11 @@ TEST_F(StudySummaryTest, CountsProbabilityAndPercentilesOfHandMadeRecords) {
 }
 
 TEST_F(StudySummaryTest, AnalysisWritesItsTablesAndPlotsFromTheDatabase) {
-  const Study study = LoadStudy(Write("study.yaml", SummaryStudyText()));
+  // Hand-made records: no follow-up (they would simulate the landings the records only pretend).
+  std::string text = SummaryStudyText();
+  text.replace(text.find("max_tip_over_cases: 2}"), 22,
+               "max_tip_over_cases: 2, recheck: none, joint_range_sensitivity: none}");
+  const Study study = LoadStudy(Write("study.yaml", text));
   const std::string out = Path("out");
   std::filesystem::create_directories(out);
   {
@@ -148,6 +152,11 @@ TEST_F(StudySummaryTest, AnalysisWritesItsTablesAndPlotsFromTheDatabase) {
   EXPECT_EQ(std::count(map.begin(), map.end(), '\n'), 9);  // header and 8 cells
   const std::string percentiles = Slurp(std::filesystem::path(out) / "percentiles.csv");
   EXPECT_NE(percentiles.find("\nmax_tilt_deg,deg,6,4,8.25,8.85"), std::string::npos) << percentiles;  // p99 8.85 (+1 ulp)
+  // The follow-ups turned off, and summary.json says so.
+  const nlohmann::json j = nlohmann::json::parse(Slurp(std::filesystem::path(out) / "summary.json"));
+  EXPECT_EQ(j["recheck"]["enabled"], false);
+  EXPECT_EQ(j["joint_range_sensitivity"]["ran"], false);
+  EXPECT_FALSE(std::filesystem::exists(std::filesystem::path(out) / "recheck"));
   // Another study (here: other samples) in the same database is refused.
   const Study other = LoadStudy(Path("study.yaml"), "", 12);
   EXPECT_THROW(WriteStudyAnalysis(other, out), InputError);
@@ -174,6 +183,18 @@ TEST_F(StudySummaryTest, BadStudyBlocksNameFileAndField) {
   expect_error(head + "study: {map: {x: slope_deg, y: roll_deg, bins: [1, 4]}}\n", "study.map.bins[0]", "from 2");
   expect_error(head + "study: {worst_cases: -1}\n", "study.worst_cases", "");
   expect_error(head + "study: {colour: red}\n", "study.colour", "");
+  // The follow-ups' settings (lander_case_A runs at rtol 1e-7).
+  expect_error(head + "study: {recheck: {rtol: 1e-7}}\n", "study.recheck.rtol",
+               "below the study scenario's rtol 1e-07");
+  expect_error(head + "study: {recheck: {rtol: 0}}\n", "study.recheck.rtol", "above 0");
+  expect_error(head + "study: {recheck: {tilt_margin_deg: 91}}\n", "study.recheck.tilt_margin_deg", "from 0 to 90");
+  expect_error(head + "study: {recheck: {tilt_margin_deg: -1}}\n", "study.recheck.tilt_margin_deg", "from 0 to 90");
+  expect_error(head + "study: {recheck: {rtol: 1e-9, margin: 2}}\n", "study.recheck.margin", "");
+  expect_error(head + "study: {recheck: sometimes}\n", "study.recheck", "none or a mapping");
+  expect_error(head + "study: {joint_range_sensitivity: {samples: 0}}\n", "study.joint_range_sensitivity.samples", "");
+  expect_error(head + "study: {joint_range_sensitivity: {samples: 2.5}}\n", "study.joint_range_sensitivity.samples",
+               "whole number");
+  expect_error(head + "study: {joint_range_sensitivity: {factor: 2}}\n", "study.joint_range_sensitivity.factor", "");
   expect_error(head, "--samples", "no random block", 5);
   expect_error("schema_version: 1\ntype: stability\ngrid: {slope_deg: [0, 5]}\n", "lander", "missing");
   // A plain sweep file is no study.

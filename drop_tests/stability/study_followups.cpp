@@ -1,0 +1,315 @@
+#include "drop_tests/stability/study_followups.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <ostream>
+
+#include "drop_tests/io/dataset_csv.h"
+#include "drop_tests/io/json_number.h"
+#include "lander/multibody/static_stability.h"
+#include "rft/units.h"
+
+namespace touchdown::stability {
+
+namespace {
+using sweep::DropRecord;
+
+bool Tipped(const DropRecord& r) { return r.tipped_over == 1.0; }
+
+// The lander as a drop of the plan builds it (the pad of every pad the plan names, else the
+// scenario's), standing level at zero stroke: body and pads aligned with the world.
+double TipAngleOfLander(const scenario::LanderScenario& sc) {
+  const scenario::LanderSetup setup = scenario::BuildLanderSetup(sc);
+  const lander::StateLayout layout(setup.model);
+  Eigen::VectorXd y = Eigen::VectorXd::Zero(layout.size);
+  y.segment<4>(layout.quat_B()) << 1.0, 0.0, 0.0, 0.0;
+  for (int i = 0; i < lander::kNumLegs; ++i) y.segment<4>(layout.quat_P(i)) << 1.0, 0.0, 0.0, 0.0;
+  double smallest = INFINITY;
+  for (const lander::EdgeTipping& e : lander::EdgeTippings(setup.model, layout, y))
+    smallest = std::min(smallest, e.tip_angle_rad);
+  return smallest / units::kDeg;
+}
+
+// Every joint's cone half angle x factor (stiffness and damping unchanged).
+void ScaleCones(scenario::LanderSpec& spec, double factor) {
+  if (spec.layout.cone) spec.layout.cone->half_angle_rad *= factor;
+  for (scenario::LanderLegSpec& leg : spec.legs)
+    if (leg.cone) leg.cone->half_angle_rad *= factor;
+}
+
+// The records stored in `dir`'s database for the drops `indices` (ascending), by index.
+std::map<int64_t, DropRecord> ReadStored(const std::string& dir, const std::vector<int64_t>& indices) {
+  std::map<int64_t, DropRecord> out;
+  const sweep::ResultsDb db(sweep::ResultsDbPath(dir), sweep::ResultsDb::Access::kReadOnly);
+  db.ForEach(
+      [&](const DropRecord& r) {
+        if (std::binary_search(indices.begin(), indices.end(), r.index)) out.emplace(r.index, r);
+      },
+      /*with_traces=*/false);
+  return out;
+}
+
+// Runs `indices` of `plan` into `dir` (a follow-up's sweep); adds its counts to `f`. False when stopped.
+bool RunFollowUp(const sweep::SweepPlan& plan, const std::vector<int64_t>& indices, const std::string& dir,
+                 const sweep::SweepRunOptions& options, StudyFollowUps& f) {
+  sweep::SweepRunOptions o = options;
+  o.shard = {};
+  o.indices = indices;
+  const sweep::SweepRunSummary run = sweep::RunSweep(plan, dir, o);
+  f.computed += run.computed;
+  f.already_done += run.already_done;
+  f.stop_signal = run.stop_signal;
+  return run.stop_signal == 0;
+}
+
+int64_t CountCompleted(const std::vector<DropRecord>& records) {
+  return std::count_if(records.begin(), records.end(), [](const DropRecord& r) { return r.ok; });
+}
+
+JointRangeVariant Variant(double factor, double half_angle_deg, const std::vector<int64_t>& indices,
+                          const std::map<int64_t, DropRecord>& records, const std::map<int64_t, DropRecord>& study) {
+  JointRangeVariant v;
+  v.factor = factor;
+  v.half_angle_deg = half_angle_deg * factor;
+  for (int64_t i : indices) {
+    const auto it = records.find(i);
+    if (it == records.end() || !it->second.ok) {
+      ++v.failed;
+      continue;
+    }
+    ++v.landings;
+    v.tipped += Tipped(it->second);
+    const DropRecord& s = study.at(i);
+    v.differs_from_study += s.ok && Tipped(s) != Tipped(it->second);
+  }
+  v.probability = v.landings > 0 ? static_cast<double>(v.tipped) / v.landings : std::nan("");
+  v.interval = ClopperPearson(v.tipped, v.landings);
+  return v;
+}
+
+// The joint-range report before anything runs: the landings at the stops and whether to run.
+JointRangeReport JointRangeTrigger(const Study& study, const std::vector<DropRecord>& records) {
+  JointRangeReport j;
+  j.enabled = study.joint_range.enabled;
+  j.half_angle_deg = ConeHalfAngleDeg(study.plan);
+  j.cone_limit = !std::isnan(j.half_angle_deg);
+  j.landings = CountCompleted(records);
+  if (j.cone_limit)
+    j.at_stops = std::count_if(records.begin(), records.end(),
+                               [&](const DropRecord& r) { return r.ok && ReachedStops(r, j.half_angle_deg); });
+  j.at_stops_fraction = j.landings > 0 ? static_cast<double>(j.at_stops) / j.landings : 0.0;
+  if (!j.cone_limit)
+    j.reason = "the lander has no cone limit on its ball joints (legs.cone_limit): no range to vary";
+  else if (!j.enabled)
+    j.reason = "turned off (study.joint_range_sensitivity: none)";
+  else if (j.at_stops_fraction <= kJointRangeTrigger)
+    j.reason = "the pads reached their stops in " + io::FormatNumber(100.0 * j.at_stops_fraction) +
+               " % of the landings, not more than 5 %";
+  return j;
+}
+}  // namespace
+
+double StandingTipAngleDeg(const sweep::SweepPlan& plan) {
+  if (!plan.lander) return std::nan("");
+  scenario::LanderScenario sc = *plan.lander;
+  bool varies_pad = false;
+  for (const sweep::SweepAxis& a : plan.grid) varies_pad = varies_pad || a.param == sweep::SweepParam::kPad;
+  for (const sweep::SweepRandom& r : plan.random) varies_pad = varies_pad || r.param == sweep::SweepParam::kPad;
+  varies_pad = varies_pad || plan.fixed[static_cast<int>(sweep::SweepParam::kPad)].has_value();
+  if (!varies_pad || plan.pads.empty()) return TipAngleOfLander(sc);
+  double smallest = INFINITY;
+  for (const io::PadSpec& pad : plan.pads) {
+    scenario::LanderScenario with_pad = sc;
+    with_pad.lander = scenario::LanderSpecWithPad(sc.lander, pad);
+    smallest = std::min(smallest, TipAngleOfLander(with_pad));
+  }
+  return smallest;
+}
+
+bool NeedsRecheck(const DropRecord& r, double tip_angle_deg, double margin_deg) {
+  if (!r.ok) return false;
+  const bool unsettled = !Tipped(r) && std::isnan(r.time_to_rest_s);  // as Summarise counts them
+  return Tipped(r) || unsettled || r.max_tilt_deg >= tip_angle_deg - margin_deg;
+}
+
+bool ReachedStops(const DropRecord& r, double half_angle_deg) { return r.max_joint_swing_deg > half_angle_deg; }
+
+sweep::SweepPlan RecheckPlan(const Study& study) {
+  sweep::SweepPlan plan = study.plan;
+  plan.lander->options.integrator.rtol = study.recheck.rtol;
+  // A scenario that sets a scalar atol keeps it in proportion to rtol (the tighter reference);
+  // without one the absolute tolerances are rtol times each state's scale already.
+  if (!plan.lander->options.scale_tolerances)
+    plan.lander->options.integrator.atol *= study.recheck.rtol / study.plan.lander->options.integrator.rtol;
+  plan.variant = "recheck: reference model, rtol " + io::FormatNumber(study.recheck.rtol);
+  return plan;
+}
+
+sweep::SweepPlan JointRangePlan(const Study& study, double factor) {
+  sweep::SweepPlan plan = study.plan;
+  ScaleCones(plan.lander->lander, factor);
+  plan.variant = "joint range: every cone half angle x" + io::FormatNumber(factor);
+  return plan;
+}
+
+double ConeHalfAngleDeg(const sweep::SweepPlan& plan) {
+  if (!plan.lander) return std::nan("");
+  double smallest = INFINITY;
+  for (const scenario::LanderLegSpec& leg : plan.lander->lander.legs)
+    if (leg.cone) smallest = std::min(smallest, leg.cone->half_angle_rad);
+  return std::isfinite(smallest) ? smallest / units::kDeg : std::nan("");
+}
+
+std::vector<int64_t> JointRangeIndices(const Study& study) {
+  const int64_t n = study.plan.size(), k = std::min(study.joint_range.samples, n);
+  std::vector<int64_t> out;
+  out.reserve(static_cast<size_t>(k));
+  // floor(j n / k) without overflow for n up to 1e9 x a grid: in long double, exact below 2^64.
+  for (int64_t j = 0; j < k; ++j)
+    out.push_back(static_cast<int64_t>(static_cast<long double>(j) * n / k));
+  return out;
+}
+
+std::string RecheckDir(const std::string& out_dir) { return (std::filesystem::path(out_dir) / "recheck").string(); }
+
+std::string JointRangeDir(const std::string& out_dir, double factor) {
+  return (std::filesystem::path(out_dir) / ("joint_range_x" + io::FormatNumber(factor))).string();
+}
+
+RecheckReport ApplyRechecks(const Study& study, double tip_angle_deg, std::vector<DropRecord>& records,
+                            const std::vector<DropRecord>& reference, std::vector<DropRecord>* fast) {
+  RecheckReport rep;
+  rep.enabled = study.recheck.enabled;
+  rep.rtol = study.recheck.rtol;
+  rep.tip_angle_deg = tip_angle_deg;
+  rep.margin_deg = study.recheck.tilt_margin_deg;
+  std::map<int64_t, size_t> position;
+  for (size_t k = 0; k < records.size(); ++k) position[records[k].index] = k;
+  for (const DropRecord& ref : reference) {  // index order
+    DropRecord& r = records.at(position.at(ref.index));
+    ++rep.rechecked;
+    if (!ref.ok) {  // no reference answer: the fast one stands, and the report says so
+      ++rep.reference_failed;
+      rep.reference_failed_landings.push_back(r.drop_id);
+      continue;
+    }
+    rep.largest_max_tilt_change_deg =
+        std::max(rep.largest_max_tilt_change_deg, std::abs(ref.max_tilt_deg - r.max_tilt_deg));
+    if (Tipped(ref) != Tipped(r)) {
+      ++rep.outcome_changed;
+      rep.changed_landings.push_back(r.drop_id);
+    }
+    if (fast) fast->push_back(r);
+    r = ref;
+  }
+  return rep;
+}
+
+StudyFollowUps RunStudyFollowUps(const Study& study, std::vector<DropRecord> records, const std::string& out_dir,
+                                 const sweep::SweepRunOptions& options, std::ostream* say) {
+  StudyFollowUps f;
+  const double tip_angle_deg = StandingTipAngleDeg(study.plan);
+  std::vector<DropRecord> reference;
+  if (study.recheck.enabled) {
+    std::vector<int64_t> todo;
+    for (const DropRecord& r : records)
+      if (NeedsRecheck(r, tip_angle_deg, study.recheck.tilt_margin_deg)) todo.push_back(r.index);
+    std::sort(todo.begin(), todo.end());
+    if (!todo.empty()) {
+      if (say)
+        *say << "stability " << study.plan.name << ": re-checking " << todo.size()
+             << " landing(s) near the tip-over boundary with the reference model (rtol "
+             << io::FormatNumber(study.recheck.rtol) << ") in " << RecheckDir(out_dir) << "/\n";
+      if (!RunFollowUp(RecheckPlan(study), todo, RecheckDir(out_dir), options, f)) return f;
+      for (auto& [index, r] : ReadStored(RecheckDir(out_dir), todo)) reference.push_back(std::move(r));
+    }
+  }
+  f.recheck = ApplyRechecks(study, tip_angle_deg, records, reference, &f.fast);
+
+  f.joint_range = JointRangeTrigger(study, records);
+  JointRangeReport& j = f.joint_range;
+  if (j.reason.empty()) {
+    const std::vector<int64_t> indices = JointRangeIndices(study);
+    j.samples = static_cast<int64_t>(indices.size());
+    std::map<int64_t, DropRecord> at_study;
+    for (const DropRecord& r : records)
+      if (std::binary_search(indices.begin(), indices.end(), r.index)) at_study.emplace(r.index, r);
+    std::map<double, std::map<int64_t, DropRecord>> at_factor;
+    for (double factor : kJointRangeFactors) {
+      const std::string dir = JointRangeDir(out_dir, factor);
+      if (say)
+        *say << "stability " << study.plan.name << ": pads at their stops in " << j.at_stops << " of " << j.landings
+             << " landings; running " << indices.size() << " of them with the joints' range x"
+             << io::FormatNumber(factor) << " in " << dir << "/\n";
+      if (!RunFollowUp(JointRangePlan(study, factor), indices, dir, options, f)) return f;
+      at_factor[factor] = ReadStored(dir, indices);
+    }
+    const double low = kJointRangeFactors[0], high = kJointRangeFactors[1];
+    j.variants = {Variant(low, j.half_angle_deg, indices, at_factor[low], at_study),
+                  Variant(1.0, j.half_angle_deg, indices, at_study, at_study),
+                  Variant(high, j.half_angle_deg, indices, at_factor[high], at_study)};
+    j.ran = true;
+  }
+  f.records = std::move(records);
+  return f;
+}
+
+nlohmann::json RecheckJson(const RecheckReport& r) {
+  if (!r.enabled)
+    return {{"enabled", false}, {"reason", "turned off (study.recheck: none): every landing is the fast model's"}};
+  return {{"enabled", true},
+          {"rtol", r.rtol},
+          {"tip_angle_deg", io::FiniteOrNull(r.tip_angle_deg)},
+          {"margin_deg", r.margin_deg},
+          {"criterion",
+           "landings that tipped over, ended unsettled, or whose max tilt reached tip_angle_deg - margin_deg ran "
+           "again with the reference model (the study's lander at rtol); every statistic here is over their "
+           "reference records"},
+          {"rechecked", r.rechecked},
+          {"outcome_changed", r.outcome_changed},
+          {"changed_landings", r.changed_landings},
+          {"reference_failed", r.reference_failed},
+          {"reference_failed_landings", r.reference_failed_landings},
+          {"largest_max_tilt_change_deg", r.largest_max_tilt_change_deg}};
+}
+
+nlohmann::json JointRangeJson(const JointRangeReport& j) {
+  nlohmann::json out = {{"cone_limit", j.cone_limit},
+                        {"half_angle_deg", io::FiniteOrNull(j.half_angle_deg)},
+                        {"landings_at_stops", j.at_stops},
+                        {"landings_at_stops_fraction", j.at_stops_fraction},
+                        {"at_stops_meaning",
+                         "completed landings in which a pad swung further than the cone limit's half angle on its "
+                         "ball joint (max_joint_swing_deg > half_angle_deg); above 5 % the study runs K of its "
+                         "landings again at half and at 1.5 times the range"},
+                        {"ran", j.ran}};
+  if (!j.ran) {
+    out["reason"] = j.reason;
+    return out;
+  }
+  out["samples"] = j.samples;
+  out["variants_meaning"] =
+      "the same K landings of the study (its indices floor(j N / K), j < K) at every joint's half angle x0.5, x1 "
+      "(the study's own records, after the re-checks) and x1.5, stiffness and damping unchanged; "
+      "outcome_differs_from_x1 counts the landings that tip over at one range and not at the other";
+  nlohmann::json variants = nlohmann::json::array();
+  for (const JointRangeVariant& v : j.variants) {
+    nlohmann::json e = {{"factor", v.factor},         {"half_angle_deg", v.half_angle_deg},
+                        {"landings", v.landings},     {"tipped_over", v.tipped},
+                        {"landings_failed", v.failed}, {"outcome_differs_from_x1", v.differs_from_study}};
+    if (v.landings > 0) {
+      e["tip_over_probability"] = v.probability;
+      e["tip_over_probability_interval_95"] = {v.interval.low, v.interval.high};
+    } else {
+      e["tip_over_probability_reason"] = "no landing completed";
+    }
+    variants.push_back(e);
+  }
+  out["variants"] = variants;
+  return out;
+}
+
+}  // namespace touchdown::stability
