@@ -70,7 +70,8 @@ const io::FieldTable<PaperCheck>& PaperFigureFields() {
 }
 
 PaperCheck ReadCheck(const io::YamlFields& f) {
-  f.RequireOnly({"name", "quantity", "numerator", "denominator", "speed_m_s", "paper", "source", "used_for_fit", "fit_by"});
+  f.RequireOnly({"name", "quantity", "numerator", "denominator", "speed_m_s", "paper", "source", "used_for_fit", "fit_by",
+                 "reading"});
   PaperCheck c;
   c.name = f.String("name");
   c.quantity = f.String("quantity");
@@ -92,6 +93,7 @@ PaperCheck ReadCheck(const io::YamlFields& f) {
   c.fit_by = f.StringOr("fit_by", "");
   if (c.used_for_fit && c.fit_by.empty()) f.Fail("fit_by", "missing (used_for_fit: true names the fit that used it)");
   if (!c.used_for_fit && !c.fit_by.empty()) f.Fail("fit_by", "only with used_for_fit: true");
+  c.reading = ReadPaperReading(f);
   return c;
 }
 
@@ -113,6 +115,7 @@ void WriteCheck(YAML::Emitter& y, const PaperCheck& c) {
   if (!c.source.empty()) y << YAML::Key << "source" << YAML::Value << c.source;
   if (c.used_for_fit)
     y << YAML::Key << "used_for_fit" << YAML::Value << true << YAML::Key << "fit_by" << YAML::Value << c.fit_by;
+  if (c.reading) y << YAML::Key << "reading" << YAML::Value << std::string(PaperReadingName(*c.reading));
   y << YAML::EndMap;
 }
 
@@ -369,15 +372,7 @@ void WriteCampaignSummaries(const CampaignResult& r, const fs::path& staging, co
           << j["mean_conversion_rate_W"].get<double>() << ',' << j["zeta_N_cm3"].get<double>() << '\n';
   });
   nlohmann::json checks = nlohmann::json::array();
-  for (const CheckOutcome& c : EvaluateChecks(r)) {
-    nlohmann::json j{{"name", c.check.name}, {"quantity", c.check.quantity}, {"speed_m_s", c.check.speed_m_s},
-                     {"simulated", c.simulated}, {"source", c.check.source}};
-    if (c.check.paper_experiment > 0) j["paper_experiment"] = c.check.paper_experiment;
-    if (c.check.paper_rft > 0) j["paper_rft"] = c.check.paper_rft;
-    j["used_for_fit"] = c.check.used_for_fit;
-    if (c.check.used_for_fit) j["fit_by"] = c.check.fit_by;
-    checks.push_back(j);
-  }
+  for (const CheckOutcome& c : EvaluateChecks(r)) checks.push_back(CheckOutcomeJson(c));
   const nlohmann::json summary{{"scenario", r.scenario.name}, {"drops", drops}, {"paper_checks", checks}};
   io::WriteFileAtomically((staging / "summary.json").string(), [&](std::ostream& out) { out << summary.dump(2) << '\n'; });
   WriteResolvedScenario(r.scenario, (staging / "scenario_resolved.yaml").string(), out_dir);
@@ -419,6 +414,17 @@ CampaignResult RunCampaignToDirectory(const CampaignScenario& scenario, const io
     WriteCampaignSummaries(r, staging, out.path);
   });
   return r;
+}
+
+nlohmann::json CheckOutcomeJson(const CheckOutcome& c) {
+  nlohmann::json j{{"name", c.check.name}, {"quantity", c.check.quantity}, {"speed_m_s", c.check.speed_m_s},
+                   {"simulated", c.simulated}, {"source", c.check.source}};
+  if (c.check.paper_experiment > 0) j["paper_experiment"] = c.check.paper_experiment;
+  if (c.check.paper_rft > 0) j["paper_rft"] = c.check.paper_rft;
+  j["used_for_fit"] = c.check.used_for_fit;
+  if (c.check.used_for_fit) j["fit_by"] = c.check.fit_by;
+  if (c.check.reading) j["reading"] = std::string(PaperReadingName(*c.check.reading));
+  return j;
 }
 
 }  // namespace touchdown::scenario

@@ -3,6 +3,7 @@
 // single-footpad campaign ships as data/scenarios/sutoh2017_single_footpad.yaml). Loading
 // resolves and validates every pad, soil and number before anything runs or is written.
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -10,6 +11,7 @@
 
 #include "drop_tests/io/progress.h"
 #include "drop_tests/drop/pad_drop.h"
+#include "drop_tests/scenario/paper_reading.h"
 
 namespace touchdown::scenario {
 
@@ -36,6 +38,8 @@ struct PaperCheck {
   // targets file (docs/calibration_targets.md) or the fit named in a data file.
   bool used_for_fit = false;
   std::string fit_by;
+  // The reading of an ambiguous paper sentence the paper figure rests on, if it is one.
+  std::optional<PaperReading> reading;
 };
 
 struct CampaignScenario {
@@ -58,6 +62,9 @@ struct CheckOutcome {
 };
 
 CampaignScenario LoadCampaignScenario(const std::string& path);
+
+// One check's entry in summary.json's paper_checks.
+nlohmann::json CheckOutcomeJson(const CheckOutcome& c);
 CampaignResult RunCampaign(const CampaignScenario& scenario);
 std::vector<CheckOutcome> EvaluateChecks(const CampaignResult& result);
 // Every case with its pad, soil and numbers as they were run (house style: resolved config). The

@@ -540,13 +540,15 @@ LanderScenario LoadLanderScenario(const std::string& path) {
   }
   if (f.Has("paper")) {
     const io::YamlFields p = f.Child("paper");
-    p.RequireOnly({"ground_case", "roll_pitch_within_deg", "source", "used_for_fit", "fit_by"});
+    p.RequireOnly({"ground_case", "roll_pitch_within_deg", "source", "used_for_fit", "fit_by", "reading"});
     s.paper_ground_case = p.StringOr("ground_case", "");
     if (p.Has("roll_pitch_within_deg"))
       s.paper = LanderPaperCheck{p.Positive("roll_pitch_within_deg"), p.StringOr("source", ""),
-                                 p.Has("used_for_fit") && p.Bool("used_for_fit"), p.StringOr("fit_by", "")};
+                                 p.Has("used_for_fit") && p.Bool("used_for_fit"), p.StringOr("fit_by", ""),
+                                 ReadPaperReading(p)};
     const bool used = s.paper && s.paper->used_for_fit, by = p.Has("fit_by");
     if ((p.Has("used_for_fit") || by) && !s.paper) p.Fail("used_for_fit", "needs roll_pitch_within_deg (the check it marks)");
+    if (p.Has("reading") && !s.paper) p.Fail("reading", "needs roll_pitch_within_deg (the check it marks)");
     if (used && !by) p.Fail("fit_by", "missing (used_for_fit: true names the fit that used it)");
     if (by && !used) p.Fail("fit_by", "only with used_for_fit: true");
   }
@@ -720,17 +722,21 @@ nlohmann::json LanderSummaryJson(const LanderRun& run) {
   j["touchdown_speed_m_s"] = TouchdownSpeed(run.scenario);
   if (run.scenario.model) j["model"] = model::ModelEffectsJson(*run.scenario.model);
   if (!run.scenario.paper_ground_case.empty()) j["paper_ground_case"] = run.scenario.paper_ground_case;
-  if (run.scenario.paper) {
-    const double within = run.scenario.paper->roll_pitch_within_deg;
-    j["paper_check"] = {{"quantity", "final roll and pitch"},
-                        {"paper_within_deg", within},
-                        {"simulated_roll_deg", roll},
-                        {"simulated_pitch_deg", pitch},
-                        {"within_paper_band", std::abs(roll) <= within && std::abs(pitch) <= within},
-                        {"source", run.scenario.paper->source},
-                        {"used_for_fit", run.scenario.paper->used_for_fit}};
-    if (run.scenario.paper->used_for_fit) j["paper_check"]["fit_by"] = run.scenario.paper->fit_by;
-  }
+  if (run.scenario.paper) j["paper_check"] = LanderPaperCheckJson(*run.scenario.paper, roll, pitch);
+  return j;
+}
+
+nlohmann::json LanderPaperCheckJson(const LanderPaperCheck& check, double roll_deg, double pitch_deg) {
+  const double within = check.roll_pitch_within_deg;
+  nlohmann::json j{{"quantity", "final roll and pitch"},
+                   {"paper_within_deg", within},
+                   {"simulated_roll_deg", roll_deg},
+                   {"simulated_pitch_deg", pitch_deg},
+                   {"within_paper_band", std::abs(roll_deg) <= within && std::abs(pitch_deg) <= within},
+                   {"source", check.source},
+                   {"used_for_fit", check.used_for_fit}};
+  if (check.used_for_fit) j["fit_by"] = check.fit_by;
+  if (check.reading) j["reading"] = std::string(PaperReadingName(*check.reading));
   return j;
 }
 
@@ -872,6 +878,7 @@ void WriteResolvedLanderScenario(const LanderScenario& s, const std::string& pat
       if (!s.paper->source.empty()) y << YAML::Key << "source" << YAML::Value << s.paper->source;
       if (s.paper->used_for_fit)
         y << YAML::Key << "used_for_fit" << YAML::Value << true << YAML::Key << "fit_by" << YAML::Value << s.paper->fit_by;
+      if (s.paper->reading) y << YAML::Key << "reading" << YAML::Value << std::string(PaperReadingName(*s.paper->reading));
     }
     y << YAML::EndMap;
   }

@@ -15,6 +15,7 @@
 #include "drop_tests/scenario/soil_field.h"
 #include "drop_tests/io/catalog.h"
 #include "drop_tests/model/model_file.h"
+#include "drop_tests/scenario/paper_reading.h"
 #include "lander/multibody/lander_simulation.h"
 
 namespace touchdown::scenario {
@@ -82,6 +83,7 @@ struct LanderPaperCheck {
   std::string source;
   bool used_for_fit = false;  // as a campaign's PaperCheck: used to fit a parameter, by `fit_by`
   std::string fit_by;
+  std::optional<PaperReading> reading;  // the reading of the paper's LP/CP sentence it compares with
 };
 
 struct LanderScenario {
@@ -133,6 +135,8 @@ LanderRun RunLanderScenario(const LanderScenario& scenario);
 
 // The JSON summary `touchdown lander` prints (pads in the paper's clockwise order).
 nlohmann::json LanderSummaryJson(const LanderRun& run);
+// The paper check's entry of the summary (`paper_check`), at the run's final roll and pitch.
+nlohmann::json LanderPaperCheckJson(const LanderPaperCheck& check, double roll_deg, double pitch_deg);
 void WriteLanderTraceCsv(const LanderRun& run, const std::string& path);
 // The files named are written for `output_dir`, the directory the file finally lives in
 // (drop_tests/io/paths_in_outputs.h: no absolute paths of this machine).

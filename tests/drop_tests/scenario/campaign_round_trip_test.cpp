@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include <nlohmann/json.hpp>
+
 #include "drop_tests/io/catalog.h"
 #include "drop_tests/scenario/campaign.h"
 #include "rft/input_error.h"
@@ -60,6 +62,7 @@ void ExpectSameCampaign(const CampaignScenario& a, const CampaignScenario& b) {
     EXPECT_EQ(p.source, q.source);
     EXPECT_EQ(p.used_for_fit, q.used_for_fit);
     EXPECT_EQ(p.fit_by, q.fit_by);
+    EXPECT_EQ(p.reading, q.reading);
   }
 }
 
@@ -114,6 +117,43 @@ TEST_F(CampaignRoundTrip, ResolvedCopyMustMatchItsFiles) {
     FAIL() << "an edited derived value was accepted";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("radius_mm"), std::string::npos) << e.what();
+  }
+}
+
+// A paper check names the reading of the paper's LP/CP sentence it compares with: the shipped LP/CP
+// check takes the default R1z, the resolved copy and summary.json carry it, an unknown reading is
+// refused naming the field.
+TEST_F(CampaignRoundTrip, PaperCheckNamesItsReading) {
+  const CampaignScenario paper = LoadCampaignScenario(io::DataDirectory() + "/scenarios/sutoh2017_single_footpad.yaml");
+  const PaperCheck* lp_cp = nullptr;
+  for (const PaperCheck& c : paper.checks)
+    if (c.name == "lp_over_cp_penetration_flat") lp_cp = &c;
+  ASSERT_NE(lp_cp, nullptr);
+  ASSERT_TRUE(lp_cp->reading.has_value());
+  EXPECT_EQ(*lp_cp->reading, PaperReading::kR1z);
+  EXPECT_EQ(lp_cp->paper_experiment, 1.09);
+  const nlohmann::json j = CheckOutcomeJson(CheckOutcome{*lp_cp, 1.1});
+  EXPECT_EQ(j.at("reading"), "R1z");
+  EXPECT_FALSE(CheckOutcomeJson(CheckOutcome{paper.checks.front(), 1.9}).contains("reading"));
+
+  const std::string head = "schema_version: 1\ntype: campaign\nname: r\ngravity_m_s2: 9.81\n"
+                           "drops:\n  - {pad: flat, soil: fjs1_lp, impact_speeds_m_s: 1.0}\n"
+                           "  - {pad: flat, soil: fjs1_cp, impact_speeds_m_s: 1.0}\n"
+                           "paper_checks:\n  - {name: c, quantity: final_penetration_m, numerator: {pad: flat, soil: fjs1_lp},"
+                           " denominator: {pad: flat, soil: fjs1_cp}, speed_m_s: 1.0, paper: {experiment: 1.9}, reading: ";
+  std::ofstream(Path("r3.yaml")) << head << "R3}\n";
+  EXPECT_EQ(LoadCampaignScenario(Path("r3.yaml")).checks.at(0).reading, PaperReading::kR3);
+  fs::create_directories(dir_ / "out");
+  RoundTripCampaign(Path("r3.yaml"), Path("out/r3_1.yaml"), Path("out/r3_2.yaml"));
+  EXPECT_NE(Slurp(Path("out/r3_1.yaml")).find("reading: R3"), std::string::npos);
+  for (const char* bad : {"r1", "R4", "\"\"", "[R1]"}) {
+    std::ofstream(Path("bad.yaml")) << head << bad << "}\n";
+    try {
+      LoadCampaignScenario(Path("bad.yaml"));
+      ADD_FAILURE() << bad << " accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("paper_checks[0].reading"), std::string::npos) << e.what();
+    }
   }
 }
 

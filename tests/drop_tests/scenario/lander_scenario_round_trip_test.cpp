@@ -4,6 +4,8 @@
 // no longer match the files it names is refused.
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include <filesystem>
 #include <fstream>
 
@@ -66,6 +68,7 @@ void ExpectSameScenario(const LanderScenario& a, const LanderScenario& b) {
     EXPECT_EQ(a.paper->source, b.paper->source);
     EXPECT_EQ(a.paper->used_for_fit, b.paper->used_for_fit);
     EXPECT_EQ(a.paper->fit_by, b.paper->fit_by);
+    EXPECT_EQ(a.paper->reading, b.paper->reading);
   }
   // The setup the run starts from: patches resolved to the same corners, the same soils and pose.
   const LanderSetup p = BuildLanderSetup(a), q = BuildLanderSetup(b);
@@ -164,6 +167,39 @@ TEST_F(LanderScenarioRoundTrip, APaperCheckUsedForAFitSaysByWhat) {
                             "{ground_case: A, used_for_fit: false}"}) {
     std::ofstream(Path("bad.yaml")) << head << "paper: " << paper << "\n";
     EXPECT_THROW(LoadLanderScenario(Path("bad.yaml")), InputError) << paper;
+  }
+}
+
+// The lander's paper check names the reading of the paper's LP/CP sentence it compares with: the
+// shipped cases the default R1z; the resolved copy and the summary's paper_check carry it; an
+// unknown reading, or one without the check it marks, is refused naming the field.
+TEST_F(LanderScenarioRoundTrip, APaperCheckNamesItsReading) {
+  for (const char* c : {"A", "B", "C"}) {
+    const LanderScenario s = LoadLanderScenario(io::DataDirectory() + "/scenarios/lander_case_" + c + ".yaml");
+    ASSERT_TRUE(s.paper.has_value()) << c;
+    EXPECT_EQ(s.paper->reading, PaperReading::kR1z) << c;
+  }
+  const std::string head = "schema_version: 1\ntype: lander\nname: read\nlander: sutoh2017_lander\n"
+                           "ground: {soil: fjs1_lp}\ninitial: {drop_height_m: 0.1}\n";
+  std::ofstream(Path("r1.yaml")) << head << "paper: {roll_pitch_within_deg: 0.5, source: s, reading: R1}\n";
+  fs::create_directories(dir_ / "out");
+  RoundTripLanderScenario(Path("r1.yaml"), Path("out/r1_1.yaml"), Path("out/r1_2.yaml"));
+  const LanderScenario s = LoadLanderScenario(Path("r1.yaml"));
+  ASSERT_TRUE(s.paper.has_value());
+  EXPECT_EQ(s.paper->reading, PaperReading::kR1);
+  EXPECT_EQ(LanderPaperCheckJson(*s.paper, 0.1, -0.2).at("reading"), "R1");
+  LanderPaperCheck none = *s.paper;
+  none.reading.reset();
+  EXPECT_FALSE(LanderPaperCheckJson(none, 0.1, -0.2).contains("reading"));
+  for (const char* paper : {"{roll_pitch_within_deg: 0.5, reading: R5}", "{roll_pitch_within_deg: 0.5, reading: r1z}",
+                            "{ground_case: A, reading: R1}"}) {
+    std::ofstream(Path("bad.yaml")) << head << "paper: " << paper << "\n";
+    try {
+      LoadLanderScenario(Path("bad.yaml"));
+      ADD_FAILURE() << paper << " accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("paper.reading"), std::string::npos) << e.what();
+    }
   }
 }
 

@@ -86,7 +86,7 @@ TEST_F(PaperCampaign, RatiosPrintedBesideThePapers) {
   ASSERT_EQ(checks.size(), 3u);
   std::map<std::string, double> simulated;
   for (const CheckOutcome& c : checks) {
-    std::printf("  %-34s simulated %.3f   paper experiment %.1f   paper RFT %.1f\n", c.check.name.c_str(), c.simulated,
+    std::printf("  %-34s simulated %.3f   paper experiment %.2f   paper RFT %.2f\n", c.check.name.c_str(), c.simulated,
                 c.check.paper_experiment, c.check.paper_rft);
     simulated[c.check.name] = c.simulated;
   }

@@ -2,6 +2,7 @@
 // and every bad entry refused at load with its file, field and value.
 #include <gtest/gtest.h>
 
+#include <stdexcept>
 #include <string>
 
 #include "drop_tests/targets/targets_file.h"
@@ -63,13 +64,13 @@ TEST_F(TargetsFileLoad, SharesScenariosAndFindsCampaignRowsAndLanders) {
 // scenario files found beside it.
 TEST_F(TargetsFileLoad, ShippedTargetsFilesLoad) {
   const std::string dir = std::string(TOUCHDOWN_SOURCE_DIR) + "/data/targets/";
-  for (const char* name : {"sutoh2017", "sutoh2017_single_footpad", "sutoh2017_spots", "sutoh2017_other_reading"}) {
+  for (const char* name : {"sutoh2017", "sutoh2017_r1", "sutoh2017_r1_single_footpad", "sutoh2017_r1_spots", "sutoh2017_r3"}) {
     SCOPED_TRACE(name);
     const TargetsFile f = LoadTargetsFile(dir + name + ".yaml");
     EXPECT_FALSE(f.parameters.empty());
     EXPECT_FALSE(f.targets.empty());
   }
-  const TargetsFile spots = LoadTargetsFile(dir + "sutoh2017_spots.yaml");
+  const TargetsFile spots = LoadTargetsFile(dir + "sutoh2017_r1_spots.yaml");
   int spot_landers = 0;
   for (const ScenarioRun& run : spots.scenarios)
     if (run.kind == ScenarioRun::Kind::kLander && run.lander->name.ends_with("_spots")) ++spot_landers;
@@ -77,6 +78,38 @@ TEST_F(TargetsFileLoad, ShippedTargetsFilesLoad) {
   bool spot_zeta = false;
   for (const Parameter& p : spots.parameters) spot_zeta |= p.soil_name == "fjs1_cp_spot";
   EXPECT_TRUE(spot_zeta);
+}
+
+const Target& TargetNamed(const TargetsFile& f, const std::string& name) {
+  for (const Target& t : f.targets)
+    if (t.name == name) return t;
+  throw std::runtime_error("no target " + name);
+}
+
+// Each shipped file encodes its reading of the paper's LP/CP sentence (docs/calibration_targets.md):
+// the default (R1z) fits the single-pad ratios only, vacuum LP/CP 1.09, and predicts every lander
+// target; R1 fits 1.9; R3 has only the bound LP/CP >= 1.
+TEST_F(TargetsFileLoad, ShippedFilesEncodeTheirReading) {
+  const std::string dir = std::string(TOUCHDOWN_SOURCE_DIR) + "/data/targets/";
+  const TargetsFile r1z = LoadTargetsFile(dir + "sutoh2017.yaml");
+  const Target& lp_cp = TargetNamed(r1z, "lp_over_cp_flat");
+  EXPECT_TRUE(lp_cp.fit);
+  EXPECT_DOUBLE_EQ(*lp_cp.value, 1.09);
+  int landers = 0;
+  for (const Target& t : r1z.targets)
+    if (r1z.scenarios[t.measure.scenario].kind == ScenarioRun::Kind::kLander) {
+      SCOPED_TRACE(t.name);
+      EXPECT_FALSE(t.fit);
+      ++landers;
+    }
+  EXPECT_EQ(landers, 9);  // cases A, B and C: roll, pitch, pad spread
+  for (const Parameter& p : r1z.parameters) EXPECT_NE(p.kind, ParameterKind::kLanderField);
+
+  EXPECT_DOUBLE_EQ(*TargetNamed(LoadTargetsFile(dir + "sutoh2017_r1.yaml"), "lp_over_cp_flat").value, 1.9);
+  const Target& r3 = TargetNamed(LoadTargetsFile(dir + "sutoh2017_r3.yaml"), "lp_over_cp_flat");
+  EXPECT_FALSE(r3.value.has_value());
+  EXPECT_DOUBLE_EQ(*r3.at_least, 1.0);
+  EXPECT_FALSE(r3.at_most.has_value());
 }
 
 TEST_F(TargetsFileLoad, RefusesBadEntriesNamingFileFieldAndValue) {
