@@ -18,7 +18,7 @@ targets=$(cd "$root/tests/fuzz/corpus" && ls)
 out="$build/fuzz"
 mkdir -p "$out/crashes" "$out/work" "$out/logs"
 export TOUCHDOWN_DATA_DIR="$root/data"
-export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:halt_on_error=1
+export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:halt_on_error=1:detect_stack_use_after_return=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 
 fuzz_one() {

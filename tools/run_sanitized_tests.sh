@@ -14,7 +14,11 @@ build=${TOUCHDOWN_HARDENING_DIR:-$root/build-hard}
 jobs=${TOUCHDOWN_JOBS:-$(nproc)}
 bash "$root/tools/hardened_build.sh"
 
-export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:halt_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1:check_initialization_order=1
+# Stack use after return is looked for by the fuzzers (tools/run_fuzzers.sh), on the parsers' varied
+# inputs, not here: its fake stacks cost 15-30 % of this suite's CPU (pad, multibody and drop tests,
+# measured 2026-11-27), and the compilers' -Wreturn-local-addr / -Wreturn-stack-address catch the
+# plain cases at build time.
+export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:halt_on_error=1:strict_string_checks=1:detect_stack_use_after_return=0:check_initialization_order=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 cd "$build"
 # Without a timing history (a clean clone) CTest starts tests in the order they are listed, and a
@@ -35,10 +39,13 @@ fi
 #   that the old or the new output is left whole. A killed process reports nothing to a sanitizer;
 #   the writer's code (drop_tests/io/output_path.cpp) runs here through its unit tests
 #   (tests/drop_tests/io/output_path_test.cpp) and every command's outputs.
-# - Determinism.*: the same drop, campaign, lander run and sweep again (twice, on 1 and 2 threads,
-#   in shards) to compare bytes; every one of those commands runs here in its own CLI tests, the
-#   threaded sweep and shards and merges included (apps/stability_cli_test.cpp, sweep tests).
-left_out='^(CliHelp\.EveryCommandsExamplesRunAsWritten|Readme\.EveryExampleRunsAsWritten|OutputReplaceKill\..*|Determinism\..*)$'
+# - Determinism.* and StabilityCli.PatchFieldsPerLandingAreTheSameOnOneThreadAndOnTwo: the same
+#   drop, campaign, lander run, sweep or patchy-ground study again (twice, on 1 and 2 threads, in
+#   shards) to compare bytes; every one of those commands runs here in its own CLI tests, the
+#   threaded sweep and shards and merges included (apps/stability_cli_test.cpp, sweep tests), and
+#   the patch field in scenario and stability tests. (The patchy-ground comparison alone took 200
+#   s of this suite's CPU.)
+left_out='^(CliHelp\.EveryCommandsExamplesRunAsWritten|Readme\.EveryExampleRunsAsWritten|OutputReplaceKill\..*|Determinism\..*|StabilityCli\.PatchFieldsPerLandingAreTheSameOnOneThreadAndOnTwo)$'
 start=$SECONDS
 ctest --output-on-failure --parallel "$jobs" --timeout 900 -E "$left_out"
 echo "sanitized ctest: $((SECONDS - start)) s on $jobs jobs"
