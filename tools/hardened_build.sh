@@ -5,9 +5,7 @@
 # reuses every object of the first.
 #
 # Optimised at -O1 with line tables only (-g1): enough for symbolised reports, and it keeps the
-# CGAL translation units' compile time and the suite's run time in CI's budget. Test code and the
-# once-per-mesh CGAL wrappers compile at -O0 (TOUCHDOWN_UNOPTIMISED_GLUE, top-level CMakeLists.txt):
-# half their compile time, for a small share of the run time. What no sanitized
+# CGAL translation units' compile time and the suite's run time in CI's budget. What no sanitized
 # test runs is left out: the benchmarks, the derivation programs of tools/ and the Python module
 # (an ASan-instrumented extension cannot be loaded into an uninstrumented python3).
 set -euo pipefail
@@ -18,7 +16,7 @@ bash "$root/tools/install_deps.sh"
 source "$root/tools/compiler_cache.sh"
 CC=clang CXX=clang++ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo "${compiler_cache_args[@]}" \
   "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" \
-  -DTOUCHDOWN_SANITIZE=ON -DTOUCHDOWN_FUZZ=ON -DTOUCHDOWN_UNOPTIMISED_GLUE=ON -DTOUCHDOWN_BUILD_BENCH=OFF -DTOUCHDOWN_BUILD_TOOLS=OFF \
+  -DTOUCHDOWN_SANITIZE=ON -DTOUCHDOWN_FUZZ=ON -DTOUCHDOWN_BUILD_BENCH=OFF -DTOUCHDOWN_BUILD_TOOLS=OFF \
   -DTOUCHDOWN_NATIVE=ON >/dev/null
 start=$SECONDS
 cmake --build "$build" --parallel "$jobs" ${1:+--target "$@"}

@@ -45,7 +45,12 @@ fi
 #   threaded sweep and shards and merges included (apps/stability_cli_test.cpp, sweep tests), and
 #   the patch field in scenario and stability tests. (The patchy-ground comparison alone took 200
 #   s of this suite's CPU.)
-left_out='^(CliHelp\.EveryCommandsExamplesRunAsWritten|Readme\.EveryExampleRunsAsWritten|OutputReplaceKill\..*|Determinism\..*|StabilityCli\.PatchFieldsPerLandingAreTheSameOnOneThreadAndOnTwo)$'
+# - The same workflow on other data: Library/HiddenEffect.* runs `diagnose` end to end once per
+#   hidden effect, and Issue13/ShippedPadFreeDrop.* a free drop of each shipped pad at every tilt.
+#   Here the first for a hidden inertial drag and a gas cushion, the second for the curved (revolved)
+#   and the hex (mesh) pad; each effect's and each pad's own code has unit tests that run here
+#   (tests/drop_tests/model/effects_test.cpp, tests/lander/pad/).
+left_out='^(CliHelp\.EveryCommandsExamplesRunAsWritten|Readme\.EveryExampleRunsAsWritten|OutputReplaceKill\..*|Determinism\..*|StabilityCli\.PatchFieldsPerLandingAreTheSameOnOneThreadAndOnTwo)$|^Library/HiddenEffect\..*/(added_mass|sensor_offset|compaction_peak|depth_exponent|rate_damping)|^Issue13/ShippedPadFreeDrop\..*/(flat|c4)'
 start=$SECONDS
 ctest --output-on-failure --parallel "$jobs" --timeout 900 -E "$left_out"
 echo "sanitized ctest: $((SECONDS - start)) s on $jobs jobs"
