@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Runs every libFuzzer target for a bounded time (FUZZ_SECONDS, default 20) from its seed corpus
+# Runs every libFuzzer target for a bounded time (FUZZ_SECONDS, default 12) from its seed corpus
 # in tests/fuzz/corpus/<name>/ (target fuzz_<name>), FUZZ_PARALLEL targets at a time (default:
 # the number of cores). The targets are built with clang, ASan and UBSan in build-hard/ (the
 # build tools/run_sanitized_tests.sh uses, tools/hardened_build.sh; configured here if it does not exist yet). Any crash,
@@ -10,7 +10,7 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${TOUCHDOWN_HARDENING_DIR:-$root/build-hard}
-seconds=${FUZZ_SECONDS:-20}
+seconds=${FUZZ_SECONDS:-12}
 parallel=${FUZZ_PARALLEL:-$(nproc)}
 bash "$root/tools/hardened_build.sh" touchdown_fuzzers  # already built when run_sanitized_tests.sh ran first
 

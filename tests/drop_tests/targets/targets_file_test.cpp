@@ -106,7 +106,8 @@ TEST_F(TargetsFileLoad, ShippedFilesEncodeTheirReading) {
   for (const Parameter& p : r1z.parameters) EXPECT_NE(p.kind, ParameterKind::kLanderField);
 
   EXPECT_DOUBLE_EQ(*TargetNamed(LoadTargetsFile(dir + "sutoh2017_r1.yaml"), "lp_over_cp_flat").value, 1.9);
-  const Target& r3 = TargetNamed(LoadTargetsFile(dir + "sutoh2017_r3.yaml"), "lp_over_cp_flat");
+  const TargetsFile r3_file = LoadTargetsFile(dir + "sutoh2017_r3.yaml");  // outlives the reference below
+  const Target& r3 = TargetNamed(r3_file, "lp_over_cp_flat");
   EXPECT_FALSE(r3.value.has_value());
   EXPECT_DOUBLE_EQ(*r3.at_least, 1.0);
   EXPECT_FALSE(r3.at_most.has_value());
