@@ -719,6 +719,10 @@ nlohmann::json LanderSummaryJson(const LanderRun& run) {
     j["rest_time_since_release_s"] = *r.rest_time_s;
     if (r.first_touchdown_s) j["time_to_rest_s"] = *r.rest_time_s - *r.first_touchdown_s;
   }
+  if (r.tipped_over) {  // the support edge it went over (pads clockwise) and the direction it fell
+    j["tip_over_edge_pads"] = {r.tip_over_edge + 1, (r.tip_over_edge + 1) % lander::kNumLegs + 1};
+    j["tip_over_azimuth_deg"] = r.tip_over_azimuth_rad / kDeg;
+  }
   j["touchdown_speed_m_s"] = TouchdownSpeed(run.scenario);
   if (run.scenario.model) j["model"] = model::ModelEffectsJson(*run.scenario.model);
   if (!run.scenario.paper_ground_case.empty()) j["paper_ground_case"] = run.scenario.paper_ground_case;

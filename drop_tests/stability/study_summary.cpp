@@ -135,8 +135,30 @@ StudySummary Summarise(const Study& study, const std::vector<DropRecord>& record
   return s;
 }
 
+namespace {
+// The signed difference a - b of two azimuths, wrapped to (-180, 180] deg.
+double AzimuthDifferenceDeg(double a_deg, double b_deg) {
+  double d = std::remainder(a_deg - b_deg, 360.0);
+  return d == -180.0 ? 180.0 : d;
+}
+
+nlohmann::json TipOverJson(const DropRecord& r) {
+  const int from = static_cast<int>(r.tip_over_edge);
+  nlohmann::json j = {{"edge_pads", {from, from % 4 + 1}},
+                      {"edge_pad_soils", {r.pad_soil[from - 1], r.pad_soil[from % 4]}},
+                      {"fell_towards_azimuth_deg", io::FiniteOrNull(r.tip_over_azimuth_deg)}};
+  // On a slope: where it fell relative to downhill (0 downhill, +-180 uphill), and relative to its
+  // horizontal velocity at touchdown (0: straight on, where the landing carried it).
+  if (std::isfinite(r.downhill_azimuth_deg) && r.slope_deg > 0.0)
+    j["fell_from_downhill_deg"] = AzimuthDifferenceDeg(r.tip_over_azimuth_deg, r.downhill_azimuth_deg);
+  if (std::isfinite(r.horizontal_azimuth_deg) && r.horizontal_speed_m_s > 0.0)
+    j["fell_from_horizontal_velocity_deg"] = AzimuthDifferenceDeg(r.tip_over_azimuth_deg, r.horizontal_azimuth_deg);
+  return j;
+}
+}  // namespace
+
 nlohmann::json LandingJson(const DropRecord& r) {
-  return {{"drop_id", r.drop_id},
+  nlohmann::json j = {{"drop_id", r.drop_id},
           {"drop_index", r.index},
           {"tipped_over", r.tipped_over == 1.0},
           {"max_tilt_deg", io::FiniteOrNull(r.max_tilt_deg)},
@@ -158,6 +180,10 @@ nlohmann::json LandingJson(const DropRecord& r) {
             {"soil", r.soil},
             {"pad_soils", r.pad_soil},
             {"ground_case", r.ground_case}}}};
+  // 1-4 as written; anything else (a database from elsewhere) lists no edge rather than a wrong pad.
+  if (r.tip_over_edge >= 1.0 && r.tip_over_edge <= 4.0 && r.tip_over_edge == std::floor(r.tip_over_edge))
+    j["tip_over"] = TipOverJson(r);
+  return j;
 }
 
 namespace {

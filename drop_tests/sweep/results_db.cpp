@@ -55,12 +55,12 @@ constexpr size_t kNumbers1 = std::size(kNumberColumns1), kNumbers2 = std::size(k
 constexpr const char* kTextColumns3[] = {"pad1_soil", "pad2_soil", "pad3_soil", "pad4_soil", "ground_case"};
 constexpr size_t kTexts3 = std::size(kTextColumns3);
 // Format 5: a stability study's lander metrics and conditions (after the format-4 columns); format 6
-// adds the pads' largest swing on their ball joints at the end.
+// adds the pads' largest swing on their ball joints at the end, format 7 the edge a lander tipped over.
 constexpr const char* kNumberColumns5[] = {
     "max_tilt_deg", "peak_leg_force_N", "max_stroke_m", "pad1_peak_force_N", "pad2_peak_force_N",
     "pad3_peak_force_N", "pad4_peak_force_N", "slope_deg", "downhill_azimuth_deg", "yaw_relative_to_slope_deg",
     "horizontal_azimuth_deg", "angular_rate_x_deg_s", "angular_rate_y_deg_s", "angular_rate_z_deg_s",
-    "max_joint_swing_deg"};
+    "max_joint_swing_deg", "tip_over_edge", "tip_over_azimuth_deg"};
 constexpr size_t kNumbers5 = std::size(kNumberColumns5);
 // Format 4: the work limit a failed drop ran out of.
 constexpr const char* kLimitColumn = "failure_limit";
@@ -87,7 +87,7 @@ auto Numbers5(R& r) {
                     &r.pad_peak_force_N[1], &r.pad_peak_force_N[2], &r.pad_peak_force_N[3], &r.slope_deg,
                     &r.downhill_azimuth_deg, &r.yaw_relative_to_slope_deg, &r.horizontal_azimuth_deg,
                     &r.angular_rate_deg_s[0], &r.angular_rate_deg_s[1], &r.angular_rate_deg_s[2],
-                    &r.max_joint_swing_deg};
+                    &r.max_joint_swing_deg, &r.tip_over_edge, &r.tip_over_azimuth_deg};
 }
 static_assert(std::tuple_size_v<decltype(Numbers5(std::declval<DropRecord&>()))> == kNumbers5);
 template <typename R>
@@ -406,7 +406,7 @@ void ResultsDb::CreateTables() {
   Exec("PRAGMA synchronous=NORMAL");
   const std::string kind = "TABLE IF NOT EXISTS";
   Exec(MetaTableSql(kind) + ";" + DropsTableSql(kind) + ";" + TracesTableSql(kind) + ";");
-  // A format-1 to -5 database (no format-2 to -6 columns) gets them added, NULL or '', so it can still be read
+  // A format-1 to -6 database (no format-2 to -7 columns) gets them added, NULL or '', so it can still be read
   // (export, merge); `sweep` refuses to resume it (format_version in meta).
   std::vector<std::string> present;
   {

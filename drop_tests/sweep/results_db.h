@@ -16,7 +16,7 @@
 //         [format 5:] max_tilt_deg, peak_leg_force_N, max_stroke_m, pad1..pad4_peak_force_N,
 //         slope_deg, downhill_azimuth_deg, yaw_relative_to_slope_deg, horizontal_azimuth_deg,
 //         angular_rate_x_deg_s, angular_rate_y_deg_s, angular_rate_z_deg_s,
-//         [format 6:] max_joint_swing_deg)
+//         [format 6:] max_joint_swing_deg, [format 7:] tip_over_edge, tip_over_azimuth_deg)
 //   traces(drop_index PRIMARY KEY, samples, data BLOB of float64 [t, d, v, F] per sample)
 //
 // A batch of drops and their traces go in one transaction (WAL journal), so a process killed
@@ -44,7 +44,9 @@ namespace touchdown::sweep {
 //    load, max absorber stroke, each pad's peak force, and the ground and touchdown conditions
 //    (slope, azimuths, yaw to the slope, angular rates).
 // 6: the pads' largest swing on their ball joints (max_joint_swing_deg).
-inline constexpr int kResultsDbVersion = 6;
+// 7: the support edge a lander tipped over and the direction it fell (tip_over_edge,
+//    tip_over_azimuth_deg).
+inline constexpr int kResultsDbVersion = 7;
 
 // What was dropped: the pad on the vertical rod, the free 6-DOF pad, or the four-legged lander.
 // The database keeps it as text (drop_kind 'rig'|'free'|'lander'), converted where it is read
@@ -104,6 +106,12 @@ struct DropRecord {
   // The largest swing of any pad on its ball joint, its axis from the body's z axis (lander::
   // LanderRunResult::max_joint_swing_rad); past 90 deg a pad turned beyond edge-on.
   double max_joint_swing_deg = std::numeric_limits<double>::quiet_NaN();
+  // Format 7, landers that tipped over (NaN otherwise): the support edge they went over, from pad
+  // tip_over_edge to the next one clockwise (1-4: 1 is the edge of pads 1 and 2), and the azimuth of
+  // that edge's outward horizontal normal, the direction the lander fell (world, as
+  // horizontal_azimuth_deg) (lander::LanderRunResult::tip_over_edge, tip_over_azimuth_rad).
+  double tip_over_edge = std::numeric_limits<double>::quiet_NaN();
+  double tip_over_azimuth_deg = std::numeric_limits<double>::quiet_NaN();
   double peak_leg_force_N = std::numeric_limits<double>::quiet_NaN();
   double max_stroke_m = std::numeric_limits<double>::quiet_NaN();
   std::array<double, 4> pad_peak_force_N{std::numeric_limits<double>::quiet_NaN(),

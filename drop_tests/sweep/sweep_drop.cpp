@@ -60,7 +60,8 @@ void MarkFailed(DropRecord& r, const std::string& reason) {
   for (double* v : {&r.final_penetration_m, &r.peak_force_N, &r.time_to_rest_s, &r.max_deceleration_m_s2,
                     &r.impact_energy_J, &r.gravity_work_J, &r.dissipated_energy_J, &r.mean_conversion_rate_W,
                     &r.rest_creep_m, &r.final_tilt_deg, &r.horizontal_travel_m, &r.final_roll_deg, &r.final_pitch_deg,
-                    &r.tipped_over, &r.max_tilt_deg, &r.peak_leg_force_N, &r.max_stroke_m, &r.max_joint_swing_deg})
+                    &r.tipped_over, &r.max_tilt_deg, &r.peak_leg_force_N, &r.max_stroke_m, &r.max_joint_swing_deg,
+                    &r.tip_over_edge, &r.tip_over_azimuth_deg})
     *v = std::nan("");
   r.pad_final_penetration_m.fill(std::nan(""));
   r.pad_peak_force_N.fill(std::nan(""));
@@ -243,6 +244,10 @@ DropRecord SimulateLanderSweepDrop(const SweepModels& models, const SweepDropPar
     r.tipped_over = l.tipped_over ? 1.0 : 0.0;
     r.max_tilt_deg = l.max_tilt_rad / kDeg;
     r.max_joint_swing_deg = l.max_joint_swing_rad / kDeg;
+    if (l.tipped_over) {
+      r.tip_over_edge = l.tip_over_edge + 1;
+      r.tip_over_azimuth_deg = l.tip_over_azimuth_rad / kDeg;
+    }
     for (int i = 0; i < lander::kNumLegs; ++i) r.pad_peak_force_N[i] = l.peak_pad_force_N[i];
     RecordLegLoads(sc.lander, l, r);
     r.solver_steps = l.solver.steps;

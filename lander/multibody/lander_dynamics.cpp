@@ -517,11 +517,22 @@ double InsideEdgeDistance(const LanderPose& pose, int edge, const Eigen::Vector3
 }
 
 double StabilityMargin(const LanderModel& model, const StateLayout& L, const Eigen::Ref<const Eigen::VectorXd>& y) {
+  return CriticalSupportEdge(model, L, y).margin_m;
+}
+
+CriticalEdge CriticalSupportEdge(const LanderModel& model, const StateLayout& L, const Eigen::Ref<const Eigen::VectorXd>& y) {
   const LanderPose p = ComputePose(model, L, y);
   const Eigen::Vector3d com = LanderCentreOfMass(model, p);
-  double margin = std::numeric_limits<double>::infinity();
-  for (int i = 0; i < kNumLegs; ++i) margin = std::min(margin, InsideEdgeDistance(p, i, com));
-  return margin;
+  CriticalEdge edge;
+  edge.margin_m = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < kNumLegs; ++i) {
+    const double inside = InsideEdgeDistance(p, i, com);
+    if (inside < edge.margin_m) edge.margin_m = inside, edge.from_leg = i;
+  }
+  const Eigen::Vector2d e = p.pads[(edge.from_leg + 1) % kNumLegs].p_WJ.head<2>() - p.pads[edge.from_leg].p_WJ.head<2>();
+  // Clockwise seen from above, the inside is on the right of e: outward is its left normal (-e_y, e_x).
+  edge.outward_azimuth_rad = std::atan2(e.x(), -e.y());
+  return edge;
 }
 
 }  // namespace touchdown::lander

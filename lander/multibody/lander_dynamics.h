@@ -211,4 +211,14 @@ double InsideEdgeDistance(const LanderPose& pose, int edge, const Eigen::Vector3
 // centres (positive inside) [m]: the least InsideEdgeDistance of LanderCentreOfMass.
 double StabilityMargin(const LanderModel& model, const StateLayout& layout, const Eigen::Ref<const Eigen::VectorXd>& y);
 
+// The support polygon's edge the centre of mass is nearest to crossing (the least InsideEdgeDistance,
+// the one StabilityMargin reports): at a tip-over, the edge the lander goes over.
+struct CriticalEdge {
+  int from_leg = 0;                // from this joint centre to the next one clockwise (0-based)
+  double margin_m = 0.0;           // InsideEdgeDistance of the centre of mass
+  double outward_azimuth_rad = 0.0;  // azimuth of the edge's outward horizontal normal (from world +x towards +y)
+};
+CriticalEdge CriticalSupportEdge(const LanderModel& model, const StateLayout& layout,
+                                 const Eigen::Ref<const Eigen::VectorXd>& y);
+
 }  // namespace touchdown::lander

@@ -172,6 +172,14 @@ void LanderHybrid::Record(double t, const Eigen::VectorXd& s) {
   result_.trace.push_back(x);
 }
 
+void LanderHybrid::TipOver(double t, const Eigen::VectorXd& y) {
+  const CriticalEdge edge = CriticalSupportEdge(model_, L_, y);
+  result_.tipped_over = true;
+  result_.tip_over_edge = edge.from_leg;
+  result_.tip_over_azimuth_rad = edge.outward_azimuth_rad;
+  result_.events.push_back({t, LanderEventKind::kTipOver, -1});
+}
+
 // A pad already on the surface at release (touchdown_speed_m_s: 0 places the lowest pad there)
 // touches down at t = 0: CVODE never reports a root that holds at the start.
 bool LanderHybrid::TouchdownsAtRelease(const Eigen::VectorXd& y) {
@@ -186,8 +194,7 @@ bool LanderHybrid::TouchdownsAtRelease(const Eigen::VectorXd& y) {
     }
   // Standing at release with the centre of mass outside the support polygon: over at once (OnEvent).
   if (!result_.first_touchdown_s || StabilityMargin(model_, L_, y) >= 0.0) return false;
-  result_.tipped_over = true;
-  result_.events.push_back({0.0, LanderEventKind::kTipOver, -1});
+  TipOver(0.0, y);
   return true;
 }
 
@@ -340,8 +347,7 @@ integ::EventAction LanderHybrid::OnEvent(double t, const std::vector<int>& found
   bool touched = false;
   for (int i = 0; i < kNumLegs; ++i) touched |= found[PadRoot(i, 0)] != 0;
   if (found[kTipRoot] != 0 || (touched && StabilityMargin(model_, L_, y) < 0.0)) {
-    result_.tipped_over = true;
-    result_.events.push_back({t, LanderEventKind::kTipOver, -1});
+    TipOver(t, y);
     return integ::EventAction::kStop;
   }
   const Eigen::VectorXd before = y;

@@ -47,6 +47,8 @@ class LanderHybrid {
   void Finish(double t, const Eigen::VectorXd& y);
 
  private:
+  // Records a tip-over at t: the event and the support edge the lander goes over.
+  void TipOver(double t, const Eigen::VectorXd& y);
   // Records the touchdowns; resets their pads' j (true if any changed: the run must restart).
   bool Touchdowns(double t, const std::vector<int>& found, Eigen::VectorXd& y);
   bool SwitchModes(double t, const std::vector<int>& found, const LanderPose& pose, std::array<bool, kNumLegs>& fresh);

@@ -4,6 +4,7 @@
 // modes and events are lander_hybrid.h).
 #include <Eigen/Core>
 #include <array>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -109,6 +110,11 @@ struct LanderRunResult {
   // range (no cone_limit) allows.
   double max_joint_swing_rad = 0.0;
   bool tipped_over = false;
+  // For a lander that tipped over, the support edge it went over (CriticalSupportEdge at the
+  // tip-over event): from joint tip_over_edge to the next one clockwise (0-based; -1 when it did not
+  // tip), and the azimuth of that edge's outward horizontal normal, the direction it fell [rad].
+  int tip_over_edge = -1;
+  double tip_over_azimuth_rad = std::numeric_limits<double>::quiet_NaN();
   std::optional<double> rest_time_s;          // since release
   std::optional<double> first_touchdown_s;
   double max_body_deceleration_m_s2 = 0.0;    // max upward body CoM acceleration

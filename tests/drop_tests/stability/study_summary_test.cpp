@@ -203,5 +203,38 @@ TEST_F(StudySummaryTest, BadStudyBlocksNameFileAndField) {
                "type", "stability");
 }
 
+// A tip-over's edge, its pads' soils and the direction it fell, relative to downhill and to the
+// landing's horizontal velocity (wrapped to (-180, 180]); a landing that stayed up lists none, and
+// an edge number that no lander has (a database from elsewhere) lists none rather than a wrong pad.
+TEST(StudyLandingJson, ATipOverNamesItsEdgeAndWhereItFell) {
+  sweep::DropRecord r;
+  r.kind = sweep::DropKind::kLander;
+  r.ok = true;
+  r.tipped_over = 1.0;
+  r.pad_soil = {"fjs1_lp", "fjs1_cp", "fjs1_cp", "fjs1_lp"};
+  r.slope_deg = 15.0;
+  r.downhill_azimuth_deg = 170.0;
+  r.horizontal_speed_m_s = 0.5;
+  r.horizontal_azimuth_deg = -100.0;
+  r.tip_over_edge = 4.0;  // pads 4 and 1
+  r.tip_over_azimuth_deg = -175.0;
+  const nlohmann::json j = LandingJson(r);
+  ASSERT_TRUE(j.contains("tip_over"));
+  const nlohmann::json& t = j["tip_over"];
+  EXPECT_EQ(t["edge_pads"], nlohmann::json({4, 1}));
+  EXPECT_EQ(t["edge_pad_soils"], nlohmann::json({"fjs1_lp", "fjs1_lp"}));
+  EXPECT_DOUBLE_EQ(t["fell_towards_azimuth_deg"].get<double>(), -175.0);
+  EXPECT_NEAR(t["fell_from_downhill_deg"].get<double>(), 15.0, 1e-12);  // across the +-180 seam
+  EXPECT_NEAR(t["fell_from_horizontal_velocity_deg"].get<double>(), -75.0, 1e-12);
+  r.tip_over_azimuth_deg = -10.0;  // exactly uphill of 170: +180, never -180
+  EXPECT_EQ(LandingJson(r)["tip_over"]["fell_from_downhill_deg"].get<double>(), 180.0);
+  r.slope_deg = 0.0;  // level ground: no downhill to measure from
+  EXPECT_FALSE(LandingJson(r)["tip_over"].contains("fell_from_downhill_deg"));
+  for (double bad : {0.0, 5.0, 2.5, std::nan("")}) {
+    r.tip_over_edge = bad;
+    EXPECT_FALSE(LandingJson(r).contains("tip_over")) << bad;
+  }
+}
+
 }  // namespace
 }  // namespace touchdown::stability

@@ -83,6 +83,7 @@ class ResultsDbReadOnly : public touchdown::testing_scratch::ScratchDirTest {
     EXPECT_EQ(records[0].kind, touchdown::sweep::DropKind::kRig);
     EXPECT_TRUE(std::isnan(records[0].tipped_over));
     EXPECT_TRUE(std::isnan(records[0].max_joint_swing_deg));
+    EXPECT_TRUE(std::isnan(records[0].tip_over_edge));
     EXPECT_EQ(records[0].pad_soil[0], "");
     EXPECT_EQ(records[1].failure, "why");
     EXPECT_EQ(db.Count(), 2);

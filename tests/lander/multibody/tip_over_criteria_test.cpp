@@ -238,7 +238,15 @@ TEST(TipOverCriteria, SlowLandingsTipWhereTheStaticCriterionSaysWithTheSettlingO
 
   // Above it the lander cannot stand. (Released 1 deg short of the slope so that it starts inside
   // its polygon: the tip-over event fires on the way out, not for a lander placed outside.)
-  EXPECT_TRUE(LandTall({critical + 0.5 * units::kDeg, 0.0, 1.0 * units::kDeg}, 1.0).tipped_over);
+  const LanderRunResult over = LandTall({critical + 0.5 * units::kDeg, 0.0, 1.0 * units::kDeg}, 1.0);
+  EXPECT_TRUE(over.tipped_over);
+  // It goes over the edge the static criterion names, the downhill one (pads 1 and 2, symmetric
+  // about the x-z plane the landing stays in), and falls straight downhill (+x); the lateral drift
+  // it picks up is rounding and pad-mesh asymmetry grown through the integration (4e-8 rad measured).
+  EXPECT_EQ(over.tip_over_edge, st.edge_from_leg);
+  EXPECT_NEAR(over.tip_over_azimuth_rad, 0.0, 1e-6);
+  EXPECT_EQ(rest.tip_over_edge, -1);
+  EXPECT_TRUE(std::isnan(rest.tip_over_azimuth_rad));
   // Below it, a slow landing still tips within the settling overshoot: the pads must sink to carry
   // the lander (RFT has no bearing at zero depth), the downhill pads, carrying nearly all of it,
   // sink deeper and faster, and the lander turns about them while it settles. The slope band this
