@@ -31,8 +31,4 @@ std::vector<sweep::DropRecord> ReadStudyRecords(const Study& study, const std::s
 // analysis is complete.
 StudySummary WriteStudyAnalysis(const Study& study, const std::string& out_dir, const StudyFollowUps& follow_ups);
 
-// All of it: reads the records, runs the follow-ups (every core, quietly, never stopped) and
-// writes the analysis.
-StudySummary WriteStudyAnalysis(const Study& study, const std::string& out_dir);
-
 }  // namespace touchdown::stability

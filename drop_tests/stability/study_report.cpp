@@ -41,10 +41,4 @@ StudySummary WriteStudyAnalysis(const Study& study, const std::string& out_dir, 
   return summary;
 }
 
-StudySummary WriteStudyAnalysis(const Study& study, const std::string& out_dir) {
-  sweep::SweepRunOptions quiet;
-  quiet.progress = sweep::ProgressMode::kNone;
-  return WriteStudyAnalysis(study, out_dir, RunStudyFollowUps(study, ReadStudyRecords(study, out_dir), out_dir, quiet));
-}
-
 }  // namespace touchdown::stability

@@ -10,6 +10,7 @@
 #include "drop_tests/stability/study_outputs.h"
 #include "drop_tests/sweep/sweep.h"
 #include "tests/drop_tests/scenario/lander_test_support.h"
+#include "tests/drop_tests/stability/study_test_support.h"
 #include "tests/scratch_dir_test.h"
 
 namespace touchdown::stability {
@@ -26,7 +27,7 @@ struct StudyLandings : testing_scratch::ScratchDirTest {
     options.threads = 2;
     options.progress = sweep::ProgressMode::kNone;
     sweep::RunSweep(study.plan, Path("out"), options);
-    return WriteStudyAnalysis(study, Path("out"));
+    return test::AnalyseStudy(study, Path("out"));
   }
 };
 

@@ -13,6 +13,7 @@
 #include "drop_tests/stability/study_summary.h"
 #include "drop_tests/sweep/sweep.h"
 #include "rft/input_error.h"
+#include "tests/drop_tests/stability/study_test_support.h"
 #include "tests/scratch_dir_test.h"
 
 namespace touchdown::stability {
@@ -133,13 +134,13 @@ TEST_F(StudySummaryTest, AnalysisWritesItsTablesAndPlotsFromTheDatabase) {
     db.Insert(records);
   }
   try {
-    WriteStudyAnalysis(study, out);
+    test::AnalyseStudy(study, out);
     ADD_FAILURE() << "an incomplete study was analysed";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("1 of 10 landings missing"), std::string::npos) << e.what();
   }
   sweep::ResultsDb(sweep::ResultsDbPath(out)).Insert({HandMadeRecords().back()});
-  const StudySummary s = WriteStudyAnalysis(study, out);
+  const StudySummary s = test::AnalyseStudy(study, out);
   EXPECT_EQ(s.landings, 9);
   for (const char* file : {"summary.json", "percentiles.csv", "tip_over_map.csv", "plots/tip_over_map.png",
                            "plots/tip_over_map.svg", "plots/exceedance.png", "plots/exceedance.svg",
@@ -159,7 +160,7 @@ TEST_F(StudySummaryTest, AnalysisWritesItsTablesAndPlotsFromTheDatabase) {
   EXPECT_FALSE(std::filesystem::exists(std::filesystem::path(out) / "recheck"));
   // Another study (here: other samples) in the same database is refused.
   const Study other = LoadStudy(Path("study.yaml"), "", 12);
-  EXPECT_THROW(WriteStudyAnalysis(other, out), InputError);
+  EXPECT_THROW(test::AnalyseStudy(other, out), InputError);
 }
 
 TEST_F(StudySummaryTest, BadStudyBlocksNameFileAndField) {
