@@ -15,7 +15,7 @@ namespace touchdown::app {
 
 namespace {
 struct DiagnoseArgs {
-  std::string measured, model, out, base = "rft";
+  std::string measured, model, out, base = "rft", sensor_sampling = "instantaneous";
   int threads = 0;
   bool no_pairs = false, law_candidate = false;
 };
@@ -37,6 +37,10 @@ void AddDiagnoseCommand(CLI::App& app) {
       ->check(CLI::IsMember({"rft", "bekker"}));
   cmd->add_flag("--law-candidate", args->law_candidate,
                 "also fit the Bekker law per soil on the training drops and score it (docs/bekker_soil.md)");
+  cmd->add_option("--sensor-sampling", args->sensor_sampling,
+                  "how the simulated drops are sampled to compare with the measured ones: instantaneous (the value "
+                  "at each sample time, default) or period_mean (the mean over each sample period; docs/model_gap.md)")
+      ->check(CLI::IsMember({"period_mean", "instantaneous"}));
   cmd->callback([args] {
     gap::DiagnoseOptions o;
     o.threads = args->threads > 0 ? args->threads : std::max(1u, std::thread::hardware_concurrency());
@@ -44,6 +48,8 @@ void AddDiagnoseCommand(CLI::App& app) {
     o.progress.mode = io::ProgressMode::kAuto;
     o.law_candidate = args->law_candidate;
     o.base = args->base == "bekker" ? gap::DiagnoseBase::kBekker : gap::DiagnoseBase::kRft;
+    o.sensor_sampling = args->sensor_sampling == "instantaneous" ? pad::SensorSampling::kInstantaneous
+                                                                 : pad::SensorSampling::kPeriodMean;
     if (!args->model.empty()) o.start_model = model::LoadModelFile(args->model);
     const gap::Diagnosis d = gap::DiagnoseToDirectory(args->measured, o, {args->out, {args->measured, args->model}});
     const nlohmann::json j = gap::DiagnosisJson(d);

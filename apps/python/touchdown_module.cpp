@@ -298,13 +298,23 @@ std::string Validate(const std::string& sources, const std::string& out) {
 
 // touchdown diagnose: diagnosis.json's content, the outputs in `out`.
 std::string Diagnose(const std::string& measured, const std::string& model, const std::string& out,
-                     const py::object& threads_arg, bool pairs, bool law_candidate) {
+                     const py::object& threads_arg, bool pairs, bool law_candidate, const std::string& base,
+                     const std::string& sensor_sampling) {
   const int threads = ThreadsArgument(threads_arg, "touchdown.diagnose");
+  const auto fail = [](const std::string& field, const std::string& allowed, const std::string& value) {
+    throw MakeInputError("touchdown.diagnose", field, "must be " + allowed + ", got '" + value + "'");
+  };
+  if (base != "rft" && base != "bekker") fail("base", "rft or bekker", base);
+  if (sensor_sampling != "period_mean" && sensor_sampling != "instantaneous")
+    fail("sensor_sampling", "period_mean or instantaneous", sensor_sampling);
   py::gil_scoped_release unlocked;
   gap::DiagnoseOptions o;
   o.threads = threads > 0 ? threads : std::max(1u, std::thread::hardware_concurrency());
   o.try_pairs = pairs;
   o.law_candidate = law_candidate;
+  o.base = base == "bekker" ? gap::DiagnoseBase::kBekker : gap::DiagnoseBase::kRft;
+  o.sensor_sampling =
+      sensor_sampling == "instantaneous" ? pad::SensorSampling::kInstantaneous : pad::SensorSampling::kPeriodMean;
   if (!model.empty()) o.start_model = model::LoadModelFile(model);
   return gap::DiagnosisJson(gap::DiagnoseToDirectory(measured, o, {out, {measured, model}})).dump(2);
 }
@@ -428,7 +438,7 @@ PYBIND11_MODULE(_touchdown, m) {
   m.def("calibrate", &python::Calibrate, py::arg("measured"), py::arg("out"), py::arg("law"), py::arg("per"),
         py::arg("atmosphere"), py::arg("confidence"), py::arg("soil"), py::arg("pad"), py::arg("shear_from"));
   m.def("diagnose", &python::Diagnose, py::arg("measured"), py::arg("model"), py::arg("out"), py::arg("threads"),
-        py::arg("pairs"), py::arg("law_candidate"));
+        py::arg("pairs"), py::arg("law_candidate"), py::arg("base"), py::arg("sensor_sampling"));
   m.def("calibrate_targets", &python::CalibrateTargets, py::arg("targets"), py::arg("out"), py::arg("report"),
         py::arg("threads"), py::arg("evaluate_only"));
   m.def("validate", &python::Validate, py::arg("sources"), py::arg("out"));

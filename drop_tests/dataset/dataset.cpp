@@ -14,6 +14,15 @@ namespace touchdown::dataset {
 
 namespace fs = std::filesystem;
 
+double SamplePeriod(const DatasetTrace& trace) {
+  if (trace.size() < 2) return 0.0;
+  std::vector<double> spacing(trace.size() - 1);
+  for (size_t i = 0; i + 1 < trace.size(); ++i) spacing[i] = trace.t_s[i + 1] - trace.t_s[i];
+  const size_t mid = spacing.size() / 2;
+  std::nth_element(spacing.begin(), spacing.begin() + mid, spacing.end());
+  return spacing[mid];
+}
+
 const std::vector<std::string> kDatasetDropColumns = {"drop_id",      "pad",         "soil",         "atmosphere",
                                                       "impact_speed_m_s", "pad_mass_kg", "gravity_m_s2", "trace"};
 const std::vector<std::string> kDatasetTraceColumns = {"t_s", "penetration_m", "force_N"};

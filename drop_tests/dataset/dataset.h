@@ -39,6 +39,9 @@ struct DatasetTrace {
   bool operator==(const DatasetTrace&) const = default;
 };
 
+// The trace's sample period: the median spacing of its sample times (0 with fewer than two).
+double SamplePeriod(const DatasetTrace& trace);
+
 struct DatasetDrop {
   std::string drop_id;
   std::string pad;         // catalogue name or pad YAML path (relative paths: to the dataset directory)

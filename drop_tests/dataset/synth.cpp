@@ -70,7 +70,7 @@ SynthSpec LoadSynthSpec(const std::string& path) {
   const io::YamlFields f = io::YamlFields::LoadFile(path);
   f.RequireSchemaVersion(1);
   f.RequireOnly({"schema_version", "type", "name", "description", "seed", "sample_rate_hz", "rest_duration_s",
-                 "trials", "drops", "true_zeta_N_cm3", "noise", "hidden_effect", "provenance"});
+                 "trials", "drops", "true_zeta_N_cm3", "noise", "hidden_effect", "sensor_sampling", "provenance"});
   if (f.String("type") != "synth") f.Fail("type", "must be 'synth', got '" + f.String("type") + "'");
   SynthSpec s;
   s.source = path;
@@ -86,6 +86,12 @@ SynthSpec LoadSynthSpec(const std::string& path) {
   }
   s.sample_rate_hz = f.PositiveOr("sample_rate_hz", 1000.0);
   if (f.Has("rest_duration_s")) s.rest_duration_s = f.NonNegative("rest_duration_s");
+  if (f.Has("sensor_sampling")) {
+    const std::string sampling = f.String("sensor_sampling");
+    if (sampling == "period_mean") s.sensor_sampling = pad::SensorSampling::kPeriodMean;
+    else if (sampling == "instantaneous") s.sensor_sampling = pad::SensorSampling::kInstantaneous;
+    else f.Fail("sensor_sampling", "must be period_mean or instantaneous, got '" + sampling + "'");
+  }
   const int trials = f.Has("trials") ? f.PositiveInt("trials") : 1;
   // Resource caps: the dataset is built in memory (every trace) before it is written, so its size
   // is bounded here, at load, with the limit in the message.
@@ -255,7 +261,8 @@ Dataset Synthesize(const SynthSpec& spec) {
     const double t_end = sim.time_to_rest_s - terms.sensor_dt_s + spec.rest_duration_s;
     for (long k = 0; k / spec.sample_rate_hz <= t_end + 1e-12; ++k) {
       const double t = k / spec.sample_rate_hz;
-      const pad::RecordedSample r = pad::RecordedAt(sim, sd.gravity_m_s2, terms, t);
+      const pad::RecordedSample r =
+          pad::RecordedSampleOf(sim, sd.gravity_m_s2, terms, t, spec.sensor_sampling, 1.0 / spec.sample_rate_hz);
       d.trace.t_s.push_back(t);
       d.trace.force_N.push_back(Quantise(r.force_N + force_drift * t + n.force_sigma_N * normal(rng), n.force_resolution_N));
       d.trace.penetration_m.push_back(
@@ -274,6 +281,8 @@ void WriteSpecYaml(const SynthSpec& s, YAML::Emitter& y, bool with_truth) {
   y << YAML::Key << "seed" << YAML::Value << s.seed << YAML::Key << "sample_rate_hz" << YAML::Value << s.sample_rate_hz
     << YAML::Key << "rest_duration_s" << YAML::Value << s.rest_duration_s << YAML::Key << "drops" << YAML::Value
     << s.drops.size();
+  y << YAML::Key << "sensor_sampling" << YAML::Value
+    << (s.sensor_sampling == pad::SensorSampling::kPeriodMean ? "period_mean" : "instantaneous");
   y << YAML::Key << "noise" << YAML::Value << YAML::BeginMap << YAML::Key << "force_sigma_N" << YAML::Value
     << s.noise.force_sigma_N << YAML::Key << "penetration_sigma_mm" << YAML::Value << s.noise.penetration_sigma_m * 1e3
     << YAML::Key << "force_drift_N_s" << YAML::Value << s.noise.force_drift_N_s << YAML::Key

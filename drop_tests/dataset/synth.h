@@ -3,7 +3,8 @@
 // rehearsing a campaign and for testing `diagnose` on data whose missing effect is known.
 //
 // Each drop is simulated (axisymmetric rig drop, optionally with one hidden effect), then
-// recorded as a rig would: sampled at `sample_rate_hz` from the recorded t = 0, with Gaussian
+// recorded as a rig would: sampled at `sample_rate_hz` from the recorded t = 0 (each sample the value
+// at its time, or with `sensor_sampling: period_mean` the mean over its sample period), with Gaussian
 // load-cell and displacement noise, a linear drift per drop (rate drawn from N(0, sigma)), and
 // quantisation to the sensors' resolution. Seeded: the same spec gives the same bytes.
 //
@@ -14,6 +15,7 @@
 //   seed: 7
 //   sample_rate_hz: 1000          # optional
 //   rest_duration_s: 0.04         # optional: recorded after the stop
+//   sensor_sampling: instantaneous  # optional: or period_mean (pad::SensorSampling)
 //   trials: 1                     # optional: repeats of every condition (new noise each)
 //   drops:                        # cartesian products, one entry per group
 //     - {pads: [flat, curved], soils: [fjs1_lp], atmospheres: [air, vacuum],
@@ -38,6 +40,7 @@
 
 #include "drop_tests/dataset/dataset.h"
 #include "drop_tests/model/effects.h"
+#include "lander/pad/effect_soil_response.h"
 
 namespace touchdown::dataset {
 
@@ -74,6 +77,8 @@ struct SynthSpec {
   SynthNoise noise;
   std::optional<model::Effect> hidden_effect;      // a library effect
   std::optional<FloorStiffening> floor;     // or the out-of-library one
+  // How the recorded samples are taken (sensor_sampling: instantaneous, the default, or period_mean).
+  pad::SensorSampling sensor_sampling = pad::SensorSampling::kInstantaneous;
 };
 
 // Caps checked at load (the dataset is built in memory before it is written): at most 1 MHz, a

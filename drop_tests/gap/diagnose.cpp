@@ -359,6 +359,7 @@ Diagnosis RunDiagnosis(const dataset::Dataset& ds, const DiagnoseOptions& o) {
   d.dataset_dir = ds.directory;
   d.held_out = HeldOutSplit(ds);
   d.problem = MakeFitProblem(ds, d.held_out, o.threads);
+  d.problem.sensor_sampling = o.sensor_sampling;
   if (o.base == DiagnoseBase::kBekker) {
     if (o.start_model)
       throw MakeInputError(o.start_model->name, "soils", "--model starts RFT's zeta; the Bekker base fits its own soils");

@@ -55,6 +55,10 @@ struct DiagnoseOptions {
   // drops (calibrate --law bekker), its moduli scaled per soil with the effects (UseBekkerBase).
   DiagnoseBase base = DiagnoseBase::kRft;
   bool law_candidate = false;        // --law-candidate: also fit and score the Bekker law (law_candidate.h)
+  // --sensor-sampling: how the simulated drops are recorded to compare with the measured samples
+  // (pad::SensorSampling): instantaneous by default, or the mean over each sample period, which makes
+  // the fits' cost continuous where a stop crosses a sample (docs/model_gap.md, "Sensor sampling").
+  pad::SensorSampling sensor_sampling = pad::SensorSampling::kInstantaneous;
 };
 
 struct DropGap {

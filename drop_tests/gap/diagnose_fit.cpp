@@ -81,7 +81,8 @@ std::optional<dataset::DatasetTrace> Recorded(const FitProblem& p, const FitDrop
     dataset::DatasetTrace out;
     const dataset::DatasetTrace& tr = *d.trace;
     for (size_t i = 0; i < tr.size(); ++i) {
-      const pad::RecordedSample rs = pad::RecordedAt(r, d.gravity_m_s2, terms, tr.t_s[i]);
+      const pad::RecordedSample rs =
+          pad::RecordedSampleOf(r, d.gravity_m_s2, terms, tr.t_s[i], p.sensor_sampling, d.sample_period_s);
       out.t_s.push_back(tr.t_s[i]);
       out.penetration_m.push_back(rs.penetration_m);
       out.force_N.push_back(rs.force_N);
@@ -199,6 +200,7 @@ FitProblem MakeFitProblem(const dataset::Dataset& ds, const std::vector<bool>& h
     d.penetration_scale_m =
         std::max(*std::max_element(dd.trace.penetration_m.begin(), dd.trace.penetration_m.end()), 1e-9);
     d.noise_force_N = NoiseEstimate(dd.trace.force_N);
+    d.sample_period_s = dataset::SamplePeriod(dd.trace);
     p.drops.push_back(d);
   }
   return p;

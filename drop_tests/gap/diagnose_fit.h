@@ -24,6 +24,7 @@
 #include "drop_tests/dataset/dataset.h"
 #include "drop_tests/model/effects.h"
 #include "footpad_geom/axisymmetric_intrusion.h"
+#include "lander/pad/effect_soil_response.h"
 #include "lander/pad/rig_drop.h"
 
 namespace touchdown::gap {
@@ -39,6 +40,7 @@ struct FitDrop {
   double force_scale_N = 1.0;        // max measured force
   double penetration_scale_m = 1.0;  // max measured penetration
   double noise_force_N = 0.0;        // estimated sensor noise (robust, from second differences)
+  double sample_period_s = 0.0;      // of its trace (dataset::SamplePeriod): what a sample averages over
 };
 
 struct FitProblem {
@@ -47,6 +49,8 @@ struct FitProblem {
   std::vector<rft::SoilParameters> soils;  // catalogue values: the starting zeta
   std::vector<FitDrop> drops;
   pad::RigDropOptions rig;
+  // How the simulated drops are recorded for the comparison with the measured samples.
+  pad::SensorSampling sensor_sampling = pad::SensorSampling::kInstantaneous;
   int threads = 2;
   bool has_air = false, has_vacuum = false;
   // The Bekker base (diagnose --base bekker, law_candidate.h UseBekkerBase): every soil is a Bekker

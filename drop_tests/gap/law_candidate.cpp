@@ -42,7 +42,8 @@ double HeldOutNrmse(const FitProblem& p, const FitDrop& d, const rft::SoilParame
     const drop::PadDrop sim = drop::SimulateDrop(p.pads[d.pad], soil, c, options);
     dataset::DatasetTrace recorded;
     for (size_t i = 0; i < d.trace->size(); ++i) {
-      const pad::RecordedSample rs = pad::RecordedAt(sim.result, d.gravity_m_s2, {}, d.trace->t_s[i]);
+      const pad::RecordedSample rs =
+          pad::RecordedSampleOf(sim.result, d.gravity_m_s2, {}, d.trace->t_s[i], p.sensor_sampling, d.sample_period_s);
       recorded.t_s.push_back(d.trace->t_s[i]);
       recorded.penetration_m.push_back(rs.penetration_m);
       recorded.force_N.push_back(rs.force_N);

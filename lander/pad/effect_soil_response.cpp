@@ -79,4 +79,56 @@ RecordedSample RecordedAt(const RigDropResult& r, double gravity_m_s2, const rft
   return s;
 }
 
+namespace {
+// Integral of RecordedAt's (unshifted) force and penetration over [t0, t1] of the simulated time.
+RecordedSample IntegralOver(const RigDropResult& r, double g, double t0, double t1) {
+  RecordedSample sum;
+  const std::vector<DropSample>& tr = r.trace;
+  const DropSample& first = tr.front();
+  // Free fall before touchdown: penetration p0 + v0 tau + g tau^2 / 2 (tau < 0), force 0.
+  if (t0 < first.t_s) {
+    const double a = t0 - first.t_s, b = std::min(t1, first.t_s) - first.t_s;
+    auto antiderivative = [&](double tau) {
+      return first.penetration_m * tau + first.velocity_m_s * tau * tau / 2 + g * tau * tau * tau / 6;
+    };
+    sum.penetration_m += antiderivative(b) - antiderivative(a);
+  }
+  // The stroke's samples linearly interpolated; from the stop on, the rest's values as steps (the
+  // force falls to the weight at the stop itself: interpolating from the stop to the next grid
+  // sample would smear the fall over a time that jumps as the stop crosses a grid point).
+  for (size_t i = 0; i + 1 < tr.size(); ++i) {
+    const DropSample &a = tr[i], &b = tr[i + 1];
+    const double lo = std::max(t0, a.t_s), hi = std::min(t1, b.t_s);
+    if (!(hi > lo)) continue;
+    if (a.t_s >= r.time_to_rest_s) {
+      sum.force_N += (hi - lo) * b.force_N;
+      sum.penetration_m += (hi - lo) * b.penetration_m;
+      continue;
+    }
+    const double span = b.t_s - a.t_s;
+    auto at = [&](double t, double fa, double fb) { return fa + (t - a.t_s) / span * (fb - fa); };
+    sum.force_N += (hi - lo) * 0.5 * (at(lo, a.force_N, b.force_N) + at(hi, a.force_N, b.force_N));
+    sum.penetration_m += (hi - lo) * 0.5 * (at(lo, a.penetration_m, b.penetration_m) + at(hi, a.penetration_m, b.penetration_m));
+  }
+  // After the trace: its last sample held.
+  if (t1 > tr.back().t_s) {
+    const double len = t1 - std::max(t0, tr.back().t_s);
+    sum.force_N += len * tr.back().force_N;
+    sum.penetration_m += len * tr.back().penetration_m;
+  }
+  return sum;
+}
+}  // namespace
+
+RecordedSample RecordedSampleOf(const RigDropResult& r, double gravity_m_s2, const rft::EffectTerms& terms,
+                                double t_rec, SensorSampling sampling, double window_s) {
+  if (sampling == SensorSampling::kInstantaneous || r.trace.empty() || !(window_s > 0.0))
+    return RecordedAt(r, gravity_m_s2, terms, t_rec);
+  const double t = t_rec + terms.sensor_dt_s;
+  RecordedSample s = IntegralOver(r, gravity_m_s2, t - 0.5 * window_s, t + 0.5 * window_s);
+  s.force_N /= window_s;
+  s.penetration_m = s.penetration_m / window_s + terms.sensor_dz_m;
+  return s;
+}
+
 }  // namespace touchdown::pad

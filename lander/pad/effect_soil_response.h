@@ -62,4 +62,20 @@ struct RecordedSample {
 RecordedSample RecordedAt(const RigDropResult& result, double gravity_m_s2, const rft::EffectTerms& terms,
                           double t_rec);
 
+// How the rig's sensors turn the continuous force and penetration into samples.
+enum class SensorSampling {
+  kInstantaneous,  // each sample is the value at its time (RecordedAt)
+  // Each sample is the mean over one sample period centred on its time (a load cell and its ADC
+  // averaging over the period): continuous in the simulated stop time, where the force falls from
+  // the stroke's to the weight, so a fit's cost is continuous in the parameters (docs/model_gap.md).
+  kPeriodMean,
+};
+
+// What the rig records at t_rec with `sampling`: RecordedAt itself (kInstantaneous, or a
+// sample_period_s that is not positive), or the mean over [t_rec - T/2, t_rec + T/2] (T =
+// sample_period_s) of the free fall before touchdown, the stroke's samples linearly interpolated
+// and, from the stop (result.time_to_rest_s) on, the rest's values as steps, integrated exactly.
+RecordedSample RecordedSampleOf(const RigDropResult& result, double gravity_m_s2, const rft::EffectTerms& terms,
+                                double t_rec, SensorSampling sampling, double sample_period_s);
+
 }  // namespace touchdown::pad

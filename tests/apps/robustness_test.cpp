@@ -727,6 +727,10 @@ std::vector<Case> Cases() {
                                     "final_roll_deg, value: 0, uncertainty: 1, use: fit, source: s}]\n"}}});
   }
   AddMessageCases(c);
+  // How the sensors sample (synth's sensor_sampling, diagnose --sensor-sampling).
+  c.push_back({"synth YAML", "sensor_sampling: averaged", "synth sampling.synth.yaml --out out_w1",
+               {{"sampling.synth.yaml", "schema_version: 1\ntype: synth\nseed: 1\nsensor_sampling: averaged\n"
+                                        "drops:\n  - {pads: [flat], soils: [fjs1_lp], impact_speeds_m_s: [1.0]}\n"}}});
   return c;
 }
 

@@ -136,12 +136,15 @@ def validate(*, sources=None, out=None):
     return json.loads(_touchdown.validate(sources=_path_text(sources), out=_path_text(out)))
 
 
-def diagnose(measured, out, *, model=None, threads=0, pairs=True, law_candidate=False):
-    """`touchdown diagnose MEASURED --out OUT [--model M] [--threads N] [--no-pairs] [--law-candidate]`:
-    the model-gap workflow into the new directory OUT (docs/model_gap.md); returns diagnosis.json
-    as a dict (the command prints a part of it)."""
+def diagnose(measured, out, *, model=None, threads=0, pairs=True, law_candidate=False, base="rft",
+             sensor_sampling="instantaneous"):
+    """`touchdown diagnose MEASURED --out OUT [--model M] [--threads N] [--no-pairs] [--law-candidate]
+    [--base rft|bekker] [--sensor-sampling instantaneous|period_mean]`: the model-gap workflow into
+    the new directory OUT (docs/model_gap.md); returns diagnosis.json as a dict (the command prints a
+    part of it)."""
     return json.loads(_touchdown.diagnose(measured=_path_text(measured), model=_path_text(model), out=_path_text(out),
-                                          threads=threads, pairs=pairs, law_candidate=law_candidate))
+                                          threads=threads, pairs=pairs, law_candidate=law_candidate, base=base,
+                                          sensor_sampling=sensor_sampling))
 
 
 def trade(plan, out, *, model=None, threads=0):

@@ -33,25 +33,33 @@ TEST(FactoryDrops, SynthRecordsTheFactorysDrop) {
   for (const model::EffectParameterInfo& q : model::FindEffect("rate_damping").parameters)
     damping.values.push_back(2 * q.start + q.scale);
   spec.hidden_effect = damping;
-  const Dataset ds = Synthesize(spec);
-  ASSERT_EQ(ds.drops.size(), 1u);
+  // Both sensors: the value at each sample time, and the mean over each sample period.
+  std::vector<double> instantaneous_force;
+  for (pad::SensorSampling sampling : {pad::SensorSampling::kInstantaneous, pad::SensorSampling::kPeriodMean}) {
+    spec.sensor_sampling = sampling;
+    const Dataset ds = Synthesize(spec);
+    ASSERT_EQ(ds.drops.size(), 1u);
 
-  drop::DropConditions c;
-  c.impact_speed_m_s = 1.3;
-  c.mass_kg = 2.1;
-  c.gravity_m_s2 = kMoonG;
-  c.zeta_N_m3 = kTrueZeta;
-  c.atmosphere = rft::Atmosphere::kAir;
-  c.effects = model::MakeEffectTerms({damping});
-  drop::DropRunOptions options;
-  options.rig.rest_duration_s = spec.rest_duration_s + std::abs(c.effects.sensor_dt_s) + 2.0 / spec.sample_rate_hz;
-  const drop::PadDrop drop = drop::SimulateDrop(io::LoadPad("curved"), io::LoadSoil("fjs1_lp"), c, options);
-  const DatasetTrace& tr = ds.drops[0].trace;
-  ASSERT_GT(tr.size(), 20u);
-  for (size_t i = 0; i < tr.size(); ++i) {
-    const pad::RecordedSample r = pad::RecordedAt(drop.result, kMoonG, c.effects, tr.t_s[i]);
-    ASSERT_EQ(tr.force_N[i], r.force_N) << i;
-    ASSERT_EQ(tr.penetration_m[i], r.penetration_m) << i;
+    drop::DropConditions c;
+    c.impact_speed_m_s = 1.3;
+    c.mass_kg = 2.1;
+    c.gravity_m_s2 = kMoonG;
+    c.zeta_N_m3 = kTrueZeta;
+    c.atmosphere = rft::Atmosphere::kAir;
+    c.effects = model::MakeEffectTerms({damping});
+    drop::DropRunOptions options;
+    options.rig.rest_duration_s = spec.rest_duration_s + std::abs(c.effects.sensor_dt_s) + 2.0 / spec.sample_rate_hz;
+    const drop::PadDrop drop = drop::SimulateDrop(io::LoadPad("curved"), io::LoadSoil("fjs1_lp"), c, options);
+    const DatasetTrace& tr = ds.drops[0].trace;
+    ASSERT_GT(tr.size(), 20u);
+    for (size_t i = 0; i < tr.size(); ++i) {
+      const pad::RecordedSample r = pad::RecordedSampleOf(drop.result, kMoonG, c.effects, tr.t_s[i],
+                                                          spec.sensor_sampling, 1.0 / spec.sample_rate_hz);
+      ASSERT_EQ(tr.force_N[i], r.force_N) << i;
+      ASSERT_EQ(tr.penetration_m[i], r.penetration_m) << i;
+    }
+    if (sampling == pad::SensorSampling::kInstantaneous) instantaneous_force = tr.force_N;
+    else EXPECT_NE(tr.force_N, instantaneous_force);  // the two sensors record different samples
   }
 }
 

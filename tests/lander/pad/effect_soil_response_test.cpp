@@ -193,5 +193,51 @@ TEST(EffectRecord, SensorOffsetShiftsTimeAndZero) {
   EXPECT_EQ(early.force_N, 0.0);
 }
 
+// A hand-made record: touchdown at 1 m/s, the force ramping to 100 N at 1 ms, the stop at
+// `stop_s` (100 N there), then the rest at the weight (10 N) on the 1 ms grid.
+RigDropResult HandRecord(double stop_s) {
+  RigDropResult r;
+  r.time_to_rest_s = stop_s;
+  r.trace = {{0.0, 0.0, 1.0, 0.0}, {0.001, 0.001, 1.0, 100.0}};
+  if (stop_s > 0.002) r.trace.push_back({0.002, 0.0015, 0.1, 100.0});
+  r.trace.push_back({stop_s, 0.0015, 0.0, 100.0});
+  for (double t : {0.002, 0.003, 0.004})
+    if (t > stop_s) r.trace.push_back({t, 0.0015, 0.0, 10.0});
+  return r;
+}
+
+TEST(EffectRecord, PeriodMeanIsTheExactMeanOfTheRecord) {
+  const RigDropResult r = HandRecord(0.0019);
+  const SensorSampling mean = SensorSampling::kPeriodMean;
+  // Inside the stroke: the mean of the linear interpolation over [0.5, 1.5] ms (50 -> 100 -> 94.4 N).
+  const double f_at_1_5 = 100.0;  // the stroke holds 100 N from 1 ms to the stop
+  EXPECT_NEAR(RecordedSampleOf(r, kG, {}, 0.001, mean, 0.001).force_N, 0.5 * (0.5 * (50.0 + 100.0)) + 0.5 * f_at_1_5, 1e-9);
+  // Across the stop: 100 N up to 1.9 ms, then the weight as a step.
+  EXPECT_NEAR(RecordedSampleOf(r, kG, {}, 0.002, mean, 0.001).force_N, 0.4 * 100.0 + 0.6 * 10.0, 1e-9);
+  // Before touchdown: the free fall's mean over [-1, 0] ms, and no force.
+  const RecordedSample early = RecordedSampleOf(r, kG, {}, -0.0005, mean, 0.001);
+  EXPECT_NEAR(early.penetration_m, -0.0005 + kG * 1e-6 / 6.0, 1e-15);
+  EXPECT_EQ(early.force_N, 0.0);
+  // After the record: its last sample held.
+  EXPECT_NEAR(RecordedSampleOf(r, kG, {}, 0.0045, mean, 0.001).force_N, 10.0, 1e-12);
+  // The instantaneous sensor, and a period of 0, are RecordedAt.
+  for (double t : {-0.0005, 0.0007, 0.002, 0.0045}) {
+    EXPECT_EQ(RecordedSampleOf(r, kG, {}, t, SensorSampling::kInstantaneous, 0.001).force_N, RecordedAt(r, kG, {}, t).force_N);
+    EXPECT_EQ(RecordedSampleOf(r, kG, {}, t, mean, 0.0).penetration_m, RecordedAt(r, kG, {}, t).penetration_m);
+  }
+}
+
+// The reason for the mean: a stop that moves across a sample time moves the recorded sample
+// continuously, where the instantaneous one jumps by the fall from the stroke's force to the weight.
+TEST(EffectRecord, PeriodMeanIsContinuousInTheStopTime) {
+  const double eps = 1e-9;
+  const RigDropResult before = HandRecord(0.002 - eps), after = HandRecord(0.002 + eps);
+  const double jump = RecordedAt(after, kG, {}, 0.002).force_N - RecordedAt(before, kG, {}, 0.002).force_N;
+  EXPECT_NEAR(jump, 90.0, 1e-3);
+  const double mean_jump = RecordedSampleOf(after, kG, {}, 0.002, SensorSampling::kPeriodMean, 0.001).force_N -
+                           RecordedSampleOf(before, kG, {}, 0.002, SensorSampling::kPeriodMean, 0.001).force_N;
+  EXPECT_NEAR(mean_jump, 90.0 * 2 * eps / 0.001, 1e-9);  // the step moved by 2 eps
+}
+
 }  // namespace
 }  // namespace touchdown::pad
