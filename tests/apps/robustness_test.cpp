@@ -731,6 +731,7 @@ std::vector<Case> Cases() {
   c.push_back({"synth YAML", "sensor_sampling: averaged", "synth sampling.synth.yaml --out out_w1",
                {{"sampling.synth.yaml", "schema_version: 1\ntype: synth\nseed: 1\nsensor_sampling: averaged\n"
                                         "drops:\n  - {pads: [flat], soils: [fjs1_lp], impact_speeds_m_s: [1.0]}\n"}}});
+  c.push_back({"diagnose", "--sensor-sampling averaged", "diagnose measured --sensor-sampling averaged --out out_w3", {}});
   return c;
 }
 

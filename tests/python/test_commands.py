@@ -83,14 +83,17 @@ SYNTH_SPEC = ("schema_version: 1\ntype: synth\nname: tiny_synth\ndescription: tw
               "provenance: {all: 'assumption: a test'}\n")
 
 
-def test_diagnose_equals_the_command_line(tmp_path):
-    # Six synthetic drops with a gas cushion in air: a second each (the bundled 24 take five).
+@pytest.mark.parametrize("sampling", ["instantaneous", "period_mean"])
+def test_diagnose_equals_the_command_line(tmp_path, sampling):
+    # Six synthetic drops with a gas cushion in air: a second each (the bundled 24 take five),
+    # recorded and compared through either sensor.
     spec = tmp_path / "synth.yaml"
-    spec.write_text(SYNTH_SPEC.replace("impact_speeds_m_s: [1.0]", "impact_speeds_m_s: [0.7, 1.0, 1.5]"))
+    spec.write_text(SYNTH_SPEC.replace("impact_speeds_m_s: [1.0]", "impact_speeds_m_s: [0.7, 1.0, 1.5]")
+                    + f"sensor_sampling: {sampling}\n")
     run_touchdown("synth", spec, "--out", tmp_path / "measured")
-    args = ("--no-pairs", "--threads", "2")
+    args = ("--no-pairs", "--threads", "2", "--sensor-sampling", sampling)
     run_touchdown("diagnose", tmp_path / "measured", "--out", tmp_path / "cli", *args)
-    py = touchdown.diagnose(tmp_path / "measured", tmp_path / "py", pairs=False, threads=2)
+    py = touchdown.diagnose(tmp_path / "measured", tmp_path / "py", pairs=False, threads=2, sensor_sampling=sampling)
     assert _without_seconds(py) == _without_seconds(_json(tmp_path / "cli" / "diagnosis.json"))
     assert py == _json(tmp_path / "py" / "diagnosis.json")
     assert py["named_effect"] == "gas_cushion"

@@ -76,6 +76,14 @@ def test_samples_out_of_range_names_the_python_argument(tmp_path):
     assert not (tmp_path / "out").exists()
 
 
+def test_diagnose_choices_name_the_python_argument(tmp_path):
+    for argument, value, allowed in [("base", "bekkerr", "rft or bekker"),
+                                     ("sensor_sampling", "averaged", "period_mean or instantaneous")]:
+        with pytest.raises(ValueError, match=rf"^touchdown\.diagnose: {argument}: must be {allowed}, got '{value}'$"):
+            touchdown.diagnose(tmp_path / "m", tmp_path / "d", **{argument: value})
+    assert not (tmp_path / "d").exists()
+
+
 def test_a_missing_input_file_raises_file_not_found(tmp_path):
     missing = tmp_path / "nope.yaml"
     for call in (lambda: touchdown.lander(missing), lambda: touchdown.stability(missing, tmp_path / "o"),
