@@ -96,7 +96,11 @@ RecordedSample IntegralOver(const RigDropResult& r, double g, double t0, double 
   // The stroke's samples linearly interpolated; from the stop on, the rest's values as steps (the
   // force falls to the weight at the stop itself: interpolating from the stop to the next grid
   // sample would smear the fall over a time that jumps as the stop crosses a grid point).
-  for (size_t i = 0; i + 1 < tr.size(); ++i) {
+  // Only the segments that overlap [t0, t1]: from the last sample at or before t0 (a long record
+  // sampled finely must not cost a pass over it per sample).
+  const auto after_t0 = std::upper_bound(tr.begin(), tr.end(), t0, [](double x, const DropSample& a) { return x < a.t_s; });
+  const size_t first_segment = after_t0 == tr.begin() ? 0 : static_cast<size_t>(after_t0 - tr.begin()) - 1;
+  for (size_t i = first_segment; i + 1 < tr.size() && tr[i].t_s < t1; ++i) {
     const DropSample &a = tr[i], &b = tr[i + 1];
     const double lo = std::max(t0, a.t_s), hi = std::min(t1, b.t_s);
     if (!(hi > lo)) continue;
