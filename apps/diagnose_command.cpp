@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/commands.h"
+#include "drop_tests/dataset/sensor_sampling.h"
 #include "drop_tests/io/output_path.h"
 #include "drop_tests/gap/diagnose.h"
 #include "rft/physical_limits.h"
@@ -40,7 +41,7 @@ void AddDiagnoseCommand(CLI::App& app) {
   cmd->add_option("--sensor-sampling", args->sensor_sampling,
                   "how the simulated drops are sampled to compare with the measured ones: instantaneous (the value "
                   "at each sample time, default) or period_mean (the mean over each sample period; docs/model_gap.md)")
-      ->check(CLI::IsMember({"period_mean", "instantaneous"}));
+      ->check(CLI::IsMember(dataset::SensorSamplingNames()));
   cmd->callback([args] {
     gap::DiagnoseOptions o;
     o.threads = args->threads > 0 ? args->threads : std::max(1u, std::thread::hardware_concurrency());
@@ -48,8 +49,7 @@ void AddDiagnoseCommand(CLI::App& app) {
     o.progress.mode = io::ProgressMode::kAuto;
     o.law_candidate = args->law_candidate;
     o.base = args->base == "bekker" ? gap::DiagnoseBase::kBekker : gap::DiagnoseBase::kRft;
-    o.sensor_sampling = args->sensor_sampling == "instantaneous" ? pad::SensorSampling::kInstantaneous
-                                                                 : pad::SensorSampling::kPeriodMean;
+    o.sensor_sampling = *dataset::ParseSensorSampling(args->sensor_sampling);  // checked by IsMember
     if (!args->model.empty()) o.start_model = model::LoadModelFile(args->model);
     const gap::Diagnosis d = gap::DiagnoseToDirectory(args->measured, o, {args->out, {args->measured, args->model}});
     const nlohmann::json j = gap::DiagnosisJson(d);

@@ -24,6 +24,7 @@
 
 #include "drop_tests/dataset/calibration_run.h"
 #include "drop_tests/dataset/compare.h"
+#include "drop_tests/dataset/sensor_sampling.h"
 #include "drop_tests/dataset/synth.h"
 #include "drop_tests/gap/diagnose.h"
 #include "drop_tests/scenario/campaign.h"
@@ -305,16 +306,15 @@ std::string Diagnose(const std::string& measured, const std::string& model, cons
     throw MakeInputError("touchdown.diagnose", field, "must be " + allowed + ", got '" + value + "'");
   };
   if (base != "rft" && base != "bekker") fail("base", "rft or bekker", base);
-  if (sensor_sampling != "period_mean" && sensor_sampling != "instantaneous")
-    fail("sensor_sampling", "period_mean or instantaneous", sensor_sampling);
+  const std::optional<pad::SensorSampling> sampling = dataset::ParseSensorSampling(sensor_sampling);
+  if (!sampling) fail("sensor_sampling", dataset::SensorSamplingChoices(), sensor_sampling);
   py::gil_scoped_release unlocked;
   gap::DiagnoseOptions o;
   o.threads = threads > 0 ? threads : std::max(1u, std::thread::hardware_concurrency());
   o.try_pairs = pairs;
   o.law_candidate = law_candidate;
   o.base = base == "bekker" ? gap::DiagnoseBase::kBekker : gap::DiagnoseBase::kRft;
-  o.sensor_sampling =
-      sensor_sampling == "instantaneous" ? pad::SensorSampling::kInstantaneous : pad::SensorSampling::kPeriodMean;
+  o.sensor_sampling = *sampling;
   if (!model.empty()) o.start_model = model::LoadModelFile(model);
   return gap::DiagnosisJson(gap::DiagnoseToDirectory(measured, o, {out, {measured, model}})).dump(2);
 }

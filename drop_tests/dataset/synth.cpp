@@ -88,9 +88,9 @@ SynthSpec LoadSynthSpec(const std::string& path) {
   if (f.Has("rest_duration_s")) s.rest_duration_s = f.NonNegative("rest_duration_s");
   if (f.Has("sensor_sampling")) {
     const std::string sampling = f.String("sensor_sampling");
-    if (sampling == "period_mean") s.sensor_sampling = pad::SensorSampling::kPeriodMean;
-    else if (sampling == "instantaneous") s.sensor_sampling = pad::SensorSampling::kInstantaneous;
-    else f.Fail("sensor_sampling", "must be period_mean or instantaneous, got '" + sampling + "'");
+    const std::optional<pad::SensorSampling> parsed = ParseSensorSampling(sampling);
+    if (!parsed) f.Fail("sensor_sampling", "must be " + SensorSamplingChoices() + ", got '" + sampling + "'");
+    s.sensor_sampling = *parsed;
   }
   const int trials = f.Has("trials") ? f.PositiveInt("trials") : 1;
   // Resource caps: the dataset is built in memory (every trace) before it is written, so its size
@@ -281,8 +281,7 @@ void WriteSpecYaml(const SynthSpec& s, YAML::Emitter& y, bool with_truth) {
   y << YAML::Key << "seed" << YAML::Value << s.seed << YAML::Key << "sample_rate_hz" << YAML::Value << s.sample_rate_hz
     << YAML::Key << "rest_duration_s" << YAML::Value << s.rest_duration_s << YAML::Key << "drops" << YAML::Value
     << s.drops.size();
-  y << YAML::Key << "sensor_sampling" << YAML::Value
-    << (s.sensor_sampling == pad::SensorSampling::kPeriodMean ? "period_mean" : "instantaneous");
+  y << YAML::Key << "sensor_sampling" << YAML::Value << SensorSamplingName(s.sensor_sampling);
   y << YAML::Key << "noise" << YAML::Value << YAML::BeginMap << YAML::Key << "force_sigma_N" << YAML::Value
     << s.noise.force_sigma_N << YAML::Key << "penetration_sigma_mm" << YAML::Value << s.noise.penetration_sigma_m * 1e3
     << YAML::Key << "force_drift_N_s" << YAML::Value << s.noise.force_drift_N_s << YAML::Key

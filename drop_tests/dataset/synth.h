@@ -40,7 +40,7 @@
 
 #include "drop_tests/dataset/dataset.h"
 #include "drop_tests/model/effects.h"
-#include "lander/pad/effect_soil_response.h"
+#include "drop_tests/dataset/sensor_sampling.h"
 
 namespace touchdown::dataset {
 

@@ -143,9 +143,9 @@ double AzimuthDifferenceDeg(double a_deg, double b_deg) {
 }
 
 nlohmann::json TipOverJson(const DropRecord& r) {
-  const int from = static_cast<int>(r.tip_over_edge);
-  nlohmann::json j = {{"edge_pads", {from, from % 4 + 1}},
-                      {"edge_pad_soils", {r.pad_soil[from - 1], r.pad_soil[from % 4]}},
+  const int legs = static_cast<int>(r.pad_soil.size()), from = static_cast<int>(r.tip_over_edge);
+  nlohmann::json j = {{"edge_pads", {from, from % legs + 1}},
+                      {"edge_pad_soils", {r.pad_soil[from - 1], r.pad_soil[from % legs]}},
                       {"fell_towards_azimuth_deg", io::FiniteOrNull(r.tip_over_azimuth_deg)}};
   // On a slope: where it fell relative to downhill (0 downhill, +-180 uphill), and relative to its
   // horizontal velocity at touchdown (0: straight on, where the landing carried it).
@@ -181,7 +181,8 @@ nlohmann::json LandingJson(const DropRecord& r) {
             {"pad_soils", r.pad_soil},
             {"ground_case", r.ground_case}}}};
   // 1-4 as written; anything else (a database from elsewhere) lists no edge rather than a wrong pad.
-  if (r.tip_over_edge >= 1.0 && r.tip_over_edge <= 4.0 && r.tip_over_edge == std::floor(r.tip_over_edge))
+  if (r.tip_over_edge >= 1.0 && r.tip_over_edge <= static_cast<double>(r.pad_soil.size()) &&
+      r.tip_over_edge == std::floor(r.tip_over_edge))
     j["tip_over"] = TipOverJson(r);
   return j;
 }

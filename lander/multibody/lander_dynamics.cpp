@@ -7,6 +7,8 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <tuple>
+#include <utility>
 
 #include "rft/deepest_point.h"
 #include "rft/entrained_mass.h"
@@ -516,19 +518,27 @@ double InsideEdgeDistance(const LanderPose& pose, int edge, const Eigen::Vector3
   return -(e.x() * r.y() - e.y() * r.x()) / e.norm();
 }
 
+namespace {
+// The support edge with the least InsideEdgeDistance of the centre of mass, and that distance.
+std::pair<int, double> LeastInsideEdge(const LanderModel& model, const LanderPose& p) {
+  const Eigen::Vector3d com = LanderCentreOfMass(model, p);
+  std::pair<int, double> least{0, std::numeric_limits<double>::infinity()};
+  for (int i = 0; i < kNumLegs; ++i) {
+    const double inside = InsideEdgeDistance(p, i, com);
+    if (inside < least.second) least = {i, inside};
+  }
+  return least;
+}
+}  // namespace
+
 double StabilityMargin(const LanderModel& model, const StateLayout& L, const Eigen::Ref<const Eigen::VectorXd>& y) {
-  return CriticalSupportEdge(model, L, y).margin_m;
+  return LeastInsideEdge(model, ComputePose(model, L, y)).second;
 }
 
 CriticalEdge CriticalSupportEdge(const LanderModel& model, const StateLayout& L, const Eigen::Ref<const Eigen::VectorXd>& y) {
   const LanderPose p = ComputePose(model, L, y);
-  const Eigen::Vector3d com = LanderCentreOfMass(model, p);
   CriticalEdge edge;
-  edge.margin_m = std::numeric_limits<double>::infinity();
-  for (int i = 0; i < kNumLegs; ++i) {
-    const double inside = InsideEdgeDistance(p, i, com);
-    if (inside < edge.margin_m) edge.margin_m = inside, edge.from_leg = i;
-  }
+  std::tie(edge.from_leg, edge.margin_m) = LeastInsideEdge(model, p);
   const Eigen::Vector2d e = p.pads[(edge.from_leg + 1) % kNumLegs].p_WJ.head<2>() - p.pads[edge.from_leg].p_WJ.head<2>();
   // Clockwise seen from above, the inside is on the right of e: outward is its left normal (-e_y, e_x).
   edge.outward_azimuth_rad = std::atan2(e.x(), -e.y());
