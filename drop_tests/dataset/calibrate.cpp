@@ -93,9 +93,8 @@ double SinkRate(const DatasetTrace& trace, size_t i) {
 
 namespace fs = std::filesystem;
 
-std::vector<size_t> LoadingStrokeIndices(const DatasetTrace& trace) {
-  std::vector<size_t> out;
-  if (trace.size() == 0) return out;
+size_t LoadingStrokeEnd(const DatasetTrace& trace) {
+  if (trace.size() == 0) return 0;
   const size_t deepest = static_cast<size_t>(
       std::max_element(trace.penetration_m.begin(), trace.penetration_m.end()) - trace.penetration_m.begin());
   // The stroke ends where the pad stops: the force falls from the soil's capacity F(d) to the
@@ -103,20 +102,30 @@ std::vector<size_t> LoadingStrokeIndices(const DatasetTrace& trace) {
   // without this cut the rest samples (force m g against F(d) in the regressor) would pull zeta
   // down (the shipped synthetic dataset: 1.1 instead of 3.48 N/cm^3). Looked for in the deeper
   // half of the stroke only, so an impact transient at shallow depth does not end it.
-  size_t end = deepest;
   const double half_depth = 0.5 * trace.penetration_m[deepest];
   double peak = 0.0;
   for (size_t i = 0; i <= deepest; ++i) {
     if (trace.penetration_m[i] < half_depth) continue;
-    if (peak > 0.0 && trace.force_N[i] < 0.5 * peak) {
-      end = i - 1;
-      break;
-    }
+    if (peak > 0.0 && trace.force_N[i] < 0.5 * peak) return i - 1;
     peak = std::max(peak, trace.force_N[i]);
   }
+  return deepest;
+}
+
+std::vector<size_t> LoadingStrokeIndices(const DatasetTrace& trace) {
+  std::vector<size_t> out;
+  if (trace.size() == 0) return out;
+  const size_t end = LoadingStrokeEnd(trace);
   for (size_t i = 0; i <= end; ++i)
     if (trace.penetration_m[i] > 0.0) out.push_back(i);
-  return out;
+  // A sensor that averages over its sample period (pad::SensorSampling::kPeriodMean) records, in
+  // the sample astride the touchdown, the free fall's zero force mixed with the stroke's, and in
+  // the one astride the stop the stroke's force mixed with the weight: neither is the law at its
+  // depth. A dataset does not say how its sensors sample, so the first and the last samples of the
+  // stroke are always left out: from a sensor that samples instantaneously they are good samples,
+  // and leaving them out costs two of the stroke's tens of samples, no bias.
+  if (out.size() <= 2) return {};
+  return std::vector<size_t>(out.begin() + 1, out.end() - 1);
 }
 
 ZetaFit FitZeta(const std::vector<StrokeSamples>& drops, double confidence) {

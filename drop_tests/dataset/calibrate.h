@@ -11,9 +11,10 @@
 //
 //   zeta = sum x_i F_i / sum x_i^2,   residuals e_i = F_i - zeta x_i,
 //
-// over every measured sample with d_i > 0 up to the drop's deepest sample or its stop (the
-// loading stroke, LoadingStrokeIndices; the rest phase, where the reaction is the weight, is not
-// RFT's law).
+// over every measured sample with d_i > 0 up to the drop's deepest sample or its stop but the first
+// and the last of them (the loading stroke, LoadingStrokeIndices; the rest phase, where the
+// reaction is the weight, is not RFT's law, and the samples astride the touchdown and the stop
+// mix it in when the sensor averages over its sample period).
 //
 // Confidence interval (two-sided, `confidence`, default 95 %): samples within one drop are not
 // independent (a sensor offset or a model gap moves a whole curve), so the standard error is
@@ -56,9 +57,13 @@ struct StrokeSamples {
   std::vector<double> x;  // (g/g_ref) phi(d_i) [N per N/m^3]
   std::vector<double> force_N;
 };
-// Indices of a trace's loading stroke: samples with penetration > 0 up to the deepest one, or
-// up to the stop when the force falls there (in the deeper half of the stroke) below half of
-// its largest value so far: the rest phase carries only the weight.
+// The last sample of a trace's stroke: the deepest one, or the one before the force falls (in the
+// deeper half of the stroke) below half of its largest value so far: the rest phase carries only
+// the weight. 0 for an empty trace.
+size_t LoadingStrokeEnd(const DatasetTrace& trace);
+// Indices of a trace's loading stroke: the samples with penetration > 0 up to LoadingStrokeEnd,
+// without the first and the last of them (a sensor averaging over its sample period mixes the free
+// fall into the first and the weight at rest into the last); none when that leaves nothing.
 std::vector<size_t> LoadingStrokeIndices(const DatasetTrace& trace);
 
 // Closed-form fit of zeta over drops (clusters) of samples; see the header comment.

@@ -10,7 +10,8 @@
 //       in time, 0 before touchdown (t < 0) and its last value after it ends (the pad at rest);
 //   force_nrmse_penetration = sqrt( mean_i (F_sim(d_i) - F_i)^2 ) / max_i F_i
 //       over the measured loading stroke (samples with d_i > 0 up to the stop, LoadingStrokeIndices
-//       as calibrate uses: where the force falls below half its peak in the deeper half), where
+//       as calibrate uses: where the force falls below half its peak in the deeper half; without
+//       the stroke's first and last samples, astride the touchdown and the stop), where
 //       the simulated stroke covers d_i; F_sim(d) is the simulated force interpolated linearly in
 //       penetration along its own stroke. Samples deeper than the simulated stroke are left out
 //       and counted (penetration_samples_used of penetration_samples).

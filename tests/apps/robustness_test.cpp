@@ -289,14 +289,16 @@ void AddExitStatusAndInputCases(std::vector<Case>& c) {
                "force --pad flat --law agarwal2023 --depth 0.005 --soil dynamic.yaml",
                {{"dynamic.yaml", Soil("zeta_N_cm3: 3\nbulk_density_kg_m3: 1600\ninternal_friction_angle_deg: 37\n"
                                       "mu_surf: 0.3\ndynamic_term: true\ndynamic_lambda: 1.2\n")}}});
-  // Section 4: spreadsheet datasets load (UTF-8 BOM, CRLF, every field quoted).
+  // Section 4: spreadsheet datasets load (UTF-8 BOM, CRLF, every field quoted). The stroke is
+  // samples 1-4 (the force falls at 5); calibrate fits the two between its first and last.
   c.push_back({"dataset CSV", "Excel/pandas export: BOM, CRLF, QUOTE_ALL", Calibrate("ds_excel"),
                Dataset("ds_excel",
                        "\xEF\xBB\xBF\"drop_id\",\"pad\",\"soil\",\"atmosphere\",\"impact_speed_m_s\",\"pad_mass_kg\","
                        "\"gravity_m_s2\",\"trace\"\r\n\"d0\",\"flat\",\"fjs1_lp\",\"vacuum\",\"1.0\",\"1.6\",\"9.81\","
                        "\"t.csv\"\r\n",
                        "\xEF\xBB\xBF\"t_s\",\"penetration_m\",\"force_N\"\r\n\"0\",\"0\",\"0\"\r\n\"0.001\",\"0.0005\","
-                       "\"30\"\r\n\"0.002\",\"0.0009\",\"60\"\r\n\"0.003\",\"0.001\",\"20\"\r\n")});
+                       "\"30\"\r\n\"0.002\",\"0.0009\",\"60\"\r\n\"0.003\",\"0.0012\",\"80\"\r\n\"0.004\",\"0.0014\","
+                       "\"95\"\r\n\"0.005\",\"0.0015\",\"20\"\r\n")});
   c.push_back({"dataset CSV", "quoted field not closed", Calibrate("ds_quote"),
                Dataset("ds_quote", kDropsHeader + "\"d0,flat,fjs1_lp,vacuum,1.0,1.6,9.81,t.csv\n")});
   // Section 4: synth seeds as sweep seeds.

@@ -33,7 +33,8 @@ TEST(CompareMetrics, IdenticalTracesGiveZero) {
   const DatasetTrace t = Linear(1e4, 0.02, 30);
   EXPECT_EQ(ForceNrmseTime(t, t).value, 0.0);
   EXPECT_EQ(ForceNrmsePenetration(t, t).value, 0.0);
-  EXPECT_EQ(ForceNrmsePenetration(t, t).used, 29u);  // every sample with d > 0
+  // The samples with d > 0 (1-29) but the stroke's first and last (LoadingStrokeIndices).
+  EXPECT_EQ(ForceNrmsePenetration(t, t).used, 27u);
 }
 
 TEST(CompareMetrics, ConstantForceOffsetOverPeak) {
@@ -46,14 +47,15 @@ TEST(CompareMetrics, ConstantForceOffsetOverPeak) {
 }
 
 TEST(CompareMetrics, StiffnessMismatchAgainstPenetrationHasAClosedForm) {
-  // F_meas = k d, F_sim = k' d on the same depths: NRMSE = |k' - k| sqrt(mean d_i^2) / (k d_max).
+  // F_meas = k d, F_sim = k' d on the same depths: NRMSE = |k' - k| sqrt(mean d_i^2) / (k d_max),
+  // the mean over the loading stroke: samples 1 to n - 1 (d > 0) without the first and the last.
   const double k = 1e4, k_sim = 1.2e4, d_max = 0.02;
   const int n = 41;
   const DatasetTrace measured = Linear(k, d_max, n);
   const DatasetTrace simulated = Linear(k_sim, d_max, 11, 4e-3);  // coarser, still exact for a line
   double mean_sq = 0.0;
-  for (int i = 1; i < n; ++i) mean_sq += std::pow(d_max * i / (n - 1), 2);
-  mean_sq /= (n - 1);
+  for (int i = 2; i < n - 1; ++i) mean_sq += std::pow(d_max * i / (n - 1), 2);
+  mean_sq /= (n - 3);
   EXPECT_NEAR(ForceNrmsePenetration(measured, simulated).value, (k_sim - k) * std::sqrt(mean_sq) / (k * d_max), 1e-12);
 }
 
@@ -71,15 +73,15 @@ TEST(CompareMetrics, RestSamplesWithPenetrationNoiseAreNotPartOfTheStroke) {
   }
   const NrmseResult r = ForceNrmsePenetration(measured, simulated);
   EXPECT_EQ(r.value, 0.0);
-  EXPECT_EQ(r.used, 20u);  // the stroke's samples with d > 0
+  EXPECT_EQ(r.used, 18u);  // the stroke's samples with d > 0 (1-20) but its first and last
 }
 
 TEST(CompareMetrics, SamplesBeyondTheSimulatedStrokeAreCountedNotCompared) {
   const DatasetTrace measured = Linear(1e4, 0.02, 21);
   const DatasetTrace simulated = Linear(1e4, 0.01, 11);
   const NrmseResult r = ForceNrmsePenetration(measured, simulated);
-  EXPECT_EQ(r.samples, 20u);
-  EXPECT_EQ(r.used, 10u);
+  EXPECT_EQ(r.samples, 18u);  // samples 2-19: d > 0 without the stroke's first and last
+  EXPECT_EQ(r.used, 9u);      // 2-10: d_i = i mm up to the simulated 10 mm
   EXPECT_NEAR(r.value, 0.0, 1e-12);
 }
 

@@ -64,8 +64,12 @@ TEST(BekkerBase, RecoversTheSoilOfDropsMadeOnABekkerSoil) {
   const Diagnosis d = RunDiagnosis(ds, o);
   ASSERT_TRUE(d.problem.bekker_base);
   ASSERT_EQ(d.bekker_base.size(), 1u);
-  EXPECT_NEAR(d.bekker_base[0].bekker.n, 0.63, 0.005);  // measured 0.6290
-  EXPECT_NEAR(d.bekker_base[0].bekker.k_phi_N_m_n2 / 1796e3, 1.0, 0.02);  // measured 1786.9 kN/m^(n+2)
+  // n and k_phi move together along the fit's ridge (a lower n, a lower k_phi: the same force at
+  // these depths, the held-out NRMSE stays at 0.003). The loading strokes are 15-25 samples, and
+  // leaving out each stroke's first and last sample (calibrate.h) moves the pair by about 1 % in n
+  // and 3 % in k_phi; measured n 0.6242 and k_phi 1738.3 kN/m^(n+2) on instantaneous samples.
+  EXPECT_NEAR(d.bekker_base[0].bekker.n, 0.63, 0.01);
+  EXPECT_NEAR(d.bekker_base[0].bekker.k_phi_N_m_n2 / 1796e3, 1.0, 0.04);
   EXPECT_NEAR(d.base.fit.zeta_N_m3[0], 1.0, 0.01);  // the scale of the calibrated moduli (measured 1.0015)
   std::printf("[ bekker base ] n %.4f k_phi %.1f kN/m^(n+2) scale %.4f held-out force NRMSE %.4f (noise %.4f)\n",
               d.bekker_base[0].bekker.n, d.bekker_base[0].bekker.k_phi_N_m_n2 / 1e3, d.base.fit.zeta_N_m3[0],
