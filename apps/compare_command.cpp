@@ -7,13 +7,14 @@
 #include "apps/commands.h"
 #include "drop_tests/io/output_path.h"
 #include "drop_tests/dataset/compare.h"
+#include "drop_tests/dataset/sensor_sampling.h"
 #include "rft/input_error.h"
 
 namespace touchdown::app {
 
 namespace {
 struct CompareArgs {
-  std::string measured, simulated, model, out;
+  std::string measured, simulated, model, out, sensor_sampling = "instantaneous";
 };
 }  // namespace
 
@@ -25,9 +26,15 @@ void AddCompareCommand(CLI::App& app) {
                               "simulated dataset directory to join on the drop conditions (default: simulate here)");
   cmd->add_option("--model", args->model, "model file to simulate with (per-soil zeta and effect terms)")->excludes(sim);
   cmd->add_option("--out", args->out, "output directory: new, empty, or an earlier output of this command (replaced whole when complete)")->required();
+  cmd->add_option("--sensor-sampling", args->sensor_sampling,
+                  "how the measured drops were sampled, and so the drops simulated here are recorded: instantaneous "
+                  "(the value at each sample time, default) or period_mean (the mean over each sample period; "
+                  "docs/model_gap.md)")
+      ->check(CLI::IsMember(dataset::SensorSamplingNames()));
   cmd->callback([args] {
     const io::OutputTarget out(args->out, {args->measured, args->simulated, args->model});
-    const dataset::Comparison c = dataset::RunComparison(args->measured, args->simulated, args->model, out);
+    const dataset::Comparison c = dataset::RunComparison(args->measured, args->simulated, args->model, out,
+                                                         *dataset::ParseSensorSampling(args->sensor_sampling));  // checked by IsMember
     std::cout << std::left << std::setw(24) << "drop" << std::right << std::setw(14) << "depth err" << std::setw(14)
               << "peak F err" << std::setw(14) << "NRMSE(t)" << std::setw(14) << "NRMSE(d)" << "\n";
     auto pct = [](double v) {

@@ -227,10 +227,14 @@ std::string Campaign(const std::string& scenario_path, const std::string& out) {
 
 // touchdown compare: the comparison (summary.json's content) and its outputs in `out`.
 std::string Compare(const std::string& measured, const std::string& simulated, const std::string& model,
-                    const std::string& out) {
+                    const std::string& out, const std::string& sensor_sampling) {
+  const std::optional<pad::SensorSampling> sampling = dataset::ParseSensorSampling(sensor_sampling);
+  if (!sampling)
+    throw MakeInputError("touchdown.compare", "sensor_sampling",
+                         "must be " + dataset::SensorSamplingChoices() + ", got '" + sensor_sampling + "'");
   py::gil_scoped_release unlocked;
   const io::OutputTarget target(out, {measured, simulated, model});
-  return dataset::ComparisonJson(dataset::RunComparison(measured, simulated, model, target)).dump(2);
+  return dataset::ComparisonJson(dataset::RunComparison(measured, simulated, model, target, *sampling)).dump(2);
 }
 
 // touchdown stability: the study's landings as a sweep into `out`, then its analysis there.
@@ -446,7 +450,8 @@ PYBIND11_MODULE(_touchdown, m) {
   m.def("synth", &python::Synth, py::arg("spec"), py::arg("out"));
   m.def("export", &python::Export, py::arg("sweep"), py::arg("to"), py::arg("full_traces"), py::arg("threads"));
   m.def("campaign", &python::Campaign, py::arg("scenario"), py::arg("out"));
-  m.def("compare", &python::Compare, py::arg("measured"), py::arg("simulated"), py::arg("model"), py::arg("out"));
+  m.def("compare", &python::Compare, py::arg("measured"), py::arg("simulated"), py::arg("model"), py::arg("out"),
+        py::arg("sensor_sampling"));
   m.def("sweep", &python::Sweep, py::arg("plan"), py::arg("out"), py::arg("model"), py::arg("threads"));
   m.def("stability", &python::Stability, py::arg("study"), py::arg("out"), py::arg("model"), py::arg("samples"),
         py::arg("threads"));

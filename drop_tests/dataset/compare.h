@@ -8,6 +8,8 @@
 //   force_nrmse_time        = sqrt( mean_i (F_sim(t_i) - F_i)^2 ) / max_i F_i
 //       over every measured sample i; F_sim(t) is the simulated trace interpolated linearly
 //       in time, 0 before touchdown (t < 0) and its last value after it ends (the pad at rest);
+//       a drop simulated here is recorded on the measured times (SimulateMeasuredDrops), so
+//       F_sim(t_i) is its recorded sample;
 //   force_nrmse_penetration = sqrt( mean_i (F_sim(d_i) - F_i)^2 ) / max_i F_i
 //       over the measured loading stroke (samples with d_i > 0 up to the stop, LoadingStrokeIndices
 //       as calibrate uses: where the force falls below half its peak in the deeper half; without
@@ -29,6 +31,7 @@
 
 #include "drop_tests/dataset/dataset.h"
 #include "drop_tests/model/model_file.h"
+#include "lander/pad/effect_soil_response.h"
 
 namespace touchdown::dataset {
 
@@ -77,10 +80,14 @@ struct Comparison {
 // (DropConditionsFor + SimulateDrop, drop_tests/drop/pad_drop.h) at 1 kHz, under `model` when given:
 // its zeta per soil and its effects (gas_cushion on the drops in air only). A drop with a
 // non-zero tilt_deg or horizontal_speed_m_s column is a free 6-DOF drop (tilt about x, travel
-// along +x; the effects in their 3D form). A sensor_offset is applied as the rig records: the
-// simulated trace's time shifted by -dt, its penetration by +dz (effects.h RecordedAt), so it
-// compares with the measured record. Returns a dataset with the same drop ids.
-Dataset SimulateMeasuredDrops(const Dataset& measured, const std::optional<model::ModelFile>& model);
+// along +x; the effects in their 3D form). Each simulated drop is recorded as the measured one was
+// (RecordedTrace, sensor_sampling.h): on the measured sample times, through a sensor that samples
+// as `sampling` says (kPeriodMean: the mean over the measured trace's SamplePeriod), with a
+// sensor_offset's shifts (time by -dt, penetration by +dz). Its final penetration and peak force
+// come from the simulation where the measured drop has those columns, else from its recorded
+// trace. Returns a dataset with the same drop ids.
+Dataset SimulateMeasuredDrops(const Dataset& measured, const std::optional<model::ModelFile>& model,
+                              pad::SensorSampling sampling);
 // For each measured drop the first simulated drop with the same conditions (pad, soil,
 // atmosphere, impact speed, mass, gravity, and tilt_deg/horizontal_speed_m_s where given, 0
 // otherwise; numbers equal to a relative 1e-9). Throws InputError naming an unmatched drop.
@@ -99,8 +106,9 @@ void WriteComparison(const Comparison& c, const Dataset& measured, const Dataset
 // `touchdown compare` whole, for the command line and the Python module: reads the measured
 // dataset, simulates its drops here (with `model_file`, or the catalogue's soils) or joins them to
 // the `simulated_dir` dataset on their conditions, compares, and writes the outputs to `out`
-// (checked first). Returns the comparison.
+// (checked first); drops simulated here are recorded through `sampling` (SimulateMeasuredDrops).
+// Returns the comparison.
 Comparison RunComparison(const std::string& measured_dir, const std::string& simulated_dir,
-                         const std::string& model_file, const io::OutputTarget& out);
+                         const std::string& model_file, const io::OutputTarget& out, pad::SensorSampling sampling);
 
 }  // namespace touchdown::dataset

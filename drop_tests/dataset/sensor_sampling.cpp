@@ -28,4 +28,18 @@ std::string SensorSamplingChoices() {
   return out;
 }
 
+DatasetTrace RecordedTrace(const pad::RigDropResult& result, double gravity_m_s2, const rft::EffectTerms& terms,
+                           const std::vector<double>& t_s, pad::SensorSampling sampling, double sample_period_s) {
+  DatasetTrace out;
+  out.t_s = t_s;
+  out.penetration_m.reserve(t_s.size());
+  out.force_N.reserve(t_s.size());
+  for (const double t : t_s) {
+    const pad::RecordedSample s = pad::RecordedSampleOf(result, gravity_m_s2, terms, t, sampling, sample_period_s);
+    out.penetration_m.push_back(s.penetration_m);
+    out.force_N.push_back(s.force_N);
+  }
+  return out;
+}
+
 }  // namespace touchdown::dataset

@@ -1,5 +1,7 @@
 #include "drop_tests/gap/diagnose_fit.h"
 
+#include "drop_tests/dataset/sensor_sampling.h"
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -78,16 +80,7 @@ std::optional<dataset::DatasetTrace> Recorded(const FitProblem& p, const FitDrop
         p.bekker_base ? drop::MakeBekkerRigResponse(*p.bekker_intrusions[d.pad], soil, terms)
                       : drop::MakeRigResponse(*p.intrusions[d.pad], soil, d.gravity_m_s2, terms);
     const pad::RigDropResult r = pad::RunRigDrop({d.mass_kg, d.gravity_m_s2, d.speed_m_s}, response, p.rig);
-    dataset::DatasetTrace out;
-    const dataset::DatasetTrace& tr = *d.trace;
-    for (size_t i = 0; i < tr.size(); ++i) {
-      const pad::RecordedSample rs =
-          pad::RecordedSampleOf(r, d.gravity_m_s2, terms, tr.t_s[i], p.sensor_sampling, d.sample_period_s);
-      out.t_s.push_back(tr.t_s[i]);
-      out.penetration_m.push_back(rs.penetration_m);
-      out.force_N.push_back(rs.force_N);
-    }
-    return out;
+    return dataset::RecordedTrace(r, d.gravity_m_s2, terms, d.trace->t_s, p.sensor_sampling, d.sample_period_s);
   } catch (const integ::IntegrationFailure&) {
     return std::nullopt;
   } catch (const std::invalid_argument&) {

@@ -5,6 +5,7 @@
 
 #include "drop_tests/dataset/calibrate.h"
 #include "drop_tests/dataset/compare.h"
+#include "drop_tests/dataset/sensor_sampling.h"
 #include "drop_tests/drop/drop_factory.h"
 #include "drop_tests/drop/pad_drop.h"
 #include "lander/integ/cvode_integrator.h"
@@ -40,14 +41,8 @@ double HeldOutNrmse(const FitProblem& p, const FitDrop& d, const rft::SoilParame
   options.rig = p.rig;
   try {
     const drop::PadDrop sim = drop::SimulateDrop(p.pads[d.pad], soil, c, options);
-    dataset::DatasetTrace recorded;
-    for (size_t i = 0; i < d.trace->size(); ++i) {
-      const pad::RecordedSample rs =
-          pad::RecordedSampleOf(sim.result, d.gravity_m_s2, {}, d.trace->t_s[i], p.sensor_sampling, d.sample_period_s);
-      recorded.t_s.push_back(d.trace->t_s[i]);
-      recorded.penetration_m.push_back(rs.penetration_m);
-      recorded.force_N.push_back(rs.force_N);
-    }
+    const dataset::DatasetTrace recorded =
+        dataset::RecordedTrace(sim.result, d.gravity_m_s2, {}, d.trace->t_s, p.sensor_sampling, d.sample_period_s);
     return dataset::ForceNrmseTime(*d.trace, recorded).value;
   } catch (const integ::IntegrationFailure&) {
     *failed = true;

@@ -18,6 +18,7 @@
 #include "drop_tests/scenario/lander_scenario.h"
 #include "drop_tests/model/model_file.h"
 #include "drop_tests/drop/pad_drop.h"
+#include "drop_tests/dataset/sensor_sampling.h"
 #include "drop_tests/dataset/synth.h"
 #include "rft/input_error.h"
 #include "tests/drop_tests/scenario/lander_test_support.h"
@@ -275,32 +276,37 @@ TEST_F(ModelEffects, LanderSoilsCarryTheModelsTerms) {
 }
 
 // compare --model with a sensor_offset: the simulated traces are shifted as the rig records them
-// (time by -dt, penetration by +dz), so a noise-free record with that offset hidden is matched.
+// (time by -dt, penetration by +dz), so a noise-free record with that offset hidden is matched,
+// from either sensor when compare records the simulation through the same one.
 TEST_F(ModelEffects, CompareAppliesTheSensorOffsetToTheSimulatedTraces) {
-  dataset::SynthSpec spec;
-  spec.name = "offset";
-  spec.source = "offset.yaml";
-  spec.rest_duration_s = 0.01;
-  for (double v : {0.8, 1.4}) spec.drops.push_back({"flat", "fjs1_lp", rft::Atmosphere::kVacuum, v, std::nullopt, 9.81, 0});
-  spec.noise = dataset::SynthNoise{0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-  spec.hidden_effect = Effect{"sensor_offset", {0.001, 0.004}};
-  dataset::Dataset measured = dataset::Synthesize(spec);
-  measured.directory = dir_.string();
-  const std::string model_path = Model("offset", "{sensor_offset: {dz_mm: 1, dt_ms: 4}}");
-  auto compared = [&](const std::optional<ModelFile>& model) {
-    const dataset::Dataset simulated = dataset::SimulateMeasuredDrops(measured, model);
-    std::vector<const dataset::DatasetDrop*> partners;
-    for (const dataset::DatasetDrop& s : simulated.drops) partners.push_back(&s);
-    return CompareDrops(measured, partners);
-  };
-  const dataset::Comparison with = compared(LoadModelFile(model_path)), without = compared(std::nullopt);
-  std::printf("[ sensor offset ] force NRMSE %.2e with the offset, %.2e without; depth error %.2e / %.2e\n",
-              with.force_nrmse, without.force_nrmse, with.final_penetration_rel_error,
-              without.final_penetration_rel_error);
-  EXPECT_LT(with.force_nrmse, 5e-3);
-  EXPECT_GT(without.force_nrmse, 10 * with.force_nrmse);
-  EXPECT_LT(with.final_penetration_rel_error, 1e-3);
-  EXPECT_GT(without.final_penetration_rel_error, 0.05);
+  for (const pad::SensorSampling sampling : {pad::SensorSampling::kInstantaneous, pad::SensorSampling::kPeriodMean}) {
+    SCOPED_TRACE(dataset::SensorSamplingName(sampling));
+    dataset::SynthSpec spec;
+    spec.name = "offset";
+    spec.source = "offset.yaml";
+    spec.rest_duration_s = 0.01;
+    spec.sensor_sampling = sampling;
+    for (double v : {0.8, 1.4}) spec.drops.push_back({"flat", "fjs1_lp", rft::Atmosphere::kVacuum, v, std::nullopt, 9.81, 0});
+    spec.noise = dataset::SynthNoise{0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    spec.hidden_effect = Effect{"sensor_offset", {0.001, 0.004}};
+    dataset::Dataset measured = dataset::Synthesize(spec);
+    measured.directory = dir_.string();
+    const std::string model_path = Model("offset", "{sensor_offset: {dz_mm: 1, dt_ms: 4}}");
+    auto compared = [&](const std::optional<ModelFile>& model) {
+      const dataset::Dataset simulated = dataset::SimulateMeasuredDrops(measured, model, sampling);
+      std::vector<const dataset::DatasetDrop*> partners;
+      for (const dataset::DatasetDrop& s : simulated.drops) partners.push_back(&s);
+      return CompareDrops(measured, partners);
+    };
+    const dataset::Comparison with = compared(LoadModelFile(model_path)), without = compared(std::nullopt);
+    std::printf("[ sensor offset, %s ] force NRMSE %.2e with the offset, %.2e without; depth error %.2e / %.2e\n",
+                dataset::SensorSamplingName(sampling), with.force_nrmse, without.force_nrmse,
+                with.final_penetration_rel_error, without.final_penetration_rel_error);
+    EXPECT_LT(with.force_nrmse, 5e-3);
+    EXPECT_GT(without.force_nrmse, 10 * with.force_nrmse);
+    EXPECT_LT(with.final_penetration_rel_error, 1e-3);
+    EXPECT_GT(without.final_penetration_rel_error, 0.05);
+  }
 }
 
 // diagnose on a small synthetic dataset with hidden rate damping writes DIR/model.yaml; that
@@ -344,7 +350,7 @@ TEST_F(ModelEffects, DiagnosedModelFileRoundTripsThroughDropAndCompare) {
   EXPECT_NEAR(c.effects.damping_c_N_s_m3, w.fit.effects[0].values[0], 1e-6 * w.fit.effects[0].values[0]);
 
   // compare --model: per drop the force NRMSE of the diagnosis's augmented model.
-  const dataset::Dataset simulated = dataset::SimulateMeasuredDrops(measured, model);
+  const dataset::Dataset simulated = dataset::SimulateMeasuredDrops(measured, model, o.sensor_sampling);
   std::vector<const dataset::DatasetDrop*> partners;
   for (const dataset::DatasetDrop& s : simulated.drops) partners.push_back(&s);
   const dataset::Comparison cmp = CompareDrops(measured, partners);

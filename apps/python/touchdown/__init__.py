@@ -95,14 +95,16 @@ def campaign(scenario, out):
     return json.loads(_touchdown.campaign(scenario=_path_text(scenario), out=_path_text(out)))
 
 
-def compare(measured, out, *, simulated=None, model=None):
-    """`touchdown compare MEASURED --out OUT [--simulated DIR | --model MODEL]`: the measured dataset
-    against drops simulated here (with `model`, or the catalogue's soils) or the `simulated` dataset
-    joined on the conditions; the outputs into the new directory OUT; returns summary.json's dict."""
+def compare(measured, out, *, simulated=None, model=None, sensor_sampling="instantaneous"):
+    """`touchdown compare MEASURED --out OUT [--simulated DIR | --model MODEL] [--sensor-sampling S]`: the
+    measured dataset against drops simulated here (with `model`, or the catalogue's soils; recorded as
+    `sensor_sampling` says the measured ones were: "instantaneous" or "period_mean") or the `simulated`
+    dataset joined on the conditions; the outputs into the new directory OUT; returns summary.json's dict."""
     if simulated is not None and model is not None:
         raise ValueError("compare: give simulated or model, not both")
     return json.loads(_touchdown.compare(measured=_path_text(measured), simulated=_path_text(simulated),
-                                         model=_path_text(model), out=_path_text(out)))
+                                         model=_path_text(model), out=_path_text(out),
+                                         sensor_sampling=sensor_sampling))
 
 
 def calibrate(measured, out, *, law="rft", per="soil", atmosphere="all", confidence=0.95, soil=None, pad=None,

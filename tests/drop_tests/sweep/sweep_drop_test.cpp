@@ -126,7 +126,7 @@ grid: {pad: [coarse_hex.yaml, flat], impact_speed_m_s: [1.0]}
   const dataset::Dataset ds = dataset::ReadDataset(Out("dataset"));
   ASSERT_EQ(ds.drops.size(), 2u);
   EXPECT_EQ(ds.drops[0].pad, fs::absolute(dir_ / "coarse_hex.yaml").string());
-  const dataset::Dataset sim = dataset::SimulateMeasuredDrops(ds, std::nullopt);
+  const dataset::Dataset sim = dataset::SimulateMeasuredDrops(ds, std::nullopt, pad::SensorSampling::kInstantaneous);
   ASSERT_EQ(sim.drops.size(), 2u);
   EXPECT_NEAR(*sim.drops[0].final_penetration_m, hex.final_penetration_m, 1e-12);
   EXPECT_NEAR(*sim.drops[1].final_penetration_m, flat.final_penetration_m, 1e-12);
