@@ -14,7 +14,7 @@ namespace touchdown::app {
 
 namespace {
 struct CompareArgs {
-  std::string measured, simulated, model, out, sensor_sampling = "instantaneous";
+  std::string measured, simulated, model, out, sensor_sampling = "period_mean";
 };
 }  // namespace
 
@@ -27,9 +27,9 @@ void AddCompareCommand(CLI::App& app) {
   cmd->add_option("--model", args->model, "model file to simulate with (per-soil zeta and effect terms)")->excludes(sim);
   cmd->add_option("--out", args->out, "output directory: new, empty, or an earlier output of this command (replaced whole when complete)")->required();
   cmd->add_option("--sensor-sampling", args->sensor_sampling,
-                  "how the measured drops were sampled, and so the drops simulated here are recorded: instantaneous "
-                  "(the value at each sample time, default) or period_mean (the mean over each sample period; "
-                  "docs/model_gap.md)")
+                  "how the measured drops were sampled, and so the drops simulated here are recorded: period_mean "
+                  "(the mean over each sample period, as an averaging load cell records; default) or instantaneous "
+                  "(the value at each sample time; docs/model_gap.md)")
       ->check(CLI::IsMember(dataset::SensorSamplingNames()));
   cmd->callback([args] {
     const io::OutputTarget out(args->out, {args->measured, args->simulated, args->model});

@@ -16,7 +16,7 @@ namespace touchdown::app {
 
 namespace {
 struct DiagnoseArgs {
-  std::string measured, model, out, base = "rft", sensor_sampling = "instantaneous";
+  std::string measured, model, out, base = "rft", sensor_sampling = "period_mean";
   int threads = 0;
   bool no_pairs = false, law_candidate = false;
 };
@@ -39,8 +39,9 @@ void AddDiagnoseCommand(CLI::App& app) {
   cmd->add_flag("--law-candidate", args->law_candidate,
                 "also fit the Bekker law per soil on the training drops and score it (docs/bekker_soil.md)");
   cmd->add_option("--sensor-sampling", args->sensor_sampling,
-                  "how the simulated drops are sampled to compare with the measured ones: instantaneous (the value "
-                  "at each sample time, default) or period_mean (the mean over each sample period; docs/model_gap.md)")
+                  "how the simulated drops are sampled to compare with the measured ones, as the measured ones were: "
+                  "period_mean (the mean over each sample period, as an averaging load cell records; default) or "
+                  "instantaneous (the value at each sample time; docs/model_gap.md)")
       ->check(CLI::IsMember(dataset::SensorSamplingNames()));
   cmd->callback([args] {
     gap::DiagnoseOptions o;

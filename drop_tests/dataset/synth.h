@@ -3,8 +3,8 @@
 // rehearsing a campaign and for testing `diagnose` on data whose missing effect is known.
 //
 // Each drop is simulated (axisymmetric rig drop, optionally with one hidden effect), then
-// recorded as a rig would: sampled at `sample_rate_hz` from the recorded t = 0 (each sample the value
-// at its time, or with `sensor_sampling: period_mean` the mean over its sample period), with Gaussian
+// recorded as a rig would: sampled at `sample_rate_hz` from the recorded t = 0 (each sample the mean
+// over its sample period, or with `sensor_sampling: instantaneous` the value at its time), with Gaussian
 // load-cell and displacement noise, a linear drift per drop (rate drawn from N(0, sigma)), and
 // quantisation to the sensors' resolution. Seeded: the same spec gives the same bytes.
 //
@@ -15,7 +15,7 @@
 //   seed: 7
 //   sample_rate_hz: 1000          # optional
 //   rest_duration_s: 0.04         # optional: recorded after the stop
-//   sensor_sampling: instantaneous  # optional: or period_mean (pad::SensorSampling)
+//   sensor_sampling: period_mean  # optional: or instantaneous (pad::SensorSampling)
 //   trials: 1                     # optional: repeats of every condition (new noise each)
 //   drops:                        # cartesian products, one entry per group
 //     - {pads: [flat, curved], soils: [fjs1_lp], atmospheres: [air, vacuum],
@@ -77,8 +77,8 @@ struct SynthSpec {
   SynthNoise noise;
   std::optional<model::Effect> hidden_effect;      // a library effect
   std::optional<FloorStiffening> floor;     // or the out-of-library one
-  // How the recorded samples are taken (sensor_sampling: instantaneous, the default, or period_mean).
-  pad::SensorSampling sensor_sampling = pad::SensorSampling::kInstantaneous;
+  // How the recorded samples are taken (sensor_sampling: period_mean, the default, or instantaneous).
+  pad::SensorSampling sensor_sampling = pad::SensorSampling::kPeriodMean;
 };
 
 // Caps checked at load (the dataset is built in memory before it is written): at most 1 MHz, a

@@ -56,9 +56,10 @@ struct DiagnoseOptions {
   DiagnoseBase base = DiagnoseBase::kRft;
   bool law_candidate = false;        // --law-candidate: also fit and score the Bekker law (law_candidate.h)
   // --sensor-sampling: how the simulated drops are recorded to compare with the measured samples
-  // (pad::SensorSampling): instantaneous by default, or the mean over each sample period, which makes
-  // the fits' cost continuous where a stop crosses a sample (docs/model_gap.md, "Sensor sampling").
-  pad::SensorSampling sensor_sampling = pad::SensorSampling::kInstantaneous;
+  // (pad::SensorSampling), as the measured ones were: by default the mean over each sample period (an
+  // averaging load cell), which also makes the fits' cost continuous where a stop crosses a sample
+  // (docs/model_gap.md, "Sensor sampling"); or the value at each sample time.
+  pad::SensorSampling sensor_sampling = pad::SensorSampling::kPeriodMean;
 };
 
 struct DropGap {

@@ -50,7 +50,7 @@ struct FitProblem {
   std::vector<FitDrop> drops;
   pad::RigDropOptions rig;
   // How the simulated drops are recorded for the comparison with the measured samples.
-  pad::SensorSampling sensor_sampling = pad::SensorSampling::kInstantaneous;
+  pad::SensorSampling sensor_sampling = pad::SensorSampling::kPeriodMean;
   int threads = 2;
   bool has_air = false, has_vacuum = false;
   // The Bekker base (diagnose --base bekker, law_candidate.h UseBekkerBase): every soil is a Bekker

@@ -95,7 +95,7 @@ def campaign(scenario, out):
     return json.loads(_touchdown.campaign(scenario=_path_text(scenario), out=_path_text(out)))
 
 
-def compare(measured, out, *, simulated=None, model=None, sensor_sampling="instantaneous"):
+def compare(measured, out, *, simulated=None, model=None, sensor_sampling="period_mean"):
     """`touchdown compare MEASURED --out OUT [--simulated DIR | --model MODEL] [--sensor-sampling S]`: the
     measured dataset against drops simulated here (with `model`, or the catalogue's soils; recorded as
     `sensor_sampling` says the measured ones were: "instantaneous" or "period_mean") or the `simulated`
@@ -139,7 +139,7 @@ def validate(*, sources=None, out=None):
 
 
 def diagnose(measured, out, *, model=None, threads=0, pairs=True, law_candidate=False, base="rft",
-             sensor_sampling="instantaneous"):
+             sensor_sampling="period_mean"):
     """`touchdown diagnose MEASURED --out OUT [--model M] [--threads N] [--no-pairs] [--law-candidate]
     [--base rft|bekker] [--sensor-sampling instantaneous|period_mean]`: the model-gap workflow into
     the new directory OUT (docs/model_gap.md); returns diagnosis.json as a dict (the command prints a
