@@ -218,7 +218,7 @@ void LoadAxisymmetricPad(const YamlFields& f, PadSpec& pad) {
   pad.profile = ReadProfile(f.Child("profile"), pad.file);
   geom::ValidateProfile(pad.profile, f.file());
   if (f.Has("angular_segments")) pad.file.angular_segments = f.PositiveInt("angular_segments");
-  const int segments = pad.file.angular_segments > 0 ? pad.file.angular_segments : geom::kDefaultAngularSegments;
+  const int segments = PadRimSegments(pad);
   if (segments < 6) f.Fail("angular_segments", "must be at least 6, got " + std::to_string(segments));
   if (segments > kMaxAngularSegments)
     f.Fail("angular_segments", "must be at most " + std::to_string(kMaxAngularSegments) + ", got " +
@@ -353,6 +353,11 @@ std::vector<std::string> CatalogNames(const std::string& kind) {
 
 PadSpec LoadPad(const std::string& name_or_path) {
   return LoadPad(YamlFields::LoadFile(ResolveCatalogFile("pads", name_or_path)));
+}
+
+int PadRimSegments(const PadSpec& pad) {
+  if (!pad.is_axisymmetric()) return 0;
+  return pad.file.angular_segments > 0 ? pad.file.angular_segments : geom::kDefaultAngularSegments;
 }
 
 PadSpec PadWithAngularSegments(const PadSpec& pad, int angular_segments) {

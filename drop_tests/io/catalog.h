@@ -88,6 +88,9 @@ Eigen::Matrix3d ReadInertia(const YamlFields& block);
 // `angular_segments` replaced (everything else as the file says). InputError naming the pad file
 // for a mesh pad or a count outside the range LoadPad accepts.
 PadSpec PadWithAngularSegments(const PadSpec& pad, int angular_segments);
+// The rim segments a revolved pad is meshed at (its file's angular_segments, or the default); 0 for
+// a mesh pad.
+int PadRimSegments(const PadSpec& pad);
 // A pad file that LoadPad reads back to the same pad (from pad.file; a mesh by its resolved path,
 // relative to `path`'s directory).
 void WritePad(const PadSpec& pad, const std::string& path);

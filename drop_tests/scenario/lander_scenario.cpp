@@ -193,6 +193,16 @@ LanderSpec LanderSpecWithPad(const LanderSpec& spec, const io::PadSpec& pad) {
   return s;
 }
 
+LanderScenario AtPadFileMesh(const LanderScenario& scenario) {
+  if (scenario.pad_angular_segments == 0) return scenario;
+  LanderScenario out = scenario;
+  out.lander = LanderSpecWithPad(scenario.lander,
+                                 io::PadWithAngularSegments(scenario.lander.pad, scenario.pad_file_angular_segments));
+  out.pad_angular_segments = 0;
+  out.pad_file_angular_segments = 0;
+  return out;
+}
+
 namespace {
 // The number fields of the scenario's sections that the resolved copy writes back as given
 // (in the order it writes them); fields that depend on each other stay with their readers.
@@ -531,6 +541,7 @@ LanderScenario LoadLanderScenario(const std::string& path) {
     ReadSimulation(sim, s.options);
     if (sim.Has("pad_angular_segments")) {
       s.pad_angular_segments = sim.PositiveInt("pad_angular_segments");
+      s.pad_file_angular_segments = io::PadRimSegments(s.lander.pad);
       try {
         s.lander = LanderSpecWithPad(s.lander, io::PadWithAngularSegments(s.lander.pad, s.pad_angular_segments));
       } catch (const InputError& e) {

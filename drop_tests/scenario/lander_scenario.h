@@ -98,6 +98,7 @@ struct LanderScenario {
   // simulation.pad_angular_segments: the lander's (revolved) pads re-meshed at this many rim
   // segments, a numerical resolution like rtol (0: as the pad file says).
   int pad_angular_segments = 0;
+  int pad_file_angular_segments = 0;  // the pad file's own, when pad_angular_segments re-meshed it
   std::optional<LanderPaperCheck> paper;
   std::string paper_ground_case;  // e.g. "CP LP LP LP" (Table II), informational
   // `touchdown lander --model`: zeta per soil and the effect terms (3D forms), for every soil
@@ -127,6 +128,9 @@ LanderSpec LoadLanderSpec(const io::YamlFields& f);
 // four pads heavier than the lander, or the body's CoM or the hips below the joints.
 LanderSpec LanderSpecWithPad(const LanderSpec& spec, const io::PadSpec& pad);
 LanderScenario LoadLanderScenario(const std::string& path);
+// The scenario with its pads meshed as their file says (undoing simulation.pad_angular_segments): a
+// study's reference model when its own landings run on coarser pads (stability re-checks).
+LanderScenario AtPadFileMesh(const LanderScenario& scenario);
 // The first pad's touchdown speed [m/s]: as given, or from the drop height, release speed and gravity.
 double TouchdownSpeed(const LanderScenario& scenario);
 // Builds the model, terrain and initial state (soils loaded from data/soils by name).

@@ -112,6 +112,15 @@ JointRangeReport JointRangeTrigger(const Study& study, const std::vector<DropRec
 }
 }  // namespace
 
+namespace {
+// ", pads at the file's N segments" when the reference model re-meshes the study's pads.
+std::string ReferenceMeshNote(const Study& study) {
+  if (!study.plan.lander || study.plan.lander->pad_angular_segments == 0) return "";
+  return ", pads at their file's " + std::to_string(study.plan.lander->pad_file_angular_segments) +
+         " rim segments instead of " + std::to_string(study.plan.lander->pad_angular_segments);
+}
+}  // namespace
+
 double StandingTipAngleDeg(const sweep::SweepPlan& plan) {
   if (!plan.lander) return std::nan("");
   scenario::LanderScenario sc = *plan.lander;
@@ -139,12 +148,16 @@ bool ReachedStops(const DropRecord& r, double half_angle_deg) { return r.max_joi
 
 sweep::SweepPlan RecheckPlan(const Study& study) {
   sweep::SweepPlan plan = study.plan;
+  // The reference model's pads are meshed as their file says: a study that lands coarser pads
+  // (simulation.pad_angular_segments, a resolution like rtol) is re-checked at the file's.
+  plan.lander = scenario::AtPadFileMesh(*plan.lander);
   plan.lander->options.integrator.rtol = study.recheck.rtol;
   // A scenario that sets a scalar atol keeps it in proportion to rtol (the tighter reference);
   // without one the absolute tolerances are rtol times each state's scale already.
   if (!plan.lander->options.scale_tolerances)
     plan.lander->options.integrator.atol *= study.recheck.rtol / study.plan.lander->options.integrator.rtol;
-  plan.variant = "recheck: reference model, rtol " + io::FormatNumber(study.recheck.rtol);
+  plan.variant = "recheck: reference model, rtol " + io::FormatNumber(study.recheck.rtol) +
+                 (study.plan.lander->pad_angular_segments > 0 ? ", pads as their file" : "");
   return plan;
 }
 
@@ -184,6 +197,10 @@ RecheckReport ApplyRechecks(const Study& study, double tip_angle_deg, std::vecto
   RecheckReport rep;
   rep.enabled = study.recheck.enabled;
   rep.rtol = study.recheck.rtol;
+  if (study.plan.lander) {
+    rep.fast_pad_angular_segments = io::PadRimSegments(study.plan.lander->lander.pad);
+    rep.reference_pad_angular_segments = io::PadRimSegments(scenario::AtPadFileMesh(*study.plan.lander).lander.pad);
+  }
   rep.tip_angle_deg = tip_angle_deg;
   rep.margin_deg = study.recheck.tilt_margin_deg;
   std::map<int64_t, size_t> position;
@@ -222,7 +239,8 @@ StudyFollowUps RunStudyFollowUps(const Study& study, std::vector<DropRecord> rec
       if (say)
         *say << "stability " << study.plan.name << ": re-checking " << todo.size()
              << " landing(s) near the tip-over boundary with the reference model (rtol "
-             << io::FormatNumber(study.recheck.rtol) << ") in " << RecheckDir(out_dir) << "/\n";
+             << io::FormatNumber(study.recheck.rtol) << ReferenceMeshNote(study) << ") in " << RecheckDir(out_dir)
+             << "/\n";
       if (!RunFollowUp(RecheckPlan(study), todo, RecheckDir(out_dir), options, f)) return f;
       for (auto& [index, r] : ReadStored(RecheckDir(out_dir), todo)) reference.push_back(std::move(r));
     }
@@ -262,12 +280,14 @@ nlohmann::json RecheckJson(const RecheckReport& r) {
     return {{"enabled", false}, {"reason", "turned off (study.recheck: none): every landing is the fast model's"}};
   return {{"enabled", true},
           {"rtol", r.rtol},
+          {"pad_angular_segments", {{"fast", r.fast_pad_angular_segments}, {"reference", r.reference_pad_angular_segments}}},
           {"tip_angle_deg", io::FiniteOrNull(r.tip_angle_deg)},
           {"margin_deg", r.margin_deg},
           {"criterion",
            "landings that tipped over, ended unsettled, or whose max tilt reached tip_angle_deg - margin_deg ran "
-           "again with the reference model (the study's lander at rtol); every statistic here is over their "
-           "reference records"},
+           "again with the reference model (the study's lander at rtol, its pads meshed as their file says: "
+           "pad_angular_segments.reference rim segments, against the study's pad_angular_segments.fast; 0 for a "
+           "meshed pad); every statistic here is over their reference records"},
           {"rechecked", r.rechecked},
           {"outcome_changed", r.outcome_changed},
           {"changed_landings", r.changed_landings},

@@ -3,7 +3,8 @@
 //
 //   Re-checks. The landings whose outcome could flip (tipped over, unsettled, or a max tilt within
 //   `tilt_margin_deg` of the standing lander's tip-over angle) run again with the reference model,
-//   the study's lander at a tighter integrator tolerance (study.recheck.rtol), so the published
+//   the study's lander at a tighter integrator tolerance (study.recheck.rtol) with its pads meshed
+//   as their file says (a scenario's pad_angular_segments is a fast model's), so the published
 //   P(tip), percentiles and worst cases are the reference model's.
 //
 //   Joint-range sensitivity. When the pads reach their ball joints' stops (a swing beyond the cone
@@ -66,6 +67,9 @@ std::string JointRangeDir(const std::string& out_dir, double factor);
 struct RecheckReport {
   bool enabled = true;
   double rtol = 0.0, tip_angle_deg = 0.0, margin_deg = 0.0;
+  // Rim segments of the study's (fast) pads and of the reference model's (the pad file's); 0: a
+  // meshed pad.
+  int fast_pad_angular_segments = 0, reference_pad_angular_segments = 0;
   int64_t rechecked = 0;        // landings run again with the reference model
   int64_t outcome_changed = 0;  // of them, tipped over under one model and not the other
   std::vector<std::string> changed_landings;  // their drop ids, in index order

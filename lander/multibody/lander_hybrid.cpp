@@ -101,7 +101,11 @@ void LanderHybrid::Roots(Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::
     const PadFrame& f = pose.pads[i];
     g[PadRoot(i, 0)] = PadDepth(model_, terrain_, i, f);
     if (modes_.pad[i] == PadMode::kFree) {
-      g[PadRoot(i, 1)] = -f.v_WJ_W.z();  // sink rate
+      // Sink rate. A pad whose capture was refused and that rides on with its vertical speed at
+      // zero (sliding through the soil's trailing band) would cross it again within a step, and
+      // each offer restarts the integrator at its smallest steps: thousands of refused captures in
+      // a few milliseconds were seen on sliding landings at loose tolerances.
+      g[PadRoot(i, 1)] = capture_refused_[i] ? 1.0 : -f.v_WJ_W.z();
       // Slow capture: a submerged pad whose joint centre has slowed below the capture speed.
       g[PadRoot(i, 2)] = g[PadRoot(i, 0)] > 0.0 ? f.v_WJ_W.norm() - options_.capture_speed_m_s : 1.0;
       // ... and again at the soil's ramp speed, where a pad whose earlier capture was undone
@@ -309,6 +313,7 @@ void LanderHybrid::SettleHolds(double t, Eigen::VectorXd& s, const std::array<bo
     const double m_check = std::min({worst_check.lift, worst_check.sink, worst_check.slide});
     if (fresh[worst]) {
       // The capture cannot hold: undo it (the pad goes on moving under RFT).
+      capture_refused_[worst] = true;
       s.segment(L_.nq, L_.nu) = before.segment(L_.nq, L_.nu);
       s[L_.work()] = before[L_.work()] + ProjectOntoConstraints(model_, L_, modes_, s);
     } else {
@@ -350,6 +355,9 @@ integ::EventAction LanderHybrid::OnEvent(double t, const std::vector<int>& found
     TipOver(t, y);
     return integ::EventAction::kStop;
   }
+  for (int i = 0; i < kNumLegs; ++i)
+    if (pose.pads[i].v_WJ_W.head<2>().norm() > options_.capture_speed_m_s || found[PadRoot(i, 0)] != 0)
+      capture_refused_[i] = false;
   const Eigen::VectorXd before = y;
   std::array<bool, kNumLegs> fresh{};
   // A touchdown restarts the integrator. With a soil's dynamic term it is a discontinuity of the

@@ -71,6 +71,10 @@ class LanderHybrid {
   bool last_rhs_valid_ = false;
   LanderJacobianData jacobian_data_;
   std::array<Eigen::Vector3d, kNumLegs> held_at_;
+  // Pads whose capture was offered and undone (the soil could not hold them) and that have not
+  // been faster than the capture speed since: their stopping to sink no longer offers a capture
+  // (only slowing down to the soil's ramp speed does, or speeding up and slowing down again).
+  std::array<bool, kNumLegs> capture_refused_{};
   long rhs_contacts_ = 0, root_contacts_ = 0;  // pad contacts evaluated (LanderRunResult)
   // Vertical capacity of each held pad since the last event (NaN: not yet evaluated).
   std::array<double, kNumLegs> sink_capacity_{kUnknown, kUnknown, kUnknown, kUnknown};

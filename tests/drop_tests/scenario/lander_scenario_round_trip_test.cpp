@@ -138,6 +138,13 @@ TEST_F(LanderScenarioRoundTrip, PadAngularSegmentsReMeshTheLandersPads) {
   fs::create_directories(dir_ / "out");
   RoundTripLanderScenario(Path("coarse.yaml"), Path("out/coarse_1.yaml"), Path("out/coarse_2.yaml"));
   EXPECT_NE(Slurp(Path("out/coarse_1.yaml")).find("pad_angular_segments: 32"), std::string::npos);
+  // A study's reference model undoes the re-meshing: the pads as their file says.
+  EXPECT_EQ(coarse.pad_file_angular_segments, io::PadRimSegments(fine.lander.pad));
+  const LanderScenario as_file = AtPadFileMesh(coarse);
+  EXPECT_EQ(as_file.pad_angular_segments, 0);
+  EXPECT_EQ(as_file.lander.pad.body.surface.size(), fine.lander.pad.body.surface.size());
+  EXPECT_EQ(as_file.lander.body_mass_kg, fine.lander.body_mass_kg);
+  EXPECT_EQ(AtPadFileMesh(fine).lander.pad.body.surface.size(), fine.lander.pad.body.surface.size());
 
   std::ofstream(Path("bad.yaml")) << head << "simulation: {pad_angular_segments: 3}\n";
   try {

@@ -5,8 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <nlohmann/json.hpp>
 #include <set>
 
+#include "drop_tests/io/catalog.h"
 #include "drop_tests/stability/study.h"
 #include "drop_tests/stability/study_followups.h"
 #include "drop_tests/sweep/sweep.h"
@@ -91,6 +93,27 @@ TEST_F(StudyFollowUpsTest, DerivedPlansChangeTheirModelAndTheirDigest) {
   EXPECT_EQ(digests.size(), 4u);
   EXPECT_EQ(recheck.size(), study.plan.size());  // the same landings, by index
   EXPECT_EQ(recheck.DropAt(7).slope_rad, study.plan.DropAt(7).slope_rad);
+}
+
+// The shipped lunar study lands coarser pads than their file's (its fast model); the reference model
+// of its re-checks meshes them as the file says, and the report names both.
+TEST_F(StudyFollowUpsTest, TheReferenceModelMeshesThePadsAsTheirFileSays) {
+  const Study study = LoadStudy(std::string(TOUCHDOWN_SOURCE_DIR) + "/data/studies/lunar_paper_lander.yaml");
+  ASSERT_GT(study.plan.lander->pad_angular_segments, 0);
+  const sweep::SweepPlan recheck = RecheckPlan(study);
+  EXPECT_EQ(recheck.lander->pad_angular_segments, 0);
+  EXPECT_EQ(io::PadRimSegments(recheck.lander->lander.pad), study.plan.lander->pad_file_angular_segments);
+  EXPECT_EQ(recheck.lander->lander.pad.body.surface.size(),
+            io::LoadPad(study.plan.lander->lander.pad.source).body.surface.size());
+  EXPECT_GT(recheck.lander->lander.pad.body.surface.size(), study.plan.lander->lander.pad.body.surface.size());
+  EXPECT_EQ(recheck.lander->lander.body_mass_kg, study.plan.lander->lander.body_mass_kg);
+  std::vector<DropRecord> records = {Landing(0, false, 2.0)};
+  const RecheckReport r = ApplyRechecks(study, 40.0, records, {}, nullptr);
+  EXPECT_EQ(r.fast_pad_angular_segments, study.plan.lander->pad_angular_segments);
+  EXPECT_EQ(r.reference_pad_angular_segments, study.plan.lander->pad_file_angular_segments);
+  const nlohmann::json j = RecheckJson(r);
+  EXPECT_EQ(j["pad_angular_segments"]["fast"], r.fast_pad_angular_segments);
+  EXPECT_EQ(j["pad_angular_segments"]["reference"], r.reference_pad_angular_segments);
 }
 
 TEST_F(StudyFollowUpsTest, StandingTipAngleIsTheSmallestEdgesAndKSpreadsOverTheStudy) {

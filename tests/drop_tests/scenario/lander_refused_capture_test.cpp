@@ -1,0 +1,51 @@
+// A pad whose capture the soil refuses and that slides on with its vertical speed at zero (riding in
+// the soil's trailing band) crossed the sink-rate root again within a step of each restart: on this
+// landing of the lunar study (landing d570 of data/studies/lunar_paper_lander.yaml, rebuilt from its
+// record, on the study's fast model) the old root took 29,415 solver steps, 27,000 of them in 50 ms of
+// refused captures, and three other landings of its first 1,000 failed on 20,000 events. A refused pad
+// is offered a capture again only when it slows to the soil's ramp speed, or after it has been faster
+// than the capture speed (lander_hybrid.cpp, capture_refused_).
+#include <gtest/gtest.h>
+
+#include "drop_tests/scenario/lander_scenario.h"
+#include "tests/scratch_dir_test.h"
+
+namespace touchdown::scenario {
+namespace {
+
+struct LanderRefusedCapture : testing_scratch::ScratchDirTest {};
+
+TEST_F(LanderRefusedCapture, ASlidingPadRefusedByTheSoilDoesNotChatter) {
+  // CP under pads 1-3, LP under pad 4; 3.2 deg slope; 0.78 m/s at 120 deg from downhill.
+  const std::string path = Write("d570.yaml", R"(schema_version: 1
+type: lander
+name: d570
+lander: sutoh2017_lander_full_scale
+gravity_m_s2: 1.62
+ground:
+  slope_deg: 3.21959043931777
+  downhill_azimuth_deg: 0
+  soil: fjs1_lp
+  patches:
+    - {soil: fjs1_cp, under_pad: 1, half_width_m: 0.48}
+    - {soil: fjs1_cp, under_pad: 2, half_width_m: 0.48}
+    - {soil: fjs1_cp, under_pad: 3, half_width_m: 0.48}
+initial:
+  touchdown_speed_m_s: 1.4
+  horizontal_velocity_m_s: [-0.38868591436571616, 0.6723119599012566]
+  roll_deg: 4.55408255858813
+  pitch_deg: 3.22154457057323
+  yaw_relative_to_slope_deg: 87.1448880945474
+simulation: {duration_s: 7.5, sample_rate_hz: 200, rtol: 1.0e-5, pad_angular_segments: 24}
+)");
+  const LanderRun run = RunLanderScenario(LoadLanderScenario(path));
+  const lander::LanderRunResult& r = run.result;
+  ASSERT_TRUE(r.rest_time_s.has_value());
+  EXPECT_FALSE(r.tipped_over);
+  EXPECT_NEAR(*r.rest_time_s, 0.98, 0.03);  // the reference model (64 segments, rtol 1e-8): 0.997 s
+  EXPECT_LT(r.solver.steps, 3000);          // 1,121 measured; 29,415 with the old root
+  EXPECT_LT(r.events.size(), 60u);          // 21 measured; 93 with the old root
+}
+
+}  // namespace
+}  // namespace touchdown::scenario
