@@ -110,9 +110,7 @@ JointRangeReport JointRangeTrigger(const Study& study, const std::vector<DropRec
                " % of the landings, not more than 5 %";
   return j;
 }
-}  // namespace
 
-namespace {
 // ", pads at the file's N segments" when the reference model re-meshes the study's pads.
 std::string ReferenceMeshNote(const Study& study) {
   if (!study.plan.lander || study.plan.lander->pad_angular_segments == 0) return "";
@@ -198,8 +196,10 @@ RecheckReport ApplyRechecks(const Study& study, double tip_angle_deg, std::vecto
   rep.enabled = study.recheck.enabled;
   rep.rtol = study.recheck.rtol;
   if (study.plan.lander) {
-    rep.fast_pad_angular_segments = io::PadRimSegments(study.plan.lander->lander.pad);
-    rep.reference_pad_angular_segments = io::PadRimSegments(scenario::AtPadFileMesh(*study.plan.lander).lander.pad);
+    const scenario::LanderScenario& sc = *study.plan.lander;
+    rep.fast_pad_angular_segments = io::PadRimSegments(sc.lander.pad);
+    rep.reference_pad_angular_segments =
+        sc.pad_angular_segments > 0 ? sc.pad_file_angular_segments : rep.fast_pad_angular_segments;
   }
   rep.tip_angle_deg = tip_angle_deg;
   rep.margin_deg = study.recheck.tilt_margin_deg;

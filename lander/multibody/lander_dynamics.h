@@ -80,7 +80,6 @@ struct LanderModes {
   std::array<PadMode, kNumLegs> pad{PadMode::kFree, PadMode::kFree, PadMode::kFree, PadMode::kFree};
   std::array<StrokeMode, kNumLegs> stroke{StrokeMode::kLocked, StrokeMode::kLocked, StrokeMode::kLocked,
                                           StrokeMode::kLocked};
-  bool operator==(const LanderModes&) const = default;
 };
 
 struct PadFrame {
