@@ -233,6 +233,7 @@ const io::FieldTable<lander::LanderRunOptions>& RunNumberFields() {
       {"duration_s", &R::duration_s, 1.0, io::Sign::kPositive},
       {"sample_rate_hz", &R::sample_rate_hz, 1.0, io::Sign::kPositive},
       {"capture_speed_m_s", &R::capture_speed_m_s, 1.0, io::Sign::kNonNegative, true, false, &limits::kSpeed_m_s},
+      {"soil_ramp_speed_m_s", &R::soil_ramp_speed_m_s, 1.0, io::Sign::kPositive, true, false, &limits::kSpeed_m_s},
   };
   return fields;
 }
@@ -407,9 +408,14 @@ LanderInitialSpec ReadInitial(const io::YamlFields& in, bool resolved) {
 
 // The run options: duration, sampling, capture speed and the integrator's tolerances.
 void ReadSimulation(const io::YamlFields& sim, lander::LanderRunOptions& options) {
-  sim.RequireOnly({"duration_s", "sample_rate_hz", "capture_speed_m_s", "rtol", "atol", "max_step_s", "stiff",
-                   "pad_angular_segments"});
+  sim.RequireOnly({"duration_s", "sample_rate_hz", "capture_speed_m_s", "soil_ramp_speed_m_s", "rtol", "atol",
+                   "max_step_s", "stiff", "pad_angular_segments"});
   io::ReadFields(sim, RunNumberFields(), options);
+  // A pad is offered a capture when it slows below either speed; a ramp above the capture speed
+  // would scale the soil's force down on pads the soil is still stopping.
+  if (options.soil_ramp_speed_m_s >= options.capture_speed_m_s && options.capture_speed_m_s > 0.0)
+    sim.Fail("soil_ramp_speed_m_s", "must be below capture_speed_m_s (" + io::FormatNumber(options.capture_speed_m_s) +
+                                        " m/s), got " + io::FormatNumber(options.soil_ramp_speed_m_s));
   // Resolution caps (the trace keeps duration x rate samples; a hand-written 1e9 must not
   // exhaust memory or run for days).
   if (options.duration_s > 600.0)
@@ -573,6 +579,7 @@ LanderSetup BuildLanderSetup(const LanderScenario& sc) {
   m.body_mass_kg = sc.lander.body_mass_kg;
   m.body_inertia_B = sc.lander.body_inertia_B;
   m.gravity_m_s2 = sc.gravity_m_s2;
+  m.soil_ramp_speed_m_s = sc.options.soil_ramp_speed_m_s;
   auto pad = std::make_shared<const geom::PadBody>(sc.lander.pad.body);
   for (int i = 0; i < lander::kNumLegs; ++i) {
     m.legs[i].hip_B = sc.lander.legs[i].hip_B;

@@ -118,9 +118,9 @@ rft::ContactWrench FreePadSoilWrench(const LanderModel& model, const rft::SoilCo
   if (contact.has_janosi_shear()) k.shear_mobilisation = contact.ShearMobilisation(f.shear_displacement_m);
   const double speed = f.v_WJ_W.norm() + f.w_WP_W.norm() * PadRadius(l);
   rft::ContactWrench w = rft::ComputeContactWrench(l.pad->surface, k, surface, *contact.law, contact.pad_terms);
-  if (speed < kSoilRampSpeed) {
-    w.force_W *= speed / kSoilRampSpeed;
-    w.moment_W *= speed / kSoilRampSpeed;
+  if (speed < model.soil_ramp_speed_m_s) {
+    w.force_W *= speed / model.soil_ramp_speed_m_s;
+    w.moment_W *= speed / model.soil_ramp_speed_m_s;
   }
   return w;
 }

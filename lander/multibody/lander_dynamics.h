@@ -65,14 +65,6 @@ struct StateLayout {
 
 enum class PadMode { kFree, kHeld };
 
-// Below this speed (joint centre plus spin times pad radius) a free pad's soil wrench is scaled
-// by speed / kSoilRampSpeed. Why: quasi-static RFT depends on the direction of motion only, so at
-// v -> 0 the force keeps its full size while its direction follows rounding noise (a pad whose
-// capture was undone sits at |v| ~ 1e-11 with a horizontal part that turns its support into
-// sideways drag and back: a discontinuity no integrator steps through). The
-// ramp makes the force continuous through v = 0 and changes nothing above 0.1 mm/s; a pad that
-// slows below it is offered a capture (lander_simulation.h), so no creep results.
-inline constexpr double kSoilRampSpeed = 1e-4;
 enum class StrokeMode { kFree, kLocked, kBottomed };  // crushable absorbers only
 
 // Discrete state of the hybrid system, changed only at events.
@@ -165,7 +157,7 @@ double KineticEnergy(const LanderModel& model, const StateLayout& layout, const 
 double PotentialEnergy(const LanderModel& model, const StateLayout& layout, const Eigen::Ref<const Eigen::VectorXd>& y);
 
 // RFT soil wrench on a free pad in contact with `contact` (moment about the joint centre), with
-// the low-speed ramp (kSoilRampSpeed).
+// the low-speed ramp (LanderModel::soil_ramp_speed_m_s).
 rft::ContactWrench FreePadSoilWrench(const LanderModel& model, const rft::SoilContactModel& contact, int leg,
                                      const PadFrame& pad, const rft::GroundSurface& surface);
 

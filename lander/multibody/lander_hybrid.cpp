@@ -110,7 +110,7 @@ void LanderHybrid::Roots(Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::
       g[PadRoot(i, 2)] = g[PadRoot(i, 0)] > 0.0 ? f.v_WJ_W.norm() - options_.capture_speed_m_s : 1.0;
       // ... and again at the soil's ramp speed, where a pad whose earlier capture was undone
       // has slowed down once more.
-      g[PadRoot(i, 3)] = g[PadRoot(i, 0)] > 0.0 ? f.v_WJ_W.norm() - kSoilRampSpeed : 1.0;
+      g[PadRoot(i, 3)] = g[PadRoot(i, 0)] > 0.0 ? f.v_WJ_W.norm() - model_.soil_ramp_speed_m_s : 1.0;
     } else {
       const HoldCheck h = CheckHold(model_, terrain_, i, f, root_eval_.soil[i], &sink_capacity_[i], &root_contacts_);
       g[PadRoot(i, 1)] = h.lift;

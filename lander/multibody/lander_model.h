@@ -55,11 +55,25 @@ struct Leg {
   Eigen::Vector3d axis_B() const { return (joint_B - hip_B).normalized(); }
 };
 
+// Below this speed (joint centre plus spin times pad radius) a free pad's soil wrench is scaled
+// by speed / soil_ramp_speed_m_s. Why: quasi-static RFT depends on the direction of motion only,
+// so at v -> 0 the force keeps its full size while its direction follows rounding noise (a pad
+// whose capture was undone sits at |v| ~ 1e-11 with a horizontal part that turns its support into
+// sideways drag and back: a discontinuity no integrator steps through). The ramp makes the force
+// continuous through v = 0; a pad that slows below it is offered a capture
+// (lander_simulation.h), so no creep results. Why 1 mm/s and not less: a pad released from a hold
+// that creeps just above the ramp turns with the RFT torque's direction following its spin, which
+// the integrator resolves at microsecond steps (a full-scale lunar landing spent 1.1 million
+// steps over 1.5 s at 0.1 mm/s, 1,700 in all at 1 mm/s); the benchmark landings move by at most
+// 1e-5 relative (docs/lander_dynamics.md, "The soil's low-speed ramp").
+inline constexpr double kDefaultSoilRampSpeed_m_s = 1e-3;
+
 struct LanderModel {
   double body_mass_kg = 0.0;
   Eigen::Matrix3d body_inertia_B = Eigen::Matrix3d::Zero();  // about the body CoM [kg m^2]
   std::array<Leg, kNumLegs> legs;
   double gravity_m_s2 = 9.81;
+  double soil_ramp_speed_m_s = kDefaultSoilRampSpeed_m_s;  // see kDefaultSoilRampSpeed_m_s
 
   double TotalMass() const {
     double m = body_mass_kg;

@@ -29,6 +29,9 @@ struct LanderRunOptions {
   double duration_s = 1.0;              // simulated time from release
   double sample_rate_hz = 1000.0;       // trace rate (plus every event)
   double capture_speed_m_s = 0.02;      // max horizontal joint speed for the soil to hold a pad
+  // The soil's low-speed ramp (LanderModel::soil_ramp_speed_m_s); a scenario's setup copies it
+  // into the model. Below capture_speed_m_s.
+  double soil_ramp_speed_m_s = kDefaultSoilRampSpeed_m_s;
   bool stop_at_rest = true;             // rest is static: the remaining time is not integrated
   int max_events = 20000;               // guard against Zeno behaviour
   // BDF with the lander's structured Jacobian (lander_jacobian.h), rtol 1e-7: a pad rocking on its
