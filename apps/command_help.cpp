@@ -126,9 +126,10 @@ std::optional<io::InputDocument> InputDocumentOf(const std::string& command) {
   return std::nullopt;
 }
 
-// One "Known names" entry, its names wrapped under it.
+// One "Known names" entry: what and where, then the names wrapped under it (so where they break
+// does not depend on how long the data directory's path is).
 std::string NamesLine(const std::string& label, const std::string& folder, const std::vector<std::string>& names) {
-  return "\n  " + Wrapped(label + " (" + folder + "): " + Joined(names), kHelpWidth - 2, "    ");
+  return "\n  " + label + " (" + folder + "):\n    " + Wrapped(Joined(names), kHelpWidth - 4, "    ");
 }
 
 // The catalogue names a command takes, read when help is shown (the data directory may be

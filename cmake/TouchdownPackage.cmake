@@ -23,14 +23,10 @@ set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)  # touchdown_0.1.0_amd64.deb
 set(CPACK_DEBIAN_PACKAGE_SECTION science)
 set(CPACK_DEBIAN_COMPRESSION_TYPE xz)
 # The shared libraries the executable and the Python module load (yaml-cpp, SUNDIALS, SQLite,
-# Ceres, GMP, MPFR, MPI when built with it) become Depends through dpkg-shlibdeps (dpkg-dev).
-find_program(TOUCHDOWN_DPKG_SHLIBDEPS dpkg-shlibdeps)
-if(TOUCHDOWN_DPKG_SHLIBDEPS)
-  set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
-else()
-  message(STATUS "dpkg-shlibdeps not found (apt-get install dpkg-dev): a `cpack -G DEB` package would list "
-    "only python3 and gnuplot-nox as its Depends")
-endif()
+# Ceres, GMP, MPFR, MPI when built with it) become Depends through dpkg-shlibdeps, looked for when
+# cpack runs (Debian's dpkg-dev: `tools/install_deps.sh package`); without it cpack says so and
+# the package lists only the Depends below.
+set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 # What no library link says: the Python module's interpreter and the numpy its trace arrays are;
 # gnuplot, which draws every command's plots (drop_tests/io/plot_runner.cpp). pandas only for the
 # readers (read_sweep, read_dataset, read_stability), imported when used.

@@ -8,6 +8,7 @@
 #              the Python tests read with (numpy, pandas, yaml, matplotlib, VTK's reader)
 #   mpi        `touchdown sweep` over MPI ranks (mpirun -np N): OpenMPI
 #   hardening  the sanitizer and fuzzer build (tools/run_sanitized_tests.sh, run_fuzzers.sh): clang
+#   package    the Debian package's Depends (`cpack -G DEB`): dpkg-shlibdeps
 #   docs       the figures of docs/ made outside the commands: ParaView's pvbatch under xvfb
 #              (tools/paraview_snapshot.py), matplotlib (docs/python.md's example)
 # A purpose builds on main's packages (tests on main's too), so each installs main's as well.
@@ -23,10 +24,11 @@ tests=(
   libgtest-dev libbenchmark-dev sqlite3
   python3-pytest python3-numpy python3-pandas python3-yaml python3-matplotlib python3-pybind11
   python3-vtk9  # tests/python/test_vtk.py reads the ParaView output with VTK's own reader (18 s, 223 MB)
-  dpkg-dev      # dpkg-shlibdeps: the Debian package's Depends (tests/install/debian_package.cmake)
+  dpkg-dev      # tests/install/debian_package.cmake packages with dpkg-shlibdeps
 )
 mpi=(libopenmpi-dev openmpi-bin)
 hardening=(clang libclang-rt-14-dev)
+package=(dpkg-dev)
 docs=(paraview xvfb python3-matplotlib)
 
 purposes=("$@")
@@ -38,8 +40,9 @@ for purpose in "${purposes[@]}"; do
     tests) packages+=("${tests[@]}") ;;
     mpi) packages+=("${mpi[@]}") ;;
     hardening) packages+=("${hardening[@]}") ;;
+    package) packages+=("${package[@]}") ;;
     docs) packages+=("${docs[@]}") ;;
-    *) echo "error: unknown purpose '$purpose' (main, tests, mpi, hardening, docs)" >&2; exit 2 ;;
+    *) echo "error: unknown purpose '$purpose' (main, tests, mpi, hardening, package, docs)" >&2; exit 2 ;;
   esac
 done
 missing=()

@@ -636,7 +636,7 @@ std::vector<Case> Cases() {
   c.push_back({"CLI flag", "misspelt option, a required one missing", "drop --sped 1"});
   c.push_back({"CLI flag", "misspelt option as --name=value", "drop --pad flat --soil fjs1_lp --speed=1 --gravty=1.6"});
   c.push_back({"CLI flag", "unknown option before the command", "--verbose drop --pad flat --soil fjs1_lp --speed 1"});
-  c.push_back({"CLI flag", "lander scenario by a mistyped name", "lander lander_case_b --out out_n1"});
+  c.push_back({"CLI flag", "lander scenario by a mistyped name", "lander lander_cas_B --out out_n1"});
   c.push_back({"CLI flag", "stability by a lander scenario's name (not a study)",
                "stability lunar_paper_lander_scenario --out out_n2"});
   c.push_back({"CLI flag", "unknown command", "fly --to moon"});
