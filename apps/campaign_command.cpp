@@ -2,6 +2,7 @@
 #include <iostream>
 #include <memory>
 
+#include "apps/command_help.h"
 #include "apps/commands.h"
 #include "drop_tests/io/output_path.h"
 #include "drop_tests/scenario/campaign.h"
@@ -12,10 +13,11 @@ void AddCampaignCommand(CLI::App& app) {
   auto scenario_path = std::make_shared<std::string>();
   auto out_dir = std::make_shared<std::string>();
   CLI::App* cmd = app.add_subcommand("campaign", "Run a list of drops from a scenario YAML; write tables, traces, plots");
-  cmd->add_option("scenario", *scenario_path, "campaign scenario YAML (e.g. data/scenarios/sutoh2017_single_footpad.yaml)")
+  cmd->add_option("scenario", *scenario_path, "campaign scenario: a YAML file, or a bundled one by name (sutoh2017_single_footpad)")
       ->required();
   cmd->add_option("--out", *out_dir, "output directory: new, empty, or an earlier campaign output (replaced whole when the run completes)")->required();
   cmd->callback([scenario_path, out_dir] {
+    *scenario_path = ResolveCommandInput("campaign", *scenario_path);
     const io::OutputTarget out(*out_dir, {*scenario_path});
     io::CheckOutputDirectory(out, io::OutputKind::kCampaign);
     const scenario::CampaignScenario scenario = scenario::LoadCampaignScenario(*scenario_path);

@@ -2,6 +2,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
+#include "apps/command_help.h"
 #include "apps/commands.h"
 #include "drop_tests/io/output_path.h"
 #include "drop_tests/scenario/lander_scenario.h"
@@ -18,7 +19,7 @@ struct LanderArgs {
 void AddLanderCommand(CLI::App& app) {
   auto args = std::make_shared<LanderArgs>();
   CLI::App* cmd = app.add_subcommand("lander", "A four-legged lander drop with ball-jointed footpads");
-  cmd->add_option("scenario", args->scenario, "lander scenario YAML (e.g. data/scenarios/lander_case_A.yaml)")
+  cmd->add_option("scenario", args->scenario, "lander scenario: a YAML file, or a bundled one by name (lander_case_A)")
       ->required();
   cmd->add_option("--out", args->out, "output directory (summary.json, trace.csv, events.csv, plots/, "
                                       "scenario_resolved.yaml, vtk/lander.pvd for ParaView: docs/paraview.md), "
@@ -31,6 +32,7 @@ void AddLanderCommand(CLI::App& app) {
   cmd->add_flag("--no-vtk", args->no_vtk,
                 "leave out vtk/ (the ParaView series: for case A 36 MB and 1-1.5 s more; docs/paraview.md)");
   cmd->callback([args] {
+    args->scenario = ResolveCommandInput("lander", args->scenario);
     const io::OutputTarget out(args->out, {args->scenario, args->model});
     io::CheckOutputDirectory(out, io::OutputKind::kLander);
     scenario::LanderScenario scenario = scenario::LoadLanderScenario(args->scenario);

@@ -6,6 +6,7 @@
 #include <memory>
 #include <optional>
 
+#include "apps/command_help.h"
 #include "apps/commands.h"
 #include "apps/sweep_run_flags.h"
 #include "drop_tests/io/output_path.h"
@@ -112,7 +113,7 @@ void AddStabilityCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "stability", "Landing-stability study: run (or resume) its lander sweep, then tip-over probability, "
                    "percentiles, worst cases, tables and plots");
-  cmd->add_option("study", args->study, "study YAML (type: stability, e.g. data/studies/lunar_paper_lander.yaml)")
+  cmd->add_option("study", args->study, "study (type: stability): a YAML file, or a bundled one by name (lunar_paper_lander)")
       ->required();
   cmd->add_option("--out", args->out, "output directory (results.sqlite, summary.json, *.csv, plots/); a rerun resumes")
       ->required();
@@ -121,6 +122,7 @@ void AddStabilityCommand(CLI::App& app) {
       "random samples instead of the study's, 1 to 1e9 (a quick look; recorded in summary.json)");
   AddSweepRunFlags(cmd, &args->run, "landings");
   cmd->callback([args, samples] {
+    args->study = ResolveCommandInput("stability", args->study);
     const std::optional<int64_t> override_samples =
         samples->count() > 0 ? std::optional<int64_t>(ParseSamples(args->samples)) : std::nullopt;
     stability::Study study = stability::LoadStudy(args->study, args->run.model, override_samples);

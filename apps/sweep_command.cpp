@@ -3,6 +3,7 @@
 #include <iostream>
 #include <memory>
 
+#include "apps/command_help.h"
 #include "apps/commands.h"
 #include "apps/sweep_run_flags.h"
 #include "drop_tests/io/output_path.h"
@@ -20,11 +21,12 @@ void AddSweepCommand(CLI::App& app) {
   auto args = std::make_shared<SweepArgs>();
   CLI::App* cmd = app.add_subcommand(
       "sweep", "Run a sweep of drops (grids, random samples) into DIR/results.sqlite; restartable; threads, MPI, shards");
-  cmd->add_option("sweep", args->sweep, "sweep YAML (e.g. data/sweeps/pad_trade.yaml)")->required();
+  cmd->add_option("sweep", args->sweep, "sweep or study: a YAML file, or a bundled one by name (pad_trade)")->required();
   cmd->add_option("--out", args->out, "output directory; a restart with the same command finishes the missing drops")
       ->required();
   AddSweepRunFlags(cmd, &args->run, "drops");
   cmd->callback([args] {
+    args->sweep = ResolveCommandInput("sweep", args->sweep);
     sweep::SweepRunOptions options = RunOptionsFrom(args->run);
     sweep::SweepPlan plan = sweep::LoadSweepPlan(args->sweep, args->run.model);
     ApplyDropLimits(args->run, &plan);

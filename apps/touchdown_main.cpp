@@ -14,10 +14,11 @@
 #include "rft/input_error.h"
 
 int main(int argc, char** argv) {
-  CLI::App app{"touchdown - lander footpad / regolith touchdown simulator (granular RFT)"};
+  // Named, so that usage lines read `touchdown drop ...` wherever the executable lives.
+  CLI::App app{"touchdown - lander footpad / regolith touchdown simulator (granular RFT)", "touchdown"};
   app.require_subcommand(1);
   app.option_defaults()->always_capture_default();  // every option's default shows in --help
-  app.set_version_flag("--version", "touchdown 0.1.0");
+  app.set_version_flag("--version", "touchdown " TOUCHDOWN_VERSION);
   touchdown::app::AddDropCommand(app);
   touchdown::app::AddCampaignCommand(app);
   touchdown::app::AddForceCommand(app);
@@ -33,6 +34,12 @@ int main(int argc, char** argv) {
   touchdown::app::AddStabilityCommand(app);
   touchdown::app::AddValidateCommand(app);
   touchdown::app::AddHelpFooters(app);
+  // `touchdown` alone asks what there is: the command list, as --help shows it, and success.
+  // Nothing was given that could be wrong (an empty "$VAR" is an argument, and an unknown command).
+  if (argc == 1) {
+    std::cout << app.help();
+    return 0;
+  }
   try {
     touchdown::app::RejectNonUtf8Arguments(argc, argv);
     touchdown::app::RejectUnknownCommand(app, argc, argv);
@@ -44,7 +51,9 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::cerr << "touchdown: " << e.what() << "\n";
+    // An option nobody defines is the mistake to name first: CLI11 reports a missing required
+    // option before it, so `drop --sped 1` would say only "--speed is required".
+    std::cerr << "touchdown: " << touchdown::app::UnknownOptionMessage(app).value_or(e.what()) << "\n";
     return 2;
   } catch (const touchdown::InputError& e) {
     std::cerr << "touchdown: " << e.what() << "\n";

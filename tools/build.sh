@@ -8,13 +8,22 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(touchdown_quickstart)
-bash "$root/tools/install_deps.sh"
+# The quick start needs only the main job's packages; anything more (`all`: the tests, benchmarks
+# and MPI sweeps) the test suite's too, and builds the tests and benchmarks, which a build
+# configured on main's packages alone leaves out (top-level CMakeLists.txt).
+options=()
+if [ ${#targets[@]} -eq 0 ]; then
+  targets=(touchdown_quickstart)
+  bash "$root/tools/install_deps.sh" main
+else
+  bash "$root/tools/install_deps.sh" main tests mpi
+  options=(-DTOUCHDOWN_BUILD_TESTS=ON -DTOUCHDOWN_BUILD_BENCH=ON)
+fi
 # Native instruction set (-march=native): the in-tree runs are on the machine that built them; an
 # install for other machines is configured without it (docs/install.md).
 source "$root/tools/compiler_cache.sh"
 cmake -S "$root" -B "$root/build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DTOUCHDOWN_NATIVE=ON \
-  "${compiler_cache_args[@]}" >/dev/null
+  "${compiler_cache_args[@]}" "${options[@]}" >/dev/null
 start=$SECONDS
 cmake --build "$root/build" --parallel "$(nproc)" --target "${targets[@]}"
 echo "build (${targets[*]}): $((SECONDS - start)) s on $(nproc) cores"

@@ -12,7 +12,7 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${TOUCHDOWN_HARDENING_DIR:-$root/build-hard}
 jobs=${TOUCHDOWN_JOBS:-$(nproc)}
-bash "$root/tools/install_deps.sh"
+bash "$root/tools/install_deps.sh" main tests mpi hardening
 source "$root/tools/compiler_cache.sh"
 CC=clang CXX=clang++ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo "${compiler_cache_args[@]}" \
   "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" \

@@ -175,11 +175,12 @@ py::dict LanderTraceArrays(const std::vector<lander::LanderSample>& trace) {
 
 // touchdown lander: the summary JSON text and, when asked, the trace's columns (else None); the
 // outputs into `out` when given (a new directory).
-py::tuple Lander(const std::string& scenario_path, const std::string& model, const std::string& out, bool with_trace,
+py::tuple Lander(const std::string& scenario_arg, const std::string& model, const std::string& out, bool with_trace,
                  bool vtk) {
   std::optional<scenario::LanderRun> run;
   {
     py::gil_scoped_release unlocked;
+    const std::string scenario_path = io::ResolveInputDocument(io::InputDocument::kLander, scenario_arg);
     const io::OutputTarget target(out, {scenario_path, model});
     if (!out.empty()) io::CheckOutputDirectory(target, io::OutputKind::kLander);
     scenario::LanderScenario scenario = scenario::LoadLanderScenario(scenario_path);
@@ -200,9 +201,10 @@ py::dict RunCounts(const sweep::SweepRunSummary& s) {
   return d;
 }
 
-py::dict Sweep(const std::string& plan_path, const std::string& out, const std::string& model,
+py::dict Sweep(const std::string& plan_arg, const std::string& out, const std::string& model,
                const py::object& threads_arg) {
   const int threads = ThreadsArgument(threads_arg, "touchdown.sweep");
+  const std::string plan_path = io::ResolveInputDocument(io::InputDocument::kSweep, plan_arg);
   std::atomic<int> stop{0};
   return RunCounts(RunInterruptible(stop, [&] {
     const sweep::SweepPlan plan = sweep::LoadSweepPlan(plan_path, model);
@@ -216,8 +218,9 @@ py::dict Sweep(const std::string& plan_path, const std::string& out, const std::
 }
 
 // touchdown campaign: the drops into `out` (a new directory); its summary.json's text.
-std::string Campaign(const std::string& scenario_path, const std::string& out) {
+std::string Campaign(const std::string& scenario_arg, const std::string& out) {
   py::gil_scoped_release unlocked;
+  const std::string scenario_path = io::ResolveInputDocument(io::InputDocument::kCampaign, scenario_arg);
   const io::OutputTarget target(out, {scenario_path});
   io::CheckOutputDirectory(target, io::OutputKind::kCampaign);
   scenario::RunCampaignToDirectory(scenario::LoadCampaignScenario(scenario_path), target);
@@ -239,9 +242,10 @@ std::string Compare(const std::string& measured, const std::string& simulated, c
 
 // touchdown stability: the study's landings as a sweep into `out`, then its analysis there.
 // Stopped (Ctrl-C), the committed landings stay for a rerun to resume; no analysis is written.
-py::dict Stability(const std::string& study_path, const std::string& out, const std::string& model,
+py::dict Stability(const std::string& study_arg, const std::string& out, const std::string& model,
                    std::optional<int64_t> samples, const py::object& threads_arg) {
   const int threads = ThreadsArgument(threads_arg, "touchdown.stability");
+  const std::string study_path = io::ResolveInputDocument(io::InputDocument::kStudy, study_arg);
   std::atomic<int> stop{0};
   return RunCounts(RunInterruptible(stop, [&] {
     const stability::Study study = stability::LoadStudy(study_path, model, samples, {"touchdown.stability", false});
@@ -333,7 +337,7 @@ py::tuple Trade(const std::string& plan_path, const std::string& out, const std:
     sweep::SweepRunOptions options;
     options.threads = threads;
     options.progress = sweep::ProgressMode::kNone;
-    run = sweep::RunTrade(plan_path, model, out, options);
+    run = sweep::RunTrade(io::ResolveInputDocument(io::InputDocument::kTrade, plan_path), model, out, options);
   }
   return py::make_tuple(sweep::TradeJson(run->rows, run->limits).dump(2), RunCounts(run->sweep));
 }
@@ -407,6 +411,7 @@ void TranslateErrors(std::exception_ptr error) {
 PYBIND11_MODULE(_touchdown, m) {
   using namespace touchdown;
   m.doc() = "touchdown's compiled core; use the touchdown package (docs/python.md)";
+  m.attr("__version__") = TOUCHDOWN_VERSION;  // the CMake project's version, as `touchdown --version`
   py::register_exception_translator(&python::TranslateErrors);
   m.def("data_dir", &io::DataDirectory, "The directory of the bundled pads, soils and scenarios");
   m.def(

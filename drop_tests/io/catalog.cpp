@@ -351,6 +351,62 @@ std::vector<std::string> CatalogNames(const std::string& kind) {
   return names;
 }
 
+namespace {
+// A YAML file's top-level `type:`; "" when it cannot be read as a map. A campaign file may leave
+// it out (LoadCampaignScenario's default; every other input type requires it).
+std::string DocumentType(const fs::path& file) {
+  try {
+    const YAML::Node node = YAML::LoadFile(file.string());
+    if (!node.IsMap()) return "";
+    return node["type"] ? node["type"].as<std::string>() : "campaign";
+  } catch (const std::exception&) {
+    return "";  // not a document of any shelf; its loader says why when it is named by path
+  }
+}
+}  // namespace
+
+std::vector<CatalogShelf> ShelvesOf(InputDocument document) {
+  const CatalogShelf campaigns{"scenarios", "campaign", "campaign scenarios"};
+  const CatalogShelf landers{"scenarios", "lander", "lander scenarios"};
+  const CatalogShelf sweeps{"sweeps", "sweep", "sweeps"};
+  const CatalogShelf studies{"studies", "stability", "studies"};
+  switch (document) {
+    case InputDocument::kCampaign: return {campaigns};
+    case InputDocument::kLander: return {landers};
+    case InputDocument::kSweep: return {sweeps, studies};
+    case InputDocument::kTrade: return {sweeps};
+    case InputDocument::kStudy: return {studies};
+  }
+  return {};
+}
+
+std::vector<std::string> ShelfNames(const CatalogShelf& shelf) {
+  std::vector<std::string> names;
+  for (const std::string& name : CatalogNames(shelf.kind))
+    if (DocumentType(fs::path(DataDirectory()) / shelf.kind / (name + ".yaml")) == shelf.type) names.push_back(name);
+  return names;
+}
+
+std::string ResolveInputDocument(InputDocument document, const std::string& name_or_path) {
+  const bool is_path = name_or_path.find('/') != std::string::npos || name_or_path.ends_with(".yaml") ||
+                       name_or_path.ends_with(".yml");
+  std::error_code ec;
+  if (is_path || name_or_path.empty() || fs::exists(fs::symlink_status(name_or_path, ec))) return name_or_path;
+  std::vector<std::string> all;
+  std::string known;
+  for (const CatalogShelf& shelf : ShelvesOf(document)) {
+    const std::vector<std::string> names = ShelfNames(shelf);
+    if (std::find(names.begin(), names.end(), name_or_path) != names.end())
+      return DataDirectory() + "/" + shelf.kind + "/" + name_or_path + ".yaml";
+    std::string list;
+    for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+    known += (known.empty() ? "" : "; ") + shelf.label + " in " + DataDirectory() + "/" + shelf.kind + ": " + list;
+    all.insert(all.end(), names.begin(), names.end());
+  }
+  throw MakeInputError(name_or_path, "", "no such file, nor a bundled name" + DidYouMean(name_or_path, all) + " (" +
+                                             known + ")");
+}
+
 PadSpec LoadPad(const std::string& name_or_path) {
   return LoadPad(YamlFields::LoadFile(ResolveCatalogFile("pads", name_or_path)));
 }

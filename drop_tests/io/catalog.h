@@ -75,6 +75,32 @@ std::string ResolveCatalogFileNear(const std::string& referring_file, const std:
 // The names data/<kind>/ holds (its .yaml files without the ending), sorted.
 std::vector<std::string> CatalogNames(const std::string& kind);
 
+// The input file a command runs (a campaign, a lander scenario, a sweep, a study) is a path or
+// the name of a bundled one, as pads and soils are. A shelf is where such names live: the files
+// of data/<kind>/ whose `type:` is `type` (data/studies holds both studies and the lander
+// scenarios they start from; only the studies are study names).
+struct CatalogShelf {
+  std::string kind;   // the data/ subfolder
+  std::string type;   // the files' `type:` field
+  std::string label;  // what they are, in words ("lander scenarios")
+};
+enum class InputDocument {
+  kCampaign,  // campaign: campaign scenarios
+  kLander,    // lander: lander scenarios
+  kSweep,     // sweep: sweeps and stability studies (a study is a lander sweep)
+  kTrade,     // trade: sweeps
+  kStudy,     // stability: stability studies
+};
+// Where a command's input is looked for by name, in order.
+std::vector<CatalogShelf> ShelvesOf(InputDocument document);
+// The names on a shelf (data/<kind>/*.yaml of its type, without the ending), sorted.
+std::vector<std::string> ShelfNames(const CatalogShelf& shelf);
+// The file a command reads: `name_or_path` itself when a file of that name exists or it reads as
+// a path ('/' in it, a .yaml/.yml ending: the loader then says what is wrong with it); otherwise
+// the bundled file of that name on the first of `document`'s shelves holding it. InputError
+// naming it, the nearest bundled name and the known ones when it is neither.
+std::string ResolveInputDocument(InputDocument document, const std::string& name_or_path);
+
 PadSpec LoadPad(const std::string& name_or_path);
 // A pad from its file's YAML as read (YamlFields::LoadFile of the resolved file), possibly edited in
 // memory first (calibrate --targets changes a profile constant without touching the file).

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <sys/wait.h>
 
@@ -99,6 +100,66 @@ TEST_F(CliHelp, MistypedNamesAreAnsweredWithTheNearestOne) {
   EXPECT_EQ(far.status, 2);
   EXPECT_EQ(far.err.find("did you mean"), std::string::npos) << far.err;
   EXPECT_NE(far.err.find("commands: drop, campaign"), std::string::npos) << far.err;
+}
+
+TEST_F(CliHelp, BareTouchdownListsTheCommands) {
+  const HelpRun r = RunIn({}, "");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(r.err.empty()) << r.err;
+  EXPECT_NE(r.out.find("Usage: touchdown [OPTIONS] SUBCOMMAND"), std::string::npos) << r.out;
+  for (const std::string& command : kHelpCommands)
+    EXPECT_NE(r.out.find("\n  " + command + " "), std::string::npos) << command << "\n" << r.out;
+}
+
+TEST_F(CliHelp, EveryHelpLineFitsIn100Columns) {
+  std::vector<std::vector<std::string>> asks = {{"--help"}};
+  for (const std::string& command : kHelpCommands) asks.push_back({command, "--help"});
+  for (const std::vector<std::string>& ask : asks) {
+    const HelpRun help = RunIn(ask, "");
+    ASSERT_EQ(help.status, 0) << help.err;
+    std::istringstream lines(help.out);
+    for (std::string line; std::getline(lines, line);)
+      EXPECT_LE(line.size(), 100u) << ask.front() << ": " << line;
+  }
+}
+
+TEST_F(CliHelp, StabilityListsOnlyStudiesAndSamplesShowsNoDefault) {
+  const HelpRun help = RunIn({"stability", "--help"}, "");
+  ASSERT_EQ(help.status, 0) << help.err;
+  EXPECT_NE(help.out.find("lab_paper_lander, lunar_paper_lander, lunar_patchy_ground"), std::string::npos) << help.out;
+  EXPECT_EQ(help.out.find("_scenario"), std::string::npos) << help.out;
+  // --samples is optional and 1 to 1e9: no default (CLI11 would show its empty text or a 0).
+  const size_t samples = help.out.find("\n  --samples ");
+  ASSERT_NE(samples, std::string::npos) << help.out;
+  const std::string line = help.out.substr(samples + 1, help.out.find('\n', samples + 1) - samples - 1);
+  EXPECT_EQ(line.find('='), std::string::npos) << line;
+}
+
+TEST_F(CliHelp, ScenariosListedInHelpRunByName) {
+  const HelpRun help = RunIn({"lander", "--help"}, "");
+  ASSERT_NE(help.out.find("lander_case_A, lander_case_B"), std::string::npos) << help.out;
+  EXPECT_EQ(help.out.find("sutoh2017_single_footpad,"), std::string::npos) << "a campaign is no lander scenario";
+  const std::string dir = Path("cwd");
+  std::filesystem::create_directories(dir);
+  const HelpRun r = RunIn({"lander", "lander_case_B", "--out", "lander_B", "--no-vtk"}, dir);
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(std::filesystem::exists(dir + "/lander_B/summary.json"));
+  // A file of that name in the working directory is the one meant.
+  std::ofstream(dir + "/lander_case_A") << "not: a scenario\n";
+  const HelpRun mine = RunIn({"lander", "lander_case_A", "--out", "lander_A", "--no-vtk"}, dir);
+  EXPECT_EQ(mine.status, 2);
+  EXPECT_EQ(mine.err.rfind("touchdown: lander_case_A: ", 0), 0u) << mine.err;
+}
+
+TEST_F(CliHelp, AnUnknownOptionIsNamedBeforeAMissingRequiredOne) {
+  const HelpRun r = RunIn({"drop", "--sped", "1"}, "");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err,
+            "touchdown: command line: --sped: unknown option of `touchdown drop` (did you mean '--speed'?); "
+            "`touchdown drop --help` lists its options\n");
+  const HelpRun version = RunIn({"--version"}, "");
+  EXPECT_EQ(version.status, 0);
+  EXPECT_EQ(version.out, std::string("touchdown ") + TOUCHDOWN_PROJECT_VERSION + "\n");
 }
 
 }  // namespace

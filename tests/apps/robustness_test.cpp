@@ -734,6 +734,13 @@ std::vector<Case> Cases() {
                {{"sampling.synth.yaml", "schema_version: 1\ntype: synth\nseed: 1\nsensor_sampling: averaged\n"
                                         "drops:\n  - {pads: [flat], soils: [fjs1_lp], impact_speeds_m_s: [1.0]}\n"}}});
   c.push_back({"diagnose", "--sensor-sampling averaged", "diagnose measured --sensor-sampling averaged --out out_w3", {}});
+  // Unknown options are named before a missing required one; inputs by bundled name.
+  c.push_back({"CLI flag", "misspelt option, a required one missing", "drop --sped 1"});
+  c.push_back({"CLI flag", "misspelt option as --name=value", "drop --pad flat --soil fjs1_lp --speed=1 --gravty=1.6"});
+  c.push_back({"CLI flag", "unknown option before the command", "--verbose drop --pad flat --soil fjs1_lp --speed 1"});
+  c.push_back({"CLI flag", "lander scenario by a mistyped name", "lander lander_cas_B --out out_h1"});
+  c.push_back({"CLI flag", "stability by a lander scenario's name (not a study)",
+               "stability lunar_paper_lander_scenario --out out_h2"});
   return c;
 }
 

@@ -181,3 +181,20 @@ def test_validate_equals_the_command_line(tmp_path):
     assert touchdown.validate() == result  # without out: nothing written, the same numbers
     with pytest.raises(ValueError, match="not a directory of validation sources"):
         touchdown.validate(sources=tmp_path / "missing")
+
+
+def test_version_is_the_projects():
+    """touchdown.__version__ is the CMake project's version, the one `touchdown --version` prints."""
+    assert re.fullmatch(r"\d+\.\d+\.\d+", touchdown.__version__)
+    assert run_touchdown("--version").strip() == "touchdown " + touchdown.__version__
+
+
+def test_bundled_inputs_run_by_name(tmp_path, monkeypatch):
+    """A workflow's input given by a bundled name, as `touchdown lander lander_case_B` takes it."""
+    monkeypatch.chdir(tmp_path)  # no file of that name here
+    by_name = json.loads(json.dumps(touchdown.lander("lander_case_B", vtk=False)))
+    by_path = json.loads(json.dumps(touchdown.lander(data_file("scenarios", "lander_case_B.yaml"), vtk=False)))
+    assert by_name == by_path
+    with pytest.raises(ValueError, match=r"lunar_paper_lander_scenario: no such file, nor a bundled name "
+                                         r"\(did you mean 'lunar_paper_lander'\?\)"):
+        touchdown.stability("lunar_paper_lander_scenario", tmp_path / "out")

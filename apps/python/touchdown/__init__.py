@@ -12,7 +12,8 @@ the workflows run as their commands do (campaign, compare, calibrate, diagnose, 
 export, sweep, stability: outputs into a new directory, the summary returned), and the readers
 give pandas DataFrames of a sweep's database, a dataset and a stability study
 (read_sweep, read_dataset, read_stability). Pads and soils are catalogue names ("flat",
-"fjs1_lp"), YAML files, or dicts with a YAML file's content. Bad input raises ValueError with
+"fjs1_lp"), YAML files, or dicts with a YAML file's content; the scenario, sweep or study a
+workflow runs is a file or, as on the command line, a bundled one's name ("lander_case_B"). Bad input raises ValueError with
 the command line's one-line message (naming the Python argument: "touchdown.sweep: threads: ..."),
 an input file that is not there FileNotFoundError, a path the system refuses OSError, a failed
 solver RuntimeError. Ctrl-C stops a sweep or study once its running drops are committed
@@ -38,9 +39,11 @@ def _installed_data_dir():
 
 _installed_data_dir()
 from . import _touchdown  # noqa: E402
+
+__version__ = _touchdown.__version__  # the CMake project's version, as `touchdown --version` prints
 from .readers import StabilityStudy, read_dataset, read_stability, read_sweep
 
-__all__ = ["drop", "force", "lander", "sweep", "stability", "campaign", "compare", "calibrate", "calibrate_targets", "validate", "diagnose", "trade",
+__all__ = ["__version__", "drop", "force", "lander", "sweep", "stability", "campaign", "compare", "calibrate", "calibrate_targets", "validate", "diagnose", "trade",
            "synth", "export", "data_dir", "read_sweep", "read_dataset", "read_stability", "StabilityStudy"]
 
 

@@ -330,5 +330,71 @@ TEST_F(MeshPads, BadMeshPadsGiveOneClearError) {
   }
 }
 
+// The input a command runs (campaign, lander, sweep, trade, stability) by path or bundled name.
+TEST_F(CatalogFiles, ABundledInputRunsByItsName) {
+  EXPECT_EQ(ResolveInputDocument(InputDocument::kLander, "lander_case_B"),
+            DataDirectory() + "/scenarios/lander_case_B.yaml");
+  EXPECT_EQ(ResolveInputDocument(InputDocument::kCampaign, "sutoh2017_single_footpad"),
+            DataDirectory() + "/scenarios/sutoh2017_single_footpad.yaml");
+  EXPECT_EQ(ResolveInputDocument(InputDocument::kStudy, "lunar_paper_lander"),
+            DataDirectory() + "/studies/lunar_paper_lander.yaml");
+  // sweep runs studies too (a study is a lander sweep); trade only sweeps.
+  EXPECT_EQ(ResolveInputDocument(InputDocument::kSweep, "lunar_paper_lander"),
+            DataDirectory() + "/studies/lunar_paper_lander.yaml");
+  EXPECT_THROW(ResolveInputDocument(InputDocument::kTrade, "lunar_paper_lander"), InputError);
+  // What reads as a path stays one: its loader says what is wrong with it.
+  EXPECT_EQ(ResolveInputDocument(InputDocument::kLander, "lander_case_B.yaml"), "lander_case_B.yaml");
+  EXPECT_EQ(ResolveInputDocument(InputDocument::kLander, "cases/lander_case_B"), "cases/lander_case_B");
+}
+
+TEST_F(CatalogFiles, AFileOfTheNameInTheWorkingDirectoryComesFirst) {
+  const fs::path here = fs::current_path();
+  fs::current_path(dir_);
+  Write("lander_case_B", "mine");
+  const std::string resolved = ResolveInputDocument(InputDocument::kLander, "lander_case_B");
+  fs::current_path(here);
+  EXPECT_EQ(resolved, "lander_case_B");
+}
+
+TEST_F(CatalogFiles, AShelfHoldsOnlyItsType) {
+  // data/studies holds the studies and the lander scenarios they start from.
+  const std::vector<CatalogShelf> studies = ShelvesOf(InputDocument::kStudy);
+  ASSERT_EQ(studies.size(), 1u);
+  EXPECT_EQ(ShelfNames(studies[0]),
+            (std::vector<std::string>{"lab_paper_lander", "lunar_paper_lander", "lunar_patchy_ground"}));
+  const std::vector<CatalogShelf> landers = ShelvesOf(InputDocument::kLander);
+  ASSERT_EQ(landers.size(), 1u);
+  EXPECT_EQ(ShelfNames(landers[0]),
+            (std::vector<std::string>{"lander_case_A", "lander_case_B", "lander_case_C", "lander_lunar_bekker"}));
+  try {
+    ResolveInputDocument(InputDocument::kStudy, "lunar_paper_lander_scenario");
+    FAIL() << "a lander scenario is not a study";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("lunar_paper_lander_scenario: no such file, nor a bundled name (did you mean "
+                           "'lunar_paper_lander'?)"),
+              std::string::npos)
+        << message;
+    EXPECT_NE(message.find("studies in " + DataDirectory() + "/studies: lab_paper_lander, lunar_paper_lander, "
+                           "lunar_patchy_ground)"),
+              std::string::npos)
+        << message;
+  }
+}
+
+TEST_F(CatalogFiles, EveryListedNameResolvesToAFileOfItsShelf) {
+  for (InputDocument d : {InputDocument::kCampaign, InputDocument::kLander, InputDocument::kSweep,
+                          InputDocument::kTrade, InputDocument::kStudy})
+    for (const CatalogShelf& shelf : ShelvesOf(d)) {
+      const std::vector<std::string> names = ShelfNames(shelf);
+      EXPECT_FALSE(names.empty()) << shelf.label;
+      for (const std::string& name : names) {
+        const std::string file = ResolveInputDocument(d, name);
+        EXPECT_TRUE(fs::is_regular_file(file)) << file;
+        EXPECT_EQ(fs::path(file).parent_path().filename(), shelf.kind) << file;
+      }
+    }
+}
+
 }  // namespace
 }  // namespace touchdown::io
