@@ -278,17 +278,26 @@ bool WriteResiduals(const Diagnosis& d, const dataset::Dataset& ds, const Candid
 // plots/diagnose.gp: overlays (force against time and against penetration), residuals, gap per
 // drop, each a Figure (PNG + SVG). Measured: black points; base model: grey, dashed; the model
 // with the effect: one accent colour that no pad uses elsewhere.
-constexpr const char* kBaseLine = "lw 2.5 dt 2 lc rgb '#6e6e6e'";
-constexpr const char* kAugmentedLine = "lw 2.5 lc rgb '#AA3377'";
+constexpr const char* kBaseLine = io::kBaseLine;
+const std::string kAugmentedLine = std::string("lw 2.5 lc rgb '") + io::kAugmentedColour + "'";
+// Residuals are noisy samples: points, not lines joining the noise.
+constexpr const char* kBasePoints = "pt 7 ps 0.35 lc rgb '#6e6e6e'";
+const std::string kAugmentedPoints = std::string("pt 7 ps 0.35 lc rgb '") + io::kAugmentedColour + "'";
+// Six panels on a grid with room below for the one key they share.
+constexpr const char* kSixPanels = " margins 0.07, 0.98, 0.14, 0.9 spacing 0.07, 0.12";
 
 std::string OverlayFigure(const Diagnosis& d, const dataset::Dataset& ds, const std::vector<size_t>& held,
                           const std::string& aug_title, bool against_penetration) {
   std::ostringstream body;
-  body << "set multiplot layout 2,3 title "
+  // One key, below the panels (screen coordinates): a key in each panel covers its peak.
+  body << "set multiplot layout 2,3" << kSixPanels << " title "
        << io::GnuplotQuote("Held-out drops: measured, base and " + aug_title +
                            (against_penetration ? " (force against penetration)" : " (force against time)"))
-       << "\nset key top left\n";
+       << "\nset key at screen 0.5, screen 0.01 center bottom horizontal\n";
+  bool first = true;
   for (size_t i : held) {
+    if (!first) body << "unset key\n";
+    first = false;
     const dataset::DatasetDrop& m = ds.drops[d.problem.drops[i].dataset_index];
     const std::string columns = against_penetration ? "($5*1000):2" : "($1*1000):2";
     body << "set title " << io::GnuplotQuote(m.drop_id + " (" + rft::AtmosphereName(m.atmosphere) + ")") << "\nset xlabel "
@@ -307,8 +316,16 @@ std::string OverlayFigure(const Diagnosis& d, const dataset::Dataset& ds, const 
 // (the effects the library names often act in one atmosphere only).
 std::string ResidualFigure(const std::string& aug_title, bool residuals) {
   std::ostringstream body;
-  body << "set multiplot layout 2,2 title 'Held-out force residual (simulated - measured) / measured peak force; one "
-          "line per drop'\nset xlabel 't [ms]'\nset ylabel 'normalised residual'\nunset key\n";
+  body << "set xlabel 't [ms]'\nset ylabel 'normalised residual'\nunset key\n";
+  // One scale on every panel, so base and effect, vacuum and air compare by eye.
+  if (residuals)
+    body << "stats 'data/residuals_held_out.csv' using ($1*1000):2 nooutput name 'B'\n"
+            "stats 'data/residuals_held_out.csv' using ($1*1000):3 nooutput name 'A'\n"
+            "r_lo = (A_min_y < B_min_y ? A_min_y : B_min_y); r_hi = (A_max_y > B_max_y ? A_max_y : B_max_y)\n"
+            "r_pad = 0.05 * (r_hi - r_lo) + 1e-3\nset yrange [r_lo - r_pad : r_hi + r_pad]\n"
+            "set xrange [(A_min_x < B_min_x ? A_min_x : B_min_x) : (A_max_x > B_max_x ? A_max_x : B_max_x)]\n";
+  body << "set multiplot layout 2,2 title 'Held-out force residual (simulated - measured) / measured peak force; "
+          "every drop, one scale'\n";
   for (const char* atmosphere : {"vacuum", "air"})
     for (int model = 0; model < 2; ++model) {
       body << "set title " << io::GnuplotQuote(std::string(model == 0 ? "base" : aug_title) + ", drops in " + atmosphere) << "\n";
@@ -317,7 +334,7 @@ std::string ResidualFigure(const std::string& aug_title, bool residuals) {
         continue;
       }
       body << "plot 'data/residuals_held_out.csv' using ($1*1000):(strcol(4) eq '" << atmosphere << "' ? $"
-           << (model == 0 ? 2 : 3) << " : 1/0) with lines " << (model == 0 ? kBaseLine : kAugmentedLine)
+           << (model == 0 ? 2 : 3) << " : 1/0) with points " << (model == 0 ? std::string(kBasePoints) : kAugmentedPoints)
            << " notitle, 0 with lines lw 1 lc rgb '#000000' notitle\n";
     }
   body << "unset multiplot\n";
@@ -333,7 +350,7 @@ bool WriteGapPerDropData(const Diagnosis& d, const dataset::Dataset& ds, const C
   for (size_t i = 0; i < d.problem.drops.size(); ++i) {
     const dataset::DatasetDrop& m = ds.drops[d.problem.drops[i].dataset_index];
     if (m.atmosphere != atmosphere) continue;
-    rows << k++ << ',' << m.drop_id << (d.problem.drops[i].train ? "" : " (held out)") << ','
+    rows << k++ << ',' << m.drop_id << (d.problem.drops[i].train ? "" : "*") << ','
          << io::FormatNumber(d.base.gaps[i].force_nrmse) << ',' << io::FormatNumber(after.gaps[i].force_nrmse) << ','
          << io::FormatNumber(d.base.gaps[i].noise_nrmse) << '\n';
   }
@@ -346,10 +363,12 @@ bool WriteGapPerDropData(const Diagnosis& d, const dataset::Dataset& ds, const C
 // the sensor-noise floor each drop cannot go below.
 std::string GapPerDropFigure(const std::string& aug_title, const std::array<bool, 2>& has_drops) {
   std::ostringstream body;
-  body << "set multiplot layout 2,1 title " << io::GnuplotQuote("Force NRMSE per drop: base and " + aug_title)
-       << "\nset style fill solid 1 border lc rgb '#303030'\nset boxwidth 0.38\nset xtics rotate by -50 font ',10'\n"
-          "set bmargin 9\nset lmargin 12\nset rmargin 30\nset ylabel 'force NRMSE'\nset yrange [0:*]\n"
-          "set key outside right top\n";
+  // Drop ids upright and small, held-out ones starred; a drop the effect made worse carries a
+  // down-pointing mark above its bars.
+  body << "set multiplot layout 2,1 title " << io::GnuplotQuote("Force NRMSE per drop: base and " + aug_title + " (* held out)")
+       << "\nset style fill solid 1 border lc rgb '#303030'\nset boxwidth 0.38\nset xtics rotate by 90 right font ',9'\n"
+          "set lmargin 12\nset rmargin 4\nset ylabel 'force NRMSE'\nset yrange [0:*]\nset offsets 0, 0, graph 0.12, 0\n"
+          "set key inside top right opaque horizontal maxrows 2\n";
   int panel = 0;
   for (const char* atmosphere : {"vacuum", "air"}) {
     body << "set title 'drops in " << atmosphere << "'\n";
@@ -359,8 +378,10 @@ std::string GapPerDropFigure(const std::string& aug_title, const std::array<bool
     }
     const std::string file = std::string("'data/gap_") + atmosphere + ".csv'";
     body << "plot " << file << " skip 1 using ($1-0.2):3:xtic(2) with boxes lc rgb '#9e9e9e' title 'base', "
-         << file << " skip 1 using ($1+0.2):4 with boxes lc rgb '#AA3377' title 'with effect', "
-         << file << " skip 1 using 1:5 with points pt 5 ps 1 lc rgb '#000000' title 'sensor-noise floor'\n";
+         << file << " skip 1 using ($1+0.2):4 with boxes lc rgb '" << io::kAugmentedColour << "' title 'with effect', "
+         << file << " skip 1 using 1:5 with points pt 5 ps 1 lc rgb '#000000' title 'sensor-noise floor', "
+         << file << " skip 1 using 1:($4 > $3 ? ($4 > $5 ? $4 : $5) * 1.08 : 1/0) with points pt 11 ps 1.8 lc rgb '"
+         << io::kAugmentedColour << "' title 'made worse by the effect'\n";
   }
   body << "unset multiplot\n";
   return io::Figure("plots/gap_per_drop", body.str(), io::kFigureWide);

@@ -161,12 +161,18 @@ std::vector<std::pair<std::string, std::string>> WriteSeries(const std::vector<T
   return files;
 }
 
-// One data file per condition's front (penetration, force, pad), sorted along it.
-std::vector<std::string> WriteFronts(const std::vector<TradeRow>& rows, const fs::path& dir) {
+struct Front {
+  std::string file;   // penetration, force, pad, sorted along the front
+  std::string label;  // its condition: "1 m/s, FJS-1 LP"
+  double end_mm = 0.0, end_N = 0.0;  // its last point, where the label goes
+};
+
+// One data file per condition's front.
+std::vector<Front> WriteFronts(const std::vector<TradeRow>& rows, const fs::path& dir) {
   std::map<std::pair<std::string, double>, std::vector<const TradeRow*>> fronts;
   for (const TradeRow& r : rows)
     if (r.pareto) fronts[{r.soil, r.impact_speed_m_s}].push_back(&r);
-  std::vector<std::string> files;
+  std::vector<Front> files;
   for (auto& [key, list] : fronts) {
     std::sort(list.begin(), list.end(), [](auto a, auto b) { return a->final_penetration_m < b->final_penetration_m; });
     const std::string file = "plots/data/front_" + std::to_string(files.size()) + ".csv";
@@ -174,12 +180,21 @@ std::vector<std::string> WriteFronts(const std::vector<TradeRow>& rows, const fs
       for (const TradeRow* r : list)
         out << io::FormatNumber(r->final_penetration_m) << ',' << io::FormatNumber(r->peak_force_N) << ',' << r->pad << '\n';
     });
-    files.push_back(file);
+    files.push_back({file, io::FormatNumber(key.second) + " m/s, " + io::SoilDisplayName(key.first),
+                     list.back()->final_penetration_m * 1e3, list.back()->peak_force_N});
   }
   return files;
 }
 
-std::string SeriesTitle(const std::string& key) { return key.substr(0, key.find('|')) + ", " + key.substr(key.find('|') + 1); }
+std::string SeriesTitle(const std::string& key) {
+  return key.substr(0, key.find('|')) + ", " + io::SoilDisplayName(key.substr(key.find('|') + 1));
+}
+
+// A design limit as a horizontal black dotted line across a panel (nothing when not given).
+std::string LimitLine(double limit, const std::string& what) {
+  if (!std::isfinite(limit)) return "";
+  return ", \\\n     " + io::FormatNumber(limit) + " with lines " + io::kPaperBandLine + " title " + io::GnuplotQuote(what);
+}
 std::string SeriesLine(const std::string& key) { return io::PadSoilLine(key.substr(0, key.find('|')), key.substr(key.find('|') + 1)); }
 std::string SeriesColourOf(const std::string& key) { return io::PadColour(key.substr(0, key.find('|'))); }
 }  // namespace
@@ -200,30 +215,34 @@ void WriteTradeFiles(const std::vector<TradeRow>& rows, const fs::path& dir, con
   io::WriteFileAtomically((dir / "summary.json").string(), [&](std::ostream& out) { out << TradeJson(rows, limits).dump(2) << '\n'; });
 
   const std::vector<std::pair<std::string, std::string>> series = WriteSeries(rows, dir);
-  const std::vector<std::string> fronts = WriteFronts(rows, dir);
+  const std::vector<Front> fronts = WriteFronts(rows, dir);
   // A sweep whose drops all failed has no series: each panel says so instead (a `plot` of
   // nothing is a gnuplot error).
   const std::string nothing = io::PlaceholderPlot("no completed drops: nothing to plot");
-  auto plot = [&](const std::string& columns, bool titles) {
+  // Series titled in the first panel only, whose key sits below all three panels (screen
+  // coordinates, in the bottom margin every panel leaves): no key covers a panel's tics or label.
+  auto plot = [&](const std::string& columns, bool titles, const std::string& limit_line) {
     if (series.empty()) return nothing;
     std::string s = "plot ";
     for (size_t i = 0; i < series.size(); ++i)
       s += (i ? ", \\\n     " : "") + io::GnuplotQuote(series[i].first) + " using " + columns + " with linespoints " +
-           SeriesLine(series[i].second) + " pt 7 ps 1.2 " +
-           (titles ? "title " + io::GnuplotQuote(SeriesTitle(series[i].second)) : std::string("notitle"));
-    return s + "\n";
+           SeriesLine(series[i].second) + " pt " + std::to_string(io::SoilPoint(series[i].second.substr(series[i].second.find('|') + 1))) +
+           " ps 1.2 " + (titles ? "title " + io::GnuplotQuote(SeriesTitle(series[i].second)) : std::string("notitle"));
+    return s + limit_line + "\n";
   };
   const std::string speeds =
-      "set multiplot layout 1,3 title 'Footpad trade study against impact speed'\nset xlabel 'impact speed [m/s]'\n"
-      "set key outside bottom center horizontal\nset bmargin 8\nset ylabel 'final penetration [mm]'\n" +
-      plot("1:($2*1000)", false) + "set ylabel 'peak force [N]'\n" + plot("1:3", true) +
-      "set ylabel 'energy-conversion rate [W]'\n" + plot("1:4", false) + "unset multiplot\n";
+      "set multiplot layout 1,3 title 'Footpad trade study against impact speed (dotted: the design limits)'\n"
+      "set xlabel 'impact speed [m/s]'\nset bmargin 9\n"
+      "set key at screen 0.5, screen 0.01 center bottom horizontal maxrows 2\nset ylabel 'final penetration [mm]'\n" +
+      plot("1:($2*1000)", true, LimitLine(limits.max_final_penetration_m * 1e3, "allowable penetration")) +
+      "unset key\nset ylabel 'peak force [N]'\n" + plot("1:3", false, LimitLine(limits.max_peak_force_N, "allowable peak force")) +
+      "set ylabel 'energy-conversion rate [W]'\n" + plot("1:4", false, "") + "unset multiplot\n";
   // The allowable region (lower left, inside the limits) shaded; feasible rows filled, the others open.
   std::string pareto = "set title " +
                        io::GnuplotQuote(limits.any() ? "Peak force against penetration (shaded: the limits; filled: feasible; "
-                                                       "circles LP, squares CP; dashed: fronts)"
+                                                       "circles LP, squares CP; dashed: fronts, named by speed and soil)"
                                                      : "Peak force against final penetration (no limits given: every pad is "
-                                                       "feasible); dashed = fronts per soil and speed") +
+                                                       "feasible); dashed: fronts, named by speed and soil") +
                        "\nset xlabel 'final penetration [mm]'\nset ylabel 'peak force [N]'\nset key outside right top\n";
   if (std::isfinite(limits.max_final_penetration_m) || std::isfinite(limits.max_peak_force_N))
     pareto += "set object 1 rect from graph 0, graph 0 to " +
@@ -237,15 +256,24 @@ void WriteTradeFiles(const std::vector<TradeRow>& rows, const fs::path& dir, con
     pareto += "plot ";
     for (size_t i = 0; i < series.size(); ++i) {
       // Circles on loosely packed soil, squares on others; filled within the limits, open outside.
-      const bool lp = series[i].second.ends_with("_lp");
+      const std::string soil = series[i].second.substr(series[i].second.find('|') + 1);
       const std::string file = io::GnuplotQuote(series[i].first), colour = " lc rgb '" + SeriesColourOf(series[i].second) + "'";
-      pareto += (i ? ", \\\n     " : "") + file + " using ($2*1000):($5 > 0 ? $3 : 1/0) with points pt " + (lp ? "7" : "5") +
-                " ps 1.6" + colour + " title " + io::GnuplotQuote(SeriesTitle(series[i].second)) + ", \\\n     " + file +
-                " using ($2*1000):($5 > 0 ? 1/0 : $3) with points pt " + (lp ? "6" : "4") + " ps 1.6" + colour + " notitle";
+      pareto += (i ? ", \\\n     " : "") + file + " using ($2*1000):($5 > 0 ? $3 : 1/0) with points pt " +
+                std::to_string(io::SoilPoint(soil)) + " ps 1.6" + colour + " title " +
+                io::GnuplotQuote(SeriesTitle(series[i].second)) + ", \\\n     " + file +
+                " using ($2*1000):($5 > 0 ? 1/0 : $3) with points pt " + std::to_string(io::SoilPoint(soil, false)) + " ps 1.6" +
+                colour + " notitle";
     }
-    for (const std::string& file : fronts)
-      pareto += ", \\\n     " + io::GnuplotQuote(file) + " using ($1*1000):2 with lines lw 1.2 dt 2 lc rgb '#000000' notitle";
+    for (const Front& f : fronts)
+      pareto += ", \\\n     " + io::GnuplotQuote(f.file) + " using ($1*1000):2 with lines lw 1.2 dt 2 lc rgb '#000000' notitle";
     pareto += "\n";
+    // Each front named by its condition at its far end.
+    std::string labels;
+    for (size_t i = 0; i < fronts.size(); ++i)
+      labels += "set label " + std::to_string(10 + i) + " " + io::GnuplotQuote(fronts[i].label) + " at first " +
+                io::FormatNumber(fronts[i].end_mm) + ", first " + io::FormatNumber(fronts[i].end_N) +
+                " offset 1,0.6 left front font ',12'\n";
+    pareto = labels + pareto;
   }
   const std::string gp = io::Figure("plots/trade", speeds, io::kFigureStrip) + io::Figure("plots/pareto", pareto, io::kFigureWide);
   io::RenderPlots(dir, {"plots/trade.gp", gp, {io::FigurePng("plots/trade"), io::FigurePng("plots/pareto")}});
