@@ -81,8 +81,9 @@ std::string TimeHistories(const std::vector<Stroke>& strokes, const std::string&
   for (const Stroke& k : strokes) t_stop_max = std::max(t_stop_max, k.t_stop_s);
   std::ostringstream body;
   // One key, in a row above the upper panel: both panels draw the same cases in the same styles.
-  body << "set multiplot layout 2,1 title 'Time histories at " << speed << " m/s (t = 0 at touchdown)'\n"
-       << "set lmargin 12\nset rmargin 4\nset key tmargin center horizontal\nset xrange [0:"
+  body << "set multiplot layout 2,1 margins 0.08, 0.98, 0.1, 0.87 spacing 0, 0.1 title 'Time histories at " << speed
+       << " m/s (t = 0 at touchdown)'\n"
+       << "set key at screen 0.5, screen 0.935 center top horizontal Left reverse samplen 3 width -1\nset xrange [0:"
        << std::max(kStrokeWindow * t_stop_max * 1e3, 1.0) << "]\nset xlabel 't [ms]'\nset ylabel 'force on pad [N]'\n"
        << "set yrange [0:*]\n" << StrokePlot(strokes, "1:3", false)
        << "unset key\nset ylabel 'penetration [mm] (down)'\nset yrange [0:*] reverse\n" << StrokePlot(strokes, "1:2", false)
@@ -182,7 +183,7 @@ std::string Peaks(const CampaignResult& r, const fs::path& dir) {
   body << "set multiplot layout 2,1 title 'Peak force and final penetration per case (colour: the pad; lighter and "
           "labelled on top: impact speed [m/s])'\n"
        << "set lmargin 12\nset rmargin 4\nset style fill solid 1 border lc rgb '#303030'\nset boxwidth " << width * 0.95
-       << "\nset key inside left top opaque\n" << tics.str() << "set xrange [-0.6:" << cases.size() - 0.4
+       << "\nset key inside left top opaque Left reverse\n" << tics.str() << "set xrange [-0.6:" << cases.size() - 0.4
        << "]\nset yrange [0:*]\nset offsets 0, 0, graph 0.15, 0\nset ylabel 'peak force [N]'\n" << panel(4)
        << "unset key\nset ylabel 'final penetration [mm]'\n" << panel(5) << "unset multiplot\n";
   return io::Figure("plots/fig4_peaks", body.str());
@@ -213,7 +214,7 @@ std::string PaperChecks(const CampaignResult& r, const fs::path& dir) {
   std::ostringstream body;
   body << "set title 'Paper checks: ratios of final penetration, simulated and published'\n" << tics.str()
        << "set xrange [-0.6:" << checks.size() - 0.4 << "]\nset yrange [0:" << 1.3 * top << "]\nset ylabel 'ratio'\n"
-       << "set style fill solid 1 border lc rgb '#303030'\nset boxwidth 0.5\nset key tmargin center horizontal\n"
+       << "set style fill solid 1 border lc rgb '#303030'\nset boxwidth 0.5\n" << io::kKeyBelow
        << "set bars 3\n"
        // The experiment's marks carry +-10 % bars: the band the parity plots draw, so a reader
        // sees whether a bar is within it without a table.

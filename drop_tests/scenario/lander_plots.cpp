@@ -233,7 +233,7 @@ std::string LoadsFigure(const PlotFrame& f) {
   const auto& trace = run.result.trace;
   std::ostringstream body;
   // One key for the pads, above the first panel; the panels below share its styles.
-  body << "set multiplot layout 3,1 margins 0.09, 0.98, 0.07, 0.87 spacing 0, 0.06 title "
+  body << "set multiplot layout 3,1 margins 0.09, 0.98, 0.1, 0.87 spacing 0, 0.06 title "
        << io::GnuplotQuote(run.scenario.name + ": loads during the landing") << "\nset xrange " << f.xrange
        << "\nset key at screen 0.5, screen 0.935 center top horizontal maxrows 1 Left reverse samplen 2 width -2\n"
        << "unset xlabel\nset style textbox opaque noborder\n" << RestMarker(run.result)

@@ -187,6 +187,8 @@ std::string LogPanel(const std::vector<Series>& series, const std::string& nothi
   return "set logscale y\nset yrange [*:1]\n" + PlotCommand(series, nothing);
 }
 
+// The curves fall from the upper left to the lower right: the key sits in the empty lower left.
+// The deepest pad, drawn first, wide and grey, lies under the pad it equals.
 std::string ExceedanceFigure(const StudySummary& s, const std::vector<DropRecord>& records, DataWriter& data) {
   const std::string style = "using 1:2 with steps linewidth 2";
   std::vector<Series> tilt;
@@ -205,13 +207,13 @@ std::string ExceedanceFigure(const StudySummary& s, const std::vector<DropRecord
   if (const std::string f = ExceedanceFile(
           data, "exceedance_deepest_pad", Values(records, [](const DropRecord& r) { return r.final_penetration_m; }), 1e3);
       !f.empty())
-    depth.push_back({f, "using 1:2 with steps linewidth 3 linecolor rgb 'black'", "deepest pad"});
+    depth.insert(depth.begin(), {f, "using 1:2 with steps linewidth 7 linecolor rgb '#b0b0b0'", "deepest pad"});
   const std::string nothing = "fewer than two distinct values: no exceedance curve";
   const std::string body =
       "set multiplot layout 1,2 title " +
       io::GnuplotQuote("Exceedance probability P[X > x] over the " + std::to_string(s.landings - s.tipped) +
                        " landings that stayed up") +
-      "\nset grid\nset key inside top right opaque\nset ylabel 'P[X > x]'\n"
+      "\nset grid\nset key inside bottom left opaque Left reverse\nset ylabel 'P[X > x]'\n"
       "set title 'max tilt'\nset xlabel 'max tilt from the vertical [deg]'\n" + LogPanel(tilt, nothing) +
       "set title 'final pad penetration'\nset xlabel 'final penetration [mm]'\n" + LogPanel(depth, nothing) +
       "unset multiplot\n";
