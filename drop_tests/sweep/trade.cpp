@@ -190,10 +190,9 @@ std::string SeriesTitle(const std::string& key) {
   return key.substr(0, key.find('|')) + ", " + io::SoilDisplayName(key.substr(key.find('|') + 1));
 }
 
-// A design limit as a horizontal black dotted line across a panel (nothing when not given).
-std::string LimitLine(double limit, const std::string& what) {
-  if (!std::isfinite(limit)) return "";
-  return ", \\\n     " + io::FormatNumber(limit) + " with lines " + io::kPaperBandLine + " title " + io::GnuplotQuote(what);
+// Marks of a series: its soil's shape (circles LP, squares CP).
+std::string SeriesPoint(const std::string& key) {
+  return "pt " + std::to_string(io::SoilPoint(key.substr(key.find('|') + 1))) + " ps 1.2";
 }
 std::string SeriesLine(const std::string& key) { return io::PadSoilLine(key.substr(0, key.find('|')), key.substr(key.find('|') + 1)); }
 std::string SeriesColourOf(const std::string& key) { return io::PadColour(key.substr(0, key.find('|'))); }
@@ -219,30 +218,36 @@ void WriteTradeFiles(const std::vector<TradeRow>& rows, const fs::path& dir, con
   // A sweep whose drops all failed has no series: each panel says so instead (a `plot` of
   // nothing is a gnuplot error).
   const std::string nothing = io::PlaceholderPlot("no completed drops: nothing to plot");
-  // Series titled in the first panel only, whose key sits below all three panels (screen
-  // coordinates, in the bottom margin every panel leaves): no key covers a panel's tics or label.
-  auto plot = [&](const std::string& columns, bool titles, const std::string& limit_line) {
+  // The three panels side by side over a strip that holds the key alone (no key covers a panel's
+  // tics or label); the strip's "plot" draws nothing but the key, every series at NaN.
+  auto plot = [&](const std::string& columns, double limit) {
     if (series.empty()) return nothing;
     std::string s = "plot ";
     for (size_t i = 0; i < series.size(); ++i)
       s += (i ? ", \\\n     " : "") + io::GnuplotQuote(series[i].first) + " using " + columns + " with linespoints " +
-           SeriesLine(series[i].second) + " pt " + std::to_string(io::SoilPoint(series[i].second.substr(series[i].second.find('|') + 1))) +
-           " ps 1.2 " + (titles ? "title " + io::GnuplotQuote(SeriesTitle(series[i].second)) : std::string("notitle"));
-    return s + limit_line + "\n";
+           SeriesLine(series[i].second) + " " + SeriesPoint(series[i].second) + " notitle";
+    if (std::isfinite(limit)) s += ", \\\n     " + io::FormatNumber(limit) + " with lines " + io::kPaperBandLine + " notitle";
+    return s + "\n";
   };
+  std::string key = "set origin 0, 0\nset size 1, 0.2\nunset border\nunset tics\nunset grid\nunset xlabel\nunset ylabel\n"
+                    "set xrange [0:1]\nset yrange [0:1]\nset key center center horizontal Left reverse samplen 3 width 2\nplot ";
+  for (size_t i = 0; i < series.size(); ++i)
+    key += (i ? ", " : "") + std::string("NaN with linespoints ") + SeriesLine(series[i].second) + " " + SeriesPoint(series[i].second) +
+           " title " + io::GnuplotQuote(SeriesTitle(series[i].second));
+  if (limits.any()) key += std::string(series.empty() ? "" : ", ") + "NaN with lines " + io::kPaperBandLine + " title 'design limit'";
+  const bool any_key = !series.empty() || limits.any();
   const std::string speeds =
-      "set multiplot layout 1,3 title 'Footpad trade study against impact speed (dotted: the design limits)'\n"
-      "set xlabel 'impact speed [m/s]'\nset bmargin 9\n"
-      "set key at screen 0.5, screen 0.01 center bottom horizontal maxrows 2\nset ylabel 'final penetration [mm]'\n" +
-      plot("1:($2*1000)", true, LimitLine(limits.max_final_penetration_m * 1e3, "allowable penetration")) +
-      "unset key\nset ylabel 'peak force [N]'\n" + plot("1:3", false, LimitLine(limits.max_peak_force_N, "allowable peak force")) +
-      "set ylabel 'energy-conversion rate [W]'\n" + plot("1:4", false, "") + "unset multiplot\n";
+      "set multiplot title 'Footpad trade study against impact speed'\nset xlabel 'impact speed [m/s]'\nunset key\n"
+      "set size 0.333, 0.74\nset origin 0, 0.2\nset ylabel 'final penetration [mm]'\n" +
+      plot("1:($2*1000)", limits.max_final_penetration_m * 1e3) + "set origin 0.333, 0.2\nset ylabel 'peak force [N]'\n" +
+      plot("1:3", limits.max_peak_force_N) + "set origin 0.666, 0.2\nset ylabel 'energy-conversion rate [W]'\n" +
+      plot("1:4", INFINITY) + (any_key ? key + "\n" : std::string()) + "unset multiplot\n";
   // The allowable region (lower left, inside the limits) shaded; feasible rows filled, the others open.
   std::string pareto = "set title " +
-                       io::GnuplotQuote(limits.any() ? "Peak force against penetration (shaded: the limits; filled: feasible; "
-                                                       "circles LP, squares CP; dashed: fronts, named by speed and soil)"
+                       io::GnuplotQuote(limits.any() ? "Peak force against penetration (shaded: within the limits; filled: feasible; "
+                                                       "dashed: fronts)"
                                                      : "Peak force against final penetration (no limits given: every pad is "
-                                                       "feasible); dashed: fronts, named by speed and soil") +
+                                                       "feasible); dashed: fronts") +
                        "\nset xlabel 'final penetration [mm]'\nset ylabel 'peak force [N]'\nset key outside right top\n";
   if (std::isfinite(limits.max_final_penetration_m) || std::isfinite(limits.max_peak_force_N))
     pareto += "set object 1 rect from graph 0, graph 0 to " +
