@@ -311,7 +311,7 @@ std::string DropFigure(const DatasetDrop& m, const DatasetDrop& sim_drop) {
   const std::string xrange = end_s > 0.0 ? "set xrange [*:" + io::FormatNumber(1.15 * end_s * 1e3) + "]\n" : "";
   const std::string body =
       "set multiplot layout 1,2 title " +
-      io::GnuplotQuote(m.drop_id + ": " + m.pad + " on " + m.soil + " (" + rft::AtmosphereName(m.atmosphere) + "), " +
+      io::GnuplotQuote(m.drop_id + ": " + m.pad + " on " + io::SoilDisplayName(m.soil) + " (" + rft::AtmosphereName(m.atmosphere) + "), " +
                        io::FormatNumber(m.impact_speed_m_s) + " m/s") +
       "\nset key top right\nset xlabel 't [ms]'\nset ylabel 'force [N]'\n" + xrange + "plot " + meas +
       " using ($1*1000):3 skip 1 with points pt 7 ps 0.6 lc rgb '#000000' title 'measured', " + sim +

@@ -281,8 +281,8 @@ bool WriteResiduals(const Diagnosis& d, const dataset::Dataset& ds, const Candid
 constexpr const char* kBaseLine = io::kBaseLine;
 const std::string kAugmentedLine = std::string("lw 2.5 lc rgb '") + io::kAugmentedColour + "'";
 // Residuals are noisy samples: points, not lines joining the noise.
-constexpr const char* kBasePoints = "pt 7 ps 0.35 lc rgb '#6e6e6e'";
-const std::string kAugmentedPoints = std::string("pt 7 ps 0.35 lc rgb '") + io::kAugmentedColour + "'";
+constexpr const char* kBasePoints = "pt 7 ps 0.8 lc rgb '#6e6e6e'";
+const std::string kAugmentedPoints = std::string("pt 7 ps 0.8 lc rgb '") + io::kAugmentedColour + "'";
 // Six panels on a grid with room below for the one key they share.
 constexpr const char* kSixPanels = " margins 0.07, 0.98, 0.14, 0.9 spacing 0.07, 0.12";
 
@@ -341,6 +341,14 @@ std::string ResidualFigure(const std::string& aug_title, bool residuals) {
   return io::Figure("plots/residuals", body.str());
 }
 
+// A drop id for a tic under a panel that already names the atmosphere: "_<atmosphere>" and a
+// trailing "_t0" (the one trial of most conditions) left out; the full ids are in the report.
+std::string ShortId(std::string id, const std::string& atmosphere) {
+  if (const size_t at = id.find("_" + atmosphere); at != std::string::npos) id.erase(at, atmosphere.size() + 1);
+  if (id.ends_with("_t0")) id.resize(id.size() - 3);
+  return id;
+}
+
 // data/gap_<atmosphere>.csv: the drops in one atmosphere, numbered, with their force NRMSE before
 // and after and the noise floor; false when there is none.
 bool WriteGapPerDropData(const Diagnosis& d, const dataset::Dataset& ds, const CandidateScore& after,
@@ -350,7 +358,7 @@ bool WriteGapPerDropData(const Diagnosis& d, const dataset::Dataset& ds, const C
   for (size_t i = 0; i < d.problem.drops.size(); ++i) {
     const dataset::DatasetDrop& m = ds.drops[d.problem.drops[i].dataset_index];
     if (m.atmosphere != atmosphere) continue;
-    rows << k++ << ',' << m.drop_id << (d.problem.drops[i].train ? "" : "*") << ','
+    rows << k++ << ',' << ShortId(m.drop_id, rft::AtmosphereName(atmosphere)) << (d.problem.drops[i].train ? "" : "*") << ','
          << io::FormatNumber(d.base.gaps[i].force_nrmse) << ',' << io::FormatNumber(after.gaps[i].force_nrmse) << ','
          << io::FormatNumber(d.base.gaps[i].noise_nrmse) << '\n';
   }
@@ -365,13 +373,14 @@ std::string GapPerDropFigure(const std::string& aug_title, const std::array<bool
   std::ostringstream body;
   // Drop ids upright and small, held-out ones starred; a drop the effect made worse carries a
   // down-pointing mark above its bars.
-  body << "set multiplot layout 2,1 title " << io::GnuplotQuote("Force NRMSE per drop: base and " + aug_title + " (* held out)")
-       << "\nset style fill solid 1 border lc rgb '#303030'\nset boxwidth 0.38\nset xtics rotate by 90 right font ',9'\n"
-          "set lmargin 12\nset rmargin 4\nset ylabel 'force NRMSE'\nset yrange [0:*]\nset offsets 0, 0, graph 0.12, 0\n"
-          "set key inside top right opaque horizontal maxrows 2\n";
+  body << "set multiplot layout 2,1 margins 0.08, 0.98, 0.14, 0.83 spacing 0, 0.2 title "
+       << io::GnuplotQuote("Force NRMSE per drop: base and " + aug_title + " (* held out)")
+       << "\nset style fill solid 1 border lc rgb '#303030'\nset boxwidth 0.38\nset xtics rotate by 30 right font ',11'\n"
+          "set ylabel 'force NRMSE'\nset yrange [0:*]\nset offsets 0, 0, graph 0.12, 0\n"
+          "set key at screen 0.5, screen 0.955 center top horizontal maxrows 1 Left reverse samplen 2\n";
   int panel = 0;
   for (const char* atmosphere : {"vacuum", "air"}) {
-    body << "set title 'drops in " << atmosphere << "'\n";
+    body << "set title 'drops in " << atmosphere << "'\n" << (panel > 0 ? "unset key\n" : "");
     if (!has_drops[panel++]) {
       body << io::PlaceholderPlot(std::string("no drop in ") + atmosphere);
       continue;

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "drop_tests/io/catalog.h"
+#include "drop_tests/io/dataset_csv.h"
 #include "drop_tests/io/figure_style.h"
 #include "drop_tests/io/output_path.h"
 #include "drop_tests/io/plot_runner.h"
@@ -35,8 +36,23 @@ std::string LogRange(const char* axis, const std::vector<double>& values) {
     if (v > 0.0 && std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
   if (!(lo <= hi)) return std::string("set ") + axis + "range [*:*]\n";
   const double margin = std::max(1.15, std::pow(hi / lo, 0.08));
+  lo /= margin;
+  hi *= margin;
   std::ostringstream s;
-  s << std::setprecision(6) << "set " << axis << "range [" << lo / margin << ":" << hi * margin << "]\n";
+  s << std::setprecision(6) << "set " << axis << "range [" << lo << ":" << hi << "]\n";
+  // Tics at 1, 2, 5 times the powers of ten (every digit when the range is narrower): gnuplot's
+  // own log tics are the decades only, none or one of which falls inside a fitted range.
+  for (const std::vector<int>& digits : {std::vector<int>{1, 2, 5}, std::vector<int>{1, 2, 3, 4, 5, 6, 7, 8, 9}}) {
+    std::vector<double> tics;
+    for (double decade = std::pow(10.0, std::floor(std::log10(lo))); decade <= hi; decade *= 10.0)
+      for (int d : digits)
+        if (d * decade >= lo && d * decade <= hi) tics.push_back(d * decade);
+    if (tics.size() < 3 && digits.size() == 3) continue;
+    s << "set " << axis << "tics (";
+    for (size_t i = 0; i < tics.size(); ++i) s << (i ? ", " : "") << io::FormatNumber(tics[i]);
+    s << ")\n";
+    break;
+  }
   return s.str();
 }
 
@@ -112,7 +128,7 @@ std::string TrendFigure(const std::string& dir, const SourceResult& r, const Tre
   std::string body = "set title " + io::GnuplotQuote(r.source->id + ": " + io::Words(m.id)) + "\nset logscale xy\nset xlabel " +
                      io::GnuplotQuote(x_label) + "\nset ylabel " +
                      io::GnuplotQuote(io::Words(QuantityName(m.quantity)) + " [" + QuantityUnit(m.quantity) + "]") + "\n" +
-                     LogRange("x", xs) + LogRange("y", ys) + "set key top left opaque\n";
+                     LogRange("x", xs) + LogRange("y", ys) + io::kKeyBelow + "set key maxrows 3\nset bmargin 10\n";
   if (!exponent)
     body += "set label 3 " +
             io::GnuplotQuote(std::string("measured: ") + io::Words(QuantityName(m.quantity)) +
@@ -140,7 +156,7 @@ std::string TrendFigure(const std::string& dir, const SourceResult& r, const Tre
                       (edge == x + 2 ? " title 'measured: tolerance'" : " notitle"));
   }
   for (size_t i = 0; i < items.size(); ++i) body += (i ? ", \\\n     " : "") + items[i];
-  return base + "|" + body + "\nunset logscale xy\nunset label 3\n";
+  return base + "|" + body + "\nunset logscale xy\nunset label 3\nset xtics autofreq\nset ytics autofreq\n";
 }
 
 void WritePlots(const std::string& dir, const ValidationResult& result) {
