@@ -283,26 +283,24 @@ const std::string kAugmentedLine = std::string("lw 2.5 lc rgb '") + io::kAugment
 // Residuals are noisy samples: points, not lines joining the noise.
 constexpr const char* kBasePoints = "pt 7 ps 0.8 lc rgb '#6e6e6e'";
 const std::string kAugmentedPoints = std::string("pt 7 ps 0.8 lc rgb '") + io::kAugmentedColour + "'";
-// Six panels on a grid with room below for the one key they share.
-constexpr const char* kSixPanels = " margins 0.07, 0.98, 0.14, 0.9 spacing 0.07, 0.12";
+// Six panels on a grid, room between them for their titles and labels.
+constexpr const char* kSixPanels = " margins 0.07, 0.98, 0.1, 0.9 spacing 0.07, 0.15";
 
 std::string OverlayFigure(const Diagnosis& d, const dataset::Dataset& ds, const std::vector<size_t>& held,
                           const std::string& aug_title, bool against_penetration) {
   std::ostringstream body;
-  // One key, below the panels (screen coordinates): a key in each panel covers its peak.
+  // The styles named in the title, no key: a key inside a panel covers its peak.
   body << "set multiplot layout 2,3" << kSixPanels << " title "
-       << io::GnuplotQuote("Held-out drops: measured, base and " + aug_title +
-                           (against_penetration ? " (force against penetration)" : " (force against time)"))
-       << "\nset key at screen 0.5, screen 0.01 center bottom horizontal\n";
-  bool first = true;
+       << io::GnuplotQuote(std::string(against_penetration ? "Force against penetration" : "Force against time") +
+                           " of the held-out drops: measured (black points), base (grey, dashed), " + aug_title +
+                           " (purple)")
+       << "\nunset key\n";
   for (size_t i : held) {
-    if (!first) body << "unset key\n";
-    first = false;
     const dataset::DatasetDrop& m = ds.drops[d.problem.drops[i].dataset_index];
     const std::string columns = against_penetration ? "($5*1000):2" : "($1*1000):2";
     body << "set title " << io::GnuplotQuote(m.drop_id + " (" + rft::AtmosphereName(m.atmosphere) + ")") << "\nset xlabel "
          << (against_penetration ? "'penetration [mm]'" : "'t [ms]'") << "\nset ylabel 'force [N]'\nplot "
-         << io::GnuplotQuote("data/" + m.drop_id + ".csv") << " using " << columns << " with points pt 7 ps 0.4 lc rgb '#000000' title 'measured', "
+         << io::GnuplotQuote("data/" + m.drop_id + ".csv") << " using " << columns << " with points pt 7 ps 0.8 lc rgb '#000000' title 'measured', "
          << "'' using " << (against_penetration ? "($6*1000):3" : "($1*1000):3") << " with lines " << kBaseLine << " title 'base', "
          << "'' using " << (against_penetration ? "($7*1000):4" : "($1*1000):4") << " with lines " << kAugmentedLine
          << " title 'with effect'\n";
