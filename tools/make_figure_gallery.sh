@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Regenerates docs/figures/gallery/: one PNG of every figure touchdown draws, from the shipped
-# examples run small (a campaign, the three lander cases, a 60-landing lab study, the pad trade,
+# examples run small (a campaign, the three lander cases, a 40-landing lab study, the pad trade,
 # a comparison, a diagnosis, the validation set), shrunk to 800 pixels wide and to a 64-colour
 # palette so the committed gallery stays under a few MB. docs/figures.md shows them.
 #
@@ -24,7 +24,7 @@ cd "$work"
 for c in A B C; do
   "$td" lander "$root/data/scenarios/lander_case_$c.yaml" --out "lander_case_$c" > /dev/null
 done
-"$td" stability "$root/data/studies/lab_paper_lander.yaml" --out stability --samples 60 --threads 2 \
+"$td" stability "$root/data/studies/lab_paper_lander.yaml" --out stability --samples 40 --threads 2 \
   --progress none > /dev/null
 "$td" trade "$root/data/sweeps/pad_trade.yaml" --out trade > /dev/null
 "$td" compare "$root/data/datasets/air_vs_vacuum_synthetic" --out compare > /dev/null
