@@ -100,7 +100,7 @@ std::string Range(const LanderSpec& lander, const std::vector<lander::LanderSamp
 }
 
 // "pads 1 and 3 coincide; pads 2 and 4 coincide" for the pads whose traces (columns first_column
-// .. +kLegs) stay within 0.5 % of the largest value of any pad of each other over the window, ""
+// .. +kLegs) stay within 1 % of the largest value of any pad of each other over the window, ""
 // when none do: a pad drawn exactly over another would otherwise look missing.
 std::string CoincidentPads(const LanderSpec& lander, const std::vector<lander::LanderSample>& trace, const Window& w,
                            size_t first_column) {
@@ -108,7 +108,7 @@ std::string CoincidentPads(const LanderSpec& lander, const std::vector<lander::L
   double scale = 0.0;
   for (const std::vector<double>& column : v)
     for (double x : column) scale = std::max(scale, std::abs(x));
-  const double tolerance = 5e-3 * scale;
+  const double tolerance = 1e-2 * scale;
   auto same = [&](int a, int b) {
     for (size_t k = 0; k < v[a].size(); ++k)
       if (std::abs(v[a][k] - v[b][k]) > tolerance) return false;
@@ -234,12 +234,12 @@ std::string LoadsFigure(const PlotFrame& f) {
   std::ostringstream body;
   // One key for the pads, above the first panel; the panels below share its styles.
   body << "set multiplot layout 3,1 margins 0.09, 0.98, 0.1, 0.87 spacing 0, 0.06 title "
-       << io::GnuplotQuote(run.scenario.name + ": loads during the landing") << "\nset xrange " << f.xrange
+       << io::GnuplotQuote(run.scenario.name + ": loads during the landing (leg force along the leg, compression +)") << "\nset xrange " << f.xrange
        << "\nset key at screen 0.5, screen 0.935 center top horizontal maxrows 1 Left reverse samplen 2 width -2\n"
        << "unset xlabel\nset style textbox opaque noborder\n" << RestMarker(run.result)
-       << "set ylabel 'soil force on pad [N]'\nset yrange " << Range(lander, trace, f.w, 4 + kLegs, kLegs, 1.0, 0.15) << "\n"
+       << "set ylabel 'soil force [N]'\nset yrange " << Range(lander, trace, f.w, 4 + kLegs, kLegs, 1.0, 0.15) << "\n"
        << Note(CoincidentPads(lander, trace, f.w, 4 + kLegs)) << PerPad(kForceColumn, run, f.mark_every)
-       << "unset key\nset ylabel 'leg axial force [N], compression +'\nset yrange "
+       << "unset key\nset ylabel 'leg axial force [N]'\nset yrange "
        << Range(lander, trace, f.w, 4 + 2 * kLegs, kLegs, 1.0, 0.15) << "\n"
        << Note(CoincidentPads(lander, trace, f.w, 4 + 2 * kLegs)) << PerPad(kLegColumn, run, f.mark_every)
        << "unset label 2\nset key inside right top\nset xlabel 't [ms] (release at 0)'\nset ylabel 'a_z [m/s^2]'\nset yrange "

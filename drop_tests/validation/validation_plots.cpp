@@ -80,9 +80,9 @@ std::string CurveFigure(const std::string& dir, const SourceResult& r, const Cur
         out << p.point->impact_speed_m_s << "," << p.point->value * f << "," << p.point->uncertainty * f << "\n";
   });
   const std::string file = r.source->id + "_" + QuantityName(c.quantity);
-  std::string body = "set title " + io::GnuplotQuote(r.source->id + ": " + QuantityName(c.quantity) + " against impact speed") +
+  std::string body = "set title " + io::GnuplotQuote(r.source->id + ": " + io::Words(QuantityName(c.quantity)) + " against impact speed") +
                      "\nset xlabel 'impact speed [m/s]'\nset ylabel " +
-                     io::GnuplotQuote(std::string(QuantityName(c.quantity)) + " [" + QuantityUnit(c.quantity) + "]") +
+                     io::GnuplotQuote(io::Words(QuantityName(c.quantity)) + " [" + QuantityUnit(c.quantity) + "]") +
                      "\nset key top left\nplot " + io::GnuplotQuote("plots/" + file + "_measured.csv") +
                      " using 1:2:3 with yerrorbars " + io::kMeasuredPoints + " title 'measured'";
   for (size_t k = 0; k < r.variants.size(); ++k)
