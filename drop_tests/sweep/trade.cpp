@@ -234,8 +234,8 @@ void WriteTradeFiles(const std::vector<TradeRow>& rows, const fs::path& dir, con
   for (size_t i = 0; i < series.size(); ++i)
     key += (i ? ", " : "") + std::string("NaN with linespoints ") + SeriesLine(series[i].second) + " " + SeriesPoint(series[i].second) +
            " title " + io::GnuplotQuote(SeriesTitle(series[i].second));
-  if (limits.any()) key += std::string(series.empty() ? "" : ", ") + "NaN with lines " + io::kPaperBandLine + " title 'design limit'";
-  const bool any_key = !series.empty() || limits.any();
+  if (limits.any()) key += ", NaN with lines " + std::string(io::kPaperBandLine) + " title 'design limit'";
+  const bool any_key = !series.empty();  // no series: the panels say so, and there is nothing to key
   const std::string speeds =
       "set multiplot title 'Footpad trade study against impact speed'\nset xlabel 'impact speed [m/s]'\nunset key\n"
       "set size 0.333, 0.74\nset origin 0, 0.2\nset ylabel 'final penetration [mm]'\n" +
