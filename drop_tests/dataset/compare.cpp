@@ -289,22 +289,36 @@ nlohmann::json ComparisonJson(const Comparison& c) {
 }
 
 namespace {
+// The instant after which neither trace carries force (above 1 % of the larger peak): the time
+// axis ends a little after it, not where the longer recording happens to stop.
+double ContactEnd(const DatasetTrace& a, const DatasetTrace& b) {
+  double peak = 0.0, end = 0.0;
+  for (const DatasetTrace* t : {&a, &b})
+    for (double f : t->force_N) peak = std::max(peak, std::abs(f));
+  for (const DatasetTrace* t : {&a, &b})
+    for (size_t k = 0; k < t->size(); ++k)
+      if (std::abs(t->force_N[k]) > 0.01 * peak) end = std::max(end, t->t_s[k]);
+  return end;
+}
+
 // One drop: force against time and against penetration, measured (black points) and simulated
 // (the pad's colour, the soil's dash).
-std::string DropFigure(const DatasetDrop& m) {
+std::string DropFigure(const DatasetDrop& m, const DatasetDrop& sim_drop) {
   const std::string meas = io::GnuplotQuote("plots/data/" + m.drop_id + "_measured.csv");
   const std::string sim = io::GnuplotQuote("plots/data/" + m.drop_id + "_simulated.csv");
   const std::string line = io::PadSoilLine(m.pad, m.soil);
+  const double end_s = ContactEnd(m.trace, sim_drop.trace);
+  const std::string xrange = end_s > 0.0 ? "set xrange [*:" + io::FormatNumber(1.15 * end_s * 1e3) + "]\n" : "";
   const std::string body =
       "set multiplot layout 1,2 title " +
-      io::GnuplotQuote(m.drop_id + ": " + m.pad + " on " + m.soil + " (" + rft::AtmosphereName(m.atmosphere) + "), " +
+      io::GnuplotQuote(m.drop_id + ": " + m.pad + " on " + io::SoilDisplayName(m.soil) + " (" + rft::AtmosphereName(m.atmosphere) + "), " +
                        io::FormatNumber(m.impact_speed_m_s) + " m/s") +
-      "\nset key top right\nset xlabel 't [ms]'\nset ylabel 'force [N]'\nplot " + meas +
+      "\nset key top right\nset xlabel 't [ms]'\nset ylabel 'force [N]'\n" + xrange + "plot " + meas +
       " using ($1*1000):3 skip 1 with points pt 7 ps 0.6 lc rgb '#000000' title 'measured', " + sim +
-      " using ($1*1000):3 skip 1 with lines " + line + " title 'simulated'\nset xlabel 'penetration [mm]'\nplot " + meas +
+      " using ($1*1000):3 skip 1 with lines " + line + " title 'simulated'\nset xlabel 'penetration [mm]'\nset xrange [*:*]\nplot " + meas +
       " using ($2*1000):3 skip 1 with points pt 7 ps 0.6 lc rgb '#000000' title 'measured', " + sim +
       " using ($2*1000):3 skip 1 with lines " + line + " title 'simulated'\nunset multiplot\n";
-  return io::Figure("plots/drops/" + m.drop_id, body, io::kFigureStrip, /*svg=*/false);
+  return io::Figure("plots/drops/" + m.drop_id, body, io::kFigureStrip);
 }
 
 // Every drop at once: simulated against measured final penetration and peak force, the line of
@@ -324,6 +338,15 @@ std::string ParityFigure(const Comparison& c, const fs::path& dir) {
       out << std::stoi(io::PadColour(d.pad).substr(1), nullptr, 16) << ',' << (d.atmosphere == "air" ? 6 : 7) << '\n';
     }
   });
+  // The key: one entry per pad (its colour) and per atmosphere (filled or open), from points
+  // drawn at NaN, so the colours of the data points need no legend of their own.
+  std::vector<std::string> pads;
+  for (const DropComparison& d : c.drops)
+    if (std::find(pads.begin(), pads.end(), d.pad) == pads.end()) pads.push_back(d.pad);
+  std::string key;
+  for (const std::string& pad : pads)
+    key += ", NaN with points pt 5 ps 1.8 lc rgb '" + io::PadColour(pad) + "' title " + io::GnuplotQuote("pad: " + pad);
+  key += ", NaN with points pt 7 ps 1.8 lc rgb '#000000' title 'vacuum', NaN with points pt 6 ps 1.8 lc rgb '#000000' title 'air'";
   std::string body = "set multiplot layout 1,2 title 'Simulated against measured, every drop (colour: pad; filled: "
                      "vacuum, open: air; dashed: +-10 %)'\nset key top left\nset size ratio -1\n";
   const char* names[2] = {"final penetration [mm]", "peak force [N]"};
@@ -333,7 +356,7 @@ std::string ParityFigure(const Comparison& c, const fs::path& dir) {
             hi + "]\nset yrange [0:" + hi + "]\nplot x with lines lw 1.5 lc rgb '#000000' title 'agreement', 1.1*x with lines " +
             io::kPaperBandLine + " notitle, 0.9*x with lines " + io::kPaperBandLine +
             " notitle, 'plots/data/parity.csv' skip 1 using " + std::to_string(2 * p + 1) + ":" + std::to_string(2 * p + 2) +
-            ":6:5 with points pt variable ps 1.8 lc rgb variable notitle\n";
+            ":6:5 with points pt variable ps 1.8 lc rgb variable notitle" + (p == 0 ? key : std::string()) + "\n";
   }
   return io::Figure("plots/parity", body + "unset multiplot\n", io::kFigureStrip);
 }
@@ -371,7 +394,7 @@ void WriteComparison(const Comparison& c, const Dataset& measured, const Dataset
             out << io::FormatNumber(t.t_s[k]) << ',' << io::FormatNumber(t.penetration_m[k]) << ',' << io::FormatNumber(t.force_N[k])
                 << '\n';
         });
-      script.text += DropFigure(m);
+      script.text += DropFigure(m, *partners[i]);
       script.outputs.push_back(io::FigurePng("plots/drops/" + m.drop_id));
     }
     fs::create_directories(dir / "plots" / "drops");

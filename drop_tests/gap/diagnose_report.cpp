@@ -278,22 +278,29 @@ bool WriteResiduals(const Diagnosis& d, const dataset::Dataset& ds, const Candid
 // plots/diagnose.gp: overlays (force against time and against penetration), residuals, gap per
 // drop, each a Figure (PNG + SVG). Measured: black points; base model: grey, dashed; the model
 // with the effect: one accent colour that no pad uses elsewhere.
-constexpr const char* kBaseLine = "lw 2.5 dt 2 lc rgb '#6e6e6e'";
-constexpr const char* kAugmentedLine = "lw 2.5 lc rgb '#AA3377'";
+constexpr const char* kBaseLine = io::kBaseLine;
+const std::string kAugmentedLine = std::string("lw 2.5 lc rgb '") + io::kAugmentedColour + "'";
+// Residuals are noisy samples: points, not lines joining the noise.
+constexpr const char* kBasePoints = "pt 7 ps 0.8 lc rgb '#6e6e6e'";
+const std::string kAugmentedPoints = std::string("pt 7 ps 0.8 lc rgb '") + io::kAugmentedColour + "'";
+// Six panels on a grid, room between them for their titles and labels.
+constexpr const char* kSixPanels = " margins 0.07, 0.98, 0.1, 0.9 spacing 0.07, 0.15";
 
 std::string OverlayFigure(const Diagnosis& d, const dataset::Dataset& ds, const std::vector<size_t>& held,
                           const std::string& aug_title, bool against_penetration) {
   std::ostringstream body;
-  body << "set multiplot layout 2,3 title "
-       << io::GnuplotQuote("Held-out drops: measured, base and " + aug_title +
-                           (against_penetration ? " (force against penetration)" : " (force against time)"))
-       << "\nset key top left\n";
+  // The styles named in the title, no key: a key inside a panel covers its peak.
+  body << "set multiplot layout 2,3" << kSixPanels << " title "
+       << io::GnuplotQuote(std::string(against_penetration ? "Force against penetration" : "Force against time") +
+                           " of the held-out drops: measured (black points), base (grey, dashed), " + aug_title +
+                           " (purple)")
+       << "\nunset key\n";
   for (size_t i : held) {
     const dataset::DatasetDrop& m = ds.drops[d.problem.drops[i].dataset_index];
     const std::string columns = against_penetration ? "($5*1000):2" : "($1*1000):2";
     body << "set title " << io::GnuplotQuote(m.drop_id + " (" + rft::AtmosphereName(m.atmosphere) + ")") << "\nset xlabel "
          << (against_penetration ? "'penetration [mm]'" : "'t [ms]'") << "\nset ylabel 'force [N]'\nplot "
-         << io::GnuplotQuote("data/" + m.drop_id + ".csv") << " using " << columns << " with points pt 7 ps 0.4 lc rgb '#000000' title 'measured', "
+         << io::GnuplotQuote("data/" + m.drop_id + ".csv") << " using " << columns << " with points pt 7 ps 0.8 lc rgb '#000000' title 'measured', "
          << "'' using " << (against_penetration ? "($6*1000):3" : "($1*1000):3") << " with lines " << kBaseLine << " title 'base', "
          << "'' using " << (against_penetration ? "($7*1000):4" : "($1*1000):4") << " with lines " << kAugmentedLine
          << " title 'with effect'\n";
@@ -307,8 +314,16 @@ std::string OverlayFigure(const Diagnosis& d, const dataset::Dataset& ds, const 
 // (the effects the library names often act in one atmosphere only).
 std::string ResidualFigure(const std::string& aug_title, bool residuals) {
   std::ostringstream body;
-  body << "set multiplot layout 2,2 title 'Held-out force residual (simulated - measured) / measured peak force; one "
-          "line per drop'\nset xlabel 't [ms]'\nset ylabel 'normalised residual'\nunset key\n";
+  body << "set xlabel 't [ms]'\nset ylabel 'normalised residual'\nunset key\n";
+  // One scale on every panel, so base and effect, vacuum and air compare by eye.
+  if (residuals)
+    body << "stats 'data/residuals_held_out.csv' using ($1*1000):2 nooutput name 'B'\n"
+            "stats 'data/residuals_held_out.csv' using ($1*1000):3 nooutput name 'A'\n"
+            "r_lo = (A_min_y < B_min_y ? A_min_y : B_min_y); r_hi = (A_max_y > B_max_y ? A_max_y : B_max_y)\n"
+            "r_pad = 0.05 * (r_hi - r_lo) + 1e-3\nset yrange [r_lo - r_pad : r_hi + r_pad]\n"
+            "set xrange [(A_min_x < B_min_x ? A_min_x : B_min_x) : (A_max_x > B_max_x ? A_max_x : B_max_x)]\n";
+  body << "set multiplot layout 2,2 title 'Held-out force residual (simulated - measured) / measured peak force; "
+          "every drop, one scale'\n";
   for (const char* atmosphere : {"vacuum", "air"})
     for (int model = 0; model < 2; ++model) {
       body << "set title " << io::GnuplotQuote(std::string(model == 0 ? "base" : aug_title) + ", drops in " + atmosphere) << "\n";
@@ -317,11 +332,19 @@ std::string ResidualFigure(const std::string& aug_title, bool residuals) {
         continue;
       }
       body << "plot 'data/residuals_held_out.csv' using ($1*1000):(strcol(4) eq '" << atmosphere << "' ? $"
-           << (model == 0 ? 2 : 3) << " : 1/0) with lines " << (model == 0 ? kBaseLine : kAugmentedLine)
+           << (model == 0 ? 2 : 3) << " : 1/0) with points " << (model == 0 ? std::string(kBasePoints) : kAugmentedPoints)
            << " notitle, 0 with lines lw 1 lc rgb '#000000' notitle\n";
     }
   body << "unset multiplot\n";
   return io::Figure("plots/residuals", body.str());
+}
+
+// A drop id for a tic under a panel that already names the atmosphere: "_<atmosphere>" and a
+// trailing "_t0" (the one trial of most conditions) left out; the full ids are in the report.
+std::string ShortId(std::string id, const std::string& atmosphere) {
+  if (const size_t at = id.find("_" + atmosphere); at != std::string::npos) id.erase(at, atmosphere.size() + 1);
+  if (id.ends_with("_t0")) id.resize(id.size() - 3);
+  return id;
 }
 
 // data/gap_<atmosphere>.csv: the drops in one atmosphere, numbered, with their force NRMSE before
@@ -333,7 +356,7 @@ bool WriteGapPerDropData(const Diagnosis& d, const dataset::Dataset& ds, const C
   for (size_t i = 0; i < d.problem.drops.size(); ++i) {
     const dataset::DatasetDrop& m = ds.drops[d.problem.drops[i].dataset_index];
     if (m.atmosphere != atmosphere) continue;
-    rows << k++ << ',' << m.drop_id << (d.problem.drops[i].train ? "" : " (held out)") << ','
+    rows << k++ << ',' << ShortId(m.drop_id, rft::AtmosphereName(atmosphere)) << (d.problem.drops[i].train ? "" : "*") << ','
          << io::FormatNumber(d.base.gaps[i].force_nrmse) << ',' << io::FormatNumber(after.gaps[i].force_nrmse) << ','
          << io::FormatNumber(d.base.gaps[i].noise_nrmse) << '\n';
   }
@@ -346,21 +369,26 @@ bool WriteGapPerDropData(const Diagnosis& d, const dataset::Dataset& ds, const C
 // the sensor-noise floor each drop cannot go below.
 std::string GapPerDropFigure(const std::string& aug_title, const std::array<bool, 2>& has_drops) {
   std::ostringstream body;
-  body << "set multiplot layout 2,1 title " << io::GnuplotQuote("Force NRMSE per drop: base and " + aug_title)
-       << "\nset style fill solid 1 border lc rgb '#303030'\nset boxwidth 0.38\nset xtics rotate by -50 font ',10'\n"
-          "set bmargin 9\nset lmargin 12\nset rmargin 30\nset ylabel 'force NRMSE'\nset yrange [0:*]\n"
-          "set key outside right top\n";
+  // Drop ids upright and small, held-out ones starred; a drop the effect made worse carries a
+  // down-pointing mark above its bars.
+  body << "set multiplot layout 2,1 margins 0.08, 0.98, 0.14, 0.83 spacing 0, 0.2 title "
+       << io::GnuplotQuote("Force NRMSE per drop: base and " + aug_title + " (* held out)")
+       << "\nset style fill solid 1 border lc rgb '#303030'\nset boxwidth 0.38\nset xtics rotate by 30 right font ',11'\n"
+          "set ylabel 'force NRMSE'\nset yrange [0:*]\nset offsets 0, 0, graph 0.12, 0\n"
+          "set key at screen 0.5, screen 0.955 center top horizontal maxrows 1 Left reverse samplen 2\n";
   int panel = 0;
   for (const char* atmosphere : {"vacuum", "air"}) {
-    body << "set title 'drops in " << atmosphere << "'\n";
+    body << "set title 'drops in " << atmosphere << "'\n" << (panel > 0 ? "unset key\n" : "");
     if (!has_drops[panel++]) {
       body << io::PlaceholderPlot(std::string("no drop in ") + atmosphere);
       continue;
     }
     const std::string file = std::string("'data/gap_") + atmosphere + ".csv'";
     body << "plot " << file << " skip 1 using ($1-0.2):3:xtic(2) with boxes lc rgb '#9e9e9e' title 'base', "
-         << file << " skip 1 using ($1+0.2):4 with boxes lc rgb '#AA3377' title 'with effect', "
-         << file << " skip 1 using 1:5 with points pt 5 ps 1 lc rgb '#000000' title 'sensor-noise floor'\n";
+         << file << " skip 1 using ($1+0.2):4 with boxes lc rgb '" << io::kAugmentedColour << "' title 'with effect', "
+         << file << " skip 1 using 1:5 with points pt 5 ps 1 lc rgb '#000000' title 'sensor-noise floor', "
+         << file << " skip 1 using 1:($4 > $3 ? ($4 > $5 ? $4 : $5) * 1.08 : 1/0) with points pt 11 ps 1.8 lc rgb '"
+         << io::kAugmentedColour << "' title 'made worse by the effect'\n";
   }
   body << "unset multiplot\n";
   return io::Figure("plots/gap_per_drop", body.str(), io::kFigureWide);

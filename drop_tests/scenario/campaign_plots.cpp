@@ -29,7 +29,7 @@ struct Stroke {  // one reference-speed drop, densely sampled: plots/data/<drop_
   double t_stop_s = 0.0;
 };
 
-std::string Label(const std::string& pad, const std::string& soil) { return pad + ", " + soil; }
+std::string Label(const std::string& pad, const std::string& soil) { return pad + ", " + io::SoilDisplayName(soil); }
 
 // The reference-speed drops again at the plot's sampling, written up to kStrokeWindow times the
 // last stop (the time histories' range); columns: t [ms], penetration [mm], force [N].
@@ -80,11 +80,13 @@ std::string TimeHistories(const std::vector<Stroke>& strokes, const std::string&
   double t_stop_max = 0.0;
   for (const Stroke& k : strokes) t_stop_max = std::max(t_stop_max, k.t_stop_s);
   std::ostringstream body;
-  body << "set multiplot layout 2,1 title 'Time histories at " << speed << " m/s (t = 0 at touchdown)'\n"
-       << "set lmargin 12\nset rmargin 30\nset key outside right top\nset xrange [0:"
+  // One key, in a row above the upper panel: both panels draw the same cases in the same styles.
+  body << "set multiplot layout 2,1 margins 0.08, 0.98, 0.1, 0.87 spacing 0, 0.1 title 'Time histories at " << speed
+       << " m/s (t = 0 at touchdown)'\n"
+       << "set key at screen 0.5, screen 0.935 center top horizontal Left reverse samplen 3 width -1\nset xrange [0:"
        << std::max(kStrokeWindow * t_stop_max * 1e3, 1.0) << "]\nset xlabel 't [ms]'\nset ylabel 'force on pad [N]'\n"
        << "set yrange [0:*]\n" << StrokePlot(strokes, "1:3", false)
-       << "set ylabel 'penetration [mm] (down)'\nset yrange [0:*] reverse\n" << StrokePlot(strokes, "1:2", false)
+       << "unset key\nset ylabel 'penetration [mm] (down)'\nset yrange [0:*] reverse\n" << StrokePlot(strokes, "1:2", false)
        << "unset multiplot\n";
   return io::Figure("plots/fig3_time_histories", body.str());
 }
@@ -106,7 +108,7 @@ std::string ForcePenetration(const CampaignResult& r, const std::vector<Stroke>&
   std::ostringstream body;
   body << "set multiplot layout 1,2 title 'Force against penetration over the stroke at " << speed << " m/s'\n"
        << "set key bottom right\nset xlabel 'penetration [mm]'\nset ylabel 'force [N]'\nset xrange [0:*]\nset yrange [0:*]\n"
-       << "set title " << io::GnuplotQuote("(a) footpad shape, " + main_soil) << "\n" << StrokePlot(by_pad, "", true)
+       << "set title " << io::GnuplotQuote("(a) footpad shape, " + io::SoilDisplayName(main_soil)) << "\n" << StrokePlot(by_pad, "", true)
        << "set title " << io::GnuplotQuote("(b) ground condition, " + first_pad + " pad") << "\n"
        << StrokePlot(by_soil, "", true) << "unset multiplot\n";
   return io::Figure("plots/fig6_force_penetration", body.str(), io::kFigureStrip);
@@ -123,11 +125,8 @@ int Shade(const std::string& colour, double weight) {
   return out;
 }
 
-std::string Hex(int rgb) {
-  std::ostringstream s;
-  s << '#' << std::hex << std::setw(6) << std::setfill('0') << rgb;
-  return s.str();
-}
+// Soils drawn hatched in Fig. 4: all but the loosely packed (io::SoilDash's solid line).
+bool Hatched(const std::string& soil) { return io::SoilDash(soil) != 1; }
 
 // Fig. 4: a bar per case and speed, grouped by case, in the pad's colour (lighter for slower
 // drops); plots/data/peaks.csv holds x, peak force, final penetration and the bar's colour.
@@ -145,7 +144,7 @@ std::string Peaks(const CampaignResult& r, const fs::path& dir) {
   const double width = 0.8 / static_cast<double>(speeds.size());
   auto weight = [&](size_t k) { return speeds.size() == 1 ? 1.0 : 0.35 + 0.65 * k / (speeds.size() - 1.0); };
   io::WriteFileAtomically((dir / "plots" / "data" / "peaks.csv").string(), [&](std::ostream& out) {
-    out << "x,case,speed_m_s,peak_force_N,final_penetration_mm,colour\n";
+    out << "x,case,speed_m_s,peak_force_N,final_penetration_mm,colour,hatched\n";
     for (size_t i = 0; i < cases.size(); ++i)
       for (size_t k = 0; k < speeds.size(); ++k)
         for (size_t j = 0; j < r.scenario.cases.size(); ++j) {
@@ -156,27 +155,37 @@ std::string Peaks(const CampaignResult& r, const fs::path& dir) {
           out << io::FormatNumber(i + (k - 0.5 * (speeds.size() - 1.0)) * width) << ',' << c.drop_id << ','
               << io::FormatNumber(speeds[k]) << ',' << io::FormatNumber(r.drops[j].result.peak_force_N) << ','
               << io::FormatNumber(r.drops[j].result.final_penetration_m * 1e3) << ','
-              << Shade(io::PadColour(c.pad->name), weight(k)) << '\n';
+              << Shade(io::PadColour(c.pad->name), weight(k)) << ',' << (Hatched(c.soil.name) ? 1 : 0) << '\n';
         }
   });
   std::ostringstream tics, key;
   tics << "set xtics (";
   for (size_t i = 0; i < cases.size(); ++i)
-    tics << (i ? ", " : "") << io::GnuplotQuote(cases[i].first + " / " + cases[i].second) << " " << i;
+    tics << (i ? ", " : "") << io::GnuplotQuote(cases[i].first + " / " + io::SoilDisplayName(cases[i].second)) << " " << i;
   tics << ")\n";
-  key << ", \\\n     ";
-  for (size_t k = 0; k < speeds.size(); ++k)
-    key << (k ? ", \\\n     " : "") << "NaN with boxes fs solid 1 lc rgb '" << Hex(Shade("#404040", weight(k)))
-        << "' title " << io::GnuplotQuote(io::FormatNumber(speeds[k]) + " m/s");
+  // The key names what the hatching means (the soils); colour (the pad) is in the tics, and each
+  // bar carries its own speed, so no swatch stands for a colour no bar has.
+  std::vector<std::string> soils;
+  for (const auto& c : cases)
+    if (std::find(soils.begin(), soils.end(), c.second) == soils.end()) soils.push_back(c.second);
+  if (soils.size() > 1)
+    for (const std::string& soil : soils)
+      key << ", \\\n     NaN with boxes " << (Hatched(soil) ? "fs transparent pattern 4 lc rgb '#000000'" : "fs empty lc rgb '#303030'")
+          << " title " << io::GnuplotQuote(io::SoilDisplayName(soil) + (Hatched(soil) ? " (hatched)" : ""));
+  auto panel = [&](int column) {
+    std::ostringstream p;
+    p << "plot 'plots/data/peaks.csv' skip 1 using 1:" << column << ":6 with boxes lc rgb variable notitle, \\\n"
+      << "     '' skip 1 using 1:($7 > 0 ? $" << column << " : 1/0) with boxes fs transparent pattern 4 lc rgb '#000000' notitle, \\\n"
+      << "     '' skip 1 using 1:" << column << ":(sprintf('%g', $3)) with labels offset 0,0.8 font ',12' notitle" << key.str() << "\n";
+    return p.str();
+  };
   std::ostringstream body;
-  body << "set multiplot layout 2,1 title 'Peak force and final penetration per case (bar colour: the pad)'\n"
-       << "set lmargin 12\nset rmargin 26\nset style fill solid 1 border lc rgb '#303030'\nset boxwidth " << width * 0.95
-       << "\nset key outside right top title 'impact speed'\n" << tics.str() << "set xrange [-0.6:"
-       << cases.size() - 0.4 << "]\nset yrange [0:*]\nset ylabel 'peak force [N]'\n"
-       << "plot 'plots/data/peaks.csv' skip 1 using 1:4:6 with boxes lc rgb variable notitle" << key.str() << "\n"
-       << "set ylabel 'final penetration [mm]'\n"
-       << "plot 'plots/data/peaks.csv' skip 1 using 1:5:6 with boxes lc rgb variable notitle" << key.str() << "\n"
-       << "unset multiplot\n";
+  body << "set multiplot layout 2,1 title 'Peak force and final penetration per case (colour: the pad; lighter and "
+          "labelled on top: impact speed [m/s])'\n"
+       << "set lmargin 12\nset rmargin 4\nset style fill solid 1 border lc rgb '#303030'\nset boxwidth " << width * 0.95
+       << "\nset key inside left top opaque Left reverse\n" << tics.str() << "set xrange [-0.6:" << cases.size() - 0.4
+       << "]\nset yrange [0:*]\nset offsets 0, 0, graph 0.15, 0\nset ylabel 'peak force [N]'\n" << panel(4)
+       << "unset key\nset ylabel 'final penetration [mm]'\n" << panel(5) << "unset multiplot\n";
   return io::Figure("plots/fig4_peaks", body.str());
 }
 
@@ -200,15 +209,18 @@ std::string PaperChecks(const CampaignResult& r, const fs::path& dir) {
   std::ostringstream tics;
   tics << "set xtics (";
   for (size_t i = 0; i < checks.size(); ++i)
-    tics << (i ? ", " : "") << io::GnuplotQuote(checks[i].check.name) << " " << i;
-  tics << ") rotate by -15\n";
+    tics << (i ? ", " : "") << io::GnuplotQuote(io::Words(checks[i].check.name)) << " " << i;
+  tics << ")\n";
   std::ostringstream body;
   body << "set title 'Paper checks: ratios of final penetration, simulated and published'\n" << tics.str()
-       << "set xrange [-0.6:" << checks.size() - 0.4 << "]\nset yrange [0:" << 1.15 * top << "]\nset ylabel 'ratio'\n"
-       << "set style fill solid 1 border lc rgb '#303030'\nset boxwidth 0.5\nset key outside right top\n"
-       << "plot 'plots/data/paper_checks.csv' skip 1 using 1:3 with boxes lc rgb '" << io::SeriesColour(0)
-       << "' title 'touchdown', \\\n     '' skip 1 using 1:4 with points " << io::kMeasuredPoints
-       << " title 'paper: experiment', \\\n     '' skip 1 using 1:5 with points pt 8 ps 2 lc rgb '#000000' title 'paper: RFT'\n";
+       << "set xrange [-0.6:" << checks.size() - 0.4 << "]\nset yrange [0:" << 1.3 * top << "]\nset ylabel 'ratio'\n"
+       << "set style fill solid 1 border lc rgb '#303030'\nset boxwidth 0.5\n" << io::kKeyBelow
+       << "set bars 3\n"
+       // The experiment's marks carry +-10 % bars: the band the parity plots draw, so a reader
+       // sees whether a bar is within it without a table.
+       << "plot 'plots/data/paper_checks.csv' skip 1 using 1:3 with boxes lc rgb '" << io::kSimulatedColour
+       << "' title 'touchdown (simulated)', \\\n     '' skip 1 using 1:4:($4*0.9):($4*1.1) with yerrorbars lw 2 pt 7 ps 3 lc rgb '#000000'"
+       << " title 'paper: experiment, +-10 %', \\\n     '' skip 1 using 1:5 with points pt 8 ps 3.5 lw 2.5 lc rgb '#000000' title 'paper: RFT'\n";
   return io::Figure("plots/fig7_paper_checks", body.str(), io::kFigureStrip);
 }
 }  // namespace

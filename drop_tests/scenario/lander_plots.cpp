@@ -1,6 +1,7 @@
 #include "drop_tests/scenario/lander_plots.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <ostream>
@@ -26,7 +27,7 @@ constexpr int kLegs = lander::kNumLegs;
 constexpr size_t kColumns = 4 + 3 * kLegs + 1;
 constexpr int kDepthColumn = 5, kForceColumn = 5 + kLegs, kLegColumn = 5 + 2 * kLegs, kAccelColumn = 5 + 3 * kLegs;
 
-double PlottedValue(const LanderSpec& lander, const lander::LanderSample& s, size_t column) {
+double RawPlottedValue(const LanderSpec& lander, const lander::LanderSample& s, size_t column) {
   if (column == 0) return s.t_s * 1e3;
   if (column == 1) return s.attitude.roll_rad / kDeg;
   if (column == 2) return s.attitude.pitch_rad / kDeg;
@@ -36,6 +37,14 @@ double PlottedValue(const LanderSpec& lander, const lander::LanderSample& s, siz
   if (k < kLegs) return s.pad_depth_m[leg] * 1e3;
   if (k < 2 * kLegs) return s.pad_force_W[leg].norm();
   return LegAxialForce(lander, s, static_cast<int>(leg));
+}
+
+// Values within rounding of zero (1e-9 of the plotted unit: a body at rest shows a_z ~ 4e-14)
+// drawn as zero, so they do not read as a signal of either sign.
+double Snap(double v) { return std::abs(v) < 1e-9 ? 0.0 : v; }
+
+double PlottedValue(const LanderSpec& lander, const lander::LanderSample& s, size_t column) {
+  return column == 0 ? s.t_s * 1e3 : Snap(RawPlottedValue(lander, s, column));
 }
 
 struct Window {
@@ -56,18 +65,32 @@ Window ContactWindow(const lander::LanderRunResult& r) {
   return {std::max(0.0, first - 0.1 * span) * 1e3, std::min(end, last + 0.25 * span) * 1e3};
 }
 
-// [lo:hi] of the given columns' values inside the window, widened to at least `min_span` about
-// its middle (so rounding noise on a quantity that stays zero does not fill the frame).
-std::string Range(const LanderSpec& lander, const std::vector<lander::LanderSample>& trace, const Window& w, size_t first_column,
-                  size_t count, double min_span, double pad_fraction = 0.08) {
-  double lo = INFINITY, hi = -INFINITY;
+// The columns' values inside the window, per column (row order).
+std::vector<std::vector<double>> InWindow(const LanderSpec& lander, const std::vector<lander::LanderSample>& trace,
+                                          const Window& w, size_t first_column, size_t count) {
+  std::vector<std::vector<double>> v(count);
   for (const lander::LanderSample& s : trace) {
     const double t = s.t_s * 1e3;
     if (t < w.from_ms || t > w.to_ms) continue;
-    for (size_t c = first_column; c < first_column + count; ++c) {
-      lo = std::min(lo, PlottedValue(lander, s, c));
-      hi = std::max(hi, PlottedValue(lander, s, c));
+    for (size_t c = 0; c < count; ++c) v[c].push_back(PlottedValue(lander, s, first_column + c));
+  }
+  return v;
+}
+
+// [lo:hi] of the given columns' values inside the window and of `include` (a paper's band edge
+// must be on the scale), widened to at least `min_span` about its middle (so rounding noise on a
+// quantity that stays zero does not fill the frame).
+std::string Range(const LanderSpec& lander, const std::vector<lander::LanderSample>& trace, const Window& w, size_t first_column,
+                  size_t count, double min_span, double pad_fraction = 0.08, const std::vector<double>& include = {}) {
+  double lo = INFINITY, hi = -INFINITY;
+  for (const std::vector<double>& column : InWindow(lander, trace, w, first_column, count))
+    for (double v : column) {
+      lo = std::min(lo, v);
+      hi = std::max(hi, v);
     }
+  for (double v : include) {
+    lo = std::min(lo, v);
+    hi = std::max(hi, v);
   }
   if (!(lo <= hi)) lo = hi = 0.0;
   const double mid = 0.5 * (lo + hi), half = std::max(0.5 * (hi - lo) * (1.0 + pad_fraction), 0.5 * min_span);
@@ -76,53 +99,151 @@ std::string Range(const LanderSpec& lander, const std::vector<lander::LanderSamp
   return s.str();
 }
 
-std::string PerPad(int column, const std::string& unit_title, const LanderRun& run) {
+// "pads 1 and 3 coincide; pads 2 and 4 coincide" for the pads whose traces (columns first_column
+// .. +kLegs) stay within 1 % of the largest value of any pad of each other over the window, ""
+// when none do: a pad drawn exactly over another would otherwise look missing.
+std::string CoincidentPads(const LanderSpec& lander, const std::vector<lander::LanderSample>& trace, const Window& w,
+                           size_t first_column) {
+  const std::vector<std::vector<double>> v = InWindow(lander, trace, w, first_column, kLegs);
+  double scale = 0.0;
+  for (const std::vector<double>& column : v)
+    for (double x : column) scale = std::max(scale, std::abs(x));
+  const double tolerance = 1e-2 * scale;
+  auto same = [&](int a, int b) {
+    for (size_t k = 0; k < v[a].size(); ++k)
+      if (std::abs(v[a][k] - v[b][k]) > tolerance) return false;
+    return !v[a].empty();
+  };
+  std::array<bool, kLegs> grouped{};
+  std::string note;
+  for (int a = 0; a < kLegs; ++a) {
+    if (grouped[a]) continue;
+    std::vector<int> group{a};
+    for (int b = a + 1; b < kLegs; ++b)
+      if (!grouped[b] && same(a, b)) group.push_back(b);
+    if (group.size() < 2) continue;
+    std::string names;
+    for (size_t k = 0; k < group.size(); ++k) {
+      grouped[group[k]] = true;
+      names += (k == 0 ? "" : k + 1 == group.size() ? " and " : ", ") + std::to_string(group[k] + 1);
+    }
+    note += (note.empty() ? "" : "; ") + std::string("pads ") + names + " coincide";
+  }
+  return note;
+}
+
+// Every `mark_every` rows, a little more for each later series, so two series that coincide
+// show their marks at different places.
+int MarkInterval(int mark_every, int series) { return mark_every + series * std::max(1, mark_every / 3); }
+
+// "roll and pitch coincide" (and the like) for the attitude angles that stay within 0.5 % of the
+// largest angle of each other over the window.
+std::string CoincidentAngles(const LanderSpec& lander, const std::vector<lander::LanderSample>& trace, const Window& w) {
+  const std::vector<std::vector<double>> v = InWindow(lander, trace, w, 1, 3);
+  double scale = 0.0;
+  for (const std::vector<double>& column : v)
+    for (double x : column) scale = std::max(scale, std::abs(x));
+  auto same = [&](int a, int b) {
+    for (size_t k = 0; k < v[a].size(); ++k)
+      if (std::abs(v[a][k] - v[b][k]) > 5e-3 * scale) return false;
+    return !v[a].empty() && scale > 0.0;
+  };
+  if (same(0, 1)) return same(1, 2) ? "roll, pitch and tilt coincide" : "roll and pitch coincide";
+  if (same(1, 2)) return "pitch and tilt coincide (no roll)";
+  if (same(0, 2)) return "roll and tilt coincide (no pitch)";
+  return "";
+}
+
+// The pads in order, pad 1 widest and each later one narrower and differently dashed, with its
+// own marks every `mark_every` rows: pads that coincide show as nested lines, not as one.
+std::string PerPad(int column, const LanderRun& run, int mark_every) {
   std::ostringstream s;
   s << "plot ";
   for (int i = 0; i < kLegs; ++i)
-    s << (i ? ", \\\n     " : "") << "'plots/data/trace.csv' skip 1 using 1:" << column + i << " with lines lw 2.5 lc rgb '"
-      << io::SeriesColour(i) << "' dt " << io::SoilDash(run.soil_under_pad[i]) << " title "
-      << io::GnuplotQuote("pad " + std::to_string(i + 1) + " (" + run.soil_under_pad[i] + ")" + unit_title);
+    s << (i ? ", \\\n     " : "") << "'plots/data/trace.csv' skip 1 using 1:" << column + i << " with linespoints "
+      << io::LanderPadLine(i) << " pt " << io::LanderPadPoint(i) << " ps 1.4 pi " << MarkInterval(mark_every, i) << " title "
+      << io::GnuplotQuote("pad " + std::to_string(i + 1) + " (" + io::SoilDisplayName(run.soil_under_pad[i]) + ")");
   return s.str() + "\n";
 }
 
-std::string PenetrationFigure(const LanderRun& run, const Window& w, const std::string& xrange) {
+// A dotted vertical line at the rest event, when there is one: the traces break there (the
+// state after it is the one at rest, not a continuation of the landing).
+std::string RestMarker(const lander::LanderRunResult& r) {
+  for (const lander::LanderEvent& e : r.events)
+    if (e.kind == lander::LanderEventKind::kRest) {
+      const std::string t = io::FormatNumber(e.t_s * 1e3);
+      return "set arrow 1 from first " + t + ", graph 0 to first " + t + ", graph 1 nohead dt 3 lw 1.5 lc rgb '#808080' back\n"
+             "set label 1 'at rest' at first " + t + ", graph 0.5 left offset 0.5,0 textcolor rgb '#606060' front\n";
+    }
+  return "";
+}
+
+// A note on the panel (which pads coincide), in an opaque box at the upper left, or nothing.
+std::string Note(const std::string& note) {
+  if (note.empty()) return "unset label 2\n";
+  return "set label 2 " + io::GnuplotQuote(note) + " at graph 0.01, graph 0.93 left front boxed\n";
+}
+
+struct PlotFrame {
+  const LanderRun& run;
+  const Window& w;
+  std::string xrange;
+  int mark_every;
+};
+
+std::string PenetrationFigure(const PlotFrame& f) {
+  const LanderRun& run = f.run;
   std::ostringstream body;
   body << "set title " << io::GnuplotQuote(run.scenario.name + ": penetration of each pad (lowest point below the surface)")
-       << "\nset xlabel 't [ms] (release at 0)'\nset ylabel 'penetration [mm]'\nset key outside right top\n"
-       << "set xrange " << xrange << "\nset yrange " << Range(run.scenario.lander, run.result.trace, w, 4, kLegs, 1.0) << "\n"
-       << PerPad(kDepthColumn, "", run);
+       << "\nset xlabel 't [ms] (release at 0)'\nset ylabel 'penetration [mm]'\n" << io::kKeyBelow
+       << "set style textbox opaque noborder\n" << RestMarker(run.result)
+       << Note(CoincidentPads(run.scenario.lander, run.result.trace, f.w, 4))
+       << "set xrange " << f.xrange << "\nset yrange " << Range(run.scenario.lander, run.result.trace, f.w, 4, kLegs, 1.0) << "\n"
+       << PerPad(kDepthColumn, run, f.mark_every);
   return io::Figure("plots/penetration", body.str(), io::kFigureStrip);
 }
 
-std::string AttitudeFigure(const LanderRun& run, const Window& w, const std::string& xrange) {
+std::string AttitudeFigure(const PlotFrame& f) {
+  const LanderRun& run = f.run;
   const double band = run.scenario.paper ? run.scenario.paper->roll_pitch_within_deg : 0.0;
+  std::vector<double> include;
+  if (band > 0.0) include = {-band, band};
   std::ostringstream body;
+  // Tilt first and widest, pitch dashed over it, roll thin with marks on top: where they
+  // coincide (a pure pitch makes tilt = |pitch|) each still shows.
   body << "set title " << io::GnuplotQuote(run.scenario.name + ": body attitude (roll > 0 right side down, pitch > 0 nose up)")
-       << "\nset xlabel 't [ms] (release at 0)'\nset ylabel 'angle [deg]'\nset key outside right top\n"
-       << "set xrange " << xrange << "\nset yrange " << Range(run.scenario.lander, run.result.trace, w, 1, 3, std::max(2.0, 3.0 * band))
-       << "\nplot 'plots/data/trace.csv' skip 1 using 1:2 with lines lw 2.5 lc rgb '" << io::SeriesColour(0)
-       << "' title 'roll', \\\n     '' skip 1 using 1:3 with lines lw 2.5 lc rgb '" << io::SeriesColour(1)
-       << "' title 'pitch', \\\n     '' skip 1 using 1:4 with lines lw 2 dt 2 lc rgb '" << io::SeriesColour(2)
-       << "' title 'tilt from vertical'";
+       << "\nset xlabel 't [ms] (release at 0)'\nset ylabel 'angle [deg]'\n" << io::kKeyBelow << RestMarker(run.result)
+       << "set style textbox opaque noborder\n" << Note(CoincidentAngles(run.scenario.lander, run.result.trace, f.w)) << "set xrange " << f.xrange
+       << "\nset yrange " << Range(run.scenario.lander, run.result.trace, f.w, 1, 3, std::max(2.0, 3.0 * band), 0.15, include)
+       << "\nplot 'plots/data/trace.csv' skip 1 using 1:4 with lines lw 7 lc rgb '#b0b0b0' title 'tilt from vertical', \\\n"
+       << "     '' skip 1 using 1:3 with linespoints lw 3.5 dt 2 lc rgb '" << io::SeriesColour(1) << "' pt 5 ps 1.3 pi "
+       << MarkInterval(f.mark_every, 0) << " title 'pitch', \\\n     '' skip 1 using 1:2 with linespoints lw 1.8 lc rgb '"
+       << io::SeriesColour(0) << "' pt 7 ps 1.1 pi " << MarkInterval(f.mark_every, 1) << " title 'roll'";
   if (band > 0.0)
     body << ", \\\n     " << band << " with lines " << io::kPaperBandLine << " title "
-         << io::GnuplotQuote("paper: roll and pitch within +-" + io::FormatNumber(band) + " deg") << ", \\\n     "
+         << io::GnuplotQuote("paper: |roll|, |pitch| <= " + io::FormatNumber(band) + " deg") << ", \\\n     "
          << -band << " with lines " << io::kPaperBandLine << " notitle";
   body << "\n";
   return io::Figure("plots/attitude", body.str(), io::kFigureStrip);
 }
 
-std::string LoadsFigure(const LanderRun& run, const Window& w, const std::string& xrange) {
+std::string LoadsFigure(const PlotFrame& f) {
+  const LanderRun& run = f.run;
+  const LanderSpec& lander = run.scenario.lander;
+  const auto& trace = run.result.trace;
   std::ostringstream body;
-  body << "set multiplot layout 3,1 title " << io::GnuplotQuote(run.scenario.name + ": loads during the landing")
-       << "\nset xrange " << xrange << "\nset key outside right top\nunset xlabel\n"
-       << "set lmargin 12\nset rmargin 34\n"  // the panels' frames aligned whatever their labels and keys
-       << "set ylabel 'soil force on pad [N]'\nset yrange " << Range(run.scenario.lander, run.result.trace, w, 4 + kLegs, kLegs, 1.0, 0.15)
-       << "\n" << PerPad(kForceColumn, "", run) << "set ylabel 'leg force [N]'\nset key title 'axial, compression +'\nset yrange "
-       << Range(run.scenario.lander, run.result.trace, w, 4 + 2 * kLegs, kLegs, 1.0, 0.15) << "\n" << PerPad(kLegColumn, "", run)
-       << "set xlabel 't [ms] (release at 0)'\nset ylabel 'a_z [m/s^2]'\nset key notitle\nset yrange "
-       << Range(run.scenario.lander, run.result.trace, w, kColumns - 1, 1, 1.0, 0.15) << "\nplot 'plots/data/trace.csv' skip 1 using 1:"
+  // One key for the pads, above the first panel; the panels below share its styles.
+  body << "set multiplot layout 3,1 margins 0.09, 0.98, 0.1, 0.87 spacing 0, 0.06 title "
+       << io::GnuplotQuote(run.scenario.name + ": loads during the landing (leg force along the leg, compression +)") << "\nset xrange " << f.xrange
+       << "\nset key at screen 0.5, screen 0.935 center top horizontal maxrows 1 Left reverse samplen 2 width -2\n"
+       << "unset xlabel\nset style textbox opaque noborder\n" << RestMarker(run.result)
+       << "set ylabel 'soil force [N]'\nset yrange " << Range(lander, trace, f.w, 4 + kLegs, kLegs, 1.0, 0.15) << "\n"
+       << Note(CoincidentPads(lander, trace, f.w, 4 + kLegs)) << PerPad(kForceColumn, run, f.mark_every)
+       << "unset key\nset ylabel 'leg axial force [N]'\nset yrange "
+       << Range(lander, trace, f.w, 4 + 2 * kLegs, kLegs, 1.0, 0.15) << "\n"
+       << Note(CoincidentPads(lander, trace, f.w, 4 + 2 * kLegs)) << PerPad(kLegColumn, run, f.mark_every)
+       << "unset label 2\nset key inside right top\nset xlabel 't [ms] (release at 0)'\nset ylabel 'a_z [m/s^2]'\nset yrange "
+       << Range(lander, trace, f.w, kColumns - 1, 1, 1.0, 0.15) << "\nplot 'plots/data/trace.csv' skip 1 using 1:"
        << kAccelColumn << " with lines lw 2.5 lc rgb '#000000' title 'body CoM, vertical (+ up)'\nunset multiplot\n";
   return io::Figure("plots/loads", body.str(), io::kFigureWide);
 }
@@ -139,7 +260,13 @@ void WriteLanderPlots(const LanderRun& run, const std::string& out_dir) {
     for (const char* what : {"depth_mm", "soil_force_N", "leg_force_N"})
       for (int i = 1; i <= kLegs; ++i) out << ",pad" << i << "_" << what;
     out << ",body_az_m_s2\n";
+    // A sample repeated at an event's instant holds the state after the event (a pad captured or
+    // released, the lander at rest): a blank line before it breaks the lines there, so the jump
+    // is not drawn as a steep stretch of signal.
+    double previous_t = NAN;
     for (const size_t k : rows) {
+      if (trace[k].t_s == previous_t) out << '\n';
+      previous_t = trace[k].t_s;
       for (size_t c = 0; c < kColumns; ++c) out << (c ? "," : "") << io::FormatNumber(value(k, c));
       out << '\n';
     }
@@ -147,8 +274,13 @@ void WriteLanderPlots(const LanderRun& run, const std::string& out_dir) {
   const Window w = ContactWindow(run.result);
   std::ostringstream xrange;
   xrange << std::setprecision(6) << "[" << w.from_ms << ":" << w.to_ms << "]";
-  const std::string gp = PenetrationFigure(run, w, xrange.str()) + AttitudeFigure(run, w, xrange.str()) +
-                         LoadsFigure(run, w, xrange.str());
+  // About a dozen marks per trace across the window, whatever the decimation kept.
+  const auto in_window = std::count_if(rows.begin(), rows.end(), [&](size_t k) {
+    const double t = trace[k].t_s * 1e3;
+    return t >= w.from_ms && t <= w.to_ms;
+  });
+  const PlotFrame frame{run, w, xrange.str(), std::max(1, static_cast<int>(in_window / 12))};
+  const std::string gp = PenetrationFigure(frame) + AttitudeFigure(frame) + LoadsFigure(frame);
   io::RenderPlots(dir, {"plots/lander.gp", gp,
                         {io::FigurePng("plots/penetration"), io::FigurePng("plots/attitude"),
                          io::FigurePng("plots/loads")}});

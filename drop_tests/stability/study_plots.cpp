@@ -55,23 +55,33 @@ class DataWriter {
   fs::path dir_;
 };
 
-// The map's cells that hold landings, coloured by their probability (boxes centred on the cells).
+void WriteCell(std::ostream& out, const MapCell& c) {
+  out << io::FormatNumber(0.5 * (c.x_low + c.x_high)) << ',' << io::FormatNumber(0.5 * (c.y_low + c.y_high)) << ','
+      << io::FormatNumber(0.5 * (c.x_high - c.x_low)) << ',' << io::FormatNumber(0.5 * (c.y_high - c.y_low)) << ','
+      << io::FormatNumber(c.probability) << '\n';
+}
+
+// The map's cells (boxes centred on the cells): those that hold landings coloured by their
+// probability, the empty ones hatched grey, a look no probability has.
 void AddCellSeries(const StudySummary& s, DataWriter& data, std::vector<Series>& series) {
-  bool any_cell = false;
-  for (const MapCell& c : s.map) any_cell = any_cell || c.landings > 0;
-  if (!any_cell) return;
-  series.push_back({data.Write("map_cells",
-                               [&](std::ostream& out) {
-                                 for (const MapCell& c : s.map)
-                                   if (c.landings > 0)
-                                     out << io::FormatNumber(0.5 * (c.x_low + c.x_high)) << ','
-                                         << io::FormatNumber(0.5 * (c.y_low + c.y_high)) << ','
-                                         << io::FormatNumber(0.5 * (c.x_high - c.x_low)) << ','
-                                         << io::FormatNumber(0.5 * (c.y_high - c.y_low)) << ','
-                                         << io::FormatNumber(c.probability) << '\n';
-                               }),
-                    "using 1:2:3:4:5 with boxxyerror fillstyle solid 1.0 noborder linecolor palette",
-                    "tip-over probability per cell"});
+  bool any_cell = false, any_empty = false;
+  for (const MapCell& c : s.map) (c.landings > 0 ? any_cell : any_empty) = true;
+  if (any_cell)
+    series.push_back({data.Write("map_cells",
+                                 [&](std::ostream& out) {
+                                   for (const MapCell& c : s.map)
+                                     if (c.landings > 0) WriteCell(out, c);
+                                 }),
+                      "using 1:2:3:4:5 with boxxyerror fillstyle solid 1.0 noborder linecolor palette", "tip-over probability"});
+  if (any_empty)
+    series.push_back({data.Write("map_empty_cells",
+                                 [&](std::ostream& out) {
+                                   for (const MapCell& c : s.map)
+                                     if (c.landings == 0) WriteCell(out, c);
+                                 }),
+                      std::string("using 1:2:3:4 with boxxyerror fillstyle pattern 4 border lc rgb '") + io::kEmptyCellColour +
+                          "' lc rgb '" + io::kEmptyCellColour + "'",
+                      "no landing in the cell"});
 }
 
 // The p = 0.5 boundary: marching squares over the cells' centres (cells without landings break
@@ -109,8 +119,8 @@ void AddLandingSeries(const Study& study, const std::vector<DropRecord>& records
     });
     if (n > 0)
       series.push_back({file,
-                        tipped ? "using 1:2 with points pointtype 2 pointsize 0.7 linecolor rgb 'black'"
-                               : "using 1:2 with points pointtype 6 pointsize 0.5 linecolor rgb 'black'",
+                        tipped ? "using 1:2 with points pointtype 2 pointsize 2 linewidth 3 linecolor rgb 'black'"
+                               : "using 1:2 with points pointtype 6 pointsize 1.5 linewidth 2 linecolor rgb 'black'",
                         tipped ? "landing that tipped over" : "landing that stayed up"});
   }
 }
@@ -130,7 +140,10 @@ std::string MapFigure(const Study& study, const StudySummary& s, const std::vect
       "\nset ylabel " + io::GnuplotQuote(AxisLabel(m.y.param)) + "\nset xrange [" + io::FormatNumber(m.x.low) + ":" +
       io::FormatNumber(m.x.high) + "]\nset yrange [" + io::FormatNumber(m.y.low) + ":" + io::FormatNumber(m.y.high) +
       "]\nset cbrange [0:1]\nset cblabel 'tip-over probability'\n"
-      "set palette defined (0 '#2166ac', 0.5 '#f7f7f7', 1 '#b2182b')\nset key outside below horizontal\n" +
+      // Blue through yellow to red: no probability is white or grey, so an empty cell (hatched
+      // grey) never passes for p = 0.5, and the black marks stand out on every colour.
+      "set palette defined (0 '#4575b4', 0.25 '#91bfdb', 0.5 '#fee090', 0.75 '#fc8d59', 1 '#d73027')\n" +
+      io::kKeyBelow + "set key maxrows 2\n" +
       PlotCommand(series, "no completed landings: nothing to map");
   return Figure("plots/tip_over_map", 900, 750, body);
 }
@@ -154,6 +167,19 @@ std::vector<double> Values(const std::vector<DropRecord>& records, const std::fu
   return v;
 }
 
+// `set ytics` at whole numbers for a count axis up to `max_count`: a step of 1, 2 or 5 times a
+// power of ten giving at most about 8 tics (gnuplot's own choice can be 0.5 landings).
+std::string IntegerTics(int64_t max_count) {
+  int64_t step = 1;
+  for (int64_t decade = 1;; decade *= 10) {
+    for (int64_t m : {1, 2, 5})
+      if (max_count / (m * decade) <= 8) {
+        step = m * decade;
+        return "set ytics 0, " + std::to_string(step) + "\nset format y '%.0f'\nset mytics 1\n";
+      }
+  }
+}
+
 // A panel with a logarithmic probability axis; its placeholder (no data) on linear axes, which
 // gnuplot needs for an empty frame.
 std::string LogPanel(const std::vector<Series>& series, const std::string& nothing) {
@@ -161,6 +187,8 @@ std::string LogPanel(const std::vector<Series>& series, const std::string& nothi
   return "set logscale y\nset yrange [*:1]\n" + PlotCommand(series, nothing);
 }
 
+// The curves fall from the upper left to the lower right: the key sits in the empty lower left.
+// The deepest pad, drawn first, wide and grey, lies under the pad it equals.
 std::string ExceedanceFigure(const StudySummary& s, const std::vector<DropRecord>& records, DataWriter& data) {
   const std::string style = "using 1:2 with steps linewidth 2";
   std::vector<Series> tilt;
@@ -173,19 +201,19 @@ std::string ExceedanceFigure(const StudySummary& s, const std::vector<DropRecord
     const std::string f =
         ExceedanceFile(data, "exceedance_pad" + std::to_string(pad + 1),
                        Values(records, [pad](const DropRecord& r) { return r.pad_final_penetration_m[pad]; }), 1e3);
-    // Pad i in the colour it has in the lander's own figures (lander_plots.cpp).
-    if (!f.empty()) depth.push_back({f, style + " lc rgb '" + io::SeriesColour(pad) + "'", "pad " + std::to_string(pad + 1)});
+    // Pad i in the colour and dash it has in the lander's own figures (lander_plots.cpp).
+    if (!f.empty()) depth.push_back({f, "using 1:2 with steps " + io::LanderPadLine(pad), "pad " + std::to_string(pad + 1)});
   }
   if (const std::string f = ExceedanceFile(
           data, "exceedance_deepest_pad", Values(records, [](const DropRecord& r) { return r.final_penetration_m; }), 1e3);
       !f.empty())
-    depth.push_back({f, "using 1:2 with steps linewidth 3 linecolor rgb 'black'", "deepest pad"});
+    depth.insert(depth.begin(), {f, "using 1:2 with steps linewidth 7 linecolor rgb '#b0b0b0'", "deepest pad"});
   const std::string nothing = "fewer than two distinct values: no exceedance curve";
   const std::string body =
       "set multiplot layout 1,2 title " +
       io::GnuplotQuote("Exceedance probability P[X > x] over the " + std::to_string(s.landings - s.tipped) +
                        " landings that stayed up") +
-      "\nset grid\nset key outside below horizontal\nset ylabel 'P[X > x]'\n"
+      "\nset grid\nset key inside bottom left opaque Left reverse\nset ylabel 'P[X > x]'\n"
       "set title 'max tilt'\nset xlabel 'max tilt from the vertical [deg]'\n" + LogPanel(tilt, nothing) +
       "set title 'final pad penetration'\nset xlabel 'final penetration [mm]'\n" + LogPanel(depth, nothing) +
       "unset multiplot\n";
@@ -212,7 +240,7 @@ std::string HistogramFigure(const StudySummary& s, const std::vector<DropRecord>
   std::string body = "set multiplot layout 2,2 title " +
                      io::GnuplotQuote("Distributions over the " + std::to_string(s.landings - s.tipped) +
                                       " landings that stayed up") +
-                     "\nset grid\nset key off\nset ylabel 'landings'\nset yrange [0:*]\n"
+                     "\nset grid\nset key off\nset ylabel 'landings'\n"
                      "set style fill solid 0.6 border lc rgb '#224466'\n";
   for (const Panel& panel : panels) {
     std::vector<double> v = Values(records, panel.value);
@@ -227,7 +255,10 @@ std::string HistogramFigure(const StudySummary& s, const std::vector<DropRecord>
                                            << ',' << io::FormatNumber(h.width) << '\n';
                                    }),
                         "using 1:2:3 with boxes linecolor rgb '#4477aa'", panel.title});
+    const int64_t top = h.counts.empty() ? 1 : std::max<int64_t>(1, *std::max_element(h.counts.begin(), h.counts.end()));
     body += "set title " + io::GnuplotQuote(panel.title) + "\nset xlabel " + io::GnuplotQuote(panel.xlabel) + "\n" +
+            (h.counts.empty() ? "set ytics autofreq\nset format y '% h'\nset yrange [*:*]\n"
+                              : IntegerTics(top) + "set yrange [0:" + std::to_string(top + std::max<int64_t>(1, top / 10)) + "]\n") +
             PlotCommand(series, "no values");
   }
   return Figure("plots/histograms", 1200, 900, body + "unset multiplot\n");

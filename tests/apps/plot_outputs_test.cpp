@@ -82,6 +82,63 @@ TEST(PlotOutputs, CampaignAndLanderWithAnInjectionAttemptInOut) {
   EXPECT_FALSE(AnyPwned(box.dir()));
 }
 
+// The figures as a reader sees them (issue: figures reviewed as for a paper): each script draws
+// an SVG beside its PNG, soils by their display names, keys that cover no panel.
+TEST(PlotOutputs, CampaignFiguresNameSoilsAndDrawEveryFigureAsSvgToo) {
+  Sandbox box("plot_campaign_review");
+  const CliRun r = box.Touchdown("campaign " + Campaign() + " --out out");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string script = Slurp(box.dir() / "out" / "plots" / "campaign.gp");
+  for (const std::string figure : {"fig3_time_histories", "fig4_peaks", "fig6_force_penetration", "fig7_paper_checks"})
+    EXPECT_NE(script.find("set output 'plots/" + figure + ".svg'"), std::string::npos) << figure;
+  EXPECT_NE(script.find("set terminal svg"), std::string::npos);
+  EXPECT_NE(script.find("flat, FJS-1 CP"), std::string::npos) << "soil display names in the keys";
+  EXPECT_EQ(script.find("fjs1_cp'"), std::string::npos) << "no raw soil id as a title";
+  EXPECT_EQ(script.find("key outside right"), std::string::npos) << "no key taking a quarter of the width";
+  EXPECT_NE(script.find("curved over flat penetration lp"), std::string::npos) << "check names in words";
+  EXPECT_NE(script.find("with yerrorbars"), std::string::npos) << "the experiments' bars";
+  EXPECT_NE(script.find("fs transparent pattern"), std::string::npos) << "closely packed bars hatched";
+}
+
+// Case B: pads 2 and 4 and roll and pitch move together; each trace keeps its own style, a note
+// says which coincide, the paper's band is on the scale, and the traces break at the rest event.
+TEST(PlotOutputs, LanderFiguresKeepCoincidentTracesVisibleAndTheBandOnScale) {
+  Sandbox box("plot_lander_review");
+  const CliRun r = box.Touchdown("lander " + ShellQuote(std::string(TOUCHDOWN_SOURCE_DIR) + "/data/scenarios/lander_case_B.yaml") +
+                                 " --out out");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const fs::path plots = box.dir() / "out" / "plots";
+  const std::string script = Slurp(plots / "lander.gp");
+  EXPECT_NE(script.find("pads 2 and 4 coincide"), std::string::npos) << script;
+  EXPECT_NE(script.find("roll and pitch coincide"), std::string::npos) << script;
+  for (const char* dash : {"dt 1", "dt 2", "dt 4"}) EXPECT_NE(script.find(dash), std::string::npos) << dash;
+  EXPECT_NE(script.find("'at rest'"), std::string::npos);
+  EXPECT_EQ(script.find("key outside"), std::string::npos);
+  // The attitude's y range holds the band at -0.5 deg.
+  const size_t attitude = script.find("set output 'plots/attitude.png'");
+  const size_t yrange = script.find("set yrange [", attitude);
+  ASSERT_NE(yrange, std::string::npos);
+  EXPECT_LT(std::stod(script.substr(yrange + 12)), -0.5) << script.substr(yrange, 40);
+  // A blank line at each event's repeated instant breaks the lines there.
+  EXPECT_NE(Slurp(plots / "data" / "trace.csv").find("\n\n"), std::string::npos);
+}
+
+TEST(PlotOutputs, StudyHistogramsCountInWholeLandingsAndEmptyMapCellsAreHatched) {
+  Sandbox box("plot_study_review");
+  box.Write("level.yaml",
+            "schema_version: 1\ntype: stability\nname: level_quick\nlander: {scenario: lander_case_A}\n"
+            "random: {samples: 3, seed: 3, impact_speed_m_s: {uniform: [0.6, 1.0]},\n"
+            "         gravity_m_s2: {uniform: [1.62, 9.81]}}\n"
+            "study: {map: {x: impact_speed_m_s, y: gravity_m_s2, bins: [3, 3]}}\n");
+  const CliRun r = box.Touchdown("stability level.yaml --out out --threads 2 --progress none");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string script = Slurp(box.dir() / "out" / "plots" / "study.gp");
+  EXPECT_NE(script.find("set ytics 0, 1\nset format y '%.0f'"), std::string::npos) << script;
+  EXPECT_NE(script.find("fillstyle pattern"), std::string::npos) << "empty cells hatched";
+  EXPECT_EQ(script.find("'#f7f7f7'"), std::string::npos) << "no white in the probability scale";
+  EXPECT_NE(script.find("set output 'plots/histograms.svg'"), std::string::npos);
+}
+
 TEST(PlotOutputs, TradeOfASweepWhoseDropsAllFailedPlotsPlaceholders) {
   Sandbox box("plot_trade_failed");
   box.Write("failed.yaml", kFailedSweep);

@@ -156,6 +156,7 @@ TEST(CompareCli, SimulatedDatasetAgainstItselfHasZeroErrors) {
     EXPECT_TRUE(fs::is_regular_file(dir / out / "plots" / "compare.gp"));
     if (std::system("command -v gnuplot >/dev/null 2>&1") == 0) {
       EXPECT_TRUE(fs::is_regular_file(dir / out / "plots" / "drops" / "d0.png")) << out;
+      EXPECT_TRUE(fs::is_regular_file(dir / out / "plots" / "drops" / "d0.svg")) << out;  // every figure: PNG and SVG
       EXPECT_TRUE(fs::is_regular_file(dir / out / "plots" / "parity.png")) << out;
       EXPECT_TRUE(fs::is_regular_file(dir / out / "plots" / "parity.svg")) << out;
     }

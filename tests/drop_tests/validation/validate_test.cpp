@@ -123,6 +123,13 @@ TEST_F(ValidateOutputs, WritesTheReportAndEveryPlot) {
   EXPECT_TRUE(std::filesystem::exists(out + "/plots/murdoch_2017_depth_vs_gravity.svg"));
   const nlohmann::json j = nlohmann::json::parse(Slurp(out + "/validation.json"));
   EXPECT_EQ(j["sources"].size(), 4u);
+  // Trends: log ranges fitted to the values with tics inside them, the measured exponent's
+  // tolerance drawn, a measured direction stated, each variant's fitted slope in the key.
+  const std::string script = Slurp(out + "/plots/validation.gp");
+  EXPECT_NE(script.find("set xtics ("), std::string::npos);
+  EXPECT_NE(script.find("title 'measured: tolerance'"), std::string::npos);
+  EXPECT_NE(script.find("measured: stop time decreases"), std::string::npos);
+  EXPECT_NE(script.find("quasi static: slope "), std::string::npos);
 }
 
 }  // namespace
