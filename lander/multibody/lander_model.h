@@ -61,12 +61,11 @@ struct Leg {
 // whose capture was undone sits at |v| ~ 1e-11 with a horizontal part that turns its support into
 // sideways drag and back: a discontinuity no integrator steps through). The ramp makes the force
 // continuous through v = 0; a pad that slows below it is offered a capture
-// (lander_simulation.h), so no creep results. Why 1 mm/s and not less: a pad released from a hold
-// that creeps just above the ramp turns with the RFT torque's direction following its spin, which
-// the integrator resolves at microsecond steps (a full-scale lunar landing spent 1.1 million
-// steps over 1.5 s at 0.1 mm/s, 1,700 in all at 1 mm/s); the benchmark landings move by at most
-// 1e-5 relative (docs/lander_dynamics.md, "The soil's low-speed ramp").
-inline constexpr double kDefaultSoilRampSpeed_m_s = 1e-3;
+// (lander_simulation.h), so no creep results. A pad that creeps just above the ramp turns with the
+// RFT torque's direction following its spin, which the integrator resolves at microsecond steps;
+// a faster ramp cures one such landing and stalls another (docs/lander_dynamics.md, "The soil's
+// low-speed ramp"), so the default stays where the model was validated.
+inline constexpr double kDefaultSoilRampSpeed_m_s = 1e-4;
 
 struct LanderModel {
   double body_mass_kg = 0.0;
