@@ -31,7 +31,7 @@ void AddDiagnoseCommand(CLI::App& app) {
   cmd->add_option("--out", args->out, "output directory: new, empty, or an earlier output of this command (replaced whole when complete)")->required();
   cmd->add_option("--threads", args->threads, "threads (default: all cores)")
       ->check(CLI::Range(0, limits::kMaxThreads));
-  cmd->add_flag("--no-pairs", args->no_pairs, "do not try pairs of effects");
+  cmd->add_flag("--no-pairs", args->no_pairs, "name one term at most (no search again after the first, docs/model_gap.md)");
   cmd->add_option("--base", args->base,
                   "the model the effects are fitted on: rft (zeta per soil, default) or bekker (n, k_c, k_phi per "
                   "soil fitted as calibrate --law bekker; docs/bekker_soil.md)")
