@@ -54,12 +54,13 @@ void AddDiagnoseCommand(CLI::App& app) {
     if (!args->model.empty()) o.start_model = model::LoadModelFile(args->model);
     const gap::Diagnosis d = gap::DiagnoseToDirectory(args->measured, o, {args->out, {args->measured, args->model}});
     const nlohmann::json j = gap::DiagnosisJson(d);
-    std::cout << nlohmann::json{{"named_effect", j["named_effect"]},     {"decision", j["decision"]},
-                                {"gap_before", j["gap_before"]["force_nrmse"]}, {"gap_after", j["gap_after"]["force_nrmse"]},
-                                {"gap_reduction", j["gap_reduction"]}, {"seconds", j["seconds"]},
-                                {"out", args->out}}
-                     .dump(2)
-              << std::endl;
+    nlohmann::json summary{{"named_effect", j["named_effect"]},     {"named_effects", j["named_effects"]},
+                           {"selected_terms", j["selected_terms"]}, {"decision", j["decision"]},
+                           {"gap_before", j["gap_before"]["force_nrmse"]}, {"gap_after", j["gap_after"]["force_nrmse"]},
+                           {"gap_reduction", j["gap_reduction"]}, {"seconds", j["seconds"]},
+                           {"out", args->out}};
+    if (j.contains("dynamic_term_statement")) summary["dynamic_term_statement"] = j["dynamic_term_statement"];
+    std::cout << summary.dump(2) << std::endl;
   });
 }
 
