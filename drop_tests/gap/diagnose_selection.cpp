@@ -150,7 +150,10 @@ void SelectForward(Diagnosis& d, const DiagnoseOptions& o, const ScoreModel& sco
     for (const std::vector<std::string>& ids : models) {
       CandidateScore c = score(ids, start);
       // Terms that do not apply are listed once, at the first step.
-      if (!c.applies && step > 1) continue;
+      if (!c.applies && step > 1) {
+        progress.Add(1);
+        continue;
+      }
       c.step = step;
       c.extends = current;
       Relate(c, d.base, current < 0 ? d.base : d.candidates[current]);
