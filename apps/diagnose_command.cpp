@@ -31,7 +31,7 @@ void AddDiagnoseCommand(CLI::App& app) {
   cmd->add_option("--out", args->out, "output directory: new, empty, or an earlier output of this command (replaced whole when complete)")->required();
   cmd->add_option("--threads", args->threads, "threads (default: all cores)")
       ->check(CLI::Range(0, limits::kMaxThreads));
-  cmd->add_flag("--no-pairs", args->no_pairs, "do not try pairs of effects");
+  cmd->add_flag("--no-pairs", args->no_pairs, "name one term at most (no search again after the first, docs/model_gap.md)");
   cmd->add_option("--base", args->base,
                   "the model the effects are fitted on: rft (zeta per soil, default) or bekker (n, k_c, k_phi per "
                   "soil fitted as calibrate --law bekker; docs/bekker_soil.md)")
@@ -54,12 +54,13 @@ void AddDiagnoseCommand(CLI::App& app) {
     if (!args->model.empty()) o.start_model = model::LoadModelFile(args->model);
     const gap::Diagnosis d = gap::DiagnoseToDirectory(args->measured, o, {args->out, {args->measured, args->model}});
     const nlohmann::json j = gap::DiagnosisJson(d);
-    std::cout << nlohmann::json{{"named_effect", j["named_effect"]},     {"decision", j["decision"]},
-                                {"gap_before", j["gap_before"]["force_nrmse"]}, {"gap_after", j["gap_after"]["force_nrmse"]},
-                                {"gap_reduction", j["gap_reduction"]}, {"seconds", j["seconds"]},
-                                {"out", args->out}}
-                     .dump(2)
-              << std::endl;
+    nlohmann::json summary{{"named_effect", j["named_effect"]},     {"named_effects", j["named_effects"]},
+                           {"selected_terms", j["selected_terms"]}, {"decision", j["decision"]},
+                           {"gap_before", j["gap_before"]["force_nrmse"]}, {"gap_after", j["gap_after"]["force_nrmse"]},
+                           {"gap_reduction", j["gap_reduction"]}, {"seconds", j["seconds"]},
+                           {"out", args->out}};
+    if (j.contains("dynamic_term_statement")) summary["dynamic_term_statement"] = j["dynamic_term_statement"];
+    std::cout << summary.dump(2) << std::endl;
   });
 }
 

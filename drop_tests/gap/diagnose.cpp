@@ -10,6 +10,7 @@
 #include <random>
 #include <sstream>
 
+#include "drop_tests/gap/diagnose_selection.h"
 #include "drop_tests/io/work_pool.h"
 #include "rft/input_error.h"
 
@@ -251,7 +252,8 @@ std::vector<Finding> WhereAnalysis(const dataset::Dataset& ds, const FitProblem&
   return out;
 }
 
-CandidateScore Score(Diagnosis& d, const dataset::Dataset& ds, std::vector<std::string> ids, const DiagnoseOptions& o) {
+CandidateScore Score(Diagnosis& d, const dataset::Dataset& ds, const std::vector<std::string>& ids,
+                     const FitResult* start, const DiagnoseOptions& o) {
   CandidateScore c;
   c.effect_ids = ids;
   for (const std::string& id : ids) c.name += (c.name.empty() ? "" : "+") + id;
@@ -260,19 +262,11 @@ CandidateScore Score(Diagnosis& d, const dataset::Dataset& ds, std::vector<std::
     c.applies = false;
     return c;
   }
-  c.fit = FitCandidate(d.problem, ids, ids.empty() ? nullptr : &d.base.fit);
+  c.fit = FitCandidate(d.problem, ids, start);
   d.simulations += c.fit.simulations;
   c.gaps = AllGaps(d, c.fit, ds, o.threads);
   c.held_out = HeldOutSummary(c.gaps);
   return c;
-}
-
-void Relate(CandidateScore& c, const CandidateScore& base) {
-  if (!c.applies) return;
-  c.gap_reduction = base.held_out.force_nrmse > 0 ? 1.0 - c.held_out.force_nrmse / base.held_out.force_nrmse : 0.0;
-  const double excess = base.held_out.mean_square - base.held_out.noise_mean_square;
-  c.explained = excess > 0 ? (base.held_out.mean_square - c.held_out.mean_square) / excess : 0.0;
-  c.delta_bic = base.fit.bic - c.fit.bic;
 }
 
 std::string DescribeResidual(const Diagnosis& d) {
@@ -288,66 +282,6 @@ std::string DescribeResidual(const Diagnosis& d) {
   s << ". Held-out force NRMSE " << Fixed(d.base.held_out.force_nrmse, 4) << " against an estimated sensor-noise floor of "
     << Fixed(d.base.held_out.noise_nrmse, 4) << ".";
   return s.str();
-}
-
-void Decide(Diagnosis& d, const DiagnoseOptions& o) {
-  std::vector<int> valid;
-  for (size_t i = 0; i < d.candidates.size(); ++i)
-    if (d.candidates[i].applies) valid.push_back(static_cast<int>(i));
-  if (valid.empty()) {
-    d.decision = "no library effect applies to this dataset";
-    return;
-  }
-  int best = valid.front();
-  for (int i : valid)
-    if (d.candidates[i].fit.bic < d.candidates[best].fit.bic) best = i;
-  const double bic_min = d.candidates[best].fit.bic;
-  // Parsimony among the candidates the data cannot tell from the best.
-  int k_min = 1 << 30;
-  for (int i : valid)
-    if (d.candidates[i].fit.bic - bic_min < o.min_delta_bic) k_min = std::min(k_min, d.candidates[i].fit.parameters);
-  std::vector<int> simplest;
-  for (int i : valid)
-    if (d.candidates[i].fit.bic - bic_min < o.min_delta_bic && d.candidates[i].fit.parameters == k_min) simplest.push_back(i);
-  std::sort(simplest.begin(), simplest.end(), [&](int a, int b) { return d.candidates[a].fit.bic < d.candidates[b].fit.bic; });
-  const CandidateScore& w = d.candidates[simplest.front()];
-  std::ostringstream why;
-  const bool gap_small = d.base.held_out.mean_square <= 1.5 * d.base.held_out.noise_mean_square;
-  if (w.delta_bic < o.min_delta_bic) {
-    why << "no candidate beats the base model (best " << w.name << ": Delta BIC " << Fixed(w.delta_bic, 1) << " < "
-        << o.min_delta_bic << ")";
-    if (gap_small) why << "; the base already fits to the sensor-noise floor";
-  } else if (simplest.size() > 1) {
-    why << "ambiguous: " << w.name << " and " << d.candidates[simplest[1]].name
-        << " explain the data equally well (Delta BIC " << Fixed(d.candidates[simplest[1]].fit.bic - w.fit.bic, 1)
-        << " < " << o.min_delta_bic << ", same number of parameters)";
-  } else if (w.gap_reduction < o.min_gap_reduction || w.explained < o.min_explained) {
-    why << "the best candidate, " << w.name << ", leaves most of the gap: held-out force NRMSE reduced by "
-        << Fixed(100 * w.gap_reduction, 0) << " % and " << Fixed(100 * w.explained, 0)
-        << " % of the excess over the noise floor explained (needs >= " << Fixed(100 * o.min_gap_reduction, 0)
-        << " % and >= " << Fixed(100 * o.min_explained, 0) << " %)";
-  } else {
-    d.winner = simplest.front();
-    d.named_effect = w.name;
-    // The runner-up: the best other candidate that is a real rival, i.e. not a richer model the
-    // data cannot tell from the winner (those lose on parsimony, e.g. compaction_peak with a
-    // long decay against inertial_drag, or a pair containing the winner).
-    int runner = -1;
-    for (int i : valid) {
-      if (i == d.winner) continue;
-      const bool richer_twin = d.candidates[i].fit.parameters > w.fit.parameters &&
-                               d.candidates[i].fit.bic - bic_min < o.min_delta_bic;
-      if (!richer_twin && (runner < 0 || d.candidates[i].fit.bic < d.candidates[runner].fit.bic)) runner = i;
-    }
-    why << w.name << " beats the base (Delta BIC " << Fixed(w.delta_bic, 1) << ", held-out force NRMSE "
-        << Fixed(d.base.held_out.force_nrmse, 4) << " -> " << Fixed(w.held_out.force_nrmse, 4) << ", "
-        << Fixed(100 * w.explained, 0) << " % of the excess over the noise floor explained)";
-    if (runner >= 0)
-      why << " and the runner-up " << d.candidates[runner].name << " (Delta BIC "
-          << Fixed(d.candidates[runner].fit.bic - w.fit.bic, 1) << " worse, held-out NRMSE "
-          << Fixed(d.candidates[runner].held_out.force_nrmse, 4) << ")";
-  }
-  d.decision = why.str();
 }
 
 }  // namespace
@@ -373,49 +307,18 @@ Diagnosis RunDiagnosis(const dataset::Dataset& ds, const DiagnoseOptions& o) {
       }
     StartZetaWhereMissing(ds, d.problem);  // a Bekker soil's RFT base (law_candidate.h)
   }
-  io::Progress progress("diagnose", "fits", 1 + static_cast<int64_t>(model::EffectLibrary().size()), o.progress);
+  SetCandidateTerms(d.problem);  // from the base's soils (a Bekker base's too)
+  io::Progress progress("diagnose", "fits", 1 + static_cast<int64_t>(d.problem.terms.size()), o.progress);
   // 1-2: the base model, its gap, where it concentrates.
-  d.base = Score(d, ds, {}, o);
+  d.base = Score(d, ds, {}, nullptr, o);
   progress.Add(1, ", last: base");
-  Relate(d.base, d.base);
   d.where = WhereAnalysis(ds, d.problem, d.base.gaps, o);
   if (o.law_candidate) d.law_candidate = ScoreBekkerLaw(ds, d.problem, d.base.held_out.force_nrmse);
-  // 3: singles, then pairs of the best three when no single explains enough.
-  for (const model::EffectInfo& e : model::EffectLibrary()) {
-    d.candidates.push_back(Score(d, ds, {e.id}, o));
-    Relate(d.candidates.back(), d.base);
-    progress.Add(1, ", last: " + d.candidates.back().name);
-  }
-  std::vector<int> order;
-  for (size_t i = 0; i < d.candidates.size(); ++i)
-    if (d.candidates[i].applies) order.push_back(static_cast<int>(i));
-  std::sort(order.begin(), order.end(), [&](int a, int b) { return d.candidates[a].fit.bic < d.candidates[b].fit.bic; });
-  const bool enough = !order.empty() && d.candidates[order.front()].explained >= o.pair_threshold &&
-                      d.candidates[order.front()].gap_reduction >= o.min_gap_reduction;
-  const bool any_gap = d.base.held_out.mean_square > 1.5 * d.base.held_out.noise_mean_square;
-  // Pairs "where one is not enough": the best single must help (Delta BIC) but leave a gap.
-  const bool one_helps = !order.empty() && d.candidates[order.front()].delta_bic >= o.min_delta_bic;
-  if (o.try_pairs && !enough && any_gap && one_helps && order.size() >= 2) {
-    const size_t top = std::min<size_t>(3, order.size());
-    std::vector<std::vector<std::string>> pairs;
-    for (size_t a = 0; a < top; ++a)
-      for (size_t b = a + 1; b < top; ++b) {
-        std::vector<std::string> ids{d.candidates[order[a]].effect_ids[0], d.candidates[order[b]].effect_ids[0]};
-        // Library order, so a pair has one name.
-        std::sort(ids.begin(), ids.end(), [](const std::string& x, const std::string& y) {
-          return &model::FindEffect(x) < &model::FindEffect(y);
-        });
-        pairs.push_back(ids);
-      }
-    progress.SetTotal(1 + static_cast<int64_t>(model::EffectLibrary().size() + pairs.size()));
-    for (const auto& ids : pairs) {
-      d.candidates.push_back(Score(d, ds, ids, o));
-      Relate(d.candidates.back(), d.base);
-      progress.Add(1, ", last: " + d.candidates.back().name);
-    }
-  }
+  // 3: forward selection of the candidate terms.
+  SelectForward(d, o, [&](const std::vector<std::string>& ids, const FitResult& start) {
+    return Score(d, ds, ids, &start, o);
+  }, progress);
   progress.Finish();
-  Decide(d, o);
   if (d.winner < 0) d.residual_description = DescribeResidual(d);
   else d.where_after = WhereAnalysis(ds, d.problem, d.candidates[d.winner].gaps, o);
   d.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -13,16 +13,19 @@
 //     correlation, permutation p); per stroke phase (impact onset: first 20 % of the simulated
 //     stroke time, mid-stroke 20-70 %, stopping 70 % to the stop, rest after it) the phase's
 //     mean squared residual over the drop's, with a sign-flip permutation p across drops.
-//  3. Every applicable library effect is fitted with zeta (training drops), scored on the
-//     held-out drops (force NRMSE) and by BIC on the training residuals. Pairs of the three best
-//     singles are tried when no single effect explains at least `pair_threshold` of the gap.
-//     Decision (names an effect only when all hold):
-//       - it beats the base by Delta BIC >= 10 ("very strong", Kass & Raftery 1995);
-//       - parsimony: it has the fewest parameters among the candidates within Delta BIC < 10 of
-//         the best one, and it is the only one with that few (else: ambiguous -> none);
-//       - it explains most of the gap: held-out force NRMSE falls by >= 50 % AND >= 80 % of the
-//         excess mean-square residual above the estimated sensor-noise floor is explained.
-//     Otherwise `none`, with the residual described (what it correlates with).
+//  3. Forward selection (diagnose_selection.h): every applicable candidate term (the library's
+//     effects, and the soils' own dynamic term weakened, diagnose_fit.h CandidateTerm) is fitted
+//     with zeta on top of the current model (at first the base) on the training drops, scored on
+//     the held-out drops (force NRMSE) and by BIC on the training residuals. A step adds the best
+//     term when all hold:
+//       - it beats the current model by Delta BIC >= 10 ("very strong", Kass & Raftery 1995);
+//       - parsimony: it has the fewest parameters among the step's candidates within Delta BIC < 10
+//         of the best one, and it is the only one with that few (else: ambiguous, the step adds nothing);
+//       - it cuts the held-out force NRMSE of the current model.
+//     Then the search starts again from the new model, until no term qualifies. The selected model
+//     is named when it explains most of the gap: held-out force NRMSE falls by >= 50 % from the
+//     base AND >= 80 % of the excess mean-square residual above the estimated sensor-noise floor is
+//     explained. Otherwise `none`, with the residual described (what it correlates with).
 //  4-5. DIR/model.yaml, DIR/diagnosis.json, DIR/report.md with plots (diagnose_report.cpp).
 #include <optional>
 #include <string>
@@ -41,8 +44,7 @@ enum class DiagnoseBase { kRft, kBekker };
 
 struct DiagnoseOptions {
   int threads = 2;
-  bool try_pairs = true;
-  double pair_threshold = 0.8;       // explained fraction below which pairs are tried
+  bool try_pairs = true;             // search again after the first term (--no-pairs: one at most)
   double min_delta_bic = 10.0;
   double min_gap_reduction = 0.5;
   double min_explained = 0.8;
@@ -101,6 +103,10 @@ struct CandidateScore {
   double gap_reduction = 0.0;  // 1 - held-out force NRMSE / base's
   double explained = 0.0;      // of the excess mean square above the noise floor
   double delta_bic = 0.0;      // vs the base (positive = better)
+  int step = 0;                // the forward-selection step that fitted it (1: on top of the base)
+  int extends = -1;            // index into Diagnosis::candidates of the model it extends, -1: the base
+  double delta_bic_step = 0.0;      // vs the model it extends (positive = better)
+  double step_gap_reduction = 0.0;  // 1 - held-out force NRMSE / the extended model's
 };
 
 struct Diagnosis {
@@ -108,9 +114,14 @@ struct Diagnosis {
   std::vector<bool> held_out;
   FitProblem problem;
   CandidateScore base;
-  std::vector<CandidateScore> candidates;  // singles then pairs
-  int winner = -1;                         // index into candidates, -1: none
-  std::string named_effect = "none";
+  std::vector<CandidateScore> candidates;  // every step's, in order
+  std::vector<int> selection;              // the model after each accepted step (index into candidates)
+  int winner = -1;                         // index into candidates of the named model, -1: none
+  std::string named_effect = "none";       // named_effects joined by '+', or none
+  std::vector<std::string> named_effects;  // library effects found, in the order selected
+  // When the named model weakens the soils' own dynamic term: what the data say about it, in words
+  // (the term's weakening is reported there, not as an effect found). Else empty.
+  std::string dynamic_term_statement;
   std::string decision;                    // why
   std::string residual_description;
   std::vector<Finding> where;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <stdexcept>
 
 #include <Eigen/Dense>
 
@@ -13,6 +14,7 @@
 #include "drop_tests/io/work_pool.h"
 #include "lander/pad/effect_soil_response.h"
 #include "rft/input_error.h"
+#include "rft/stress_law_3d_factory.h"
 #include "rft/units.h"
 
 namespace touchdown::gap {
@@ -31,11 +33,11 @@ double NoiseEstimate(const std::vector<double>& y) {
 
 struct Layout {
   std::vector<std::string> effect_ids;
-  std::vector<const model::EffectInfo*> infos;
+  std::vector<const CandidateTerm*> infos;
   int soils = 0;
   int size() const {
     int n = soils;
-    for (const model::EffectInfo* e : infos) n += static_cast<int>(e->parameters.size());
+    for (const CandidateTerm* e : infos) n += static_cast<int>(e->parameters.size());
     return n;
   }
 };
@@ -49,8 +51,8 @@ ModelValues Unscale(const FitProblem& p, const Layout& L, const Eigen::VectorXd&
   ModelValues m;
   int k = 0;
   for (int s = 0; s < L.soils; ++s) m.zeta_N_m3.push_back(x[k++] * p.soils[s].zeta_N_m3);
-  for (const model::EffectInfo* e : L.infos) {
-    model::Effect effect{e->id, {}};
+  for (const CandidateTerm* e : L.infos) {
+    model::Effect effect{e->effect_id, {}};
     for (const model::EffectParameterInfo& q : e->parameters) effect.values.push_back(x[k++] * q.scale);
     m.effects.push_back(effect);
   }
@@ -63,7 +65,7 @@ void Bounds(const FitProblem&, const Layout& L, Eigen::VectorXd* lo, Eigen::Vect
   hi->resize(n);
   int k = 0;
   for (int s = 0; s < L.soils; ++s) (*lo)[k] = 0.02, (*hi)[k] = 50.0, ++k;
-  for (const model::EffectInfo* e : L.infos)
+  for (const CandidateTerm* e : L.infos)
     for (const model::EffectParameterInfo& q : e->parameters) (*lo)[k] = q.lower / q.scale, (*hi)[k] = q.upper / q.scale, ++k;
 }
 
@@ -139,12 +141,50 @@ Layout MakeLayout(const FitProblem& p, const std::vector<std::string>& ids) {
   Layout L;
   L.effect_ids = ids;
   L.soils = static_cast<int>(p.soils.size());
-  for (const std::string& id : ids) L.infos.push_back(&model::FindEffect(id));
+  for (const std::string& id : ids) L.infos.push_back(&FindTerm(p, id));
   return L;
 }
 }  // namespace
 
 rft::EffectTerms FitResult::terms() const { return model::MakeEffectTerms(effects); }
+
+void SetCandidateTerms(FitProblem& p) {
+  // The soils' own dynamic term in inertial_drag's units, when they all share one.
+  p.shipped_lambda = 0.0;
+  for (size_t s = 0; s < p.soils.size(); ++s) {
+    const rft::SoilParameters& soil = p.soils[s];
+    const double lambda = soil.dynamic_term && soil.bulk_density_kg_m3 > 0.0
+                              ? rft::WithSoilDynamicTerm({}, soil).inertial_lambda
+                              : 0.0;
+    if (s > 0 && lambda != p.shipped_lambda) {
+      p.shipped_lambda = 0.0;
+      break;
+    }
+    p.shipped_lambda = lambda;
+  }
+  p.terms.clear();
+  const model::EffectInfo& inertial = model::FindEffect("inertial_drag");
+  CandidateTerm weaker{kWeakerDynamicTerm, inertial.id, inertial.parameters};
+  model::EffectParameterInfo& w = weaker.parameters[0];
+  w.upper = std::max(p.shipped_lambda, 0.0);
+  w.start = 0.5 * p.shipped_lambda;
+  w.scan = {0.0, 0.5 * p.shipped_lambda, p.shipped_lambda};
+  p.terms.push_back(weaker);
+  for (const model::EffectInfo& e : model::EffectLibrary()) {
+    CandidateTerm t{e.id, e.id, e.parameters};
+    if (e.id == inertial.id && p.shipped_lambda > 0.0) {  // more of the soil's own term
+      t.parameters[0].lower = p.shipped_lambda;
+      t.parameters[0].start = std::max(t.parameters[0].start, p.shipped_lambda);
+    }
+    p.terms.push_back(t);
+  }
+}
+
+const CandidateTerm& FindTerm(const FitProblem& p, const std::string& name) {
+  for (const CandidateTerm& t : p.terms)
+    if (t.name == name) return t;
+  throw std::logic_error("diagnose: no candidate term '" + name + "'");
+}
 
 FitProblem MakeFitProblem(const dataset::Dataset& ds, const std::vector<bool>& held_out, int threads) {
   FitProblem p;
@@ -196,12 +236,24 @@ FitProblem MakeFitProblem(const dataset::Dataset& ds, const std::vector<bool>& h
     d.sample_period_s = dataset::SamplePeriod(dd.trace);
     p.drops.push_back(d);
   }
+  SetCandidateTerms(p);
   return p;
 }
 
 bool CandidateApplies(const FitProblem& p, const std::vector<std::string>& ids, std::string* why) {
-  for (const std::string& id : ids) {
+  for (size_t i = 0; i < ids.size(); ++i)
+    for (size_t j = 0; j < i; ++j)
+      if (FindTerm(p, ids[i]).effect_id == FindTerm(p, ids[j]).effect_id) {
+        *why = ids[i] + " and " + ids[j] + " set the same term";
+        return false;
+      }
+  for (const std::string& name : ids) {
+    const std::string& id = FindTerm(p, name).effect_id;
     const model::EffectInfo& e = model::FindEffect(id);
+    if (name == kWeakerDynamicTerm && !(p.shipped_lambda > 0.0)) {
+      *why = "the soils carry no common dynamic term to weaken";
+      return false;
+    }
     if (p.bekker_base && id == "depth_exponent") {
       *why = "depth_exponent does not apply to the Bekker base (its depth exponent is the soil's fitted n)";
       return false;
@@ -228,13 +280,23 @@ Eigen::VectorXd StartingPoint(const FitProblem& p, const Layout& L, const FitRes
   int k = 0;
   for (int s = 0; s < L.soils; ++s)
     x[k++] = start && !start->zeta_N_m3.empty() ? start->zeta_N_m3[s] / p.soils[s].zeta_N_m3 : 1.0;
-  for (const model::EffectInfo* e : L.infos)
-    for (const model::EffectParameterInfo& q : e->parameters) x[k++] = q.start / q.scale;
+  std::vector<bool> seeded;
+  for (const CandidateTerm* e : L.infos) {
+    // A term the starting model already has starts at its fitted values (forward selection).
+    const model::Effect* from = nullptr;
+    if (start)
+      for (size_t j = 0; j < start->effect_ids.size(); ++j)
+        if (start->effect_ids[j] == e->name) from = &start->effects[j];
+    for (size_t i = 0; i < e->parameters.size(); ++i) {
+      x[k++] = (from ? from->values[i] : e->parameters[i].start) / e->parameters[i].scale;
+      seeded.push_back(from != nullptr);
+    }
+  }
   Eigen::VectorXd r;
   k = L.soils;
-  for (const model::EffectInfo* e : L.infos)
+  for (const CandidateTerm* e : L.infos)
     for (const model::EffectParameterInfo& q : e->parameters) {
-      if (!q.scan.empty()) {
+      if (!q.scan.empty() && !seeded[k - L.soils]) {
         double best_cost = 0.0, best = x[k];
         for (size_t i = 0; i < q.scan.size(); ++i) {
           Eigen::VectorXd xs = x;
@@ -396,8 +458,8 @@ void Estimates(const FitProblem& p, const Layout& L, const Objective& obj, const
     else
       estimate("", "zeta_N_cm3:" + soil.name, soil.zeta_N_m3, units::kN_m3_per_N_cm3, "N/m^3");
   }
-  for (const model::EffectInfo* e : L.infos)
-    for (const model::EffectParameterInfo& q : e->parameters) estimate(e->id, q.key, q.scale, q.file_to_si, q.unit);
+  for (const CandidateTerm* e : L.infos)
+    for (const model::EffectParameterInfo& q : e->parameters) estimate(e->name, q.key, q.scale, q.file_to_si, q.unit);
 }
 }  // namespace
 

@@ -43,6 +43,19 @@ struct FitDrop {
   double sample_period_s = 0.0;      // of its trace (dataset::SamplePeriod): what a sample averages over
 };
 
+// A term a fit can add to the base: a library effect with the range its parameters are fitted
+// in. Usually the library's own range; but when every soil carries the same dynamic term (the
+// shipped soils' dynamic RFT, lambda rho (v.n)^2), that term is split in two: `weaker_dynamic_term`
+// is inertial_drag with lambda in [0, the shipped lambda] (the base's own term weakened or absent)
+// and `inertial_drag` is lambda from the shipped value up (more of it). Both replace the soil's term,
+// so they never enter one model together.
+struct CandidateTerm {
+  std::string name;       // in reports and diagnosis.json; the library id unless narrowed
+  std::string effect_id;  // the library effect it sets (model files carry this one)
+  std::vector<model::EffectParameterInfo> parameters;  // the library's, with the fitted range
+};
+inline constexpr const char* kWeakerDynamicTerm = "weaker_dynamic_term";
+
 struct FitProblem {
   std::vector<io::PadSpec> pads;
   std::vector<std::unique_ptr<geom::AxisymmetricIntrusion>> intrusions;
@@ -53,7 +66,11 @@ struct FitProblem {
   pad::SensorSampling sensor_sampling = pad::SensorSampling::kPeriodMean;
   int threads = 2;
   bool has_air = false, has_vacuum = false;
-  // The Bekker base (diagnose --base bekker, law_candidate.h UseBekkerBase): every soil is a Bekker
+  // The soils' own dynamic term as an inertial_drag lambda (rft::WithSoilDynamicTerm) when every
+  // soil has the same one, else 0; and the candidate terms (library order, the weaker dynamic term
+  // first) that follow from it.
+  double shipped_lambda = 0.0;
+  std::vector<CandidateTerm> terms;  // The Bekker base (diagnose --base bekker, law_candidate.h UseBekkerBase): every soil is a Bekker
   // soil fitted on its training drops (n, k_c, k_phi as calibrate --law bekker), the drops run on
   // the pads' Bekker integrals, and the per-soil parameter fitted with the effects is a scale of
   // the soil's moduli k_c and k_phi (its zeta_N_m3 is then 1, so the fitted "zeta" is the scale).
@@ -63,9 +80,13 @@ struct FitProblem {
 
 // Prepares every dataset drop; `held_out` marks the drops not used for fitting.
 FitProblem MakeFitProblem(const dataset::Dataset& dataset, const std::vector<bool>& held_out, int threads);
+// The candidate terms of `problem` (from its soils' dynamic term, above); sets problem.terms.
+void SetCandidateTerms(FitProblem& problem);
+// The candidate term called `name`; throws std::logic_error if there is none.
+const CandidateTerm& FindTerm(const FitProblem& problem, const std::string& name);
 
 struct ParameterEstimate {
-  std::string effect;  // "" for zeta
+  std::string effect;  // "" for zeta, else the candidate term's name
   std::string key;     // file key ("chi", "d_c_mm") or "zeta_N_cm3:<soil>"
   double value = 0.0, low = 0.0, high = 0.0;  // SI
   double file_to_si = 1.0;
@@ -73,9 +94,9 @@ struct ParameterEstimate {
 };
 
 struct FitResult {
-  std::vector<std::string> effect_ids;  // empty: the base model
+  std::vector<std::string> effect_ids;  // candidate term names, in the order added; empty: the base
   std::vector<double> zeta_N_m3;        // per soil, at the soil's reference gravity
-  std::vector<model::Effect> effects;          // fitted values
+  std::vector<model::Effect> effects;          // fitted values, as library effects (ids: effect_id)
   std::vector<ParameterEstimate> estimates;
   double cost = 0.0;       // weighted, as minimised
   double rss = 0.0;        // unweighted sum of squared normalised residuals
@@ -97,7 +118,8 @@ struct FitResult {
 // Whether the candidate can be fitted on this problem; if not, `why` says why.
 bool CandidateApplies(const FitProblem& problem, const std::vector<std::string>& effect_ids, std::string* why);
 // Fits zeta per soil and the effects' parameters on the training drops. `start` (a fit of a
-// sub-model, e.g. the base) seeds zeta.
+// sub-model, e.g. the base, or the model a forward-selection step extends) seeds zeta and the
+// parameters of the terms it shares with this one.
 FitResult FitCandidate(const FitProblem& problem, const std::vector<std::string>& effect_ids,
                        const FitResult* start = nullptr);
 

@@ -65,6 +65,24 @@ nlohmann::json FindingsJson(const std::vector<Finding>& fs) {
   return out;
 }
 
+// The accepted steps in order: the term each added, the model's parameters with their intervals,
+// its Delta BIC against the model before, and the held-out gap after it.
+nlohmann::json SelectionJson(const Diagnosis& d) {
+  nlohmann::json out = nlohmann::json::array();
+  for (size_t k = 0; k < d.selection.size(); ++k) {
+    const CandidateScore& c = d.candidates[d.selection[k]];
+    out.push_back({{"step", k + 1},
+                   {"added", c.effect_ids.back()},
+                   {"model", c.name},
+                   {"parameters", ParametersJson(c.fit, false)},
+                   {"delta_bic_vs_previous", c.delta_bic_step},
+                   {"held_out_force_nrmse", c.held_out.force_nrmse},
+                   {"gap_reduction_vs_previous", c.step_gap_reduction},
+                   {"gap_reduction_vs_base", c.gap_reduction}});
+  }
+  return out;
+}
+
 const CandidateScore* Shown(const Diagnosis& d) {
   if (d.winner >= 0) return &d.candidates[d.winner];
   const CandidateScore* best = nullptr;
@@ -87,8 +105,11 @@ nlohmann::json DiagnosisJson(const Diagnosis& d) {
   nlohmann::json j;
   const CandidateScore* after = d.winner >= 0 ? &d.candidates[d.winner] : &d.base;
   j["named_effect"] = d.named_effect;
-  j["named_effects"] = d.winner >= 0 ? nlohmann::json(d.candidates[d.winner].effect_ids) : nlohmann::json::array();
+  j["named_effects"] = d.named_effects;
+  j["selected_terms"] = d.winner >= 0 ? nlohmann::json(d.candidates[d.winner].effect_ids) : nlohmann::json::array();
+  if (!d.dynamic_term_statement.empty()) j["dynamic_term_statement"] = d.dynamic_term_statement;
   j["decision"] = d.decision;
+  j["selection"] = SelectionJson(d);
   if (!d.residual_description.empty()) j["residual_description"] = d.residual_description;
   j["effect_parameters"] = d.winner >= 0 ? ParametersJson(after->fit, false) : nlohmann::json::object();
   j["zeta_N_cm3"] = ParametersJson(after->fit, true);
@@ -98,7 +119,8 @@ nlohmann::json DiagnosisJson(const Diagnosis& d) {
   j["where"] = {{"before", FindingsJson(d.where)}, {"after", FindingsJson(d.where_after)}};
   nlohmann::json cands = nlohmann::json::array();
   for (const CandidateScore& c : d.candidates) {
-    nlohmann::json e{{"effect", c.name}, {"applies", c.applies}};
+    nlohmann::json e{{"effect", c.name}, {"applies", c.applies}, {"step", c.step},
+                     {"extends", c.extends < 0 ? std::string("base") : d.candidates[c.extends].name}};
     if (!c.applies) {
       e["why_not"] = c.why_not;
     } else {
@@ -109,6 +131,8 @@ nlohmann::json DiagnosisJson(const Diagnosis& d) {
       e["explained_fraction"] = c.explained;
       e["bic"] = c.fit.bic;
       e["delta_bic_vs_base"] = c.delta_bic;
+      e["delta_bic_vs_extended"] = c.delta_bic_step;
+      e["gap_reduction_vs_extended"] = c.step_gap_reduction;
       e["parameter_count"] = c.fit.parameters;
       e["converged"] = c.fit.converged;
       e["iterations"] = c.fit.iterations;
@@ -156,7 +180,7 @@ model::ModelFile DiagnosedModel(const Diagnosis& d, const dataset::Dataset& ds, 
                                       ? "touchdown diagnose: base Bekker (n, k_c, k_phi per soil, fitted; in "
                                         "diagnosis.json base.bekker_soils, not in this file)"
                                       : "touchdown diagnose: base quasi-static RFT (zeta per soil, fitted)") +
-                      (d.winner >= 0 ? " plus " + d.named_effect : std::string(" (no effect named)"));
+                      (d.winner >= 0 ? " plus " + d.candidates[d.winner].name : std::string(" (no effect named)"));
   for (size_t s = 0; s < d.problem.soils.size() && !d.problem.bekker_base; ++s) {
     const ParameterEstimate& e = after.fit.estimates[s];
     model::SoilOverride o;
@@ -400,7 +424,14 @@ void WriteReport(const Diagnosis& d, const dataset::Dataset& ds, const Candidate
     if (IsSynthetic(ds))
       out << "> **The dataset is SYNTHETIC** (made by `touchdown synth`), not measured: this run rehearses the "
              "workflow on data whose missing effect is known.\n\n";
-    out << "**Named effect: `" << d.named_effect << "`.** " << d.decision << ".\n\n";
+    if (d.named_effects.empty()) out << "**Named effect: `none`.**";
+    else {
+      out << "**Named effects, in the order selected:";
+      for (size_t i = 0; i < d.named_effects.size(); ++i) out << (i ? ", `" : " `") << d.named_effects[i] << "`";
+      out << ".**";
+    }
+    if (!d.dynamic_term_statement.empty()) out << " **" << d.dynamic_term_statement << "**";
+    out << " " << d.decision << ".\n\n";
     if (!d.residual_description.empty()) out << d.residual_description << "\n\n";
     size_t n_train = 0;
     for (const FitDrop& f : d.problem.drops) n_train += f.train;
@@ -439,12 +470,16 @@ void WriteReport(const Diagnosis& d, const dataset::Dataset& ds, const Candidate
           << (f.significant ? "yes" : "no") << " |\n";
     out << "\nPermutation tests (" << 2000 << " permutations); significant means p below 0.05 / number of tests "
            "(Bonferroni).\n\n## 3. Candidates\n\n"
-        << "| effect | parameters (95 % interval) | held-out force NRMSE | reduction | explained | Delta BIC vs base |\n"
-        << "| --- | --- | --- | --- | --- | --- |\n"
-        << "| base | zeta per soil | " << Num(d.base.held_out.force_nrmse) << " | - | - | 0 |\n";
+        << "Forward selection: each step fits every remaining term on top of the model so far and adds the best one "
+           "when it beats that model by Delta BIC >= 10, is the only simplest one the data cannot tell from the best, "
+           "and cuts the held-out force NRMSE.\n\n"
+        << "| step | model | parameters (95 % interval) | held-out force NRMSE | reduction vs base | explained | "
+           "Delta BIC vs base | Delta BIC vs the step's start |\n"
+        << "| --- | --- | --- | --- | --- | --- | --- | --- |\n"
+        << "| 0 | base | zeta per soil | " << Num(d.base.held_out.force_nrmse) << " | - | - | 0 | - |\n";
     for (const CandidateScore& c : d.candidates) {
       if (!c.applies) {
-        out << "| " << c.name << " | not tried: " << c.why_not << " | | | | |\n";
+        out << "| " << c.step << " | " << c.name << " | not tried: " << c.why_not << " | | | | | |\n";
         continue;
       }
       std::ostringstream params;
@@ -452,10 +487,25 @@ void WriteReport(const Diagnosis& d, const dataset::Dataset& ds, const Candidate
         if (!e.effect.empty())
           params << e.key << " = " << Num(e.value / e.file_to_si) << " [" << Num(e.low / e.file_to_si) << ", "
                  << Num(e.high / e.file_to_si) << "]; ";
-      out << "| " << c.name << (d.winner >= 0 && &c == &d.candidates[d.winner] ? " **(named)**" : "") << " | "
-          << params.str() << " | " << Num(c.held_out.force_nrmse) << " | " << Num(100 * c.gap_reduction, 3) << " % | "
-          << Num(100 * c.explained, 3) << " % | " << Num(c.delta_bic, 5) << " |\n";
+      const bool selected = std::find(d.selection.begin(), d.selection.end(), &c - d.candidates.data()) != d.selection.end();
+      out << "| " << c.step << " | " << c.name << (selected ? " **(selected)**" : "") << " | " << params.str() << " | "
+          << Num(c.held_out.force_nrmse) << " | " << Num(100 * c.gap_reduction, 3) << " % | " << Num(100 * c.explained, 3)
+          << " % | " << Num(c.delta_bic, 5) << " | " << Num(c.delta_bic_step, 5) << " |\n";
     }
+    out << "\n**The selected terms in order** (held-out gap after each step):\n\n"
+           "| step | added | parameters (95 % interval) | Delta BIC vs the step before | held-out force NRMSE after |\n"
+           "| --- | --- | --- | --- | --- |\n| 0 | (base) | | | " << Num(d.base.held_out.force_nrmse) << " |\n";
+    for (size_t k = 0; k < d.selection.size(); ++k) {
+      const CandidateScore& c = d.candidates[d.selection[k]];
+      std::ostringstream params;
+      for (const ParameterEstimate& e : c.fit.estimates)
+        if (!e.effect.empty())
+          params << e.effect << "." << e.key << " = " << Num(e.value / e.file_to_si) << " [" << Num(e.low / e.file_to_si)
+                 << ", " << Num(e.high / e.file_to_si) << "]; ";
+      out << "| " << k + 1 << " | " << c.effect_ids.back() << " | " << params.str() << " | " << Num(c.delta_bic_step, 5)
+          << " | " << Num(c.held_out.force_nrmse) << " |\n";
+    }
+    if (d.selection.empty()) out << "| - | nothing selected | | | |\n";
     if (d.law_candidate) {  // --law-candidate: "the gap is the law" (law_candidate.h)
       const LawCandidate& l = *d.law_candidate;
       out << "\nThe law as a candidate (" << l.law << ", fitted per soil on the training drops): ";
@@ -467,7 +517,9 @@ void WriteReport(const Diagnosis& d, const dataset::Dataset& ds, const Candidate
     out << "\n## 4. Model\n\n`model.yaml`: "
         << (d.problem.bekker_base ? "(Bekker base: its soils are in `diagnosis.json`, `base.bekker_soils`)"
                                   : "the base model's zeta per soil")
-        << (d.winner >= 0 ? " plus `" + d.named_effect + "` with its fitted parameters and 95 % intervals" : "")
+        << (d.winner >= 0 ? " plus `" + d.candidates[d.winner].name + "` with its fitted parameters and 95 % intervals" +
+                                 (d.dynamic_term_statement.empty() ? "" : " (the weakened dynamic term as `inertial_drag`, which replaces the soil's own)")
+                           : "")
         << ". Intervals are cluster-robust over the training drops.\n\n## 5. Before and after (held-out drops)\n\n"
         << "| drop | force NRMSE before | after | final penetration error before | after |\n| --- | --- | --- | --- | --- |\n";
     for (size_t i = 0; i < d.problem.drops.size(); ++i) {

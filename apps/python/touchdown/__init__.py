@@ -146,7 +146,7 @@ def diagnose(measured, out, *, model=None, threads=0, pairs=True, law_candidate=
     """`touchdown diagnose MEASURED --out OUT [--model M] [--threads N] [--no-pairs] [--law-candidate]
     [--base rft|bekker] [--sensor-sampling instantaneous|period_mean]`: the model-gap workflow into
     the new directory OUT (docs/model_gap.md); returns diagnosis.json as a dict (the command prints a
-    part of it)."""
+    part of it). `pairs=False` is `--no-pairs`: forward selection stops after the first term."""
     return json.loads(_touchdown.diagnose(measured=_path_text(measured), model=_path_text(model), out=_path_text(out),
                                           threads=threads, pairs=pairs, law_candidate=law_candidate, base=base,
                                           sensor_sampling=sensor_sampling))

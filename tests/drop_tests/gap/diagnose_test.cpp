@@ -1,16 +1,20 @@
 // `diagnose` on small synthetic datasets made in the test, each with one hidden effect: it must
 // name the effect (not being told it), recover its parameters (within 1.5 half widths of their
 // reported intervals) and
-// at least halve the held-out force NRMSE; with nothing hidden it names none; with an effect
-// outside the library (a floor stiffening the bed) it never names a library effect confidently.
+// at least halve the held-out force NRMSE, selecting nothing else; with nothing hidden it names none;
+// with an effect outside the library (a floor stiffening the bed) it never names a library effect
+// confidently. On drops made without the shipped soil's dynamic term, forward selection names the
+// term's absence beside a hidden effect, and only the absence when nothing is hidden.
 #include "drop_tests/gap/diagnose.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <algorithm>
 #include <cstdio>
 
 #include "drop_tests/dataset/synth.h"
+#include "drop_tests/io/catalog.h"
 
 namespace touchdown::gap {
 namespace {
@@ -32,9 +36,22 @@ dataset::SynthSpec SmallSpec() {
   return s;
 }
 
+// The same drops generated on loose FJS-1 without its dynamic term (a copy of the soil file with
+// `dynamic_term: false`) and labelled fjs1_lp, as data from a medium without the term would be:
+// diagnose then runs on the soil as shipped, term on.
+dataset::SynthSpec WithoutTheTerm(dataset::SynthSpec s) {
+  rft::SoilParameters soil = io::LoadSoil("fjs1_lp");
+  soil.dynamic_term = false;
+  const std::string path = ::testing::TempDir() + "fjs1_lp_without_dynamic_term.yaml";
+  io::WriteSoil(soil, path);
+  for (dataset::SynthDrop& d : s.drops) d.soil = path;
+  return s;
+}
+
 Diagnosis Diagnose(const dataset::SynthSpec& spec) {
   dataset::Dataset ds = dataset::Synthesize(spec);
   ds.directory = "in-memory";
+  for (dataset::DatasetDrop& d : ds.drops) d.soil = "fjs1_lp";
   DiagnoseOptions o;
   o.threads = 2;
   o.permutations = 200;
@@ -54,6 +71,8 @@ TEST_P(HiddenEffect, IsNamedRecoveredAndHalvesTheGap) {
   const Diagnosis d = Diagnose(spec);
   ASSERT_EQ(d.named_effect, GetParam().id) << d.decision;
   const CandidateScore& w = d.candidates[d.winner];
+  EXPECT_EQ(w.effect_ids, std::vector<std::string>{GetParam().id}) << d.decision;  // nothing else
+  EXPECT_TRUE(d.dynamic_term_statement.empty()) << d.dynamic_term_statement;
   size_t k = 0;
   for (const ParameterEstimate& e : w.fit.estimates) {
     if (e.effect.empty()) continue;
@@ -86,6 +105,39 @@ TEST(Diagnose, EffectOutsideTheLibraryIsNotNamedConfidently) {
   spec.floor = dataset::FloorStiffening{};
   const Diagnosis d = Diagnose(spec);
   EXPECT_EQ(d.named_effect, "none") << d.decision;
+}
+
+// Forward selection on data without the shipped soil's dynamic term: the term's absence and the
+// hidden effect are both found, and the report says the shipped term is not supported.
+TEST(Diagnose, WithoutTheTermNamesTheWeakerTermAndTheHiddenEffect) {
+  dataset::SynthSpec spec = WithoutTheTerm(SmallSpec());
+  spec.hidden_effect = model::Effect{"rate_damping", {15000.0}};
+  const Diagnosis d = Diagnose(spec);
+  ASSERT_GE(d.winner, 0) << d.decision;
+  const CandidateScore& w = d.candidates[d.winner];
+  EXPECT_EQ(d.named_effect, "rate_damping") << d.decision;
+  ASSERT_EQ(w.effect_ids.size(), 2u) << w.name << ": " << d.decision;
+  EXPECT_NE(std::find(w.effect_ids.begin(), w.effect_ids.end(), kWeakerDynamicTerm), w.effect_ids.end()) << w.name;
+  EXPECT_EQ(d.dynamic_term_statement.rfind("The data do not support the shipped default's dynamic term (lambda fitted ", 0), 0u)
+      << d.dynamic_term_statement;
+  for (const ParameterEstimate& e : w.fit.estimates) {
+    std::printf("[ without term ] %s.%s = %.6g [%.6g, %.6g]\n", e.effect.c_str(), e.key.c_str(), e.value, e.low, e.high);
+    if (e.effect == "rate_damping") {
+      EXPECT_NEAR(e.value, 15000.0, 0.1 * 15000.0);
+    }
+    if (e.effect == kWeakerDynamicTerm) {
+      EXPECT_LT(e.high, d.problem.shipped_lambda);
+    }
+  }
+  EXPECT_GE(w.gap_reduction, 0.5) << d.decision;
+}
+
+TEST(Diagnose, WithoutTheTermNothingHiddenNamesOnlyTheTermsAbsence) {
+  const Diagnosis d = Diagnose(WithoutTheTerm(SmallSpec()));
+  EXPECT_EQ(d.named_effect, "none") << d.decision;
+  ASSERT_GE(d.winner, 0) << d.decision;
+  EXPECT_EQ(d.candidates[d.winner].effect_ids, std::vector<std::string>{kWeakerDynamicTerm}) << d.decision;
+  EXPECT_FALSE(d.dynamic_term_statement.empty());
 }
 
 }  // namespace

@@ -1,0 +1,29 @@
+#pragma once
+// Forward selection of `touchdown diagnose` (diagnose.h, step 3): from the base, add the best
+// candidate term while it beats the current model by Delta BIC >= min_delta_bic, is the only
+// simplest one among those the data cannot tell from the best (parsimony), and cuts the held-out
+// force NRMSE of the current model; then search again from the new model. The selected model is
+// named when it explains most of the base's gap (min_gap_reduction, min_explained).
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "drop_tests/gap/diagnose.h"
+#include "drop_tests/io/progress.h"
+
+namespace touchdown::gap {
+
+// Fits and scores the model of terms `ids` (held-out gaps included), seeded by `start`.
+using ScoreModel = std::function<CandidateScore(const std::vector<std::string>& ids, const FitResult& start)>;
+
+// Fills d.candidates (every step's, with step, extends, delta_bic_step and step_gap_reduction;
+// gap_reduction, explained and delta_bic against d.base), d.selection, d.winner, d.named_effect(s),
+// d.dynamic_term_statement and d.decision. d.base must be scored.
+void SelectForward(Diagnosis& d, const DiagnoseOptions& options, const ScoreModel& score, io::Progress& progress);
+
+// The plain statement on the soils' own dynamic term when `model` weakens it (else empty): "the
+// data do not support the shipped default's dynamic term (lambda fitted X [lo, hi] against the
+// shipped L)" when the fitted lambda is significantly below the shipped one or near zero.
+std::string DynamicTermStatement(const FitProblem& problem, const CandidateScore& model);
+
+}  // namespace touchdown::gap
