@@ -1,4 +1,4 @@
-// Speed target (issue 6): a diagnose run over 27 drops and the whole effect library in under a
+// Speed target: a diagnose run over 27 drops and the whole effect library in under a
 // minute on a 2-core machine. 27 synthetic drops: flat, C4 and curved pads x 0.7/1.0/1.5 m/s x
 // three trials (the first in air, two in vacuum) on loose FJS-1, a gas cushion hidden in the air
 // drops, the same noise as the shipped dataset; full traces (stop + 30 ms of rest).

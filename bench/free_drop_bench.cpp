@@ -1,5 +1,5 @@
 // A free 6-DOF pad drop (3D contact) with a meshed pad of about 5k triangles: the flat pad revolved
-// at 96 rim segments. Target: under 50 ms per drop on one core (issue 3). Counters report the
+// at 96 rim segments. Target: under 50 ms per drop on one core. Counters report the
 // mesh size and the integrator's work so a slow case shows why it is slow. TD_RTOL overrides the
 // relative tolerance (convergence studies);
 // TD_MSBJ sets the most steps between Jacobians; TD_DQ_JACOBIAN=1 takes CVODE's difference-quotient Jacobian instead of the structured one.

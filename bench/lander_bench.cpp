@@ -24,7 +24,7 @@
 #include "rft/bekker_law.h"
 #include "rft/stress_law_3d_factory.h"
 #include "rft/units.h"
-#include "tests/lander/multibody/paper_lander.h"
+#include "fixtures/paper_lander.h"
 
 namespace {
 
@@ -123,7 +123,7 @@ void BM_LanderSlope10_Sideways_1s(benchmark::State& state) {
   RunLanding(state, setup, "slope");
 }
 
-// The paper's lander at lunar gravity on a Bekker soil (issue 18, docs/bekker_soil.md): 4 deg slope,
+// The paper's lander at lunar gravity on a Bekker soil (docs/bekker_soil.md): 4 deg slope,
 // 0.22 m/s downhill, 3 deg roll. fjs1_lp_bekker's values (n = 1.018, k_c = 0, k_phi = 3888
 // kN/m^(n+2), c = 0.17 kPa, phi = 35 deg, K = 18 mm); state.range(0) = 1 takes n = 1 instead, which
 // runs the linear depth law: the cost of the z^n path is the difference.

@@ -58,7 +58,7 @@
 // downhill_azimuth_deg; a drop that sets only the speed moves along +x as before, one that sets
 // only the azimuth keeps the scenario's speed), and the body-axis angular rates at release
 // angular_rate_x_deg_s, angular_rate_y_deg_s, angular_rate_z_deg_s (the scenario's
-// initial.angular_rate_deg_s). Every lander drop records them all (results_db.h, format 5).
+// initial.angular_rate_deg_s). Every lander drop records them all (results_db.h).
 //
 // It replaces the scenario's soil patches: the ground keeps the scenario's default soil, and each
 // pad whose soil differs from it gets a square patch of its soil centred below its ball joint at

@@ -18,10 +18,10 @@ namespace touchdown::pad {
 namespace {
 // The absolute tolerance of each state: rtol times the drop's own scale for that state (unless the
 // caller gave component_atol). Why: a state that stays near zero - the rotation about an axis the
-// drop is symmetric about, a level pad's spin - was resolved to a scalar atol of 1e-11 in its own
-// unit; the mesh's small asymmetries drive it, and the 5-degree tilted drop spent 5,964 steps
-// resolving 1e-4 rad/s of wobble to 1e-11 rad/s (12 times fewer steps with these scales, the
-// depth and tilt unchanged to 1e-6; tests/lander/pad/free_drop_test.cpp).
+// drop is symmetric about, a level pad's spin - would be resolved to a scalar atol of 1e-11 in its
+// own unit; the mesh's small asymmetries drive it, and the 5-degree tilted drop would spend 12 times
+// the steps resolving 1e-4 rad/s of wobble to 1e-11 rad/s (the depth and tilt agree to 1e-6 with
+// these scales; tests/lander/pad/free_drop_test.cpp).
 //   length L: the pad's radius about its centre of mass; speed V: the largest of the impact speed,
 //   the horizontal speed, spin times L and sqrt(g L); angle: 1 rad; angular speed V / L;
 //   energy: m V^2 / 2 + m g L.
