@@ -95,6 +95,7 @@
 #include "drop_tests/scenario/lander_scenario.h"
 #include "drop_tests/model/model_file.h"
 #include "lander/pad/rig_drop.h"
+#include "rft/gravity_constants.h"
 #include "rft/physical_limits.h"
 
 namespace touchdown::sweep {
@@ -125,7 +126,7 @@ struct SweepDropParams {
   int soil = 0;
   double impact_speed_m_s = 0.0;
   std::optional<double> mass_kg;  // default: the pad's
-  double gravity_m_s2 = 9.81;
+  double gravity_m_s2 = rft::kEarthGravity_m_s2;
   double tilt_rad = 0.0;
   double horizontal_speed_m_s = 0.0;
   std::optional<double> zeta_N_m3;  // at the soil's reference gravity; default: the soil's

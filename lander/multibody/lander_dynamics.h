@@ -73,6 +73,13 @@ enum class PadMode { kFree, kHeld };
 // ramp makes the force continuous through v = 0 and changes nothing above 0.1 mm/s; a pad that
 // slows below it is offered a capture (lander_simulation.h), so no creep results.
 inline constexpr double kSoilRampSpeed = 1e-4;
+
+// The cross-product matrix: Skew(a) b = a x b.
+inline Eigen::Matrix3d Skew(const Eigen::Vector3d& v) {
+  Eigen::Matrix3d s;
+  s << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
+  return s;
+}
 enum class StrokeMode { kFree, kLocked, kBottomed };  // crushable absorbers only
 
 // Discrete state of the hybrid system, changed only at events.

@@ -85,7 +85,7 @@ Eigen::VectorXd ReleaseState(const FreePadDynamics& pad, const FreeDropInput& in
   Eigen::VectorXd y = Eigen::VectorXd::Zero(pad.size());
   y.segment<3>(kP) = PlaceAtDepth(pad.body(), R0, -clearance) + R0 * pad.body().com_B;
   y.segment<4>(kQ) << q0.w(), q0.x(), q0.y(), q0.z();
-  y.segment<3>(kV) << in.horizontal_speed_m_s, 0.0, -std::sqrt(std::max(v_td * v_td - 2.0 * g * clearance, 0.0));
+  y.segment<3>(kV) << in.horizontal_speed_m_s, 0.0, -ReleaseSpeed(v_td, g, clearance);
   y.segment<3>(kW) = R0.transpose() * in.omega_W;
   return y;
 }
@@ -198,7 +198,7 @@ FreeDropResult RunFreeDrop(const geom::PadBody& body, const rft::Terrain& terrai
   integ::HybridRun run(integrator);
 
   const double v_td = in.impact_speed_m_s, g = in.gravity_m_s2;
-  const double clearance = std::min(options.approach_clearance_m, v_td * v_td / (4.0 * g));
+  const double clearance = ReleaseClearance(options.approach_clearance_m, v_td, g);
   Eigen::VectorXd y = ReleaseState(pad, in, clearance);
   if (clearance > 0.0) y = Approach(run, pad, y, clearance);
   y[kWork] = 0.0;

@@ -23,6 +23,8 @@
 #include "footpad_geom/pad_body.h"
 #include "lander/integ/cvode_integrator.h"
 #include "lander/pad/pad_pose.h"
+#include "lander/pad/release.h"
+#include "rft/gravity_constants.h"
 #include "rft/soil_map.h"
 
 namespace touchdown::pad {
@@ -33,12 +35,12 @@ struct FreeDropInput {
   double tilt_rad = 0.0;              // at release, about tilt_axis
   TiltAxis tilt_axis = TiltAxis::kX;
   Eigen::Vector3d omega_W = Eigen::Vector3d::Zero();  // angular velocity at release [rad/s]
-  double gravity_m_s2 = 9.81;
+  double gravity_m_s2 = rft::kEarthGravity_m_s2;
 };
 
 struct FreeDropOptions {
   double sample_rate_hz = 1000.0;
-  double approach_clearance_m = 0.005;
+  double approach_clearance_m = kDefaultApproachClearance_m;
   double rest_speed_m_s = 1e-3;
   double max_duration_s = 5.0;
   // rtol 1e-6: the final depth to 2e-5 relative and the tilt to 2.4e-4 deg of a run at rtol 1e-10 on

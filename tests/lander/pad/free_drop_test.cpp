@@ -17,7 +17,7 @@
 namespace touchdown::pad {
 namespace {
 
-constexpr double kMm = 1e-3;
+using units::kMm;
 constexpr double kPadMass_kg = 1.6;  // data/pads/{flat,curved}.yaml: mass_kg
 
 // data/pads/flat.yaml: 100 mm diameter, 16 mm thick.
