@@ -24,8 +24,6 @@ Eigen::Quaterniond QuatAt(const Eigen::Ref<const Eigen::VectorXd>& y, int i) {
   return Eigen::Quaterniond(y[i], y[i + 1], y[i + 2], y[i + 3]).normalized();
 }
 
-
-
 double PadRadius(const Leg& leg) {
   const rft::SurfaceElements& s = leg.pad->surface;
   if (s.HasBounds()) return s.max_vertex_radius_m;  // model data: measured once
@@ -118,7 +116,8 @@ rft::ContactWrench FreePadSoilWrench(const LanderModel& model, const rft::SoilCo
 
 rft::ContactWrench QuasiStaticWrench(const LanderModel& model, const rft::Terrain& terrain, int leg, const PadFrame& pad,
                                      const Eigen::Vector3d& direction_W) {
-  rft::PadKinematics k{pad.R_WP, pad.p_WJ, rft::kQuasiStaticProbeSpeed_m_s * direction_W.normalized(), Eigen::Vector3d::Zero()};
+  rft::PadKinematics k{pad.R_WP, pad.p_WJ, rft::kQuasiStaticProbeSpeed_m_s * direction_W.normalized(),
+                       Eigen::Vector3d::Zero()};
   const int soil = terrain.SoilAt(pad.p_WJ.x(), pad.p_WJ.y());
   const rft::SoilContactModel& contact = terrain.soils[soil].contact;
   // The capacity at the pad's own j: a pad that has not slid yet offers no Janosi shear to a load
