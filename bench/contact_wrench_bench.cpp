@@ -15,8 +15,10 @@
 #include "rft/agarwal2023.h"
 #include "rft/contact_wrench.h"
 #include "rft/dynamic_term.h"
+#include "rft/gravity_constants.h"
 #include "rft/li2013_3d.h"
 #include "rft/soil.h"
+#include "rft/units.h"
 
 namespace {
 
@@ -89,7 +91,7 @@ void Run(benchmark::State& state, const StressLaw3D& law, bool curved, double ti
 }
 
 const Li2013TreersLaw kLi(3.48e6);
-const Agarwal2023Law kAgarwal(AgarwalScalingXi(1540.0, 9.81, std::tan(37.0 * std::numbers::pi / 180)), 0.4);
+const Agarwal2023Law kAgarwal(AgarwalScalingXi(1540.0, kEarthGravity_m_s2, std::tan(37.0 * touchdown::units::kDeg)), 0.4);
 constexpr double kTilt = 10.0 * std::numbers::pi / 180;
 // Li 2013 with dynamic RFT's inertial term (lambda 1.1, rho 1540 kg/m^3), as fjs1_lp and fjs1_cp
 // carry it by default: area terms per element, the general path even when the pad spins.

@@ -1,4 +1,4 @@
-// Speed target (issue 6): a diagnose run over 27 drops and the whole effect library in under a
+// Speed target: a diagnose run over 27 drops and the whole effect library in under a
 // minute on a 2-core machine. 27 synthetic drops: flat, C4 and curved pads x 0.7/1.0/1.5 m/s x
 // three trials (the first in air, two in vacuum) on loose FJS-1, a gas cushion hidden in the air
 // drops, the same noise as the shipped dataset; full traces (stop + 30 ms of rest).
@@ -8,6 +8,7 @@
 
 #include "drop_tests/gap/diagnose.h"
 #include "drop_tests/dataset/synth.h"
+#include "rft/gravity_constants.h"
 
 namespace {
 
@@ -20,7 +21,7 @@ touchdown::dataset::Dataset Campaign27() {
   for (const char* pad : {"flat", "c4", "curved"})
     for (double v : {0.7, 1.0, 1.5})
       for (int trial = 0; trial < 3; ++trial)
-        s.drops.push_back({pad, "fjs1_lp", trial == 0 ? touchdown::rft::Atmosphere::kAir : touchdown::rft::Atmosphere::kVacuum, v, std::nullopt, 9.81, trial});
+        s.drops.push_back({pad, "fjs1_lp", trial == 0 ? touchdown::rft::Atmosphere::kAir : touchdown::rft::Atmosphere::kVacuum, v, std::nullopt, touchdown::rft::kEarthGravity_m_s2, trial});
   s.noise = touchdown::dataset::SynthNoise{1.5, 3e-5, 2.0, 5e-5, 0.25, 1e-5};
   s.hidden_effect = touchdown::model::Effect{"gas_cushion", {0.3, 3000.0}};
   touchdown::dataset::Dataset ds = touchdown::dataset::Synthesize(s);

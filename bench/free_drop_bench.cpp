@@ -1,5 +1,5 @@
 // A free 6-DOF pad drop (3D contact) with a meshed pad of about 5k triangles: the flat pad revolved
-// at 96 rim segments. Target: under 50 ms per drop on one core (issue 3). Counters report the
+// at 96 rim segments. Target: under 50 ms per drop on one core. Counters report the
 // mesh size and the integrator's work so a slow case shows why it is slow. TD_RTOL overrides the
 // relative tolerance (convergence studies);
 // TD_MSBJ sets the most steps between Jacobians; TD_DQ_JACOBIAN=1 takes CVODE's difference-quotient Jacobian instead of the structured one.
@@ -10,6 +10,7 @@
 #include "drop_tests/io/catalog.h"
 #include "lander/pad/free_drop.h"
 #include "footpad_geom/revolve.h"
+#include "rft/gravity_constants.h"
 #include "rft/stress_law_3d_factory.h"
 
 namespace {
@@ -24,7 +25,7 @@ void RunFreeDrop(benchmark::State& state, const char* pad_name, double tilt_deg,
   const geom::PadBody body = geom::RevolveProfileToBody(pad.profile, kRimSegments, pad.mass_kg,
                                                         Eigen::Vector3d(0.0, 0.0, pad.profile.thickness_m()));
   const rft::SoilParameters soil = touchdown::io::LoadSoil("fjs1_lp");
-  const rft::SoilContactModel law = rft::MakeSoilContactModel(rft::LawKind::kLi2013, soil, 9.81, {});
+  const rft::SoilContactModel law = rft::MakeSoilContactModel(rft::LawKind::kLi2013, soil, rft::kEarthGravity_m_s2, {});
   const rft::Terrain bed = rft::UniformTerrain(soil.name, law);
   touchdown::pad::FreeDropInput in;
   in.impact_speed_m_s = 1.0;

@@ -22,9 +22,10 @@
 #include <string>
 
 #include "rft/bekker_law.h"
+#include "rft/gravity_constants.h"
 #include "rft/stress_law_3d_factory.h"
 #include "rft/units.h"
-#include "tests/lander/multibody/paper_lander.h"
+#include "fixtures/paper_lander.h"
 
 namespace {
 
@@ -123,19 +124,19 @@ void BM_LanderSlope10_Sideways_1s(benchmark::State& state) {
   RunLanding(state, setup, "slope");
 }
 
-// The paper's lander at lunar gravity on a Bekker soil (issue 18, docs/bekker_soil.md): 4 deg slope,
+// The paper's lander at lunar gravity on a Bekker soil (docs/bekker_soil.md): 4 deg slope,
 // 0.22 m/s downhill, 3 deg roll. fjs1_lp_bekker's values (n = 1.018, k_c = 0, k_phi = 3888
 // kN/m^(n+2), c = 0.17 kPa, phi = 35 deg, K = 18 mm); state.range(0) = 1 takes n = 1 instead, which
 // runs the linear depth law: the cost of the z^n path is the difference.
 void BM_LanderBekker_Slope4_1s(benchmark::State& state) {
   test::PaperLander setup = test::MakePaperLander('A', 64);
-  setup.model.gravity_m_s2 = 1.62;
+  setup.model.gravity_m_s2 = rft::kMoonGravity_m_s2;
   rft::SoilParameters soil;
   soil.name = "fjs1_lp_bekker";
   soil.rft_law_3d = rft::LawKind::kBekker;
   soil.bekker = {state.range(0) == 1 ? 1.0 : 1.018, 0.0, 3888e3, 170.0, 35.0 * units::kDeg, 0.018};
   const double b = rft::BekkerPlateB(setup.model.legs[0].pad->surface);
-  setup.terrain.soils = {{soil.name, rft::MakeSoilContactModel(rft::LawKind::kBekker, soil, 1.62, {}, b)}};
+  setup.terrain.soils = {{soil.name, rft::MakeSoilContactModel(rft::LawKind::kBekker, soil, rft::kMoonGravity_m_s2, {}, b)}};
   setup.terrain.surface = std::make_shared<rft::PlaneGround>(0.0, -std::tan(4.0 * units::kDeg), 0.0);
   lander::LanderInitialState& s = setup.initial;
   s.R_WB = Eigen::AngleAxisd(3.0 * units::kDeg, Eigen::Vector3d::UnitX()).toRotationMatrix();

@@ -1,4 +1,4 @@
-// Issue 13, section 5: memory and time that must not grow with the size of the input. Each case
+// Memory and time that must not grow with the size of the input. Each case
 // runs the touchdown executable as a child process (as a user does) and reports its wall time and
 // peak resident set size (wait4's ru_maxrss) as counters:
 //   BM_Campaign10000Drops   `touchdown campaign` over 10,000 rig drops      target: < 500 MB peak

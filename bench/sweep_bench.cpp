@@ -5,10 +5,10 @@
 //                                            process wall time (MPI start-up included)
 //   BM_SweepStartPeakRss/drops_log10:N       `touchdown sweep` of a 10^N-drop plan: start it, let
 //                                            it commit 2,000 drops, stop it with SIGTERM; counter
-//                                            peak_rss_MB (the child's ru_maxrss). Target (issue 13
-//                                            section 5): a 1e10-drop plan starts in constant memory,
-//                                            the same peak as a 1e4-drop one (the plan is streamed,
-//                                            never held whole).
+//                                            peak_rss_MB (the child's ru_maxrss). Target: a
+//                                            1e10-drop plan starts in constant memory, the same
+//                                            peak as a 1e4-drop one (the plan is streamed, never
+//                                            held whole).
 // The plan mixes the paper's three pads, two soils and speeds 0.3-2.0 m/s (random samples).
 #include <benchmark/benchmark.h>
 

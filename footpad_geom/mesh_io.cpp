@@ -39,8 +39,7 @@ using Point = Kernel::Point_3;
 using Mesh = CGAL::Surface_mesh<Point>;
 using Polygon = std::vector<std::size_t>;
 
-// Remeshing cap: about 90 MB of pad body and seconds per contact evaluation.
-constexpr double kMaxRemeshTriangles = 500000.0;
+using limits::kMaxRemeshTriangles;  // rft/physical_limits.h
 
 InputError Defect(const std::string& source, const std::string& what) {
   return MakeInputError(source, "", what);

@@ -62,8 +62,8 @@ inline FanIntegrals Fan(double alpha, double beta, double p) {
     // The binomial series of (alpha + s D)^p = alpha^p (1 + s x)^p, x = D / alpha, |x| <= 1/4:
     //   J1 = alpha^p sum_k C(p, k) x^k / (k + 2),   J2 = alpha^p sum_k C(p, k) x^k / (k + 3).
     // Its terms fall at least as |x|^k k^(-p-1) |C| (|C(p, k)| <= 10 for p <= 5), so it stops below
-    // 1e-17 of the sum within ~30 terms; one pow where the 8-point Gauss-Legendre rule used before
-    // took 8 (the pows were half the cost of a lander on a Bekker soil with n != 1).
+    // 1e-17 of the sum within ~30 terms; one pow where an 8-point Gauss-Legendre rule takes 8 (and
+    // there the pows are half the cost of a lander on a Bekker soil with n != 1).
     const double x = D / alpha;
     double c = 1.0, xk = 1.0, s1 = 0.5, s2 = 1.0 / 3.0;
     for (int k = 0; k < kFanSeriesTerms; ++k) {

@@ -38,6 +38,11 @@
 
 namespace touchdown::rft {
 
+// The speed of a probe that measures the soil's quasi-static capacity (a pad pushed on at rest):
+// small enough that a speed-dependent (dynamic) term is negligible, large enough to stay far from
+// underflow. RFT itself depends on the direction of motion only.
+inline constexpr double kQuasiStaticProbeSpeed_m_s = 1e-6;
+
 struct PadKinematics {
   Eigen::Matrix3d R_WB = Eigen::Matrix3d::Identity();
   Eigen::Vector3d p_WB = Eigen::Vector3d::Zero();    // reference point [m]

@@ -1,5 +1,6 @@
 #pragma once
-// How a soil's RFT stresses change with gravity: a model choice every soil states (issue 16).
+// How a soil's RFT stresses change with gravity: a model choice every soil states, because
+// the two choices below differ by a factor of six on the Moon.
 //
 //   lithostatic  zeta(g) = zeta(g_ref) g / g_ref: the frictional resistance of a dry granular bed is
 //                proportional to the overburden pressure rho g z (Agarwal, Goldman & Kamrin, PNAS

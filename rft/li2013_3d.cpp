@@ -5,6 +5,7 @@
 #include <limits>
 #include <numbers>
 
+#include "rft/units.h"
 
 namespace touchdown::rft {
 
@@ -31,7 +32,7 @@ constexpr double kB2 = 1.61146827229181, kB3 = 0.973746396532650;
 // continuous. The treatment of a flat plate in its plane of motion is Li's own 2D experiment,
 // so it is the limit we blend to; the smooth blend keeps the force continuous in the pad's
 // tilt (Treers' release switches abruptly at |n_z| = 1 - 1e-3, and returns NaN at n_h = 0).
-const double kHorizontalBand = std::sin(std::numbers::pi / 180.0);
+const double kHorizontalBand = std::sin(units::kDeg);
 
 // The weights' values at s = 1 (and tanh(a3)), computed once at load time.
 const double kTanhA3 = std::tanh(kA3);

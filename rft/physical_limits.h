@@ -4,6 +4,8 @@
 // (far beyond any lander) but keep every product the contact sums form finite: a 1e308 m/s
 // impact or a 1e30 mm pad would otherwise reach the solver or print NaN.
 #include <cmath>
+#include <cstddef>
+#include <cstdint>
 #include <cstdio>
 #include <string>
 
@@ -71,6 +73,35 @@ inline constexpr Range kSamples{"samples", 1.0, 1e9, false};
 // integrator, the same on any machine under any load; far above what any shipped drop or landing
 // needs (bench/sweep_bench.cpp and the sweep limit tests measure them).
 inline constexpr long kDefaultMaxRunEvaluations = 2000000;
+
+// Resolution and size caps, checked at load so that a hand-written 1e9 is refused instead of
+// exhausting memory or running for days; each is far above what a shipped file asks for.
+// A revolved pad has about 0.5 N^2 triangles for N angular segments (~8k at the default 128, ~500k
+// at 1024); 10000 profile pieces resolve any curve a pad drawing can specify, and keep the profile
+// simplification (quadratic in the points) quick.
+inline constexpr int kMaxAngularSegments = 1024;
+inline constexpr int kMaxProfileSegments = 10000;
+// A remeshed pad: about 90 MB of pad body and seconds per contact evaluation.
+inline constexpr double kMaxRemeshTriangles = 500000.0;
+// A sweep: the values of one `{from, to, count}` grid axis, and the drops of a whole plan.
+inline constexpr int kMaxGridCount = 100000;
+inline constexpr std::int64_t kMaxSweepDrops = std::int64_t{1} << 40;
+// A lander run keeps its trace in memory until it is written (lander::LanderSample, 816 bytes a
+// sample with the bodies' and pads' poses, plus the plots' copy): 1e6 samples keep a run under
+// about 1 GB.
+inline constexpr double kMaxLanderDuration_s = 600.0;
+inline constexpr double kMaxLanderSampleRate_Hz = 1e6;
+inline constexpr double kMaxLanderTraceSamples = 1e6;
+// synth builds its dataset in memory before it writes it: at most 1 MHz, a minute of rest after
+// each stop, 1,000 trials, 100,000 drops and 2e7 samples in all (about 0.5 GB of traces).
+inline constexpr double kMaxSynthSampleRate_Hz = 1e6;
+inline constexpr double kMaxSynthRestDuration_s = 60.0;
+inline constexpr int kMaxSynthTrials = 1000;
+inline constexpr std::size_t kMaxSynthDrops = 100000;
+inline constexpr double kMaxSynthSamples = 2e7;
+// A stability study: map bins per axis, and the landings a list (worst cases, ...) may name.
+inline constexpr int kMaxStudyMapBins = 200;
+inline constexpr int kMaxStudyListed = 100000;
 
 inline bool Within(const Range& r, double v) {
   return std::isfinite(v) && (r.low_open ? v > r.low : v >= r.low) && v <= r.high;

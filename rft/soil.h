@@ -4,6 +4,7 @@
 
 #include "rft/atmosphere.h"
 #include "rft/bekker_parameters.h"
+#include "rft/gravity_constants.h"
 #include "rft/gravity_scaling.h"
 #include "rft/law_kind.h"
 
@@ -14,7 +15,7 @@ struct SoilParameters {
   // RFT scaling factor zeta [N/m^3]: vertical stress per unit depth on a horizontal plate
   // pushed straight down, at the gravity `reference_gravity_m_s2` it was measured at.
   double zeta_N_m3 = 0.0;
-  double reference_gravity_m_s2 = 9.81;
+  double reference_gravity_m_s2 = kEarthGravity_m_s2;
   double bulk_density_kg_m3 = 0.0;        // [kg/m^3], 0 when unknown
   double internal_friction_angle_rad = 0.0;  // [rad], 0 when unknown
   Atmosphere atmosphere = Atmosphere::kVacuum;

@@ -8,9 +8,12 @@ namespace touchdown::units {
 
 // Radians per degree: angle_rad = angle_deg * kDeg, angle_deg = angle_rad / kDeg.
 inline constexpr double kDeg = std::numbers::pi / 180.0;
-// The same conversions for one value (rounded as (deg pi) / 180 and (rad 180) / pi).
-constexpr double DegToRad(double angle_deg) { return angle_deg * std::numbers::pi / 180.0; }
-constexpr double RadToDeg(double angle_rad) { return angle_rad * 180.0 / std::numbers::pi; }
+// The same conversions for one value, rounded as every `* kDeg` and `/ kDeg` is, so that an angle
+// converted here and the same angle converted with kDeg elsewhere agree bit for bit.
+constexpr double DegToRad(double angle_deg) { return angle_deg * kDeg; }
+constexpr double RadToDeg(double angle_rad) { return angle_rad / kDeg; }
+// Metres per millimetre: length_m = length_mm * kMm (pad and lander files give millimetres).
+inline constexpr double kMm = 1e-3;
 
 // N/m^3 per N/cm^3.
 inline constexpr double kN_m3_per_N_cm3 = 1e6;

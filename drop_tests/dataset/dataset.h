@@ -1,5 +1,6 @@
 #pragma once
-// One dataset format for measured and simulated drops (issue 5). A dataset is a directory:
+// One dataset format for measured and simulated drops, so that a measurement and a
+// simulation compare column by column. A dataset is a directory:
 //
 //   drops.csv   one row per drop, the columns
 //                 drop_id,pad,soil,atmosphere,impact_speed_m_s,pad_mass_kg,gravity_m_s2,trace

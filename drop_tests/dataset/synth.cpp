@@ -18,7 +18,9 @@
 #include "drop_tests/model/effects_yaml.h"
 #include "lander/integ/cvode_integrator.h"
 #include "lander/pad/effect_soil_response.h"
+#include "rft/gravity_constants.h"
 #include "rft/input_error.h"
+#include "rft/physical_limits.h"
 #include "rft/units.h"
 
 namespace touchdown::dataset {
@@ -95,14 +97,14 @@ SynthSpec LoadSynthSpec(const std::string& path) {
   const int trials = f.Has("trials") ? f.PositiveInt("trials") : 1;
   // Resource caps: the dataset is built in memory (every trace) before it is written, so its size
   // is bounded here, at load, with the limit in the message.
-  if (s.sample_rate_hz > kSynthMaxSampleRateHz)
-    f.Fail("sample_rate_hz", "must be at most " + io::FormatNumber(kSynthMaxSampleRateHz) + " Hz, got " +
+  if (s.sample_rate_hz > limits::kMaxSynthSampleRate_Hz)
+    f.Fail("sample_rate_hz", "must be at most " + io::FormatNumber(limits::kMaxSynthSampleRate_Hz) + " Hz, got " +
                                  io::FormatNumber(s.sample_rate_hz));
-  if (s.rest_duration_s > kSynthMaxRestDurationS)
-    f.Fail("rest_duration_s", "must be at most " + io::FormatNumber(kSynthMaxRestDurationS) + " s, got " +
+  if (s.rest_duration_s > limits::kMaxSynthRestDuration_s)
+    f.Fail("rest_duration_s", "must be at most " + io::FormatNumber(limits::kMaxSynthRestDuration_s) + " s, got " +
                                   io::FormatNumber(s.rest_duration_s));
-  if (trials > kSynthMaxTrials)
-    f.Fail("trials", "must be at most " + std::to_string(kSynthMaxTrials) + ", got " + std::to_string(trials));
+  if (trials > limits::kMaxSynthTrials)
+    f.Fail("trials", "must be at most " + std::to_string(limits::kMaxSynthTrials) + ", got " + std::to_string(trials));
   int group = -1;
   for (const io::YamlFields& g : f.List("drops")) {
     ++group;
@@ -123,10 +125,10 @@ SynthSpec LoadSynthSpec(const std::string& path) {
         for (rft::Atmosphere atm : atmospheres)
           for (double v : speeds)
             for (int t = 0; t < trials; ++t) {
-              if (s.drops.size() == kSynthMaxDrops)
-                f.Fail("drops", "more than " + std::to_string(kSynthMaxDrops) + " drops (pads x soils x atmospheres x "
+              if (s.drops.size() == limits::kMaxSynthDrops)
+                f.Fail("drops", "more than " + std::to_string(limits::kMaxSynthDrops) + " drops (pads x soils x atmospheres x "
                                 "impact speeds x trials)");
-              SynthDrop d{pad, soil, atm, v, std::nullopt, g.PositiveOr("gravity_m_s2", 9.81), t, group};
+              SynthDrop d{pad, soil, atm, v, std::nullopt, g.PositiveOr("gravity_m_s2", rft::kEarthGravity_m_s2), t, group};
               if (g.Has("mass_kg")) d.mass_kg = g.Positive("mass_kg");
               s.drops.push_back(d);
             }
@@ -170,9 +172,9 @@ SynthSpec LoadSynthSpec(const std::string& path) {
   if (s.drops.empty()) f.Fail("drops", "no drops");
   // The samples of the rest recorded after each stop, plus a stroke of about kSynthStrokeBoundS.
   const double samples = static_cast<double>(s.drops.size()) * (s.rest_duration_s + kSynthStrokeBoundS) * s.sample_rate_hz;
-  if (samples > kSynthMaxSamples)
+  if (samples > limits::kMaxSynthSamples)
     f.Fail("drops", "drops x (rest_duration_s + " + io::FormatNumber(kSynthStrokeBoundS) + " s) x sample_rate_hz is " +
-                        io::FormatNumber(samples) + " samples, more than the " + io::FormatNumber(kSynthMaxSamples) +
+                        io::FormatNumber(samples) + " samples, more than the " + io::FormatNumber(limits::kMaxSynthSamples) +
                         " a dataset may hold (" + std::to_string(s.drops.size()) + " drops)");
   return s;
 }

@@ -41,6 +41,7 @@
 #include "drop_tests/dataset/dataset.h"
 #include "drop_tests/model/effects.h"
 #include "drop_tests/dataset/sensor_sampling.h"
+#include "rft/gravity_constants.h"
 
 namespace touchdown::dataset {
 
@@ -58,7 +59,7 @@ struct SynthDrop {
   rft::Atmosphere atmosphere = rft::Atmosphere::kVacuum;
   double impact_speed_m_s = 0.0;
   std::optional<double> mass_kg;
-  double gravity_m_s2 = 9.81;
+  double gravity_m_s2 = rft::kEarthGravity_m_s2;
   int trial = 0;
   int group = 0;  // the spec's drops[group] that made it (named in messages)
 };
@@ -81,14 +82,8 @@ struct SynthSpec {
   pad::SensorSampling sensor_sampling = pad::SensorSampling::kPeriodMean;
 };
 
-// Caps checked at load (the dataset is built in memory before it is written): at most 1 MHz, a
-// minute of rest after each stop, 1,000 trials, 100,000 drops, and 2e7 samples in all (about
-// 0.5 GB of traces), the samples counted as drops x (rest_duration_s + kSynthStrokeBoundS) x rate.
-inline constexpr double kSynthMaxSampleRateHz = 1e6;
-inline constexpr double kSynthMaxRestDurationS = 60.0;
-inline constexpr int kSynthMaxTrials = 1000;
-inline constexpr size_t kSynthMaxDrops = 100000;
-inline constexpr double kSynthMaxSamples = 2e7;
+// Caps checked at load (the dataset is built in memory before it is written; rft/physical_limits.h,
+// kMaxSynth*), the samples counted as drops x (rest_duration_s + kSynthStrokeBoundS) x rate.
 inline constexpr double kSynthStrokeBoundS = 0.1;  // an allowance for the stroke (tens of ms at 1 m/s)
 
 SynthSpec LoadSynthSpec(const std::string& path);

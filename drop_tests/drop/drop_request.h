@@ -9,6 +9,7 @@
 #include <string_view>
 
 #include "drop_tests/drop/pad_drop.h"
+#include "rft/gravity_constants.h"
 
 namespace touchdown::drop {
 
@@ -27,7 +28,7 @@ struct DropRequest {
   std::string model;      // a model file (MODEL.yaml), or none
   double speed_m_s = 0.0;
   std::optional<double> mass_kg, zeta_N_cm3;
-  double gravity_m_s2 = 9.81;
+  double gravity_m_s2 = rft::kEarthGravity_m_s2;
   // The free 6-DOF pad: asked for with `free`; tilt, horizontal speed and omega need it.
   bool free = false;
   double tilt_deg = 0.0, horizontal_speed_m_s = 0.0;

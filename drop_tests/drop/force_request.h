@@ -12,6 +12,7 @@
 
 #include "drop_tests/drop/drop_request.h"
 #include "drop_tests/io/output_path.h"
+#include "rft/gravity_constants.h"
 
 namespace touchdown::drop {
 
@@ -19,7 +20,7 @@ struct ForceRequest {
   std::string pad, soil;  // catalogue names or YAML files
   std::optional<std::string> law;  // li2013, agarwal2023 or bekker; none: the soil's own law
   std::string tilt_axis = "x";
-  double depth_m = 0.0, tilt_deg = 0.0, gravity_m_s2 = 9.81;
+  double depth_m = 0.0, tilt_deg = 0.0, gravity_m_s2 = rft::kEarthGravity_m_s2;
   std::array<double, 3> velocity_m_s{0.0, 0.0, -1.0}, omega_rad_s{0.0, 0.0, 0.0};
   std::optional<double> zeta_N_cm3;  // overrides the soil's
   bool dynamic = false;               // add the soil's dynamic term at velocity_m_s (if it has one)

@@ -16,6 +16,7 @@
 #include "lander/pad/free_drop.h"
 #include "drop_tests/io/output_path.h"
 #include "lander/pad/rig_drop.h"
+#include "rft/gravity_constants.h"
 
 namespace touchdown::geom {
 class AxisymmetricIntrusion;
@@ -26,7 +27,7 @@ namespace touchdown::drop {
 struct DropConditions {
   double impact_speed_m_s = 0.0;
   std::optional<double> mass_kg;        // default: the pad's mass
-  double gravity_m_s2 = 9.81;
+  double gravity_m_s2 = rft::kEarthGravity_m_s2;
   std::optional<double> zeta_N_m3;      // overrides the soil's zeta (at its reference gravity)
   std::optional<rft::Atmosphere> atmosphere;  // default: the soil's
   // The free 6-DOF pad instead of the rig's rod: asked for with `free`, implied by a non-zero
@@ -49,7 +50,7 @@ struct DropConditions {
 struct DropRow {
   double impact_speed_m_s = 0.0;
   std::optional<double> mass_kg;
-  double gravity_m_s2 = 9.81;
+  double gravity_m_s2 = rft::kEarthGravity_m_s2;
   std::optional<double> zeta_N_m3;
   std::optional<rft::Atmosphere> atmosphere;  // a dataset row states it; a sweep takes the soil's
   double tilt_rad = 0.0;

@@ -25,14 +25,11 @@ namespace touchdown::io {
 namespace fs = std::filesystem;
 
 namespace {
-constexpr double kMm = 1e-3;
 using units::kDeg;
-// Resolution caps, so a hand-written 1e9 is refused at load time instead of exhausting memory
-// (or hanging the profile simplification, which is quadratic in the profile's points). The
-// revolved mesh has about 0.5 N^2 triangles for N angular segments (~8k at the default 128,
-// ~500k at 1024); 10000 profile pieces resolve any curve a pad drawing can specify.
-constexpr int kMaxAngularSegments = 1024;
-constexpr int kMaxProfileSegments = 10000;
+using units::kMm;
+// Resolution caps (rft/physical_limits.h).
+using limits::kMaxAngularSegments;
+using limits::kMaxProfileSegments;
 
 // A soil file's number fields (zeta, with its 'agarwal2023' alternative, is read on its own).
 const FieldTable<rft::SoilParameters>& SoilNumberFields() {

@@ -37,6 +37,7 @@
 
 #include "drop_tests/model/effects.h"
 #include "drop_tests/io/output_path.h"
+#include "rft/gravity_constants.h"
 #include "rft/soil.h"
 #include "rft/stress_law_3d.h"
 
@@ -52,7 +53,7 @@ struct SoilFit {
 
 struct SoilOverride {
   double zeta_N_m3 = 0.0;                 // at reference_gravity_m_s2
-  double reference_gravity_m_s2 = 9.81;
+  double reference_gravity_m_s2 = rft::kEarthGravity_m_s2;
   std::optional<double> zeta_low_N_m3;    // confidence interval, both or neither
   std::optional<double> zeta_high_N_m3;
   double confidence = 0.95;

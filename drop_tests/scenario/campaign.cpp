@@ -14,6 +14,7 @@
 #include "drop_tests/io/field_table.h"
 #include "drop_tests/io/paths_in_outputs.h"
 #include "drop_tests/io/yaml_fields.h"
+#include "rft/gravity_constants.h"
 #include "rft/input_error.h"
 #include "rft/units.h"
 
@@ -208,7 +209,7 @@ std::string DropId(const io::PadSpec& pad, const rft::SoilParameters& soil, doub
 
 // A scenario's `drops`: each entry a pad and a soil by name or path, and its list of speeds.
 void ReadDropEntries(const io::YamlFields& f, CampaignScenario& s) {
-  const double gravity = f.PositiveOr("gravity_m_s2", 9.81);
+  const double gravity = f.PositiveOr("gravity_m_s2", rft::kEarthGravity_m_s2);
   PadCache pads;
   SoilCache soils;
   std::set<std::string> ids;

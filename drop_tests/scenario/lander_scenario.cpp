@@ -16,7 +16,9 @@
 #include "drop_tests/io/paths_in_outputs.h"
 #include "drop_tests/io/yaml_fields.h"
 #include "lander/integ/cvode_integrator.h"
+#include "lander/pad/release.h"
 #include "rft/bekker_law.h"
+#include "rft/gravity_constants.h"
 #include "rft/input_error.h"
 #include "rft/physical_limits.h"
 #include "rft/stress_law_3d_factory.h"
@@ -27,8 +29,8 @@ namespace touchdown::scenario {
 namespace fs = std::filesystem;
 
 namespace {
-constexpr double kMm = 1e-3;
 using units::kDeg;
+using units::kMm;
 // Pads clockwise seen from above, pad 1 front-left (x forward, y left).
 constexpr double kPadAzimuthDeg[lander::kNumLegs] = {45.0, -45.0, -135.0, 135.0};
 
@@ -418,16 +420,15 @@ void ReadSimulation(const io::YamlFields& sim, lander::LanderRunOptions& options
                                         " m/s), got " + io::FormatNumber(options.soil_ramp_speed_m_s));
   // Resolution caps (the trace keeps duration x rate samples; a hand-written 1e9 must not
   // exhaust memory or run for days).
-  if (options.duration_s > 600.0)
+  if (options.duration_s > limits::kMaxLanderDuration_s)
     sim.Fail("duration_s", "must be at most 600 s, got " + io::FormatNumber(options.duration_s));
-  if (options.sample_rate_hz > 1e6)
+  if (options.sample_rate_hz > limits::kMaxLanderSampleRate_Hz)
     sim.Fail("sample_rate_hz", "must be at most 1e6 Hz, got " + io::FormatNumber(options.sample_rate_hz));
-  // The whole trace is held in memory until it is written (816 bytes a sample with the bodies' and
-  // pads' poses, 0.4 kB before them, plus the plots' copy): 1e6 samples keep a run under about 1 GB.
-  if (options.duration_s * options.sample_rate_hz > kLanderMaxTraceSamples)
+  // The whole trace is held in memory until it is written (rft/physical_limits.h).
+  if (options.duration_s * options.sample_rate_hz > limits::kMaxLanderTraceSamples)
     sim.Fail("sample_rate_hz", "duration_s x sample_rate_hz is " +
                                    io::FormatNumber(options.duration_s * options.sample_rate_hz) +
-                                   " trace samples, at most " + io::FormatNumber(kLanderMaxTraceSamples) +
+                                   " trace samples, at most " + io::FormatNumber(limits::kMaxLanderTraceSamples) +
                                    " (lower the rate or the duration)");
   if (sim.Has("rtol")) options.integrator.rtol = sim.Positive("rtol");
   if (sim.Has("atol")) {
@@ -519,7 +520,7 @@ LanderScenario LoadLanderScenario(const std::string& path) {
   s.name = f.StringOr("name", fs::path(path).stem().string());
   s.description = f.StringOr("description", "");
   s.gravity_m_s2 = f.Has("gravity_m_s2") ? io::ReadNumber(f, "gravity_m_s2", io::Sign::kPositive, &limits::kGravity_m_s2)
-                                         : 9.81;
+                                         : rft::kEarthGravity_m_s2;
   try {
     s.lander = resolved ? LoadLanderSpec(io::PathFromOutput(f.Child("lander").String("file"), dir))
                         : LoadLanderSpec(ResolveRelative(f, "landers", f.String("lander")));
@@ -629,8 +630,8 @@ LanderSetup BuildLanderSetup(const LanderScenario& sc) {
     const double v = *ic.touchdown_speed_m_s;
     const double pad_height = m.legs[0].pad->vertices_B.row(2).maxCoeff() - m.legs[0].pad->lowest_z_B;
     const double release_gap = 0.5 * pad_height;
-    clearance = g > 0.0 ? std::min(release_gap, v * v / (4.0 * g)) : release_gap;
-    vz_down = std::sqrt(std::max(v * v - 2.0 * g * clearance, 0.0));
+    clearance = pad::ReleaseClearance(release_gap, v, g);
+    vz_down = pad::ReleaseSpeed(v, g, clearance);
   }
   s.v_WB_W = Eigen::Vector3d(ic.horizontal_velocity_m_s.x(), ic.horizontal_velocity_m_s.y(), -vz_down);
   s.p_WB.z() = lander::BodyHeightForClearance(m, out.terrain, s, clearance);

@@ -17,12 +17,9 @@
 #include "drop_tests/model/model_file.h"
 #include "drop_tests/scenario/paper_reading.h"
 #include "lander/multibody/lander_simulation.h"
+#include "rft/gravity_constants.h"
 
 namespace touchdown::scenario {
-
-// A lander run keeps its trace in memory (lander::LanderSample, 816 bytes each with the poses): duration_s x
-// sample_rate_hz is capped at load.
-inline constexpr double kLanderMaxTraceSamples = 1e6;
 
 struct LanderLegSpec {
   Eigen::Vector3d hip_B = Eigen::Vector3d::Zero();
@@ -90,7 +87,7 @@ struct LanderScenario {
   std::string name;
   std::string description;
   std::string source;
-  double gravity_m_s2 = 9.81;
+  double gravity_m_s2 = rft::kEarthGravity_m_s2;
   LanderSpec lander;
   LanderGroundSpec ground;
   LanderInitialSpec initial;

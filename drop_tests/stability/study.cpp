@@ -14,8 +14,8 @@ namespace touchdown::stability {
 namespace {
 using sweep::SweepParam;
 
-constexpr int kMaxBins = 200;
-constexpr int kMaxListed = 100000;
+constexpr int kMaxBins = limits::kMaxStudyMapBins;  // rft/physical_limits.h
+constexpr int kMaxListed = limits::kMaxStudyListed;
 
 // The range a parameter takes over the plan, in file units; nullopt when the plan does not vary it.
 std::optional<std::pair<double, double>> PlanRange(const sweep::SweepPlan& plan, SweepParam p) {

@@ -228,8 +228,8 @@ nlohmann::json MapJson(const Study& study, const StudySummary& s) {
           {"x_range", {m.x.low, m.x.high}},       {"y_range", {m.y.low, m.y.high}},
           {"bins", {m.x.bins, m.y.bins}},         {"cells", cells}};
 }
-// Every soil the study's landings can stand on, with the model choices it carries (issue 16: a
-// lunar study records how its soils were scaled to the study's gravity).
+// Every soil the study's landings can stand on, with the model choices it carries, so that a
+// lunar study records how its soils were scaled to the study's gravity.
 nlohmann::json SoilModelsJson(const Study& study) {
   std::vector<rft::SoilParameters> soils = study.plan.soils;
   if (study.plan.lander) {

@@ -39,8 +39,8 @@ std::string Directory(const std::string& file) { return std::filesystem::path(fi
   }
 }
 
-// The numeric columns of a record, in table order: the format-1 metrics, then (format 2) the
-// free drop's and the lander's. One list drives the schema, binding, reading, comparing and
+// The numeric columns of a record, in table order: the rig drop's metrics, then the free drop's
+// and the lander's. One list drives the schema, binding, reading, comparing and
 // the MPI serialisation, so a new column cannot be forgotten in one of them.
 constexpr const char* kNumberColumns1[] = {
     "impact_speed_m_s", "pad_mass_kg",         "gravity_m_s2",     "tilt_deg",          "horizontal_speed_m_s",
@@ -51,18 +51,18 @@ constexpr const char* kNumberColumns2[] = {
     "pad2_final_penetration_m", "pad3_final_penetration_m", "pad4_final_penetration_m", "final_roll_deg",
     "final_pitch_deg", "tipped_over"};
 constexpr size_t kNumbers1 = std::size(kNumberColumns1), kNumbers2 = std::size(kNumberColumns2);
-// Format 3: text columns after the numbers.
+// The soil under each lander pad and the ground case: text columns after the numbers.
 constexpr const char* kTextColumns3[] = {"pad1_soil", "pad2_soil", "pad3_soil", "pad4_soil", "ground_case"};
 constexpr size_t kTexts3 = std::size(kTextColumns3);
-// Format 5: a stability study's lander metrics and conditions (after the format-4 columns); format 6
-// adds the pads' largest swing on their ball joints at the end, format 7 the edge a lander tipped over.
+// A stability study's lander metrics and conditions, the pads' largest swing on their ball joints
+// and the edge a lander tipped over (after the work-limit columns; new columns go at the end).
 constexpr const char* kNumberColumns5[] = {
     "max_tilt_deg", "peak_leg_force_N", "max_stroke_m", "pad1_peak_force_N", "pad2_peak_force_N",
     "pad3_peak_force_N", "pad4_peak_force_N", "slope_deg", "downhill_azimuth_deg", "yaw_relative_to_slope_deg",
     "horizontal_azimuth_deg", "angular_rate_x_deg_s", "angular_rate_y_deg_s", "angular_rate_z_deg_s",
     "max_joint_swing_deg", "tip_over_edge", "tip_over_azimuth_deg"};
 constexpr size_t kNumbers5 = std::size(kNumberColumns5);
-// Format 4: the work limit a failed drop ran out of.
+// The work limit a failed drop ran out of, so a rerun with a higher limit retries it.
 constexpr const char* kLimitColumn = "failure_limit";
 constexpr const char* kLimitValueColumn = "failure_limit_value";
 
@@ -406,8 +406,8 @@ void ResultsDb::CreateTables() {
   Exec("PRAGMA synchronous=NORMAL");
   const std::string kind = "TABLE IF NOT EXISTS";
   Exec(MetaTableSql(kind) + ";" + DropsTableSql(kind) + ";" + TracesTableSql(kind) + ";");
-  // A format-1 to -6 database (no format-2 to -7 columns) gets them added, NULL or '', so it can still be read
-  // (export, merge); `sweep` refuses to resume it (format_version in meta).
+  // A database of an older format lacks the columns added since; they are added, NULL or '', so it
+  // can still be read (export, merge); `sweep` refuses to resume it (format_version in meta).
   std::vector<std::string> present;
   {
     Statement info(db_, "PRAGMA table_info(drops)");

@@ -8,15 +8,14 @@
 //         horizontal_speed_m_s, zeta_N_cm3, final_penetration_m, peak_force_N,
 //         time_to_rest_s, max_deceleration_m_s2, impact_energy_J, gravity_work_J,
 //         dissipated_energy_J, mean_conversion_rate_W, rest_creep_m, solver_steps,
-//         [format 2:] drop_kind 'rig'|'free'|'lander', final_tilt_deg, horizontal_travel_m,
+//         drop_kind 'rig'|'free'|'lander', final_tilt_deg, horizontal_travel_m,
 //         roll_deg, pitch_deg, pad1..pad4_final_penetration_m, final_roll_deg,
-//         final_pitch_deg, tipped_over,
-//         [format 3:] pad1_soil..pad4_soil, ground_case,
-//         [format 4:] failure_limit, failure_limit_value,
-//         [format 5:] max_tilt_deg, peak_leg_force_N, max_stroke_m, pad1..pad4_peak_force_N,
+//         final_pitch_deg, tipped_over, pad1_soil..pad4_soil, ground_case,
+//         failure_limit, failure_limit_value,
+//         max_tilt_deg, peak_leg_force_N, max_stroke_m, pad1..pad4_peak_force_N,
 //         slope_deg, downhill_azimuth_deg, yaw_relative_to_slope_deg, horizontal_azimuth_deg,
 //         angular_rate_x_deg_s, angular_rate_y_deg_s, angular_rate_z_deg_s,
-//         [format 6:] max_joint_swing_deg, [format 7:] tip_over_edge, tip_over_azimuth_deg)
+//         max_joint_swing_deg, tip_over_edge, tip_over_azimuth_deg)
 //   traces(drop_index PRIMARY KEY, samples, data BLOB of float64 [t, d, v, F] per sample)
 //
 // A batch of drops and their traces go in one transaction (WAL journal), so a process killed
@@ -36,16 +35,11 @@ struct sqlite3;
 
 namespace touchdown::sweep {
 
-// 2: drop_kind, the free drop's final tilt and horizontal travel, the lander columns.
-// 3: the soil under each lander pad (pad1_soil..pad4_soil) and the paper's ground case.
-// 4: the work limit a failed drop ran out of (failure_limit, failure_limit_value), so a rerun
-//    with a higher limit retries it; meta records the limits and whether they depend on load.
-// 5: what a stability study summarises (drop_tests/stability): the lander's max tilt, peak leg
-//    load, max absorber stroke, each pad's peak force, and the ground and touchdown conditions
-//    (slope, azimuths, yaw to the slope, angular rates).
-// 6: the pads' largest swing on their ball joints (max_joint_swing_deg).
-// 7: the support edge a lander tipped over and the direction it fell (tip_over_edge,
-//    tip_over_azimuth_deg).
+// The database format written, in meta's format_version. It goes up by one whenever columns are
+// added; they are added at the end of the table (results_db.cpp, AddedColumns), so that a database
+// of an older format can still be read: opening it adds the missing columns, NULL or ''. `sweep`
+// resumes only a database of this format. Which columns each format added: docs/reference.md,
+// "Sweep results".
 inline constexpr int kResultsDbVersion = 7;
 
 // What was dropped: the pad on the vertical rod, the free 6-DOF pad, or the four-legged lander.
@@ -95,7 +89,7 @@ struct DropRecord {
   // "B", "C"; "" for another combination).
   std::array<std::string, 4> pad_soil;
   std::string ground_case;
-  // Lander drops only (NaN otherwise), format 5. Over the run: the largest tilt of the body from
+  // Lander drops only (NaN otherwise). Over the run: the largest tilt of the body from
   // the vertical, the peak axial leg load (compression positive; an absorber leg's absorber force,
   // a rigid leg's soil force on its pad along the leg axis, hip to joint, the pad's inertia
   // neglected; at the trace's samples), the largest absorber stroke (NaN without absorbers), each
@@ -106,7 +100,7 @@ struct DropRecord {
   // The largest swing of any pad on its ball joint, its axis from the body's z axis (lander::
   // LanderRunResult::max_joint_swing_rad); past 90 deg a pad turned beyond edge-on.
   double max_joint_swing_deg = std::numeric_limits<double>::quiet_NaN();
-  // Format 7, landers that tipped over (NaN otherwise): the support edge they went over, from pad
+  // Landers that tipped over (NaN otherwise): the support edge they went over, from pad
   // tip_over_edge to the next one clockwise (1-4: 1 is the edge of pads 1 and 2), and the azimuth of
   // that edge's outward horizontal normal, the direction the lander fell (world, as
   // horizontal_azimuth_deg) (lander::LanderRunResult::tip_over_edge, tip_over_azimuth_rad).

@@ -207,13 +207,11 @@ const std::vector<std::string> kLanderExportColumns = {
     "pad4_final_penetration_m", "final_roll_deg", "final_pitch_deg", "final_tilt_deg", "tipped_over",
     "time_to_rest_s",    "max_deceleration_m_s2", "impact_energy_J", "gravity_work_J", "dissipated_energy_J",
     "mean_conversion_rate_W", "horizontal_travel_m", "solver_steps",
-    // format 5: a stability study's metrics and conditions
+    // a stability study's metrics and conditions, the joints' swing, the tip-over edge
     "max_tilt_deg", "peak_leg_force_N", "max_stroke_m", "pad1_peak_force_N", "pad2_peak_force_N",
     "pad3_peak_force_N", "pad4_peak_force_N", "slope_deg", "downhill_azimuth_deg", "yaw_relative_to_slope_deg",
     "horizontal_azimuth_deg", "angular_rate_x_deg_s", "angular_rate_y_deg_s", "angular_rate_z_deg_s",
-    // format 6
     "max_joint_swing_deg",
-    // format 7
     "tip_over_edge", "tip_over_azimuth_deg"};
 
 namespace {

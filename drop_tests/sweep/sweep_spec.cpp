@@ -24,8 +24,8 @@ namespace fs = std::filesystem;
 
 namespace {
 using units::kDeg;
-constexpr int kMaxGridCount = 100000;            // values of one `{from, to, count}` axis
-constexpr int64_t kMaxSweepDrops = int64_t{1} << 40;
+using limits::kMaxGridCount;  // rft/physical_limits.h
+using limits::kMaxSweepDrops;
 constexpr SweepParam kAll[kSweepParamCount] = {SweepParam::kPad,     SweepParam::kSoil, SweepParam::kImpactSpeed,
                                                SweepParam::kMass,    SweepParam::kGravity, SweepParam::kTilt,
                                                SweepParam::kHorizontalSpeed, SweepParam::kZeta, SweepParam::kRoll,

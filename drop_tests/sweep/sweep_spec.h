@@ -58,7 +58,7 @@
 // downhill_azimuth_deg; a drop that sets only the speed moves along +x as before, one that sets
 // only the azimuth keeps the scenario's speed), and the body-axis angular rates at release
 // angular_rate_x_deg_s, angular_rate_y_deg_s, angular_rate_z_deg_s (the scenario's
-// initial.angular_rate_deg_s). Every lander drop records them all (results_db.h, format 5).
+// initial.angular_rate_deg_s). Every lander drop records them all (results_db.h).
 //
 // It replaces the scenario's soil patches: the ground keeps the scenario's default soil, and each
 // pad whose soil differs from it gets a square patch of its soil centred below its ball joint at
@@ -95,6 +95,7 @@
 #include "drop_tests/scenario/lander_scenario.h"
 #include "drop_tests/model/model_file.h"
 #include "lander/pad/rig_drop.h"
+#include "rft/gravity_constants.h"
 #include "rft/physical_limits.h"
 
 namespace touchdown::sweep {
@@ -125,7 +126,7 @@ struct SweepDropParams {
   int soil = 0;
   double impact_speed_m_s = 0.0;
   std::optional<double> mass_kg;  // default: the pad's
-  double gravity_m_s2 = 9.81;
+  double gravity_m_s2 = rft::kEarthGravity_m_s2;
   double tilt_rad = 0.0;
   double horizontal_speed_m_s = 0.0;
   std::optional<double> zeta_N_m3;  // at the soil's reference gravity; default: the soil's

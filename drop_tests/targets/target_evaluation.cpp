@@ -11,7 +11,7 @@
 namespace touchdown::targets {
 
 namespace {
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
+using units::kDeg;
 
 ScenarioOutcome DropOutcome(const drop::PadDrop& d) {
   ScenarioOutcome o;

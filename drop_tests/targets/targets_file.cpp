@@ -10,6 +10,7 @@
 #include "drop_tests/io/yaml_fields.h"
 #include "drop_tests/scenario/campaign.h"
 #include "drop_tests/targets/object_edit.h"
+#include "rft/gravity_constants.h"
 #include "rft/input_error.h"
 #include "rft/physical_limits.h"
 #include "rft/units.h"
@@ -221,7 +222,7 @@ class ScenarioReader {
     run.soil = io::LoadSoil(soil_file);
     drop::DropRow row;
     row.impact_speed_m_s = d.Positive("speed_m_s");
-    row.gravity_m_s2 = d.PositiveOr("gravity_m_s2", 9.81);
+    row.gravity_m_s2 = d.PositiveOr("gravity_m_s2", rft::kEarthGravity_m_s2);
     run.conditions = drop::DropConditionsFor(row, {}, "", d.file() + ": " + d.prefix());
     run.label = "drop " + run.pad->name + " on " + run.soil.name + " at " + Number(row.impact_speed_m_s) + " m/s, g " +
                 Number(row.gravity_m_s2);

@@ -26,6 +26,7 @@
 
 #include "drop_tests/drop/pad_drop.h"
 #include "drop_tests/scenario/lander_scenario.h"
+#include "rft/gravity_constants.h"
 
 namespace touchdown::targets {
 
@@ -42,7 +43,7 @@ struct Parameter {
   std::string object;  // the soil, pad or lander as the file names it
   std::string file;    // its resolved file (a soil's name for kSoilZeta matching: soil_name)
   std::string soil_name;  // kSoilZeta: the soil's name (what model files and scenarios match)
-  double soil_reference_gravity_m_s2 = 9.81;  // kSoilZeta
+  double soil_reference_gravity_m_s2 = rft::kEarthGravity_m_s2;  // kSoilZeta
   std::string field;   // zeta_N_cm3, or the dotted path in the pad or lander file
   double lower = 0.0, upper = 0.0, start = 0.0;  // in the field's own unit
   std::string source;

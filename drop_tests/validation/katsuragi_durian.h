@@ -6,13 +6,14 @@
 // and the stop depth, the first z > 0 with s(z) = 0, is a Lambert-W expression: with
 // y = z + A/B, (2y/d1) exp(2y/d1) = -(2 (v0^2 - A) / (B d1)) exp(2A / (B d1)).
 // Pure functions, no state.
+#include "rft/gravity_constants.h"
 
 namespace touchdown::validation {
 
 struct KatsuragiDurianParameters {
   double d1_m = 0.0;          // inertial drag length
   double k_over_m_s2 = 0.0;   // friction slope per unit mass [1/s^2]
-  double gravity_m_s2 = 9.81;
+  double gravity_m_s2 = rft::kEarthGravity_m_s2;
 };
 
 // v^2 at depth z on the way down [m^2/s^2].

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "drop_tests/io/catalog.h"
+#include "rft/gravity_constants.h"
 #include "rft/soil.h"
 
 namespace touchdown::validation {
@@ -62,7 +63,7 @@ struct MeasuredTrend {
   Variable vary = Variable::kImpactSpeed;
   std::vector<double> values;  // SI
   double at_impact_speed_m_s = 0.0;
-  double at_gravity_m_s2 = 9.81;
+  double at_gravity_m_s2 = rft::kEarthGravity_m_s2;
   Direction direction = Direction::kExponent;
   double exponent = 0.0;
   double tolerance = 0.0;          // |simulated - exponent| <= tolerance reproduces it
@@ -85,7 +86,7 @@ struct ValidationSource {
   std::string medium;      // one line
   ZetaRoute zeta_route = ZetaRoute::kDerived;
   std::string calibrated_on;  // a point id when zeta_route is kCalibratedOn
-  double gravity_m_s2 = 9.81;
+  double gravity_m_s2 = rft::kEarthGravity_m_s2;
   bool low_gravity = false;   // run with zeta scaled with g and with zeta fixed
   std::optional<KatsuragiDurianLaw> law;
   std::vector<MeasuredPoint> points;

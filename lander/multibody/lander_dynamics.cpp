@@ -20,20 +20,9 @@ constexpr int kMaxSpeeds = StateLayout::kMaxSpeeds;
 using Mat = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxSpeeds, kMaxSpeeds>;
 using Vec = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxSpeeds, 1>;
 
-Eigen::Matrix3d Skew(const Eigen::Vector3d& v) {
-  Eigen::Matrix3d s;
-  s << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
-  return s;
-}
-
 Eigen::Quaterniond QuatAt(const Eigen::Ref<const Eigen::VectorXd>& y, int i) {
   return Eigen::Quaterniond(y[i], y[i + 1], y[i + 2], y[i + 3]).normalized();
 }
-
-
-// Probe speed for quasi-static wrenches: small enough that a speed-dependent (dynamic) term
-// is negligible, large enough to stay far from underflow.
-constexpr double kProbeSpeed = 1e-6;
 
 double PadRadius(const Leg& leg) {
   const rft::SurfaceElements& s = leg.pad->surface;
@@ -127,7 +116,8 @@ rft::ContactWrench FreePadSoilWrench(const LanderModel& model, const rft::SoilCo
 
 rft::ContactWrench QuasiStaticWrench(const LanderModel& model, const rft::Terrain& terrain, int leg, const PadFrame& pad,
                                      const Eigen::Vector3d& direction_W) {
-  rft::PadKinematics k{pad.R_WP, pad.p_WJ, kProbeSpeed * direction_W.normalized(), Eigen::Vector3d::Zero()};
+  rft::PadKinematics k{pad.R_WP, pad.p_WJ, rft::kQuasiStaticProbeSpeed_m_s * direction_W.normalized(),
+                       Eigen::Vector3d::Zero()};
   const int soil = terrain.SoilAt(pad.p_WJ.x(), pad.p_WJ.y());
   const rft::SoilContactModel& contact = terrain.soils[soil].contact;
   // The capacity at the pad's own j: a pad that has not slid yet offers no Janosi shear to a load

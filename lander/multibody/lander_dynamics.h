@@ -65,6 +65,12 @@ struct StateLayout {
 
 enum class PadMode { kFree, kHeld };
 
+// The cross-product matrix: Skew(a) b = a x b.
+inline Eigen::Matrix3d Skew(const Eigen::Vector3d& v) {
+  Eigen::Matrix3d s;
+  s << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
+  return s;
+}
 enum class StrokeMode { kFree, kLocked, kBottomed };  // crushable absorbers only
 
 // Discrete state of the hybrid system, changed only at events.

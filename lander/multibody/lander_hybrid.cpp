@@ -53,8 +53,8 @@ struct HoldCheck {
 
 // `sink_capacity` (optional): the pad's vertical capacity, NaN until known. A held pad does not
 // move, so its capacity straight down is the same until the next event; the root functions keep it
-// (on a slope, where pads stay held while the lander slides, the capacity checks were half of all
-// contact evaluations).
+// (on a slope, where pads stay held while the lander slides, the capacity checks would otherwise be
+// half of all contact evaluations).
 // `contacts` (optional) counts the contacts evaluated.
 HoldCheck CheckHold(const LanderModel& model, const rft::Terrain& terrain, int i, const PadFrame& f,
                     const rft::ContactWrench& reaction, double* sink_capacity = nullptr, long* contacts = nullptr) {

@@ -7,12 +7,6 @@ namespace touchdown::lander {
 
 namespace {
 
-Eigen::Matrix3d Skew(const Eigen::Vector3d& v) {
-  Eigen::Matrix3d s;
-  s << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
-  return s;
-}
-
 // dq/dt = 1/2 [0, w] (x) q (world-frame w): its derivatives with respect to q and w.
 void QuaternionRateRows(const Eigen::Ref<const Eigen::VectorXd>& y, int qi, int wi, Eigen::Ref<Eigen::MatrixXd> J) {
   const double qw = y[qi];

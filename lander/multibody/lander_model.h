@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "footpad_geom/pad_body.h"
+#include "rft/gravity_constants.h"
 #include "rft/soil_map.h"
 
 namespace touchdown::lander {
@@ -71,7 +72,7 @@ struct LanderModel {
   double body_mass_kg = 0.0;
   Eigen::Matrix3d body_inertia_B = Eigen::Matrix3d::Zero();  // about the body CoM [kg m^2]
   std::array<Leg, kNumLegs> legs;
-  double gravity_m_s2 = 9.81;
+  double gravity_m_s2 = rft::kEarthGravity_m_s2;
   double soil_ramp_speed_m_s = kDefaultSoilRampSpeed_m_s;  // see kDefaultSoilRampSpeed_m_s
 
   double TotalMass() const {

@@ -35,7 +35,7 @@ struct LanderRunOptions {
   bool stop_at_rest = true;             // rest is static: the remaining time is not integrated
   int max_events = 20000;               // guard against Zeno behaviour
   // BDF with the lander's structured Jacobian (lander_jacobian.h), rtol 1e-7: a pad rocking on its
-  // ball joint in the soil is stiff, so Adams' steps were limited by stability (2,000-12,000 per
+  // ball joint in the soil is stiff, so Adams' steps are limited by stability (2,000-12,000 per
   // asymmetric landing at rtol 1e-9). At 1e-7 the benchmark landings (cases A, B, C, attitude,
   // 10 deg slope) agree with a reference at rtol 1e-11 to 4.6e-5 in every pad's depth and 1e-5 deg
   // in roll and pitch; the asymmetric ones run 2.9-4.4 times faster than with Adams at 1e-9, case A

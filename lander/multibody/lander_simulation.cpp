@@ -34,8 +34,9 @@ Eigen::VectorXd Pack(const StateLayout& L, const LanderInitialState& s) {
 
 // The absolute tolerance of each state: rtol times the landing's scale for that state (unless the
 // options give component_atol or ask for the scalar atol). Why: states that stay near zero - a
-// pad's spin about its ball joint, the roll rate of a symmetric landing - were resolved to 1e-11
-// in their own unit, radians per second included (docs/lander_dynamics.md has the step counts).
+// pad's spin about its ball joint, the roll rate of a symmetric landing - would be resolved to a
+// scalar 1e-11 in their own unit, radians per second included (docs/lander_dynamics.md has the
+// step counts).
 //   length L: the largest distance of a ball joint from the body's centre of mass; pad size l:
 //   the largest pad vertex distance from its joint; speed V: the initial speed plus sqrt(2 g L);
 //   angles 1 rad; angular speeds V / L (body) and V / l (pads); energy M V^2 / 2 + M g L.

@@ -9,6 +9,8 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "rft/units.h"
+
 namespace touchdown::lander {
 
 SlopeGeometry SlopeOf(const rft::PlaneGround& plane, const Eigen::Vector3d& downhill_if_level_W) {
@@ -122,7 +124,7 @@ StaticTipOver StaticTipOverOnSlope(const LanderModel& model, const StateLayout& 
     return out;
   }
   // Bracket the crossing by steps of 5 deg below vertical ground, then TOMS 748 to rounding.
-  constexpr double kStep = 5.0 * std::numbers::pi / 180.0;
+  constexpr double kStep = 5.0 * units::kDeg;
   const double limit = 0.5 * std::numbers::pi - slope.angle_rad;
   double lo = 0.0, hi = std::min(kStep, limit);
   while (margin_at(hi) > 0.0) {

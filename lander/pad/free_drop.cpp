@@ -18,10 +18,10 @@ namespace touchdown::pad {
 namespace {
 // The absolute tolerance of each state: rtol times the drop's own scale for that state (unless the
 // caller gave component_atol). Why: a state that stays near zero - the rotation about an axis the
-// drop is symmetric about, a level pad's spin - was resolved to a scalar atol of 1e-11 in its own
-// unit; the mesh's small asymmetries drive it, and the 5-degree tilted drop spent 5,964 steps
-// resolving 1e-4 rad/s of wobble to 1e-11 rad/s (12 times fewer steps with these scales, the
-// depth and tilt unchanged to 1e-6; tests/lander/pad/free_drop_test.cpp).
+// drop is symmetric about, a level pad's spin - would be resolved to a scalar atol of 1e-11 in its
+// own unit; the mesh's small asymmetries drive it, and the 5-degree tilted drop would spend 12 times
+// the steps resolving 1e-4 rad/s of wobble to 1e-11 rad/s (the depth and tilt agree to 1e-6 with
+// these scales; tests/lander/pad/free_drop_test.cpp).
 //   length L: the pad's radius about its centre of mass; speed V: the largest of the impact speed,
 //   the horizontal speed, spin times L and sqrt(g L); angle: 1 rad; angular speed V / L;
 //   energy: m V^2 / 2 + m g L.
@@ -85,7 +85,7 @@ Eigen::VectorXd ReleaseState(const FreePadDynamics& pad, const FreeDropInput& in
   Eigen::VectorXd y = Eigen::VectorXd::Zero(pad.size());
   y.segment<3>(kP) = PlaceAtDepth(pad.body(), R0, -clearance) + R0 * pad.body().com_B;
   y.segment<4>(kQ) << q0.w(), q0.x(), q0.y(), q0.z();
-  y.segment<3>(kV) << in.horizontal_speed_m_s, 0.0, -std::sqrt(std::max(v_td * v_td - 2.0 * g * clearance, 0.0));
+  y.segment<3>(kV) << in.horizontal_speed_m_s, 0.0, -ReleaseSpeed(v_td, g, clearance);
   y.segment<3>(kW) = R0.transpose() * in.omega_W;
   return y;
 }
@@ -198,7 +198,7 @@ FreeDropResult RunFreeDrop(const geom::PadBody& body, const rft::Terrain& terrai
   integ::HybridRun run(integrator);
 
   const double v_td = in.impact_speed_m_s, g = in.gravity_m_s2;
-  const double clearance = std::min(options.approach_clearance_m, v_td * v_td / (4.0 * g));
+  const double clearance = ReleaseClearance(options.approach_clearance_m, v_td, g);
   Eigen::VectorXd y = ReleaseState(pad, in, clearance);
   if (clearance > 0.0) y = Approach(run, pad, y, clearance);
   y[kWork] = 0.0;

@@ -23,6 +23,8 @@
 #include "footpad_geom/pad_body.h"
 #include "lander/integ/cvode_integrator.h"
 #include "lander/pad/pad_pose.h"
+#include "lander/pad/release.h"
+#include "rft/gravity_constants.h"
 #include "rft/soil_map.h"
 
 namespace touchdown::pad {
@@ -33,17 +35,18 @@ struct FreeDropInput {
   double tilt_rad = 0.0;              // at release, about tilt_axis
   TiltAxis tilt_axis = TiltAxis::kX;
   Eigen::Vector3d omega_W = Eigen::Vector3d::Zero();  // angular velocity at release [rad/s]
-  double gravity_m_s2 = 9.81;
+  double gravity_m_s2 = rft::kEarthGravity_m_s2;
 };
 
 struct FreeDropOptions {
   double sample_rate_hz = 1000.0;
-  double approach_clearance_m = 0.005;
+  double approach_clearance_m = kDefaultApproachClearance_m;
   double rest_speed_m_s = 1e-3;
   double max_duration_s = 5.0;
   // rtol 1e-6: the final depth to 2e-5 relative and the tilt to 2.4e-4 deg of a run at rtol 1e-10 on
   // the 5k-triangle bench drops (tilted, sliding, spinning; docs/lander_dynamics.md, "Free
-  // single-pad drops"), 5 and 40 times inside issue 15's 1e-4 and 0.01 deg; at 1e-5 a sliding drop is
+  // single-pad drops"), 5 and 40 times inside the
+  // accuracy the studies ask of a landing (1e-4 relative in depth, 0.01 deg); at 1e-5 a sliding drop is
   // 2.5e-4 off. The energy balance then closes to 2e-5 there, 1.2e-4 at most over the shipped pads'
   // tilts and speeds (it measures the integration's global error in energy units: 4e-7 at rtol
   // 1e-8, 3e-6 at 1e-7; rtol 1e-8 for a balance to 1e-6). The absolute tolerances are rtol times each

@@ -175,7 +175,8 @@ void FreePadDynamics::Jacobian(const Eigen::Ref<const Eigen::VectorXd>& y, const
 }
 
 double FreePadDynamics::RestCapacity(const FreePadPose& s) const {
-  rft::PadKinematics down{s.R_WB, s.p_WB, Eigen::Vector3d(0.0, 0.0, -1e-6), Eigen::Vector3d::Zero()};
+  rft::PadKinematics down{s.R_WB, s.p_WB, Eigen::Vector3d(0.0, 0.0, -rft::kQuasiStaticProbeSpeed_m_s),
+                            Eigen::Vector3d::Zero()};
   const rft::SoilContactModel& soil = SoilUnder(s);
   return rft::ComputeContactWrench(body_.surface, down, ground_, *soil.law, soil.pad_terms).force_W.z();
 }

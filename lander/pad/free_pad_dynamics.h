@@ -66,8 +66,8 @@ class FreePadDynamics {
                 const Eigen::Ref<const Eigen::VectorXd>& scale, Eigen::Ref<Eigen::MatrixXd> J) const;
   int JacobianContacts() const;
   // The soil's quasi-static capacity for further straight-down motion at pose s: the vertical force
-  // on a probe moving down at 1 um/s (RFT depends on the direction only; speed-dependent terms must
-  // not count as static capacity).
+  // on a probe moving down at rft::kQuasiStaticProbeSpeed_m_s (speed-dependent terms must not count
+  // as static capacity).
   double RestCapacity(const FreePadPose& s) const;
   // Kinetic energy (translation and rotation) at pose s.
   double KineticEnergy(const FreePadPose& s) const;

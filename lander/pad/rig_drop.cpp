@@ -86,10 +86,10 @@ RigDropResult RunRigDrop(const RigDropInput& in, const VerticalSoilResponse& res
 
   // Approach: free flight from a clearance chosen so the pad arrives at the requested speed.
   const double v_td = in.impact_speed_m_s;
-  const double clearance = std::min(options.approach_clearance_m, v_td * v_td / (4.0 * g));
+  const double clearance = ReleaseClearance(options.approach_clearance_m, v_td, g);
   Eigen::VectorXd y(kStateSize);
   if (clearance > 0.0) {
-    y << -clearance, std::sqrt(v_td * v_td - 2.0 * g * clearance), 0.0, 0.0;
+    y << -clearance, ReleaseSpeed(v_td, g, clearance), 0.0, 0.0;
     run.Start(0.0, y);
     y = run.AdvanceToRoot(10.0 * std::sqrt(2.0 * clearance / g) + 1.0, 0,
                           "touchdown was not reached during the approach");

@@ -23,6 +23,8 @@
 #include <vector>
 
 #include "lander/integ/cvode_integrator.h"
+#include "lander/pad/release.h"
+#include "rft/gravity_constants.h"
 
 namespace touchdown::pad {
 
@@ -59,13 +61,13 @@ struct RigDropOptions {
   double sample_rate_hz = 1000.0;       // the rig's 1 kHz
   double rest_duration_s = 0.1;         // time simulated (and traced) after the stop
   double max_stroke_duration_s = 10.0;  // a pad still moving after this is a failure
-  double approach_clearance_m = 0.005;  // release point above the surface
+  double approach_clearance_m = kDefaultApproachClearance_m;  // release point above the surface
   integ::IntegratorOptions integrator{};
 };
 
 struct RigDropInput {
   double mass_kg = 0.0;
-  double gravity_m_s2 = 9.81;
+  double gravity_m_s2 = rft::kEarthGravity_m_s2;
   double impact_speed_m_s = 0.0;  // at touchdown, downward
 };
 

@@ -136,7 +136,7 @@ TEST_F(Cli, ForceAndDropOnABekkerSoil) {
   EXPECT_EQ(nlohmann::json::parse(rig.out)["law"], "bekker");
 }
 
-// Issue 13 section 4: `force` and `drop` never print null or NaN for a number, at the edges of
+// `force` and `drop` never print null or NaN for a number, at the edges of
 // the physical ranges (rft/physical_limits.h) too; beyond them the input is refused (exit 2).
 void ExpectOnlyFiniteNumbers(const nlohmann::json& v, const std::string& where) {
   EXPECT_FALSE(v.is_null()) << where;

@@ -1,4 +1,4 @@
-// Determinism (issue 7): the same inputs give bit-identical outputs across runs, thread counts
+// Determinism: the same inputs give bit-identical outputs across runs, thread counts
 // and process counts. The touchdown executable is run as a user would; files are compared
 // byte for byte and the sweep databases value by value (doubles by their bit patterns).
 // Complements tests/drop_tests/sweep/sweep_test.cpp (in-process thread counts, MPI ranks, a killed
@@ -194,7 +194,7 @@ TEST(Determinism, SweepIsBitIdenticalForThreadsShardsAndMerge) {
   ExpectSameTree(box.dir() / "t1_dataset", box.dir() / "merged_dataset");
 }
 
-// Issue 13 section 6: the default per-drop limit counts right-hand-side evaluations, not seconds,
+// The default per-drop limit counts right-hand-side evaluations, not seconds,
 // so which drops run out of it is the same at 1 and 2 threads, in shards, under any load.
 TEST(Determinism, EvaluationLimitFailsTheSameDropsAtAnyThreadCount) {
   Sandbox box("determinism_limit");

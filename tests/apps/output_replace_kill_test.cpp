@@ -1,4 +1,4 @@
-// Replacing an earlier output is atomic (issue 13, section 1): `campaign`, `export` and `lander` are
+// Replacing an earlier output is atomic: `campaign`, `export` and `lander` are
 // killed (SIGKILL) at random moments while they replace an earlier output of theirs, and what is left
 // at the target must be one complete output, the old or the new, never a mixture or a part. The next
 // run removes what the killed runs left beside the target.

@@ -1,4 +1,4 @@
-// Issue 13, section 7: outputs do not carry this machine's absolute paths. Every command is run
+// Outputs do not carry this machine's absolute paths. Every command is run
 // from a temporary directory with relative paths; the files that name other files
 // (scenario_resolved.yaml of campaign and lander, model.yaml of calibrate and diagnose, the sweep
 // database's meta table) must hold neither that directory's absolute path nor the data

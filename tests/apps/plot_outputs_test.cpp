@@ -1,4 +1,4 @@
-// Issue 13, section 2: the commands that draw plots, run as a user runs them. An --out holding a
+// The commands that draw plots, run as a user runs them. An --out holding a
 // quote, a shell injection attempt, spaces or non-ASCII characters, or a relative path, gives
 // complete PNGs and runs nothing else; a sweep whose drops all failed still plots; a write
 // failure (a file size limit standing in for a full disk) or a missing gnuplot is exit 2 with

@@ -1,4 +1,4 @@
-// The robustness table (issue 7): every bad input we know of, and a few extreme but legal ones,
+// The robustness table: every bad input we know of, and a few extreme but legal ones,
 // run through the touchdown executable exactly as a user would; docs/robustness.md is the
 // rendered table. The test fails when a case crashes (a signal), exits with a status other
 // than 0 (ran), 2 (input refused) or 3 (integration failed), prints more than one line on a
@@ -127,7 +127,7 @@ std::vector<std::pair<std::string, std::string>> Dataset(const std::string& name
 
 std::string Calibrate(const std::string& name) { return "calibrate " + name + " --param zeta --out " + name + ".yaml"; }
 
-// ---- issue 13, sections 3 (exit statuses, clear errors) and 4 (inputs accepted but wrong) ----
+// ---- Exit statuses with clear errors, and inputs that would be accepted but wrong ----
 
 // A results database whose meta table holds `version` as its format.
 void MakeResultsDb(const fs::path& path, const std::string& version) {
@@ -639,7 +639,7 @@ std::vector<Case> Cases() {
   c.push_back({"CLI flag", "sweep --threads -1", "sweep count.yaml --threads -1 --out out_f1"});
   c.push_back({"CLI flag", "sweep --shard 3/2", "sweep soft.yaml --shard 3/2 --out out_f2"});
   c.push_back({"CLI flag", "sweep --max-drop-wall-time nan", "sweep soft.yaml --max-drop-wall-time nan --out out_f3"});
-  // Output paths (issue 13, section 1): touchdown never writes over, into or around what it did not write.
+  // Output paths: touchdown never writes over, into or around what it did not write.
   {
     const std::string scenario = "o_lander.yaml";
     const std::pair<std::string, std::string> lander = {scenario, Lander("lander: sutoh2017_lander\n" + kLanderGround +
@@ -676,7 +676,7 @@ std::vector<Case> Cases() {
                "force --pad flat --soil fjs1_lp --depth 0.005 --tilt-deg 89"});
   c.push_back({"extreme", "pad buried 1 m deep", "force --pad flat --soil fjs1_lp --depth 1"});
   c.push_back({"extreme", "pad 1 cm above the surface (depth -0.01)", "force --pad flat --soil fjs1_lp --depth -0.01"});
-  // Issue 13 section 2: gnuplot runs without a shell, with paths relative to the output, so an
+  // Gnuplot runs without a shell, with paths relative to the output, so an
   // --out with a quote or a shell injection attempt plots like any other (tests/apps/
   // plot_outputs_test.cpp checks the PNGs and that no PWNED file appears); a relative --out; a
   // sweep whose drops all failed plots placeholders instead of an invalid script.
@@ -698,7 +698,7 @@ std::vector<Case> Cases() {
                  {{"plot_lander.yaml", Lander("lander: sutoh2017_lander\n" + kLanderGround +
                                              "initial: {touchdown_speed_m_s: 1.0}\nsimulation: {duration_s: 0.03}\n")}}});
   }
-  // Issue 13 section 6 (sweeps): the deterministic per-drop evaluation limit.
+  // Sweeps: the deterministic per-drop evaluation limit.
   {
     const std::string run = " --threads 1 --progress lines --out ";
     const std::string body = Sweep(kSweepBase + "grid: {impact_speed_m_s: [0.7, 1.5]}\n");

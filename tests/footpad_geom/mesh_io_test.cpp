@@ -232,7 +232,7 @@ TEST(MeshDefects, SelfIntersectionIsRefused) {
             "own pad)");
 }
 
-// Issue 13: a box inside a box added the inner shell's surface to the contact (15 % more
+// A box inside a box would add the inner shell's surface to the contact (15 % more
 // submerged area); a pad must be one solid. Boxes side by side are refused too (above).
 TEST(MeshDefects, NestedShellsAreRefused) {
   const PolygonSoup nested = testing::Union(TriangulatedBox(1, 1, 1), TriangulatedBox(0.5, 0.5, 0.5, {0.25, 0.25, 0.25}));

@@ -1,4 +1,4 @@
-// Issue 13, section 7: a triangle that touches the surface only to rounding. The rotating path
+// A triangle that touches the surface only to rounding. The rotating path
 // (contact_wrench_rotating.cpp) decides which elements touch from the depths of its vectorised
 // pass and clips them with depths recomputed per element; the two can round differently for a
 // vertex on the surface. ClipAndIntegrate took "no vertex below" for "two below", and the hex pad

@@ -1,4 +1,4 @@
-// Issue 13, sections 3 and 4: every input file opens through one helper that says what is wrong
+// Every input file opens through one helper that says what is wrong
 // with a path; YAML files refuse duplicate keys and text that is not UTF-8; dataset CSVs read as
 // RFC 4180 (Excel and pandas exports); drop ids must be file names; soil files take the fields
 // the README documents; compare reports drops whose relative errors are undefined.

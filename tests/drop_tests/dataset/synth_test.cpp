@@ -86,7 +86,7 @@ TEST(Synth, GasCushionHidesOnlyInAirDrops) {
 }  // namespace
 }  // namespace touchdown::dataset
 
-// Issue 13, section 5: synth builds its dataset in memory, so its size is capped at load, each
+// Synth builds its dataset in memory, so its size is capped at load, each
 // refusal naming the field and the limit.
 namespace touchdown::dataset {
 namespace {

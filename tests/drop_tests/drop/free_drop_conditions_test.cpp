@@ -43,7 +43,7 @@ TEST(FreeDrop, VerticalLevelDropMatchesTheRigDrop) {
 }  // namespace
 }  // namespace touchdown::pad
 
-// Issue 13, section 7: every shipped pad (data/pads/*.yaml), tilted about x and about y, lands as a
+// Every shipped pad (data/pads/*.yaml), tilted about x and about y, lands as a
 // free drop at three speeds. The hex pad tilted 5 or 10 degrees about x lands on a whole edge; it
 // failed at t = 0 (CV_CONV_FAILURE, h = 2e-31) because a triangle touching the surface only to
 // rounding was clipped as if two of its vertices were submerged (rft/contact_internal.h,

@@ -308,7 +308,7 @@ TEST_F(MeshPads, BadMeshPadsGiveOneClearError) {
       {"mass_kg: 1\nangular_segments: 3\nprofile: {shape: flat, radius_mm: 50, thickness_mm: 16}\n",
        "angular_segments: must be at least 6, got 3"},
       {"kind: banana\nmass_kg: 1\n", "kind: unknown pad kind 'banana' (axisymmetric, mesh)"},
-      // Resolution caps (issue 7): a hand-written 1e9 is refused at load, not run out of memory.
+      // Resolution caps: a hand-written 1e9 is refused at load, not run out of memory.
       {"mass_kg: 1\nangular_segments: 1000000000\nprofile: {shape: flat, radius_mm: 50, thickness_mm: 16}\n",
        "angular_segments: must be at most 1024, got 1000000000"},
       {"mass_kg: 1\nprofile: {shape: spherical_cap, radius_mm: 50, thickness_mm: 16, sphere_radius_mm: 100, "

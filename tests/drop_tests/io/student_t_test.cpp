@@ -1,4 +1,4 @@
-// Issue 13, section 7: every confidence interval takes its Student t factor from one function
+// Every confidence interval takes its Student t factor from one function
 // (drop_tests/io/student_t.h, Boost.Math). The diagnose fitter's own table skipped df = 3 (2.776, the
 // df 4 value, instead of 3.182) and shifted every df from 3 to 29.
 #include "drop_tests/io/student_t.h"

@@ -1,4 +1,4 @@
-// Issue 13, section 5: a campaign's memory does not grow with its traces or its pads. Its cases
+// A campaign's memory does not grow with its traces or its pads. Its cases
 // share one loaded pad each (the revolved body is megabytes), and RunCampaignToDirectory writes
 // each trace as its drop finishes and keeps the summaries only, with the same files as running the
 // whole campaign in memory and writing it afterwards.

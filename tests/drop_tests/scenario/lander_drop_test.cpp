@@ -112,8 +112,8 @@ TEST(LanderScenario, BadInputNamesFileFieldAndValue) {
 }  // namespace
 }  // namespace touchdown::lander
 
-// Issue 13 section 4: a lander placed on the surface (touchdown_speed_m_s: 0) touches down at
-// t = 0; the touchdown times were null while the pads sank.
+// A lander placed on the surface (touchdown_speed_m_s: 0) touches down at t = 0, not never:
+// its touchdown times must not be null while the pads sink.
 namespace touchdown::lander {
 namespace {
 TEST(LanderDrop, PlacedOnTheSurfaceTouchesDownAtTimeZero) {

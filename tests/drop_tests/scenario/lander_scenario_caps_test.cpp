@@ -1,5 +1,5 @@
-// Issue 13, section 5: a lander run keeps its trace in memory, so duration x rate is capped at load
-// (1e6 samples, about 0.4 GB measured; the former 1e7 needed over 4 GB), the refusal naming the
+// A lander run keeps its trace in memory, so duration x rate is capped at load
+// (1e6 samples take about 0.4 GB, so ten times that would need over 4 GB), the refusal naming the
 // field and the limit.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Issue 13, sections 5 and 6 (sweeps): one writer per output directory (a lock naming its
+// Sweeps under control: one writer per output directory (a lock naming its
 // holder), a clean stop on SIGINT/SIGTERM (drops in flight committed, exit 130/143, a rerun
 // completes the set bit-identical to an uninterrupted run), the deterministic per-drop
 // evaluation limit (same failed set at any thread count; the reason names the limit and its

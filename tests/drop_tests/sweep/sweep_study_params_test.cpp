@@ -56,7 +56,8 @@ TEST_F(SweepStudyParams, EveryNewParameterLoadsInEveryBlockWithItsUnits) {
   EXPECT_FALSE(last.Given(SweepParam::kRoll));
 }
 
-// `grid.slope_deg: unknown parameter` (issue 15) must never come back, nor any of its siblings.
+// Every lander parameter a study varies is a sweep parameter: `grid.slope_deg: unknown parameter`
+// must never come back, nor any of its siblings.
 TEST_F(SweepStudyParams, SlopeInTheGridIsNeverAnUnknownParameter) {
   for (const char* key : {"slope_deg", "downhill_azimuth_deg", "yaw_relative_to_slope_deg", "horizontal_azimuth_deg",
                           "angular_rate_x_deg_s", "angular_rate_y_deg_s", "angular_rate_z_deg_s"}) {

@@ -405,7 +405,7 @@ TEST(ResultsDbSerialisation, RecordsSurviveTheMpiMessageFormat) {
 }
 
 
-// ---- Hardening (issue 7) ----
+// ---- Hardening: resolution caps and bad inputs refused at load ----
 
 TEST_F(Sweep, GridCountsAndDropTotalsAreCappedAtLoad) {
   // A hand-written count of 1e9 would allocate 8 GB of grid values.

@@ -128,7 +128,7 @@ TEST(CvodeIntegrator, WallClockLimitIsCheckedInRootFunctionsToo) {
   }
 }
 
-// Issue 13 section 6: the deterministic work limit. It counts every right-hand side over the
+// The deterministic work limit. It counts every right-hand side over the
 // integrator's life (across Resets, whose CVODE counters restart), so the same model fails at
 // the same evaluation on any machine; the failure names the limit and its value.
 TEST(CvodeIntegrator, EvaluationLimitFailsAtTheSameEvaluationAcrossResets) {

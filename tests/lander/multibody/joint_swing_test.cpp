@@ -1,6 +1,6 @@
 // The pads' swing on their ball joints: JointSwingAngle against its closed form, the largest swing a
 // run records (LanderRunResult::max_joint_swing_rad) against its own trace, and the cone limit that
-// bounds it, on a sliding landing of the paper's lander (tests/lander/multibody/paper_lander.h):
+// bounds it, on a sliding landing of the paper's lander (fixtures/paper_lander.h):
 // with free joints its pads turn past edge-on; a cone stop holds them near its half angle, and the
 // energy balance still closes with the stop's potential energy.
 #include <gtest/gtest.h>
@@ -13,7 +13,7 @@
 
 #include "lander/multibody/lander_simulation.h"
 #include "rft/units.h"
-#include "tests/lander/multibody/paper_lander.h"
+#include "fixtures/paper_lander.h"
 
 namespace touchdown::lander {
 namespace {

@@ -1,4 +1,4 @@
-// Lander drops on the paper's Table II grounds, built in code (tests/lander/multibody/paper_lander.h):
+// Lander drops on the paper's Table II grounds, built in code (fixtures/paper_lander.h):
 // level symmetric landing, energy with dissipation as a state, close-packed pads, tolerances.
 #include <gtest/gtest.h>
 
@@ -11,7 +11,7 @@
 
 #include "lander/multibody/lander_simulation.h"
 #include "rft/units.h"
-#include "tests/lander/multibody/paper_lander.h"
+#include "fixtures/paper_lander.h"
 
 namespace touchdown::lander {
 namespace {

@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "lander/multibody/lander_jacobian.h"
-#include "tests/lander/multibody/paper_lander.h"
+#include "fixtures/paper_lander.h"
 #include "tests/malloc_counter.h"
 
 namespace touchdown::lander {

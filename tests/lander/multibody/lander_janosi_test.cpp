@@ -11,7 +11,7 @@
 #include "lander/multibody/lander_simulation.h"
 #include "rft/bekker_law.h"
 #include "rft/units.h"
-#include "tests/lander/multibody/paper_lander.h"
+#include "fixtures/paper_lander.h"
 
 namespace touchdown::lander {
 namespace {

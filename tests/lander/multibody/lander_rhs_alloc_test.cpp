@@ -6,7 +6,7 @@
 
 #include "lander/multibody/lander_dynamics.h"
 #include "lander/multibody/lander_simulation.h"
-#include "tests/lander/multibody/paper_lander.h"
+#include "fixtures/paper_lander.h"
 #include "tests/malloc_counter.h"
 
 namespace touchdown::lander {

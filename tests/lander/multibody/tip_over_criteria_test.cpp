@@ -15,7 +15,7 @@
 #include "lander/multibody/lander_simulation.h"
 #include "lander/multibody/static_stability.h"
 #include "rft/units.h"
-#include "tests/lander/multibody/paper_lander.h"
+#include "fixtures/paper_lander.h"
 
 namespace touchdown::lander {
 namespace {
@@ -329,9 +329,9 @@ TEST(TipOverCriteria, EnergyBoundsBracketTheDynamicTippingSpeed) {
   EXPECT_LT(tips, v_estimate);
 }
 
-// The sharpest form of the lower bound (issue 15): a downhill speed just under it never tips. (With
-// Adams this landing took 80 s, 3.8 M steps, while the downhill pads ploughed at mm/s; BDF with the
-// lander's Jacobian takes 0.15 s.)
+// The sharpest form of the lower bound: a downhill speed just under it never tips. (The downhill
+// pads plough at mm/s for a long time: Adams would need millions of steps, BDF with the lander's
+// Jacobian takes a fraction of a second.)
 TEST(TipOverCriteria, JustBelowTheEnergyLowerBoundNeverTips) {
   const test::PaperLander tall = TallLanderOnSlope({});
   const StateLayout L(tall.model);

@@ -12,12 +12,12 @@
 #include "footpad_geom/axisymmetric_profile.h"
 #include "footpad_geom/revolve.h"
 #include "rft/stress_law_3d_factory.h"
-#include "tests/lander/paper_soils.h"
+#include "fixtures/paper_soils.h"
 
 namespace touchdown::pad {
 namespace {
 
-constexpr double kMm = 1e-3;
+using units::kMm;
 constexpr double kPadMass_kg = 1.6;  // data/pads/{flat,curved}.yaml: mass_kg
 
 // data/pads/flat.yaml: 100 mm diameter, 16 mm thick.

@@ -11,7 +11,7 @@
 #include "footpad_geom/axisymmetric_profile.h"
 #include "footpad_geom/revolve.h"
 #include "rft/stress_law_3d_factory.h"
-#include "tests/lander/paper_soils.h"
+#include "fixtures/paper_soils.h"
 #include "tests/malloc_counter.h"
 
 namespace touchdown::pad {

@@ -11,7 +11,7 @@
 #include "lander/pad/free_drop.h"
 #include "lander/pad/free_pad_dynamics.h"
 #include "rft/stress_law_3d_factory.h"
-#include "tests/lander/paper_soils.h"
+#include "fixtures/paper_soils.h"
 #include "tests/malloc_counter.h"
 
 namespace touchdown::pad {

@@ -13,7 +13,7 @@
 #include "rft/bekker_law.h"
 #include "rft/stress_law_3d_factory.h"
 #include "rft/units.h"
-#include "tests/lander/paper_soils.h"
+#include "fixtures/paper_soils.h"
 
 namespace touchdown::pad {
 namespace {
