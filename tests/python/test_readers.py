@@ -93,3 +93,18 @@ def test_stability_from_python_writes_the_study(tmp_path):
     result = touchdown.stability(study, tmp_path / "out", threads=1)
     assert result.summary["landings"] == 1 and result.tip_over_map is None
     assert len(result.landings) == 1 and result.landings["tipped_over"].iloc[0] == 0.0
+
+
+def test_read_sweep_types_missing_metrics_and_meta(tiny_sweep):
+    out, _ = tiny_sweep
+    drops = touchdown.read_sweep(out)
+    # Lander metrics of a rig sweep are NULL in every row: float columns of NaN, not None objects.
+    for column in ["tipped_over", "max_tilt_deg", "pad1_final_penetration_m", "final_roll_deg"]:
+        assert drops[column].dtype == np.float64, column
+        assert drops[column].isna().all(), column
+    meta = drops.attrs["meta"]
+    assert meta["format_version"] == 7 and isinstance(meta["format_version"], int)
+    assert meta["total_drops"] == 4 and isinstance(meta["total_drops"], int)
+    assert isinstance(meta["max_drop_wall_time_s"], float)
+    assert meta["load_dependent_failures"] is False
+    assert isinstance(meta["plan_digest"], str) and isinstance(meta["shard"], str)

@@ -70,7 +70,9 @@ def _connect_reader(path):
 def read_sweep(path, traces=False):
     """A sweep's drops as a DataFrame, one row per stored drop in drop_index order, the columns of
     the database's `drops` table (NULL metrics, failed or not applicable, as NaN). `path` is the
-    results.sqlite file or the sweep's output directory. df.attrs["meta"] holds the meta table.
+    results.sqlite file or the sweep's output directory. df.attrs["meta"] holds the meta table, its
+    numbers as int or float and load_dependent_failures as bool. A metric NULL in every row (a
+    lander column of a rig sweep) is a float column of NaN.
 
     With traces=True, returns (drops, traces): traces maps drop_index to a DataFrame with the
     columns t_s, penetration_m, velocity_m_s, force_N (drops stored with traces only).
@@ -81,13 +83,20 @@ def read_sweep(path, traces=False):
         db = _connect_reader(path)
         try:
             drops = pd.read_sql_query("SELECT * FROM drops ORDER BY drop_index", db)
-            drops.attrs["meta"] = dict(db.execute("SELECT key, value FROM meta").fetchall())
+            declared = {row[1]: row[2].upper() for row in db.execute("PRAGMA table_info(drops)")}
+            meta = db.execute("SELECT key, value FROM meta").fetchall()
             rows = db.execute("SELECT drop_index, samples, data FROM traces ORDER BY drop_index").fetchall() \
                 if traces else None
         finally:
             db.close()
     except (sqlite3.Error, pd.errors.DatabaseError) as e:
         raise ValueError(f"{path}: SQLite cannot use this database: {_sqlite_reason(e)}") from None
+    # A metric that is NULL in every row (a lander column of a rig sweep) comes back from SQLite
+    # as None in an object column; the table declares it REAL, so it is a float column of NaN.
+    for column, kind in declared.items():
+        if kind == "REAL" and drops[column].dtype == object:
+            drops[column] = pd.to_numeric(drops[column], errors="coerce").astype("float64")
+    drops.attrs["meta"] = {key: _typed_meta(key, value) for key, value in meta}
     if not traces:
         return drops
     import numpy as np
@@ -97,6 +106,30 @@ def read_sweep(path, traces=False):
         values = np.frombuffer(blob, dtype="<f8").reshape(samples, len(SWEEP_TRACE_COLUMNS))
         by_drop[index] = pd.DataFrame(values.copy(), columns=list(SWEEP_TRACE_COLUMNS))
     return drops, by_drop
+
+
+# The meta table's values are text; these keys are written from numbers or a yes/no flag
+# (drop_tests/sweep/sweep.cpp). Every other key (sweep_name, plan_digest, shard, source, model)
+# is text.
+_META_TYPES = {
+    "format_version": int,
+    "total_drops": int,
+    "max_drop_evaluations": int,
+    "max_drop_wall_time_s": float,
+    # "no", or "yes: " and why the wall-clock limit makes failures load dependent.
+    "load_dependent_failures": lambda text: text.startswith("yes"),
+}
+
+
+def _typed_meta(key, value):
+    """A meta value as the type it was written from (_META_TYPES), else the text itself."""
+    convert = _META_TYPES.get(key)
+    if convert is None or not isinstance(value, str):
+        return value
+    try:
+        return convert(value)
+    except ValueError:
+        return value  # written by another version: left as the database holds it
 
 
 def _sqlite_reason(error):
