@@ -389,9 +389,17 @@ bool WriteGapPerDropData(const Diagnosis& d, const dataset::Dataset& ds, const C
   return k > 0;
 }
 
+// True when the effect raised any drop's force NRMSE: only then does the figure's key explain the
+// mark that flags such drops.
+bool AnyDropMadeWorse(const Diagnosis& d, const CandidateScore& after) {
+  for (size_t i = 0; i < d.base.gaps.size() && i < after.gaps.size(); ++i)
+    if (after.gaps[i].force_nrmse > d.base.gaps[i].force_nrmse) return true;
+  return false;
+}
+
 // Force NRMSE per drop before and after, drops in vacuum and in air in separate panels, with
 // the sensor-noise floor each drop cannot go below.
-std::string GapPerDropFigure(const std::string& aug_title, const std::array<bool, 2>& has_drops) {
+std::string GapPerDropFigure(const std::string& aug_title, const std::array<bool, 2>& has_drops, bool any_worse) {
   std::ostringstream body;
   // Drop ids upright and small, held-out ones starred; a drop the effect made worse carries a
   // down-pointing mark above its bars.
@@ -412,7 +420,7 @@ std::string GapPerDropFigure(const std::string& aug_title, const std::array<bool
          << file << " skip 1 using ($1+0.2):4 with boxes lc rgb '" << io::kAugmentedColour << "' title 'with effect', "
          << file << " skip 1 using 1:5 with points pt 5 ps 1 lc rgb '#000000' title 'sensor-noise floor', "
          << file << " skip 1 using 1:($4 > $3 ? ($4 > $5 ? $4 : $5) * 1.08 : 1/0) with points pt 11 ps 1.8 lc rgb '"
-         << io::kAugmentedColour << "' title 'made worse by the effect'\n";
+         << io::kAugmentedColour << "' " << (any_worse ? "title 'made worse by the effect'" : "notitle") << "\n";
   }
   body << "unset multiplot\n";
   return io::Figure("plots/gap_per_drop", body.str(), io::kFigureWide);
@@ -564,8 +572,10 @@ void WriteDiagnosis(const Diagnosis& d, const dataset::Dataset& ds, const io::Ou
                                         : std::string("base");
     const std::string gp = OverlayFigure(d, ds, held, aug_title, false) + OverlayFigure(d, ds, held, aug_title, true) +
                            ResidualFigure(aug_title, residuals) +
-                           GapPerDropFigure(aug_title, {WriteGapPerDropData(d, ds, after, rft::Atmosphere::kVacuum, dir),
-                                                        WriteGapPerDropData(d, ds, after, rft::Atmosphere::kAir, dir)});
+                           GapPerDropFigure(aug_title,
+                                            {WriteGapPerDropData(d, ds, after, rft::Atmosphere::kVacuum, dir),
+                                             WriteGapPerDropData(d, ds, after, rft::Atmosphere::kAir, dir)},
+                                            AnyDropMadeWorse(d, after));
     io::RenderPlots(dir, {"plots/diagnose.gp", gp,
                           {io::FigurePng("plots/overlays_force_time"), io::FigurePng("plots/overlays_force_penetration"),
                            io::FigurePng("plots/residuals"), io::FigurePng("plots/gap_per_drop")}});

@@ -337,6 +337,12 @@ TEST_F(ModelEffects, DiagnosedModelFileRoundTripsThroughDropAndCompare) {
   const ModelFile model = LoadModelFile(model_path);
   const gap::CandidateScore& w = d.candidates[d.winner];
 
+  // The per-drop gap figure explains its "made worse" mark only when a drop was made worse.
+  bool any_worse = false;
+  for (size_t i = 0; i < w.gaps.size(); ++i) any_worse = any_worse || w.gaps[i].force_nrmse > d.base.gaps[i].force_nrmse;
+  const std::string script = Slurp(dir_ / "diagnosis" / "plots" / "diagnose.gp");
+  EXPECT_EQ(script.find("title 'made worse by the effect'") != std::string::npos, any_worse);
+
   // drop --model: the CLI's drop is the in-process drop under the fitted model, to the last bit.
   std::string out;
   ASSERT_EQ(Touchdown("drop --pad flat --soil fjs1_lp --speed 1.2 --model " + model_path, &out), 0);
