@@ -21,7 +21,12 @@ string(MAKE_C_IDENTIFIER "${HEADER}" stem)
 set(source "${WORK_DIR}/include_${stem}.cpp")
 file(WRITE "${source}" "#include \"${HEADER}\"\n")
 execute_process(COMMAND "${CXX}" ${flags} "${source}" RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE out)
+# GCC says "HEADER: No such file or directory", Clang "'HEADER' file not found": either one means
+# the compiler failed for the reason under test, not for another.
 string(FIND "${out}" "${HEADER}: No such file" not_found)
+if(not_found EQUAL -1)
+  string(FIND "${out}" "'${HEADER}' file not found" not_found)
+endif()
 if(EXPECT STREQUAL "missing")
   if(status EQUAL 0 OR not_found EQUAL -1)
     message(FATAL_ERROR "expected \"${HEADER}\" not to be found on ${INCLUDES}; the compiler said (status ${status}):\n${out}")
