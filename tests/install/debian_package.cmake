@@ -26,18 +26,7 @@ if(NOT dpkg_deb OR NOT cpack)
   return()
 endif()
 
-function(run out_var)
-  cmake_parse_arguments(PARSE_ARGV 1 arg "" "WORKING_DIRECTORY" "COMMAND")
-  if(NOT arg_WORKING_DIRECTORY)
-    set(arg_WORKING_DIRECTORY "${WORK_DIR}")
-  endif()
-  execute_process(COMMAND ${arg_COMMAND} WORKING_DIRECTORY "${arg_WORKING_DIRECTORY}"
-    RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT status EQUAL 0)
-    message(FATAL_ERROR "exit ${status}: ${arg_COMMAND}\n${out}\n${err}")
-  endif()
-  set(${out_var} "${out}" PARENT_SCOPE)
-endfunction()
+include("${CMAKE_CURRENT_LIST_DIR}/package_test_helpers.cmake")
 
 file(REMOVE_RECURSE "${WORK_DIR}")
 file(MAKE_DIRECTORY "${WORK_DIR}")
@@ -118,21 +107,8 @@ if(NOT cli_version STREQUAL "touchdown ${py_version}\n" OR NOT py_data STREQUAL 
     "data expected ${package_data}, drop peak ${peak} N)")
 endif()
 
-# 5. A program of one's own on the unpacked CMake package, compiled as the libraries were
-#    (tests/install/install_and_consume.cmake says why).
-set(consumer_build "${WORK_DIR}/consumer")
-set(configure_args -S "${SOURCE_DIR}/examples/cpp_consumer" -B "${consumer_build}" -G "${GENERATOR}"
-  "-DCMAKE_PREFIX_PATH=${usr}" "-DCMAKE_CXX_COMPILER=${CXX_COMPILER}" "-DCMAKE_BUILD_TYPE=${BUILD_TYPE}")
-if(BUILD_TYPE)
-  string(TOUPPER "${BUILD_TYPE}" build_type)
-  list(APPEND configure_args "-DCMAKE_CXX_FLAGS=${CXX_FLAGS}" "-DCMAKE_CXX_FLAGS_${build_type}=${CXX_FLAGS_BUILD_TYPE}")
-endif()
-if(LAUNCHER)
-  list(APPEND configure_args "-DCMAKE_CXX_COMPILER_LAUNCHER=${LAUNCHER}")
-endif()
-run(ignored COMMAND "${CMAKE_COMMAND}" ${configure_args})
-run(ignored COMMAND "${CMAKE_COMMAND}" --build "${consumer_build}")
-run(consumer COMMAND ${no_env} "${consumer_build}/cpp_consumer")
+# 5. A program of one's own on the unpacked CMake package (package_test_helpers.cmake).
+build_and_run_consumer("${usr}" consumer)
 string(JSON consumer_peak GET "${consumer}" drop peak_force_N)
 if(NOT consumer_peak GREATER 100)
   message(FATAL_ERROR "cpp_consumer on the package: ${consumer}")

@@ -11,24 +11,7 @@ foreach(var BUILD_DIR SOURCE_DIR WORK_DIR GENERATOR CXX_COMPILER BUILD_TYPE)
   endif()
 endforeach()
 
-# Runs a command; fails the test with its output unless it exits with `expected` (default 0).
-# Its standard output is in `${out_var}`.
-function(run out_var)
-  cmake_parse_arguments(PARSE_ARGV 1 arg "" "EXPECT;WORKING_DIRECTORY" "COMMAND")
-  if(NOT DEFINED arg_EXPECT)
-    set(arg_EXPECT 0)
-  endif()
-  if(NOT arg_WORKING_DIRECTORY)
-    set(arg_WORKING_DIRECTORY "${WORK_DIR}")
-  endif()
-  execute_process(COMMAND ${arg_COMMAND} WORKING_DIRECTORY "${arg_WORKING_DIRECTORY}"
-    RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT status STREQUAL arg_EXPECT)
-    message(FATAL_ERROR "exit ${status} (expected ${arg_EXPECT}): ${arg_COMMAND}\n${out}\n${err}")
-  endif()
-  set(${out_var} "${out}" PARENT_SCOPE)
-  set(${out_var}_stderr "${err}" PARENT_SCOPE)
-endfunction()
+include("${CMAKE_CURRENT_LIST_DIR}/package_test_helpers.cmake")
 
 # This test's own scratch folder, inside the build tree.
 file(REMOVE_RECURSE "${WORK_DIR}")
@@ -92,19 +75,7 @@ if(NOT ignored_stderr MATCHES "unknown name 'flat'")
 endif()
 
 # A program of the user's own, built against the moved prefix by find_package.
-set(consumer_build "${WORK_DIR}/consumer")
-set(configure_args -S "${SOURCE_DIR}/examples/cpp_consumer" -B "${consumer_build}" -G "${GENERATOR}"
-  "-DCMAKE_PREFIX_PATH=${prefix}" "-DCMAKE_CXX_COMPILER=${CXX_COMPILER}" "-DCMAKE_BUILD_TYPE=${BUILD_TYPE}")
-if(BUILD_TYPE)
-  string(TOUPPER "${BUILD_TYPE}" build_type)
-  list(APPEND configure_args "-DCMAKE_CXX_FLAGS=${CXX_FLAGS}" "-DCMAKE_CXX_FLAGS_${build_type}=${CXX_FLAGS_BUILD_TYPE}")
-endif()
-if(LAUNCHER)
-  list(APPEND configure_args "-DCMAKE_CXX_COMPILER_LAUNCHER=${LAUNCHER}")
-endif()
-run(ignored COMMAND "${CMAKE_COMMAND}" ${configure_args})
-run(ignored COMMAND "${CMAKE_COMMAND}" --build "${consumer_build}")
-run(consumer COMMAND ${no_env} "${consumer_build}/cpp_consumer")
+build_and_run_consumer("${prefix}" consumer)
 
 # Its numbers are the command line's, bit for bit (the same library code; JSON numbers are
 # compared as the doubles they parse to).
