@@ -46,6 +46,7 @@
 #include "rft/input_error.h"
 #include "rft/input_file.h"
 #include "rft/physical_limits.h"
+#include "objects_bindings.h"
 
 namespace py = pybind11;
 
@@ -460,4 +461,5 @@ PYBIND11_MODULE(_touchdown, m) {
   m.def("sweep", &python::Sweep, py::arg("plan"), py::arg("out"), py::arg("model"), py::arg("threads"));
   m.def("stability", &python::Stability, py::arg("study"), py::arg("out"), py::arg("model"), py::arg("samples"),
         py::arg("threads"));
+  python::RegisterObjectBindings(m);  // Pad, Soil, Lander, Scenario (objects_bindings.cpp)
 }

@@ -67,16 +67,45 @@ def _connect_reader(path):
     return db
 
 
-def read_sweep(path, traces=False):
+# The columns of the `drops` table that only lander drops fill (drop_tests/sweep/results_db.h,
+# "Lander drops only"): NaN, or "" for the soils and ground case, in a rig or free drop's row.
+LANDER_COLUMNS = (
+    "roll_deg", "pitch_deg",
+    *(f"pad{i}_final_penetration_m" for i in range(1, 5)),
+    "final_roll_deg", "final_pitch_deg", "tipped_over",
+    *(f"pad{i}_soil" for i in range(1, 5)), "ground_case",
+    "max_tilt_deg", "peak_leg_force_N", "max_stroke_m",
+    *(f"pad{i}_peak_force_N" for i in range(1, 5)),
+    "slope_deg", "downhill_azimuth_deg", "yaw_relative_to_slope_deg", "horizontal_azimuth_deg",
+    "angular_rate_x_deg_s", "angular_rate_y_deg_s", "angular_rate_z_deg_s",
+    "max_joint_swing_deg", "tip_over_edge", "tip_over_azimuth_deg",
+)
+
+# read_sweep's `kind`: the drop kinds (drops.drop_kind) each keeps.
+_KIND_ROWS = {"rig": ("rig", "free"), "lander": ("lander",)}
+
+
+def read_sweep(path, traces=False, kind=None):
     """A sweep's drops as a DataFrame, one row per stored drop in drop_index order, the columns of
     the database's `drops` table (NULL metrics, failed or not applicable, as NaN). `path` is the
     results.sqlite file or the sweep's output directory. df.attrs["meta"] holds the meta table, its
     numbers as int or float and load_dependent_failures as bool. A metric NULL in every row (a
     lander column of a rig sweep) is a float column of NaN.
 
+    The columns come in two groups, listed in table order in df.attrs: "rig_columns", those every
+    drop has (its identity, status, conditions and the pad-drop metrics: final_penetration_m,
+    peak_force_N, ...; a lander drop's are the whole lander's, e.g. its deepest pad), and
+    "lander_columns", those only lander drops fill (LANDER_COLUMNS: per-pad penetrations and
+    forces, attitudes, tipped_over, ...). kind="rig" gives the rig and free drops with the rig
+    columns only; kind="lander" the lander drops with every column; None (default) every drop
+    and column. The index is 0..n-1 either way.
+
     With traces=True, returns (drops, traces): traces maps drop_index to a DataFrame with the
-    columns t_s, penetration_m, velocity_m_s, force_N (drops stored with traces only).
+    columns t_s, penetration_m, velocity_m_s, force_N (drops stored with traces only; with
+    `kind`, those of the drops kept).
     """
+    if kind is not None and kind not in _KIND_ROWS:
+        raise ValueError(f"read_sweep: kind: must be 'rig', 'lander' or None, got {kind!r}")
     pd = _pandas()
     path = _results_db(path)
     try:
@@ -96,16 +125,34 @@ def read_sweep(path, traces=False):
     for column, kind in declared.items():
         if kind == "REAL" and drops[column].dtype == object:
             drops[column] = pd.to_numeric(drops[column], errors="coerce").astype("float64")
+    drops = _of_kind(drops, kind)
     drops.attrs["meta"] = {key: _typed_meta(key, value) for key, value in meta}
     if not traces:
         return drops
     import numpy as np
 
+    kept = set(drops["drop_index"])
     by_drop = {}
     for index, samples, blob in rows:
+        if index not in kept:
+            continue
         values = np.frombuffer(blob, dtype="<f8").reshape(samples, len(SWEEP_TRACE_COLUMNS))
         by_drop[index] = pd.DataFrame(values.copy(), columns=list(SWEEP_TRACE_COLUMNS))
     return drops, by_drop
+
+
+def _of_kind(drops, kind):
+    """The rows and columns read_sweep's `kind` keeps, with attrs["rig_columns"] and
+    attrs["lander_columns"] naming the two groups of columns (see read_sweep)."""
+    lander = [c for c in drops.columns if c in LANDER_COLUMNS]
+    rig = [c for c in drops.columns if c not in LANDER_COLUMNS]
+    if kind is not None:
+        drops = drops[drops["drop_kind"].isin(_KIND_ROWS[kind])]
+        drops = drops[rig] if kind == "rig" else drops
+        drops = drops.reset_index(drop=True)
+    drops.attrs["rig_columns"] = rig
+    drops.attrs["lander_columns"] = lander if kind != "rig" else []
+    return drops
 
 
 # The meta table's values are text; these keys are written from numbers or a yes/no flag
