@@ -2,6 +2,7 @@
 the formats' columns and one row per drop or landing, numbers as written."""
 import numpy as np
 import pandas as pd
+import pytest
 
 import touchdown
 from conftest import data_file, run_touchdown, touchdown_json
@@ -108,3 +109,32 @@ def test_read_sweep_types_missing_metrics_and_meta(tiny_sweep):
     assert isinstance(meta["max_drop_wall_time_s"], float)
     assert meta["load_dependent_failures"] is False
     assert isinstance(meta["plan_digest"], str) and isinstance(meta["shard"], str)
+
+
+def test_read_sweep_separates_rig_and_lander_columns(tiny_sweep, tmp_path):
+    out, _ = tiny_sweep
+    drops = touchdown.read_sweep(out)
+    rig, lander = drops.attrs["rig_columns"], drops.attrs["lander_columns"]
+    assert sorted(rig + lander) == sorted(drops.columns) and not set(rig) & set(lander)
+    assert rig == [c for c in drops.columns if c in rig]  # in table order
+    assert {"drop_index", "status", "impact_speed_m_s", "final_penetration_m", "peak_force_N"} <= set(rig)
+    assert {"tipped_over", "max_tilt_deg", "pad1_final_penetration_m", "pad4_soil", "ground_case"} <= set(lander)
+    # kind="rig": the rig drops without the lander columns (all NaN or "" in a rig drop's row).
+    only_rig = touchdown.read_sweep(out, kind="rig")
+    assert list(only_rig.columns) == rig and only_rig.attrs["lander_columns"] == []
+    pd.testing.assert_frame_equal(only_rig, drops[rig], check_exact=True)
+    assert len(touchdown.read_sweep(out, kind="lander")) == 0
+    only_rig, traces = touchdown.read_sweep(out, traces=True, kind="rig")
+    assert sorted(traces) == [0, 1, 2, 3]
+    with pytest.raises(ValueError, match="kind: must be 'rig', 'lander' or None, got 'free'"):
+        touchdown.read_sweep(out, kind="free")
+    # A lander sweep (a stability study's landings): kind="lander" keeps every column, filled.
+    study = tmp_path / "study.yaml"
+    study.write_text("schema_version: 1\ntype: stability\nname: level\n"
+                     f"lander: {{scenario: {data_file('scenarios', 'lander_case_A.yaml')}}}\n"
+                     "grid: {impact_speed_m_s: [0.8]}\n")
+    touchdown.stability(study, tmp_path / "out", threads=1)
+    landings = touchdown.read_sweep(tmp_path / "out", kind="lander")
+    assert len(landings) == 1 and list(landings.columns) == list(touchdown.read_sweep(tmp_path / "out").columns)
+    assert landings[["tipped_over", "max_tilt_deg", "pad1_final_penetration_m"]].notna().all(axis=None)
+    assert len(touchdown.read_sweep(tmp_path / "out", kind="rig")) == 0

@@ -104,7 +104,14 @@ class InputObject:
     def __eq__(self, other):
         return type(other) is type(self) and other._fields == self._fields
 
-    __hash__ = None  # mutable-looking fields: compared by value, not hashed
+    __hash__ = None  # compared by value, like the dicts of its fields
+
+    # Never changed once made, so a copy is the object itself (a dict-made one's file stays with it).
+    def __copy__(self):
+        return self
+
+    def __deepcopy__(self, memo):
+        return self
 
     def __repr__(self):
         shown = [f"{key}={value!r}" for key, value in self._fields.items()

@@ -122,8 +122,8 @@ def read_sweep(path, traces=False, kind=None):
         raise ValueError(f"{path}: SQLite cannot use this database: {_sqlite_reason(e)}") from None
     # A metric that is NULL in every row (a lander column of a rig sweep) comes back from SQLite
     # as None in an object column; the table declares it REAL, so it is a float column of NaN.
-    for column, kind in declared.items():
-        if kind == "REAL" and drops[column].dtype == object:
+    for column, declared_type in declared.items():
+        if declared_type == "REAL" and drops[column].dtype == object:
             drops[column] = pd.to_numeric(drops[column], errors="coerce").astype("float64")
     drops = _of_kind(drops, kind)
     drops.attrs["meta"] = {key: _typed_meta(key, value) for key, value in meta}
