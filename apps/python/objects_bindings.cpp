@@ -22,7 +22,7 @@ namespace touchdown::python {
 namespace {
 
 namespace fs = std::filesystem;
-using nlohmann::json;
+using json = nlohmann::ordered_json;  // the fields in the order the writers write them
 
 // A plain YAML scalar as the number, flag or null it reads as; a quoted one stays text.
 json ScalarJson(const YAML::Node& node) {

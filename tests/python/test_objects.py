@@ -106,6 +106,9 @@ def test_a_lander_resolves_its_masses_and_pad():
     # A lander dict whose pad is given as an object.
     built = touchdown.Lander.from_dict({**given, "pad": pad})
     assert built.fields == {**lander.fields, "file": built.fields["file"]}
+    # A bad field fails when made, named in the dict (not in the scenario it is resolved in).
+    with pytest.raises(ValueError, match=r"^lander dict: total_mass_kg: must be positive"):
+        touchdown.Lander.from_dict({**given, "total_mass_kg": -1.0, "pad": pad})
 
 
 def test_a_scenario_resolves_as_touchdown_lander_writes_it(tmp_path):

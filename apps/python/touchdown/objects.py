@@ -115,7 +115,7 @@ class InputObject:
 
     def __repr__(self):
         shown = [f"{key}={value!r}" for key, value in self._fields.items()
-                 if key not in ("schema_version", "name") and not isinstance(value, (dict, list))]
+                 if key not in ("schema_version", "name", "source") and not isinstance(value, (dict, list))]
         nested = [key for key, value in self._fields.items() if isinstance(value, (dict, list))]
         origin = "dict" if self._document is not None else self._source
         parts = [repr(self.name)] + shown + [f"{key}=..." for key in nested] + [f"source={origin!r}"]
@@ -233,7 +233,7 @@ class Lander(InputObject):
             try:
                 return _resolved_scenario(probe)["lander"]
             except (ValueError, OSError) as e:
-                raise _renamed(e, probe, path) from None
+                raise _unwrapped(e, probe + ": lander: ") from None
 
 
 def _resolved_scenario(path):
@@ -256,6 +256,17 @@ def _with_object_paths(value):
     if isinstance(value, (list, tuple)):
         return [_with_object_paths(v) for v in value]
     return value
+
+
+def _unwrapped(error, prefix):
+    """The same exception without `prefix` before its message (the message of the file it names)."""
+    message = str(error)
+    if not message.startswith(prefix):
+        return error
+    unwrapped = type(error)(message[len(prefix):])
+    if isinstance(error, OSError):
+        unwrapped.errno = error.errno
+    return unwrapped
 
 
 def _renamed(error, path, name):
