@@ -55,9 +55,15 @@ def test_a_pad_reads_its_file_and_its_rigid_body():
     assert body["mass_kg"] == pad.mass_kg
     assert touchdown.drop(pad="flat", soil="fjs1_lp", speed=1.0)["pad_mass_kg"] == body["mass_kg"]
     assert body["triangles"] > 0 and body["lowest_point_mm"] < 0.0
-    # A mesh pad names its mesh by its resolved path.
-    mesh = touchdown.Pad.load("hex").fields["mesh"]["file"]
+    # A mesh pad names its mesh by its resolved path; as a dict, relative to where it is said to be.
+    hex_pad = touchdown.Pad.load("hex")
+    mesh = hex_pad.fields["mesh"]["file"]
     assert os.path.isabs(mesh) and os.path.isfile(mesh)
+    assert touchdown.Pad.from_dict(_yaml("pads", "hex.yaml"), relative_to=data_file("pads")) == hex_pad
+    with pytest.raises(ValueError, match="^pad dict: mesh.file: .*meshes/hex_pad.stl: mesh file not found"):
+        touchdown.Pad.from_dict(_yaml("pads", "hex.yaml"), relative_to=data_file("soils"))
+    with pytest.raises(TypeError):
+        touchdown.Pad.load(touchdown.Soil.load("fjs1_lp"))
 
 
 def test_a_dict_built_pad_and_soil_give_the_named_ones_results():
@@ -106,6 +112,9 @@ def test_a_lander_resolves_its_masses_and_pad():
     # A lander dict whose pad is given as an object.
     built = touchdown.Lander.from_dict({**given, "pad": pad})
     assert built.fields == {**lander.fields, "file": built.fields["file"]}
+    # Its own file as a dict: the pad beside it, as the file reads it, once told where it was.
+    beside = touchdown.Lander.from_dict(given, relative_to=data_file("landers"))
+    assert beside.fields == built.fields | {"file": beside.fields["file"]}
     # A bad field fails when made, named in the dict (not in the scenario it is resolved in).
     with pytest.raises(ValueError, match=r"^lander dict: total_mass_kg: must be positive"):
         touchdown.Lander.from_dict({**given, "total_mass_kg": -1.0, "pad": pad})

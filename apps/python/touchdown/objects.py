@@ -39,8 +39,10 @@ class InputObject:
     def load(cls, name_or_path):
         """The bundled input of that name, or the YAML file at that path (as the command line
         finds it)."""
-        if isinstance(name_or_path, InputObject):
+        if isinstance(name_or_path, cls):
             return name_or_path
+        if isinstance(name_or_path, InputObject):
+            raise TypeError(f"{cls.__name__}.load: a name or a path, got a {type(name_or_path).__name__}")
         source = os.path.abspath(cls._resolve(os.fspath(name_or_path)))
         return cls(source, cls._read_fields(source))
 
