@@ -119,6 +119,12 @@ def test_read_sweep_separates_rig_and_lander_columns(tiny_sweep, tmp_path):
     assert rig == [c for c in drops.columns if c in rig]  # in table order
     assert {"drop_index", "status", "impact_speed_m_s", "final_penetration_m", "peak_force_N"} <= set(rig)
     assert {"tipped_over", "max_tilt_deg", "pad1_final_penetration_m", "pad4_soil", "ground_case"} <= set(lander)
+    assert set(touchdown.readers.LANDER_COLUMNS) == set(lander)  # the list names the table's columns
+    # The split follows the data: a rig drop leaves every lander column empty and fills every rig
+    # column but the failure's.
+    empty = drops.isna() | (drops == "")
+    assert empty[lander].all(axis=None)
+    assert list(empty[rig].all()[lambda filled: filled].index) == ["failure", "failure_limit", "failure_limit_value"]
     # kind="rig": the rig drops without the lander columns (all NaN or "" in a rig drop's row).
     only_rig = touchdown.read_sweep(out, kind="rig")
     assert list(only_rig.columns) == rig and only_rig.attrs["lander_columns"] == []
