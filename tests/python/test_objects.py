@@ -175,3 +175,19 @@ def test_a_sweep_in_memory_equals_the_one_on_disk(tiny_sweep, private_tmp):
     assert sorted(result.traces) == sorted(traces)
     for index, trace in traces.items():
         pd.testing.assert_frame_equal(result.traces[index], trace, check_exact=True)
+
+
+def test_a_campaign_in_memory_equals_the_one_on_disk(tmp_path, private_tmp):
+    in_memory = touchdown.simulate_campaign("sutoh2017_single_footpad")
+    assert in_memory.out is None and os.listdir(private_tmp) == []
+    on_disk = touchdown.simulate_campaign("sutoh2017_single_footpad", out=tmp_path / "c")
+    assert on_disk.out == str(tmp_path / "c") and os.path.isfile(tmp_path / "c" / "summary.csv")
+    assert in_memory.summary == on_disk.summary
+    pd.testing.assert_frame_equal(in_memory.drops, on_disk.drops, check_exact=True)
+    assert list(in_memory.traces) == list(in_memory.drops["drop_id"]) and len(in_memory.traces) > 0
+    for drop_id, trace in on_disk.traces.items():
+        pd.testing.assert_frame_equal(in_memory.traces[drop_id], trace, check_exact=True)
+    # The table's drops are the drops touchdown.drop gives (its numbers printed to 10 digits).
+    row = in_memory.drops.iloc[0]
+    drop = touchdown.drop(pad=row["pad"], soil=row["soil"], speed=row["impact_speed_m_s"])
+    assert row["final_penetration_m"] == pytest.approx(drop["final_penetration_m"], rel=1e-9)

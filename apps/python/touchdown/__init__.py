@@ -43,13 +43,13 @@ from . import _touchdown  # noqa: E402
 __version__ = _touchdown.__version__  # the CMake project's version, as `touchdown --version` prints
 from .readers import StabilityStudy, read_dataset, read_stability, read_sweep
 from .objects import Lander, Pad, Scenario, Soil  # noqa: E402
-from .results import (DropResult, LanderResult, SweepResult, simulate_drop, simulate_lander,  # noqa: E402
-                      simulate_stability, simulate_sweep)
+from .results import (CampaignResult, DropResult, LanderResult, SweepResult, simulate_campaign,  # noqa: E402
+                      simulate_drop, simulate_lander, simulate_stability, simulate_sweep)
 
 __all__ = ["__version__", "drop", "force", "lander", "sweep", "stability", "campaign", "compare", "calibrate", "calibrate_targets", "validate", "diagnose", "trade",
            "synth", "export", "data_dir", "read_sweep", "read_dataset", "read_stability", "StabilityStudy"]
-__all__ += ["Pad", "Soil", "Lander", "Scenario", "simulate_drop", "simulate_lander", "simulate_sweep",
-            "simulate_stability", "DropResult", "LanderResult", "SweepResult"]
+__all__ += ["Pad", "Soil", "Lander", "Scenario", "simulate_drop", "simulate_lander", "simulate_campaign",
+            "simulate_sweep", "simulate_stability", "DropResult", "LanderResult", "CampaignResult", "SweepResult"]
 
 
 def data_dir():

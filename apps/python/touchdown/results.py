@@ -5,7 +5,7 @@
     r = touchdown.simulate_lander("lander_case_A")                 # no out: nothing kept on disk
     r.trace[["t_s", "z_m", "tilt_deg"]], r.events
 
-The functions run the same calls as touchdown.drop, lander, sweep and stability (the same
+The functions run the same calls as touchdown.drop, lander, campaign, sweep and stability (the same
 library code, the same numbers). Given `out`, the outputs are written there as by those calls and
 the result is read from the run; without it, a call that writes files runs in a private
 temporary directory (tempfile, prefix "touchdown_") and reads everything back into memory, and
@@ -65,6 +65,18 @@ class SweepResult:
     out: Optional[str] = None
 
 
+@dataclass
+class CampaignResult:
+    """A campaign: `summary` (summary.json's dict, as touchdown.campaign returns it), `drops`
+    (summary.csv: one row per drop, its conditions, metrics and trace file), `traces` (drop_id to
+    its trace CSV's DataFrame) and `out` (None: not kept)."""
+
+    summary: dict
+    drops: object
+    traces: dict = field(default_factory=dict)
+    out: Optional[str] = None
+
+
 @contextlib.contextmanager
 def _output_directory(out):
     """`out` itself; for None, a new directory inside a private temporary one that is removed,
@@ -110,6 +122,20 @@ def simulate_sweep(plan, *, out=None, model=None, threads=0):
         drops = sweep(plan, directory, model=model, threads=threads)
         _, traces = read_sweep(directory, traces=True)
     return SweepResult(drops=drops, traces=traces, out=directory if kept else None)
+
+
+def simulate_campaign(scenario, *, out=None):
+    """touchdown.campaign's drops as a CampaignResult; without `out`, run in a private temporary
+    directory, read into memory and removed."""
+    from . import campaign
+    from .readers import _read_csv
+
+    kept = out is not None
+    with _output_directory(out) as directory:
+        summary = campaign(scenario, directory)
+        drops = _read_csv(os.path.join(directory, "summary.csv"), dtype={"drop_id": str, "trace": str})
+        traces = {row.drop_id: _read_csv(os.path.join(directory, row.trace)) for row in drops.itertuples()}
+    return CampaignResult(summary=summary, drops=drops, traces=traces, out=directory if kept else None)
 
 
 def simulate_stability(study, *, out=None, model=None, samples=None, threads=0):
