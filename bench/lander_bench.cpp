@@ -10,7 +10,8 @@
 // Counters: the solver's (steps, right-hand sides, Jacobians, failures), the outcome (pad 1's
 // final depths, final roll and pitch), and `realtime_factor` (simulated seconds per wall second).
 // TD_RTOL / TD_ATOL / TD_ADAMS (Adams instead of BDF) / TD_MSBJ (most steps between Jacobians) /
-// TD_ATTJAC (the Jacobian's contact derivatives with respect to the pads' attitude too)
+// TD_ATTJAC (the Jacobian's contact derivatives with respect to the pads' attitude too) /
+// TD_SOIL_RAMP (pad or element: where the soil's low-speed ramp acts, lander::SoilRamp)
 // override the integrator for convergence studies, and TD_PRINT prints each landing's final depths,
 // roll and pitch to stderr at full precision; TD_PADI scales the pads' rotational inertia (an
 // experiment: how much of the step count the pads' fast rotation in the soil causes).
@@ -51,6 +52,8 @@ void RunLanding(benchmark::State& state, const test::PaperLander& setup_in, cons
     body->inertia_com_B *= atof(getenv("TD_PADI"));
     for (auto& leg : setup.model.legs) leg.pad = body;
   }
+  if (getenv("TD_SOIL_RAMP"))  // pad or element (lander::SoilRamp)
+    setup.model.soil_ramp = std::string(getenv("TD_SOIL_RAMP")) == "pad" ? lander::SoilRamp::kPad : lander::SoilRamp::kElement;
   lander::LanderRunResult last;
   for (auto _ : state) {
     lander::LanderRunResult r = lander::SimulateLander(setup.model, setup.terrain, setup.initial, options);

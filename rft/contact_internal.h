@@ -248,6 +248,12 @@ inline Submerged ClipTwiceAndIntegrate(double area, const double d[3], const Vec
   return t * t * (3.0 - 2.0 * t);
 }
 
+// The element ramp's factor (PadKinematics::element_ramp_speed_m_s): speed / ramp below the ramp,
+// else 1; 1 when there is no ramp (ramp 0), so the stress is then RFT's to the bit.
+[[gnu::always_inline]] inline double RampFactor(double speed, double ramp) {
+  return speed < ramp ? speed / ramp : 1.0;
+}
+
 // Velocity u + w x c at the centroid c = m / integral of a part whose depth integral and first
 // moment are given (all in B).
 [[gnu::always_inline]] inline Vec CentroidVelocity(double integral, const Vec& m, const Vec& u, const Vec& w) {
@@ -273,7 +279,8 @@ struct LeadingPart {
 };
 template <class AddSub = AddLinearSubTriangle>
 inline LeadingPart LeadingPartOf(const Submerged& s, double area, const double d[3], const Vec p[3], const Vec& n,
-                                 const Vec& u, const Vec& w, bool clip_leading, const AddSub& add = {}) {
+                                 const Vec& u, const Vec& w, bool clip_leading, const AddSub& add = {},
+                                 double ramp = 0.0) {
   LeadingPart out;
   out.part = s;
   out.v = CentroidVelocity(s.depth_integral, s.depth_moment, u, w);
@@ -292,7 +299,8 @@ inline LeadingPart LeadingPartOf(const Submerged& s, double area, const double d
       speed = std::sqrt(out.v.x * out.v.x + out.v.y * out.v.y + out.v.z * out.v.z);
     }
   }
-  if (speed > 0.0) out.weight = LeadWeight((n.x * out.v.x + n.y * out.v.y + n.z * out.v.z) / speed);
+  if (speed > 0.0)
+    out.weight = LeadWeight((n.x * out.v.x + n.y * out.v.y + n.z * out.v.z) / speed) * RampFactor(speed, ramp);
   return out;
 }
 

@@ -224,11 +224,13 @@ struct ClassStress {
 // the stresses as they were (the caller skips them).
 template <bool kPadTerms>
 [[gnu::always_inline]] inline void StressOfNormal(const StressLaw3D& law, const PadLevelTerms& pad_terms,
-                                                  bool compaction, double unmobilised, const Eigen::Vector3d& n_W,
-                                                  const Eigen::Vector3d& v_W, ClassStress& s) {
+                                                  bool compaction, double unmobilised, double ramp,
+                                                  const Eigen::Vector3d& n_W, const Eigen::Vector3d& v_W,
+                                                  ClassStress& s) {
   s.nz = n_W.z();
   const double speed2 = v_W.squaredNorm();
-  const double weight = speed2 > 0.0 ? LeadWeight(n_W.dot(v_W) / std::sqrt(speed2)) : 0.0;
+  const double speed = std::sqrt(speed2);
+  const double weight = speed2 > 0.0 ? LeadWeight(n_W.dot(v_W) / speed) * RampFactor(speed, ramp) : 0.0;
   s.leads = weight > 0.0;
   if (!s.leads) return;
   s.sigma = weight * law.StressPerDepth(n_W, v_W);
@@ -305,7 +307,8 @@ class WrenchSum {
         classes_(elements.HasBounds() && !spinning_ && elements.class_normal_B.cols() > 0),
         dynamic_terms_(law.has_dynamic_stress()),
         area_terms_(dynamic_terms_ || (kPadTerms && compaction)),
-        unmobilised_(law.has_mobilised_shear() ? 1.0 - kinematics.shear_mobilisation : 0.0) {
+        unmobilised_(law.has_mobilised_shear() ? 1.0 - kinematics.shear_mobilisation : 0.0),
+        ramp_(kinematics.element_ramp_speed_m_s) {
     if (plane_ != nullptr) depth_ = PlaneDepthInB::Of(*plane_, kinematics);
     const Eigen::Matrix3d& R = kinematics.R_WB;
     const Eigen::Vector3d u0_B = R.transpose() * kinematics.v_WB_W, w0_B = R.transpose() * kinematics.w_WB_W;
@@ -421,7 +424,7 @@ class WrenchSum {
       return;
     }
     const Eigen::Vector3d n_W = cls >= 0 ? rotate_(Load(elements_.class_normal_B.data() + 3 * cls)) : rotate_(n_B);
-    StressOfNormal<kPadTerms>(law_, pad_terms_, compaction_, unmobilised_, n_W, kinematics_.v_WB_W, run_);
+    StressOfNormal<kPadTerms>(law_, pad_terms_, compaction_, unmobilised_, ramp_, n_W, kinematics_.v_WB_W, run_);
     if (cls >= 0) {
       class_done_[cls] = true;
       class_stress_[cls] = run_;
@@ -455,9 +458,9 @@ class WrenchSum {
     // The leading part, clipped at the leading boundary (exactly, under either depth law).
     LeadingPart lead;
     if constexpr (kPower)
-      lead = LeadingPartOf(s, area, d, p, n_B, u0b_, w0b_, true, AddPowerSubTriangle{exponent_, depth_scale_});
+      lead = LeadingPartOf(s, area, d, p, n_B, u0b_, w0b_, true, AddPowerSubTriangle{exponent_, depth_scale_}, ramp_);
     else
-      lead = LeadingPartOf(s, area, d, p, n_B, u0b_, w0b_, true);
+      lead = LeadingPartOf(s, area, d, p, n_B, u0b_, w0b_, true, AddLinearSubTriangle{}, ramp_);
     if (!(lead.weight > 0.0)) return;
     ++leading_;
     int& pending = batch_.count;
@@ -548,6 +551,7 @@ class WrenchSum {
   // 1 - m for a law with Janosi's shear at mobilisation m (PadKinematics::shear_mobilisation): the
   // part of its shear to take off again; exactly 0 for every other law (nothing changes for them).
   const double unmobilised_;
+  const double ramp_;  // PadKinematics::element_ramp_speed_m_s
   PlaneDepthInB depth_;
   Vec u0b_, w0b_;  // v and w in B (the leading boundary)
   Eigen::Vector3d g_W_;

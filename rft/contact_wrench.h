@@ -26,6 +26,8 @@
 //    and its force and moment are scaled by exp(-z_pad / d_c), z_pad the pad's penetration (the
 //    deepest submerged vertex depth, = rft/deepest_point.h when in contact).
 //  - A pad at rest (v = 0 at an element) gets no RFT stress there: the law needs a direction.
+//    With PadKinematics::element_ramp_speed_m_s > 0, an element slower than it gets its stress
+//    scaled by its speed over the ramp's (the lead weight times the ramp factor).
 //  - Moments are about the reference point (the origin of B), expressed in W.
 //  - No allocation inside the element loop.
 #include <Eigen/Core>
@@ -52,6 +54,11 @@ struct PadKinematics {
   // displacement j (StressLaw3D::has_mobilised_shear; ignored by every other law): 1 takes the
   // shear fully mobilised.
   double shear_mobilisation = 1.0;
+  // The element ramp: an element whose own velocity (at its depth-weighted centroid) is slower than
+  // this has its stress scaled by speed / element_ramp_speed_m_s, so the stress is continuous, and
+  // Lipschitz, through v = 0 at every element, whatever the pad's spin (the lander's soil ramp,
+  // lander/multibody/lander_model.h). 0 (the default): no ramp, RFT's direction-only stress.
+  double element_ramp_speed_m_s = 0.0;
 };
 
 struct ContactWrench {

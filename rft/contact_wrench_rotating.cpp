@@ -43,7 +43,7 @@ struct BlockPass {
 // test and the lead weight.
 [[gnu::always_inline]] inline void PassBlock(const SurfaceElements& elements, int first, int n,
                                              const PlaneDepthInB& plane, const Vec& u, const Vec& w,
-                                             BlockPass& out) {
+                                             double ramp, BlockPass& out) {
   constexpr double kThird = 1.0 / 3.0, kTwelfth = 1.0 / 12.0;
   constexpr double kTiny = std::numeric_limits<double>::min();
   const double depth0 = plane.depth0, gx = plane.gx, gy = plane.gy, gz = plane.gz;
@@ -82,9 +82,9 @@ struct BlockPass {
     const double nV = nx * Vx + ny * Vy + nz * Vz;
     const double x = std::min(
         std::max((nV + kTrailingBand * V) / std::max((kTrailingBand - kParallelTolerance) * V, kTiny), 0.0), 1.0);
-    const double lead_weight = x * x * (3.0 - 2.0 * x);
     const double inv = 1.0 / std::max(D, kTiny);
     const double speed = V * inv, v_x = Vx * inv, v_y = Vy * inv, v_z = Vz * inv;
+    const double lead_weight = x * x * (3.0 - 2.0 * x) * RampFactor(speed, ramp);
     out.whole[i] = static_cast<double>(std::min(std::min(d0, d1), d2) > 0.0) *
                    static_cast<double>(std::min(std::min(t0, t1), t2) >= 0.0) * static_cast<double>(speed > 0.0);
     out.touches[i] = static_cast<double>(std::max(std::max(d0, d1), d2) > 0.0);
@@ -196,6 +196,7 @@ ContactWrench RotatingWrench(const SurfaceElements& elements, const PadKinematic
   const Vec u{u_B.x(), u_B.y(), u_B.z()}, w{w_B.x(), w_B.y(), w_B.z()};
   const TwistInB twist(u_B, w_B);
   const RotationToW rotate(R);
+  const double ramp = kinematics.element_ramp_speed_m_s;
   const double* p0 = elements.p0_B.data();
   const double* p1 = elements.p1_B.data();
   const double* p2 = elements.p2_B.data();
@@ -216,7 +217,7 @@ ContactWrench RotatingWrench(const SurfaceElements& elements, const PadKinematic
       for (int e = first; e < first + n; ++e) submerged_area += areas[e];
       continue;
     }
-    PassBlock(elements, first, n, depth, u, w, pass);
+    PassBlock(elements, first, n, depth, u, w, ramp, pass);
     for (int i = 0; i < n; ++i) {
       if (pass.touches[i] == 0.0) continue;
       const int e = first + i;
@@ -240,7 +241,7 @@ ContactWrench RotatingWrench(const SurfaceElements& elements, const PadKinematic
       const Submerged s = ClipAndIntegrate<kDynamic>(areas[e], d, p);
       submerged_area += s.area;
       if (!(s.depth_integral > 0.0)) continue;
-      const LeadingPart lead = LeadingPartOf(s, areas[e], d, p, nrm, u, w, /*clip_leading=*/true);
+      const LeadingPart lead = LeadingPartOf(s, areas[e], d, p, nrm, u, w, /*clip_leading=*/true, AddLinearSubTriangle{}, ramp);
       if (lead.weight > 0.0)
         Append<kDynamic>(law, rotate, nrm, lead.v, lead.weight, lead.part.depth_integral, lead.part.depth_moment,
                lead.part.area, lead.part.area_moment, batch, pending, sums);

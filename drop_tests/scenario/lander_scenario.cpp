@@ -410,9 +410,14 @@ LanderInitialSpec ReadInitial(const io::YamlFields& in, bool resolved) {
 
 // The run options: duration, sampling, capture speed and the integrator's tolerances.
 void ReadSimulation(const io::YamlFields& sim, lander::LanderRunOptions& options) {
-  sim.RequireOnly({"duration_s", "sample_rate_hz", "capture_speed_m_s", "soil_ramp_speed_m_s", "rtol", "atol",
-                   "max_step_s", "stiff", "pad_angular_segments"});
+  sim.RequireOnly({"duration_s", "sample_rate_hz", "capture_speed_m_s", "soil_ramp_speed_m_s", "soil_ramp", "rtol",
+                   "atol", "max_step_s", "stiff", "pad_angular_segments"});
   io::ReadFields(sim, RunNumberFields(), options);
+  if (sim.Has("soil_ramp")) {
+    const std::string v = sim.String("soil_ramp");
+    if (v != "pad" && v != "element") sim.Fail("soil_ramp", "must be 'pad' or 'element', got '" + v + "'");
+    options.soil_ramp = v == "element" ? lander::SoilRamp::kElement : lander::SoilRamp::kPad;
+  }
   // A pad is offered a capture when it slows below either speed; a ramp above the capture speed
   // would scale the soil's force down on pads the soil is still stopping.
   if (options.soil_ramp_speed_m_s >= options.capture_speed_m_s && options.capture_speed_m_s > 0.0)
@@ -581,6 +586,7 @@ LanderSetup BuildLanderSetup(const LanderScenario& sc) {
   m.body_inertia_B = sc.lander.body_inertia_B;
   m.gravity_m_s2 = sc.gravity_m_s2;
   m.soil_ramp_speed_m_s = sc.options.soil_ramp_speed_m_s;
+  m.soil_ramp = sc.options.soil_ramp;
   auto pad = std::make_shared<const geom::PadBody>(sc.lander.pad.body);
   for (int i = 0; i < lander::kNumLegs; ++i) {
     m.legs[i].hip_B = sc.lander.legs[i].hip_B;
@@ -891,6 +897,8 @@ void WriteResolvedLanderScenario(const LanderScenario& s, const std::string& pat
   if (!s.options.scale_tolerances) y << YAML::Key << "atol" << YAML::Value << s.options.integrator.atol;
   if (s.options.integrator.max_step != lander::LanderRunOptions{}.integrator.max_step) y << YAML::Key << "max_step_s" << YAML::Value << s.options.integrator.max_step;
   y << YAML::Key << "stiff" << YAML::Value << s.options.integrator.stiff;
+  if (s.options.soil_ramp != lander::LanderRunOptions{}.soil_ramp)
+    y << YAML::Key << "soil_ramp" << YAML::Value << (s.options.soil_ramp == lander::SoilRamp::kElement ? "element" : "pad");
   if (s.pad_angular_segments > 0) y << YAML::Key << "pad_angular_segments" << YAML::Value << s.pad_angular_segments;
   y << YAML::EndMap;
   if (!s.paper_ground_case.empty() || s.paper) {

@@ -105,6 +105,10 @@ rft::ContactWrench FreePadSoilWrench(const LanderModel& model, const rft::SoilCo
   const Leg& l = model.legs[leg];
   rft::PadKinematics k{f.R_WP, f.p_WJ, f.v_WJ_W, f.w_WP_W};
   if (contact.has_janosi_shear()) k.shear_mobilisation = contact.ShearMobilisation(f.shear_displacement_m);
+  if (model.soil_ramp == SoilRamp::kElement) {
+    k.element_ramp_speed_m_s = model.soil_ramp_speed_m_s;
+    return rft::ComputeContactWrench(l.pad->surface, k, surface, *contact.law, contact.pad_terms);
+  }
   const double speed = f.v_WJ_W.norm() + f.w_WP_W.norm() * PadRadius(l);
   rft::ContactWrench w = rft::ComputeContactWrench(l.pad->surface, k, surface, *contact.law, contact.pad_terms);
   if (speed < model.soil_ramp_speed_m_s) {

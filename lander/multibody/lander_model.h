@@ -56,17 +56,22 @@ struct Leg {
   Eigen::Vector3d axis_B() const { return (joint_B - hip_B).normalized(); }
 };
 
-// Below this speed (joint centre plus spin times pad radius) a free pad's soil wrench is scaled
-// by speed / soil_ramp_speed_m_s. Why: quasi-static RFT depends on the direction of motion only,
-// so at v -> 0 the force keeps its full size while its direction follows rounding noise (a pad
-// whose capture was undone sits at |v| ~ 1e-11 with a horizontal part that turns its support into
-// sideways drag and back: a discontinuity no integrator steps through). The ramp makes the force
-// continuous through v = 0; a pad that slows below it is offered a capture
-// (lander_simulation.h), so no creep results. A pad that creeps just above the ramp turns with the
-// RFT torque's direction following its spin, which the integrator resolves at microsecond steps;
-// a faster ramp cures one such landing and stalls another (docs/lander_dynamics.md, "The soil's
-// low-speed ramp"), so the default stays where the model was validated.
+// Below this speed a free pad's soil stress is scaled by speed / soil_ramp_speed_m_s. Why:
+// quasi-static RFT depends on the direction of motion only, so at v -> 0 the force keeps its full
+// size while its direction follows rounding noise (a pad whose capture was undone sits at
+// |v| ~ 1e-11 with a horizontal part that turns its support into sideways drag and back: a
+// discontinuity no integrator steps through). The ramp makes the force continuous through v = 0;
+// a pad that slows below it is offered a capture (lander_simulation.h), so no creep results.
 inline constexpr double kDefaultSoilRampSpeed_m_s = 1e-4;
+
+// Where the ramp acts. kElement (the default): on each element's stress, by that element's own
+// speed (rft::PadKinematics::element_ramp_speed_m_s), so the wrench is continuous in the pad's
+// spin as well as in its translation. kPad: on the pad's whole wrench, by the pad's speed (joint
+// centre plus spin times radius): a pad creeping just above that ramp while it turns slowly feels
+// a torque whose direction follows its spin, a Coulomb torque the integrator resolved at
+// microsecond steps (1.1 million steps on one landing; docs/lander_dynamics.md, "The soil's
+// low-speed ramp").
+enum class SoilRamp { kPad, kElement };
 
 struct LanderModel {
   double body_mass_kg = 0.0;
@@ -74,6 +79,7 @@ struct LanderModel {
   std::array<Leg, kNumLegs> legs;
   double gravity_m_s2 = rft::kEarthGravity_m_s2;
   double soil_ramp_speed_m_s = kDefaultSoilRampSpeed_m_s;  // see kDefaultSoilRampSpeed_m_s
+  SoilRamp soil_ramp = SoilRamp::kElement;                  // see SoilRamp
 
   double TotalMass() const {
     double m = body_mass_kg;

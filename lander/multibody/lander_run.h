@@ -32,6 +32,7 @@ struct LanderRunOptions {
   // The soil's low-speed ramp (LanderModel::soil_ramp_speed_m_s); a scenario's setup copies it
   // into the model. Below capture_speed_m_s.
   double soil_ramp_speed_m_s = kDefaultSoilRampSpeed_m_s;
+  SoilRamp soil_ramp = SoilRamp::kElement;
   bool stop_at_rest = true;             // rest is static: the remaining time is not integrated
   int max_events = 20000;               // guard against Zeno behaviour
   // BDF with the lander's structured Jacobian (lander_jacobian.h), rtol 1e-7: a pad rocking on its

@@ -1,7 +1,8 @@
-// The soil's low-speed ramp (LanderModel::soil_ramp_speed_m_s, docs/lander_dynamics.md "The soil's
-// low-speed ramp"): a scenario setting that reaches the model, refused above the capture speed; at 1
-// mm/s a pad released from its hold that creeps in the soil at the default's 0.1 mm/s no longer costs
-// the integrator microsecond steps, and a landing that does not creep barely moves.
+// The soil's low-speed ramp (LanderModel::soil_ramp_speed_m_s and soil_ramp, docs/lander_dynamics.md
+// "The soil's low-speed ramp"): scenario settings that reach the model, the speed refused above the
+// capture speed; with the ramp on each element (the default) a pad released from its hold that
+// creeps in the soil at about the ramp's speed no longer costs the integrator microsecond steps, and
+// a landing that does not creep moves by less than its integration tolerance.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -56,6 +57,22 @@ TEST_F(LanderSoilRamp, IsASimulationSettingThatReachesTheModel) {
   EXPECT_EQ(LoadLanderScenario(Path("resolved.yaml")).options.soil_ramp_speed_m_s, 1e-3);
 }
 
+TEST_F(LanderSoilRamp, WhereItActsIsASimulationSettingThatReachesTheModel) {
+  const LanderScenario by_default = LoadLanderScenario(Write("default.yaml", CreepingLanding("")));
+  EXPECT_EQ(BuildLanderSetup(by_default).model.soil_ramp, lander::SoilRamp::kElement);
+  const LanderScenario pad = LoadLanderScenario(Write("pad.yaml", CreepingLanding(", soil_ramp: pad")));
+  EXPECT_EQ(BuildLanderSetup(pad).model.soil_ramp, lander::SoilRamp::kPad);
+  WriteResolvedLanderScenario(pad, Path("resolved.yaml"), dir_.string());
+  EXPECT_EQ(LoadLanderScenario(Path("resolved.yaml")).options.soil_ramp, lander::SoilRamp::kPad);
+  try {
+    LoadLanderScenario(Write("bad.yaml", CreepingLanding(", soil_ramp: joint")));
+    FAIL() << "an unknown ramp was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("simulation.soil_ramp"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("'joint'"), std::string::npos) << e.what();
+  }
+}
+
 TEST_F(LanderSoilRamp, AtOrAboveTheCaptureSpeedIsRefusedAtLoad) {
   try {
     LoadLanderScenario(Write("fast_ramp.yaml", CreepingLanding(", soil_ramp_speed_m_s: 0.05")));
@@ -72,23 +89,29 @@ TEST_F(LanderSoilRamp, ABenchmarkLandingMovesByLessThanItsTolerance) {
   const LanderScenario at_default = LoadLanderScenario(io::DataDirectory() + "/scenarios/lander_case_B.yaml");
   LanderScenario faster_ramp = at_default;
   faster_ramp.options.soil_ramp_speed_m_s = 1e-3;
-  const LanderRun a = RunLanderScenario(faster_ramp), b = RunLanderScenario(at_default);
-  for (int i = 0; i < lander::kNumLegs; ++i)
-    EXPECT_NEAR(a.result.final_penetration_m[i], b.result.final_penetration_m[i], 1e-4 * b.result.final_penetration_m[i])
-        << "pad " << i + 1;
-  EXPECT_NEAR(a.result.final_attitude.roll_rad, b.result.final_attitude.roll_rad, 1e-5);
-  EXPECT_NEAR(a.result.final_attitude.pitch_rad, b.result.final_attitude.pitch_rad, 1e-5);
+  LanderScenario on_the_pad = at_default;
+  on_the_pad.options.soil_ramp = lander::SoilRamp::kPad;
+  const LanderRun b = RunLanderScenario(at_default);
+  for (const LanderScenario& other : {faster_ramp, on_the_pad}) {
+    const LanderRun a = RunLanderScenario(other);
+    for (int i = 0; i < lander::kNumLegs; ++i)
+      EXPECT_NEAR(a.result.final_penetration_m[i], b.result.final_penetration_m[i],
+                  1e-4 * b.result.final_penetration_m[i])
+          << "pad " << i + 1;
+    EXPECT_NEAR(a.result.final_attitude.roll_rad, b.result.final_attitude.roll_rad, 1e-5);
+    EXPECT_NEAR(a.result.final_attitude.pitch_rad, b.result.final_attitude.pitch_rad, 1e-5);
+  }
 }
 
 TEST_F(LanderSoilRamp, APadCreepingAfterItsReleaseDoesNotStallTheIntegrator) {
-  const LanderRun run =
-      RunLanderScenario(LoadLanderScenario(Write("d4556.yaml", CreepingLanding(", soil_ramp_speed_m_s: 1.0e-3"))));
+  // The default: the 0.1 mm/s ramp on each element.
+  const LanderRun run = RunLanderScenario(LoadLanderScenario(Write("d4556.yaml", CreepingLanding(""))));
   const lander::LanderRunResult& r = run.result;
   EXPECT_FALSE(r.tipped_over);
-  // Regression pins (this landing on the fast model at a 1 mm/s ramp, 2026-11-28): 1,700 steps,
-  // at rest 3.157 s after release with pitch -19.098 deg; at a 0.1 mm/s ramp 1,119,539 steps, at rest
-  // at 3.157 s with pitch -19.121 deg. Its rest is marginal: the slope at 1e-14 deg less leaves it
-  // creeping to the end at 7.5 s (1,649 steps, pitch -19.081 deg), so the rest time is not pinned.
+  // Regression pins (this landing on the fast model, 2026-11-28): 1,743 steps, final pitch -19.080
+  // deg; with the ramp on the whole pad (soil_ramp: pad) 1,119,539 steps and -19.121 deg, at a 1
+  // mm/s pad ramp 1,700 steps and -19.098 deg. Its rest is marginal (the slope at 1e-14 deg less
+  // leaves it creeping to the end at 7.5 s), so the rest time is not pinned.
   EXPECT_LT(r.solver.steps, 5000);
   EXPECT_NEAR(r.final_attitude.pitch_rad * 180.0 / M_PI, -19.10, 0.05);
 }
