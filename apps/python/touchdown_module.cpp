@@ -100,7 +100,7 @@ class ProgressReport {
  private:
   py::object callback_;
   io::ProgressCounts counts_;
-  int64_t shown_done_ = -1, shown_total_ = -1;
+  int64_t shown_done_ = 0, shown_total_ = 0;  // nothing to tell before the job has counted
 };
 
 // Runs `work` (C++ only, no Python) on a worker thread, the GIL released, while this thread runs
