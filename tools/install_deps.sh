@@ -5,7 +5,8 @@
 #   main       build and run the main job (tools/run_main.sh): the compiler, CMake, the libraries
 #              the `touchdown` executable and the Python module are built on, gnuplot for its plots
 #   tests      the test suite (tools/run_tests.sh): GoogleTest, Google Benchmark, pytest and what
-#              the Python tests read with (numpy, pandas, yaml, matplotlib, VTK's reader)
+#              the Python tests read with (numpy, pandas, yaml, matplotlib, VTK's reader), tqdm
+#              (the Python module's progress bars) and the notebook runner (nbclient, ipykernel)
 #   mpi        `touchdown sweep` over MPI ranks (mpirun -np N): OpenMPI
 #   hardening  the sanitizer and fuzzer build (tools/run_sanitized_tests.sh, run_fuzzers.sh): clang
 #   package    the Debian package's Depends (`cpack -G DEB`): dpkg-shlibdeps
@@ -24,6 +25,8 @@ tests=(
   libgtest-dev libbenchmark-dev sqlite3
   python3-pytest python3-numpy python3-pandas python3-yaml python3-matplotlib python3-pybind11
   python3-vtk9  # tests/python/test_vtk.py reads the ParaView output with VTK's own reader (18 s, 223 MB)
+  python3-tqdm  # the Python module's progress bars (tests/python/test_progress.py)
+  python3-nbclient python3-nbformat python3-ipykernel  # tests/python/test_notebook.py runs examples/notebooks/
   dpkg-dev      # tests/install/debian_package.cmake packages with dpkg-shlibdeps
 )
 mpi=(libopenmpi-dev openmpi-bin)

@@ -1,7 +1,8 @@
 // The Python module's compiled part, touchdown._touchdown: the commands' library functions with
 // keyword arguments, each returning the JSON text the command prints (the package, __init__.py,
 // parses it, resolves pads and soils given as dicts, and adds the readers). Simulations run with
-// the GIL released, so other Python threads go on meanwhile; a sweep or study stops on Ctrl-C.
+// the GIL released, so other Python threads go on meanwhile; the long calls (sweep, stability,
+// trade, diagnose, calibrate_targets) stop on Ctrl-C and report their progress to a callable.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -32,6 +33,8 @@
 #include "drop_tests/drop/force_request.h"
 #include "drop_tests/io/catalog.h"
 #include "drop_tests/io/output_path.h"
+#include "drop_tests/io/progress.h"
+#include "drop_tests/io/work_pool.h"
 #include "drop_tests/scenario/lander_scenario.h"
 #include "drop_tests/scenario/lander_trace_columns.h"
 #include "drop_tests/stability/study.h"
@@ -72,21 +75,54 @@ int ThreadsArgument(const py::object& value, const std::string& function) {
   return static_cast<int>(n);
 }
 
+// A long call's progress: the counts the library keeps up to date (io::ProgressCounts) from its
+// threads, and the Python callable, or None, that this thread calls with (done, total) when they
+// change; total 0: not known.
+class ProgressReport {
+ public:
+  explicit ProgressReport(py::object callback) : callback_(std::move(callback)) {}
+  io::ProgressCounts* counts() { return &counts_; }
+  // Calls the callable if the counts changed (the GIL held). False when it raised: the Python
+  // error is set.
+  bool Poll() {
+    if (callback_.is_none()) return true;
+    const int64_t done = counts_.done.load(), total = counts_.total.load();
+    if (done == shown_done_ && total == shown_total_) return true;
+    shown_done_ = done, shown_total_ = total;
+    try {
+      callback_(done, total);
+    } catch (py::error_already_set& e) {
+      e.restore();
+      return false;
+    }
+    return true;
+  }
+
+ private:
+  py::object callback_;
+  io::ProgressCounts counts_;
+  int64_t shown_done_ = 0, shown_total_ = 0;  // nothing to tell before the job has counted
+};
+
 // Runs `work` (C++ only, no Python) on a worker thread, the GIL released, while this thread runs
-// Python's signal handlers every 0.1 s. One that raises (Ctrl-C: KeyboardInterrupt) sets `stop`:
-// the sweep lets its running drops finish, commits them and returns, and the exception goes on to
-// the caller. Python runs signal handlers only in its main thread, so a call from another thread
-// runs to the end.
+// Python's signal handlers and reports progress every 0.1 s. One that raises (Ctrl-C:
+// KeyboardInterrupt), or a progress callable that raises, sets `stop`: a sweep lets its running
+// drops finish, commits them and returns; a fit (io::StopScope) abandons its loop at the next
+// simulation; the exception goes on to the caller. Python runs signal handlers only in its main
+// thread, so a call from another thread runs to the end.
 template <typename Work>
-auto RunInterruptible(std::atomic<int>& stop, Work work) {
-  auto done = std::async(std::launch::async, std::move(work));
+auto RunInterruptible(std::atomic<int>& stop, ProgressReport& progress, Work work) {
+  auto done = std::async(std::launch::async, [&stop, work = std::move(work)]() mutable {
+    const io::StopScope scope(&stop);
+    return work();
+  });
   bool interrupted = false;
   for (;;) {
     {
       py::gil_scoped_release unlocked;
       if (done.wait_for(std::chrono::milliseconds(100)) == std::future_status::ready) break;
     }
-    if (!interrupted && PyErr_CheckSignals() != 0) {
+    if (!interrupted && (PyErr_CheckSignals() != 0 || !progress.Poll())) {
       interrupted = true;
       stop.store(SIGINT);
     }
@@ -98,7 +134,9 @@ auto RunInterruptible(std::atomic<int>& stop, Work work) {
     }
     throw py::error_already_set();
   }
-  return done.get();
+  auto result = done.get();
+  if (!progress.Poll()) throw py::error_already_set();  // the final counts
+  return result;
 }
 
 // A drop's trace as columns named as in its trace CSV (drop::WriteTraceCsv), at full precision.
@@ -193,7 +231,7 @@ py::tuple Lander(const std::string& scenario_arg, const std::string& model, cons
   return py::make_tuple(summary, with_trace ? py::object(LanderTraceArrays(run->result.trace)) : py::object(py::none()));
 }
 
-// touchdown sweep (one process, no progress output): runs, or resumes, the plan's drops into
+// touchdown sweep (one process, progress to the callable): runs, or resumes, the plan's drops into
 // out/results.sqlite; the run's counts.
 py::dict RunCounts(const sweep::SweepRunSummary& s) {
   py::dict d;
@@ -203,16 +241,18 @@ py::dict RunCounts(const sweep::SweepRunSummary& s) {
 }
 
 py::dict Sweep(const std::string& plan_arg, const std::string& out, const std::string& model,
-               const py::object& threads_arg) {
+               const py::object& threads_arg, py::object progress_arg) {
   const int threads = ThreadsArgument(threads_arg, "touchdown.sweep");
   const std::string plan_path = io::ResolveInputDocument(io::InputDocument::kSweep, plan_arg);
   std::atomic<int> stop{0};
-  return RunCounts(RunInterruptible(stop, [&] {
+  ProgressReport progress(std::move(progress_arg));
+  return RunCounts(RunInterruptible(stop, progress, [&] {
     const sweep::SweepPlan plan = sweep::LoadSweepPlan(plan_path, model);
     io::OpenOutputDirectory({out, {plan_path, model}}, io::OutputKind::kSweep);
     sweep::SweepRunOptions options;
     options.threads = threads;
     options.progress = sweep::ProgressMode::kNone;
+    options.progress_counts = progress.counts();
     options.stop = &stop;
     return sweep::RunSweep(plan, out, options);
   }));
@@ -244,16 +284,18 @@ std::string Compare(const std::string& measured, const std::string& simulated, c
 // touchdown stability: the study's landings as a sweep into `out`, then its analysis there.
 // Stopped (Ctrl-C), the committed landings stay for a rerun to resume; no analysis is written.
 py::dict Stability(const std::string& study_arg, const std::string& out, const std::string& model,
-                   std::optional<int64_t> samples, const py::object& threads_arg) {
+                   std::optional<int64_t> samples, const py::object& threads_arg, py::object progress_arg) {
   const int threads = ThreadsArgument(threads_arg, "touchdown.stability");
   const std::string study_path = io::ResolveInputDocument(io::InputDocument::kStudy, study_arg);
   std::atomic<int> stop{0};
-  return RunCounts(RunInterruptible(stop, [&] {
+  ProgressReport progress(std::move(progress_arg));
+  return RunCounts(RunInterruptible(stop, progress, [&] {
     const stability::Study study = stability::LoadStudy(study_path, model, samples, {"touchdown.stability", false});
     io::OpenOutputDirectory({out, {study_path, model}}, io::OutputKind::kSweep);
     sweep::SweepRunOptions options;
     options.threads = threads;
     options.progress = sweep::ProgressMode::kNone;
+    options.progress_counts = progress.counts();  // the landings, then each follow-up's
     options.stop = &stop;
     const sweep::SweepRunSummary s = sweep::RunSweep(study.plan, out, options);
     if (s.stop_signal != 0) return s;
@@ -292,12 +334,18 @@ std::string Calibrate(const std::string& measured, const std::string& out, const
 
 // touchdown calibrate --targets: the report's content (targets::TargetsReportJson), the model file in `out`.
 std::string CalibrateTargets(const std::string& targets_file, const std::string& out, const std::string& report,
-                             const py::object& threads_arg, bool evaluate_only) {
+                             const py::object& threads_arg, bool evaluate_only, py::object progress_arg) {
   const int threads = ThreadsArgument(threads_arg, "touchdown.calibrate_targets");
-  py::gil_scoped_release unlocked;
-  const targets::TargetsCalibration c = targets::RunTargetsCalibration(
-      {targets_file, out, report, threads, evaluate_only, {"touchdown.calibrate_targets", false}});
-  return targets::TargetsReportJson(c.file, c.fit).dump(2);
+  std::atomic<int> stop{0};
+  ProgressReport progress(std::move(progress_arg));
+  return RunInterruptible(stop, progress, [&] {
+    targets::TargetsCalibrationRequest r;
+    r.targets = targets_file, r.out = out, r.report = report, r.threads = threads, r.evaluate_only = evaluate_only;
+    r.naming = {"touchdown.calibrate_targets", false};
+    r.progress.counts = progress.counts();
+    const targets::TargetsCalibration c = targets::RunTargetsCalibration(r);
+    return targets::TargetsReportJson(c.file, c.fit).dump(2);
+  });
 }
 
 // touchdown validate: validation.json's content; the outputs in `out` when given.
@@ -309,7 +357,7 @@ std::string Validate(const std::string& sources, const std::string& out) {
 // touchdown diagnose: diagnosis.json's content, the outputs in `out`.
 std::string Diagnose(const std::string& measured, const std::string& model, const std::string& out,
                      const py::object& threads_arg, bool pairs, bool law_candidate, const std::string& base,
-                     const std::string& sensor_sampling) {
+                     const std::string& sensor_sampling, py::object progress_arg) {
   const int threads = ThreadsArgument(threads_arg, "touchdown.diagnose");
   const auto fail = [](const std::string& field, const std::string& allowed, const std::string& value) {
     throw MakeInputError("touchdown.diagnose", field, "must be " + allowed + ", got '" + value + "'");
@@ -317,30 +365,36 @@ std::string Diagnose(const std::string& measured, const std::string& model, cons
   if (base != "rft" && base != "bekker") fail("base", "rft or bekker", base);
   const std::optional<pad::SensorSampling> sampling = dataset::ParseSensorSampling(sensor_sampling);
   if (!sampling) fail("sensor_sampling", dataset::SensorSamplingChoices(), sensor_sampling);
-  py::gil_scoped_release unlocked;
-  gap::DiagnoseOptions o;
-  o.threads = threads > 0 ? threads : std::max(1u, std::thread::hardware_concurrency());
-  o.try_pairs = pairs;
-  o.law_candidate = law_candidate;
-  o.base = base == "bekker" ? gap::DiagnoseBase::kBekker : gap::DiagnoseBase::kRft;
-  o.sensor_sampling = *sampling;
-  if (!model.empty()) o.start_model = model::LoadModelFile(model);
-  return gap::DiagnosisJson(gap::DiagnoseToDirectory(measured, o, {out, {measured, model}})).dump(2);
+  std::atomic<int> stop{0};
+  ProgressReport progress(std::move(progress_arg));
+  return RunInterruptible(stop, progress, [&] {
+    gap::DiagnoseOptions o;
+    o.threads = threads > 0 ? threads : std::max(1u, std::thread::hardware_concurrency());
+    o.try_pairs = pairs;
+    o.law_candidate = law_candidate;
+    o.base = base == "bekker" ? gap::DiagnoseBase::kBekker : gap::DiagnoseBase::kRft;
+    o.sensor_sampling = *sampling;
+    o.progress.counts = progress.counts();
+    if (!model.empty()) o.start_model = model::LoadModelFile(model);
+    return gap::DiagnosisJson(gap::DiagnoseToDirectory(measured, o, {out, {measured, model}})).dump(2);
+  });
 }
 
 // touchdown trade: summary.json's content (sweep::TradeJson) and the sweep's run counts.
 py::tuple Trade(const std::string& plan_path, const std::string& out, const std::string& model,
-                const py::object& threads_arg) {
+                const py::object& threads_arg, py::object progress_arg) {
   const int threads = ThreadsArgument(threads_arg, "touchdown.trade");
-  std::optional<sweep::TradeRun> run;
-  {
-    py::gil_scoped_release unlocked;
+  std::atomic<int> stop{0};
+  ProgressReport progress(std::move(progress_arg));
+  const sweep::TradeRun run = RunInterruptible(stop, progress, [&] {
     sweep::SweepRunOptions options;
     options.threads = threads;
     options.progress = sweep::ProgressMode::kNone;
-    run = sweep::RunTrade(io::ResolveInputDocument(io::InputDocument::kTrade, plan_path), model, out, options);
-  }
-  return py::make_tuple(sweep::TradeJson(run->rows, run->limits).dump(2), RunCounts(run->sweep));
+    options.progress_counts = progress.counts();
+    options.stop = &stop;
+    return sweep::RunTrade(io::ResolveInputDocument(io::InputDocument::kTrade, plan_path), model, out, options);
+  });
+  return py::make_tuple(sweep::TradeJson(run.rows, run.limits).dump(2), RunCounts(run.sweep));
 }
 
 // touchdown synth: the dataset into `out`; what the command reports (drops, the hidden effect).
@@ -448,18 +502,21 @@ PYBIND11_MODULE(_touchdown, m) {
   m.def("calibrate", &python::Calibrate, py::arg("measured"), py::arg("out"), py::arg("law"), py::arg("per"),
         py::arg("atmosphere"), py::arg("confidence"), py::arg("soil"), py::arg("pad"), py::arg("shear_from"));
   m.def("diagnose", &python::Diagnose, py::arg("measured"), py::arg("model"), py::arg("out"), py::arg("threads"),
-        py::arg("pairs"), py::arg("law_candidate"), py::arg("base"), py::arg("sensor_sampling"));
+        py::arg("pairs"), py::arg("law_candidate"), py::arg("base"), py::arg("sensor_sampling"),
+        py::arg("progress") = py::none());
   m.def("calibrate_targets", &python::CalibrateTargets, py::arg("targets"), py::arg("out"), py::arg("report"),
-        py::arg("threads"), py::arg("evaluate_only"));
+        py::arg("threads"), py::arg("evaluate_only"), py::arg("progress") = py::none());
   m.def("validate", &python::Validate, py::arg("sources"), py::arg("out"));
-  m.def("trade", &python::Trade, py::arg("plan"), py::arg("out"), py::arg("model"), py::arg("threads"));
+  m.def("trade", &python::Trade, py::arg("plan"), py::arg("out"), py::arg("model"), py::arg("threads"),
+        py::arg("progress") = py::none());
   m.def("synth", &python::Synth, py::arg("spec"), py::arg("out"));
   m.def("export", &python::Export, py::arg("sweep"), py::arg("to"), py::arg("full_traces"), py::arg("threads"));
   m.def("campaign", &python::Campaign, py::arg("scenario"), py::arg("out"));
   m.def("compare", &python::Compare, py::arg("measured"), py::arg("simulated"), py::arg("model"), py::arg("out"),
         py::arg("sensor_sampling"));
-  m.def("sweep", &python::Sweep, py::arg("plan"), py::arg("out"), py::arg("model"), py::arg("threads"));
+  m.def("sweep", &python::Sweep, py::arg("plan"), py::arg("out"), py::arg("model"), py::arg("threads"),
+        py::arg("progress") = py::none());
   m.def("stability", &python::Stability, py::arg("study"), py::arg("out"), py::arg("model"), py::arg("samples"),
-        py::arg("threads"));
+        py::arg("threads"), py::arg("progress") = py::none());
   python::RegisterObjectBindings(m);  // Pad, Soil, Lander, Scenario (objects_bindings.cpp)
 }

@@ -28,6 +28,7 @@ Progress::Progress(std::string label, std::string unit, int64_t total, ProgressO
   const bool terminal = &out_ == &std::cerr && ::isatty(STDERR_FILENO);
   bar_ = options.mode == ProgressMode::kBar || (options.mode == ProgressMode::kAuto && terminal);
   silent_ = options.mode == ProgressMode::kNone;
+  if (options_.counts) options_.counts->total.store(total), options_.counts->done.store(done_before);
 }
 
 Progress::~Progress() { Finish(detail_); }
@@ -40,6 +41,7 @@ void Progress::Add(int64_t n, const std::string& detail) {
   const std::lock_guard<std::mutex> lock(mutex_);
   done_ += n;
   detail_ = detail;
+  if (options_.counts) options_.counts->done.store(before_ + done_);
   const double now = Elapsed();
   if (now >= options_.quiet_s && now - last_shown_s_ >= (bar_ ? 0.1 : options_.interval_s)) Show(false);
 }
@@ -47,6 +49,7 @@ void Progress::Add(int64_t n, const std::string& detail) {
 void Progress::SetTotal(int64_t total) {
   const std::lock_guard<std::mutex> lock(mutex_);
   total_ = total;
+  if (options_.counts) options_.counts->total.store(total);
 }
 
 void Progress::Note(const std::string& line) {

@@ -2,7 +2,9 @@
 // Progress of a long job on standard error: a bar on a terminal ([####....] done/total, rate,
 // ETA), else a plain line every `interval_s`, and lines of notes (a failed drop) above the bar.
 // A job that ends within `quiet_s` prints nothing at all, so quick commands keep a clean stderr.
-// Add and Note may be called from worker threads.
+// Add and Note may be called from worker threads. A caller that shows progress its own way (the
+// Python module's bar) passes ProgressCounts and polls them from its thread.
+#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <iosfwd>
@@ -13,11 +15,20 @@ namespace touchdown::io {
 
 enum class ProgressMode { kAuto, kBar, kLines, kNone };
 
+// The counts a Progress shows, kept up to date whatever its mode, for another thread to read while
+// the job runs. A job of several stages (a study's landings, then its re-checks) starts each
+// anew: total and done then both change.
+struct ProgressCounts {
+  std::atomic<int64_t> done{0};
+  std::atomic<int64_t> total{0};  // 0: not known
+};
+
 struct ProgressOptions {
   ProgressMode mode = ProgressMode::kAuto;  // auto: a bar when `out` is a terminal's stderr, else lines
   double interval_s = 10.0;                 // between lines
   double quiet_s = 1.0;                     // nothing shown before this much time has passed
   std::ostream* out = nullptr;              // default std::cerr
+  ProgressCounts* counts = nullptr;         // also kept here when given
 };
 
 class Progress {

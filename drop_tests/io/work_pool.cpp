@@ -7,6 +7,20 @@
 
 namespace touchdown::io {
 
+namespace {
+// The stop request of the StopScope this thread runs in (nullptr: none).
+thread_local const std::atomic<int>* t_stop = nullptr;
+
+void ThrowIfStopped(const std::atomic<int>* stop) {
+  if (stop == nullptr) return;
+  if (const int signal = stop->load(); signal != 0) throw Stopped(signal);
+}
+}  // namespace
+
+StopScope::StopScope(const std::atomic<int>* stop) : outer_(t_stop) { t_stop = stop; }
+
+StopScope::~StopScope() { t_stop = outer_; }
+
 WorkPool::WorkPool(int threads) {
   for (int i = 0; i < std::max(1, threads); ++i) threads_.emplace_back([this] { Work(); });
 }
@@ -65,8 +79,12 @@ void WorkPool::Work() {
 
 void ParallelFor(size_t n, int threads, const std::function<void(size_t)>& body) {
   const size_t workers = std::min(static_cast<size_t>(std::max(1, threads)), n);
+  const std::atomic<int>* stop = t_stop;
   if (workers <= 1) {
-    for (size_t i = 0; i < n; ++i) body(i);
+    for (size_t i = 0; i < n; ++i) {
+      ThrowIfStopped(stop);
+      body(i);
+    }
     return;
   }
   std::atomic<size_t> next{0};
@@ -76,9 +94,11 @@ void ParallelFor(size_t n, int threads, const std::function<void(size_t)>& body)
   WorkPool pool(static_cast<int>(workers));
   for (size_t w = 0; w < workers; ++w)
     pool.Post([&] {
+      const StopScope scope(stop);  // nested loops of the bodies stop alike
       // An index above one that failed is skipped; every index below it still runs.
       for (size_t i = next++; i < n && i < lowest_failed.load(); i = next++) {
         try {
+          ThrowIfStopped(stop);
           body(i);
         } catch (...) {
           std::lock_guard<std::mutex> lock(mutex);

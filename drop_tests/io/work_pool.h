@@ -2,11 +2,14 @@
 // The one thread pool of touchdown: the sweep's drop engine (sweep_engine.h), diagnose's gap
 // per drop and its fitter's residuals (gap/) all run on it. Work is split by index and every
 // result is stored at its index, so which thread ran what never shows in a result.
+#include <atomic>
 #include <condition_variable>
 #include <cstddef>
 #include <deque>
 #include <functional>
 #include <mutex>
+#include <stdexcept>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -43,7 +46,34 @@ class WorkPool {
 // order), indices handed out in ascending order; returns when all are done. If a body throws,
 // indices not yet started are skipped and the exception of the lowest index that threw is
 // rethrown: every index below it has run by then, so which exception comes out does not depend
-// on the timing of the threads.
+// on the timing of the threads. Within a StopScope, an index not yet started once the stop is
+// requested throws Stopped instead of running.
 void ParallelFor(size_t n, int threads, const std::function<void(size_t)>& body);
+
+// What ParallelFor throws once a stop was requested: the work is abandoned, not finished.
+class Stopped : public std::runtime_error {
+ public:
+  explicit Stopped(int signal) : std::runtime_error("stopped by signal " + std::to_string(signal)), signal_(signal) {}
+  int signal() const { return signal_; }
+
+ private:
+  int signal_;
+};
+
+// While alive, every ParallelFor this thread runs, and those its bodies run on the pool's threads,
+// check `stop` before each index: once it is non-zero (a signal number) they throw Stopped. A long
+// computation made of ParallelFor loops (diagnose's fits, calibrate --targets' evaluations) so
+// ends within one body's time of the request, whatever the loops are nested in. Scopes nest; the
+// innermost one counts.
+class StopScope {
+ public:
+  explicit StopScope(const std::atomic<int>* stop);
+  ~StopScope();
+  StopScope(const StopScope&) = delete;
+  StopScope& operator=(const StopScope&) = delete;
+
+ private:
+  const std::atomic<int>* outer_;
+};
 
 }  // namespace touchdown::io

@@ -152,8 +152,8 @@ std::vector<int64_t> RemainingDrops::Next(size_t max) {
 }
 
 SweepProgress::SweepProgress(std::ostream& out, ProgressMode mode, double interval_s, int64_t total,
-                             int64_t done_before, double quiet_s)
-    : progress_("sweep", "drops", total, {mode, interval_s, quiet_s, &out}, done_before) {}
+                             int64_t done_before, double quiet_s, io::ProgressCounts* counts)
+    : progress_("sweep", "drops", total, {mode, interval_s, quiet_s, &out, counts}, done_before) {}
 
 std::string SweepProgress::Detail() const {
   std::string s = ", " + std::to_string(failed_) + " failed";
@@ -197,7 +197,7 @@ SweepRunSummary RunSweep(const SweepPlan& plan, const std::string& out_dir, cons
   summary.retried = store.retried;
   summary.threads = options.threads > 0 ? options.threads : DefaultThreads();
   SweepProgress progress(options.log ? *options.log : std::cerr, options.progress, options.progress_interval_s,
-                         summary.in_shard, summary.already_done, options.progress_quiet_s);
+                         summary.in_shard, summary.already_done, options.progress_quiet_s, options.progress_counts);
   if (summary.already_done < summary.in_shard) {
     const SweepModels models(plan);
     DropEngine engine(models, summary.threads);

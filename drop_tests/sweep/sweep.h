@@ -55,6 +55,7 @@ struct SweepRunOptions {
   double progress_interval_s = 10.0;            // for lines
   double progress_quiet_s = 0.0;                // nothing shown before (trade: a quick study prints nothing)
   std::ostream* log = nullptr;                  // progress and failed drops; default std::cerr
+  io::ProgressCounts* progress_counts = nullptr;  // the drops done and in all, kept up to date when given
   // When it becomes non-zero (a signal number, StopOnSignals::flag()), the run stops: running
   // drops finish and are committed, the rest is left for a restart. nullptr: never.
   const std::atomic<int>* stop = nullptr;
@@ -124,7 +125,7 @@ MergeSummary MergeSweepResults(const std::string& out_dir, const std::vector<std
 class SweepProgress {
  public:
   SweepProgress(std::ostream& out, ProgressMode mode, double interval_s, int64_t total, int64_t done_before,
-                double quiet_s = 0.0);
+                double quiet_s = 0.0, io::ProgressCounts* counts = nullptr);
   void Add(const std::vector<DropRecord>& records);  // prints failures, updates the display
   void Finish();
   int64_t failed_now() const { return failed_; }

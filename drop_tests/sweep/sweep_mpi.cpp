@@ -136,7 +136,7 @@ SweepRunSummary RunSweepMpi(const SweepPlan& plan, const std::string& out_dir, c
   ResultsDb& db = *store.db;
   RemainingDrops todo(plan.size(), db, options.shard);
   SweepProgress progress(options.log ? *options.log : std::cerr, options.progress, options.progress_interval_s,
-                         summary.in_shard, summary.already_done, options.progress_quiet_s);
+                         summary.in_shard, summary.already_done, options.progress_quiet_s, options.progress_counts);
   int ranks_running = ranks - 1;
   bool stopping = false;
   auto commit = [&](const std::vector<DropRecord>& batch) {

@@ -16,7 +16,8 @@ struct TradeRun {
   std::vector<TradeRow> rows;  // summary.json is TradeJson(rows, limits)
 };
 
-// `model`: a model file with per-soil zeta ("" none).
+// `model`: a model file with per-soil zeta ("" none). A sweep stopped (SweepRunOptions::stop) returns
+// with its run counts only: the committed drops stay for a rerun, no trade outputs are written.
 TradeRun RunTrade(const std::string& sweep_file, const std::string& model, const std::string& out,
                   const SweepRunOptions& options);
 

@@ -36,7 +36,10 @@ TargetsCalibration RunTargetsCalibration(const TargetsCalibrationRequest& r) {
     for (Target& t : c.file.targets) t.fit = false;
   TargetsFitOptions options;
   options.threads = r.threads > 0 ? r.threads : int(std::max(1u, std::thread::hardware_concurrency()));
+  io::Progress progress("calibrate", "evaluations", 0, r.progress);
+  options.on_evaluation = [&progress](const std::vector<double>&) { progress.Add(1); };
   c.fit = FitTargets(c.file, options);
+  progress.Finish();
   const std::filesystem::path model_path(r.out);
   model::WriteModelFile(TargetsModel(c.file, c.fit, model_path.stem().string(), model_path.parent_path().string()), out);
   if (report) {

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "drop_tests/drop/drop_request.h"
+#include "drop_tests/io/progress.h"
 #include "drop_tests/targets/targets_fit.h"
 
 namespace touchdown::targets {
@@ -16,6 +17,9 @@ struct TargetsCalibrationRequest {
   int threads = 0;            // scenarios side by side; 0: every core
   bool evaluate_only = false;  // no fit: every target at the parameters' start values
   drop::RequestNaming naming;  // how errors name the options (--report, or the Python module's report)
+  // Of the fit's evaluations of the targets (each runs the scenarios it needs); their number is
+  // not known ahead, so the total stays 0.
+  io::ProgressOptions progress{io::ProgressMode::kNone};
 };
 
 struct TargetsCalibration {

@@ -16,8 +16,10 @@ give pandas DataFrames of a sweep's database, a dataset and a stability study
 workflow runs is a file or, as on the command line, a bundled one's name ("lander_case_B"). Bad input raises ValueError with
 the command line's one-line message (naming the Python argument: "touchdown.sweep: threads: ..."),
 an input file that is not there FileNotFoundError, a path the system refuses OSError, a failed
-solver RuntimeError. Ctrl-C stops a sweep or study once its running drops are committed
-(KeyboardInterrupt; a rerun resumes). docs/python.md describes every function and field.
+solver RuntimeError. The long calls (sweep, stability, trade, diagnose, calibrate_targets) show a
+progress bar (tqdm, when installed; progress=False: none; a callable gets (done, total)), and
+Ctrl-C stops them within about a second (KeyboardInterrupt), a sweep's or study's committed drops
+kept for a rerun to resume. docs/python.md describes every function and field.
 """
 import collections.abc
 import contextlib
@@ -127,15 +129,18 @@ def calibrate(measured, out, *, law="rft", per="soil", atmosphere="all", confide
         confidence=confidence, soil=_path_text(soil), pad=_path_text(pad), shear_from=_path_text(shear_from)))
 
 
-def calibrate_targets(targets, out, *, report=None, threads=0, evaluate_only=False):
+def calibrate_targets(targets, out, *, report=None, threads=0, evaluate_only=False, progress=True):
     """`touchdown calibrate --targets TARGETS --out OUT [--report R] [--threads N] [--evaluate-only]`:
     fits the free parameters of a targets file to its published scalar targets (bounded least
     squares; docs/calibration_targets.md), writes the model file OUT (and the JSON report R), and
     returns the report as a dict: per parameter its value, bounds and interval, per target its value,
-    simulated value, residual and whether it was fitted or predicted."""
-    return json.loads(_touchdown.calibrate_targets(targets=_path_text(targets), out=_path_text(out),
-                                                   report=_path_text(report), threads=threads,
-                                                   evaluate_only=evaluate_only))
+    simulated value, residual and whether it was fitted or predicted. `progress` counts the fit's
+    evaluations of the targets, whose number is not known ahead (total 0; see sweep); Ctrl-C
+    abandons the fit, writing nothing."""
+    with _progress_reporter(progress, "calibrate_targets", "evaluations") as reporter:
+        return json.loads(_touchdown.calibrate_targets(targets=_path_text(targets), out=_path_text(out),
+                                                       report=_path_text(report), threads=threads,
+                                                       evaluate_only=evaluate_only, progress=reporter))
 
 
 def validate(*, sources=None, out=None):
@@ -147,23 +152,27 @@ def validate(*, sources=None, out=None):
 
 
 def diagnose(measured, out, *, model=None, threads=0, pairs=True, law_candidate=False, base="rft",
-             sensor_sampling="period_mean"):
+             sensor_sampling="period_mean", progress=True):
     """`touchdown diagnose MEASURED --out OUT [--model M] [--threads N] [--no-pairs] [--law-candidate]
     [--base rft|bekker] [--sensor-sampling instantaneous|period_mean]`: the model-gap workflow into
     the new directory OUT (docs/model_gap.md); returns diagnosis.json as a dict (the command prints a
-    part of it). `pairs=False` is `--no-pairs`: forward selection stops after the first term."""
-    return json.loads(_touchdown.diagnose(measured=_path_text(measured), model=_path_text(model), out=_path_text(out),
-                                          threads=threads, pairs=pairs, law_candidate=law_candidate, base=base,
-                                          sensor_sampling=sensor_sampling))
+    part of it). `pairs=False` is `--no-pairs`: forward selection stops after the first term.
+    `progress` counts the candidate models fitted (see sweep); Ctrl-C abandons the fit, writing nothing."""
+    with _progress_reporter(progress, "diagnose", "fits") as report:
+        return json.loads(_touchdown.diagnose(measured=_path_text(measured), model=_path_text(model),
+                                              out=_path_text(out), threads=threads, pairs=pairs,
+                                              law_candidate=law_candidate, base=base,
+                                              sensor_sampling=sensor_sampling, progress=report))
 
 
-def trade(plan, out, *, model=None, threads=0):
-    """`touchdown trade PLAN --out OUT [--model M] [--threads N]` (no progress output): runs, or
-    resumes, the sweep into OUT, then writes trade.csv, summary.json and plots/; returns
-    summary.json as a dict, with this run's counts under "run" (total, already_done, computed,
-    failed, threads, seconds; not in the file)."""
-    summary, run = _touchdown.trade(plan=_path_text(plan), out=_path_text(out), model=_path_text(model),
-                                    threads=threads)
+def trade(plan, out, *, model=None, threads=0, progress=True):
+    """`touchdown trade PLAN --out OUT [--model M] [--threads N]`: runs, or resumes, the sweep into
+    OUT, then writes trade.csv, summary.json and plots/; returns summary.json as a dict, with this
+    run's counts under "run" (total, already_done, computed, failed, threads, seconds; not in the
+    file). `progress` and Ctrl-C as for sweep (stopped: the drops kept, no trade outputs)."""
+    with _progress_reporter(progress, "trade", "drops") as report:
+        summary, run = _touchdown.trade(plan=_path_text(plan), out=_path_text(out), model=_path_text(model),
+                                        threads=threads, progress=report)
     result = json.loads(summary)
     result["run"] = run
     return result
@@ -186,26 +195,91 @@ def export(sweep, to, *, full_traces=False, threads=0):
     return _touchdown.export(sweep=_path_text(sweep), to=_path_text(to), full_traces=full_traces, threads=threads)
 
 
-def sweep(plan, out, *, model=None, threads=0):
+def sweep(plan, out, *, model=None, threads=0, progress=True):
     """A sweep file run as `touchdown sweep PLAN --out OUT` (one process, every core unless
     `threads`, 0 to 4096; a rerun resumes): the drops as read_sweep(out) gives them. df.attrs["run"]
     holds this run's counts (total, already_done, computed, failed, threads, seconds). Ctrl-C
     stops it as it stops the command: the running drops finish and are committed, then
-    KeyboardInterrupt."""
-    run = _touchdown.sweep(plan=_path_text(plan), out=_path_text(out), model=_path_text(model), threads=threads)
+    KeyboardInterrupt.
+
+    progress=True shows a tqdm bar (tqdm.auto: a widget in a notebook, text on a terminal; none
+    when tqdm is not installed) once the call has run a second; False shows nothing; a callable is
+    called as progress(done, total) from the calling thread, every 0.1 s while the counts change
+    (total 0: not known). A callable that raises stops the call as Ctrl-C does, with its exception."""
+    with _progress_reporter(progress, "sweep", "drops") as report:
+        run = _touchdown.sweep(plan=_path_text(plan), out=_path_text(out), model=_path_text(model), threads=threads,
+                               progress=report)
     drops = read_sweep(out)
     drops.attrs["run"] = run
     return drops
 
 
-def stability(study, out, *, model=None, samples=None, threads=0):
+def stability(study, out, *, model=None, samples=None, threads=0, progress=True):
     """A stability study run as `touchdown stability STUDY --out OUT [--samples N]`: its landings,
     then summary.json, the CSV tables and plots in OUT; returns read_stability(out). Ctrl-C stops
     it once the running landings are committed (KeyboardInterrupt, no analysis written; a rerun
-    resumes)."""
-    _touchdown.stability(study=_path_text(study), out=_path_text(out), model=_path_text(model), samples=samples,
-                         threads=threads)
+    resumes). `progress` as for sweep: the landings, then each follow-up's re-runs anew."""
+    with _progress_reporter(progress, "stability", "landings") as report:
+        _touchdown.stability(study=_path_text(study), out=_path_text(out), model=_path_text(model), samples=samples,
+                             threads=threads, progress=report)
     return read_stability(out)
+
+
+class _TqdmBar:
+    """progress=True: a tqdm.auto bar (a notebook's widget, else text on stderr), made at the first
+    counts and shown once the call has run a second (quick calls show nothing). A new stage (the
+    total changes, or the count goes back) starts the bar anew."""
+
+    def __init__(self, tqdm, label, unit):
+        self._tqdm, self._label, self._unit = tqdm, label, unit
+        self._bar, self._total = None, None
+
+    def __call__(self, done, total):
+        total = total or None  # 0: not known
+        if self._bar is None or total != self._total or done < self._bar.n:
+            self.close()
+            self._bar = self._tqdm(total=total, desc=self._label, unit=" " + self._unit, delay=1.0,
+                                   dynamic_ncols=True, leave=True)
+            self._total = total
+        self._bar.update(done - self._bar.n)
+
+    def close(self):
+        if self._bar is not None:
+            self._bar.close()
+            self._bar = None
+
+
+def _tqdm_auto():
+    """tqdm.auto's bar class, or None without tqdm. Its notice that a notebook lacks ipywidgets
+    (it then draws text) is no news to the user of a call."""
+    import warnings
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            from tqdm.auto import tqdm
+    except ImportError:
+        return None
+    return tqdm
+
+
+@contextlib.contextmanager
+def _progress_reporter(progress, function, unit):
+    """What the compiled call `function` reports (done, total) to: None, the user's callable, or a
+    tqdm bar closed when the call ends, however it ends."""
+    if callable(progress):
+        yield progress
+        return
+    if progress is not True and progress is not False and progress is not None:
+        raise ValueError(f"touchdown.{function}: progress: must be True, False or a callable, got {progress!r}")
+    tqdm = _tqdm_auto() if progress else None
+    if tqdm is None:
+        yield None
+        return
+    bar = _TqdmBar(tqdm, function, unit)
+    try:
+        yield bar
+    finally:
+        bar.close()
 
 
 def _path_text(path):

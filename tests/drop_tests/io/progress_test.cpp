@@ -61,6 +61,26 @@ TEST(Progress, NoneIsSilentAndThreadsMayAddAtOnce) {
   EXPECT_NE(lines.str().find("diagnose: 4000/4000 fits (100.0%)"), std::string::npos) << lines.str();
 }
 
+TEST(Progress, CountsAreKeptForAnotherThreadWhateverTheMode) {
+  ProgressCounts counts;
+  {
+    Progress p("sweep", "drops", 10, {ProgressMode::kNone, 0.0, 0.0, nullptr, &counts}, 3);
+    EXPECT_EQ(counts.done.load(), 3);  // a resumed job starts with what was done before
+    EXPECT_EQ(counts.total.load(), 10);
+    std::thread a([&] { for (int i = 0; i < 2; ++i) p.Add(1); });
+    std::thread b([&] { for (int i = 0; i < 2; ++i) p.Add(1); });
+    a.join();
+    b.join();
+    EXPECT_EQ(counts.done.load(), 7);
+    p.SetTotal(12);
+    EXPECT_EQ(counts.total.load(), 12);
+  }
+  // A next stage of the job starts the counts anew.
+  Progress next("sweep", "drops", 4, {ProgressMode::kNone, 0.0, 0.0, nullptr, &counts});
+  EXPECT_EQ(counts.done.load(), 0);
+  EXPECT_EQ(counts.total.load(), 4);
+}
+
 TEST(FormatDuration, HoursMinutesSecondsOrUnknown) {
   EXPECT_EQ(FormatDuration(0.4), "0:00:00");
   EXPECT_EQ(FormatDuration(3725.0), "1:02:05");

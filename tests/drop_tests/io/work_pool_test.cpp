@@ -65,6 +65,39 @@ TEST(ParallelForTest, RethrowsTheExceptionOfTheLowestFailingIndex) {
   }
 }
 
+TEST(ParallelForTest, AStopInScopeEndsTheLoopsAtTheNextIndexNestedOnesToo) {
+  for (const int threads : {1, 3}) {
+    std::atomic<int> stop{0};
+    std::atomic<int> ran{0};
+    const StopScope scope(&stop);
+    try {
+      ParallelFor(50, threads, [&](size_t i) {
+        // The bodies' own loops, on the pool's threads, see the same request.
+        ParallelFor(4, 2, [&](size_t) { ++ran; });
+        if (i == 5) stop.store(2);
+      });
+      ADD_FAILURE() << "not stopped, threads " << threads;
+    } catch (const Stopped& e) {
+      EXPECT_EQ(e.signal(), 2);
+    }
+    // One thread: indices 0 to 5 ran whole, then none. More: those running then may stop midway.
+    if (threads == 1) EXPECT_EQ(ran.load(), 6 * 4);
+    EXPECT_GE(ran.load(), 4) << "threads " << threads;
+    EXPECT_LT(ran.load(), 50 * 4) << "threads " << threads;
+  }
+  // Without a scope, nothing stops a loop.
+  std::atomic<int> stop{15};
+  int ran = 0;
+  ParallelFor(10, 1, [&](size_t) { ++ran; });
+  EXPECT_EQ(ran, 10);
+  {
+    const StopScope scope(&stop);
+    EXPECT_THROW(ParallelFor(10, 1, [&](size_t) { ++ran; }), Stopped);
+  }
+  ParallelFor(10, 1, [&](size_t) { ++ran; });  // the scope's end lifts it
+  EXPECT_EQ(ran, 20);
+}
+
 TEST(WorkPoolTest, RunsPostedTasksAndWaits) {
   WorkPool pool(3);
   std::vector<std::atomic<int>> runs(50);
