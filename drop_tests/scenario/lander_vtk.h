@@ -1,8 +1,10 @@
 #pragma once
 // `touchdown lander SCENARIO --out DIR` also writes DIR/vtk/: the landing as a ParaView time series
 // (docs/paraview.md). vtk/lander.pvd lists, at each frame, the four pads with their per-element soil
-// stresses (pads_NNNNNN.vtp), the body as the polygon of its hips (body_NNNNNN.vtp), the legs as
-// lines from hip to ball joint (legs_NNNNNN.vtp), and the soil's surface with its patches (soil.vtp).
+// stresses and forces (pads_NNNNNN.vtp), the body as the polygon of its hips (body_NNNNNN.vtp), the
+// legs as lines from hip to ball joint with their loads (legs_NNNNNN.vtp), the soil's surface under
+// each pad pressed in by it so far (crater_NNNNNN.vtp, io::CraterSurface; a frame that did not change
+// it lists the previous file) and the soil's surface with its patches (soil.vtp).
 #include <string>
 
 #include "drop_tests/scenario/lander_scenario.h"
