@@ -28,9 +28,9 @@ import os
 
 from paraview.simple import (Calculator, CellCenters, ColorBy, ExtractBlock, GetActiveViewOrCreate,
                              GetAnimationScene, GetColorTransferFunction, GetScalarBar, Glyph, PVDReader, Render,
-                             SaveScreenshot, SaveState, Show, UpdatePipeline)
+                             SaveScreenshot, SaveState, Show, Threshold, UpdatePipeline)
 
-BELOW = (0.55, -0.68, -0.62)  # from below the surface, in front of pad 1 (front-left, x forward)
+BELOW = (0.4, -0.5, -0.75)  # from below the surface, in front of pad 1 (front-left, x forward)
 ABOVE = (-0.55, -0.75, 0.75)  # from above, behind and to the right
 
 
@@ -81,14 +81,15 @@ def colour(display, view, array, association, preset, title, bar=True):
     return lut
 
 
-def force_arrows(pads, view, t, arrow_length_m):
-    """element_force_N as arrows ending on each element's centre (the soil pushes from outside):
-    cell centres moved back along the force by the arrow's length, then glyphs along the force.
-    Elements without force get arrows of no length. Returns the scale [m/N]."""
+def force_arrows(pads, view, t, arrow_length_m, stride):
+    """element_force_N as arrows ending on the centres of the elements that lead the motion (the
+    soil pushes from outside): cell centres moved back along the force by the arrow's length, then
+    glyphs along the force, one element in `stride`. Returns the scale [m/N]."""
     UpdatePipeline(time=t, proxy=pads)
     largest = pads.CellData["element_force_N"].GetRange(-1)[1]
     scale = arrow_length_m / largest if largest > 0.0 else 0.0
-    centres = CellCenters(Input=pads)
+    loaded = Threshold(Input=pads, Scalars=["CELLS", "leading"], LowerThreshold=0.5, UpperThreshold=1.0)
+    centres = CellCenters(Input=loaded)
     centres.VertexCells = 1
     tails = Calculator(Input=centres)
     tails.CoordinateResults = 1
@@ -98,12 +99,13 @@ def force_arrows(pads, view, t, arrow_length_m):
     arrows.OrientationArray = ["POINTS", "element_force_N"]
     arrows.ScaleArray = ["POINTS", "element_force_N"]
     arrows.ScaleFactor = scale
-    arrows.GlyphMode = "All Points"
+    arrows.GlyphMode = "Every Nth Point"
+    arrows.Stride = stride
     arrows.GlyphType.TipResolution = 12
     arrows.GlyphType.ShaftResolution = 12
     display = Show(arrows, view)
     display.ColorArrayName = [None, ""]
-    display.AmbientColor = display.DiffuseColor = [0.1, 0.45, 0.85]
+    display.AmbientColor = display.DiffuseColor = [0.0, 0.6, 0.3]
     return scale
 
 
@@ -114,10 +116,10 @@ def main():
     parser.add_argument("--state", help="write a ParaView state (.pvsm) to open with paraview --state=FILE")
     parser.add_argument("--time", type=float, help="the time [s] to show (default: the peak load)")
     parser.add_argument("--view", choices=("below", "above"), default="below", help="where the camera is")
-    parser.add_argument("--arrow-length", type=float, default=0.03,
-                        help="length [m] of the arrow of the largest element force (default 0.03)")
-    parser.add_argument("--distance", type=float, default=2.2,
-                        help="the camera's distance in sizes of the pads' bounding box (default 2.2)")
+    parser.add_argument("--arrow-length", type=float, default=0.015,
+                        help="length [m] of the arrow of the largest element force (default 0.015)")
+    parser.add_argument("--stride", type=int, default=6, help="an arrow on one loaded element in N (default 6)")
+    parser.add_argument("--zoom", type=float, default=1.1, help="closer than the pads' framing by this (default 1.1)")
     parser.add_argument("--size", default="1600x1000", help="picture size in pixels (default 1600x1000)")
     args = parser.parse_args()
     width, height = (int(v) for v in args.size.split("x"))
@@ -147,7 +149,7 @@ def main():
     pads_display = Show(pads, view)
     colour(pads_display, view, "normal_stress_Pa", "CELLS", "Inferno (matplotlib)",
            "soil normal stress on the pads [Pa]")
-    scale = force_arrows(pads, view, t, args.arrow_length)
+    scale = force_arrows(pads, view, t, args.arrow_length, args.stride)
 
     for name in ("body", "legs"):
         if name not in parts:
@@ -162,28 +164,26 @@ def main():
     if "crater" in parts:
         crater_display = Show(block(reader, "crater"), view)
         colour(crater_display, view, "crater_depth_m", "POINTS", "Blues", "crater depth [m]", bar=False)
-        crater_display.SetRepresentationType("Surface With Edges")
-        crater_display.EdgeColor = [0.45, 0.4, 0.3]
-        crater_display.Opacity = 0.45
+        crater_display.Opacity = 0.6
     if "soil" in parts:
         soil_display = Show(block(reader, "soil"), view)
         soil_lut = colour(soil_display, view, "soil", "CELLS", "Greens", "", bar=False)
         soil_lut.RescaleTransferFunction(-1.0, 3.0)
         soil_display.Opacity = 0.2
 
-    # The camera on the pads: at their bounding box's centre, from the chosen side, far enough to
-    # see them all.
+    # The camera on the pads: looking at their bounding box from the chosen side, framed on it, then
+    # moved in (--zoom).
     UpdatePipeline(time=t, proxy=pads)
     x0, x1, y0, y1, z0, z1 = pads.GetDataInformation().GetBounds()
     centre = [(x0 + x1) / 2, (y0 + y1) / 2, (z0 + z1) / 2]
-    size = math.dist((x0, y0, z0), (x1, y1, z1))
     direction = BELOW if args.view == "below" else ABOVE
-    norm = math.sqrt(sum(c * c for c in direction))
     Render(view)  # the first render places the camera on everything; ours replaces it
     view.CameraFocalPoint = centre
-    view.CameraPosition = [c + args.distance * size * d / norm for c, d in zip(centre, direction)]
+    view.CameraPosition = [c + d for c, d in zip(centre, direction)]
     view.CameraViewUp = [0.0, 0.0, 1.0]
     view.CameraViewAngle = 30
+    view.ResetCamera(x0, x1, y0, y1, z0, z1)
+    view.GetActiveCamera().Dolly(args.zoom)
     Render(view)
     if args.png:
         SaveScreenshot(args.png, view, ImageResolution=[width, height])
