@@ -97,7 +97,9 @@ TEST_F(LanderVtkTest, OutputHoldsTheLandingForParaViewAndThePosesInTheTrace) {
     double deepest_so_far = 0.0;
     for (size_t n = 0; n <= k; ++n) deepest_so_far = std::max(deepest_so_far, trace[n].pad_depth_m[i]);
     EXPECT_LE(deepest, deepest_so_far + 1e-12) << "pad " << i + 1;
-    if (s.pad_depth_m[i] > 0.005) EXPECT_GT(deepest, 0.9 * s.pad_depth_m[i]) << "pad " << i + 1;
+    if (s.pad_depth_m[i] > 0.005) {
+      EXPECT_GT(deepest, 0.9 * s.pad_depth_m[i]) << "pad " << i + 1;
+    }
   }
   // The soil shows both soils.
   const auto soil = testing_vtk::VtpPieces(ReadXmlFile(out + "/vtk/soil.vtp"));
