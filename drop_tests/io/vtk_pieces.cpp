@@ -82,7 +82,7 @@ VtkPolyData SoilSurfacePiece(const rft::GroundSurface& ground, const Eigen::Vect
 
 CraterSurface::CraterSurface(const rft::GroundSurface& ground, const Eigen::Vector2d& lo_W, const Eigen::Vector2d& hi_W,
                              int step_mm)
-    : ground_(&ground), step_mm_(step_mm) {
+    : step_mm_(step_mm) {
   const double step = step_mm / 1000.0;
   i0_ = static_cast<int>(std::floor(lo_W.x() / step));
   j0_ = static_cast<int>(std::floor(lo_W.y() / step));

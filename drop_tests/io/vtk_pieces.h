@@ -69,7 +69,6 @@ class CraterSurface {
   double X(int i) const { return (i0_ + i) * step_mm_ / 1000.0; }
   double Y(int j) const { return (j0_ + j) * step_mm_ / 1000.0; }
   int Index(int i, int j) const { return j * (nx_ + 1) + i; }
-  const rft::GroundSurface* ground_;
   int step_mm_, i0_, j0_, nx_, ny_;
   std::vector<double> surface_z_, z_;
 };
