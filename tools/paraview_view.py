@@ -7,9 +7,9 @@ pvpython), and saves a picture of one frame and/or a ParaView state file for the
     paraview --state=case_B.pvsm                # the same view, animated, in the GUI
 
 What it shows (docs/paraview.md lists the fields): the pads coloured by the soil's normal stress
-on each element (normal_stress_Pa); the soil's force on each element as an arrow (element_force_N,
-glyphs whose tips touch the element, so that they push on the pad from the soil's side, the longest
---arrow-length long); the legs coloured by their axial load (leg_force_N) and the body in grey; the
+on each element (normal_stress_Pa); the soil's force on the loaded elements (leading = 1, one in
+--stride) as arrows (element_force_N, glyphs whose tips touch the element, so that they push on the
+pad from the soil's side, the longest --arrow-length long); the legs coloured by their axial load (leg_force_N) and the body in grey; the
 soil's surface pressed in by the pads (the `crater` part, coloured by crater_depth_m) and the soil's
 square with its patches, half transparent; the camera on the pads, from below the surface (--view
 below, where the pads' bottoms carry the stress) or from above (--view above, where the craters and
@@ -18,8 +18,8 @@ pad load while no pad is held (trace.csv beside a lander's vtk/), else that of t
 stress.
 
 The state file names the .pvd by its absolute path: write it for your own series (it is not portable
-between machines). Needs ParaView (Debian `paraview`, 5.11); not part of the build, the tests or
-tools/install_deps.sh. Debian's pvbatch needs an X display, hence xvfb-run.
+between machines). Needs ParaView 5.11 (Debian `paraview` and `python3-paraview`; `tools/install_deps.sh
+docs`), not part of the build or the tests. Debian's pvbatch needs an X display, hence xvfb-run.
 """
 import argparse
 import csv
@@ -127,8 +127,9 @@ def main():
     reader = PVDReader(FileName=os.path.abspath(args.pvd))
     reader.UpdatePipelineInformation()
     times = list(reader.TimestepValues)
-    parts = [b for b in ("pads", "pad", "body", "legs", "crater", "soil")
-             if f'name="{b}"' in open(args.pvd, encoding="utf-8").read()]
+    with open(args.pvd, encoding="utf-8") as f:
+        collection = f.read()
+    parts = [b for b in ("pads", "pad", "body", "legs", "crater", "soil") if f'name="{b}"' in collection]
     pad_part = "pads" if "pads" in parts else "pad"
     pads = block(reader, pad_part)
     wanted = args.time if args.time is not None else peak_load_time(args.pvd)
