@@ -11,7 +11,7 @@
 #   hardening  the sanitizer and fuzzer build (tools/run_sanitized_tests.sh, run_fuzzers.sh): clang
 #   package    the Debian package's Depends (`cpack -G DEB`): dpkg-shlibdeps
 #   docs       the figures of docs/ made outside the commands: ParaView's pvbatch under xvfb
-#              (tools/paraview_snapshot.py), matplotlib (docs/python.md's example)
+#              (tools/paraview_view.py), matplotlib (docs/python.md's example)
 # A purpose builds on main's packages (tests on main's too), so each installs main's as well.
 set -euo pipefail
 main=(
@@ -32,7 +32,7 @@ tests=(
 mpi=(libopenmpi-dev openmpi-bin)
 hardening=(clang libclang-rt-14-dev)
 package=(dpkg-dev)
-docs=(paraview xvfb python3-matplotlib)
+docs=(paraview python3-paraview xvfb xauth python3-matplotlib)
 
 purposes=("$@")
 [ ${#purposes[@]} -gt 0 ] || purposes=(main)

@@ -1,7 +1,9 @@
 #pragma once
 // `touchdown drop --free ... --vtk DIR`: the free pad's drop as a ParaView time series
 // (docs/paraview.md). DIR/drop.pvd lists, at every sample of the trace, the pad's surface in world
-// coordinates with its per-element soil stresses (pad_NNNNNN.vtp) and the soil's surface (soil.vtp).
+// coordinates with its per-element soil stresses and forces (pad_NNNNNN.vtp), the soil's surface
+// pressed in by the pad so far (crater_NNNNNN.vtp, io::CraterSurface) and the soil's surface
+// (soil.vtp).
 #include "drop_tests/drop/pad_drop.h"
 #include "drop_tests/io/output_path.h"
 

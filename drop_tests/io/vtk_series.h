@@ -17,7 +17,8 @@ class VtkSeries {
   // A part that does not move (the soil's surface): written once, listed at every time.
   void AddStaticPart(const std::string& part, const std::vector<VtkPolyData>& pieces);
   // A part at `time_s` (non-decreasing). A second frame at the same time as the last (a sample at
-  // an event) replaces it.
+  // an event) replaces it. A frame the same byte for byte as the part's previous one (a crater that
+  // did not change) is not written again: the collection lists the previous file at this time.
   void AddFrame(double time_s, const std::string& part, const std::vector<VtkPolyData>& pieces);
   // Writes NAME.pvd. Returns its path.
   std::string Finish() const;
@@ -27,6 +28,10 @@ class VtkSeries {
   std::string directory_, name_;
   std::vector<std::string> parts_;
   std::vector<std::string> static_files_;  // by part, "" for moving parts
+  struct Written {
+    std::string file, text;
+  };
+  std::vector<Written> last_;  // by part: the file of its latest frame and what it holds
   std::vector<double> times_;
   std::vector<VtkCollectionEntry> frames_;
 };

@@ -7,13 +7,15 @@ namespace touchdown::io {
 
 namespace {
 // The shortest decimal that reads back as the same double (std::to_chars): exact, and shorter and
-// faster than 17 digits.
+// faster than 17 digits. Negative zero (-0 / A of an element without force, a product with a zero
+// scale) is written as 0: the same value, and ParaView's readers and users see no "-0".
 struct Exact {
   double v;
 };
 std::ostream& operator<<(std::ostream& out, Exact x) {
   char text[32];
-  const std::to_chars_result r = std::to_chars(text, text + sizeof text, x.v);
+  const double v = x.v == 0.0 ? 0.0 : x.v;
+  const std::to_chars_result r = std::to_chars(text, text + sizeof text, v);
   return out.write(text, r.ptr - text);
 }
 
@@ -83,6 +85,10 @@ void WritePiece(const VtkPolyData& p, std::ostream& out) {
 
 void VtkPolyData::AddCellField(std::string name, std::vector<double> values, int components) {
   cell_fields.push_back({std::move(name), components, std::move(values)});
+}
+
+void VtkPolyData::AddPointField(std::string name, std::vector<double> values, int components) {
+  point_fields.push_back({std::move(name), components, std::move(values)});
 }
 
 void WriteVtp(const std::vector<VtkPolyData>& pieces, std::ostream& out) {

@@ -34,6 +34,8 @@ struct VtkPolyData {
   int cell_count() const { return static_cast<int>(lines.size() + polygons.size()); }
   // Appends a cell field (values: one per cell, or `components` per cell).
   void AddCellField(std::string name, std::vector<double> values, int components = 1);
+  // Appends a point field (values: one per point, or `components` per point).
+  void AddPointField(std::string name, std::vector<double> values, int components = 1);
 };
 
 // Writes `pieces` as one PolyData file, a <Piece> each. Every piece must carry the same fields

@@ -6,6 +6,7 @@
 
 #include "drop_tests/io/vtk_pieces.h"
 #include "drop_tests/io/vtk_series.h"
+#include "drop_tests/scenario/lander_leg_load.h"
 #include "rft/element_stresses.h"
 
 namespace touchdown::scenario {
@@ -59,6 +60,8 @@ io::VtkPolyData BodyPiece(const LanderRun& run, const lander::LanderSample& s) {
   return piece;
 }
 
+// The legs with their axial load (lander_leg_load.h: the absorber's force, or on a rigid leg the
+// pad's soil force along it), as the load plot and the studies' peak leg load take it.
 io::VtkPolyData LegsPiece(const LanderRun& run, const lander::LanderSample& s) {
   io::VtkPolyData piece;
   std::vector<double> number, force, stroke;
@@ -67,7 +70,7 @@ io::VtkPolyData LegsPiece(const LanderRun& run, const lander::LanderSample& s) {
     piece.points.push_back(s.p_WJ[i]);
     piece.lines.push_back({2 * i, 2 * i + 1});
     number.push_back(i + 1);
-    force.push_back(s.leg_force_N[i]);
+    force.push_back(LegAxialForce(run.scenario.lander, s, i));
     stroke.push_back(s.stroke_m[i]);
   }
   piece.AddCellField("leg_number", std::move(number));
@@ -90,6 +93,30 @@ io::VtkPolyData SoilPiece(const LanderRun& run) {
   return io::SoilSurfacePiece(*terrain.surface, 0.5 * (lo + hi), half_width, 40,
                               [&terrain](double x, double y) { return terrain.SoilAt(x, y); });
 }
+double PadRadius(const LanderRun& run, int i) {
+  return run.setup.model.legs[i].pad->vertices_B.colwise().norm().maxCoeff();  // from the joint centre
+}
+
+// A crater grid per pad over its joint's path in the soil, a pad radius (from the joint: it bounds the
+// pad's footprint at any attitude) and two grid steps beyond it. A pad that never touches gets a
+// flat one where it ends.
+std::vector<io::CraterSurface> Craters(const LanderRun& run) {
+  const std::vector<lander::LanderSample>& trace = run.result.trace;
+  std::vector<io::CraterSurface> craters;
+  for (int i = 0; i < kNumLegs; ++i) {
+    Eigen::Vector2d lo = trace.back().p_WJ[i].head<2>(), hi = lo;
+    for (const lander::LanderSample& s : trace)
+      if (s.pad_depth_m[i] > 0.0) {
+        lo = lo.cwiseMin(s.p_WJ[i].head<2>());
+        hi = hi.cwiseMax(s.p_WJ[i].head<2>());
+      }
+    const int step_mm = io::CraterSurface::StepFor(PadRadius(run, i));
+    const double margin = PadRadius(run, i) + 2.0 * step_mm / 1000.0;
+    craters.emplace_back(*run.setup.terrain.surface, lo.array() - margin, hi.array() + margin, step_mm);
+  }
+  return craters;
+}
+
 // Which samples become frames (lander_vtk.h): the stroke whole, the fall thinned, the rest once.
 bool IsFrame(const LanderRun& run, const lander::LanderSample& s, double next_frame_s) {
   const std::optional<double>& rest = run.result.rest_time_s;
@@ -108,6 +135,7 @@ void WriteLanderVtk(const LanderRun& run, const std::string& directory) {
   for (int i = 0; i < kNumLegs; ++i) meshes[i] = io::MakePadSurfaceMesh(run.setup.model.legs[i].pad->surface);
   io::VtkSeries series(directory, "lander");
   rft::ElementStresses stresses;
+  std::vector<io::CraterSurface> craters = Craters(run);
   double next_frame_s = trace.front().t_s;
   for (size_t n = 0; n < trace.size(); ++n) {
     const lander::LanderSample& s = trace[n];
@@ -118,6 +146,12 @@ void WriteLanderVtk(const LanderRun& run, const std::string& directory) {
     series.AddFrame(s.t_s, "pads", pads);
     series.AddFrame(s.t_s, "body", {BodyPiece(run, s)});
     series.AddFrame(s.t_s, "legs", {LegsPiece(run, s)});
+    // Pressed at the frames: every sample of a pad moving in the soil is one, and a held pad stays.
+    for (int i = 0; i < kNumLegs; ++i)
+      if (s.pad_depth_m[i] > 0.0) craters[i].Press(meshes[i], Rotation(s.q_WP[i]), s.p_WJ[i]);
+    std::vector<io::VtkPolyData> crater_pieces;
+    for (const io::CraterSurface& c : craters) crater_pieces.push_back(c.Piece());
+    series.AddFrame(s.t_s, "crater", crater_pieces);
   }
   series.AddStaticPart("soil", {SoilPiece(run)});
   series.Finish();

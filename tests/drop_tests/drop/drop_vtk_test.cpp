@@ -58,19 +58,21 @@ TEST_F(DropVtkTest, SeriesListsEverySampleWithItsTimeAndTheStressesAtThatPose) {
   for (const pad::FreeDropSample& s : trace)
     if (times.empty() || s.t_s > times.back()) times.push_back(s.t_s);
   ASSERT_GT(times.size(), 10u);
-  ASSERT_EQ(sets.size(), 2 * times.size());  // the pad and the soil at each time
+  ASSERT_EQ(sets.size(), 3 * times.size());  // the pad, the crater and the soil at each time
   for (size_t i = 0; i < times.size(); ++i) {
-    EXPECT_EQ(std::stod(sets[2 * i].Attribute("timestep")), times[i]);
-    EXPECT_EQ(sets[2 * i].Attribute("name"), "pad");
-    EXPECT_EQ(sets[2 * i + 1].Attribute("file"), "soil.vtp");
-    EXPECT_EQ(std::stod(sets[2 * i + 1].Attribute("timestep")), times[i]);
-    EXPECT_TRUE(std::filesystem::is_regular_file(out + "/" + sets[2 * i].Attribute("file")));
+    EXPECT_EQ(std::stod(sets[3 * i].Attribute("timestep")), times[i]);
+    EXPECT_EQ(sets[3 * i].Attribute("name"), "pad");
+    EXPECT_EQ(sets[3 * i + 1].Attribute("name"), "crater");
+    EXPECT_EQ(sets[3 * i + 2].Attribute("file"), "soil.vtp");
+    EXPECT_EQ(std::stod(sets[3 * i + 2].Attribute("timestep")), times[i]);
+    EXPECT_TRUE(std::filesystem::is_regular_file(out + "/" + sets[3 * i].Attribute("file")));
+    EXPECT_TRUE(std::filesystem::is_regular_file(out + "/" + sets[3 * i + 1].Attribute("file")));
   }
 
   // A frame in the stroke: its cells are the pad's elements, with the stresses at that sample's pose.
   const size_t k = trace.size() / 3;
   const pad::FreeDropSample& s = trace[k];
-  const auto frame = ReadXmlFile(out + "/" + sets[2 * k].Attribute("file"));
+  const auto frame = ReadXmlFile(out + "/" + sets[3 * k].Attribute("file"));
   const auto pieces = testing_vtk::VtpPieces(frame);
   ASSERT_EQ(pieces.size(), 1u);
   const rft::SurfaceElements& surface = pad_->body.surface;
@@ -96,6 +98,20 @@ TEST_F(DropVtkTest, SeriesListsEverySampleWithItsTimeAndTheStressesAtThatPose) {
   // The elements' forces are the drop's soil force at that sample (vertical, within the contact's
   // reuse of stresses per normal class).
   EXPECT_NEAR(expected.force_W.row(2).sum(), s.force_N, 1e-9 * s.force_N);
+  // The written element forces are those forces.
+  const std::vector<double> force = DataArray(cells, "element_force_N").Numbers();
+  ASSERT_EQ(force.size(), 3u * static_cast<size_t>(surface.size()));
+  for (int i = 0; i < surface.size(); ++i)
+    for (int c = 0; c < 3; ++c) EXPECT_EQ(force[3 * i + c], expected.force_W(c, i));
+  // The crater of that frame: as deep as the pad has been (its deepest point to the grid's
+  // resolution), nowhere deeper.
+  const auto crater = testing_vtk::VtpPieces(ReadXmlFile(out + "/" + sets[3 * k + 1].Attribute("file")));
+  const std::vector<double> crater_depth = DataArray(crater[0].One("PointData"), "crater_depth_m").Numbers();
+  double deepest = 0.0;
+  for (size_t n = 0; n <= k; ++n) deepest = std::max(deepest, trace[n].penetration_m);
+  const double crater_deepest = *std::max_element(crater_depth.begin(), crater_depth.end());
+  EXPECT_LE(crater_deepest, deepest + 1e-12);
+  EXPECT_GT(crater_deepest, 0.8 * deepest);
 }
 
 // A free drop on a Bekker soil with shear (sliding): the series is written with the pad's b, and the

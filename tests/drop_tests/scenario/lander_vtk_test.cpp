@@ -9,6 +9,7 @@
 #include <set>
 #include <sstream>
 
+#include "drop_tests/scenario/lander_leg_load.h"
 #include "tests/drop_tests/io/vtk_xml_reader.h"
 #include "tests/drop_tests/scenario/lander_test_support.h"
 #include "tests/scratch_dir_test.h"
@@ -29,14 +30,16 @@ TEST_F(LanderVtkTest, OutputHoldsTheLandingForParaViewAndThePosesInTheTrace) {
   const std::vector<lander::LanderSample>& trace = run.result.trace;
 
   const auto sets = ReadXmlFile(out + "/vtk/lander.pvd").One("Collection").All("DataSet");
-  ASSERT_EQ(sets.size() % 4, 0u);
+  constexpr size_t kParts = 5;
+  ASSERT_EQ(sets.size() % kParts, 0u);
   std::set<double> frame_times;
-  for (size_t i = 0; i < sets.size(); i += 4) {
+  for (size_t i = 0; i < sets.size(); i += kParts) {
     const double t = std::stod(sets[i].Attribute("timestep"));
     frame_times.insert(t);
-    for (size_t p = 0; p < 4; ++p) {
+    for (size_t p = 0; p < kParts; ++p) {
       EXPECT_EQ(std::stod(sets[i + p].Attribute("timestep")), t);
-      EXPECT_EQ(sets[i + p].Attribute("name"), (std::vector<std::string>{"pads", "body", "legs", "soil"}[p]));
+      EXPECT_EQ(sets[i + p].Attribute("name"),
+                (std::vector<std::string>{"pads", "body", "legs", "crater", "soil"}[p]));
       EXPECT_TRUE(std::filesystem::is_regular_file(out + "/vtk/" + sets[i + p].Attribute("file")));
     }
   }
@@ -59,7 +62,7 @@ TEST_F(LanderVtkTest, OutputHoldsTheLandingForParaViewAndThePosesInTheTrace) {
   while (!(trace[k].pad_depth_m[0] > 0.005 && !trace[k].pad_held[0])) ++k;
   const lander::LanderSample& s = trace[k];
   size_t set = 0;
-  while (std::stod(sets[set].Attribute("timestep")) != s.t_s) set += 4;
+  while (std::stod(sets[set].Attribute("timestep")) != s.t_s) set += kParts;
   const auto pads = testing_vtk::VtpPieces(ReadXmlFile(out + "/vtk/" + sets[set].Attribute("file")));
   ASSERT_EQ(pads.size(), 4u);
   const int elements = run.setup.model.legs[0].pad->surface.size();
@@ -67,11 +70,37 @@ TEST_F(LanderVtkTest, OutputHoldsTheLandingForParaViewAndThePosesInTheTrace) {
   const std::vector<double> normal = DataArray(pads[0].One("CellData"), "normal_stress_Pa").Numbers();
   EXPECT_GT(*std::max_element(normal.begin(), normal.end()), 1000.0);
   EXPECT_EQ(DataArray(pads[2].One("CellData"), "pad_number").Numbers().front(), 3.0);
+  // The elements' forces (the same evaluation as the stresses) sum to the pad's soil force of the trace.
+  for (int i = 0; i < lander::kNumLegs; ++i) {
+    const std::vector<double> f = DataArray(pads[i].One("CellData"), "element_force_N").Numbers();
+    ASSERT_EQ(f.size(), static_cast<size_t>(3 * elements));
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    for (int e = 0; e < elements; ++e) sum += Eigen::Vector3d(f[3 * e], f[3 * e + 1], f[3 * e + 2]);
+    EXPECT_LT((sum - s.pad_force_W[i]).norm(), 1e-10 * s.pad_force_W[i].norm() + 1e-12) << "pad " << i + 1;
+  }
+  EXPECT_GT(s.pad_force_W[0].norm(), 10.0);
   const auto legs = testing_vtk::VtpPieces(ReadXmlFile(out + "/vtk/" + sets[set + 2].Attribute("file")));
   const std::vector<double> points = DataArray(legs[0].One("Points"), "Points").Numbers();
   ASSERT_EQ(points.size(), 24u);
   for (int i = 0; i < lander::kNumLegs; ++i)
     for (int c = 0; c < 3; ++c) EXPECT_EQ(points[6 * i + 3 + c], s.p_WJ[i][c]);
+  const std::vector<double> leg_load = DataArray(legs[0].One("CellData"), "leg_force_N").Numbers();
+  for (int i = 0; i < lander::kNumLegs; ++i) EXPECT_EQ(leg_load[i], LegAxialForce(run.scenario.lander, s, i));
+  EXPECT_GT(leg_load[0], 1.0);
+  // The crater under each pad: as deep as the pad in the soil (to the grid's resolution, below its
+  // deepest point), nowhere deeper.
+  const auto craters = testing_vtk::VtpPieces(ReadXmlFile(out + "/vtk/" + sets[set + 3].Attribute("file")));
+  ASSERT_EQ(craters.size(), 4u);
+  for (int i = 0; i < lander::kNumLegs; ++i) {
+    const std::vector<double> d = DataArray(craters[i].One("PointData"), "crater_depth_m").Numbers();
+    const double deepest = *std::max_element(d.begin(), d.end());
+    double deepest_so_far = 0.0;
+    for (size_t n = 0; n <= k; ++n) deepest_so_far = std::max(deepest_so_far, trace[n].pad_depth_m[i]);
+    EXPECT_LE(deepest, deepest_so_far + 1e-12) << "pad " << i + 1;
+    if (s.pad_depth_m[i] > 0.005) {
+      EXPECT_GT(deepest, 0.9 * s.pad_depth_m[i]) << "pad " << i + 1;
+    }
+  }
   // The soil shows both soils.
   const auto soil = testing_vtk::VtpPieces(ReadXmlFile(out + "/vtk/soil.vtp"));
   const std::vector<double> soils = DataArray(soil[0].One("CellData"), "soil").Numbers();
