@@ -17,7 +17,8 @@ using lander::kNumLegs;
 Eigen::Matrix3d Rotation(const Eigen::Vector4d& q) { return Eigen::Quaterniond(q[0], q[1], q[2], q[3]).toRotationMatrix(); }
 
 // The soil stresses on pad i at sample s. A free pad: RFT under the soil at its joint, with the
-// lander's low-speed ramp (LanderModel::soil_ramp_speed_m_s, as FreePadSoilWrench applies it). A held
+// lander's low-speed ramp (LanderModel::soil_ramp_speed_m_s and soil_ramp, as FreePadSoilWrench
+// applies it: on each element, or on the whole pad). A held
 // pad carries a constraint force, not an RFT stress: its elements show 0 (its `held` and
 // `pad_force_N` fields say so).
 void PadStresses(const LanderRun& run, const lander::LanderSample& s, int i, rft::ElementStresses* out) {
@@ -26,10 +27,14 @@ void PadStresses(const LanderRun& run, const lander::LanderSample& s, int i, rft
   const rft::SoilContactModel& contact = terrain.soils[terrain.SoilAt(s.p_WJ[i].x(), s.p_WJ[i].y())].contact;
   rft::PadKinematics k{Rotation(s.q_WP[i]), s.p_WJ[i], s.v_WJ_W[i], s.w_WP_W[i]};
   if (contact.has_janosi_shear()) k.shear_mobilisation = contact.ShearMobilisation(s.shear_displacement_m[i]);
+  const lander::LanderModel& model = run.setup.model;
+  const bool per_element = model.soil_ramp == lander::SoilRamp::kElement;
+  if (per_element) k.element_ramp_speed_m_s = model.soil_ramp_speed_m_s;
   rft::ComputeElementStresses(leg.pad->surface, k, *terrain.surface, *contact.law, contact.pad_terms.depth, out);
   const double radius = leg.pad->vertices_B.colwise().norm().maxCoeff();
   const double speed = s.v_WJ_W[i].norm() + s.w_WP_W[i].norm() * radius;
-  const double scale = s.pad_held[i] ? 0.0 : std::min(speed / run.setup.model.soil_ramp_speed_m_s, 1.0);
+  const double pad_ramp = per_element ? 1.0 : std::min(speed / model.soil_ramp_speed_m_s, 1.0);
+  const double scale = s.pad_held[i] ? 0.0 : pad_ramp;
   if (scale == 1.0) return;
   out->force_W *= scale;
   out->normal_Pa *= scale;
