@@ -222,7 +222,7 @@ SubsetEstimate EstimateSubset(const LimitStateBatch& g, int dimension, const Sub
   level.g = evaluate(level.u);
   int64_t level_evaluations = r.evaluations, accepted = 0;
 
-  double log_probability = 0.0, cov2 = 0.0;
+  double log_probability = 0.0, cov2 = 0.0, cov_sum = 0.0;
   double previous_threshold = std::numeric_limits<double>::infinity();
   for (int i = 0;; ++i) {
     std::vector<int64_t> order(static_cast<size_t>(n));
@@ -248,6 +248,7 @@ SubsetEstimate EstimateSubset(const LimitStateBatch& g, int dimension, const Sub
     r.levels.push_back(s);
     log_probability += p > 0.0 ? std::log(p) : -std::numeric_limits<double>::infinity();
     cov2 += s.cov * s.cov;
+    cov_sum += s.cov;
     if (last) {
       r.reached_failure = failing >= chains;
       break;
@@ -262,8 +263,10 @@ SubsetEstimate EstimateSubset(const LimitStateBatch& g, int dimension, const Sub
     previous_threshold = midpoint;
   }
   r.probability = std::exp(log_probability);
-  r.cov = r.probability > 0.0 ? std::sqrt(cov2) : std::numeric_limits<double>::infinity();
-  r.interval = LognormalInterval(r.probability, r.cov, NormalZ(o.confidence));
+  const double infinite = std::numeric_limits<double>::infinity();
+  r.cov = r.probability > 0.0 ? std::sqrt(cov2) : infinite;
+  r.cov_upper = r.probability > 0.0 ? cov_sum : infinite;
+  r.interval = LognormalInterval(r.probability, r.cov_upper, NormalZ(o.confidence));
   return r;
 }
 

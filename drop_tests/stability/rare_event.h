@@ -76,10 +76,16 @@ struct SubsetEstimate : RareEventEstimate {
   // 0: then probability is p0^(levels - 1) times the last level's failing fraction (often 0) and
   // says little.
   bool reached_failure = false;
+  // Au & Beck's bound for fully correlated levels, sum of delta_i (cov is theirs for uncorrelated
+  // levels, sqrt(sum delta_i^2)): the interval is built on this one.
+  double cov_upper = 0.0;
 };
 // P = p0^(m-1) P_m; CoV^2 = sum of the levels' delta_i^2 (Au & Beck 2001, eqs. 27-29):
 // delta_1^2 = (1 - P_1) / (N P_1), delta_i^2 = (1 - P_i) / (N P_i) (1 + gamma_i) with gamma_i from
-// the chains' indicator autocorrelation; the interval is lognormal with that CoV.
+// the chains' indicator autocorrelation. The interval is lognormal with the CoV of fully
+// correlated levels, cov_upper = sum of delta_i: the sum of squares leaves out the levels'
+// correlation, and an interval on it covered the exact P in 90 % of 2,000 seeds at 95 % (99 % on
+// cov_upper: conservative).
 SubsetEstimate EstimateSubset(const LimitStateBatch& g, int dimension, const SubsetOptions& options);
 
 // ---- Importance sampling ------------------------------------------------------------------
