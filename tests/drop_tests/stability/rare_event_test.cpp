@@ -142,9 +142,9 @@ TEST(RareEvent, SubsetSimulationReachesOneInTenThousandWithinTwentyThousandLandi
     ASSERT_EQ(s.design_point.size(), d);
     EXPECT_LE(Direction(d).dot(s.design_point), s.design_point.norm());
     EXPECT_GE(s.cov_upper, s.cov);
-    std::printf("[ rare     ] d = %d: P = %.4g, CoV %.3f (upper %.3f), %lld evaluations, %zu levels, 99.9 %% interval [%.4g, %.4g]\n",
+    std::printf("[ rare     ] d = %d: P = %.4g, CoV %.3f (upper %.3f), %lld evaluations, %zu levels, acceptance %.2f, 99.9 %% interval [%.4g, %.4g]\n",
                 d, s.probability, s.cov, s.cov_upper, static_cast<long long>(s.evaluations), s.levels.size(),
-                s.interval.low, s.interval.high);
+                s.levels[1].acceptance_rate, s.interval.low, s.interval.high);
   }
 }
 
@@ -181,6 +181,7 @@ TEST(RareEvent, ParabolicMarginIsNotLinear) {
   constexpr int kD = 4;
   const double beta = 3.0, kappa = 0.3;
   const double exact = ParabolicProbability(beta, kappa, kD);
+  std::printf("[ parabola ] P = %.5g = %.4f Phi(-beta)\n", exact, exact / NormalTail(beta));
   // Breitung's asymptote Phi(-beta) (1 + beta kappa)^(-(d-1)/2) is close: the quadrature is right.
   EXPECT_NEAR(exact / (NormalTail(beta) * std::pow(1.0 + beta * kappa, -0.5 * (kD - 1))), 1.0, 0.15);
   // ... and far from the linear margin's Phi(-beta): a linear-only estimator would miss it.
