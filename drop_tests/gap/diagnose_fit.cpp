@@ -21,15 +21,42 @@ namespace touchdown::gap {
 
 namespace {
 
-// Robust sensor-noise estimate: for white noise sigma, second differences have sd sqrt(6) sigma;
-// the median absolute value ignores the few samples at impact and stop.
-double NoiseEstimate(const std::vector<double>& y) {
-  if (y.size() < 5) return 0.0;
-  std::vector<double> d2;
-  for (size_t i = 1; i + 1 < y.size(); ++i) d2.push_back(std::abs(y[i + 1] - 2 * y[i] + y[i - 1]));
-  std::nth_element(d2.begin(), d2.begin() + d2.size() / 2, d2.end());
-  return 1.4826 * d2[d2.size() / 2] / std::sqrt(6.0);
+// Sensor noise. The force sensor's noise is read where the recorded force is constant: at rest,
+// after the pad has stopped, where second differences leave only noise (a linear drift cancels).
+// One sensor is assumed per dataset, so the rest phases of all drops are pooled: a 1 kHz record
+// holds only 5-8 rest samples a drop. Second differences of the whole stroke carry the signal's own
+// curvature (1-5x the noise on 20-30 sample strokes); third differences, the fallback for data with
+// no rest phase, carry less of it (about 1.3x). Robust scale: 1.4826 x the median absolute value.
+double RobustScale(std::vector<double> v, double difference_variance) {
+  if (v.empty()) return 0.0;
+  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+  return 1.4826 * v[v.size() / 2] / std::sqrt(difference_variance);
 }
+
+// |second differences| of the force over the trailing samples where the penetration stays within
+// 1 % of the stroke of its final value, less the first (a period mean may straddle the stop).
+std::vector<double> RestSecondDifferences(const dataset::DatasetTrace& tr) {
+  const std::vector<double>& z = tr.penetration_m;
+  const size_t n = z.size(), tail = std::max<size_t>(1, std::min<size_t>(5, n / 4));
+  std::vector<double> last(z.end() - static_cast<std::ptrdiff_t>(tail), z.end());
+  std::nth_element(last.begin(), last.begin() + last.size() / 2, last.end());
+  const double z_final = last[last.size() / 2];
+  const double band = 0.01 * std::max(*std::max_element(z.begin(), z.end()), 1e-9);
+  size_t first = n;
+  while (first > 0 && std::abs(z[first - 1] - z_final) <= band) --first;
+  std::vector<double> d2;
+  for (size_t i = first + 2; i + 1 < n; ++i)
+    d2.push_back(std::abs(tr.force_N[i + 1] - 2 * tr.force_N[i] + tr.force_N[i - 1]));
+  return d2;
+}
+
+double StrokeNoiseEstimate(const std::vector<double>& y) {
+  std::vector<double> d3;
+  for (size_t i = 3; i < y.size(); ++i) d3.push_back(std::abs(y[i] - 3 * y[i - 1] + 3 * y[i - 2] - y[i - 3]));
+  return RobustScale(std::move(d3), 20.0);
+}
+
+constexpr size_t kMinRestDifferences = 20;
 
 struct Layout {
   std::vector<std::string> effect_ids;
@@ -194,6 +221,7 @@ FitProblem MakeFitProblem(const dataset::Dataset& ds, const std::vector<bool>& h
   p.rig.integrator.rtol = 1e-8;
   p.rig.integrator.atol = 1e-13;
   std::map<std::string, int> pads, soils;
+  std::vector<double> rest_differences;
   for (size_t i = 0; i < ds.drops.size(); ++i) {
     const dataset::DatasetDrop& dd = ds.drops[i];
     const std::string pad_ref = ds.PadReference(dd), soil_ref = ds.SoilReference(dd);
@@ -232,9 +260,16 @@ FitProblem MakeFitProblem(const dataset::Dataset& ds, const std::vector<bool>& h
     d.force_scale_N = std::max(*std::max_element(dd.trace.force_N.begin(), dd.trace.force_N.end()), 1e-9);
     d.penetration_scale_m =
         std::max(*std::max_element(dd.trace.penetration_m.begin(), dd.trace.penetration_m.end()), 1e-9);
-    d.noise_force_N = NoiseEstimate(dd.trace.force_N);
+    d.noise_force_N = StrokeNoiseEstimate(dd.trace.force_N);
+    for (double r : RestSecondDifferences(dd.trace)) rest_differences.push_back(r);
     d.sample_period_s = dataset::SamplePeriod(dd.trace);
     p.drops.push_back(d);
+  }
+  // Enough rest samples for a pooled estimate (its median's relative error about 1.2/sqrt(count)):
+  // every drop gets the one sensor's noise; otherwise each keeps its own stroke estimate.
+  if (rest_differences.size() >= kMinRestDifferences) {
+    const double sigma_N = RobustScale(std::move(rest_differences), 6.0);
+    for (FitDrop& d : p.drops) d.noise_force_N = sigma_N;
   }
   SetCandidateTerms(p);
   return p;

@@ -39,7 +39,7 @@ struct FitDrop {
   const dataset::DatasetTrace* trace = nullptr;
   double force_scale_N = 1.0;        // max measured force
   double penetration_scale_m = 1.0;  // max measured penetration
-  double noise_force_N = 0.0;        // estimated sensor noise (robust, from second differences)
+  double noise_force_N = 0.0;        // estimated sensor noise (at rest, pooled over the drops; diagnose_fit.cpp)
   double sample_period_s = 0.0;      // of its trace (dataset::SamplePeriod): what a sample averages over
 };
 

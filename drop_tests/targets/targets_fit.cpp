@@ -187,6 +187,18 @@ void AddIntervals(ceres::Problem& problem, std::vector<double>& x, const Targets
   }
 }
 
+// Stops the solve once every fitted target is reproduced to a millionth of its uncertainty. Ceres'
+// own criteria are relative (to the cost, the parameters and the gradient), and an exactly
+// solvable file drives the cost to the simulations' rounding level (about 1e-18), where each
+// step's relative change in cost is of order one: without this it runs to its iteration cap.
+class ExactFitStop : public ceres::IterationCallback {
+ public:
+  static constexpr double kResidual = 1e-6;
+  ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
+    return s.cost <= 0.5 * kResidual * kResidual ? ceres::SOLVER_TERMINATE_SUCCESSFULLY : ceres::SOLVER_CONTINUE;
+  }
+};
+
 void Solve(const TargetsFile& file, TargetEvaluator& evaluator, const TargetsFitOptions& fit_options,
            std::vector<double>& x, TargetsFitResult& result) {
   SilenceCeresLogging();
@@ -212,12 +224,16 @@ void Solve(const TargetsFile& file, TargetEvaluator& evaluator, const TargetsFit
   options.function_tolerance = 1e-12;
   options.parameter_tolerance = 1e-10;
   options.gradient_tolerance = 1e-14;
+  ExactFitStop exact_fit_stop;
+  options.callbacks.push_back(&exact_fit_stop);
   ceres::Solver::Summary summary;
   ceres::Solve(options, &problem, &summary);
   if (failure) std::rethrow_exception(failure);
   result.iterations = int(summary.iterations.size()) - 1;
-  result.termination = summary.message;
-  result.converged = summary.termination_type == ceres::CONVERGENCE;
+  result.converged = summary.termination_type == ceres::CONVERGENCE || summary.termination_type == ceres::USER_SUCCESS;
+  result.termination = summary.termination_type == ceres::USER_SUCCESS
+                           ? "exact: every fitted target reproduced to 1e-6 of its uncertainty"
+                           : summary.message;
   for (size_t i = 0; i < x.size(); ++i) {
     result.parameters[i].value = FromFit(file.parameters[i], x[i]);
     result.parameters[i].at_bound = AtBound(file.parameters[i], result.parameters[i].value);

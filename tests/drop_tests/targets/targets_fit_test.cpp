@@ -90,6 +90,11 @@ TEST_F(TargetsFit, RecoversZetaAndACurvedProfileConstantJointly) {
   ASSERT_TRUE(fit.converged) << fit.termination;
   EXPECT_NEAR(fit.parameters[0].value, 2.5, 1e-5);
   EXPECT_NEAR(fit.parameters[1].value, 0.045, 1e-6);
+  // Exactly solvable: the fit stops once both targets are met to 1e-6 of their uncertainty, well
+  // before the iteration cap (30) at which Ceres' relative criteria alone would stop it.
+  EXPECT_EQ(fit.termination.rfind("exact:", 0), 0u) << fit.termination;
+  EXPECT_LT(fit.iterations, 15);
+  for (const TargetResult& t : fit.targets) EXPECT_LT(std::abs(t.residual), 1e-6);
 }
 
 TEST_F(TargetsFit, ABoundIsZeroInsideAndActiveOutside) {
