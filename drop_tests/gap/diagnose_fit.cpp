@@ -26,17 +26,20 @@ namespace {
 // One sensor is assumed per dataset, so the rest phases of all drops are pooled: a 1 kHz record
 // holds only 5-8 rest samples a drop. Second differences of the whole stroke carry the signal's own
 // curvature (1-5x the noise on 20-30 sample strokes); third differences, the fallback for data with
-// no rest phase, carry less of it (about 1.3x). Robust scale: 1.4826 x the median absolute value.
+// no rest phase, carry less of it. Robust scale: 1.4826 x the median absolute value.
 double RobustScale(std::vector<double> v, double difference_variance) {
   if (v.empty()) return 0.0;
   std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
   return 1.4826 * v[v.size() / 2] / std::sqrt(difference_variance);
 }
 
-// |second differences| of the force over the trailing samples where the penetration stays within
-// 1 % of the stroke of its final value, less the first (a period mean may straddle the stop).
+// |second differences| of the force at rest: the trailing samples whose penetration stays within
+// 1 % of the stroke of its final value, and that come two samples after the force's steepest fall
+// past its peak (the stop; a period mean may straddle it). The penetration band alone also takes in
+// the last samples of the stroke, where the pad still decelerates under the peak force.
 std::vector<double> RestSecondDifferences(const dataset::DatasetTrace& tr) {
   const std::vector<double>& z = tr.penetration_m;
+  const std::vector<double>& f = tr.force_N;
   const size_t n = z.size(), tail = std::max<size_t>(1, std::min<size_t>(5, n / 4));
   std::vector<double> last(z.end() - static_cast<std::ptrdiff_t>(tail), z.end());
   std::nth_element(last.begin(), last.begin() + last.size() / 2, last.end());
@@ -44,9 +47,13 @@ std::vector<double> RestSecondDifferences(const dataset::DatasetTrace& tr) {
   const double band = 0.01 * std::max(*std::max_element(z.begin(), z.end()), 1e-9);
   size_t first = n;
   while (first > 0 && std::abs(z[first - 1] - z_final) <= band) --first;
+  size_t fall = static_cast<size_t>(std::max_element(f.begin(), f.end()) - f.begin());
+  double steepest = 0.0;
+  for (size_t i = fall; i + 1 < n; ++i)
+    if (f[i + 1] - f[i] < steepest) steepest = f[i + 1] - f[i], fall = i;
+  first = std::max(first, fall + 2);
   std::vector<double> d2;
-  for (size_t i = first + 2; i + 1 < n; ++i)
-    d2.push_back(std::abs(tr.force_N[i + 1] - 2 * tr.force_N[i] + tr.force_N[i - 1]));
+  for (size_t i = first + 1; i + 1 < n; ++i) d2.push_back(std::abs(f[i + 1] - 2 * f[i] + f[i - 1]));
   return d2;
 }
 
