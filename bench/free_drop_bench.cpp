@@ -1,7 +1,7 @@
 // A free 6-DOF pad drop (3D contact) with a meshed pad of about 5k triangles: the flat pad revolved
 // at 96 rim segments. Target: under 50 ms per drop on one core. Counters report the
 // mesh size and the integrator's work so a slow case shows why it is slow. TD_RTOL overrides the
-// relative tolerance (convergence studies);
+// relative tolerance (convergence studies), TD_SEGMENTS the rim segments (mesh convergence);
 // TD_MSBJ sets the most steps between Jacobians; TD_DQ_JACOBIAN=1 takes CVODE's difference-quotient Jacobian instead of the structured one.
 #include <benchmark/benchmark.h>
 
@@ -22,7 +22,8 @@ constexpr int kRimSegments = 96;  // about 5k triangles for the flat pad
 void RunFreeDrop(benchmark::State& state, const char* pad_name, double tilt_deg, double horizontal_m_s,
                  double spin_rad_s) {
   const touchdown::io::PadSpec pad = touchdown::io::LoadPad(pad_name);
-  const geom::PadBody body = geom::RevolveProfileToBody(pad.profile, kRimSegments, pad.mass_kg,
+  const int segments = getenv("TD_SEGMENTS") ? atoi(getenv("TD_SEGMENTS")) : kRimSegments;
+  const geom::PadBody body = geom::RevolveProfileToBody(pad.profile, segments, pad.mass_kg,
                                                         Eigen::Vector3d(0.0, 0.0, pad.profile.thickness_m()));
   const rft::SoilParameters soil = touchdown::io::LoadSoil("fjs1_lp");
   const rft::SoilContactModel law = rft::MakeSoilContactModel(rft::LawKind::kLi2013, soil, rft::kEarthGravity_m_s2, {});
