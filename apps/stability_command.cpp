@@ -4,15 +4,18 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <optional>
 
 #include "apps/command_help.h"
 #include "apps/commands.h"
 #include "apps/sweep_run_flags.h"
+#include "drop_tests/io/dataset_csv.h"
 #include "drop_tests/io/output_path.h"
 #include "drop_tests/stability/study.h"
 #include "drop_tests/stability/study_followups.h"
 #include "drop_tests/stability/study_outputs.h"
+#include "drop_tests/stability/study_rare_event.h"
 #include "drop_tests/sweep/sweep.h"
 #include "drop_tests/sweep/sweep_mpi.h"
 #include "drop_tests/sweep/sweep_stop.h"
@@ -24,7 +27,7 @@ namespace touchdown::app {
 
 namespace {
 struct StabilityArgs {
-  std::string study, out, samples;
+  std::string study, out, samples, method = "monte_carlo";
   SweepRunFlags run;
 };
 
@@ -92,6 +95,13 @@ void PrintStudyResult(const stability::Study& study, const stability::StudySumma
     std::cout << "  " << s.swung_past_edge_on << " of the landings (" << s.tipped_swung_past_edge_on
               << " of the tip-overs) swung a pad past edge-on on its ball joint: these answers depend on the joints' "
                  "range (legs.cone_limit; docs/stability_studies.md, \"The pads' ball joints\")\n";
+  if (s.margin_checked > 0)
+    std::cout << "  tip-over margin (least distance of the centre of mass inside the support polygon): its sign "
+              << (s.margin_disagreements == 0 ? "agrees with the outcome on all " + std::to_string(s.margin_checked)
+                                              : "DISAGREES with the outcome on " +
+                                                    std::to_string(s.margin_disagreements) + " of " +
+                                                    std::to_string(s.margin_checked))
+              << " landings\n";
   PrintFollowUps(s);
   std::cout << "wrote " << out << "/ (summary.json, percentiles.csv" << (study.map ? ", tip_over_map.csv" : "")
             << ", plots/)\n";
@@ -105,6 +115,63 @@ void RequireACompletedLanding(const stability::Study& study, const stability::St
   throw integ::IntegrationFailure("stability " + study.plan.name + ": all " + std::to_string(s.failed) +
                                   " landings failed, so there is no tip-over probability (first: " + s.first_failure +
                                   "); " + out + "/summary.json records them, and a rerun runs them again");
+}
+// The estimate of a rare-event method, its design points, then the analysis of its first level.
+void PrintRareEventResult(const stability::Study& study, const stability::RareEventStudyResult& r) {
+  const stability::RareEventEstimate& e = r.estimate;
+  std::cout << "stability " << study.plan.name << " (" << stability::StudyMethodName(r.method) << "): " << r.landings
+            << " landings spent"
+            << (r.failed > 0 ? " (" + std::to_string(r.failed) + " failed, counted as not tipped over)" : std::string())
+            << ": P(tip-over) = " << std::setprecision(4) << e.probability << ", 95 % interval [" << e.interval.low
+            << ", " << e.interval.high << "], coefficient of variation " << e.cov << "\n";
+  if (r.subset && !r.subset->reached_failure)
+    std::cout << "  the subset levels did not reach the tip-over boundary within " << r.subset->levels.size()
+              << " levels: the estimate is a bound, not a value\n";
+  for (const stability::RareEventDesignPoint& p : r.design_points) {
+    std::cout << "  design point " << p.drop_id << " (beta " << p.beta << "):";
+    const nlohmann::json conditions = stability::StudyVariablesJson(study, p.u);
+    for (const auto& [key, value] : conditions.items())
+      std::cout << " " << key << " " << (value.is_number() ? io::FormatNumber(value.get<double>()) : value.dump());
+    std::cout << "\n";
+  }
+  if (r.margin_disagreements > 0)
+    std::cout << "  " << r.margin_disagreements << " landing(s) whose tip-over margin disagrees with the outcome\n";
+  std::cout << "  the first level, " << r.samples << " plain Monte Carlo landings of the study's distribution:\n";
+}
+
+// `--method subset|importance`: the estimator's landings into OUT/<method>/, then the analysis
+// of its first level with the estimate in summary.json.
+void RunRareEventCommand(const StabilityArgs& args, const stability::Study& study, stability::StudyMethod method,
+                         int64_t samples, const sweep::SweepRunOptions& options) {
+  const stability::RareEventStudyResult r = stability::RunRareEventStudy(
+      study, method, samples, args.out, options, options.progress == sweep::ProgressMode::kNone ? nullptr : &std::cerr);
+  if (r.stop_signal != 0) {
+    std::cout << "stability " << study.plan.name << ": stopped by signal " << r.stop_signal
+              << " after committing the landings in flight; run the same command again to resume\n";
+    std::exit(128 + r.stop_signal);
+  }
+  stability::Study first = study;
+  first.plan = r.first_level_plan;
+  stability::StudyFollowUps f;
+  f.records = r.first_level;
+  f.recheck.enabled = false;
+  f.joint_range.enabled = false;
+  f.joint_range.reason = "not run with a rare-event method";
+  nlohmann::json overrides = stability::RareEventJson(study, r);
+  overrides = {{"method", stability::StudyMethodName(method)},
+               {"tip_over_probability", r.estimate.probability},
+               {"tip_over_probability_interval_95", {r.estimate.interval.low, r.estimate.interval.high}},
+               {"interval_method", overrides["interval_method"]},
+               {"landings_meaning",
+                "landings, tipped_over, percentiles, map, worst cases and tip_overs describe the subset run's first "
+                "level (plain Monte Carlo draws of the study's distribution); tip_over_probability is the "
+                "estimator's (rare_event)"},
+               {"rare_event", overrides}};
+  const stability::StudySummary summary = stability::WriteStudyAnalysis(first, args.out, f, &overrides);
+  std::cout << "stability " << study.plan.name << ": " << r.computed << " landings run now, " << r.already_done
+            << " already done\n";
+  PrintRareEventResult(study, r);
+  PrintStudyResult(first, summary, args.out);
 }
 }  // namespace
 
@@ -120,14 +187,34 @@ void AddStabilityCommand(CLI::App& app) {
   CLI::Option* samples = cmd->add_option(
       "--samples", args->samples,
       "random samples instead of the study's, 1 to 1e9 (a quick look; recorded in summary.json)");
+  cmd->add_option("--method", args->method,
+                  "tip-over probability estimator: monte_carlo (the study's landings, default), subset (subset "
+                  "simulation on the tip-over margin), importance (sampling around the subset run's design point); "
+                  "with subset or importance, --samples is the landings per level / of the importance sample "
+                  "(default 1000, a multiple of 10)");
   AddSweepRunFlags(cmd, &args->run, "landings");
   cmd->callback([args, samples] {
+    const stability::StudyMethod method = stability::ParseStudyMethod(args->method);
     args->study = ResolveCommandInput("stability", args->study);
-    const std::optional<int64_t> override_samples =
+    const std::optional<int64_t> given_samples =
         samples->count() > 0 ? std::optional<int64_t>(ParseSamples(args->samples)) : std::nullopt;
+    const bool rare_event = method != stability::StudyMethod::kMonteCarlo;
+    const std::optional<int64_t> override_samples = rare_event ? std::nullopt : given_samples;
     stability::Study study = stability::LoadStudy(args->study, args->run.model, override_samples);
     ApplyDropLimits(args->run, &study.plan);
     sweep::SweepRunOptions options = RunOptionsFrom(args->run);
+    if (rare_event) {
+      const int64_t per_level = given_samples.value_or(stability::kDefaultRareEventSamples);
+      stability::RequireRareEventStudy(study, method, per_level);
+      if (options.shard.count > 1 || sweep::LaunchedByMpirun())
+        throw MakeInputError("", "--method", args->method + " runs on one process and its threads (its landings "
+                                             "depend on the ones before): no --shard, no mpirun");
+      io::OpenOutputDirectory({args->out, {args->study, args->run.model}}, io::OutputKind::kSweep);
+      const sweep::StopOnSignals stop_on_signals;
+      options.stop = &sweep::StopOnSignals::flag();
+      RunRareEventCommand(*args, study, method, per_level, options);
+      return;
+    }
     io::OpenOutputDirectory({args->out, {args->study, args->run.model}}, io::OutputKind::kSweep);
     const sweep::StopOnSignals stop_on_signals;
     options.stop = &sweep::StopOnSignals::flag();

@@ -8,6 +8,7 @@
 //   plots/tip_over_map.{png,svg} the map with the p = 0.5 boundary and the landings
 //   plots/exceedance.{png,svg}   P[X > x] of max tilt and of pad penetration
 //   plots/histograms.{png,svg}   max tilt, final tilt, deepest pad penetration, peak leg load
+#include <nlohmann/json_fwd.hpp>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,9 @@ std::vector<sweep::DropRecord> ReadStudyRecords(const Study& study, const std::s
 // Replaces the analysis of the records the follow-ups leave (the re-checked landings the reference
 // model's) as one whole (io::ReplaceDerivedOutputs): summary.json last, so its presence means the
 // analysis is complete.
-StudySummary WriteStudyAnalysis(const Study& study, const std::string& out_dir, const StudyFollowUps& follow_ups);
+// `overrides`, when given, replaces or adds summary.json's top-level keys (a rare-event method's
+// probability, interval and report over the analysis of its first level's landings).
+StudySummary WriteStudyAnalysis(const Study& study, const std::string& out_dir, const StudyFollowUps& follow_ups,
+                                const nlohmann::json* overrides = nullptr);
 
 }  // namespace touchdown::stability

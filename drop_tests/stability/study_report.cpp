@@ -27,7 +27,8 @@ std::vector<sweep::DropRecord> ReadStudyRecords(const Study& study, const std::s
   return db.ReadAll(/*with_traces=*/false);
 }
 
-StudySummary WriteStudyAnalysis(const Study& study, const std::string& out_dir, const StudyFollowUps& follow_ups) {
+StudySummary WriteStudyAnalysis(const Study& study, const std::string& out_dir, const StudyFollowUps& follow_ups,
+                                const nlohmann::json* overrides) {
   const std::vector<sweep::DropRecord>& records = follow_ups.records;
   StudySummary summary = Summarise(study, records);
   summary.recheck = follow_ups.recheck;
@@ -36,7 +37,11 @@ StudySummary WriteStudyAnalysis(const Study& study, const std::string& out_dir, 
     WriteStudyTables(study, summary, staging);
     WriteStudyPlots(study, summary, records, staging);
     io::WriteFileAtomically((std::filesystem::path(staging) / "summary.json").string(),
-                            [&](std::ostream& out) { out << SummaryJson(study, summary).dump(2) << '\n'; });
+                            [&](std::ostream& out) {
+                              nlohmann::json j = SummaryJson(study, summary);
+                              if (overrides) j.update(*overrides);
+                              out << j.dump(2) << '\n';
+                            });
   });
   return summary;
 }

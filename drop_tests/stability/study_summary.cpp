@@ -98,6 +98,11 @@ double MapCoordinate(const Study& study, const MapAxis& axis, int64_t index) {
 
 bool StayedUp(const DropRecord& r) { return r.ok && !Tipped(r); }
 
+bool MarginAgreesWithOutcome(const DropRecord& r) {
+  if (!r.ok || std::isnan(r.min_stability_margin_m)) return true;
+  return (r.min_stability_margin_m <= 0.0) == Tipped(r);
+}
+
 StudySummary Summarise(const Study& study, const std::vector<DropRecord>& records) {
   StudySummary s;
   s.planned = study.plan.size();
@@ -109,6 +114,9 @@ StudySummary Summarise(const Study& study, const std::vector<DropRecord>& record
     }
     ++s.landings;
     s.tipped += Tipped(r);
+    s.margin_checked += !std::isnan(r.min_stability_margin_m);
+    if (!MarginAgreesWithOutcome(r) && s.margin_disagreements++ < study.max_tip_over_cases)
+      s.margin_disagreeing.push_back(r.drop_id);
     const bool past_edge_on = r.max_joint_swing_deg > kEdgeOnSwingDeg;  // NaN (an older database): no
     s.swung_past_edge_on += past_edge_on;
     s.tipped_swung_past_edge_on += past_edge_on && Tipped(r);
@@ -163,6 +171,7 @@ nlohmann::json LandingJson(const DropRecord& r) {
           {"tipped_over", r.tipped_over == 1.0},
           {"max_tilt_deg", io::FiniteOrNull(r.max_tilt_deg)},
           {"final_tilt_deg", io::FiniteOrNull(r.final_tilt_deg)},
+          {"min_stability_margin_m", io::FiniteOrNull(r.min_stability_margin_m)},
           {"max_pad_penetration_m", io::FiniteOrNull(r.final_penetration_m)},
           {"conditions",
            {{"impact_speed_m_s", io::FiniteOrNull(r.impact_speed_m_s)},
@@ -292,6 +301,14 @@ nlohmann::json SummaryJson(const Study& study, const StudySummary& s) {
                                               " failed (first: " + s.first_failure + ")"
                                         : "no landing completed";
   AddProbability(summary, s.landings, s.tip_over_probability, s.interval, none);
+  summary["tip_over_margin"] = {
+      {"definition",
+       "min_stability_margin_m: the least horizontal distance of the lander's centre of mass inside the support "
+       "polygon of the pads' ball-joint centres over the landing (samples and events), the quantity whose crossing "
+       "of zero is the tip-over event: <= 0 exactly when the lander tipped over"},
+      {"landings_checked", s.margin_checked},
+      {"disagreements", s.margin_disagreements},
+      {"disagreeing_landings", s.margin_disagreeing}};
   if (s.recheck) summary["recheck"] = RecheckJson(*s.recheck);
   if (s.joint_range) summary["joint_range_sensitivity"] = JointRangeJson(*s.joint_range);
   return summary;

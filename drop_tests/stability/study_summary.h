@@ -59,6 +59,11 @@ struct StudySummary {
   std::vector<MapCell> map;  // x bin major (cell ix * y bins + iy); empty without a map
   std::vector<sweep::DropRecord> worst_tilt;  // landings that stayed up with the largest max tilts, largest first
   std::vector<sweep::DropRecord> tip_overs;   // in index order, at most max_tip_over_cases
+  // The tip-over margin (sweep::DropRecord::min_stability_margin_m) against the outcome: landings
+  // with a margin (a database written before it has none), and those whose margin's sign
+  // disagrees with their outcome (margin <= 0 and stayed up, or > 0 and tipped over), with ids.
+  int64_t margin_checked = 0, margin_disagreements = 0;
+  std::vector<std::string> margin_disagreeing;  // drop ids, index order, at most max_tip_over_cases
   // The follow-ups (study_followups.h) the records above include; absent: not run.
   std::optional<RecheckReport> recheck;
   std::optional<JointRangeReport> joint_range;
@@ -70,6 +75,9 @@ double MapCoordinate(const Study& study, const MapAxis& axis, int64_t index);
 // Whether a landing completed without tipping over: the landings percentiles, exceedance curves
 // and histograms describe.
 bool StayedUp(const sweep::DropRecord& r);
+// Whether a completed landing's tip-over margin has the sign of its outcome: <= 0 exactly when it
+// tipped over. True for a landing without a margin (NaN) or one that failed: nothing to check.
+bool MarginAgreesWithOutcome(const sweep::DropRecord& r);
 // The summary of the landings `records` (the whole study, in index order).
 StudySummary Summarise(const Study& study, const std::vector<sweep::DropRecord>& records);
 nlohmann::json SummaryJson(const Study& study, const StudySummary& summary);

@@ -60,7 +60,7 @@ constexpr const char* kNumberColumns5[] = {
     "max_tilt_deg", "peak_leg_force_N", "max_stroke_m", "pad1_peak_force_N", "pad2_peak_force_N",
     "pad3_peak_force_N", "pad4_peak_force_N", "slope_deg", "downhill_azimuth_deg", "yaw_relative_to_slope_deg",
     "horizontal_azimuth_deg", "angular_rate_x_deg_s", "angular_rate_y_deg_s", "angular_rate_z_deg_s",
-    "max_joint_swing_deg", "tip_over_edge", "tip_over_azimuth_deg"};
+    "max_joint_swing_deg", "tip_over_edge", "tip_over_azimuth_deg", "min_stability_margin_m"};
 constexpr size_t kNumbers5 = std::size(kNumberColumns5);
 // The work limit a failed drop ran out of, so a rerun with a higher limit retries it.
 constexpr const char* kLimitColumn = "failure_limit";
@@ -87,7 +87,7 @@ auto Numbers5(R& r) {
                     &r.pad_peak_force_N[1], &r.pad_peak_force_N[2], &r.pad_peak_force_N[3], &r.slope_deg,
                     &r.downhill_azimuth_deg, &r.yaw_relative_to_slope_deg, &r.horizontal_azimuth_deg,
                     &r.angular_rate_deg_s[0], &r.angular_rate_deg_s[1], &r.angular_rate_deg_s[2],
-                    &r.max_joint_swing_deg, &r.tip_over_edge, &r.tip_over_azimuth_deg};
+                    &r.max_joint_swing_deg, &r.tip_over_edge, &r.tip_over_azimuth_deg, &r.min_stability_margin_m};
 }
 static_assert(std::tuple_size_v<decltype(Numbers5(std::declval<DropRecord&>()))> == kNumbers5);
 template <typename R>

@@ -15,7 +15,7 @@
 //         max_tilt_deg, peak_leg_force_N, max_stroke_m, pad1..pad4_peak_force_N,
 //         slope_deg, downhill_azimuth_deg, yaw_relative_to_slope_deg, horizontal_azimuth_deg,
 //         angular_rate_x_deg_s, angular_rate_y_deg_s, angular_rate_z_deg_s,
-//         max_joint_swing_deg, tip_over_edge, tip_over_azimuth_deg)
+//         max_joint_swing_deg, tip_over_edge, tip_over_azimuth_deg, min_stability_margin_m)
 //   traces(drop_index PRIMARY KEY, samples, data BLOB of float64 [t, d, v, F] per sample)
 //
 // A batch of drops and their traces go in one transaction (WAL journal), so a process killed
@@ -40,7 +40,7 @@ namespace touchdown::sweep {
 // of an older format can still be read: opening it adds the missing columns, NULL or ''. `sweep`
 // resumes only a database of this format. Which columns each format added: docs/reference.md,
 // "Sweep results".
-inline constexpr int kResultsDbVersion = 7;
+inline constexpr int kResultsDbVersion = 8;
 
 // What was dropped: the pad on the vertical rod, the free 6-DOF pad, or the four-legged lander.
 // The database keeps it as text (drop_kind 'rig'|'free'|'lander'), converted where it is read
@@ -106,6 +106,10 @@ struct DropRecord {
   // horizontal_azimuth_deg) (lander::LanderRunResult::tip_over_edge, tip_over_azimuth_rad).
   double tip_over_edge = std::numeric_limits<double>::quiet_NaN();
   double tip_over_azimuth_deg = std::numeric_limits<double>::quiet_NaN();
+  // Landers only (NaN otherwise): the least distance of the centre of mass inside the support
+  // polygon over the run (lander::LanderRunResult::min_stability_margin_m), <= 0 exactly when it
+  // tipped over.
+  double min_stability_margin_m = std::numeric_limits<double>::quiet_NaN();
   double peak_leg_force_N = std::numeric_limits<double>::quiet_NaN();
   double max_stroke_m = std::numeric_limits<double>::quiet_NaN();
   std::array<double, 4> pad_peak_force_N{std::numeric_limits<double>::quiet_NaN(),

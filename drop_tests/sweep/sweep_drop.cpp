@@ -244,6 +244,7 @@ DropRecord SimulateLanderSweepDrop(const SweepModels& models, const SweepDropPar
     r.tipped_over = l.tipped_over ? 1.0 : 0.0;
     r.max_tilt_deg = l.max_tilt_rad / kDeg;
     r.max_joint_swing_deg = l.max_joint_swing_rad / kDeg;
+    r.min_stability_margin_m = l.min_stability_margin_m;
     if (l.tipped_over) {
       r.tip_over_edge = l.tip_over_edge + 1;
       r.tip_over_azimuth_deg = l.tip_over_azimuth_rad / kDeg;

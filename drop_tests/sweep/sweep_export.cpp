@@ -212,7 +212,7 @@ const std::vector<std::string> kLanderExportColumns = {
     "pad3_peak_force_N", "pad4_peak_force_N", "slope_deg", "downhill_azimuth_deg", "yaw_relative_to_slope_deg",
     "horizontal_azimuth_deg", "angular_rate_x_deg_s", "angular_rate_y_deg_s", "angular_rate_z_deg_s",
     "max_joint_swing_deg",
-    "tip_over_edge", "tip_over_azimuth_deg"};
+    "tip_over_edge", "tip_over_azimuth_deg", "min_stability_margin_m"};
 
 namespace {
 // Every failed drop of the database (a second pass in index order, streamed).
@@ -270,7 +270,8 @@ ExportSummary ExportLanderSweep(const ResultsDb& db, const io::OutputTarget& dat
                              r.pad_peak_force_N[1], r.pad_peak_force_N[2], r.pad_peak_force_N[3], r.slope_deg,
                              r.downhill_azimuth_deg, r.yaw_relative_to_slope_deg, r.horizontal_azimuth_deg,
                              r.angular_rate_deg_s[0], r.angular_rate_deg_s[1], r.angular_rate_deg_s[2],
-                             r.max_joint_swing_deg, r.tip_over_edge, r.tip_over_azimuth_deg})
+                             r.max_joint_swing_deg, r.tip_over_edge, r.tip_over_azimuth_deg,
+                             r.min_stability_margin_m})
               out << ',' << (std::isfinite(v) ? io::FormatNumber(v) : "");
             out << '\n';
           },

@@ -325,8 +325,12 @@ SweepDropParams SweepPlan::DropAt(int64_t index) const {
     set[static_cast<int>(grid[k].param)] = true;
     g /= n;
   }
-  for (const SweepRandom& r : random) {
-    const double u = CounterUniform(seed, s, static_cast<uint64_t>(r.param));
+  const std::vector<double>* given = nullptr;
+  if (given_uniforms)
+    if (const auto it = given_uniforms->find(static_cast<int64_t>(s)); it != given_uniforms->end()) given = &it->second;
+  for (size_t k = 0; k < random.size(); ++k) {
+    const SweepRandom& r = random[k];
+    const double u = given ? (*given)[k] : CounterUniform(seed, s, static_cast<uint64_t>(r.param));
     double v;
     if (r.per_pad) {
       // One draw per pad, each on its own stream: pad i's soil does not depend on the others'.

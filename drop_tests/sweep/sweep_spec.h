@@ -87,6 +87,8 @@
 // from its index alone, independent of threads, ranks or shards.
 #include <array>
 #include <cstdint>
+#include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -197,6 +199,12 @@ struct SweepPlan {
   // part of DigestText, so a derived plan's database is never taken for the original's. Empty
   // for a plan as loaded (its digest as before); not written by WriteSweepPlan.
   std::string variant;
+  // Uniform draws given per sample in place of the counter draws: sample s's random[k] takes
+  // (*given_uniforms)[s][k] in [0, 1) when s is a key (the rest draw as usual). A stability study's
+  // rare-event estimators map their standard-normal points to the study's variables this way
+  // (drop_tests/stability/study_rare_event.h). Not part of DigestText: a plan that sets it names
+  // what chose the draws in `variant`. Not written by WriteSweepPlan.
+  std::shared_ptr<const std::map<int64_t, std::vector<double>>> given_uniforms;
 
   int64_t size() const;
   SweepDropParams DropAt(int64_t index) const;

@@ -171,6 +171,9 @@ void LanderHybrid::Record(double t, const Eigen::VectorXd& s) {
   x.potential_J = PotentialEnergy(model_, L_, s);
   x.dissipated_J = s[L_.work()];
   result_.max_tilt_rad = std::max(result_.max_tilt_rad, x.attitude.tilt_rad);
+  const Eigen::Vector3d com = LanderCentreOfMass(model_, e.pose);
+  for (int i = 0; i < kNumLegs; ++i)
+    result_.min_stability_margin_m = std::min(result_.min_stability_margin_m, InsideEdgeDistance(e.pose, i, com));
   if (result_.first_touchdown_s)
     result_.max_body_deceleration_m_s2 = std::max(result_.max_body_deceleration_m_s2, x.a_WB_W.z());
   result_.trace.push_back(x);

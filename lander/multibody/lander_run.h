@@ -114,6 +114,11 @@ struct LanderRunResult {
   // range (no cone_limit) allows.
   double max_joint_swing_rad = 0.0;
   bool tipped_over = false;
+  // The least StabilityMargin over the run (the samples and events, the tip-over event's state
+  // included) [m]: the centre of mass's horizontal distance inside the support polygon of the
+  // joint centres. It reaches 0 exactly where the tip-over event fires, so it is <= 0 when the
+  // lander tipped over and > 0 when it stayed up: the limit state of a rare-event study.
+  double min_stability_margin_m = std::numeric_limits<double>::infinity();
   // For a lander that tipped over, the support edge it went over (CriticalSupportEdge at the
   // tip-over event): from joint tip_over_edge to the next one clockwise (0-based; -1 when it did not
   // tip), and the azimuth of that edge's outward horizontal normal, the direction it fell [rad].

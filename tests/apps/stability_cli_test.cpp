@@ -213,6 +213,11 @@ TEST_F(StabilityCli, FollowUpsRecheckTheTipOverAndRunTheJointRangeOnce) {
   EXPECT_EQ(recheck["outcome_changed"], 0);
   EXPECT_EQ(recheck["changed_landings"].size(), 0u);
   EXPECT_EQ(j["tip_overs"][0]["drop_index"], 1);
+  // The tip-over margin's sign agrees with the outcome on both landings.
+  EXPECT_EQ(j["tip_over_margin"]["landings_checked"], 2);
+  EXPECT_EQ(j["tip_over_margin"]["disagreements"], 0);
+  EXPECT_LE(j["tip_overs"][0]["min_stability_margin_m"].get<double>(), 0.0);
+  EXPECT_GT(j["worst_max_tilt"][0]["min_stability_margin_m"].get<double>(), 0.0);
   EXPECT_LT(j["worst_max_tilt"][0]["max_tilt_deg"].get<double>(),
             recheck["tip_angle_deg"].get<double>() - recheck["margin_deg"].get<double>());
   const std::string rechecked = Rows(Path("one") + "/recheck/results.sqlite");
@@ -242,6 +247,36 @@ TEST_F(StabilityCli, FollowUpsRecheckTheTipOverAndRunTheJointRangeOnce) {
   EXPECT_EQ(Slurp(Path("two") + "/summary.json"), summary);
 }
 
+// `--method subset` on a few random landings of the coarse lander: the estimate, the landings it
+// spent and its design points in summary.json and on stdout, its landings under subset/.
+TEST_F(StabilityCli, SubsetMethodWritesItsEstimateAndDesignPoints) {
+  const std::string study = Write(
+      "study.yaml", "schema_version: 1\ntype: stability\nname: rare\nlander: {scenario: " +
+                        Write("coarse.yaml", kCoarseScenario) +
+                        "}\nfixed: {downhill_azimuth_deg: -90, yaw_relative_to_slope_deg: 90, horizontal_azimuth_deg: -90}\n"
+                        "random: {samples: 10, seed: 5, slope_deg: {uniform: [0, 20]},\n"
+                        "         horizontal_speed_m_s: {uniform: [0, 1.5]}}\n");
+  const StabilityRun r = Run({"stability", study, "--out", Path("subset"), "--method", "subset", "--samples", "10",
+                              "--threads", "2", "--progress", "none"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(Slurp(Path("subset") + "/summary.json"));
+  ASSERT_TRUE(j.contains("rare_event")) << j.dump();
+  const nlohmann::json& e = j["rare_event"];
+  EXPECT_EQ(j["method"], "subset");
+  EXPECT_EQ(e["method"], "subset");
+  EXPECT_EQ(j["tip_over_probability"], e["tip_over_probability"]);
+  EXPECT_GE(e["landings_spent"].get<int>(), 10);
+  EXPECT_EQ(e["margin_disagreements"], 0);
+  EXPECT_TRUE(e["coefficient_of_variation"].is_number()) << e.dump();
+  ASSERT_GE(e["design_points"].size(), 1u) << e.dump();
+  EXPECT_TRUE(e["design_points"][0]["conditions"]["slope_deg"].is_number());
+  EXPECT_EQ(j["landings"].get<int>() + j["landings_failed"].get<int>(), 10);  // the first level, analysed as a study
+  EXPECT_TRUE(std::filesystem::exists(Path("subset") + "/subset/results.sqlite"));
+  EXPECT_NE(r.out.find("(subset): " + std::to_string(e["landings_spent"].get<int>()) + " landings spent"),
+            std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("design point "), std::string::npos) << r.out;
+}
+
 TEST_F(StabilityCli, BadStudiesExitTwoWithOneLineNamingFileAndField) {
   struct Bad {
     std::string text, field;
@@ -259,6 +294,11 @@ TEST_F(StabilityCli, BadStudiesExitTwoWithOneLineNamingFileAndField) {
        "study.recheck.tilt_margin_deg", {}},
       {head + "grid: {slope_deg: [0, 5]}\nstudy: {recheck: {rtol: 1e-9, tolerance: 1}}\n", "study.recheck.tolerance",
        {}},
+      // The estimator: a name it knows, a study of random variables only, whole chains per level.
+      {head + "grid: {slope_deg: [0, 5]}\n", "--method", {"--method", "bisection"}},
+      {head + "grid: {slope_deg: [0, 5]}\n", "--method", {"--method", "subset"}},
+      {head + "random: {samples: 10, seed: 1, slope_deg: {uniform: [0, 5]}}\n", "--samples",
+       {"--method", "subset", "--samples", "15"}},
   };
   int k = 0;
   for (const Bad& bad : cases) {
@@ -270,7 +310,12 @@ TEST_F(StabilityCli, BadStudiesExitTwoWithOneLineNamingFileAndField) {
     EXPECT_EQ(r.status, 2) << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     EXPECT_NE(r.err.find(bad.field), std::string::npos) << r.err;
-    if (bad.field != "--samples") {
+    for (const std::string& value : {std::string("bisection"), std::string("15")}) {
+      if (std::find(bad.extra.begin(), bad.extra.end(), value) != bad.extra.end()) {
+        EXPECT_NE(r.err.find(value), std::string::npos) << r.err;
+      }
+    }
+    if (bad.field != "--samples" && bad.extra != std::vector<std::string>{"--method", "bisection"}) {
       EXPECT_NE(r.err.find(file), std::string::npos) << r.err;
     }
   }

@@ -78,7 +78,7 @@ LANDER_COLUMNS = (
     *(f"pad{i}_peak_force_N" for i in range(1, 5)),
     "slope_deg", "downhill_azimuth_deg", "yaw_relative_to_slope_deg", "horizontal_azimuth_deg",
     "angular_rate_x_deg_s", "angular_rate_y_deg_s", "angular_rate_z_deg_s",
-    "max_joint_swing_deg", "tip_over_edge", "tip_over_azimuth_deg",
+    "max_joint_swing_deg", "tip_over_edge", "tip_over_azimuth_deg", "min_stability_margin_m",
 )
 
 # read_sweep's `kind`: the drop kinds (drops.drop_kind) each keeps.

@@ -41,6 +41,10 @@ TEST_F(StudyLandings, LevelSlowSymmetricLandingsNeverTipOver) {
   EXPECT_NEAR(s.interval.high, 1.0 - std::sqrt(0.025), 1e-12);  // 0 of 2: 1 - 0.025^(1/2)
   EXPECT_EQ(s.unsettled, 0);
   EXPECT_LT(s.metrics.at(0).max, 0.01);  // symmetric: no tilt
+  // The tip-over margin stays well inside the support polygon, as the outcome says.
+  EXPECT_EQ(s.margin_checked, 2);
+  EXPECT_EQ(s.margin_disagreements, 0);
+  for (const sweep::DropRecord& r : s.worst_tilt) EXPECT_GT(r.min_stability_margin_m, 0.05) << r.drop_id;
   // Nothing near the boundary to re-check; the pads never reach their stops.
   ASSERT_TRUE(s.recheck && s.joint_range);
   EXPECT_EQ(s.recheck->rechecked, 0);
@@ -63,6 +67,13 @@ TEST_F(StudyLandings, SteepSlopeWithFastDownhillSpeedAlwaysTipsOver) {
   EXPECT_NEAR(s.interval.low, std::sqrt(0.025), 1e-12);  // 2 of 2: 0.025^(1/2)
   EXPECT_EQ(s.interval.high, 1.0);
   EXPECT_EQ(s.tip_overs.size(), 2u);
+  // The margin reached zero at the tip-over event: <= 0 on both, as the outcome says.
+  EXPECT_EQ(s.margin_checked, 2);
+  EXPECT_EQ(s.margin_disagreements, 0);
+  for (const sweep::DropRecord& r : s.tip_overs) {
+    EXPECT_LE(r.min_stability_margin_m, 0.0) << r.drop_id;
+    EXPECT_GT(r.min_stability_margin_m, -0.01) << r.drop_id;  // found at the crossing, not far past it
+  }
   EXPECT_EQ(s.metrics.at(0).count, 0);  // no landing stayed up
   // Both tip-overs re-run with the reference model (its records in out/recheck/), and both tip.
   ASSERT_TRUE(s.recheck && s.joint_range);
