@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <ostream>
 #include <sstream>
+#include <utility>
+#include <vector>
 
 #include "drop_tests/io/dataset_csv.h"
 #include "drop_tests/io/figure_style.h"
@@ -166,13 +168,15 @@ std::string PerPad(int column, const LanderRun& run, int mark_every) {
   return s.str() + "\n";
 }
 
-// Dotted vertical lines at the events that change how the pads' forces are computed: a pad's
-// capture before the rest (from then its force is the hold's reaction, and the others' speeds,
-// on which their soil forces depend, jump with it) and the rest itself (every pad held: the holds'
-// reactions carry the weight, split by the minimum-norm solution of a statically indeterminate
-// support). The traces break there (plots/data/trace.csv): the jumps are the switch, not a
-// stretch of signal. `rest_label`, a gnuplot string literal, names the rest line.
-std::string EventMarkers(const lander::LanderRunResult& r, const std::string& rest_label = "'at rest'") {
+// A dotted vertical line at the rest event, when there is one, named by `rest_label` (a gnuplot
+// string literal): the traces break there (plots/data/trace.csv), the state after it being the one
+// at rest, not a continuation of the landing. With `captures`, one more at each pad's capture
+// before the rest, named in the free space after the rest line: from a capture the pad's force is
+// the hold's reaction, and the other pads' speeds, on which their soil forces depend, jump with
+// it; at the rest every pad is held and the holds' reactions carry the weight (split by the
+// minimum-norm solution of a statically indeterminate support). The jumps at these lines are the
+// switches, not a stretch of signal.
+std::string EventMarkers(const lander::LanderRunResult& r, const std::string& rest_label = "'at rest'", bool captures = false) {
   const lander::LanderEvent* rest = nullptr;
   for (const lander::LanderEvent& e : r.events)
     if (e.kind == lander::LanderEventKind::kRest) rest = &e;
@@ -181,16 +185,30 @@ std::string EventMarkers(const lander::LanderRunResult& r, const std::string& re
     return "set arrow " + std::to_string(id) + " from first " + t + ", graph 0 to first " + t +
            ", graph 1 nohead dt 3 lw 1.5 lc rgb '#808080' back\n";
   };
-  const std::string t = io::FormatNumber(rest->t_s * 1e3);
-  std::string s = line(1, t) + "set label 1 " + rest_label + " at first " + t +
-                  ", graph 0.5 left offset 0.5,0 textcolor rgb '#606060' front\n";
+  // The captures before the rest, those at one instant together: one line and one label each,
+  // stacked down from the top of the free space after the rest line, the rest's label under them.
+  std::vector<std::pair<double, std::vector<int>>> captures_at;
   for (const lander::LanderEvent& e : r.events)
-    if (e.kind == lander::LanderEventKind::kCapture && e.t_s < rest->t_s) {
-      const std::string tc = io::FormatNumber(e.t_s * 1e3), id = std::to_string(10 + e.leg);
-      s += line(10 + e.leg, tc) + "set label " + id + " " + io::GnuplotQuote("pad " + std::to_string(e.leg + 1) + " held") +
-           " at first " + tc + ", graph " + io::FormatNumber(0.8 - 0.1 * e.leg) +
-           " right offset -0.5,0 textcolor rgb '#606060' front\n";
+    if (captures && e.kind == lander::LanderEventKind::kCapture && e.t_s < rest->t_s) {
+      if (captures_at.empty() || captures_at.back().first != e.t_s) captures_at.push_back({e.t_s, {}});
+      captures_at.back().second.push_back(e.leg);
     }
+  const std::string t = io::FormatNumber(rest->t_s * 1e3);
+  std::string s;
+  double y = 0.9;
+  for (const auto& [t_s, legs] : captures_at) {
+    std::string pads = legs.size() == 1 ? "pad " : "pads ";
+    for (size_t k = 0; k < legs.size(); ++k)
+      pads += (k == 0 ? "" : k + 1 == legs.size() ? " and " : ", ") + std::to_string(legs[k] + 1);
+    std::ostringstream at;
+    at << std::setprecision(5) << t_s * 1e3;
+    const std::string id = std::to_string(10 + legs.front());
+    s += line(10 + legs.front(), io::FormatNumber(t_s * 1e3)) + "set label " + id + " \"" + pads + " held\\nat " + at.str() +
+         " ms\" at first " + t + ", graph " + io::FormatNumber(y) + " left offset 0.5,0 textcolor rgb '#606060' front\n";
+    y -= 0.22;
+  }
+  s += line(1, t) + "set label 1 " + rest_label + " at first " + t + ", graph " + io::FormatNumber(std::min(0.5, y - 0.1)) +
+       " left offset 0.5,0 textcolor rgb '#606060' front\n";
   return s;
 }
 
@@ -260,7 +278,7 @@ std::string LoadsFigure(const PlotFrame& f) {
   body << "set multiplot layout 3,1 margins 0.09, 0.98, 0.1, 0.87 spacing 0, 0.06 title "
        << io::GnuplotQuote(run.scenario.name + ": loads during the landing (leg force along the leg, compression +)") << "\nset xrange " << f.xrange
        << "\nset key at screen 0.5, screen 0.935 center top horizontal maxrows 1 Left reverse samplen 2 width -2\n"
-       << "unset xlabel\nset style textbox opaque noborder\n" << EventMarkers(run.result, "\"at rest:\\nthe holds carry\\nthe weight\"")
+       << "unset xlabel\nset style textbox opaque noborder\n" << EventMarkers(run.result, "\"at rest:\\nthe holds carry\\nthe weight\"", true)
        << "set ylabel 'soil force [N]'\nset yrange " << Range(lander, trace, f.w, 4 + kLegs, kLegs, 1.0, 0.15) << "\n"
        << Note(CoincidentPads(lander, trace, f.w, 4 + kLegs)) << PerPad(kForceColumn, run, f.mark_every) << "unset key\n";
   // A leg in tension is the model's answer, not noise: the soil resists a pad's withdrawal as the
@@ -272,9 +290,9 @@ std::string LoadsFigure(const PlotFrame& f) {
     body << "set ylabel 'leg axial force [N]'\n";
   body << "set yrange " << Range(lander, trace, f.w, 4 + 2 * kLegs, kLegs, 1.0, 0.15) << "\n"
        << Note(CoincidentPads(lander, trace, f.w, 4 + 2 * kLegs)) << PerPad(kLegColumn, run, f.mark_every)
-       << "unset xzeroaxis\nunset label 2\nset key inside right top\nset xlabel 't [ms] (release at 0)'\nset ylabel 'a_z [m/s^2]'\nset yrange "
+       << "unset xzeroaxis\nunset label 2\nset xlabel 't [ms] (release at 0)'\nset ylabel \"body a_z [m/s^2]\\n(CoM, vertical, + up)\"\nset yrange "
        << Range(lander, trace, f.w, kColumns - 1, 1, 1.0, 0.15) << "\nplot 'plots/data/trace.csv' skip 1 using 1:"
-       << kAccelColumn << " with lines lw 2.5 lc rgb '#000000' title 'body CoM, vertical (+ up)'\nunset multiplot\n";
+       << kAccelColumn << " with lines lw 2.5 lc rgb '#000000' notitle\nunset multiplot\n";
   return io::Figure("plots/loads", body.str(), io::kFigureWide);
 }
 }  // namespace

@@ -123,7 +123,7 @@ TEST(PlotOutputs, LanderFiguresKeepCoincidentTracesVisibleAndTheBandOnScale) {
   // The events that switch how the pads' forces are computed are marked (pad 3's capture before
   // the rest, the rest), and the leg panel says which side of its drawn zero line is tension
   // (the legs pull while the body rebounds: tests/drop_tests/scenario/lander_rest_loads_test.cpp).
-  EXPECT_NE(script.find("'pad 3 held'"), std::string::npos) << script;
+  EXPECT_NE(script.find("\"pad 3 held\\nat 162.56 ms\""), std::string::npos) << script;
   EXPECT_NE(script.find("the holds carry"), std::string::npos) << script;
   EXPECT_NE(script.find("(< 0: tension)"), std::string::npos) << script;
   EXPECT_NE(script.find("set xzeroaxis"), std::string::npos) << script;

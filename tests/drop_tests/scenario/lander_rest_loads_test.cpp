@@ -2,7 +2,7 @@
 // forces before it are the soil's RFT forces on a lander that rebounds, after it the holds'
 // reactions. Why the figure shows a step there and a leg in tension before it, in numbers:
 //   - from about 160.5 ms the lander rebounds (pad 1, on the stiffer soil, rises first, at up to
-//     5 cm/s; the body from 160.6 ms, at up to 2 cm/s) and the soil resists the pads' withdrawal
+//     5 cm/s; the body just after, at up to 2 cm/s) and the soil resists the pads' withdrawal
 //     (RFT resists motion in any direction, at any speed): a leg pulls only while its pad rises,
 //     by up to 4 N on pad 1 and 8 N on pads 2 and 4 after pad 3's capture, the model's answer, not
 //     rounding;
