@@ -16,6 +16,10 @@ set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "lander footpads hitting granular regolith
 set(CPACK_PACKAGE_DESCRIPTION "Footpad trade studies, drop-test sweeps, landing-stability studies of a \
 four-legged lander and the comparison of simulated with measured drops, with resistive force theory \
 (the touchdown command, its Python module and its C++ libraries).")
+if(TOUCHDOWN_NATIVE)  # said where apt shows it (apt show touchdown), since nothing else tells
+  string(APPEND CPACK_PACKAGE_DESCRIPTION " Built with -march=native (TOUCHDOWN_NATIVE): it runs only on \
+CPUs like the one that built it; tools/build.sh --package makes the portable package.")
+endif()
 set(CPACK_PACKAGE_CONTACT "touchdown maintainers")
 set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
 set(CPACK_GENERATOR DEB)

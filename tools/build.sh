@@ -5,9 +5,21 @@
 #                                  everything `cmake --install build` installs
 #   bash tools/build.sh all        every target: tests, benchmarks, tools (tools/run_tests.sh)
 #   bash tools/build.sh T1 T2 ...  the named targets
+#   bash tools/build.sh --package  the Debian package from a portable build (no -march=native) in
+#                                  build-deb/: build-deb/touchdown_VERSION_amd64.deb, for any x86-64
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 targets=("$@")
+if [ "${1:-}" = "--package" ]; then
+  # Its own build folder: build/ is native, and a package of it runs only on CPUs like this one's.
+  bash "$root/tools/install_deps.sh" main package
+  source "$root/tools/compiler_cache.sh"
+  cmake -S "$root" -B "$root/build-deb" -G Ninja -DCMAKE_BUILD_TYPE=Release -DTOUCHDOWN_NATIVE=OFF \
+    "${compiler_cache_args[@]}" >/dev/null
+  cmake --build "$root/build-deb" --parallel "$(nproc)" --target touchdown_quickstart
+  (cd "$root/build-deb" && cpack -G DEB)
+  exit 0
+fi
 # The quick start needs only the main job's packages; anything more (`all`: the tests, benchmarks
 # and MPI sweeps) the test suite's too, and builds the tests and benchmarks, which a build
 # configured on main's packages alone leaves out (top-level CMakeLists.txt).

@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <ostream>
 #include <sstream>
+#include <utility>
+#include <vector>
 
 #include "drop_tests/io/dataset_csv.h"
 #include "drop_tests/io/figure_style.h"
@@ -166,16 +168,56 @@ std::string PerPad(int column, const LanderRun& run, int mark_every) {
   return s.str() + "\n";
 }
 
-// A dotted vertical line at the rest event, when there is one: the traces break there (the
-// state after it is the one at rest, not a continuation of the landing).
-std::string RestMarker(const lander::LanderRunResult& r) {
+// A dotted vertical line at the rest event, when there is one, named by `rest_label` (a gnuplot
+// string literal): the traces break there (plots/data/trace.csv), the state after it being the one
+// at rest, not a continuation of the landing. With `captures`, one more at each pad's capture
+// before the rest, named in the free space after the rest line: from a capture the pad's force is
+// the hold's reaction, and the other pads' speeds, on which their soil forces depend, jump with
+// it; at the rest every pad is held and the holds' reactions carry the weight (split by the
+// minimum-norm solution of a statically indeterminate support). The jumps at these lines are the
+// switches, not a stretch of signal.
+std::string EventMarkers(const lander::LanderRunResult& r, const std::string& rest_label = "'at rest'", bool captures = false) {
+  const lander::LanderEvent* rest = nullptr;
   for (const lander::LanderEvent& e : r.events)
-    if (e.kind == lander::LanderEventKind::kRest) {
-      const std::string t = io::FormatNumber(e.t_s * 1e3);
-      return "set arrow 1 from first " + t + ", graph 0 to first " + t + ", graph 1 nohead dt 3 lw 1.5 lc rgb '#808080' back\n"
-             "set label 1 'at rest' at first " + t + ", graph 0.5 left offset 0.5,0 textcolor rgb '#606060' front\n";
+    if (e.kind == lander::LanderEventKind::kRest) rest = &e;
+  if (!rest) return "";
+  auto line = [](int id, const std::string& t) {
+    return "set arrow " + std::to_string(id) + " from first " + t + ", graph 0 to first " + t +
+           ", graph 1 nohead dt 3 lw 1.5 lc rgb '#808080' back\n";
+  };
+  // The captures before the rest, those at one instant together: one line and one label each,
+  // stacked down from the top of the free space after the rest line, the rest's label under them.
+  std::vector<std::pair<double, std::vector<int>>> captures_at;
+  for (const lander::LanderEvent& e : r.events)
+    if (captures && e.kind == lander::LanderEventKind::kCapture && e.t_s < rest->t_s) {
+      if (captures_at.empty() || captures_at.back().first != e.t_s) captures_at.push_back({e.t_s, {}});
+      captures_at.back().second.push_back(e.leg);
     }
-  return "";
+  const std::string t = io::FormatNumber(rest->t_s * 1e3);
+  std::string s;
+  double y = 0.9;
+  for (const auto& [t_s, legs] : captures_at) {
+    std::string pads = legs.size() == 1 ? "pad " : "pads ";
+    for (size_t k = 0; k < legs.size(); ++k)
+      pads += (k == 0 ? "" : k + 1 == legs.size() ? " and " : ", ") + std::to_string(legs[k] + 1);
+    std::ostringstream at;
+    at << std::setprecision(5) << t_s * 1e3;
+    const std::string id = std::to_string(10 + legs.front());
+    s += line(10 + legs.front(), io::FormatNumber(t_s * 1e3)) + "set label " + id + " \"" + pads + " held\\nat " + at.str() +
+         " ms\" at first " + t + ", graph " + io::FormatNumber(y) + " left offset 0.5,0 textcolor rgb '#606060' front\n";
+    y -= 0.22;
+  }
+  s += line(1, t) + "set label 1 " + rest_label + " at first " + t + ", graph " + io::FormatNumber(std::min(0.5, y - 0.1)) +
+       " left offset 0.5,0 textcolor rgb '#606060' front\n";
+  return s;
+}
+
+// True when a leg pulls (axial force below zero beyond rounding) inside the window.
+bool AnyTension(const LanderSpec& lander, const std::vector<lander::LanderSample>& trace, const Window& w) {
+  for (const std::vector<double>& column : InWindow(lander, trace, w, 4 + 2 * kLegs, kLegs))
+    for (double v : column)
+      if (v < 0.0) return true;
+  return false;
 }
 
 // A note on the panel (which pads coincide), in an opaque box at the upper left, or nothing.
@@ -196,7 +238,7 @@ std::string PenetrationFigure(const PlotFrame& f) {
   std::ostringstream body;
   body << "set title " << io::GnuplotQuote(run.scenario.name + ": penetration of each pad (lowest point below the surface)")
        << "\nset xlabel 't [ms] (release at 0)'\nset ylabel 'penetration [mm]'\n" << io::kKeyBelow
-       << "set style textbox opaque noborder\n" << RestMarker(run.result)
+       << "set style textbox opaque noborder\n" << EventMarkers(run.result)
        << Note(CoincidentPads(run.scenario.lander, run.result.trace, f.w, 4))
        << "set xrange " << f.xrange << "\nset yrange " << Range(run.scenario.lander, run.result.trace, f.w, 4, kLegs, 1.0) << "\n"
        << PerPad(kDepthColumn, run, f.mark_every);
@@ -212,7 +254,7 @@ std::string AttitudeFigure(const PlotFrame& f) {
   // Tilt first and widest, pitch dashed over it, roll thin with marks on top: where they
   // coincide (a pure pitch makes tilt = |pitch|) each still shows.
   body << "set title " << io::GnuplotQuote(run.scenario.name + ": body attitude (roll > 0 right side down, pitch > 0 nose up)")
-       << "\nset xlabel 't [ms] (release at 0)'\nset ylabel 'angle [deg]'\n" << io::kKeyBelow << RestMarker(run.result)
+       << "\nset xlabel 't [ms] (release at 0)'\nset ylabel 'angle [deg]'\n" << io::kKeyBelow << EventMarkers(run.result)
        << "set style textbox opaque noborder\n" << Note(CoincidentAngles(run.scenario.lander, run.result.trace, f.w)) << "set xrange " << f.xrange
        << "\nset yrange " << Range(run.scenario.lander, run.result.trace, f.w, 1, 3, std::max(2.0, 3.0 * band), 0.15, include)
        << "\nplot 'plots/data/trace.csv' skip 1 using 1:4 with lines lw 7 lc rgb '#b0b0b0' title 'tilt from vertical', \\\n"
@@ -236,15 +278,21 @@ std::string LoadsFigure(const PlotFrame& f) {
   body << "set multiplot layout 3,1 margins 0.09, 0.98, 0.1, 0.87 spacing 0, 0.06 title "
        << io::GnuplotQuote(run.scenario.name + ": loads during the landing (leg force along the leg, compression +)") << "\nset xrange " << f.xrange
        << "\nset key at screen 0.5, screen 0.935 center top horizontal maxrows 1 Left reverse samplen 2 width -2\n"
-       << "unset xlabel\nset style textbox opaque noborder\n" << RestMarker(run.result)
+       << "unset xlabel\nset style textbox opaque noborder\n" << EventMarkers(run.result, "\"at rest:\\nthe holds carry\\nthe weight\"", true)
        << "set ylabel 'soil force [N]'\nset yrange " << Range(lander, trace, f.w, 4 + kLegs, kLegs, 1.0, 0.15) << "\n"
-       << Note(CoincidentPads(lander, trace, f.w, 4 + kLegs)) << PerPad(kForceColumn, run, f.mark_every)
-       << "unset key\nset ylabel 'leg axial force [N]'\nset yrange "
-       << Range(lander, trace, f.w, 4 + 2 * kLegs, kLegs, 1.0, 0.15) << "\n"
+       << Note(CoincidentPads(lander, trace, f.w, 4 + kLegs)) << PerPad(kForceColumn, run, f.mark_every) << "unset key\n";
+  // A leg in tension is the model's answer, not noise: the soil resists a pad's withdrawal as the
+  // body rebounds (RFT resists motion in any direction, at any speed), so the zero line is drawn
+  // and the label says which side is which.
+  if (AnyTension(lander, trace, f.w))
+    body << "set ylabel \"leg axial force [N]\\n(< 0: tension)\"\nset xzeroaxis lt 1 lw 1 dt 2 lc rgb '#404040'\n";
+  else
+    body << "set ylabel 'leg axial force [N]'\n";
+  body << "set yrange " << Range(lander, trace, f.w, 4 + 2 * kLegs, kLegs, 1.0, 0.15) << "\n"
        << Note(CoincidentPads(lander, trace, f.w, 4 + 2 * kLegs)) << PerPad(kLegColumn, run, f.mark_every)
-       << "unset label 2\nset key inside right top\nset xlabel 't [ms] (release at 0)'\nset ylabel 'a_z [m/s^2]'\nset yrange "
+       << "unset xzeroaxis\nunset label 2\nset xlabel 't [ms] (release at 0)'\nset ylabel \"body a_z [m/s^2]\\n(CoM, vertical, + up)\"\nset yrange "
        << Range(lander, trace, f.w, kColumns - 1, 1, 1.0, 0.15) << "\nplot 'plots/data/trace.csv' skip 1 using 1:"
-       << kAccelColumn << " with lines lw 2.5 lc rgb '#000000' title 'body CoM, vertical (+ up)'\nunset multiplot\n";
+       << kAccelColumn << " with lines lw 2.5 lc rgb '#000000' notitle\nunset multiplot\n";
   return io::Figure("plots/loads", body.str(), io::kFigureWide);
 }
 }  // namespace

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -119,8 +120,28 @@ TEST(PlotOutputs, LanderFiguresKeepCoincidentTracesVisibleAndTheBandOnScale) {
   const size_t yrange = script.find("set yrange [", attitude);
   ASSERT_NE(yrange, std::string::npos);
   EXPECT_LT(std::stod(script.substr(yrange + 12)), -0.5) << script.substr(yrange, 40);
-  // A blank line at each event's repeated instant breaks the lines there.
-  EXPECT_NE(Slurp(plots / "data" / "trace.csv").find("\n\n"), std::string::npos);
+  // The events that switch how the pads' forces are computed are marked (pad 3's capture before
+  // the rest, the rest), and the leg panel says which side of its drawn zero line is tension
+  // (the legs pull while the body rebounds: tests/drop_tests/scenario/lander_rest_loads_test.cpp).
+  EXPECT_NE(script.find("\"pad 3 held\\nat 162.56 ms\""), std::string::npos) << script;
+  EXPECT_NE(script.find("the holds carry"), std::string::npos) << script;
+  EXPECT_NE(script.find("(< 0: tension)"), std::string::npos) << script;
+  EXPECT_NE(script.find("set xzeroaxis"), std::string::npos) << script;
+  // A blank line at each event's repeated instant breaks the lines there: no drawn segment joins
+  // the state before a switch to the state after it.
+  std::istringstream rows(Slurp(plots / "data" / "trace.csv"));
+  std::string row, previous;
+  int breaks = 0;
+  std::getline(rows, row);  // the header
+  while (std::getline(rows, row)) {
+    if (row.empty()) {
+      ++breaks;
+    } else if (!previous.empty()) {
+      EXPECT_NE(row.substr(0, row.find(',')), previous.substr(0, previous.find(','))) << "a segment across a switch at " << row;
+    }
+    previous = row;
+  }
+  EXPECT_GE(breaks, 2) << "pad 3's capture and the rest";
 }
 
 TEST(PlotOutputs, StudyHistogramsCountInWholeLandingsAndEmptyMapCellsAreHatched) {
