@@ -10,7 +10,7 @@
 // Counters: the solver's (steps, right-hand sides, Jacobians, failures), the outcome (pad 1's
 // final depths, final roll and pitch), and `realtime_factor` (simulated seconds per wall second).
 // TD_RTOL / TD_ATOL / TD_ADAMS (Adams instead of BDF) / TD_MSBJ (most steps between Jacobians) /
-// TD_NLCOEF (Newton's convergence coefficient; 0.1 is CVODE's, the lander's default 0.01) /
+// TD_NLCOEF (Newton's convergence coefficient; 0.1 is CVODE's, the lander's default 0.03) /
 // TD_ATTJAC (the Jacobian's contact derivatives with respect to the pads' attitude too) /
 // TD_SOIL_RAMP (pad or element: where the soil's low-speed ramp acts, lander::SoilRamp)
 // override the integrator for convergence studies, and TD_PRINT prints each landing's final depths,

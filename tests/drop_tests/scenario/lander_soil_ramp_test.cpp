@@ -149,15 +149,15 @@ TEST_F(LanderSoilRamp, APadCreepingAfterItsReleaseDoesNotStallTheIntegrator) {
 
 TEST_F(LanderSoilRamp, APadWhoseElementsStraddleTheRampDoesNotHoldTheIntegratorInACycle) {
   const LanderScenario sc = LoadLanderScenario(Write("d5662.yaml", StraddlingLanding("")));
-  EXPECT_EQ(sc.options.integrator.nonlinear_convergence_coefficient, 0.01);
+  EXPECT_EQ(sc.options.integrator.nonlinear_convergence_coefficient, 0.03);
   const LanderRun run = RunLanderScenario(sc);
   const lander::LanderRunResult& r = run.result;
   EXPECT_FALSE(r.tipped_over);
-  // Regression pins (this landing on the fast model, 2026-11-28): 1,431 steps, largest tilt 26.146
+  // Regression pins (this landing on the fast model, 2026-11-28): 1,453 steps, largest tilt 26.144
   // deg. With CVODE's convergence coefficient (0.1) it took 262,960 steps (55 s), 0.62 s of them at
   // a fixed 2.34 us step, pad 2's spin in a period-4 cycle; largest tilt 26.144 deg.
   EXPECT_LT(r.solver.steps, 5000);
-  EXPECT_NEAR(r.max_tilt_rad * 180.0 / M_PI, 26.146, 0.02);
+  EXPECT_NEAR(r.max_tilt_rad * 180.0 / M_PI, 26.144, 0.02);
 }
 
 }  // namespace
