@@ -10,6 +10,7 @@
 // Counters: the solver's (steps, right-hand sides, Jacobians, failures), the outcome (pad 1's
 // final depths, final roll and pitch), and `realtime_factor` (simulated seconds per wall second).
 // TD_RTOL / TD_ATOL / TD_ADAMS (Adams instead of BDF) / TD_MSBJ (most steps between Jacobians) /
+// TD_NLCOEF (Newton's convergence coefficient; 0.1 is CVODE's, the lander's default 0.03) /
 // TD_ATTJAC (the Jacobian's contact derivatives with respect to the pads' attitude too) /
 // TD_SOIL_RAMP (pad or element: where the soil's low-speed ramp acts, lander::SoilRamp)
 // override the integrator for convergence studies, and TD_PRINT prints each landing's final depths,
@@ -40,6 +41,7 @@ lander::LanderRunOptions Options() {
   if (getenv("TD_ATOL")) options.integrator.atol = atof(getenv("TD_ATOL"));
   if (getenv("TD_ADAMS")) options.integrator.stiff = false;
   if (getenv("TD_MSBJ")) options.integrator.max_steps_between_jacobians = atol(getenv("TD_MSBJ"));
+  if (getenv("TD_NLCOEF")) options.integrator.nonlinear_convergence_coefficient = atof(getenv("TD_NLCOEF"));
   if (getenv("TD_ATTJAC")) options.jacobian_attitude_sensitivity = true;
   return options;
 }

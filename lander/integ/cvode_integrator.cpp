@@ -28,6 +28,8 @@ bool IntegratorOptions::IsValid(std::string* error) const {
   if (!(max_step >= 0.0 && std::isfinite(max_step))) return fail("max_step must be >= 0");
   if (max_num_steps <= 0) return fail("max_num_steps must be positive");
   if (max_steps_between_jacobians < 0) return fail("max_steps_between_jacobians must be >= 0");
+  if (!(nonlinear_convergence_coefficient >= 0.0 && nonlinear_convergence_coefficient < 1.0))
+    return fail("nonlinear_convergence_coefficient must be in [0, 1)");
   if (!(max_wall_time_s >= 0.0 && std::isfinite(max_wall_time_s)))
     return fail("max_wall_time_s must be >= 0 and finite");
   if (max_rhs_evaluations < 0) return fail("max_rhs_evaluations must be >= 0");
@@ -197,6 +199,8 @@ CvodeIntegrator::CvodeIntegrator(int state_size, RhsFunction rhs, const Integrat
     m.Check(CVodeSetLinearSolver(m.cvode, m.linear_solver, m.matrix), "CVodeSetLinearSolver");
     if (options.max_steps_between_jacobians > 0)
       m.Check(CVodeSetJacEvalFrequency(m.cvode, options.max_steps_between_jacobians), "CVodeSetJacEvalFrequency");
+    if (options.nonlinear_convergence_coefficient > 0.0)
+      m.Check(CVodeSetNonlinConvCoef(m.cvode, options.nonlinear_convergence_coefficient), "CVodeSetNonlinConvCoef");
   } else {
     m.nonlinear_solver = SUNNonlinSol_FixedPoint(m.y, 0, m.context);
     m.Check(CVodeSetNonlinearSolver(m.cvode, m.nonlinear_solver), "CVodeSetNonlinearSolver");

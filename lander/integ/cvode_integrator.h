@@ -35,6 +35,10 @@ struct IntegratorOptions {
   // Stiff mode: most steps between Jacobian evaluations (CVodeSetJacEvalFrequency); 0 = CVODE's
   // default (51). Each difference-quotient Jacobian costs one right-hand side per state.
   long max_steps_between_jacobians = 0;
+  // Stiff mode: the Newton iteration's convergence coefficient (CVodeSetNonlinConvCoef: it stops
+  // when its estimated error is below this times the error test's tolerance); 0 = CVODE's default
+  // (0.1).
+  double nonlinear_convergence_coefficient = 0.0;
   // Wall-clock budget [s] for the integrator's whole life (construction, every Reset and
   // AdvanceTo: one drop); 0 = none. Checked in every right-hand-side and root evaluation, so a
   // stiff or chattering model cannot hang a sweep: the advance then fails with an

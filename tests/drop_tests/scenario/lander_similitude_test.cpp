@@ -33,11 +33,12 @@ constexpr double kLength = 6.0, kMass = kLength * kLength * kLength, kTime = kLe
 // (1975 and 1723 steps at rtol 1e-6) and so into the integration error: the disagreement falls
 // with rtol (pad depths 3e-4, 5.6e-7, 2.5e-8, 1e-9 relative at rtol 1e-6, 1e-9, 1e-10, 1e-12;
 // roll 1.4e-4, 8.7e-8, 3.4e-9, 2.3e-10 deg). So the landing is compared at rtol 1e-9, where it
-// agrees to (measured) depths 5.6e-7, roll 8.7e-8 deg. A pad left hanging (negative depth) is where
-// the rest event stops it and is not compared.
+// agrees to (measured) depths 5.6e-7, roll 8.7e-8 deg; pitch 1.06e-6 deg with Newton's convergence
+// coefficient 0.03 (LanderRunOptions::integrator), hence the angles' 2e-6. A pad left hanging
+// (negative depth) is where the rest event stops it and is not compared.
 constexpr double kRtol = 1e-9;
 constexpr double kDepth = 5e-6, kRelative = 2e-6;
-constexpr double kAngle_deg = 1e-6;
+constexpr double kAngle_deg = 2e-6;
 
 std::string StudyScenario(const std::string& name) {
   return std::string(TOUCHDOWN_SOURCE_DIR) + "/data/studies/" + name + ".yaml";

@@ -2,7 +2,9 @@
 // "The soil's low-speed ramp"): scenario settings that reach the model, the speed refused above the
 // capture speed; with the ramp on each element (the default) a pad released from its hold that
 // creeps in the soil at about the ramp's speed no longer costs the integrator microsecond steps, and
-// a landing that does not creep moves by less than its integration tolerance.
+// a landing that does not creep moves by less than its integration tolerance; a pad whose elements
+// move at about the ramp's speed no longer holds BDF in a fixed-step cycle (Newton's convergence
+// coefficient, LanderRunOptions::integrator).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -42,6 +44,35 @@ initial:
   roll_deg: 0.666572064580585
   pitch_deg: -2.6517055588887084
   yaw_relative_to_slope_deg: -3.504814719891325
+simulation: {duration_s: 7.5, sample_rate_hz: 200, rtol: 1.0e-5, pad_angular_segments: 24)" +
+         ramp_line + "}\n";
+}
+
+// Landing d5662 of data/studies/lunar_paper_lander.yaml, rebuilt from its record, on the study's
+// fast model: from 0.836 s pad 2, released to slide, sits in the soil while the body turns above
+// it, its spin held near 1-2 mrad/s by the soil, so its rim elements move at about the ramp's
+// speed.
+std::string StraddlingLanding(const std::string& ramp_line) {
+  return R"(schema_version: 1
+type: lander
+name: d5662
+lander: sutoh2017_lander_full_scale
+gravity_m_s2: 1.62
+ground:
+  slope_deg: 18.982766479648728
+  downhill_azimuth_deg: 0
+  soil: fjs1_lp
+  patches:
+    - {soil: fjs1_lp, under_pad: 1, half_width_m: 0.48}
+    - {soil: fjs1_cp, under_pad: 2, half_width_m: 0.48}
+    - {soil: fjs1_cp, under_pad: 3, half_width_m: 0.48}
+    - {soil: fjs1_lp, under_pad: 4, half_width_m: 0.48}
+initial:
+  touchdown_speed_m_s: 1.4
+  horizontal_velocity_m_s: [-0.07928644818744833, 0.07639691369489038]
+  roll_deg: -0.8423693044008429
+  pitch_deg: -1.7917025855985802
+  yaw_relative_to_slope_deg: 11.37737404498086
 simulation: {duration_s: 7.5, sample_rate_hz: 200, rtol: 1.0e-5, pad_angular_segments: 24)" +
          ramp_line + "}\n";
 }
@@ -114,6 +145,19 @@ TEST_F(LanderSoilRamp, APadCreepingAfterItsReleaseDoesNotStallTheIntegrator) {
   // leaves it creeping to the end at 7.5 s), so the rest time is not pinned.
   EXPECT_LT(r.solver.steps, 5000);
   EXPECT_NEAR(r.final_attitude.pitch_rad * 180.0 / M_PI, -19.10, 0.05);
+}
+
+TEST_F(LanderSoilRamp, APadWhoseElementsStraddleTheRampDoesNotHoldTheIntegratorInACycle) {
+  const LanderScenario sc = LoadLanderScenario(Write("d5662.yaml", StraddlingLanding("")));
+  EXPECT_EQ(sc.options.integrator.nonlinear_convergence_coefficient, 0.03);
+  const LanderRun run = RunLanderScenario(sc);
+  const lander::LanderRunResult& r = run.result;
+  EXPECT_FALSE(r.tipped_over);
+  // Regression pins (this landing on the fast model, 2026-11-28): 1,453 steps, largest tilt 26.144
+  // deg. With CVODE's convergence coefficient (0.1) it took 262,960 steps (55 s), 0.62 s of them at
+  // a fixed 2.34 us step, pad 2's spin in a period-4 cycle; largest tilt 26.144 deg.
+  EXPECT_LT(r.solver.steps, 5000);
+  EXPECT_NEAR(r.max_tilt_rad * 180.0 / M_PI, 26.144, 0.02);
 }
 
 }  // namespace
