@@ -186,6 +186,17 @@ TEST(CvodeIntegrator, OptionsAreValidated) {
   EXPECT_FALSE(bad.IsValid(&why));
   EXPECT_TRUE(IntegratorOptions{}.IsValid(&why));
   EXPECT_THROW(CvodeIntegrator(1, [](double, auto, auto) {}, bad), std::invalid_argument);
+  // Newton's convergence coefficient: 0 keeps CVODE's 0.1; a value of 1 or more, or negative, or
+  // not a number, is refused.
+  for (double c : {-0.01, 1.0, std::nan("")}) {
+    bad = {};
+    bad.nonlinear_convergence_coefficient = c;
+    EXPECT_FALSE(bad.IsValid(&why)) << c;
+    EXPECT_NE(why.find("nonlinear_convergence_coefficient"), std::string::npos);
+  }
+  IntegratorOptions tight;
+  tight.nonlinear_convergence_coefficient = 0.03;
+  EXPECT_TRUE(tight.IsValid(&why));
 }
 
 }  // namespace
