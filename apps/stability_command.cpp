@@ -150,24 +150,9 @@ void RunRareEventCommand(const StabilityArgs& args, const stability::Study& stud
               << " after committing the landings in flight; run the same command again to resume\n";
     std::exit(128 + r.stop_signal);
   }
+  const stability::StudySummary summary = stability::WriteRareEventAnalysis(study, r, args.out);
   stability::Study first = study;
   first.plan = r.first_level_plan;
-  stability::StudyFollowUps f;
-  f.records = r.first_level;
-  f.recheck.enabled = false;
-  f.joint_range.enabled = false;
-  f.joint_range.reason = "not run with a rare-event method";
-  nlohmann::json overrides = stability::RareEventJson(study, r);
-  overrides = {{"method", stability::StudyMethodName(method)},
-               {"tip_over_probability", r.estimate.probability},
-               {"tip_over_probability_interval_95", {r.estimate.interval.low, r.estimate.interval.high}},
-               {"interval_method", overrides["interval_method"]},
-               {"landings_meaning",
-                "landings, tipped_over, percentiles, map, worst cases and tip_overs describe the subset run's first "
-                "level (plain Monte Carlo draws of the study's distribution); tip_over_probability is the "
-                "estimator's (rare_event)"},
-               {"rare_event", overrides}};
-  const stability::StudySummary summary = stability::WriteStudyAnalysis(first, args.out, f, &overrides);
   std::cout << "stability " << study.plan.name << ": " << r.computed << " landings run now, " << r.already_done
             << " already done\n";
   PrintRareEventResult(study, r);

@@ -40,6 +40,7 @@
 #include "drop_tests/stability/study.h"
 #include "drop_tests/stability/study_followups.h"
 #include "drop_tests/stability/study_outputs.h"
+#include "drop_tests/stability/study_rare_event.h"
 #include "drop_tests/sweep/sweep.h"
 #include "drop_tests/sweep/sweep_export.h"
 #include "drop_tests/sweep/trade_run.h"
@@ -284,19 +285,34 @@ std::string Compare(const std::string& measured, const std::string& simulated, c
 // touchdown stability: the study's landings as a sweep into `out`, then its analysis there.
 // Stopped (Ctrl-C), the committed landings stay for a rerun to resume; no analysis is written.
 py::dict Stability(const std::string& study_arg, const std::string& out, const std::string& model,
-                   std::optional<int64_t> samples, const py::object& threads_arg, py::object progress_arg) {
+                   std::optional<int64_t> samples, const py::object& threads_arg, py::object progress_arg,
+                   const std::string& method_arg) {
   const int threads = ThreadsArgument(threads_arg, "touchdown.stability");
   const std::string study_path = io::ResolveInputDocument(io::InputDocument::kStudy, study_arg);
+  const stability::StudyMethod method = stability::ParseStudyMethod(method_arg, "method");
+  const bool rare_event = method != stability::StudyMethod::kMonteCarlo;
   std::atomic<int> stop{0};
   ProgressReport progress(std::move(progress_arg));
   return RunCounts(RunInterruptible(stop, progress, [&] {
-    const stability::Study study = stability::LoadStudy(study_path, model, samples, {"touchdown.stability", false});
+    // With a rare-event method `samples` is the landings per level (or of the importance sample).
+    const stability::Study study =
+        stability::LoadStudy(study_path, model, rare_event ? std::nullopt : samples, {"touchdown.stability", false});
+    const int64_t per_level = samples.value_or(stability::kDefaultRareEventSamples);
+    if (rare_event) stability::RequireRareEventStudy(study, method, per_level);
     io::OpenOutputDirectory({out, {study_path, model}}, io::OutputKind::kSweep);
     sweep::SweepRunOptions options;
     options.threads = threads;
     options.progress = sweep::ProgressMode::kNone;
     options.progress_counts = progress.counts();  // the landings, then each follow-up's
     options.stop = &stop;
+    if (rare_event) {  // the CLI's `--method` path (apps/stability_command.cpp), the same analysis
+      const stability::RareEventStudyResult r = stability::RunRareEventStudy(study, method, per_level, out, options);
+      sweep::SweepRunSummary s;
+      s.total = r.landings, s.already_done = r.already_done, s.computed = r.computed, s.failed = r.failed;
+      s.stop_signal = r.stop_signal, s.threads = threads;
+      if (r.stop_signal == 0) stability::WriteRareEventAnalysis(study, r, out);
+      return s;
+    }
     const sweep::SweepRunSummary s = sweep::RunSweep(study.plan, out, options);
     if (s.stop_signal != 0) return s;
     // The follow-ups (re-checks, joint-range sensitivity) on the same threads, stopped alike.
@@ -517,6 +533,6 @@ PYBIND11_MODULE(_touchdown, m) {
   m.def("sweep", &python::Sweep, py::arg("plan"), py::arg("out"), py::arg("model"), py::arg("threads"),
         py::arg("progress") = py::none());
   m.def("stability", &python::Stability, py::arg("study"), py::arg("out"), py::arg("model"), py::arg("samples"),
-        py::arg("threads"), py::arg("progress") = py::none());
+        py::arg("threads"), py::arg("progress") = py::none(), py::arg("method") = "monte_carlo");
   python::RegisterObjectBindings(m);  // Pad, Soil, Lander, Scenario (objects_bindings.cpp)
 }

@@ -13,6 +13,9 @@
 
 #include "drop_tests/io/dataset_csv.h"
 #include "drop_tests/io/json_number.h"
+#include "drop_tests/stability/study_followups.h"
+#include "drop_tests/stability/study_outputs.h"
+#include "drop_tests/stability/study_summary.h"
 #include "rft/input_error.h"
 
 namespace touchdown::stability {
@@ -300,6 +303,28 @@ nlohmann::json RareEventJson(const Study& study, const RareEventStudyResult& r) 
       "the tipped landings nearest the origin of standard-normal space (smallest beta = |u|), nearest first: the most "
       "likely tip-over conditions the run found, in the study's variables";
   return j;
+}
+
+StudySummary WriteRareEventAnalysis(const Study& study, const RareEventStudyResult& r, const std::string& out_dir) {
+  Study first = study;
+  first.plan = r.first_level_plan;
+  StudyFollowUps f;
+  f.records = r.first_level;
+  f.recheck.enabled = false;
+  f.joint_range.enabled = false;
+  f.joint_range.reason = "not run with a rare-event method";
+  const nlohmann::json rare_event = RareEventJson(study, r);
+  const nlohmann::json overrides = {
+      {"method", StudyMethodName(r.method)},
+      {"tip_over_probability", r.estimate.probability},
+      {"tip_over_probability_interval_95", {r.estimate.interval.low, r.estimate.interval.high}},
+      {"interval_method", rare_event["interval_method"]},
+      {"landings_meaning",
+       "landings, tipped_over, percentiles, map, worst cases and tip_overs describe the subset run's first "
+       "level (plain Monte Carlo draws of the study's distribution); tip_over_probability is the "
+       "estimator's (rare_event)"},
+      {"rare_event", rare_event}};
+  return WriteStudyAnalysis(first, out_dir, f, &overrides);
 }
 
 }  // namespace touchdown::stability

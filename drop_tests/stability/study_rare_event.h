@@ -95,4 +95,10 @@ RareEventStudyResult RunRareEventStudy(const Study& study, StudyMethod method, i
 // summary.json's "rare_event" entry.
 nlohmann::json RareEventJson(const Study& study, const RareEventStudyResult& r);
 
+// The analysis of a finished run (not stopped) into DIR: WriteStudyAnalysis over its first level's
+// landings (no follow-ups: "not run with a rare-event method"), summary.json carrying the method,
+// its estimate and interval, and RareEventJson. The CLI and the Python module both write it here.
+struct StudySummary;
+StudySummary WriteRareEventAnalysis(const Study& study, const RareEventStudyResult& r, const std::string& out_dir);
+
 }  // namespace touchdown::stability

@@ -1,5 +1,7 @@
 """The readers give pandas DataFrames of a sweep database, a dataset and a stability study, with
 the formats' columns and one row per drop or landing, numbers as written."""
+import json
+
 import numpy as np
 import pandas as pd
 import pytest
@@ -104,7 +106,7 @@ def test_read_sweep_types_missing_metrics_and_meta(tiny_sweep):
         assert drops[column].dtype == np.float64, column
         assert drops[column].isna().all(), column
     meta = drops.attrs["meta"]
-    assert meta["format_version"] == 7 and isinstance(meta["format_version"], int)
+    assert meta["format_version"] == 8 and isinstance(meta["format_version"], int)
     assert meta["total_drops"] == 4 and isinstance(meta["total_drops"], int)
     assert isinstance(meta["max_drop_wall_time_s"], float)
     assert meta["load_dependent_failures"] is False
@@ -144,3 +146,38 @@ def test_read_sweep_separates_rig_and_lander_columns(tiny_sweep, tmp_path):
     assert len(landings) == 1 and list(landings.columns) == list(touchdown.read_sweep(tmp_path / "out").columns)
     assert landings[["tipped_over", "max_tilt_deg", "pad1_final_penetration_m"]].notna().all(axis=None)
     assert len(touchdown.read_sweep(tmp_path / "out", kind="rig")) == 0
+
+
+COARSE_LANDER = """schema_version: 1
+type: lander
+name: coarse_case
+lander: sutoh2017_lander
+gravity_m_s2: 9.81
+ground: {soil: fjs1_lp}
+initial: {touchdown_speed_m_s: 1.0}
+simulation: {duration_s: 1.0, sample_rate_hz: 200, pad_angular_segments: 16}
+"""
+
+
+def test_stability_subset_method_from_python_is_the_cli_run(tmp_path):
+    # The rare-event path of touchdown.stability(method=...) writes what `touchdown stability
+    # --method subset` writes: the same estimate, interval and design points, to the bit.
+    (tmp_path / "coarse.yaml").write_text(COARSE_LANDER)
+    study = tmp_path / "study.yaml"
+    study.write_text("schema_version: 1\ntype: stability\nname: rare\n"
+                     f"lander: {{scenario: {tmp_path / 'coarse.yaml'}}}\n"
+                     "fixed: {downhill_azimuth_deg: -90, yaw_relative_to_slope_deg: 90, horizontal_azimuth_deg: -90}\n"
+                     "random: {samples: 10, seed: 5, slope_deg: {uniform: [0, 20]},\n"
+                     "         horizontal_speed_m_s: {uniform: [0, 1.5]}}\n")
+    result = touchdown.stability(study, tmp_path / "py", samples=10, threads=2, progress=False, method="subset")
+    run_touchdown("stability", str(study), "--out", str(tmp_path / "cli"), "--method", "subset", "--samples", "10",
+                  "--threads", "2", "--progress", "none")
+    cli = json.loads((tmp_path / "cli" / "summary.json").read_text())
+    assert result.summary["method"] == "subset"
+    for key in ["tip_over_probability", "tip_over_probability_interval_95", "interval_method"]:
+        assert result.summary[key] == cli[key], key
+    assert result.summary["rare_event"]["design_points"] == cli["rare_event"]["design_points"]
+    assert result.summary["rare_event"]["landings_spent"] == cli["rare_event"]["landings_spent"] > 10
+    assert len(result.landings) == cli["rare_event"]["landings_spent"]  # every level's, from py/subset/
+    with pytest.raises(ValueError, match="method: "):
+        touchdown.stability(study, tmp_path / "bad", method="subsets")

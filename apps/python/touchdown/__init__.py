@@ -214,14 +214,18 @@ def sweep(plan, out, *, model=None, threads=0, progress=True):
     return drops
 
 
-def stability(study, out, *, model=None, samples=None, threads=0, progress=True):
-    """A stability study run as `touchdown stability STUDY --out OUT [--samples N]`: its landings,
-    then summary.json, the CSV tables and plots in OUT; returns read_stability(out). Ctrl-C stops
-    it once the running landings are committed (KeyboardInterrupt, no analysis written; a rerun
-    resumes). `progress` as for sweep: the landings, then each follow-up's re-runs anew."""
+def stability(study, out, *, model=None, samples=None, threads=0, progress=True, method="monte_carlo"):
+    """A stability study run as `touchdown stability STUDY --out OUT [--samples N] [--method M]`: its
+    landings, then summary.json, the CSV tables and plots in OUT; returns read_stability(out).
+    `method`: "monte_carlo" (the study's landings), "subset" or "importance" (the rare-event
+    estimators; `samples` is then the landings per level or of the importance sample, default 1000,
+    and summary.json's "rare_event" holds the coefficient of variation, landings spent and design
+    points). Ctrl-C stops it once the running landings are committed (KeyboardInterrupt, no analysis
+    written; a rerun resumes). `progress` as for sweep: the landings, then each follow-up's re-runs
+    anew."""
     with _progress_reporter(progress, "stability", "landings") as report:
         _touchdown.stability(study=_path_text(study), out=_path_text(out), model=_path_text(model), samples=samples,
-                             threads=threads, progress=report)
+                             threads=threads, progress=report, method=method)
     return read_stability(out)
 
 

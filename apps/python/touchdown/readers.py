@@ -226,7 +226,8 @@ class StabilityStudy:
     summary: dict          # summary.json: landings, tip-over probability and interval, percentiles, map
     percentiles: object    # percentiles.csv: metric, unit, landings, p50, p95, p99, max
     tip_over_map: object   # tip_over_map.csv: per map cell, ranges, landings, tip-overs, probability (None: no map)
-    landings: object       # results.sqlite's drops (read_sweep): one row per landing
+    landings: object       # results.sqlite's drops (read_sweep): one row per landing (a rare-event
+                           # run's: every landing it spent, from DIR/<method>/results.sqlite)
 
 
 def read_stability(directory):
@@ -242,7 +243,11 @@ def read_stability(directory):
     except (json.JSONDecodeError, UnicodeDecodeError) as e:
         raise ValueError(f"{summary_json}: not valid JSON: {e}") from None
     map_csv = os.path.join(directory, "tip_over_map.csv")  # only for a study with a `map`
+    # A rare-event run (summary "method": subset or importance) keeps its landings, every level's,
+    # in DIR/<method>/results.sqlite.
+    method = summary.get("method", "monte_carlo")
+    landings_dir = directory if method == "monte_carlo" else os.path.join(directory, method)
     return StabilityStudy(summary=summary,
                           percentiles=_read_csv(os.path.join(directory, "percentiles.csv")),
                           tip_over_map=_read_csv(map_csv) if os.path.isfile(map_csv) else None,
-                          landings=read_sweep(directory))
+                          landings=read_sweep(landings_dir))
