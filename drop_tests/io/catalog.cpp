@@ -319,6 +319,12 @@ std::string ResolveCatalogFile(const std::string& kind, const std::string& name_
     return path;
   }
   if (!fs::is_regular_file(path)) {
+    // No shelf at all means no data directory, not a misspelt name: say where it was looked for.
+    const std::string shelf = DataDirectory() + "/" + kind;
+    if (!fs::is_directory(shelf))
+      throw MakeInputError(shelf, kind,
+                           "no such data directory, so no bundled name such as '" + name_or_path +
+                               "' (set TOUCHDOWN_DATA_DIR to touchdown's data/ folder, or give a file path)");
     const std::vector<std::string> names = CatalogNames(kind);
     std::string known;
     for (const std::string& n : names) known += (known.empty() ? "" : ", ") + n;

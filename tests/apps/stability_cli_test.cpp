@@ -189,20 +189,13 @@ std::string FollowUpStudy(const std::string& scenario) {
          "grid: {slope_deg: [0, 30]}\n"
          "study: {joint_range_sensitivity: {samples: 1}}\n";
 }
-const char* kCoarseScenario = R"(schema_version: 1
-type: lander
-name: coarse_case
-lander: sutoh2017_lander
-gravity_m_s2: 9.81
-ground: {soil: fjs1_lp}
-initial: {touchdown_speed_m_s: 1.0}
-simulation: {duration_s: 1.0, sample_rate_hz: 200, pad_angular_segments: 16}
-)";
+// The paper's lander with 16-segment pads for 1 s (data/studies/lab_coarse_lander_scenario.yaml).
+const std::string kCoarseScenario = std::string(TOUCHDOWN_SOURCE_DIR) + "/data/studies/lab_coarse_lander_scenario.yaml";
 
 // The landing that tipped over ran again with the reference model; summary.json's counts match
 // the records; a rerun computes nothing and writes the same summary; so does a run on two threads.
 TEST_F(StabilityCli, FollowUpsRecheckTheTipOverAndRunTheJointRangeOnce) {
-  const std::string study = Write("study.yaml", FollowUpStudy(Write("coarse.yaml", kCoarseScenario)));
+  const std::string study = Write("study.yaml", FollowUpStudy(kCoarseScenario));
   const StabilityRun first = Run({"stability", study, "--out", Path("one"), "--threads", "1", "--progress", "none"});
   ASSERT_EQ(first.status, 0) << first.err;
   const nlohmann::json j = nlohmann::json::parse(Slurp(Path("one") + "/summary.json"));
@@ -252,7 +245,7 @@ TEST_F(StabilityCli, FollowUpsRecheckTheTipOverAndRunTheJointRangeOnce) {
 TEST_F(StabilityCli, SubsetMethodWritesItsEstimateAndDesignPoints) {
   const std::string study = Write(
       "study.yaml", "schema_version: 1\ntype: stability\nname: rare\nlander: {scenario: " +
-                        Write("coarse.yaml", kCoarseScenario) +
+                        kCoarseScenario +
                         "}\nfixed: {downhill_azimuth_deg: -90, yaw_relative_to_slope_deg: 90, horizontal_azimuth_deg: -90}\n"
                         "random: {samples: 10, seed: 5, slope_deg: {uniform: [0, 20]},\n"
                         "         horizontal_speed_m_s: {uniform: [0, 1.5]}}\n");

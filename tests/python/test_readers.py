@@ -148,24 +148,16 @@ def test_read_sweep_separates_rig_and_lander_columns(tiny_sweep, tmp_path):
     assert len(touchdown.read_sweep(tmp_path / "out", kind="rig")) == 0
 
 
-COARSE_LANDER = """schema_version: 1
-type: lander
-name: coarse_case
-lander: sutoh2017_lander
-gravity_m_s2: 9.81
-ground: {soil: fjs1_lp}
-initial: {touchdown_speed_m_s: 1.0}
-simulation: {duration_s: 1.0, sample_rate_hz: 200, pad_angular_segments: 16}
-"""
+# The paper's lander with 16-segment pads for 1 s.
+COARSE_LANDER = data_file("studies", "lab_coarse_lander_scenario.yaml")
 
 
 def test_stability_subset_method_from_python_is_the_cli_run(tmp_path):
     # The rare-event path of touchdown.stability(method=...) writes what `touchdown stability
     # --method subset` writes: the same estimate, interval and design points, to the bit.
-    (tmp_path / "coarse.yaml").write_text(COARSE_LANDER)
     study = tmp_path / "study.yaml"
     study.write_text("schema_version: 1\ntype: stability\nname: rare\n"
-                     f"lander: {{scenario: {tmp_path / 'coarse.yaml'}}}\n"
+                     f"lander: {{scenario: {COARSE_LANDER}}}\n"
                      "fixed: {downhill_azimuth_deg: -90, yaw_relative_to_slope_deg: 90, horizontal_azimuth_deg: -90}\n"
                      "random: {samples: 10, seed: 5, slope_deg: {uniform: [0, 20]},\n"
                      "         horizontal_speed_m_s: {uniform: [0, 1.5]}}\n")

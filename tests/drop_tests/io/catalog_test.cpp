@@ -85,6 +85,27 @@ TEST_F(CatalogFiles, UnknownNamesListTheKnownOnes) {
   EXPECT_THROW(LoadPad((dir_ / "missing.yaml").string()), InputError);
 }
 
+// A data directory that is not there (an unset or wrong TOUCHDOWN_DATA_DIR, an install whose
+// executable cannot find its share/ folder) is named as such, not reported as a misspelt name with
+// an empty list of known ones.
+TEST_F(CatalogFiles, AMissingDataDirectoryIsNamedNotCalledAnUnknownName) {
+  const char* saved = std::getenv("TOUCHDOWN_DATA_DIR");
+  const std::string restore = saved ? saved : "";
+  const std::string missing = (dir_ / "no_data").string();
+  ::setenv("TOUCHDOWN_DATA_DIR", missing.c_str(), 1);
+  std::string message = "(no error)";
+  try {
+    LoadPad("flat");
+  } catch (const InputError& e) {
+    message = e.what();
+  }
+  if (saved) ::setenv("TOUCHDOWN_DATA_DIR", restore.c_str(), 1); else ::unsetenv("TOUCHDOWN_DATA_DIR");
+  EXPECT_NE(message.find(missing + "/pads"), std::string::npos) << message;
+  EXPECT_NE(message.find("no such data directory"), std::string::npos) << message;
+  EXPECT_NE(message.find("TOUCHDOWN_DATA_DIR"), std::string::npos) << message;
+  EXPECT_EQ(message.find("known:"), std::string::npos) << message;
+}
+
 struct BadPadCase {
   const char* what;
   const char* yaml;
@@ -361,8 +382,8 @@ TEST_F(CatalogFiles, AShelfHoldsOnlyItsType) {
   const std::vector<CatalogShelf> studies = ShelvesOf(InputDocument::kStudy);
   ASSERT_EQ(studies.size(), 1u);
   EXPECT_EQ(ShelfNames(studies[0]),
-            (std::vector<std::string>{"lab_paper_lander", "lunar_paper_lander", "lunar_patchy_ground",
-                                      "lunar_rare_tip_over"}));
+            (std::vector<std::string>{"lab_paper_lander", "lab_rare_event_agreement", "lunar_paper_lander",
+                                      "lunar_patchy_ground", "lunar_rare_tip_over"}));
   const std::vector<CatalogShelf> landers = ShelvesOf(InputDocument::kLander);
   ASSERT_EQ(landers.size(), 1u);
   EXPECT_EQ(ShelfNames(landers[0]),
@@ -376,8 +397,8 @@ TEST_F(CatalogFiles, AShelfHoldsOnlyItsType) {
                            "'lunar_paper_lander'?)"),
               std::string::npos)
         << message;
-    EXPECT_NE(message.find("studies in " + DataDirectory() + "/studies: lab_paper_lander, lunar_paper_lander, "
-                           "lunar_patchy_ground, lunar_rare_tip_over)"),
+    EXPECT_NE(message.find("studies in " + DataDirectory() + "/studies: lab_paper_lander, lab_rare_event_agreement, "
+                           "lunar_paper_lander, lunar_patchy_ground, lunar_rare_tip_over)"),
               std::string::npos)
         << message;
   }

@@ -57,21 +57,14 @@ TEST(LandingLimitState, IsTheMarginOnTheSideTheOutcomeSays) {
   EXPECT_TRUE(MarginAgreesWithOutcome(r));
 }
 
-// The paper's lander with 16-segment pads for 1 s on a slope, its horizontal velocity downhill.
-const char* kCoarseScenario = R"(schema_version: 1
-type: lander
-name: coarse_case
-lander: sutoh2017_lander
-gravity_m_s2: 9.81
-ground: {soil: fjs1_lp}
-initial: {touchdown_speed_m_s: 1.0}
-simulation: {duration_s: 1.0, sample_rate_hz: 200, pad_angular_segments: 16}
-)";
+// The paper's lander with 16-segment pads for 1 s (data/studies/lab_coarse_lander_scenario.yaml),
+// landing on a slope with its horizontal velocity downhill.
+const std::string kCoarseScenario = std::string(TOUCHDOWN_SOURCE_DIR) + "/data/studies/lab_coarse_lander_scenario.yaml";
 
 struct RareEventStudy : testing_scratch::ScratchDirTest {
   Study Load(const std::string& random) {
     return LoadStudy(Write("study.yaml", "schema_version: 1\ntype: stability\nname: rare\nlander: {scenario: " +
-                                             Write("coarse.yaml", kCoarseScenario) +
+                                             kCoarseScenario +
                                              "}\nfixed: {downhill_azimuth_deg: -90, yaw_relative_to_slope_deg: 90,"
                                              " horizontal_azimuth_deg: -90}\n" + random));
   }
