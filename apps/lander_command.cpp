@@ -42,7 +42,7 @@ void AddLanderCommand(CLI::App& app) {
     // A resolved copy is checked on the setup it builds; its landing runs on that setup, unless
     // --model changes the soils.
     std::optional<scenario::LanderSetup> setup;
-    scenario::LanderScenario scenario = scenario::LoadLanderScenario(args->scenario, setup);
+    scenario::LanderScenario scenario = scenario::LoadLanderScenarioWithSetup(args->scenario, setup);
     if (!args->model.empty()) {
       scenario.model = model::LoadModelFile(args->model);
       setup.reset();

@@ -476,10 +476,10 @@ void RequireResolvedValuesMatch(const io::YamlFields& f, const LanderScenario& s
 
 LanderScenario LoadLanderScenario(const std::string& path) {
   std::optional<LanderSetup> setup;
-  return LoadLanderScenario(path, setup);
+  return LoadLanderScenarioWithSetup(path, setup);
 }
 
-LanderScenario LoadLanderScenario(const std::string& path, std::optional<LanderSetup>& setup) {
+LanderScenario LoadLanderScenarioWithSetup(const std::string& path, std::optional<LanderSetup>& setup) {
   setup.reset();
   const io::YamlFields f = io::YamlFields::LoadFile(path);
   f.RequireSchemaVersion(1);

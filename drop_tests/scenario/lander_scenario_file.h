@@ -20,10 +20,10 @@ LanderSpec LoadLanderSpec(const io::YamlFields& f);
 // four pads heavier than the lander, or the body's CoM or the hips below the joints.
 LanderSpec LanderSpecWithPad(const LanderSpec& spec, const io::PadSpec& pad);
 LanderScenario LoadLanderScenario(const std::string& path);
-// As above; a resolved copy is checked against the files it names by building its setup, which
+// As LoadLanderScenario; a resolved copy is checked against the files it names by building its setup, which
 // comes back in `setup` so that its landing need not build it again (left empty for a scenario
 // file). The setup holds for the scenario as loaded: one edited afterwards needs its own.
-LanderScenario LoadLanderScenario(const std::string& path, std::optional<LanderSetup>& setup);
+LanderScenario LoadLanderScenarioWithSetup(const std::string& path, std::optional<LanderSetup>& setup);
 // The scenario with its pads meshed as their file says (undoing simulation.pad_angular_segments): a
 // study's reference model when its own landings run on coarser pads (stability re-checks).
 LanderScenario AtPadFileMesh(const LanderScenario& scenario);
