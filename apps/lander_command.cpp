@@ -1,11 +1,15 @@
 #include <iostream>
 #include <memory>
+#include <optional>
+#include <utility>
 #include <nlohmann/json.hpp>
 
 #include "apps/command_help.h"
 #include "apps/commands.h"
 #include "drop_tests/io/output_path.h"
-#include "drop_tests/scenario/lander_scenario.h"
+#include "drop_tests/scenario/lander_outputs.h"
+#include "drop_tests/scenario/lander_scenario_file.h"
+#include "drop_tests/scenario/lander_setup.h"
 
 namespace touchdown::app {
 
@@ -35,9 +39,16 @@ void AddLanderCommand(CLI::App& app) {
     args->scenario = ResolveCommandInput("lander", args->scenario);
     const io::OutputTarget out(args->out, {args->scenario, args->model});
     io::CheckOutputDirectory(out, io::OutputKind::kLander);
-    scenario::LanderScenario scenario = scenario::LoadLanderScenario(args->scenario);
-    if (!args->model.empty()) scenario.model = model::LoadModelFile(args->model);
-    const scenario::LanderRun run = scenario::RunLanderScenario(scenario);
+    // A resolved copy is checked on the setup it builds; its landing runs on that setup, unless
+    // --model changes the soils.
+    std::optional<scenario::LanderSetup> setup;
+    scenario::LanderScenario scenario = scenario::LoadLanderScenarioWithSetup(args->scenario, setup);
+    if (!args->model.empty()) {
+      scenario.model = model::LoadModelFile(args->model);
+      setup.reset();
+    }
+    const scenario::LanderRun run = setup ? scenario::RunLanderScenario(scenario, std::move(*setup))
+                                          : scenario::RunLanderScenario(scenario);
     scenario::WriteLanderOutputs(run, out, {.vtk = !args->no_vtk});
     const nlohmann::json j = scenario::LanderSummaryJson(run);
     std::cout << j.dump(2) << std::endl;

@@ -22,13 +22,13 @@ bool Tipped(const DropRecord& r) { return r.tipped_over == 1.0; }
 // The lander as a drop of the plan builds it (the pad of every pad the plan names, else the
 // scenario's), standing level at zero stroke: body and pads aligned with the world.
 double TipAngleOfLander(const scenario::LanderScenario& sc) {
-  const scenario::LanderSetup setup = scenario::BuildLanderSetup(sc);
-  const lander::StateLayout layout(setup.model);
+  const lander::LanderModel model = scenario::BuildLanderModel(sc);  // no soil needed
+  const lander::StateLayout layout(model);
   Eigen::VectorXd y = Eigen::VectorXd::Zero(layout.size);
   y.segment<4>(layout.quat_B()) << 1.0, 0.0, 0.0, 0.0;
   for (int i = 0; i < lander::kNumLegs; ++i) y.segment<4>(layout.quat_P(i)) << 1.0, 0.0, 0.0, 0.0;
   double smallest = INFINITY;
-  for (const lander::EdgeTipping& e : lander::EdgeTippings(setup.model, layout, y))
+  for (const lander::EdgeTipping& e : lander::EdgeTippings(model, layout, y))
     smallest = std::min(smallest, e.tip_angle_rad);
   return smallest / units::kDeg;
 }

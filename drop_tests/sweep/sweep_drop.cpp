@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include <Eigen/Geometry>
 
 #include "drop_tests/scenario/lander_leg_load.h"
-#include "drop_tests/scenario/lander_scenario.h"
+#include "drop_tests/scenario/lander_scenario_file.h"
+#include "drop_tests/scenario/lander_setup.h"
 #include "drop_tests/drop/drop_factory.h"
 #include "drop_tests/drop/pad_drop.h"
 #include "footpad_geom/axisymmetric_intrusion.h"
@@ -221,15 +223,14 @@ DropRecord SimulateLanderSweepDrop(const SweepModels& models, const SweepDropPar
   r.zeta_N_cm3 = units::ZetaToN_cm3(soil.ZetaAtGravity(sc.gravity_m_s2));
   RecordConditions(sc, r);
   try {
-    {  // the soil under each pad's joint at release, as the ground was built
-      const scenario::LanderSetup setup = scenario::BuildLanderSetup(sc);
-      for (int i = 0; i < lander::kNumLegs; ++i) {
-        const Eigen::Vector3d c = setup.initial.p_WB + setup.initial.R_WB * setup.model.legs[i].joint_B;
-        r.pad_soil[i] = models.SoilName(setup.terrain.soils[setup.terrain.SoilAt(c.x(), c.y())].name);
-      }
-      r.ground_case = PaperGroundCase(r.pad_soil);
+    scenario::LanderSetup setup = scenario::BuildLanderSetup(sc, &models.lander_soils());
+    // The soil under each pad's joint at release, as the ground was built.
+    for (int i = 0; i < lander::kNumLegs; ++i) {
+      const Eigen::Vector3d c = setup.initial.p_WB + setup.initial.R_WB * setup.model.legs[i].joint_B;
+      r.pad_soil[i] = models.SoilName(setup.terrain.soils[setup.terrain.SoilAt(c.x(), c.y())].name);
     }
-    const scenario::LanderRun run = scenario::RunLanderScenario(sc);
+    r.ground_case = PaperGroundCase(r.pad_soil);
+    const scenario::LanderRun run = scenario::RunLanderScenario(sc, std::move(setup));
     const lander::LanderRunResult& l = run.result;
     r.ok = true;
     for (int i = 0; i < lander::kNumLegs; ++i) r.pad_final_penetration_m[i] = l.final_penetration_m[i];
@@ -282,11 +283,12 @@ SweepModels::SweepModels(const SweepPlan& plan) : plan_(plan) {
                               : nullptr);
   if (plan.model) effects_ = model::ModelEffectTerms(*plan.model);
   if (plan.lander) {
-    lander_soil_ = io::LoadSoil(plan.lander->ground.default_soil);
+    // Every soil a landing's ground may name (the scenario's and the sweep's), read once, not per landing.
+    lander_soils_ = scenario::LoadLanderSoils(*plan.lander, plan.soil_refs);
+    lander_soil_ = lander_soils_.at(plan.lander->ground.default_soil);
     if (plan.model) lander_soil_ = model::ApplyModel(*plan.model, lander_soil_);
-    // Soil names of every reference a lander drop's ground may hold (loaded once, not per drop).
-    soil_names_[plan.lander->ground.default_soil] = io::LoadSoil(plan.lander->ground.default_soil).name;
-    for (const scenario::LanderPatchSpec& patch : plan.lander->ground.patches) soil_names_[patch.soil] = io::LoadSoil(patch.soil).name;
+    soil_names_[plan.lander->ground.default_soil] = lander_soils_.at(plan.lander->ground.default_soil).name;
+    for (const scenario::LanderPatchSpec& patch : plan.lander->ground.patches) soil_names_[patch.soil] = lander_soils_.at(patch.soil).name;
     for (size_t i = 0; i < plan.soil_refs.size(); ++i) soil_names_[plan.soil_refs[i]] = plan.soils[i].name;
   }
 }

@@ -1,6 +1,7 @@
 #pragma once
 // Simulating one drop of a sweep. Everything that is the same for many drops (pads loaded,
-// soils with the model applied, the model's effect terms, the pads' RFT intrusion tables) is
+// soils with the model applied, a lander sweep's soil files, the model's effect terms, the pads'
+// RFT intrusion tables) is
 // built once in SweepModels; SimulateSweepDrop is then a pure function of (models, index) that
 // may run on any thread. The kind of drop is chosen per drop:
 //
@@ -20,6 +21,7 @@
 #include <vector>
 
 #include "drop_tests/model/effects.h"
+#include "drop_tests/scenario/lander_setup.h"
 #include "drop_tests/sweep/results_db.h"
 #include "drop_tests/sweep/sweep_spec.h"
 
@@ -43,6 +45,8 @@ class SweepModels {
   const rft::SoilParameters& lander_soil() const { return lander_soil_; }
   // A lander sweep: the soil name (as in the soil file) of a soil reference of its ground.
   const std::string& SoilName(const std::string& ref) const;
+  // A lander sweep: every soil its landings' grounds may name, read once for all of them.
+  const scenario::LanderSoilCatalog& lander_soils() const { return lander_soils_; }
 
  private:
   const SweepPlan& plan_;
@@ -50,6 +54,7 @@ class SweepModels {
   rft::EffectTerms effects_;  // the model's, parsed once
   rft::SoilParameters lander_soil_;
   std::map<std::string, std::string> soil_names_;  // lander sweeps: soil reference -> name
+  scenario::LanderSoilCatalog lander_soils_;
 };
 
 // Runs drop `index` and returns its record. A drop that fails (the integrator gives up, the pad

@@ -707,9 +707,10 @@ SweepPlan LoadSweepPlan(const std::string& path, const std::string& model_overri
   if (plan.lander) {
     plan.lander->model = plan.model;
     try {
-      scenario::BuildLanderSetup(*plan.lander);  // the scenario's own soils under the model
+      const scenario::LanderSoilCatalog soils = scenario::LoadLanderSoils(*plan.lander, plan.soil_refs);
+      scenario::BuildLanderSetup(*plan.lander, &soils);  // the scenario's own soils under the model
       for (const std::string& ref : plan.soil_refs)
-        model::MakeModelStressLaw3D(plan.lander->ground.law, io::LoadSoil(ref), plan.lander->gravity_m_s2, model,
+        model::MakeModelStressLaw3D(plan.lander->ground.law, soils.at(ref), plan.lander->gravity_m_s2, model,
                                     rft::BekkerPlateB(plan.lander->lander.pad.body.surface));
     } catch (const InputError& e) {
       f.Fail("lander", e.what());

@@ -102,6 +102,38 @@ TEST(LanderRanges, LanderMagnitudes) {
                 "legs.absorber.damping_N_s_m", "between 0 and 1e+10 N s/m");
 }
 
+// Legs that cannot be placed on the lander's pad (lander/multibody/leg_placement.h) are refused
+// naming the lander file's key, in the block it sits in.
+TEST(LanderRanges, LegsThatDoNotFitNameTheirKey) {
+  std::string e = LanderError("total_mass_kg", "0.3");  // the four 80 g pads weigh 0.32 kg
+  EXPECT_NE(e.find("sutoh2017_lander.yaml"), std::string::npos) << e;
+  EXPECT_NE(e.find("total_mass_kg: must exceed the four pads' mass"), std::string::npos) << e;
+  e = LanderError("cog_height_mm", "0.1");
+  EXPECT_NE(e.find("cog_height_mm: puts the body's centre of mass below the joints"), std::string::npos) << e;
+  e = LanderError("legs.hip_height_mm", "5");  // the joints are 20 mm above the pad bottoms
+  EXPECT_NE(e.find("legs.hip_height_mm: must be above the ball-joint centres"), std::string::npos) << e;
+}
+
+// pad_attitude is read into an enum at load; any other word is refused, naming the field.
+TEST(LanderRanges, PadAttitude) {
+  EXPECT_NE(ScenarioError(kGround + "initial: {drop_height_m: 0.1, pad_attitude: tilted}\n")
+                .find("initial.pad_attitude: must be 'body' or 'level', got 'tilted'"),
+            std::string::npos);
+  EXPECT_EQ(ScenarioError(kGround + "initial: {drop_height_m: 0.1, pad_attitude: level}\n"), "");
+  LanderScenario s = test::CoarseScenario("lander_case_A");
+  EXPECT_EQ(s.initial.pad_attitude, PadAttitude::kBody);  // the default
+  s.initial.roll_rad = 0.1;
+  s.initial.pad_attitude = PadAttitude::kLevel;
+  const LanderSetup level = BuildLanderSetup(s);
+  s.initial.pad_attitude = PadAttitude::kBody;
+  const LanderSetup body = BuildLanderSetup(s);
+  for (int i = 0; i < lander::kNumLegs; ++i) {
+    EXPECT_TRUE(level.initial.R_WP[i].isApprox(Eigen::Matrix3d::Identity(), 1e-15));
+    EXPECT_TRUE(body.initial.R_WP[i].isApprox(body.initial.R_WB, 1e-15));
+  }
+  EXPECT_FALSE(body.initial.R_WB.isApprox(Eigen::Matrix3d::Identity(), 1e-6));
+}
+
 // The lander body's tensor is checked as a pad's is (io::ReadInertia, geom::ValidateInertia).
 TEST(LanderRanges, BodyInertiaIsARigidBodys) {
   const std::string e = LanderError("body_inertia_kg_m2", "{ixx: 0.01, iyy: 0.01, izz: 0.06}");

@@ -8,6 +8,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <optional>
 
 #include "drop_tests/io/catalog.h"
 #include "drop_tests/scenario/lander_scenario.h"
@@ -224,6 +225,31 @@ TEST_F(LanderScenarioRoundTrip, ResolvedCopyMustMatchItsFiles) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("lander.body_mass_kg"), std::string::npos) << e.what();
   }
+}
+
+
+// A resolved copy is checked on the setup it builds, and that setup comes back for its landing
+// (built once): the one BuildLanderSetup gives the loaded scenario. A scenario file builds none.
+TEST_F(LanderScenarioRoundTrip, ResolvedCopyHandsBackItsSetup) {
+  const std::string source = io::DataDirectory() + "/scenarios/lander_case_B.yaml";
+  std::optional<LanderSetup> setup;
+  LanderScenario s = LoadLanderScenarioWithSetup(source, setup);
+  EXPECT_FALSE(setup.has_value());
+  s.initial.pad_attitude = PadAttitude::kLevel;  // written as its word, read back to the enum
+  WriteResolvedLanderScenario(s, Path("resolved.yaml"), dir_.string());
+  EXPECT_NE(Slurp(Path("resolved.yaml")).find("pad_attitude: level"), std::string::npos);
+  const LanderScenario again = LoadLanderScenarioWithSetup(Path("resolved.yaml"), setup);
+  EXPECT_EQ(again.initial.pad_attitude, PadAttitude::kLevel);
+  ASSERT_TRUE(setup.has_value());
+  const LanderSetup built = BuildLanderSetup(again);
+  EXPECT_EQ(setup->initial.p_WB, built.initial.p_WB);
+  EXPECT_EQ(setup->initial.R_WP, built.initial.R_WP);
+  ASSERT_EQ(setup->terrain.patches.size(), built.terrain.patches.size());
+  for (size_t k = 0; k < built.terrain.patches.size(); ++k)
+    EXPECT_EQ(setup->terrain.patches[k].polygon_W, built.terrain.patches[k].polygon_W);
+  ASSERT_EQ(setup->terrain.soils.size(), built.terrain.soils.size());
+  for (size_t k = 0; k < built.terrain.soils.size(); ++k)
+    EXPECT_EQ(setup->terrain.soils[k].name, built.terrain.soils[k].name);
 }
 
 }  // namespace

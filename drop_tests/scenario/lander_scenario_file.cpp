@@ -1,23 +1,19 @@
-#include "drop_tests/scenario/lander_scenario.h"
+#include "drop_tests/scenario/lander_scenario_file.h"
 
 #include <cmath>
 #include <filesystem>
 #include <functional>
-#include <iomanip>
-#include <nlohmann/json.hpp>
-#include <unistd.h>
+#include <optional>
+#include <variant>
 
-#include "drop_tests/io/output_path.h"
 #include "drop_tests/io/dataset_csv.h"  // io::FormatNumber
 #include "drop_tests/io/field_table.h"
-#include "drop_tests/scenario/lander_plots.h"
-#include "drop_tests/scenario/lander_trace_columns.h"
-#include "drop_tests/scenario/lander_vtk.h"
+#include "drop_tests/io/output_path.h"
 #include "drop_tests/io/paths_in_outputs.h"
-#include "drop_tests/io/yaml_fields.h"
-#include "lander/integ/cvode_integrator.h"
-#include "lander/pad/release.h"
-#include "rft/bekker_law.h"
+#include "drop_tests/io/yaml_diff.h"
+#include "drop_tests/scenario/lander_setup.h"
+#include "drop_tests/model/model_file.h"
+#include "lander/multibody/leg_placement.h"
 #include "rft/gravity_constants.h"
 #include "rft/input_error.h"
 #include "rft/physical_limits.h"
@@ -28,12 +24,11 @@ namespace touchdown::scenario {
 
 namespace fs = std::filesystem;
 
+const char* PadAttitudeName(PadAttitude attitude) { return attitude == PadAttitude::kLevel ? "level" : "body"; }
+
 namespace {
 using units::kDeg;
 using units::kMm;
-// Pads clockwise seen from above, pad 1 front-left (x forward, y left).
-constexpr double kPadAzimuthDeg[lander::kNumLegs] = {45.0, -45.0, -135.0, 135.0};
-
 // A list of exactly n finite numbers (any sign).
 std::vector<double> FixedList(const io::YamlFields& f, const std::string& key, size_t n) {
   const YAML::Node list = f.node()[key];
@@ -112,35 +107,34 @@ void WriteAbsorber(YAML::Emitter& y, const lander::ShockAbsorber& a) {
   y << YAML::EndMap;
 }
 
-Eigen::Matrix3d AxisRotation(const Eigen::Vector3d& axis, double angle) {
-  return Eigen::AngleAxisd(angle, axis).toRotationMatrix();
-}
 }  // namespace
 
 namespace {
-// The body's mass and CoM and the legs' joints and hips from the pad and the leg layout; "" or
-// "field: reason" when they do not fit.
-std::string PlaceLegs(LanderSpec& s) {
-  const geom::PadBody& pad = s.pad.body;
-  s.body_mass_kg = s.total_mass_kg - lander::kNumLegs * pad.mass_kg;
-  if (!(s.body_mass_kg > 0.0)) return "total_mass_kg: must exceed the four pads' mass";
-  // Standing level on the pad bottoms: the joint centre is -lowest_z_B above the bottom, the pad
-  // CoM com_B.z above the joint; the body CoM height follows from the whole lander's CoG height.
-  const double joint_height = -pad.lowest_z_B;
-  const double pad_com_height = joint_height + pad.com_B.z();
-  const double body_com_height =
-      (s.total_mass_kg * s.cog_height_m - lander::kNumLegs * pad.mass_kg * pad_com_height) / s.body_mass_kg;
-  if (!(body_com_height > joint_height)) return "cog_height_mm: puts the body's centre of mass below the joints";
-  if (!(s.layout.hip_height_m > joint_height)) return "hip_height_mm: must be above the ball-joint centres";
+// The lander file's key that a leg placement's error names.
+const char* PlacementKey(lander::LegPlacementError::Field field) {
+  switch (field) {
+    case lander::LegPlacementError::Field::kTotalMass: return "total_mass_kg";
+    case lander::LegPlacementError::Field::kCogHeight: return "cog_height_mm";
+    case lander::LegPlacementError::Field::kHipHeight: return "hip_height_mm";
+  }
+  return "";
+}
+
+// The body's mass and CoM and the legs' joints and hips from the pad and the leg layout
+// (lander/multibody/leg_placement.h); the error when they do not fit.
+std::optional<lander::LegPlacementError> PlaceLegs(LanderSpec& s) {
+  const lander::LegLayout layout{s.layout.joint_radius_m, s.layout.hip_radius_m, s.layout.hip_height_m};
+  const auto placed = lander::PlaceLegs(s.pad.body, s.total_mass_kg, s.cog_height_m, layout);
+  if (const auto* error = std::get_if<lander::LegPlacementError>(&placed)) return *error;
+  const lander::LegPlacement& p = std::get<lander::LegPlacement>(placed);
+  s.body_mass_kg = p.body_mass_kg;
   for (int i = 0; i < lander::kNumLegs; ++i) {
-    const double az = kPadAzimuthDeg[i] * kDeg;
-    const Eigen::Vector3d dir(std::cos(az), std::sin(az), 0.0);
-    s.legs[i].joint_B = s.layout.joint_radius_m * dir + Eigen::Vector3d(0, 0, joint_height - body_com_height);
-    s.legs[i].hip_B = s.layout.hip_radius_m * dir + Eigen::Vector3d(0, 0, s.layout.hip_height_m - body_com_height);
+    s.legs[i].joint_B = p.joint_B[i];
+    s.legs[i].hip_B = p.hip_B[i];
     s.legs[i].absorber = s.layout.absorber;
     s.legs[i].cone = s.layout.cone;
   }
-  return "";
+  return std::nullopt;
 }
 }  // namespace
 
@@ -179,9 +173,9 @@ LanderSpec LoadLanderSpec(const io::YamlFields& f) {
     s.layout.cone.emplace();
     io::ReadFields(c, ConeFields(), *s.layout.cone);
   }
-  if (const std::string why = PlaceLegs(s); !why.empty()) {
-    const bool hips = why.starts_with("hip_height_mm");
-    (hips ? legs : f).Fail(why.substr(0, why.find(':')), why.substr(why.find(':') + 2));
+  if (const auto error = PlaceLegs(s)) {
+    const bool hips = error->field == lander::LegPlacementError::Field::kHipHeight;
+    (hips ? legs : f).Fail(PlacementKey(error->field), error->reason);
   }
   return s;
 }
@@ -189,9 +183,9 @@ LanderSpec LoadLanderSpec(const io::YamlFields& f) {
 LanderSpec LanderSpecWithPad(const LanderSpec& spec, const io::PadSpec& pad) {
   LanderSpec s = spec;
   s.pad = pad;
-  if (const std::string why = PlaceLegs(s); !why.empty())
-    throw InputError("pad " + pad.name + " does not fit lander " + spec.name + " (its " + why + "; pad file " +
-                     pad.source + ")");
+  if (const auto error = PlaceLegs(s))
+    throw InputError("pad " + pad.name + " does not fit lander " + spec.name + " (its " + PlacementKey(error->field) +
+                     ": " + error->reason + "; pad file " + pad.source + ")");
   return s;
 }
 
@@ -402,9 +396,11 @@ LanderInitialSpec ReadInitial(const io::YamlFields& in, bool resolved) {
                       in.Path("angular_rate_deg_s") + "[" + std::to_string(k) + "]");
     ic.angular_rate_B = Eigen::Vector3d(w[0], w[1], w[2]) * kDeg;
   }
-  ic.pad_attitude = in.StringOr("pad_attitude", "body");
-  if (ic.pad_attitude != "body" && ic.pad_attitude != "level")
-    in.Fail("pad_attitude", "must be 'body' or 'level', got '" + ic.pad_attitude + "'");
+  const std::string attitude = in.StringOr("pad_attitude", PadAttitudeName(PadAttitude::kBody));
+  if (attitude == PadAttitudeName(PadAttitude::kLevel))
+    ic.pad_attitude = PadAttitude::kLevel;
+  else if (attitude != PadAttitudeName(PadAttitude::kBody))
+    in.Fail("pad_attitude", "must be 'body' or 'level', got '" + attitude + "'");
   return ic;
 }
 
@@ -456,56 +452,35 @@ void WriteLanderBlock(YAML::Emitter& y, const LanderSpec& l, const std::function
 void WriteSoilsBlock(YAML::Emitter& y, const LanderScenario& s, const LanderSetup& setup);
 void WriteVector(YAML::Emitter& y, const Eigen::Vector3d& v, double scale);
 
-// Where `given` (a block of a resolved copy) differs from `expected` (that block written again
-// from the files it names), as a dotted path; empty when they agree. Numbers are compared as
-// written (17 digits), so equal text is equal value.
-std::string FirstDifference(const YAML::Node& given, const YAML::Node& expected, const std::string& at) {
-  if (given.Type() != expected.Type()) return at;
-  if (given.IsScalar()) return given.Scalar() == expected.Scalar() ? "" : at;
-  if (given.size() != expected.size()) return at;
-  if (given.IsSequence()) {
-    for (size_t i = 0; i < given.size(); ++i)
-      if (std::string d = FirstDifference(given[i], expected[i], at + "[" + std::to_string(i) + "]"); !d.empty()) return d;
-    return "";
-  }
-  for (const auto& kv : expected) {
-    const std::string key = kv.first.Scalar();
-    if (!given[key]) return at + "." + key;
-    if (std::string d = FirstDifference(given[key], kv.second, at + "." + key); !d.empty()) return d;
-  }
-  return "";
-}
-
 // The block `key` of `f` must be what `write` writes now.
 void RequireSameBlock(const io::YamlFields& f, const std::string& key, const std::function<void(YAML::Emitter&)>& write) {
   if (!f.Has(key)) f.Fail(key, "missing (a resolved copy states it)");
   YAML::Emitter y;
   write(y);
-  const std::string d = FirstDifference(f.node()[key], YAML::Load(y.c_str()), key);
+  const std::string d = io::FirstYamlDifference(f.node()[key], YAML::Load(y.c_str()), key);
   if (!d.empty())
     f.Fail(key, "differs at " + d + " from what the files it names give now (lander, pad, soils, model)");
 }
 
 // A resolved copy's derived values (the lander's masses, pad and legs, the soils as run, the
-// release position) are read back against the files they came from.
-void RequireResolvedValuesMatch(const io::YamlFields& f, const LanderScenario& s) {
+// release position) are read back against the files they came from, on `setup` built from it.
+void RequireResolvedValuesMatch(const io::YamlFields& f, const LanderScenario& s, const LanderSetup& setup) {
   const std::string dir = fs::path(f.file()).parent_path().string();
   const auto file = [&](const std::string& p) { return io::PathForOutput(p, dir); };
   RequireSameBlock(f, "lander", [&](YAML::Emitter& y) { WriteLanderBlock(y, s.lander, file); });
-  const LanderSetup setup = BuildLanderSetup(s);
   RequireSameBlock(f.Child("ground"), "soils", [&](YAML::Emitter& y) { WriteSoilsBlock(y, s, setup); });
   RequireSameBlock(f.Child("initial"), "release_body_com_m",
                    [&](YAML::Emitter& y) { WriteVector(y, setup.initial.p_WB, 1.0); });
 }
 }  // namespace
 
-double TouchdownSpeed(const LanderScenario& s) {
-  const LanderInitialSpec& ic = s.initial;
-  if (!ic.drop_height_m) return *ic.touchdown_speed_m_s;
-  return std::sqrt(std::pow(ic.release_vertical_speed_m_s, 2) + 2.0 * s.gravity_m_s2 * *ic.drop_height_m);
+LanderScenario LoadLanderScenario(const std::string& path) {
+  std::optional<LanderSetup> setup;
+  return LoadLanderScenarioWithSetup(path, setup);
 }
 
-LanderScenario LoadLanderScenario(const std::string& path) {
+LanderScenario LoadLanderScenarioWithSetup(const std::string& path, std::optional<LanderSetup>& setup) {
+  setup.reset();
   const io::YamlFields f = io::YamlFields::LoadFile(path);
   f.RequireSchemaVersion(1);
   const std::string type = f.String("type");
@@ -575,210 +550,11 @@ LanderScenario LoadLanderScenario(const std::string& path) {
     if (used && !by) p.Fail("fit_by", "missing (used_for_fit: true names the fit that used it)");
     if (by && !used) p.Fail("fit_by", "only with used_for_fit: true");
   }
-  if (resolved) RequireResolvedValuesMatch(f, s);
+  if (resolved) {
+    setup = BuildLanderSetup(s);
+    RequireResolvedValuesMatch(f, s, *setup);
+  }
   return s;
-}
-
-LanderSetup BuildLanderSetup(const LanderScenario& sc) {
-  LanderSetup out;
-  lander::LanderModel& m = out.model;
-  m.body_mass_kg = sc.lander.body_mass_kg;
-  m.body_inertia_B = sc.lander.body_inertia_B;
-  m.gravity_m_s2 = sc.gravity_m_s2;
-  m.soil_ramp_speed_m_s = sc.options.soil_ramp_speed_m_s;
-  m.soil_ramp = sc.options.soil_ramp;
-  auto pad = std::make_shared<const geom::PadBody>(sc.lander.pad.body);
-  for (int i = 0; i < lander::kNumLegs; ++i) {
-    m.legs[i].hip_B = sc.lander.legs[i].hip_B;
-    m.legs[i].joint_B = sc.lander.legs[i].joint_B;
-    m.legs[i].absorber = sc.lander.legs[i].absorber;
-    m.legs[i].cone = sc.lander.legs[i].cone;
-    m.legs[i].pad = pad;
-  }
-  lander::FinishModel(m);
-
-  // Ground: z = h0 - tan(slope) (x cos(az) + y sin(az)).
-  const double t = std::tan(sc.ground.slope_rad), az = sc.ground.downhill_azimuth_rad;
-  out.terrain.surface = std::make_shared<rft::PlaneGround>(sc.ground.height_m, -t * std::cos(az), -t * std::sin(az));
-  std::vector<std::string> soil_names{sc.ground.default_soil};
-  auto soil_index = [&](const std::string& name) {
-    for (size_t k = 0; k < soil_names.size(); ++k)
-      if (soil_names[k] == name) return int(k);
-    soil_names.push_back(name);
-    return int(soil_names.size() - 1);
-  };
-
-  // Attitude: optional slope alignment, then heading (downhill azimuth + relative yaw), then
-  // aerospace pitch (nose up, about -y) and roll (right side down, about +x).
-  const LanderInitialSpec& ic = sc.initial;
-  const Eigen::Vector3d downhill(std::cos(az), std::sin(az), 0.0);
-  Eigen::Matrix3d R_align = Eigen::Matrix3d::Identity();
-  if (ic.align_to_slope && sc.ground.slope_rad > 0.0)
-    R_align = AxisRotation(Eigen::Vector3d::UnitZ().cross(downhill).normalized(), sc.ground.slope_rad);
-  const Eigen::Matrix3d R_WB = R_align * AxisRotation(Eigen::Vector3d::UnitZ(), az + ic.yaw_relative_to_slope_rad) *
-                               AxisRotation(Eigen::Vector3d::UnitY(), -ic.pitch_rad) *
-                               AxisRotation(Eigen::Vector3d::UnitX(), ic.roll_rad);
-  lander::LanderInitialState& s = out.initial;
-  s.R_WB = R_WB;
-  for (int i = 0; i < lander::kNumLegs; ++i) s.R_WP[i] = ic.pad_attitude == "level" ? Eigen::Matrix3d::Identity() : R_WB;
-  s.w_WB_W = R_WB * ic.angular_rate_B;
-  const double g = sc.gravity_m_s2;
-  double clearance = 0.0, vz_down = 0.0;
-  if (ic.drop_height_m) {
-    clearance = *ic.drop_height_m;
-    vz_down = ic.release_vertical_speed_m_s;
-  } else {
-    // Release just above the surface so the first pad touches at the requested speed: at most half
-    // the pad's height above it (5 mm for the paper's 10 mm pad). A length of the lander's own, so
-    // that a geometrically similar lander is released at the homologous height and its landing is
-    // the model's scaled (docs/lander_dynamics.md, "Similitude"); a fixed length would shift the
-    // touchdown point and time of one of them against its patches.
-    const double v = *ic.touchdown_speed_m_s;
-    const double pad_height = m.legs[0].pad->vertices_B.row(2).maxCoeff() - m.legs[0].pad->lowest_z_B;
-    const double release_gap = 0.5 * pad_height;
-    clearance = pad::ReleaseClearance(release_gap, v, g);
-    vz_down = pad::ReleaseSpeed(v, g, clearance);
-  }
-  s.v_WB_W = Eigen::Vector3d(ic.horizontal_velocity_m_s.x(), ic.horizontal_velocity_m_s.y(), -vz_down);
-  s.p_WB.z() = lander::BodyHeightForClearance(m, out.terrain, s, clearance);
-
-  for (const LanderPatchSpec& p : sc.ground.patches) {
-    rft::SoilPatch patch{p.name, p.polygon_W, soil_index(p.soil)};
-    if (p.polygon_W.size() == 1) {  // under_pad: a square centred below that pad's joint at release
-      const int leg = int(p.polygon_W[0].x()) - 1;
-      const double h = p.polygon_W[0].y();
-      const Eigen::Vector3d c = s.p_WB + R_WB * m.legs[leg].joint_B;
-      patch.polygon_W = rft::RectanglePolygon(c.x() - h, c.y() - h, c.x() + h, c.y() + h);
-    }
-    out.terrain.patches.push_back(patch);
-  }
-  // The bekker law's b is the lander's pad's (the same pad on every leg).
-  const double plate_b_m = sc.ground.law == rft::LawKind::kBekker ? rft::BekkerPlateB(sc.lander.pad.body.surface) : 0.0;
-  if (sc.ground.soil_field) {
-    // After the explicit patches (first match wins); cells of the default soil need no patch.
-    // seed: per_landing is a study's (its landings get their seeds, sweep_drop.cpp); a plan's
-    // check of the scenario builds with the file's seed (0), RunLanderScenario refuses to run it.
-    const SoilFieldSpec& field = *sc.ground.soil_field;
-    const std::vector<SoilFieldCell> cells = DrawSoilField(field, s.p_WB.x(), s.p_WB.y());  // n x n, row by row
-    rft::SoilGrid& grid = out.terrain.grid;
-    grid.nx = grid.ny = static_cast<int>(std::lround(std::sqrt(static_cast<double>(cells.size()))));
-    grid.x0_m = cells.front().x0;
-    grid.y0_m = cells.front().y0;
-    grid.cell_m = field.cell_size_m;
-    for (const SoilFieldCell& cell : cells) grid.soil.push_back(soil_index(field.soils[cell.soil]));
-  }
-  for (const std::string& name : soil_names)
-    out.terrain.soils.push_back({name, model::MakeModelStressLaw3D(sc.ground.law, io::LoadSoil(name), g,
-                                                                   sc.model ? &*sc.model : nullptr, plate_b_m)});
-  return out;
-}
-
-LanderRun RunLanderScenario(const LanderScenario& scenario) {
-  if (scenario.ground.soil_field && scenario.ground.soil_field->seed_per_landing)
-    throw MakeInputError(scenario.source, "ground.soil_field.seed",
-                         "per_landing draws a field for each landing of a study; a single landing needs a number");
-  LanderRun run;
-  run.scenario = scenario;
-  run.setup = BuildLanderSetup(scenario);
-  // A failed landing names its scenario (the integrator's message names only the failure).
-  const std::string which = "lander scenario " + scenario.name + " (" + scenario.source + "): ";
-  try {
-    run.result = lander::SimulateLander(run.setup.model, run.setup.terrain, run.setup.initial, scenario.options);
-  } catch (const integ::LimitExceeded& e) {
-    throw integ::LimitExceeded(which + e.what(), e.limit(), e.value());
-  } catch (const integ::IntegrationFailure& e) {
-    throw integ::IntegrationFailure(which + e.what());
-  }
-  const lander::StateLayout L(run.setup.model);
-  const lander::LanderPose pose = lander::ComputePose(run.setup.model, L, run.result.final_state);
-  for (int i = 0; i < lander::kNumLegs; ++i) {
-    const Eigen::Vector3d& p = pose.pads[i].p_WJ;
-    run.soil_under_pad[i] = run.setup.terrain.soils[run.setup.terrain.SoilAt(p.x(), p.y())].name;
-  }
-  return run;
-}
-
-nlohmann::json LanderSummaryJson(const LanderRun& run) {
-  const lander::LanderRunResult& r = run.result;
-  auto arr = [](const std::array<double, lander::kNumLegs>& a) { return nlohmann::json(std::vector<double>(a.begin(), a.end())); };
-  // JSON numbers are never null: a pad that never touched down is absent from touchdown_pads, and
-  // touchdown_time_s is aligned with it; a lander never at rest has no rest times (came_to_rest false).
-  nlohmann::json touchdown = nlohmann::json::array(), touchdown_pads = nlohmann::json::array();
-  for (size_t i = 0; i < r.touchdown_time_s.size(); ++i)
-    if (r.touchdown_time_s[i]) {
-      touchdown.push_back(*r.touchdown_time_s[i]);
-      touchdown_pads.push_back(i + 1);
-    }
-  const double final_energy = r.final_kinetic_J + r.final_potential_J + r.dissipated_J;
-  const double roll = r.final_attitude.roll_rad / kDeg, pitch = r.final_attitude.pitch_rad / kDeg;
-  nlohmann::json j{
-      {"scenario", run.scenario.name},
-      {"lander", run.scenario.lander.name},
-      {"pads_order", "clockwise from above, pad 1 front-left (paper numbering)"},
-      {"soil_under_pad", run.soil_under_pad},
-      {"gravity_m_s2", run.scenario.gravity_m_s2},
-      {"final_penetration_m", arr(r.final_penetration_m)},
-      {"final_roll_deg", roll},
-      {"final_pitch_deg", pitch},
-      {"max_tilt_deg", r.max_tilt_rad / kDeg},
-      {"max_joint_swing_deg", r.max_joint_swing_rad / kDeg},
-      {"tipped_over", r.tipped_over},
-      {"peak_pad_force_N", arr(r.peak_pad_force_N)},
-      {"max_body_deceleration_m_s2", r.max_body_deceleration_m_s2},
-      {"came_to_rest", r.rest_time_s.has_value()},
-      {"touchdown_pads", touchdown_pads},
-      {"touchdown_time_s", touchdown},
-      {"end_time_s", r.end_time_s},
-      {"initial_energy_J", r.initial_energy_J},
-      {"final_kinetic_energy_J", r.final_kinetic_J},
-      {"final_potential_energy_J", r.final_potential_J},
-      {"dissipated_energy_J", r.dissipated_J},
-      {"capture_loss_J", r.capture_loss_J},
-      {"energy_balance_error_J", final_energy - r.initial_energy_J},
-      {"max_held_pad_drift_m", r.max_held_drift_m},
-      {"events", r.events.size()},
-      {"solver_steps", r.solver.steps},
-      {"rhs_evaluations", r.solver.rhs_evaluations},
-  };
-  if (r.rest_time_s) {
-    j["rest_time_since_release_s"] = *r.rest_time_s;
-    if (r.first_touchdown_s) j["time_to_rest_s"] = *r.rest_time_s - *r.first_touchdown_s;
-  }
-  if (r.tipped_over) {  // the support edge it went over (pads clockwise) and the direction it fell
-    j["tip_over_edge_pads"] = {r.tip_over_edge + 1, (r.tip_over_edge + 1) % lander::kNumLegs + 1};
-    j["tip_over_azimuth_deg"] = r.tip_over_azimuth_rad / kDeg;
-  }
-  j["touchdown_speed_m_s"] = TouchdownSpeed(run.scenario);
-  if (run.scenario.model) j["model"] = model::ModelEffectsJson(*run.scenario.model);
-  if (!run.scenario.paper_ground_case.empty()) j["paper_ground_case"] = run.scenario.paper_ground_case;
-  if (run.scenario.paper) j["paper_check"] = LanderPaperCheckJson(*run.scenario.paper, roll, pitch);
-  return j;
-}
-
-nlohmann::json LanderPaperCheckJson(const LanderPaperCheck& check, double roll_deg, double pitch_deg) {
-  const double within = check.roll_pitch_within_deg;
-  nlohmann::json j{{"quantity", "final roll and pitch"},
-                   {"paper_within_deg", within},
-                   {"simulated_roll_deg", roll_deg},
-                   {"simulated_pitch_deg", pitch_deg},
-                   {"within_paper_band", std::abs(roll_deg) <= within && std::abs(pitch_deg) <= within},
-                   {"source", check.source},
-                   {"used_for_fit", check.used_for_fit}};
-  if (check.used_for_fit) j["fit_by"] = check.fit_by;
-  if (check.reading) j["reading"] = std::string(PaperReadingName(*check.reading));
-  return j;
-}
-
-void WriteLanderTraceCsv(const LanderRun& run, const std::string& path) {
-  const std::vector<LanderTraceColumn>& columns = LanderTraceColumns();
-  io::WriteFileAtomically(path, [&](std::ostream& out) {
-    for (size_t c = 0; c < columns.size(); ++c) out << (c ? "," : "") << columns[c].name;
-    out << '\n' << std::setprecision(10);
-    for (const lander::LanderSample& s : run.result.trace) {
-      for (size_t c = 0; c < columns.size(); ++c) out << (c ? "," : "") << columns[c].value(s);
-      out << '\n';
-    }
-  });
 }
 
 namespace {
@@ -840,6 +616,11 @@ void WriteSoilsBlock(YAML::Emitter& y, const LanderScenario& s, const LanderSetu
 }  // namespace
 
 void WriteResolvedLanderScenario(const LanderScenario& s, const std::string& path, const std::string& output_dir) {
+  WriteResolvedLanderScenario(s, BuildLanderSetup(s), path, output_dir);
+}
+
+void WriteResolvedLanderScenario(const LanderScenario& s, const LanderSetup& setup, const std::string& path,
+                                 const std::string& output_dir) {
   const FileName file = [&](const std::string& p) { return io::PathForOutput(p, output_dir); };
   YAML::Emitter y;
   y << YAML::BeginMap << YAML::Key << "schema_version" << YAML::Value << 1 << YAML::Key << "type" << YAML::Value
@@ -852,7 +633,6 @@ void WriteResolvedLanderScenario(const LanderScenario& s, const std::string& pat
   y << YAML::Key << "ground" << YAML::Value << YAML::BeginMap;
   io::WriteFields(y, GroundNumberFields(), s.ground);
   y << YAML::Key << "law" << YAML::Value << std::string(rft::LawKindName(s.ground.law)) << YAML::Key << "soil" << YAML::Value << s.ground.default_soil;
-  const LanderSetup setup = BuildLanderSetup(s);
   y << YAML::Key << "soils" << YAML::Value;
   WriteSoilsBlock(y, s, setup);
   if (s.model) y << YAML::Key << "model" << YAML::Value << file(s.model->source);
@@ -887,7 +667,7 @@ void WriteResolvedLanderScenario(const LanderScenario& s, const std::string& pat
   y << YAML::Key << "align_to_slope" << YAML::Value << ic.align_to_slope << YAML::Key << "angular_rate_deg_s"
     << YAML::Value;
   WriteVector(y, ic.angular_rate_B, 1.0 / kDeg);
-  y << YAML::Key << "pad_attitude" << YAML::Value << ic.pad_attitude << YAML::Key << "release_body_com_m" << YAML::Value;
+  y << YAML::Key << "pad_attitude" << YAML::Value << PadAttitudeName(ic.pad_attitude) << YAML::Key << "release_body_com_m" << YAML::Value;
   WriteVector(y, setup.initial.p_WB, 1.0);
   y << YAML::EndMap;
   y << YAML::Key << "simulation" << YAML::Value << YAML::BeginMap;
@@ -915,23 +695,6 @@ void WriteResolvedLanderScenario(const LanderScenario& s, const std::string& pat
   }
   y << YAML::EndMap;
   io::WriteFileAtomically(path, [&](std::ostream& out) { out << y.c_str() << '\n'; });
-}
-
-void WriteLanderOutputs(const LanderRun& run, const io::OutputTarget& out, const LanderOutputOptions& options) {
-  io::WriteOutputDirectory(out, io::OutputKind::kLander, [&](const std::string& staging_dir) {
-    const fs::path staging = staging_dir;
-    WriteLanderTraceCsv(run, (staging / "trace.csv").string());
-    io::WriteFileAtomically((staging / "events.csv").string(), [&](std::ostream& out) {
-      out << "t_s,event,pad\n" << std::setprecision(12);
-      for (const lander::LanderEvent& e : run.result.events)
-        out << e.t_s << ',' << lander::LanderEventName(e.kind) << ',' << (e.leg >= 0 ? std::to_string(e.leg + 1) : std::string()) << '\n';
-    });
-    io::WriteFileAtomically((staging / "summary.json").string(),
-                        [&](std::ostream& out) { out << LanderSummaryJson(run).dump(2) << '\n'; });
-    WriteResolvedLanderScenario(run.scenario, (staging / "scenario_resolved.yaml").string(), out.path);
-    WriteLanderPlots(run, staging.string());
-    if (options.vtk) WriteLanderVtk(run, (staging / "vtk").string());
-  });
 }
 
 }  // namespace touchdown::scenario

@@ -1,0 +1,40 @@
+#pragma once
+// The lander scenario's files: the lander file (data/landers), the scenario file and its resolved
+// copy (`scenario_resolved.yaml`, which reads back to the same landing). Schema:
+// docs/lander_dynamics.md.
+#include <optional>
+#include <string>
+
+#include "drop_tests/io/catalog.h"
+#include "drop_tests/io/yaml_fields.h"
+#include "drop_tests/scenario/lander_scenario_types.h"
+
+namespace touchdown::scenario {
+
+LanderSpec LoadLanderSpec(const std::string& name_or_path);
+// A lander from its file's YAML as read, possibly edited in memory first (calibrate --targets).
+LanderSpec LoadLanderSpec(const io::YamlFields& f);
+// The same lander on another pad (a study's pad design): the total mass and the whole lander's CoG
+// height stay, so the body's mass and CoM, and the joints (the pad's joint height above its
+// bottom), follow the pad. Throws InputError naming the pad file when the pad does not fit: the
+// four pads heavier than the lander, or the body's CoM or the hips below the joints.
+LanderSpec LanderSpecWithPad(const LanderSpec& spec, const io::PadSpec& pad);
+LanderScenario LoadLanderScenario(const std::string& path);
+// As LoadLanderScenario; a resolved copy is checked against the files it names by building its setup, which
+// comes back in `setup` so that its landing need not build it again (left empty for a scenario
+// file). The setup holds for the scenario as loaded: one edited afterwards needs its own.
+LanderScenario LoadLanderScenarioWithSetup(const std::string& path, std::optional<LanderSetup>& setup);
+// The scenario with its pads meshed as their file says (undoing simulation.pad_angular_segments): a
+// study's reference model when its own landings run on coarser pads (stability re-checks).
+LanderScenario AtPadFileMesh(const LanderScenario& scenario);
+
+// The files named are written for `output_dir`, the directory the file finally lives in
+// (drop_tests/io/paths_in_outputs.h: no absolute paths of this machine). `setup` is the
+// scenario's (BuildLanderSetup): the copy states the soils and the release position it gives.
+void WriteResolvedLanderScenario(const LanderScenario& scenario, const LanderSetup& setup, const std::string& path,
+                                 const std::string& output_dir);
+// As above, building the setup first (a copy written without running the landing).
+void WriteResolvedLanderScenario(const LanderScenario& scenario, const std::string& path,
+                                 const std::string& output_dir);
+
+}  // namespace touchdown::scenario
