@@ -361,7 +361,8 @@ TEST_F(CatalogFiles, AShelfHoldsOnlyItsType) {
   const std::vector<CatalogShelf> studies = ShelvesOf(InputDocument::kStudy);
   ASSERT_EQ(studies.size(), 1u);
   EXPECT_EQ(ShelfNames(studies[0]),
-            (std::vector<std::string>{"lab_paper_lander", "lunar_paper_lander", "lunar_patchy_ground",
+            (std::vector<std::string>{"lab_paper_lander", "lunar_paper_lander", "lunar_paper_lander_calibrated",
+                                      "lunar_paper_lander_soil_uncertainty", "lunar_patchy_ground",
                                       "lunar_rare_tip_over"}));
   const std::vector<CatalogShelf> landers = ShelvesOf(InputDocument::kLander);
   ASSERT_EQ(landers.size(), 1u);
@@ -377,6 +378,7 @@ TEST_F(CatalogFiles, AShelfHoldsOnlyItsType) {
               std::string::npos)
         << message;
     EXPECT_NE(message.find("studies in " + DataDirectory() + "/studies: lab_paper_lander, lunar_paper_lander, "
+                           "lunar_paper_lander_calibrated, lunar_paper_lander_soil_uncertainty, "
                            "lunar_patchy_ground, lunar_rare_tip_over)"),
               std::string::npos)
         << message;
