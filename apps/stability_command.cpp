@@ -3,6 +3,7 @@
 #include <cstdlib>
 #include <iomanip>
 #include <iostream>
+#include <sstream>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -77,6 +78,26 @@ void PrintFollowUps(const stability::StudySummary& s) {
   }
 }
 
+// The soil's share of the outcome's variance, and P(tip) across the soil's 95 % range.
+void PrintSoilSplit(const stability::Study& study, const stability::StudySummary& s) {
+  if (!study.soil_uncertainty) return;
+  if (!s.soil_split) {
+    std::cout << "  soil uncertainty: too few landings to split the variance\n";
+    return;
+  }
+  const stability::SoilSplit& split = *s.soil_split;
+  std::ostringstream shares;
+  shares << std::setprecision(3);
+  for (const stability::ShareEstimate& e : split.shares)
+    if (e.outcome == "tipped_over" || e.outcome == "max_tilt_deg" || e.outcome == "max_pad_penetration_m")
+      shares << (shares.tellp() > 0 ? ", " : "") << e.outcome << " " << e.soil_share << " [" << e.soil_share_low << ", "
+             << e.soil_share_high << "]";
+  std::cout << "  soil uncertainty (" << study.soil_uncertainty->parameters.size()
+            << " parameter(s) drawn), the soil's share of the variance: " << shares.str() << std::setprecision(4)
+            << "; P(tip-over) across the soil's 95 % range " << split.p_tip_at_soil_ends.first << " to "
+            << split.p_tip_at_soil_ends.second << "\n";
+}
+
 void PrintStudyResult(const stability::Study& study, const stability::StudySummary& s, const std::string& out) {
   std::cout << "stability " << study.plan.name << ": " << s.landings << " landings"
             << (s.failed > 0 ? " (" + std::to_string(s.failed) + " failed, not counted)" : std::string()) << ", "
@@ -103,8 +124,9 @@ void PrintStudyResult(const stability::Study& study, const stability::StudySumma
                                                     std::to_string(s.margin_checked))
               << " landings\n";
   PrintFollowUps(s);
+  PrintSoilSplit(study, s);
   std::cout << "wrote " << out << "/ (summary.json, percentiles.csv" << (study.map ? ", tip_over_map.csv" : "")
-            << ", plots/)\n";
+            << (study.soil_uncertainty ? ", soil_parameters.csv" : "") << ", plots/)\n";
 }
 
 // A study whose every landing failed has no answer (no probability, no percentiles): the solver

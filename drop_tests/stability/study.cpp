@@ -175,12 +175,16 @@ Study LoadStudy(const std::string& path, const std::string& model_override, std:
   if (!(study.recheck.rtol < ScenarioRtol(study.plan))) study.recheck.rtol = ScenarioRtol(study.plan) / 100.0;
   if (f.Has("study")) {
     const io::YamlFields s = f.Child("study");
-    s.RequireOnly({"map", "worst_cases", "max_tip_over_cases", "recheck", "joint_range_sensitivity"});
+    s.RequireOnly({"map", "worst_cases", "max_tip_over_cases", "recheck", "joint_range_sensitivity", "soil_uncertainty"});
     if (s.Has("map")) study.map = ReadMap(s, study.plan);
     study.worst_cases = ReadCount(s, "worst_cases", study.worst_cases);
     study.max_tip_over_cases = ReadCount(s, "max_tip_over_cases", study.max_tip_over_cases);
     study.recheck = ReadRecheck(s, study.recheck, ScenarioRtol(study.plan));
     study.joint_range = ReadJointRange(s);
+    if (s.Has("soil_uncertainty")) {
+      study.soil_uncertainty = ReadSoilUncertainty(s, study.plan);
+      AttachSoilUncertainty(study.plan, *study.soil_uncertainty);
+    }
   }
   return study;
 }

@@ -9,6 +9,7 @@
 //     max_tip_over_cases: 100 # tip-overs listed with their conditions, at most (default 100)
 //     recheck: {rtol: 1e-8, tilt_margin_deg: 2}  # or `none` (study_followups.h)
 //     joint_range_sensitivity: {samples: 1000}    # or `none`
+//     soil_uncertainty: {fjs1_cp: {calibration: FILE.json}}  # soils' zeta drawn per landing (soil_uncertainty.h)
 //
 // The map's axes are two number parameters the study varies (grid or random); its range is the
 // parameter's over the plan (a random parameter's [low, high], a grid's or choice's smallest and
@@ -17,6 +18,7 @@
 #include <optional>
 #include <string>
 
+#include "drop_tests/stability/soil_uncertainty.h"
 #include "drop_tests/sweep/sweep_spec.h"
 
 namespace touchdown::drop {
@@ -67,6 +69,8 @@ struct Study {
   int max_tip_over_cases = 100;
   RecheckSettings recheck;
   JointRangeSettings joint_range;
+  // Each named soil's zeta drawn per landing from a calibration (the plan's soil_overrides_at draws it).
+  std::optional<SoilUncertainty> soil_uncertainty;
 };
 
 // Loads and validates the study (the sweep plan, then the study block) before anything runs.

@@ -154,15 +154,17 @@ sweep::SweepPlan RecheckPlan(const Study& study) {
   // without one the absolute tolerances are rtol times each state's scale already.
   if (!plan.lander->options.scale_tolerances)
     plan.lander->options.integrator.atol *= study.recheck.rtol / study.plan.lander->options.integrator.rtol;
-  plan.variant = "recheck: reference model, rtol " + io::FormatNumber(study.recheck.rtol) +
-                 (study.plan.lander->pad_angular_segments > 0 ? ", pads as their file" : "");
+  // Appended: the study's own variant (its soil draws) holds for its re-checks too.
+  plan.variant += std::string(plan.variant.empty() ? "" : ";") + "recheck: reference model, rtol " +
+                  io::FormatNumber(study.recheck.rtol) +
+                  (study.plan.lander->pad_angular_segments > 0 ? ", pads as their file" : "");
   return plan;
 }
 
 sweep::SweepPlan JointRangePlan(const Study& study, double factor) {
   sweep::SweepPlan plan = study.plan;
   ScaleCones(plan.lander->lander, factor);
-  plan.variant = "joint range: every cone half angle x" + io::FormatNumber(factor);
+  plan.variant += std::string(plan.variant.empty() ? "" : ";") + "joint range: every cone half angle x" + io::FormatNumber(factor);
   return plan;
 }
 

@@ -140,6 +140,7 @@ StudySummary Summarise(const Study& study, const std::vector<DropRecord>& record
   });
   for (size_t i = 0; i < ok.size() && static_cast<int>(i) < study.worst_cases; ++i) s.worst_tilt.push_back(*ok[i]);
   s.map = TipOverMap(study, records);
+  if (study.soil_uncertainty) s.soil_split = SplitBySoil(*study.soil_uncertainty, records);
   return s;
 }
 
@@ -265,8 +266,14 @@ nlohmann::json SummaryJson(const Study& study, const StudySummary& s) {
   nlohmann::json percentiles = nlohmann::json::object();
   for (const MetricPercentiles& m : s.metrics) percentiles[m.metric->name] = PercentilesJson(m);
   nlohmann::json worst = nlohmann::json::array(), tips = nlohmann::json::array();
-  for (const DropRecord& r : s.worst_tilt) worst.push_back(LandingJson(r));
-  for (const DropRecord& r : s.tip_overs) tips.push_back(LandingJson(r));
+  // A listed landing carries the soil parameters it drew, when the study draws them.
+  const auto listed = [&study](const DropRecord& r) {
+    nlohmann::json j = LandingJson(r);
+    if (study.soil_uncertainty) j["soil_parameters"] = DrawnParametersJson(*study.soil_uncertainty, r.index);
+    return j;
+  };
+  for (const DropRecord& r : s.worst_tilt) worst.push_back(listed(r));
+  for (const DropRecord& r : s.tip_overs) tips.push_back(listed(r));
   nlohmann::json summary = {{"study", study.plan.name},
           {"landings", s.landings},
           {"soils", SoilModelsJson(study)},
@@ -311,6 +318,7 @@ nlohmann::json SummaryJson(const Study& study, const StudySummary& s) {
       {"disagreeing_landings", s.margin_disagreeing}};
   if (s.recheck) summary["recheck"] = RecheckJson(*s.recheck);
   if (s.joint_range) summary["joint_range_sensitivity"] = JointRangeJson(*s.joint_range);
+  if (study.soil_uncertainty) summary["soil_uncertainty"] = SoilSplitJson(*study.soil_uncertainty, s.soil_split);
   return summary;
 }
 

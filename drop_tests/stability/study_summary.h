@@ -67,6 +67,8 @@ struct StudySummary {
   // The follow-ups (study_followups.h) the records above include; absent: not run.
   std::optional<RecheckReport> recheck;
   std::optional<JointRangeReport> joint_range;
+  // A study with soil_uncertainty: the variance split and P(tip) at the soil's interval ends.
+  std::optional<SoilSplit> soil_split;
 };
 
 // The value of a map axis for a landing: the plan's parameter for its index, in file units.

@@ -11,6 +11,22 @@ namespace touchdown::stability {
 
 namespace {
 std::string Cell(double v) { return std::isfinite(v) ? io::FormatNumber(v) : ""; }
+
+// Every landing's drawn soil parameters (a pure function of its index: soil_uncertainty.h), keyed
+// as the database's landings are, so a reader joins them with the outcomes.
+void WriteSoilParameters(const Study& study, const std::filesystem::path& path) {
+  const SoilUncertainty& u = *study.soil_uncertainty;
+  io::WriteFileAtomically(path.string(), [&](std::ostream& out) {
+    out << "drop_id,drop_index";
+    for (const UncertainParameter& p : u.parameters) out << ',' << p.column;
+    out << '\n';
+    for (int64_t i = 0; i < study.plan.size(); ++i) {
+      out << study.plan.DropId(i) << ',' << i;
+      for (const double v : DrawSoilParameters(u, i)) out << ',' << Cell(v);
+      out << '\n';
+    }
+  });
+}
 }  // namespace
 
 void WriteStudyTables(const Study& study, const StudySummary& s, const std::string& dir) {
@@ -21,6 +37,7 @@ void WriteStudyTables(const Study& study, const StudySummary& s, const std::stri
       out << m.metric->name << ',' << m.metric->unit << ',' << m.count << ',' << Cell(m.p50) << ',' << Cell(m.p95)
           << ',' << Cell(m.p99) << ',' << Cell(m.max) << '\n';
   });
+  if (study.soil_uncertainty) WriteSoilParameters(study, d / "soil_parameters.csv");
   if (!study.map) return;
   io::WriteFileAtomically((d / "tip_over_map.csv").string(), [&](std::ostream& out) {
     const std::string x = sweep::SweepParamKey(study.map->x.param), y = sweep::SweepParamKey(study.map->y.param);

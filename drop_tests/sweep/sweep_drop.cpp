@@ -197,6 +197,11 @@ DropRecord SimulateLanderSweepDrop(const SweepModels& models, const SweepDropPar
     sc.ground.soil_field->seed = scenario::PerLandingFieldSeed(plan.seed, p.index);
     sc.ground.soil_field->seed_per_landing = false;
   }
+  if (plan.soil_overrides_at) {  // this landing's soil parameters, drawn by the study
+    model::ModelFile m = sc.model ? *sc.model : model::ModelFile{};
+    for (const auto& [soil, o] : plan.soil_overrides_at(p.index)) m.soils[soil] = o;
+    sc.model = std::move(m);
+  }
   // The sweep's limits replace the scenario's (none given there: a lander run has only max_num_steps).
   sc.options.integrator.max_wall_time_s = plan.rig.integrator.max_wall_time_s;
   sc.options.integrator.max_rhs_evaluations = plan.rig.integrator.max_rhs_evaluations;

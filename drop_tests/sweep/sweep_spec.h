@@ -87,6 +87,7 @@
 // from its index alone, independent of threads, ranks or shards.
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -205,6 +206,11 @@ struct SweepPlan {
   // (drop_tests/stability/study_rare_event.h). Not part of DigestText: a plan that sets it names
   // what chose the draws in `variant`. Not written by WriteSweepPlan.
   std::shared_ptr<const std::map<int64_t, std::vector<double>>> given_uniforms;
+  // Per-landing soil parameters (a stability study's soil uncertainty:
+  // drop_tests/stability/soil_uncertainty.h): landing i's lander runs with the zeta overrides
+  // soil_overrides_at(i) gives, by soil name, on top of the model's. Not part of DigestText: a plan
+  // that sets it names what it draws from in `variant`. Not written by WriteSweepPlan.
+  std::function<std::map<std::string, model::SoilOverride>(int64_t)> soil_overrides_at;
 
   int64_t size() const;
   SweepDropParams DropAt(int64_t index) const;

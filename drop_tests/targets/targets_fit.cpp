@@ -153,8 +153,8 @@ Eigen::MatrixXd DenseJacobian(ceres::Problem& problem, size_t n) {
 // ceres::Covariance computes. Formed here with Eigen: ceres::Covariance on the parameter block, with
 // a SubsetManifold set on it after the solve to hold the other parameters, aborted with a corrupted
 // heap in a joint lander fit (Ceres 2.1, Debian 12).
-void AddIntervals(ceres::Problem& problem, std::vector<double>& x, const TargetsFile& file,
-                  std::vector<ParameterResult>& out) {
+void AddIntervals(ceres::Problem& problem, std::vector<double>& x, const TargetsFile& file, TargetsFitResult& result) {
+  std::vector<ParameterResult>& out = result.parameters;
   const size_t n = x.size();
   const Eigen::MatrixXd jacobian = DenseJacobian(problem, n);
   std::vector<Eigen::Index> free;
@@ -184,6 +184,14 @@ void AddIntervals(ceres::Problem& problem, std::vector<double>& x, const Targets
     out[i].sigma = std::sqrt(c(Eigen::Index(k), Eigen::Index(k))) * (file.parameters[i].upper - file.parameters[i].lower);
     out[i].low = out[i].value - z * *out[i].sigma;
     out[i].high = out[i].value + z * *out[i].sigma;
+  }
+  // The same matrix in file units: the fit's coordinates are each parameter's range scaled to [0, 1].
+  const auto range = [&](size_t k) { return file.parameters[size_t(free[k])].upper - file.parameters[size_t(free[k])].lower; };
+  result.covariance.assign(free.size(), std::vector<double>(free.size(), 0.0));
+  for (size_t a = 0; a < free.size(); ++a) {
+    result.covariance_parameters.push_back(size_t(free[a]));
+    for (size_t b = 0; b < free.size(); ++b)
+      result.covariance[a][b] = c(Eigen::Index(a), Eigen::Index(b)) * range(a) * range(b);
   }
 }
 
@@ -238,7 +246,7 @@ void Solve(const TargetsFile& file, TargetEvaluator& evaluator, const TargetsFit
     result.parameters[i].value = FromFit(file.parameters[i], x[i]);
     result.parameters[i].at_bound = AtBound(file.parameters[i], result.parameters[i].value);
   }
-  AddIntervals(problem, x, file, result.parameters);
+  AddIntervals(problem, x, file, result);
   if (failure) std::rethrow_exception(failure);
   for (size_t i = 0; i < x.size(); ++i) x[i] = result.parameters[i].value;
 }

@@ -38,6 +38,12 @@ struct TargetsFitResult {
   int scenario_runs = 0;        // simulations run (drops and landers; repeats are not rerun)
   std::string termination;      // Ceres' message ("no fit" when nothing is fitted)
   bool converged = false;
+  // The joint covariance of the parameters that got an interval (file units, one standard
+  // deviation squared on the diagonal): `covariance[a][b]` between parameters
+  // covariance_parameters[a] and [b] (indices into `parameters`). What a study draws the
+  // parameters from (drop_tests/stability/soil_uncertainty.h).
+  std::vector<size_t> covariance_parameters;
+  std::vector<std::vector<double>> covariance;
 };
 
 struct TargetsFitOptions {

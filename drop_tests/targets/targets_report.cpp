@@ -48,6 +48,40 @@ std::string ApplyHint(const Parameter& p) {
   return "";
 }
 
+const char* KindName(ParameterKind k) {
+  switch (k) {
+    case ParameterKind::kSoilZeta: return "soil_zeta";
+    case ParameterKind::kPadField: return "pad_field";
+    case ParameterKind::kLanderField: return "lander_field";
+  }
+  return "";
+}
+
+// The joint covariance of the parameters with an interval, for a study to draw them from
+// (drop_tests/stability/soil_uncertainty.h): best values, names, units (a field's unit is its
+// suffix; a soil's zeta is N/cm^3 at the soil's reference gravity) and the matrix, row by row.
+nlohmann::json CovarianceJson(const TargetsFile& file, const TargetsFitResult& fit) {
+  nlohmann::json params = nlohmann::json::array();
+  for (const size_t i : fit.covariance_parameters) {
+    const Parameter& p = file.parameters[i];
+    nlohmann::json j{{"name", p.name}, {"kind", KindName(p.kind)}, {"field", p.field}, {"value", fit.parameters[i].value}};
+    if (p.kind == ParameterKind::kSoilZeta) {
+      j["soil"] = p.soil_name;
+      j["unit"] = "N/cm^3";
+      j["reference_gravity_m_s2"] = p.soil_reference_gravity_m_s2;
+    } else {
+      j["object"] = p.object;
+      j["unit"] = "as the field's suffix";
+    }
+    params.push_back(j);
+  }
+  return {{"meaning", "(J^T J)^-1 of the normalised residuals at the solution, in the parameters' file units, over the "
+                      "parameters with an interval (not at a bound, determined); the targets' uncertainties taken as one "
+                      "standard deviation"},
+          {"parameters", params},
+          {"matrix", fit.covariance}};
+}
+
 std::vector<std::string> TargetNames(const TargetsFile& file, bool fit) {
   std::vector<std::string> names;
   for (const Target& t : file.targets)
@@ -93,6 +127,9 @@ nlohmann::json TargetsReportJson(const TargetsFile& file, const TargetsFitResult
           {"interval_method", "Ceres covariance of the normalised residuals, (J^T J)^-1 at the solution, value -+ z sigma"},
           {"confidence", file.settings.confidence},
           {"parameters", params},
+          {"covariance", CovarianceJson(file, fit)},
+          {"targets_fitted", TargetNames(file, true)},
+          {"targets_predicted", TargetNames(file, false)},
           {"targets", targets},
           {"cost", fit.cost},
           {"iterations", fit.iterations},

@@ -292,6 +292,13 @@ TEST_F(StabilityCli, BadStudiesExitTwoWithOneLineNamingFileAndField) {
       {head + "grid: {slope_deg: [0, 5]}\n", "--method", {"--method", "subset"}},
       {head + "random: {samples: 10, seed: 1, slope_deg: {uniform: [0, 5]}}\n", "--samples",
        {"--method", "subset", "--samples", "15"}},
+      // The soil's uncertainty: a soil the landings stand on, a calibration report that exists.
+      {head + "grid: {slope_deg: [0, 5]}\nstudy: {soil_uncertainty: {toyoura: {calibration: c.json}}}\n",
+       "study.soil_uncertainty.toyoura", {}},
+      {head + "grid: {slope_deg: [0, 5]}\nstudy: {soil_uncertainty: {fjs1_lp: {calibration: missing.json}}}\n",
+       "study.soil_uncertainty.fjs1_lp.calibration", {}},
+      {head + "grid: {slope_deg: [0, 5]}\nstudy: {soil_uncertainty: {fjs1_lp: {file: c.json}}}\n",
+       "study.soil_uncertainty.fjs1_lp.file", {}},
   };
   int k = 0;
   for (const Bad& bad : cases) {

@@ -68,6 +68,17 @@ TEST_F(TargetsFit, RecoversTheZetaThatMadeItsTargetsFromAnotherStart) {
   EXPECT_GT(*fit.parameters[0].sigma, 1e-4 * 2.5);
   EXPECT_LT(*fit.parameters[0].sigma, 0.02 * 2.5);
   EXPECT_NEAR(*fit.parameters[0].high - 2.5, 1.959963985 * *fit.parameters[0].sigma, 1e-6);
+  // The covariance a study draws from (report `covariance`): sigma squared, in N/cm^3 squared,
+  // with the soil's name and reference gravity.
+  ASSERT_EQ(fit.covariance_parameters, std::vector<size_t>{0});
+  EXPECT_NEAR(fit.covariance[0][0], *fit.parameters[0].sigma * *fit.parameters[0].sigma,
+              1e-12 * fit.covariance[0][0]);
+  const nlohmann::json cov = TargetsReportJson(file, fit)["covariance"];
+  EXPECT_EQ(cov["parameters"][0]["soil"], "fjs1_lp");
+  EXPECT_EQ(cov["parameters"][0]["kind"], "soil_zeta");
+  EXPECT_EQ(cov["parameters"][0]["unit"], "N/cm^3");
+  EXPECT_EQ(cov["parameters"][0]["value"].get<double>(), fit.parameters[0].value);
+  EXPECT_EQ(cov["matrix"][0][0].get<double>(), fit.covariance[0][0]);
 }
 
 TEST_F(TargetsFit, RecoversZetaAndACurvedProfileConstantJointly) {

@@ -1,0 +1,115 @@
+#pragma once
+// A stability study's soil uncertainty: each named soil's zeta drawn, landing by landing, from the
+// joint normal distribution a calibration reports (`touchdown calibrate --targets ... --report
+// R.json`: the best values and their covariance, drop_tests/targets/targets_fit.h), instead of
+// the fixed number of its soil file:
+//
+//   study:
+//     soil_uncertainty:
+//       fjs1_cp: {calibration: ../soils/calibrations/sutoh2017_r1z.json}   # relative to the study file
+//
+// Soils taken from one calibration file are drawn jointly (their covariance, correlations
+// included); soils from different files independently. Draws are counter-based, keyed by (the
+// study's seed, the landing's index, the parameter, the attempt), so a landing's soil follows from
+// its index alone, on any thread, rank or shard. A draw outside the parameters' physical range
+// (rft/physical_limits.h: zeta in (0, 1e4] N/cm^3) is drawn again (rejection: the normal truncated to
+// the range); after kMaxDrawAttempts rejected draws the landing takes the best values.
+//
+// The summary's split of the outcome's variance into the soil's share and the conditions' share,
+// and P(tip) at the soil's interval ends, are SoilSplit below (docs/stability_studies.md, "The
+// soil's uncertainty").
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Dense>
+#include <nlohmann/json_fwd.hpp>
+
+#include "drop_tests/model/model_file.h"
+#include "drop_tests/sweep/results_db.h"
+
+namespace touchdown::io {
+class YamlFields;
+}
+namespace touchdown::sweep {
+struct SweepPlan;
+}
+
+namespace touchdown::stability {
+
+inline constexpr int kMaxDrawAttempts = 64;
+// The counter streams of the draws: far above the sweep's (parameters 0-17, per-pad 0x100-0x4ff).
+inline constexpr uint64_t kSoilDrawStream = 0x50000;
+inline constexpr uint64_t kSoilAttemptStride = 0x1000;  // parameters per study, at most
+inline constexpr int kMaxUncertainParameters = 64;
+
+struct UncertainParameter {
+  std::string soil;         // the soil's name, as the lander's ground names it
+  std::string name;         // the calibration's parameter name, e.g. zeta_cp
+  std::string column;       // its column in the outputs: "<soil>_zeta_N_cm3"
+  double mean = 0.0;        // zeta [N/cm^3] at reference_gravity_m_s2 (the calibration's best value)
+  double sigma = 0.0;       // one standard deviation [N/cm^3]
+  double reference_gravity_m_s2 = 0.0;
+};
+
+struct CalibrationGroup {  // the parameters taken from one calibration file, drawn jointly
+  std::string file;
+  std::vector<size_t> parameters;  // indices into SoilUncertainty::parameters
+  Eigen::MatrixXd covariance;      // N/cm^3 squared
+  Eigen::MatrixXd lower;           // its Cholesky factor L (L L^T = covariance)
+};
+
+struct SoilUncertainty {
+  std::vector<UncertainParameter> parameters;
+  std::vector<CalibrationGroup> groups;
+  uint64_t seed = 0;  // the study's
+};
+
+// Reads the study block's `soil_uncertainty` (the mapping soil name -> {calibration: FILE}) against
+// the study's plan: every soil one its landings' ground holds, every file a calibration report with
+// a covariance holding that soil's zeta (positive definite). InputError naming the file and field.
+SoilUncertainty ReadSoilUncertainty(const io::YamlFields& study_block, const sweep::SweepPlan& plan);
+
+// The parameters landing `index` runs with, in file units (N/cm^3), in `parameters` order.
+std::vector<double> DrawSoilParameters(const SoilUncertainty& u, int64_t index);
+// The same as the zeta overrides a lander run takes (sweep::SweepPlan::soil_overrides_at).
+std::map<std::string, model::SoilOverride> SoilOverrides(const SoilUncertainty& u, const std::vector<double>& drawn);
+// What the draws depend on, for the plan's variant (and so its digest): soils, best values, covariances.
+std::string SoilUncertaintyDigestText(const SoilUncertainty& u);
+// Sets the plan's soil_overrides_at and variant to the draws.
+void AttachSoilUncertainty(sweep::SweepPlan& plan, const SoilUncertainty& u);
+
+// How much of an outcome's variance the soil's parameters explain (first order), from the study's
+// landings: the adjusted R^2 of the least-squares fit of the outcome on the drawn parameters (a
+// linear conditional expectation, what a first-order Sobol index is when the outcome is locally
+// linear in the parameters), with a 95 % interval from Fisher's z of the multiple correlation.
+struct ShareEstimate {
+  std::string outcome;  // tipped_over, or a metric's name
+  int64_t landings = 0;
+  double variance = 0.0;                    // of the outcome over those landings
+  double soil_share = 0.0;                  // adjusted R^2, clipped to [0, 1]
+  double soil_share_low = 0.0, soil_share_high = 0.0;
+  std::vector<double> slope;                // per parameter [outcome per N/cm^3]
+};
+
+struct SoilSplit {
+  std::vector<ShareEstimate> shares;  // tipped_over first, then the metrics
+  // P(tip) from the linear fit of the tip-over indicator: at each parameter's 95 % interval ends
+  // (the others at their best values), and at the ends of the 95 % range of the soil's combined
+  // effect (+-1.96 sqrt(b^T C b), b the slopes, C the covariance); clipped to [0, 1].
+  double p_tip = 0.0;
+  std::vector<std::pair<double, double>> p_tip_at_parameter_ends;
+  double p_tip_soil_sd = 0.0;  // sqrt(b^T C b)
+  std::pair<double, double> p_tip_at_soil_ends{0.0, 0.0};
+};
+
+// The split over completed landings (tipped_over) and over the landings that stayed up (the
+// metrics, as their percentiles are). nullopt with fewer than parameters + 3 landings.
+std::optional<SoilSplit> SplitBySoil(const SoilUncertainty& u, const std::vector<sweep::DropRecord>& records);
+nlohmann::json SoilSplitJson(const SoilUncertainty& u, const std::optional<SoilSplit>& split);
+// The drawn parameters of landing `index`, by column, for summary.json's listed landings.
+nlohmann::json DrawnParametersJson(const SoilUncertainty& u, int64_t index);
+
+}  // namespace touchdown::stability

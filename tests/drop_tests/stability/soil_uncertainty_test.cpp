@@ -1,0 +1,274 @@
+// A study's soil uncertainty (drop_tests/stability/soil_uncertainty.h): the `soil_uncertainty`
+// block checked at load, the draws' distribution (the calibration's mean and covariance), the same
+// draws and landings on 1 and 2 threads, landings that run with the drawn zeta, and the summary's
+// split of the outcome's variance.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "drop_tests/stability/soil_uncertainty.h"
+#include "drop_tests/stability/study.h"
+#include "drop_tests/stability/study_outputs.h"
+#include "drop_tests/sweep/sweep.h"
+#include "rft/input_error.h"
+#include "tests/drop_tests/scenario/lander_test_support.h"
+#include "tests/drop_tests/stability/study_test_support.h"
+#include "tests/scratch_dir_test.h"
+
+namespace touchdown::stability {
+namespace {
+
+// A calibration report's covariance block as `calibrate --targets --report` writes it: zeta of LP
+// and CP (N/cm^3), correlated, and a pad field that a study does not draw.
+std::string Calibration(double lp, double cp, double s_lp, double s_cp, double rho) {
+  const double c = rho * s_lp * s_cp;
+  nlohmann::json j = {
+      {"written_by", "touchdown calibrate --targets (it may replace this file)"},
+      {"covariance",
+       {{"parameters",
+         {{{"name", "zeta_lp"}, {"kind", "soil_zeta"}, {"soil", "fjs1_lp"}, {"value", lp}, {"unit", "N/cm^3"},
+           {"reference_gravity_m_s2", 9.81}},
+          {{"name", "zeta_cp"}, {"kind", "soil_zeta"}, {"soil", "fjs1_cp"}, {"value", cp}, {"unit", "N/cm^3"},
+           {"reference_gravity_m_s2", 9.81}},
+          {{"name", "curved_a1"}, {"kind", "pad_field"}, {"object", "curved"}, {"value", 0.047}}}},
+        {"matrix", {{s_lp * s_lp, c, 0.0}, {c, s_cp * s_cp, 0.0}, {0.0, 0.0, 1e-4}}}}}};
+  return j.dump(2);
+}
+
+struct SoilUncertaintyTest : testing_scratch::ScratchDirTest {
+  std::string StudyText(const std::string& study_block, const std::string& extra = "") {
+    return std::string("schema_version: 1\ntype: stability\nname: soil\nlander: {scenario: ") + TOUCHDOWN_SOURCE_DIR +
+           "/data/scenarios/lander_case_A.yaml}\n" + extra + "study: {recheck: none, joint_range_sensitivity: none" +
+           study_block + "}\n";
+  }
+  Study Load(const std::string& study_block, const std::string& extra = "") {
+    return LoadStudy(Write("study.yaml", StudyText(study_block, extra)));
+  }
+  // The InputError's message of loading the study.
+  std::string Refusal(const std::string& study_block, const std::string& extra = "") {
+    try {
+      Load(study_block, extra);
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "(loaded)";
+  }
+};
+
+constexpr const char* kPadSoils = "random: {samples: 4, seed: 3, pad_soils: {per_pad_choice: [fjs1_lp, fjs1_cp]}}\n";
+
+TEST_F(SoilUncertaintyTest, LoadTimeValidationNamesFileAndField) {
+  Write("cal.json", Calibration(3.5, 4.1, 0.2, 0.1, 0.5));
+  Write("no_cov.json", "{\"parameters\": []}");
+  Write("not_json.json", "{oops");
+  Write("singular.json", Calibration(3.5, 4.1, 0.2, 0.1, 1.0));
+  Write("asymmetric.json",
+        R"({"covariance": {"parameters": [{"name": "z", "kind": "soil_zeta", "soil": "fjs1_lp", "value": 3},
+            {"name": "y", "kind": "soil_zeta", "soil": "fjs1_cp", "value": 4}], "matrix": [[1, 0.5], [0, 1]]}})");
+  Write("negative.json", Calibration(-1.0, 4.1, 0.2, 0.1, 0.0));
+  struct Row {
+    std::string block, extra, expected;
+  };
+  const std::vector<Row> rows = {
+      {", soil_uncertainty: {toyoura: {calibration: cal.json}}", kPadSoils, "study.soil_uncertainty.toyoura"},
+      {", soil_uncertainty: {toyoura: {calibration: cal.json}}", kPadSoils, "not a soil this study's landings stand on"},
+      {", soil_uncertainty: {fjs1_lp: {calibration: missing.json}}", kPadSoils, "cannot read the calibration report"},
+      {", soil_uncertainty: {fjs1_lp: {calibration: missing.json}}", kPadSoils, "study.soil_uncertainty.fjs1_lp.calibration"},
+      {", soil_uncertainty: {fjs1_lp: {calibration: no_cov.json}}", kPadSoils, "no_cov.json: covariance"},
+      {", soil_uncertainty: {fjs1_lp: {calibration: not_json.json}}", kPadSoils, "is not JSON"},
+      {", soil_uncertainty: {fjs1_lp: {calibration: cal.json, sigma: 2}}", kPadSoils, "sigma"},
+      {", soil_uncertainty: {fjs1_lp: {calibration: singular.json}, fjs1_cp: {calibration: singular.json}}", kPadSoils,
+       "positive definite"},
+      {", soil_uncertainty: {fjs1_lp: {calibration: asymmetric.json}}", kPadSoils, "must be symmetric"},
+      {", soil_uncertainty: {fjs1_lp: {calibration: negative.json}}", kPadSoils, "covariance.parameters[0].value"},
+      {", soil_uncertainty: fjs1_lp", kPadSoils, "must be a mapping of soil names"},
+      {", soil_uncertainty: {}", kPadSoils, "must be a mapping of soil names"},
+  };
+  for (const Row& r : rows) EXPECT_NE(Refusal(r.block, r.extra).find(r.expected), std::string::npos) << r.block << "\n" << Refusal(r.block, r.extra);
+  // A soil the calibration holds no interval for (held fixed, or at a bound) is refused by name.
+  Write("lp_only.json",
+        R"({"covariance": {"parameters": [{"name": "z", "kind": "soil_zeta", "soil": "fjs1_lp", "value": 3}], "matrix": [[0.01]]}})");
+  const std::string held = Refusal(", soil_uncertainty: {fjs1_cp: {calibration: lp_only.json}}", kPadSoils);
+  EXPECT_NE(held.find("no interval for the zeta of soil 'fjs1_cp'"), std::string::npos) << held;
+  // Singular only in the parameters not drawn: the drawn soil's own block is fine.
+  EXPECT_NO_THROW(Load(", soil_uncertainty: {fjs1_lp: {calibration: singular.json}}", kPadSoils));
+}
+
+TEST_F(SoilUncertaintyTest, DrawsHaveTheCalibrationsMeanAndCovariance) {
+  Write("cal.json", Calibration(3.5, 4.1, 0.2, 0.1, 0.6));
+  const Study study = Load(", soil_uncertainty: {fjs1_lp: {calibration: cal.json}, fjs1_cp: {calibration: cal.json}}",
+                           kPadSoils);
+  ASSERT_TRUE(study.soil_uncertainty);
+  const SoilUncertainty& u = *study.soil_uncertainty;
+  ASSERT_EQ(u.parameters.size(), 2u);
+  ASSERT_EQ(u.groups.size(), 1u);  // one file: drawn jointly
+  const int n = 40000;
+  Eigen::Vector2d sum = Eigen::Vector2d::Zero();
+  Eigen::Matrix2d outer = Eigen::Matrix2d::Zero();
+  for (int i = 0; i < n; ++i) {
+    const std::vector<double> x = DrawSoilParameters(u, i);
+    const Eigen::Vector2d v(x[0], x[1]);
+    sum += v;
+    outer += v * v.transpose();
+  }
+  const Eigen::Vector2d mean = sum / n;
+  const Eigen::Matrix2d cov = (outer - n * mean * mean.transpose()) / (n - 1);
+  // Means within 4 standard errors; variances within 4 of theirs (sqrt(2/n) relative), the
+  // correlation within 4 / sqrt(n).
+  EXPECT_NEAR(mean(0), 3.5, 4 * 0.2 / std::sqrt(n));
+  EXPECT_NEAR(mean(1), 4.1, 4 * 0.1 / std::sqrt(n));
+  EXPECT_NEAR(cov(0, 0), 0.04, 4 * 0.04 * std::sqrt(2.0 / n));
+  EXPECT_NEAR(cov(1, 1), 0.01, 4 * 0.01 * std::sqrt(2.0 / n));
+  EXPECT_NEAR(cov(0, 1) / std::sqrt(cov(0, 0) * cov(1, 1)), 0.6, 4.0 / std::sqrt(n));
+  // A pure function of the landing's index.
+  EXPECT_EQ(DrawSoilParameters(u, 17), DrawSoilParameters(u, 17));
+  EXPECT_NE(DrawSoilParameters(u, 17), DrawSoilParameters(u, 18));
+}
+
+TEST_F(SoilUncertaintyTest, DrawsOutsideThePhysicalRangeAreDrawnAgain) {
+  // Mean 0.05 N/cm^3 with sigma 0.05: a sixth of the untruncated draws would be <= 0.
+  Write("wide.json", Calibration(0.05, 4.1, 0.05, 0.1, 0.0));
+  const Study study = Load(", soil_uncertainty: {fjs1_lp: {calibration: wide.json}}", kPadSoils);
+  int below_mean = 0;
+  for (int i = 0; i < 2000; ++i) {
+    const double z = DrawSoilParameters(*study.soil_uncertainty, i)[0];
+    EXPECT_GT(z, 0.0) << i;
+    below_mean += z < 0.05;
+  }
+  EXPECT_LT(below_mean, 1000);  // the truncation removed the lower tail
+}
+
+TEST_F(SoilUncertaintyTest, StudiesWithoutItAreUnchanged) {
+  const Study plain = Load("", kPadSoils);
+  EXPECT_FALSE(plain.soil_uncertainty);
+  EXPECT_FALSE(plain.plan.soil_overrides_at);
+  EXPECT_TRUE(plain.plan.variant.empty());  // the plan's digest as before
+  Write("cal.json", Calibration(3.5, 4.1, 0.2, 0.1, 0.0));
+  const Study drawn = Load(", soil_uncertainty: {fjs1_lp: {calibration: cal.json}}", kPadSoils);
+  EXPECT_NE(sweep::PlanDigest(drawn.plan), sweep::PlanDigest(plain.plan));  // another database
+}
+
+// A small study on the coarse test pads: the lander on LP or CP per pad with both soils' zeta drawn
+// wide (so the soil matters), run on 1 and on 2 threads.
+struct SoilUncertaintyLandings : SoilUncertaintyTest {
+  Study SmallStudy(int samples) {
+    Write("cal.json", Calibration(3.5, 6.0, 1.2, 2.0, 0.3));
+    Study study = Load(", soil_uncertainty: {fjs1_lp: {calibration: cal.json}, fjs1_cp: {calibration: cal.json}}",
+                       "random: {samples: " + std::to_string(samples) +
+                           ", seed: 5, slope_deg: {uniform: [0, 20]}, horizontal_speed_m_s: {uniform: [0, 1.5]},\n"
+                           "  pad_soils: {per_pad_choice: [fjs1_lp, fjs1_cp]}}\n"
+                           "fixed: {downhill_azimuth_deg: 0, horizontal_azimuth_deg: 0, yaw_relative_to_slope_deg: 45}\n");
+    test::CoarsenPad(*study.plan.lander);
+    study.plan.lander->options.duration_s = 0.6;  // short: the test's budget, not a settled answer
+    return study;
+  }
+  std::vector<sweep::DropRecord> Run(const Study& study, const std::string& out, int threads) {
+    sweep::SweepRunOptions options;
+    options.threads = threads;
+    options.progress = sweep::ProgressMode::kNone;
+    sweep::RunSweep(study.plan, Path(out), options);
+    return ReadStudyRecords(study, Path(out));
+  }
+};
+
+TEST_F(SoilUncertaintyLandings, SameLandingsOnOneAndTwoThreadsAndTheDrawnZetaActs) {
+  const Study study = SmallStudy(4);
+  const std::vector<sweep::DropRecord> one = Run(study, "t1", 1), two = Run(study, "t2", 2);
+  ASSERT_EQ(one.size(), two.size());
+  for (size_t i = 0; i < one.size(); ++i) {
+    ASSERT_TRUE(one[i].ok) << one[i].failure;
+    EXPECT_EQ(one[i].final_penetration_m, two[i].final_penetration_m) << i;  // bit for bit
+    EXPECT_EQ(one[i].max_tilt_deg, two[i].max_tilt_deg) << i;
+  }
+  // The same landings without the draws (the catalogue's zeta) sink otherwise.
+  Study fixed = study;
+  fixed.plan.soil_overrides_at = nullptr;
+  fixed.plan.variant.clear();
+  const std::vector<sweep::DropRecord> catalogue = Run(fixed, "fixed", 2);
+  int differ = 0;
+  for (size_t i = 0; i < one.size(); ++i) differ += one[i].final_penetration_m != catalogue[i].final_penetration_m;
+  EXPECT_EQ(differ, int(one.size()));
+}
+
+TEST_F(SoilUncertaintyLandings, SummaryReportsTheSplit) {
+  const Study study = SmallStudy(12);
+  Run(study, "out", 2);
+  const StudySummary s = test::AnalyseStudy(study, Path("out"));
+  ASSERT_TRUE(s.soil_split);
+  ASSERT_FALSE(s.soil_split->shares.empty());
+  EXPECT_EQ(s.soil_split->shares.front().outcome, "tipped_over");
+  for (const ShareEstimate& e : s.soil_split->shares) {
+    EXPECT_GE(e.soil_share, 0.0) << e.outcome;
+    EXPECT_LE(e.soil_share, 1.0) << e.outcome;
+    EXPECT_LE(e.soil_share_low, e.soil_share_high) << e.outcome;
+  }
+  std::ifstream in(Path("out/summary.json"));
+  const nlohmann::json j = nlohmann::json::parse(in);
+  ASSERT_TRUE(j.contains("soil_uncertainty"));
+  const nlohmann::json& u = j["soil_uncertainty"];
+  EXPECT_EQ(u["parameters"].size(), 2u);
+  EXPECT_TRUE(u.contains("variance_split"));
+  EXPECT_TRUE(u["tip_over_probability_at_interval_ends"].contains("at_soil_interval_ends"));
+  bool depth = false;
+  for (const nlohmann::json& e : u["variance_split"]) depth = depth || e["outcome"] == "max_pad_penetration_m";
+  EXPECT_TRUE(depth);
+  // Listed landings carry their drawn parameters; soil_parameters.csv has every landing's.
+  for (const nlohmann::json& l : j["worst_max_tilt"]) EXPECT_TRUE(l["soil_parameters"].contains("fjs1_cp_zeta_N_cm3"));
+  std::ifstream csv(Path("out/soil_parameters.csv"));
+  std::string header, line;
+  std::getline(csv, header);
+  EXPECT_EQ(header, "drop_id,drop_index,fjs1_lp_zeta_N_cm3,fjs1_cp_zeta_N_cm3");
+  int rows = 0;
+  while (std::getline(csv, line)) ++rows;
+  EXPECT_EQ(rows, 12);
+}
+
+// The estimator on hand-made records: an outcome that is a function of the drawn zeta alone is all
+// soil; one that ignores it is all conditions; P(tip) at the interval ends follows the slope.
+TEST_F(SoilUncertaintyTest, SplitEstimatorSeparatesTheSources) {
+  Write("cal.json", Calibration(3.5, 4.1, 0.2, 0.1, 0.0));
+  const Study study = Load(", soil_uncertainty: {fjs1_lp: {calibration: cal.json}}", kPadSoils);
+  const SoilUncertainty& u = *study.soil_uncertainty;
+  std::vector<sweep::DropRecord> soil_only, conditions_only;
+  for (int i = 0; i < 2000; ++i) {
+    sweep::DropRecord r;
+    r.index = i;
+    r.ok = true;
+    r.tipped_over = 0.0;
+    r.time_to_rest_s = 1.0;
+    const double zeta = DrawSoilParameters(u, i)[0];
+    r.final_penetration_m = 0.1 - 0.01 * zeta;  // linear in zeta: the soil's share is 1
+    r.max_tilt_deg = 5.0;
+    soil_only.push_back(r);
+    r.final_penetration_m = 0.05 + 0.01 * sweep::CounterUniform(99, uint64_t(i), 7);  // independent of zeta
+    r.tipped_over = zeta > 3.5 ? 1.0 : 0.0;  // a tip-over decided by the soil
+    conditions_only.push_back(r);
+  }
+  const auto share = [](const SoilSplit& s, const std::string& outcome) {
+    for (const ShareEstimate& e : s.shares)
+      if (e.outcome == outcome) return e;
+    return ShareEstimate{};
+  };
+  const std::optional<SoilSplit> a = SplitBySoil(u, soil_only), b = SplitBySoil(u, conditions_only);
+  ASSERT_TRUE(a && b);
+  EXPECT_NEAR(share(*a, "max_pad_penetration_m").soil_share, 1.0, 1e-9);
+  EXPECT_NEAR(share(*a, "max_pad_penetration_m").slope.at(0), -0.01, 1e-9);
+  EXPECT_LT(share(*b, "max_pad_penetration_m").soil_share, 0.01);
+  EXPECT_EQ(share(*b, "max_pad_penetration_m").soil_share_low, 0.0);
+  // Tip when zeta > its mean: P = 1/2, the linear fit's share 2/pi ~ 0.64 (a step seen linearly),
+  // and P(tip) at the soil's interval ends near 0 and 1.
+  EXPECT_NEAR(b->p_tip, 0.5, 0.05);
+  EXPECT_NEAR(share(*b, "tipped_over").soil_share, 2.0 / M_PI, 0.05);
+  EXPECT_LT(b->p_tip_at_soil_ends.first, 0.1);
+  EXPECT_GT(b->p_tip_at_soil_ends.second, 0.9);
+  // Too few landings to fit: no split (and summary.json says why).
+  EXPECT_FALSE(SplitBySoil(u, std::vector<sweep::DropRecord>(soil_only.begin(), soil_only.begin() + 3)));
+}
+
+}  // namespace
+}  // namespace touchdown::stability
