@@ -8,6 +8,7 @@
 #include "drop_tests/dataset/calibration_run.h"
 #include "drop_tests/targets/targets_calibration.h"
 #include "rft/input_error.h"
+#include "rft/physical_limits.h"
 #include "rft/units.h"
 
 namespace touchdown::app {
@@ -68,11 +69,11 @@ void AddCalibrateCommand(CLI::App& app) {
   cmd->add_option("--atmosphere", args->atmosphere, "use only drops in vacuum, air, or all (default)")
       ->check(CLI::IsMember({"vacuum", "air", "all"}));
   cmd->add_option("--confidence", args->confidence, "confidence level of the interval (default 0.95)")
-      ->check(CLI::Range(0.5, 0.9999));
+      ->check(CLI::Range(limits::kMinConfidence, limits::kMaxConfidence));
   cmd->add_option("--out", args->out, "model file to write (MODEL.yaml); with --law bekker a soil file (SOIL.yaml)")
       ->required();
   cmd->add_option("--law", args->law, "rft: fit zeta (default); bekker: fit Bekker's n, k_c and k_phi (a soil file)")
-      ->check(CLI::IsMember({"rft", "bekker"}));
+      ->check(CLI::IsMember(dataset::CalibrationLawNames()));
   cmd->add_option("--soil", args->soil, "--law bekker: only the drops on this soil (as drops.csv names it)");
   cmd->add_option("--pad", args->pad, "--law bekker: only the drops of this pad (as drops.csv names it)");
   cmd->add_option("--shear-from", args->shear_from,
@@ -82,7 +83,8 @@ void AddCalibrateCommand(CLI::App& app) {
       throw MakeInputError("command line", args->targets.empty() ? "measured" : "--targets",
                            "give a measured dataset directory or --targets FILE (exactly one)");
     if (!args->targets.empty()) {
-      if (args->law != "rft") throw MakeInputError("command line", "--law", "--targets fits its own parameters: no --law");
+      if (dataset::ParseCalibrationLaw(args->law, "command line", "--law") != dataset::CalibrationLaw::kRft)
+        throw MakeInputError("command line", "--law", "--targets fits its own parameters: no --law");
       return CalibrateTargets(*args);
     }
     // The --targets options mean nothing to a dataset calibration: refused, not ignored.
@@ -95,7 +97,7 @@ void AddCalibrateCommand(CLI::App& app) {
       throw MakeInputError("command line", "--threads", "runs a --targets fit's scenarios side by side; give --targets FILE");
     dataset::CalibrationRequest r;
     r.measured = args->measured, r.out = args->out;
-    r.law = args->law == "bekker" ? dataset::CalibrationLaw::kBekker : dataset::CalibrationLaw::kRft;
+    r.law = dataset::ParseCalibrationLaw(args->law, "command line", "--law");
     if (args->atmosphere != "all") r.atmosphere = rft::ParseAtmosphere(args->atmosphere);
     r.per_soil = args->per == "soil", r.confidence = args->confidence;
     r.soil = args->soil, r.pad = args->pad, r.shear_from = args->shear_from;

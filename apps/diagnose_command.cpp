@@ -2,13 +2,13 @@
 // (drop_tests/gap/diagnose.h, docs/model_gap.md).
 #include <iostream>
 #include <memory>
-#include <thread>
 
 #include <nlohmann/json.hpp>
 
 #include "apps/commands.h"
 #include "drop_tests/dataset/sensor_sampling.h"
 #include "drop_tests/io/output_path.h"
+#include "drop_tests/io/work_pool.h"
 #include "drop_tests/gap/diagnose.h"
 #include "rft/physical_limits.h"
 
@@ -35,7 +35,7 @@ void AddDiagnoseCommand(CLI::App& app) {
   cmd->add_option("--base", args->base,
                   "the model the effects are fitted on: rft (zeta per soil, default) or bekker (n, k_c, k_phi per "
                   "soil fitted as calibrate --law bekker; docs/bekker_soil.md)")
-      ->check(CLI::IsMember({"rft", "bekker"}));
+      ->check(CLI::IsMember(gap::DiagnoseBaseNames()));
   cmd->add_flag("--law-candidate", args->law_candidate,
                 "also fit the Bekker law per soil on the training drops and score it (docs/bekker_soil.md)");
   cmd->add_option("--sensor-sampling", args->sensor_sampling,
@@ -45,11 +45,11 @@ void AddDiagnoseCommand(CLI::App& app) {
       ->check(CLI::IsMember(dataset::SensorSamplingNames()));
   cmd->callback([args] {
     gap::DiagnoseOptions o;
-    o.threads = args->threads > 0 ? args->threads : std::max(1u, std::thread::hardware_concurrency());
+    o.threads = io::ThreadsFor(args->threads);
     o.try_pairs = !args->no_pairs;
     o.progress.mode = io::ProgressMode::kAuto;
     o.law_candidate = args->law_candidate;
-    o.base = args->base == "bekker" ? gap::DiagnoseBase::kBekker : gap::DiagnoseBase::kRft;
+    o.base = gap::ParseDiagnoseBase(args->base, "command line", "--base");
     o.sensor_sampling = *dataset::ParseSensorSampling(args->sensor_sampling);  // checked by IsMember
     if (!args->model.empty()) o.start_model = model::LoadModelFile(args->model);
     const gap::Diagnosis d = gap::DiagnoseToDirectory(args->measured, o, {args->out, {args->measured, args->model}});

@@ -39,6 +39,7 @@ class Agarwal2023Law final : public StressLaw3D {
   // xi_n [N/m^3]; mu_surf: intruder-surface friction coefficient [-].
   Agarwal2023Law(double xi_n_N_m3, double mu_surf, bool normalise_to_plate = true);
   std::string_view name() const override { return "agarwal2023"; }
+  LawKind kind() const override { return LawKind::kAgarwal2023; }
   Eigen::Vector3d StressPerDepth(const Eigen::Vector3d& n_W, const Eigen::Vector3d& v_W) const override;
 
   // The raw generic coefficient vector alpha_gen (friction-limited, not normalised) for a

@@ -55,6 +55,7 @@ class BekkerLaw3D final : public StressLaw3D {
  public:
   BekkerLaw3D(const BekkerParameters& soil, double plate_b_m);
   std::string_view name() const override { return "bekker"; }
+  LawKind kind() const override { return LawKind::kBekker; }
   Eigen::Vector3d StressPerDepth(const Eigen::Vector3d& n_W, const Eigen::Vector3d& v_W) const override;
   bool has_dynamic_stress() const override { return cohesion_ > 0.0; }
   Eigen::Vector3d DynamicStress(const Eigen::Vector3d& n_W, const Eigen::Vector3d& v_W) const override;

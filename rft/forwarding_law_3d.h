@@ -16,6 +16,7 @@ class ForwardingLaw3D : public StressLaw3D {
   // Throws std::invalid_argument on a null law.
   ForwardingLaw3D(std::unique_ptr<StressLaw3D> inner, std::string_view suffix);
   std::string_view name() const override { return name_; }
+  LawKind kind() const override { return inner_->kind(); }
   Eigen::Vector3d StressPerDepth(const Eigen::Vector3d& n_W, const Eigen::Vector3d& v_W) const override {
     return inner_->StressPerDepth(n_W, v_W);
   }

@@ -51,6 +51,7 @@ class Li2013TreersLaw final : public StressLaw3D {
   explicit Li2013TreersLaw(double zeta_N_m3, Li2013Coefficients coefficients = {},
                            double alpha_y = kTreersAlphaY);
   std::string_view name() const override { return "li2013"; }
+  LawKind kind() const override { return LawKind::kLi2013; }
   Eigen::Vector3d StressPerDepth(const Eigen::Vector3d& n_W, const Eigen::Vector3d& v_W) const override;
   // The common case (a facet more than 1 degree from horizontal, a velocity with a part in its
   // e2-z plane) in branch-free passes over the batch; the others element by element.

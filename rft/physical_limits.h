@@ -102,6 +102,20 @@ inline constexpr double kMaxSynthSamples = 2e7;
 // A stability study: map bins per axis, and the landings a list (worst cases, ...) may name.
 inline constexpr int kMaxStudyMapBins = 200;
 inline constexpr int kMaxStudyListed = 100000;
+// Input files (drop_tests/io/yaml_fields.cpp): a count read into an int; a YAML tree's depth and
+// node count. yaml-cpp keeps an alias as a second reference to its anchor's node, so a walk visits
+// an aliased subtree once per reference: an alias inside its own anchor (`a: &a [*a]`) makes the
+// tree infinitely deep, and aliases of aliases multiply ("billion laughs": nine levels of ten
+// references are 10^9 nodes). Every touchdown file is a few hundred nodes and a few levels deep;
+// these bounds are far above that and are reached in milliseconds.
+inline constexpr double kMaxWholeNumber = 1e9;
+inline constexpr int kMaxYamlDepth = 64;
+inline constexpr long kMaxYamlNodes = 1'000'000;
+// A dataset's drop id names its trace files: most filesystems take names of up to 255 bytes, and
+// the id gets a suffix ("_measured.csv").
+inline constexpr std::size_t kMaxDropIdBytes = 200;
+// A fit's confidence level (calibrate --confidence, touchdown.calibrate's `confidence`).
+inline constexpr double kMinConfidence = 0.5, kMaxConfidence = 0.9999;
 
 inline bool Within(const Range& r, double v) {
   return std::isfinite(v) && (r.low_open ? v > r.low : v >= r.low) && v <= r.high;

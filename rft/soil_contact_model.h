@@ -29,7 +29,7 @@ struct SoilContactModel {
   std::string name() const {
     std::string out(law->name());
     // Bekker's z^n is the bekker law's own depth law, not the depth_exponent effect.
-    if (pad_terms.has_power_depth() && law->name() != "bekker") out += "+depth_exponent";
+    if (pad_terms.has_power_depth() && law->kind() != LawKind::kBekker) out += "+depth_exponent";
     if (pad_terms.has_compaction()) out += "+compaction_peak";
     if (pad_terms.has_added_mass()) out += "+added_mass";
     return out;

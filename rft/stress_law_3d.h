@@ -10,6 +10,8 @@
 #include <Eigen/Core>
 #include <string_view>
 
+#include "rft/law_kind.h"
+
 namespace touchdown::rft {
 
 // Normals n_W, velocities v_W and the resulting stresses sigma of up to kCapacity elements, one
@@ -25,7 +27,12 @@ struct StressBatch {
 class StressLaw3D {
  public:
   virtual ~StressLaw3D() = default;
+  // The name outputs give the law, decorators included ("li2013+rate_damping"); for people, not
+  // for dispatch.
   virtual std::string_view name() const = 0;
+  // Which of the soil laws this is (a decorator: the law it wraps), for code that treats a law by
+  // its kind (Bekker's own depth law, say).
+  virtual LawKind kind() const = 0;
   // Stress per unit depth [N/m^3] on a leading element (n . v >= 0). |v| > 0.
   virtual Eigen::Vector3d StressPerDepth(const Eigen::Vector3d& n_W, const Eigen::Vector3d& v_W) const = 0;
   // StressPerDepth for a batch of elements (StressBatch): the same values element by element. The

@@ -332,15 +332,14 @@ std::string Calibrate(const std::string& measured, const std::string& out, const
   };
   dataset::CalibrationRequest r;
   r.measured = measured, r.out = out, r.confidence = confidence;
-  if (law != "rft" && law != "bekker") fail("law", "rft or bekker", law);
-  r.law = law == "bekker" ? dataset::CalibrationLaw::kBekker : dataset::CalibrationLaw::kRft;
+  r.law = dataset::ParseCalibrationLaw(law, "touchdown.calibrate", "law");
   if (per != "soil" && per != "all") fail("per", "soil or all", per);
   r.per_soil = per == "soil";
   if (atmosphere != "all") {
     r.atmosphere = rft::ParseAtmosphere(atmosphere);
     if (!r.atmosphere) fail("atmosphere", "vacuum, air or all", atmosphere);
   }
-  if (!(confidence >= 0.5 && confidence <= 0.9999))
+  if (!(confidence >= limits::kMinConfidence && confidence <= limits::kMaxConfidence))
     throw MakeInputError("touchdown.calibrate", "confidence", "must be between 0.5 and 0.9999, got " + std::to_string(confidence));
   r.soil = soil, r.pad = pad, r.shear_from = shear_from;
   r.naming = {"touchdown.calibrate", false};
@@ -378,17 +377,17 @@ std::string Diagnose(const std::string& measured, const std::string& model, cons
   const auto fail = [](const std::string& field, const std::string& allowed, const std::string& value) {
     throw MakeInputError("touchdown.diagnose", field, "must be " + allowed + ", got '" + value + "'");
   };
-  if (base != "rft" && base != "bekker") fail("base", "rft or bekker", base);
+  const gap::DiagnoseBase diagnose_base = gap::ParseDiagnoseBase(base, "touchdown.diagnose", "base");
   const std::optional<pad::SensorSampling> sampling = dataset::ParseSensorSampling(sensor_sampling);
   if (!sampling) fail("sensor_sampling", dataset::SensorSamplingChoices(), sensor_sampling);
   std::atomic<int> stop{0};
   ProgressReport progress(std::move(progress_arg));
   return RunInterruptible(stop, progress, [&] {
     gap::DiagnoseOptions o;
-    o.threads = threads > 0 ? threads : std::max(1u, std::thread::hardware_concurrency());
+    o.threads = io::ThreadsFor(threads);
     o.try_pairs = pairs;
     o.law_candidate = law_candidate;
-    o.base = base == "bekker" ? gap::DiagnoseBase::kBekker : gap::DiagnoseBase::kRft;
+    o.base = diagnose_base;
     o.sensor_sampling = *sampling;
     o.progress.counts = progress.counts();
     if (!model.empty()) o.start_model = model::LoadModelFile(model);

@@ -11,6 +11,14 @@
 
 namespace touchdown::dataset {
 
+std::vector<std::string> CalibrationLawNames() { return {"rft", "bekker"}; }
+
+CalibrationLaw ParseCalibrationLaw(const std::string& name, const std::string& where, const std::string& field) {
+  if (name == "rft") return CalibrationLaw::kRft;
+  if (name == "bekker") return CalibrationLaw::kBekker;
+  throw MakeInputError(where, field, "must be rft or bekker, got '" + name + "'");
+}
+
 namespace {
 
 // law bekker: n, k_c and k_phi fitted; c, phi and K from the soil (or shear_from).

@@ -16,6 +16,10 @@
 namespace touchdown::dataset {
 
 enum class CalibrationLaw { kRft, kBekker };
+// The names on the command line and in Python ("rft", "bekker"), in the enum's order.
+std::vector<std::string> CalibrationLawNames();
+// The law a name stands for. Throws InputError naming `where` and `field` on any other text.
+CalibrationLaw ParseCalibrationLaw(const std::string& name, const std::string& where, const std::string& field);
 
 struct CalibrationRequest {
   std::string measured;  // dataset directory

@@ -9,6 +9,7 @@
 #include "drop_tests/io/dataset_csv.h"
 #include "rft/input_error.h"
 #include "rft/input_file.h"
+#include "rft/physical_limits.h"
 
 namespace touchdown::dataset {
 
@@ -74,8 +75,7 @@ DatasetTrace ReadTrace(const std::string& path) {
   return trace;
 }
 
-// Most filesystems take names of up to 255 bytes; the id gets a suffix ("_measured.csv").
-constexpr size_t kMaxDropIdBytes = 200;
+using limits::kMaxDropIdBytes;
 }  // namespace
 
 std::string DropIdProblem(const std::string& id) {

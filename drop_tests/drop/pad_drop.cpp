@@ -97,14 +97,16 @@ PadDrop SimulateDrop(const io::PadSpec& pad, const rft::SoilParameters& soil, co
   io::PadSpec described{pad.name, pad.source, pad.kind, pad.profile, pad.mass_kg, {}, pad.mesh_file, pad.file};
   const rft::SoilParameters drop_soil = DropSoil(soil, conditions.zeta_N_m3, conditions.atmosphere);
   PadDrop drop{std::move(described), DropSoil(soil, std::nullopt, conditions.atmosphere), conditions,
-               conditions.mass_kg.value_or(pad.mass_kg), ZetaAtGravity(drop_soil, conditions.gravity_m_s2), {}, {}, {}};
+               conditions.mass_kg.value_or(pad.mass_kg), ZetaAtGravity(drop_soil, conditions.gravity_m_s2), {}, {},
+               rft::LawKind::kLi2013, {}};
 
   if (free) {
     const bool bekker = RunsOnBekker(drop_soil, conditions.law_3d);
     const rft::SoilContactModel law =
         MakeFreeLaw(drop_soil, conditions.law_3d, conditions.gravity_m_s2, conditions.effects,
                     conditions.effects_source, bekker ? rft::BekkerPlateB(pad.body.surface) : 0.0);
-    drop.law_3d = law.name();
+    drop.law_3d = law.law->kind();
+    drop.contact_model = law.name();
     pad::FreeDropInput in;
     in.impact_speed_m_s = conditions.impact_speed_m_s;
     in.horizontal_speed_m_s = conditions.horizontal_speed_m_s;
@@ -138,7 +140,7 @@ PadDrop SimulateDrop(const io::PadSpec& pad, const rft::SoilParameters& soil, co
   }
   drop.result =
       pad::RunRigDrop({drop.mass_kg, conditions.gravity_m_s2, conditions.impact_speed_m_s}, *response, options.rig);
-  if (bekker) drop.law_3d = "bekker";
+  if (bekker) drop.law_3d = rft::LawKind::kBekker;
   return drop;
 }
 
@@ -157,7 +159,7 @@ nlohmann::json SummaryJson(const PadDrop& d) {
     j["pad"] = d.pad.name;
     j["soil"] = d.soil.name;
     j["atmosphere"] = rft::AtmosphereName(d.soil.atmosphere);
-    j["law"] = d.law_3d;
+    j["law"] = d.contact_model;
     j["impact_speed_m_s"] = d.conditions.impact_speed_m_s;
     j["horizontal_speed_m_s"] = d.conditions.horizontal_speed_m_s;
     j["pad_mass_kg"] = d.mass_kg;
@@ -183,7 +185,8 @@ nlohmann::json SummaryJson(const PadDrop& d) {
         {"rest_creep_m", r.rest_creep_m},
         {"solver_steps", r.solver.steps},
     };
-    if (d.law_3d == "bekker") j["law"] = "bekker";  // RFT rig summaries stay as they were
+    // RFT rig summaries name no law (they stay as they were); Bekker's do.
+    if (d.law_3d == rft::LawKind::kBekker) j["law"] = rft::LawKindName(d.law_3d);
   }
   const std::vector<std::string> active = model::ActiveEffects(d.conditions.effects);
   if (!active.empty()) {

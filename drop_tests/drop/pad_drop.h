@@ -71,7 +71,11 @@ struct PadDrop {
   // of the lowest point, vertical velocity and force; rest_creep_m = 0).
   pad::RigDropResult result;
   std::optional<pad::FreeDropResult> free;  // a free drop's own result (tilt, travel, horizontal force)
-  std::string law_3d;                  // a free drop's 3D law, decorators included ("li2013+rate_damping")
+  // The law the drop ran on: a free drop's 3D law; the rig's Li 2013 (its 2D form) or Bekker.
+  rft::LawKind law_3d = rft::LawKind::kLi2013;
+  // A free drop's contact model as its summary names it, decorators included
+  // ("li2013+rate_damping", rft::SoilContactModel::name); empty for a rig drop.
+  std::string contact_model;
   bool in_air() const { return soil.atmosphere == rft::Atmosphere::kAir; }
 };
 

@@ -286,6 +286,14 @@ std::string DescribeResidual(const Diagnosis& d) {
 
 }  // namespace
 
+std::vector<std::string> DiagnoseBaseNames() { return {"rft", "bekker"}; }
+
+DiagnoseBase ParseDiagnoseBase(const std::string& name, const std::string& where, const std::string& field) {
+  if (name == "rft") return DiagnoseBase::kRft;
+  if (name == "bekker") return DiagnoseBase::kBekker;
+  throw MakeInputError(where, field, "must be rft or bekker, got '" + name + "'");
+}
+
 Diagnosis RunDiagnosis(const dataset::Dataset& ds, const DiagnoseOptions& o) {
   const auto t0 = std::chrono::steady_clock::now();
   if (ds.drops.size() < 3) throw MakeInputError(ds.directory, "drops.csv", "diagnose needs at least 3 drops");

@@ -41,6 +41,10 @@
 namespace touchdown::gap {
 
 enum class DiagnoseBase { kRft, kBekker };
+// The names on the command line and in Python ("rft", "bekker"), in the enum's order.
+std::vector<std::string> DiagnoseBaseNames();
+// The base a name stands for. Throws InputError naming `where` and `field` on any other text.
+DiagnoseBase ParseDiagnoseBase(const std::string& name, const std::string& where, const std::string& field);
 
 struct DiagnoseOptions {
   int threads = 2;

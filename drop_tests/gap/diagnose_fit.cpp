@@ -86,7 +86,7 @@ ModelValues Unscale(const FitProblem& p, const Layout& L, const Eigen::VectorXd&
   int k = 0;
   for (int s = 0; s < L.soils; ++s) m.zeta_N_m3.push_back(x[k++] * p.soils[s].zeta_N_m3);
   for (const CandidateTerm* e : L.infos) {
-    model::Effect effect{e->effect_id, {}};
+    model::Effect effect{model::FindEffect(e->effect).id, {}};
     for (const model::EffectParameterInfo& q : e->parameters) effect.values.push_back(x[k++] * q.scale);
     m.effects.push_back(effect);
   }
@@ -197,16 +197,16 @@ void SetCandidateTerms(FitProblem& p) {
     p.shipped_lambda = lambda;
   }
   p.terms.clear();
-  const model::EffectInfo& inertial = model::FindEffect("inertial_drag");
-  CandidateTerm weaker{kWeakerDynamicTerm, inertial.id, inertial.parameters};
+  const model::EffectInfo& inertial = model::FindEffect(model::EffectId::kInertialDrag);
+  CandidateTerm weaker{kWeakerDynamicTerm, inertial.kind, inertial.parameters};
   model::EffectParameterInfo& w = weaker.parameters[0];
   w.upper = std::max(p.shipped_lambda, 0.0);
   w.start = 0.5 * p.shipped_lambda;
   w.scan = {0.0, 0.5 * p.shipped_lambda, p.shipped_lambda};
   p.terms.push_back(weaker);
   for (const model::EffectInfo& e : model::EffectLibrary()) {
-    CandidateTerm t{e.id, e.id, e.parameters};
-    if (e.id == inertial.id && p.shipped_lambda > 0.0) {  // more of the soil's own term
+    CandidateTerm t{e.id, e.kind, e.parameters};
+    if (e.kind == inertial.kind && p.shipped_lambda > 0.0) {  // more of the soil's own term
       t.parameters[0].lower = p.shipped_lambda;
       t.parameters[0].start = std::max(t.parameters[0].start, p.shipped_lambda);
     }
@@ -285,18 +285,18 @@ FitProblem MakeFitProblem(const dataset::Dataset& ds, const std::vector<bool>& h
 bool CandidateApplies(const FitProblem& p, const std::vector<std::string>& ids, std::string* why) {
   for (size_t i = 0; i < ids.size(); ++i)
     for (size_t j = 0; j < i; ++j)
-      if (FindTerm(p, ids[i]).effect_id == FindTerm(p, ids[j]).effect_id) {
+      if (FindTerm(p, ids[i]).effect == FindTerm(p, ids[j]).effect) {
         *why = ids[i] + " and " + ids[j] + " set the same term";
         return false;
       }
   for (const std::string& name : ids) {
-    const std::string& id = FindTerm(p, name).effect_id;
-    const model::EffectInfo& e = model::FindEffect(id);
+    const model::EffectInfo& e = model::FindEffect(FindTerm(p, name).effect);
+    const std::string& id = e.id;
     if (name == kWeakerDynamicTerm && !(p.shipped_lambda > 0.0)) {
       *why = "the soils carry no common dynamic term to weaken";
       return false;
     }
-    if (p.bekker_base && id == "depth_exponent") {
+    if (p.bekker_base && e.kind == model::EffectId::kDepthExponent) {
       *why = "depth_exponent does not apply to the Bekker base (its depth exponent is the soil's fitted n)";
       return false;
     }
@@ -304,7 +304,7 @@ bool CandidateApplies(const FitProblem& p, const std::vector<std::string>& ids, 
       *why = id + " needs drops in air and in vacuum (otherwise it is confounded with zeta)";
       return false;
     }
-    if (id == "inertial_drag" || id == "added_mass")
+    if (e.needs_bulk_density)
       for (const rft::SoilParameters& s : p.soils)
         if (!(s.bulk_density_kg_m3 > 0.0)) {
           *why = id + " needs the bulk density of soil " + s.name;

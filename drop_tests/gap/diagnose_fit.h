@@ -51,7 +51,7 @@ struct FitDrop {
 // so they never enter one model together.
 struct CandidateTerm {
   std::string name;       // in reports and diagnosis.json; the library id unless narrowed
-  std::string effect_id;  // the library effect it sets (model files carry this one)
+  model::EffectId effect;  // the library effect it sets (model files carry its id)
   std::vector<model::EffectParameterInfo> parameters;  // the library's, with the fitted range
 };
 inline constexpr const char* kWeakerDynamicTerm = "weaker_dynamic_term";

@@ -17,6 +17,10 @@ void ThrowIfStopped(const std::atomic<int>* stop) {
 }
 }  // namespace
 
+int EveryCore() { return static_cast<int>(std::max(1u, std::thread::hardware_concurrency())); }
+
+int ThreadsFor(int requested) { return requested > 0 ? requested : EveryCore(); }
+
 StopScope::StopScope(const std::atomic<int>* stop) : outer_(t_stop) { t_stop = stop; }
 
 StopScope::~StopScope() { t_stop = outer_; }

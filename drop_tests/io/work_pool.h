@@ -15,6 +15,12 @@
 
 namespace touchdown::io {
 
+// The machine's hardware threads, at least 1 (std::thread::hardware_concurrency may say 0).
+int EveryCore();
+// The threads a run asking for `requested` uses: `requested` if positive, else EveryCore() (the
+// --threads 0 and `threads=0` default of every command and the Python module).
+int ThreadsFor(int requested);
+
 // A fixed set of threads running queued tasks, in the order queued.
 class WorkPool {
  public:

@@ -7,11 +7,12 @@
 #include "drop_tests/io/nearest_name.h"
 #include "rft/input_error.h"
 #include "rft/input_file.h"
+#include "rft/physical_limits.h"
 
 namespace touchdown::io {
 
 namespace {
-constexpr double kMaxWholeNumber = 1e9;  // counts read into an int
+using limits::kMaxWholeNumber;
 
 std::string Shown(const YAML::Node& n) {
   if (n.IsScalar()) return "'" + n.Scalar() + "'";
@@ -22,13 +23,9 @@ std::string Shown(const YAML::Node& n) {
 
 std::string LineOf(const YAML::Node& n) { return "line " + std::to_string(n.Mark().line + 1); }
 
-// What a walk over the tree may meet. yaml-cpp keeps an alias as a second reference to its anchor's
-// node, so a walk visits an aliased subtree once per reference: an alias inside its own anchor
-// (`a: &a [*a]`) makes the tree infinitely deep, and aliases of aliases multiply ("billion laughs":
-// nine levels of ten references are 10^9 nodes). Every touchdown file is a few hundred nodes and a
-// few levels deep; these bounds are far above that and are reached in milliseconds.
-constexpr int kMaxYamlDepth = 64;
-constexpr long kMaxYamlNodes = 1'000'000;
+// What a walk over the tree may meet: limits::kMaxYamlDepth and kMaxYamlNodes (aliases).
+using limits::kMaxYamlDepth;
+using limits::kMaxYamlNodes;
 
 struct TreeWalk {
   const std::string& file;

@@ -30,6 +30,18 @@
 
 namespace touchdown::model {
 
+// The effects of the library, in its order. Files and the command line name them by EffectInfo::id
+// ("rate_damping"); past that edge (FindEffect) code dispatches on this.
+enum class EffectId {
+  kInertialDrag,
+  kRateDamping,
+  kAddedMass,
+  kCompactionPeak,
+  kDepthExponent,
+  kGasCushion,
+  kSensorOffset,
+};
+
 // One parameter of an effect as a file and a fit see it.
 struct EffectParameterInfo {
   std::string key;         // in files, unit-suffixed: "c_N_s_m3", "d_c_mm"
@@ -47,17 +59,20 @@ struct EffectParameterInfo {
 };
 
 struct EffectInfo {
-  std::string id;
+  EffectId kind;
+  std::string id;          // its name in files, outputs and on the command line
   std::string form;        // one line, the documented form
   std::vector<EffectParameterInfo> parameters;
   bool air_only = false;         // acts only on drops in air
   bool measurement_only = false;  // changes what the sensors record, not the physics
+  bool needs_bulk_density = false;  // its force scales with the soil's bulk density rho
 };
 
-// The library, in a fixed order.
+// The library, in EffectId's order (EffectLibrary()[int(kind)].kind == kind).
 const std::vector<EffectInfo>& EffectLibrary();
 // Throws InputError naming `context` if `id` is not in the library.
 const EffectInfo& FindEffect(const std::string& id, const std::string& context = "");
+const EffectInfo& FindEffect(EffectId kind);
 
 // An effect with its parameter values (SI, in the order of EffectInfo::parameters).
 struct Effect {
@@ -71,6 +86,7 @@ rft::EffectTerms MakeEffectTerms(const std::vector<Effect>& effects, const std::
 // The effects that act (parameters not all neutral: c = 0, p = 1, chi = c_g = 0, ...), by id in
 // library order. A listed effect with neutral parameters changes nothing and is not active.
 std::vector<std::string> ActiveEffects(const rft::EffectTerms& terms);
+std::vector<EffectId> ActiveEffectIds(const rft::EffectTerms& terms);
 // The active effects a drop does not apply to its physics, with the reason: sensor_offset always
 // (measurement only: `compare` applies it to the simulated traces it compares with measured
 // ones), gas_cushion when the drop is not in air.

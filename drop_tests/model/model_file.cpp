@@ -145,8 +145,10 @@ nlohmann::json ModelEffectsJson(const ModelFile& m) {
   const rft::EffectTerms terms = ModelEffectTerms(m);
   nlohmann::json applied = nlohmann::json::array(), skipped = nlohmann::json::object();
   for (const auto& [id, why] : EffectsNotApplied(terms, /*in_air=*/true)) skipped[id] = why;
-  for (const std::string& id : ActiveEffects(terms))
-    if (!skipped.contains(id)) applied.push_back(id == "gas_cushion" ? "gas_cushion (soils in air only)" : id);
+  for (const EffectId kind : ActiveEffectIds(terms)) {
+    const EffectInfo& e = FindEffect(kind);
+    if (!skipped.contains(e.id)) applied.push_back(e.air_only ? e.id + " (soils in air only)" : e.id);
+  }
   return {{"file", m.source}, {"effects", applied}, {"effects_not_applied", skipped}};
 }
 

@@ -128,8 +128,7 @@ void RunEngine(DropEngine& engine, const EngineDriver& d) {
 }
 
 int DefaultThreads(int ranks_on_node) {
-  const int cores = std::max(1u, std::thread::hardware_concurrency());
-  return std::max(1, cores / std::max(1, ranks_on_node));
+  return std::max(1, io::EveryCore() / std::max(1, ranks_on_node));
 }
 
 }  // namespace touchdown::sweep

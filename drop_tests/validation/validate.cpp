@@ -16,6 +16,7 @@
 #include "drop_tests/validation/power_law_fit.h"
 #include "footpad_geom/axisymmetric_intrusion.h"
 #include "lander/integ/cvode_integrator.h"
+#include "lander/pad/release.h"
 #include "rft/input_error.h"
 
 namespace touchdown::validation {
@@ -56,7 +57,8 @@ class SourceRunner {
     c.gravity_m_s2 = gravity_m_s2;
     c.zeta_N_m3 = zeta_N_m3;
     c.mass_kg = mass_kg;
-    if (v.dynamic) c.effects = model::MakeEffectTerms({{"inertial_drag", {lambda_}}}, source_.file);
+    if (v.dynamic)
+      c.effects = model::MakeEffectTerms({{model::FindEffect(model::EffectId::kInertialDrag).id, {lambda_}}}, source_.file);
     c.effects_source = source_.file;
     drop::ValidateConditions(c, source_.file);
     try {
@@ -132,7 +134,7 @@ std::pair<double, double> TrendPoint(const SourceRunner& runner, const SourceRes
     case Variable::kGravity:
       return {value, runner.Run(v, r.zeta_N_m3[k], t.quantity, t.at_impact_speed_m_s, value)};
     case Variable::kTotalDropDistance: {
-      const double speed = std::sqrt(2.0 * t.at_gravity_m_s2 * value);
+      const double speed = pad::TouchdownSpeed(0.0, t.at_gravity_m_s2, value);
       const double y = runner.Run(v, r.zeta_N_m3[k], t.quantity, speed, t.at_gravity_m_s2);
       const double depth = t.quantity == Quantity::kFinalDepth
                                ? y

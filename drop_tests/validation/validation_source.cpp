@@ -7,6 +7,7 @@
 
 #include "drop_tests/io/yaml_fields.h"
 #include "drop_tests/validation/katsuragi_durian.h"
+#include "lander/pad/release.h"
 #include "rft/input_error.h"
 
 namespace touchdown::validation {
@@ -92,7 +93,7 @@ double ReadImpactSpeed(const io::YamlFields& f, double gravity_m_s2, std::option
     f.Fail("impact_speed_m_s", "give exactly one of impact_speed_m_s and drop_height_mm");
   if (f.Has("impact_speed_m_s")) return f.NonNegative("impact_speed_m_s");
   drop_height_m = f.NonNegative("drop_height_mm") * 1e-3;
-  return std::sqrt(2.0 * gravity_m_s2 * *drop_height_m);
+  return pad::TouchdownSpeed(0.0, gravity_m_s2, *drop_height_m);
 }
 
 MeasuredPoint ReadPoint(const io::YamlFields& f, const ValidationSource& s) {

@@ -13,6 +13,7 @@
 #include <lander/integ/cvode_integrator.h>
 #include <lander/pad/pad_pose.h>
 #include <rft/contact_wrench.h>
+#include <rft/gravity_constants.h>
 #include <rft/ground.h>
 #include <rft/input_error.h>
 #include <rft/stress_law_3d_factory.h>
@@ -24,7 +25,7 @@ namespace td = touchdown;
 // speed, so the soil's rate-dependent dynamic term is left out (as `touchdown force` without
 // --dynamic).
 nlohmann::json ForceAtDepth(const td::io::PadSpec& pad, td::rft::SoilParameters soil, double depth_m) {
-  const double gravity_m_s2 = 9.81;
+  const double gravity_m_s2 = td::rft::kEarthGravity_m_s2;
   soil.dynamic_term = false;
   const td::rft::SoilContactModel contact =
       td::rft::MakeSoilContactModel(td::rft::LawKind::kLi2013, soil, gravity_m_s2, {});

@@ -97,7 +97,7 @@ Eigen::VectorXd ReleaseState(const FreePadDynamics& pad, const FreeDropInput& in
 Eigen::VectorXd Approach(integ::HybridRun& run, const FreePadDynamics& pad, const Eigen::VectorXd& release,
                          double clearance) {
   run.Start(0.0, release);
-  Eigen::VectorXd y = run.AdvanceToRoot(10.0 * std::sqrt(2.0 * clearance / pad.gravity_m_s2()) + 1.0, 0,
+  Eigen::VectorXd y = run.AdvanceToRoot(ApproachTimeLimit(clearance, pad.gravity_m_s2()), 0,
                                         "touchdown was not reached during the approach");
   y[kP + 2] += pad.Depth(pad.PoseOf(y));
   for (int i = 0; i < 8 && pad.Depth(pad.PoseOf(y)) > 0.0; ++i)

@@ -91,8 +91,7 @@ RigDropResult RunRigDrop(const RigDropInput& in, const VerticalSoilResponse& res
   if (clearance > 0.0) {
     y << -clearance, ReleaseSpeed(v_td, g, clearance), 0.0, 0.0;
     run.Start(0.0, y);
-    y = run.AdvanceToRoot(10.0 * std::sqrt(2.0 * clearance / g) + 1.0, 0,
-                          "touchdown was not reached during the approach");
+    y = run.AdvanceToRoot(ApproachTimeLimit(clearance, g), 0, "touchdown was not reached during the approach");
   } else {
     y << 0.0, v_td, 0.0, 0.0;
   }

@@ -168,7 +168,7 @@ TEST_F(ModelEffects, FreeVerticalDropWithEffectsMatchesTheRigDrop) {
     c.free = true;
     const drop::PadDrop free = drop::SimulateDrop(pad, soil, c, {});
     ASSERT_TRUE(free.free.has_value()) << k.name;
-    EXPECT_EQ(free.law_3d, k.law);
+    EXPECT_EQ(free.contact_model, k.law);
     // Peak force over the stroke's samples (1 kHz, before the stop): at the stop instant the rig
     // records the soil's quasi-static force F(d_stop), the free drop the static reaction m g.
     auto stroke_peak = [](const drop::PadDrop& p) {

@@ -100,6 +100,20 @@ def test_diagnose_equals_the_command_line(tmp_path, sampling):
     assert (tmp_path / "py" / "model.yaml").read_bytes() == (tmp_path / "cli" / "model.yaml").read_bytes()
 
 
+def test_diagnose_base_bekker_equals_the_command_line(tmp_path):
+    # Python's `base` is the command line's --base, parsed by the same function.
+    spec = tmp_path / "synth.yaml"
+    spec.write_text(SYNTH_SPEC.replace("impact_speeds_m_s: [1.0]", "impact_speeds_m_s: [0.7, 1.0, 1.5]"))
+    run_touchdown("synth", spec, "--out", tmp_path / "measured")
+    run_touchdown("diagnose", tmp_path / "measured", "--out", tmp_path / "cli", "--no-pairs", "--threads", "2",
+                  "--base", "bekker")
+    py = touchdown.diagnose(tmp_path / "measured", tmp_path / "py", pairs=False, threads=2, base="bekker")
+    assert _without_seconds(py) == _without_seconds(_json(tmp_path / "cli" / "diagnosis.json"))
+    rft = touchdown.diagnose(tmp_path / "measured", tmp_path / "rft", pairs=False, threads=2)
+    assert _without_seconds(py) != _without_seconds(rft)  # the base changed the fit
+    assert (tmp_path / "py" / "model.yaml").read_bytes() == (tmp_path / "cli" / "model.yaml").read_bytes()
+
+
 TRADE_PLAN = ("schema_version: 1\ntype: sweep\nname: tiny_trade\nfixed: {gravity_m_s2: 9.81}\n"
               "grid: {pad: [flat, c4], soil: [fjs1_lp], impact_speed_m_s: [1.0]}\n"
               "trade: {allowable_final_penetration_mm: 15, allowable_peak_force_N: 400}\n")

@@ -55,6 +55,15 @@ ContactWrench BekkerWrench(const SurfaceElements& s, const SoilContactModel& m, 
   return ComputeContactWrench(s, k, PlaneGround(), *m.law, m.pad_terms);
 }
 
+// The name outputs print carries no "+depth_exponent" for Bekker's own z^n (the law's kind says so).
+TEST(BekkerLaw, ContactModelIsOfKindBekkerAndNamedWithoutDepthExponent) {
+  const BekkerPlate plate = FlatBekkerPlate(0.05, 64);
+  const SoilContactModel m = MakeSoilContactModel(LawKind::kBekker, BekkerSoil(1.1), 1.62, {}, BekkerPlateB(plate.surface));
+  EXPECT_EQ(m.law->kind(), LawKind::kBekker);
+  EXPECT_TRUE(m.pad_terms.has_power_depth());
+  EXPECT_EQ(m.name(), "bekker");
+}
+
 TEST(BekkerLaw, FootprintDimensionOfMeshes) {
   const BekkerPlate plate = FlatBekkerPlate(0.05, 128);
   // Walls and the top face are not footprint: b is the radius of the polygon's equal-area circle.

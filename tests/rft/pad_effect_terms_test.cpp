@@ -29,6 +29,7 @@ class ConstantLaw final : public StressLaw3D {
  public:
   explicit ConstantLaw(Eigen::Vector3d sigma) : sigma_(std::move(sigma)) {}
   std::string_view name() const override { return "constant"; }
+  LawKind kind() const override { return LawKind::kLi2013; }  // an RFT stand-in: pad-level terms apply
   Eigen::Vector3d StressPerDepth(const Eigen::Vector3d&, const Eigen::Vector3d&) const override { return sigma_; }
 
  private:

@@ -60,6 +60,22 @@ TEST(RftStressLawFactory, DynamicTermIsSwitchedPerSoil) {
   EXPECT_EQ(MakeSoilContactModel(LawKind::kLi2013, s, 9.81, stated).law->name(), "li2013");
 }
 
+// A law says which kind it is, and a decorator says its inner law's: code that treats a law by
+// its kind does not read its name.
+TEST(RftStressLawFactory, EveryLawKnowsItsKindThroughItsDecorators) {
+  SoilParameters s = FactorySoil();
+  s.dynamic_term = true;
+  s.dynamic_lambda = 2.0;
+  EffectTerms damped;
+  damped.damping_c_N_s_m3 = 1e3;
+  for (const LawKind k : {LawKind::kLi2013, LawKind::kAgarwal2023}) {
+    EXPECT_EQ(MakeStressLaw3D(k, s, 9.81)->kind(), k);
+    const SoilContactModel m = MakeSoilContactModel(k, s, 9.81, damped);
+    EXPECT_EQ(m.law->name(), std::string(LawKindName(k)) + "+dynamic+rate_damping");
+    EXPECT_EQ(m.law->kind(), k);
+  }
+}
+
 TEST(RftStressLawFactory, BadInputThrowsNamingSoilAndField) {
   auto message = [](auto&& f) {
     try {

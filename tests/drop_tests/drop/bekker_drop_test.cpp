@@ -78,7 +78,10 @@ TEST(BekkerDrop, FreeFlatPadAgreesWithTheRig) {
     c.free = true;
     const PadDrop free = SimulateDrop(flat, soil, c, {});
     ASSERT_TRUE(free.free);
-    EXPECT_EQ(free.law_3d, "bekker");
+    EXPECT_EQ(rig.law_3d, rft::LawKind::kBekker);
+    EXPECT_TRUE(rig.contact_model.empty());
+    EXPECT_EQ(free.law_3d, rft::LawKind::kBekker);
+    EXPECT_EQ(free.contact_model, "bekker");
     // The free pad's revolved polygon has a slightly smaller footprint than the rig's circle (and
     // its b with it): agreement to the polygon's area.
     EXPECT_NEAR(free.result.final_penetration_m, rig.result.final_penetration_m,

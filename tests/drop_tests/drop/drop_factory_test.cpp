@@ -120,7 +120,8 @@ TEST(DropFactory, FreeDropRunsTheFactorysLaw) {
   const PadDrop drop = SimulateDrop(pad, soil, c, {});
   ASSERT_TRUE(drop.free.has_value());
   const auto law = MakeFreeLaw(DropSoil(soil, c.zeta_N_m3, std::nullopt), std::nullopt, kMoonG, {}, "");
-  EXPECT_EQ(drop.law_3d, law.name());
+  EXPECT_EQ(drop.contact_model, law.name());
+  EXPECT_EQ(drop.law_3d, law.law->kind());
   pad::FreeDropInput in;
   in.impact_speed_m_s = 0.8;
   in.tilt_rad = 0.1;

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <stdexcept>
@@ -122,6 +123,14 @@ TEST(WorkPoolTest, ClearDropsTheTasksNotStarted) {
   pool.Wait();
   EXPECT_GE(cleared, 10u);
   EXPECT_EQ(static_cast<size_t>(ran.load()) + cleared, 11u);
+}
+
+// The one default thread count: a positive request as given, 0 (or less) every hardware thread.
+TEST(ThreadsForTest, ZeroMeansEveryCore) {
+  EXPECT_EQ(EveryCore(), std::max(1, static_cast<int>(std::thread::hardware_concurrency())));
+  EXPECT_EQ(ThreadsFor(0), EveryCore());
+  EXPECT_EQ(ThreadsFor(-1), EveryCore());
+  EXPECT_EQ(ThreadsFor(3), 3);
 }
 
 }  // namespace

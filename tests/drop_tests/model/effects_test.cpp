@@ -49,5 +49,40 @@ TEST(EffectFile, ParsesWritesAndRejects) {
   EXPECT_THROW(LoadModelFile(dir + "/bad.yaml"), InputError);
 }
 
+// The library is one table in EffectId's order: each id's entry is found by its kind and by its
+// name, and the terms each effect sets are read back as that effect (and only it) active.
+TEST(EffectLibrary, OneTableInEnumOrder) {
+  const std::vector<EffectInfo>& library = EffectLibrary();
+  ASSERT_EQ(library.size(), 7u);
+  for (size_t i = 0; i < library.size(); ++i) {
+    const EffectId kind = static_cast<EffectId>(i);
+    EXPECT_EQ(library[i].kind, kind);
+    EXPECT_EQ(&FindEffect(kind), &library[i]);
+    EXPECT_EQ(&FindEffect(library[i].id), &library[i]);
+    std::vector<double> values;
+    for (const EffectParameterInfo& p : library[i].parameters) values.push_back(0.25 * p.lower + 0.75 * p.upper);
+    const rft::EffectTerms t = MakeEffectTerms({{library[i].id, values}});
+    EXPECT_EQ(ActiveEffectIds(t), std::vector<EffectId>{kind}) << library[i].id;
+    EXPECT_EQ(ActiveEffects(t), std::vector<std::string>{library[i].id});
+  }
+  EXPECT_EQ(FindEffect(EffectId::kRateDamping).id, "rate_damping");
+  EXPECT_TRUE(FindEffect(EffectId::kGasCushion).air_only);
+  EXPECT_TRUE(FindEffect(EffectId::kSensorOffset).measurement_only);
+  EXPECT_TRUE(FindEffect(EffectId::kInertialDrag).needs_bulk_density);
+  EXPECT_TRUE(FindEffect(EffectId::kAddedMass).needs_bulk_density);
+}
+
+TEST(EffectLibrary, EffectsNotAppliedFollowTheTable) {
+  const rft::EffectTerms t = MakeEffectTerms({{"gas_cushion", {0.3, 1e3}}, {"sensor_offset", {1e-3, 0.0}},
+                                              {"rate_damping", {1e3}}});
+  const auto in_vacuum = EffectsNotApplied(t, false);
+  ASSERT_EQ(in_vacuum.size(), 2u);
+  EXPECT_EQ(in_vacuum[0].first, "gas_cushion");
+  EXPECT_EQ(in_vacuum[1].first, "sensor_offset");
+  const auto in_air = EffectsNotApplied(t, true);
+  ASSERT_EQ(in_air.size(), 1u);
+  EXPECT_EQ(in_air[0].first, "sensor_offset");
+}
+
 }  // namespace
 }  // namespace touchdown::model
