@@ -40,7 +40,7 @@ LanderSoilCatalog LoadLanderSoils(const LanderScenario& sc, const std::vector<st
 double TouchdownSpeed(const LanderScenario& s) {
   const LanderInitialSpec& ic = s.initial;
   if (!ic.drop_height_m) return *ic.touchdown_speed_m_s;
-  return std::sqrt(std::pow(ic.release_vertical_speed_m_s, 2) + 2.0 * s.gravity_m_s2 * *ic.drop_height_m);
+  return pad::TouchdownSpeed(ic.release_vertical_speed_m_s, s.gravity_m_s2, *ic.drop_height_m);
 }
 
 lander::LanderModel BuildLanderModel(const LanderScenario& sc) {

@@ -4,12 +4,12 @@
 #include <filesystem>
 #include <optional>
 #include <ostream>
-#include <thread>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "drop_tests/io/output_path.h"
+#include "drop_tests/io/work_pool.h"
 #include "drop_tests/model/model_file.h"
 #include "rft/input_error.h"
 
@@ -35,7 +35,7 @@ TargetsCalibration RunTargetsCalibration(const TargetsCalibrationRequest& r) {
   if (r.evaluate_only)
     for (Target& t : c.file.targets) t.fit = false;
   TargetsFitOptions options;
-  options.threads = r.threads > 0 ? r.threads : int(std::max(1u, std::thread::hardware_concurrency()));
+  options.threads = io::ThreadsFor(r.threads);
   io::Progress progress("calibrate", "evaluations", 0, r.progress);
   options.on_evaluation = [&progress](const std::vector<double>&) { progress.Add(1); };
   c.fit = FitTargets(c.file, options);
