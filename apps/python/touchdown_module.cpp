@@ -347,7 +347,7 @@ std::string Calibrate(const std::string& measured, const std::string& out, const
   return dataset::CalibrationJson(dataset::RunCalibration(r)).dump(2);
 }
 
-// touchdown calibrate --targets: the report's content (targets::TargetsReportJson), the model file in `out`.
+// touchdown calibrate --targets: the report's content (targets::TargetsCalibrationReportJson), the model file in `out`.
 std::string CalibrateTargets(const std::string& targets_file, const std::string& out, const std::string& report,
                              const py::object& threads_arg, bool evaluate_only, py::object progress_arg) {
   const int threads = ThreadsArgument(threads_arg, "touchdown.calibrate_targets");
@@ -359,7 +359,7 @@ std::string CalibrateTargets(const std::string& targets_file, const std::string&
     r.naming = {"touchdown.calibrate_targets", false};
     r.progress.counts = progress.counts();
     const targets::TargetsCalibration c = targets::RunTargetsCalibration(r);
-    return targets::TargetsReportJson(c.file, c.fit).dump(2);
+    return targets::TargetsCalibrationReportJson(r, c).dump(2);
   });
 }
 

@@ -44,15 +44,19 @@ TargetsCalibration RunTargetsCalibration(const TargetsCalibrationRequest& r) {
   model::WriteModelFile(TargetsModel(c.file, c.fit, model_path.stem().string(), model_path.parent_path().string()), out);
   if (report) {
     // The JSON object opens with its "written_by" entry on the mark's line.
-    nlohmann::json j = TargetsReportJson(c.file, c.fit);
-    // What wrote it, so a file kept beside the data says how to remake it.
-    j["command"] = "touchdown calibrate --targets " + r.targets + " --out " + r.out + " --report " + r.report +
-                   (r.evaluate_only ? " --evaluate-only" : "");
-    const std::string json = j.dump(2);
+    const std::string json = TargetsCalibrationReportJson(r, c).dump(2);
     io::WriteOutputFile(*report, [&](std::ostream& o) { o << kTargetsReportMark << '\n' << json.substr(2) << '\n'; },
                         kTargetsReportMark);
   }
   return c;
+}
+
+nlohmann::json TargetsCalibrationReportJson(const TargetsCalibrationRequest& r, const TargetsCalibration& c) {
+  nlohmann::json j = TargetsReportJson(c.file, c.fit);
+  // What wrote it, so a file kept beside the data says how to remake it.
+  j["command"] = "touchdown calibrate --targets " + r.targets + " --out " + r.out + " --report " + r.report +
+                 (r.evaluate_only ? " --evaluate-only" : "");
+  return j;
 }
 
 }  // namespace touchdown::targets

@@ -4,6 +4,8 @@
 // report to `report`), through io::OutputTarget, so a user's file is never replaced.
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "drop_tests/drop/drop_request.h"
 #include "drop_tests/io/progress.h"
 #include "drop_tests/targets/targets_fit.h"
@@ -29,5 +31,9 @@ struct TargetsCalibration {
 
 // Throws InputError for a bad request or file (naming it), before anything runs or is written.
 TargetsCalibration RunTargetsCalibration(const TargetsCalibrationRequest& request);
+
+// The report `--report` holds (without its "written_by" mark), and Python returns: the fit's
+// report (TargetsReportJson) and the command that makes it again.
+nlohmann::json TargetsCalibrationReportJson(const TargetsCalibrationRequest& request, const TargetsCalibration& c);
 
 }  // namespace touchdown::targets

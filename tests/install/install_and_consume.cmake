@@ -66,12 +66,12 @@ set(no_env "${CMAKE_COMMAND}" -E env --unset=TOUCHDOWN_DATA_DIR)
 file(COPY_FILE "${prefix}/share/touchdown/pads/flat.yaml" "${prefix}/share/touchdown/pads/installed_only_flat.yaml")
 run(cli_force COMMAND ${no_env} "${touchdown}" force --pad installed_only_flat --soil fjs1_lp --depth 0.02)
 run(cli_drop COMMAND ${no_env} "${touchdown}" drop --pad flat --soil fjs1_lp --speed 1)
-# $TOUCHDOWN_DATA_DIR still comes first: an empty catalogue knows no pad (exit 2, one line).
+# $TOUCHDOWN_DATA_DIR still comes first: a folder without a pads/ shelf is named (exit 2, one line).
 file(MAKE_DIRECTORY "${WORK_DIR}/empty_data")
 run(ignored EXPECT 2 COMMAND "${CMAKE_COMMAND}" -E env "TOUCHDOWN_DATA_DIR=${WORK_DIR}/empty_data"
   "${touchdown}" drop --pad flat --soil fjs1_lp --speed 1)
-if(NOT ignored_stderr MATCHES "unknown name 'flat'")
-  message(FATAL_ERROR "with TOUCHDOWN_DATA_DIR set, expected an unknown pad, got: ${ignored_stderr}")
+if(NOT ignored_stderr MATCHES "empty_data/pads: pads: no such data directory")
+  message(FATAL_ERROR "with TOUCHDOWN_DATA_DIR set, expected the empty folder named, got: ${ignored_stderr}")
 endif()
 
 # A program of the user's own, built against the moved prefix by find_package.
