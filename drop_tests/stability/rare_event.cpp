@@ -27,16 +27,6 @@ uint64_t Stream(Method m, uint64_t level, Purpose p, uint64_t component) {
   return (static_cast<uint64_t>(m) << 56) | (level << 40) | (static_cast<uint64_t>(p) << 32) | component;
 }
 
-// A uniform draw in the open interval (0, 1): CounterUniform's k 2^-53 moved to (k + 1/2) 2^-53, so
-// the normal quantile is always finite.
-double OpenUniform(uint64_t seed, uint64_t sample, uint64_t stream) {
-  return sweep::CounterUniform(seed, sample, stream) + 0x1.0p-54;
-}
-
-double StandardNormal(uint64_t seed, uint64_t sample, uint64_t stream) {
-  return boost::math::quantile(boost::math::normal(), OpenUniform(seed, sample, stream));
-}
-
 Eigen::VectorXd NormalPoint(int dimension, uint64_t seed, uint64_t sample, Method m, uint64_t level) {
   Eigen::VectorXd u(dimension);
   for (int j = 0; j < dimension; ++j)
@@ -187,6 +177,14 @@ void CheckSubsetOptions(int dimension, const SubsetOptions& o) {
 }
 
 }  // namespace
+
+double OpenUniform(uint64_t seed, uint64_t sample, uint64_t stream) {
+  return sweep::CounterUniform(seed, sample, stream) + 0x1.0p-54;
+}
+
+double StandardNormal(uint64_t seed, uint64_t sample, uint64_t stream) {
+  return boost::math::quantile(boost::math::normal(), OpenUniform(seed, sample, stream));
+}
 
 MonteCarloEstimate EstimateMonteCarlo(const LimitStateBatch& g, int dimension, const MonteCarloOptions& o) {
   CheckDimension(dimension);

@@ -25,6 +25,12 @@ namespace touchdown::stability {
 // g(u[i]) into g[i] for every point (the function resizes g to u.size()).
 using LimitStateBatch = std::function<void(const std::vector<Eigen::VectorXd>& u, std::vector<double>& g)>;
 
+// The counter-based draws every estimator (and a study's soil draws) takes its numbers from:
+// sweep::CounterUniform's k 2^-53 moved to (k + 1/2) 2^-53, a uniform in the open interval (0, 1),
+// so its standard normal quantile is always finite.
+double OpenUniform(uint64_t seed, uint64_t sample, uint64_t stream);
+double StandardNormal(uint64_t seed, uint64_t sample, uint64_t stream);
+
 // What every estimate reports. `interval` is two-sided at the options' confidence; `cov` the
 // estimate's coefficient of variation (standard error / P; +inf when P = 0); `evaluations` the
 // calls of g spent (landings, later).

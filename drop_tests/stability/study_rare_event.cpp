@@ -30,11 +30,12 @@ struct StoppedBySignal {
   int signal = 0;
 };
 
-// The landings an estimator may ask for at most: the plan's size (part of its digest).
+// The landings a pass may ask for at most: the plan's size (part of its digest). The importance
+// method's own pass (DIR/importance/) is the design point's refinement and the weighted sample; its
+// subset pass is the subset method's run (DIR/subset/), shared with `--method subset`.
 int64_t Budget(StudyMethod method, int64_t samples) {
-  const int64_t subset = static_cast<int64_t>(kSubsetMaxLevels) * samples;
-  if (method == StudyMethod::kSubset) return subset;
-  return subset + 1 + 7 * static_cast<int64_t>(kDesignPointRounds) + samples;
+  if (method == StudyMethod::kSubset) return static_cast<int64_t>(kSubsetMaxLevels) * samples;
+  return 1 + 7 * static_cast<int64_t>(kDesignPointRounds) + samples;
 }
 
 // Phi(u) in [0, 1): a uniform the plan's random parameters take (1 itself is no draw of theirs).
@@ -110,19 +111,18 @@ class LandingLimitState {
   std::vector<double> values_;
 };
 
-// The failing landings of smallest |u| (ties in landing order), at most kListedDesignPoints.
-std::vector<RareEventDesignPoint> DesignPoints(const LandingLimitState& g) {
-  std::vector<size_t> failing;
-  for (size_t k = 0; k < g.values().size(); ++k)
-    if (g.values()[k] <= 0.0) failing.push_back(k);
+// The failing landings of smallest |u| over the passes (ties in pass, then landing order), at most
+// kListedDesignPoints.
+std::vector<RareEventDesignPoint> DesignPoints(const std::vector<std::pair<StudyMethod, const LandingLimitState*>>& passes) {
+  std::vector<RareEventDesignPoint> failing;
+  for (const auto& [method, g] : passes)
+    for (size_t k = 0; k < g->values().size(); ++k)
+      if (g->values()[k] <= 0.0)
+        failing.push_back({g->points()[k], g->points()[k].norm(), g->records()[k].drop_id, StudyMethodName(method)});
   std::stable_sort(failing.begin(), failing.end(),
-                   [&](size_t a, size_t b) { return g.points()[a].norm() < g.points()[b].norm(); });
-  std::vector<RareEventDesignPoint> out;
-  for (size_t k : failing) {
-    if (static_cast<int>(out.size()) == kListedDesignPoints) break;
-    out.push_back({g.points()[k], g.points()[k].norm(), g.records()[k].drop_id});
-  }
-  return out;
+                   [](const RareEventDesignPoint& a, const RareEventDesignPoint& b) { return a.beta < b.beta; });
+  if (failing.size() > static_cast<size_t>(kListedDesignPoints)) failing.resize(kListedDesignPoints);
+  return failing;
 }
 
 std::string MethodDir(const std::string& out_dir, StudyMethod method) {
@@ -218,8 +218,14 @@ RareEventStudyResult RunRareEventStudy(const Study& study, StudyMethod method, i
   result.method = method;
   result.samples = samples;
   const int dimension = static_cast<int>(study.plan.random.size());
-  LandingLimitState state(study, method, samples, MethodDir(out_dir, method), options, result);
+  LandingLimitState state(study, StudyMethod::kSubset, samples, MethodDir(out_dir, StudyMethod::kSubset), options,
+                          result);
   const LimitStateBatch g = [&state](const std::vector<Eigen::VectorXd>& u, std::vector<double>& v) { state(u, v); };
+  LandingLimitState importance(study, StudyMethod::kImportance, samples, MethodDir(out_dir, StudyMethod::kImportance),
+                               options, result);
+  const LimitStateBatch gi = [&importance](const std::vector<Eigen::VectorXd>& u, std::vector<double>& v) {
+    importance(u, v);
+  };
   try {
     SubsetOptions so;
     so.samples_per_level = samples;
@@ -231,21 +237,21 @@ RareEventStudyResult RunRareEventStudy(const Study& study, StudyMethod method, i
     result.estimate = *result.subset;
     if (method == StudyMethod::kImportance && result.subset->design_point.size() > 0) {
       if (say) *say << "stability " << study.plan.name << ": importance sampling, " << samples << " landings\n";
-      const DesignPointRefinement refined = RefineDesignPoint(g, result.subset->design_point, kDesignPointRounds);
+      const DesignPointRefinement refined = RefineDesignPoint(gi, result.subset->design_point, kDesignPointRounds);
       ImportanceOptions io;
       io.samples = samples;
       io.seed = study.plan.seed;
       io.batch = samples;
       result.importance_centre = refined.point;
-      result.estimate = EstimateImportance(g, refined.point, io);
+      result.estimate = EstimateImportance(gi, refined.point, io);
     }
   } catch (const StoppedBySignal& stopped) {
     result.stop_signal = stopped.signal;
     return result;
   }
-  result.landings = static_cast<int64_t>(state.records().size());
-  result.design_points = DesignPoints(state);
-  result.first_level_plan = RareEventPlan(study, method, samples, 0,
+  result.landings = static_cast<int64_t>(state.records().size() + importance.records().size());
+  result.design_points = DesignPoints({{StudyMethod::kSubset, &state}, {StudyMethod::kImportance, &importance}});
+  result.first_level_plan = RareEventPlan(study, StudyMethod::kSubset, samples, 0,
                                           std::vector<Eigen::VectorXd>(state.points().begin(),
                                                                        state.points().begin() + samples));
   result.first_level_plan.samples = samples;
@@ -296,7 +302,11 @@ nlohmann::json RareEventJson(const Study& study, const RareEventStudyResult& r) 
   for (const RareEventDesignPoint& p : r.design_points) {
     nlohmann::json u = nlohmann::json::array();
     for (Eigen::Index k = 0; k < p.u.size(); ++k) u.push_back(p.u[k]);
-    points.push_back({{"drop_id", p.drop_id}, {"beta", p.beta}, {"u", u}, {"conditions", StudyVariablesJson(study, p.u)}});
+    points.push_back({{"drop_id", p.drop_id},
+                      {"run", p.run},
+                      {"beta", p.beta},
+                      {"u", u},
+                      {"conditions", StudyVariablesJson(study, p.u)}});
   }
   j["design_points"] = points;
   j["design_points_meaning"] =

@@ -65,7 +65,8 @@ double LimitStateOfLanding(const sweep::DropRecord& r);
 struct RareEventDesignPoint {
   Eigen::VectorXd u;
   double beta = 0.0;  // |u|: the reliability index of the point
-  std::string drop_id;  // the landing in DIR/<method>/ (empty for a refined point run once)
+  std::string drop_id;  // the landing in DIR/<run>/
+  std::string run;      // "subset" or "importance": the pass, and its folder, that ran it
 };
 
 struct RareEventStudyResult {
@@ -86,8 +87,10 @@ struct RareEventStudyResult {
   int64_t computed = 0, already_done = 0;
 };
 
-// Runs the estimator on the study's landings into DIR/<method>/ (`options`' threads, progress and
-// stop flag; a shard or an index list in them is ignored). `say`, when given, gets a line per pass.
+// Runs the estimator on the study's landings (`options`' threads, progress and stop flag; a shard or
+// an index list in them is ignored). Both methods run the subset pass into DIR/subset/ (the same
+// landings, so one method's run resumes the other's); importance sampling then refines the design
+// point and runs its sample into DIR/importance/. `say`, when given, gets a line per pass.
 RareEventStudyResult RunRareEventStudy(const Study& study, StudyMethod method, int64_t samples,
                                        const std::string& out_dir, const sweep::SweepRunOptions& options,
                                        std::ostream* say = nullptr);

@@ -171,5 +171,6 @@ def test_stability_subset_method_from_python_is_the_cli_run(tmp_path):
     assert result.summary["rare_event"]["design_points"] == cli["rare_event"]["design_points"]
     assert result.summary["rare_event"]["landings_spent"] == cli["rare_event"]["landings_spent"] > 10
     assert len(result.landings) == cli["rare_event"]["landings_spent"]  # every level's, from py/subset/
+    assert set(result.landings["run"]) == {"subset"}
     with pytest.raises(ValueError, match="method: "):
         touchdown.stability(study, tmp_path / "bad", method="subsets")

@@ -227,7 +227,8 @@ class StabilityStudy:
     percentiles: object    # percentiles.csv: metric, unit, landings, p50, p95, p99, max
     tip_over_map: object   # tip_over_map.csv: per map cell, ranges, landings, tip-overs, probability (None: no map)
     landings: object       # results.sqlite's drops (read_sweep): one row per landing (a rare-event
-                           # run's: every landing it spent, from DIR/<method>/results.sqlite)
+                           # run's: every landing it spent, from DIR/subset/ and, for importance,
+                           # DIR/importance/, with a `run` column naming the folder)
 
 
 def read_stability(directory):
@@ -243,11 +244,17 @@ def read_stability(directory):
     except (json.JSONDecodeError, UnicodeDecodeError) as e:
         raise ValueError(f"{summary_json}: not valid JSON: {e}") from None
     map_csv = os.path.join(directory, "tip_over_map.csv")  # only for a study with a `map`
-    # A rare-event run (summary "method": subset or importance) keeps its landings, every level's,
-    # in DIR/<method>/results.sqlite.
+    # A rare-event run (summary "method": subset or importance) keeps its subset pass, every
+    # level's landings, in DIR/subset/results.sqlite; importance sampling its own pass (the design
+    # point's refinement and its sample) in DIR/importance/results.sqlite.
     method = summary.get("method", "monte_carlo")
-    landings_dir = directory if method == "monte_carlo" else os.path.join(directory, method)
+    if method == "monte_carlo":
+        landings = read_sweep(directory)
+    else:
+        runs = ["subset"] + (["importance"] if method == "importance" else [])
+        parts = [read_sweep(os.path.join(directory, run)).assign(run=run) for run in runs]
+        landings = _pandas().concat(parts, ignore_index=True)
     return StabilityStudy(summary=summary,
                           percentiles=_read_csv(os.path.join(directory, "percentiles.csv")),
                           tip_over_map=_read_csv(map_csv) if os.path.isfile(map_csv) else None,
-                          landings=read_sweep(landings_dir))
+                          landings=landings)

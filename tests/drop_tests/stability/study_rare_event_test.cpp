@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 
 #include "drop_tests/stability/study.h"
@@ -119,6 +120,33 @@ TEST_F(RareEventStudy, SubsetIsBitIdenticalOnOneThreadAndTwoAndResumes) {
   EXPECT_LT(one.estimate.probability, 0.1);  // more than one level: below p0
   EXPECT_LE(one.estimate.interval.low, one.estimate.probability);
   EXPECT_GE(one.estimate.interval.high, one.estimate.probability);
+}
+
+// Importance sampling's first pass is the subset run: in a folder the subset method filled it runs
+// only its own landings (the design point's refinement, 1 + 7 x 4, and its sample, 10) into
+// DIR/importance/.
+TEST_F(RareEventStudy, ImportanceReusesTheSubsetRunsLandings) {
+  const Study study = Load("random: {samples: 10, seed: 5, slope_deg: {uniform: [0, 20]},\n"
+                           "         horizontal_speed_m_s: {uniform: [0, 1.5]}}\n");
+  sweep::SweepRunOptions options;
+  options.progress = sweep::ProgressMode::kNone;
+  options.threads = 2;
+  const RareEventStudyResult one = RunRareEventStudy(study, StudyMethod::kSubset, 10, Path("one"), options);
+  const RareEventStudyResult importance = RunRareEventStudy(study, StudyMethod::kImportance, 10, Path("one"), options);
+  ASSERT_EQ(importance.stop_signal, 0);
+  EXPECT_EQ(importance.already_done, one.landings);
+  EXPECT_EQ(importance.computed, 1 + 7 * kDesignPointRounds + 10);
+  EXPECT_EQ(importance.landings, one.landings + importance.computed);
+  ASSERT_TRUE(importance.subset.has_value());
+  EXPECT_EQ(std::memcmp(&importance.subset->probability, &one.estimate.probability, sizeof(double)), 0);
+  ASSERT_TRUE(importance.importance_centre.has_value());
+  ASSERT_FALSE(importance.design_points.empty());
+  for (size_t k = 0; k < importance.design_points.size(); ++k) {
+    const RareEventDesignPoint& d = importance.design_points[k];
+    EXPECT_TRUE(d.run == "subset" || d.run == "importance") << d.run;
+    if (k > 0) EXPECT_LE(importance.design_points[k - 1].beta, d.beta);
+  }
+  EXPECT_TRUE(std::filesystem::exists(sweep::ResultsDbPath(Path("one") + "/importance")));
 }
 
 }  // namespace

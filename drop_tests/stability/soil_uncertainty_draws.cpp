@@ -1,0 +1,84 @@
+// Each landing's soil parameters, drawn from the calibrations' joint normals by the counter-based
+// streams, and what the plan's digest holds of them (soil_uncertainty.h).
+#include "drop_tests/stability/soil_uncertainty.h"
+
+#include <nlohmann/json.hpp>
+
+#include "drop_tests/io/dataset_csv.h"
+#include "drop_tests/stability/rare_event.h"
+#include "drop_tests/sweep/sweep_spec.h"
+#include "rft/physical_limits.h"
+#include "rft/units.h"
+
+namespace touchdown::stability {
+
+namespace {
+bool InsideLimits(const std::vector<double>& x, const std::vector<size_t>& which) {
+  for (const size_t k : which) {
+    const limits::Range& r = limits::kZeta_N_cm3;
+    if (!(r.low_open ? x[k] > r.low : x[k] >= r.low) || !(x[k] <= r.high)) return false;
+  }
+  return true;
+}
+}  // namespace
+
+std::vector<double> DrawSoilParameters(const SoilUncertainty& u, int64_t index) {
+  std::vector<double> x(u.parameters.size());
+  for (const CalibrationGroup& g : u.groups) {
+    const Eigen::Index n = Eigen::Index(g.parameters.size());
+    bool accepted = false;
+    for (int attempt = 0; attempt < kMaxDrawAttempts && !accepted; ++attempt) {
+      Eigen::VectorXd z(n), mean(n);
+      for (Eigen::Index a = 0; a < n; ++a) {
+        const uint64_t stream = kSoilDrawStream + uint64_t(attempt) * kSoilAttemptStride + g.parameters[size_t(a)];
+        z(a) = StandardNormal(u.seed, uint64_t(index), stream);
+        mean(a) = u.parameters[g.parameters[size_t(a)]].mean;
+      }
+      const Eigen::VectorXd v = mean + g.lower * z;
+      for (Eigen::Index a = 0; a < n; ++a) x[g.parameters[size_t(a)]] = v(a);
+      accepted = InsideLimits(x, g.parameters);
+    }
+    if (!accepted)
+      for (const size_t k : g.parameters) x[k] = u.parameters[k].mean;
+  }
+  return x;
+}
+
+std::map<std::string, model::SoilOverride> SoilOverrides(const SoilUncertainty& u, const std::vector<double>& drawn) {
+  std::map<std::string, model::SoilOverride> out;
+  for (size_t k = 0; k < u.parameters.size(); ++k) {
+    model::SoilOverride& o = out[u.parameters[k].soil];
+    o.zeta_N_m3 = units::ZetaFromN_cm3(drawn[k]);
+    o.reference_gravity_m_s2 = u.parameters[k].reference_gravity_m_s2;
+  }
+  return out;
+}
+
+std::string SoilUncertaintyDigestText(const SoilUncertainty& u) {
+  std::string s = "soil_uncertainty:";
+  for (const CalibrationGroup& g : u.groups) {
+    s += "[";
+    for (const size_t k : g.parameters) {
+      const UncertainParameter& p = u.parameters[k];
+      s += p.soil + "=" + io::FormatNumber(p.mean) + "@" + io::FormatNumber(p.reference_gravity_m_s2) + ";";
+    }
+    for (Eigen::Index a = 0; a < g.covariance.rows(); ++a)
+      for (Eigen::Index b = 0; b < g.covariance.cols(); ++b) s += io::FormatNumber(g.covariance(a, b)) + ",";
+    s += "]";
+  }
+  return s;
+}
+
+void AttachSoilUncertainty(sweep::SweepPlan& plan, const SoilUncertainty& u) {
+  plan.soil_overrides_at = [u](int64_t index) { return SoilOverrides(u, DrawSoilParameters(u, index)); };
+  plan.variant += std::string(plan.variant.empty() ? "" : ";") + SoilUncertaintyDigestText(u);
+}
+
+nlohmann::json DrawnParametersJson(const SoilUncertainty& u, int64_t index) {
+  const std::vector<double> x = DrawSoilParameters(u, index);
+  nlohmann::json j = nlohmann::json::object();
+  for (size_t k = 0; k < x.size(); ++k) j[u.parameters[k].column] = x[k];
+  return j;
+}
+
+}  // namespace touchdown::stability
