@@ -89,7 +89,7 @@ inline constexpr double kSynthStrokeBoundS = 0.1;  // an allowance for the strok
 SynthSpec LoadSynthSpec(const std::string& path);
 // Builds the dataset in memory (traces included); drop ids like flat_fjs1_lp_air_v1.00_t0.
 Dataset Synthesize(const SynthSpec& spec);
-// Writes the dataset (issue-5 format) plus README.md, synthetic.yaml and synthetic_truth.yaml,
+// Writes the dataset (the measured-drop format, docs/guide.md "Datasets") plus README.md, synthetic.yaml and synthetic_truth.yaml,
 // all through a staged directory.
 void WriteSyntheticDataset(const SynthSpec& spec, const Dataset& dataset, const io::OutputTarget& out);
 // `touchdown synth SPEC --out DIR` as one call (the command and touchdown.synth): checks DIR, loads
