@@ -1,6 +1,9 @@
 // Sweep throughput of axisymmetric single-pad drops with summaries only (traces: none), written
 // to SQLite as `touchdown sweep` does. Target: >= 2,000 drops/s on both cores.
 //   BM_Sweep/threads:1, BM_Sweep/threads:2   in-process RunSweep (items_per_second = drops/s)
+//   BM_SweepShippedVsQuasiStatic/shipped:1, /shipped:0   the same plan on 2 threads on the soils
+//                                            as shipped and on their quasi-static twins (target:
+//                                            the shipped default within 1.3x of quasi-static)
 //   BM_SweepMpirun/ranks:2                   `mpirun -np 2 touchdown sweep --threads 1`, whole
 //                                            process wall time (MPI start-up included)
 //   BM_SweepStartPeakRss/drops_log10:N       `touchdown sweep` of a 10^N-drop plan: start it, let
@@ -69,6 +72,59 @@ void BM_Sweep(benchmark::State& state) {
   state.counters["drops_per_s"] = benchmark::Counter(static_cast<double>(kDrops), benchmark::Counter::kIsIterationInvariantRate);
 }
 BENCHMARK(BM_Sweep)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
+
+// The same 6,000 drops on the soils as shipped (Li 2013 with dynamic RFT's inertial term) and on
+// their quasi-static twins (copies of the soil files with `dynamic_term: false`, named *_qs): the
+// cost of the shipped default's term in a rig sweep. Arg 1: as shipped; 0: quasi-static.
+std::string QuasiStaticTwin(const std::string& soil) {
+  const fs::path shipped = fs::path(TOUCHDOWN_SOURCE_DIR) / "data" / "soils" / (soil + ".yaml");
+  std::ifstream in(shipped);
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string yaml = text.str();
+  for (const auto& [from, to] : {std::pair<std::string, std::string>{"name: " + soil + "\n", "name: " + soil + "_qs\n"},
+                                 {"dynamic_term: true\n", "dynamic_term: false\n"}}) {
+    const size_t at = yaml.find(from);
+    if (at == std::string::npos) return "";  // the shipped file changed: the benchmark says so below
+    yaml.replace(at, from.size(), to);
+  }
+  const fs::path twin = BenchDir() / (soil + "_qs.yaml");
+  std::ofstream(twin) << yaml;
+  return twin.string();
+}
+
+void BM_SweepShippedVsQuasiStatic(benchmark::State& state) {
+  const bool shipped = state.range(0) == 1;
+  std::string soils = "fjs1_lp, fjs1_cp";
+  if (!shipped) {
+    const std::string lp = QuasiStaticTwin("fjs1_lp"), cp = QuasiStaticTwin("fjs1_cp");
+    if (lp.empty() || cp.empty()) {
+      state.SkipWithError("the shipped soil files no longer hold `name:` and `dynamic_term: true` lines");
+      return;
+    }
+    soils = lp + ", " + cp;
+  }
+  const fs::path file = BenchDir() / (shipped ? "sweep_shipped.yaml" : "sweep_qs.yaml");
+  std::ofstream(file) << "schema_version: 1\ntype: sweep\nname: bench\ntraces: none\n"
+                         "grid: {pad: [flat, c4, curved]}\n"
+                         "random: {samples: " << kDrops / 3 << ", seed: 1, "
+                         "soil: {choice: [" << soils << "]}, impact_speed_m_s: {uniform: [0.3, 2.0]}}\n";
+  const SweepPlan plan = LoadSweepPlan(file.string());
+  SweepRunOptions options;
+  options.threads = 2;
+  options.progress = ProgressMode::kNone;
+  const fs::path out = BenchDir() / (shipped ? "out_shipped" : "out_qs");
+  for (auto _ : state) {
+    state.PauseTiming();
+    fs::remove_all(out);
+    state.ResumeTiming();
+    const SweepRunSummary s = RunSweep(plan, out.string(), options);
+    if (s.computed != kDrops || s.failed != 0) state.SkipWithError("sweep did not run every drop");
+  }
+  state.SetItemsProcessed(state.iterations() * kDrops);
+  state.counters["drops_per_s"] = benchmark::Counter(static_cast<double>(kDrops), benchmark::Counter::kIsIterationInvariantRate);
+}
+BENCHMARK(BM_SweepShippedVsQuasiStatic)->ArgName("shipped")->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
 
 void BM_SweepMpirun(benchmark::State& state) {
   if (std::system("command -v mpirun >/dev/null 2>&1") != 0) {
