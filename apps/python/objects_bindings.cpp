@@ -16,7 +16,7 @@
 
 #include "drop_tests/io/catalog.h"
 #include "drop_tests/io/yaml_fields.h"
-#include "drop_tests/scenario/lander_scenario.h"
+#include "drop_tests/scenario/lander_scenario_file.h"
 
 namespace touchdown::python {
 namespace {

@@ -3,7 +3,7 @@
 // where the leg has one; on a rigid leg (a massless link) the soil's force on the pad along the
 // leg's axis, which is what the link carries. One definition for the study's peak leg load
 // (sweep) and the lander's load plot.
-#include "drop_tests/scenario/lander_scenario.h"
+#include "drop_tests/scenario/lander_scenario_types.h"
 
 namespace touchdown::scenario {
 

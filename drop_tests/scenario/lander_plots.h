@@ -10,7 +10,7 @@
 // (plot_decimation.h). The gnuplot script stays in plots/; a plotting failure throws.
 #include <string>
 
-#include "drop_tests/scenario/lander_scenario.h"
+#include "drop_tests/scenario/lander_scenario_types.h"
 
 namespace touchdown::scenario {
 

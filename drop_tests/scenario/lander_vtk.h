@@ -7,7 +7,7 @@
 // it lists the previous file) and the soil's surface with its patches (soil.vtp).
 #include <string>
 
-#include "drop_tests/scenario/lander_scenario.h"
+#include "drop_tests/scenario/lander_scenario_types.h"
 
 namespace touchdown::scenario {
 

@@ -9,6 +9,8 @@
 
 #include "drop_tests/io/dataset_csv.h"
 #include "drop_tests/io/json_number.h"
+#include "drop_tests/scenario/lander_scenario_file.h"
+#include "drop_tests/scenario/lander_setup.h"
 #include "lander/multibody/static_stability.h"
 #include "rft/units.h"
 

@@ -28,7 +28,7 @@
 // model's). Each parameter is set in at most one block.
 //
 // A lander sweep names a lander scenario instead of pads (data/scenarios/lander_case_A.yaml style,
-// drop_tests/scenario/lander_scenario.h) and varies some of its parameters; each drop is a whole lander run:
+// drop_tests/scenario/lander_scenario_types.h) and varies some of its parameters; each drop is a whole lander run:
 //
 //   lander: {scenario: lander_case_A}   # a name in data/scenarios or a path (relative: to this file)
 //   traces: none                        # lander sweeps store summaries only (the default for them)
@@ -95,7 +95,7 @@
 #include <vector>
 
 #include "drop_tests/io/catalog.h"
-#include "drop_tests/scenario/lander_scenario.h"
+#include "drop_tests/scenario/lander_scenario_types.h"
 #include "drop_tests/model/model_file.h"
 #include "lander/pad/rig_drop.h"
 #include "rft/gravity_constants.h"

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "drop_tests/io/work_pool.h"
+#include "drop_tests/scenario/lander_setup.h"
 #include "rft/units.h"
 
 namespace touchdown::targets {

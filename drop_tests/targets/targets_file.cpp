@@ -9,6 +9,7 @@
 
 #include "drop_tests/io/yaml_fields.h"
 #include "drop_tests/scenario/campaign.h"
+#include "drop_tests/scenario/lander_scenario_file.h"
 #include "drop_tests/targets/object_edit.h"
 #include "rft/gravity_constants.h"
 #include "rft/input_error.h"

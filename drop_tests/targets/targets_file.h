@@ -25,7 +25,7 @@
 #include <vector>
 
 #include "drop_tests/drop/pad_drop.h"
-#include "drop_tests/scenario/lander_scenario.h"
+#include "drop_tests/scenario/lander_scenario_types.h"
 #include "rft/gravity_constants.h"
 
 namespace touchdown::targets {

@@ -15,7 +15,8 @@
 
 #include "drop_tests/dataset/compare.h"
 #include "drop_tests/gap/diagnose.h"
-#include "drop_tests/scenario/lander_scenario.h"
+#include "drop_tests/scenario/lander_scenario_file.h"
+#include "drop_tests/scenario/lander_setup.h"
 #include "drop_tests/model/model_file.h"
 #include "drop_tests/drop/pad_drop.h"
 #include "drop_tests/dataset/sensor_sampling.h"

@@ -1,6 +1,7 @@
 // Fuzz target: lander scenario YAML, loaded and turned into the model the simulation would run
 // (lander specs, pads and soils resolved from data/). Nothing is integrated.
-#include "drop_tests/scenario/lander_scenario.h"
+#include "drop_tests/scenario/lander_scenario_file.h"
+#include "drop_tests/scenario/lander_setup.h"
 #include "rft/input_error.h"
 #include "tests/fuzz/fuzz_input_file.h"
 

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <numbers>
 
+#include "drop_tests/scenario/lander_outputs.h"
 #include "lander/pad/rig_drop.h"
 #include "rft/contact_wrench.h"
 #include "rft/input_error.h"

@@ -11,7 +11,8 @@
 
 #include "drop_tests/io/catalog.h"
 #include "drop_tests/io/yaml_fields.h"
-#include "drop_tests/scenario/lander_scenario.h"
+#include "drop_tests/scenario/lander_scenario_file.h"
+#include "drop_tests/scenario/lander_setup.h"
 #include "lander/integ/cvode_integrator.h"
 #include "rft/input_error.h"
 #include "rft/physical_limits.h"

@@ -7,7 +7,8 @@
 // speed, or after it has been faster than the capture speed (lander_hybrid.cpp, capture_refused_).
 #include <gtest/gtest.h>
 
-#include "drop_tests/scenario/lander_scenario.h"
+#include "drop_tests/scenario/lander_scenario_file.h"
+#include "drop_tests/scenario/lander_setup.h"
 #include "tests/scratch_dir_test.h"
 
 namespace touchdown::scenario {

@@ -17,7 +17,8 @@
 #include <optional>
 
 #include "drop_tests/scenario/lander_leg_load.h"
-#include "drop_tests/scenario/lander_scenario.h"
+#include "drop_tests/scenario/lander_scenario_file.h"
+#include "drop_tests/scenario/lander_setup.h"
 #include "tests/drop_tests/scenario/lander_test_support.h"
 
 namespace touchdown::scenario {

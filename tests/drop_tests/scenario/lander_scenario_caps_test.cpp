@@ -9,7 +9,7 @@
 #include <fstream>
 #include <string>
 
-#include "drop_tests/scenario/lander_scenario.h"
+#include "drop_tests/scenario/lander_scenario_file.h"
 #include "rft/input_error.h"
 
 namespace touchdown::scenario {

@@ -11,7 +11,9 @@
 #include <optional>
 
 #include "drop_tests/io/catalog.h"
-#include "drop_tests/scenario/lander_scenario.h"
+#include "drop_tests/scenario/lander_outputs.h"
+#include "drop_tests/scenario/lander_scenario_file.h"
+#include "drop_tests/scenario/lander_setup.h"
 #include "rft/input_error.h"
 #include "tests/round_trip.h"
 

@@ -10,7 +10,8 @@
 #include <cmath>
 #include <string>
 
-#include "drop_tests/scenario/lander_scenario.h"
+#include "drop_tests/scenario/lander_scenario_file.h"
+#include "drop_tests/scenario/lander_setup.h"
 #include "drop_tests/io/catalog.h"
 #include "rft/input_error.h"
 #include "tests/scratch_dir_test.h"

@@ -5,7 +5,7 @@
 // resolution, so the mesh size cancels.
 #include <string>
 
-#include "drop_tests/scenario/lander_scenario.h"
+#include "drop_tests/scenario/lander_scenario_file.h"
 #include "footpad_geom/pad_body_builder.h"
 #include "footpad_geom/revolve.h"
 

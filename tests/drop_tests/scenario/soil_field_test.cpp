@@ -8,7 +8,7 @@
 #include <cmath>
 #include <fstream>
 
-#include "drop_tests/scenario/lander_scenario.h"
+#include "drop_tests/scenario/lander_setup.h"
 #include "rft/soil_map.h"
 #include "rft/input_error.h"
 #include "tests/drop_tests/scenario/lander_test_support.h"

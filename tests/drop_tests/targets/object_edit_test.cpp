@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "drop_tests/io/catalog.h"
-#include "drop_tests/scenario/lander_scenario.h"
+#include "drop_tests/scenario/lander_scenario_file.h"
 #include "tests/scratch_dir_test.h"
 
 namespace touchdown::targets {
