@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <ostream>
 #include <sstream>
+#include <stdexcept>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -15,6 +17,7 @@
 #include "drop_tests/io/plot_decimation.h"
 #include "drop_tests/io/plot_runner.h"
 #include "drop_tests/scenario/lander_leg_load.h"
+#include "drop_tests/scenario/lander_trace_columns.h"
 #include "rft/units.h"
 
 namespace touchdown::scenario {
@@ -29,16 +32,39 @@ constexpr int kLegs = lander::kNumLegs;
 constexpr size_t kColumns = 4 + 3 * kLegs + 1;
 constexpr int kDepthColumn = 5, kForceColumn = 5 + kLegs, kLegColumn = 5 + 2 * kLegs, kAccelColumn = 5 + 3 * kLegs;
 
+// A plotted column: a column of trace.csv (LanderTraceColumns, the one definition of the trace) in
+// the figure's unit, or a leg's axial force, which is no trace column (it needs the lander's
+// geometry, lander_leg_load.h).
+struct PlottedColumn {
+  const LanderTraceColumn* trace = nullptr;
+  double scale = 1.0;  // trace unit -> figure unit
+  int leg = -1;        // >= 0: that leg's axial force
+};
+
+const LanderTraceColumn* TraceColumn(const std::string& name) {
+  for (const LanderTraceColumn& c : LanderTraceColumns())
+    if (c.name == name) return &c;
+  throw std::logic_error("lander plots: no trace column '" + name + "'");
+}
+
+const std::vector<PlottedColumn>& PlottedColumns() {
+  static const std::vector<PlottedColumn> columns = [] {
+    std::vector<PlottedColumn> c = {
+        {TraceColumn("t_s"), 1e3}, {TraceColumn("roll_deg")}, {TraceColumn("pitch_deg")}, {TraceColumn("tilt_deg")}};
+    for (int i = 1; i <= kLegs; ++i) c.push_back({TraceColumn("depth" + std::to_string(i) + "_m"), 1e3});
+    for (int i = 1; i <= kLegs; ++i) c.push_back({TraceColumn("force" + std::to_string(i) + "_N")});
+    for (int i = 0; i < kLegs; ++i) c.push_back({nullptr, 1.0, i});
+    c.push_back({TraceColumn("az_m_s2")});
+    if (c.size() != kColumns) throw std::logic_error("lander plots: the column list and kColumns disagree");
+    return c;
+  }();
+  return columns;
+}
+
 double RawPlottedValue(const LanderSpec& lander, const lander::LanderSample& s, size_t column) {
-  if (column == 0) return s.t_s * 1e3;
-  if (column == 1) return s.attitude.roll_rad / kDeg;
-  if (column == 2) return s.attitude.pitch_rad / kDeg;
-  if (column == 3) return s.attitude.tilt_rad / kDeg;
-  if (column == kColumns - 1) return s.a_WB_W.z();
-  const size_t k = column - 4, leg = k % kLegs;
-  if (k < kLegs) return s.pad_depth_m[leg] * 1e3;
-  if (k < 2 * kLegs) return s.pad_force_W[leg].norm();
-  return LegAxialForce(lander, s, static_cast<int>(leg));
+  const PlottedColumn& c = PlottedColumns()[column];
+  if (c.leg >= 0) return LegAxialForce(lander, s, c.leg);
+  return c.scale == 1.0 ? c.trace->value(s) : c.trace->value(s) * c.scale;
 }
 
 // Values within rounding of zero (1e-9 of the plotted unit: a body at rest shows a_z ~ 4e-14)
@@ -46,7 +72,7 @@ double RawPlottedValue(const LanderSpec& lander, const lander::LanderSample& s, 
 double Snap(double v) { return std::abs(v) < 1e-9 ? 0.0 : v; }
 
 double PlottedValue(const LanderSpec& lander, const lander::LanderSample& s, size_t column) {
-  return column == 0 ? s.t_s * 1e3 : Snap(RawPlottedValue(lander, s, column));
+  return column == 0 ? RawPlottedValue(lander, s, column) : Snap(RawPlottedValue(lander, s, column));
 }
 
 struct Window {
