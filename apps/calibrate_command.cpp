@@ -58,7 +58,10 @@ void AddCalibrateCommand(CLI::App& app) {
   cmd->add_option("--targets", args->targets,
                   "a targets file: fit the free parameters it names to published scalar results instead "
                   "(docs/calibration_targets.md)");
-  cmd->add_option("--report", args->report, "--targets: also write the fit's report as JSON to this file");
+  cmd->add_option("--report", args->report,
+                  "also write the fit's report as JSON to this file: with --targets every parameter and target; "
+                  "for a dataset each soil's zeta with its covariance (what a stability study's soil_uncertainty "
+                  "draws from)");
   cmd->add_option("--threads", args->threads, "--targets: scenarios run side by side (default: every core)")
       ->check(CLI::Range(1, 1024));
   cmd->add_flag("--evaluate-only", args->evaluate_only,
@@ -88,9 +91,6 @@ void AddCalibrateCommand(CLI::App& app) {
       return CalibrateTargets(*args);
     }
     // The --targets options mean nothing to a dataset calibration: refused, not ignored.
-    if (!args->report.empty())
-      throw MakeInputError("command line", "--report", "writes the report of a --targets fit; give --targets FILE, "
-                                                       "or leave --report out (got '" + args->report + "')");
     if (args->evaluate_only)
       throw MakeInputError("command line", "--evaluate-only", "evaluates a --targets file; give --targets FILE");
     if (args->threads != 0)
@@ -101,11 +101,12 @@ void AddCalibrateCommand(CLI::App& app) {
     if (args->atmosphere != "all") r.atmosphere = rft::ParseAtmosphere(args->atmosphere);
     r.per_soil = args->per == "soil", r.confidence = args->confidence;
     r.soil = args->soil, r.pad = args->pad, r.shear_from = args->shear_from;
+    r.report = args->report;
     const dataset::CalibrationRun run = dataset::RunCalibration(r);
     if (run.bekker)
       PrintBekkerFit(*run.bekker, args->out);
     else
-      PrintZetaFits(run.fits, args->out);
+      PrintZetaFits(run.fits, args->report.empty() ? args->out : args->out + " and " + args->report);
   });
 }
 

@@ -328,7 +328,7 @@ py::dict Stability(const std::string& study_arg, const std::string& out, const s
 // touchdown calibrate: the fit (dataset::CalibrationJson) and the model or soil file `out`.
 std::string Calibrate(const std::string& measured, const std::string& out, const std::string& law,
                       const std::string& per, const std::string& atmosphere, double confidence, const std::string& soil,
-                      const std::string& pad, const std::string& shear_from) {
+                      const std::string& pad, const std::string& shear_from, const std::string& report) {
   const auto fail = [](const std::string& field, const std::string& allowed, const std::string& value) {
     throw MakeInputError("touchdown.calibrate", field, "must be " + allowed + ", got '" + value + "'");
   };
@@ -343,10 +343,11 @@ std::string Calibrate(const std::string& measured, const std::string& out, const
   }
   if (!(confidence >= limits::kMinConfidence && confidence <= limits::kMaxConfidence))
     throw MakeInputError("touchdown.calibrate", "confidence", "must be between 0.5 and 0.9999, got " + std::to_string(confidence));
-  r.soil = soil, r.pad = pad, r.shear_from = shear_from;
+  r.soil = soil, r.pad = pad, r.shear_from = shear_from, r.report = report;
   r.naming = {"touchdown.calibrate", false};
   py::gil_scoped_release unlocked;
-  return dataset::CalibrationJson(dataset::RunCalibration(r)).dump(2);
+  const dataset::CalibrationRun run = dataset::RunCalibration(r);
+  return (report.empty() ? dataset::CalibrationJson(run) : dataset::ZetaCalibrationReportJson(r, run)).dump(2);
 }
 
 // touchdown calibrate --targets: the report's content (targets::TargetsCalibrationReportJson), the model file in `out`.
@@ -517,7 +518,7 @@ PYBIND11_MODULE(_touchdown, m) {
   m.def("lander", &python::Lander, py::arg("scenario"), py::arg("model"), py::arg("out"), py::arg("trace"),
         py::arg("vtk"));
   m.def("calibrate", &python::Calibrate, py::arg("measured"), py::arg("out"), py::arg("law"), py::arg("per"),
-        py::arg("atmosphere"), py::arg("confidence"), py::arg("soil"), py::arg("pad"), py::arg("shear_from"));
+        py::arg("atmosphere"), py::arg("confidence"), py::arg("soil"), py::arg("pad"), py::arg("shear_from"), py::arg("report"));
   m.def("diagnose", &python::Diagnose, py::arg("measured"), py::arg("model"), py::arg("out"), py::arg("threads"),
         py::arg("pairs"), py::arg("law_candidate"), py::arg("base"), py::arg("sensor_sampling"),
         py::arg("progress") = py::none());

@@ -29,6 +29,10 @@ struct CalibrationRequest {
   // law rft
   bool per_soil = true;
   double confidence = 0.95;
+  // also the fit's report (JSON): the fits and each soil's zeta with its covariance, what a stability
+  // study's `soil_uncertainty` draws from; "" none. Needs per_soil (one zeta shared by several soils
+  // is no soil's own).
+  std::string report;
   // law bekker: only the drops of this soil and pad ("" all); the soil whose c, phi and K the
   // fitted soil takes ("" the fitted soil's own)
   std::string soil, pad, shear_from;
@@ -53,5 +57,11 @@ CalibrationRun RunCalibration(const CalibrationRequest& request);
 // drops, samples, pad_sizes, residual_rms_N, method}. Numbers are the fit's doubles (the command
 // prints them rounded).
 nlohmann::json CalibrationJson(const CalibrationRun& run);
+
+// The report `request.report` receives (law rft): CalibrationJson's fits, `covariance` in the schema
+// of `calibrate --targets --report` (parameters {name zeta_<soil>, kind soil_zeta, soil, unit
+// N/cm^3, value, reference_gravity_m_s2} and the matrix: each soil's zeta is fitted on its own
+// drops, so the matrix is diagonal, the squared standard errors) and the command that wrote it.
+nlohmann::json ZetaCalibrationReportJson(const CalibrationRequest& request, const CalibrationRun& run);
 
 }  // namespace touchdown::dataset

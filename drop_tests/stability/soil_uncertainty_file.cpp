@@ -66,7 +66,8 @@ CalibrationCovariance ReadCovariance(const nlohmann::json& report, const std::st
   if (!report.is_object() || !report.contains("covariance") || !report["covariance"].is_object())
     throw MakeInputError(file, "covariance",
                          "missing: a calibration report written by `touchdown calibrate --targets FILE --report R.json` "
-                         "holds the fitted parameters' covariance");
+                         "or `touchdown calibrate DATASET --out M.yaml --report R.json` holds the fitted parameters' "
+                         "covariance");
   const nlohmann::json& c = report["covariance"];
   if (!c.contains("parameters") || !c["parameters"].is_array() || !c.contains("matrix") || !c["matrix"].is_array())
     throw MakeInputError(file, "covariance", "must hold `parameters` and `matrix` lists");

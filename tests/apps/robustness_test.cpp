@@ -400,7 +400,7 @@ void AddMessageCases(std::vector<Case>& c) {
                                        "zeta_N_cm3, lower: 4, upper: 52, start: 4.2, source: s}]\n" +
                                        "targets: [{name: d, drop: {pad: flat, soil: fjs1_lp, speed_m_s: 1}, quantity: "
                                        "final_penetration_m, value: 0.05, uncertainty: 0.0001, use: fit, source: s}]\n"}}});
-  c.push_back({"CLI flag", "calibrate --report without --targets", "calibrate ds_u8 --out ds_u8.yaml --report r.json",
+  c.push_back({"CLI flag", "calibrate --report with one zeta for every soil", "calibrate ds_u8 --out ds_u8.yaml --per all --report r.json",
                Dataset("ds_u8", kDropsHeader + "d0,flat,fjs1_lp,vacuum,1.0,1.6,9.81,t.csv\n")});
   // Messages naming the field, the value and the valid range.
   const std::string lander_sweep = "lander: {scenario: lander_case_A}\n";

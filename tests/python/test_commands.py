@@ -41,6 +41,22 @@ def test_calibrate_equals_the_command_line(tmp_path):
         assert model["soils"][f["group"]]["zeta_N_cm3"] == float(f"{f['zeta_N_cm3']:.10g}")
 
 
+def test_calibrate_report_equals_the_command_line(tmp_path):
+    # The report of a dataset calibration: each soil's zeta with its variance, as a study draws it.
+    run_touchdown("calibrate", MEASURED, "--out", tmp_path / "cli.yaml", "--report", tmp_path / "cli.json")
+    report = touchdown.calibrate(MEASURED, tmp_path / "py.yaml", report=tmp_path / "py.json")
+    assert json.loads((tmp_path / "py.json").read_text().replace("py.", "X.")) == \
+        json.loads((tmp_path / "cli.json").read_text().replace("cli.", "X."))
+    assert report["command"] == json.loads((tmp_path / "py.json").read_text())["command"]
+    covariance = report["covariance"]
+    assert [p["soil"] for p in covariance["parameters"]] == [f["group"] for f in report["fits"]]
+    for k, f in enumerate(report["fits"]):
+        assert covariance["parameters"][k]["value"] == f["zeta_N_cm3"]
+        assert covariance["matrix"][k][k] == f["standard_error_N_cm3"] ** 2
+    with pytest.raises(ValueError, match="per soil"):
+        touchdown.calibrate(MEASURED, tmp_path / "all.yaml", per="all", report=tmp_path / "all.json")
+
+
 def test_calibrate_bekker_equals_the_command_line(tmp_path):
     args = ("--law", "bekker", "--soil", "fjs1_lp", "--atmosphere", "vacuum", "--shear-from", "fjs1_lp_bekker")
     printed = run_touchdown("calibrate", MEASURED, "--out", tmp_path / "soil.yaml", *args)

@@ -118,15 +118,19 @@ def compare(measured, out, *, simulated=None, model=None, sensor_sampling="perio
 
 
 def calibrate(measured, out, *, law="rft", per="soil", atmosphere="all", confidence=0.95, soil=None, pad=None,
-              shear_from=None):
+              shear_from=None, report=None):
     """`touchdown calibrate MEASURED --out OUT` (`--law --per --atmosphere --confidence --soil --pad
-    --shear-from`): fits the measured dataset's drops and writes OUT, a model file (law "rft": zeta
-    per soil, or one for all with per="all") or a Bekker soil file (law "bekker"). Returns the fit:
+    --shear-from --report`): fits the measured dataset's drops and writes OUT, a model file (law "rft":
+    zeta per soil, or one for all with per="all") or a Bekker soil file (law "bekker"). Returns the fit:
     {"law": "rft", "fits": [{group, soils, zeta_N_cm3, low_N_cm3, high_N_cm3, ...}]} or {"law":
-    "bekker", soils, n, k_c_kN_m_n1, k_phi_kN_m_n2, drops, samples, residual_rms_N, ...}."""
+    "bekker", soils, n, k_c_kN_m_n1, k_phi_kN_m_n2, drops, samples, residual_rms_N, ...}. With
+    `report` (law "rft", per="soil") also writes that JSON file and returns its content: the fits,
+    each soil's zeta [N/cm^3] with its covariance (what a stability study's soil_uncertainty draws
+    from) and the command."""
     return json.loads(_touchdown.calibrate(
         measured=_path_text(measured), out=_path_text(out), law=law, per=per, atmosphere=atmosphere,
-        confidence=confidence, soil=_path_text(soil), pad=_path_text(pad), shear_from=_path_text(shear_from)))
+        confidence=confidence, soil=_path_text(soil), pad=_path_text(pad), shear_from=_path_text(shear_from),
+        report=_path_text(report)))
 
 
 def calibrate_targets(targets, out, *, report=None, threads=0, evaluate_only=False, progress=True):

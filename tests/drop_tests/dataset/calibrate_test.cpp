@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 #include <random>
 #include <sys/wait.h>
@@ -175,6 +176,69 @@ TEST(CalibrateCli, WritesAModelThatDropAndCompareUse) {
   const nlohmann::json c = nlohmann::json::parse(in);
   EXPECT_NEAR(c["force_nrmse"].get<double>(), 0.02, 0.004);
   EXPECT_LT(c["final_penetration_rel_error"].get<double>(), 0.01);
+  fs::remove_all(dir);
+}
+
+// `calibrate --report R.json` on a dataset: each soil's zeta with its variance in the schema
+// `calibrate --targets --report` writes, so a stability study's soil_uncertainty draws from it (a
+// one-landing study of the coarse lander reads it back: mean and sigma as the fit reported them).
+TEST(CalibrateCli, ReportHoldsEachSoilsZetaAndVarianceForAStudyToDraw) {
+  const fs::path dir = fs::temp_directory_path() / ("touchdown_calibrate_report_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  WriteDataset(SyntheticDataset(0.02, 7), (dir / "measured").string());
+  auto run = [&](const std::string& args, int expected) {
+    const std::string cmd = std::string(TOUCHDOWN_BINARY) + " " + args + " >" + (dir / "out.txt").string() + " 2>" +
+                            (dir / "err.txt").string();
+    const int raw = std::system(cmd.c_str());
+    // Each stream read on its own: inserting an empty file's buffer fails the stream it goes into.
+    std::string text;
+    for (const char* name : {"out.txt", "err.txt"}) {
+      std::ifstream f(dir / name);
+      text += std::string(std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>());
+    }
+    EXPECT_TRUE(WIFEXITED(raw) && WEXITSTATUS(raw) == expected) << args << "\n" << text;
+    return text;
+  };
+  const std::string measured = (dir / "measured").string(), model = (dir / "model.yaml").string(),
+                    report = (dir / "report.json").string();
+  run("calibrate " + measured + " --out " + model + " --report " + report, 0);
+  std::ifstream in(report);
+  const nlohmann::json r = nlohmann::json::parse(in);
+  const nlohmann::json& fit = r["fits"][0];
+  ASSERT_EQ(r["covariance"]["parameters"].size(), 1u);
+  const nlohmann::json& p = r["covariance"]["parameters"][0];
+  EXPECT_EQ(p["soil"], "fjs1_lp");
+  EXPECT_EQ(p["kind"], "soil_zeta");
+  EXPECT_EQ(p["value"].get<double>(), fit["zeta_N_cm3"].get<double>());
+  const double se = fit["standard_error_N_cm3"].get<double>();
+  EXPECT_GT(se, 0.0);
+  EXPECT_EQ(r["covariance"]["matrix"][0][0].get<double>(), se * se);
+  // The model file holds zeta to 10 significant digits, the report the fit's double.
+  EXPECT_NEAR(LoadModelFile(model).soils.at("fjs1_lp").zeta_N_m3 / 1e6, fit["zeta_N_cm3"].get<double>(),
+              1e-9 * fit["zeta_N_cm3"].get<double>());
+  EXPECT_NE(r["command"].get<std::string>().find("--report " + report), std::string::npos);
+  // A rerun may replace its own report; a user's file, the model file itself and --per all are refused.
+  run("calibrate " + measured + " --out " + model + " --report " + report, 0);
+  std::ofstream(dir / "mine.json") << "{}\n";
+  EXPECT_NE(run("calibrate " + measured + " --out " + model + " --report " + (dir / "mine.json").string(), 2).find("mine.json"),
+            std::string::npos);
+  EXPECT_NE(run("calibrate " + measured + " --out " + model + " --report " + model, 2).find("--report"), std::string::npos);
+  EXPECT_NE(run("calibrate " + measured + " --out " + model + " --per all --report " + report, 2).find("--per soil"),
+            std::string::npos);
+  // The study draws fjs1_lp's zeta from it.
+  std::ofstream(dir / "study.yaml") << "schema_version: 1\ntype: stability\nname: drawn\nlander: {scenario: "
+                                    << TOUCHDOWN_SOURCE_DIR << "/data/studies/lab_coarse_lander_scenario.yaml}\n"
+                                    << "random: {samples: 1, seed: 1, slope_deg: {uniform: [0, 1]}}\n"
+                                    << "study: {recheck: none, joint_range_sensitivity: none, soil_uncertainty: "
+                                    << "{fjs1_lp: {calibration: report.json}}}\n";
+  run("stability " + (dir / "study.yaml").string() + " --out " + (dir / "study").string() + " --progress none", 0);
+  std::ifstream summary_in(dir / "study" / "summary.json");
+  const nlohmann::json summary = nlohmann::json::parse(summary_in);
+  const nlohmann::json& drawn = summary["soil_uncertainty"]["parameters"][0];
+  EXPECT_EQ(drawn["soil"], "fjs1_lp");
+  EXPECT_EQ(drawn["mean"].get<double>(), p["value"].get<double>());
+  EXPECT_NEAR(drawn["sigma"].get<double>(), se, 1e-15 * se);
   fs::remove_all(dir);
 }
 
