@@ -248,13 +248,12 @@ def read_stability(directory):
     # level's landings, in DIR/subset/results.sqlite; importance sampling its own pass (the design
     # point's refinement and its sample) in DIR/importance/results.sqlite.
     method = summary.get("method", "monte_carlo")
+    percentiles = _read_csv(os.path.join(directory, "percentiles.csv"))
+    tip_over_map = _read_csv(map_csv) if os.path.isfile(map_csv) else None
     if method == "monte_carlo":
         landings = read_sweep(directory)
     else:
         runs = ["subset"] + (["importance"] if method == "importance" else [])
         parts = [read_sweep(os.path.join(directory, run)).assign(run=run) for run in runs]
         landings = _pandas().concat(parts, ignore_index=True)
-    return StabilityStudy(summary=summary,
-                          percentiles=_read_csv(os.path.join(directory, "percentiles.csv")),
-                          tip_over_map=_read_csv(map_csv) if os.path.isfile(map_csv) else None,
-                          landings=landings)
+    return StabilityStudy(summary=summary, percentiles=percentiles, tip_over_map=tip_over_map, landings=landings)
