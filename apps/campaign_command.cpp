@@ -4,7 +4,7 @@
 
 #include "apps/command_help.h"
 #include "apps/commands.h"
-#include "drop_tests/io/output_path.h"
+#include "drop_tests/formats/output_path.h"
 #include "drop_tests/scenario/campaign.h"
 
 namespace touchdown::app {

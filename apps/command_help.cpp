@@ -10,8 +10,8 @@
 #include <utility>
 #include <vector>
 
-#include "drop_tests/io/catalog.h"
-#include "drop_tests/io/nearest_name.h"
+#include "drop_tests/catalog/catalog.h"
+#include "drop_tests/util/nearest_name.h"
 #include "rft/input_error.h"
 #include "rft/input_file.h"
 

@@ -5,7 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/commands.h"
-#include "drop_tests/io/output_path.h"
+#include "drop_tests/formats/output_path.h"
 #include "drop_tests/dataset/compare.h"
 #include "drop_tests/dataset/sensor_sampling.h"
 #include "rft/input_error.h"

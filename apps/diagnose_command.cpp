@@ -7,8 +7,8 @@
 
 #include "apps/commands.h"
 #include "drop_tests/dataset/sensor_sampling.h"
-#include "drop_tests/io/output_path.h"
-#include "drop_tests/io/work_pool.h"
+#include "drop_tests/formats/output_path.h"
+#include "drop_tests/util/work_pool.h"
 #include "drop_tests/gap/diagnose.h"
 #include "rft/physical_limits.h"
 

@@ -5,9 +5,9 @@
 #include "apps/commands.h"
 #include "drop_tests/drop/drop_request.h"
 #include "drop_tests/drop/drop_vtk.h"
-#include "drop_tests/io/catalog.h"
+#include "drop_tests/catalog/catalog.h"
 #include "rft/input_error.h"
-#include "drop_tests/io/output_path.h"
+#include "drop_tests/formats/output_path.h"
 
 namespace touchdown::app {
 

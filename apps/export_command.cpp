@@ -2,7 +2,7 @@
 #include <memory>
 
 #include "apps/commands.h"
-#include "drop_tests/io/output_path.h"
+#include "drop_tests/formats/output_path.h"
 #include "drop_tests/sweep/sweep_export.h"
 #include "rft/physical_limits.h"
 

@@ -6,7 +6,7 @@
 
 #include "apps/commands.h"
 #include "drop_tests/drop/force_request.h"
-#include "drop_tests/io/output_path.h"
+#include "drop_tests/formats/output_path.h"
 
 namespace touchdown::app {
 

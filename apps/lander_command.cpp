@@ -6,7 +6,7 @@
 
 #include "apps/command_help.h"
 #include "apps/commands.h"
-#include "drop_tests/io/output_path.h"
+#include "drop_tests/formats/output_path.h"
 #include "drop_tests/scenario/lander_outputs.h"
 #include "drop_tests/scenario/lander_scenario_file.h"
 #include "drop_tests/scenario/lander_setup.h"

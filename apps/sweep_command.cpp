@@ -6,7 +6,7 @@
 #include "apps/command_help.h"
 #include "apps/commands.h"
 #include "apps/sweep_run_flags.h"
-#include "drop_tests/io/output_path.h"
+#include "drop_tests/formats/output_path.h"
 #include "drop_tests/sweep/sweep.h"
 #include "drop_tests/sweep/sweep_mpi.h"
 #include "drop_tests/sweep/sweep_stop.h"

@@ -3,7 +3,7 @@
 #include <memory>
 
 #include "apps/commands.h"
-#include "drop_tests/io/output_path.h"
+#include "drop_tests/formats/output_path.h"
 #include "drop_tests/dataset/synth.h"
 
 namespace touchdown::app {

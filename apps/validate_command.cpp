@@ -2,8 +2,8 @@
 #include <memory>
 
 #include "apps/commands.h"
-#include "drop_tests/io/catalog.h"
-#include "drop_tests/io/output_path.h"
+#include "drop_tests/catalog/catalog.h"
+#include "drop_tests/formats/output_path.h"
 #include "drop_tests/validation/validate.h"
 
 namespace touchdown::app {

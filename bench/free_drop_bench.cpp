@@ -7,7 +7,7 @@
 
 #include <numbers>
 
-#include "drop_tests/io/catalog.h"
+#include "drop_tests/catalog/catalog.h"
 #include "lander/pad/free_drop.h"
 #include "footpad_geom/revolve.h"
 #include "rft/gravity_constants.h"

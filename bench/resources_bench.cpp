@@ -24,8 +24,8 @@
 #include <string>
 #include <vector>
 
-#include "drop_tests/io/catalog.h"
-#include "drop_tests/io/dataset_csv.h"
+#include "drop_tests/catalog/catalog.h"
+#include "drop_tests/formats/dataset_csv.h"
 #include "drop_tests/drop/pad_drop.h"
 
 namespace {

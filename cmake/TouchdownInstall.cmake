@@ -5,7 +5,7 @@ include(CMakePackageConfigHelpers)
 
 touchdown_installs_target(touchdown)
 install(TARGETS touchdown RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-# The executable finds it beside itself (drop_tests/io/catalog.cpp: DataDirectory).
+# The executable finds it beside itself (drop_tests/catalog/catalog.cpp: DataDirectory).
 install(DIRECTORY "${PROJECT_SOURCE_DIR}/data/" DESTINATION ${TOUCHDOWN_INSTALL_DATADIR})
 
 # Flags the installed libraries need in the programs that link them (this tree's own targets get

@@ -1,6 +1,6 @@
 # `cpack -G DEB` in the build directory (README, docs/install.md): touchdown_<version>_<arch>.deb
 # holding what `cmake --install` installs, under /usr: /usr/bin/touchdown, its data in
-# /usr/share/touchdown (found beside the executable, drop_tests/io/catalog.cpp: DataDirectory),
+# /usr/share/touchdown (found beside the executable, drop_tests/catalog/catalog.cpp: DataDirectory),
 # the Python package in /usr/lib/python3/dist-packages/touchdown (finding the same data beside
 # itself, apps/python/touchdown/__init__.py), and the module libraries with their headers and CMake
 # package (/usr/lib/cmake/touchdown). Every path in it is relative to the prefix, so the tree the
@@ -32,7 +32,7 @@ set(CPACK_DEBIAN_COMPRESSION_TYPE xz)
 # the package lists only the Depends below.
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 # What no library link says: the Python module's interpreter and the numpy its trace arrays are;
-# gnuplot, which draws every command's plots (drop_tests/io/plot_runner.cpp). pandas only for the
+# gnuplot, which draws every command's plots (drop_tests/formats/plot_runner.cpp). pandas only for the
 # readers (read_sweep, read_dataset, read_stability), imported when used.
 set(touchdown_python_depends "python3")
 if(TOUCHDOWN_PYTHON AND DEFINED Python_VERSION_MINOR)  # the module is built for one CPython version

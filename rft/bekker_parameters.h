@@ -1,6 +1,6 @@
 #pragma once
 // The parameters of a Bekker-Wong-Janosi soil (model data, SI inside; files state them in kN, kPa,
-// deg and mm, drop_tests/io/catalog.cpp). rft/bekker_law.h uses them.
+// deg and mm, drop_tests/catalog/catalog.cpp). rft/bekker_law.h uses them.
 namespace touchdown::rft {
 
 struct BekkerParameters {

@@ -102,7 +102,7 @@ inline constexpr double kMaxSynthSamples = 2e7;
 // A stability study: map bins per axis, and the landings a list (worst cases, ...) may name.
 inline constexpr int kMaxStudyMapBins = 200;
 inline constexpr int kMaxStudyListed = 100000;
-// Input files (drop_tests/io/yaml_fields.cpp): a count read into an int; a YAML tree's depth and
+// Input files (drop_tests/formats/yaml_fields.cpp): a count read into an int; a YAML tree's depth and
 // node count. yaml-cpp keeps an alias as a second reference to its anchor's node, so a walk visits
 // an aliased subtree once per reference: an alias inside its own anchor (`a: &a [*a]`) makes the
 // tree infinitely deep, and aliases of aliases multiply ("billion laughs": nine levels of ten

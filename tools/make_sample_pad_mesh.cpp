@@ -11,7 +11,7 @@
 #include <numbers>
 #include <string>
 
-#include "drop_tests/io/catalog.h"
+#include "drop_tests/catalog/catalog.h"
 #include "footpad_geom/mesh_io.h"
 
 int main(int argc, char** argv) {

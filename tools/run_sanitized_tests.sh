@@ -37,8 +37,8 @@ fi
 #   own that do run here (cli, stability, robustness, output and plot tests).
 # - OutputReplaceKill.*: each runs a command about 20 times and kills it at random moments to check
 #   that the old or the new output is left whole. A killed process reports nothing to a sanitizer;
-#   the writer's code (drop_tests/io/output_path.cpp) runs here through its unit tests
-#   (tests/drop_tests/io/output_path_test.cpp) and every command's outputs.
+#   the writer's code (drop_tests/formats/output_path.cpp) runs here through its unit tests
+#   (tests/drop_tests/formats/output_path_test.cpp) and every command's outputs.
 # - Determinism.* and StabilityCli.PatchFieldsPerLandingAreTheSameOnOneThreadAndOnTwo: the same
 #   drop, campaign, lander run, sweep or patchy-ground study again (twice, on 1 and 2 threads, in
 #   shards) to compare bytes; every one of those commands runs here in its own CLI tests, the

@@ -14,8 +14,8 @@
 #include <sstream>
 #include <string>
 
-#include "drop_tests/io/catalog.h"
-#include "drop_tests/io/yaml_fields.h"
+#include "drop_tests/catalog/catalog.h"
+#include "drop_tests/formats/yaml_fields.h"
 #include "drop_tests/scenario/lander_scenario_file.h"
 
 namespace touchdown::python {

@@ -9,8 +9,8 @@
 #include <set>
 
 #include "drop_tests/drop/drop_factory.h"
-#include "drop_tests/io/catalog.h"
-#include "drop_tests/io/student_t.h"
+#include "drop_tests/catalog/catalog.h"
+#include "drop_tests/util/student_t.h"
 #include "footpad_geom/axisymmetric_intrusion.h"
 #include "rft/contact_wrench.h"
 #include "rft/ground.h"

@@ -7,7 +7,7 @@
 #include <memory>
 
 #include "drop_tests/drop/drop_factory.h"
-#include "drop_tests/io/catalog.h"
+#include "drop_tests/catalog/catalog.h"
 #include "footpad_geom/axisymmetric_intrusion.h"
 #include "rft/input_error.h"
 

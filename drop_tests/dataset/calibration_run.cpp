@@ -5,9 +5,9 @@
 #include <nlohmann/json.hpp>
 #include <ostream>
 
-#include "drop_tests/io/catalog.h"
-#include "drop_tests/io/dataset_csv.h"
-#include "drop_tests/io/output_path.h"
+#include "drop_tests/catalog/catalog.h"
+#include "drop_tests/formats/dataset_csv.h"
+#include "drop_tests/formats/output_path.h"
 #include "rft/input_error.h"
 #include "rft/units.h"
 

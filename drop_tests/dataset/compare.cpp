@@ -8,15 +8,15 @@
 #include <map>
 #include <nlohmann/json.hpp>
 
-#include "drop_tests/io/json_number.h"
-#include "drop_tests/io/output_path.h"
+#include "drop_tests/formats/json_number.h"
+#include "drop_tests/formats/output_path.h"
 #include "drop_tests/dataset/calibrate.h"
 #include "drop_tests/dataset/sensor_sampling.h"
-#include "drop_tests/io/dataset_csv.h"
+#include "drop_tests/formats/dataset_csv.h"
 #include "drop_tests/drop/pad_drop.h"
-#include "drop_tests/io/plot_decimation.h"
-#include "drop_tests/io/figure_style.h"
-#include "drop_tests/io/plot_runner.h"
+#include "drop_tests/formats/plot_decimation.h"
+#include "drop_tests/formats/figure_style.h"
+#include "drop_tests/formats/plot_runner.h"
 #include "rft/input_error.h"
 #include "rft/units.h"
 

@@ -4,9 +4,9 @@
 #include <filesystem>
 #include <set>
 
-#include "drop_tests/io/output_path.h"
-#include "drop_tests/io/catalog.h"
-#include "drop_tests/io/dataset_csv.h"
+#include "drop_tests/formats/output_path.h"
+#include "drop_tests/catalog/catalog.h"
+#include "drop_tests/formats/dataset_csv.h"
 #include "rft/input_error.h"
 #include "rft/input_file.h"
 #include "rft/physical_limits.h"

@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 
-#include "drop_tests/io/output_path.h"
+#include "drop_tests/formats/output_path.h"
 #include "rft/atmosphere.h"
 
 namespace touchdown::dataset {
@@ -90,7 +90,7 @@ struct DatasetReadOptions {
 std::string DropIdProblem(const std::string& id);
 
 Dataset ReadDataset(const std::string& directory, const DatasetReadOptions& options = {});
-// Writes drops.csv and every trace as one whole output (drop_tests/io/output_path.h). Throws
+// Writes drops.csv and every trace as one whole output (drop_tests/formats/output_path.h). Throws
 // InputError on a drop that could not be read back (bad id, path, numbers).
 void WriteDataset(const Dataset& dataset, const io::OutputTarget& target);
 // The same, into `directory` of an output being written (e.g. a comparison's simulated/).

@@ -11,10 +11,10 @@
 #include <yaml-cpp/yaml.h>
 
 #include "drop_tests/drop/drop_factory.h"
-#include "drop_tests/io/output_path.h"
-#include "drop_tests/io/catalog.h"
-#include "drop_tests/io/dataset_csv.h"
-#include "drop_tests/io/yaml_fields.h"
+#include "drop_tests/formats/output_path.h"
+#include "drop_tests/catalog/catalog.h"
+#include "drop_tests/formats/dataset_csv.h"
+#include "drop_tests/formats/yaml_fields.h"
 #include "drop_tests/model/effects_yaml.h"
 #include "lander/integ/cvode_integrator.h"
 #include "lander/pad/effect_soil_response.h"

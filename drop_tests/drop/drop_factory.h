@@ -9,7 +9,7 @@
 #include <optional>
 #include <string>
 
-#include "drop_tests/io/catalog.h"
+#include "drop_tests/catalog/catalog.h"
 #include "drop_tests/model/effects.h"
 #include "footpad_geom/axisymmetric_intrusion.h"
 #include "rft/soil.h"

@@ -5,8 +5,8 @@
 #include <stdexcept>
 
 #include "drop_tests/drop/drop_factory.h"
-#include "drop_tests/io/vtk_pieces.h"
-#include "drop_tests/io/vtk_series.h"
+#include "drop_tests/formats/vtk_pieces.h"
+#include "drop_tests/formats/vtk_series.h"
 #include "rft/bekker_law.h"
 #include "rft/element_stresses.h"
 

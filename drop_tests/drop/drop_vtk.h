@@ -5,7 +5,7 @@
 // pressed in by the pad so far (crater_NNNNNN.vtp, io::CraterSurface) and the soil's surface
 // (soil.vtp).
 #include "drop_tests/drop/pad_drop.h"
-#include "drop_tests/io/output_path.h"
+#include "drop_tests/formats/output_path.h"
 
 namespace touchdown::drop {
 

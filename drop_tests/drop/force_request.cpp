@@ -5,10 +5,10 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "drop_tests/io/catalog.h"
+#include "drop_tests/catalog/catalog.h"
 #include "lander/pad/pad_pose.h"
-#include "drop_tests/io/vtk_pieces.h"
-#include "drop_tests/io/vtk_writer.h"
+#include "drop_tests/formats/vtk_pieces.h"
+#include "drop_tests/formats/vtk_writer.h"
 #include "rft/bekker_law.h"
 #include "rft/contact_wrench.h"
 #include "rft/element_stresses.h"

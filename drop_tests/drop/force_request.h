@@ -11,7 +11,7 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include "drop_tests/drop/drop_request.h"
-#include "drop_tests/io/output_path.h"
+#include "drop_tests/formats/output_path.h"
 #include "rft/gravity_constants.h"
 
 namespace touchdown::drop {

@@ -5,7 +5,7 @@
 #include <sstream>
 #include <nlohmann/json.hpp>
 
-#include "drop_tests/io/output_path.h"
+#include "drop_tests/formats/output_path.h"
 #include "drop_tests/drop/drop_factory.h"
 #include "drop_tests/drop/free_drop_output.h"
 #include "footpad_geom/axisymmetric_intrusion.h"

@@ -11,10 +11,10 @@
 
 #include <nlohmann/json_fwd.hpp>
 
-#include "drop_tests/io/catalog.h"
+#include "drop_tests/catalog/catalog.h"
 #include "drop_tests/model/effects.h"
 #include "lander/pad/free_drop.h"
-#include "drop_tests/io/output_path.h"
+#include "drop_tests/formats/output_path.h"
 #include "lander/pad/rig_drop.h"
 #include "rft/gravity_constants.h"
 

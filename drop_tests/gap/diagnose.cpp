@@ -11,7 +11,7 @@
 #include <sstream>
 
 #include "drop_tests/gap/diagnose_selection.h"
-#include "drop_tests/io/work_pool.h"
+#include "drop_tests/util/work_pool.h"
 #include "rft/input_error.h"
 
 namespace touchdown::gap {

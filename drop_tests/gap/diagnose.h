@@ -33,7 +33,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
-#include "drop_tests/io/progress.h"
+#include "drop_tests/util/progress.h"
 #include "drop_tests/dataset/compare.h"
 #include "drop_tests/gap/diagnose_fit.h"
 #include "drop_tests/gap/law_candidate.h"

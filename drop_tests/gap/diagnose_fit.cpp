@@ -10,8 +10,8 @@
 #include <Eigen/Dense>
 
 #include "drop_tests/drop/drop_factory.h"
-#include "drop_tests/io/student_t.h"
-#include "drop_tests/io/work_pool.h"
+#include "drop_tests/util/student_t.h"
+#include "drop_tests/util/work_pool.h"
 #include "lander/pad/effect_soil_response.h"
 #include "rft/input_error.h"
 #include "rft/stress_law_3d_factory.h"

@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 
-#include "drop_tests/io/catalog.h"
+#include "drop_tests/catalog/catalog.h"
 #include "drop_tests/dataset/dataset.h"
 #include "drop_tests/model/effects.h"
 #include "footpad_geom/axisymmetric_intrusion.h"

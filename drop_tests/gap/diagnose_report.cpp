@@ -14,12 +14,12 @@
 #include <yaml-cpp/yaml.h>
 
 #include "drop_tests/gap/diagnose.h"
-#include "drop_tests/io/dataset_csv.h"
-#include "drop_tests/io/json_number.h"
-#include "drop_tests/io/output_path.h"
-#include "drop_tests/io/plot_decimation.h"
-#include "drop_tests/io/figure_style.h"
-#include "drop_tests/io/plot_runner.h"
+#include "drop_tests/formats/dataset_csv.h"
+#include "drop_tests/formats/json_number.h"
+#include "drop_tests/formats/output_path.h"
+#include "drop_tests/formats/plot_decimation.h"
+#include "drop_tests/formats/figure_style.h"
+#include "drop_tests/formats/plot_runner.h"
 #include "rft/units.h"
 
 namespace touchdown::gap {

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "drop_tests/gap/diagnose.h"
-#include "drop_tests/io/progress.h"
+#include "drop_tests/util/progress.h"
 
 namespace touchdown::gap {
 

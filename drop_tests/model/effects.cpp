@@ -7,7 +7,7 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include "drop_tests/io/yaml_fields.h"
+#include "drop_tests/formats/yaml_fields.h"
 #include "rft/input_error.h"
 #include "rft/stress_law_3d_factory.h"
 

@@ -6,7 +6,7 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include "drop_tests/io/yaml_fields.h"
+#include "drop_tests/formats/yaml_fields.h"
 #include "drop_tests/model/effects.h"
 
 namespace touchdown::model {

@@ -3,13 +3,13 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
-#include "drop_tests/io/output_path.h"
-#include "drop_tests/io/dataset_csv.h"
-#include "drop_tests/io/field_table.h"
+#include "drop_tests/formats/output_path.h"
+#include "drop_tests/formats/dataset_csv.h"
+#include "drop_tests/formats/field_table.h"
 #include "drop_tests/model/effects.h"
 #include "drop_tests/model/effects_yaml.h"
-#include "drop_tests/io/paths_in_outputs.h"
-#include "drop_tests/io/yaml_fields.h"
+#include "drop_tests/catalog/paths_in_outputs.h"
+#include "drop_tests/formats/yaml_fields.h"
 #include "rft/input_error.h"
 #include "rft/units.h"
 

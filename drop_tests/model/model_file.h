@@ -36,7 +36,7 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include "drop_tests/model/effects.h"
-#include "drop_tests/io/output_path.h"
+#include "drop_tests/formats/output_path.h"
 #include "rft/gravity_constants.h"
 #include "rft/soil.h"
 #include "rft/stress_law_3d.h"
@@ -77,7 +77,7 @@ ModelFile LoadModelFile(const std::string& path);
 // the next `calibrate --out`; any other file at that path is the user's and is never overwritten.
 inline constexpr const char* kModelFileMark = "# touchdown model file (written by touchdown; it may replace this file)";
 // Paths in it (a fit's dataset) are written for `output_dir`, the directory the file finally lives
-// in (default: the directory of the target; drop_tests/io/paths_in_outputs.h).
+// in (default: the directory of the target; drop_tests/catalog/paths_in_outputs.h).
 void WriteModelFile(const ModelFile& model, const io::OutputTarget& target, const std::string& output_dir = "");
 // The soil as the model sees it: its zeta replaced when the model has an override (converted to
 // the soil's own reference gravity). Effect terms are not part of the soil: see ModelEffectTerms.

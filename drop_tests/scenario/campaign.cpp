@@ -9,11 +9,11 @@
 #include <set>
 #include <sstream>
 
-#include "drop_tests/io/output_path.h"
+#include "drop_tests/formats/output_path.h"
 #include "drop_tests/scenario/campaign_plots.h"
-#include "drop_tests/io/field_table.h"
-#include "drop_tests/io/paths_in_outputs.h"
-#include "drop_tests/io/yaml_fields.h"
+#include "drop_tests/formats/field_table.h"
+#include "drop_tests/catalog/paths_in_outputs.h"
+#include "drop_tests/formats/yaml_fields.h"
 #include "rft/gravity_constants.h"
 #include "rft/input_error.h"
 #include "rft/units.h"

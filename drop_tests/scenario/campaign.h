@@ -9,7 +9,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
-#include "drop_tests/io/progress.h"
+#include "drop_tests/util/progress.h"
 #include "drop_tests/drop/pad_drop.h"
 #include "drop_tests/scenario/paper_reading.h"
 
@@ -69,7 +69,7 @@ CampaignResult RunCampaign(const CampaignScenario& scenario);
 std::vector<CheckOutcome> EvaluateChecks(const CampaignResult& result);
 // Every case with its pad, soil and numbers as they were run (house style: resolved config). The
 // files named are written for `output_dir`, the directory the file finally lives in
-// (drop_tests/io/paths_in_outputs.h: no absolute paths of this machine).
+// (drop_tests/catalog/paths_in_outputs.h: no absolute paths of this machine).
 void WriteResolvedScenario(const CampaignScenario& scenario, const std::string& path, const std::string& output_dir);
 // Writes summary.csv, summary.json, traces/, plots/ and scenario_resolved.yaml into a fresh
 // directory that appears at `out_dir` only when complete (replacing an older one).

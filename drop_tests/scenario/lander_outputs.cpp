@@ -5,7 +5,7 @@
 #include <iomanip>
 #include <nlohmann/json.hpp>
 
-#include "drop_tests/io/output_path.h"
+#include "drop_tests/formats/output_path.h"
 #include "drop_tests/scenario/lander_plots.h"
 #include "drop_tests/scenario/lander_scenario_file.h"
 #include "drop_tests/scenario/lander_setup.h"

@@ -11,11 +11,11 @@
 #include <utility>
 #include <vector>
 
-#include "drop_tests/io/dataset_csv.h"
-#include "drop_tests/io/figure_style.h"
-#include "drop_tests/io/output_path.h"
-#include "drop_tests/io/plot_decimation.h"
-#include "drop_tests/io/plot_runner.h"
+#include "drop_tests/formats/dataset_csv.h"
+#include "drop_tests/formats/figure_style.h"
+#include "drop_tests/formats/output_path.h"
+#include "drop_tests/formats/plot_decimation.h"
+#include "drop_tests/formats/plot_runner.h"
 #include "drop_tests/scenario/lander_leg_load.h"
 #include "drop_tests/scenario/lander_trace_columns.h"
 #include "rft/units.h"

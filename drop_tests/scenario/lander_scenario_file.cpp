@@ -6,11 +6,11 @@
 #include <optional>
 #include <variant>
 
-#include "drop_tests/io/dataset_csv.h"  // io::FormatNumber
-#include "drop_tests/io/field_table.h"
-#include "drop_tests/io/output_path.h"
-#include "drop_tests/io/paths_in_outputs.h"
-#include "drop_tests/io/yaml_diff.h"
+#include "drop_tests/formats/dataset_csv.h"  // io::FormatNumber
+#include "drop_tests/formats/field_table.h"
+#include "drop_tests/formats/output_path.h"
+#include "drop_tests/catalog/paths_in_outputs.h"
+#include "drop_tests/formats/yaml_diff.h"
 #include "drop_tests/scenario/lander_setup.h"
 #include "drop_tests/model/model_file.h"
 #include "lander/multibody/leg_placement.h"

@@ -5,8 +5,8 @@
 #include <optional>
 #include <string>
 
-#include "drop_tests/io/catalog.h"
-#include "drop_tests/io/yaml_fields.h"
+#include "drop_tests/catalog/catalog.h"
+#include "drop_tests/formats/yaml_fields.h"
 #include "drop_tests/scenario/lander_scenario_types.h"
 
 namespace touchdown::scenario {
@@ -29,7 +29,7 @@ LanderScenario LoadLanderScenarioWithSetup(const std::string& path, std::optiona
 LanderScenario AtPadFileMesh(const LanderScenario& scenario);
 
 // The files named are written for `output_dir`, the directory the file finally lives in
-// (drop_tests/io/paths_in_outputs.h: no absolute paths of this machine). `setup` is the
+// (drop_tests/catalog/paths_in_outputs.h: no absolute paths of this machine). `setup` is the
 // scenario's (BuildLanderSetup): the copy states the soils and the release position it gives.
 void WriteResolvedLanderScenario(const LanderScenario& scenario, const LanderSetup& setup, const std::string& path,
                                  const std::string& output_dir);

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "drop_tests/scenario/soil_field.h"
-#include "drop_tests/io/catalog.h"
+#include "drop_tests/catalog/catalog.h"
 #include "drop_tests/model/model_file.h"
 #include "drop_tests/scenario/paper_reading.h"
 #include "lander/multibody/lander_simulation.h"

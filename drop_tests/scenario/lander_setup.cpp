@@ -3,7 +3,7 @@
 #include <cmath>
 #include <memory>
 
-#include "drop_tests/io/catalog.h"
+#include "drop_tests/catalog/catalog.h"
 #include "drop_tests/model/model_file.h"
 #include "lander/integ/cvode_integrator.h"
 #include "lander/multibody/lander_simulation.h"

@@ -4,8 +4,8 @@
 #include <algorithm>
 #include <filesystem>
 
-#include "drop_tests/io/vtk_pieces.h"
-#include "drop_tests/io/vtk_series.h"
+#include "drop_tests/formats/vtk_pieces.h"
+#include "drop_tests/formats/vtk_series.h"
 #include "drop_tests/scenario/lander_leg_load.h"
 #include "rft/element_stresses.h"
 

@@ -8,7 +8,7 @@
 #include <string_view>
 #include <utility>
 
-#include "drop_tests/io/yaml_fields.h"
+#include "drop_tests/formats/yaml_fields.h"
 
 namespace touchdown::scenario {
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <random>
 
-#include "drop_tests/io/splitmix.h"
+#include "drop_tests/util/splitmix.h"
 
 namespace touchdown::scenario {
 

@@ -4,7 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "drop_tests/io/dataset_csv.h"
+#include "drop_tests/formats/dataset_csv.h"
 #include "drop_tests/stability/rare_event.h"
 #include "drop_tests/sweep/sweep_spec.h"
 #include "rft/physical_limits.h"

@@ -8,8 +8,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "drop_tests/io/catalog.h"
-#include "drop_tests/io/yaml_fields.h"
+#include "drop_tests/catalog/catalog.h"
+#include "drop_tests/formats/yaml_fields.h"
 #include "drop_tests/sweep/sweep_spec.h"
 #include "rft/input_error.h"
 

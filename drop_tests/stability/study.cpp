@@ -4,8 +4,8 @@
 #include <cmath>
 
 #include "drop_tests/drop/drop_request.h"
-#include "drop_tests/io/dataset_csv.h"
-#include "drop_tests/io/yaml_fields.h"
+#include "drop_tests/formats/dataset_csv.h"
+#include "drop_tests/formats/yaml_fields.h"
 #include "rft/input_error.h"
 #include "rft/physical_limits.h"
 

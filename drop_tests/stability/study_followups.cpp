@@ -7,8 +7,8 @@
 #include <nlohmann/json.hpp>
 #include <ostream>
 
-#include "drop_tests/io/dataset_csv.h"
-#include "drop_tests/io/json_number.h"
+#include "drop_tests/formats/dataset_csv.h"
+#include "drop_tests/formats/json_number.h"
 #include "drop_tests/scenario/lander_scenario_file.h"
 #include "drop_tests/scenario/lander_setup.h"
 #include "lander/multibody/static_stability.h"

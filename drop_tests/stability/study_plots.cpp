@@ -1,4 +1,4 @@
-// The study's figures (drop_tests/io/plot_runner.h: one script, gnuplot in the output directory,
+// The study's figures (drop_tests/formats/plot_runner.h: one script, gnuplot in the output directory,
 // every path relative to it): the tip-over map with its p = 0.5 boundary, exceedance curves,
 // histograms; each as PNG and SVG. Data files under plots/data/.
 #include <algorithm>
@@ -7,10 +7,10 @@
 #include <functional>
 #include <ostream>
 
-#include "drop_tests/io/dataset_csv.h"
-#include "drop_tests/io/output_path.h"
-#include "drop_tests/io/figure_style.h"
-#include "drop_tests/io/plot_runner.h"
+#include "drop_tests/formats/dataset_csv.h"
+#include "drop_tests/formats/output_path.h"
+#include "drop_tests/formats/figure_style.h"
+#include "drop_tests/formats/plot_runner.h"
 #include "drop_tests/stability/study_outputs.h"
 
 namespace touchdown::stability {

@@ -11,8 +11,8 @@
 
 #include <boost/math/distributions/normal.hpp>
 
-#include "drop_tests/io/dataset_csv.h"
-#include "drop_tests/io/json_number.h"
+#include "drop_tests/formats/dataset_csv.h"
+#include "drop_tests/formats/json_number.h"
 #include "drop_tests/stability/study_followups.h"
 #include "drop_tests/stability/study_outputs.h"
 #include "drop_tests/stability/study_summary.h"

@@ -3,7 +3,7 @@
 #include <nlohmann/json.hpp>
 #include <ostream>
 
-#include "drop_tests/io/output_path.h"
+#include "drop_tests/formats/output_path.h"
 #include "drop_tests/stability/study_outputs.h"
 #include "drop_tests/sweep/sweep.h"
 #include "rft/input_error.h"

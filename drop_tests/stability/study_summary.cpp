@@ -4,8 +4,8 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
-#include "drop_tests/io/catalog.h"
-#include "drop_tests/io/json_number.h"
+#include "drop_tests/catalog/catalog.h"
+#include "drop_tests/formats/json_number.h"
 #include "drop_tests/model/model_file.h"
 
 namespace touchdown::stability {

@@ -3,8 +3,8 @@
 #include <filesystem>
 #include <ostream>
 
-#include "drop_tests/io/dataset_csv.h"
-#include "drop_tests/io/output_path.h"
+#include "drop_tests/formats/dataset_csv.h"
+#include "drop_tests/formats/output_path.h"
 #include "drop_tests/stability/study_outputs.h"
 
 namespace touchdown::stability {

@@ -11,7 +11,7 @@
 
 #include <unistd.h>
 
-#include "drop_tests/io/paths_in_outputs.h"
+#include "drop_tests/catalog/paths_in_outputs.h"
 #include "rft/input_error.h"
 
 namespace touchdown::sweep {
@@ -19,7 +19,7 @@ namespace touchdown::sweep {
 namespace {
 // Meta values that name files (the sweep file, the model): stored relative to the database's
 // directory, or under $TOUCHDOWN_DATA_DIR, never as this machine's absolute path
-// (drop_tests/io/paths_in_outputs.h); Meta() gives them back as the working directory reaches them.
+// (drop_tests/catalog/paths_in_outputs.h); Meta() gives them back as the working directory reaches them.
 constexpr const char* kMetaPathKeys[] = {"source", "model"};
 std::string Directory(const std::string& file) { return std::filesystem::path(file).parent_path().string(); }
 // The database file itself unusable (missing, unreadable, not a database, corrupt, disk full,

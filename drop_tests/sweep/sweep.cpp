@@ -1,6 +1,6 @@
 #include "drop_tests/sweep/sweep.h"
 
-#include "drop_tests/io/output_path.h"
+#include "drop_tests/formats/output_path.h"
 
 #include <algorithm>
 #include <chrono>
@@ -14,8 +14,8 @@
 #include <sstream>
 #include <unistd.h>
 
-#include "drop_tests/io/dataset_csv.h"
-#include "drop_tests/io/work_pool.h"
+#include "drop_tests/formats/dataset_csv.h"
+#include "drop_tests/util/work_pool.h"
 #include "drop_tests/sweep/sweep_engine.h"
 #include "rft/input_error.h"
 

@@ -29,7 +29,7 @@
 #include <string>
 #include <vector>
 
-#include "drop_tests/io/progress.h"
+#include "drop_tests/util/progress.h"
 #include "drop_tests/sweep/results_db.h"
 #include "drop_tests/sweep/sweep_lock.h"
 #include "drop_tests/sweep/sweep_spec.h"

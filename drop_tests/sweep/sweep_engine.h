@@ -11,7 +11,7 @@
 #include <mutex>
 #include <vector>
 
-#include "drop_tests/io/work_pool.h"
+#include "drop_tests/util/work_pool.h"
 #include "drop_tests/sweep/sweep_drop.h"
 
 namespace touchdown::sweep {

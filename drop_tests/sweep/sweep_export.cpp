@@ -7,8 +7,8 @@
 #include <memory>
 #include <optional>
 
-#include "drop_tests/io/output_path.h"
-#include "drop_tests/io/dataset_csv.h"
+#include "drop_tests/formats/output_path.h"
+#include "drop_tests/formats/dataset_csv.h"
 #include "drop_tests/sweep/sweep.h"
 #include "drop_tests/sweep/sweep_drop.h"
 #include "drop_tests/sweep/sweep_engine.h"

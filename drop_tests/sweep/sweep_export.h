@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "drop_tests/io/progress.h"
+#include "drop_tests/util/progress.h"
 #include "drop_tests/dataset/dataset.h"
 #include "drop_tests/sweep/results_db.h"
 

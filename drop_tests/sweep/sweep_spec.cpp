@@ -8,10 +8,10 @@
 #include <fstream>
 #include <sstream>
 
-#include "drop_tests/io/dataset_csv.h"
-#include "drop_tests/io/output_path.h"
-#include "drop_tests/io/splitmix.h"
-#include "drop_tests/io/yaml_fields.h"
+#include "drop_tests/formats/dataset_csv.h"
+#include "drop_tests/formats/output_path.h"
+#include "drop_tests/util/splitmix.h"
+#include "drop_tests/formats/yaml_fields.h"
 #include "drop_tests/scenario/lander_scenario_file.h"
 #include "drop_tests/sweep/sweep_drop.h"
 #include "rft/bekker_law.h"

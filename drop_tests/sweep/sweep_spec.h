@@ -94,7 +94,7 @@
 #include <string>
 #include <vector>
 
-#include "drop_tests/io/catalog.h"
+#include "drop_tests/catalog/catalog.h"
 #include "drop_tests/scenario/lander_scenario_types.h"
 #include "drop_tests/model/model_file.h"
 #include "lander/pad/rig_drop.h"

@@ -7,12 +7,12 @@
 #include <nlohmann/json.hpp>
 #include <tuple>
 
-#include "drop_tests/io/json_number.h"
-#include "drop_tests/io/output_path.h"
-#include "drop_tests/io/dataset_csv.h"
-#include "drop_tests/io/figure_style.h"
-#include "drop_tests/io/plot_runner.h"
-#include "drop_tests/io/yaml_fields.h"
+#include "drop_tests/formats/json_number.h"
+#include "drop_tests/formats/output_path.h"
+#include "drop_tests/formats/dataset_csv.h"
+#include "drop_tests/formats/figure_style.h"
+#include "drop_tests/formats/plot_runner.h"
+#include "drop_tests/formats/yaml_fields.h"
 #include "rft/input_error.h"
 
 namespace touchdown::sweep {

@@ -1,6 +1,6 @@
 #include "drop_tests/sweep/trade_run.h"
 
-#include "drop_tests/io/output_path.h"
+#include "drop_tests/formats/output_path.h"
 
 namespace touchdown::sweep {
 

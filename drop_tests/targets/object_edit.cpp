@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <sstream>
 
-#include "drop_tests/io/yaml_fields.h"
+#include "drop_tests/formats/yaml_fields.h"
 #include "drop_tests/scenario/lander_scenario_file.h"
 #include "rft/input_error.h"
 #include "rft/units.h"

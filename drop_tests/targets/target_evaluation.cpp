@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "drop_tests/io/work_pool.h"
+#include "drop_tests/util/work_pool.h"
 #include "drop_tests/scenario/lander_setup.h"
 #include "rft/units.h"
 

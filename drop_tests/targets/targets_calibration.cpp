@@ -8,8 +8,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "drop_tests/io/output_path.h"
-#include "drop_tests/io/work_pool.h"
+#include "drop_tests/formats/output_path.h"
+#include "drop_tests/util/work_pool.h"
 #include "drop_tests/model/model_file.h"
 #include "rft/input_error.h"
 

@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "drop_tests/drop/drop_request.h"
-#include "drop_tests/io/progress.h"
+#include "drop_tests/util/progress.h"
 #include "drop_tests/targets/targets_fit.h"
 
 namespace touchdown::targets {

@@ -7,7 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "drop_tests/io/yaml_fields.h"
+#include "drop_tests/formats/yaml_fields.h"
 #include "drop_tests/scenario/campaign.h"
 #include "drop_tests/scenario/lander_scenario_file.h"
 #include "drop_tests/targets/object_edit.h"

@@ -63,7 +63,7 @@ nlohmann::json TargetsReportJson(const TargetsFile& file, const TargetsFitResult
 std::string TargetsReportTable(const TargetsFile& file, const TargetsFitResult& fit);
 // The fitted zeta per soil as a model file (`--model`), with the fit's provenance and the other
 // parameters' values and how to apply them. The targets file is named as seen from `output_dir`,
-// the directory the model file lives in (drop_tests/io/paths_in_outputs.h).
+// the directory the model file lives in (drop_tests/catalog/paths_in_outputs.h).
 model::ModelFile TargetsModel(const TargetsFile& file, const TargetsFitResult& fit, const std::string& name,
                               const std::string& output_dir);
 

@@ -6,7 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <yaml-cpp/yaml.h>
 
-#include "drop_tests/io/paths_in_outputs.h"
+#include "drop_tests/catalog/paths_in_outputs.h"
 #include "drop_tests/targets/targets_fit.h"
 #include "rft/units.h"
 

@@ -9,11 +9,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include "drop_tests/io/catalog.h"
-#include "drop_tests/io/dataset_csv.h"
-#include "drop_tests/io/figure_style.h"
-#include "drop_tests/io/output_path.h"
-#include "drop_tests/io/plot_runner.h"
+#include "drop_tests/catalog/catalog.h"
+#include "drop_tests/formats/dataset_csv.h"
+#include "drop_tests/formats/figure_style.h"
+#include "drop_tests/formats/output_path.h"
+#include "drop_tests/formats/plot_runner.h"
 #include "drop_tests/validation/validate.h"
 
 namespace touchdown::validation {

@@ -5,7 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "drop_tests/io/json_number.h"
+#include "drop_tests/formats/json_number.h"
 #include "drop_tests/validation/validate.h"
 #include "rft/units.h"
 

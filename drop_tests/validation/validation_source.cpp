@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <set>
 
-#include "drop_tests/io/yaml_fields.h"
+#include "drop_tests/formats/yaml_fields.h"
 #include "drop_tests/validation/katsuragi_durian.h"
 #include "lander/pad/release.h"
 #include "rft/input_error.h"

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "drop_tests/io/catalog.h"
+#include "drop_tests/catalog/catalog.h"
 #include "rft/gravity_constants.h"
 #include "rft/soil.h"
 

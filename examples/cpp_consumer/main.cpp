@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include <drop_tests/drop/pad_drop.h>
-#include <drop_tests/io/catalog.h>
+#include <drop_tests/catalog/catalog.h>
 #include <lander/integ/cvode_integrator.h>
 #include <lander/pad/pad_pose.h>
 #include <rft/contact_wrench.h>

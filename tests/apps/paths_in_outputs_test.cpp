@@ -18,8 +18,8 @@
 #include <string>
 #include <vector>
 
-#include "drop_tests/io/catalog.h"
-#include "drop_tests/io/paths_in_outputs.h"
+#include "drop_tests/catalog/catalog.h"
+#include "drop_tests/catalog/paths_in_outputs.h"
 
 namespace touchdown::drop {
 namespace {

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "tests/drop_tests/io/vtk_xml_reader.h"
+#include "tests/drop_tests/formats/vtk_xml_reader.h"
 #include "tests/scratch_dir_test.h"
 #include "tests/touchdown_process.h"
 

@@ -1,5 +1,5 @@
 // Fuzz target: model file YAML (per-soil zeta overrides and effect terms).
-#include "drop_tests/io/catalog.h"
+#include "drop_tests/catalog/catalog.h"
 #include "drop_tests/model/model_file.h"
 #include "rft/input_error.h"
 #include "tests/fuzz/fuzz_input_file.h"

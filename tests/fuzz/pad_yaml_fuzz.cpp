@@ -1,5 +1,5 @@
 // Fuzz target: pad YAML. Any input must load or raise InputError; nothing else may escape.
-#include "drop_tests/io/catalog.h"
+#include "drop_tests/catalog/catalog.h"
 #include "rft/input_error.h"
 #include "tests/fuzz/fuzz_input_file.h"
 

@@ -1,7 +1,7 @@
 // Fuzz target: a dataset trace CSV, named by a fixed valid drops.csv; the generic CSV reader
 // sees the same bytes.
 #include "drop_tests/dataset/dataset.h"
-#include "drop_tests/io/dataset_csv.h"
+#include "drop_tests/formats/dataset_csv.h"
 #include "rft/input_error.h"
 #include "tests/fuzz/fuzz_input_file.h"
 

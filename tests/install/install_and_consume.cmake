@@ -21,9 +21,9 @@ set(prefix "${WORK_DIR}/moved prefix")  # a space in the path, as users' paths h
 run(ignored COMMAND "${CMAKE_COMMAND}" --install "${BUILD_DIR}" --prefix "${stage}")
 file(RENAME "${stage}" "${prefix}")
 
-# What is installed: the 15 module libraries, the command line, the data, the package files.
-foreach(module rft footpad_geom integ pad multibody io model drop dataset scenario sweep gap stability validation
-    targets)
+# What is installed: the 17 module libraries, the command line, the data, the package files.
+foreach(module rft footpad_geom integ pad multibody util formats catalog model drop dataset scenario sweep gap
+    stability validation targets)
   file(GLOB library "${prefix}/lib*/libtouchdown_${module}.*")
   if(NOT library)
     message(FATAL_ERROR "module library touchdown_${module} not installed under ${prefix}/lib")

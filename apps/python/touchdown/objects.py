@@ -245,7 +245,7 @@ def _resolved_scenario(path):
 
 
 def _reads_as_path(text):
-    """As the loaders tell a path from a catalogue name (drop_tests/io/catalog.h)."""
+    """As the loaders tell a path from a catalogue name (drop_tests/catalog/catalog.h)."""
     return "/" in text or text.endswith((".yaml", ".yml")) or os.sep in text
 
 

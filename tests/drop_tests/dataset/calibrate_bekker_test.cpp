@@ -8,7 +8,7 @@
 #include "drop_tests/dataset/calibrate_bekker.h"
 #include "drop_tests/dataset/synth.h"
 #include "drop_tests/drop/pad_drop.h"
-#include "drop_tests/io/catalog.h"
+#include "drop_tests/catalog/catalog.h"
 #include "rft/bekker_law.h"
 #include "rft/input_error.h"
 #include "tests/scratch_dir_test.h"

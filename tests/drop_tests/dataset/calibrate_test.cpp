@@ -13,7 +13,7 @@
 #include <unistd.h>
 
 #include "drop_tests/dataset/calibrate.h"
-#include "drop_tests/io/dataset_csv.h"
+#include "drop_tests/formats/dataset_csv.h"
 #include "drop_tests/model/model_file.h"
 #include "drop_tests/drop/pad_drop.h"
 

@@ -11,7 +11,7 @@
 #include <unistd.h>
 
 #include "drop_tests/dataset/dataset.h"
-#include "drop_tests/io/dataset_csv.h"
+#include "drop_tests/formats/dataset_csv.h"
 #include "rft/input_error.h"
 
 namespace {

@@ -11,11 +11,11 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "drop_tests/io/catalog.h"
+#include "drop_tests/catalog/catalog.h"
 #include "drop_tests/dataset/compare.h"
 #include "drop_tests/dataset/dataset.h"
-#include "drop_tests/io/dataset_csv.h"
-#include "drop_tests/io/yaml_fields.h"
+#include "drop_tests/formats/dataset_csv.h"
+#include "drop_tests/formats/yaml_fields.h"
 #include "rft/input_error.h"
 #include "rft/input_file.h"
 

@@ -8,7 +8,7 @@
 
 #include "drop_tests/drop/drop_factory.h"
 #include "drop_tests/drop/pad_drop.h"
-#include "drop_tests/io/catalog.h"
+#include "drop_tests/catalog/catalog.h"
 #include "rft/bekker_law.h"
 #include "rft/input_error.h"
 

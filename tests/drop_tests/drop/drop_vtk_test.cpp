@@ -13,7 +13,7 @@
 #include "rft/element_stresses.h"
 #include "rft/input_error.h"
 #include "rft/units.h"
-#include "tests/drop_tests/io/vtk_xml_reader.h"
+#include "tests/drop_tests/formats/vtk_xml_reader.h"
 #include "tests/scratch_dir_test.h"
 
 namespace touchdown::drop {

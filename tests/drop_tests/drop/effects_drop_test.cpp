@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "drop_tests/drop/pad_drop.h"
-#include "drop_tests/io/catalog.h"
+#include "drop_tests/catalog/catalog.h"
 #include "drop_tests/model/effects.h"
 
 namespace touchdown::drop {

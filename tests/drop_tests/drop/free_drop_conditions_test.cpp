@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "drop_tests/drop/pad_drop.h"
-#include "drop_tests/io/catalog.h"
+#include "drop_tests/catalog/catalog.h"
 #include "lander/pad/free_drop.h"
 #include "rft/stress_law_3d_factory.h"
 

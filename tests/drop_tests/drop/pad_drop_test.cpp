@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "drop_tests/io/catalog.h"
+#include "drop_tests/catalog/catalog.h"
 #include "rft/input_error.h"
 
 namespace touchdown::drop {

@@ -14,7 +14,7 @@
 #include <cstdio>
 
 #include "drop_tests/dataset/synth.h"
-#include "drop_tests/io/catalog.h"
+#include "drop_tests/catalog/catalog.h"
 
 namespace touchdown::gap {
 namespace {

@@ -9,7 +9,7 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include "drop_tests/io/yaml_fields.h"
+#include "drop_tests/formats/yaml_fields.h"
 #include "drop_tests/model/effects_yaml.h"
 #include "drop_tests/model/model_file.h"
 #include "rft/input_error.h"

@@ -6,7 +6,7 @@
 #include <fstream>
 #include <unistd.h>
 
-#include "drop_tests/io/catalog.h"
+#include "drop_tests/catalog/catalog.h"
 #include "drop_tests/model/model_file.h"
 #include "rft/input_error.h"
 

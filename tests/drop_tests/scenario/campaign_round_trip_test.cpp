@@ -9,7 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "drop_tests/io/catalog.h"
+#include "drop_tests/catalog/catalog.h"
 #include "drop_tests/scenario/campaign.h"
 #include "rft/input_error.h"
 #include "tests/round_trip.h"

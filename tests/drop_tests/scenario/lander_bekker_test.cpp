@@ -7,7 +7,7 @@
 #include <cstdio>
 
 #include "drop_tests/drop/pad_drop.h"
-#include "drop_tests/io/catalog.h"
+#include "drop_tests/catalog/catalog.h"
 #include "rft/bekker_law.h"
 #include "tests/drop_tests/scenario/lander_test_support.h"
 

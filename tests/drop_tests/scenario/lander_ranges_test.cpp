@@ -9,8 +9,8 @@
 #include <fstream>
 #include <string>
 
-#include "drop_tests/io/catalog.h"
-#include "drop_tests/io/yaml_fields.h"
+#include "drop_tests/catalog/catalog.h"
+#include "drop_tests/formats/yaml_fields.h"
 #include "drop_tests/scenario/lander_scenario_file.h"
 #include "drop_tests/scenario/lander_setup.h"
 #include "lander/integ/cvode_integrator.h"

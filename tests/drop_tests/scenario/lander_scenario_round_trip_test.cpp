@@ -10,7 +10,7 @@
 #include <fstream>
 #include <optional>
 
-#include "drop_tests/io/catalog.h"
+#include "drop_tests/catalog/catalog.h"
 #include "drop_tests/scenario/lander_outputs.h"
 #include "drop_tests/scenario/lander_scenario_file.h"
 #include "drop_tests/scenario/lander_setup.h"

@@ -12,7 +12,7 @@
 
 #include "drop_tests/scenario/lander_scenario_file.h"
 #include "drop_tests/scenario/lander_setup.h"
-#include "drop_tests/io/catalog.h"
+#include "drop_tests/catalog/catalog.h"
 #include "rft/input_error.h"
 #include "tests/scratch_dir_test.h"
 

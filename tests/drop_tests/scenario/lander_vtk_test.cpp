@@ -10,7 +10,7 @@
 #include <sstream>
 
 #include "drop_tests/scenario/lander_leg_load.h"
-#include "tests/drop_tests/io/vtk_xml_reader.h"
+#include "tests/drop_tests/formats/vtk_xml_reader.h"
 #include "tests/drop_tests/scenario/lander_test_support.h"
 #include "tests/scratch_dir_test.h"
 

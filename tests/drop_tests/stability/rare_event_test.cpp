@@ -16,7 +16,7 @@
 #include <boost/math/distributions/normal.hpp>
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 
-#include "drop_tests/io/work_pool.h"
+#include "drop_tests/util/work_pool.h"
 #include "drop_tests/stability/rare_event.h"
 
 namespace touchdown::stability {

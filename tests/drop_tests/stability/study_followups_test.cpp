@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
-#include "drop_tests/io/catalog.h"
+#include "drop_tests/catalog/catalog.h"
 #include "drop_tests/stability/study.h"
 #include "drop_tests/stability/study_followups.h"
 #include "drop_tests/sweep/sweep.h"

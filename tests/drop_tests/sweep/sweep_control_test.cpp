@@ -21,7 +21,7 @@
 
 #include "drop_tests/dataset/dataset.h"
 #include "drop_tests/sweep/results_db.h"
-#include "drop_tests/io/output_path.h"
+#include "drop_tests/formats/output_path.h"
 #include "drop_tests/sweep/sweep.h"
 #include "drop_tests/sweep/sweep_export.h"
 #include "drop_tests/sweep/sweep_lock.h"

@@ -5,7 +5,7 @@
 
 #include <fstream>
 
-#include "drop_tests/io/catalog.h"
+#include "drop_tests/catalog/catalog.h"
 #include "drop_tests/sweep/sweep_spec.h"
 #include "tests/round_trip.h"
 

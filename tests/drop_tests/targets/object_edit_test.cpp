@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "drop_tests/io/catalog.h"
+#include "drop_tests/catalog/catalog.h"
 #include "drop_tests/scenario/lander_scenario_file.h"
 #include "tests/scratch_dir_test.h"
 

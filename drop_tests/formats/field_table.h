@@ -1,0 +1,95 @@
+#pragma once
+// One description of a file type's number fields, walked by its loader and by its writer, so the
+// two list the same keys with the same units and cannot drift apart. Each field names its key
+// (unit-suffixed, as in the file), the member holding the SI value, the factor from file units,
+// the sign it must have, whether it may be absent (then the member keeps its default) and
+// whether the writer leaves out a value equal to that default (a 0 that means "unknown" and
+// would not read back as a positive number), and the physical range it must lie in (file units,
+// rft/physical_limits.h). Checks that tie several fields together stay with the loader that needs them.
+//
+// Private to the .cpp files of the YAML edge (it reads YamlFields and writes YAML).
+#include <iomanip>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <yaml-cpp/yaml.h>
+
+#include "drop_tests/formats/yaml_fields.h"
+#include "rft/physical_limits.h"
+
+namespace touchdown::io {
+
+enum class Sign { kAny, kPositive, kNonNegative };
+
+template <typename T>
+struct NumberField {
+  const char* key;           // in the file: "bulk_density_kg_m3", "internal_friction_angle_deg"
+  double T::*member;         // SI
+  double file_to_si = 1.0;   // value_SI = value_file * file_to_si
+  Sign sign = Sign::kAny;
+  bool optional = true;
+  bool omit_default = false;
+  const limits::Range* range = nullptr;  // in file units; none: any value of the sign
+};
+
+template <typename T>
+using FieldTable = std::vector<NumberField<T>>;
+
+// The keys of a table, for YamlFields::RequireOnly.
+template <typename T>
+std::vector<std::string> FieldKeys(const FieldTable<T>& fields) {
+  std::vector<std::string> keys;
+  for (const NumberField<T>& field : fields) keys.push_back(field.key);
+  return keys;
+}
+
+// One number of `f` (file units): of `sign`, and within `range` when there is one.
+inline double ReadNumber(const YamlFields& f, const std::string& key, Sign sign,
+                         const limits::Range* range = nullptr) {
+  const double v = sign == Sign::kPositive      ? f.Positive(key)
+                   : sign == Sign::kNonNegative ? f.NonNegative(key)
+                                                : f.Number(key);
+  if (range) limits::Require(*range, v, f.file(), f.Path(key));
+  return v;
+}
+
+// Reads every field `f` has (a missing required field fails) into `out`.
+template <typename T>
+void ReadFields(const YamlFields& f, const FieldTable<T>& fields, T& out) {
+  for (const NumberField<T>& field : fields) {
+    if (field.optional && !f.Has(field.key)) continue;
+    out.*field.member = ReadNumber(f, field.key, field.sign, field.range) * field.file_to_si;
+  }
+}
+
+// Writes the fields of `value` in table order (file units), leaving out the defaults of the
+// fields that say so.
+template <typename T>
+void WriteFields(YAML::Emitter& y, const FieldTable<T>& fields, const T& value) {
+  const T defaults{};
+  for (const NumberField<T>& field : fields) {
+    if (field.omit_default && value.*field.member == defaults.*field.member) continue;
+    y << YAML::Key << field.key << YAML::Value << value.*field.member / field.file_to_si;
+  }
+}
+
+// Checks that `f` states every field of `fields` as `expected` has it, in file units and to the
+// last bit (a derived value a resolved copy writes for its reader, read back against the file it
+// was derived from). `what` names that file in the message.
+template <typename T>
+void RequireFieldsMatch(const YamlFields& f, const FieldTable<T>& fields, const T& expected, const std::string& what) {
+  for (const NumberField<T>& field : fields) {
+    const double want = expected.*field.member / field.file_to_si;
+    if (field.optional && field.omit_default && !f.Has(field.key) && expected.*field.member == T{}.*field.member)
+      continue;
+    const double given = f.Number(field.key);
+    if (given != want) {
+      std::ostringstream message;
+      message << std::setprecision(17) << "is " << given << " but " << what << " gives " << want;
+      f.Fail(field.key, message.str());
+    }
+  }
+}
+
+}  // namespace touchdown::io

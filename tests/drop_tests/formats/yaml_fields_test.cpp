@@ -1,0 +1,80 @@
+// The one YAML loader: what yaml-cpp would accept but a touchdown file must not hold is refused at
+// load, with the file and the reason, before any loader walks the tree.
+#include "drop_tests/formats/yaml_fields.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <string>
+
+#include "rft/input_error.h"
+#include "tests/scratch_dir_test.h"
+
+namespace touchdown::io {
+namespace {
+
+class YamlLoad : public testing_scratch::ScratchDirTest {
+ protected:
+  // The message of the InputError that loading `text` raises ("" when it loads).
+  std::string Refusal(const std::string& text) {
+    const std::string path = Write("f.yaml", text);
+    try {
+      YamlFields::LoadFile(path);
+    } catch (const InputError& e) {
+      const std::string message = e.what();
+      EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+      EXPECT_NE(message.find(path), std::string::npos) << message;
+      return message;
+    }
+    return "";
+  }
+};
+
+// An alias inside its own anchor makes an infinitely deep tree: a walk over it never ended (a
+// stack overflow, exit 139).
+TEST_F(YamlLoad, AliasInsideItsOwnAnchorIsRefused) {
+  EXPECT_NE(Refusal("a: &a [*a]\n").find("nested more than 64 levels"), std::string::npos);
+  EXPECT_NE(Refusal("mass_kg: 1\nb: &b {c: *b}\n").find("nested more than 64 levels"), std::string::npos);
+}
+
+// Aliases of aliases multiply: 9 levels of 10 references stand for 10^9 values. The walk stops
+// at the node bound, in well under a second, instead of running for minutes.
+TEST_F(YamlLoad, AliasExpansionIsBounded) {
+  std::string text = "l0: &l0 [x, x, x, x, x, x, x, x, x, x]\n";
+  for (int level = 1; level <= 9; ++level) {
+    const std::string prev = "*l" + std::to_string(level - 1);
+    text += "l" + std::to_string(level) + ": &l" + std::to_string(level) + " [" + prev;
+    for (int i = 1; i < 10; ++i) text += ", " + prev;
+    text += "]\n";
+  }
+  const auto start = std::chrono::steady_clock::now();
+  EXPECT_NE(Refusal(text).find("expands to more than 1000000 values"), std::string::npos);
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
+}
+
+// Aliases within the bounds are ordinary YAML and load.
+TEST_F(YamlLoad, ModestAliasesLoad) {
+  EXPECT_EQ(Refusal("a: &a {x: 1}\nb: *a\nc: [*a, *a]\n"), "");
+}
+
+TEST_F(YamlLoad, ASecondDocumentIsRefused) {
+  EXPECT_NE(Refusal("mass_kg: 1\n---\nmass_kg: 2\n").find("holds a second YAML document (line 2)"),
+            std::string::npos);
+  EXPECT_NE(Refusal("mass_kg: 1\n...\nmass_kg: 2\n").find("holds a second YAML document (line 3)"),
+            std::string::npos);
+  // A document end marker with nothing after it is one document.
+  EXPECT_EQ(Refusal("mass_kg: 1\n...\n"), "");
+  EXPECT_EQ(Refusal("---\nmass_kg: 1\n"), "");
+}
+
+// Malformed text on which yaml-cpp's LoadAll never returned (found by the soil and model YAML
+// fuzzers): refused at once.
+TEST_F(YamlLoad, MalformedTextIsRefusedAtOnce) {
+  EXPECT_NE(Refusal(", The lunar soar soiekker-Wongeters), vacuum.\natmosphere: vacuum\nlaw: bekker\nbekker:\n"
+                    "  n: 2\n  k_c_re do not depend on it.\n"),
+            "");
+  EXPECT_NE(Refusal(",ype: \nsoils: Dfjs2_lp:3{z 2],onz i"), "");
+}
+
+}  // namespace
+}  // namespace touchdown::io
