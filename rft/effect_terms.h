@@ -7,6 +7,9 @@
 //   rate_damping     stress c (v.n)                                            c [N s/m^3]
 //   added_mass       grains carried with the pad, m_a = c_a rho V (the entrained cone of
 //                    rft/entrained_mass.h), entering as d(m_a v)/dt          c_a [-]
+//   added_mass_plug  the dead zone under a flat pad, m_p = c_p rho (pi/3) a^3 of the footprint
+//                    radius a, attached over the first d_f of the stroke
+//                    (rft/entrained_mass.h), entering as d(m_p v)/dt         c_p [-]
 //   compaction_peak  stress k_c (v.n)^2, the pad's force scaled by exp(-z_pad / d_c), z_pad the
 //                    pad's penetration (the bed compacts in the first d_c)   k_c [kg/m^3], d_c [m]
 //   depth_exponent   stress per depth weighted by z_ref (z / z_ref)^p instead of z
@@ -23,6 +26,7 @@ struct EffectTerms {
   double inertial_lambda = 0.0;      // lambda [-]
   double damping_c_N_s_m3 = 0.0;     // c [N s/m^3]
   double added_mass_ca = 0.0;        // c_a [-]
+  double added_mass_plug_cp = 0.0;   // c_p [-]
   double compaction_k_kg_m3 = 0.0;   // k_c [kg/m^3]
   double compaction_depth_m = 1.0;   // d_c [m], > 0
   double depth_exponent = 1.0;       // p [-], > 0; 1 is the linear law, computed as such
@@ -34,8 +38,8 @@ struct EffectTerms {
   // inertial_drag is stated (by a model or a fit), even at lambda 0: it replaces the soil's own
   // dynamic term (rft/stress_law_3d_factory.h WithSoilDynamicTerm) instead of adding to it.
   bool inertial_replaces_soil = false;
-  // Needs the soil's bulk density (inertial_drag, added_mass).
-  bool NeedsDensity() const { return inertial_lambda != 0.0 || added_mass_ca != 0.0; }
+  // Needs the soil's bulk density (inertial_drag, added_mass, added_mass_plug).
+  bool NeedsDensity() const { return inertial_lambda != 0.0 || added_mass_ca != 0.0 || added_mass_plug_cp != 0.0; }
   bool HasDepthExponent() const { return depth_exponent != 1.0; }
   bool HasSensorOffset() const { return sensor_dz_m != 0.0 || sensor_dt_s != 0.0; }
 };

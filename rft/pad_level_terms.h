@@ -10,8 +10,9 @@
 //   compaction    the bed's compaction transient: a stress -k_c (v.n)^2 n on leading elements
 //                 (n . v > 0), integrated over the submerged area and scaled by exp(-z_pad / d_c),
 //                 z_pad the pad's penetration (the bed compacts during the first d_c of the stroke)
-//   added mass    c_a rho of the entrained cone of grains (rft/entrained_mass.h): the free pad and
-//                 the lander add its inertia to the pad's vertical motion
+//   added mass    c_a rho of the entrained cone of grains and c_p rho of the plug (the dead zone
+//                 under a flat pad, rft/entrained_mass.h): the free pad and the lander add their
+//                 inertia to the pad's vertical motion
 //
 // For a level axisymmetric pad moving straight down, the compaction stress integrates to
 // k_c v^2 exp(-d / d_c) I_3(d), I_k(d) the integral of cos^k(beta) dA over the submerged leading
@@ -31,11 +32,13 @@ struct PadLevelTerms {
   DepthLaw depth;
   double compaction_k_kg_m3 = 0.0;        // k_c [kg/m^3], >= 0; 0: no compaction transient
   double compaction_depth_m = 1.0;        // d_c [m], > 0
-  double added_mass_density_kg_m3 = 0.0;  // c_a rho [kg/m^3], >= 0; 0: no added mass
+  double added_mass_density_kg_m3 = 0.0;  // c_a rho [kg/m^3], >= 0; 0: no cone
+  double plug_density_kg_m3 = 0.0;        // c_p rho [kg/m^3], >= 0; 0: no plug
 
   bool has_power_depth() const { return depth.exponent != 1.0; }
   bool has_compaction() const { return compaction_k_kg_m3 > 0.0; }
-  bool has_added_mass() const { return added_mass_density_kg_m3 > 0.0; }
+  // Either form of added mass: the contact then reports the footprint and its rate.
+  bool has_added_mass() const { return added_mass_density_kg_m3 > 0.0 || plug_density_kg_m3 > 0.0; }
   // The compaction stress [N/m^2] on an element of outward normal n_W moving at v_W:
   // -k_c (v.n)^2 n when it leads (v.n > 0), else 0 (trailing or sliding elements compact nothing).
   Eigen::Vector3d CompactionStress(const Eigen::Vector3d& n_W, const Eigen::Vector3d& v_W) const;

@@ -31,7 +31,8 @@ struct SoilContactModel {
     // Bekker's z^n is the bekker law's own depth law, not the depth_exponent effect.
     if (pad_terms.has_power_depth() && law->kind() != LawKind::kBekker) out += "+depth_exponent";
     if (pad_terms.has_compaction()) out += "+compaction_peak";
-    if (pad_terms.has_added_mass()) out += "+added_mass";
+    if (pad_terms.added_mass_density_kg_m3 > 0.0) out += "+added_mass";
+    if (pad_terms.plug_density_kg_m3 > 0.0) out += "+added_mass_plug";
     return out;
   }
 };

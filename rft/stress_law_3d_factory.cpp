@@ -126,6 +126,8 @@ SoilContactModel MakeSoilContactModel(LawKind law, const SoilParameters& soil, d
           "must be positive", terms.compaction_depth_m);
   Require(std::isfinite(terms.added_mass_ca) && terms.added_mass_ca >= 0.0, soil, "added_mass.c_a",
           "must be non-negative", terms.added_mass_ca);
+  Require(std::isfinite(terms.added_mass_plug_cp) && terms.added_mass_plug_cp >= 0.0, soil, "added_mass_plug.c_p",
+          "must be non-negative", terms.added_mass_plug_cp);
   const bool inertial = terms.inertial_lambda > 0.0;
   if (law == LawKind::kBekker)
     Require(terms.depth_exponent == 1.0, soil, "depth_exponent.p",
@@ -156,6 +158,11 @@ SoilContactModel MakeSoilContactModel(LawKind law, const SoilParameters& soil, d
     Require(std::isfinite(soil.bulk_density_kg_m3) && soil.bulk_density_kg_m3 > 0.0, soil, "bulk_density_kg_m3",
             "added_mass needs the soil's bulk density", soil.bulk_density_kg_m3);
     model.pad_terms.added_mass_density_kg_m3 = terms.added_mass_ca * soil.bulk_density_kg_m3;
+  }
+  if (terms.added_mass_plug_cp > 0.0) {
+    Require(std::isfinite(soil.bulk_density_kg_m3) && soil.bulk_density_kg_m3 > 0.0, soil, "bulk_density_kg_m3",
+            "added_mass_plug needs the soil's bulk density", soil.bulk_density_kg_m3);
+    model.pad_terms.plug_density_kg_m3 = terms.added_mass_plug_cp * soil.bulk_density_kg_m3;
   }
   model.law = std::move(out);
   return model;

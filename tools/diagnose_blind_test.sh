@@ -13,6 +13,7 @@
 #
 # The third argument is the sensor sampling of both the synthetic records and diagnose's comparison
 # (synth's sensor_sampling, diagnose --sensor-sampling; period_mean by default, as both commands).
+# BLIND_EFFECTS and BLIND_TERMS pick rows (default: all effects, with and without the term).
 # A few minutes on 2 cores. The hidden effects' sizes can be scaled for a power sweep:
 # BLIND_SCALE=0.25 multiplies every hidden parameter's departure from neutral by 0.25.
 set -euo pipefail
@@ -36,6 +37,7 @@ hidden() {  # the hidden_effect block of a set (the parameters of tests/drop_tes
     inertial_drag) echo "hidden_effect: {id: inertial_drag, lambda: $(sc 1.1 6.0)}" ;;
     rate_damping) echo "hidden_effect: {id: rate_damping, c_N_s_m3: $(sc 0 15000)}" ;;
     added_mass) echo "hidden_effect: {id: added_mass, c_a: $(sc 0 3.0)}" ;;
+    added_mass_plug) echo "hidden_effect: {id: added_mass_plug, c_p: $(sc 0 1.0)}" ;;
     compaction_peak) echo "hidden_effect: {id: compaction_peak, k_c_kg_m3: $(sc 0 30000), d_c_mm: 3}" ;;
     depth_exponent) echo "hidden_effect: {id: depth_exponent, p: $(sc 1 1.3)}" ;;
     gas_cushion) echo "hidden_effect: {id: gas_cushion, chi: $(sc 0 0.3), c_g_N_s_m3: $(sc 0 8000)}" ;;
@@ -48,7 +50,7 @@ printf '%-26s %-60s %-9s %s\n' "set" "selected terms (parameters)" "no term?" "h
 for term in ${BLIND_TERMS:-with without}; do
   soil=fjs1_lp
   [ "$term" = without ] && soil="$quasi_static"
-  for effect in ${BLIND_EFFECTS:-none inertial_drag rate_damping added_mass compaction_peak depth_exponent gas_cushion sensor_offset floor}; do
+  for effect in ${BLIND_EFFECTS:-none inertial_drag rate_damping added_mass added_mass_plug compaction_peak depth_exponent gas_cushion sensor_offset floor}; do
     name="${effect}_${term}_term"
     cat > "$out/$name.synth.yaml" <<SPEC
 schema_version: 1

@@ -32,6 +32,9 @@ void SetTerm(EffectId kind, const std::vector<double>& v, rft::EffectTerms& t) {
     case EffectId::kAddedMass:
       t.added_mass_ca = v[0];
       return;
+    case EffectId::kAddedMassPlug:
+      t.added_mass_plug_cp = v[0];
+      return;
     case EffectId::kCompactionPeak:
       t.compaction_k_kg_m3 = v[0], t.compaction_depth_m = v[1];
       return;
@@ -56,6 +59,8 @@ bool IsActive(EffectId kind, const rft::EffectTerms& t) {
       return t.damping_c_N_s_m3 != 0.0;
     case EffectId::kAddedMass:
       return t.added_mass_ca != 0.0;
+    case EffectId::kAddedMassPlug:
+      return t.added_mass_plug_cp != 0.0;
     case EffectId::kCompactionPeak:
       return t.compaction_k_kg_m3 != 0.0;
     case EffectId::kDepthExponent:
@@ -93,6 +98,9 @@ const std::vector<EffectInfo>& EffectLibrary() {
       {kAddedMass, "added_mass",
        "grains carried with the pad: m_a(d) = c_a rho (pi/3) a(d)^2 min(d, a(d)), entering as d(m_a v)/dt",
        {Param("c_a", "c_a", "-", 1.0, 0.0, 1e2, 1.0, 0.5)}, false, false, true},
+      {kAddedMassPlug, "added_mass_plug",
+       "dead zone under the pad: m_p(d) = c_p rho (pi/3) a(d)^3 min(1, d/d_f), d_f = 1 mm, entering as d(m_p v)/dt",
+       {Param("c_p", "c_p", "-", 1.0, 0.0, 1e2, 1.0, 0.5)}, false, false, true},
       {kCompactionPeak, "compaction_peak",
        "stress k_c (v.n)^2 exp(-d/d_c) on leading elements: F += k_c v^2 exp(-d/d_c) I3(d)",
        {Param("k_c_kg_m3", "k_c", "kg/m^3", 1.0, 0.0, 1e7, 1e4, 1e4),
@@ -172,9 +180,9 @@ rft::SoilContactModel MakeEffectLaw3D(rft::LawKind law, const rft::SoilParameter
                                       double bekker_plate_b_m) {
   rft::EffectTerms terms = t;
   if (!in_air) terms.gas_chi = terms.gas_c_N_s_m3 = 0.0;  // the gas cushion acts on beds in air only
-  if ((terms.inertial_lambda > 0.0 || terms.added_mass_ca > 0.0) && !(soil.bulk_density_kg_m3 > 0.0))
+  if (terms.NeedsDensity() && !(soil.bulk_density_kg_m3 > 0.0))
     throw MakeInputError(soil.name, "bulk_density_kg_m3",
-                         "the soil must state its bulk density for inertial_drag and added_mass (model " +
+                         "the soil must state its bulk density for inertial_drag, added_mass and added_mass_plug (model " +
                              model_source + ")");
   return rft::MakeSoilContactModel(law, soil, gravity_m_s2, terms, bekker_plate_b_m);
 }

@@ -13,7 +13,7 @@
 //    model of MakeEffectLaw3D below, the per-element terms as StressLaw3D decorators
 //    (inertial_drag rft/dynamic_term.h, rate_damping rft/rate_damping_term.h, gas_cushion
 //    rft/gas_cushion_term.h, beds in air only) and depth_exponent, compaction_peak and
-//    added_mass as the pad-level terms of rft/pad_level_terms.h. For a level axisymmetric pad
+//    added_mass and added_mass_plug as the pad-level terms of rft/pad_level_terms.h. For a level axisymmetric pad
 //    moving straight down each 3D form is the rig's.
 // depth_exponent's z_ref is 10 mm fixed, the depth scale of the paper's drops, so zeta keeps its
 // meaning at that depth. sensor_offset never changes the physics: the recorded penetration reads
@@ -36,6 +36,7 @@ enum class EffectId {
   kInertialDrag,
   kRateDamping,
   kAddedMass,
+  kAddedMassPlug,
   kCompactionPeak,
   kDepthExponent,
   kGasCushion,
@@ -93,7 +94,7 @@ std::vector<EffectId> ActiveEffectIds(const rft::EffectTerms& terms);
 std::vector<std::pair<std::string, std::string>> EffectsNotApplied(const rft::EffectTerms& terms, bool in_air);
 // The 3D contact model of `soil` under the law `law` (zeta as given, scaled to gravity) with the
 // active effect terms (rft/stress_law_3d_factory.h MakeSoilContactModel): inertial_drag and
-// added_mass (rho = the soil's bulk density, as in the rig), rate_damping, compaction_peak,
+// added_mass and added_mass_plug (rho = the soil's bulk density, as in the rig), rate_damping, compaction_peak,
 // depth_exponent, and gas_cushion when `in_air`. Throws InputError naming the soil and
 // `model_source` when an effect needs the bulk density and the soil has none.
 // `bekker_plate_b_m`: the pad's footprint dimension b for the bekker law (rft::BekkerPlateB).

@@ -185,14 +185,14 @@ void Assemble(const LanderModel& model, const StateLayout& L, const rft::Terrain
       // Janosi's j grows with the slip of the contact's reference point, the joint centre
       // (docs/bekker_soil.md says why that point); a held pad does not slip.
       if (L.has_shear && w.submerged_area_m2 > 0.0) e->shear_rate_m_s[i] = std::hypot(f.v_WJ_W.x(), f.v_WJ_W.y());
-      // added_mass (rft/entrained_mass.h): the entrained cone moves with the vertical velocity of
-      // the pad's centre of mass, as in the free drop: a mass m_a on the row e_z^T J_C, with the
+      // added_mass and added_mass_plug (rft/entrained_mass.h): the entrained grains move with the
+      // vertical velocity of the pad's centre of mass, as in the free drop: a mass m_a on the row e_z^T J_C, with the
       // accretion force -max(dm_a/dt, 0) v_z (grains join at rest, leave with the pad) and the
       // kinetic energy lost, |dm_a/dt| v_z^2 / 2.
       if (contact.pad_terms.has_added_mass()) {
         const rft::EntrainedMass ea =
-            rft::EntrainedCone(contact.pad_terms.added_mass_density_kg_m3, w.penetration_m, w.penetration_rate_m_s,
-                               w.footprint_area_m2, w.footprint_area_rate_m2_s);
+            rft::EntrainedGrains(contact.pad_terms, w.penetration_m, w.penetration_rate_m_s, w.footprint_area_m2,
+                                 w.footprint_area_rate_m2_s);
         const double v_z = (f.v_WJ_W + f.w_WP_W.cross(f.c_JC_W)).z();
         const double force_z = -ea.mass_kg * bias_C.z() - std::max(ea.rate_kg_s, 0.0) * v_z;
         for (int r = 0; r < L.nu; ++r) {  // M += m_a J_z^T J_z, Q += J_z^T force_z (no temporaries)

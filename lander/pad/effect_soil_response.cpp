@@ -17,7 +17,7 @@ EffectSoilResponse::EffectSoilResponse(const geom::AxisymmetricIntrusion& pad, c
     : pad_(pad), in_(inputs) {
   if (in_.terms.NeedsDensity() && !(in_.bulk_density_kg_m3 > 0.0))
     throw MakeInputError("", "bulk_density_kg_m3",
-                         "the soil must state its bulk density for inertial_drag and added_mass");
+                         "the soil must state its bulk density for inertial_drag, added_mass and added_mass_plug");
   zeta_qs_ = in_.zeta_N_m3 * (in_.in_air ? 1.0 - in_.terms.gas_chi : 1.0);
   i2_coefficient_ = in_.terms.damping_c_N_s_m3 + (in_.in_air ? in_.terms.gas_c_N_s_m3 : 0.0);
 }
@@ -41,17 +41,35 @@ double EffectSoilResponse::Force(double d, double v) const {
   return f;
 }
 
+// The plug (rft/entrained_mass.h) on the footprint pi a(d)^2; its rate per unit velocity is the
+// slope dm_p/dd.
+rft::EntrainedMass EffectSoilResponse::Plug(double d) const {
+  const double a = pad_.FootprintRadius(d), a_slope = pad_.FootprintRadiusSlope(d);
+  return rft::EntrainedPlug(in_.terms.added_mass_plug_cp * in_.bulk_density_kg_m3, rft::kPlugFormationDepthM, d, 1.0,
+                            kPi * a * a, 2 * kPi * a * a_slope);
+}
+
 double EffectSoilResponse::AddedMass(double d) const {
-  if (in_.terms.added_mass_ca == 0.0 || !(d > 0.0)) return 0.0;
-  const double a = pad_.FootprintRadius(d);
-  return in_.terms.added_mass_ca * in_.bulk_density_kg_m3 * kPi / 3 * a * a * std::min(d, a);
+  if (!(d > 0.0)) return 0.0;
+  double m = 0.0;
+  if (in_.terms.added_mass_ca != 0.0) {
+    const double a = pad_.FootprintRadius(d);
+    m = in_.terms.added_mass_ca * in_.bulk_density_kg_m3 * kPi / 3 * a * a * std::min(d, a);
+  }
+  if (in_.terms.added_mass_plug_cp != 0.0) m += Plug(d).mass_kg;
+  return m;
 }
 
 double EffectSoilResponse::AddedMassSlope(double d) const {
-  if (in_.terms.added_mass_ca == 0.0 || !(d > 0.0)) return 0.0;
-  const double a = pad_.FootprintRadius(d), a_slope = pad_.FootprintRadiusSlope(d);
-  const double dv = d < a ? 2 * a * a_slope * d + a * a : 3 * a * a * a_slope;
-  return in_.terms.added_mass_ca * in_.bulk_density_kg_m3 * kPi / 3 * dv;
+  if (!(d > 0.0)) return 0.0;
+  double slope = 0.0;
+  if (in_.terms.added_mass_ca != 0.0) {
+    const double a = pad_.FootprintRadius(d), a_slope = pad_.FootprintRadiusSlope(d);
+    const double dv = d < a ? 2 * a * a_slope * d + a * a : 3 * a * a * a_slope;
+    slope = in_.terms.added_mass_ca * in_.bulk_density_kg_m3 * kPi / 3 * dv;
+  }
+  if (in_.terms.added_mass_plug_cp != 0.0) slope += Plug(d).rate_kg_s;
+  return slope;
 }
 
 RecordedSample RecordedAt(const RigDropResult& r, double gravity_m_s2, const rft::EffectTerms& terms,

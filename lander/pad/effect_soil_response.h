@@ -13,6 +13,10 @@
 //                    45-degree cone of grains under the submerged footprint (radius a), grown to
 //                    the penetration depth until whole; continuous from m_a(0) = 0, so touchdown
 //                    never sees an infinite force
+//   added_mass_plug  m_p(d) = c_p rho (pi/3) a(d)^3 min(1, d/d_f), d(m_p v)/dt: the dead zone
+//                    under a flat pad, the whole cone attached over the first d_f of the stroke
+//                    (rft/entrained_mass.h, EntrainedPlug), so it hands over the momentum m_p v
+//                    with a finite force
 //   compaction_peak  F += k_c v^2 exp(-d/d_c) I_3(d)
 //   depth_exponent   zeta alpha z_ref (z/z_ref)^p instead of zeta alpha z
 //   gas_cushion      only drops in air: zeta -> (1 - chi) zeta, and F += c_g v I_2(d)
@@ -23,13 +27,14 @@
 #include "footpad_geom/axisymmetric_intrusion.h"
 #include "lander/pad/rig_drop.h"
 #include "rft/effect_terms.h"
+#include "rft/entrained_mass.h"
 
 namespace touchdown::pad {
 
 // The rig's soil response with effect terms, for one pad, soil and atmosphere.
 struct SoilResponseInputs {
   double zeta_N_m3 = 0.0;           // at the drop's gravity
-  double bulk_density_kg_m3 = 0.0;  // needed by inertial_drag and added_mass
+  double bulk_density_kg_m3 = 0.0;  // needed by inertial_drag, added_mass and added_mass_plug
   bool in_air = false;
   rft::EffectTerms terms;
 };
@@ -45,6 +50,8 @@ class EffectSoilResponse final : public VerticalSoilResponse {
   double QuasiStaticForce(double depth_m) const;
 
  private:
+  rft::EntrainedMass Plug(double depth_m) const;  // rate_kg_s: the slope dm_p/dd
+
   const geom::AxisymmetricIntrusion& pad_;
   SoilResponseInputs in_;
   double zeta_qs_;  // with the gas cushion applied

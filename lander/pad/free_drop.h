@@ -13,7 +13,7 @@
 // reaches rest in finite time; the threshold only stops the integrator from chasing the
 // direction of a vanishing velocity.
 //
-// A soil with added mass (PadLevelTerms::added_mass_density_kg_m3, rft/entrained_mass.h) adds the
+// A soil with added mass (PadLevelTerms::has_added_mass, rft/entrained_mass.h) adds the
 // entrained cone to the vertical inertia of the centre of mass (see free_drop.cpp); its
 // accretion loss counts in dissipated_energy_J, so the energy balance closes as without it.
 #include <Eigen/Core>

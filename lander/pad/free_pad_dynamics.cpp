@@ -64,8 +64,8 @@ rft::ContactWrench FreePadDynamics::Wrench(const FreePadPose& s, const rft::Soil
   return rft::ComputeContactWrench(body_.surface, k, ground_, *soil.law, soil.pad_terms);
 }
 
-// added_mass (rft/entrained_mass.h): the entrained cone moves with the centre of mass's vertical
-// velocity v_z. Grains join at rest (dm_a/dt > 0) or leave with the pad's velocity (< 0), so
+// added_mass and added_mass_plug (rft/entrained_mass.h): the entrained cone and plug move with the
+// centre of mass's vertical velocity v_z. Grains join at rest (dm_a/dt > 0) or leave with the pad's velocity (< 0), so
 // m a_z + m_a a_z = F_z - m g - max(dm_a/dt, 0) v_z (the grains' weight rests on the bed); the
 // kinetic energy lost, |dm_a/dt| v_z^2 / 2 (accretion, or carried off by shed grains), counts as
 // dissipated with the soil's work. Horizontal motion and rotation keep the pad's own inertia:
@@ -73,10 +73,9 @@ rft::ContactWrench FreePadDynamics::Wrench(const FreePadPose& s, const rft::Soil
 FreePadVertical FreePadDynamics::Vertical(const FreePadPose& s, const rft::ContactWrench& w,
                                           const rft::SoilContactModel& soil) const {
   FreePadVertical out;
-  const double added_density = soil.pad_terms.added_mass_density_kg_m3;
-  if (added_density > 0.0) {
-    const rft::EntrainedMass e = rft::EntrainedCone(added_density, w.penetration_m, w.penetration_rate_m_s,
-                                                    w.footprint_area_m2, w.footprint_area_rate_m2_s);
+  if (soil.pad_terms.has_added_mass()) {
+    const rft::EntrainedMass e = rft::EntrainedGrains(soil.pad_terms, w.penetration_m, w.penetration_rate_m_s,
+                                                      w.footprint_area_m2, w.footprint_area_rate_m2_s);
     const double v_z = s.v_WC.z();
     const double accretion = -std::max(e.rate_kg_s, 0.0) * v_z;  // upward while sinking
     out.a_z = (w.force_W.z() - m_ * g_ + accretion) / (m_ + e.mass_kg);
@@ -104,7 +103,7 @@ void FreePadDynamics::Derivative(const Eigen::Ref<const Eigen::VectorXd>& y, Eig
   ydot.segment<3>(kV) = w.force_W / m_ - Eigen::Vector3d(0.0, 0.0, g_);
   ydot.segment<3>(kW) = I_inv_ * (s.R_WB.transpose() * M_C - wb.cross(I_ * wb));
   ydot[kWork] = -(w.force_W.dot(s.v_WB) + w.moment_W.dot(s.w_W));
-  if (soil.pad_terms.added_mass_density_kg_m3 > 0.0) {
+  if (soil.pad_terms.has_added_mass()) {
     const FreePadVertical vz = Vertical(s, w, soil);
     ydot[kV + 2] = vz.a_z;
     ydot[kWork] += vz.accretion_W;

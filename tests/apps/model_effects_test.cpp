@@ -120,7 +120,7 @@ TEST_F(ModelEffects, EachEffectChangesTheRigDropTheWayItsFormSays) {
 TEST_F(ModelEffects, NeutralParametersReproduceTheBaseDropExactly) {
   const std::string neutral = Model(
       "neutral",
-      "{inertial_drag: {lambda: 0}, rate_damping: {c_N_s_m3: 0}, added_mass: {c_a: 0}, "
+      "{inertial_drag: {lambda: 0}, rate_damping: {c_N_s_m3: 0}, added_mass: {c_a: 0}, added_mass_plug: {c_p: 0}, "
       "compaction_peak: {k_c_kg_m3: 0, d_c_mm: 3}, depth_exponent: {p: 1}, gas_cushion: {chi: 0, c_g_N_s_m3: 0}, "
       "sensor_offset: {dz_mm: 0, dt_ms: 0}}");
   EXPECT_TRUE(ActiveEffects(ModelEffectTerms(LoadModelFile(neutral))).empty());
@@ -140,7 +140,8 @@ TEST_F(ModelEffects, FreeVerticalDropWithEffectsMatchesTheRigDrop) {
   // on the bottom face (the rig's I3 and I2 on the profile), compaction_peak (k_c (v.n)^2 per
   // element x exp(-z_pad/d_c): the rig's k_c v^2 exp(-d/d_c) I3), depth_exponent (z^p integrated
   // exactly per triangle: the rig's exact power law per profile piece) and added_mass (the cone on
-  // the footprint, the rig's m_a(d), on the pad's vertical inertia; force as the load cell reads it).
+  // the footprint, the rig's m_a(d), on the pad's vertical inertia; force as the load cell reads it;
+  // added_mass_plug likewise).
   // The shipped soil's own dynamic term (lambda 1.1) acts in both, hence "+dynamic" in every law.
   struct Case {
     const char* name;
@@ -155,6 +156,8 @@ TEST_F(ModelEffects, FreeVerticalDropWithEffectsMatchesTheRigDrop) {
       {"depth_curved", "{depth_exponent: {p: 0.7}}", "curved", "li2013+dynamic+depth_exponent"},
       {"mass", "{added_mass: {c_a: 3}}", "flat", "li2013+dynamic+added_mass"},
       {"mass_curved", "{added_mass: {c_a: 3}}", "curved", "li2013+dynamic+added_mass"},
+      {"plug", "{added_mass_plug: {c_p: 1}}", "flat", "li2013+dynamic+added_mass_plug"},
+      {"plug_curved", "{added_mass_plug: {c_p: 1}}", "curved", "li2013+dynamic+added_mass_plug"},
   };
   for (const Case& k : cases) {
     const std::string model = Model(k.name, k.effects);

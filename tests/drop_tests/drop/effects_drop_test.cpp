@@ -34,7 +34,7 @@ TEST_P(EveryEffect, PadDropKeepsEnergyBookkeeping) {
   }
 }
 INSTANTIATE_TEST_SUITE_P(Library, EveryEffect,
-                         ::testing::Values("inertial_drag", "rate_damping", "added_mass", "compaction_peak",
+                         ::testing::Values("inertial_drag", "rate_damping", "added_mass", "added_mass_plug", "compaction_peak",
                                            "depth_exponent", "gas_cushion", "sensor_offset"));
 
 }  // namespace

@@ -90,6 +90,7 @@ TEST_P(HiddenEffect, IsNamedRecoveredAndHalvesTheGap) {
 INSTANTIATE_TEST_SUITE_P(
     Library, HiddenEffect,
     ::testing::Values(Hidden{"inertial_drag", {6.0}}, Hidden{"rate_damping", {15000.0}}, Hidden{"added_mass", {3.0}},
+                      Hidden{"added_mass_plug", {1.0}},
                       Hidden{"compaction_peak", {3e4, 0.003}}, Hidden{"depth_exponent", {1.3}},
                       Hidden{"gas_cushion", {0.3, 8000.0}}, Hidden{"sensor_offset", {0.001, 0.003}}),
     [](const ::testing::TestParamInfo<Hidden>& i) { return std::string(i.param.id); });

@@ -53,7 +53,7 @@ TEST(EffectFile, ParsesWritesAndRejects) {
 // name, and the terms each effect sets are read back as that effect (and only it) active.
 TEST(EffectLibrary, OneTableInEnumOrder) {
   const std::vector<EffectInfo>& library = EffectLibrary();
-  ASSERT_EQ(library.size(), 7u);
+  ASSERT_EQ(library.size(), 8u);
   for (size_t i = 0; i < library.size(); ++i) {
     const EffectId kind = static_cast<EffectId>(i);
     EXPECT_EQ(library[i].kind, kind);
@@ -70,6 +70,7 @@ TEST(EffectLibrary, OneTableInEnumOrder) {
   EXPECT_TRUE(FindEffect(EffectId::kSensorOffset).measurement_only);
   EXPECT_TRUE(FindEffect(EffectId::kInertialDrag).needs_bulk_density);
   EXPECT_TRUE(FindEffect(EffectId::kAddedMass).needs_bulk_density);
+  EXPECT_TRUE(FindEffect(EffectId::kAddedMassPlug).needs_bulk_density);
 }
 
 TEST(EffectLibrary, EffectsNotAppliedFollowTheTable) {
