@@ -55,12 +55,11 @@ fs::path BenchDir() {
   return dir;
 }
 
-void BM_Sweep(benchmark::State& state) {
-  const SweepPlan plan = LoadSweepPlan((BenchDir() / "sweep.yaml").string());  // once, outside the loop
+// Times RunSweep of the kDrops-drop plan into `out` (emptied before each iteration, untimed).
+void TimeSweep(benchmark::State& state, const SweepPlan& plan, int threads, const fs::path& out) {
   SweepRunOptions options;
-  options.threads = static_cast<int>(state.range(0));
+  options.threads = threads;
   options.progress = ProgressMode::kNone;
-  const fs::path out = BenchDir() / ("out_" + std::to_string(state.range(0)));
   for (auto _ : state) {
     state.PauseTiming();
     fs::remove_all(out);
@@ -70,6 +69,11 @@ void BM_Sweep(benchmark::State& state) {
   }
   state.SetItemsProcessed(state.iterations() * kDrops);
   state.counters["drops_per_s"] = benchmark::Counter(static_cast<double>(kDrops), benchmark::Counter::kIsIterationInvariantRate);
+}
+
+void BM_Sweep(benchmark::State& state) {
+  const SweepPlan plan = LoadSweepPlan((BenchDir() / "sweep.yaml").string());  // once, outside the loop
+  TimeSweep(state, plan, static_cast<int>(state.range(0)), BenchDir() / ("out_" + std::to_string(state.range(0))));
 }
 BENCHMARK(BM_Sweep)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
 
@@ -109,20 +113,7 @@ void BM_SweepShippedVsQuasiStatic(benchmark::State& state) {
                          "grid: {pad: [flat, c4, curved]}\n"
                          "random: {samples: " << kDrops / 3 << ", seed: 1, "
                          "soil: {choice: [" << soils << "]}, impact_speed_m_s: {uniform: [0.3, 2.0]}}\n";
-  const SweepPlan plan = LoadSweepPlan(file.string());
-  SweepRunOptions options;
-  options.threads = 2;
-  options.progress = ProgressMode::kNone;
-  const fs::path out = BenchDir() / (shipped ? "out_shipped" : "out_qs");
-  for (auto _ : state) {
-    state.PauseTiming();
-    fs::remove_all(out);
-    state.ResumeTiming();
-    const SweepRunSummary s = RunSweep(plan, out.string(), options);
-    if (s.computed != kDrops || s.failed != 0) state.SkipWithError("sweep did not run every drop");
-  }
-  state.SetItemsProcessed(state.iterations() * kDrops);
-  state.counters["drops_per_s"] = benchmark::Counter(static_cast<double>(kDrops), benchmark::Counter::kIsIterationInvariantRate);
+  TimeSweep(state, LoadSweepPlan(file.string()), 2, BenchDir() / (shipped ? "out_shipped" : "out_qs"));
 }
 BENCHMARK(BM_SweepShippedVsQuasiStatic)->ArgName("shipped")->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
 

@@ -90,12 +90,19 @@ TEST_F(RareEventStudy, GridsAndChainsThatDoNotDivideAreRefusedAtLoad) {
 
 // Slopes up to 20 deg with up to 1.5 m/s downhill tip rarely enough (measured: P about 0.08 in
 // 18 landings, two levels) that subset simulation runs its chains.
-TEST_F(RareEventStudy, SubsetIsBitIdenticalOnOneThreadAndTwoAndResumes) {
-  const Study study = Load("random: {samples: 10, seed: 5, slope_deg: {uniform: [0, 20]},\n"
-                           "         horizontal_speed_m_s: {uniform: [0, 1.5]}}\n");
+constexpr const char* kSteepAndFast = "random: {samples: 10, seed: 5, slope_deg: {uniform: [0, 20]},\n"
+                                      "         horizontal_speed_m_s: {uniform: [0, 1.5]}}\n";
+
+sweep::SweepRunOptions Quiet(int threads) {
   sweep::SweepRunOptions options;
   options.progress = sweep::ProgressMode::kNone;
-  options.threads = 1;
+  options.threads = threads;
+  return options;
+}
+
+TEST_F(RareEventStudy, SubsetIsBitIdenticalOnOneThreadAndTwoAndResumes) {
+  const Study study = Load(kSteepAndFast);
+  sweep::SweepRunOptions options = Quiet(1);
   const RareEventStudyResult one = RunRareEventStudy(study, StudyMethod::kSubset, 10, Path("one"), options);
   options.threads = 2;
   const RareEventStudyResult two = RunRareEventStudy(study, StudyMethod::kSubset, 10, Path("two"), options);
@@ -126,11 +133,8 @@ TEST_F(RareEventStudy, SubsetIsBitIdenticalOnOneThreadAndTwoAndResumes) {
 // only its own landings (the design point's refinement, 1 + 7 x 4, and its sample, 10) into
 // DIR/importance/.
 TEST_F(RareEventStudy, ImportanceReusesTheSubsetRunsLandings) {
-  const Study study = Load("random: {samples: 10, seed: 5, slope_deg: {uniform: [0, 20]},\n"
-                           "         horizontal_speed_m_s: {uniform: [0, 1.5]}}\n");
-  sweep::SweepRunOptions options;
-  options.progress = sweep::ProgressMode::kNone;
-  options.threads = 2;
+  const Study study = Load(kSteepAndFast);
+  const sweep::SweepRunOptions options = Quiet(2);
   const RareEventStudyResult one = RunRareEventStudy(study, StudyMethod::kSubset, 10, Path("one"), options);
   const RareEventStudyResult importance = RunRareEventStudy(study, StudyMethod::kImportance, 10, Path("one"), options);
   ASSERT_EQ(importance.stop_signal, 0);
