@@ -103,10 +103,12 @@ def test_progress_must_be_a_bool_or_a_callable(tmp_path):
 
 def test_the_bar_is_tqdm_on_stderr_and_nothing_without_tqdm(tmp_path, capsys, monkeypatch):
     pytest.importorskip("tqdm")
-    plan = _plan(tmp_path, 5)  # 20 drops, two seconds
-    touchdown.sweep(plan, tmp_path / "bar", threads=1, progress=True)  # seconds: the bar shows after one
+    # 60 drops: several seconds even on an idle machine (20 took under the one second after which the
+    # bar shows).
+    plan = _plan(tmp_path, 15)
+    touchdown.sweep(plan, tmp_path / "bar", threads=1, progress=True)
     err = capsys.readouterr().err
-    assert "sweep: 100%" in err and "20/20" in err, err
+    assert "sweep: 100%" in err and "60/60" in err, err
     monkeypatch.setitem(sys.modules, "tqdm.auto", None)  # as if tqdm were not installed
     touchdown.sweep(plan, tmp_path / "none", threads=1, progress=True)
     assert capsys.readouterr().err == ""
