@@ -26,10 +26,12 @@
 
 namespace touchdown::rft {
 
-// The plug's formation depth d_f: about ten median grain diameters of the lunar simulants
-// (d50 ~ 0.1 mm), the depth over which a dead zone of grains is reported to lock under a flat
-// intruder. Far below the strokes of the drops (10 to 50 mm), so the momentum handed over is
-// m_p v0 to within d_f / stroke and a fitted c_p hardly depends on the exact value.
+// The plug's formation depth d_f: an assumption, not read from a source. It stands for "a few
+// grain layers" of a fine simulant (its grains well under a millimetre), the depth over which a dead
+// zone of grains locks under a flat intruder. What matters is that it lies far below the strokes of
+// the drops (10 to 50 mm): the momentum handed over is m_p v0 to within d_f / stroke, so a fitted
+// c_p hardly depends on the exact value (EffectRig.PlugTendsToTheInstantImpulse: the final depth
+// moves 1.7 um between d_f = 1 mm and the instant impact).
 inline constexpr double kPlugFormationDepthM = 1e-3;
 
 struct EntrainedMass {

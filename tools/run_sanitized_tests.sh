@@ -60,10 +60,12 @@ fi
 #   RareEventStudy.ImportanceReusesTheSubsetRunsLandings runs 57 landings to check which folder
 #   holds them; the importance estimator's code runs here on analytic limit states
 #   (tests/drop_tests/stability/rare_event_test.cpp) and the landing passes in the subset tests.
-#   Diagnose.EffectOutsideTheLibraryIsNotNamedConfidently, `diagnose` on a control whose effect
-#   lies outside the library, is left out for the same reason (63 s here, the costliest test); the
-#   other Diagnose.* cases run the same command here.
-left_out='^(CliHelp\.EveryCommandsExamplesRunAsWritten|Readme\.EveryExampleRunsAsWritten|OutputReplaceKill\..*|Determinism\..*|StabilityCli\.PatchFieldsPerLandingAreTheSameOnOneThreadAndOnTwo|SweepControl\.ExportStreamsTheSameFilesAsTheInMemoryDataset|SweepControl\.TheEvaluationLimitFailsTheSameDropsAtAnyThreadCountNamingTheLimit|LanderSimilitude\.FullScaleAtASixthOfTheGravityLandsAsTheModelWithDepthsAndTimesTimesSix|Diagnose\.EffectOutsideTheLibraryIsNotNamedConfidently|RareEventStudy\.ImportanceReusesTheSubsetRunsLandings|install_package|debian_package)$|^Library/HiddenEffect\..*/(added_mass|sensor_offset|compaction_peak|depth_exponent|rate_damping)|^Issue13/ShippedPadFreeDrop\..*/(flat|c4)'
+#   Diagnose.EffectOutsideTheLibraryIsNotNamedConfidently and
+#   Diagnose.WithoutTheTermTheFloorNamesNoLibraryEffect, `diagnose` on a control whose effect lies
+#   outside the library, are left out for the same reason (63 s here, the costliest tests); the
+#   other Diagnose.* cases run the same command here, and the selection rule they check runs here
+#   on scored models (tests/drop_tests/gap/diagnose_selection_test.cpp).
+left_out='^(CliHelp\.EveryCommandsExamplesRunAsWritten|Readme\.EveryExampleRunsAsWritten|OutputReplaceKill\..*|Determinism\..*|StabilityCli\.PatchFieldsPerLandingAreTheSameOnOneThreadAndOnTwo|SweepControl\.ExportStreamsTheSameFilesAsTheInMemoryDataset|SweepControl\.TheEvaluationLimitFailsTheSameDropsAtAnyThreadCountNamingTheLimit|LanderSimilitude\.FullScaleAtASixthOfTheGravityLandsAsTheModelWithDepthsAndTimesTimesSix|Diagnose\.EffectOutsideTheLibraryIsNotNamedConfidently|Diagnose\.WithoutTheTermTheFloorNamesNoLibraryEffect|RareEventStudy\.ImportanceReusesTheSubsetRunsLandings|install_package|debian_package)$|^Library/HiddenEffect\..*/(added_mass|sensor_offset|compaction_peak|depth_exponent|rate_damping)|^Issue13/ShippedPadFreeDrop\..*/(flat|c4)'
 start=$SECONDS
 ctest --output-on-failure --parallel "$jobs" --timeout 900 -E "$left_out"
 echo "sanitized ctest: $((SECONDS - start)) s on $jobs jobs"

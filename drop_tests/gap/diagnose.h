@@ -21,7 +21,10 @@
 //       - it beats the current model by Delta BIC >= 10 ("very strong", Kass & Raftery 1995);
 //       - parsimony: it has the fewest parameters among the step's candidates within Delta BIC < 10
 //         of the best one, and it is the only one with that few (else: ambiguous, the step adds nothing);
-//       - it cuts the held-out force NRMSE of the current model.
+//       - it cuts the held-out force NRMSE of the current model;
+//       - it explains >= half of the current model's held-out mean-square excess over the noise
+//         floor (a term that explains a small part of what remains is fitting a misfit the library
+//         does not hold, e.g. a depth exponent bending towards a rigid floor).
 //     Then the search starts again from the new model, until no term qualifies. The selected model
 //     is named when it explains most of the gap: held-out force NRMSE falls by >= 50 % from the
 //     base AND >= 80 % of the excess mean-square residual above the estimated sensor-noise floor is
@@ -52,6 +55,7 @@ struct DiagnoseOptions {
   double min_delta_bic = 10.0;
   double min_gap_reduction = 0.5;
   double min_explained = 0.8;
+  double min_step_explained = 0.5;   // of the extended model's excess, for a step to add its term
   int permutations = 2000;
   unsigned seed = 12345;             // permutation tests only
   std::optional<model::ModelFile> start_model;  // --model: starting zeta (and the file it came from)
@@ -111,6 +115,7 @@ struct CandidateScore {
   int extends = -1;            // index into Diagnosis::candidates of the model it extends, -1: the base
   double delta_bic_step = 0.0;      // vs the model it extends (positive = better)
   double step_gap_reduction = 0.0;  // 1 - held-out force NRMSE / the extended model's
+  double step_explained = 0.0;      // of the extended model's excess mean square above the noise floor
 };
 
 struct Diagnosis {

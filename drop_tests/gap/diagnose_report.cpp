@@ -78,6 +78,7 @@ nlohmann::json SelectionJson(const Diagnosis& d) {
                    {"delta_bic_vs_previous", c.delta_bic_step},
                    {"held_out_force_nrmse", c.held_out.force_nrmse},
                    {"gap_reduction_vs_previous", c.step_gap_reduction},
+                   {"explained_fraction_vs_previous", c.step_explained},
                    {"gap_reduction_vs_base", c.gap_reduction}});
   }
   return out;
@@ -133,6 +134,7 @@ nlohmann::json DiagnosisJson(const Diagnosis& d) {
       e["delta_bic_vs_base"] = c.delta_bic;
       e["delta_bic_vs_extended"] = c.delta_bic_step;
       e["gap_reduction_vs_extended"] = c.step_gap_reduction;
+      e["explained_fraction_vs_extended"] = c.step_explained;
       e["parameter_count"] = c.fit.parameters;
       e["converged"] = c.fit.converged;
       e["iterations"] = c.fit.iterations;
@@ -480,7 +482,8 @@ void WriteReport(const Diagnosis& d, const dataset::Dataset& ds, const Candidate
            "(Bonferroni).\n\n## 3. Candidates\n\n"
         << "Forward selection: each step fits every remaining term on top of the model so far and adds the best one "
            "when it beats that model by Delta BIC >= 10, is the only simplest one the data cannot tell from the best, "
-           "and cuts the held-out force NRMSE.\n\n"
+           "cuts the held-out force NRMSE, and explains at least half of that model's held-out mean-square excess over "
+           "the noise floor.\n\n"
         << "| step | model | parameters (95 % interval) | held-out force NRMSE | reduction vs base | explained | "
            "Delta BIC vs base | Delta BIC vs the step's start |\n"
         << "| --- | --- | --- | --- | --- | --- | --- | --- |\n"

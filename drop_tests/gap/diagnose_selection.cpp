@@ -25,8 +25,11 @@ std::string Short(double v) {
 void Relate(CandidateScore& c, const CandidateScore& base, const CandidateScore& current) {
   if (!c.applies) return;
   c.gap_reduction = base.held_out.force_nrmse > 0 ? 1.0 - c.held_out.force_nrmse / base.held_out.force_nrmse : 0.0;
-  const double excess = base.held_out.mean_square - base.held_out.noise_mean_square;
+  const double noise = base.held_out.noise_mean_square;
+  const double excess = base.held_out.mean_square - noise;
   c.explained = excess > 0 ? (base.held_out.mean_square - c.held_out.mean_square) / excess : 0.0;
+  const double step_excess = current.held_out.mean_square - noise;
+  c.step_explained = step_excess > 0 ? (current.held_out.mean_square - c.held_out.mean_square) / step_excess : 0.0;
   c.delta_bic = base.fit.bic - c.fit.bic;
   c.delta_bic_step = current.fit.bic - c.fit.bic;
   c.step_gap_reduction =
@@ -82,6 +85,11 @@ StepOutcome DecideStep(const Diagnosis& d, const CandidateScore& current, const 
     why << "the best candidate on top of " << from << ", " << Added(w) << " (Delta BIC " << Fixed(w.delta_bic_step, 1)
         << "), does not cut the held-out force NRMSE (" << Fixed(current.held_out.force_nrmse, 4) << " -> "
         << Fixed(w.held_out.force_nrmse, 4) << ")";
+  } else if (w.step_explained < o.min_step_explained) {
+    why << "the best candidate on top of " << from << ", " << Added(w) << " (Delta BIC " << Fixed(w.delta_bic_step, 1)
+        << "), explains only " << Fixed(100 * w.step_explained, 0) << " % of the held-out excess over the noise floor "
+        << "that " << from << " leaves (needs >= " << Fixed(100 * o.min_step_explained, 0)
+        << " %): a term that explains a small part of what remains fits a misfit the library does not hold";
   } else {
     out.chosen = simplest.front();
     // The runner-up: the best other candidate that is a real rival, i.e. not a richer model the
@@ -177,11 +185,13 @@ void SelectForward(Diagnosis& d, const DiagnoseOptions& o, const ScoreModel& sco
     const CandidateScore& w = d.candidates[current];
     for (const std::string& id : w.effect_ids)
       if (id != kWeakerDynamicTerm) d.named_effects.push_back(id);
-    d.dynamic_term_statement = DynamicTermStatement(d.problem, w);
     verdict = w.name + " explains the gap: held-out force NRMSE " + Fixed(d.base.held_out.force_nrmse, 4) + " -> " +
               Fixed(w.held_out.force_nrmse, 4) + ", " + Fixed(100 * w.explained, 0) +
               " % of the excess over the noise floor explained";
   }
+  // The statement on the soils' own term stands on the steps that selected it (each beat the model
+  // before it and explained most of what it left), even when the whole model is not named.
+  if (current >= 0) d.dynamic_term_statement = DynamicTermStatement(d.problem, d.candidates[current]);
   for (size_t i = 0; i < d.named_effects.size(); ++i)
     d.named_effect = (i ? d.named_effect + "+" : "") + d.named_effects[i];
   std::string steps_text;

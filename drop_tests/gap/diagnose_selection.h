@@ -1,8 +1,9 @@
 #pragma once
 // Forward selection of `touchdown diagnose` (diagnose.h, step 3): from the base, add the best
 // candidate term while it beats the current model by Delta BIC >= min_delta_bic, is the only
-// simplest one among those the data cannot tell from the best (parsimony), and cuts the held-out
-// force NRMSE of the current model; then search again from the new model. The selected model is
+// simplest one among those the data cannot tell from the best (parsimony), cuts the held-out force
+// NRMSE of the current model and explains >= min_step_explained of its held-out excess over the
+// noise floor; then search again from the new model. The selected model is
 // named when it explains most of the base's gap (min_gap_reduction, min_explained).
 #include <functional>
 #include <string>
@@ -17,7 +18,7 @@ namespace touchdown::gap {
 using ScoreModel = std::function<CandidateScore(const std::vector<std::string>& ids, const FitResult& start)>;
 
 // Fills d.candidates (every step's, with step, extends, delta_bic_step and step_gap_reduction;
-// gap_reduction, explained and delta_bic against d.base), d.selection, d.winner, d.named_effect(s),
+// step_explained; gap_reduction, explained and delta_bic against d.base), d.selection, d.winner, d.named_effect(s),
 // d.dynamic_term_statement and d.decision. d.base must be scored.
 void SelectForward(Diagnosis& d, const DiagnoseOptions& options, const ScoreModel& score, io::Progress& progress);
 

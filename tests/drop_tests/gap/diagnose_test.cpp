@@ -141,5 +141,17 @@ TEST(Diagnose, WithoutTheTermNothingHiddenNamesOnlyTheTermsAbsence) {
   EXPECT_FALSE(d.dynamic_term_statement.empty());
 }
 
+// The out-of-library floor in data without the term: the term's absence may be selected, and said,
+// but no library effect is named (a depth exponent bent towards the floor was, before each step had to
+// explain most of what the model before it left).
+TEST(Diagnose, WithoutTheTermTheFloorNamesNoLibraryEffect) {
+  dataset::SynthSpec spec = WithoutTheTerm(SmallSpec());
+  spec.floor = dataset::FloorStiffening{};
+  const Diagnosis d = Diagnose(spec);
+  EXPECT_EQ(d.named_effect, "none") << d.decision;
+  for (int i : d.selection)
+    EXPECT_EQ(d.candidates[i].effect_ids.back(), kWeakerDynamicTerm) << d.decision;
+}
+
 }  // namespace
 }  // namespace touchdown::gap
