@@ -1,9 +1,11 @@
 #include "drop_tests/scenario/lander_scenario_file.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <functional>
 #include <optional>
+#include <stdexcept>
 #include <variant>
 
 #include "drop_tests/formats/dataset_csv.h"  // io::FormatNumber
@@ -223,6 +225,16 @@ const io::FieldTable<LanderInitialSpec>& AttitudeNumberFields() {
   return fields;
 }
 
+constexpr const char* kReleaseBodyComKey = "release_body_com_m";
+
+// The field of `table` with `key`; a key the table does not hold is a bug in the key list.
+template <typename T>
+const io::NumberField<T>& FieldNamed(const io::FieldTable<T>& table, const std::string& key) {
+  for (const io::NumberField<T>& field : table)
+    if (key == field.key) return field;
+  throw std::logic_error("lander scenario: no writer for initial." + key);
+}
+
 const io::FieldTable<lander::LanderRunOptions>& RunNumberFields() {
   using R = lander::LanderRunOptions;
   static const io::FieldTable<R> fields{
@@ -359,10 +371,8 @@ LanderGroundSpec ReadGround(const io::YamlFields& g, double gravity_m_s2, bool r
 // A resolved copy's release also states the body's position (checked by the caller).
 LanderInitialSpec ReadInitial(const io::YamlFields& in, bool resolved) {
   LanderInitialSpec ic;
-  std::vector<std::string> known{"drop_height_m", "touchdown_speed_m_s", "release_vertical_speed_m_s",
-                                 "horizontal_velocity_m_s", "roll_deg", "pitch_deg", "yaw_relative_to_slope_deg",
-                                 "align_to_slope", "angular_rate_deg_s", "pad_attitude"};
-  if (resolved) known.push_back("release_body_com_m");
+  std::vector<std::string> known = LanderInitialKeys();
+  if (!resolved) known.erase(std::find(known.begin(), known.end(), kReleaseBodyComKey));
   in.RequireOnly(known);
   if (in.Has("drop_height_m") == in.Has("touchdown_speed_m_s"))
     in.Fail("drop_height_m", "give exactly one of drop_height_m and touchdown_speed_m_s");
@@ -446,6 +456,17 @@ void ReadSimulation(const io::YamlFields& sim, lander::LanderRunOptions& options
   if (!options.integrator.IsValid(&why)) sim.Fail("rtol", why);
 }
 }  // namespace
+
+const std::vector<std::string>& LanderInitialKeys() {
+  static const std::vector<std::string> keys = [] {
+    std::vector<std::string> k{"drop_height_m", "release_vertical_speed_m_s", "touchdown_speed_m_s",
+                               "horizontal_velocity_m_s"};
+    for (const std::string& attitude : io::FieldKeys(AttitudeNumberFields())) k.push_back(attitude);
+    for (const char* rest : {"align_to_slope", "angular_rate_deg_s", "pad_attitude", kReleaseBodyComKey}) k.push_back(rest);
+    return k;
+  }();
+  return keys;
+}
 
 namespace {
 void WriteLanderBlock(YAML::Emitter& y, const LanderSpec& l, const std::function<std::string(const std::string&)>& file);
@@ -656,19 +677,30 @@ void WriteResolvedLanderScenario(const LanderScenario& s, const LanderSetup& set
   y << YAML::EndSeq << YAML::EndMap;
   const LanderInitialSpec& ic = s.initial;
   y << YAML::Key << "initial" << YAML::Value << YAML::BeginMap;
-  if (ic.drop_height_m)
-    y << YAML::Key << "drop_height_m" << YAML::Value << *ic.drop_height_m << YAML::Key << "release_vertical_speed_m_s"
-      << YAML::Value << ic.release_vertical_speed_m_s;
-  else
-    y << YAML::Key << "touchdown_speed_m_s" << YAML::Value << *ic.touchdown_speed_m_s;
-  y << YAML::Key << "horizontal_velocity_m_s" << YAML::Value << YAML::Flow << YAML::BeginSeq
-    << ic.horizontal_velocity_m_s.x() << ic.horizontal_velocity_m_s.y() << YAML::EndSeq;
-  io::WriteFields(y, AttitudeNumberFields(), ic);
-  y << YAML::Key << "align_to_slope" << YAML::Value << ic.align_to_slope << YAML::Key << "angular_rate_deg_s"
-    << YAML::Value;
-  WriteVector(y, ic.angular_rate_B, 1.0 / kDeg);
-  y << YAML::Key << "pad_attitude" << YAML::Value << PadAttitudeName(ic.pad_attitude) << YAML::Key << "release_body_com_m" << YAML::Value;
-  WriteVector(y, setup.initial.p_WB, 1.0);
+  // Every key from the one list the reader accepts (LanderInitialKeys), in its order.
+  for (const std::string& key : LanderInitialKeys()) {
+    if (key == "drop_height_m" || key == "release_vertical_speed_m_s") {
+      if (!ic.drop_height_m) continue;
+      y << YAML::Key << key << YAML::Value << (key == "drop_height_m" ? *ic.drop_height_m : ic.release_vertical_speed_m_s);
+    } else if (key == "touchdown_speed_m_s") {
+      if (ic.touchdown_speed_m_s) y << YAML::Key << key << YAML::Value << *ic.touchdown_speed_m_s;
+    } else if (key == "horizontal_velocity_m_s") {
+      y << YAML::Key << key << YAML::Value << YAML::Flow << YAML::BeginSeq << ic.horizontal_velocity_m_s.x()
+        << ic.horizontal_velocity_m_s.y() << YAML::EndSeq;
+    } else if (key == "align_to_slope") {
+      y << YAML::Key << key << YAML::Value << ic.align_to_slope;
+    } else if (key == "angular_rate_deg_s") {
+      y << YAML::Key << key << YAML::Value;
+      WriteVector(y, ic.angular_rate_B, 1.0 / kDeg);
+    } else if (key == "pad_attitude") {
+      y << YAML::Key << key << YAML::Value << PadAttitudeName(ic.pad_attitude);
+    } else if (key == kReleaseBodyComKey) {
+      y << YAML::Key << key << YAML::Value;
+      WriteVector(y, setup.initial.p_WB, 1.0);
+    } else {
+      io::WriteFields(y, io::FieldTable<LanderInitialSpec>{FieldNamed(AttitudeNumberFields(), key)}, ic);
+    }
+  }
   y << YAML::EndMap;
   y << YAML::Key << "simulation" << YAML::Value << YAML::BeginMap;
   io::WriteFields(y, RunNumberFields(), s.options);

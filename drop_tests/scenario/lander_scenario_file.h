@@ -4,6 +4,7 @@
 // docs/lander_dynamics.md.
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "drop_tests/catalog/catalog.h"
 #include "drop_tests/formats/yaml_fields.h"
@@ -27,6 +28,10 @@ LanderScenario LoadLanderScenarioWithSetup(const std::string& path, std::optiona
 // The scenario with its pads meshed as their file says (undoing simulation.pad_angular_segments): a
 // study's reference model when its own landings run on coarser pads (stability re-checks).
 LanderScenario AtPadFileMesh(const LanderScenario& scenario);
+
+// The keys of a scenario's `initial` block, in the order a resolved copy writes them: the reader
+// accepts these (release_body_com_m only in a resolved copy) and the writer writes from this list.
+const std::vector<std::string>& LanderInitialKeys();
 
 // The files named are written for `output_dir`, the directory the file finally lives in
 // (drop_tests/catalog/paths_in_outputs.h: no absolute paths of this machine). `setup` is the

@@ -6,9 +6,13 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <optional>
+#include <set>
+
+#include <yaml-cpp/yaml.h>
 
 #include "drop_tests/catalog/catalog.h"
 #include "drop_tests/scenario/lander_outputs.h"
@@ -120,6 +124,32 @@ TEST_F(LanderScenarioRoundTrip, OptionsAndAttitude) {
   const std::string text = Slurp(Path("out/tilted_1.yaml"));
   EXPECT_NE(text.find("max_step_s: 0.001"), std::string::npos);
   EXPECT_NE(text.find("source: ../tilted.yaml"), std::string::npos);
+}
+
+// The `initial` block is read and written from one key list: a resolved copy writes its keys in
+// that list's order and nothing else, and a copy from a drop height and one from a touchdown speed
+// write every key of it between them.
+TEST_F(LanderScenarioRoundTrip, InitialBlockIsWrittenFromTheKeysItIsReadWith) {
+  std::ofstream(Path("speed.yaml")) << "schema_version: 1\ntype: lander\nname: speed\nlander: sutoh2017_lander\n"
+                                       "ground: {soil: fjs1_lp}\ninitial: {touchdown_speed_m_s: 1.2, pitch_deg: 3}\n";
+  std::ofstream(Path("height.yaml")) << "schema_version: 1\ntype: lander\nname: height\nlander: sutoh2017_lander\n"
+                                        "ground: {soil: fjs1_lp}\ninitial: {drop_height_m: 0.1}\n";
+  const std::vector<std::string>& keys = LanderInitialKeys();
+  std::set<std::string> written;
+  for (const char* name : {"speed", "height"}) {
+    SCOPED_TRACE(name);
+    const std::string copy = Path(std::string(name) + "_resolved.yaml");
+    WriteResolvedLanderScenario(LoadLanderScenario(Path(std::string(name) + ".yaml")), copy, dir_.string());
+    size_t at = 0;  // the keys come in the list's order
+    for (const auto& kv : YAML::LoadFile(copy)["initial"]) {
+      const std::string key = kv.first.as<std::string>();
+      const auto it = std::find(keys.begin() + at, keys.end(), key);
+      ASSERT_NE(it, keys.end()) << key << " is written out of order or is not in LanderInitialKeys";
+      at = static_cast<size_t>(it - keys.begin()) + 1;
+      written.insert(key);
+    }
+  }
+  EXPECT_EQ(written, std::set<std::string>(keys.begin(), keys.end()));
 }
 
 // simulation.pad_angular_segments re-meshes the lander's revolved pads (a resolution, like rtol): the
