@@ -165,8 +165,15 @@ void PrintRareEventResult(const stability::Study& study, const stability::RareEv
 // of its first level with the estimate in summary.json.
 void RunRareEventCommand(const StabilityArgs& args, const stability::Study& study, stability::StudyMethod method,
                          int64_t samples, const sweep::SweepRunOptions& options) {
-  const stability::RareEventStudyResult r = stability::RunRareEventStudy(
-      study, method, samples, args.out, options, options.progress == sweep::ProgressMode::kNone ? nullptr : &std::cerr);
+  // Under mpirun every rank runs the estimator (the landings are shared out); rank 0 reports and writes.
+  const int rank = sweep::RankFromMpirun();
+  const bool quiet = options.progress == sweep::ProgressMode::kNone || rank != 0;
+  const stability::RareEventStudyResult r =
+      stability::RunRareEventStudy(study, method, samples, args.out, options, quiet ? nullptr : &std::cerr);
+  if (rank != 0) {
+    if (r.stop_signal != 0) std::exit(128 + r.stop_signal);
+    return;
+  }
   if (r.stop_signal != 0) {
     std::cout << "stability " << study.plan.name << ": stopped by signal " << r.stop_signal
               << " after committing the landings in flight; run the same command again to resume\n";
@@ -213,9 +220,10 @@ void AddStabilityCommand(CLI::App& app) {
     if (rare_event) {
       const int64_t per_level = given_samples.value_or(stability::kDefaultRareEventSamples);
       stability::RequireRareEventStudy(study, method, per_level);
-      if (options.shard.count > 1 || sweep::LaunchedByMpirun())
-        throw MakeInputError("", "--method", args->method + " runs on one process and its threads (its landings "
-                                             "depend on the ones before): no --shard, no mpirun");
+      if (options.shard.count > 1)
+        throw MakeInputError("", "--shard", "--method " + args->method + " chooses each batch of landings from the ones "
+                                            "before, so it cannot be split into independent shards: run it on one "
+                                            "process's threads, or on MPI (mpirun -np N touchdown stability ...)");
       io::OpenOutputDirectory({args->out, {args->study, args->run.model}}, io::OutputKind::kSweep);
       const sweep::StopOnSignals stop_on_signals;
       options.stop = &sweep::StopOnSignals::flag();

@@ -14,11 +14,9 @@ extern char** environ;
 
 namespace touchdown::testing_process {
 
-// The pid of the started process, or -1 when it could not be started.
-inline pid_t StartTouchdown(const std::vector<std::string>& args, const std::string& working_dir = "",
-                            const std::string& stdout_path = "/dev/null", const std::string& stderr_path = "/dev/null") {
-  std::vector<std::string> words = {TOUCHDOWN_BINARY};
-  words.insert(words.end(), args.begin(), args.end());
+// The pid of the started program (words[0], looked up on PATH), or -1 when it could not be started.
+inline pid_t StartProgram(std::vector<std::string> words, const std::string& working_dir = "",
+                          const std::string& stdout_path = "/dev/null", const std::string& stderr_path = "/dev/null") {
   std::vector<char*> argv;
   for (std::string& w : words) argv.push_back(w.data());
   argv.push_back(nullptr);
@@ -28,9 +26,17 @@ inline pid_t StartTouchdown(const std::vector<std::string>& args, const std::str
   posix_spawn_file_actions_addopen(&actions, 1, stdout_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
   posix_spawn_file_actions_addopen(&actions, 2, stderr_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
   pid_t pid = -1;
-  const int error = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
+  const int error = posix_spawnp(&pid, argv[0], &actions, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
   return error == 0 ? pid : -1;
+}
+
+// The pid of touchdown started with `args`, or -1 when it could not be started.
+inline pid_t StartTouchdown(const std::vector<std::string>& args, const std::string& working_dir = "",
+                            const std::string& stdout_path = "/dev/null", const std::string& stderr_path = "/dev/null") {
+  std::vector<std::string> words = {TOUCHDOWN_BINARY};
+  words.insert(words.end(), args.begin(), args.end());
+  return StartProgram(words, working_dir, stdout_path, stderr_path);
 }
 
 // The raw wait status of a started process (WIFEXITED, WEXITSTATUS, WTERMSIG apply).

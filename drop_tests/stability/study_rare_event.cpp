@@ -16,6 +16,8 @@
 #include "drop_tests/stability/study_followups.h"
 #include "drop_tests/stability/study_outputs.h"
 #include "drop_tests/stability/study_summary.h"
+#include "drop_tests/sweep/results_db.h"
+#include "drop_tests/sweep/sweep_mpi.h"
 #include "rft/input_error.h"
 
 namespace touchdown::stability {
@@ -68,23 +70,27 @@ class LandingLimitState {
     sweep::SweepRunOptions o = options_;
     o.indices = std::vector<int64_t>();
     for (int64_t i = first; i < first + n; ++i) o.indices->push_back(i);
-    const sweep::SweepRunSummary run = sweep::RunSweep(plan, dir_, o);
+    // Under mpirun every rank runs the estimator in step: the batch's landings are shared out
+    // over the ranks, rank 0 stores them and hands every rank the batch's records (and whether
+    // the run was stopped), so each rank chooses the same next points.
+    const bool mpi = sweep::LaunchedByMpirun();
+    int rank = 0;
+    const sweep::SweepRunSummary run = mpi ? sweep::RunSweepMpi(plan, dir_, o, &rank) : sweep::RunSweep(plan, dir_, o);
     result_.computed += run.computed;
     result_.already_done += run.already_done;
-    if (run.stop_signal != 0) throw StoppedBySignal{run.stop_signal};
-    std::vector<DropRecord> batch(static_cast<size_t>(n));
-    std::vector<char> seen(static_cast<size_t>(n), 0);
-    const sweep::ResultsDb db(sweep::ResultsDbPath(dir_), sweep::ResultsDb::Access::kReadOnly);
-    db.ForEach(
-        [&](const DropRecord& r) {
-          if (r.index >= first && r.index < first + n) batch[r.index - first] = r, seen[r.index - first] = 1;
-        },
-        /*with_traces=*/false);
+    std::vector<DropRecord> batch;
+    int stop_signal = run.stop_signal;
+    if (rank == 0 && stop_signal == 0) batch = StoredBatch(first, n);
+    if (mpi) {
+      const std::string shared = sweep::BroadcastFromRankZero(
+          rank != 0 ? std::string() : stop_signal != 0 ? "S" + std::to_string(stop_signal) : "R" + sweep::SerializeRecords(batch));
+      if (shared.front() == 'S') stop_signal = std::stoi(shared.substr(1));
+      else if (rank != 0) batch = sweep::DeserializeRecords(shared.substr(1));
+    }
+    if (stop_signal != 0) throw StoppedBySignal{stop_signal};
     g.resize(u.size());
     for (int64_t k = 0; k < n; ++k) {
-      if (!seen[k])  // the engine ran every listed landing: a missing one is a bug
-        throw std::logic_error("rare-event landing " + std::to_string(first + k) + " missing from " + dir_);
-      const DropRecord& r = batch[k];
+      const DropRecord& r = batch[static_cast<size_t>(k)];
       g[k] = LimitStateOfLanding(r);
       result_.failed += !r.ok;
       result_.margin_disagreements += r.ok && !std::isnan(r.min_stability_margin_m) &&
@@ -96,6 +102,22 @@ class LandingLimitState {
   }
 
   const std::vector<DropRecord>& records() const { return records_; }
+
+  // Landings first..first+n-1 as stored in dir_, in index order.
+  std::vector<DropRecord> StoredBatch(int64_t first, int64_t n) const {
+    std::vector<DropRecord> batch(static_cast<size_t>(n));
+    std::vector<char> seen(static_cast<size_t>(n), 0);
+    const sweep::ResultsDb db(sweep::ResultsDbPath(dir_), sweep::ResultsDb::Access::kReadOnly);
+    db.ForEach(
+        [&](const DropRecord& r) {
+          if (r.index >= first && r.index < first + n) batch[r.index - first] = r, seen[r.index - first] = 1;
+        },
+        /*with_traces=*/false);
+    for (int64_t k = 0; k < n; ++k)
+      if (!seen[k])  // the engine ran every listed landing: a missing one is a bug
+        throw std::logic_error("rare-event landing " + std::to_string(first + k) + " missing from " + dir_);
+    return batch;
+  }
   const std::vector<Eigen::VectorXd>& points() const { return points_; }
   const std::vector<double>& values() const { return values_; }
 

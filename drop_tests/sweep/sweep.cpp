@@ -177,23 +177,37 @@ void SweepProgress::Add(const std::vector<DropRecord>& records) {
 
 void SweepProgress::Finish() { progress_.Finish(Detail()); }
 
+DropsToRun::DropsToRun(int64_t total, const ResultsDb& db, const SweepRunOptions& options)
+    : remaining_(total, db, options.shard) {
+  // With a list of drops, only those (and only their part of the shard) are this run's.
+  if (options.indices) {
+    const std::vector<int64_t> listed = ListedDropsOfShard(*options.indices, total, options.shard);
+    listed_todo_ = ListedDropsToDo(listed, db);
+    in_shard_ = static_cast<int64_t>(listed.size());
+    already_done_ = in_shard_ - static_cast<int64_t>(listed_todo_->size());
+  } else {
+    in_shard_ = (total - options.shard.index + options.shard.count - 1) / options.shard.count;
+    already_done_ = db.CountBelow(total);
+  }
+}
+
+std::vector<int64_t> DropsToRun::Next(size_t max) {
+  if (!listed_todo_) return remaining_.Next(max);
+  const size_t n = std::min(max, listed_todo_->size() - listed_fed_);
+  std::vector<int64_t> chunk(listed_todo_->begin() + listed_fed_, listed_todo_->begin() + listed_fed_ + n);
+  listed_fed_ += n;
+  return chunk;
+}
+
 SweepRunSummary RunSweep(const SweepPlan& plan, const std::string& out_dir, const SweepRunOptions& options) {
   const double start = Now();
   SweepStore store = OpenSweepStore(plan, out_dir, options.shard);
   ResultsDb& db = *store.db;
   SweepRunSummary summary;
   summary.total = plan.size();
-  // With a list of drops, only those (and only their part of the shard) are this run's.
-  std::vector<int64_t> listed_todo;
-  if (options.indices) {
-    const std::vector<int64_t> listed = ListedDropsOfShard(*options.indices, plan.size(), options.shard);
-    listed_todo = ListedDropsToDo(listed, db);
-    summary.in_shard = static_cast<int64_t>(listed.size());
-    summary.already_done = summary.in_shard - static_cast<int64_t>(listed_todo.size());
-  } else {
-    summary.in_shard = (plan.size() - options.shard.index + options.shard.count - 1) / options.shard.count;
-    summary.already_done = db.CountBelow(plan.size());
-  }
+  DropsToRun todo(plan.size(), db, options);
+  summary.in_shard = todo.in_shard();
+  summary.already_done = todo.already_done();
   summary.retried = store.retried;
   summary.threads = options.threads > 0 ? options.threads : DefaultThreads();
   SweepProgress progress(options.log ? *options.log : std::cerr, options.progress, options.progress_interval_s,
@@ -201,17 +215,9 @@ SweepRunSummary RunSweep(const SweepPlan& plan, const std::string& out_dir, cons
   if (summary.already_done < summary.in_shard) {
     const SweepModels models(plan);
     DropEngine engine(models, summary.threads);
-    RemainingDrops todo(plan.size(), db, options.shard);
-    size_t listed_fed = 0;
     EngineDriver driver;
     driver.feed_low = kFeedLow;
-    driver.next = [&] {
-      if (!options.indices) return todo.Next(kFeedChunk);
-      const size_t n = std::min(kFeedChunk, listed_todo.size() - listed_fed);
-      std::vector<int64_t> chunk(listed_todo.begin() + listed_fed, listed_todo.begin() + listed_fed + n);
-      listed_fed += n;
-      return chunk;
-    };
+    driver.next = [&] { return todo.Next(kFeedChunk); };
     driver.commit = [&](std::vector<DropRecord> batch) {
       db.Insert(batch);  // one transaction: all of the batch or none of it
       summary.computed += static_cast<int64_t>(batch.size());

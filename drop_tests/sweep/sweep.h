@@ -107,6 +107,23 @@ class RemainingDrops {
   int64_t next_;  // the next index of the shard not yet looked at
 };
 
+// The drops one run (RunSweep, or rank 0 of RunSweepMpi) is responsible for: the shard's part of
+// options.indices when given (ascending, each once), else every drop of the shard; how many that
+// is, how many are stored already, and the rest a chunk at a time.
+class DropsToRun {
+ public:
+  DropsToRun(int64_t total, const ResultsDb& db, const SweepRunOptions& options);
+  int64_t in_shard() const { return in_shard_; }
+  int64_t already_done() const { return already_done_; }
+  std::vector<int64_t> Next(size_t max);  // empty: none left
+
+ private:
+  RemainingDrops remaining_;
+  std::optional<std::vector<int64_t>> listed_todo_;
+  size_t listed_fed_ = 0;
+  int64_t in_shard_ = 0, already_done_ = 0;
+};
+
 SweepRunSummary RunSweep(const SweepPlan& plan, const std::string& out_dir, const SweepRunOptions& options);
 // All drops in memory, index order, on `threads` threads (0: every core); no database.
 std::vector<DropRecord> RunSweepInMemory(const SweepPlan& plan, int threads);

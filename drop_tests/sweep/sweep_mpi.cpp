@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <iostream>
+#include <optional>
 #include <stdexcept>
 
 #include "drop_tests/sweep/sweep_engine.h"
@@ -22,6 +23,13 @@ int EnvInt(const char* name) {
 }
 }  // namespace
 
+int RankFromMpirun() {
+  if (!LaunchedByMpirun()) return 0;
+  for (const char* name : {"OMPI_COMM_WORLD_RANK", "PMI_RANK", "PMIX_RANK"})
+    if (std::getenv(name)) return EnvInt(name);
+  return 0;
+}
+
 bool LaunchedByMpirun() {
   for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_SIZE", "MPI_LOCALNRANKS"})
     if (EnvInt(name) > 1) return true;
@@ -32,6 +40,7 @@ bool LaunchedByMpirun() {
 SweepRunSummary RunSweepMpi(const SweepPlan&, const std::string&, const SweepRunOptions&, int*) {
   throw MakeInputError("", "mpirun", "this touchdown was built without MPI (TOUCHDOWN_WITH_MPI=OFF)");
 }
+std::string BroadcastFromRankZero(const std::string& text) { return text; }
 #else
 namespace {
 constexpr int kTagResults = 1;  // rank -> 0: serialised records
@@ -40,6 +49,8 @@ constexpr int kTagRequest = 3;  // rank -> 0: uint64 count of indices wanted
 constexpr int kTagWork = 4;     // 0 -> rank: int64 drop indices (none: no more work)
 constexpr size_t kFeedLow = 256;  // a rank's queue length below which it asks for more
 
+// One MPI session per process: MPI may be initialised and finalised once only, and a rare-event
+// study runs many sweeps. Started by the first RunSweepMpi, finalised at exit.
 class MpiSession {
  public:
   MpiSession() {
@@ -48,6 +59,13 @@ class MpiSession {
   }
   ~MpiSession() { MPI_Finalize(); }
 };
+
+bool mpi_started = false;
+
+void StartMpi() {
+  static const MpiSession session;
+  mpi_started = true;
+}
 
 // Rank 0 sends an error message (or "" for go-ahead) to every rank, so all stop together.
 std::string BroadcastText(std::string text, int rank) {
@@ -94,9 +112,7 @@ void RunWorkerRank(DropEngine& engine, const SweepRunOptions& options, SweepRunS
 
 SweepRunSummary RunSweepMpi(const SweepPlan& plan, const std::string& out_dir, const SweepRunOptions& options,
                             int* rank_out) {
-  // A list of drops (a study's follow-ups) runs on one rank with RunSweep.
-  if (options.indices) throw std::invalid_argument("RunSweepMpi runs every drop of the plan, not a list of them");
-  MpiSession session;
+  StartMpi();
   int rank = 0, ranks = 1;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   MPI_Comm_size(MPI_COMM_WORLD, &ranks);
@@ -104,7 +120,6 @@ SweepRunSummary RunSweepMpi(const SweepPlan& plan, const std::string& out_dir, c
   SweepRunSummary summary;
   summary.ranks = ranks;
   summary.total = plan.size();
-  summary.in_shard = (plan.size() - options.shard.index + options.shard.count - 1) / options.shard.count;
   const int local = EnvInt("OMPI_COMM_WORLD_LOCAL_SIZE");
   summary.threads = options.threads > 0 ? options.threads : DefaultThreads(local > 0 ? local : 1);
   const double start = MPI_Wtime();
@@ -112,10 +127,13 @@ SweepRunSummary RunSweepMpi(const SweepPlan& plan, const std::string& out_dir, c
   // Rank 0: lock the directory and open the database; everyone learns the outcome.
   SweepStore store;
   std::string error;
+  std::optional<DropsToRun> todo;
   if (rank == 0) {
     try {
       store = OpenSweepStore(plan, out_dir, options.shard);
-      summary.already_done = store.db->CountBelow(plan.size());
+      todo.emplace(plan.size(), *store.db, options);
+      summary.in_shard = todo->in_shard();
+      summary.already_done = todo->already_done();
       summary.retried = store.retried;
     } catch (const std::exception& e) {
       error = e.what();
@@ -134,7 +152,6 @@ SweepRunSummary RunSweepMpi(const SweepPlan& plan, const std::string& out_dir, c
   }
 
   ResultsDb& db = *store.db;
-  RemainingDrops todo(plan.size(), db, options.shard);
   SweepProgress progress(options.log ? *options.log : std::cerr, options.progress, options.progress_interval_s,
                          summary.in_shard, summary.already_done, options.progress_quiet_s, options.progress_counts);
   int ranks_running = ranks - 1;
@@ -150,7 +167,7 @@ SweepRunSummary RunSweepMpi(const SweepPlan& plan, const std::string& out_dir, c
     if (summary.stop_signal == 0) summary.stop_signal = signal;
     engine.Stop();
   };
-  auto feed = [&] { engine.Feed(kFeedLow, [&] { return todo.Next(4 * kFeedLow); }); };
+  auto feed = [&] { engine.Feed(kFeedLow, [&] { return todo->Next(4 * kFeedLow); }); };
   feed();
   while (!engine.Finished() || ranks_running > 0) {
     if (StopRequested(options)) stop(options.stop->load());
@@ -173,7 +190,7 @@ SweepRunSummary RunSweepMpi(const SweepPlan& plan, const std::string& out_dir, c
         if (buffer.size() == sizeof want) std::memcpy(&want, buffer.data(), sizeof want);
         // Rank 0's own queue and the cursor share one order; the split between ranks never
         // shows in the results (each is a function of its index alone).
-        const std::vector<int64_t> work = stopping ? std::vector<int64_t>{} : todo.Next(static_cast<size_t>(want));
+        const std::vector<int64_t> work = stopping ? std::vector<int64_t>{} : todo->Next(static_cast<size_t>(want));
         MPI_Send(work.data(), static_cast<int>(work.size()), MPI_INT64_T, status.MPI_SOURCE, kTagWork, MPI_COMM_WORLD);
       } else {
         commit(DeserializeRecords(buffer));
@@ -193,6 +210,13 @@ SweepRunSummary RunSweepMpi(const SweepPlan& plan, const std::string& out_dir, c
   summary.failed = db.CountFailed();
   summary.seconds = MPI_Wtime() - start;
   return summary;
+}
+
+std::string BroadcastFromRankZero(const std::string& text) {
+  if (!mpi_started) return text;
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  return BroadcastText(text, rank);
 }
 #endif
 

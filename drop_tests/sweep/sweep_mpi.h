@@ -1,5 +1,5 @@
 #pragma once
-// `mpirun -np N touchdown sweep ...`: every rank loads the plan; rank 0 locks the output
+// `mpirun -np N touchdown sweep ...` (and `stability`, rare-event methods included): every rank loads the plan; rank 0 locks the output
 // directory (the other ranks never touch it, so ranks of one run cannot refuse each other),
 // opens the results database and finds the drops still missing a chunk at a time (so a restart
 // works with any N, and memory does not grow with the plan). The other ranks ask rank 0 for
@@ -18,10 +18,19 @@ namespace touchdown::sweep {
 // PMIx environment variables), so the sweep should run on MPI.
 bool LaunchedByMpirun();
 
-// Initialises MPI, runs the sweep over all ranks, finalises MPI. On ranks other than 0 the
-// returned summary only counts that rank's own drops. Throws InputError on every rank when
-// the plan or the database is refused.
+// Runs the sweep over all ranks, starting MPI on the first call (it is finalised when the process
+// exits, so a run of several sweeps, a rare-event study's batches, uses one session). With
+// options.indices only those drops run (rank 0 hands them out). On ranks other than 0 the returned
+// summary only counts that rank's own drops. Throws InputError on every rank when the plan or the
+// database is refused.
 SweepRunSummary RunSweepMpi(const SweepPlan& plan, const std::string& out_dir, const SweepRunOptions& options,
                             int* rank = nullptr);
+
+// The rank mpirun gave this process (OMPI_COMM_WORLD_RANK, PMI_RANK or PMIX_RANK), known before
+// MPI starts; 0 when not launched by mpirun.
+int RankFromMpirun();
+// Rank 0's `text` on every rank (collective: every rank calls it, in the same order); `text` itself
+// when MPI has not been started.
+std::string BroadcastFromRankZero(const std::string& text);
 
 }  // namespace touchdown::sweep

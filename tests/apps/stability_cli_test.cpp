@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -268,6 +269,47 @@ TEST_F(StabilityCli, SubsetMethodWritesItsEstimateAndDesignPoints) {
   EXPECT_NE(r.out.find("(subset): " + std::to_string(e["landings_spent"].get<int>()) + " landings spent"),
             std::string::npos) << r.out;
   EXPECT_NE(r.out.find("design point "), std::string::npos) << r.out;
+}
+
+// `mpirun -np 2 touchdown stability --method subset`: both ranks run the estimator, the landings
+// are shared out, and rank 0 stores the same landings and writes the same estimate as one process.
+TEST_F(StabilityCli, SubsetOnMpiEqualsTheSingleProcess) {
+#ifndef TOUCHDOWN_TEST_WITH_MPI
+  GTEST_SKIP() << "touchdown was built without MPI (TOUCHDOWN_WITH_MPI=OFF)";
+#endif
+  const std::string study = Write(
+      "study.yaml", "schema_version: 1\ntype: stability\nname: rare\nlander: {scenario: " + kCoarseScenario +
+                        "}\nfixed: {downhill_azimuth_deg: -90, yaw_relative_to_slope_deg: 90, horizontal_azimuth_deg: -90}\n"
+                        "random: {samples: 10, seed: 5, slope_deg: {uniform: [0, 20]},\n"
+                        "         horizontal_speed_m_s: {uniform: [0, 1.5]}}\n");
+  const std::vector<std::string> args = {"stability", study, "--method", "subset", "--samples", "10", "--progress", "none"};
+  std::vector<std::string> single = args;
+  single.insert(single.end(), {"--out", Path("one"), "--threads", "2"});
+  ASSERT_EQ(Run(single).status, 0);
+  // CI runs as root in a 2-core container: allow root and more ranks than cores. LeakSanitizer is
+  // off for the ranks (OpenMPI keeps allocations of plugins it has unloaded; sweep_test.cpp).
+  ::setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
+  ::setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
+  ::setenv("OMPI_MCA_rmaps_base_oversubscribe", "1", 1);
+  const char* asan = std::getenv("ASAN_OPTIONS");
+  ::setenv("ASAN_OPTIONS", (std::string(asan ? asan : "") + ":detect_leaks=0").c_str(), 1);
+  std::vector<std::string> mpi = {"mpirun", "--allow-run-as-root", "-np", "2", TOUCHDOWN_BINARY};
+  mpi.insert(mpi.end(), args.begin(), args.end());
+  mpi.insert(mpi.end(), {"--out", Path("mpi"), "--threads", "1"});
+  const pid_t pid = touchdown::testing_process::StartProgram(mpi, "", Path("mpi_stdout"), Path("mpi_stderr"));
+  if (pid < 0) GTEST_SKIP() << "mpirun is not installed";
+  const int raw = touchdown::testing_process::WaitForStatus(pid);
+  ASSERT_TRUE(WIFEXITED(raw) && WEXITSTATUS(raw) == 0) << Slurp(Path("mpi_stdout")) << Slurp(Path("mpi_stderr"));
+  EXPECT_EQ(Rows(Path("mpi") + "/subset/results.sqlite"), Rows(Path("one") + "/subset/results.sqlite"));
+  EXPECT_FALSE(Rows(Path("one") + "/subset/results.sqlite").empty());
+  const nlohmann::json a = nlohmann::json::parse(Slurp(Path("one") + "/summary.json"));
+  const nlohmann::json b = nlohmann::json::parse(Slurp(Path("mpi") + "/summary.json"));
+  EXPECT_EQ(a["rare_event"], b["rare_event"]);
+  EXPECT_EQ(a["tip_over_probability"], b["tip_over_probability"]);
+  // The estimate is printed once, by rank 0.
+  const std::string out = Slurp(Path("mpi_stdout"));
+  EXPECT_EQ(out.find("landings spent"), out.rfind("landings spent")) << out;
+  EXPECT_NE(out.find("landings spent"), std::string::npos) << out;
 }
 
 TEST_F(StabilityCli, BadStudiesExitTwoWithOneLineNamingFileAndField) {

@@ -148,7 +148,9 @@ TEST_F(RareEventStudy, ImportanceReusesTheSubsetRunsLandings) {
   for (size_t k = 0; k < importance.design_points.size(); ++k) {
     const RareEventDesignPoint& d = importance.design_points[k];
     EXPECT_TRUE(d.run == "subset" || d.run == "importance") << d.run;
-    if (k > 0) EXPECT_LE(importance.design_points[k - 1].beta, d.beta);
+    if (k > 0) {
+      EXPECT_LE(importance.design_points[k - 1].beta, d.beta);
+    }
   }
   EXPECT_TRUE(std::filesystem::exists(sweep::ResultsDbPath(Path("one") + "/importance")));
 }
