@@ -60,11 +60,15 @@ class MpiSession {
   ~MpiSession() { MPI_Finalize(); }
 };
 
-bool mpi_started = false;
+// Whether this process has started MPI (BroadcastFromRankZero is the identity before).
+bool& MpiStarted() {
+  static bool started = false;
+  return started;
+}
 
 void StartMpi() {
   static const MpiSession session;
-  mpi_started = true;
+  MpiStarted() = true;
 }
 
 // Rank 0 sends an error message (or "" for go-ahead) to every rank, so all stop together.
@@ -167,7 +171,11 @@ SweepRunSummary RunSweepMpi(const SweepPlan& plan, const std::string& out_dir, c
     if (summary.stop_signal == 0) summary.stop_signal = signal;
     engine.Stop();
   };
-  auto feed = [&] { engine.Feed(kFeedLow, [&] { return todo->Next(4 * kFeedLow); }); };
+  // No rank takes more than its share of the drops to run at a time, so a small list (a rare-event
+  // batch: N / 10 landings) is spread over the ranks rather than queued on rank 0 before the others
+  // ask; a large sweep's shares exceed the chunks, which then decide alone.
+  const size_t share = static_cast<size_t>(std::max<int64_t>(1, (todo->in_shard() - todo->already_done() + ranks - 1) / ranks));
+  auto feed = [&] { engine.Feed(std::min(kFeedLow, share), [&] { return todo->Next(std::min(4 * kFeedLow, share)); }); };
   feed();
   while (!engine.Finished() || ranks_running > 0) {
     if (StopRequested(options)) stop(options.stop->load());
@@ -190,7 +198,7 @@ SweepRunSummary RunSweepMpi(const SweepPlan& plan, const std::string& out_dir, c
         if (buffer.size() == sizeof want) std::memcpy(&want, buffer.data(), sizeof want);
         // Rank 0's own queue and the cursor share one order; the split between ranks never
         // shows in the results (each is a function of its index alone).
-        const std::vector<int64_t> work = stopping ? std::vector<int64_t>{} : todo->Next(static_cast<size_t>(want));
+        const std::vector<int64_t> work = stopping ? std::vector<int64_t>{} : todo->Next(std::min(static_cast<size_t>(want), share));
         MPI_Send(work.data(), static_cast<int>(work.size()), MPI_INT64_T, status.MPI_SOURCE, kTagWork, MPI_COMM_WORLD);
       } else {
         commit(DeserializeRecords(buffer));
@@ -213,7 +221,7 @@ SweepRunSummary RunSweepMpi(const SweepPlan& plan, const std::string& out_dir, c
 }
 
 std::string BroadcastFromRankZero(const std::string& text) {
-  if (!mpi_started) return text;
+  if (!MpiStarted()) return text;
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   return BroadcastText(text, rank);
