@@ -18,6 +18,7 @@ namespace {
 struct DiagnoseArgs {
   std::string measured, model, out, base = "rft", sensor_sampling = "period_mean";
   int threads = 0;
+  double min_step_explained = gap::DiagnoseOptions{}.min_step_explained;
   bool no_pairs = false, law_candidate = false;
 };
 }  // namespace
@@ -32,6 +33,10 @@ void AddDiagnoseCommand(CLI::App& app) {
   cmd->add_option("--threads", args->threads, "threads (default: all cores)")
       ->check(CLI::Range(0, limits::kMaxThreads));
   cmd->add_flag("--no-pairs", args->no_pairs, "name one term at most (no search again after the first, docs/model_gap.md)");
+  cmd->add_option("--min-step-explained", args->min_step_explained,
+                  "share of the held-out excess over the noise floor, left by the model so far, that a term must "
+                  "explain to be added (default 0.5; 0: the rule before it, docs/model_gap.md)")
+      ->check(CLI::Range(0.0, 1.0));
   cmd->add_option("--base", args->base,
                   "the model the effects are fitted on: rft (zeta per soil, default) or bekker (n, k_c, k_phi per "
                   "soil fitted as calibrate --law bekker; docs/bekker_soil.md)")
@@ -47,6 +52,7 @@ void AddDiagnoseCommand(CLI::App& app) {
     gap::DiagnoseOptions o;
     o.threads = io::ThreadsFor(args->threads);
     o.try_pairs = !args->no_pairs;
+    o.min_step_explained = args->min_step_explained;
     o.progress.mode = io::ProgressMode::kAuto;
     o.law_candidate = args->law_candidate;
     o.base = gap::ParseDiagnoseBase(args->base, "command line", "--base");

@@ -32,6 +32,7 @@
 #include "drop_tests/drop/drop_request.h"
 #include "drop_tests/drop/force_request.h"
 #include "drop_tests/catalog/catalog.h"
+#include "drop_tests/formats/dataset_csv.h"  // io::FormatNumber
 #include "drop_tests/formats/output_path.h"
 #include "drop_tests/util/progress.h"
 #include "drop_tests/util/work_pool.h"
@@ -374,8 +375,8 @@ std::string Validate(const std::string& sources, const std::string& out) {
 
 // touchdown diagnose: diagnosis.json's content, the outputs in `out`.
 std::string Diagnose(const std::string& measured, const std::string& model, const std::string& out,
-                     const py::object& threads_arg, bool pairs, bool law_candidate, const std::string& base,
-                     const std::string& sensor_sampling, py::object progress_arg) {
+                     const py::object& threads_arg, bool pairs, double min_step_explained, bool law_candidate,
+                     const std::string& base, const std::string& sensor_sampling, py::object progress_arg) {
   const int threads = ThreadsArgument(threads_arg, "touchdown.diagnose");
   const auto fail = [](const std::string& field, const std::string& allowed, const std::string& value) {
     throw MakeInputError("touchdown.diagnose", field, "must be " + allowed + ", got '" + value + "'");
@@ -383,12 +384,15 @@ std::string Diagnose(const std::string& measured, const std::string& model, cons
   const gap::DiagnoseBase diagnose_base = gap::ParseDiagnoseBase(base, "touchdown.diagnose", "base");
   const std::optional<pad::SensorSampling> sampling = dataset::ParseSensorSampling(sensor_sampling);
   if (!sampling) fail("sensor_sampling", dataset::SensorSamplingChoices(), sensor_sampling);
+  if (!(min_step_explained >= 0.0 && min_step_explained <= 1.0))
+    fail("min_step_explained", "a share in [0, 1]", io::FormatNumber(min_step_explained));
   std::atomic<int> stop{0};
   ProgressReport progress(std::move(progress_arg));
   return RunInterruptible(stop, progress, [&] {
     gap::DiagnoseOptions o;
     o.threads = io::ThreadsFor(threads);
     o.try_pairs = pairs;
+    o.min_step_explained = min_step_explained;
     o.law_candidate = law_candidate;
     o.base = diagnose_base;
     o.sensor_sampling = *sampling;
@@ -520,7 +524,8 @@ PYBIND11_MODULE(_touchdown, m) {
   m.def("calibrate", &python::Calibrate, py::arg("measured"), py::arg("out"), py::arg("law"), py::arg("per"),
         py::arg("atmosphere"), py::arg("confidence"), py::arg("soil"), py::arg("pad"), py::arg("shear_from"), py::arg("report"));
   m.def("diagnose", &python::Diagnose, py::arg("measured"), py::arg("model"), py::arg("out"), py::arg("threads"),
-        py::arg("pairs"), py::arg("law_candidate"), py::arg("base"), py::arg("sensor_sampling"),
+        py::arg("pairs"), py::arg("min_step_explained"), py::arg("law_candidate"), py::arg("base"),
+        py::arg("sensor_sampling"),
         py::arg("progress") = py::none());
   m.def("calibrate_targets", &python::CalibrateTargets, py::arg("targets"), py::arg("out"), py::arg("report"),
         py::arg("threads"), py::arg("evaluate_only"), py::arg("progress") = py::none());

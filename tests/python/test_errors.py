@@ -78,7 +78,8 @@ def test_samples_out_of_range_names_the_python_argument(tmp_path):
 
 def test_diagnose_choices_name_the_python_argument(tmp_path):
     for argument, value, allowed in [("base", "bekkerr", "rft or bekker"),
-                                     ("sensor_sampling", "averaged", "period_mean or instantaneous")]:
+                                     ("sensor_sampling", "averaged", "period_mean or instantaneous"),
+                                     ("min_step_explained", 1.5, r"a share in \[0, 1\]")]:
         with pytest.raises(ValueError, match=rf"^touchdown\.diagnose: {argument}: must be {allowed}, got '{value}'$"):
             touchdown.diagnose(tmp_path / "m", tmp_path / "d", **{argument: value})
     assert not (tmp_path / "d").exists()

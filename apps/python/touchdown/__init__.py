@@ -155,16 +155,18 @@ def validate(*, sources=None, out=None):
     return json.loads(_touchdown.validate(sources=_path_text(sources), out=_path_text(out)))
 
 
-def diagnose(measured, out, *, model=None, threads=0, pairs=True, law_candidate=False, base="rft",
-             sensor_sampling="period_mean", progress=True):
-    """`touchdown diagnose MEASURED --out OUT [--model M] [--threads N] [--no-pairs] [--law-candidate]
-    [--base rft|bekker] [--sensor-sampling instantaneous|period_mean]`: the model-gap workflow into
-    the new directory OUT (docs/model_gap.md); returns diagnosis.json as a dict (the command prints a
-    part of it). `pairs=False` is `--no-pairs`: forward selection stops after the first term.
+def diagnose(measured, out, *, model=None, threads=0, pairs=True, min_step_explained=0.5, law_candidate=False,
+             base="rft", sensor_sampling="period_mean", progress=True):
+    """`touchdown diagnose MEASURED --out OUT [--model M] [--threads N] [--no-pairs]
+    [--min-step-explained X] [--law-candidate] [--base rft|bekker] [--sensor-sampling
+    instantaneous|period_mean]`: the model-gap workflow into the new directory OUT
+    (docs/model_gap.md); returns diagnosis.json as a dict (the command prints a part of it).
+    `pairs=False` is `--no-pairs`: forward selection stops after the first term.
     `progress` counts the candidate models fitted (see sweep); Ctrl-C abandons the fit, writing nothing."""
     with _progress_reporter(progress, "diagnose", "fits") as report:
         return json.loads(_touchdown.diagnose(measured=_path_text(measured), model=_path_text(model),
                                               out=_path_text(out), threads=threads, pairs=pairs,
+                                              min_step_explained=min_step_explained,
                                               law_candidate=law_candidate, base=base,
                                               sensor_sampling=sensor_sampling, progress=report))
 

@@ -39,7 +39,7 @@ CandidateScore Scored(const std::vector<std::string>& ids, double nrmse, double 
 
 // The floor control's models; `pair_nrmse` is the held-out gap of the term's absence with a depth
 // exponent (measured 0.0188).
-Diagnosis Select(double pair_nrmse) {
+Diagnosis Select(double pair_nrmse, DiagnoseOptions options = {}) {
   Diagnosis d;
   d.problem.shipped_lambda = 1.1;
   for (const char* t : {kWeakerDynamicTerm, "depth_exponent", "rate_damping"}) d.problem.terms.push_back({t, {}, {}});
@@ -56,7 +56,7 @@ Diagnosis Select(double pair_nrmse) {
     return it != models.end() ? Scored(ids, it->second.first, it->second.second) : Scored(ids, 0.05, 100.0);
   };
   io::Progress progress("diagnose", "fits", 0, {io::ProgressMode::kNone});
-  SelectForward(d, DiagnoseOptions{}, score, progress);
+  SelectForward(d, options, score, progress);
   return d;
 }
 
@@ -75,6 +75,16 @@ TEST(DiagnoseSelection, AStepThatExplainsLessThanHalfOfWhatRemainsIsNotTaken) {
   EXPECT_LT(d.winner, 0);
   EXPECT_EQ(d.dynamic_term_statement.rfind("The data do not support the shipped default's dynamic term", 0), 0u)
       << d.dynamic_term_statement;
+}
+
+// `--min-step-explained 0` is the rule before the share: the floor's pair is taken and named, as
+// it was (the blind test's row before the rule).
+TEST(DiagnoseSelection, WithoutTheShareRuleTheFloorsPairIsNamedAsBefore) {
+  DiagnoseOptions old_rule;
+  old_rule.min_step_explained = 0.0;
+  const Diagnosis d = Select(0.0188, old_rule);
+  ASSERT_EQ(d.selection.size(), 2u) << d.decision;
+  EXPECT_EQ(d.named_effect, "depth_exponent") << d.decision;
 }
 
 TEST(DiagnoseSelection, AStepThatLeavesOnlyTheNoiseIsTakenAndNamed) {
