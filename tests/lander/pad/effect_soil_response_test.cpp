@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <utility>
 
 #include "footpad_geom/axisymmetric_intrusion.h"
 #include "footpad_geom/axisymmetric_profile.h"
@@ -126,31 +127,48 @@ TEST(EffectRig, RateDampingMatchesTheDampedOscillator) {
   }
 }
 
+// The grains carried with the pad alone (the response's added mass, no soil force): the rig stroke
+// then shows the momentum handed to them by itself.
+struct GrainsOnly final : pad::VerticalSoilResponse {
+  EffectSoilResponse r;
+  explicit GrainsOnly(EffectSoilResponse x) : r(std::move(x)) {}
+  double Force(double, double) const override { return 0.0; }
+  double AddedMass(double d) const override { return r.AddedMass(d); }
+  double AddedMassSlope(double d) const override { return r.AddedMassSlope(d); }
+};
+
+// The rig's stroke of kMass from 1 m/s at (almost) no gravity against `grains`; At(t) advances to t.
+class GrainsOnlyStroke {
+ public:
+  explicit GrainsOnlyStroke(const GrainsOnly& grains)
+      : in_{kMass, 1e-12, 1.0},
+        integ_(4, [this, &grains](double, Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::VectorXd> yd) {
+          pad::RigStrokeDerivative(in_, grains, y, yd);
+        }, integ::IntegratorOptions{}) {
+    Eigen::VectorXd y0(4);
+    y0 << 1e-12, 1.0, 0.0, 0.0;
+    integ_.Reset(0.0, y0);
+  }
+  const Eigen::VectorXd& At(double t) {
+    integ_.AdvanceTo(t);
+    return integ_.state();
+  }
+
+ private:
+  pad::RigDropInput in_;
+  integ::CvodeIntegrator integ_;
+};
+
 // With no soil force and (almost) no gravity, the pad and its grains conserve momentum:
 // (m + m_a(d)) v = m v0, and the kinetic energy lost is the accretion loss.
 TEST(EffectRig, AddedMassConservesMomentum) {
   const geom::AxisymmetricIntrusion pad = ThinFlat();
   EffectTerms t;
   t.added_mass_ca = 2.0;
-  const EffectSoilResponse with_soil = Response(pad, t);
-  struct GrainsOnly final : pad::VerticalSoilResponse {
-    const EffectSoilResponse& r;
-    explicit GrainsOnly(const EffectSoilResponse& x) : r(x) {}
-    double Force(double, double) const override { return 0.0; }
-    double AddedMass(double d) const override { return r.AddedMass(d); }
-    double AddedMassSlope(double d) const override { return r.AddedMassSlope(d); }
-  } grains(with_soil);
-  const pad::RigDropInput in{kMass, 1e-12, 1.0};
-  integ::IntegratorOptions o;
-  integ::CvodeIntegrator integ(4, [&](double, Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::VectorXd> yd) {
-    pad::RigStrokeDerivative(in, grains, y, yd);
-  }, o);
-  Eigen::VectorXd y0(4);
-  y0 << 1e-12, 1.0, 0.0, 0.0;
-  integ.Reset(0.0, y0);
+  const GrainsOnly grains(Response(pad, t));
+  GrainsOnlyStroke stroke(grains);
   for (double t_out : {0.005, 0.02, 0.04}) {
-    integ.AdvanceTo(t_out);
-    const Eigen::VectorXd& y = integ.state();
+    const Eigen::VectorXd& y = stroke.At(t_out);
     const double m_a = grains.AddedMass(y[0]);
     EXPECT_NEAR((kMass + m_a) * y[1], kMass * 1.0, 1e-8) << t_out;
     EXPECT_NEAR(0.5 * (kMass + m_a) * y[1] * y[1] + y[3], 0.5 * kMass, 1e-8) << t_out;
@@ -185,26 +203,11 @@ TEST(EffectRig, PlugConservesMomentum) {
   const geom::AxisymmetricIntrusion pad = ThinFlat();
   EffectTerms t;
   t.added_mass_plug_cp = 2.0;
-  const EffectSoilResponse with_soil = Response(pad, t);
-  struct GrainsOnly final : pad::VerticalSoilResponse {
-    const EffectSoilResponse& r;
-    explicit GrainsOnly(const EffectSoilResponse& x) : r(x) {}
-    double Force(double, double) const override { return 0.0; }
-    double AddedMass(double d) const override { return r.AddedMass(d); }
-    double AddedMassSlope(double d) const override { return r.AddedMassSlope(d); }
-  } grains(with_soil);
+  const GrainsOnly grains(Response(pad, t));
   const double m_p = grains.AddedMass(1.0);
-  const pad::RigDropInput in{kMass, 1e-12, 1.0};
-  integ::IntegratorOptions o;
-  integ::CvodeIntegrator integ(4, [&](double, Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::VectorXd> yd) {
-    pad::RigStrokeDerivative(in, grains, y, yd);
-  }, o);
-  Eigen::VectorXd y0(4);
-  y0 << 1e-12, 1.0, 0.0, 0.0;
-  integ.Reset(0.0, y0);
+  GrainsOnlyStroke stroke(grains);
   for (double t_out : {0.0004, 0.005, 0.02}) {
-    integ.AdvanceTo(t_out);
-    const Eigen::VectorXd& y = integ.state();
+    const Eigen::VectorXd& y = stroke.At(t_out);
     const double m = grains.AddedMass(y[0]);
     EXPECT_NEAR((kMass + m) * y[1], kMass * 1.0, 1e-8) << t_out;
     EXPECT_NEAR(0.5 * (kMass + m) * y[1] * y[1] + y[3], 0.5 * kMass, 1e-8) << t_out;
