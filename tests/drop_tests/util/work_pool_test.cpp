@@ -37,7 +37,7 @@ TEST(ParallelForTest, UsesSeveralThreads) {
     for (int seen = most.load(); now > seen && !most.compare_exchange_weak(seen, now);) {
     }
     // Held long enough for the other workers to enter too.
-    const auto until = std::chrono::steady_clock::now() + std::chrono::milliseconds(200);
+    const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(5);
     while (most.load() < 2 && std::chrono::steady_clock::now() < until) std::this_thread::yield();
     --inside;
   });
@@ -73,6 +73,11 @@ TEST(ParallelForTest, AStopInScopeEndsTheLoopsAtTheNextIndexNestedOnesToo) {
     const StopScope scope(&stop);
     try {
       ParallelFor(50, threads, [&](size_t i) {
+        // Indices after 5 wait for the request: otherwise, on a fast machine, the other threads
+        // could finish every index before index 5 makes it, and nothing would be left to stop.
+        if (i > 5) {
+          while (stop.load() == 0) std::this_thread::yield();
+        }
         // The bodies' own loops, on the pool's threads, see the same request.
         ParallelFor(4, 2, [&](size_t) { ++ran; });
         if (i == 5) stop.store(2);
