@@ -19,6 +19,7 @@ struct DiagnoseArgs {
   std::string measured, model, out, base = "rft", sensor_sampling = "period_mean";
   int threads = 0;
   double min_step_explained = gap::DiagnoseOptions{}.min_step_explained;
+  std::vector<std::string> fit_on;
   bool no_pairs = false, law_candidate = false;
 };
 }  // namespace
@@ -37,6 +38,10 @@ void AddDiagnoseCommand(CLI::App& app) {
                   "share of the held-out excess over the noise floor, left by the model so far, that a term must "
                   "explain to be added (default 0.5; 0: the rule before it, docs/model_gap.md)")
       ->check(CLI::Range(0.0, 1.0));
+  cmd->add_option("--fit-on", args->fit_on,
+                  "drop ids (comma-separated or repeated) every model is fitted on; every other drop is held out and "
+                  "predicted (default: every third drop by speed is held out, docs/model_gap.md)")
+      ->delimiter(',');
   cmd->add_option("--base", args->base,
                   "the model the effects are fitted on: rft (zeta per soil, default) or bekker (n, k_c, k_phi per "
                   "soil fitted as calibrate --law bekker; docs/bekker_soil.md)")
@@ -55,6 +60,7 @@ void AddDiagnoseCommand(CLI::App& app) {
     o.min_step_explained = args->min_step_explained;
     o.progress.mode = io::ProgressMode::kAuto;
     o.law_candidate = args->law_candidate;
+    o.fit_on = args->fit_on;
     o.base = gap::ParseDiagnoseBase(args->base, "command line", "--base");
     o.sensor_sampling = *dataset::ParseSensorSampling(args->sensor_sampling);  // checked by IsMember
     if (!args->model.empty()) o.start_model = model::LoadModelFile(args->model);

@@ -376,7 +376,8 @@ std::string Validate(const std::string& sources, const std::string& out) {
 // touchdown diagnose: diagnosis.json's content, the outputs in `out`.
 std::string Diagnose(const std::string& measured, const std::string& model, const std::string& out,
                      const py::object& threads_arg, bool pairs, double min_step_explained, bool law_candidate,
-                     const std::string& base, const std::string& sensor_sampling, py::object progress_arg) {
+                     const std::string& base, const std::string& sensor_sampling,
+                     const std::vector<std::string>& fit_on, py::object progress_arg) {
   const int threads = ThreadsArgument(threads_arg, "touchdown.diagnose");
   const auto fail = [](const std::string& field, const std::string& allowed, const std::string& value) {
     throw MakeInputError("touchdown.diagnose", field, "must be " + allowed + ", got '" + value + "'");
@@ -394,6 +395,7 @@ std::string Diagnose(const std::string& measured, const std::string& model, cons
     o.try_pairs = pairs;
     o.min_step_explained = min_step_explained;
     o.law_candidate = law_candidate;
+    o.fit_on = fit_on;
     o.base = diagnose_base;
     o.sensor_sampling = *sampling;
     o.progress.counts = progress.counts();
@@ -525,7 +527,7 @@ PYBIND11_MODULE(_touchdown, m) {
         py::arg("atmosphere"), py::arg("confidence"), py::arg("soil"), py::arg("pad"), py::arg("shear_from"), py::arg("report"));
   m.def("diagnose", &python::Diagnose, py::arg("measured"), py::arg("model"), py::arg("out"), py::arg("threads"),
         py::arg("pairs"), py::arg("min_step_explained"), py::arg("law_candidate"), py::arg("base"),
-        py::arg("sensor_sampling"),
+        py::arg("sensor_sampling"), py::arg("fit_on"),
         py::arg("progress") = py::none());
   m.def("calibrate_targets", &python::CalibrateTargets, py::arg("targets"), py::arg("out"), py::arg("report"),
         py::arg("threads"), py::arg("evaluate_only"), py::arg("progress") = py::none());

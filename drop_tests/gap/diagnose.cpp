@@ -7,10 +7,13 @@
 #include <iomanip>
 #include <map>
 #include <numeric>
+#include <optional>
 #include <random>
+#include <set>
 #include <sstream>
 
 #include "drop_tests/gap/diagnose_selection.h"
+#include "drop_tests/util/nearest_name.h"
 #include "drop_tests/util/work_pool.h"
 #include "rft/input_error.h"
 
@@ -41,6 +44,34 @@ std::vector<bool> HeldOutSplit(const dataset::Dataset& ds) {
     });
     for (size_t r = 0; r < idx.size(); ++r) held[idx[r]] = r % 3 == 1;
   }
+  return held;
+}
+
+// --fit-on: the designated drops train, every other one is held out.
+std::vector<bool> DesignatedSplit(const dataset::Dataset& ds, const std::vector<std::string>& fit_on) {
+  std::vector<std::string> ids;
+  for (const dataset::DatasetDrop& d : ds.drops) ids.push_back(d.drop_id);
+  std::vector<bool> held(ds.drops.size(), true);
+  for (const std::string& id : fit_on) {
+    const auto it = std::find(ids.begin(), ids.end(), id);
+    if (it == ids.end()) {
+      const std::optional<std::string> near = io::NearestName(id, ids);
+      throw MakeInputError(ds.directory + "/drops.csv", "--fit-on",
+                           "no drop '" + id + "'" + (near ? " (did you mean '" + *near + "'?)" : ""));
+    }
+    held[static_cast<size_t>(it - ids.begin())] = false;
+  }
+  std::set<std::string> soils, fitted_soils;
+  for (size_t i = 0; i < ds.drops.size(); ++i) {
+    soils.insert(ds.drops[i].soil);
+    if (!held[i]) fitted_soils.insert(ds.drops[i].soil);
+  }
+  for (const std::string& soil : soils)
+    if (!fitted_soils.count(soil))
+      throw MakeInputError(ds.directory + "/drops.csv", "--fit-on",
+                           "no designated drop on soil '" + soil + "': its zeta cannot be calibrated");
+  if (std::find(held.begin(), held.end(), true) == held.end())
+    throw MakeInputError(ds.directory + "/drops.csv", "--fit-on", "designates every drop: none is left to predict");
   return held;
 }
 
@@ -299,7 +330,8 @@ Diagnosis RunDiagnosis(const dataset::Dataset& ds, const DiagnoseOptions& o) {
   if (ds.drops.size() < 3) throw MakeInputError(ds.directory, "drops.csv", "diagnose needs at least 3 drops");
   Diagnosis d;
   d.dataset_dir = ds.directory;
-  d.held_out = HeldOutSplit(ds);
+  d.fit_on = o.fit_on;
+  d.held_out = o.fit_on.empty() ? HeldOutSplit(ds) : DesignatedSplit(ds, o.fit_on);
   d.problem = MakeFitProblem(ds, d.held_out, o.threads);
   d.problem.sensor_sampling = o.sensor_sampling;
   if (o.base == DiagnoseBase::kBekker) {

@@ -5,7 +5,9 @@
 //
 //  1. Split: within each (pad, soil, atmosphere) cell, drops ordered by impact speed then id;
 //     every third one starting with the second (ranks 1, 4, 7, ...) is held out, the rest train.
-//     Deterministic, and every cell and soil keeps training drops.
+//     Deterministic, and every cell and soil keeps training drops. Or (--fit-on) the drops the
+//     user designates train and every other drop is held out: each model is fitted on those cases
+//     and predicts the rest.
 //     Calibrate zeta per soil on the training drops (diagnose_fit.h), simulate every drop.
 //  2. Gap per drop and overall on held-out drops (compare.h metrics), and where it
 //     concentrates: per condition (speed, pad, soil, atmosphere, tilt when given) a permutation
@@ -24,7 +26,9 @@
 //       - it cuts the held-out force NRMSE of the current model;
 //       - it explains >= half of the current model's held-out mean-square excess over the noise
 //         floor (a term that explains a small part of what remains is fitting a misfit the library
-//         does not hold, e.g. a depth exponent bending towards a rigid floor).
+//         does not hold, e.g. a depth exponent bending towards a rigid floor);
+//       - the training drops identify its parameters: none has a 95 % interval over >= 95 % of the
+//         range the fit may take (a fit on one drop can put a sensor offset at its bound so).
 //     Then the search starts again from the new model, until no term qualifies. The selected model
 //     is named when it explains most of the gap: held-out force NRMSE falls by >= 50 % from the
 //     base AND >= 80 % of the excess mean-square residual above the estimated sensor-noise floor is
@@ -70,6 +74,10 @@ struct DiagnoseOptions {
   // averaging load cell), which also makes the fits' cost continuous where a stop crosses a sample
   // (docs/model_gap.md, "Sensor sampling"); or the value at each sample time.
   pad::SensorSampling sensor_sampling = pad::SensorSampling::kPeriodMean;
+  // --fit-on: the drop ids every model is fitted on; every other drop is held out and predicted.
+  // Empty: the split by speed above. Each id must be in the dataset, every soil needs one, and at
+  // least one drop must be left to predict (InputError otherwise).
+  std::vector<std::string> fit_on;
 };
 
 struct DropGap {
@@ -121,6 +129,7 @@ struct CandidateScore {
 struct Diagnosis {
   std::string dataset_dir;
   std::vector<bool> held_out;
+  std::vector<std::string> fit_on;  // DiagnoseOptions::fit_on: the designated training drops, or empty
   FitProblem problem;
   CandidateScore base;
   std::vector<CandidateScore> candidates;  // every step's, in order

@@ -490,7 +490,7 @@ void Estimates(const FitProblem& p, const Layout& L, const Objective& obj, const
                       const std::string& unit) {
     const double half = t * std::sqrt(std::max(cov(k, k), 0.0));
     ParameterEstimate e{effect, key, x[k] * scale, std::max(x[k] - half, lo[k]) * scale,
-                        std::min(x[k] + half, hi[k]) * scale, file_to_si, unit};
+                        std::min(x[k] + half, hi[k]) * scale, file_to_si, unit, lo[k] * scale, hi[k] * scale};
     out.estimates.push_back(e);
     ++k;
   };

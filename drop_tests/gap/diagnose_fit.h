@@ -15,6 +15,7 @@
 // do not depend on the thread count.
 // Intervals: cluster-robust (sandwich) covariance with the drops as clusters, since samples
 // within one drop are not independent; 95 % with Student's t on (drops - 1) degrees of freedom.
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -91,6 +92,8 @@ struct ParameterEstimate {
   double value = 0.0, low = 0.0, high = 0.0;  // SI
   double file_to_si = 1.0;
   std::string unit;
+  // The range the fit may take (SI); an interval that covers (nearly) all of it is not identified.
+  double bound_low = -std::numeric_limits<double>::infinity(), bound_high = std::numeric_limits<double>::infinity();
 };
 
 struct FitResult {

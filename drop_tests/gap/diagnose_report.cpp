@@ -27,6 +27,15 @@ namespace touchdown::gap {
 namespace fs = std::filesystem;
 
 namespace {
+// How the drops were split, in words (diagnosis.json's split.rule and the report's section 1).
+std::string SplitRule(const Diagnosis& d) {
+  if (!d.fit_on.empty())
+    return "--fit-on: every model is fitted on the designated drops and predicts every other drop";
+  return "per (pad, soil, atmosphere) cell, ordered by speed then drop id: ranks 1, 4, 7, ... held out";
+}
+}  // namespace
+
+namespace {
 
 std::string Num(double v, int digits = 4) {
   if (!std::isfinite(v)) return "n/a";
@@ -160,7 +169,7 @@ nlohmann::json DiagnosisJson(const Diagnosis& d) {
     }
     j["base"]["bekker_soils"] = soils;
   }
-  nlohmann::json split = {{"rule", "per (pad, soil, atmosphere) cell, ordered by speed then drop id: ranks 1, 4, 7, ... held out"},
+  nlohmann::json split = {{"rule", SplitRule(d)},
                           {"train", nlohmann::json::array()}, {"held_out", nlohmann::json::array()}};
   for (const FitDrop& f : d.problem.drops) split[f.train ? "train" : "held_out"].push_back(f.drop_id);
   j["split"] = split;
@@ -447,7 +456,7 @@ void WriteReport(const Diagnosis& d, const dataset::Dataset& ds, const Candidate
     for (const FitDrop& f : d.problem.drops) n_train += f.train;
     out << "## 1. Split and calibration\n\n" << d.problem.drops.size() << " drops: " << n_train << " training, "
         << d.problem.drops.size() - n_train
-        << " held out (per pad/soil/atmosphere cell, ordered by speed then id, ranks 1, 4, 7, ... held out).\n\n";
+        << " held out (" << SplitRule(d) << ").\n\n";
     if (d.problem.bekker_base) {
       out << "**Base model: Bekker** (`--base bekker`, docs/bekker_soil.md): n, k_c, k_phi per soil fitted on the "
              "training drops as `calibrate --law bekker` does; the effects are fitted on top with a scale of the "
@@ -482,8 +491,9 @@ void WriteReport(const Diagnosis& d, const dataset::Dataset& ds, const Candidate
            "(Bonferroni).\n\n## 3. Candidates\n\n"
         << "Forward selection: each step fits every remaining term on top of the model so far and adds the best one "
            "when it beats that model by Delta BIC >= 10, is the only simplest one the data cannot tell from the best, "
-           "cuts the held-out force NRMSE, and explains at least half of that model's held-out mean-square excess over "
-           "the noise floor.\n\n"
+           "cuts the held-out force NRMSE, explains at least half of that model's held-out mean-square excess over "
+           "the noise floor, and has its parameters identified by the training drops (no 95 % interval over a "
+           "parameter's whole range).\n\n"
         << "| step | model | parameters (95 % interval) | held-out force NRMSE | reduction vs base | explained | "
            "Delta BIC vs base | Delta BIC vs the step's start |\n"
         << "| --- | --- | --- | --- | --- | --- | --- | --- |\n"

@@ -1,6 +1,7 @@
 #include "drop_tests/gap/diagnose_selection.h"
 
 #include <algorithm>
+#include <cmath>
 #include <iomanip>
 #include <sstream>
 
@@ -34,6 +35,17 @@ void Relate(CandidateScore& c, const CandidateScore& base, const CandidateScore&
   c.delta_bic_step = current.fit.bic - c.fit.bic;
   c.step_gap_reduction =
       current.held_out.force_nrmse > 0 ? 1.0 - c.held_out.force_nrmse / current.held_out.force_nrmse : 0.0;
+}
+
+// The first of a candidate's term parameters the training drops do not identify: its 95 % interval
+// covers at least 95 % of the range the fit may take (a fit on few drops can reach a bound with an
+// interval over everything, e.g. a sensor offset of -50 mm fitted on one drop). Null if none.
+const ParameterEstimate* Unidentified(const CandidateScore& c) {
+  for (const ParameterEstimate& e : c.fit.estimates)
+    if (!e.effect.empty() && std::isfinite(e.bound_high - e.bound_low) && e.bound_high > e.bound_low &&
+        e.high - e.low >= 0.95 * (e.bound_high - e.bound_low))
+      return &e;
+  return nullptr;
 }
 
 // The term a candidate adds to the model it extends (its last).
@@ -90,6 +102,11 @@ StepOutcome DecideStep(const Diagnosis& d, const CandidateScore& current, const 
         << "), explains only " << Fixed(100 * w.step_explained, 0) << " % of the held-out excess over the noise floor "
         << "that " << from << " leaves (needs >= " << Fixed(100 * o.min_step_explained, 0)
         << " %): a term that explains a small part of what remains fits a misfit the library does not hold";
+  } else if (const ParameterEstimate* u = Unidentified(w)) {
+    why << "the best candidate on top of " << from << ", " << Added(w) << " (Delta BIC " << Fixed(w.delta_bic_step, 1)
+        << "), is not identified by the training drops: " << u->effect << "." << u->key << " = "
+        << Short(u->value / u->file_to_si) << " with a 95 % interval [" << Short(u->low / u->file_to_si) << ", "
+        << Short(u->high / u->file_to_si) << "] over its whole range";
   } else {
     out.chosen = simplest.front();
     // The runner-up: the best other candidate that is a real rival, i.e. not a richer model the

@@ -2,8 +2,9 @@
 // Forward selection of `touchdown diagnose` (diagnose.h, step 3): from the base, add the best
 // candidate term while it beats the current model by Delta BIC >= min_delta_bic, is the only
 // simplest one among those the data cannot tell from the best (parsimony), cuts the held-out force
-// NRMSE of the current model and explains >= min_step_explained of its held-out excess over the
-// noise floor; then search again from the new model. The selected model is
+// NRMSE of the current model, explains >= min_step_explained of its held-out excess over the
+// noise floor and has its parameters identified (no 95 % interval over >= 95 % of a parameter's
+// range); then search again from the new model. The selected model is
 // named when it explains most of the base's gap (min_gap_reduction, min_explained).
 #include <functional>
 #include <string>

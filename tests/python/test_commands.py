@@ -1,5 +1,6 @@
 """touchdown.calibrate, diagnose, trade, synth and export write what the commands write, byte for
 byte, and return what the commands print (the same doubles, or the same file's content)."""
+import csv
 import json
 import re
 
@@ -128,6 +129,25 @@ def test_diagnose_base_bekker_equals_the_command_line(tmp_path):
     rft = touchdown.diagnose(tmp_path / "measured", tmp_path / "rft", pairs=False, threads=2)
     assert _without_seconds(py) != _without_seconds(rft)  # the base changed the fit
     assert (tmp_path / "py" / "model.yaml").read_bytes() == (tmp_path / "cli" / "model.yaml").read_bytes()
+
+
+def test_diagnose_fit_on_equals_the_command_line(tmp_path):
+    # Python's `fit_on` is the command line's --fit-on: fitted on the two drops at 1.0 m/s, the other
+    # four are held out and predicted.
+    spec = tmp_path / "synth.yaml"
+    spec.write_text(SYNTH_SPEC.replace("impact_speeds_m_s: [1.0]", "impact_speeds_m_s: [0.7, 1.0, 1.5]"))
+    run_touchdown("synth", spec, "--out", tmp_path / "measured")
+    with open(tmp_path / "measured" / "drops.csv", newline="") as f:
+        rows = list(csv.DictReader(f))
+    fit_on = [r["drop_id"] for r in rows if float(r["impact_speed_m_s"]) == 1.0]
+    assert len(fit_on) == 2
+    run_touchdown("diagnose", tmp_path / "measured", "--out", tmp_path / "cli", "--no-pairs", "--threads", "2",
+                  "--fit-on", ",".join(fit_on))
+    py = touchdown.diagnose(tmp_path / "measured", tmp_path / "py", pairs=False, threads=2, fit_on=fit_on)
+    assert _without_seconds(py) == _without_seconds(_json(tmp_path / "cli" / "diagnosis.json"))
+    assert sorted(py["split"]["train"]) == sorted(fit_on)
+    assert sorted(py["split"]["held_out"]) == sorted(r["drop_id"] for r in rows if r["drop_id"] not in fit_on)
+    assert py["split"]["rule"].startswith("--fit-on")
 
 
 TRADE_PLAN = ("schema_version: 1\ntype: sweep\nname: tiny_trade\nfixed: {gravity_m_s2: 9.81}\n"

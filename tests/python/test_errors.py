@@ -82,6 +82,8 @@ def test_diagnose_choices_name_the_python_argument(tmp_path):
                                      ("min_step_explained", 1.5, r"a share in \[0, 1\]")]:
         with pytest.raises(ValueError, match=rf"^touchdown\.diagnose: {argument}: must be {allowed}, got '{value}'$"):
             touchdown.diagnose(tmp_path / "m", tmp_path / "d", **{argument: value})
+    with pytest.raises(ValueError, match=r"^touchdown\.diagnose: fit_on: must be drop ids \(text\), got '3'$"):
+        touchdown.diagnose(tmp_path / "m", tmp_path / "d", fit_on=["d1", 3])
     assert not (tmp_path / "d").exists()
 
 

@@ -156,19 +156,21 @@ def validate(*, sources=None, out=None):
 
 
 def diagnose(measured, out, *, model=None, threads=0, pairs=True, min_step_explained=0.5, law_candidate=False,
-             base="rft", sensor_sampling="period_mean", progress=True):
+             base="rft", sensor_sampling="period_mean", fit_on=(), progress=True):
     """`touchdown diagnose MEASURED --out OUT [--model M] [--threads N] [--no-pairs]
     [--min-step-explained X] [--law-candidate] [--base rft|bekker] [--sensor-sampling
-    instantaneous|period_mean]`: the model-gap workflow into the new directory OUT
+    instantaneous|period_mean] [--fit-on ID,...]`: the model-gap workflow into the new directory OUT
     (docs/model_gap.md); returns diagnosis.json as a dict (the command prints a part of it).
-    `pairs=False` is `--no-pairs`: forward selection stops after the first term.
+    `pairs=False` is `--no-pairs`: forward selection stops after the first term. `fit_on` (drop
+    ids) is `--fit-on`: every model is fitted on those drops and predicts the others.
     `progress` counts the candidate models fitted (see sweep); Ctrl-C abandons the fit, writing nothing."""
     with _progress_reporter(progress, "diagnose", "fits") as report:
         return json.loads(_touchdown.diagnose(measured=_path_text(measured), model=_path_text(model),
                                               out=_path_text(out), threads=threads, pairs=pairs,
                                               min_step_explained=min_step_explained,
                                               law_candidate=law_candidate, base=base,
-                                              sensor_sampling=sensor_sampling, progress=report))
+                                              sensor_sampling=sensor_sampling, fit_on=_id_list(fit_on, "diagnose", "fit_on"),
+                                              progress=report))
 
 
 def trade(plan, out, *, model=None, threads=0, progress=True):
@@ -294,6 +296,15 @@ def _progress_reporter(progress, function, unit):
 
 def _path_text(path):
     return "" if path is None else os.fspath(path)
+
+
+def _id_list(ids, function, argument):
+    """A list of ids from one id or an iterable of them, as ValueError names the argument otherwise."""
+    ids = [ids] if isinstance(ids, str) else list(ids)
+    for value in ids:
+        if not isinstance(value, str):
+            raise ValueError(f"touchdown.{function}: {argument}: must be drop ids (text), got '{value}'")
+    return ids
 
 
 @contextlib.contextmanager

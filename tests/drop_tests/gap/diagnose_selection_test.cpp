@@ -9,13 +9,17 @@
 #include <gtest/gtest.h>
 
 #include <map>
+#include <tuple>
+#include <utility>
 
 namespace touchdown::gap {
 namespace {
 
 constexpr double kNoise = 0.0018;  // held-out force NRMSE of the noise floor
 
-CandidateScore Scored(const std::vector<std::string>& ids, double nrmse, double bic) {
+// `exponent_interval`: the depth exponent's 95 % interval; its range is [0.2, 3] as in the library.
+CandidateScore Scored(const std::vector<std::string>& ids, double nrmse, double bic,
+                      std::pair<double, double> exponent_interval = {1.28, 1.32}) {
   CandidateScore c;
   c.effect_ids = ids;
   for (size_t i = 0; i < ids.size(); ++i) c.name += (i ? "+" : "") + ids[i];
@@ -32,6 +36,12 @@ CandidateScore Scored(const std::vector<std::string>& ids, double nrmse, double 
       e.low = 0.0;
       e.high = 0.17;
     }
+    if (id == "depth_exponent") {
+      e.value = 1.3;
+      std::tie(e.low, e.high) = exponent_interval;
+      e.bound_low = 0.2;
+      e.bound_high = 3.0;
+    }
     c.fit.estimates.push_back(e);
   }
   return c;
@@ -39,7 +49,8 @@ CandidateScore Scored(const std::vector<std::string>& ids, double nrmse, double 
 
 // The floor control's models; `pair_nrmse` is the held-out gap of the term's absence with a depth
 // exponent (measured 0.0188).
-Diagnosis Select(double pair_nrmse, DiagnoseOptions options = {}) {
+Diagnosis Select(double pair_nrmse, DiagnoseOptions options = {},
+                 std::pair<double, double> exponent_interval = {1.28, 1.32}) {
   Diagnosis d;
   d.problem.shipped_lambda = 1.1;
   for (const char* t : {kWeakerDynamicTerm, "depth_exponent", "rate_damping"}) d.problem.terms.push_back({t, {}, {}});
@@ -53,7 +64,8 @@ Diagnosis Select(double pair_nrmse, DiagnoseOptions options = {}) {
   };
   const ScoreModel score = [&](const std::vector<std::string>& ids, const FitResult&) {
     const auto it = models.find(ids);
-    return it != models.end() ? Scored(ids, it->second.first, it->second.second) : Scored(ids, 0.05, 100.0);
+    return it != models.end() ? Scored(ids, it->second.first, it->second.second, exponent_interval)
+                              : Scored(ids, 0.05, 100.0);
   };
   io::Progress progress("diagnose", "fits", 0, {io::ProgressMode::kNone});
   SelectForward(d, options, score, progress);
@@ -93,6 +105,20 @@ TEST(DiagnoseSelection, AStepThatLeavesOnlyTheNoiseIsTakenAndNamed) {
   ASSERT_GE(d.winner, 0) << d.decision;
   EXPECT_EQ(d.named_effect, "depth_exponent") << d.decision;
   EXPECT_GT(d.candidates[d.winner].step_explained, 0.99);
+}
+
+// A step whose term the training drops do not identify (its interval covers its whole range, as a
+// fit on one drop can give) is not taken, however much it explains; a tight interval is.
+TEST(DiagnoseSelection, AStepWhoseParameterIsNotIdentifiedIsNotTaken) {
+  const Diagnosis d = Select(0.0020, {}, {0.2, 3.0});
+  ASSERT_EQ(d.selection.size(), 1u) << d.decision;
+  EXPECT_NE(d.decision.find("depth_exponent (Delta BIC 400.0), is not identified by the training drops: "
+                            "depth_exponent. = 1.3 with a 95 % interval [0.2, 3] over its whole range"),
+            std::string::npos)
+      << d.decision;
+  // 95 % of the range is the bound: [0.22, 2.9] (96 %) is not identified, [0.3, 2.9] (93 %) is.
+  EXPECT_EQ(Select(0.0020, {}, {0.22, 2.9}).selection.size(), 1u);
+  EXPECT_EQ(Select(0.0020, {}, {0.3, 2.9}).named_effect, "depth_exponent");
 }
 
 }  // namespace

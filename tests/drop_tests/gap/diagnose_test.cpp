@@ -15,6 +15,9 @@
 
 #include "drop_tests/dataset/synth.h"
 #include "drop_tests/catalog/catalog.h"
+#include "rft/input_error.h"
+
+#include <nlohmann/json.hpp>
 
 namespace touchdown::gap {
 namespace {
@@ -151,6 +154,64 @@ TEST(Diagnose, WithoutTheTermTheFloorNamesNoLibraryEffect) {
   EXPECT_EQ(d.named_effect, "none") << d.decision;
   for (int i : d.selection)
     EXPECT_EQ(d.candidates[i].effect_ids.back(), kWeakerDynamicTerm) << d.decision;
+}
+
+// --fit-on: fitted on the four drops at 1.2 m/s (one per pad and atmosphere), a hidden inertial
+// drag is named and recovered from them alone, and the other eight drops, all held out, are its
+// predictions at 0.8 and 1.6 m/s.
+TEST(Diagnose, FittedOnDesignatedDropsItPredictsTheRest) {
+  dataset::SynthSpec spec = SmallSpec();
+  spec.hidden_effect = model::Effect{"inertial_drag", {6.0}};
+  dataset::Dataset ds = dataset::Synthesize(spec);
+  ds.directory = "in-memory";
+  DiagnoseOptions o;
+  o.threads = 2;
+  o.permutations = 200;
+  for (dataset::DatasetDrop& drop : ds.drops) {
+    drop.soil = "fjs1_lp";
+    if (drop.impact_speed_m_s == 1.2) o.fit_on.push_back(drop.drop_id);
+  }
+  ASSERT_EQ(o.fit_on.size(), 4u);
+  const Diagnosis d = RunDiagnosis(ds, o);
+  for (size_t i = 0; i < ds.drops.size(); ++i)
+    EXPECT_EQ(d.held_out[i], ds.drops[i].impact_speed_m_s != 1.2) << ds.drops[i].drop_id;
+  ASSERT_EQ(d.named_effect, "inertial_drag") << d.decision;
+  const CandidateScore& w = d.candidates[d.winner];
+  for (const ParameterEstimate& e : w.fit.estimates)
+    if (!e.effect.empty()) {
+      std::printf("[ fit on 1.2 m/s ] %s = %.6g [%.6g, %.6g], truth 6\n", e.key.c_str(), e.value, e.low, e.high);
+      EXPECT_LE(std::abs(e.value - 6.0), 1.5 * 0.5 * (e.high - e.low)) << e.key;
+    }
+  EXPECT_GE(w.gap_reduction, 0.5) << d.decision;
+  EXPECT_EQ(DiagnosisJson(d)["split"]["held_out"].size(), 8u);
+}
+
+// A designation that cannot be fitted or leaves nothing to predict is refused before anything runs,
+// naming the field and the reason.
+TEST(Diagnose, ADesignationThatCannotBeFittedIsRefused) {
+  dataset::SynthSpec spec = SmallSpec();
+  spec.drops.resize(3);
+  spec.drops.push_back({"flat", "fjs1_cp", rft::Atmosphere::kAir, 1.0, std::nullopt, 9.81, 0});
+  dataset::Dataset ds = dataset::Synthesize(spec);
+  ds.directory = "in-memory";
+  std::vector<std::string> ids;
+  for (const dataset::DatasetDrop& drop : ds.drops) ids.push_back(drop.drop_id);
+  const auto refusal = [&](std::vector<std::string> fit_on) {
+    DiagnoseOptions o;
+    o.fit_on = std::move(fit_on);
+    try {
+      RunDiagnosis(ds, o);
+    } catch (const touchdown::InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(refusal({ids[0], ids[3], ids[1] + "x"}),
+            "in-memory/drops.csv: --fit-on: no drop '" + ids[1] + "x' (did you mean '" + ids[1] + "'?)");
+  EXPECT_EQ(refusal({ids[0]}),
+            "in-memory/drops.csv: --fit-on: no designated drop on soil '" + ds.drops[3].soil +
+                "': its zeta cannot be calibrated");
+  EXPECT_EQ(refusal(ids), "in-memory/drops.csv: --fit-on: designates every drop: none is left to predict");
 }
 
 }  // namespace

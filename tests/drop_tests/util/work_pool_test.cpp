@@ -87,7 +87,9 @@ TEST(ParallelForTest, AStopInScopeEndsTheLoopsAtTheNextIndexNestedOnesToo) {
       EXPECT_EQ(e.signal(), 2);
     }
     // One thread: indices 0 to 5 ran whole, then none. More: those running then may stop midway.
-    if (threads == 1) EXPECT_EQ(ran.load(), 6 * 4);
+    if (threads == 1) {
+      EXPECT_EQ(ran.load(), 6 * 4);
+    }
     EXPECT_GE(ran.load(), 4) << "threads " << threads;
     EXPECT_LT(ran.load(), 50 * 4) << "threads " << threads;
   }
