@@ -40,56 +40,48 @@ std::string Directory(const std::string& file) { return std::filesystem::path(fi
 }
 
 // The numeric columns of a record, in table order: the rig drop's metrics, then the free drop's
-// and the lander's. One list drives the schema, binding, reading, comparing and
-// the MPI serialisation, so a new column cannot be forgotten in one of them.
-constexpr const char* kNumberColumns1[] = {
-    "impact_speed_m_s", "pad_mass_kg",         "gravity_m_s2",     "tilt_deg",          "horizontal_speed_m_s",
-    "zeta_N_cm3",       "final_penetration_m", "peak_force_N",     "time_to_rest_s",    "max_deceleration_m_s2",
-    "impact_energy_J",  "gravity_work_J",      "dissipated_energy_J", "mean_conversion_rate_W", "rest_creep_m"};
-constexpr const char* kNumberColumns2[] = {
-    "final_tilt_deg", "horizontal_travel_m", "roll_deg", "pitch_deg", "pad1_final_penetration_m",
-    "pad2_final_penetration_m", "pad3_final_penetration_m", "pad4_final_penetration_m", "final_roll_deg",
-    "final_pitch_deg", "tipped_over"};
-constexpr size_t kNumbers1 = std::size(kNumberColumns1), kNumbers2 = std::size(kNumberColumns2);
+// and the lander's (StabilityNumbers, results_db.h, after the text and work-limit columns).
+const std::vector<RecordNumber>& RigNumbers() {
+  static const std::vector<RecordNumber> c = {
+      {"impact_speed_m_s", [](DropRecord& r) -> double& { return r.impact_speed_m_s; }},
+      {"pad_mass_kg", [](DropRecord& r) -> double& { return r.pad_mass_kg; }},
+      {"gravity_m_s2", [](DropRecord& r) -> double& { return r.gravity_m_s2; }},
+      {"tilt_deg", [](DropRecord& r) -> double& { return r.tilt_deg; }},
+      {"horizontal_speed_m_s", [](DropRecord& r) -> double& { return r.horizontal_speed_m_s; }},
+      {"zeta_N_cm3", [](DropRecord& r) -> double& { return r.zeta_N_cm3; }},
+      {"final_penetration_m", [](DropRecord& r) -> double& { return r.final_penetration_m; }},
+      {"peak_force_N", [](DropRecord& r) -> double& { return r.peak_force_N; }},
+      {"time_to_rest_s", [](DropRecord& r) -> double& { return r.time_to_rest_s; }},
+      {"max_deceleration_m_s2", [](DropRecord& r) -> double& { return r.max_deceleration_m_s2; }},
+      {"impact_energy_J", [](DropRecord& r) -> double& { return r.impact_energy_J; }},
+      {"gravity_work_J", [](DropRecord& r) -> double& { return r.gravity_work_J; }},
+      {"dissipated_energy_J", [](DropRecord& r) -> double& { return r.dissipated_energy_J; }},
+      {"mean_conversion_rate_W", [](DropRecord& r) -> double& { return r.mean_conversion_rate_W; }},
+      {"rest_creep_m", [](DropRecord& r) -> double& { return r.rest_creep_m; }}};
+  return c;
+}
+const std::vector<RecordNumber>& FreeAndLanderNumbers() {
+  static const std::vector<RecordNumber> c = {
+      {"final_tilt_deg", [](DropRecord& r) -> double& { return r.final_tilt_deg; }},
+      {"horizontal_travel_m", [](DropRecord& r) -> double& { return r.horizontal_travel_m; }},
+      {"roll_deg", [](DropRecord& r) -> double& { return r.roll_deg; }},
+      {"pitch_deg", [](DropRecord& r) -> double& { return r.pitch_deg; }},
+      {"pad1_final_penetration_m", [](DropRecord& r) -> double& { return r.pad_final_penetration_m[0]; }},
+      {"pad2_final_penetration_m", [](DropRecord& r) -> double& { return r.pad_final_penetration_m[1]; }},
+      {"pad3_final_penetration_m", [](DropRecord& r) -> double& { return r.pad_final_penetration_m[2]; }},
+      {"pad4_final_penetration_m", [](DropRecord& r) -> double& { return r.pad_final_penetration_m[3]; }},
+      {"final_roll_deg", [](DropRecord& r) -> double& { return r.final_roll_deg; }},
+      {"final_pitch_deg", [](DropRecord& r) -> double& { return r.final_pitch_deg; }},
+      {"tipped_over", [](DropRecord& r) -> double& { return r.tipped_over; }}};
+  return c;
+}
 // The soil under each lander pad and the ground case: text columns after the numbers.
 constexpr const char* kTextColumns3[] = {"pad1_soil", "pad2_soil", "pad3_soil", "pad4_soil", "ground_case"};
 constexpr size_t kTexts3 = std::size(kTextColumns3);
-// A stability study's lander metrics and conditions, the pads' largest swing on their ball joints
-// and the edge a lander tipped over (after the work-limit columns; new columns go at the end).
-constexpr const char* kNumberColumns5[] = {
-    "max_tilt_deg", "peak_leg_force_N", "max_stroke_m", "pad1_peak_force_N", "pad2_peak_force_N",
-    "pad3_peak_force_N", "pad4_peak_force_N", "slope_deg", "downhill_azimuth_deg", "yaw_relative_to_slope_deg",
-    "horizontal_azimuth_deg", "angular_rate_x_deg_s", "angular_rate_y_deg_s", "angular_rate_z_deg_s",
-    "max_joint_swing_deg", "tip_over_edge", "tip_over_azimuth_deg", "min_stability_margin_m"};
-constexpr size_t kNumbers5 = std::size(kNumberColumns5);
 // The work limit a failed drop ran out of, so a rerun with a higher limit retries it.
 constexpr const char* kLimitColumn = "failure_limit";
 constexpr const char* kLimitValueColumn = "failure_limit_value";
 
-template <typename R>  // DropRecord or const DropRecord
-auto Numbers1(R& r) {
-  return std::array{&r.impact_speed_m_s, &r.pad_mass_kg,       &r.gravity_m_s2,   &r.tilt_deg,
-                    &r.horizontal_speed_m_s, &r.zeta_N_cm3,   &r.final_penetration_m, &r.peak_force_N,
-                    &r.time_to_rest_s, &r.max_deceleration_m_s2, &r.impact_energy_J, &r.gravity_work_J,
-                    &r.dissipated_energy_J, &r.mean_conversion_rate_W, &r.rest_creep_m};
-}
-template <typename R>
-auto Numbers2(R& r) {
-  return std::array{&r.final_tilt_deg, &r.horizontal_travel_m, &r.roll_deg, &r.pitch_deg,
-                    &r.pad_final_penetration_m[0], &r.pad_final_penetration_m[1], &r.pad_final_penetration_m[2],
-                    &r.pad_final_penetration_m[3], &r.final_roll_deg, &r.final_pitch_deg, &r.tipped_over};
-}
-static_assert(std::tuple_size_v<decltype(Numbers1(std::declval<DropRecord&>()))> == kNumbers1);
-static_assert(std::tuple_size_v<decltype(Numbers2(std::declval<DropRecord&>()))> == kNumbers2);
-template <typename R>
-auto Numbers5(R& r) {
-  return std::array{&r.max_tilt_deg, &r.peak_leg_force_N, &r.max_stroke_m, &r.pad_peak_force_N[0],
-                    &r.pad_peak_force_N[1], &r.pad_peak_force_N[2], &r.pad_peak_force_N[3], &r.slope_deg,
-                    &r.downhill_azimuth_deg, &r.yaw_relative_to_slope_deg, &r.horizontal_azimuth_deg,
-                    &r.angular_rate_deg_s[0], &r.angular_rate_deg_s[1], &r.angular_rate_deg_s[2],
-                    &r.max_joint_swing_deg, &r.tip_over_edge, &r.tip_over_azimuth_deg, &r.min_stability_margin_m};
-}
-static_assert(std::tuple_size_v<decltype(Numbers5(std::declval<DropRecord&>()))> == kNumbers5);
 template <typename R>
 auto Texts3(R& r) {
   return std::array{&r.pad_soil[0], &r.pad_soil[1], &r.pad_soil[2], &r.pad_soil[3], &r.ground_case};
@@ -99,16 +91,19 @@ static_assert(std::tuple_size_v<decltype(Texts3(std::declval<DropRecord&>()))> =
 // The drops columns after drop_index, in the order of the INSERT statement.
 std::string Columns() {
   std::string c = "drop_id, status, failure, pad, soil, atmosphere";
-  for (const char* n : kNumberColumns1) c += std::string(", ") + n;
+  for (const RecordNumber& n : RigNumbers()) c += std::string(", ") + n.name;
   c += ", solver_steps, drop_kind";
-  for (const char* n : kNumberColumns2) c += std::string(", ") + n;
+  for (const RecordNumber& n : FreeAndLanderNumbers()) c += std::string(", ") + n.name;
   for (const char* n : kTextColumns3) c += std::string(", ") + n;
   c += std::string(", ") + kLimitColumn + ", " + kLimitValueColumn;
-  for (const char* n : kNumberColumns5) c += std::string(", ") + n;
+  for (const RecordNumber& n : StabilityNumbers()) c += std::string(", ") + n.name;
   return c;
 }
-constexpr int kColumnCount = 6 + static_cast<int>(kNumbers1) + 2 + static_cast<int>(kNumbers2) +
-                             static_cast<int>(kTexts3) + 2 + static_cast<int>(kNumbers5);  // after drop_index
+// The drops columns after drop_index.
+int ColumnCount() {
+  return 6 + static_cast<int>(RigNumbers().size()) + 2 + static_cast<int>(FreeAndLanderNumbers().size()) +
+         static_cast<int>(kTexts3) + 2 + static_cast<int>(StabilityNumbers().size());
+}
 
 class Statement {
  public:
@@ -152,14 +147,14 @@ void BindRecord(Statement& st, const DropRecord& r) {
   st.Text(i++, r.pad);
   st.Text(i++, r.soil);
   st.Text(i++, r.atmosphere);
-  for (const double* v : Numbers1(r)) st.Real(i++, *v);
+  for (const RecordNumber& n : RigNumbers()) st.Real(i++, n.Of(r));
   st.Int(i++, r.solver_steps);
   st.Text(i++, DropKindName(r.kind));
-  for (const double* v : Numbers2(r)) st.Real(i++, *v);
+  for (const RecordNumber& n : FreeAndLanderNumbers()) st.Real(i++, n.Of(r));
   for (const std::string* t : Texts3(r)) st.Text(i++, *t);
   st.Text(i++, r.failure_limit);
   st.Real(i++, r.failure_limit_value);
-  for (const double* v : Numbers5(r)) st.Real(i++, *v);
+  for (const RecordNumber& n : StabilityNumbers()) st.Real(i++, n.Of(r));
 }
 
 DropRecord ReadRecord(Statement& st) {
@@ -172,16 +167,16 @@ DropRecord ReadRecord(Statement& st) {
   r.pad = st.ColumnText(i++);
   r.soil = st.ColumnText(i++);
   r.atmosphere = st.ColumnText(i++);
-  for (double* v : Numbers1(r)) *v = st.ColumnReal(i++);
+  for (const RecordNumber& n : RigNumbers()) n.at(r) = st.ColumnReal(i++);
   r.solver_steps = sqlite3_column_int64(st.get(), i++);
   const std::string kind = st.ColumnText(i++);
   // A format-1 row read through the added columns has none: a rig drop.
   r.kind = kind.empty() ? DropKind::kRig : ParseDropKind(kind, "drop " + r.drop_id);
-  for (double* v : Numbers2(r)) *v = st.ColumnReal(i++);
+  for (const RecordNumber& n : FreeAndLanderNumbers()) n.at(r) = st.ColumnReal(i++);
   for (std::string* t : Texts3(r)) *t = st.ColumnText(i++);
   r.failure_limit = st.ColumnText(i++);
   r.failure_limit_value = st.ColumnReal(i++);
-  for (double* v : Numbers5(r)) *v = st.ColumnReal(i++);
+  for (const RecordNumber& n : StabilityNumbers()) n.at(r) = st.ColumnReal(i++);
   return r;
 }
 
@@ -225,16 +220,33 @@ struct Reader {
 static_assert(sizeof(pad::DropSample) == 4 * sizeof(double), "traces are stored as 4 doubles per sample");
 }  // namespace
 
+const std::vector<RecordNumber>& StabilityNumbers() {
+  static const std::vector<RecordNumber> c = {
+      {"max_tilt_deg", [](DropRecord& r) -> double& { return r.max_tilt_deg; }},
+      {"peak_leg_force_N", [](DropRecord& r) -> double& { return r.peak_leg_force_N; }},
+      {"max_stroke_m", [](DropRecord& r) -> double& { return r.max_stroke_m; }},
+      {"pad1_peak_force_N", [](DropRecord& r) -> double& { return r.pad_peak_force_N[0]; }},
+      {"pad2_peak_force_N", [](DropRecord& r) -> double& { return r.pad_peak_force_N[1]; }},
+      {"pad3_peak_force_N", [](DropRecord& r) -> double& { return r.pad_peak_force_N[2]; }},
+      {"pad4_peak_force_N", [](DropRecord& r) -> double& { return r.pad_peak_force_N[3]; }},
+      {"slope_deg", [](DropRecord& r) -> double& { return r.slope_deg; }},
+      {"downhill_azimuth_deg", [](DropRecord& r) -> double& { return r.downhill_azimuth_deg; }},
+      {"yaw_relative_to_slope_deg", [](DropRecord& r) -> double& { return r.yaw_relative_to_slope_deg; }},
+      {"horizontal_azimuth_deg", [](DropRecord& r) -> double& { return r.horizontal_azimuth_deg; }},
+      {"angular_rate_x_deg_s", [](DropRecord& r) -> double& { return r.angular_rate_deg_s[0]; }},
+      {"angular_rate_y_deg_s", [](DropRecord& r) -> double& { return r.angular_rate_deg_s[1]; }},
+      {"angular_rate_z_deg_s", [](DropRecord& r) -> double& { return r.angular_rate_deg_s[2]; }},
+      {"max_joint_swing_deg", [](DropRecord& r) -> double& { return r.max_joint_swing_deg; }},
+      {"tip_over_edge", [](DropRecord& r) -> double& { return r.tip_over_edge; }},
+      {"tip_over_azimuth_deg", [](DropRecord& r) -> double& { return r.tip_over_azimuth_deg; }},
+      {"min_stability_margin_m", [](DropRecord& r) -> double& { return r.min_stability_margin_m; }}};
+  return c;
+}
+
 bool SameRecord(const DropRecord& a, const DropRecord& b, bool compare_traces) {
-  const auto a1 = Numbers1(a), b1 = Numbers1(b);
-  for (size_t i = 0; i < a1.size(); ++i)
-    if (!SameBits(*a1[i], *b1[i])) return false;
-  const auto a2 = Numbers2(a), b2 = Numbers2(b);
-  for (size_t i = 0; i < a2.size(); ++i)
-    if (!SameBits(*a2[i], *b2[i])) return false;
-  const auto a5 = Numbers5(a), b5 = Numbers5(b);
-  for (size_t i = 0; i < a5.size(); ++i)
-    if (!SameBits(*a5[i], *b5[i])) return false;
+  for (const std::vector<RecordNumber>* group : {&RigNumbers(), &FreeAndLanderNumbers(), &StabilityNumbers()})
+    for (const RecordNumber& n : *group)
+      if (!SameBits(n.Of(a), n.Of(b))) return false;
   if (a.index != b.index || a.drop_id != b.drop_id || a.ok != b.ok || a.failure != b.failure || a.kind != b.kind ||
       a.pad != b.pad || a.soil != b.soil || a.atmosphere != b.atmosphere || a.solver_steps != b.solver_steps ||
       a.pad_soil != b.pad_soil || a.ground_case != b.ground_case || a.failure_limit != b.failure_limit ||
@@ -269,12 +281,12 @@ std::string SerializeRecords(const std::vector<DropRecord>& records) {
     Put<uint8_t>(out, r.ok ? 1 : 0);
     const std::string kind = DropKindName(r.kind);
     for (const std::string* s : {&r.failure, &kind, &r.pad, &r.soil, &r.atmosphere}) PutString(out, *s);
-    for (const double* v : Numbers1(r)) Put(out, *v);
-    for (const double* v : Numbers2(r)) Put(out, *v);
+    for (const RecordNumber& n : RigNumbers()) Put(out, n.Of(r));
+    for (const RecordNumber& n : FreeAndLanderNumbers()) Put(out, n.Of(r));
     for (const std::string* t : Texts3(r)) PutString(out, *t);
     PutString(out, r.failure_limit);
     Put(out, r.failure_limit_value);
-    for (const double* v : Numbers5(r)) Put(out, *v);
+    for (const RecordNumber& n : StabilityNumbers()) Put(out, n.Of(r));
     Put(out, r.solver_steps);
     Put<uint64_t>(out, r.trace.size());
     out.append(reinterpret_cast<const char*>(r.trace.data()), r.trace.size() * sizeof(pad::DropSample));
@@ -292,12 +304,12 @@ std::vector<DropRecord> DeserializeRecords(const std::string& bytes) {
     std::string kind;
     for (std::string* s : {&r.failure, &kind, &r.pad, &r.soil, &r.atmosphere}) *s = in.GetString();
     r.kind = ParseDropKind(kind, "drop " + r.drop_id);
-    for (double* v : Numbers1(r)) *v = in.Get<double>();
-    for (double* v : Numbers2(r)) *v = in.Get<double>();
+    for (const RecordNumber& n : RigNumbers()) n.at(r) = in.Get<double>();
+    for (const RecordNumber& n : FreeAndLanderNumbers()) n.at(r) = in.Get<double>();
     for (std::string* t : Texts3(r)) *t = in.GetString();
     r.failure_limit = in.GetString();
     r.failure_limit_value = in.Get<double>();
-    for (double* v : Numbers5(r)) *v = in.Get<double>();
+    for (const RecordNumber& n : StabilityNumbers()) n.at(r) = in.Get<double>();
     r.solver_steps = in.Get<int64_t>();
     r.trace.resize(in.Get<uint64_t>());
     for (pad::DropSample& s : r.trace) s = in.Get<pad::DropSample>();
@@ -325,18 +337,18 @@ struct AddedColumn {
 };
 std::vector<AddedColumn> AddedColumns() {
   std::vector<AddedColumn> c{{"drop_kind", "TEXT NOT NULL DEFAULT 'rig'", "'rig'"}};
-  for (const char* n : kNumberColumns2) c.push_back({n, "REAL", "NULL"});
+  for (const RecordNumber& n : FreeAndLanderNumbers()) c.push_back({n.name, "REAL", "NULL"});
   for (const char* n : kTextColumns3) c.push_back({n, "TEXT NOT NULL DEFAULT ''", "''"});
   c.push_back({kLimitColumn, "TEXT NOT NULL DEFAULT ''", "''"});
   c.push_back({kLimitValueColumn, "REAL", "NULL"});
-  for (const char* n : kNumberColumns5) c.push_back({n, "REAL", "NULL"});
+  for (const RecordNumber& n : StabilityNumbers()) c.push_back({n.name, "REAL", "NULL"});
   return c;
 }
 std::string DropsTableSql(const std::string& kind) {
   std::string drops = "CREATE " + kind + " drops(drop_index INTEGER PRIMARY KEY, drop_id TEXT NOT NULL, "
                       "status TEXT NOT NULL, failure TEXT NOT NULL, pad TEXT NOT NULL, soil TEXT NOT NULL, "
                       "atmosphere TEXT NOT NULL";
-  for (const char* n : kNumberColumns1) drops += std::string(", ") + n + " REAL";
+  for (const RecordNumber& n : RigNumbers()) drops += std::string(", ") + n.name + " REAL";
   drops += ", solver_steps INTEGER";
   for (const AddedColumn& c : AddedColumns()) drops += ", " + c.name + " " + c.declaration;
   return drops + ")";
@@ -437,7 +449,7 @@ void ResultsDb::AdaptTables() {
     while (info.Step() == SQLITE_ROW) present.push_back(info.ColumnText(1));
   }
   std::string view = "CREATE TEMP VIEW drops AS SELECT drop_index, drop_id, status, failure, pad, soil, atmosphere";
-  for (const char* n : kNumberColumns1) view += std::string(", ") + n;
+  for (const RecordNumber& n : RigNumbers()) view += std::string(", ") + n.name;
   view += ", solver_steps";
   bool complete = true;
   for (const AddedColumn& c : AddedColumns()) {
@@ -493,7 +505,7 @@ void ResultsDb::Insert(const std::vector<DropRecord>& records) {
   Exec("BEGIN IMMEDIATE");
   try {
     std::string marks = "?";
-    for (int i = 0; i < kColumnCount; ++i) marks += ",?";
+    for (int i = 0; i < ColumnCount(); ++i) marks += ",?";
     Statement drop(db_, "INSERT INTO drops(drop_index, " + Columns() + ") VALUES(" + marks + ")");
     Statement trace(db_, "INSERT INTO traces(drop_index, samples, data) VALUES(?,?,?)");
     for (const DropRecord& r : records) {
@@ -587,7 +599,7 @@ std::string SelectRecords(bool with_traces, const std::string& where_and_order) 
 }  // namespace
 
 std::vector<DropRecord> ResultsDb::ReadPage(int64_t from, size_t limit, bool with_traces) const {
-  const int n_columns = 1 + kColumnCount;
+  const int n_columns = 1 + ColumnCount();
   Statement st(db_, SelectRecords(with_traces, "WHERE d.drop_index >= ? ORDER BY d.drop_index LIMIT ?"));
   st.Int(1, from);
   st.Int(2, static_cast<int64_t>(limit));
@@ -603,7 +615,7 @@ std::vector<DropRecord> ResultsDb::ReadPage(int64_t from, size_t limit, bool wit
 }
 
 void ResultsDb::ForEach(const std::function<void(const DropRecord&)>& visit, bool with_traces) const {
-  const int n_columns = 1 + kColumnCount;
+  const int n_columns = 1 + ColumnCount();
   Statement st(db_, SelectRecords(with_traces, "ORDER BY d.drop_index"));
   int rc;
   while ((rc = st.Step()) == SQLITE_ROW) {

@@ -126,6 +126,18 @@ struct DropRecord {
   std::vector<pad::DropSample> trace;  // empty unless stored
 };
 
+// A number a record keeps, as a column: its name (with its unit suffix) beside where the record
+// keeps it. A group's table drives the database's schema, binding and reading, SameRecord, the MPI
+// serialisation and the lander export's columns, so a name and its field cannot drift apart.
+struct RecordNumber {
+  const char* name;
+  double& (*at)(DropRecord&);
+  double Of(const DropRecord& r) const { return at(const_cast<DropRecord&>(r)); }  // reads only
+};
+// The lander's stability metrics and conditions, the joints' swing and the tip-over edge: the last
+// column group of the drops table, and of lander_drops.csv.
+const std::vector<RecordNumber>& StabilityNumbers();
+
 // Bitwise equality of every field (NaN equals NaN of the same bits).
 bool SameRecord(const DropRecord& a, const DropRecord& b, bool compare_traces = true);
 

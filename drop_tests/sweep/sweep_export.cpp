@@ -198,21 +198,20 @@ dataset::Dataset SweepToDataset(const std::string& sweep_dir, const ExportOption
   return ds;
 }
 
-const std::vector<std::string> kLanderExportColumns = {
-    "drop_id",           "pad",          "soil",        "atmosphere",  "impact_speed_m_s",
-    "pad_mass_kg",       "gravity_m_s2", "horizontal_speed_m_s", "roll_deg", "pitch_deg",
-    "tilt_deg",          "ground_case",  "pad1_soil",   "pad2_soil",   "pad3_soil",
-    "pad4_soil",         "zeta_N_cm3",   "final_penetration_m", "peak_force_N",
-    "pad1_final_penetration_m", "pad2_final_penetration_m", "pad3_final_penetration_m",
-    "pad4_final_penetration_m", "final_roll_deg", "final_pitch_deg", "final_tilt_deg", "tipped_over",
-    "time_to_rest_s",    "max_deceleration_m_s2", "impact_energy_J", "gravity_work_J", "dissipated_energy_J",
-    "mean_conversion_rate_W", "horizontal_travel_m", "solver_steps",
-    // a stability study's metrics and conditions, the joints' swing, the tip-over edge
-    "max_tilt_deg", "peak_leg_force_N", "max_stroke_m", "pad1_peak_force_N", "pad2_peak_force_N",
-    "pad3_peak_force_N", "pad4_peak_force_N", "slope_deg", "downhill_azimuth_deg", "yaw_relative_to_slope_deg",
-    "horizontal_azimuth_deg", "angular_rate_x_deg_s", "angular_rate_y_deg_s", "angular_rate_z_deg_s",
-    "max_joint_swing_deg",
-    "tip_over_edge", "tip_over_azimuth_deg", "min_stability_margin_m"};
+const std::vector<std::string> kLanderExportColumns = [] {
+  std::vector<std::string> c = {
+      "drop_id",           "pad",          "soil",        "atmosphere",  "impact_speed_m_s",
+      "pad_mass_kg",       "gravity_m_s2", "horizontal_speed_m_s", "roll_deg", "pitch_deg",
+      "tilt_deg",          "ground_case",  "pad1_soil",   "pad2_soil",   "pad3_soil",
+      "pad4_soil",         "zeta_N_cm3",   "final_penetration_m", "peak_force_N",
+      "pad1_final_penetration_m", "pad2_final_penetration_m", "pad3_final_penetration_m",
+      "pad4_final_penetration_m", "final_roll_deg", "final_pitch_deg", "final_tilt_deg", "tipped_over",
+      "time_to_rest_s",    "max_deceleration_m_s2", "impact_energy_J", "gravity_work_J", "dissipated_energy_J",
+      "mean_conversion_rate_W", "horizontal_travel_m", "solver_steps"};
+  // a stability study's metrics and conditions, the joints' swing, the tip-over edge
+  for (const RecordNumber& n : StabilityNumbers()) c.push_back(n.name);
+  return c;
+}();
 
 namespace {
 // Every failed drop of the database (a second pass in index order, streamed).
@@ -266,13 +265,10 @@ ExportSummary ExportLanderSweep(const ResultsDb& db, const io::OutputTarget& dat
                              r.mean_conversion_rate_W, r.horizontal_travel_m})
               out << ',' << (std::isfinite(v) ? io::FormatNumber(v) : "");
             out << ',' << r.solver_steps;
-            for (double v : {r.max_tilt_deg, r.peak_leg_force_N, r.max_stroke_m, r.pad_peak_force_N[0],
-                             r.pad_peak_force_N[1], r.pad_peak_force_N[2], r.pad_peak_force_N[3], r.slope_deg,
-                             r.downhill_azimuth_deg, r.yaw_relative_to_slope_deg, r.horizontal_azimuth_deg,
-                             r.angular_rate_deg_s[0], r.angular_rate_deg_s[1], r.angular_rate_deg_s[2],
-                             r.max_joint_swing_deg, r.tip_over_edge, r.tip_over_azimuth_deg,
-                             r.min_stability_margin_m})
+            for (const RecordNumber& n : StabilityNumbers()) {
+              const double v = n.Of(r);
               out << ',' << (std::isfinite(v) ? io::FormatNumber(v) : "");
+            }
             out << '\n';
           },
           /*with_traces=*/false);
