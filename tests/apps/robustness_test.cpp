@@ -734,6 +734,14 @@ std::vector<Case> Cases() {
                {{"sampling.synth.yaml", "schema_version: 1\ntype: synth\nseed: 1\nsensor_sampling: averaged\n"
                                         "drops:\n  - {pads: [flat], soils: [fjs1_lp], impact_speeds_m_s: [1.0]}\n"}}});
   c.push_back({"diagnose", "--sensor-sampling averaged", "diagnose measured --sensor-sampling averaged --out out_w3", {}});
+  // Designated training drops (diagnose --fit-on): one not in the dataset, or every drop.
+  const std::string fit_drops = kDropsHeader + "d0,flat,fjs1_lp,vacuum,1.0,1.6,9.81,t.csv\n"
+                                               "d1,flat,fjs1_lp,vacuum,1.2,1.6,9.81,t.csv\n"
+                                               "d2,flat,fjs1_lp,vacuum,1.4,1.6,9.81,t.csv\n";
+  c.push_back({"diagnose", "--fit-on a drop not in the dataset", "diagnose ds_fit1 --fit-on d0,d9 --out out_w4",
+               Dataset("ds_fit1", fit_drops)});
+  c.push_back({"diagnose", "--fit-on every drop (none left to predict)", "diagnose ds_fit2 --fit-on d0,d1,d2 --out out_w5",
+               Dataset("ds_fit2", fit_drops)});
   // Unknown options are named before a missing required one; inputs by bundled name.
   c.push_back({"CLI flag", "misspelt option, a required one missing", "drop --sped 1"});
   c.push_back({"CLI flag", "misspelt option as --name=value", "drop --pad flat --soil fjs1_lp --speed=1 --gravty=1.6"});
