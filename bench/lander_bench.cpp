@@ -140,8 +140,7 @@ void BM_LanderBekker_Slope4_1s(benchmark::State& state) {
   soil.name = "fjs1_lp_bekker";
   soil.rft_law_3d = rft::LawKind::kBekker;
   soil.bekker = {state.range(0) == 1 ? 1.0 : 1.018, 0.0, 3888e3, 170.0, 35.0 * units::kDeg, 0.018};
-  const double b = rft::BekkerPlateB(setup.model.legs[0].pad->surface);
-  setup.terrain.soils = {{soil.name, rft::MakeSoilContactModel(rft::LawKind::kBekker, soil, rft::kMoonGravity_m_s2, {}, b)}};
+  setup.terrain.soils = {{soil.name, rft::MakeSoilContactModel(rft::LawKind::kBekker, soil, rft::kMoonGravity_m_s2, {}, &setup.model.legs[0].pad->surface)}};
   setup.terrain.surface = std::make_shared<rft::PlaneGround>(0.0, -std::tan(4.0 * units::kDeg), 0.0);
   lander::LanderInitialState& s = setup.initial;
   s.R_WB = Eigen::AngleAxisd(3.0 * units::kDeg, Eigen::Vector3d::UnitX()).toRotationMatrix();

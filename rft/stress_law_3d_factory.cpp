@@ -106,7 +106,7 @@ EffectTerms WithSoilDynamicTerm(const EffectTerms& terms, const SoilParameters& 
 }
 
 SoilContactModel MakeSoilContactModel(LawKind law, const SoilParameters& soil, double gravity_m_s2,
-                                      const EffectTerms& model_terms, double bekker_plate_b_m) {
+                                      const EffectTerms& model_terms, const SurfaceElements* pad_surface) {
   const EffectTerms terms = WithSoilDynamicTerm(model_terms, soil);
   Require(std::isfinite(terms.inertial_lambda) && terms.inertial_lambda >= 0.0, soil, "inertial_drag.lambda",
           "must be non-negative", terms.inertial_lambda);
@@ -132,6 +132,7 @@ SoilContactModel MakeSoilContactModel(LawKind law, const SoilParameters& soil, d
   if (law == LawKind::kBekker)
     Require(terms.depth_exponent == 1.0, soil, "depth_exponent.p",
             "does not apply to the bekker law (its own exponent is bekker.n)", terms.depth_exponent);
+  const double bekker_plate_b_m = law == LawKind::kBekker && pad_surface ? BekkerPlateB(*pad_surface) : 0.0;
   std::unique_ptr<StressLaw3D> out = MakeStressLaw3D(law, soil, gravity_m_s2, bekker_plate_b_m);
   // DynamicTermLaw replaces its inner law's dynamic stress, so it goes innermost; the other
   // decorators add theirs to their inner law's.

@@ -8,6 +8,7 @@
 #include "rft/soil.h"
 #include "rft/soil_contact_model.h"
 #include "rft/stress_law_3d.h"
+#include "rft/surface_elements.h"
 
 namespace touchdown::rft {
 
@@ -45,8 +46,9 @@ void RequireBekkerParameters(const SoilParameters& soil);
 // ignored. Throws InputError naming the soil when a term's value is invalid or a term needs the
 // bulk density and the soil has none.
 // kBekker: the depth law is Bekker's z^n ({n, 1 m}), so the depth_exponent term does not apply
-// (InputError).
+// (InputError); its plate dimension b is the pad's, BekkerPlateB(*pad_surface), computed here for
+// every caller (an InputError names the soil when a bekker law gets no pad). Other laws ignore the pad.
 SoilContactModel MakeSoilContactModel(LawKind law, const SoilParameters& soil, double gravity_m_s2,
-                                      const EffectTerms& terms, double bekker_plate_b_m = 0.0);
+                                      const EffectTerms& terms, const SurfaceElements* pad_surface = nullptr);
 
 }  // namespace touchdown::rft

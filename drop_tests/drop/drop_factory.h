@@ -57,10 +57,9 @@ pad::EffectSoilResponse MakeRigResponse(const geom::AxisymmetricIntrusion& intru
 
 // The free pad's contact model: the 3D law `law_3d` (the soil's rft_law_3d when none) on
 // `drop_soil` at the drop's gravity, with the effect terms (model::MakeEffectLaw3D).
-// `bekker_plate_b_m`: the pad's footprint dimension (rft::BekkerPlateB of its surface), used by the
-// bekker law only.
+// `pad_surface`: the pad, whose footprint gives the bekker law its b (rft::MakeSoilContactModel).
 rft::SoilContactModel MakeFreeLaw(const rft::SoilParameters& drop_soil, const std::optional<rft::LawKind>& law_3d,
                                   double gravity_m_s2, const rft::EffectTerms& terms,
-                                  const std::string& effects_source, double bekker_plate_b_m = 0.0);
+                                  const std::string& effects_source, const rft::SurfaceElements* pad_surface = nullptr);
 
 }  // namespace touchdown::drop

@@ -47,10 +47,9 @@ void WriteDropVtk(const PadDrop& drop, const io::PadSpec& pad, const io::OutputT
   const pad::FreeDropResult& r = *drop.free;
   const DropConditions& c = drop.conditions;
   const rft::SoilParameters drop_soil = DropSoil(drop.soil, c.zeta_N_m3, c.atmosphere);
-  // As the drop itself ran (pad_drop.cpp): a Bekker soil needs the pad's footprint dimension b.
-  const double plate_b_m = RunsOnBekker(drop_soil, c.law_3d) ? rft::BekkerPlateB(pad.body.surface) : 0.0;
+  // As the drop itself ran (pad_drop.cpp).
   const rft::SoilContactModel contact =
-      MakeFreeLaw(drop_soil, c.law_3d, c.gravity_m_s2, c.effects, c.effects_source, plate_b_m);
+      MakeFreeLaw(drop_soil, c.law_3d, c.gravity_m_s2, c.effects, c.effects_source, &pad.body.surface);
   const io::PadSurfaceMesh mesh = io::MakePadSurfaceMesh(pad.body.surface);
   const rft::PlaneGround ground;  // the free drop's bed (rft::UniformTerrain's surface)
   io::WriteOutputDirectory(dir, io::OutputKind::kDropVtk, [&](const std::string& staging) {

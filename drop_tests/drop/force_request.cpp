@@ -60,9 +60,8 @@ nlohmann::json ForceJson(const ForceRequest& r, const RequestNaming& naming, con
   if (r.zeta_N_cm3) soil.zeta_N_m3 = units::ZetaFromN_cm3(*r.zeta_N_cm3);
   soil.dynamic_term = soil.dynamic_term && r.dynamic;
   const rft::LawKind kind = r.law ? rft::ParseLawKind(*r.law, naming.context, naming.Field("law")) : soil.rft_law_3d;
-  const double plate_b_m = kind == rft::LawKind::kBekker ? rft::BekkerPlateB(pad.body.surface) : 0.0;
   // The contact model (law and pad-level terms): Bekker's z^n is a pad-level depth law.
-  const rft::SoilContactModel model = rft::MakeSoilContactModel(kind, soil, r.gravity_m_s2, {}, plate_b_m);
+  const rft::SoilContactModel model = rft::MakeSoilContactModel(kind, soil, r.gravity_m_s2, {}, &pad.body.surface);
   const rft::StressLaw3D& law = *model.law;
   k.p_WB = pad::PlaceAtDepth(pad.body, k.R_WB, r.depth_m);
   const rft::ContactWrench w = rft::ComputeContactWrench(pad.body.surface, k, rft::PlaneGround(), law, model.pad_terms);
@@ -84,7 +83,7 @@ nlohmann::json ForceJson(const ForceRequest& r, const RequestNaming& naming, con
       {"surface_elements", pad.body.surface.size()},
       {"dynamic_term", soil.dynamic_term},
   };
-  if (kind == rft::LawKind::kBekker) out["bekker_plate_b_m"] = plate_b_m;
+  if (kind == rft::LawKind::kBekker) out["bekker_plate_b_m"] = rft::BekkerPlateB(pad.body.surface);  // as the law took it
   return out;
 }
 

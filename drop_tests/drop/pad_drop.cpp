@@ -101,10 +101,8 @@ PadDrop SimulateDrop(const io::PadSpec& pad, const rft::SoilParameters& soil, co
                rft::LawKind::kLi2013, {}};
 
   if (free) {
-    const bool bekker = RunsOnBekker(drop_soil, conditions.law_3d);
-    const rft::SoilContactModel law =
-        MakeFreeLaw(drop_soil, conditions.law_3d, conditions.gravity_m_s2, conditions.effects,
-                    conditions.effects_source, bekker ? rft::BekkerPlateB(pad.body.surface) : 0.0);
+    const rft::SoilContactModel law = MakeFreeLaw(drop_soil, conditions.law_3d, conditions.gravity_m_s2,
+                                                  conditions.effects, conditions.effects_source, &pad.body.surface);
     drop.law_3d = law.law->kind();
     drop.contact_model = law.name();
     pad::FreeDropInput in;

@@ -27,6 +27,7 @@
 #include "rft/effect_terms.h"
 #include "rft/soil.h"
 #include "rft/soil_contact_model.h"
+#include "rft/surface_elements.h"
 
 namespace touchdown::model {
 
@@ -97,10 +98,10 @@ std::vector<std::pair<std::string, std::string>> EffectsNotApplied(const rft::Ef
 // added_mass and added_mass_plug (rho = the soil's bulk density, as in the rig), rate_damping, compaction_peak,
 // depth_exponent, and gas_cushion when `in_air`. Throws InputError naming the soil and
 // `model_source` when an effect needs the bulk density and the soil has none.
-// `bekker_plate_b_m`: the pad's footprint dimension b for the bekker law (rft::BekkerPlateB).
+// `pad_surface`: the pad, whose footprint gives the bekker law its b (rft::MakeSoilContactModel).
 rft::SoilContactModel MakeEffectLaw3D(rft::LawKind law, const rft::SoilParameters& soil, double gravity_m_s2,
                                       const rft::EffectTerms& terms, bool in_air, const std::string& model_source,
-                                      double bekker_plate_b_m = 0.0);
+                                      const rft::SurfaceElements* pad_surface = nullptr);
 
 // Per effect, the [low, high] (SI) of each parameter in EffectInfo order (a fit's confidence
 // intervals; informational). Reading and writing the `effects:` mapping of a model file:

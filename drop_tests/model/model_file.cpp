@@ -132,13 +132,14 @@ rft::EffectTerms ModelEffectTerms(const ModelFile& m) {
 }
 
 rft::SoilContactModel MakeModelStressLaw3D(rft::LawKind law, const rft::SoilParameters& soil,
-                                           double gravity_m_s2, const ModelFile* model, double bekker_plate_b_m) {
+                                           double gravity_m_s2, const ModelFile* model,
+                                           const rft::SurfaceElements* pad_surface) {
   if (!model)
     return MakeEffectLaw3D(law, soil, gravity_m_s2, rft::EffectTerms{}, soil.atmosphere == rft::Atmosphere::kAir, "",
-                           bekker_plate_b_m);
+                           pad_surface);
   return MakeEffectLaw3D(law, ApplyModel(*model, soil), gravity_m_s2, ModelEffectTerms(*model),
                          soil.atmosphere == rft::Atmosphere::kAir, model->source.empty() ? "model " + model->name : model->source,
-                         bekker_plate_b_m);
+                         pad_surface);
 }
 
 nlohmann::json ModelEffectsJson(const ModelFile& m) {

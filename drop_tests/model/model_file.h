@@ -89,9 +89,10 @@ rft::EffectTerms ModelEffectTerms(const ModelFile& model);
 // (ApplyModel) and the effect terms in their 3D form (MakeEffectLaw3D; gas_cushion only when the
 // soil's atmosphere is air). Throws InputError naming the soil and the model file when an effect
 // needs the soil's bulk density and it has none.
-// `bekker_plate_b_m`: the pad's footprint dimension b for the bekker law (rft::BekkerPlateB).
+// `pad_surface`: the pad, whose footprint gives the bekker law its b (rft::MakeSoilContactModel).
 rft::SoilContactModel MakeModelStressLaw3D(rft::LawKind law, const rft::SoilParameters& soil,
-                                           double gravity_m_s2, const ModelFile* model, double bekker_plate_b_m = 0.0);
+                                           double gravity_m_s2, const ModelFile* model,
+                                           const rft::SurfaceElements* pad_surface = nullptr);
 // The model as a 3D run (lander) reports it: {file, effects: [ids applied], effects_not_applied:
 // {id: reason}}; gas_cushion is applied on the soils in air only (said so in its entry).
 nlohmann::json ModelEffectsJson(const ModelFile& model);

@@ -122,8 +122,6 @@ LanderSetup BuildLanderSetup(const LanderScenario& sc, const LanderSoilCatalog* 
     }
     out.terrain.patches.push_back(patch);
   }
-  // The bekker law's b is the lander's pad's (the same pad on every leg).
-  const double plate_b_m = sc.ground.law == rft::LawKind::kBekker ? rft::BekkerPlateB(sc.lander.pad.body.surface) : 0.0;
   if (sc.ground.soil_field) {
     // After the explicit patches (first match wins); cells of the default soil need no patch.
     // seed: per_landing is a study's (its landings get their seeds, sweep_drop.cpp); a plan's
@@ -139,7 +137,8 @@ LanderSetup BuildLanderSetup(const LanderScenario& sc, const LanderSoilCatalog* 
   }
   for (const std::string& name : soil_names)
     out.terrain.soils.push_back({name, model::MakeModelStressLaw3D(sc.ground.law, SoilFor(name, soils), g,
-                                                                   sc.model ? &*sc.model : nullptr, plate_b_m)});
+                                                                   sc.model ? &*sc.model : nullptr,
+                                                                   &sc.lander.pad.body.surface)});  // one pad on every leg
   return out;
 }
 

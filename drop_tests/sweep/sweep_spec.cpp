@@ -712,7 +712,7 @@ SweepPlan LoadSweepPlan(const std::string& path, const std::string& model_overri
       scenario::BuildLanderSetup(*plan.lander, &soils);  // the scenario's own soils under the model
       for (const std::string& ref : plan.soil_refs)
         model::MakeModelStressLaw3D(plan.lander->ground.law, soils.at(ref), plan.lander->gravity_m_s2, model,
-                                    rft::BekkerPlateB(plan.lander->lander.pad.body.surface));
+                                    &plan.lander->lander.pad.body.surface);
     } catch (const InputError& e) {
       f.Fail("lander", e.what());
     }

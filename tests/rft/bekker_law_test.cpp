@@ -58,7 +58,7 @@ ContactWrench BekkerWrench(const SurfaceElements& s, const SoilContactModel& m, 
 // The name outputs print carries no "+depth_exponent" for Bekker's own z^n (the law's kind says so).
 TEST(BekkerLaw, ContactModelIsOfKindBekkerAndNamedWithoutDepthExponent) {
   const BekkerPlate plate = FlatBekkerPlate(0.05, 64);
-  const SoilContactModel m = MakeSoilContactModel(LawKind::kBekker, BekkerSoil(1.1), 1.62, {}, BekkerPlateB(plate.surface));
+  const SoilContactModel m = MakeSoilContactModel(LawKind::kBekker, BekkerSoil(1.1), 1.62, {}, &plate.surface);
   EXPECT_EQ(m.law->kind(), LawKind::kBekker);
   EXPECT_TRUE(m.pad_terms.has_power_depth());
   EXPECT_EQ(m.name(), "bekker");
@@ -80,7 +80,7 @@ TEST(BekkerLaw, FlatCircularPlatePushedStraightDown) {
   const BekkerPlate plate = FlatBekkerPlate(r, 256);
   const double b = BekkerPlateB(plate.surface);
   for (const double n : {1.0, 0.8, 1.3}) {
-    const SoilContactModel m = MakeSoilContactModel(LawKind::kBekker, BekkerSoil(n), 1.62, {}, b);
+    const SoilContactModel m = MakeSoilContactModel(LawKind::kBekker, BekkerSoil(n), 1.62, {}, &plate.surface);
     for (const double z : {0.001, 0.004, 0.009}) {
       const ContactWrench w = BekkerWrench(plate.surface, m, z, {0, 0, -0.7});
       const BekkerParameters p = LunarBekker(n);
@@ -98,9 +98,8 @@ TEST(BekkerLaw, FlatCircularPlatePushedStraightDown) {
 
 TEST(BekkerLaw, GravityDoesNotEnter) {
   const BekkerPlate plate = FlatBekkerPlate(0.05, 64);
-  const double b = BekkerPlateB(plate.surface);
-  const SoilContactModel moon = MakeSoilContactModel(LawKind::kBekker, BekkerSoil(1.0), 1.62, {}, b);
-  const SoilContactModel earth = MakeSoilContactModel(LawKind::kBekker, BekkerSoil(1.0), 9.81, {}, b);
+  const SoilContactModel moon = MakeSoilContactModel(LawKind::kBekker, BekkerSoil(1.0), 1.62, {}, &plate.surface);
+  const SoilContactModel earth = MakeSoilContactModel(LawKind::kBekker, BekkerSoil(1.0), 9.81, {}, &plate.surface);
   EXPECT_EQ(BekkerWrench(plate.surface, moon, 0.005, {0, 0, -1}).force_W.z(),
             BekkerWrench(plate.surface, earth, 0.005, {0, 0, -1}).force_W.z());
 }
@@ -110,7 +109,7 @@ TEST(BekkerLaw, StaticSinkageCarriesTheWeight) {
   const double b = BekkerPlateB(plate.surface);
   for (const double n : {1.0, 0.7}) {
     const BekkerParameters p = LunarBekker(n);
-    const SoilContactModel m = MakeSoilContactModel(LawKind::kBekker, BekkerSoil(n), 1.62, {}, b);
+    const SoilContactModel m = MakeSoilContactModel(LawKind::kBekker, BekkerSoil(n), 1.62, {}, &plate.surface);
     const double weight_N = 40.0;
     const double z = BekkerStaticSinkage(p, b, plate.area_m2, weight_N);
     // The closed form z = (W / (A (k_c / b + k_phi)))^(1/n) ...
@@ -151,7 +150,7 @@ TEST(BekkerLaw, PlateDraggedAtConstantDepthFeelsTheMobilisedShear) {
   const BekkerPlate plate = FlatBekkerPlate(0.05, 128);
   const double b = BekkerPlateB(plate.surface), z = 0.004;
   const BekkerParameters p = LunarBekker(1.0);
-  const SoilContactModel m = MakeSoilContactModel(LawKind::kBekker, BekkerSoil(1.0), 1.62, {}, b);
+  const SoilContactModel m = MakeSoilContactModel(LawKind::kBekker, BekkerSoil(1.0), 1.62, {}, &plate.surface);
   const double pressure = BekkerPressure(p, b, z);
   // Sliding along +x at constant depth: the footprint carries the pressure and the fully
   // mobilised Janosi shear A (c + p tan phi) against the slip (the j -> infinity limit).
@@ -193,7 +192,16 @@ TEST(BekkerLaw, FactoryChecksTheBekkerBlock) {
   s = BekkerSoil(1.0);
   EffectTerms terms;
   terms.depth_exponent = 1.2;
-  EXPECT_THROW(MakeSoilContactModel(LawKind::kBekker, s, 9.81, terms, 0.05), InputError);
+  const BekkerPlate plate = FlatBekkerPlate(0.05, 64);
+  EXPECT_THROW(MakeSoilContactModel(LawKind::kBekker, s, 9.81, terms, &plate.surface), InputError);
+  // The contact model takes b from the pad it is given: a bekker law without one is refused.
+  EXPECT_NO_THROW(MakeSoilContactModel(LawKind::kBekker, s, 9.81, {}, &plate.surface));
+  try {
+    MakeSoilContactModel(LawKind::kBekker, s, 9.81, {});
+    ADD_FAILURE() << "no error without a pad";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("footprint dimension b"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

@@ -24,8 +24,7 @@ test::PaperLander JanosiLander(double sideways_m_s) {
   s.name = "lunar_nominal_bekker";
   s.rft_law_3d = rft::LawKind::kBekker;
   s.bekker = {1.0, 1.4e3, 820e3, 170.0, 35.0 * units::kDeg, 0.018};
-  const double b = rft::BekkerPlateB(setup.model.legs[0].pad->surface);
-  setup.terrain.soils = {{s.name, rft::MakeSoilContactModel(rft::LawKind::kBekker, s, 9.81, {}, b)}};
+  setup.terrain.soils = {{s.name, rft::MakeSoilContactModel(rft::LawKind::kBekker, s, 9.81, {}, &setup.model.legs[0].pad->surface)}};
   setup.initial.v_WB_W.x() = sideways_m_s;
   return setup;
 }

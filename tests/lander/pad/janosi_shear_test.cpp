@@ -39,7 +39,7 @@ geom::PadBody JanosiFlatPlate() {  // data/pads/flat.yaml: 100 mm across, 16 mm 
 }
 
 rft::SoilContactModel JanosiModel(const rft::SoilParameters& soil, const geom::PadBody& body) {
-  return rft::MakeSoilContactModel(rft::LawKind::kBekker, soil, 1.62, {}, rft::BekkerPlateB(body.surface));
+  return rft::MakeSoilContactModel(rft::LawKind::kBekker, soil, 1.62, {}, &body.surface);
 }
 
 // A level plate held at depth d, dragged along +x at V, after a shear displacement j: the state.
