@@ -27,15 +27,13 @@ namespace touchdown::gap {
 namespace fs = std::filesystem;
 
 namespace {
+
 // How the drops were split, in words (diagnosis.json's split.rule and the report's section 1).
 std::string SplitRule(const Diagnosis& d) {
   if (!d.fit_on.empty())
     return "--fit-on: every model is fitted on the designated drops and predicts every other drop";
   return "per (pad, soil, atmosphere) cell, ordered by speed then drop id: ranks 1, 4, 7, ... held out";
 }
-}  // namespace
-
-namespace {
 
 std::string Num(double v, int digits = 4) {
   if (!std::isfinite(v)) return "n/a";
