@@ -23,6 +23,9 @@ inline constexpr Range kSpeed_m_s{"m/s", 0.0, 100.0, false};            // impac
 inline constexpr Range kAbsSpeed_m_s{"m/s", -100.0, 100.0, false};      // a signed horizontal speed
 inline constexpr Range kAngularSpeed_rad_s{"rad/s", 0.0, 1000.0, false};  // |omega|, ~160 rev/s
 inline constexpr Range kForceTilt_deg{"deg", -180.0, 180.0, false};     // `force` poses any attitude
+// A dropped pad's tilt lies strictly within plus or minus this many degrees: on its side or beyond,
+// it would not land on its bottom.
+inline constexpr int kDropTiltWithin_deg = 90;
 inline constexpr Range kDepth_m{"m", -10.0, 10.0, false};               // below (+) / above (-) the surface
 inline constexpr Range kZeta_N_cm3{"N/cm^3", 0.0, 1e4, true};           // RFT scaling factor
 inline constexpr Range kPadSize_m{"m", 0.0, 10.0, true};                // pad radius, thickness, mesh extent
