@@ -6,6 +6,8 @@
 #include "drop_tests/drop/drop_request.h"
 #include "drop_tests/drop/drop_vtk.h"
 #include "drop_tests/catalog/catalog.h"
+#include "drop_tests/formats/dataset_csv.h"  // io::FormatNumber
+#include "rft/gravity_constants.h"
 #include "rft/input_error.h"
 #include "drop_tests/formats/output_path.h"
 
@@ -27,7 +29,7 @@ void AddDropCommand(CLI::App& app) {
   cmd->add_option("--soil", args->soil, "soil name from data/soils or a soil YAML file")->required();
   cmd->add_option("--speed", args->speed_m_s, "impact speed at touchdown [m/s], downward")->required();
   cmd->add_option("--mass", args->mass_kg, "dropped mass [kg] (default: the pad's mass)");
-  cmd->add_option("--gravity", args->gravity_m_s2, "gravity [m/s^2] (default 9.81)");
+  cmd->add_option("--gravity", args->gravity_m_s2, "gravity [m/s^2] (default " + io::FormatNumber(rft::kEarthGravity_m_s2) + ")");
   cmd->add_option("--zeta", args->zeta_N_cm3, "override the soil's RFT scaling factor zeta [N/cm^3]");
   cmd->add_option("--trace", args->trace, "write the trace CSV (t_s,penetration_m,velocity_m_s,force_N)");
   cmd->add_option("--model", args->model,

@@ -6,7 +6,9 @@
 
 #include "apps/commands.h"
 #include "drop_tests/drop/force_request.h"
+#include "drop_tests/formats/dataset_csv.h"  // io::FormatNumber
 #include "drop_tests/formats/output_path.h"
+#include "rft/gravity_constants.h"
 
 namespace touchdown::app {
 
@@ -34,7 +36,7 @@ void AddForceCommand(CLI::App& app) {
   cmd->add_option("--law", a->law,
                   "li2013 (Treers et al. 2021 3D decomposition), agarwal2023 or bekker (default: the soil's own law)");
   cmd->add_option("--zeta", a->zeta_N_cm3, "override the soil's zeta [N/cm^3] (li2013)");
-  cmd->add_option("--gravity", a->gravity_m_s2, "gravity [m/s^2] the soil stresses scale with (default 9.81)");
+  cmd->add_option("--gravity", a->gravity_m_s2, "gravity [m/s^2] the soil stresses scale with (default " + io::FormatNumber(rft::kEarthGravity_m_s2) + ")");
   cmd->add_flag("--dynamic", a->dynamic,
                 "add the soil's dynamic term (lambda rho (v.n)^2 on leading elements) at --velocity; without it "
                 "the force is quasi-static and --velocity gives only the direction of motion");

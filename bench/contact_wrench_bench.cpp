@@ -91,8 +91,8 @@ void Run(benchmark::State& state, const StressLaw3D& law, bool curved, double ti
 }
 
 const Li2013TreersLaw kLi(3.48e6);
-const Agarwal2023Law kAgarwal(AgarwalScalingXi(1540.0, kEarthGravity_m_s2, std::tan(37.0 * touchdown::units::kDeg)), 0.4);
-constexpr double kTilt = 10.0 * std::numbers::pi / 180;
+const Agarwal2023Law kAgarwal(AgarwalScalingXi(1540.0, kEarthGravity_m_s2, std::tan(touchdown::units::DegToRad(37.0))), 0.4);
+constexpr double kTilt = touchdown::units::DegToRad(10.0);
 // Li 2013 with dynamic RFT's inertial term (lambda 1.1, rho 1540 kg/m^3), as fjs1_lp and fjs1_cp
 // carry it by default: area terms per element, the general path even when the pad spins.
 const DynamicTermLaw kLiDynamic(std::make_unique<Li2013TreersLaw>(3.48e6), 1.1, 1540.0);

@@ -5,13 +5,12 @@
 // TD_MSBJ sets the most steps between Jacobians; TD_DQ_JACOBIAN=1 takes CVODE's difference-quotient Jacobian instead of the structured one.
 #include <benchmark/benchmark.h>
 
-#include <numbers>
-
 #include "drop_tests/catalog/catalog.h"
 #include "lander/pad/free_drop.h"
 #include "footpad_geom/revolve.h"
 #include "rft/gravity_constants.h"
 #include "rft/stress_law_3d_factory.h"
+#include "rft/units.h"
 
 namespace {
 
@@ -30,7 +29,7 @@ void RunFreeDrop(benchmark::State& state, const char* pad_name, double tilt_deg,
   const rft::Terrain bed = rft::UniformTerrain(soil.name, law);
   touchdown::pad::FreeDropInput in;
   in.impact_speed_m_s = 1.0;
-  in.tilt_rad = tilt_deg * std::numbers::pi / 180.0;
+  in.tilt_rad = units::DegToRad(tilt_deg);  // as `touchdown drop --free --tilt` converts it
   in.horizontal_speed_m_s = horizontal_m_s;
   in.omega_W = Eigen::Vector3d(0.0, 0.0, spin_rad_s);
   touchdown::pad::FreeDropResult r;

@@ -7,12 +7,13 @@
 
 #include "footpad_geom/pad_body_builder.h"
 #include "rft/input_error.h"
+#include "rft/physical_limits.h"
 
 namespace touchdown::geom {
 
 namespace {
 
-constexpr int kMinRingVertices = 6;
+constexpr int kMinRingVertices = limits::kMinAngularSegments;
 
 // Distance of q from the segment a-b in the (x, u) plane.
 double DistanceToSegment(const ProfilePoint& q, const ProfilePoint& a, const ProfilePoint& b) {

@@ -23,6 +23,9 @@ inline constexpr Range kSpeed_m_s{"m/s", 0.0, 100.0, false};            // impac
 inline constexpr Range kAbsSpeed_m_s{"m/s", -100.0, 100.0, false};      // a signed horizontal speed
 inline constexpr Range kAngularSpeed_rad_s{"rad/s", 0.0, 1000.0, false};  // |omega|, ~160 rev/s
 inline constexpr Range kForceTilt_deg{"deg", -180.0, 180.0, false};     // `force` poses any attitude
+// A dropped pad's tilt lies strictly within plus or minus this many degrees: on its side or beyond,
+// it would not land on its bottom.
+inline constexpr int kDropTiltWithin_deg = 90;
 inline constexpr Range kDepth_m{"m", -10.0, 10.0, false};               // below (+) / above (-) the surface
 inline constexpr Range kZeta_N_cm3{"N/cm^3", 0.0, 1e4, true};           // RFT scaling factor
 inline constexpr Range kPadSize_m{"m", 0.0, 10.0, true};                // pad radius, thickness, mesh extent
@@ -50,6 +53,13 @@ inline constexpr Range kForce_N{"N", 0.0, 1e9, true};
 inline constexpr Range kTorsionStiffness_N_m_rad{"N m/rad", 0.0, 1e12, true};
 inline constexpr Range kTorsionDamping_N_m_s_rad{"N m s/rad", 0.0, 1e10, false};
 inline constexpr Range kConeHalfAngle_deg{"deg", 0.0, 180.0, true};
+// Friction angles (a soil's internal one, a Bekker soil's shearing one) lie below this, in
+// degrees, excluded: tan(90 deg) is infinite.
+inline constexpr int kFrictionAngleBelow_deg = 90;
+// A lander's ground slope lies below, and its initial roll and pitch within plus or minus, this many
+// degrees (excluded): steeper, the body is released on its side and the landing is no landing.
+inline constexpr int kGroundSlopeBelow_deg = 80;
+inline constexpr int kInitialRollPitchWithin_deg = 80;
 // Headings and azimuths: one turn either way says every direction.
 inline constexpr Range kAzimuth_deg{"deg", -360.0, 360.0, false};
 // A body's angular rate, per axis: 10 rev/s, a tumbling lander (a single pad's |omega|: kAngularSpeed_rad_s).
@@ -80,9 +90,13 @@ inline constexpr long kDefaultMaxRunEvaluations = 2000000;
 // at 1024); 10000 profile pieces resolve any curve a pad drawing can specify, and keep the profile
 // simplification (quadratic in the points) quick.
 inline constexpr int kMaxAngularSegments = 1024;
+// The fewest angular segments a revolved pad (and each of its inner rings) has: a hexagon.
+inline constexpr int kMinAngularSegments = 6;
 inline constexpr int kMaxProfileSegments = 10000;
 // A remeshed pad: about 90 MB of pad body and seconds per contact evaluation.
 inline constexpr double kMaxRemeshTriangles = 500000.0;
+// A sweep's rig drops: the rest recorded after each stop (a minute).
+inline constexpr double kMaxRigRestDuration_s = 60.0;
 // A sweep: the values of one `{from, to, count}` grid axis, and the drops of a whole plan.
 inline constexpr int kMaxGridCount = 100000;
 inline constexpr std::int64_t kMaxSweepDrops = std::int64_t{1} << 40;

@@ -50,6 +50,7 @@
 #include "drop_tests/targets/targets_calibration.h"
 #include "drop_tests/validation/validate.h"
 #include "lander/integ/cvode_integrator.h"
+#include "rft/gravity_constants.h"
 #include "rft/input_error.h"
 #include "rft/input_file.h"
 #include "rft/physical_limits.h"
@@ -491,6 +492,8 @@ PYBIND11_MODULE(_touchdown, m) {
   using namespace touchdown;
   m.doc() = "touchdown's compiled core; use the touchdown package (docs/python.md)";
   m.attr("__version__") = TOUCHDOWN_VERSION;  // the CMake project's version, as `touchdown --version`
+  // The package's default gravity, the same constant as the commands' (rft/gravity_constants.h).
+  m.attr("EARTH_GRAVITY_M_S2") = rft::kEarthGravity_m_s2;
   py::register_exception_translator(&python::TranslateErrors);
   m.def("data_dir", &io::DataDirectory, "The directory of the bundled pads, soils and scenarios");
   m.def(

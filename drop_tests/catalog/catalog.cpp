@@ -67,7 +67,8 @@ rft::BekkerParameters ReadBekkerBlock(const YamlFields& f) {
   rft::BekkerParameters out;
   ReadFields(b, BekkerFields(), out);
   if (out.n > 5.0) b.Fail("n", "must be at most 5 (Bekker exponents are about 0.5 to 1.5)");
-  if (out.friction_angle_rad >= 90.0 * kDeg) b.Fail("friction_angle_deg", "must be below 90");
+  if (out.friction_angle_rad >= limits::kFrictionAngleBelow_deg * kDeg)
+    b.Fail("friction_angle_deg", "must be below " + std::to_string(limits::kFrictionAngleBelow_deg));
   if (!(out.k_c_N_m_n1 + out.k_phi_N_m_n2 > 0.0)) b.Fail("k_phi_kN_m_n2", "k_c and k_phi cannot both be 0");
   return out;
 }
@@ -216,7 +217,9 @@ void LoadAxisymmetricPad(const YamlFields& f, PadSpec& pad) {
   geom::ValidateProfile(pad.profile, f.file());
   if (f.Has("angular_segments")) pad.file.angular_segments = f.PositiveInt("angular_segments");
   const int segments = PadRimSegments(pad);
-  if (segments < 6) f.Fail("angular_segments", "must be at least 6, got " + std::to_string(segments));
+  if (segments < limits::kMinAngularSegments)
+    f.Fail("angular_segments", "must be at least " + std::to_string(limits::kMinAngularSegments) + ", got " +
+                                   std::to_string(segments));
   if (segments > kMaxAngularSegments)
     f.Fail("angular_segments", "must be at most " + std::to_string(kMaxAngularSegments) + ", got " +
                                    std::to_string(segments));
@@ -473,7 +476,8 @@ rft::SoilParameters LoadSoil(const std::string& name_or_path) {
     soil.gravity_scaling = *s;
   }
   ReadFields(f, SoilNumberFields(), soil);
-  if (soil.internal_friction_angle_rad >= 90.0 * kDeg) f.Fail("internal_friction_angle_deg", "must be below 90");
+  if (soil.internal_friction_angle_rad >= limits::kFrictionAngleBelow_deg * kDeg)
+    f.Fail("internal_friction_angle_deg", "must be below " + std::to_string(limits::kFrictionAngleBelow_deg));
   // The 3D laws' soil fields (rft/soil.h): Agarwal 2023's intruder-surface friction, and the
   // dynamic term lambda rho_c (v.n)^2 of the 3D contact (free drops, force, lander).
   if (soil.surface_friction_coefficient > 10.0) f.Fail("mu_surf", "must be at most 10 (a friction coefficient)");

@@ -58,7 +58,9 @@ void ValidateConditions(const DropConditions& c, const std::string& context) {
   if (c.mass_kg) limits::Require(limits::kMass_kg, *c.mass_kg, context, "mass_kg");
   limits::Require(limits::kGravity_m_s2, c.gravity_m_s2, context, "gravity_m_s2");
   if (c.zeta_N_m3) limits::Require(limits::kZeta_N_cm3, units::ZetaToN_cm3(*c.zeta_N_m3), context, "zeta_N_cm3");
-  if (!(std::abs(c.tilt_rad) < 90.0 * kDeg)) bad("tilt_deg", c.tilt_rad / kDeg, "between -90 and 90");
+  if (!(std::abs(c.tilt_rad) < limits::kDropTiltWithin_deg * kDeg))
+    bad("tilt_deg", c.tilt_rad / kDeg,
+        "between -" + std::to_string(limits::kDropTiltWithin_deg) + " and " + std::to_string(limits::kDropTiltWithin_deg));
   limits::Require(limits::kAbsSpeed_m_s, c.horizontal_speed_m_s, context, "horizontal_speed_m_s");
   if (!c.omega_W.allFinite()) throw MakeInputError(context, "omega", "must be finite");
   limits::Require(limits::kAngularSpeed_rad_s, c.omega_W.stableNorm(), context, "omega (its magnitude)");

@@ -332,7 +332,8 @@ LanderGroundSpec ReadGround(const io::YamlFields& g, double gravity_m_s2, bool r
   else
     g.RequireOnly({"height_m", "slope_deg", "downhill_azimuth_deg", "law", "soil", "patches", "soil_field"});
   io::ReadFields(g, GroundNumberFields(), ground);
-  if (ground.slope_rad >= 80 * kDeg) g.Fail("slope_deg", "must be below 80");
+  if (ground.slope_rad >= limits::kGroundSlopeBelow_deg * kDeg)
+    g.Fail("slope_deg", "must be below " + std::to_string(limits::kGroundSlopeBelow_deg));
   ground.default_soil = g.String("soil");
   try {
     // No `law`: the default soil's own (li2013 for every RFT soil file, bekker for a Bekker soil).
@@ -392,8 +393,9 @@ LanderInitialSpec ReadInitial(const io::YamlFields& in, bool resolved) {
                     in.Path("horizontal_velocity_m_s") + " (its magnitude)");
   }
   io::ReadFields(in, AttitudeNumberFields(), ic);
-  if (std::abs(ic.roll_rad) >= 80 * kDeg) in.Fail("roll_deg", "must be within +-80");
-  if (std::abs(ic.pitch_rad) >= 80 * kDeg) in.Fail("pitch_deg", "must be within +-80");
+  const std::string within = "must be within +-" + std::to_string(limits::kInitialRollPitchWithin_deg);
+  if (std::abs(ic.roll_rad) >= limits::kInitialRollPitchWithin_deg * kDeg) in.Fail("roll_deg", within);
+  if (std::abs(ic.pitch_rad) >= limits::kInitialRollPitchWithin_deg * kDeg) in.Fail("pitch_deg", within);
   if (in.Has("align_to_slope")) {
     const std::string a = in.String("align_to_slope");
     if (a != "true" && a != "false") in.Fail("align_to_slope", "must be true or false, got '" + a + "'");
@@ -432,7 +434,8 @@ void ReadSimulation(const io::YamlFields& sim, lander::LanderRunOptions& options
   // Resolution caps (the trace keeps duration x rate samples; a hand-written 1e9 must not
   // exhaust memory or run for days).
   if (options.duration_s > limits::kMaxLanderDuration_s)
-    sim.Fail("duration_s", "must be at most 600 s, got " + io::FormatNumber(options.duration_s));
+    sim.Fail("duration_s", "must be at most " + io::FormatNumber(limits::kMaxLanderDuration_s) + " s, got " +
+                               io::FormatNumber(options.duration_s));
   if (options.sample_rate_hz > limits::kMaxLanderSampleRate_Hz)
     sim.Fail("sample_rate_hz", "must be at most 1e6 Hz, got " + io::FormatNumber(options.sample_rate_hz));
   // The whole trace is held in memory until it is written (rft/physical_limits.h).

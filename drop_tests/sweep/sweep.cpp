@@ -209,7 +209,7 @@ SweepRunSummary RunSweep(const SweepPlan& plan, const std::string& out_dir, cons
   summary.in_shard = todo.in_shard();
   summary.already_done = todo.already_done();
   summary.retried = store.retried;
-  summary.threads = options.threads > 0 ? options.threads : DefaultThreads();
+  summary.threads = io::ThreadsFor(options.threads);
   SweepProgress progress(options.log ? *options.log : std::cerr, options.progress, options.progress_interval_s,
                          summary.in_shard, summary.already_done, options.progress_quiet_s, options.progress_counts);
   if (summary.already_done < summary.in_shard) {
@@ -238,7 +238,7 @@ SweepRunSummary RunSweep(const SweepPlan& plan, const std::string& out_dir, cons
 std::vector<DropRecord> RunSweepInMemory(const SweepPlan& plan, int threads) {
   const SweepModels models(plan);
   std::vector<DropRecord> out(static_cast<size_t>(plan.size()));
-  io::ParallelFor(out.size(), threads > 0 ? threads : DefaultThreads(),
+  io::ParallelFor(out.size(), io::ThreadsFor(threads),
                   [&](size_t i) { out[i] = SimulateSweepDrop(models, static_cast<int64_t>(i)); });
   return out;
 }

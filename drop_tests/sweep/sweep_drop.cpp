@@ -214,10 +214,7 @@ DropRecord SimulateLanderSweepDrop(const SweepModels& models, const SweepDropPar
   r.pad = sc.lander.pad.name;
   r.soil = soil.name;
   r.atmosphere = rft::AtmosphereName(soil.atmosphere);
-  r.impact_speed_m_s = sc.initial.drop_height_m
-                           ? std::sqrt(std::pow(sc.initial.release_vertical_speed_m_s, 2) +
-                                       2.0 * sc.gravity_m_s2 * *sc.initial.drop_height_m)
-                           : *sc.initial.touchdown_speed_m_s;
+  r.impact_speed_m_s = scenario::TouchdownSpeed(sc);
   r.pad_mass_kg = sc.lander.pad.body.mass_kg;
   r.gravity_m_s2 = sc.gravity_m_s2;
   r.roll_deg = sc.initial.roll_rad / kDeg;

@@ -127,8 +127,4 @@ void RunEngine(DropEngine& engine, const EngineDriver& d) {
   }
 }
 
-int DefaultThreads(int ranks_on_node) {
-  return std::max(1, io::EveryCore() / std::max(1, ranks_on_node));
-}
-
 }  // namespace touchdown::sweep

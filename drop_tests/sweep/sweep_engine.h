@@ -72,7 +72,4 @@ struct EngineDriver {
 // sweep on one machine (sweep.cpp) and of an MPI worker rank (sweep_mpi.cpp).
 void RunEngine(DropEngine& engine, const EngineDriver& driver);
 
-// Threads to use when the user gives none: every core, shared among the MPI ranks on this node.
-int DefaultThreads(int ranks_on_node = 1);
-
 }  // namespace touchdown::sweep

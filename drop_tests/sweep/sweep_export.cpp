@@ -12,6 +12,7 @@
 #include "drop_tests/sweep/sweep.h"
 #include "drop_tests/sweep/sweep_drop.h"
 #include "drop_tests/sweep/sweep_engine.h"
+#include "drop_tests/util/work_pool.h"
 #include "rft/input_error.h"
 #include "rft/input_file.h"
 
@@ -134,7 +135,7 @@ dataset::Dataset SweepToDataset(const std::string& sweep_dir, const ExportOption
     SweepPlan full = *plan;
     full.traces = TraceStorage::kFull;
     const SweepModels full_models(full);
-    DropEngine engine(full_models, again, options.threads > 0 ? options.threads : DefaultThreads());
+    DropEngine engine(full_models, again, io::ThreadsFor(options.threads));
     while (!engine.Finished())
       for (DropRecord& r : engine.Take(1024, 1.0)) {
         DropRecord& stored = records[position.at(r.index)];
@@ -331,7 +332,7 @@ ExportSummary ExportPadSweep(const ResultsDb& db, const std::map<std::string, st
             full_plan->traces = TraceStorage::kFull;
             full_models = std::make_unique<SweepModels>(*full_plan);
           }
-          DropEngine engine(*full_models, again, options.threads > 0 ? options.threads : DefaultThreads());
+          DropEngine engine(*full_models, again, io::ThreadsFor(options.threads));
           while (!engine.Finished())
             for (DropRecord& r : engine.Take(kPage, 1.0)) {
               DropRecord& stored = page[position.at(r.index)];

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "drop_tests/sweep/sweep_engine.h"
+#include "drop_tests/util/work_pool.h"
 #include "rft/input_error.h"
 
 #ifdef TOUCHDOWN_HAVE_MPI
@@ -125,7 +126,7 @@ SweepRunSummary RunSweepMpi(const SweepPlan& plan, const std::string& out_dir, c
   summary.ranks = ranks;
   summary.total = plan.size();
   const int local = EnvInt("OMPI_COMM_WORLD_LOCAL_SIZE");
-  summary.threads = options.threads > 0 ? options.threads : DefaultThreads(local > 0 ? local : 1);
+  summary.threads = io::ThreadsFor(options.threads, local);
   const double start = MPI_Wtime();
 
   // Rank 0: lock the directory and open the database; everyone learns the outcome.

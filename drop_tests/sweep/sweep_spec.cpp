@@ -472,7 +472,8 @@ void ReadRunOptions(const io::YamlFields& f, SweepPlan& plan) {
   if (f.Has("trace_max_samples")) plan.trace_max_samples = f.PositiveInt("trace_max_samples");
   if (plan.trace_max_samples < 3) f.Fail("trace_max_samples", "must be at least 3");
   plan.rig.rest_duration_s = f.Has("rest_duration_s") ? f.NonNegative("rest_duration_s") : 0.0;
-  if (plan.rig.rest_duration_s > 60.0) f.Fail("rest_duration_s", "must be at most 60 s");
+  if (plan.rig.rest_duration_s > limits::kMaxRigRestDuration_s)
+    f.Fail("rest_duration_s", "must be at most " + io::FormatNumber(limits::kMaxRigRestDuration_s) + " s");
   plan.rig.integrator.max_wall_time_s =
       f.Has("max_drop_wall_time_s") ? f.NonNegative("max_drop_wall_time_s") : kDefaultMaxDropWallTimeS;
   if (!std::isfinite(plan.rig.integrator.max_wall_time_s))

@@ -19,7 +19,9 @@ void ThrowIfStopped(const std::atomic<int>* stop) {
 
 int EveryCore() { return static_cast<int>(std::max(1u, std::thread::hardware_concurrency())); }
 
-int ThreadsFor(int requested) { return requested > 0 ? requested : EveryCore(); }
+int ThreadsFor(int requested, int processes_on_node) {
+  return requested > 0 ? requested : std::max(1, EveryCore() / std::max(1, processes_on_node));
+}
 
 StopScope::StopScope(const std::atomic<int>* stop) : outer_(t_stop) { t_stop = stop; }
 

@@ -17,9 +17,10 @@ namespace touchdown::io {
 
 // The machine's hardware threads, at least 1 (std::thread::hardware_concurrency may say 0).
 int EveryCore();
-// The threads a run asking for `requested` uses: `requested` if positive, else EveryCore() (the
-// --threads 0 and `threads=0` default of every command and the Python module).
-int ThreadsFor(int requested);
+// The threads a run asking for `requested` uses: `requested` if positive, else every core shared
+// among the `processes_on_node` processes on this machine (an MPI sweep's ranks), at least 1: the
+// --threads 0 and `threads=0` default of every command and the Python module.
+int ThreadsFor(int requested, int processes_on_node = 1);
 
 // A fixed set of threads running queued tasks, in the order queued.
 class WorkPool {

@@ -59,7 +59,7 @@ def data_dir():
     return _touchdown.data_dir()
 
 
-def drop(pad, soil, speed, *, mass=None, gravity=9.81, zeta=None, model=None, free=False, tilt_deg=0.0,
+def drop(pad, soil, speed, *, mass=None, gravity=_touchdown.EARTH_GRAVITY_M_S2, zeta=None, model=None, free=False, tilt_deg=0.0,
          tilt_axis="x", horizontal_speed=0.0, omega=(0.0, 0.0, 0.0), law=None, trace=False):
     """One drop, as `touchdown drop`: the summary dict the command prints as JSON.
 
@@ -77,7 +77,7 @@ def drop(pad, soil, speed, *, mass=None, gravity=9.81, zeta=None, model=None, fr
 
 
 def force(pad, soil, depth, *, tilt_deg=0.0, tilt_axis="x", velocity=(0.0, 0.0, -1.0), omega=(0.0, 0.0, 0.0),
-          law=None, zeta=None, gravity=9.81, dynamic=False):
+          law=None, zeta=None, gravity=_touchdown.EARTH_GRAVITY_M_S2, dynamic=False):
     """The quasi-static soil wrench on a pad held at a depth, as `touchdown force` (a dict): force_N,
     moment_Nm [N m] about the reference point, world frame, z up. `velocity` [m/s] and `omega`
     [rad/s] give RFT its direction of motion; dynamic=True adds the soil's dynamic term at that
