@@ -174,7 +174,8 @@ fs::path CheckDirectory(const OutputTarget& target, OutputKind kind, bool whole)
       if (marker.kind != OutputKindName(kind))
         Refuse(path, "holds the output of `touchdown " + marker.kind + "`, not of `" + OutputKindName(kind) +
                          "`; give another directory");
-      if (!whole) RefuseLinksInside(path, p);
+      // A link the user put in place of one of its files is theirs too: a whole replacement would delete it.
+      RefuseLinksInside(path, p);
       if (whole && marker.has_manifest) {
         for (const std::string& entry : Entries(p))
           if (!marker.files.count(entry))

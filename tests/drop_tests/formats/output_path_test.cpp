@@ -110,6 +110,19 @@ TEST_F(OutputPathTest, FileTheUserAddedToAnOutputIsNeverDeleted) {
   EXPECT_EQ(Read("run/summary.txt"), "x");
 }
 
+// A symbolic link the user put under the name of one of touchdown's files is the user's: a whole
+// replacement is refused rather than deleting it, and what it points to is kept.
+TEST_F(OutputPathTest, ALinkTheUserPutInPlaceOfAnOutputFileIsNeverDeleted) {
+  WriteOutputDirectory("run", OutputKind::kCampaign, Fill("x"));
+  Write("mine.txt", "mine");
+  fs::remove("run/summary.txt");
+  fs::create_symlink(fs::absolute("mine.txt"), "run/summary.txt");
+  const std::string why = Refusal([] { WriteOutputDirectory("run", OutputKind::kCampaign, Fill("y")); });
+  EXPECT_NE(why.find("'summary.txt', a symbolic link touchdown did not make"), std::string::npos) << why;
+  EXPECT_TRUE(fs::is_symlink("run/summary.txt"));
+  EXPECT_EQ(Read("mine.txt"), "mine");
+}
+
 TEST_F(OutputPathTest, OutputOfAnotherCommandIsRefused) {
   OpenOutputDirectory("sweep_out", OutputKind::kSweep);
   Write("sweep_out/results.sqlite", "hours of work");
