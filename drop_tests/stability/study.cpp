@@ -103,18 +103,20 @@ double ScenarioRtol(const sweep::SweepPlan& plan) {
   return plan.lander ? plan.lander->options.integrator.rtol : lander::LanderRunOptions{}.integrator.rtol;
 }
 
-// `recheck: none`, or `recheck: {rtol, tilt_margin_deg}` (each optional): the reference tolerance
-// must be tighter than the scenario's, the margin an angle from 0 to 90 deg.
+// `recheck: none`, or `recheck: {rtol, tilt_margin_deg, unsettled}` (each optional): the reference
+// tolerance must be tighter than the scenario's, the margin an angle from 0 to 90 deg.
 RecheckSettings ReadRecheck(const io::YamlFields& study, RecheckSettings r, double scenario_rtol) {
   if (!study.Has("recheck")) return r;
   if (study.node()["recheck"].IsScalar()) {
     if (study.String("recheck") != "none")
-      study.Fail("recheck", "must be none or a mapping {rtol, tilt_margin_deg}, got '" + study.String("recheck") + "'");
+      study.Fail("recheck", "must be none or a mapping {rtol, tilt_margin_deg, unsettled}, got '" +
+                                study.String("recheck") + "'");
     r.enabled = false;
     return r;
   }
   const io::YamlFields f = study.Child("recheck");
-  f.RequireOnly({"rtol", "tilt_margin_deg"});
+  f.RequireOnly({"rtol", "tilt_margin_deg", "unsettled"});
+  if (f.Has("unsettled")) r.unsettled = f.Bool("unsettled");
   if (f.Has("rtol")) {
     r.rtol = f.Number("rtol");
     if (!(r.rtol > 0.0 && r.rtol < scenario_rtol))

@@ -138,10 +138,10 @@ double StandingTipAngleDeg(const sweep::SweepPlan& plan) {
   return smallest;
 }
 
-bool NeedsRecheck(const DropRecord& r, double tip_angle_deg, double margin_deg) {
+bool NeedsRecheck(const DropRecord& r, double tip_angle_deg, const RecheckSettings& s) {
   if (!r.ok) return false;
   const bool unsettled = !Tipped(r) && std::isnan(r.time_to_rest_s);  // as Summarise counts them
-  return Tipped(r) || unsettled || r.max_tilt_deg >= tip_angle_deg - margin_deg;
+  return Tipped(r) || (s.unsettled && unsettled) || r.max_tilt_deg >= tip_angle_deg - s.tilt_margin_deg;
 }
 
 bool ReachedStops(const DropRecord& r, double half_angle_deg) { return r.max_joint_swing_deg > half_angle_deg; }
@@ -207,6 +207,7 @@ RecheckReport ApplyRechecks(const Study& study, double tip_angle_deg, std::vecto
   }
   rep.tip_angle_deg = tip_angle_deg;
   rep.margin_deg = study.recheck.tilt_margin_deg;
+  rep.unsettled = study.recheck.unsettled;
   std::map<int64_t, size_t> position;
   for (size_t k = 0; k < records.size(); ++k) position[records[k].index] = k;
   for (const DropRecord& ref : reference) {  // index order
@@ -237,7 +238,7 @@ StudyFollowUps RunStudyFollowUps(const Study& study, std::vector<DropRecord> rec
   if (study.recheck.enabled) {
     std::vector<int64_t> todo;
     for (const DropRecord& r : records)
-      if (NeedsRecheck(r, tip_angle_deg, study.recheck.tilt_margin_deg)) todo.push_back(r.index);
+      if (NeedsRecheck(r, tip_angle_deg, study.recheck)) todo.push_back(r.index);
     std::sort(todo.begin(), todo.end());
     if (!todo.empty()) {
       if (say)
@@ -287,8 +288,11 @@ nlohmann::json RecheckJson(const RecheckReport& r) {
           {"pad_angular_segments", {{"fast", r.fast_pad_angular_segments}, {"reference", r.reference_pad_angular_segments}}},
           {"tip_angle_deg", io::FiniteOrNull(r.tip_angle_deg)},
           {"margin_deg", r.margin_deg},
+          {"unsettled", r.unsettled},
           {"criterion",
-           "landings that tipped over, ended unsettled, or whose max tilt reached tip_angle_deg - margin_deg ran "
+           std::string(r.unsettled ? "landings that tipped over, ended unsettled, or whose max tilt reached "
+                                   : "landings that tipped over or whose max tilt reached ") +
+           "tip_angle_deg - margin_deg ran "
            "again with the reference model (the study's lander at rtol, its pads meshed as their file says: "
            "pad_angular_segments.reference rim segments, against the study's pad_angular_segments.fast; 0 for a "
            "meshed pad); every statistic here is over their reference records"},

@@ -1,8 +1,9 @@
 #pragma once
 // What a stability study runs after its landings (docs/stability_studies.md, "Follow-ups"):
 //
-//   Re-checks. The landings whose outcome could flip (tipped over, unsettled, or a max tilt within
-//   `tilt_margin_deg` of the standing lander's tip-over angle) run again with the reference model,
+//   Re-checks. The landings whose outcome could flip (tipped over, or a max tilt within
+//   `tilt_margin_deg` of the standing lander's tip-over angle; with `unsettled: true` also every
+//   landing that ended unsettled) run again with the reference model,
 //   the study's lander at a tighter integrator tolerance (study.recheck.rtol) with its pads meshed
 //   as their file says (a scenario's pad_angular_segments is a fast model's), so the published
 //   P(tip), percentiles and worst cases are the reference model's.
@@ -41,10 +42,10 @@ inline constexpr double kJointRangeFactors[2] = {0.5, 1.5};
 // the centre of mass over an edge. The smallest over the plan's pads when the study varies them.
 double StandingTipAngleDeg(const sweep::SweepPlan& plan);
 
-// Whether a completed landing's outcome could flip under the reference model: it tipped over,
-// ended unsettled (neither at rest nor tipped over), or its max tilt came within `margin_deg` of
-// `tip_angle_deg`. A failed landing has no outcome to check.
-bool NeedsRecheck(const sweep::DropRecord& r, double tip_angle_deg, double margin_deg);
+// Whether a completed landing's outcome could flip under the reference model: it tipped over, or
+// its max tilt came within `s.tilt_margin_deg` of `tip_angle_deg`, or (with `s.unsettled`) it ended
+// unsettled (neither at rest nor tipped over). A failed landing has no outcome to check.
+bool NeedsRecheck(const sweep::DropRecord& r, double tip_angle_deg, const RecheckSettings& s);
 
 // A landing reached its joints' stops: a pad swung further than the cone's half angle.
 bool ReachedStops(const sweep::DropRecord& r, double half_angle_deg);
@@ -67,6 +68,7 @@ std::string JointRangeDir(const std::string& out_dir, double factor);
 struct RecheckReport {
   bool enabled = true;
   double rtol = 0.0, tip_angle_deg = 0.0, margin_deg = 0.0;
+  bool unsettled = false;  // every unsettled landing re-checked too (RecheckSettings::unsettled)
   // Rim segments of the study's (fast) pads and of the reference model's (the pad file's); 0: a
   // meshed pad.
   int fast_pad_angular_segments = 0, reference_pad_angular_segments = 0;

@@ -39,17 +39,27 @@ struct StudyFollowUpsTest : testing_scratch::ScratchDirTest {
   }
 };
 
-TEST(RecheckCriterion, TippedUnsettledOrWithinTheMarginOfTheTipAngle) {
-  const double tip = 40.0, margin = 3.0;
-  EXPECT_TRUE(NeedsRecheck(Landing(0, true, 90.0), tip, margin));         // tipped over
-  EXPECT_TRUE(NeedsRecheck(Landing(1, false, 5.0, false), tip, margin));  // unsettled
-  EXPECT_TRUE(NeedsRecheck(Landing(2, false, 37.0), tip, margin));        // at tip - margin
-  EXPECT_TRUE(NeedsRecheck(Landing(3, false, 41.0), tip, margin));        // past the static angle, stood
-  EXPECT_FALSE(NeedsRecheck(Landing(4, false, 36.99), tip, margin));      // settled, clear of the boundary
-  EXPECT_TRUE(NeedsRecheck(Landing(4, false, 36.99), tip, 90.0));         // a 90 deg margin takes every landing
+TEST(RecheckCriterion, TippedOrWithinTheMarginOfTheTipAngleAndUnsettledOnlyWhenAsked) {
+  const double tip = 40.0;
+  RecheckSettings s;
+  s.tilt_margin_deg = 3.0;
+  EXPECT_TRUE(NeedsRecheck(Landing(0, true, 90.0), tip, s));          // tipped over
+  EXPECT_FALSE(NeedsRecheck(Landing(1, false, 5.0, false), tip, s));  // unsettled, clear of the boundary
+  EXPECT_TRUE(NeedsRecheck(Landing(1, false, 37.0, false), tip, s));  // unsettled, at tip - margin
+  EXPECT_TRUE(NeedsRecheck(Landing(2, false, 37.0), tip, s));         // at tip - margin
+  EXPECT_TRUE(NeedsRecheck(Landing(3, false, 41.0), tip, s));         // past the static angle, stood
+  EXPECT_FALSE(NeedsRecheck(Landing(4, false, 36.99), tip, s));       // settled, clear of the boundary
   DropRecord failed = Landing(5, true, 90.0);
   failed.ok = false;
-  EXPECT_FALSE(NeedsRecheck(failed, tip, margin));  // no outcome to check
+  EXPECT_FALSE(NeedsRecheck(failed, tip, s));  // no outcome to check
+  s.unsettled = true;                          // every unsettled landing, as the studies did before
+  EXPECT_TRUE(NeedsRecheck(Landing(1, false, 5.0, false), tip, s));
+  EXPECT_FALSE(NeedsRecheck(Landing(4, false, 36.99), tip, s));  // settled: the margin alone decides
+  EXPECT_FALSE(NeedsRecheck(failed, tip, s));
+  s.tilt_margin_deg = 90.0;  // a 90 deg margin takes every landing
+  s.unsettled = false;
+  EXPECT_TRUE(NeedsRecheck(Landing(4, false, 36.99), tip, s));
+  EXPECT_TRUE(NeedsRecheck(Landing(1, false, 5.0, false), tip, s));
 }
 
 TEST_F(StudyFollowUpsTest, ReferenceRecordsReplaceTheFastOnesAndTheReportCountsTheChanges) {
@@ -78,6 +88,7 @@ TEST_F(StudyFollowUpsTest, DerivedPlansChangeTheirModelAndTheirDigest) {
   const Study study = LoadCaseA("random: {samples: 10, seed: 1, slope_deg: {uniform: [0, 20]}}\n");
   EXPECT_EQ(study.recheck.rtol, 1e-8);  // the default reference, below the scenario's 1e-7
   EXPECT_EQ(study.recheck.tilt_margin_deg, kDefaultRecheckMarginDeg);
+  EXPECT_FALSE(study.recheck.unsettled);  // unsettled landings clear of the margin are not re-run
   EXPECT_EQ(study.joint_range.samples, 1000);
   const sweep::SweepPlan recheck = RecheckPlan(study);
   EXPECT_EQ(recheck.lander->options.integrator.rtol, 1e-8);
@@ -119,9 +130,10 @@ TEST_F(StudyFollowUpsTest, TheReferenceModelMeshesThePadsAsTheirFileSays) {
 TEST_F(StudyFollowUpsTest, StandingTipAngleIsTheSmallestEdgesAndKSpreadsOverTheStudy) {
   Study study = LoadCaseA("random: {samples: 10, seed: 1, slope_deg: {uniform: [0, 20]}}\n"
                           "study: {joint_range_sensitivity: {samples: 4},\n"
-                          "        recheck: {rtol: 1e-9, tilt_margin_deg: 5}}\n");
+                          "        recheck: {rtol: 1e-9, tilt_margin_deg: 5, unsettled: true}}\n");
   EXPECT_EQ(study.recheck.rtol, 1e-9);
   EXPECT_EQ(study.recheck.tilt_margin_deg, 5.0);
+  EXPECT_TRUE(study.recheck.unsettled);
   // The paper's lander standing level: its four edges alike, the CoM as far inside each edge as
   // it is high above it, near enough (45.29 deg, as summary.json reports it for its studies).
   EXPECT_NEAR(StandingTipAngleDeg(study.plan), 45.29, 0.01);

@@ -190,6 +190,7 @@ TEST_F(StudySummaryTest, BadStudyBlocksNameFileAndField) {
   expect_error(head + "study: {recheck: {rtol: 0}}\n", "study.recheck.rtol", "above 0");
   expect_error(head + "study: {recheck: {tilt_margin_deg: 91}}\n", "study.recheck.tilt_margin_deg", "from 0 to 90");
   expect_error(head + "study: {recheck: {tilt_margin_deg: -1}}\n", "study.recheck.tilt_margin_deg", "from 0 to 90");
+  expect_error(head + "study: {recheck: {unsettled: 2}}\n", "study.recheck.unsettled", "");
   expect_error(head + "study: {recheck: {rtol: 1e-9, margin: 2}}\n", "study.recheck.margin", "");
   expect_error(head + "study: {recheck: sometimes}\n", "study.recheck", "none or a mapping");
   expect_error(head + "study: {joint_range_sensitivity: {samples: 0}}\n", "study.joint_range_sensitivity.samples", "");
