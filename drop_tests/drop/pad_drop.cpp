@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "drop_tests/formats/output_path.h"
+#include "drop_tests/drop/drop_columns.h"
 #include "drop_tests/drop/drop_factory.h"
 #include "drop_tests/drop/free_drop_output.h"
 #include "footpad_geom/axisymmetric_intrusion.h"
@@ -174,17 +175,9 @@ nlohmann::json SummaryJson(const PadDrop& d) {
         {"pad_mass_kg", d.mass_kg},
         {"gravity_m_s2", d.conditions.gravity_m_s2},
         {"zeta_N_cm3", units::ZetaToN_cm3(d.zeta_effective_N_m3)},
-        {"final_penetration_m", r.final_penetration_m},
-        {"peak_force_N", r.peak_force_N},
-        {"time_to_rest_s", r.time_to_rest_s},
-        {"max_deceleration_m_s2", r.max_deceleration_m_s2},
-        {"impact_energy_J", r.impact_energy_J},
-        {"gravity_work_J", r.gravity_work_J},
-        {"dissipated_energy_J", r.dissipated_energy_J},
-        {"mean_conversion_rate_W", r.mean_conversion_rate_W},
-        {"rest_creep_m", r.rest_creep_m},
-        {"solver_steps", r.solver.steps},
     };
+    for (const ResultNumber<pad::RigDropResult>& n : RigMetrics()) j[n.name] = r.*n.member;
+    j["solver_steps"] = r.solver.steps;
     // RFT rig summaries name no law (they stay as they were); Bekker's do.
     if (d.law_3d == rft::LawKind::kBekker) j["law"] = rft::LawKindName(d.law_3d);
   }
@@ -206,9 +199,16 @@ nlohmann::json SummaryJson(const PadDrop& d) {
 }
 
 void WriteTraceCsv(const pad::RigDropResult& result, std::ostream& out) {
-  out << "t_s,penetration_m,velocity_m_s,force_N\n" << std::setprecision(10);
-  for (const pad::DropSample& s : result.trace)
-    out << s.t_s << ',' << s.penetration_m << ',' << s.velocity_m_s << ',' << s.force_N << '\n';
+  const std::vector<TraceColumn<pad::DropSample>>& columns = RigTraceColumns();
+  for (size_t c = 0; c < columns.size(); ++c) out << (c ? "," : "") << columns[c].name;
+  out << '\n' << std::setprecision(10);
+  for (const pad::DropSample& s : result.trace) {
+    for (size_t c = 0; c < columns.size(); ++c) {
+      if (c) out << ',';
+      out << columns[c].value(s);
+    }
+    out << '\n';
+  }
 }
 
 void WriteTraceCsv(const pad::RigDropResult& result, const std::string& path) {

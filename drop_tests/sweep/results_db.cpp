@@ -39,42 +39,6 @@ std::string Directory(const std::string& file) { return std::filesystem::path(fi
   }
 }
 
-// The numeric columns of a record, in table order: the rig drop's metrics, then the free drop's
-// and the lander's (StabilityNumbers, results_db.h, after the text and work-limit columns).
-const std::vector<RecordNumber>& RigNumbers() {
-  static const std::vector<RecordNumber> c = {
-      {"impact_speed_m_s", [](DropRecord& r) -> double& { return r.impact_speed_m_s; }},
-      {"pad_mass_kg", [](DropRecord& r) -> double& { return r.pad_mass_kg; }},
-      {"gravity_m_s2", [](DropRecord& r) -> double& { return r.gravity_m_s2; }},
-      {"tilt_deg", [](DropRecord& r) -> double& { return r.tilt_deg; }},
-      {"horizontal_speed_m_s", [](DropRecord& r) -> double& { return r.horizontal_speed_m_s; }},
-      {"zeta_N_cm3", [](DropRecord& r) -> double& { return r.zeta_N_cm3; }},
-      {"final_penetration_m", [](DropRecord& r) -> double& { return r.final_penetration_m; }},
-      {"peak_force_N", [](DropRecord& r) -> double& { return r.peak_force_N; }},
-      {"time_to_rest_s", [](DropRecord& r) -> double& { return r.time_to_rest_s; }},
-      {"max_deceleration_m_s2", [](DropRecord& r) -> double& { return r.max_deceleration_m_s2; }},
-      {"impact_energy_J", [](DropRecord& r) -> double& { return r.impact_energy_J; }},
-      {"gravity_work_J", [](DropRecord& r) -> double& { return r.gravity_work_J; }},
-      {"dissipated_energy_J", [](DropRecord& r) -> double& { return r.dissipated_energy_J; }},
-      {"mean_conversion_rate_W", [](DropRecord& r) -> double& { return r.mean_conversion_rate_W; }},
-      {"rest_creep_m", [](DropRecord& r) -> double& { return r.rest_creep_m; }}};
-  return c;
-}
-const std::vector<RecordNumber>& FreeAndLanderNumbers() {
-  static const std::vector<RecordNumber> c = {
-      {"final_tilt_deg", [](DropRecord& r) -> double& { return r.final_tilt_deg; }},
-      {"horizontal_travel_m", [](DropRecord& r) -> double& { return r.horizontal_travel_m; }},
-      {"roll_deg", [](DropRecord& r) -> double& { return r.roll_deg; }},
-      {"pitch_deg", [](DropRecord& r) -> double& { return r.pitch_deg; }},
-      {"pad1_final_penetration_m", [](DropRecord& r) -> double& { return r.pad_final_penetration_m[0]; }},
-      {"pad2_final_penetration_m", [](DropRecord& r) -> double& { return r.pad_final_penetration_m[1]; }},
-      {"pad3_final_penetration_m", [](DropRecord& r) -> double& { return r.pad_final_penetration_m[2]; }},
-      {"pad4_final_penetration_m", [](DropRecord& r) -> double& { return r.pad_final_penetration_m[3]; }},
-      {"final_roll_deg", [](DropRecord& r) -> double& { return r.final_roll_deg; }},
-      {"final_pitch_deg", [](DropRecord& r) -> double& { return r.final_pitch_deg; }},
-      {"tipped_over", [](DropRecord& r) -> double& { return r.tipped_over; }}};
-  return c;
-}
 // The soil under each lander pad and the ground case: text columns after the numbers.
 constexpr const char* kTextColumns3[] = {"pad1_soil", "pad2_soil", "pad3_soil", "pad4_soil", "ground_case"};
 constexpr size_t kTexts3 = std::size(kTextColumns3);
@@ -220,6 +184,40 @@ struct Reader {
 static_assert(sizeof(pad::DropSample) == 4 * sizeof(double), "traces are stored as 4 doubles per sample");
 }  // namespace
 
+const std::vector<RecordNumber>& RigNumbers() {
+  static const std::vector<RecordNumber> c = {
+      {"impact_speed_m_s", [](DropRecord& r) -> double& { return r.impact_speed_m_s; }},
+      {"pad_mass_kg", [](DropRecord& r) -> double& { return r.pad_mass_kg; }},
+      {"gravity_m_s2", [](DropRecord& r) -> double& { return r.gravity_m_s2; }},
+      {"tilt_deg", [](DropRecord& r) -> double& { return r.tilt_deg; }},
+      {"horizontal_speed_m_s", [](DropRecord& r) -> double& { return r.horizontal_speed_m_s; }},
+      {"zeta_N_cm3", [](DropRecord& r) -> double& { return r.zeta_N_cm3; }},
+      {"final_penetration_m", [](DropRecord& r) -> double& { return r.final_penetration_m; }},
+      {"peak_force_N", [](DropRecord& r) -> double& { return r.peak_force_N; }},
+      {"time_to_rest_s", [](DropRecord& r) -> double& { return r.time_to_rest_s; }},
+      {"max_deceleration_m_s2", [](DropRecord& r) -> double& { return r.max_deceleration_m_s2; }},
+      {"impact_energy_J", [](DropRecord& r) -> double& { return r.impact_energy_J; }},
+      {"gravity_work_J", [](DropRecord& r) -> double& { return r.gravity_work_J; }},
+      {"dissipated_energy_J", [](DropRecord& r) -> double& { return r.dissipated_energy_J; }},
+      {"mean_conversion_rate_W", [](DropRecord& r) -> double& { return r.mean_conversion_rate_W; }},
+      {"rest_creep_m", [](DropRecord& r) -> double& { return r.rest_creep_m; }}};
+  return c;
+}
+const std::vector<RecordNumber>& FreeAndLanderNumbers() {
+  static const std::vector<RecordNumber> c = {
+      {"final_tilt_deg", [](DropRecord& r) -> double& { return r.final_tilt_deg; }},
+      {"horizontal_travel_m", [](DropRecord& r) -> double& { return r.horizontal_travel_m; }},
+      {"roll_deg", [](DropRecord& r) -> double& { return r.roll_deg; }},
+      {"pitch_deg", [](DropRecord& r) -> double& { return r.pitch_deg; }},
+      {"pad1_final_penetration_m", [](DropRecord& r) -> double& { return r.pad_final_penetration_m[0]; }},
+      {"pad2_final_penetration_m", [](DropRecord& r) -> double& { return r.pad_final_penetration_m[1]; }},
+      {"pad3_final_penetration_m", [](DropRecord& r) -> double& { return r.pad_final_penetration_m[2]; }},
+      {"pad4_final_penetration_m", [](DropRecord& r) -> double& { return r.pad_final_penetration_m[3]; }},
+      {"final_roll_deg", [](DropRecord& r) -> double& { return r.final_roll_deg; }},
+      {"final_pitch_deg", [](DropRecord& r) -> double& { return r.final_pitch_deg; }},
+      {"tipped_over", [](DropRecord& r) -> double& { return r.tipped_over; }}};
+  return c;
+}
 const std::vector<RecordNumber>& StabilityNumbers() {
   static const std::vector<RecordNumber> c = {
       {"max_tilt_deg", [](DropRecord& r) -> double& { return r.max_tilt_deg; }},
@@ -241,6 +239,13 @@ const std::vector<RecordNumber>& StabilityNumbers() {
       {"tip_over_azimuth_deg", [](DropRecord& r) -> double& { return r.tip_over_azimuth_deg; }},
       {"min_stability_margin_m", [](DropRecord& r) -> double& { return r.min_stability_margin_m; }}};
   return c;
+}
+
+const RecordNumber& RecordNumberNamed(const std::string& name) {
+  for (const std::vector<RecordNumber>* group : {&RigNumbers(), &FreeAndLanderNumbers(), &StabilityNumbers()})
+    for (const RecordNumber& n : *group)
+      if (name == n.name) return n;
+  throw std::logic_error("results database: no number column '" + name + "'");
 }
 
 bool SameRecord(const DropRecord& a, const DropRecord& b, bool compare_traces) {

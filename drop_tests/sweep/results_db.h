@@ -134,9 +134,17 @@ struct RecordNumber {
   double& (*at)(DropRecord&);
   double Of(const DropRecord& r) const { return at(const_cast<DropRecord&>(r)); }  // reads only
 };
+// The drops table's numbers in groups, in table order. A drop's conditions and the rig drop's
+// metrics (impact_speed_m_s .. rest_creep_m; the metrics are drop::RigMetrics(), by name):
+const std::vector<RecordNumber>& RigNumbers();
+// The free pad's and the lander's (final_tilt_deg .. tipped_over):
+const std::vector<RecordNumber>& FreeAndLanderNumbers();
 // The lander's stability metrics and conditions, the joints' swing and the tip-over edge: the last
 // column group of the drops table, and of lander_drops.csv.
 const std::vector<RecordNumber>& StabilityNumbers();
+// The number of any group by its column name, for outputs that pick a record's columns by name
+// (exports, a single drop's metrics). A name no group holds is a bug: std::logic_error.
+const RecordNumber& RecordNumberNamed(const std::string& name);
 
 // Bitwise equality of every field (NaN equals NaN of the same bits).
 bool SameRecord(const DropRecord& a, const DropRecord& b, bool compare_traces = true);

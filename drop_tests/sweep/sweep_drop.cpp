@@ -9,6 +9,7 @@
 #include "drop_tests/scenario/lander_leg_load.h"
 #include "drop_tests/scenario/lander_scenario_file.h"
 #include "drop_tests/scenario/lander_setup.h"
+#include "drop_tests/drop/drop_columns.h"
 #include "drop_tests/drop/drop_factory.h"
 #include "drop_tests/drop/pad_drop.h"
 #include "footpad_geom/axisymmetric_intrusion.h"
@@ -56,12 +57,27 @@ DropRecord Describe(const SweepPlan& plan, const SweepDropParams& p, const drop:
   return r;
 }
 
+// Each rig drop metric beside the record's column of the same name (results_db.h): one name for a
+// metric in `touchdown drop`'s summary, the database and the exports.
+struct MetricColumn {
+  double pad::RigDropResult::*metric;
+  const RecordNumber* column;
+};
+const std::vector<MetricColumn>& MetricColumns() {
+  static const std::vector<MetricColumn> c = [] {
+    std::vector<MetricColumn> out;
+    for (const drop::ResultNumber<pad::RigDropResult>& m : drop::RigMetrics())
+      out.push_back({m.member, &RecordNumberNamed(m.name)});
+    return out;
+  }();
+  return c;
+}
+
 void MarkFailed(DropRecord& r, const std::string& reason) {
   r.ok = false;
   r.failure = reason.empty() ? "unknown failure" : reason;
-  for (double* v : {&r.final_penetration_m, &r.peak_force_N, &r.time_to_rest_s, &r.max_deceleration_m_s2,
-                    &r.impact_energy_J, &r.gravity_work_J, &r.dissipated_energy_J, &r.mean_conversion_rate_W,
-                    &r.rest_creep_m, &r.final_tilt_deg, &r.horizontal_travel_m, &r.final_roll_deg, &r.final_pitch_deg,
+  for (const MetricColumn& m : MetricColumns()) m.column->at(r) = std::nan("");
+  for (double* v : {&r.final_tilt_deg, &r.horizontal_travel_m, &r.final_roll_deg, &r.final_pitch_deg,
                     &r.tipped_over, &r.max_tilt_deg, &r.peak_leg_force_N, &r.max_stroke_m, &r.max_joint_swing_deg,
                     &r.tip_over_edge, &r.tip_over_azimuth_deg})
     *v = std::nan("");
@@ -92,15 +108,7 @@ DropRecord SimulatePadSweepDrop(const SweepModels& models, const SweepDropParams
     const drop::PadDrop drop = drop::SimulateDrop(plan.pads[p.pad], plan.soils[p.soil], c, options);
     const pad::RigDropResult& d = drop.result;
     r.ok = true;
-    r.final_penetration_m = d.final_penetration_m;
-    r.peak_force_N = d.peak_force_N;
-    r.time_to_rest_s = d.time_to_rest_s;
-    r.max_deceleration_m_s2 = d.max_deceleration_m_s2;
-    r.impact_energy_J = d.impact_energy_J;
-    r.gravity_work_J = d.gravity_work_J;
-    r.dissipated_energy_J = d.dissipated_energy_J;
-    r.mean_conversion_rate_W = d.mean_conversion_rate_W;
-    r.rest_creep_m = d.rest_creep_m;
+    for (const MetricColumn& m : MetricColumns()) m.column->at(r) = d.*m.metric;
     r.solver_steps = d.solver.steps;
     // The rig stays level on its rod and does not travel.
     r.final_tilt_deg = drop.free ? drop.free->final_tilt_deg : 0.0;

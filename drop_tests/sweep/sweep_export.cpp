@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <limits>
 #include <map>
 #include <memory>
@@ -21,11 +22,77 @@ namespace touchdown::sweep {
 namespace fs = std::filesystem;
 
 namespace {
-const std::vector<std::string> kExtraColumns = {
-    "tilt_deg",        "horizontal_speed_m_s", "zeta_N_cm3",          "time_to_rest_s",
-    "max_deceleration_m_s2", "impact_energy_J", "gravity_work_J",     "dissipated_energy_J",
-    "mean_conversion_rate_W", "rest_creep_m",   "solver_steps",       "final_tilt_deg",
-    "horizontal_travel_m"};
+// A column of an export: its header name and its cell of a record. A number's value comes from
+// the database's column of the same name (RecordNumberNamed), so an export names and reads a
+// number as the database does.
+struct ExportColumn {
+  std::string name;
+  std::function<std::string(const DropRecord&)> cell;
+};
+// A not-finite number (a quantity the drop does not have) as an empty cell, or as written.
+enum class NotFinite { kEmpty, kWritten };
+ExportColumn NumberColumn(const std::string& name, NotFinite not_finite) {
+  const RecordNumber& n = RecordNumberNamed(name);
+  return {name, [&n, not_finite](const DropRecord& r) {
+            const double v = n.Of(r);
+            return not_finite == NotFinite::kEmpty && !std::isfinite(v) ? std::string() : io::FormatNumber(v);
+          }};
+}
+ExportColumn StepsColumn() {
+  return {"solver_steps", [](const DropRecord& r) { return std::to_string(r.solver_steps); }};
+}
+ExportColumn TextColumn(const std::string& name, std::function<const std::string&(const DropRecord&)> text) {
+  return {name, [text = std::move(text)](const DropRecord& r) { return text(r); }};
+}
+std::vector<std::string> Names(const std::vector<ExportColumn>& columns) {
+  std::vector<std::string> names;
+  for (const ExportColumn& c : columns) names.push_back(c.name);
+  return names;
+}
+
+// A single-pad sweep's columns after the dataset format's own (drops.csv's extra columns).
+const std::vector<ExportColumn>& PadExtraColumns() {
+  static const std::vector<ExportColumn> c = [] {
+    std::vector<ExportColumn> out;
+    for (const char* n : {"tilt_deg", "horizontal_speed_m_s", "zeta_N_cm3", "time_to_rest_s", "max_deceleration_m_s2",
+                          "impact_energy_J", "gravity_work_J", "dissipated_energy_J", "mean_conversion_rate_W",
+                          "rest_creep_m"})
+      out.push_back(NumberColumn(n, NotFinite::kWritten));
+    out.push_back(StepsColumn());
+    for (const char* n : {"final_tilt_deg", "horizontal_travel_m"}) out.push_back(NumberColumn(n, NotFinite::kWritten));
+    return out;
+  }();
+  return c;
+}
+const std::vector<std::string> kExtraColumns = Names(PadExtraColumns());
+
+// A lander sweep's columns (lander_drops.csv): the drop, its conditions, the soils under its pads,
+// its summary, and a stability study's metrics and conditions, the joints' swing, the tip-over edge.
+const std::vector<ExportColumn>& LanderColumns() {
+  static const std::vector<ExportColumn> c = [] {
+    std::vector<ExportColumn> out = {TextColumn("drop_id", [](const DropRecord& r) -> const std::string& { return r.drop_id; }),
+                                     TextColumn("pad", [](const DropRecord& r) -> const std::string& { return r.pad; }),
+                                     TextColumn("soil", [](const DropRecord& r) -> const std::string& { return r.soil; }),
+                                     TextColumn("atmosphere", [](const DropRecord& r) -> const std::string& { return r.atmosphere; })};
+    for (const char* n : {"impact_speed_m_s", "pad_mass_kg", "gravity_m_s2", "horizontal_speed_m_s", "roll_deg",
+                          "pitch_deg", "tilt_deg"})
+      out.push_back(NumberColumn(n, NotFinite::kWritten));
+    out.push_back(TextColumn("ground_case", [](const DropRecord& r) -> const std::string& { return r.ground_case; }));
+    for (size_t i = 0; i < 4; ++i)
+      out.push_back(TextColumn("pad" + std::to_string(i + 1) + "_soil",
+                               [i](const DropRecord& r) -> const std::string& { return r.pad_soil[i]; }));
+    for (const char* n : {"zeta_N_cm3", "final_penetration_m", "peak_force_N", "pad1_final_penetration_m",
+                          "pad2_final_penetration_m", "pad3_final_penetration_m", "pad4_final_penetration_m",
+                          "final_roll_deg", "final_pitch_deg", "final_tilt_deg", "tipped_over", "time_to_rest_s",
+                          "max_deceleration_m_s2", "impact_energy_J", "gravity_work_J", "dissipated_energy_J",
+                          "mean_conversion_rate_W", "horizontal_travel_m"})
+      out.push_back(NumberColumn(n, NotFinite::kEmpty));
+    out.push_back(StepsColumn());
+    for (const RecordNumber& n : StabilityNumbers()) out.push_back(NumberColumn(n.name, NotFinite::kEmpty));
+    return out;
+  }();
+  return c;
+}
 
 // A results database to read: there (else "no sweep results here"), and a readable file.
 void RequireResultsFile(const std::string& db_path) {
@@ -86,13 +153,7 @@ void AddNonCatalogueFiles(const SweepPlan& plan, std::map<std::string, std::stri
 // A record's extra cells, in kExtraColumns order.
 std::vector<std::string> ExtraCells(const DropRecord& r) {
   std::vector<std::string> cells;
-  for (double v : {r.tilt_deg, r.horizontal_speed_m_s, r.zeta_N_cm3, r.time_to_rest_s, r.max_deceleration_m_s2,
-                   r.impact_energy_J, r.gravity_work_J, r.dissipated_energy_J, r.mean_conversion_rate_W,
-                   r.rest_creep_m})
-    cells.push_back(io::FormatNumber(v));
-  cells.push_back(std::to_string(r.solver_steps));
-  cells.push_back(io::FormatNumber(r.final_tilt_deg));
-  cells.push_back(io::FormatNumber(r.horizontal_travel_m));
+  for (const ExportColumn& c : PadExtraColumns()) cells.push_back(c.cell(r));
   return cells;
 }
 
@@ -199,20 +260,7 @@ dataset::Dataset SweepToDataset(const std::string& sweep_dir, const ExportOption
   return ds;
 }
 
-const std::vector<std::string> kLanderExportColumns = [] {
-  std::vector<std::string> c = {
-      "drop_id",           "pad",          "soil",        "atmosphere",  "impact_speed_m_s",
-      "pad_mass_kg",       "gravity_m_s2", "horizontal_speed_m_s", "roll_deg", "pitch_deg",
-      "tilt_deg",          "ground_case",  "pad1_soil",   "pad2_soil",   "pad3_soil",
-      "pad4_soil",         "zeta_N_cm3",   "final_penetration_m", "peak_force_N",
-      "pad1_final_penetration_m", "pad2_final_penetration_m", "pad3_final_penetration_m",
-      "pad4_final_penetration_m", "final_roll_deg", "final_pitch_deg", "final_tilt_deg", "tipped_over",
-      "time_to_rest_s",    "max_deceleration_m_s2", "impact_energy_J", "gravity_work_J", "dissipated_energy_J",
-      "mean_conversion_rate_W", "horizontal_travel_m", "solver_steps"};
-  // a stability study's metrics and conditions, the joints' swing, the tip-over edge
-  for (const RecordNumber& n : StabilityNumbers()) c.push_back(n.name);
-  return c;
-}();
+const std::vector<std::string> kLanderExportColumns = Names(LanderColumns());
 
 namespace {
 // Every failed drop of the database (a second pass in index order, streamed).
@@ -253,23 +301,8 @@ ExportSummary ExportLanderSweep(const ResultsDb& db, const io::OutputTarget& dat
               if (s->find_first_of(",\n\r") != std::string::npos)
                 throw MakeInputError(db_path, "drop " + r.drop_id, "a name contains a comma or line break: " + *s);
             ++summary.exported;
-            out << r.drop_id << ',' << r.pad << ',' << r.soil << ',' << r.atmosphere;
-            for (double v : {r.impact_speed_m_s, r.pad_mass_kg, r.gravity_m_s2, r.horizontal_speed_m_s, r.roll_deg,
-                             r.pitch_deg, r.tilt_deg})
-              out << ',' << io::FormatNumber(v);
-            out << ',' << r.ground_case;
-            for (const std::string& s : r.pad_soil) out << ',' << s;
-            for (double v : {r.zeta_N_cm3, r.final_penetration_m, r.peak_force_N, r.pad_final_penetration_m[0],
-                             r.pad_final_penetration_m[1], r.pad_final_penetration_m[2], r.pad_final_penetration_m[3],
-                             r.final_roll_deg, r.final_pitch_deg, r.final_tilt_deg, r.tipped_over, r.time_to_rest_s,
-                             r.max_deceleration_m_s2, r.impact_energy_J, r.gravity_work_J, r.dissipated_energy_J,
-                             r.mean_conversion_rate_W, r.horizontal_travel_m})
-              out << ',' << (std::isfinite(v) ? io::FormatNumber(v) : "");
-            out << ',' << r.solver_steps;
-            for (const RecordNumber& n : StabilityNumbers()) {
-              const double v = n.Of(r);
-              out << ',' << (std::isfinite(v) ? io::FormatNumber(v) : "");
-            }
+            const std::vector<ExportColumn>& columns = LanderColumns();
+            for (size_t i = 0; i < columns.size(); ++i) out << (i ? "," : "") << columns[i].cell(r);
             out << '\n';
           },
           /*with_traces=*/false);
