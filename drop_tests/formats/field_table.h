@@ -43,6 +43,13 @@ std::vector<std::string> FieldKeys(const FieldTable<T>& fields) {
   for (const NumberField<T>& field : fields) keys.push_back(field.key);
   return keys;
 }
+// The keys of a table, then the block's keys that no number field reads.
+template <typename T>
+std::vector<std::string> FieldKeys(const FieldTable<T>& fields, const std::vector<std::string>& others) {
+  std::vector<std::string> keys = FieldKeys(fields);
+  keys.insert(keys.end(), others.begin(), others.end());
+  return keys;
+}
 
 // One number of `f` (file units): of `sign`, and within `range` when there is one.
 inline double ReadNumber(const YamlFields& f, const std::string& key, Sign sign,

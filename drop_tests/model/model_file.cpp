@@ -27,7 +27,7 @@ const io::FieldTable<SoilOverride>& OverrideNumberFields() {
 }
 
 SoilOverride ReadOverride(const io::YamlFields& f) {
-  f.RequireOnly({"zeta_N_cm3", "reference_gravity_m_s2", "zeta_interval_N_cm3", "confidence", "fit"});
+  f.RequireOnly(io::FieldKeys(OverrideNumberFields(), {"zeta_interval_N_cm3", "confidence", "fit"}));
   SoilOverride o;
   io::ReadFields(f, OverrideNumberFields(), o);
   if (f.Has("zeta_interval_N_cm3")) {

@@ -328,9 +328,9 @@ constexpr double kAnyPlateB_m = 1.0;
 LanderGroundSpec ReadGround(const io::YamlFields& g, double gravity_m_s2, bool resolved) {
   LanderGroundSpec ground;
   if (resolved)
-    g.RequireOnly({"height_m", "slope_deg", "downhill_azimuth_deg", "law", "soil", "soils", "model", "patches"});
+    g.RequireOnly(io::FieldKeys(GroundNumberFields(), {"law", "soil", "soils", "model", "patches"}));
   else
-    g.RequireOnly({"height_m", "slope_deg", "downhill_azimuth_deg", "law", "soil", "patches", "soil_field"});
+    g.RequireOnly(io::FieldKeys(GroundNumberFields(), {"law", "soil", "patches", "soil_field"}));
   io::ReadFields(g, GroundNumberFields(), ground);
   if (ground.slope_rad >= limits::kGroundSlopeBelow_deg * kDeg)
     g.Fail("slope_deg", "must be below " + std::to_string(limits::kGroundSlopeBelow_deg));
@@ -418,8 +418,8 @@ LanderInitialSpec ReadInitial(const io::YamlFields& in, bool resolved) {
 
 // The run options: duration, sampling, capture speed and the integrator's tolerances.
 void ReadSimulation(const io::YamlFields& sim, lander::LanderRunOptions& options) {
-  sim.RequireOnly({"duration_s", "sample_rate_hz", "capture_speed_m_s", "soil_ramp_speed_m_s", "soil_ramp", "rtol",
-                   "atol", "max_step_s", "stiff", "pad_angular_segments"});
+  sim.RequireOnly(
+      io::FieldKeys(RunNumberFields(), {"soil_ramp", "rtol", "atol", "max_step_s", "stiff", "pad_angular_segments"}));
   io::ReadFields(sim, RunNumberFields(), options);
   if (sim.Has("soil_ramp")) {
     const std::string v = sim.String("soil_ramp");

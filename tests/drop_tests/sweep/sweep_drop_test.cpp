@@ -15,6 +15,7 @@
 #include "drop_tests/dataset/compare.h"
 #include "drop_tests/dataset/dataset.h"
 #include "drop_tests/drop/pad_drop.h"
+#include "drop_tests/formats/dataset_csv.h"
 #include "drop_tests/sweep/results_db.h"
 #include "drop_tests/sweep/sweep.h"
 #include "drop_tests/sweep/sweep_drop.h"
@@ -277,6 +278,23 @@ TEST_F(SweepDrop, PadSoilsReachTheGroundAndAreRecordedAndExported) {
   std::getline(in, row);
   EXPECT_EQ(row.rfind("d1,", 0), 0u) << row;
   EXPECT_NE(row.find(",B,fjs1_cp,fjs1_lp,fjs1_lp,fjs1_lp,"), std::string::npos) << row;
+  // Each column the database has by that name holds its number (empty where it has none).
+  std::vector<std::string> cells;
+  std::stringstream cells_in(row + ",");  // a last empty cell is a cell
+  for (std::string cell; std::getline(cells_in, cell, ',');) cells.push_back(cell);
+  ASSERT_EQ(cells.size(), kLanderExportColumns.size()) << row;
+  int numbers = 0;
+  for (size_t k = 0; k < cells.size(); ++k) {
+    const std::string& name = kLanderExportColumns[k];
+    bool in_database = false;
+    for (const std::vector<RecordNumber>* group : {&RigNumbers(), &FreeAndLanderNumbers(), &StabilityNumbers()})
+      for (const RecordNumber& n : *group) in_database = in_database || name == n.name;
+    if (!in_database) continue;
+    const double v = RecordNumberNamed(name).Of(records[1]);
+    EXPECT_EQ(cells[k], std::isfinite(v) ? io::FormatNumber(v) : "") << name;
+    ++numbers;
+  }
+  EXPECT_EQ(numbers, static_cast<int>(kLanderExportColumns.size()) - 10);  // all but 9 texts and solver_steps
 }
 
 }  // namespace
