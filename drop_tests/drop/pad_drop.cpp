@@ -154,33 +154,26 @@ PadDrop RunPadDrop(const io::PadSpec& pad, const rft::SoilParameters& soil, cons
 
 nlohmann::json SummaryJson(const PadDrop& d) {
   const pad::RigDropResult& r = d.result;
+  // The result's numbers from its record's table (drop_columns.h), then the drop's conditions (the
+  // keys are printed sorted, whatever the order they are set in).
   nlohmann::json j;
   if (d.free) {
     j = FreeDropJson(*d.free);
-    j["pad"] = d.pad.name;
-    j["soil"] = d.soil.name;
-    j["atmosphere"] = rft::AtmosphereName(d.soil.atmosphere);
     j["law"] = d.contact_model;
-    j["impact_speed_m_s"] = d.conditions.impact_speed_m_s;
     j["horizontal_speed_m_s"] = d.conditions.horizontal_speed_m_s;
-    j["pad_mass_kg"] = d.mass_kg;
-    j["gravity_m_s2"] = d.conditions.gravity_m_s2;
-    j["zeta_N_cm3"] = units::ZetaToN_cm3(d.zeta_effective_N_m3);
   } else {
-    j = nlohmann::json{
-        {"pad", d.pad.name},
-        {"soil", d.soil.name},
-        {"atmosphere", rft::AtmosphereName(d.soil.atmosphere)},
-        {"impact_speed_m_s", d.conditions.impact_speed_m_s},
-        {"pad_mass_kg", d.mass_kg},
-        {"gravity_m_s2", d.conditions.gravity_m_s2},
-        {"zeta_N_cm3", units::ZetaToN_cm3(d.zeta_effective_N_m3)},
-    };
     for (const ResultNumber<pad::RigDropResult>& n : RigMetrics()) j[n.name] = r.*n.member;
     j["solver_steps"] = r.solver.steps;
     // RFT rig summaries name no law (they stay as they were); Bekker's do.
     if (d.law_3d == rft::LawKind::kBekker) j["law"] = rft::LawKindName(d.law_3d);
   }
+  j["pad"] = d.pad.name;
+  j["soil"] = d.soil.name;
+  j["atmosphere"] = rft::AtmosphereName(d.soil.atmosphere);
+  j["impact_speed_m_s"] = d.conditions.impact_speed_m_s;
+  j["pad_mass_kg"] = d.mass_kg;
+  j["gravity_m_s2"] = d.conditions.gravity_m_s2;
+  j["zeta_N_cm3"] = units::ZetaToN_cm3(d.zeta_effective_N_m3);
   const std::vector<std::string> active = model::ActiveEffects(d.conditions.effects);
   if (!active.empty()) {
     const auto skipped = model::EffectsNotApplied(d.conditions.effects, d.in_air());

@@ -1,6 +1,7 @@
 // The one YAML loader: what yaml-cpp would accept but a touchdown file must not hold is refused at
 // load, with the file and the reason, before any loader walks the tree.
 #include "drop_tests/formats/yaml_fields.h"
+#include "drop_tests/formats/field_table.h"
 
 #include <gtest/gtest.h>
 
@@ -74,6 +75,17 @@ TEST_F(YamlLoad, MalformedTextIsRefusedAtOnce) {
                     "  n: 2\n  k_c_re do not depend on it.\n"),
             "");
   EXPECT_NE(Refusal(",ype: \nsoils: Dfjs2_lp:3{z 2],onz i"), "");
+}
+
+// A block's known keys: its number fields in table order, then the keys no number field reads,
+// the order an unknown key's message lists them in.
+TEST(FieldTableKeys, TheTablesKeysThenTheOthers) {
+  struct Block {
+    double a = 0.0, b = 0.0;
+  };
+  const FieldTable<Block> fields{{"a_m", &Block::a}, {"b_deg", &Block::b}};
+  EXPECT_EQ(FieldKeys(fields), (std::vector<std::string>{"a_m", "b_deg"}));
+  EXPECT_EQ(FieldKeys(fields, {"law", "soil"}), (std::vector<std::string>{"a_m", "b_deg", "law", "soil"}));
 }
 
 }  // namespace
