@@ -356,21 +356,24 @@ void WriteCampaignSummaries(const CampaignResult& r, const fs::path& staging, co
     j["trace"] = "traces/" + id + ".csv";
     drops.push_back(j);
   }
-  // summary.csv uses the dataset column names, so a campaign reads as a simulated dataset.
+  // summary.csv uses the dataset column names, so a campaign reads as a simulated dataset: each
+  // column is the drop summary's value of that name (drop::SummaryJson, from the drop's record table).
+  static const std::vector<std::string> kColumns = {
+      "drop_id",        "pad",          "soil",  "atmosphere",          "impact_speed_m_s", "pad_mass_kg",
+      "gravity_m_s2",   "trace",        "final_penetration_m", "peak_force_N", "time_to_rest_s",
+      "max_deceleration_m_s2", "impact_energy_J", "dissipated_energy_J", "mean_conversion_rate_W", "zeta_N_cm3"};
   io::WriteFileAtomically((staging / "summary.csv").string(), [&](std::ostream& out) {
-    out << "drop_id,pad,soil,atmosphere,impact_speed_m_s,pad_mass_kg,gravity_m_s2,trace,final_penetration_m,"
-           "peak_force_N,time_to_rest_s,max_deceleration_m_s2,impact_energy_J,dissipated_energy_J,"
-           "mean_conversion_rate_W,zeta_N_cm3\n"
-        << std::setprecision(10);
-    for (const auto& j : drops)
-      out << j["drop_id"].get<std::string>() << ',' << j["pad"].get<std::string>() << ','
-          << j["soil"].get<std::string>() << ',' << j["atmosphere"].get<std::string>() << ','
-          << j["impact_speed_m_s"].get<double>() << ',' << j["pad_mass_kg"].get<double>() << ','
-          << j["gravity_m_s2"].get<double>() << ',' << j["trace"].get<std::string>() << ','
-          << j["final_penetration_m"].get<double>() << ',' << j["peak_force_N"].get<double>() << ','
-          << j["time_to_rest_s"].get<double>() << ',' << j["max_deceleration_m_s2"].get<double>() << ','
-          << j["impact_energy_J"].get<double>() << ',' << j["dissipated_energy_J"].get<double>() << ','
-          << j["mean_conversion_rate_W"].get<double>() << ',' << j["zeta_N_cm3"].get<double>() << '\n';
+    for (size_t c = 0; c < kColumns.size(); ++c) out << (c ? "," : "") << kColumns[c];
+    out << '\n' << std::setprecision(10);
+    for (const nlohmann::json& j : drops) {
+      for (size_t c = 0; c < kColumns.size(); ++c) {
+        const nlohmann::json& v = j.at(kColumns[c]);
+        out << (c ? "," : "");
+        if (v.is_string()) out << v.get<std::string>();
+        else out << v.get<double>();
+      }
+      out << '\n';
+    }
   });
   nlohmann::json checks = nlohmann::json::array();
   for (const CheckOutcome& c : EvaluateChecks(r)) checks.push_back(CheckOutcomeJson(c));

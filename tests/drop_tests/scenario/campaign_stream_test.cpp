@@ -8,7 +8,10 @@
 
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "drop_tests/scenario/campaign.h"
 #include "tests/scratch_dir_test.h"
@@ -56,6 +59,31 @@ TEST(CampaignStream, StreamedOutputsEqualTheInMemoryOnesAndKeepNoTraces) {
     ++files;
   }
   EXPECT_GE(files, 3 + 3);  // three traces, summary.csv, summary.json, scenario_resolved.yaml (+ plot files)
+
+  // summary.csv's columns are summary.json's fields of the same names, drop by drop (the CSV to 10
+  // significant digits).
+  const nlohmann::json summary = nlohmann::json::parse(Slurp(dir / "a" / "summary.json"));
+  std::ifstream csv(dir / "a" / "summary.csv");
+  std::string line;
+  std::getline(csv, line);
+  auto cells_of = [](const std::string& text) {
+    std::vector<std::string> cells;
+    std::stringstream in(text);
+    for (std::string cell; std::getline(in, cell, ',');) cells.push_back(cell);
+    return cells;
+  };
+  const std::vector<std::string> names = cells_of(line);
+  ASSERT_EQ(summary["drops"].size(), 3u);
+  for (const nlohmann::json& drop : summary["drops"]) {
+    ASSERT_TRUE(std::getline(csv, line));
+    const std::vector<std::string> cells = cells_of(line);
+    ASSERT_EQ(cells.size(), names.size()) << line;
+    for (size_t c = 0; c < names.size(); ++c) {
+      const nlohmann::json& v = drop.at(names[c]);
+      if (v.is_string()) EXPECT_EQ(cells[c], v.get<std::string>()) << names[c];
+      else EXPECT_NEAR(std::stod(cells[c]), v.get<double>(), 1e-9 * std::abs(v.get<double>())) << names[c];
+    }
+  }
   fs::remove_all(dir);
 }
 
