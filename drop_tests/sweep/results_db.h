@@ -127,8 +127,9 @@ struct DropRecord {
 };
 
 // A number a record keeps, as a column: its name (with its unit suffix) beside where the record
-// keeps it. A group's table drives the database's schema, binding and reading, SameRecord, the MPI
-// serialisation and the lander export's columns, so a name and its field cannot drift apart.
+// keeps it. A group's table drives the database's schema, binding and reading, SameRecord and the MPI
+// serialisation; the exports' number columns and a rig drop's metrics (drop_tests/drop/drop_columns.h)
+// find their column here by name, so a name and its field cannot drift apart.
 struct RecordNumber {
   const char* name;
   double& (*at)(DropRecord&);
