@@ -129,6 +129,10 @@ Parameter ReadParameter(const io::YamlFields& p) {
     if (out.kind == ParameterKind::kSoilDynamicLambda && !soil.dynamic_term)
       p.Fail("field", "dynamic_lambda of soil '" + soil.name + "' acts only with its dynamic term on (dynamic_term: true in " +
                           out.file + ")");
+    // The fitted lambda goes to a model file beside the soil's zeta, which a model file requires.
+    if (out.kind == ParameterKind::kSoilDynamicLambda && !(soil.zeta_N_m3 > 0.0))
+      p.Fail("field", "dynamic_lambda of soil '" + soil.name + "' needs the soil's zeta_N_cm3 (a bekker soil without one "
+                          "has no model-file override to carry it)");
     // Every value between the bounds is simulated: both must be values a soil file may hold.
     const limits::Range& range =
         out.kind == ParameterKind::kSoilZeta ? limits::kZeta_N_cm3 : limits::kDynamicLambda;

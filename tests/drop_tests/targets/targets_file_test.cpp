@@ -159,6 +159,14 @@ TEST_F(TargetsFileLoad, RefusesBadEntriesNamingFileFieldAndValue) {
        "  - {name: d, drop: {pad: flat, soil: toyoura_bekker, speed_m_s: 1.0}, quantity: final_penetration_m,"
        " value: 0.02, uncertainty: 0.001, use: fit, source: s}\n",
        "parameters[0].field", "dynamic_term"},
+      // A bekker soil without zeta but with its dynamic term on: no model-file override carries lambda.
+      {"  - {name: l, soil: " + Write("bekker_dynamic.yaml", Slurp(std::string(TOUCHDOWN_SOURCE_DIR) +
+                                                                      "/data/soils/toyoura_bekker.yaml") +
+                                                                    "dynamic_term: true\nbulk_density_kg_m3: 1600\n") +
+           ", field: dynamic_lambda, lower: 0, upper: 4, start: 1, source: s}\n",
+       "  - {name: d, drop: {pad: flat, soil: toyoura_bekker, speed_m_s: 1.0}, quantity: final_penetration_m,"
+       " value: 0.02, uncertainty: 0.001, use: fit, source: s}\n",
+       "parameters[0].field", "zeta_N_cm3"},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.field);
