@@ -28,6 +28,9 @@ inline constexpr Range kForceTilt_deg{"deg", -180.0, 180.0, false};     // `forc
 inline constexpr int kDropTiltWithin_deg = 90;
 inline constexpr Range kDepth_m{"m", -10.0, 10.0, false};               // below (+) / above (-) the surface
 inline constexpr Range kZeta_N_cm3{"N/cm^3", 0.0, 1e4, true};           // RFT scaling factor
+// Dynamic RFT's inertial coefficient lambda [-] (rft/dynamic_term.h): order one in every fit
+// published (Agarwal et al. 2021: 1.1); 100 is far beyond, and a negative one would pull the pad in.
+inline constexpr Range kDynamicLambda{"(dimensionless)", 0.0, 100.0, false};
 inline constexpr Range kPadSize_m{"m", 0.0, 10.0, true};                // pad radius, thickness, mesh extent
 inline constexpr Range kPadSize_mm{"mm", 0.0, kPadSize_m.high * 1e3, true};  // the same, as pad YAML gives it
 // Worker threads a run may start (--threads, the Python module's `threads`; 0: every core). Far

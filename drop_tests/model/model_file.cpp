@@ -11,6 +11,7 @@
 #include "drop_tests/catalog/paths_in_outputs.h"
 #include "drop_tests/formats/yaml_fields.h"
 #include "rft/input_error.h"
+#include "rft/physical_limits.h"
 #include "rft/units.h"
 
 namespace touchdown::model {
@@ -27,9 +28,13 @@ const io::FieldTable<SoilOverride>& OverrideNumberFields() {
 }
 
 SoilOverride ReadOverride(const io::YamlFields& f) {
-  f.RequireOnly(io::FieldKeys(OverrideNumberFields(), {"zeta_interval_N_cm3", "confidence", "fit"}));
+  f.RequireOnly(io::FieldKeys(OverrideNumberFields(), {"zeta_interval_N_cm3", "confidence", "dynamic_lambda", "fit"}));
   SoilOverride o;
   io::ReadFields(f, OverrideNumberFields(), o);
+  if (f.Has("dynamic_lambda")) {
+    o.dynamic_lambda = f.Number("dynamic_lambda");
+    limits::Require(limits::kDynamicLambda, *o.dynamic_lambda, f.file(), f.Path("dynamic_lambda"));
+  }
   if (f.Has("zeta_interval_N_cm3")) {
     const YAML::Node n = f.node()["zeta_interval_N_cm3"];
     double lo = 0, hi = 0;
@@ -99,6 +104,7 @@ void WriteModelFile(const ModelFile& m, const io::OutputTarget& target, const st
       y << YAML::Key << "zeta_interval_N_cm3" << YAML::Value << YAML::Flow << YAML::BeginSeq
         << units::ZetaToN_cm3(*o.zeta_low_N_m3) << units::ZetaToN_cm3(*o.zeta_high_N_m3) << YAML::EndSeq << YAML::Key << "confidence"
         << YAML::Value << o.confidence;
+    if (o.dynamic_lambda) y << YAML::Key << "dynamic_lambda" << YAML::Value << *o.dynamic_lambda;
     if (o.fit) {
       y << YAML::Key << "fit" << YAML::Value << YAML::BeginMap << YAML::Key << "method" << YAML::Value << o.fit->method
         << YAML::Key << "drops" << YAML::Value << o.fit->drops << YAML::Key << "samples" << YAML::Value
@@ -122,8 +128,12 @@ rft::SoilParameters ApplyModel(const ModelFile& m, const rft::SoilParameters& so
   rft::SoilParameters out = soil;
   const auto it = m.soils.find(soil.name);
   if (it == m.soils.end()) return out;
-  // The model's zeta holds at its own reference gravity; the soil keeps its reference.
-  out.SetZetaAtGravity(it->second.zeta_N_m3, it->second.reference_gravity_m_s2);
+  const SoilOverride& o = it->second;
+  // The model's zeta holds at its own reference gravity; the soil keeps its reference. The soil's
+  // own zeta (a model that calibrates only lambda carries it) is kept without a round trip.
+  if (o.zeta_N_m3 != soil.zeta_N_m3 || o.reference_gravity_m_s2 != soil.reference_gravity_m_s2)
+    out.SetZetaAtGravity(o.zeta_N_m3, o.reference_gravity_m_s2);
+  if (o.dynamic_lambda) out.dynamic_lambda = *o.dynamic_lambda;
   return out;
 }
 
@@ -156,7 +166,10 @@ nlohmann::json ModelEffectsJson(const ModelFile& m) {
 std::string ModelDigestText(const ModelFile& m) {
   std::string s = "model:" + m.name + ";";
   for (const auto& [name, o] : m.soils)
+  {
     s += name + "=" + io::FormatNumber(o.zeta_N_m3) + "@" + io::FormatNumber(o.reference_gravity_m_s2) + ";";
+    if (o.dynamic_lambda) s += name + ".dynamic_lambda=" + io::FormatNumber(*o.dynamic_lambda) + ";";
+  }
   if (m.HasEffects()) s += "effects:" + YAML::Dump(EffectsToYaml(m.effects, m.effect_intervals));
   return s;
 }

@@ -10,6 +10,7 @@
 //       zeta_N_cm3: 3.61        # at reference_gravity_m_s2 (zeta scales with g, see rft/soil.h)
 //       reference_gravity_m_s2: 9.81
 //       zeta_interval_N_cm3: [3.52, 3.70]   # optional confidence interval
+//       dynamic_lambda: 1.3     # optional: replaces the soil file's dynamic_lambda
 //       confidence: 0.95
 //       fit: {method: ..., drops: 6, samples: 240, residual_rms_N: 4.1, dataset: ...}   # optional record
 //   effects:                    # effect terms beyond quasi-static RFT (drop_tests/model/effects.h)
@@ -57,6 +58,9 @@ struct SoilOverride {
   std::optional<double> zeta_low_N_m3;    // confidence interval, both or neither
   std::optional<double> zeta_high_N_m3;
   double confidence = 0.95;
+  // The soil's dynamic-term coefficient (rft/soil.h dynamic_lambda) when calibrated; none: the
+  // soil file's. Acts only on a soil whose dynamic term is on.
+  std::optional<double> dynamic_lambda;
   std::optional<SoilFit> fit;
 };
 
@@ -80,7 +84,8 @@ inline constexpr const char* kModelFileMark = "# touchdown model file (written b
 // in (default: the directory of the target; drop_tests/catalog/paths_in_outputs.h).
 void WriteModelFile(const ModelFile& model, const io::OutputTarget& target, const std::string& output_dir = "");
 // The soil as the model sees it: its zeta replaced when the model has an override (converted to
-// the soil's own reference gravity). Effect terms are not part of the soil: see ModelEffectTerms.
+// the soil's own reference gravity; a zeta equal to the soil's own at the same reference gravity is
+// kept as it is), and its dynamic_lambda when the override has one. Effect terms are not part of the soil: see ModelEffectTerms.
 rft::SoilParameters ApplyModel(const ModelFile& model, const rft::SoilParameters& soil);
 // The model's effects flattened (none when `effects` is empty). Throws InputError naming the
 // model file on a repeated effect or a value out of range (a model built in memory).

@@ -1,6 +1,7 @@
 #pragma once
-// A stability study's soil uncertainty: each named soil's zeta drawn, landing by landing, from the
-// joint normal distribution a calibration reports (`touchdown calibrate --targets ... --report
+// A stability study's soil uncertainty: each named soil's parameters that a calibration holds (its
+// zeta, its dynamic term's dynamic_lambda, or both) drawn, landing by landing, from the joint normal
+// distribution the calibration reports (`touchdown calibrate --targets ... --report
 // R.json`: the best values and their covariance, drop_tests/targets/targets_fit.h), instead of
 // the fixed number of its soil file:
 //
@@ -12,8 +13,9 @@
 // included); soils from different files independently. Draws are counter-based, keyed by (the
 // study's seed, the landing's index, the parameter, the attempt), so a landing's soil follows from
 // its index alone, on any thread, rank or shard. A draw outside the parameters' physical range
-// (rft/physical_limits.h: zeta in (0, 1e4] N/cm^3) is drawn again (rejection: the normal truncated to
-// the range); after kMaxDrawAttempts rejected draws the landing takes the best values.
+// (rft/physical_limits.h: zeta in (0, 1e4] N/cm^3, dynamic_lambda in [0, 100]) is drawn again
+// (rejection: the normal truncated to the range); after kMaxDrawAttempts rejected draws the landing
+// takes the best values.
 //
 // The summary's split of the outcome's variance into the soil's share and the conditions' share,
 // and P(tip) at the soil's interval ends, are SoilSplit below (docs/stability_studies.md, "The
@@ -45,14 +47,23 @@ inline constexpr uint64_t kSoilDrawStream = 0x50000;
 inline constexpr uint64_t kSoilAttemptStride = 0x1000;  // parameters per study, at most
 inline constexpr int kMaxUncertainParameters = 64;
 
+// Which of a soil's numbers a parameter is (the calibration report's `kind`).
+enum class SoilField {
+  kZeta,           // zeta_N_cm3 [N/cm^3] at reference_gravity_m_s2 (kind soil_zeta)
+  kDynamicLambda,  // dynamic_lambda [-] (kind soil_dynamic_lambda)
+};
+
 struct UncertainParameter {
   std::string soil;         // the soil's name, as the lander's ground names it
   std::string name;         // the calibration's parameter name, e.g. zeta_cp
-  std::string column;       // its column in the outputs: "<soil>_zeta_N_cm3"
-  double mean = 0.0;        // zeta [N/cm^3] at reference_gravity_m_s2 (the calibration's best value)
-  double sigma = 0.0;       // one standard deviation [N/cm^3]
-  double reference_gravity_m_s2 = 0.0;
+  SoilField field = SoilField::kZeta;
+  std::string column;       // its column in the outputs: "<soil>_zeta_N_cm3", "<soil>_dynamic_lambda"
+  double mean = 0.0;        // in the field's unit (the calibration's best value)
+  double sigma = 0.0;       // one standard deviation, same unit
+  double reference_gravity_m_s2 = 0.0;  // zeta's; for lambda the soil file's
+  double soil_zeta_N_m3 = 0.0;  // the soil file's zeta: what a soil whose zeta is not drawn keeps
 };
+const char* SoilFieldUnit(SoilField f);  // "N/cm^3", "-"
 
 struct CalibrationGroup {  // the parameters taken from one calibration file, drawn jointly
   std::string file;
@@ -69,12 +80,14 @@ struct SoilUncertainty {
 
 // Reads the study block's `soil_uncertainty` (the mapping soil name -> {calibration: FILE}) against
 // the study's plan: every soil one its landings' ground holds, every file a calibration report with
-// a covariance holding that soil's zeta (positive definite). InputError naming the file and field.
+// a covariance holding that soil's zeta or dynamic_lambda (positive definite over those drawn), a
+// drawn lambda only on a soil whose dynamic term is on. InputError naming the file and field.
 SoilUncertainty ReadSoilUncertainty(const io::YamlFields& study_block, const sweep::SweepPlan& plan);
 
-// The parameters landing `index` runs with, in file units (N/cm^3), in `parameters` order.
+// The parameters landing `index` runs with, in file units (N/cm^3, -), in `parameters` order.
 std::vector<double> DrawSoilParameters(const SoilUncertainty& u, int64_t index);
-// The same as the zeta overrides a lander run takes (sweep::SweepPlan::soil_overrides_at).
+// The same as the soil overrides a lander run takes (sweep::SweepPlan::soil_overrides_at): zeta, and
+// dynamic_lambda where drawn (a soil with only lambda drawn keeps its file's zeta).
 std::map<std::string, model::SoilOverride> SoilOverrides(const SoilUncertainty& u, const std::vector<double>& drawn);
 // What the draws depend on, for the plan's variant (and so its digest): soils, best values, covariances.
 std::string SoilUncertaintyDigestText(const SoilUncertainty& u);
@@ -91,7 +104,7 @@ struct ShareEstimate {
   double variance = 0.0;                    // of the outcome over those landings
   double soil_share = 0.0;                  // adjusted R^2, clipped to [0, 1]
   double soil_share_low = 0.0, soil_share_high = 0.0;
-  std::vector<double> slope;                // per parameter [outcome per N/cm^3]
+  std::vector<double> slope;                // per parameter [outcome per parameter unit]
 };
 
 struct SoilSplit {

@@ -13,14 +13,20 @@
 namespace touchdown::stability {
 
 namespace {
-bool InsideLimits(const std::vector<double>& x, const std::vector<size_t>& which) {
+const limits::Range& RangeOf(SoilField f) {
+  return f == SoilField::kZeta ? limits::kZeta_N_cm3 : limits::kDynamicLambda;
+}
+
+bool InsideLimits(const SoilUncertainty& u, const std::vector<double>& x, const std::vector<size_t>& which) {
   for (const size_t k : which) {
-    const limits::Range& r = limits::kZeta_N_cm3;
+    const limits::Range& r = RangeOf(u.parameters[k].field);
     if (!(r.low_open ? x[k] > r.low : x[k] >= r.low) || !(x[k] <= r.high)) return false;
   }
   return true;
 }
 }  // namespace
+
+const char* SoilFieldUnit(SoilField f) { return f == SoilField::kZeta ? "N/cm^3" : "-"; }
 
 std::vector<double> DrawSoilParameters(const SoilUncertainty& u, int64_t index) {
   std::vector<double> x(u.parameters.size());
@@ -36,7 +42,7 @@ std::vector<double> DrawSoilParameters(const SoilUncertainty& u, int64_t index) 
       }
       const Eigen::VectorXd v = mean + g.lower * z;
       for (Eigen::Index a = 0; a < n; ++a) x[g.parameters[size_t(a)]] = v(a);
-      accepted = InsideLimits(x, g.parameters);
+      accepted = InsideLimits(u, x, g.parameters);
     }
     if (!accepted)
       for (const size_t k : g.parameters) x[k] = u.parameters[k].mean;
@@ -47,9 +53,19 @@ std::vector<double> DrawSoilParameters(const SoilUncertainty& u, int64_t index) 
 std::map<std::string, model::SoilOverride> SoilOverrides(const SoilUncertainty& u, const std::vector<double>& drawn) {
   std::map<std::string, model::SoilOverride> out;
   for (size_t k = 0; k < u.parameters.size(); ++k) {
-    model::SoilOverride& o = out[u.parameters[k].soil];
-    o.zeta_N_m3 = units::ZetaFromN_cm3(drawn[k]);
-    o.reference_gravity_m_s2 = u.parameters[k].reference_gravity_m_s2;
+    const UncertainParameter& q = u.parameters[k];
+    const auto [it, added] = out.try_emplace(q.soil);
+    model::SoilOverride& o = it->second;
+    if (added) {  // the soil file's zeta until a drawn zeta replaces it
+      o.zeta_N_m3 = q.soil_zeta_N_m3;
+      o.reference_gravity_m_s2 = q.reference_gravity_m_s2;
+    }
+    if (q.field == SoilField::kZeta) {
+      o.zeta_N_m3 = units::ZetaFromN_cm3(drawn[k]);
+      o.reference_gravity_m_s2 = q.reference_gravity_m_s2;
+    } else {
+      o.dynamic_lambda = drawn[k];
+    }
   }
   return out;
 }
@@ -60,7 +76,10 @@ std::string SoilUncertaintyDigestText(const SoilUncertainty& u) {
     s += "[";
     for (const size_t k : g.parameters) {
       const UncertainParameter& p = u.parameters[k];
-      s += p.soil + "=" + io::FormatNumber(p.mean) + "@" + io::FormatNumber(p.reference_gravity_m_s2) + ";";
+      if (p.field == SoilField::kZeta)
+        s += p.soil + "=" + io::FormatNumber(p.mean) + "@" + io::FormatNumber(p.reference_gravity_m_s2) + ";";
+      else
+        s += p.soil + ".dynamic_lambda=" + io::FormatNumber(p.mean) + ";";
     }
     for (Eigen::Index a = 0; a < g.covariance.rows(); ++a)
       for (Eigen::Index b = 0; b < g.covariance.cols(); ++b) s += io::FormatNumber(g.covariance(a, b)) + ",";
@@ -71,6 +90,12 @@ std::string SoilUncertaintyDigestText(const SoilUncertainty& u) {
 
 void AttachSoilUncertainty(sweep::SweepPlan& plan, const SoilUncertainty& u) {
   plan.soil_overrides_at = [u](int64_t index) { return SoilOverrides(u, DrawSoilParameters(u, index)); };
+  plan.soil_parameters_at = [u](int64_t index) {
+    const std::vector<double> x = DrawSoilParameters(u, index);
+    std::vector<std::pair<std::string, double>> named;
+    for (size_t k = 0; k < x.size(); ++k) named.emplace_back(u.parameters[k].column, x[k]);
+    return named;
+  };
   plan.variant += std::string(plan.variant.empty() ? "" : ";") + SoilUncertaintyDigestText(u);
 }
 

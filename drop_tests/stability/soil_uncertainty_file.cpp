@@ -20,17 +20,18 @@ namespace fs = std::filesystem;
 
 // The soils a landing of the plan can stand on, by name: the scenario's ground (default soil,
 // patches, a patch field's soils) and the study's `soil` and `pad_soils` values.
-std::set<std::string> StudySoilNames(const sweep::SweepPlan& plan) {
-  std::set<std::string> names;
-  for (const rft::SoilParameters& s : plan.soils) names.insert(s.name);
+std::map<std::string, rft::SoilParameters> StudySoils(const sweep::SweepPlan& plan) {
+  std::map<std::string, rft::SoilParameters> soils;
+  const auto add = [&soils](const rft::SoilParameters& s) { soils.emplace(s.name, s); };
+  for (const rft::SoilParameters& s : plan.soils) add(s);
   if (plan.lander) {
     const scenario::LanderGroundSpec& g = plan.lander->ground;
-    names.insert(io::LoadSoil(g.default_soil).name);
-    for (const scenario::LanderPatchSpec& p : g.patches) names.insert(io::LoadSoil(p.soil).name);
+    add(io::LoadSoil(g.default_soil));
+    for (const scenario::LanderPatchSpec& p : g.patches) add(io::LoadSoil(p.soil));
     if (g.soil_field)
-      for (const std::string& s : g.soil_field->soils) names.insert(io::LoadSoil(s).name);
+      for (const std::string& s : g.soil_field->soils) add(io::LoadSoil(s));
   }
-  return names;
+  return soils;
 }
 
 std::string Joined(const std::set<std::string>& names) {
@@ -97,23 +98,34 @@ CalibrationCovariance ReadCovariance(const nlohmann::json& report, const std::st
   return out;
 }
 
-// The index in the calibration's covariance of soil `soil`'s zeta.
-size_t ZetaOf(const CalibrationCovariance& c, const std::string& soil, const std::string& file) {
-  std::vector<size_t> found;
+// The rows in the calibration's covariance of soil `soil`'s parameters a study draws (its zeta
+// first, then its dynamic_lambda), each with its field.
+std::vector<std::pair<size_t, SoilField>> SoilRowsOf(const CalibrationCovariance& c, const std::string& soil,
+                                                     const std::string& file) {
+  std::vector<std::pair<size_t, SoilField>> found;
   std::set<std::string> soils;
-  for (size_t a = 0; a < c.parameters.size(); ++a) {
-    const nlohmann::json& p = c.parameters[a];
-    if (p.value("kind", "") != "soil_zeta") continue;
-    soils.insert(p.value("soil", ""));
-    if (p.value("soil", "") == soil) found.push_back(a);
+  for (const SoilField field : {SoilField::kZeta, SoilField::kDynamicLambda}) {
+    const char* kind = field == SoilField::kZeta ? "soil_zeta" : "soil_dynamic_lambda";
+    size_t count = 0;
+    for (size_t a = 0; a < c.parameters.size(); ++a) {
+      const nlohmann::json& p = c.parameters[a];
+      if (p.value("kind", "") != kind) continue;
+      soils.insert(p.value("soil", ""));
+      if (p.value("soil", "") != soil) continue;
+      found.emplace_back(a, field);
+      ++count;
+    }
+    if (count > 1)
+      throw MakeInputError(file, "covariance.parameters",
+                           "has the " + std::string(field == SoilField::kZeta ? "zeta" : "dynamic_lambda") + " of soil '" +
+                               soil + "' more than once");
   }
-  if (found.size() != 1)
+  if (found.empty())
     throw MakeInputError(file, "covariance.parameters",
-                         found.empty() ? "has no interval for the zeta of soil '" + soil + "' (its soils with one: " +
-                                             (soils.empty() ? std::string("none") : Joined(soils)) +
-                                             "; a parameter at a bound or held fixed gets none)"
-                                       : "has the zeta of soil '" + soil + "' more than once");
-  return found.front();
+                         "has no interval for the zeta or dynamic_lambda of soil '" + soil + "' (its soils with one: " +
+                             (soils.empty() ? std::string("none") : Joined(soils)) +
+                             "; a parameter at a bound or held fixed gets none)");
+  return found;
 }
 }  // namespace
 
@@ -124,9 +136,10 @@ SoilUncertainty ReadSoilUncertainty(const io::YamlFields& study_block, const swe
   const YAML::Node node = study_block.node()[key];
   if (!node.IsMap() || node.size() == 0)
     study_block.Fail(key, "must be a mapping of soil names to {calibration: FILE.json}");
-  if (plan.lander && plan.lander->ground.law == rft::LawKind::kBekker)
-    study_block.Fail(key, "draws zeta, which the ground's bekker law does not use");
-  const std::set<std::string> soils = StudySoilNames(plan);
+  const bool bekker_ground = plan.lander && plan.lander->ground.law == rft::LawKind::kBekker;
+  const std::map<std::string, rft::SoilParameters> soils = StudySoils(plan);
+  std::set<std::string> names;
+  for (const auto& [name, soil] : soils) names.insert(name);
   const fs::path base = fs::path(study_block.file()).parent_path();
   std::map<std::string, size_t> group_of_file;
   std::map<std::string, CalibrationCovariance> read;
@@ -135,7 +148,8 @@ SoilUncertainty ReadSoilUncertainty(const io::YamlFields& study_block, const swe
   for (const auto& entry : node) {
     const std::string soil = entry.first.as<std::string>();
     if (!soils.count(soil))
-      all.Fail(soil, "is not a soil this study's landings stand on (" + Joined(soils) + ")");
+      all.Fail(soil, "is not a soil this study's landings stand on (" + Joined(names) + ")");
+    const rft::SoilParameters& soil_file = soils.at(soil);
     const io::YamlFields f = all.Child(soil);
     f.RequireOnly({"calibration"});
     const std::string given = f.String("calibration");
@@ -143,25 +157,39 @@ SoilUncertainty ReadSoilUncertainty(const io::YamlFields& study_block, const swe
     const std::string path = fs::absolute(p).lexically_normal().string();
     if (!read.count(path)) read.emplace(path, ReadCovariance(ReadJsonFile(path, f.file(), f.Path("calibration")), path));
     const CalibrationCovariance& c = read.at(path);
-    const size_t row = ZetaOf(c, soil, path);
-    UncertainParameter q;
-    q.soil = soil;
-    q.name = c.parameters[row]["name"].get<std::string>();
-    q.column = soil + "_zeta_N_cm3";
-    q.mean = c.parameters[row]["value"].get<double>();
-    q.reference_gravity_m_s2 = c.parameters[row].value("reference_gravity_m_s2", rft::kEarthGravity_m_s2);
-    limits::Require(limits::kZeta_N_cm3, q.mean, path, "covariance.parameters[" + std::to_string(row) + "].value");
-    limits::Require(limits::kGravity_m_s2, q.reference_gravity_m_s2, path,
-                    "covariance.parameters[" + std::to_string(row) + "].reference_gravity_m_s2");
-    if (!group_of_file.count(path)) {
-      group_of_file[path] = u.groups.size();
-      u.groups.push_back({path, {}, {}, {}});
-      rows_in_file.emplace_back();
+    for (const auto& [row, field] : SoilRowsOf(c, soil, path)) {
+      const std::string at = "covariance.parameters[" + std::to_string(row) + "]";
+      UncertainParameter q;
+      q.soil = soil;
+      q.name = c.parameters[row]["name"].get<std::string>();
+      q.field = field;
+      q.mean = c.parameters[row]["value"].get<double>();
+      q.soil_zeta_N_m3 = soil_file.zeta_N_m3;
+      if (field == SoilField::kZeta) {
+        if (bekker_ground) study_block.Fail(key, "draws zeta, which the ground's bekker law does not use");
+        q.column = soil + "_zeta_N_cm3";
+        q.reference_gravity_m_s2 = c.parameters[row].value("reference_gravity_m_s2", rft::kEarthGravity_m_s2);
+        limits::Require(limits::kZeta_N_cm3, q.mean, path, at + ".value");
+        limits::Require(limits::kGravity_m_s2, q.reference_gravity_m_s2, path, at + ".reference_gravity_m_s2");
+      } else {
+        // A drawn lambda that no landing uses would only look like uncertainty carried through.
+        if (!soil_file.dynamic_term)
+          f.Fail("calibration", path + " holds the dynamic_lambda of soil '" + soil +
+                                    "', whose dynamic term is off (dynamic_term: false in its soil file)");
+        q.column = soil + "_dynamic_lambda";
+        q.reference_gravity_m_s2 = soil_file.reference_gravity_m_s2;
+        limits::Require(limits::kDynamicLambda, q.mean, path, at + ".value");
+      }
+      if (!group_of_file.count(path)) {
+        group_of_file[path] = u.groups.size();
+        u.groups.push_back({path, {}, {}, {}});
+        rows_in_file.emplace_back();
+      }
+      const size_t g = group_of_file[path];
+      u.groups[g].parameters.push_back(u.parameters.size());
+      rows_in_file[g].push_back(row);
+      u.parameters.push_back(q);
     }
-    const size_t g = group_of_file[path];
-    u.groups[g].parameters.push_back(u.parameters.size());
-    rows_in_file[g].push_back(row);
-    u.parameters.push_back(q);
   }
   if (u.parameters.size() > size_t(kMaxUncertainParameters))
     study_block.Fail(key, "draws at most " + std::to_string(kMaxUncertainParameters) + " parameters");
@@ -174,7 +202,7 @@ SoilUncertainty ReadSoilUncertainty(const io::YamlFields& study_block, const swe
       for (Eigen::Index b = 0; b < n; ++b) group.covariance(a, b) = m(Eigen::Index(rows_in_file[g][size_t(a)]), Eigen::Index(rows_in_file[g][size_t(b)]));
     const Eigen::LLT<Eigen::MatrixXd> llt(group.covariance);
     if (llt.info() != Eigen::Success || !(group.covariance.diagonal().minCoeff() > 0.0))
-      throw MakeInputError(group.file, "covariance.matrix", "must be positive definite over the drawn soils' zeta");
+      throw MakeInputError(group.file, "covariance.matrix", "must be positive definite over the drawn soils' parameters");
     group.lower = llt.matrixL();
     for (Eigen::Index a = 0; a < n; ++a) u.parameters[group.parameters[size_t(a)]].sigma = std::sqrt(group.covariance(a, a));
   }

@@ -123,14 +123,17 @@ nlohmann::json SoilSplitJson(const SoilUncertainty& u, const std::optional<SoilS
   nlohmann::json params = nlohmann::json::array();
   for (const UncertainParameter& q : u.parameters)
     params.push_back({{"soil", q.soil}, {"parameter", q.name}, {"column", q.column}, {"mean", q.mean}, {"sigma", q.sigma},
-                      {"unit", "N/cm^3"}, {"reference_gravity_m_s2", q.reference_gravity_m_s2}});
+                      {"unit", SoilFieldUnit(q.field)}, {"reference_gravity_m_s2", q.reference_gravity_m_s2}});
+  bool lambda = false;
+  for (const UncertainParameter& q : u.parameters) lambda = lambda || q.field == SoilField::kDynamicLambda;
   nlohmann::json files = nlohmann::json::array();
   for (const CalibrationGroup& g : u.groups) files.push_back(g.file);
   nlohmann::json out{{"parameters", params},
                      {"calibrations", files},
                      {"draws", "per landing from the joint normal of each calibration (Cholesky factor of its covariance), "
                                "counter-based on (seed, landing index); a draw outside zeta's physical range (0, 1e4] "
-                               "N/cm^3 drawn again, up to " + std::to_string(kMaxDrawAttempts) + " times, then the best values"},
+                               "N/cm^3" + std::string(lambda ? " or dynamic_lambda's [0, 100]" : "") + " drawn again, up to " +
+                               std::to_string(kMaxDrawAttempts) + " times, then the best values"},
                      {"split_method",
                       "soil_share: adjusted R^2 of the least-squares fit of the outcome on the drawn parameters (the "
                       "first-order share of the variance the soil explains, for an outcome locally linear in them); "
@@ -151,7 +154,7 @@ nlohmann::json SoilSplitJson(const SoilUncertainty& u, const std::optional<SoilS
                       {"soil_share", s.soil_share},
                       {"soil_share_interval_95", {s.soil_share_low, s.soil_share_high}},
                       {"conditions_share", 1.0 - s.soil_share},
-                      {"slope_per_N_cm3", slopes}});
+                      {lambda ? "slope_per_unit" : "slope_per_N_cm3", slopes}});
   }
   out["variance_split"] = shares;
   nlohmann::json ends = nlohmann::json::object();

@@ -76,7 +76,8 @@ struct Study {
   int max_tip_over_cases = 100;
   RecheckSettings recheck;
   JointRangeSettings joint_range;
-  // Each named soil's zeta drawn per landing from a calibration (the plan's soil_overrides_at draws it).
+  // Each named soil's zeta and dynamic_lambda drawn per landing from a calibration (the plan's
+  // soil_overrides_at draws them, soil_parameters_at names them for the database).
   std::optional<SoilUncertainty> soil_uncertainty;
 };
 

@@ -255,8 +255,12 @@ bool SameRecord(const DropRecord& a, const DropRecord& b, bool compare_traces) {
   if (a.index != b.index || a.drop_id != b.drop_id || a.ok != b.ok || a.failure != b.failure || a.kind != b.kind ||
       a.pad != b.pad || a.soil != b.soil || a.atmosphere != b.atmosphere || a.solver_steps != b.solver_steps ||
       a.pad_soil != b.pad_soil || a.ground_case != b.ground_case || a.failure_limit != b.failure_limit ||
-      !SameBits(a.failure_limit_value, b.failure_limit_value))
+      !SameBits(a.failure_limit_value, b.failure_limit_value) || a.soil_parameters.size() != b.soil_parameters.size())
     return false;
+  for (size_t k = 0; k < a.soil_parameters.size(); ++k)
+    if (a.soil_parameters[k].first != b.soil_parameters[k].first ||
+        !SameBits(a.soil_parameters[k].second, b.soil_parameters[k].second))
+      return false;
   if (!compare_traces) return true;
   return a.trace.size() == b.trace.size() &&
          (a.trace.empty() || std::memcmp(a.trace.data(), b.trace.data(), a.trace.size() * sizeof(pad::DropSample)) == 0);
@@ -293,6 +297,11 @@ std::string SerializeRecords(const std::vector<DropRecord>& records) {
     Put(out, r.failure_limit_value);
     for (const RecordNumber& n : StabilityNumbers()) Put(out, n.Of(r));
     Put(out, r.solver_steps);
+    Put<uint64_t>(out, r.soil_parameters.size());
+    for (const auto& [name, value] : r.soil_parameters) {
+      PutString(out, name);
+      Put(out, value);
+    }
     Put<uint64_t>(out, r.trace.size());
     out.append(reinterpret_cast<const char*>(r.trace.data()), r.trace.size() * sizeof(pad::DropSample));
   }
@@ -316,6 +325,11 @@ std::vector<DropRecord> DeserializeRecords(const std::string& bytes) {
     r.failure_limit_value = in.Get<double>();
     for (const RecordNumber& n : StabilityNumbers()) n.at(r) = in.Get<double>();
     r.solver_steps = in.Get<int64_t>();
+    r.soil_parameters.resize(in.Get<uint64_t>());
+    for (auto& [name, value] : r.soil_parameters) {
+      name = in.GetString();
+      value = in.Get<double>();
+    }
     r.trace.resize(in.Get<uint64_t>());
     for (pad::DropSample& s : r.trace) s = in.Get<pad::DropSample>();
   }
@@ -331,6 +345,10 @@ namespace {
 // reader's TEMP stand-ins ("TEMP TABLE").
 std::string MetaTableSql(const std::string& kind) {
   return "CREATE " + kind + " meta(key TEXT PRIMARY KEY, value TEXT NOT NULL)";
+}
+std::string SoilParametersTableSql(const std::string& kind) {
+  return "CREATE " + kind + " soil_parameters(drop_index INTEGER NOT NULL, position INTEGER NOT NULL, "
+         "name TEXT NOT NULL, value REAL NOT NULL, PRIMARY KEY (drop_index, position))";
 }
 std::string TracesTableSql(const std::string& kind) {
   return "CREATE " + kind + " traces(drop_index INTEGER PRIMARY KEY, samples INTEGER NOT NULL, data BLOB NOT NULL)";
@@ -513,6 +531,8 @@ void ResultsDb::Insert(const std::vector<DropRecord>& records) {
     for (int i = 0; i < ColumnCount(); ++i) marks += ",?";
     Statement drop(db_, "INSERT INTO drops(drop_index, " + Columns() + ") VALUES(" + marks + ")");
     Statement trace(db_, "INSERT INTO traces(drop_index, samples, data) VALUES(?,?,?)");
+    // Created with the first record that has drawn soil parameters: other databases stay as they were.
+    bool soil_table = HasSoilParameters();
     for (const DropRecord& r : records) {
       drop.Reset();
       BindRecord(drop, r);
@@ -520,11 +540,29 @@ void ResultsDb::Insert(const std::vector<DropRecord>& records) {
       if (rc == SQLITE_CONSTRAINT) {  // already stored: must be the same drop, bit for bit
         Statement old(db_, "SELECT drop_index, " + Columns() + " FROM drops WHERE drop_index = ?");
         old.Int(1, r.index);
-        if (old.Step() != SQLITE_ROW || !SameRecord(ReadRecord(old), r, false))
+        DropRecord stored;
+        if (old.Step() == SQLITE_ROW) {
+          stored = ReadRecord(old);
+          ReadSoilParameters(stored);
+        }
+        if (stored.drop_id.empty() || !SameRecord(stored, r, false))
           throw std::runtime_error(path_ + ": drop " + r.drop_id + " is already stored with different results");
         continue;
       }
       if (rc != SQLITE_DONE) ThrowSqlite(db_, rc, "insert");
+      if (!r.soil_parameters.empty()) {
+        if (!soil_table) Exec(SoilParametersTableSql("TABLE IF NOT EXISTS"));
+        soil_table = true;
+        Statement soil(db_, "INSERT INTO soil_parameters(drop_index, position, name, value) VALUES(?,?,?,?)");
+        for (size_t k = 0; k < r.soil_parameters.size(); ++k) {
+          soil.Reset();
+          soil.Int(1, r.index);
+          soil.Int(2, static_cast<int64_t>(k));
+          soil.Text(3, r.soil_parameters[k].first);
+          soil.Real(4, r.soil_parameters[k].second);
+          if (const int src = soil.Step(); src != SQLITE_DONE) ThrowSqlite(db_, src, "soil parameters");
+        }
+      }
       if (!r.trace.empty()) {
         trace.Reset();
         trace.Int(1, r.index);
@@ -582,6 +620,12 @@ int64_t ResultsDb::ForgetDropsBelowLimits(long max_rhs_evaluations, double max_w
     traces.Int(1, max_rhs_evaluations);
     traces.Real(2, max_wall_time_s);
     if (traces.Step() != SQLITE_DONE) throw std::runtime_error(std::string("sqlite delete: ") + sqlite3_errmsg(db_));
+    if (HasSoilParameters()) {  // the drawn parameters go with their drops, and come back with the rerun
+      Statement soil(db_, "DELETE FROM soil_parameters WHERE drop_index IN (SELECT drop_index FROM drops WHERE " + where + ")");
+      soil.Int(1, max_rhs_evaluations);
+      soil.Real(2, max_wall_time_s);
+      if (soil.Step() != SQLITE_DONE) throw std::runtime_error(std::string("sqlite delete: ") + sqlite3_errmsg(db_));
+    }
     Statement drops(db_, "DELETE FROM drops WHERE " + where);
     drops.Int(1, max_rhs_evaluations);
     drops.Real(2, max_wall_time_s);
@@ -603,6 +647,21 @@ std::string SelectRecords(bool with_traces, const std::string& where_and_order) 
 }
 }  // namespace
 
+bool ResultsDb::HasSoilParameters() const {
+  Statement st(db_, "SELECT COUNT(*) FROM main.sqlite_master WHERE type = 'table' AND name = 'soil_parameters'");
+  return st.Step() == SQLITE_ROW && sqlite3_column_int64(st.get(), 0) > 0;
+}
+
+void ResultsDb::ReadSoilParameters(DropRecord& r) const {
+  r.soil_parameters.clear();
+  if (!HasSoilParameters()) return;
+  Statement st(db_, "SELECT name, value FROM soil_parameters WHERE drop_index = ? ORDER BY position");
+  st.Int(1, r.index);
+  int rc;
+  while ((rc = st.Step()) == SQLITE_ROW) r.soil_parameters.emplace_back(st.ColumnText(0), sqlite3_column_double(st.get(), 1));
+  if (rc != SQLITE_DONE) ThrowSqlite(db_, rc, "read soil parameters");
+}
+
 std::vector<DropRecord> ResultsDb::ReadPage(int64_t from, size_t limit, bool with_traces) const {
   const int n_columns = 1 + ColumnCount();
   Statement st(db_, SelectRecords(with_traces, "WHERE d.drop_index >= ? ORDER BY d.drop_index LIMIT ?"));
@@ -616,16 +675,20 @@ std::vector<DropRecord> ResultsDb::ReadPage(int64_t from, size_t limit, bool wit
       out.back().trace = ReadTraceBlob(st, n_columns);
   }
   if (rc != SQLITE_DONE) throw std::runtime_error(std::string("sqlite read: ") + sqlite3_errmsg(db_));
+  if (HasSoilParameters())
+    for (DropRecord& r : out) ReadSoilParameters(r);
   return out;
 }
 
 void ResultsDb::ForEach(const std::function<void(const DropRecord&)>& visit, bool with_traces) const {
   const int n_columns = 1 + ColumnCount();
   Statement st(db_, SelectRecords(with_traces, "ORDER BY d.drop_index"));
+  const bool soil = HasSoilParameters();
   int rc;
   while ((rc = st.Step()) == SQLITE_ROW) {
     DropRecord r = ReadRecord(st);
     if (with_traces && sqlite3_column_type(st.get(), n_columns) != SQLITE_NULL) r.trace = ReadTraceBlob(st, n_columns);
+    if (soil) ReadSoilParameters(r);
     visit(r);
   }
   if (rc != SQLITE_DONE) ThrowSqlite(db_, rc, "read");

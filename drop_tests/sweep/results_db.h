@@ -17,6 +17,9 @@
 //         angular_rate_x_deg_s, angular_rate_y_deg_s, angular_rate_z_deg_s,
 //         max_joint_swing_deg, tip_over_edge, tip_over_azimuth_deg, min_stability_margin_m)
 //   traces(drop_index PRIMARY KEY, samples, data BLOB of float64 [t, d, v, F] per sample)
+//   soil_parameters(drop_index, position, name, value; PRIMARY KEY (drop_index, position))
+//                      a stability study's drawn soil parameters per landing, in the draws'
+//                      order; the table exists only in databases of studies that draw them
 //
 // A batch of drops and their traces go in one transaction (WAL journal), so a process killed
 // at any moment leaves every drop either fully written or absent; a restart computes only the
@@ -124,6 +127,9 @@ struct DropRecord {
                                            std::numeric_limits<double>::quiet_NaN(),
                                            std::numeric_limits<double>::quiet_NaN()};
   std::vector<pad::DropSample> trace;  // empty unless stored
+  // A stability study's drawn soil parameters for this landing (column name, value in the
+  // column's unit), in the draws' order (drop_tests/stability/soil_uncertainty.h); empty otherwise.
+  std::vector<std::pair<std::string, double>> soil_parameters;
 };
 
 // A number a record keeps, as a column: its name (with its unit suffix) beside where the record
@@ -196,6 +202,8 @@ class ResultsDb {
   void Exec(const std::string& sql) const;
   void CreateTables();  // the schema, created or brought up to date (older formats gain their columns)
   void AdaptTables();   // read-only: TEMP stand-ins for the tables and columns an older file lacks
+  bool HasSoilParameters() const;  // whether the file has the soil_parameters table
+  void ReadSoilParameters(DropRecord& r) const;
   std::string path_;
   sqlite3* db_ = nullptr;
 };

@@ -337,8 +337,9 @@ DropRecord SimulateSweepDrop(const SweepModels& models, int64_t index) {
 DropRecord SimulateSweepDrop(const SweepModels& models, int64_t index, TraceStorage storage) {
   const SweepPlan& plan = models.plan();
   const SweepDropParams p = plan.DropAt(index);
-  if (plan.lander) return SimulateLanderSweepDrop(models, p);
-  return SimulatePadSweepDrop(models, p, storage);
+  DropRecord r = plan.lander ? SimulateLanderSweepDrop(models, p) : SimulatePadSweepDrop(models, p, storage);
+  if (plan.soil_parameters_at) r.soil_parameters = plan.soil_parameters_at(index);
+  return r;
 }
 
 }  // namespace touchdown::sweep

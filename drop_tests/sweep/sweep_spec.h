@@ -211,6 +211,9 @@ struct SweepPlan {
   // soil_overrides_at(i) gives, by soil name, on top of the model's. Not part of DigestText: a plan
   // that sets it names what it draws from in `variant`. Not written by WriteSweepPlan.
   std::function<std::map<std::string, model::SoilOverride>(int64_t)> soil_overrides_at;
+  // The same draws by output column ("<soil>_zeta_N_cm3", "<soil>_dynamic_lambda"), stored with
+  // each landing's record (DropRecord::soil_parameters). Set with soil_overrides_at.
+  std::function<std::vector<std::pair<std::string, double>>(int64_t)> soil_parameters_at;
 
   int64_t size() const;
   SweepDropParams DropAt(int64_t index) const;

@@ -80,6 +80,7 @@ bool Changes(const Parameter& p, const ScenarioRun& run) {
   const bool lander = run.kind == ScenarioRun::Kind::kLander;
   switch (p.kind) {
     case ParameterKind::kSoilZeta:
+    case ParameterKind::kSoilDynamicLambda:
       if (!lander) return run.soil.name == p.soil_name;
       for (const std::string& name : GroundSoilNames(*run.lander))
         if (name == p.soil_name) return true;
@@ -98,22 +99,29 @@ bool ChangesAnyScenario(const Parameter& p, const std::vector<ScenarioRun>& scen
   return false;
 }
 
-model::ModelFile ZetaModel(const std::vector<Parameter>& parameters, const std::vector<double>& values) {
+model::ModelFile SoilModel(const std::vector<Parameter>& parameters, const std::vector<double>& values) {
   model::ModelFile m;
   m.name = "targets_fit";
   for (size_t i = 0; i < parameters.size(); ++i) {
     const Parameter& p = parameters[i];
-    if (p.kind != ParameterKind::kSoilZeta) continue;
-    model::SoilOverride& o = m.soils[p.soil_name];
-    o.zeta_N_m3 = units::ZetaFromN_cm3(values[i]);
-    o.reference_gravity_m_s2 = p.soil_reference_gravity_m_s2;
+    if (!p.IsSoil()) continue;
+    const auto [it, added] = m.soils.try_emplace(p.soil_name);
+    model::SoilOverride& o = it->second;
+    if (added) {  // the soil's own zeta until a zeta parameter replaces it
+      o.zeta_N_m3 = p.soil_zeta_N_m3;
+      o.reference_gravity_m_s2 = p.soil_reference_gravity_m_s2;
+    }
+    if (p.kind == ParameterKind::kSoilZeta)
+      o.zeta_N_m3 = units::ZetaFromN_cm3(values[i]);
+    else
+      o.dynamic_lambda = values[i];
   }
   return m;
 }
 
 ObjectEditor::ObjectEditor(const std::vector<Parameter>& parameters) : parameters_(parameters) {
   for (const Parameter& p : parameters)
-    if (p.kind != ParameterKind::kSoilZeta && !files_.contains(p.file))
+    if (!p.IsSoil() && !files_.contains(p.file))
       files_.emplace(p.file, io::YamlFields::LoadFile(p.file).node());
 }
 
@@ -124,7 +132,7 @@ YAML::Node ObjectEditor::EditedNode(const std::string& file, const std::vector<d
     copy = YAML::Clone(files_.at(file));
   }
   for (size_t i = 0; i < parameters_.size(); ++i)
-    if (parameters_[i].kind != ParameterKind::kSoilZeta && parameters_[i].file == file)
+    if (!parameters_[i].IsSoil() && parameters_[i].file == file)
       At(copy, parameters_[i].field) = Exact(values[i]);
   return copy;
 }

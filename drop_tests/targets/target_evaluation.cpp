@@ -93,14 +93,17 @@ ScenarioOutcome TargetEvaluator::RunScenario(size_t index, const std::vector<dou
   if (run.kind == ScenarioRun::Kind::kLander) {
     scenario::LanderScenario s = *run.lander;
     s.lander = editor_.EditedLander(s.lander, values, s.pad_angular_segments);
-    s.model = ZetaModel(file_.parameters, values);
+    s.model = SoilModel(file_.parameters, values);
     return LanderOutcome(scenario::RunLanderScenario(s));
   }
+  // The drop's soil under the same model as a lander's (its lambda); zeta goes in as the drop's
+  // own override, stated at the soil's reference gravity like a catalogue zeta.
+  const rft::SoilParameters soil = model::ApplyModel(SoilModel(file_.parameters, values), run.soil);
   drop::DropConditions conditions = run.conditions;
   for (size_t p : depends_on_[index])
     if (file_.parameters[p].kind == ParameterKind::kSoilZeta) conditions.zeta_N_m3 = units::ZetaFromN_cm3(values[p]);
   const std::optional<io::PadSpec> pad = editor_.EditedPad(run.pad->source, values);
-  return DropOutcome(drop::RunPadDrop(pad ? *pad : *run.pad, run.soil, conditions));
+  return DropOutcome(drop::RunPadDrop(pad ? *pad : *run.pad, soil, conditions));
 }
 
 std::vector<ScenarioOutcome> TargetEvaluator::Run(const std::vector<double>& values, bool fit_only) {

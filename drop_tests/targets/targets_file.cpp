@@ -111,10 +111,11 @@ Parameter ReadParameter(const io::YamlFields& p) {
   if (given != 1) p.Fail("soil", "give exactly one of soil, pad, lander (what the parameter changes)");
   ReadBounds(p, out);
   if (p.Has("soil")) {
-    out.kind = ParameterKind::kSoilZeta;
     out.object = p.String("soil");
     out.file = ResolveNear(p, "soils", "soil");
-    if (out.field != "zeta_N_cm3") p.Fail("field", "a soil parameter is zeta_N_cm3, got '" + out.field + "'");
+    if (out.field != "zeta_N_cm3" && out.field != "dynamic_lambda")
+      p.Fail("field", "a soil parameter is zeta_N_cm3 or dynamic_lambda, got '" + out.field + "'");
+    out.kind = out.field == "zeta_N_cm3" ? ParameterKind::kSoilZeta : ParameterKind::kSoilDynamicLambda;
     rft::SoilParameters soil;
     try {
       soil = io::LoadSoil(out.file);
@@ -123,10 +124,22 @@ Parameter ReadParameter(const io::YamlFields& p) {
     }
     out.soil_name = soil.name;
     out.soil_reference_gravity_m_s2 = soil.reference_gravity_m_s2;
-    // Every value between the bounds is simulated: both must be zetas a soil file may hold.
+    out.soil_zeta_N_m3 = soil.zeta_N_m3;
+    // A lambda that no drop uses would be fitted to nothing: its interval would be the prior's.
+    if (out.kind == ParameterKind::kSoilDynamicLambda && !soil.dynamic_term)
+      p.Fail("field", "dynamic_lambda of soil '" + soil.name + "' acts only with its dynamic term on (dynamic_term: true in " +
+                          out.file + ")");
+    // The fitted lambda goes to a model file beside the soil's zeta, which a model file requires.
+    if (out.kind == ParameterKind::kSoilDynamicLambda && !(soil.zeta_N_m3 > 0.0))
+      p.Fail("field", "dynamic_lambda of soil '" + soil.name + "' needs the soil's zeta_N_cm3 (a bekker soil without one "
+                          "has no model-file override to carry it)");
+    // Every value between the bounds is simulated: both must be values a soil file may hold.
+    const limits::Range& range =
+        out.kind == ParameterKind::kSoilZeta ? limits::kZeta_N_cm3 : limits::kDynamicLambda;
+    const char* what = out.kind == ParameterKind::kSoilZeta ? "zeta " : "dynamic_lambda ";
     for (const char* bound : {"lower", "upper"}) {
       const double v = std::string(bound) == "lower" ? out.lower : out.upper;
-      if (!limits::Within(limits::kZeta_N_cm3, v)) p.Fail(bound, "zeta " + limits::Describe(limits::kZeta_N_cm3, v));
+      if (!limits::Within(range, v)) p.Fail(bound, what + limits::Describe(range, v));
     }
   } else {
     const bool pad = p.Has("pad");
@@ -166,7 +179,8 @@ bool IsLanderQuantity(Quantity q) {
 
 std::string Parameter::Address() const {
   switch (kind) {
-    case ParameterKind::kSoilZeta: return "soil " + object + ": " + field;
+    case ParameterKind::kSoilZeta:
+    case ParameterKind::kSoilDynamicLambda: return "soil " + object + ": " + field;
     case ParameterKind::kPadField: return "pad " + object + ": " + field;
     case ParameterKind::kLanderField: return "lander " + object + ": " + field;
   }

@@ -7,6 +7,7 @@
 //   type: targets
 //   parameters:
 //     - {name: zeta_lp, soil: fjs1_lp, field: zeta_N_cm3, lower: 1, upper: 8, start: 3.48, source: ...}
+//     - {name: lambda_lp, soil: fjs1_lp, field: dynamic_lambda, lower: 0, upper: 4, start: 1.1, source: ...}
 //     - {name: curved_a1, pad: curved, field: profile.a1_per_mm, lower: 0.01, upper: 0.08, start: 0.0319, source: ...}
 //     - {name: joint_radius, lander: sutoh2017_lander, field: legs.joint_radius_mm, lower: 200, upper: 400, ...}
 //   targets:
@@ -33,6 +34,7 @@ namespace touchdown::targets {
 // What a free parameter changes (always in memory: the files stay as they are).
 enum class ParameterKind {
   kSoilZeta,     // zeta_N_cm3 of a soil (at the soil's reference gravity), by the soil's name
+  kSoilDynamicLambda,  // dynamic_lambda of a soil whose dynamic term is on, by the soil's name
   kPadField,     // a number of a pad file (a dotted path, e.g. profile.a1_per_mm)
   kLanderField,  // a number of a lander file (e.g. legs.joint_radius_mm)
 };
@@ -41,13 +43,15 @@ struct Parameter {
   std::string name;
   ParameterKind kind = ParameterKind::kSoilZeta;
   std::string object;  // the soil, pad or lander as the file names it
-  std::string file;    // its resolved file (a soil's name for kSoilZeta matching: soil_name)
-  std::string soil_name;  // kSoilZeta: the soil's name (what model files and scenarios match)
-  double soil_reference_gravity_m_s2 = rft::kEarthGravity_m_s2;  // kSoilZeta
-  std::string field;   // zeta_N_cm3, or the dotted path in the pad or lander file
+  std::string file;    // its resolved file (a soil's name for the soil kinds matching: soil_name)
+  std::string soil_name;  // soil kinds: the soil's name (what model files and scenarios match)
+  double soil_reference_gravity_m_s2 = rft::kEarthGravity_m_s2;  // soil kinds
+  double soil_zeta_N_m3 = 0.0;  // soil kinds: the soil file's zeta (kept when only lambda is free)
+  std::string field;   // zeta_N_cm3 or dynamic_lambda, or the dotted path in the pad or lander file
   double lower = 0.0, upper = 0.0, start = 0.0;  // in the field's own unit
   std::string source;
   std::string Address() const;  // e.g. "pad curved: profile.a1_per_mm"
+  bool IsSoil() const { return kind == ParameterKind::kSoilZeta || kind == ParameterKind::kSoilDynamicLambda; }
 };
 
 enum class Quantity {

@@ -7,6 +7,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "drop_tests/catalog/paths_in_outputs.h"
+#include "drop_tests/targets/object_edit.h"
 #include "drop_tests/targets/targets_fit.h"
 #include "rft/units.h"
 
@@ -38,7 +39,8 @@ std::string TargetText(const Target& t) {
 
 std::string ApplyHint(const Parameter& p) {
   switch (p.kind) {
-    case ParameterKind::kSoilZeta: return "in this model file: --model MODEL.yaml";
+    case ParameterKind::kSoilZeta:
+    case ParameterKind::kSoilDynamicLambda: return "in this model file: --model MODEL.yaml";
     case ParameterKind::kPadField:
       return "not in the model file: set " + p.field + " in a copy of pad " + p.object + "'s file and name that copy";
     case ParameterKind::kLanderField:
@@ -51,6 +53,7 @@ std::string ApplyHint(const Parameter& p) {
 const char* KindName(ParameterKind k) {
   switch (k) {
     case ParameterKind::kSoilZeta: return "soil_zeta";
+    case ParameterKind::kSoilDynamicLambda: return "soil_dynamic_lambda";
     case ParameterKind::kPadField: return "pad_field";
     case ParameterKind::kLanderField: return "lander_field";
   }
@@ -69,6 +72,9 @@ nlohmann::json CovarianceJson(const TargetsFile& file, const TargetsFitResult& f
       j["soil"] = p.soil_name;
       j["unit"] = "N/cm^3";
       j["reference_gravity_m_s2"] = p.soil_reference_gravity_m_s2;
+    } else if (p.kind == ParameterKind::kSoilDynamicLambda) {
+      j["soil"] = p.soil_name;
+      j["unit"] = "-";
     } else {
       j["object"] = p.object;
       j["unit"] = "as the field's suffix";
@@ -176,18 +182,17 @@ model::ModelFile TargetsModel(const TargetsFile& file, const TargetsFitResult& f
   for (const ParameterResult& r : fit.parameters) values.push_back(r.value);
   model::ModelFile m;
   m.name = name;
-  m.description = "zeta per soil fitted to the scalar targets of " + file.name;
+  bool lambda = false;
+  for (const Parameter& p : file.parameters) lambda = lambda || p.kind == ParameterKind::kSoilDynamicLambda;
+  m.description = std::string(lambda ? "zeta and dynamic_lambda" : "zeta") + " per soil fitted to the scalar targets of " + file.name;
+  m.soils = SoilModel(file.parameters, values).soils;
   for (size_t i = 0; i < file.parameters.size(); ++i) {
     const Parameter& p = file.parameters[i];
-    if (p.kind != ParameterKind::kSoilZeta) continue;
-    model::SoilOverride& o = m.soils[p.soil_name];
-    o.zeta_N_m3 = units::ZetaFromN_cm3(values[i]);
-    o.reference_gravity_m_s2 = p.soil_reference_gravity_m_s2;
-    if (fit.parameters[i].sigma) {
-      o.zeta_low_N_m3 = units::ZetaFromN_cm3(*fit.parameters[i].low);
-      o.zeta_high_N_m3 = units::ZetaFromN_cm3(*fit.parameters[i].high);
-      o.confidence = file.settings.confidence;
-    }
+    if (p.kind != ParameterKind::kSoilZeta || !fit.parameters[i].sigma) continue;
+    model::SoilOverride& o = m.soils.at(p.soil_name);
+    o.zeta_low_N_m3 = units::ZetaFromN_cm3(*fit.parameters[i].low);
+    o.zeta_high_N_m3 = units::ZetaFromN_cm3(*fit.parameters[i].high);
+    o.confidence = file.settings.confidence;
   }
   YAML::Emitter y;
   y.SetDoublePrecision(10);

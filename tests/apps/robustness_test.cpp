@@ -389,6 +389,9 @@ void AddMessageCases(std::vector<Case>& c) {
                {{"t_twice.yaml", head + "parameters: [{name: z, soil: fjs1_lp, field: zeta_N_cm3, lower: 1, upper: 8, "
                                         "start: 3, source: s}, {name: z2, soil: fjs1_lp, field: zeta_N_cm3, lower: 1, "
                                         "upper: 8, start: 3, source: s}]\n" + target}}});
+  c.push_back({"targets YAML", "dynamic_lambda bounded below 0", "calibrate --targets t_lambda.yaml --out t9.yaml",
+               {{"t_lambda.yaml", head + "parameters: [{name: l, soil: fjs1_lp, field: dynamic_lambda, lower: -1, "
+                                         "upper: 4, start: 1, source: s}]\n" + target}}});
   c.push_back({"targets YAML", "negative ratio target", "calibrate --targets t_ratio.yaml --out t7.yaml",
                {{"t_ratio.yaml", head + zeta + "targets: [{name: r, ratio: {numerator: {drop: {pad: flat, soil: fjs1_lp, "
                                                "speed_m_s: 1}, quantity: peak_force_N}, denominator: {drop: {pad: flat, "

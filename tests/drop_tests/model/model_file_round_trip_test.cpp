@@ -29,6 +29,7 @@ void ExpectSameModel(const ModelFile& a, const ModelFile& b) {
       EXPECT_DOUBLE_EQ(*o.zeta_high_N_m3, *p.zeta_high_N_m3);
       EXPECT_EQ(o.confidence, p.confidence);
     }
+    EXPECT_EQ(o.dynamic_lambda, p.dynamic_lambda);
     ASSERT_EQ(o.fit.has_value(), p.fit.has_value());
     if (o.fit) {
       EXPECT_EQ(o.fit->method, p.fit->method);
@@ -61,7 +62,7 @@ TEST_F(ModelRoundTrip, EveryPartOfAModelFile) {
          "  fjs1_lp:\n    zeta_N_cm3: 3.61\n    reference_gravity_m_s2: 1.62\n"
          "    zeta_interval_N_cm3: [3.52, 3.7]\n    confidence: 0.9\n"
          "    fit: {method: least squares, drops: 6, samples: 240, residual_rms_N: 4.1}\n"
-         "  fjs1_cp:\n    zeta_N_cm3: 9.2\n"
+         "  fjs1_cp:\n    zeta_N_cm3: 9.2\n    dynamic_lambda: 1.35\n"
          "effects:\n  gas_cushion:\n    chi: 0.3\n    c_g_N_s_m3: 3042.5\n"
          "    interval_95: {chi: [0.29, 0.31], c_g_N_s_m3: [2984, 3100]}\n"
          "  compaction_peak: {k_c_kg_m3: 20000, d_c_mm: 3}\n"
@@ -73,6 +74,8 @@ TEST_F(ModelRoundTrip, EveryPartOfAModelFile) {
   EXPECT_EQ(first.effect_intervals[0].size(), 2u);
   EXPECT_TRUE(first.effect_intervals[1].empty());
   EXPECT_DOUBLE_EQ(first.effects[1].values[1], 0.003);  // d_c in m
+  EXPECT_EQ(first.soils.at("fjs1_cp").dynamic_lambda, 1.35);
+  EXPECT_FALSE(first.soils.at("fjs1_lp").dynamic_lambda.has_value());
 
   testing_scratch::ExpectRoundTrip(
       first, Path("written_1.yaml"), Path("written_2.yaml"),

@@ -60,6 +60,15 @@ TEST(ModelFile, ApplyConvertsToTheSoilsReferenceGravity) {
   EXPECT_NEAR(applied.ZetaAtGravity(9.81), 1.0e6 * 9.81 / 1.62, 1e-3);
   const touchdown::rft::SoilParameters other = ApplyModel(m, LoadSoil("fjs1_cp"));  // no override
   EXPECT_EQ(other.zeta_N_m3, LoadSoil("fjs1_cp").zeta_N_m3);
+  // A calibrated lambda replaces the soil file's; the soil's own zeta at its own reference gravity
+  // (what a lambda-only calibration carries) is kept without a round trip through g.
+  SoilOverride l;
+  l.zeta_N_m3 = soil.zeta_N_m3;
+  l.reference_gravity_m_s2 = soil.reference_gravity_m_s2;
+  l.dynamic_lambda = 0.7;
+  m.soils["fjs1_lp"] = l;
+  EXPECT_EQ(ApplyModel(m, soil).dynamic_lambda, 0.7);
+  EXPECT_EQ(ApplyModel(m, soil).zeta_N_m3, soil.zeta_N_m3);
 }
 
 struct BadModel {
@@ -94,6 +103,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadModel{"ReversedInterval", "type: model\nsoils: {fjs1_lp: {zeta_N_cm3: 3, zeta_interval_N_cm3: [4, 2]}}\n",
                  "zeta_interval_N_cm3"},
         BadModel{"UnknownField", "type: model\nsoil: {}\n", "soil: unknown field"},
+        BadModel{"NegativeLambda", "type: model\nsoils: {fjs1_lp: {zeta_N_cm3: 3, dynamic_lambda: -0.5}}\n",
+                 "soils.fjs1_lp.dynamic_lambda"},
         BadModel{"UnknownEffect", "type: model\neffects: {air_drag: {k: 1}}\n", "effects.air_drag: unknown effect"},
         BadModel{"EffectOutOfRange", "type: model\neffects: {gas_cushion: {chi: 1.5, c_g_N_s_m3: 0}}\n",
                  "effects.gas_cushion.chi: must be in [0, 0.95]"}),

@@ -3,6 +3,7 @@
 // draws and landings on 1 and 2 threads, landings that run with the drawn zeta, and the summary's
 // split of the outcome's variance.
 #include <gtest/gtest.h>
+#include <sqlite3.h>
 
 #include <cmath>
 #include <filesystem>
@@ -16,6 +17,8 @@
 #include "drop_tests/stability/study_outputs.h"
 #include "drop_tests/sweep/sweep.h"
 #include "rft/input_error.h"
+#include "rft/units.h"
+#include "drop_tests/catalog/catalog.h"
 #include "tests/drop_tests/scenario/lander_test_support.h"
 #include "tests/drop_tests/stability/study_test_support.h"
 #include "tests/scratch_dir_test.h"
@@ -94,7 +97,7 @@ TEST_F(SoilUncertaintyTest, LoadTimeValidationNamesFileAndField) {
   Write("lp_only.json",
         R"({"covariance": {"parameters": [{"name": "z", "kind": "soil_zeta", "soil": "fjs1_lp", "value": 3}], "matrix": [[0.01]]}})");
   const std::string held = Refusal(", soil_uncertainty: {fjs1_cp: {calibration: lp_only.json}}", kPadSoils);
-  EXPECT_NE(held.find("no interval for the zeta of soil 'fjs1_cp'"), std::string::npos) << held;
+  EXPECT_NE(held.find("no interval for the zeta or dynamic_lambda of soil 'fjs1_cp'"), std::string::npos) << held;
   // Singular only in the parameters not drawn: the drawn soil's own block is fine.
   EXPECT_NO_THROW(Load(", soil_uncertainty: {fjs1_lp: {calibration: singular.json}}", kPadSoils));
 }
@@ -153,6 +156,156 @@ TEST_F(SoilUncertaintyTest, StudiesWithoutItAreUnchanged) {
   EXPECT_NE(sweep::PlanDigest(drawn.plan), sweep::PlanDigest(plain.plan));  // another database
 }
 
+// A report of `calibrate --targets` that freed LP's zeta and its dynamic_lambda (kind
+// soil_dynamic_lambda), correlated (a deeper pad needs a softer soil or less inertia).
+std::string ZetaLambdaCalibration(double zeta, double lambda, double s_zeta, double s_lambda, double rho) {
+  const double c = rho * s_zeta * s_lambda;
+  nlohmann::json j = {
+      {"covariance",
+       {{"parameters",
+         {{{"name", "zeta_lp"}, {"kind", "soil_zeta"}, {"soil", "fjs1_lp"}, {"value", zeta}, {"unit", "N/cm^3"},
+           {"reference_gravity_m_s2", 9.81}},
+          {{"name", "lambda_lp"}, {"kind", "soil_dynamic_lambda"}, {"soil", "fjs1_lp"}, {"field", "dynamic_lambda"},
+           {"value", lambda}, {"unit", "-"}}}},
+        {"matrix", {{s_zeta * s_zeta, c}, {c, s_lambda * s_lambda}}}}}};
+  return j.dump(2);
+}
+
+double NormalPdf(double x) { return std::exp(-0.5 * x * x) / std::sqrt(2.0 * M_PI); }
+double NormalCdf(double x) { return 0.5 * std::erfc(-x / std::sqrt(2.0)); }
+
+TEST_F(SoilUncertaintyTest, DrawsZetaAndLambdaJointlyWithTheirCorrelation) {
+  Write("zl.json", ZetaLambdaCalibration(3.5, 1.1, 0.2, 0.15, -0.7));
+  const Study study = Load(", soil_uncertainty: {fjs1_lp: {calibration: zl.json}}", kPadSoils);
+  const SoilUncertainty& u = *study.soil_uncertainty;
+  ASSERT_EQ(u.parameters.size(), 2u);
+  EXPECT_EQ(u.parameters[0].column, "fjs1_lp_zeta_N_cm3");
+  EXPECT_EQ(u.parameters[1].column, "fjs1_lp_dynamic_lambda");
+  EXPECT_EQ(u.parameters[1].field, SoilField::kDynamicLambda);
+  const int n = 40000;
+  Eigen::Vector2d sum = Eigen::Vector2d::Zero();
+  Eigen::Matrix2d outer = Eigen::Matrix2d::Zero();
+  for (int i = 0; i < n; ++i) {
+    const std::vector<double> x = DrawSoilParameters(u, i);
+    const Eigen::Vector2d v(x[0], x[1]);
+    sum += v;
+    outer += v * v.transpose();
+  }
+  const Eigen::Vector2d mean = sum / n;
+  const Eigen::Matrix2d cov = (outer - n * mean * mean.transpose()) / (n - 1);
+  // Lambda 7 sigma above 0: no truncation acts. Means within 4 standard errors, variances within 4 of
+  // theirs (sqrt(2/n) relative), the correlation within 4 / sqrt(n).
+  EXPECT_NEAR(mean(0), 3.5, 4 * 0.2 / std::sqrt(n));
+  EXPECT_NEAR(mean(1), 1.1, 4 * 0.15 / std::sqrt(n));
+  EXPECT_NEAR(cov(0, 0), 0.04, 4 * 0.04 * std::sqrt(2.0 / n));
+  EXPECT_NEAR(cov(1, 1), 0.0225, 4 * 0.0225 * std::sqrt(2.0 / n));
+  EXPECT_NEAR(cov(0, 1) / std::sqrt(cov(0, 0) * cov(1, 1)), -0.7, 4.0 / std::sqrt(n));
+  // A landing runs with both: zeta and lambda in the soil's override, lambda as drawn.
+  const std::vector<double> x = DrawSoilParameters(u, 5);
+  const std::map<std::string, model::SoilOverride> o = SoilOverrides(u, x);
+  ASSERT_TRUE(o.at("fjs1_lp").dynamic_lambda.has_value());
+  EXPECT_EQ(*o.at("fjs1_lp").dynamic_lambda, x[1]);
+  EXPECT_EQ(o.at("fjs1_lp").zeta_N_m3, units::ZetaFromN_cm3(x[0]));
+  EXPECT_EQ(DrawnParametersJson(u, 5)["fjs1_lp_dynamic_lambda"].get<double>(), x[1]);
+}
+
+TEST_F(SoilUncertaintyTest, LambdaDrawsAreTruncatedAtZero) {
+  // Lambda 0.2 +- 0.3: a quarter of the untruncated draws would be negative. The accepted draws'
+  // marginal is the normal truncated to [0, inf): mean mu + sigma phi(a) / (1 - Phi(a)), a = -mu/sigma.
+  Write("zl.json", ZetaLambdaCalibration(3.5, 0.2, 0.2, 0.3, 0.5));
+  const Study study = Load(", soil_uncertainty: {fjs1_lp: {calibration: zl.json}}", kPadSoils);
+  const int n = 40000;
+  double sum = 0.0, sum2 = 0.0;
+  for (int i = 0; i < n; ++i) {
+    const double l = DrawSoilParameters(*study.soil_uncertainty, i)[1];
+    ASSERT_GE(l, 0.0) << i;
+    sum += l;
+    sum2 += l * l;
+  }
+  const double a = -0.2 / 0.3, tail = 1.0 - NormalCdf(a);
+  const double expected = 0.2 + 0.3 * NormalPdf(a) / tail;
+  const double var = 0.09 * (1.0 + a * NormalPdf(a) / tail - std::pow(NormalPdf(a) / tail, 2));
+  EXPECT_NEAR(sum / n, expected, 4.0 * std::sqrt(var / n));  // 4 standard errors
+  EXPECT_NEAR(sum2 / n - (sum / n) * (sum / n), var, 4.0 * var * std::sqrt(2.0 / n));
+}
+
+TEST_F(SoilUncertaintyTest, LambdaAloneKeepsTheSoilsZeta) {
+  Write("l.json", R"({"covariance": {"parameters": [{"name": "l", "kind": "soil_dynamic_lambda", "soil": "fjs1_cp",
+      "value": 1.3}], "matrix": [[0.04]]}})");
+  const Study study = Load(", soil_uncertainty: {fjs1_cp: {calibration: l.json}}", kPadSoils);
+  const SoilUncertainty& u = *study.soil_uncertainty;
+  ASSERT_EQ(u.parameters.size(), 1u);
+  const rft::SoilParameters cp = io::LoadSoil("fjs1_cp");
+  const std::map<std::string, model::SoilOverride> o = SoilOverrides(u, DrawSoilParameters(u, 3));
+  model::ModelFile m;
+  m.soils = o;
+  const rft::SoilParameters applied = model::ApplyModel(m, cp);
+  EXPECT_EQ(applied.zeta_N_m3, cp.zeta_N_m3);  // bit for bit
+  EXPECT_EQ(applied.dynamic_lambda, DrawSoilParameters(u, 3)[0]);
+  EXPECT_NE(applied.dynamic_lambda, cp.dynamic_lambda);
+  // The split's estimator takes lambda like zeta: an outcome linear in it is all soil.
+  std::vector<sweep::DropRecord> records;
+  for (int i = 0; i < 500; ++i) {
+    sweep::DropRecord r;
+    r.index = i;
+    r.ok = true;
+    r.tipped_over = 0.0;
+    r.time_to_rest_s = 1.0;
+    r.max_tilt_deg = 5.0;
+    r.final_penetration_m = 0.05 - 0.002 * DrawSoilParameters(u, i)[0];
+    records.push_back(r);
+  }
+  const std::optional<SoilSplit> split = SplitBySoil(u, records);
+  ASSERT_TRUE(split);
+  for (const ShareEstimate& e : split->shares)
+    if (e.outcome == "max_pad_penetration_m") {
+      EXPECT_NEAR(e.soil_share, 1.0, 1e-9);
+      EXPECT_NEAR(e.slope.at(0), -0.002, 1e-9);
+    }
+  EXPECT_EQ(SoilSplitJson(u, split)["parameters"][0]["unit"], "-");
+}
+
+TEST_F(SoilUncertaintyTest, DrawnParametersRoundTripThroughTheDatabaseAndTheMpiFormat) {
+  sweep::DropRecord a;
+  a.index = 7;
+  a.drop_id = "d07";
+  a.ok = true;
+  a.soil_parameters = {{"fjs1_lp_zeta_N_cm3", 3.4999999999999996}, {"fjs1_lp_dynamic_lambda", 1.0000000000000002}};
+  sweep::DropRecord b = a;
+  b.index = 8;
+  b.drop_id = "d08";
+  b.soil_parameters.clear();  // a record without draws (another plan) has none
+  {
+    sweep::ResultsDb db(Path("r.sqlite"));
+    db.Insert({a, b});
+    db.Insert({a});  // an overlapping shard's identical record: accepted
+    sweep::DropRecord moved = a;
+    moved.soil_parameters[1].second = 1.0;
+    EXPECT_THROW(db.Insert({moved}), std::runtime_error);  // the same landing drawn otherwise: refused
+  }
+  for (const auto access : {sweep::ResultsDb::Access::kReadWrite, sweep::ResultsDb::Access::kReadOnly}) {
+    const std::vector<sweep::DropRecord> back = sweep::ResultsDb(Path("r.sqlite"), access).ReadAll(false);
+    ASSERT_EQ(back.size(), 2u);
+    EXPECT_TRUE(sweep::SameRecord(back[0], a));
+    EXPECT_TRUE(sweep::SameRecord(back[1], b));
+    const std::vector<sweep::DropRecord> page = sweep::ResultsDb(Path("r.sqlite"), access).ReadPage(0, 10, false);
+    EXPECT_TRUE(sweep::SameRecord(page[0], a));
+  }
+  const std::vector<sweep::DropRecord> sent = sweep::DeserializeRecords(sweep::SerializeRecords({a, b}));
+  EXPECT_TRUE(sweep::SameRecord(sent[0], a));
+  EXPECT_TRUE(sweep::SameRecord(sent[1], b));
+  // A database with no draws gets no table: a study without soil uncertainty writes the file it did.
+  { sweep::ResultsDb(Path("plain.sqlite")).Insert({b}); }
+  sqlite3* raw = nullptr;
+  ASSERT_EQ(sqlite3_open(Path("plain.sqlite").c_str(), &raw), SQLITE_OK);
+  sqlite3_stmt* st = nullptr;
+  sqlite3_prepare_v2(raw, "SELECT COUNT(*) FROM sqlite_master WHERE name = 'soil_parameters'", -1, &st, nullptr);
+  ASSERT_EQ(sqlite3_step(st), SQLITE_ROW);
+  EXPECT_EQ(sqlite3_column_int(st, 0), 0);
+  sqlite3_finalize(st);
+  sqlite3_close(raw);
+}
+
 // A small study on the coarse test pads: the lander on LP or CP per pad with both soils' zeta drawn
 // wide (so the soil matters), run on 1 and on 2 threads.
 struct SoilUncertaintyLandings : SoilUncertaintyTest {
@@ -184,6 +337,14 @@ TEST_F(SoilUncertaintyLandings, SameLandingsOnOneAndTwoThreadsAndTheDrawnZetaAct
     ASSERT_TRUE(one[i].ok) << one[i].failure;
     EXPECT_EQ(one[i].final_penetration_m, two[i].final_penetration_m) << i;  // bit for bit
     EXPECT_EQ(one[i].max_tilt_deg, two[i].max_tilt_deg) << i;
+    // The database holds the landing's drawn parameters, by column, bit for bit.
+    const std::vector<double> x = DrawSoilParameters(*study.soil_uncertainty, one[i].index);
+    ASSERT_EQ(one[i].soil_parameters.size(), 2u);
+    EXPECT_EQ(one[i].soil_parameters[0].first, "fjs1_lp_zeta_N_cm3");
+    EXPECT_EQ(one[i].soil_parameters[1].first, "fjs1_cp_zeta_N_cm3");
+    EXPECT_EQ(one[i].soil_parameters[0].second, x[0]);
+    EXPECT_EQ(one[i].soil_parameters[1].second, x[1]);
+    EXPECT_TRUE(sweep::SameRecord(one[i], two[i]));
   }
   // The same landings without the draws (the catalogue's zeta) sink otherwise.
   Study fixed = study;

@@ -148,6 +148,25 @@ TEST_F(TargetsFileLoad, RefusesBadEntriesNamingFileFieldAndValue) {
           " at_most: 0.02, uncertainty: 0.001, use: fit, source: s}\n",
        "targets[0].at_most", "0.02"},
       {p, t + t, "targets[1].name", "depth"},
+      {"  - {name: z, soil: fjs1_lp, field: friction_deg, lower: 1, upper: 8, start: 3, source: s}\n", t,
+       "parameters[0].field", "friction_deg"},
+      {"  - {name: l, soil: fjs1_lp, field: dynamic_lambda, lower: -0.5, upper: 4, start: 1, source: s}\n", t,
+       "parameters[0].lower", "-0.5"},
+      {"  - {name: l, soil: fjs1_lp, field: dynamic_lambda, lower: 0, upper: 400, start: 1, source: s}\n", t,
+       "parameters[0].upper", "400"},
+      // toyoura_bekker has no dynamic term: its lambda would be fitted to nothing.
+      {"  - {name: l, soil: toyoura_bekker, field: dynamic_lambda, lower: 0, upper: 4, start: 1, source: s}\n",
+       "  - {name: d, drop: {pad: flat, soil: toyoura_bekker, speed_m_s: 1.0}, quantity: final_penetration_m,"
+       " value: 0.02, uncertainty: 0.001, use: fit, source: s}\n",
+       "parameters[0].field", "dynamic_term"},
+      // A bekker soil without zeta but with its dynamic term on: no model-file override carries lambda.
+      {"  - {name: l, soil: " + Write("bekker_dynamic.yaml", Slurp(std::string(TOUCHDOWN_SOURCE_DIR) +
+                                                                      "/data/soils/toyoura_bekker.yaml") +
+                                                                    "dynamic_term: true\nbulk_density_kg_m3: 1600\n") +
+           ", field: dynamic_lambda, lower: 0, upper: 4, start: 1, source: s}\n",
+       "  - {name: d, drop: {pad: flat, soil: toyoura_bekker, speed_m_s: 1.0}, quantity: final_penetration_m,"
+       " value: 0.02, uncertainty: 0.001, use: fit, source: s}\n",
+       "parameters[0].field", "zeta_N_cm3"},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.field);

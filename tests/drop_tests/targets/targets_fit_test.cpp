@@ -81,6 +81,80 @@ TEST_F(TargetsFit, RecoversTheZetaThatMadeItsTargetsFromAnotherStart) {
   EXPECT_EQ(cov["matrix"][0][0].get<double>(), fit.covariance[0][0]);
 }
 
+// A rig drop on the soil with its dynamic term's lambda replaced (the soil file's is 1.1).
+drop::PadDrop RigDropAtLambda(double zeta_N_cm3, double lambda, double speed) {
+  rft::SoilParameters soil = io::LoadSoil("fjs1_lp");
+  soil.dynamic_lambda = lambda;
+  drop::DropConditions c;
+  c.impact_speed_m_s = speed;
+  c.zeta_N_m3 = units::ZetaFromN_cm3(zeta_N_cm3);
+  return drop::RunPadDrop(io::LoadPad("flat"), soil, c);
+}
+
+TEST_F(TargetsFit, RecoversZetaAndTheDynamicTermsLambdaJointly) {
+  // Truth zeta 2.5, lambda 2.0: the depths at 0.5 and 3 m/s (the inertial term grows as v^2, so the
+  // two speeds separate lambda from zeta), each given to 0.5 %; the fit starts at 4.0 and 1.1.
+  const double zeta = 2.5, lambda = 2.0;
+  std::string targets;
+  for (const double v : {0.5, 3.0}) {
+    const double d = RigDropAtLambda(zeta, lambda, v).result.final_penetration_m;
+    targets += "  - {name: depth_" + Num(v) + ", drop: {pad: flat, soil: fjs1_lp, speed_m_s: " + Num(v) +
+               "}, quantity: final_penetration_m, value: " + Num(d) + ", uncertainty: " + Num(0.005 * d) +
+               ", use: fit, source: test}\n";
+  }
+  const TargetsFile file = Load(
+      std::string(kZetaLp) +
+          "  - {name: lambda_lp, soil: fjs1_lp, field: dynamic_lambda, lower: 0.0, upper: 5.0, start: 1.1, source: test}\n",
+      targets);
+  ASSERT_EQ(file.parameters[1].kind, ParameterKind::kSoilDynamicLambda);
+  const TargetsFitResult fit = FitTargets(file);
+  ASSERT_TRUE(fit.converged) << fit.termination;
+  EXPECT_NEAR(fit.parameters[0].value, zeta, 1e-4 * zeta);
+  EXPECT_NEAR(fit.parameters[1].value, lambda, 1e-3 * lambda);
+  for (size_t k = 0; k < 2; ++k) {
+    ASSERT_TRUE(fit.parameters[k].sigma.has_value());
+    const double truth = k == 0 ? zeta : lambda;
+    EXPECT_LT(*fit.parameters[k].low, truth);
+    EXPECT_GT(*fit.parameters[k].high, truth);
+  }
+  // The report's covariance holds both, lambda with its soil and kind, and their correlation.
+  const nlohmann::json cov = TargetsReportJson(file, fit)["covariance"];
+  ASSERT_EQ(cov["parameters"].size(), 2u);
+  EXPECT_EQ(cov["parameters"][1]["kind"], "soil_dynamic_lambda");
+  EXPECT_EQ(cov["parameters"][1]["soil"], "fjs1_lp");
+  EXPECT_EQ(cov["parameters"][1]["field"], "dynamic_lambda");
+  EXPECT_NEAR(cov["matrix"][1][1].get<double>(), *fit.parameters[1].sigma * *fit.parameters[1].sigma,
+              1e-12 * cov["matrix"][1][1].get<double>());
+  const double rho = cov["matrix"][0][1].get<double>() / (*fit.parameters[0].sigma * *fit.parameters[1].sigma);
+  // Both resist the pad: a stiffer soil matches the same depths with less inertia, so the two are
+  // anti-correlated (measured -0.77), not degenerate (|rho| < 1).
+  EXPECT_LT(rho, -0.3);
+  EXPECT_GT(rho, -0.99);
+  // The model file carries lambda beside zeta, and a drop under it runs as the truth did.
+  const model::ModelFile m = TargetsModel(file, fit, "fit", "");
+  ASSERT_TRUE(m.soils.at("fjs1_lp").dynamic_lambda.has_value());
+  EXPECT_EQ(*m.soils.at("fjs1_lp").dynamic_lambda, fit.parameters[1].value);
+  EXPECT_EQ(model::ApplyModel(m, io::LoadSoil("fjs1_lp")).dynamic_lambda, fit.parameters[1].value);
+}
+
+TEST_F(TargetsFit, LambdaAloneKeepsTheSoilsZetaBitForBit) {
+  // Only lambda free: at lambda = the file's 1.1 every drop is the unedited soil's, to the bit.
+  const TargetsFile file = Load(
+      "  - {name: lambda_lp, soil: fjs1_lp, field: dynamic_lambda, lower: 0.0, upper: 5.0, start: 1.1, source: test}\n",
+      DropTarget("depth", "flat", "fjs1_lp", "final_penetration_m", "value: 0.01, uncertainty: 0.001"));
+  TargetEvaluator evaluator(file, 1);
+  drop::DropConditions c;
+  c.impact_speed_m_s = 1.0;
+  const drop::PadDrop plain = drop::RunPadDrop(io::LoadPad("flat"), io::LoadSoil("fjs1_lp"), c);
+  EXPECT_EQ(evaluator.Run({1.1}, false)[0].final_penetration_m, plain.result.final_penetration_m);
+  // At lambda 0 the drop is the soil's with its file's zeta and no inertial stress: deeper.
+  rft::SoilParameters no_inertia = io::LoadSoil("fjs1_lp");
+  no_inertia.dynamic_lambda = 0.0;
+  const double deeper = drop::RunPadDrop(io::LoadPad("flat"), no_inertia, c).result.final_penetration_m;
+  EXPECT_EQ(evaluator.Run({0.0}, false)[0].final_penetration_m, deeper);
+  EXPECT_GT(deeper, plain.result.final_penetration_m);
+}
+
 TEST_F(TargetsFit, RecoversZetaAndACurvedProfileConstantJointly) {
   // The curved pad at a coarser profile and body (each evaluation reloads it: the test stays fast);
   // truth: zeta 2.5 and a1 = 0.045 /mm, the same pad copied with that constant.
