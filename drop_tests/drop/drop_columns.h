@@ -3,6 +3,8 @@
 // (unit-suffixed) beside where the result keeps it. The summaries (JSON), the traces (CSV header
 // and rows) and a sweep's records (drop_tests/sweep: the database column of the same name) are
 // written from these tables, so a name and its value cannot drift apart.
+#include <iomanip>
+#include <ostream>
 #include <vector>
 
 #include "lander/pad/free_drop.h"
@@ -35,5 +37,20 @@ const std::vector<TraceColumn<pad::DropSample>>& RigTraceColumns();
 // A free drop's trace: the rig's columns first (the dataset tools read them), then force_x_N,
 // horizontal_m, tilt_deg and the pose (free_drop_output.h).
 const std::vector<TraceColumn<pad::FreeDropSample>>& FreeTraceColumns();
+
+// A trace as CSV: the columns' names, then one row per sample (10 significant digits).
+template <typename Sample>
+void WriteTraceCsv(const std::vector<TraceColumn<Sample>>& columns, const std::vector<Sample>& samples,
+                   std::ostream& out) {
+  for (size_t c = 0; c < columns.size(); ++c) out << (c ? "," : "") << columns[c].name;
+  out << '\n' << std::setprecision(10);
+  for (const Sample& s : samples) {
+    for (size_t c = 0; c < columns.size(); ++c) {
+      if (c) out << ',';
+      out << columns[c].value(s);
+    }
+    out << '\n';
+  }
+}
 
 }  // namespace touchdown::drop

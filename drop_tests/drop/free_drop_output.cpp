@@ -15,16 +15,7 @@ nlohmann::json FreeDropJson(const pad::FreeDropResult& r) {
 }
 
 void WriteFreeDropTraceCsv(const pad::FreeDropResult& r, std::ostream& out) {
-  const std::vector<TraceColumn<pad::FreeDropSample>>& columns = FreeTraceColumns();
-  for (size_t c = 0; c < columns.size(); ++c) out << (c ? "," : "") << columns[c].name;
-  out << '\n' << std::setprecision(10);
-  for (const pad::FreeDropSample& s : r.trace) {
-    for (size_t c = 0; c < columns.size(); ++c) {
-      if (c) out << ',';
-      out << columns[c].value(s);
-    }
-    out << '\n';
-  }
+  WriteTraceCsv(FreeTraceColumns(), r.trace, out);
 }
 
 }  // namespace touchdown::drop

@@ -192,16 +192,7 @@ nlohmann::json SummaryJson(const PadDrop& d) {
 }
 
 void WriteTraceCsv(const pad::RigDropResult& result, std::ostream& out) {
-  const std::vector<TraceColumn<pad::DropSample>>& columns = RigTraceColumns();
-  for (size_t c = 0; c < columns.size(); ++c) out << (c ? "," : "") << columns[c].name;
-  out << '\n' << std::setprecision(10);
-  for (const pad::DropSample& s : result.trace) {
-    for (size_t c = 0; c < columns.size(); ++c) {
-      if (c) out << ',';
-      out << columns[c].value(s);
-    }
-    out << '\n';
-  }
+  WriteTraceCsv(RigTraceColumns(), result.trace, out);
 }
 
 void WriteTraceCsv(const pad::RigDropResult& result, const std::string& path) {

@@ -102,15 +102,8 @@ TEST_F(SoilUncertaintyTest, LoadTimeValidationNamesFileAndField) {
   EXPECT_NO_THROW(Load(", soil_uncertainty: {fjs1_lp: {calibration: singular.json}}", kPadSoils));
 }
 
-TEST_F(SoilUncertaintyTest, DrawsHaveTheCalibrationsMeanAndCovariance) {
-  Write("cal.json", Calibration(3.5, 4.1, 0.2, 0.1, 0.6));
-  const Study study = Load(", soil_uncertainty: {fjs1_lp: {calibration: cal.json}, fjs1_cp: {calibration: cal.json}}",
-                           kPadSoils);
-  ASSERT_TRUE(study.soil_uncertainty);
-  const SoilUncertainty& u = *study.soil_uncertainty;
-  ASSERT_EQ(u.parameters.size(), 2u);
-  ASSERT_EQ(u.groups.size(), 1u);  // one file: drawn jointly
-  const int n = 40000;
+// The sample mean and covariance of the first two drawn parameters over landings 0..n-1.
+std::pair<Eigen::Vector2d, Eigen::Matrix2d> SampleMoments(const SoilUncertainty& u, int n) {
   Eigen::Vector2d sum = Eigen::Vector2d::Zero();
   Eigen::Matrix2d outer = Eigen::Matrix2d::Zero();
   for (int i = 0; i < n; ++i) {
@@ -120,7 +113,19 @@ TEST_F(SoilUncertaintyTest, DrawsHaveTheCalibrationsMeanAndCovariance) {
     outer += v * v.transpose();
   }
   const Eigen::Vector2d mean = sum / n;
-  const Eigen::Matrix2d cov = (outer - n * mean * mean.transpose()) / (n - 1);
+  return {mean, (outer - n * mean * mean.transpose()) / (n - 1)};
+}
+
+TEST_F(SoilUncertaintyTest, DrawsHaveTheCalibrationsMeanAndCovariance) {
+  Write("cal.json", Calibration(3.5, 4.1, 0.2, 0.1, 0.6));
+  const Study study = Load(", soil_uncertainty: {fjs1_lp: {calibration: cal.json}, fjs1_cp: {calibration: cal.json}}",
+                           kPadSoils);
+  ASSERT_TRUE(study.soil_uncertainty);
+  const SoilUncertainty& u = *study.soil_uncertainty;
+  ASSERT_EQ(u.parameters.size(), 2u);
+  ASSERT_EQ(u.groups.size(), 1u);  // one file: drawn jointly
+  const int n = 40000;
+  const auto [mean, cov] = SampleMoments(u, n);
   // Means within 4 standard errors; variances within 4 of theirs (sqrt(2/n) relative), the
   // correlation within 4 / sqrt(n).
   EXPECT_NEAR(mean(0), 3.5, 4 * 0.2 / std::sqrt(n));
@@ -183,16 +188,7 @@ TEST_F(SoilUncertaintyTest, DrawsZetaAndLambdaJointlyWithTheirCorrelation) {
   EXPECT_EQ(u.parameters[1].column, "fjs1_lp_dynamic_lambda");
   EXPECT_EQ(u.parameters[1].field, SoilField::kDynamicLambda);
   const int n = 40000;
-  Eigen::Vector2d sum = Eigen::Vector2d::Zero();
-  Eigen::Matrix2d outer = Eigen::Matrix2d::Zero();
-  for (int i = 0; i < n; ++i) {
-    const std::vector<double> x = DrawSoilParameters(u, i);
-    const Eigen::Vector2d v(x[0], x[1]);
-    sum += v;
-    outer += v * v.transpose();
-  }
-  const Eigen::Vector2d mean = sum / n;
-  const Eigen::Matrix2d cov = (outer - n * mean * mean.transpose()) / (n - 1);
+  const auto [mean, cov] = SampleMoments(u, n);
   // Lambda 7 sigma above 0: no truncation acts. Means within 4 standard errors, variances within 4 of
   // theirs (sqrt(2/n) relative), the correlation within 4 / sqrt(n).
   EXPECT_NEAR(mean(0), 3.5, 4 * 0.2 / std::sqrt(n));
