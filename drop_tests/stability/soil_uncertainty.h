@@ -62,6 +62,11 @@ struct UncertainParameter {
   double sigma = 0.0;       // one standard deviation, same unit
   double reference_gravity_m_s2 = 0.0;  // zeta's; for lambda the soil file's
   double soil_zeta_N_m3 = 0.0;  // the soil file's zeta: what a soil whose zeta is not drawn keeps
+  // Where a draw must lie (same unit): the physical range (rft/physical_limits.h), narrowed to the
+  // calibration's fit bounds unless the study says `truncate: physical_limits`.
+  double low = 0.0, high = 0.0;
+  bool low_open = false;  // low itself excluded
+  bool fit_bounded = false;  // the box is narrowed to the calibration's bounds
 };
 const char* SoilFieldUnit(SoilField f);  // "N/cm^3", "-"
 
@@ -76,6 +81,12 @@ struct SoilUncertainty {
   std::vector<UncertainParameter> parameters;
   std::vector<CalibrationGroup> groups;
   uint64_t seed = 0;  // the study's
+};
+
+// How a soil's draws are truncated (`truncate:` of its soil_uncertainty entry).
+enum class SoilTruncation {
+  kFitBounds,      // to the calibration's fit bounds within the physical range (the default)
+  kPhysicalLimits  // to the physical range only
 };
 
 // Reads the study block's `soil_uncertainty` (the mapping soil name -> {calibration: FILE}) against

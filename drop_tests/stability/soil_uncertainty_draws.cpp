@@ -13,14 +13,10 @@
 namespace touchdown::stability {
 
 namespace {
-const limits::Range& RangeOf(SoilField f) {
-  return f == SoilField::kZeta ? limits::kZeta_N_cm3 : limits::kDynamicLambda;
-}
-
-bool InsideLimits(const SoilUncertainty& u, const std::vector<double>& x, const std::vector<size_t>& which) {
+bool InsideBoxes(const SoilUncertainty& u, const std::vector<double>& x, const std::vector<size_t>& which) {
   for (const size_t k : which) {
-    const limits::Range& r = RangeOf(u.parameters[k].field);
-    if (!(r.low_open ? x[k] > r.low : x[k] >= r.low) || !(x[k] <= r.high)) return false;
+    const UncertainParameter& q = u.parameters[k];
+    if (!(q.low_open ? x[k] > q.low : x[k] >= q.low) || !(x[k] <= q.high)) return false;
   }
   return true;
 }
@@ -42,7 +38,7 @@ std::vector<double> DrawSoilParameters(const SoilUncertainty& u, int64_t index) 
       }
       const Eigen::VectorXd v = mean + g.lower * z;
       for (Eigen::Index a = 0; a < n; ++a) x[g.parameters[size_t(a)]] = v(a);
-      accepted = InsideLimits(u, x, g.parameters);
+      accepted = InsideBoxes(u, x, g.parameters);
     }
     if (!accepted)
       for (const size_t k : g.parameters) x[k] = u.parameters[k].mean;
@@ -80,6 +76,8 @@ std::string SoilUncertaintyDigestText(const SoilUncertainty& u) {
         s += p.soil + "=" + io::FormatNumber(p.mean) + "@" + io::FormatNumber(p.reference_gravity_m_s2) + ";";
       else
         s += p.soil + ".dynamic_lambda=" + io::FormatNumber(p.mean) + ";";
+      // A box narrowed to the fit's bounds draws other values: another plan.
+      if (p.fit_bounded) s += "in[" + io::FormatNumber(p.low) + "," + io::FormatNumber(p.high) + "];";
     }
     for (Eigen::Index a = 0; a < g.covariance.rows(); ++a)
       for (Eigen::Index b = 0; b < g.covariance.cols(); ++b) s += io::FormatNumber(g.covariance(a, b)) + ",";

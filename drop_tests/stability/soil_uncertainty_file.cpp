@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "drop_tests/catalog/catalog.h"
+#include "drop_tests/formats/dataset_csv.h"
 #include "drop_tests/formats/yaml_fields.h"
 #include "drop_tests/sweep/sweep_spec.h"
 #include "rft/input_error.h"
@@ -127,6 +128,35 @@ std::vector<std::pair<size_t, SoilField>> SoilRowsOf(const CalibrationCovariance
                              "; a parameter at a bound or held fixed gets none)");
   return found;
 }
+SoilTruncation ReadTruncation(const io::YamlFields& f) {
+  const std::string t = f.StringOr("truncate", "fit_bounds");
+  if (t == "fit_bounds") return SoilTruncation::kFitBounds;
+  if (t == "physical_limits") return SoilTruncation::kPhysicalLimits;
+  f.Fail("truncate", "must be fit_bounds or physical_limits, got '" + t + "'");
+}
+
+// The box a parameter's draws must lie in: its physical range, narrowed to the fit's [lower, upper]
+// when the report gives them (`calibrate --targets` does) and the study keeps the default. The
+// fit never evaluated the model outside those bounds, and they say where the user holds it to be
+// meaningful; the normal of the covariance does not know them.
+void SetBox(UncertainParameter& q, const nlohmann::json& entry, SoilTruncation truncation, const std::string& file,
+            const std::string& at) {
+  const limits::Range& r = q.field == SoilField::kZeta ? limits::kZeta_N_cm3 : limits::kDynamicLambda;
+  q.low = r.low;
+  q.high = r.high;
+  q.low_open = r.low_open;
+  if (truncation != SoilTruncation::kFitBounds || !entry.contains("lower") || !entry.contains("upper")) return;
+  const double lower = JsonNumber(entry["lower"], file, at + ".lower"), upper = JsonNumber(entry["upper"], file, at + ".upper");
+  if (!(lower <= q.mean && q.mean <= upper))
+    throw MakeInputError(file, at, "its value " + io::FormatNumber(q.mean) + " lies outside its bounds [" +
+                                       io::FormatNumber(lower) + ", " + io::FormatNumber(upper) + "]");
+  if (lower > q.low) {
+    q.low = lower;
+    q.low_open = false;
+  }
+  q.high = std::min(q.high, upper);
+  q.fit_bounded = true;
+}
 }  // namespace
 
 SoilUncertainty ReadSoilUncertainty(const io::YamlFields& study_block, const sweep::SweepPlan& plan) {
@@ -151,8 +181,9 @@ SoilUncertainty ReadSoilUncertainty(const io::YamlFields& study_block, const swe
       all.Fail(soil, "is not a soil this study's landings stand on (" + Joined(names) + ")");
     const rft::SoilParameters& soil_file = soils.at(soil);
     const io::YamlFields f = all.Child(soil);
-    f.RequireOnly({"calibration"});
+    f.RequireOnly({"calibration", "truncate"});
     const std::string given = f.String("calibration");
+    const SoilTruncation truncation = ReadTruncation(f);
     const fs::path p = fs::path(given).is_absolute() ? fs::path(given) : base / given;
     const std::string path = fs::absolute(p).lexically_normal().string();
     if (!read.count(path)) read.emplace(path, ReadCovariance(ReadJsonFile(path, f.file(), f.Path("calibration")), path));
@@ -180,6 +211,7 @@ SoilUncertainty ReadSoilUncertainty(const io::YamlFields& study_block, const swe
         q.reference_gravity_m_s2 = soil_file.reference_gravity_m_s2;
         limits::Require(limits::kDynamicLambda, q.mean, path, at + ".value");
       }
+      SetBox(q, c.parameters[row], truncation, path, at);
       if (!group_of_file.count(path)) {
         group_of_file[path] = u.groups.size();
         u.groups.push_back({path, {}, {}, {}});

@@ -123,7 +123,9 @@ nlohmann::json SoilSplitJson(const SoilUncertainty& u, const std::optional<SoilS
   nlohmann::json params = nlohmann::json::array();
   for (const UncertainParameter& q : u.parameters)
     params.push_back({{"soil", q.soil}, {"parameter", q.name}, {"column", q.column}, {"mean", q.mean}, {"sigma", q.sigma},
-                      {"unit", SoilFieldUnit(q.field)}, {"reference_gravity_m_s2", q.reference_gravity_m_s2}});
+                      {"unit", SoilFieldUnit(q.field)}, {"reference_gravity_m_s2", q.reference_gravity_m_s2},
+                      {"drawn_within", {q.low, q.high}},
+                      {"truncated_to", q.fit_bounded ? "the calibration's fit bounds" : "the physical range"}});
   bool lambda = false;
   for (const UncertainParameter& q : u.parameters) lambda = lambda || q.field == SoilField::kDynamicLambda;
   nlohmann::json files = nlohmann::json::array();
@@ -131,8 +133,10 @@ nlohmann::json SoilSplitJson(const SoilUncertainty& u, const std::optional<SoilS
   nlohmann::json out{{"parameters", params},
                      {"calibrations", files},
                      {"draws", "per landing from the joint normal of each calibration (Cholesky factor of its covariance), "
-                               "counter-based on (seed, landing index); a draw outside zeta's physical range (0, 1e4] "
-                               "N/cm^3" + std::string(lambda ? " or dynamic_lambda's [0, 100]" : "") + " drawn again, up to " +
+                               "counter-based on (seed, landing index); a draw outside a parameter's `drawn_within` (the "
+                               "calibration's fit bounds within the physical range, zeta (0, 1e4] N/cm^3" +
+                               std::string(lambda ? ", dynamic_lambda [0, 100]" : "") + "; the physical range alone with "
+                               "`truncate: physical_limits`) drawn again, up to " +
                                std::to_string(kMaxDrawAttempts) + " times, then the best values"},
                      {"split_method",
                       "soil_share: adjusted R^2 of the least-squares fit of the outcome on the drawn parameters (the "

@@ -73,7 +73,8 @@ nlohmann::json CovarianceJson(const TargetsFile& file, const TargetsFitResult& f
   nlohmann::json params = nlohmann::json::array();
   for (const size_t i : fit.covariance_parameters) {
     const Parameter& p = file.parameters[i];
-    nlohmann::json j{{"name", p.name}, {"kind", KindName(p.kind)}, {"field", p.field}, {"value", fit.parameters[i].value}};
+    nlohmann::json j{{"name", p.name},   {"kind", KindName(p.kind)}, {"field", p.field}, {"value", fit.parameters[i].value},
+                     {"lower", p.lower}, {"upper", p.upper}};
     if (p.kind == ParameterKind::kSoilZeta) {
       j["soil"] = p.soil_name;
       j["unit"] = "N/cm^3";

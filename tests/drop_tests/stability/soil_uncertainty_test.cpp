@@ -181,6 +181,52 @@ std::string ZetaLambdaCalibration(double zeta, double lambda, double s_zeta, dou
 double NormalPdf(double x) { return std::exp(-0.5 * x * x) / std::sqrt(2.0 * M_PI); }
 double NormalCdf(double x) { return 0.5 * std::erfc(-x / std::sqrt(2.0)); }
 
+// A report that gives the fit's bounds (calibrate --targets does) truncates the draws to them: the
+// one-dimensional truncated normal, mean mu + sigma (pdf(a) - pdf(b)) / (cdf(b) - cdf(a)) with a, b
+// the bounds in standard units. `truncate: physical_limits` draws from the physical range alone.
+TEST_F(SoilUncertaintyTest, DrawsStayWithinTheFitsBoundsUnlessTheStudySaysPhysicalLimits) {
+  nlohmann::json j = nlohmann::json::parse(ZetaLambdaCalibration(3.5, 1.1, 0.2, 0.15, 0.0));
+  j["covariance"]["parameters"][0]["lower"] = 3.4;  // half a sigma below the best value
+  j["covariance"]["parameters"][0]["upper"] = 8.0;
+  Write("bounded.json", j.dump(2));
+  const Study study = Load(", soil_uncertainty: {fjs1_lp: {calibration: bounded.json}}", kPadSoils);
+  const SoilUncertainty& u = *study.soil_uncertainty;
+  EXPECT_EQ(u.parameters[0].low, 3.4);
+  EXPECT_EQ(u.parameters[0].high, 8.0);
+  EXPECT_TRUE(u.parameters[0].fit_bounded);
+  EXPECT_FALSE(u.parameters[1].fit_bounded);  // lambda's entry has no bounds: the physical range
+  const int n = 20000;
+  double sum = 0.0;
+  for (int i = 0; i < n; ++i) {
+    const double z = DrawSoilParameters(u, i)[0];
+    ASSERT_GE(z, 3.4) << i;
+    sum += z;
+  }
+  const double a = (3.4 - 3.5) / 0.2, b = (8.0 - 3.5) / 0.2;
+  const double mean = 3.5 + 0.2 * (NormalPdf(a) - NormalPdf(b)) / (NormalCdf(b) - NormalCdf(a));
+  const double var = 0.04 * (1 + (a * NormalPdf(a) - b * NormalPdf(b)) / (NormalCdf(b) - NormalCdf(a)) -
+                             std::pow((NormalPdf(a) - NormalPdf(b)) / (NormalCdf(b) - NormalCdf(a)), 2));
+  EXPECT_NEAR(sum / n, mean, 4 * std::sqrt(var / n));
+  // The bounds are part of the plan: a database of the untruncated draws is another plan's.
+  const Study physical =
+      Load(", soil_uncertainty: {fjs1_lp: {calibration: bounded.json, truncate: physical_limits}}", kPadSoils);
+  EXPECT_FALSE(physical.soil_uncertainty->parameters[0].fit_bounded);
+  EXPECT_EQ(physical.soil_uncertainty->parameters[0].low, 0.0);
+  EXPECT_NE(physical.plan.variant, study.plan.variant);
+  int below = 0;
+  for (int i = 0; i < 2000; ++i) below += DrawSoilParameters(*physical.soil_uncertainty, i)[0] < 3.4;
+  EXPECT_GT(below, 400);  // about 31 % of the normal lies below 3.4
+  // Refusals: an unknown rule; a best value outside its own bounds.
+  const std::string bad = Refusal(", soil_uncertainty: {fjs1_lp: {calibration: bounded.json, truncate: box}}", kPadSoils);
+  EXPECT_NE(bad.find("soil_uncertainty.fjs1_lp.truncate"), std::string::npos) << bad;
+  EXPECT_NE(bad.find("'box'"), std::string::npos) << bad;
+  j["covariance"]["parameters"][0]["lower"] = 3.6;
+  Write("outside.json", j.dump(2));
+  const std::string outside = Refusal(", soil_uncertainty: {fjs1_lp: {calibration: outside.json}}", kPadSoils);
+  EXPECT_NE(outside.find("covariance.parameters[0]"), std::string::npos) << outside;
+  EXPECT_NE(outside.find("outside its bounds [3.6, 8]"), std::string::npos) << outside;
+}
+
 TEST_F(SoilUncertaintyTest, DrawsZetaAndLambdaJointlyWithTheirCorrelation) {
   Write("zl.json", ZetaLambdaCalibration(3.5, 1.1, 0.2, 0.15, -0.7));
   const Study study = Load(", soil_uncertainty: {fjs1_lp: {calibration: zl.json}}", kPadSoils);
@@ -225,9 +271,12 @@ TEST_F(SoilUncertaintyTest, TheShippedLambdaStudyDrawsBothSoilsFromOneJointNorma
   for (int a = 0; a < 3; ++a)
     for (int b = 0; b < 3; ++b)
       EXPECT_EQ(u.groups[0].covariance(a, b), report["matrix"][rows[a]][rows[b]].get<double>()) << a << "," << b;
-  // The lambdas lie 2.2 sd above 0, so 1-2 % of the normal's draws fall outside the box and are
-  // drawn again: the draws follow the joint normal truncated to the box. Its moments, from an
-  // independent sample (another generator), are the reference.
+  // The draws follow the joint normal truncated to the box: zeta CP at least the fit's lower bound
+  // 4.0 N/cm^3 (a third of the normal lies below it), the lambdas within the fit's [0, 5] (1-2 % of
+  // the normal below 0). Its moments, from an independent sample (another generator), are the
+  // reference.
+  EXPECT_EQ(u.parameters[0].low, 4.0);
+  EXPECT_EQ(u.parameters[1].high, 5.0);
   const Eigen::MatrixXd l = u.groups[0].lower;
   const Eigen::Vector3d mu(u.parameters[0].mean, u.parameters[1].mean, u.parameters[2].mean);
   std::mt19937_64 rng(7);
@@ -237,7 +286,9 @@ TEST_F(SoilUncertaintyTest, TheShippedLambdaStudyDrawsBothSoilsFromOneJointNorma
   Eigen::Matrix3d outer = Eigen::Matrix3d::Zero();
   for (int i = 0; i < n_ref;) {
     const Eigen::Vector3d x = mu + l * Eigen::Vector3d(normal(rng), normal(rng), normal(rng));
-    if (!(x(0) > 0.0 && x(1) >= 0.0 && x(2) >= 0.0)) continue;
+    bool inside = true;
+    for (int k = 0; k < 3; ++k) inside = inside && x(k) >= u.parameters[size_t(k)].low && x(k) <= u.parameters[size_t(k)].high;
+    if (!inside) continue;
     sum += x;
     outer += x * x.transpose();
     ++i;
@@ -248,7 +299,7 @@ TEST_F(SoilUncertaintyTest, TheShippedLambdaStudyDrawsBothSoilsFromOneJointNorma
   const auto [mean, cov] = SampleMoments(u, n);
   const double se = std::sqrt(1.0 / n + 1.0 / n_ref);
   for (int a = 0; a < 3; ++a) EXPECT_NEAR(mean(a), ref_mean(a), 4 * std::sqrt(ref_cov(a, a)) * se) << a;
-  EXPECT_GT(ref_mean(1) - mu(1), 0.01);  // the truncation shows: lambda's mean moves up
+  EXPECT_GT(ref_mean(0) - mu(0), 0.1);  // the truncation shows: zeta CP's mean moves up
   // Lambda LP is drawn correlated with zeta CP (+0.65 in the report) though it is another soil's.
   const auto rho = [](const Eigen::MatrixXd& c, int a, int b) { return c(a, b) / std::sqrt(c(a, a) * c(b, b)); };
   EXPECT_GT(rho(u.groups[0].covariance, 0, 2), 0.5);
