@@ -123,16 +123,25 @@ nlohmann::json SoilSplitJson(const SoilUncertainty& u, const std::optional<SoilS
   nlohmann::json params = nlohmann::json::array();
   for (const UncertainParameter& q : u.parameters)
     params.push_back({{"soil", q.soil}, {"parameter", q.name}, {"column", q.column}, {"mean", q.mean}, {"sigma", q.sigma},
-                      {"unit", SoilFieldUnit(q.field)}, {"reference_gravity_m_s2", q.reference_gravity_m_s2}});
-  bool lambda = false;
-  for (const UncertainParameter& q : u.parameters) lambda = lambda || q.field == SoilField::kDynamicLambda;
+                      {"unit", InfoOf(q.field).unit}, {"reference_gravity_m_s2", q.reference_gravity_m_s2}});
+  bool lambda = false, bekker = false, zeta = false;
+  for (const UncertainParameter& q : u.parameters) {
+    zeta = zeta || q.field == SoilField::kZeta;
+    lambda = lambda || q.field == SoilField::kDynamicLambda;
+    bekker = bekker || InfoOf(q.field).bekker;
+  }
+  // The ranges of the fields drawn (as they were worded before Bekker fields could be drawn when none is).
+  std::string ranges = "zeta's physical range (0, 1e4] N/cm^3" + std::string(lambda ? " or dynamic_lambda's [0, 100]" : "");
+  if (bekker) {
+    ranges = std::string(zeta ? "zeta's (0, 1e4] N/cm^3, " : "") + (lambda ? "dynamic_lambda's [0, 100], " : "") +
+             "Bekker's n (0, 5], k_c [0, 1e6] kN/m^(n+1) or k_phi [0, 1e6] kN/m^(n+2) physical range";
+  }
   nlohmann::json files = nlohmann::json::array();
   for (const CalibrationGroup& g : u.groups) files.push_back(g.file);
   nlohmann::json out{{"parameters", params},
                      {"calibrations", files},
                      {"draws", "per landing from the joint normal of each calibration (Cholesky factor of its covariance), "
-                               "counter-based on (seed, landing index); a draw outside zeta's physical range (0, 1e4] "
-                               "N/cm^3" + std::string(lambda ? " or dynamic_lambda's [0, 100]" : "") + " drawn again, up to " +
+                               "counter-based on (seed, landing index); a draw outside " + ranges + " drawn again, up to " +
                                std::to_string(kMaxDrawAttempts) + " times, then the best values"},
                      {"split_method",
                       "soil_share: adjusted R^2 of the least-squares fit of the outcome on the drawn parameters (the "
@@ -154,7 +163,7 @@ nlohmann::json SoilSplitJson(const SoilUncertainty& u, const std::optional<SoilS
                       {"soil_share", s.soil_share},
                       {"soil_share_interval_95", {s.soil_share_low, s.soil_share_high}},
                       {"conditions_share", 1.0 - s.soil_share},
-                      {lambda ? "slope_per_unit" : "slope_per_N_cm3", slopes}});
+                      {lambda || bekker ? "slope_per_unit" : "slope_per_N_cm3", slopes}});
   }
   out["variance_split"] = shares;
   nlohmann::json ends = nlohmann::json::object();
