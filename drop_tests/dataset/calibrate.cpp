@@ -10,6 +10,7 @@
 
 #include "drop_tests/drop/drop_factory.h"
 #include "drop_tests/catalog/catalog.h"
+#include "drop_tests/model/contact_model.h"
 #include "drop_tests/util/student_t.h"
 #include "footpad_geom/axisymmetric_intrusion.h"
 #include "rft/contact_wrench.h"
@@ -65,8 +66,8 @@ class UnitZetaForce {
       rft::SoilParameters unit = soil;
       unit.zeta_N_m3 = 1.0;
       laws.quasi_static = rft::MakeStressLaw3D(rft::LawKind::kLi2013, unit, unit.reference_gravity_m_s2);
-      laws.dynamic = rft::MakeSoilContactModel(rft::LawKind::kLi2013, unit, unit.reference_gravity_m_s2,
-                                               rft::WithSoilDynamicTerm({}, soil));
+      laws.dynamic = model::MakeContactModel(
+          {.law = rft::LawKind::kLi2013, .soil = unit, .gravity_m_s2 = unit.reference_gravity_m_s2});
     }
     return laws;
   }

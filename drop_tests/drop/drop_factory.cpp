@@ -60,11 +60,4 @@ pad::EffectSoilResponse MakeRigResponse(const geom::AxisymmetricIntrusion& intru
   return pad::EffectSoilResponse(intrusion, in);
 }
 
-rft::SoilContactModel MakeFreeLaw(const rft::SoilParameters& drop_soil, const std::optional<rft::LawKind>& law_3d,
-                                  double gravity_m_s2, const rft::EffectTerms& terms,
-                                  const std::string& effects_source, const rft::SurfaceElements* pad_surface) {
-  return model::MakeEffectLaw3D(law_3d.value_or(drop_soil.rft_law_3d), drop_soil, gravity_m_s2, terms,
-                                drop_soil.atmosphere == rft::Atmosphere::kAir, effects_source, pad_surface);
-}
-
 }  // namespace touchdown::drop

@@ -1,10 +1,11 @@
 #pragma once
 // The one place a drop is made from a pad, a soil and the drop's conditions: the soil as the
 // drop sees it (zeta override, atmosphere), zeta scaled to the drop's gravity, the rig's 2D law,
-// the rig's soil response with the model's effect terms, the free pad's 3D law. SimulateDrop
-// (pad_drop.h) runs whole drops from these; calibrate, diagnose and synth, which need the rig's
-// pieces (a regressor, a fitted zeta, a hidden effect around the response), take them from here
-// too, so every drop of every command is built alike.
+// the rig's soil response with the model's effect terms (the free pad's 3D contact model comes from
+// model::MakeContactModel, as every 3D contact's does). SimulateDrop (pad_drop.h) runs whole drops
+// from these; calibrate, diagnose and synth, which need the rig's pieces (a regressor, a fitted
+// zeta, a hidden effect around the response), take them from here too, so every drop of every
+// command is built alike.
 #include <memory>
 #include <optional>
 #include <string>
@@ -15,7 +16,6 @@
 #include "rft/soil.h"
 #include "lander/pad/effect_soil_response.h"
 #include "rft/law_kind.h"
-#include "rft/soil_contact_model.h"
 
 namespace touchdown::drop {
 
@@ -54,12 +54,5 @@ pad::EffectSoilResponse MakeBekkerRigResponse(const geom::AxisymmetricIntrusion&
 pad::EffectSoilResponse MakeRigResponse(const geom::AxisymmetricIntrusion& intrusion,
                                         const rft::SoilParameters& drop_soil, double gravity_m_s2,
                                         const rft::EffectTerms& terms);
-
-// The free pad's contact model: the 3D law `law_3d` (the soil's rft_law_3d when none) on
-// `drop_soil` at the drop's gravity, with the effect terms (model::MakeEffectLaw3D).
-// `pad_surface`: the pad, whose footprint gives the bekker law its b (rft::MakeSoilContactModel).
-rft::SoilContactModel MakeFreeLaw(const rft::SoilParameters& drop_soil, const std::optional<rft::LawKind>& law_3d,
-                                  double gravity_m_s2, const rft::EffectTerms& terms,
-                                  const std::string& effects_source, const rft::SurfaceElements* pad_surface = nullptr);
 
 }  // namespace touchdown::drop

@@ -6,6 +6,7 @@
 
 #include "drop_tests/drop/drop_factory.h"
 #include "drop_tests/formats/vtk_pieces.h"
+#include "drop_tests/model/contact_model.h"
 #include "drop_tests/formats/vtk_series.h"
 #include "rft/bekker_law.h"
 #include "rft/element_stresses.h"
@@ -49,7 +50,8 @@ void WriteDropVtk(const PadDrop& drop, const io::PadSpec& pad, const io::OutputT
   const rft::SoilParameters drop_soil = DropSoil(drop.soil, c.zeta_N_m3, c.atmosphere);
   // As the drop itself ran (pad_drop.cpp).
   const rft::SoilContactModel contact =
-      MakeFreeLaw(drop_soil, c.law_3d, c.gravity_m_s2, c.effects, c.effects_source, &pad.body.surface);
+      model::MakeContactModel({.law = c.law_3d, .soil = drop_soil, .gravity_m_s2 = c.gravity_m_s2,
+                               .effects = c.effects, .effects_source = c.effects_source, .pad_surface = &pad.body.surface});
   const io::PadSurfaceMesh mesh = io::MakePadSurfaceMesh(pad.body.surface);
   const rft::PlaneGround ground;  // the free drop's bed (rft::UniformTerrain's surface)
   io::WriteOutputDirectory(dir, io::OutputKind::kDropVtk, [&](const std::string& staging) {

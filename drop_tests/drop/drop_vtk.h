@@ -15,7 +15,7 @@ void CheckDropVtkTarget(const io::OutputTarget& dir);
 
 // Writes the series of `drop` (a free drop of `pad`, which carries its 3D body) into `dir`, whole or
 // not at all. The stresses are computed here, at the trace's samples, with the contact model the drop
-// ran with (the drop factory's MakeFreeLaw).
+// ran with (model::MakeContactModel on the drop's soil and conditions, as SimulateDrop builds it).
 void WriteDropVtk(const PadDrop& drop, const io::PadSpec& pad, const io::OutputTarget& dir);
 
 }  // namespace touchdown::drop

@@ -9,12 +9,12 @@
 #include "lander/pad/pad_pose.h"
 #include "drop_tests/formats/vtk_pieces.h"
 #include "drop_tests/formats/vtk_writer.h"
+#include "drop_tests/model/contact_model.h"
 #include "rft/bekker_law.h"
 #include "rft/contact_wrench.h"
 #include "rft/element_stresses.h"
 #include "rft/input_error.h"
 #include "rft/physical_limits.h"
-#include "rft/stress_law_3d_factory.h"
 #include "rft/units.h"
 
 namespace touchdown::drop {
@@ -61,7 +61,8 @@ nlohmann::json ForceJson(const ForceRequest& r, const RequestNaming& naming, con
   soil.dynamic_term = soil.dynamic_term && r.dynamic;
   const rft::LawKind kind = r.law ? rft::ParseLawKind(*r.law, naming.context, naming.Field("law")) : soil.rft_law_3d;
   // The contact model (law and pad-level terms): Bekker's z^n is a pad-level depth law.
-  const rft::SoilContactModel model = rft::MakeSoilContactModel(kind, soil, r.gravity_m_s2, {}, &pad.body.surface);
+  const rft::SoilContactModel model = model::MakeContactModel(
+      {.law = kind, .soil = soil, .gravity_m_s2 = r.gravity_m_s2, .pad_surface = &pad.body.surface});
   const rft::StressLaw3D& law = *model.law;
   k.p_WB = pad::PlaceAtDepth(pad.body, k.R_WB, r.depth_m);
   const rft::ContactWrench w = rft::ComputeContactWrench(pad.body.surface, k, rft::PlaneGround(), law, model.pad_terms);

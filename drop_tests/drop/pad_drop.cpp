@@ -9,6 +9,7 @@
 #include "drop_tests/drop/drop_columns.h"
 #include "drop_tests/drop/drop_factory.h"
 #include "drop_tests/drop/free_drop_output.h"
+#include "drop_tests/model/contact_model.h"
 #include "footpad_geom/axisymmetric_intrusion.h"
 #include "lander/pad/effect_soil_response.h"
 #include "rft/bekker_law.h"
@@ -104,8 +105,10 @@ PadDrop SimulateDrop(const io::PadSpec& pad, const rft::SoilParameters& soil, co
                rft::LawKind::kLi2013, {}};
 
   if (free) {
-    const rft::SoilContactModel law = MakeFreeLaw(drop_soil, conditions.law_3d, conditions.gravity_m_s2,
-                                                  conditions.effects, conditions.effects_source, &pad.body.surface);
+    const rft::SoilContactModel law =
+        model::MakeContactModel({.law = conditions.law_3d, .soil = drop_soil, .gravity_m_s2 = conditions.gravity_m_s2,
+                                 .effects = conditions.effects, .effects_source = conditions.effects_source,
+                                 .pad_surface = &pad.body.surface});
     drop.law_3d = law.law->kind();
     drop.contact_model = law.name();
     pad::FreeDropInput in;

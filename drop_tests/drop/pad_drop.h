@@ -93,7 +93,7 @@ struct DropRunOptions {
 };
 
 // Runs the drop: the rig for level, vertical drops, else the free pad (IsFree). Effects: all, on
-// the rig in their rig form, on the free pad in their 3D form (MakeEffectLaw3D). A failing
+// the rig in their rig form, on the free pad in their 3D form (model::MakeContactModel). A failing
 // integration throws integ::IntegrationFailure.
 PadDrop SimulateDrop(const io::PadSpec& pad, const rft::SoilParameters& soil, const DropConditions& conditions,
                      const DropRunOptions& options);

@@ -9,7 +9,6 @@
 
 #include "drop_tests/formats/yaml_fields.h"
 #include "rft/input_error.h"
-#include "rft/stress_law_3d_factory.h"
 
 namespace touchdown::model {
 
@@ -173,18 +172,6 @@ std::vector<std::pair<std::string, std::string>> EffectsNotApplied(const rft::Ef
       out.emplace_back(id, "acts only on drops in air; this drop is in vacuum");
   }
   return out;
-}
-
-rft::SoilContactModel MakeEffectLaw3D(rft::LawKind law, const rft::SoilParameters& soil, double gravity_m_s2,
-                                      const rft::EffectTerms& t, bool in_air, const std::string& model_source,
-                                      const rft::SurfaceElements* pad_surface) {
-  rft::EffectTerms terms = t;
-  if (!in_air) terms.gas_chi = terms.gas_c_N_s_m3 = 0.0;  // the gas cushion acts on beds in air only
-  if (terms.NeedsDensity() && !(soil.bulk_density_kg_m3 > 0.0))
-    throw MakeInputError(soil.name, "bulk_density_kg_m3",
-                         "the soil must state its bulk density for inertial_drag, added_mass and added_mass_plug (model " +
-                             model_source + ")");
-  return rft::MakeSoilContactModel(law, soil, gravity_m_s2, terms, pad_surface);
 }
 
 }  // namespace touchdown::model

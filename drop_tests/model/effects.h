@@ -10,7 +10,7 @@
 //  - the rig (1 DOF, axisymmetric pad): lander/pad/effect_soil_response.h, forces from the
 //    integrals I_k(d) of cos^k(beta) over the submerged leading surface;
 //  - free drops and the lander (the per-element contact of rft/contact_wrench.h): the contact
-//    model of MakeEffectLaw3D below, the per-element terms as StressLaw3D decorators
+//    model of model::MakeContactModel (drop_tests/model/contact_model.h), the per-element terms as StressLaw3D decorators
 //    (inertial_drag rft/dynamic_term.h, rate_damping rft/rate_damping_term.h, gas_cushion
 //    rft/gas_cushion_term.h, beds in air only) and depth_exponent, compaction_peak and
 //    added_mass and added_mass_plug as the pad-level terms of rft/pad_level_terms.h. For a level axisymmetric pad
@@ -25,9 +25,6 @@
 #include <vector>
 
 #include "rft/effect_terms.h"
-#include "rft/soil.h"
-#include "rft/soil_contact_model.h"
-#include "rft/surface_elements.h"
 
 namespace touchdown::model {
 
@@ -93,15 +90,6 @@ std::vector<EffectId> ActiveEffectIds(const rft::EffectTerms& terms);
 // (measurement only: `compare` applies it to the simulated traces it compares with measured
 // ones), gas_cushion when the drop is not in air.
 std::vector<std::pair<std::string, std::string>> EffectsNotApplied(const rft::EffectTerms& terms, bool in_air);
-// The 3D contact model of `soil` under the law `law` (zeta as given, scaled to gravity) with the
-// active effect terms (rft/stress_law_3d_factory.h MakeSoilContactModel): inertial_drag and
-// added_mass and added_mass_plug (rho = the soil's bulk density, as in the rig), rate_damping, compaction_peak,
-// depth_exponent, and gas_cushion when `in_air`. Throws InputError naming the soil and
-// `model_source` when an effect needs the bulk density and the soil has none.
-// `pad_surface`: the pad, whose footprint gives the bekker law its b (rft::MakeSoilContactModel).
-rft::SoilContactModel MakeEffectLaw3D(rft::LawKind law, const rft::SoilParameters& soil, double gravity_m_s2,
-                                      const rft::EffectTerms& terms, bool in_air, const std::string& model_source,
-                                      const rft::SurfaceElements* pad_surface = nullptr);
 
 // Per effect, the [low, high] (SI) of each parameter in EffectInfo order (a fit's confidence
 // intervals; informational). Reading and writing the `effects:` mapping of a model file:

@@ -187,17 +187,6 @@ rft::EffectTerms ModelEffectTerms(const ModelFile& m) {
   return MakeEffectTerms(m.effects, m.source.empty() ? "model " + m.name : m.source);
 }
 
-rft::SoilContactModel MakeModelStressLaw3D(rft::LawKind law, const rft::SoilParameters& soil,
-                                           double gravity_m_s2, const ModelFile* model,
-                                           const rft::SurfaceElements* pad_surface) {
-  if (!model)
-    return MakeEffectLaw3D(law, soil, gravity_m_s2, rft::EffectTerms{}, soil.atmosphere == rft::Atmosphere::kAir, "",
-                           pad_surface);
-  return MakeEffectLaw3D(law, ApplyModel(*model, soil), gravity_m_s2, ModelEffectTerms(*model),
-                         soil.atmosphere == rft::Atmosphere::kAir, model->source.empty() ? "model " + model->name : model->source,
-                         pad_surface);
-}
-
 nlohmann::json ModelEffectsJson(const ModelFile& m) {
   const rft::EffectTerms terms = ModelEffectTerms(m);
   nlohmann::json applied = nlohmann::json::array(), skipped = nlohmann::json::object();

@@ -25,7 +25,7 @@
 //     DropConditions::effects (drop_tests/drop/pad_drop.h); gas_cushion only on drops in air (the
 //     drop's atmosphere: the dataset row's in `compare`, else the soil's);
 //   free drops and the lander (3D contact): every physical effect, in its 3D form
-//     (MakeModelStressLaw3D below; drop_tests/model/effects.h); gas_cushion only on soils in air;
+//     (model::MakeContactModel, drop_tests/model/contact_model.h); gas_cushion only on soils in air;
 //   sensor_offset (measurement only) never changes a simulated drop: `compare` applies it to
 //     the simulated traces it compares with recorded ones (what the rig would record), and
 //     `drop` reports it as not applied.
@@ -114,14 +114,6 @@ rft::SoilParameters ApplyModel(const ModelFile& model, const rft::SoilParameters
 // The model's effects flattened (none when `effects` is empty). Throws InputError naming the
 // model file on a repeated effect or a value out of range (a model built in memory).
 rft::EffectTerms ModelEffectTerms(const ModelFile& model);
-// The 3D contact model (stress law and pad-level terms) of `soil` under `model` (may be null: the soil as it is): zeta override
-// (ApplyModel) and the effect terms in their 3D form (MakeEffectLaw3D; gas_cushion only when the
-// soil's atmosphere is air). Throws InputError naming the soil and the model file when an effect
-// needs the soil's bulk density and it has none.
-// `pad_surface`: the pad, whose footprint gives the bekker law its b (rft::MakeSoilContactModel).
-rft::SoilContactModel MakeModelStressLaw3D(rft::LawKind law, const rft::SoilParameters& soil,
-                                           double gravity_m_s2, const ModelFile* model,
-                                           const rft::SurfaceElements* pad_surface = nullptr);
 // The model as a 3D run (lander) reports it: {file, effects: [ids applied], effects_not_applied:
 // {id: reason}}; gas_cushion is applied on the soils in air only (said so in its entry).
 nlohmann::json ModelEffectsJson(const ModelFile& model);

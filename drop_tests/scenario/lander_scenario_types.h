@@ -103,7 +103,7 @@ struct LanderScenario {
   std::optional<LanderPaperCheck> paper;
   std::string paper_ground_case;  // e.g. "CP LP LP LP" (Table II), informational
   // `touchdown lander --model`: zeta per soil and the effect terms (3D forms), for every soil
-  // of the ground (drop_tests/model/model_file.h MakeModelStressLaw3D). Not part of the scenario file.
+  // of the ground (drop_tests/model/contact_model.h MakeContactModel). Not part of the scenario file.
   std::optional<model::ModelFile> model;
 };
 

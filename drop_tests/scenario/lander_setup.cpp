@@ -4,7 +4,7 @@
 #include <memory>
 
 #include "drop_tests/catalog/catalog.h"
-#include "drop_tests/model/model_file.h"
+#include "drop_tests/model/contact_model.h"
 #include "lander/integ/cvode_integrator.h"
 #include "lander/multibody/lander_simulation.h"
 #include "lander/pad/release.h"
@@ -136,9 +136,9 @@ LanderSetup BuildLanderSetup(const LanderScenario& sc, const LanderSoilCatalog* 
     for (const SoilFieldCell& cell : cells) grid.soil.push_back(soil_index(field.soils[cell.soil]));
   }
   for (const std::string& name : soil_names)
-    out.terrain.soils.push_back({name, model::MakeModelStressLaw3D(sc.ground.law, SoilFor(name, soils), g,
-                                                                   sc.model ? &*sc.model : nullptr,
-                                                                   &sc.lander.pad.body.surface)});  // one pad on every leg
+    out.terrain.soils.push_back({name, model::MakeContactModel({.law = sc.ground.law, .soil = SoilFor(name, soils),
+                                                                .gravity_m_s2 = g, .model = sc.model ? &*sc.model : nullptr,
+                                                                .pad_surface = &sc.lander.pad.body.surface})});  // one pad on every leg
   return out;
 }
 

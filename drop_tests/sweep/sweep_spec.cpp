@@ -12,6 +12,7 @@
 #include "drop_tests/formats/output_path.h"
 #include "drop_tests/util/splitmix.h"
 #include "drop_tests/formats/yaml_fields.h"
+#include "drop_tests/model/contact_model.h"
 #include "drop_tests/scenario/lander_scenario_file.h"
 #include "drop_tests/sweep/sweep_drop.h"
 #include "rft/bekker_law.h"
@@ -712,8 +713,9 @@ SweepPlan LoadSweepPlan(const std::string& path, const std::string& model_overri
       const scenario::LanderSoilCatalog soils = scenario::LoadLanderSoils(*plan.lander, plan.soil_refs);
       scenario::BuildLanderSetup(*plan.lander, &soils);  // the scenario's own soils under the model
       for (const std::string& ref : plan.soil_refs)
-        model::MakeModelStressLaw3D(plan.lander->ground.law, soils.at(ref), plan.lander->gravity_m_s2, model,
-                                    &plan.lander->lander.pad.body.surface);
+        model::MakeContactModel({.law = plan.lander->ground.law, .soil = soils.at(ref),
+                                 .gravity_m_s2 = plan.lander->gravity_m_s2, .model = model,
+                                 .pad_surface = &plan.lander->lander.pad.body.surface});
     } catch (const InputError& e) {
       f.Fail("lander", e.what());
     }

@@ -101,8 +101,18 @@ void ReadBounds(const io::YamlFields& p, Parameter& out) {
                         Number(out.start));
 }
 
+ParameterPrior ReadPrior(const io::YamlFields& m, const Parameter& p) {
+  m.RequireOnly({"value", "sd", "source"});
+  ParameterPrior out{m.Number("value"), m.Number("sd"), m.String("source")};
+  if (out.value < p.lower || out.value > p.upper)
+    m.Fail("value", "must lie within [lower, upper] = [" + Number(p.lower) + ", " + Number(p.upper) + "], got " +
+                        Number(out.value));
+  if (!(out.sd > 0.0) || !std::isfinite(out.sd)) m.Fail("sd", "must be a positive finite number, got " + Number(out.sd));
+  return out;
+}
+
 Parameter ReadParameter(const io::YamlFields& p) {
-  p.RequireOnly({"name", "soil", "pad", "lander", "field", "lower", "upper", "start", "source"});
+  p.RequireOnly({"name", "soil", "pad", "lander", "field", "lower", "upper", "start", "source", "prior"});
   Parameter out;
   out.name = p.String("name");
   out.source = p.String("source");
@@ -162,6 +172,7 @@ Parameter ReadParameter(const io::YamlFields& p) {
     out.file = Canonical(ResolveNear(p, pad ? "pads" : "landers", pad ? "pad" : "lander"));
     CheckEditable(out, p);  // the field exists, and the file loads at lower, start and upper
   }
+  if (p.Has("prior")) out.prior = ReadPrior(p.Child("prior"), out);
   return out;
 }
 

@@ -42,6 +42,16 @@ enum class ParameterKind {
   kLanderField,  // a number of a lander file (e.g. legs.joint_radius_mm)
 };
 
+// A Gaussian prior on a parameter (`prior: {value, sd, source}`): the fit adds the residual
+// (x - value) / sd to the targets' (a maximum a posteriori fit; its covariance is the posterior's
+// Laplace approximation). For a parameter the targets alone cannot fix: a literature value and
+// its spread, stated with its source.
+struct ParameterPrior {
+  double value = 0.0;  // in the field's own unit, within [lower, upper]
+  double sd = 0.0;     // one standard deviation, > 0
+  std::string source;
+};
+
 struct Parameter {
   std::string name;
   ParameterKind kind = ParameterKind::kSoilZeta;
@@ -53,6 +63,7 @@ struct Parameter {
   std::string field;   // zeta_N_cm3, dynamic_lambda, bekker.<key>, or the dotted path in the pad or lander file
   double lower = 0.0, upper = 0.0, start = 0.0;  // in the field's own unit
   std::string source;
+  std::optional<ParameterPrior> prior;
   std::string Address() const;  // e.g. "pad curved: profile.a1_per_mm"
   const model::BekkerOverrideField* bekker = nullptr;  // kSoilBekker: which of the three
   bool IsSoil() const {

@@ -39,7 +39,9 @@ void SilenceCeresLogging() {
   FLAGS_minloglevel = google::GLOG_FATAL;
 }
 
-// The fitted targets' residuals for Ceres. Ceres is C code at heart for errors: an exception of a
+double PriorResidual(const ParameterPrior& prior, double x) { return (x - prior.value) / prior.sd; }
+
+// The fitted targets' residuals (and the priors') for Ceres. Ceres is C code at heart for errors: an exception of a
 // simulation is kept and rethrown after Solve (Ceres sees a failed evaluation and stops).
 class FitResiduals {
  public:
@@ -57,6 +59,8 @@ class FitResiduals {
       int k = 0;
       for (const Target& t : file_.targets)
         if (t.fit) residuals[k++] = Residual(t, Simulated(t, outcomes));
+      for (size_t i = 0; i < values.size(); ++i)
+        if (file_.parameters[i].prior) residuals[k++] = PriorResidual(*file_.parameters[i].prior, values[i]);
       return true;
     } catch (...) {
       failure_ = std::current_exception();
@@ -126,6 +130,13 @@ class BoundedDifferenceCost : public ceres::CostFunction {
 int FittedTargets(const TargetsFile& file) {
   int n = 0;
   for (const Target& t : file.targets) n += t.fit ? 1 : 0;
+  return n;
+}
+
+// The residuals the fit minimises: the fitted targets', then one per prior.
+int FitResidualCount(const TargetsFile& file) {
+  int n = FittedTargets(file);
+  for (const Parameter& p : file.parameters) n += p.prior ? 1 : 0;
   return n;
 }
 
@@ -212,7 +223,7 @@ void Solve(const TargetsFile& file, TargetEvaluator& evaluator, const TargetsFit
   SilenceCeresLogging();
   std::exception_ptr failure;
   const FitResiduals residuals(file, evaluator, fit_options, failure);
-  auto* cost = new BoundedDifferenceCost(residuals, int(x.size()), FittedTargets(file), file.settings.relative_step);
+  auto* cost = new BoundedDifferenceCost(residuals, int(x.size()), FitResidualCount(file), file.settings.relative_step);
   ceres::Problem problem;  // owns `cost`
   problem.AddResidualBlock(cost, nullptr, x.data());
   for (size_t i = 0; i < x.size(); ++i) {
@@ -258,7 +269,7 @@ TargetsFitResult FitTargets(const TargetsFile& file, const TargetsFitOptions& op
   std::vector<double> x;
   for (const Parameter& p : file.parameters) {
     x.push_back(ToFit(p, p.start));
-    result.parameters.push_back({p.start, AtBound(p, p.start), {}, {}, {}, ""});
+    result.parameters.push_back({p.start, AtBound(p, p.start), {}, {}, {}, "", {}});
   }
   if (x.empty() || FittedTargets(file) == 0) {
     result.termination = "no fit: " + std::string(x.empty() ? "no free parameters" : "no target has use: fit");
@@ -274,6 +285,11 @@ TargetsFitResult FitTargets(const TargetsFile& file, const TargetsFitOptions& op
     result.targets.push_back({simulated, r});
     if (t.fit) result.cost += 0.5 * r * r;
   }
+  for (size_t i = 0; i < x.size(); ++i)
+    if (const std::optional<ParameterPrior>& prior = file.parameters[i].prior) {
+      result.parameters[i].prior_residual = PriorResidual(*prior, x[i]);
+      result.cost += 0.5 * *result.parameters[i].prior_residual * *result.parameters[i].prior_residual;
+    }
   result.scenario_runs = evaluator.scenario_runs();
   return result;
 }

@@ -1,10 +1,12 @@
 #pragma once
 // The fit of a targets file: bounded least squares (Ceres: Levenberg-Marquardt, central-difference
 // derivatives, the parameters' bounds) of the residuals (simulated - value) / uncertainty of the
-// targets marked `use: fit` (a bound target is 0 inside its bound), then every target, fitted or
-// predicted, evaluated at the result. Intervals: Ceres' covariance of the normalised residuals,
-// (J^T J)^-1 at the solution (the targets' uncertainties taken as one standard deviation, not
-// rescaled by the residuals), over the parameters not at a bound; a parameter at a bound gets none.
+// targets marked `use: fit` (a bound target is 0 inside its bound) and (x - value) / sd of each
+// parameter's prior, then every target, fitted or predicted, evaluated at the result. Intervals:
+// the covariance of the normalised residuals, (J^T J)^-1 at the solution (the targets'
+// uncertainties taken as one standard deviation, not rescaled by the residuals; with priors, the
+// posterior's Laplace approximation), over the parameters not at a bound; a parameter at a bound
+// gets none.
 #include <functional>
 #include <optional>
 #include <string>
@@ -23,6 +25,7 @@ struct ParameterResult {
   std::optional<double> sigma;                // one standard deviation (file units)
   std::optional<double> low, high;            // value -+ z sigma at the file's confidence
   std::string interval_note;                  // why there is none, when there is none
+  std::optional<double> prior_residual;       // (value - prior) / prior sd, when it has a prior
 };
 
 struct TargetResult {
@@ -33,7 +36,7 @@ struct TargetResult {
 struct TargetsFitResult {
   std::vector<ParameterResult> parameters;
   std::vector<TargetResult> targets;
-  double cost = 0.0;            // 0.5 * sum of the fitted targets' squared residuals
+  double cost = 0.0;            // 0.5 * sum of the squared residuals: fitted targets' and priors'
   int iterations = 0;
   int scenario_runs = 0;        // simulations run (drops and landers; repeats are not rerun)
   std::string termination;      // Ceres' message ("no fit" when nothing is fitted)

@@ -14,6 +14,12 @@
 namespace touchdown::targets {
 
 namespace {
+bool HasPriors(const TargetsFile& file) {
+  for (const Parameter& p : file.parameters)
+    if (p.prior) return true;
+  return false;
+}
+
 const char* BoundName(ParameterResult::Bound b) {
   switch (b) {
     case ParameterResult::Bound::kLower: return "lower";
@@ -88,7 +94,10 @@ nlohmann::json CovarianceJson(const TargetsFile& file, const TargetsFitResult& f
   }
   return {{"meaning", "(J^T J)^-1 of the normalised residuals at the solution, in the parameters' file units, over the "
                       "parameters with an interval (not at a bound, determined); the targets' uncertainties taken as one "
-                      "standard deviation"},
+                      "standard deviation" +
+                          std::string(HasPriors(file) ? "; the parameters' priors are residuals too: the posterior's "
+                                                        "Laplace approximation"
+                                                      : "")},
           {"parameters", params},
           {"matrix", fit.covariance}};
 }
@@ -115,6 +124,9 @@ nlohmann::json TargetsReportJson(const TargetsFile& file, const TargetsFitResult
     } else {
       j["interval_note"] = r.interval_note;
     }
+    if (p.prior)
+      j["prior"] = {{"value", p.prior->value}, {"sd", p.prior->sd}, {"source", p.prior->source},
+                    {"residual", r.prior_residual.value_or(0.0)}};
     params.push_back(j);
   }
   for (size_t i = 0; i < file.targets.size(); ++i) {
@@ -134,7 +146,8 @@ nlohmann::json TargetsReportJson(const TargetsFile& file, const TargetsFitResult
   return {{"targets_file", file.source},
           {"name", file.name},
           {"method", "bounded least squares (Ceres, Levenberg-Marquardt, central differences, relative step " +
-                         std::to_string(file.settings.relative_step) + ") of (simulated - value) / uncertainty"},
+                         std::to_string(file.settings.relative_step) + ") of (simulated - value) / uncertainty" +
+                         (HasPriors(file) ? " and each prior's (value - prior) / sd" : "")},
           {"interval_method", "Ceres covariance of the normalised residuals, (J^T J)^-1 at the solution, value -+ z sigma"},
           {"confidence", file.settings.confidence},
           {"parameters", params},
@@ -167,6 +180,12 @@ std::string TargetsReportTable(const TargetsFile& file, const TargetsFitResult& 
                   BoundName(r.at_bound), interval);
     o << line;
   }
+  for (size_t i = 0; i < file.parameters.size(); ++i)
+    if (const std::optional<ParameterPrior>& prior = file.parameters[i].prior) {
+      std::snprintf(line, sizeof line, "prior of %s: %.6g +- %.6g (residual %.4g)\n", file.parameters[i].name.c_str(),
+                    prior->value, prior->sd, fit.parameters[i].prior_residual.value_or(0.0));
+      o << line;
+    }
   std::snprintf(line, sizeof line, "\n%-30s %-8s %16s %12s %10s\n", "target", "use", "value", "simulated", "residual");
   o << line;
   for (size_t i = 0; i < file.targets.size(); ++i) {
@@ -219,7 +238,12 @@ model::ModelFile TargetsModel(const TargetsFile& file, const TargetsFitResult& f
     y << YAML::Key << p.name << YAML::Value << YAML::BeginMap << YAML::Key << "address" << YAML::Value << p.Address()
       << YAML::Key << "value" << YAML::Value << values[i] << YAML::Key << "bounds" << YAML::Value << YAML::Flow
       << YAML::BeginSeq << p.lower << p.upper << YAML::EndSeq << YAML::Key << "at_bound" << YAML::Value
-      << BoundName(fit.parameters[i].at_bound) << YAML::Key << "apply" << YAML::Value << ApplyHint(p) << YAML::EndMap;
+      << BoundName(fit.parameters[i].at_bound);
+    if (p.prior)
+      y << YAML::Key << "prior" << YAML::Value << YAML::Flow << YAML::BeginMap << YAML::Key << "value" << YAML::Value
+        << p.prior->value << YAML::Key << "sd" << YAML::Value << p.prior->sd << YAML::Key << "source" << YAML::Value
+        << p.prior->source << YAML::EndMap;
+    y << YAML::Key << "apply" << YAML::Value << ApplyHint(p) << YAML::EndMap;
   }
   y << YAML::EndMap << YAML::EndMap;
   m.provenance_yaml = y.c_str();

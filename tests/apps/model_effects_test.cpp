@@ -17,6 +17,7 @@
 #include "drop_tests/gap/diagnose.h"
 #include "drop_tests/scenario/lander_scenario_file.h"
 #include "drop_tests/scenario/lander_setup.h"
+#include "drop_tests/model/contact_model.h"
 #include "drop_tests/model/model_file.h"
 #include "drop_tests/drop/pad_drop.h"
 #include "drop_tests/dataset/sensor_sampling.h"
@@ -276,7 +277,8 @@ TEST_F(ModelEffects, LanderSoilsCarryTheModelsTerms) {
   EXPECT_EQ(scenario::BuildLanderSetup(s).terrain.soils[0].contact.name(), "li2013+dynamic");  // the soil's own term
   rft::SoilParameters air = io::LoadSoil("fjs1_lp");
   air.atmosphere = rft::Atmosphere::kAir;
-  EXPECT_EQ(MakeModelStressLaw3D(rft::LawKind::kLi2013, air, 9.81, &*s.model).name(), "li2013+dynamic+gas_cushion");
+  EXPECT_EQ(MakeContactModel({.law = rft::LawKind::kLi2013, .soil = air, .gravity_m_s2 = 9.81, .model = &*s.model}).name(),
+            "li2013+dynamic+gas_cushion");
 }
 
 // compare --model with a sensor_offset: the simulated traces are shifted as the rig records them

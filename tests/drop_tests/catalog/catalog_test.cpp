@@ -383,7 +383,8 @@ TEST_F(CatalogFiles, AShelfHoldsOnlyItsType) {
   ASSERT_EQ(studies.size(), 1u);
   EXPECT_EQ(ShelfNames(studies[0]),
             (std::vector<std::string>{"lab_paper_lander", "lab_rare_event_agreement", "lunar_paper_lander",
-                                      "lunar_paper_lander_calibrated", "lunar_paper_lander_soil_uncertainty",
+                                      "lunar_paper_lander_calibrated", "lunar_paper_lander_calibrated_lambda",
+                                      "lunar_paper_lander_soil_lambda", "lunar_paper_lander_soil_uncertainty",
                                       "lunar_patchy_ground", "lunar_rare_tip_over"}));
   const std::vector<CatalogShelf> landers = ShelvesOf(InputDocument::kLander);
   ASSERT_EQ(landers.size(), 1u);
@@ -399,7 +400,8 @@ TEST_F(CatalogFiles, AShelfHoldsOnlyItsType) {
               std::string::npos)
         << message;
     EXPECT_NE(message.find("studies in " + DataDirectory() + "/studies: lab_paper_lander, lab_rare_event_agreement, "
-                           "lunar_paper_lander, lunar_paper_lander_calibrated, lunar_paper_lander_soil_uncertainty, "
+                           "lunar_paper_lander, lunar_paper_lander_calibrated, lunar_paper_lander_calibrated_lambda, "
+                           "lunar_paper_lander_soil_lambda, lunar_paper_lander_soil_uncertainty, "
                            "lunar_patchy_ground, lunar_rare_tip_over)"),
               std::string::npos)
         << message;

@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "drop_tests/drop/pad_drop.h"
+#include "drop_tests/model/contact_model.h"
 #include "drop_tests/model/effects.h"
 #include "footpad_geom/axisymmetric_profile.h"
 #include "rft/ground.h"
@@ -119,7 +120,7 @@ TEST(DropFactory, FreeDropRunsTheFactorysLaw) {
   c.tilt_rad = 0.1;
   const PadDrop drop = SimulateDrop(pad, soil, c, {});
   ASSERT_TRUE(drop.free.has_value());
-  const auto law = MakeFreeLaw(DropSoil(soil, c.zeta_N_m3, std::nullopt), std::nullopt, kMoonG, {}, "");
+  const auto law = model::MakeContactModel({.soil = DropSoil(soil, c.zeta_N_m3, std::nullopt), .gravity_m_s2 = kMoonG});
   EXPECT_EQ(drop.contact_model, law.name());
   EXPECT_EQ(drop.law_3d, law.law->kind());
   pad::FreeDropInput in;

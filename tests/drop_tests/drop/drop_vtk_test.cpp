@@ -10,6 +10,7 @@
 
 #include "drop_tests/drop/drop_factory.h"
 #include "drop_tests/drop/free_drop_output.h"
+#include "drop_tests/model/contact_model.h"
 #include "rft/element_stresses.h"
 #include "rft/input_error.h"
 #include "rft/units.h"
@@ -79,7 +80,8 @@ TEST_F(DropVtkTest, SeriesListsEverySampleWithItsTimeAndTheStressesAtThatPose) {
   ASSERT_EQ(pieces[0].Attribute("NumberOfPolys"), std::to_string(surface.size()));
   const DropConditions& c = drop_->conditions;
   const rft::SoilContactModel contact =
-      MakeFreeLaw(DropSoil(*soil_, c.zeta_N_m3, c.atmosphere), c.law_3d, c.gravity_m_s2, c.effects, "");
+      model::MakeContactModel({.law = c.law_3d, .soil = DropSoil(*soil_, c.zeta_N_m3, c.atmosphere),
+                               .gravity_m_s2 = c.gravity_m_s2, .effects = c.effects});
   const Eigen::Matrix3d R = Eigen::Quaterniond(s.q_WB[0], s.q_WB[1], s.q_WB[2], s.q_WB[3]).toRotationMatrix();
   rft::ElementStresses expected;
   rft::ComputeElementStresses(surface, {R, s.p_WB, s.v_WB_W, s.w_W}, rft::PlaneGround(), *contact.law,

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -104,12 +105,12 @@ TEST_F(SoilUncertaintyTest, LoadTimeValidationNamesFileAndField) {
 
 // The sample mean and covariance of the drawn parameters over landings 0..n-1.
 std::pair<Eigen::VectorXd, Eigen::MatrixXd> SampleMoments(const SoilUncertainty& u, int n) {
-  const Eigen::Index p = Eigen::Index(u.parameters.size());
-  Eigen::VectorXd sum = Eigen::VectorXd::Zero(p);
-  Eigen::MatrixXd outer = Eigen::MatrixXd::Zero(p, p);
+  const Eigen::Index m = Eigen::Index(u.parameters.size());
+  Eigen::VectorXd sum = Eigen::VectorXd::Zero(m);
+  Eigen::MatrixXd outer = Eigen::MatrixXd::Zero(m, m);
   for (int i = 0; i < n; ++i) {
     const std::vector<double> x = DrawSoilParameters(u, i);
-    const Eigen::VectorXd v = Eigen::Map<const Eigen::VectorXd>(x.data(), p);
+    const Eigen::VectorXd v = Eigen::Map<const Eigen::VectorXd>(x.data(), m);
     sum += v;
     outer += v * v.transpose();
   }
@@ -285,6 +286,55 @@ TEST_F(SoilUncertaintyTest, ABekkerFieldNeedsABekkerGroundAndAZetaAnRftOne) {
     on_bekker = e.what();
   }
   EXPECT_NE(on_bekker.find("draws zeta, which the ground's bekker law does not use"), std::string::npos) << on_bekker;
+}
+
+// The shipped study with lambda drawn: both soils name one report, so zeta CP and the two soils'
+// lambdas are one group, drawn with the report's covariance, cross-soil correlations included.
+TEST_F(SoilUncertaintyTest, TheShippedLambdaStudyDrawsBothSoilsFromOneJointNormal) {
+  const std::string dir = std::string(TOUCHDOWN_SOURCE_DIR) + "/data/";
+  const Study study = LoadStudy(dir + "studies/lunar_paper_lander_soil_lambda.yaml", "", 4);
+  const SoilUncertainty& u = *study.soil_uncertainty;
+  ASSERT_EQ(u.groups.size(), 1u);
+  ASSERT_EQ(u.parameters.size(), 3u);
+  EXPECT_EQ(u.parameters[0].column, "fjs1_cp_zeta_N_cm3");
+  EXPECT_EQ(u.parameters[1].column, "fjs1_cp_dynamic_lambda");
+  EXPECT_EQ(u.parameters[2].column, "fjs1_lp_dynamic_lambda");
+  std::ifstream in(dir + "soils/calibrations/sutoh2017_r1z_lambda.json");
+  const nlohmann::json report = nlohmann::json::parse(in)["covariance"];
+  // The report's rows: zeta_cp, curved_a1 (a pad field: not drawn), lambda_cp, lambda_lp.
+  const int rows[] = {0, 2, 3};
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b)
+      EXPECT_EQ(u.groups[0].covariance(a, b), report["matrix"][rows[a]][rows[b]].get<double>()) << a << "," << b;
+  // The lambdas lie 2.2 sd above 0, so 1-2 % of the normal's draws fall outside the box and are
+  // drawn again: the draws follow the joint normal truncated to the box. Its moments, from an
+  // independent sample (another generator), are the reference.
+  const Eigen::MatrixXd l = u.groups[0].lower;
+  const Eigen::Vector3d mu(u.parameters[0].mean, u.parameters[1].mean, u.parameters[2].mean);
+  std::mt19937_64 rng(7);
+  std::normal_distribution<double> normal;
+  const int n_ref = 200000;
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d outer = Eigen::Matrix3d::Zero();
+  for (int i = 0; i < n_ref;) {
+    const Eigen::Vector3d x = mu + l * Eigen::Vector3d(normal(rng), normal(rng), normal(rng));
+    if (!(x(0) > 0.0 && x(1) >= 0.0 && x(2) >= 0.0)) continue;
+    sum += x;
+    outer += x * x.transpose();
+    ++i;
+  }
+  const Eigen::Vector3d ref_mean = sum / n_ref;
+  const Eigen::Matrix3d ref_cov = (outer - n_ref * ref_mean * ref_mean.transpose()) / (n_ref - 1);
+  const int n = 20000;
+  const auto [mean, cov] = SampleMoments(u, n);
+  const double se = std::sqrt(1.0 / n + 1.0 / n_ref);
+  for (int a = 0; a < 3; ++a) EXPECT_NEAR(mean(a), ref_mean(a), 4 * std::sqrt(ref_cov(a, a)) * se) << a;
+  EXPECT_GT(ref_mean(1) - mu(1), 0.01);  // the truncation shows: lambda's mean moves up
+  // Lambda LP is drawn correlated with zeta CP (+0.65 in the report) though it is another soil's.
+  const auto rho = [](const Eigen::MatrixXd& c, int a, int b) { return c(a, b) / std::sqrt(c(a, a) * c(b, b)); };
+  EXPECT_GT(rho(u.groups[0].covariance, 0, 2), 0.5);
+  for (const auto& [a, b] : {std::pair{0, 1}, std::pair{0, 2}, std::pair{1, 2}})
+    EXPECT_NEAR(rho(cov, a, b), rho(ref_cov, a, b), 4.0 * se) << a << "," << b;
 }
 
 TEST_F(SoilUncertaintyTest, LambdaDrawsAreTruncatedAtZero) {

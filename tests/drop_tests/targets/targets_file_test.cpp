@@ -64,7 +64,8 @@ TEST_F(TargetsFileLoad, SharesScenariosAndFindsCampaignRowsAndLanders) {
 // scenario files found beside it.
 TEST_F(TargetsFileLoad, ShippedTargetsFilesLoad) {
   const std::string dir = std::string(TOUCHDOWN_SOURCE_DIR) + "/data/targets/";
-  for (const char* name : {"sutoh2017", "sutoh2017_r1", "sutoh2017_r1_single_footpad", "sutoh2017_r1_spots", "sutoh2017_r3"}) {
+  for (const char* name : {"sutoh2017", "sutoh2017_r1", "sutoh2017_r1_single_footpad", "sutoh2017_r1_spots", "sutoh2017_r3",
+                           "sutoh2017_lambda"}) {
     SCOPED_TRACE(name);
     const TargetsFile f = LoadTargetsFile(dir + name + ".yaml");
     EXPECT_FALSE(f.parameters.empty());
@@ -111,6 +112,39 @@ TEST_F(TargetsFileLoad, ShippedFilesEncodeTheirReading) {
   EXPECT_FALSE(r3.value.has_value());
   EXPECT_DOUBLE_EQ(*r3.at_least, 1.0);
   EXPECT_FALSE(r3.at_most.has_value());
+}
+
+// A parameter's prior is read with its source, and refused when it could not be a normal prior
+// of that parameter.
+TEST_F(TargetsFileLoad, ReadsAPriorAndRefusesABadOne) {
+  const std::string prior_lambda =
+      "  - {name: l, soil: fjs1_lp, field: dynamic_lambda, lower: 0, upper: 4, start: 1, source: s, prior: ";
+  const TargetsFile f = LoadTargetsFile(WriteTargets(prior_lambda + "{value: 1.1, sd: 0.5, source: lit}}\n", kGoodTarget));
+  ASSERT_TRUE(f.parameters[0].prior.has_value());
+  EXPECT_EQ(f.parameters[0].prior->value, 1.1);
+  EXPECT_EQ(f.parameters[0].prior->sd, 0.5);
+  EXPECT_EQ(f.parameters[0].prior->source, "lit");
+  EXPECT_FALSE(LoadTargetsFile(WriteTargets(kGoodParameter, kGoodTarget)).parameters[0].prior.has_value());
+  struct Case {
+    std::string prior, field, value;
+  };
+  const Case cases[] = {
+      {"{value: 4.5, sd: 0.5, source: lit}", "parameters[0].prior.value", "4.5"},  // outside [lower, upper]
+      {"{value: 1.1, sd: 0, source: lit}", "parameters[0].prior.sd", "0"},
+      {"{value: 1.1, sd: -0.5, source: lit}", "parameters[0].prior.sd", "-0.5"},
+      {"{value: 1.1, sd: 0.5, source: ''}", "parameters[0].prior.source", "non-empty"},
+      {"{value: 1.1, sd: 0.5}", "parameters[0].prior.source", "source"},
+      {"{value: 1.1, sd: 0.5, source: lit, weight: 2}", "parameters[0].prior", "weight"},
+      {"1.1", "parameters[0].prior", "mapping"},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.prior);
+    const std::string message = ErrorOf(prior_lambda + c.prior + "}\n", kGoodTarget);
+    EXPECT_NE(message.find("t.yaml"), std::string::npos) << message;
+    EXPECT_NE(message.find(c.field), std::string::npos) << message;
+    EXPECT_NE(message.find(c.value), std::string::npos) << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  }
 }
 
 TEST_F(TargetsFileLoad, RefusesBadEntriesNamingFileFieldAndValue) {

@@ -214,6 +214,64 @@ TEST_F(TargetsFit, LambdaAloneKeepsTheSoilsZetaBitForBit) {
   EXPECT_GT(deeper, plain.result.final_penetration_m);
 }
 
+// A prior is one more normalised residual: for one parameter near the solution the precisions add,
+// 1 / sigma^2 = 1 / sigma_targets^2 + 1 / sd^2, and the best value is the precision-weighted mean of
+// the targets' and the prior's (exact for a linear model; the depth's curvature over one sigma, about
+// 1 % of zeta, bounds the difference).
+TEST_F(TargetsFit, APriorAddsItsPrecisionAndPullsTheValueByItsWeight) {
+  const double d = RigDropAtZeta("flat", "fjs1_lp", 2.5).result.final_penetration_m;
+  const std::string target =
+      DropTarget("depth", "flat", "fjs1_lp", "final_penetration_m", "value: " + Num(d) + ", uncertainty: " + Num(0.01 * d));
+  const TargetsFitResult plain = FitTargets(Load(kZetaLp, target));
+  ASSERT_TRUE(plain.converged && plain.parameters[0].sigma) << plain.termination;
+  const double s0 = *plain.parameters[0].sigma;
+  EXPECT_FALSE(plain.parameters[0].prior_residual.has_value());
+  const auto with_prior = [&](double value, double sd) {
+    const std::string p = "  - {name: zeta_lp, soil: fjs1_lp, field: zeta_N_cm3, lower: 1.0, upper: 8.0, start: 4.0, "
+                          "source: test, prior: {value: " + Num(value) + ", sd: " + Num(sd) + ", source: test}}\n";
+    return Load(p, target);
+  };
+  // Prior at the targets' answer, as tight as they are: the value stays, sigma falls by sqrt(2).
+  const TargetsFitResult agree = FitTargets(with_prior(2.5, s0));
+  ASSERT_TRUE(agree.parameters[0].sigma.has_value());
+  EXPECT_NEAR(agree.parameters[0].value, 2.5, 1e-5);
+  EXPECT_NEAR(*agree.parameters[0].sigma, s0 / std::sqrt(2.0), 1e-4 * s0);
+  EXPECT_NEAR(*agree.parameters[0].prior_residual, 0.0, 1e-3);
+  // Prior one sigma above, three times as tight: the value moves 0.9 sigma up (weights 1 and 9).
+  const TargetsFitResult pulled = FitTargets(with_prior(2.5 + s0, s0 / 3.0));
+  ASSERT_TRUE(pulled.parameters[0].sigma.has_value());
+  EXPECT_NEAR(pulled.parameters[0].value, 2.5 + 0.9 * s0, 0.02 * s0);
+  EXPECT_NEAR(*pulled.parameters[0].sigma, s0 / std::sqrt(10.0), 0.02 * s0);
+  EXPECT_NEAR(*pulled.parameters[0].prior_residual, -0.3, 0.02);
+  // The cost holds both residuals: the target's (0.9 sigma) and the prior's (0.3).
+  EXPECT_NEAR(pulled.cost, 0.5 * (0.81 + 0.09), 0.02);
+  const nlohmann::json report = TargetsReportJson(with_prior(2.5 + s0, s0 / 3.0), pulled);
+  EXPECT_EQ(report["parameters"][0]["prior"]["sd"].get<double>(), s0 / 3.0);
+  EXPECT_EQ(report["parameters"][0]["prior"]["residual"].get<double>(), *pulled.parameters[0].prior_residual);
+}
+
+// Lambda and zeta from one depth: the targets fix only a combination of the two; a prior on lambda
+// makes both determined, lambda's interval no wider than the prior's.
+TEST_F(TargetsFit, APriorDeterminesWhatTheTargetsAloneCannot) {
+  const std::string target = DropTarget("depth", "flat", "fjs1_lp", "final_penetration_m",
+                                        "value: " + Num(RigDropAtLambda(2.5, 1.1, 1.0).result.final_penetration_m) +
+                                            ", uncertainty: 1.0e-4");
+  const std::string lambda =
+      "  - {name: lambda_lp, soil: fjs1_lp, field: dynamic_lambda, lower: 0.0, upper: 5.0, start: 1.1, source: test";
+  const TargetsFitResult free = FitTargets(Load(std::string(kZetaLp) + lambda + "}\n", target));
+  // Without the prior the fit slides along the ridge of equal depths until lambda meets a bound
+  // (measured: lambda 0, zeta 2.74): lambda gets no interval either way.
+  EXPECT_FALSE(free.parameters[1].sigma.has_value());
+  const TargetsFitResult held =
+      FitTargets(Load(std::string(kZetaLp) + lambda + ", prior: {value: 1.1, sd: 0.5, source: test}}\n", target));
+  ASSERT_TRUE(held.converged) << held.termination;
+  ASSERT_TRUE(held.parameters[0].sigma && held.parameters[1].sigma);
+  EXPECT_NEAR(held.parameters[0].value, 2.5, 1e-3);  // at the prior's lambda the depth is the truth's
+  EXPECT_NEAR(held.parameters[1].value, 1.1, 1e-3);
+  EXPECT_LE(*held.parameters[1].sigma, 0.5 * (1.0 + 1e-9));
+  EXPECT_EQ(held.covariance_parameters, (std::vector<size_t>{0, 1}));
+}
+
 TEST_F(TargetsFit, RecoversZetaAndACurvedProfileConstantJointly) {
   // The curved pad at a coarser profile and body (each evaluation reloads it: the test stays fast);
   // truth: zeta 2.5 and a1 = 0.045 /mm, the same pad copied with that constant.
