@@ -75,6 +75,9 @@ inline constexpr Range kDropHeight_m{"m", 0.0, kHeight_m.high, false};  // a rel
 // Bekker-Wong soils (rft/bekker_parameters.h), in the soil file's units: about 100 times the
 // stiffest soils tabulated (clays and LETE sand: k_phi up to 1e4 kN/m^(n+2), cohesion up to 100 kPa,
 // K up to 50 mm).
+// The sinkage exponent n: published soils lie about 0.5 to 1.5 (Wong's tables); 5 is far beyond,
+// and 0 would make the pressure independent of the depth (a plate held at any sinkage).
+inline constexpr Range kBekkerN{"(dimensionless)", 0.0, 5.0, true};
 inline constexpr Range kBekkerKc_kN_m_n1{"kN/m^(n+1)", 0.0, 1e6, false};
 inline constexpr Range kBekkerKphi_kN_m_n2{"kN/m^(n+2)", 0.0, 1e6, false};
 inline constexpr Range kCohesion_kPa{"kPa", 0.0, 1e4, false};

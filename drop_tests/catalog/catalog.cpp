@@ -66,7 +66,7 @@ rft::BekkerParameters ReadBekkerBlock(const YamlFields& f) {
   b.RequireOnly(known);
   rft::BekkerParameters out;
   ReadFields(b, BekkerFields(), out);
-  if (out.n > 5.0) b.Fail("n", "must be at most 5 (Bekker exponents are about 0.5 to 1.5)");
+  if (out.n > limits::kBekkerN.high) b.Fail("n", "must be at most 5 (Bekker exponents are about 0.5 to 1.5)");
   if (out.friction_angle_rad >= limits::kFrictionAngleBelow_deg * kDeg)
     b.Fail("friction_angle_deg", "must be below " + std::to_string(limits::kFrictionAngleBelow_deg));
   if (!(out.k_c_N_m_n1 + out.k_phi_N_m_n2 > 0.0)) b.Fail("k_phi_kN_m_n2", "k_c and k_phi cannot both be 0");

@@ -27,10 +27,32 @@ const io::FieldTable<SoilOverride>& OverrideNumberFields() {
   return fields;
 }
 
+// The override's `bekker:` block: any of the soil file's n, k_c_kN_m_n1, k_phi_kN_m_n2, in its units.
+void ReadBekkerOverride(const io::YamlFields& f, SoilOverride& o) {
+  const io::YamlFields b = f.Child("bekker");
+  std::vector<std::string> keys;
+  for (const BekkerOverrideField& e : BekkerOverrideFields()) keys.push_back(e.key);
+  b.RequireOnly(keys);
+  for (const BekkerOverrideField& e : BekkerOverrideFields()) {
+    if (!b.Has(e.key)) continue;
+    const double v = b.Number(e.key);
+    limits::Require(*e.range, v, b.file(), b.Path(e.key));
+    o.*e.member = v * e.si_per_unit;
+  }
+  if (!o.HasBekker()) f.Fail("bekker", "must give at least one of n, k_c_kN_m_n1, k_phi_kN_m_n2");
+}
+
 SoilOverride ReadOverride(const io::YamlFields& f) {
-  f.RequireOnly(io::FieldKeys(OverrideNumberFields(), {"zeta_interval_N_cm3", "confidence", "dynamic_lambda", "fit"}));
+  f.RequireOnly(io::FieldKeys(OverrideNumberFields(), {"zeta_interval_N_cm3", "confidence", "dynamic_lambda", "bekker", "fit"}));
   SoilOverride o;
-  io::ReadFields(f, OverrideNumberFields(), o);
+  // A Bekker soil's override may leave zeta out: the soil file's (often none) is kept.
+  if (f.Has("bekker")) ReadBekkerOverride(f, o);
+  if (!f.Has("bekker") || f.Has("zeta_N_cm3")) {
+    io::ReadFields(f, OverrideNumberFields(), o);
+  } else {
+    for (const char* key : {"reference_gravity_m_s2", "zeta_interval_N_cm3"})
+      if (f.Has(key)) f.Fail(key, "belongs to a zeta_N_cm3, which this override does not give");
+  }
   if (f.Has("dynamic_lambda")) {
     o.dynamic_lambda = f.Number("dynamic_lambda");
     limits::Require(limits::kDynamicLambda, *o.dynamic_lambda, f.file(), f.Path("dynamic_lambda"));
@@ -62,6 +84,21 @@ SoilOverride ReadOverride(const io::YamlFields& f) {
   return o;
 }
 }  // namespace
+
+const std::vector<BekkerOverrideField>& BekkerOverrideFields() {
+  static const std::vector<BekkerOverrideField> fields{
+      {"n", "n", "-", 1.0, &limits::kBekkerN, &SoilOverride::bekker_n},
+      {"k_c_kN_m_n1", "k_c", "kN/m^(n+1)", 1e3, &limits::kBekkerKc_kN_m_n1, &SoilOverride::bekker_k_c_N_m_n1},
+      {"k_phi_kN_m_n2", "k_phi", "kN/m^(n+2)", 1e3, &limits::kBekkerKphi_kN_m_n2, &SoilOverride::bekker_k_phi_N_m_n2},
+  };
+  return fields;
+}
+
+const BekkerOverrideField* FindBekkerOverrideField(std::string_view key) {
+  for (const BekkerOverrideField& e : BekkerOverrideFields())
+    if (key == e.key) return &e;
+  return nullptr;
+}
 
 ModelFile LoadModelFile(const std::string& path) {
   const io::YamlFields f = io::YamlFields::LoadFile(path);
@@ -99,12 +136,18 @@ void WriteModelFile(const ModelFile& m, const io::OutputTarget& target, const st
   y << YAML::Key << "soils" << YAML::Value << YAML::BeginMap;
   for (const auto& [name, o] : m.soils) {
     y << YAML::Key << name << YAML::Value << YAML::BeginMap;
-    io::WriteFields(y, OverrideNumberFields(), o);
+    if (o.zeta_N_m3 > 0.0 || !o.HasBekker()) io::WriteFields(y, OverrideNumberFields(), o);
     if (o.zeta_low_N_m3 && o.zeta_high_N_m3)
       y << YAML::Key << "zeta_interval_N_cm3" << YAML::Value << YAML::Flow << YAML::BeginSeq
         << units::ZetaToN_cm3(*o.zeta_low_N_m3) << units::ZetaToN_cm3(*o.zeta_high_N_m3) << YAML::EndSeq << YAML::Key << "confidence"
         << YAML::Value << o.confidence;
     if (o.dynamic_lambda) y << YAML::Key << "dynamic_lambda" << YAML::Value << *o.dynamic_lambda;
+    if (o.HasBekker()) {
+      y << YAML::Key << "bekker" << YAML::Value << YAML::BeginMap;
+      for (const BekkerOverrideField& e : BekkerOverrideFields())
+        if (o.*e.member) y << YAML::Key << e.key << YAML::Value << *(o.*e.member) / e.si_per_unit;
+      y << YAML::EndMap;
+    }
     if (o.fit) {
       y << YAML::Key << "fit" << YAML::Value << YAML::BeginMap << YAML::Key << "method" << YAML::Value << o.fit->method
         << YAML::Key << "drops" << YAML::Value << o.fit->drops << YAML::Key << "samples" << YAML::Value
@@ -131,9 +174,12 @@ rft::SoilParameters ApplyModel(const ModelFile& m, const rft::SoilParameters& so
   const SoilOverride& o = it->second;
   // The model's zeta holds at its own reference gravity; the soil keeps its reference. The soil's
   // own zeta (a model that calibrates only lambda carries it) is kept without a round trip.
-  if (o.zeta_N_m3 != soil.zeta_N_m3 || o.reference_gravity_m_s2 != soil.reference_gravity_m_s2)
+  if (o.zeta_N_m3 > 0.0 && (o.zeta_N_m3 != soil.zeta_N_m3 || o.reference_gravity_m_s2 != soil.reference_gravity_m_s2))
     out.SetZetaAtGravity(o.zeta_N_m3, o.reference_gravity_m_s2);
   if (o.dynamic_lambda) out.dynamic_lambda = *o.dynamic_lambda;
+  if (o.bekker_n) out.bekker.n = *o.bekker_n;
+  if (o.bekker_k_c_N_m_n1) out.bekker.k_c_N_m_n1 = *o.bekker_k_c_N_m_n1;
+  if (o.bekker_k_phi_N_m_n2) out.bekker.k_phi_N_m_n2 = *o.bekker_k_phi_N_m_n2;
   return out;
 }
 
@@ -156,8 +202,11 @@ std::string ModelDigestText(const ModelFile& m) {
   std::string s = "model:" + m.name + ";";
   for (const auto& [name, o] : m.soils)
   {
-    s += name + "=" + io::FormatNumber(o.zeta_N_m3) + "@" + io::FormatNumber(o.reference_gravity_m_s2) + ";";
+    if (o.zeta_N_m3 > 0.0 || !o.HasBekker())
+      s += name + "=" + io::FormatNumber(o.zeta_N_m3) + "@" + io::FormatNumber(o.reference_gravity_m_s2) + ";";
     if (o.dynamic_lambda) s += name + ".dynamic_lambda=" + io::FormatNumber(*o.dynamic_lambda) + ";";
+    for (const BekkerOverrideField& e : BekkerOverrideFields())
+      if (o.*e.member) s += name + ".bekker." + e.key + "=" + io::FormatNumber(*(o.*e.member)) + ";";
   }
   if (m.HasEffects()) s += "effects:" + YAML::Dump(EffectsToYaml(m.effects, m.effect_intervals));
   return s;

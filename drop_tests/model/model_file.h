@@ -11,6 +11,8 @@
 //       reference_gravity_m_s2: 9.81
 //       zeta_interval_N_cm3: [3.52, 3.70]   # optional confidence interval
 //       dynamic_lambda: 1.3     # optional: replaces the soil file's dynamic_lambda
+//     fjs1_cp_bekker:           # a Bekker soil: zeta_N_cm3 may be absent (the soil file's kept)
+//       bekker: {n: 1.02, k_c_kN_m_n1: 0.5, k_phi_kN_m_n2: 10100}   # each optional, the soil file's keys and units
 //       confidence: 0.95
 //       fit: {method: ..., drops: 6, samples: 240, residual_rms_N: 4.1, dataset: ...}   # optional record
 //   effects:                    # effect terms beyond quasi-static RFT (drop_tests/model/effects.h)
@@ -37,6 +39,7 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include "drop_tests/model/effects.h"
+#include "rft/physical_limits.h"
 #include "drop_tests/formats/output_path.h"
 #include "rft/gravity_constants.h"
 #include "rft/soil.h"
@@ -53,7 +56,9 @@ struct SoilFit {
 };
 
 struct SoilOverride {
-  double zeta_N_m3 = 0.0;                 // at reference_gravity_m_s2
+  // At reference_gravity_m_s2. 0: none (an override of a Bekker soil may carry only its bekker
+  // fields; the soil file's zeta, possibly none, is kept). A zeta a soil holds is never 0.
+  double zeta_N_m3 = 0.0;
   double reference_gravity_m_s2 = rft::kEarthGravity_m_s2;
   std::optional<double> zeta_low_N_m3;    // confidence interval, both or neither
   std::optional<double> zeta_high_N_m3;
@@ -61,8 +66,26 @@ struct SoilOverride {
   // The soil's dynamic-term coefficient (rft/soil.h dynamic_lambda) when calibrated; none: the
   // soil file's. Acts only on a soil whose dynamic term is on.
   std::optional<double> dynamic_lambda;
+  // A Bekker soil's pressure-sinkage parameters (rft/bekker_parameters.h, SI) when calibrated; each
+  // none: the soil file's. They act where the soil runs on the bekker law.
+  std::optional<double> bekker_n, bekker_k_c_N_m_n1, bekker_k_phi_N_m_n2;
   std::optional<SoilFit> fit;
+  bool HasBekker() const { return bekker_n || bekker_k_c_N_m_n1 || bekker_k_phi_N_m_n2; }
 };
+
+// The Bekker fields an override carries, in one table for the model file, `calibrate --targets`
+// (`field: bekker.<key>`) and a study's drawn soil (drop_tests/stability/soil_uncertainty.h).
+struct BekkerOverrideField {
+  const char* key;         // in the soil file's bekker block: n, k_c_kN_m_n1, k_phi_kN_m_n2
+  const char* short_name;  // n, k_c, k_phi (a calibration report's kind soil_bekker_<short_name>)
+  const char* unit;        // of the file's value
+  double si_per_unit;      // SI value = file value * si_per_unit
+  const limits::Range* range;  // the file value's physical range
+  std::optional<double> SoilOverride::*member;
+};
+const std::vector<BekkerOverrideField>& BekkerOverrideFields();
+// The entry of `key` (n, k_c_kN_m_n1, k_phi_kN_m_n2), or null.
+const BekkerOverrideField* FindBekkerOverrideField(std::string_view key);
 
 struct ModelFile {
   std::string source;  // the file it was read from ("" when built in memory)
@@ -85,7 +108,8 @@ inline constexpr const char* kModelFileMark = "# touchdown model file (written b
 void WriteModelFile(const ModelFile& model, const io::OutputTarget& target, const std::string& output_dir = "");
 // The soil as the model sees it: its zeta replaced when the model has an override (converted to
 // the soil's own reference gravity; a zeta equal to the soil's own at the same reference gravity is
-// kept as it is), and its dynamic_lambda when the override has one. Effect terms are not part of the soil: see ModelEffectTerms.
+// kept as it is; none kept when the override has none), its dynamic_lambda and Bekker fields
+// when the override has them. Effect terms are not part of the soil: see ModelEffectTerms.
 rft::SoilParameters ApplyModel(const ModelFile& model, const rft::SoilParameters& soil);
 // The model's effects flattened (none when `effects` is empty). Throws InputError naming the
 // model file on a repeated effect or a value out of range (a model built in memory).

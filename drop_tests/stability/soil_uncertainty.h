@@ -1,6 +1,6 @@
 #pragma once
 // A stability study's soil uncertainty: each named soil's parameters that a calibration holds (its
-// zeta, its dynamic term's dynamic_lambda, or both) drawn, landing by landing, from the joint normal
+// zeta, its dynamic term's dynamic_lambda, a Bekker soil's n, k_c and k_phi; any of them) drawn, landing by landing, from the joint normal
 // distribution the calibration reports (`touchdown calibrate --targets ... --report
 // R.json`: the best values and their covariance, drop_tests/targets/targets_fit.h), instead of
 // the fixed number of its soil file:
@@ -13,7 +13,8 @@
 // included); soils from different files independently. Draws are counter-based, keyed by (the
 // study's seed, the landing's index, the parameter, the attempt), so a landing's soil follows from
 // its index alone, on any thread, rank or shard. A draw outside the parameters' physical range
-// (rft/physical_limits.h: zeta in (0, 1e4] N/cm^3, dynamic_lambda in [0, 100]) is drawn again
+// (rft/physical_limits.h: zeta in (0, 1e4] N/cm^3, dynamic_lambda in [0, 100], Bekker's n in
+// (0, 5], k_c and k_phi in [0, 1e6] in the soil file's kN units) is drawn again
 // (rejection: the normal truncated to the range); after kMaxDrawAttempts rejected draws the landing
 // takes the best values.
 //
@@ -51,13 +52,26 @@ inline constexpr int kMaxUncertainParameters = 64;
 enum class SoilField {
   kZeta,           // zeta_N_cm3 [N/cm^3] at reference_gravity_m_s2 (kind soil_zeta)
   kDynamicLambda,  // dynamic_lambda [-] (kind soil_dynamic_lambda)
+  kBekkerN,        // bekker.n [-] (kind soil_bekker_n)
+  kBekkerKc,       // bekker.k_c_kN_m_n1 [kN/m^(n+1)] (kind soil_bekker_k_c)
+  kBekkerKphi,     // bekker.k_phi_kN_m_n2 [kN/m^(n+2)] (kind soil_bekker_k_phi)
 };
+inline constexpr SoilField kSoilFields[] = {SoilField::kZeta, SoilField::kDynamicLambda, SoilField::kBekkerN,
+                                            SoilField::kBekkerKc, SoilField::kBekkerKphi};
+// How a field is named and bounded: the calibration report's kind, the outputs' column after
+// "<soil>_", the unit of its values and its physical range (rft/physical_limits.h).
+struct SoilFieldInfo {
+  std::string kind, column_suffix, unit;
+  const limits::Range* range;
+  const model::BekkerOverrideField* bekker;  // the Bekker fields': the model override's entry
+};
+const SoilFieldInfo& InfoOf(SoilField f);
 
 struct UncertainParameter {
   std::string soil;         // the soil's name, as the lander's ground names it
   std::string name;         // the calibration's parameter name, e.g. zeta_cp
   SoilField field = SoilField::kZeta;
-  std::string column;       // its column in the outputs: "<soil>_zeta_N_cm3", "<soil>_dynamic_lambda"
+  std::string column;       // its column in the outputs: "<soil>_zeta_N_cm3", "<soil>_dynamic_lambda", "<soil>_bekker_n"...
   double mean = 0.0;        // in the field's unit (the calibration's best value)
   double sigma = 0.0;       // one standard deviation, same unit
   double reference_gravity_m_s2 = 0.0;  // zeta's; for lambda the soil file's
@@ -68,7 +82,6 @@ struct UncertainParameter {
   bool low_open = false;  // low itself excluded
   bool fit_bounded = false;  // the box is narrowed to the calibration's bounds
 };
-const char* SoilFieldUnit(SoilField f);  // "N/cm^3", "-"
 
 struct CalibrationGroup {  // the parameters taken from one calibration file, drawn jointly
   std::string file;
@@ -91,14 +104,16 @@ enum class SoilTruncation {
 
 // Reads the study block's `soil_uncertainty` (the mapping soil name -> {calibration: FILE}) against
 // the study's plan: every soil one its landings' ground holds, every file a calibration report with
-// a covariance holding that soil's zeta or dynamic_lambda (positive definite over those drawn), a
-// drawn lambda only on a soil whose dynamic term is on. InputError naming the file and field.
+// a covariance holding that soil's zeta, dynamic_lambda or Bekker fields (positive definite over
+// those drawn), a drawn zeta only where the ground's law uses zeta, a drawn lambda only on a soil
+// whose dynamic term is on, a drawn Bekker field only where the soil runs on the bekker law.
+// InputError naming the file and field.
 SoilUncertainty ReadSoilUncertainty(const io::YamlFields& study_block, const sweep::SweepPlan& plan);
 
-// The parameters landing `index` runs with, in file units (N/cm^3, -), in `parameters` order.
+// The parameters landing `index` runs with, in file units (N/cm^3, -, kN/m^(n+1), kN/m^(n+2)), in `parameters` order.
 std::vector<double> DrawSoilParameters(const SoilUncertainty& u, int64_t index);
 // The same as the soil overrides a lander run takes (sweep::SweepPlan::soil_overrides_at): zeta, and
-// dynamic_lambda where drawn (a soil with only lambda drawn keeps its file's zeta).
+// dynamic_lambda and the Bekker fields where drawn (a soil whose zeta is not drawn keeps its file's).
 std::map<std::string, model::SoilOverride> SoilOverrides(const SoilUncertainty& u, const std::vector<double>& drawn);
 // What the draws depend on, for the plan's variant (and so its digest): soils, best values, covariances.
 std::string SoilUncertaintyDigestText(const SoilUncertainty& u);

@@ -12,6 +12,17 @@
 
 namespace touchdown::stability {
 
+const SoilFieldInfo& InfoOf(SoilField f) {
+  static const std::vector<SoilFieldInfo> infos = [] {
+    std::vector<SoilFieldInfo> out{{"soil_zeta", "zeta_N_cm3", "N/cm^3", &limits::kZeta_N_cm3, nullptr},
+                                   {"soil_dynamic_lambda", "dynamic_lambda", "-", &limits::kDynamicLambda, nullptr}};
+    for (const model::BekkerOverrideField& e : model::BekkerOverrideFields())
+      out.push_back({std::string("soil_bekker_") + e.short_name, std::string("bekker_") + e.key, e.unit, e.range, &e});
+    return out;
+  }();
+  return infos.at(size_t(f));
+}
+
 namespace {
 bool InsideBoxes(const SoilUncertainty& u, const std::vector<double>& x, const std::vector<size_t>& which) {
   for (const size_t k : which) {
@@ -21,8 +32,6 @@ bool InsideBoxes(const SoilUncertainty& u, const std::vector<double>& x, const s
   return true;
 }
 }  // namespace
-
-const char* SoilFieldUnit(SoilField f) { return f == SoilField::kZeta ? "N/cm^3" : "-"; }
 
 std::vector<double> DrawSoilParameters(const SoilUncertainty& u, int64_t index) {
   std::vector<double> x(u.parameters.size());
@@ -59,6 +68,8 @@ std::map<std::string, model::SoilOverride> SoilOverrides(const SoilUncertainty& 
     if (q.field == SoilField::kZeta) {
       o.zeta_N_m3 = units::ZetaFromN_cm3(drawn[k]);
       o.reference_gravity_m_s2 = q.reference_gravity_m_s2;
+    } else if (const model::BekkerOverrideField* b = InfoOf(q.field).bekker) {
+      o.*b->member = drawn[k] * b->si_per_unit;
     } else {
       o.dynamic_lambda = drawn[k];
     }
@@ -74,8 +85,10 @@ std::string SoilUncertaintyDigestText(const SoilUncertainty& u) {
       const UncertainParameter& p = u.parameters[k];
       if (p.field == SoilField::kZeta)
         s += p.soil + "=" + io::FormatNumber(p.mean) + "@" + io::FormatNumber(p.reference_gravity_m_s2) + ";";
-      else
+      else if (p.field == SoilField::kDynamicLambda)
         s += p.soil + ".dynamic_lambda=" + io::FormatNumber(p.mean) + ";";
+      else
+        s += p.soil + "." + InfoOf(p.field).column_suffix + "=" + io::FormatNumber(p.mean) + ";";
       // A box narrowed to the fit's bounds draws other values: another plan.
       if (p.fit_bounded) s += "in[" + io::FormatNumber(p.low) + "," + io::FormatNumber(p.high) + "];";
     }

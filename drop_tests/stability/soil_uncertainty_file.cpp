@@ -99,14 +99,14 @@ CalibrationCovariance ReadCovariance(const nlohmann::json& report, const std::st
   return out;
 }
 
-// The rows in the calibration's covariance of soil `soil`'s parameters a study draws (its zeta
-// first, then its dynamic_lambda), each with its field.
+// The rows in the calibration's covariance of soil `soil`'s parameters a study draws (in
+// kSoilFields order: zeta, dynamic_lambda, Bekker's n, k_c, k_phi), each with its field.
 std::vector<std::pair<size_t, SoilField>> SoilRowsOf(const CalibrationCovariance& c, const std::string& soil,
                                                      const std::string& file) {
   std::vector<std::pair<size_t, SoilField>> found;
   std::set<std::string> soils;
-  for (const SoilField field : {SoilField::kZeta, SoilField::kDynamicLambda}) {
-    const char* kind = field == SoilField::kZeta ? "soil_zeta" : "soil_dynamic_lambda";
+  for (const SoilField field : kSoilFields) {
+    const std::string& kind = InfoOf(field).kind;
     size_t count = 0;
     for (size_t a = 0; a < c.parameters.size(); ++a) {
       const nlohmann::json& p = c.parameters[a];
@@ -118,12 +118,12 @@ std::vector<std::pair<size_t, SoilField>> SoilRowsOf(const CalibrationCovariance
     }
     if (count > 1)
       throw MakeInputError(file, "covariance.parameters",
-                           "has the " + std::string(field == SoilField::kZeta ? "zeta" : "dynamic_lambda") + " of soil '" +
+                           "has the " + (field == SoilField::kZeta ? std::string("zeta") : InfoOf(field).column_suffix) + " of soil '" +
                                soil + "' more than once");
   }
   if (found.empty())
     throw MakeInputError(file, "covariance.parameters",
-                         "has no interval for the zeta or dynamic_lambda of soil '" + soil + "' (its soils with one: " +
+                         "has no interval for the zeta, dynamic_lambda or Bekker fields of soil '" + soil + "' (its soils with one: " +
                              (soils.empty() ? std::string("none") : Joined(soils)) +
                              "; a parameter at a bound or held fixed gets none)");
   return found;
@@ -141,7 +141,7 @@ SoilTruncation ReadTruncation(const io::YamlFields& f) {
 // meaningful; the normal of the covariance does not know them.
 void SetBox(UncertainParameter& q, const nlohmann::json& entry, SoilTruncation truncation, const std::string& file,
             const std::string& at) {
-  const limits::Range& r = q.field == SoilField::kZeta ? limits::kZeta_N_cm3 : limits::kDynamicLambda;
+  const limits::Range& r = *InfoOf(q.field).range;
   q.low = r.low;
   q.high = r.high;
   q.low_open = r.low_open;
@@ -167,6 +167,10 @@ SoilUncertainty ReadSoilUncertainty(const io::YamlFields& study_block, const swe
   if (!node.IsMap() || node.size() == 0)
     study_block.Fail(key, "must be a mapping of soil names to {calibration: FILE.json}");
   const bool bekker_ground = plan.lander && plan.lander->ground.law == rft::LawKind::kBekker;
+  // Where a soil's Bekker fields act: a lander's ground law decides for every soil of its ground.
+  const auto runs_bekker = [&](const rft::SoilParameters& s) {
+    return plan.lander ? bekker_ground : s.rft_law_3d == rft::LawKind::kBekker;
+  };
   const std::map<std::string, rft::SoilParameters> soils = StudySoils(plan);
   std::set<std::string> names;
   for (const auto& [name, soil] : soils) names.insert(name);
@@ -202,6 +206,14 @@ SoilUncertainty ReadSoilUncertainty(const io::YamlFields& study_block, const swe
         q.reference_gravity_m_s2 = c.parameters[row].value("reference_gravity_m_s2", rft::kEarthGravity_m_s2);
         limits::Require(limits::kZeta_N_cm3, q.mean, path, at + ".value");
         limits::Require(limits::kGravity_m_s2, q.reference_gravity_m_s2, path, at + ".reference_gravity_m_s2");
+      } else if (const model::BekkerOverrideField* b = InfoOf(field).bekker) {
+        // As a drawn lambda: a Bekker field no landing uses would only look like uncertainty carried through.
+        if (!runs_bekker(soil_file))
+          f.Fail("calibration", path + " holds the bekker." + b->key + " of soil '" + soil +
+                                    "', which this study's landings do not run on the bekker law");
+        q.column = soil + "_" + InfoOf(field).column_suffix;
+        q.reference_gravity_m_s2 = soil_file.reference_gravity_m_s2;
+        limits::Require(*b->range, q.mean, path, at + ".value");
       } else {
         // A drawn lambda that no landing uses would only look like uncertainty carried through.
         if (!soil_file.dynamic_term)

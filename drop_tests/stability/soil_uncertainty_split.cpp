@@ -123,19 +123,27 @@ nlohmann::json SoilSplitJson(const SoilUncertainty& u, const std::optional<SoilS
   nlohmann::json params = nlohmann::json::array();
   for (const UncertainParameter& q : u.parameters)
     params.push_back({{"soil", q.soil}, {"parameter", q.name}, {"column", q.column}, {"mean", q.mean}, {"sigma", q.sigma},
-                      {"unit", SoilFieldUnit(q.field)}, {"reference_gravity_m_s2", q.reference_gravity_m_s2},
+                      {"unit", InfoOf(q.field).unit}, {"reference_gravity_m_s2", q.reference_gravity_m_s2},
                       {"drawn_within", {q.low, q.high}},
                       {"truncated_to", q.fit_bounded ? "the calibration's fit bounds" : "the physical range"}});
-  bool lambda = false;
-  for (const UncertainParameter& q : u.parameters) lambda = lambda || q.field == SoilField::kDynamicLambda;
+  bool lambda = false, bekker = false, zeta = false;
+  for (const UncertainParameter& q : u.parameters) {
+    zeta = zeta || q.field == SoilField::kZeta;
+    lambda = lambda || q.field == SoilField::kDynamicLambda;
+    bekker = bekker || InfoOf(q.field).bekker;
+  }
+  // The physical ranges of the fields drawn.
+  std::string ranges = std::string("the physical range (") + (zeta ? "zeta (0, 1e4] N/cm^3, " : "") +
+                       (lambda ? "dynamic_lambda [0, 100], " : "") +
+                       (bekker ? "Bekker's n (0, 5], k_c [0, 1e6] kN/m^(n+1), k_phi [0, 1e6] kN/m^(n+2), " : "");
+  ranges = ranges.substr(0, ranges.size() - 2) + ")";
   nlohmann::json files = nlohmann::json::array();
   for (const CalibrationGroup& g : u.groups) files.push_back(g.file);
   nlohmann::json out{{"parameters", params},
                      {"calibrations", files},
                      {"draws", "per landing from the joint normal of each calibration (Cholesky factor of its covariance), "
                                "counter-based on (seed, landing index); a draw outside a parameter's `drawn_within` (the "
-                               "calibration's fit bounds within the physical range, zeta (0, 1e4] N/cm^3" +
-                               std::string(lambda ? ", dynamic_lambda [0, 100]" : "") + "; the physical range alone with "
+                               "calibration's fit bounds within " + ranges + "; the physical range alone with "
                                "`truncate: physical_limits`) drawn again, up to " +
                                std::to_string(kMaxDrawAttempts) + " times, then the best values"},
                      {"split_method",
@@ -158,7 +166,7 @@ nlohmann::json SoilSplitJson(const SoilUncertainty& u, const std::optional<SoilS
                       {"soil_share", s.soil_share},
                       {"soil_share_interval_95", {s.soil_share_low, s.soil_share_high}},
                       {"conditions_share", 1.0 - s.soil_share},
-                      {lambda ? "slope_per_unit" : "slope_per_N_cm3", slopes}});
+                      {lambda || bekker ? "slope_per_unit" : "slope_per_N_cm3", slopes}});
   }
   out["variance_split"] = shares;
   nlohmann::json ends = nlohmann::json::object();

@@ -81,6 +81,7 @@ bool Changes(const Parameter& p, const ScenarioRun& run) {
   switch (p.kind) {
     case ParameterKind::kSoilZeta:
     case ParameterKind::kSoilDynamicLambda:
+    case ParameterKind::kSoilBekker:
       if (!lander) return run.soil.name == p.soil_name;
       for (const std::string& name : GroundSoilNames(*run.lander))
         if (name == p.soil_name) return true;
@@ -107,12 +108,14 @@ model::ModelFile SoilModel(const std::vector<Parameter>& parameters, const std::
     if (!p.IsSoil()) continue;
     const auto [it, added] = m.soils.try_emplace(p.soil_name);
     model::SoilOverride& o = it->second;
-    if (added) {  // the soil's own zeta until a zeta parameter replaces it
+    if (added) {  // the soil's own zeta (none for a Bekker soil without) until a zeta parameter replaces it
       o.zeta_N_m3 = p.soil_zeta_N_m3;
       o.reference_gravity_m_s2 = p.soil_reference_gravity_m_s2;
     }
     if (p.kind == ParameterKind::kSoilZeta)
       o.zeta_N_m3 = units::ZetaFromN_cm3(values[i]);
+    else if (p.kind == ParameterKind::kSoilBekker)
+      o.*p.bekker->member = values[i] * p.bekker->si_per_unit;
     else
       o.dynamic_lambda = values[i];
   }

@@ -1,7 +1,7 @@
 #pragma once
 // The free parameters applied in memory: a pad or lander file read once, its number at a dotted
 // path replaced and the copy loaded by the catalogue's own loader (so it is validated as the file
-// would be); a soil's zeta and dynamic_lambda as a model file's override (the form `--model` takes). The user's files
+// would be); a soil's zeta, dynamic_lambda and Bekker fields as a model file's override (the form `--model` takes). The user's files
 // are never written.
 #include <map>
 #include <memory>
@@ -24,7 +24,7 @@ bool Changes(const Parameter& p, const ScenarioRun& run);
 bool ChangesAnyScenario(const Parameter& p, const std::vector<ScenarioRun>& scenarios);
 
 // The model file that carries the soil parameters (zeta in N/cm^3 at each soil's reference gravity,
-// dynamic_lambda); a soil with only lambda free keeps its file's zeta.
+// dynamic_lambda, Bekker fields in SI); a soil without its zeta free keeps its file's zeta.
 model::ModelFile SoilModel(const std::vector<Parameter>& parameters, const std::vector<double>& values);
 
 class ObjectEditor {

@@ -96,7 +96,7 @@ ScenarioOutcome TargetEvaluator::RunScenario(size_t index, const std::vector<dou
     s.model = SoilModel(file_.parameters, values);
     return LanderOutcome(scenario::RunLanderScenario(s));
   }
-  // The drop's soil under the same model as a lander's (its lambda); zeta goes in as the drop's
+  // The drop's soil under the same model as a lander's (its lambda and Bekker fields); zeta goes in as the drop's
   // own override, stated at the soil's reference gravity like a catalogue zeta.
   const rft::SoilParameters soil = model::ApplyModel(SoilModel(file_.parameters, values), run.soil);
   drop::DropConditions conditions = run.conditions;

@@ -123,9 +123,18 @@ Parameter ReadParameter(const io::YamlFields& p) {
   if (p.Has("soil")) {
     out.object = p.String("soil");
     out.file = ResolveNear(p, "soils", "soil");
-    if (out.field != "zeta_N_cm3" && out.field != "dynamic_lambda")
-      p.Fail("field", "a soil parameter is zeta_N_cm3 or dynamic_lambda, got '" + out.field + "'");
-    out.kind = out.field == "zeta_N_cm3" ? ParameterKind::kSoilZeta : ParameterKind::kSoilDynamicLambda;
+    const std::string bekker_prefix = "bekker.";
+    if (out.field.rfind(bekker_prefix, 0) == 0) {
+      out.bekker = model::FindBekkerOverrideField(out.field.substr(bekker_prefix.size()));
+      if (!out.bekker)
+        p.Fail("field", "a Bekker soil parameter is bekker.n, bekker.k_c_kN_m_n1 or bekker.k_phi_kN_m_n2, got '" + out.field + "'");
+      out.kind = ParameterKind::kSoilBekker;
+    } else if (out.field == "zeta_N_cm3" || out.field == "dynamic_lambda") {
+      out.kind = out.field == "zeta_N_cm3" ? ParameterKind::kSoilZeta : ParameterKind::kSoilDynamicLambda;
+    } else {
+      p.Fail("field", "a soil parameter is zeta_N_cm3, dynamic_lambda or bekker.n, bekker.k_c_kN_m_n1, "
+                      "bekker.k_phi_kN_m_n2, got '" + out.field + "'");
+    }
     rft::SoilParameters soil;
     try {
       soil = io::LoadSoil(out.file);
@@ -143,10 +152,15 @@ Parameter ReadParameter(const io::YamlFields& p) {
     if (out.kind == ParameterKind::kSoilDynamicLambda && !(soil.zeta_N_m3 > 0.0))
       p.Fail("field", "dynamic_lambda of soil '" + soil.name + "' needs the soil's zeta_N_cm3 (a bekker soil without one "
                           "has no model-file override to carry it)");
+    // A Bekker field of a soil that runs on another law would be fitted to nothing.
+    if (out.kind == ParameterKind::kSoilBekker && soil.rft_law_3d != rft::LawKind::kBekker)
+      p.Fail("field", out.field + " of soil '" + soil.name + "' acts only on a soil whose law is bekker (law: bekker in " +
+                          out.file + ")");
     // Every value between the bounds is simulated: both must be values a soil file may hold.
-    const limits::Range& range =
-        out.kind == ParameterKind::kSoilZeta ? limits::kZeta_N_cm3 : limits::kDynamicLambda;
-    const char* what = out.kind == ParameterKind::kSoilZeta ? "zeta " : "dynamic_lambda ";
+    const limits::Range& range = out.kind == ParameterKind::kSoilZeta    ? limits::kZeta_N_cm3
+                                 : out.kind == ParameterKind::kSoilBekker ? *out.bekker->range
+                                                                          : limits::kDynamicLambda;
+    const std::string what = out.kind == ParameterKind::kSoilZeta ? "zeta " : out.field + " ";
     for (const char* bound : {"lower", "upper"}) {
       const double v = std::string(bound) == "lower" ? out.lower : out.upper;
       if (!limits::Within(range, v)) p.Fail(bound, what + limits::Describe(range, v));
@@ -191,7 +205,8 @@ bool IsLanderQuantity(Quantity q) {
 std::string Parameter::Address() const {
   switch (kind) {
     case ParameterKind::kSoilZeta:
-    case ParameterKind::kSoilDynamicLambda: return "soil " + object + ": " + field;
+    case ParameterKind::kSoilDynamicLambda:
+    case ParameterKind::kSoilBekker: return "soil " + object + ": " + field;
     case ParameterKind::kPadField: return "pad " + object + ": " + field;
     case ParameterKind::kLanderField: return "lander " + object + ": " + field;
   }

@@ -8,6 +8,7 @@
 //   parameters:
 //     - {name: zeta_lp, soil: fjs1_lp, field: zeta_N_cm3, lower: 1, upper: 8, start: 3.48, source: ...}
 //     - {name: lambda_lp, soil: fjs1_lp, field: dynamic_lambda, lower: 0, upper: 4, start: 1.1, source: ...}
+//     - {name: n_cp, soil: fjs1_cp_bekker, field: bekker.n, lower: 0.5, upper: 1.5, start: 1, source: ...}
 //     - {name: curved_a1, pad: curved, field: profile.a1_per_mm, lower: 0.01, upper: 0.08, start: 0.0319, source: ...}
 //     - {name: joint_radius, lander: sutoh2017_lander, field: legs.joint_radius_mm, lower: 200, upper: 400, ...}
 //   targets:
@@ -26,6 +27,7 @@
 #include <vector>
 
 #include "drop_tests/drop/pad_drop.h"
+#include "drop_tests/model/model_file.h"
 #include "drop_tests/scenario/lander_scenario_types.h"
 #include "rft/gravity_constants.h"
 
@@ -35,6 +37,7 @@ namespace touchdown::targets {
 enum class ParameterKind {
   kSoilZeta,     // zeta_N_cm3 of a soil (at the soil's reference gravity), by the soil's name
   kSoilDynamicLambda,  // dynamic_lambda of a soil whose dynamic term is on, by the soil's name
+  kSoilBekker,   // bekker.n, bekker.k_c_kN_m_n1 or bekker.k_phi_kN_m_n2 of a soil whose law is bekker
   kPadField,     // a number of a pad file (a dotted path, e.g. profile.a1_per_mm)
   kLanderField,  // a number of a lander file (e.g. legs.joint_radius_mm)
 };
@@ -57,12 +60,15 @@ struct Parameter {
   std::string soil_name;  // soil kinds: the soil's name (what model files and scenarios match)
   double soil_reference_gravity_m_s2 = rft::kEarthGravity_m_s2;  // soil kinds
   double soil_zeta_N_m3 = 0.0;  // soil kinds: the soil file's zeta (kept when only lambda is free)
-  std::string field;   // zeta_N_cm3 or dynamic_lambda, or the dotted path in the pad or lander file
+  std::string field;   // zeta_N_cm3, dynamic_lambda, bekker.<key>, or the dotted path in the pad or lander file
   double lower = 0.0, upper = 0.0, start = 0.0;  // in the field's own unit
   std::string source;
   std::optional<ParameterPrior> prior;
   std::string Address() const;  // e.g. "pad curved: profile.a1_per_mm"
-  bool IsSoil() const { return kind == ParameterKind::kSoilZeta || kind == ParameterKind::kSoilDynamicLambda; }
+  const model::BekkerOverrideField* bekker = nullptr;  // kSoilBekker: which of the three
+  bool IsSoil() const {
+    return kind == ParameterKind::kSoilZeta || kind == ParameterKind::kSoilDynamicLambda || kind == ParameterKind::kSoilBekker;
+  }
 };
 
 enum class Quantity {

@@ -46,7 +46,8 @@ std::string TargetText(const Target& t) {
 std::string ApplyHint(const Parameter& p) {
   switch (p.kind) {
     case ParameterKind::kSoilZeta:
-    case ParameterKind::kSoilDynamicLambda: return "in this model file: --model MODEL.yaml";
+    case ParameterKind::kSoilDynamicLambda:
+    case ParameterKind::kSoilBekker: return "in this model file: --model MODEL.yaml";
     case ParameterKind::kPadField:
       return "not in the model file: set " + p.field + " in a copy of pad " + p.object + "'s file and name that copy";
     case ParameterKind::kLanderField:
@@ -56,10 +57,11 @@ std::string ApplyHint(const Parameter& p) {
   return "";
 }
 
-const char* KindName(ParameterKind k) {
-  switch (k) {
+std::string KindName(const Parameter& p) {
+  switch (p.kind) {
     case ParameterKind::kSoilZeta: return "soil_zeta";
     case ParameterKind::kSoilDynamicLambda: return "soil_dynamic_lambda";
+    case ParameterKind::kSoilBekker: return std::string("soil_bekker_") + p.bekker->short_name;
     case ParameterKind::kPadField: return "pad_field";
     case ParameterKind::kLanderField: return "lander_field";
   }
@@ -73,7 +75,7 @@ nlohmann::json CovarianceJson(const TargetsFile& file, const TargetsFitResult& f
   nlohmann::json params = nlohmann::json::array();
   for (const size_t i : fit.covariance_parameters) {
     const Parameter& p = file.parameters[i];
-    nlohmann::json j{{"name", p.name},   {"kind", KindName(p.kind)}, {"field", p.field}, {"value", fit.parameters[i].value},
+    nlohmann::json j{{"name", p.name},   {"kind", KindName(p)}, {"field", p.field}, {"value", fit.parameters[i].value},
                      {"lower", p.lower}, {"upper", p.upper}};
     if (p.kind == ParameterKind::kSoilZeta) {
       j["soil"] = p.soil_name;
@@ -82,6 +84,9 @@ nlohmann::json CovarianceJson(const TargetsFile& file, const TargetsFitResult& f
     } else if (p.kind == ParameterKind::kSoilDynamicLambda) {
       j["soil"] = p.soil_name;
       j["unit"] = "-";
+    } else if (p.kind == ParameterKind::kSoilBekker) {
+      j["soil"] = p.soil_name;
+      j["unit"] = p.bekker->unit;
     } else {
       j["object"] = p.object;
       j["unit"] = "as the field's suffix";
@@ -202,9 +207,15 @@ model::ModelFile TargetsModel(const TargetsFile& file, const TargetsFitResult& f
   for (const ParameterResult& r : fit.parameters) values.push_back(r.value);
   model::ModelFile m;
   m.name = name;
-  bool lambda = false;
-  for (const Parameter& p : file.parameters) lambda = lambda || p.kind == ParameterKind::kSoilDynamicLambda;
-  m.description = std::string(lambda ? "zeta and dynamic_lambda" : "zeta") + " per soil fitted to the scalar targets of " + file.name;
+  bool zeta = false, lambda = false, bekker = false;
+  for (const Parameter& p : file.parameters) {
+    zeta = zeta || p.kind == ParameterKind::kSoilZeta;
+    lambda = lambda || p.kind == ParameterKind::kSoilDynamicLambda;
+    bekker = bekker || p.kind == ParameterKind::kSoilBekker;
+  }
+  std::string what = lambda ? "zeta and dynamic_lambda" : "zeta";
+  if (bekker) what = std::string(zeta ? "zeta, " : "") + (lambda ? "dynamic_lambda, " : "") + "Bekker's n, k_c, k_phi";
+  m.description = what + " per soil fitted to the scalar targets of " + file.name;
   m.soils = SoilModel(file.parameters, values).soils;
   for (size_t i = 0; i < file.parameters.size(); ++i) {
     const Parameter& p = file.parameters[i];

@@ -392,6 +392,9 @@ void AddMessageCases(std::vector<Case>& c) {
   c.push_back({"targets YAML", "dynamic_lambda bounded below 0", "calibrate --targets t_lambda.yaml --out t9.yaml",
                {{"t_lambda.yaml", head + "parameters: [{name: l, soil: fjs1_lp, field: dynamic_lambda, lower: -1, "
                                          "upper: 4, start: 1, source: s}]\n" + target}}});
+  c.push_back({"targets YAML", "a Bekker field on a soil whose law is not bekker", "calibrate --targets t_bekker.yaml --out t10.yaml",
+               {{"t_bekker.yaml", head + "parameters: [{name: n, soil: fjs1_lp, field: bekker.n, lower: 0.5, "
+                                         "upper: 1.5, start: 1, source: s}]\n" + target}}});
   c.push_back({"targets YAML", "negative ratio target", "calibrate --targets t_ratio.yaml --out t7.yaml",
                {{"t_ratio.yaml", head + zeta + "targets: [{name: r, ratio: {numerator: {drop: {pad: flat, soil: fjs1_lp, "
                                                "speed_m_s: 1}, quantity: peak_force_N}, denominator: {drop: {pad: flat, "

@@ -30,6 +30,10 @@ void ExpectSameModel(const ModelFile& a, const ModelFile& b) {
       EXPECT_EQ(o.confidence, p.confidence);
     }
     EXPECT_EQ(o.dynamic_lambda, p.dynamic_lambda);
+    for (const BekkerOverrideField& e : BekkerOverrideFields()) {
+      ASSERT_EQ((o.*e.member).has_value(), (p.*e.member).has_value()) << e.key;
+      if (o.*e.member) EXPECT_DOUBLE_EQ(*(o.*e.member), *(p.*e.member)) << e.key;
+    }
     ASSERT_EQ(o.fit.has_value(), p.fit.has_value());
     if (o.fit) {
       EXPECT_EQ(o.fit->method, p.fit->method);
@@ -80,6 +84,25 @@ TEST_F(ModelRoundTrip, EveryPartOfAModelFile) {
   testing_scratch::ExpectRoundTrip(
       first, Path("written_1.yaml"), Path("written_2.yaml"),
       [](const ModelFile& m, const std::string& path) { WriteModelFile(m, path); }, LoadModelFile, ExpectSameModel);
+}
+
+TEST_F(ModelRoundTrip, ABekkerSoilsOverrideWithoutZeta) {
+  // A Bekker soil's calibrated n, k_c, k_phi (the soil file's keys and units); no zeta, none written.
+  std::ofstream(Path("bekker.yaml"))
+      << "schema_version: 1\ntype: model\nsoils:\n"
+         "  lunar_nominal_bekker:\n    bekker: {n: 1.05, k_c_kN_m_n1: 2.5, k_phi_kN_m_n2: 900}\n"
+         "  fjs1_cp_bekker:\n    bekker: {k_phi_kN_m_n2: 10100}\n";
+  const ModelFile first = LoadModelFile(Path("bekker.yaml"));
+  const SoilOverride& o = first.soils.at("lunar_nominal_bekker");
+  EXPECT_EQ(o.zeta_N_m3, 0.0);
+  EXPECT_EQ(*o.bekker_n, 1.05);
+  EXPECT_EQ(*o.bekker_k_c_N_m_n1, 2.5e3);
+  EXPECT_EQ(*o.bekker_k_phi_N_m_n2, 900e3);
+  EXPECT_FALSE(first.soils.at("fjs1_cp_bekker").bekker_n.has_value());
+  testing_scratch::ExpectRoundTrip(
+      first, Path("bekker_1.yaml"), Path("bekker_2.yaml"),
+      [](const ModelFile& m, const std::string& path) { WriteModelFile(m, path); }, LoadModelFile, ExpectSameModel);
+  EXPECT_EQ(Slurp(Path("bekker_1.yaml")).find("zeta_N_cm3"), std::string::npos);
 }
 
 TEST_F(ModelRoundTrip, NoEffectsAndNoProvenance) {

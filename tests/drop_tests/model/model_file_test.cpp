@@ -71,6 +71,22 @@ TEST(ModelFile, ApplyConvertsToTheSoilsReferenceGravity) {
   EXPECT_EQ(ApplyModel(m, soil).zeta_N_m3, soil.zeta_N_m3);
 }
 
+TEST(ModelFile, BekkerFieldsReplaceTheSoilFilesAndNoZetaKeepsItsZeta) {
+  const touchdown::rft::SoilParameters soil = LoadSoil("lunar_nominal_bekker");
+  ModelFile m;
+  SoilOverride o;  // no zeta: a Bekker soil's override
+  o.bekker_n = 1.2;
+  o.bekker_k_phi_N_m_n2 = 1.0e6;
+  m.soils["lunar_nominal_bekker"] = o;
+  const touchdown::rft::SoilParameters applied = ApplyModel(m, soil);
+  EXPECT_EQ(applied.bekker.n, 1.2);
+  EXPECT_EQ(applied.bekker.k_phi_N_m_n2, 1.0e6);
+  EXPECT_EQ(applied.bekker.k_c_N_m_n1, soil.bekker.k_c_N_m_n1);  // not given: the file's
+  EXPECT_EQ(applied.bekker.cohesion_Pa, soil.bekker.cohesion_Pa);
+  EXPECT_EQ(applied.zeta_N_m3, soil.zeta_N_m3);
+  EXPECT_EQ(applied.reference_gravity_m_s2, soil.reference_gravity_m_s2);
+}
+
 struct BadModel {
   const char* name;
   std::string text;
@@ -105,6 +121,15 @@ INSTANTIATE_TEST_SUITE_P(
         BadModel{"UnknownField", "type: model\nsoil: {}\n", "soil: unknown field"},
         BadModel{"NegativeLambda", "type: model\nsoils: {fjs1_lp: {zeta_N_cm3: 3, dynamic_lambda: -0.5}}\n",
                  "soils.fjs1_lp.dynamic_lambda"},
+        BadModel{"BekkerNAboveFive", "type: model\nsoils: {fjs1_lp: {bekker: {n: 6}}}\n", "soils.fjs1_lp.bekker.n"},
+        BadModel{"BekkerNegativeKphi", "type: model\nsoils: {fjs1_lp: {bekker: {k_phi_kN_m_n2: -1}}}\n",
+                 "soils.fjs1_lp.bekker.k_phi_kN_m_n2"},
+        BadModel{"BekkerUnknownKey", "type: model\nsoils: {fjs1_lp: {bekker: {cohesion_kPa: 1}}}\n",
+                 "soils.fjs1_lp.bekker.cohesion_kPa"},
+        BadModel{"BekkerEmpty", "type: model\nsoils: {fjs1_lp: {bekker: {}}}\n", "soils.fjs1_lp.bekker"},
+        BadModel{"GravityWithoutZeta", "type: model\nsoils: {fjs1_lp: {bekker: {n: 1}, reference_gravity_m_s2: 1.62}}\n",
+                 "soils.fjs1_lp.reference_gravity_m_s2"},
+        BadModel{"NoZetaNoBekker", "type: model\nsoils: {fjs1_lp: {dynamic_lambda: 1}}\n", "soils.fjs1_lp.zeta_N_cm3"},
         BadModel{"UnknownEffect", "type: model\neffects: {air_drag: {k: 1}}\n", "effects.air_drag: unknown effect"},
         BadModel{"EffectOutOfRange", "type: model\neffects: {gas_cushion: {chi: 1.5, c_g_N_s_m3: 0}}\n",
                  "effects.gas_cushion.chi: must be in [0, 0.95]"}),

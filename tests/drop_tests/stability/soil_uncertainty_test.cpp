@@ -98,7 +98,7 @@ TEST_F(SoilUncertaintyTest, LoadTimeValidationNamesFileAndField) {
   Write("lp_only.json",
         R"({"covariance": {"parameters": [{"name": "z", "kind": "soil_zeta", "soil": "fjs1_lp", "value": 3}], "matrix": [[0.01]]}})");
   const std::string held = Refusal(", soil_uncertainty: {fjs1_cp: {calibration: lp_only.json}}", kPadSoils);
-  EXPECT_NE(held.find("no interval for the zeta or dynamic_lambda of soil 'fjs1_cp'"), std::string::npos) << held;
+  EXPECT_NE(held.find("no interval for the zeta, dynamic_lambda or Bekker fields of soil 'fjs1_cp'"), std::string::npos) << held;
   // Singular only in the parameters not drawn: the drawn soil's own block is fine.
   EXPECT_NO_THROW(Load(", soil_uncertainty: {fjs1_lp: {calibration: singular.json}}", kPadSoils));
 }
@@ -251,6 +251,87 @@ TEST_F(SoilUncertaintyTest, DrawsZetaAndLambdaJointlyWithTheirCorrelation) {
   EXPECT_EQ(*o.at("fjs1_lp").dynamic_lambda, x[1]);
   EXPECT_EQ(o.at("fjs1_lp").zeta_N_m3, units::ZetaFromN_cm3(x[0]));
   EXPECT_EQ(DrawnParametersJson(u, 5)["fjs1_lp_dynamic_lambda"].get<double>(), x[1]);
+}
+
+// A report of `calibrate --targets` that freed a Bekker soil's n, k_c and k_phi (kinds
+// soil_bekker_*, the soil file's units), with their correlations rho (n-k_c, n-k_phi, k_c-k_phi).
+std::string BekkerCalibration(const std::string& soil, const Eigen::Vector3d& mean, const Eigen::Vector3d& sigma,
+                              const Eigen::Vector3d& rho) {
+  Eigen::Matrix3d r;
+  r << 1, rho(0), rho(1), rho(0), 1, rho(2), rho(1), rho(2), 1;
+  const Eigen::Matrix3d c = sigma.asDiagonal() * r * sigma.asDiagonal();
+  nlohmann::json matrix = nlohmann::json::array();
+  for (int a = 0; a < 3; ++a) matrix.push_back({c(a, 0), c(a, 1), c(a, 2)});
+  const char* kinds[] = {"soil_bekker_n", "soil_bekker_k_c", "soil_bekker_k_phi"};
+  const char* fields[] = {"bekker.n", "bekker.k_c_kN_m_n1", "bekker.k_phi_kN_m_n2"};
+  nlohmann::json params = nlohmann::json::array();
+  for (int a = 0; a < 3; ++a)
+    params.push_back({{"name", fields[a]}, {"kind", kinds[a]}, {"soil", soil}, {"field", fields[a]}, {"value", mean(a)}});
+  return nlohmann::json{{"covariance", {{"parameters", params}, {"matrix", matrix}}}}.dump(2);
+}
+
+TEST_F(SoilUncertaintyTest, DrawsABekkerTripleJointlyWithItsCorrelations) {
+  // The nominal lunar Bekker soil's n 1 +- 0.05, k_c 1.4 +- 0.3, k_phi 820 +- 60 (k_c 4.7 sigma
+  // above 0: the truncation removes about 1e-6 of the draws, far below the tolerances).
+  const Eigen::Vector3d mean0(1.0, 1.4, 820.0), sigma(0.05, 0.3, 60.0), rho(0.3, -0.6, -0.5);
+  Write("b.json", BekkerCalibration("lunar_nominal_bekker", mean0, sigma, rho));
+  const Study study = LoadStudy(Write(
+      "bekker_study.yaml", std::string("schema_version: 1\ntype: stability\nname: b\nlander: {scenario: ") +
+                               TOUCHDOWN_SOURCE_DIR + "/data/scenarios/lander_lunar_bekker.yaml}\n" +
+                               "random: {samples: 4, seed: 3}\nstudy: {recheck: none, joint_range_sensitivity: none, "
+                               "soil_uncertainty: {lunar_nominal_bekker: {calibration: b.json}}}\n"));
+  const SoilUncertainty& u = *study.soil_uncertainty;
+  ASSERT_EQ(u.parameters.size(), 3u);
+  EXPECT_EQ(u.parameters[0].column, "lunar_nominal_bekker_bekker_n");
+  EXPECT_EQ(u.parameters[1].column, "lunar_nominal_bekker_bekker_k_c_kN_m_n1");
+  EXPECT_EQ(u.parameters[2].column, "lunar_nominal_bekker_bekker_k_phi_kN_m_n2");
+  EXPECT_EQ(u.parameters[2].field, SoilField::kBekkerKphi);
+  const int n = 40000;
+  const auto [mean, cov] = SampleMoments(u, n);
+  // Means within 4 standard errors, variances within 4 sqrt(2/n) relative, correlations within 4 / sqrt(n).
+  for (int a = 0; a < 3; ++a) {
+    EXPECT_NEAR(mean(a), mean0(a), 4 * sigma(a) / std::sqrt(n)) << a;
+    EXPECT_NEAR(cov(a, a), sigma(a) * sigma(a), 4 * sigma(a) * sigma(a) * std::sqrt(2.0 / n)) << a;
+  }
+  const auto corr = [&cov](int a, int b) { return cov(a, b) / std::sqrt(cov(a, a) * cov(b, b)); };
+  EXPECT_NEAR(corr(0, 1), rho(0), 4.0 / std::sqrt(n));
+  EXPECT_NEAR(corr(0, 2), rho(1), 4.0 / std::sqrt(n));
+  EXPECT_NEAR(corr(1, 2), rho(2), 4.0 / std::sqrt(n));
+  // A landing runs with the drawn triple in SI as the soil's override; its zeta (none) stays none.
+  const std::vector<double> x = DrawSoilParameters(u, 7);
+  const model::SoilOverride o = SoilOverrides(u, x).at("lunar_nominal_bekker");
+  EXPECT_EQ(o.zeta_N_m3, 0.0);
+  EXPECT_EQ(*o.bekker_n, x[0]);
+  EXPECT_EQ(*o.bekker_k_c_N_m_n1, x[1] * 1e3);
+  EXPECT_EQ(*o.bekker_k_phi_N_m_n2, x[2] * 1e3);
+  model::ModelFile m;
+  m.soils["lunar_nominal_bekker"] = o;
+  const rft::SoilParameters applied = model::ApplyModel(m, io::LoadSoil("lunar_nominal_bekker"));
+  EXPECT_EQ(applied.bekker.n, x[0]);
+  EXPECT_EQ(applied.bekker.k_phi_N_m_n2, x[2] * 1e3);
+  EXPECT_EQ(DrawnParametersJson(u, 7)["lunar_nominal_bekker_bekker_k_c_kN_m_n1"].get<double>(), x[1]);
+}
+
+TEST_F(SoilUncertaintyTest, ABekkerFieldNeedsABekkerGroundAndAZetaAnRftOne) {
+  // fjs1_lp's Bekker fields on the li2013 ground of case A: no landing would use them.
+  Write("lp_bekker.json", BekkerCalibration("fjs1_lp", {1.0, 1.4, 820.0}, {0.05, 0.3, 60.0}, {0, 0, 0}));
+  const std::string on_rft = Refusal(", soil_uncertainty: {fjs1_lp: {calibration: lp_bekker.json}}", kPadSoils);
+  EXPECT_NE(on_rft.find("study.soil_uncertainty.fjs1_lp.calibration"), std::string::npos) << on_rft;
+  EXPECT_NE(on_rft.find("bekker.n of soil 'fjs1_lp'"), std::string::npos) << on_rft;
+  EXPECT_NE(on_rft.find("bekker law"), std::string::npos) << on_rft;
+  // A zeta drawn on the bekker ground: the law does not use it.
+  Write("zeta.json", R"({"covariance": {"parameters": [{"name": "z", "kind": "soil_zeta", "soil": "lunar_nominal_bekker",
+      "value": 3}], "matrix": [[0.01]]}})");
+  std::string on_bekker;
+  try {
+    LoadStudy(Write("z_study.yaml", std::string("schema_version: 1\ntype: stability\nname: b\nlander: {scenario: ") +
+                                        TOUCHDOWN_SOURCE_DIR + "/data/scenarios/lander_lunar_bekker.yaml}\n" +
+                                        "random: {samples: 4, seed: 3}\nstudy: {recheck: none, joint_range_sensitivity: "
+                                        "none, soil_uncertainty: {lunar_nominal_bekker: {calibration: zeta.json}}}\n"));
+  } catch (const InputError& e) {
+    on_bekker = e.what();
+  }
+  EXPECT_NE(on_bekker.find("draws zeta, which the ground's bekker law does not use"), std::string::npos) << on_bekker;
 }
 
 // The shipped study with lambda drawn: both soils name one report, so zeta CP and the two soils'

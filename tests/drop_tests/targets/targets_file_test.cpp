@@ -201,6 +201,18 @@ TEST_F(TargetsFileLoad, RefusesBadEntriesNamingFileFieldAndValue) {
        "  - {name: d, drop: {pad: flat, soil: toyoura_bekker, speed_m_s: 1.0}, quantity: final_penetration_m,"
        " value: 0.02, uncertainty: 0.001, use: fit, source: s}\n",
        "parameters[0].field", "zeta_N_cm3"},
+      // A Bekker field: only on a soil whose law is bekker, a key of the soil file's bekker block,
+      // bounds within the physical range (n in (0, 5]).
+      {"  - {name: n, soil: fjs1_lp, field: bekker.n, lower: 0.5, upper: 1.5, start: 1, source: s}\n", t,
+       "parameters[0].field", "law: bekker"},
+      {"  - {name: n, soil: lunar_nominal_bekker, field: bekker.cohesion_kPa, lower: 0, upper: 1, start: 0.2, "
+       "source: s}\n",
+       t, "parameters[0].field", "bekker.cohesion_kPa"},
+      {"  - {name: n, soil: lunar_nominal_bekker, field: bekker.n, lower: 0.5, upper: 6, start: 1, source: s}\n", t,
+       "parameters[0].upper", "6"},
+      {"  - {name: k, soil: lunar_nominal_bekker, field: bekker.k_phi_kN_m_n2, lower: -5, upper: 900, start: 820, "
+       "source: s}\n",
+       t, "parameters[0].lower", "-5"},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.field);

@@ -137,6 +137,65 @@ TEST_F(TargetsFit, RecoversZetaAndTheDynamicTermsLambdaJointly) {
   EXPECT_EQ(model::ApplyModel(m, io::LoadSoil("fjs1_lp")).dynamic_lambda, fit.parameters[1].value);
 }
 
+TEST_F(TargetsFit, RecoversABekkerSoilsNKcAndKphiFromTwoPadsAndTwoSpeeds) {
+  // Truth: the nominal lunar Bekker soil with n 1.1, k_c 6 kN/m^(n+1), k_phi 900 kN/m^(n+2). The
+  // flat pad (b 50 mm) at 0.5 and 1.5 m/s and a 25 mm copy at 1 m/s, depth and peak force each to
+  // 0.5 %: the speeds separate n from the modulus k_c / b + k_phi, the two b separate k_c from
+  // k_phi. The fit starts at the soil file's 1, 1.4, 820.
+  std::string small = Slurp(std::string(TOUCHDOWN_SOURCE_DIR) + "/data/pads/flat.yaml");
+  small.replace(small.find("radius_mm: 50"), 13, "radius_mm: 25");
+  small.replace(small.find("name: flat"), 10, "name: flat_r25");
+  const std::string small_pad = Write("flat_r25.yaml", small);
+  rft::SoilParameters truth = io::LoadSoil("lunar_nominal_bekker");
+  truth.bekker.n = 1.1;
+  truth.bekker.k_c_N_m_n1 = 6e3;
+  truth.bekker.k_phi_N_m_n2 = 900e3;
+  std::string targets;
+  const std::vector<std::pair<std::string, double>> drops{{"flat", 0.5}, {"flat", 1.5}, {small_pad, 1.0}};
+  for (size_t k = 0; k < drops.size(); ++k) {
+    drop::DropConditions c;
+    c.impact_speed_m_s = drops[k].second;
+    const drop::PadDrop d = drop::RunPadDrop(io::LoadPad(drops[k].first), truth, c);
+    for (const auto& [q, v] : std::vector<std::pair<std::string, double>>{
+             {"final_penetration_m", d.result.final_penetration_m}, {"peak_force_N", d.result.peak_force_N}})
+      targets += "  - {name: " + q + "_" + std::to_string(k) + ", drop: {pad: " + drops[k].first +
+                 ", soil: lunar_nominal_bekker, speed_m_s: " + Num(drops[k].second) + "}, quantity: " + q +
+                 ", value: " + Num(v) + ", uncertainty: " + Num(0.005 * v) + ", use: fit, source: test}\n";
+  }
+  const TargetsFile file = Load(
+      "  - {name: n, soil: lunar_nominal_bekker, field: bekker.n, lower: 0.5, upper: 1.5, start: 1, source: test}\n"
+      "  - {name: k_c, soil: lunar_nominal_bekker, field: bekker.k_c_kN_m_n1, lower: 0, upper: 40, start: 1.4, source: test}\n"
+      "  - {name: k_phi, soil: lunar_nominal_bekker, field: bekker.k_phi_kN_m_n2, lower: 200, upper: 3000, start: 820, "
+      "source: test}\n",
+      targets);
+  ASSERT_EQ(file.parameters[2].kind, ParameterKind::kSoilBekker);
+  const TargetsFitResult fit = FitTargets(file);
+  ASSERT_TRUE(fit.converged) << fit.termination;
+  const double expected[] = {1.1, 6.0, 900.0};
+  for (size_t k = 0; k < 3; ++k) {
+    EXPECT_NEAR(fit.parameters[k].value, expected[k], 1e-3 * expected[k]) << k;
+    ASSERT_TRUE(fit.parameters[k].sigma.has_value()) << k;
+    EXPECT_LT(*fit.parameters[k].low, expected[k]);
+    EXPECT_GT(*fit.parameters[k].high, expected[k]);
+  }
+  // The report's covariance names them by kind and unit, and the model file carries them (SI).
+  const nlohmann::json cov = TargetsReportJson(file, fit)["covariance"];
+  ASSERT_EQ(cov["parameters"].size(), 3u);
+  EXPECT_EQ(cov["parameters"][0]["kind"], "soil_bekker_n");
+  EXPECT_EQ(cov["parameters"][1]["kind"], "soil_bekker_k_c");
+  EXPECT_EQ(cov["parameters"][2]["kind"], "soil_bekker_k_phi");
+  EXPECT_EQ(cov["parameters"][2]["soil"], "lunar_nominal_bekker");
+  EXPECT_EQ(cov["parameters"][2]["unit"], "kN/m^(n+2)");
+  const model::ModelFile m = TargetsModel(file, fit, "fit", "");
+  const model::SoilOverride& o = m.soils.at("lunar_nominal_bekker");
+  EXPECT_EQ(o.zeta_N_m3, 0.0);  // the soil has none, and keeps none
+  EXPECT_EQ(*o.bekker_k_phi_N_m_n2, fit.parameters[2].value * 1e3);
+  const rft::SoilParameters applied = model::ApplyModel(m, io::LoadSoil("lunar_nominal_bekker"));
+  EXPECT_EQ(applied.bekker.n, fit.parameters[0].value);
+  EXPECT_EQ(applied.bekker.k_c_N_m_n1, fit.parameters[1].value * 1e3);
+  EXPECT_EQ(applied.zeta_N_m3, 0.0);
+}
+
 TEST_F(TargetsFit, LambdaAloneKeepsTheSoilsZetaBitForBit) {
   // Only lambda free: at lambda = the file's 1.1 every drop is the unedited soil's, to the bit.
   const TargetsFile file = Load(
