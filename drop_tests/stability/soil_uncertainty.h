@@ -1,6 +1,7 @@
 #pragma once
 // A stability study's soil uncertainty: each named soil's parameters that a calibration holds (its
-// zeta, its dynamic term's dynamic_lambda, a Bekker soil's n, k_c and k_phi; any of them) drawn, landing by landing, from the joint normal
+// zeta, its dynamic term's dynamic_lambda, a Bekker soil's n, k_c and k_phi; any of them) drawn,
+// landing by landing, from the joint normal
 // distribution the calibration reports (`touchdown calibrate --targets ... --report
 // R.json`: the best values and their covariance, drop_tests/targets/targets_fit.h), instead of
 // the fixed number of its soil file:
@@ -12,11 +13,12 @@
 // Soils taken from one calibration file are drawn jointly (their covariance, correlations
 // included); soils from different files independently. Draws are counter-based, keyed by (the
 // study's seed, the landing's index, the parameter, the attempt), so a landing's soil follows from
-// its index alone, on any thread, rank or shard. A draw outside the parameters' physical range
-// (rft/physical_limits.h: zeta in (0, 1e4] N/cm^3, dynamic_lambda in [0, 100], Bekker's n in
-// (0, 5], k_c and k_phi in [0, 1e6] in the soil file's kN units) is drawn again
-// (rejection: the normal truncated to the range); after kMaxDrawAttempts rejected draws the landing
-// takes the best values.
+// its index alone, on any thread, rank or shard. A draw outside a parameter's box is drawn again
+// (rejection: the normal truncated to the box); after kMaxDrawAttempts rejected draws the landing
+// takes the best values. The box is the calibration's fit bounds (the report's `lower`, `upper`)
+// within the physical range (rft/physical_limits.h: zeta in (0, 1e4] N/cm^3, dynamic_lambda in
+// [0, 100], Bekker's n in (0, 5], k_c and k_phi in [0, 1e6] in the soil file's kN units), or the
+// physical range alone (a report without bounds, or `truncate: physical_limits`).
 //
 // The summary's split of the outcome's variance into the soil's share and the conditions' share,
 // and P(tip) at the soil's interval ends, are SoilSplit below (docs/stability_studies.md, "The
@@ -71,7 +73,7 @@ struct UncertainParameter {
   std::string soil;         // the soil's name, as the lander's ground names it
   std::string name;         // the calibration's parameter name, e.g. zeta_cp
   SoilField field = SoilField::kZeta;
-  std::string column;       // its column in the outputs: "<soil>_zeta_N_cm3", "<soil>_dynamic_lambda", "<soil>_bekker_n"...
+  std::string column;       // its column in the outputs: "<soil>_zeta_N_cm3", "<soil>_bekker_n"...
   double mean = 0.0;        // in the field's unit (the calibration's best value)
   double sigma = 0.0;       // one standard deviation, same unit
   double reference_gravity_m_s2 = 0.0;  // zeta's; for lambda the soil file's
@@ -110,7 +112,8 @@ enum class SoilTruncation {
 // InputError naming the file and field.
 SoilUncertainty ReadSoilUncertainty(const io::YamlFields& study_block, const sweep::SweepPlan& plan);
 
-// The parameters landing `index` runs with, in file units (N/cm^3, -, kN/m^(n+1), kN/m^(n+2)), in `parameters` order.
+// The parameters landing `index` runs with, in file units (N/cm^3, -, kN/m^(n+1), kN/m^(n+2)), in
+// `parameters` order.
 std::vector<double> DrawSoilParameters(const SoilUncertainty& u, int64_t index);
 // The same as the soil overrides a lander run takes (sweep::SweepPlan::soil_overrides_at): zeta, and
 // dynamic_lambda and the Bekker fields where drawn (a soil whose zeta is not drawn keeps its file's).
