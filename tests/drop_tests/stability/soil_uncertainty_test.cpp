@@ -293,10 +293,10 @@ TEST_F(SoilUncertaintyTest, DrawsABekkerTripleJointlyWithItsCorrelations) {
     EXPECT_NEAR(mean(a), mean0(a), 4 * sigma(a) / std::sqrt(n)) << a;
     EXPECT_NEAR(cov(a, a), sigma(a) * sigma(a), 4 * sigma(a) * sigma(a) * std::sqrt(2.0 / n)) << a;
   }
-  const auto corr = [&cov](int a, int b) { return cov(a, b) / std::sqrt(cov(a, a) * cov(b, b)); };
-  EXPECT_NEAR(corr(0, 1), rho(0), 4.0 / std::sqrt(n));
-  EXPECT_NEAR(corr(0, 2), rho(1), 4.0 / std::sqrt(n));
-  EXPECT_NEAR(corr(1, 2), rho(2), 4.0 / std::sqrt(n));
+  const auto corr = [](const Eigen::MatrixXd& c, int a, int b) { return c(a, b) / std::sqrt(c(a, a) * c(b, b)); };
+  EXPECT_NEAR(corr(cov, 0, 1), rho(0), 4.0 / std::sqrt(n));
+  EXPECT_NEAR(corr(cov, 0, 2), rho(1), 4.0 / std::sqrt(n));
+  EXPECT_NEAR(corr(cov, 1, 2), rho(2), 4.0 / std::sqrt(n));
   // A landing runs with the drawn triple in SI as the soil's override; its zeta (none) stays none.
   const std::vector<double> x = DrawSoilParameters(u, 7);
   const model::SoilOverride o = SoilOverrides(u, x).at("lunar_nominal_bekker");
