@@ -45,9 +45,12 @@ void ReadBekkerOverride(const io::YamlFields& f, SoilOverride& o) {
 SoilOverride ReadOverride(const io::YamlFields& f) {
   f.RequireOnly(io::FieldKeys(OverrideNumberFields(), {"zeta_interval_N_cm3", "confidence", "dynamic_lambda", "bekker", "fit"}));
   SoilOverride o;
-  // A Bekker soil's override may leave zeta out: the soil file's (often none) is kept.
+  // An override that gives lambda or Bekker's fields may leave zeta out: the soil file's (none for
+  // some Bekker soils) is kept to the last bit, which a written copy of it would not be.
+  if (!f.Has("zeta_N_cm3") && !f.Has("dynamic_lambda") && !f.Has("bekker"))
+    f.Fail("zeta_N_cm3", "is required when the override gives neither dynamic_lambda nor bekker");
   if (f.Has("bekker")) ReadBekkerOverride(f, o);
-  if (!f.Has("bekker") || f.Has("zeta_N_cm3")) {
+  if (f.Has("zeta_N_cm3")) {
     io::ReadFields(f, OverrideNumberFields(), o);
   } else {
     for (const char* key : {"reference_gravity_m_s2", "zeta_interval_N_cm3"})
@@ -136,7 +139,7 @@ void WriteModelFile(const ModelFile& m, const io::OutputTarget& target, const st
   y << YAML::Key << "soils" << YAML::Value << YAML::BeginMap;
   for (const auto& [name, o] : m.soils) {
     y << YAML::Key << name << YAML::Value << YAML::BeginMap;
-    if (o.zeta_N_m3 > 0.0 || !o.HasBekker()) io::WriteFields(y, OverrideNumberFields(), o);
+    if (o.GivesZeta()) io::WriteFields(y, OverrideNumberFields(), o);
     if (o.zeta_low_N_m3 && o.zeta_high_N_m3)
       y << YAML::Key << "zeta_interval_N_cm3" << YAML::Value << YAML::Flow << YAML::BeginSeq
         << units::ZetaToN_cm3(*o.zeta_low_N_m3) << units::ZetaToN_cm3(*o.zeta_high_N_m3) << YAML::EndSeq << YAML::Key << "confidence"
@@ -202,7 +205,7 @@ std::string ModelDigestText(const ModelFile& m) {
   std::string s = "model:" + m.name + ";";
   for (const auto& [name, o] : m.soils)
   {
-    if (o.zeta_N_m3 > 0.0 || !o.HasBekker())
+    if (o.GivesZeta())
       s += name + "=" + io::FormatNumber(o.zeta_N_m3) + "@" + io::FormatNumber(o.reference_gravity_m_s2) + ";";
     if (o.dynamic_lambda) s += name + ".dynamic_lambda=" + io::FormatNumber(*o.dynamic_lambda) + ";";
     for (const BekkerOverrideField& e : BekkerOverrideFields())

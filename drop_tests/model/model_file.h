@@ -56,8 +56,8 @@ struct SoilFit {
 };
 
 struct SoilOverride {
-  // At reference_gravity_m_s2. 0: none (an override of a Bekker soil may carry only its bekker
-  // fields; the soil file's zeta, possibly none, is kept). A zeta a soil holds is never 0.
+  // At reference_gravity_m_s2. 0: none (an override that gives lambda or Bekker's fields may leave
+  // zeta out; the soil file's, possibly none, is kept). A zeta a soil holds is never 0.
   double zeta_N_m3 = 0.0;
   double reference_gravity_m_s2 = rft::kEarthGravity_m_s2;
   std::optional<double> zeta_low_N_m3;    // confidence interval, both or neither
@@ -71,6 +71,9 @@ struct SoilOverride {
   std::optional<double> bekker_n, bekker_k_c_N_m_n1, bekker_k_phi_N_m_n2;
   std::optional<SoilFit> fit;
   bool HasBekker() const { return bekker_n || bekker_k_c_N_m_n1 || bekker_k_phi_N_m_n2; }
+  // Whether the override states a zeta (written and read): one it holds, or one it must hold
+  // because it gives nothing else.
+  bool GivesZeta() const { return zeta_N_m3 > 0.0 || (!HasBekker() && !dynamic_lambda); }
 };
 
 // The Bekker fields an override carries, in one table for the model file, `calibrate --targets`

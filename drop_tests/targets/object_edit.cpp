@@ -106,15 +106,12 @@ model::ModelFile SoilModel(const std::vector<Parameter>& parameters, const std::
   for (size_t i = 0; i < parameters.size(); ++i) {
     const Parameter& p = parameters[i];
     if (!p.IsSoil()) continue;
-    const auto [it, added] = m.soils.try_emplace(p.soil_name);
-    model::SoilOverride& o = it->second;
-    if (added) {  // the soil's own zeta (none for a Bekker soil without) until a zeta parameter replaces it
-      o.zeta_N_m3 = p.soil_zeta_N_m3;
-      o.reference_gravity_m_s2 = p.soil_reference_gravity_m_s2;
-    }
-    if (p.kind == ParameterKind::kSoilZeta)
+    // A soil whose zeta is not freed keeps the soil file's own (no zeta in the override).
+    model::SoilOverride& o = m.soils[p.soil_name];
+    if (p.kind == ParameterKind::kSoilZeta) {
       o.zeta_N_m3 = units::ZetaFromN_cm3(values[i]);
-    else if (p.kind == ParameterKind::kSoilBekker)
+      o.reference_gravity_m_s2 = p.soil_reference_gravity_m_s2;
+    } else if (p.kind == ParameterKind::kSoilBekker)
       o.*p.bekker->member = values[i] * p.bekker->si_per_unit;
     else
       o.dynamic_lambda = values[i];

@@ -143,7 +143,6 @@ Parameter ReadParameter(const io::YamlFields& p) {
     }
     out.soil_name = soil.name;
     out.soil_reference_gravity_m_s2 = soil.reference_gravity_m_s2;
-    out.soil_zeta_N_m3 = soil.zeta_N_m3;
     // A lambda that no drop uses would be fitted to nothing: its interval would be the prior's.
     if (out.kind == ParameterKind::kSoilDynamicLambda && !soil.dynamic_term)
       p.Fail("field", "dynamic_lambda of soil '" + soil.name + "' acts only with its dynamic term on (dynamic_term: true in " +

@@ -59,7 +59,6 @@ struct Parameter {
   std::string file;    // its resolved file (a soil's name for the soil kinds matching: soil_name)
   std::string soil_name;  // soil kinds: the soil's name (what model files and scenarios match)
   double soil_reference_gravity_m_s2 = rft::kEarthGravity_m_s2;  // soil kinds
-  double soil_zeta_N_m3 = 0.0;  // soil kinds: the soil file's zeta (kept when only lambda is free)
   std::string field;   // zeta_N_cm3, dynamic_lambda, bekker.<key>, or the dotted path in the pad or lander file
   double lower = 0.0, upper = 0.0, start = 0.0;  // in the field's own unit
   std::string source;

@@ -87,6 +87,28 @@ TEST(ModelFile, BekkerFieldsReplaceTheSoilFilesAndNoZetaKeepsItsZeta) {
   EXPECT_EQ(applied.reference_gravity_m_s2, soil.reference_gravity_m_s2);
 }
 
+// A calibration that frees only lambda writes no zeta, so the soil file's is kept to the last bit
+// (a zeta written in decimal and read back would not be).
+TEST(ModelFile, ALambdaOnlyOverrideWritesNoZetaAndKeepsTheSoilsExactly) {
+  const touchdown::rft::SoilParameters soil = LoadSoil("fjs1_lp");
+  ModelFile m;
+  SoilOverride o;
+  o.dynamic_lambda = 0.7;
+  m.soils["fjs1_lp"] = o;
+  const fs::path path = TempFile("lambda_only.yaml");
+  WriteModelFile(m, path.string());
+  std::ifstream in(path);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const ModelFile back = LoadModelFile(path.string());
+  fs::remove(path);
+  EXPECT_EQ(text.find("zeta"), std::string::npos) << text;
+  EXPECT_EQ(back.soils.at("fjs1_lp").zeta_N_m3, 0.0);
+  const touchdown::rft::SoilParameters applied = ApplyModel(back, soil);
+  EXPECT_EQ(applied.dynamic_lambda, 0.7);
+  EXPECT_EQ(applied.zeta_N_m3, soil.zeta_N_m3);
+  EXPECT_EQ(applied.reference_gravity_m_s2, soil.reference_gravity_m_s2);
+}
+
 struct BadModel {
   const char* name;
   std::string text;
@@ -129,7 +151,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadModel{"BekkerEmpty", "type: model\nsoils: {fjs1_lp: {bekker: {}}}\n", "soils.fjs1_lp.bekker"},
         BadModel{"GravityWithoutZeta", "type: model\nsoils: {fjs1_lp: {bekker: {n: 1}, reference_gravity_m_s2: 1.62}}\n",
                  "soils.fjs1_lp.reference_gravity_m_s2"},
-        BadModel{"NoZetaNoBekker", "type: model\nsoils: {fjs1_lp: {dynamic_lambda: 1}}\n", "soils.fjs1_lp.zeta_N_cm3"},
+        BadModel{"NothingGiven", "type: model\nsoils: {fjs1_lp: {}}\n", "soils.fjs1_lp.zeta_N_cm3: is required"},
+        BadModel{"GravityWithLambdaOnly", "type: model\nsoils: {fjs1_lp: {dynamic_lambda: 1, reference_gravity_m_s2: 1.62}}\n",
+                 "soils.fjs1_lp.reference_gravity_m_s2"},
         BadModel{"UnknownEffect", "type: model\neffects: {air_drag: {k: 1}}\n", "effects.air_drag: unknown effect"},
         BadModel{"EffectOutOfRange", "type: model\neffects: {gas_cushion: {chi: 1.5, c_g_N_s_m3: 0}}\n",
                  "effects.gas_cushion.chi: must be in [0, 0.95]"}),
