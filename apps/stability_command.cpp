@@ -79,13 +79,7 @@ void PrintFollowUps(const stability::StudySummary& s) {
 }
 
 // The soil's share of the outcome's variance, and P(tip) across the soil's 95 % range.
-void PrintSoilSplit(const stability::Study& study, const stability::StudySummary& s) {
-  if (!study.soil_uncertainty) return;
-  if (!s.soil_split) {
-    std::cout << "  soil uncertainty: too few landings to split the variance\n";
-    return;
-  }
-  const stability::SoilSplit& split = *s.soil_split;
+void PrintSoilShares(const stability::Study& study, const stability::SoilSplit& split) {
   std::ostringstream shares;
   shares << std::setprecision(3);
   for (const stability::ShareEstimate& e : split.shares)
@@ -96,6 +90,34 @@ void PrintSoilSplit(const stability::Study& study, const stability::StudySummary
             << " parameter(s) drawn), the soil's share of the variance: " << shares.str() << std::setprecision(4)
             << "; P(tip-over) across the soil's 95 % range " << split.p_tip_at_soil_ends.first << " to "
             << split.p_tip_at_soil_ends.second << "\n";
+}
+
+void PrintSoilPairing(const stability::StudySummary& s) {
+  if (!s.soil_pairing) return;
+  const stability::SoilPairingReport& p = *s.soil_pairing;
+  if (!p.ran) {
+    std::cout << "  soil pairing: " << p.reason << "\n";
+    return;
+  }
+  std::cout << "  paired with the soils at their best values (" << p.landings << " landings): P(tip-over) "
+            << (p.landings > 0 ? double(p.tipped_best) / double(p.landings) : 0.0) << " ["
+            << p.interval_best.low << ", " << p.interval_best.high << "] against "
+            << (p.landings > 0 ? double(p.tipped_drawn) / double(p.landings) : 0.0) << " drawn; "
+            << p.tipped_only_drawn.size() + p.tipped_only_best.size() << " outcome(s) changed by the soil ("
+            << p.tipped_only_drawn.size() << " tipped only with the drawn soil, " << p.tipped_only_best.size()
+            << " only at the best values)";
+  for (const stability::PairedOutcome& o : p.outcomes)
+    if (o.outcome == "tipped_over" || o.outcome == "max_tilt_deg")
+      std::cout << "; " << o.outcome << " paired share " << std::setprecision(3) << o.share << std::setprecision(4);
+  std::cout << "\n";
+}
+
+// The soil's uncertainty: the linear split, and the pairing with the best values.
+void PrintSoilSplit(const stability::Study& study, const stability::StudySummary& s) {
+  if (!study.soil_uncertainty) return;
+  if (!s.soil_split) std::cout << "  soil uncertainty: too few landings to split the variance\n";
+  else PrintSoilShares(study, *s.soil_split);
+  PrintSoilPairing(s);
 }
 
 void PrintStudyResult(const stability::Study& study, const stability::StudySummary& s, const std::string& out) {

@@ -7,6 +7,7 @@
 #include <numeric>
 #include <tuple>
 
+#include <boost/algorithm/string/join.hpp>
 #include <boost/math/distributions/normal.hpp>
 #include <nlohmann/json.hpp>
 
@@ -133,10 +134,11 @@ nlohmann::json SoilSplitJson(const SoilUncertainty& u, const std::optional<SoilS
     bekker = bekker || InfoOf(q.field).bekker;
   }
   // The physical ranges of the fields drawn.
-  std::string ranges = std::string("the physical range (") + (zeta ? "zeta (0, 1e4] N/cm^3, " : "") +
-                       (lambda ? "dynamic_lambda [0, 100], " : "") +
-                       (bekker ? "Bekker's n (0, 5], k_c [0, 1e6] kN/m^(n+1), k_phi [0, 1e6] kN/m^(n+2), " : "");
-  ranges = ranges.substr(0, ranges.size() - 2) + ")";
+  std::vector<std::string> drawn_ranges;
+  if (zeta) drawn_ranges.push_back("zeta (0, 1e4] N/cm^3");
+  if (lambda) drawn_ranges.push_back("dynamic_lambda [0, 100]");
+  if (bekker) drawn_ranges.push_back("Bekker's n (0, 5], k_c [0, 1e6] kN/m^(n+1), k_phi [0, 1e6] kN/m^(n+2)");
+  const std::string ranges = "the physical range (" + boost::algorithm::join(drawn_ranges, ", ") + ")";
   nlohmann::json files = nlohmann::json::array();
   for (const CalibrationGroup& g : u.groups) files.push_back(g.file);
   nlohmann::json out{{"parameters", params},

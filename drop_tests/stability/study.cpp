@@ -131,16 +131,12 @@ RecheckSettings ReadRecheck(const io::YamlFields& study, RecheckSettings r, doub
   return r;
 }
 
-// `joint_range_sensitivity: none`, or `{samples: K}` (1 to 1e9, default 1000).
-JointRangeSettings ReadJointRange(const io::YamlFields& study) {
-  JointRangeSettings j;
-  const std::string key = "joint_range_sensitivity";
-  if (!study.Has(key)) return j;
+// A follow-up's `KEY: none` (false), or `KEY: {samples: K}` (true; K, 1 to 1e9, into `samples`).
+bool ReadFollowUpSamples(const io::YamlFields& study, const std::string& key, std::optional<int64_t>& samples) {
   if (study.node()[key].IsScalar()) {
     if (study.String(key) != "none")
       study.Fail(key, "must be none or a mapping {samples}, got '" + study.String(key) + "'");
-    j.enabled = false;
-    return j;
+    return false;
   }
   const io::YamlFields f = study.Child(key);
   f.RequireOnly({"samples"});
@@ -148,9 +144,31 @@ JointRangeSettings ReadJointRange(const io::YamlFields& study) {
     const double v = f.Number("samples");
     limits::Require(limits::kSamples, v, f.file(), f.Path("samples"));
     if (v != std::floor(v)) f.Fail("samples", "must be a whole number, got " + io::FormatNumber(v));
-    j.samples = static_cast<int64_t>(v);
+    samples = static_cast<int64_t>(v);
   }
+  return true;
+}
+
+// `joint_range_sensitivity: none`, or `{samples: K}` (default 1000).
+JointRangeSettings ReadJointRange(const io::YamlFields& study) {
+  JointRangeSettings j;
+  const std::string key = "joint_range_sensitivity";
+  if (!study.Has(key)) return j;
+  std::optional<int64_t> samples;
+  j.enabled = ReadFollowUpSamples(study, key, samples);
+  j.samples = samples.value_or(j.samples);
   return j;
+}
+
+// `soil_pairing: none`, or `{samples: K}` (default: every landing); only beside soil_uncertainty.
+SoilPairingSettings ReadSoilPairing(const io::YamlFields& study) {
+  SoilPairingSettings p;
+  const std::string key = "soil_pairing";
+  if (!study.Has(key)) return p;
+  if (!study.Has("soil_uncertainty"))
+    study.Fail(key, "pairs the drawn soils with their best values: it needs study.soil_uncertainty");
+  p.enabled = ReadFollowUpSamples(study, key, p.samples);
+  return p;
 }
 }  // namespace
 
@@ -177,12 +195,14 @@ Study LoadStudy(const std::string& path, const std::string& model_override, std:
   if (!(study.recheck.rtol < ScenarioRtol(study.plan))) study.recheck.rtol = ScenarioRtol(study.plan) / 100.0;
   if (f.Has("study")) {
     const io::YamlFields s = f.Child("study");
-    s.RequireOnly({"map", "worst_cases", "max_tip_over_cases", "recheck", "joint_range_sensitivity", "soil_uncertainty"});
+    s.RequireOnly({"map", "worst_cases", "max_tip_over_cases", "recheck", "joint_range_sensitivity", "soil_uncertainty",
+                   "soil_pairing"});
     if (s.Has("map")) study.map = ReadMap(s, study.plan);
     study.worst_cases = ReadCount(s, "worst_cases", study.worst_cases);
     study.max_tip_over_cases = ReadCount(s, "max_tip_over_cases", study.max_tip_over_cases);
     study.recheck = ReadRecheck(s, study.recheck, ScenarioRtol(study.plan));
     study.joint_range = ReadJointRange(s);
+    study.soil_pairing = ReadSoilPairing(s);
     if (s.Has("soil_uncertainty")) {
       study.soil_uncertainty = ReadSoilUncertainty(s, study.plan);
       AttachSoilUncertainty(study.plan, *study.soil_uncertainty);

@@ -10,6 +10,7 @@
 //     recheck: {rtol: 1e-8, tilt_margin_deg: 2, unsettled: false}  # or `none` (study_followups.h)
 //     joint_range_sensitivity: {samples: 1000}    # or `none`
 //     soil_uncertainty: {fjs1_cp: {calibration: FILE.json}}  # soils' zeta drawn per landing (soil_uncertainty.h)
+//     soil_pairing: {samples: 4000}  # or `none`; default: every landing again at the best values (soil_pairing.h)
 //
 // The map's axes are two number parameters the study varies (grid or random); its range is the
 // parameter's over the plan (a random parameter's [low, high], a grid's or choice's smallest and
@@ -67,6 +68,13 @@ struct JointRangeSettings {
   int64_t samples = 1000;  // K, at most (and at most the study's landings)
 };
 
+// A study that draws its soils runs its landings again with every drawn soil at its calibration's
+// best values, so each landing's two outcomes differ by the soil alone (soil_pairing.h).
+struct SoilPairingSettings {
+  bool enabled = true;
+  std::optional<int64_t> samples;  // K, at most; none: every landing (flips are rare: a sample misses them)
+};
+
 struct Study {
   sweep::SweepPlan plan;           // with --samples applied
   int64_t samples_in_file = 1;     // the random block's sample count as written (1 without one)
@@ -79,6 +87,7 @@ struct Study {
   // Each named soil's zeta and dynamic_lambda drawn per landing from a calibration (the plan's
   // soil_overrides_at draws them, soil_parameters_at names them for the database).
   std::optional<SoilUncertainty> soil_uncertainty;
+  SoilPairingSettings soil_pairing;  // read only with soil_uncertainty
 };
 
 // Loads and validates the study (the sweep plan, then the study block) before anything runs.

@@ -179,7 +179,11 @@ double ConeHalfAngleDeg(const sweep::SweepPlan& plan) {
 }
 
 std::vector<int64_t> JointRangeIndices(const Study& study) {
-  const int64_t n = study.plan.size(), k = std::min(study.joint_range.samples, n);
+  const int64_t n = study.plan.size();
+  return SpreadIndices(n, std::min(study.joint_range.samples, n));
+}
+
+std::vector<int64_t> SpreadIndices(int64_t n, int64_t k) {
   std::vector<int64_t> out;
   out.reserve(static_cast<size_t>(k));
   // floor(j n / k) without overflow for n up to 1e9 x a grid: in long double, exact below 2^64.
@@ -230,10 +234,11 @@ RecheckReport ApplyRechecks(const Study& study, double tip_angle_deg, std::vecto
   return rep;
 }
 
-StudyFollowUps RunStudyFollowUps(const Study& study, std::vector<DropRecord> records, const std::string& out_dir,
-                                 const sweep::SweepRunOptions& options, std::ostream* say) {
-  StudyFollowUps f;
-  const double tip_angle_deg = StandingTipAngleDeg(study.plan);
+namespace {
+// Re-checks `records` (a run of `study`'s plan into `out_dir`) in RecheckDir(out_dir): false when stopped.
+bool Recheck(const Study& study, double tip_angle_deg, std::vector<DropRecord>& records, const std::string& out_dir,
+             const sweep::SweepRunOptions& options, std::ostream* say, StudyFollowUps& f, RecheckReport& report,
+             std::vector<DropRecord>* fast) {
   std::vector<DropRecord> reference;
   if (study.recheck.enabled) {
     std::vector<int64_t> todo;
@@ -246,11 +251,53 @@ StudyFollowUps RunStudyFollowUps(const Study& study, std::vector<DropRecord> rec
              << " landing(s) near the tip-over boundary with the reference model (rtol "
              << io::FormatNumber(study.recheck.rtol) << ReferenceMeshNote(study) << ") in " << RecheckDir(out_dir)
              << "/\n";
-      if (!RunFollowUp(RecheckPlan(study), todo, RecheckDir(out_dir), options, f)) return f;
+      if (!RunFollowUp(RecheckPlan(study), todo, RecheckDir(out_dir), options, f)) return false;
       for (auto& [index, r] : ReadStored(RecheckDir(out_dir), todo)) reference.push_back(std::move(r));
     }
   }
-  f.recheck = ApplyRechecks(study, tip_angle_deg, records, reference, &f.fast);
+  report = ApplyRechecks(study, tip_angle_deg, records, reference, fast);
+  return true;
+}
+
+// The soil pairing: the paired landings at the best values, re-checked, against `records` (the
+// study's, re-checked). False when stopped.
+bool PairSoil(const Study& study, double tip_angle_deg, const std::vector<DropRecord>& records,
+              const std::string& out_dir, const sweep::SweepRunOptions& options, std::ostream* say, StudyFollowUps& f) {
+  SoilPairingReport p;
+  p.enabled = study.soil_pairing.enabled;
+  if (!p.enabled) {
+    p.reason = "turned off (study.soil_pairing: none)";
+    f.soil_pairing = p;
+    return true;
+  }
+  Study twin = study;
+  twin.plan = SoilAtBestValuesPlan(study);
+  const std::vector<int64_t> indices = SoilPairingIndices(study);
+  const std::string dir = SoilPairingDir(out_dir);
+  if (say)
+    *say << "stability " << study.plan.name << ": running " << indices.size()
+         << " landing(s) again with every drawn soil at its calibration's best values in " << dir << "/\n";
+  if (!RunFollowUp(twin.plan, indices, dir, options, f)) return false;
+  std::vector<DropRecord> at_best;
+  for (auto& [index, r] : ReadStored(dir, indices)) at_best.push_back(std::move(r));
+  RecheckReport recheck;
+  if (!Recheck(twin, tip_angle_deg, at_best, dir, options, say, f, recheck, nullptr)) return false;
+  std::map<int64_t, DropRecord> by_index;
+  for (DropRecord& r : at_best) by_index.emplace(r.index, std::move(r));
+  p = PairBySoil(indices, records, by_index);
+  p.rechecked = recheck.rechecked;
+  p.recheck_changed = recheck.outcome_changed;
+  f.soil_pairing = p;
+  return true;
+}
+}  // namespace
+
+StudyFollowUps RunStudyFollowUps(const Study& study, std::vector<DropRecord> records, const std::string& out_dir,
+                                 const sweep::SweepRunOptions& options, std::ostream* say) {
+  StudyFollowUps f;
+  const double tip_angle_deg = StandingTipAngleDeg(study.plan);
+  if (!Recheck(study, tip_angle_deg, records, out_dir, options, say, f, f.recheck, &f.fast)) return f;
+  if (study.soil_uncertainty && !PairSoil(study, tip_angle_deg, records, out_dir, options, say, f)) return f;
 
   f.joint_range = JointRangeTrigger(study, records);
   JointRangeReport& j = f.joint_range;

@@ -8,6 +8,9 @@
 //   as their file says (a scenario's pad_angular_segments is a fast model's), so the published
 //   P(tip), percentiles and worst cases are the reference model's.
 //
+//   Soil pairing. A study that draws its soils runs its landings again with every soil at its
+//   calibration's best values, re-checked alike (soil_pairing.h).
+//
 //   Joint-range sensitivity. When the pads reach their ball joints' stops (a swing beyond the cone
 //   limit's half angle) in more than 5 % of the landings, K of them run again with every joint's
 //   half angle x0.5 and x1.5 (stiffness and damping unchanged): P(tip) on those K landings at the
@@ -22,9 +25,11 @@
 #include <cstdint>
 #include <iosfwd>
 #include <nlohmann/json_fwd.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "drop_tests/stability/soil_pairing.h"
 #include "drop_tests/stability/study.h"
 #include "drop_tests/stability/study_statistics.h"
 #include "drop_tests/sweep/results_db.h"
@@ -56,9 +61,10 @@ sweep::SweepPlan JointRangePlan(const Study& study, double factor);
 // The half angle of the lander's joint stops [deg]; NaN without a cone limit (the smallest over
 // the legs when they differ).
 double ConeHalfAngleDeg(const sweep::SweepPlan& plan);
-// The K landings the sensitivity runs: K = min(settings' samples, the study's landings), spread
-// evenly over the study's indices (floor(j N / K), j < K): all of them when K = N, and a random
-// study's sample of size K otherwise (each of its landings is an independent draw).
+// K of a study's N landings spread evenly over its indices (floor(j N / K), j < K): all of them when
+// K = N, and a random study's sample of size K otherwise (each of its landings is an independent draw).
+std::vector<int64_t> SpreadIndices(int64_t n, int64_t k);
+// The K landings the sensitivity runs: K = min(settings' samples, the study's landings), spread.
 std::vector<int64_t> JointRangeIndices(const Study& study);
 
 // Subdirectories of the study's directory the follow-ups write.
@@ -104,6 +110,7 @@ struct JointRangeReport {
 struct StudyFollowUps {
   RecheckReport recheck;
   JointRangeReport joint_range;
+  std::optional<SoilPairingReport> soil_pairing;  // a study with soil_uncertainty
   std::vector<sweep::DropRecord> records;  // the study's, the re-checked ones replaced by the reference's
   std::vector<sweep::DropRecord> fast;     // the fast records of the re-checked landings
   int stop_signal = 0;                     // a follow-up stopped by it: no analysis

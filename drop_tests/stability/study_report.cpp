@@ -33,6 +33,7 @@ StudySummary WriteStudyAnalysis(const Study& study, const std::string& out_dir, 
   StudySummary summary = Summarise(study, records);
   summary.recheck = follow_ups.recheck;
   summary.joint_range = follow_ups.joint_range;
+  summary.soil_pairing = follow_ups.soil_pairing;
   io::ReplaceDerivedOutputs(out_dir, io::OutputKind::kSweep, "summary.json", [&](const std::string& staging) {
     WriteStudyTables(study, summary, staging);
     WriteStudyPlots(study, summary, records, staging);

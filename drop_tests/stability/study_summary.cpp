@@ -318,7 +318,10 @@ nlohmann::json SummaryJson(const Study& study, const StudySummary& s) {
       {"disagreeing_landings", s.margin_disagreeing}};
   if (s.recheck) summary["recheck"] = RecheckJson(*s.recheck);
   if (s.joint_range) summary["joint_range_sensitivity"] = JointRangeJson(*s.joint_range);
-  if (study.soil_uncertainty) summary["soil_uncertainty"] = SoilSplitJson(*study.soil_uncertainty, s.soil_split);
+  if (study.soil_uncertainty) {
+    summary["soil_uncertainty"] = SoilSplitJson(*study.soil_uncertainty, s.soil_split);
+    if (s.soil_pairing) summary["soil_uncertainty"]["paired_with_best_values"] = SoilPairingJson(*s.soil_pairing);
+  }
   return summary;
 }
 

@@ -69,6 +69,8 @@ struct StudySummary {
   std::optional<JointRangeReport> joint_range;
   // A study with soil_uncertainty: the variance split and P(tip) at the soil's interval ends.
   std::optional<SoilSplit> soil_split;
+  // ... and its landings paired with the same ones at the soils' best values (soil_pairing.h).
+  std::optional<SoilPairingReport> soil_pairing;
 };
 
 // The value of a map axis for a landing: the plan's parameter for its index, in file units.

@@ -13,6 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "drop_tests/stability/soil_pairing.h"
 #include "drop_tests/stability/soil_uncertainty.h"
 #include "drop_tests/stability/study.h"
 #include "drop_tests/stability/study_outputs.h"
@@ -92,6 +93,14 @@ TEST_F(SoilUncertaintyTest, LoadTimeValidationNamesFileAndField) {
       {", soil_uncertainty: {fjs1_lp: {calibration: negative.json}}", kPadSoils, "covariance.parameters[0].value"},
       {", soil_uncertainty: fjs1_lp", kPadSoils, "must be a mapping of soil names"},
       {", soil_uncertainty: {}", kPadSoils, "must be a mapping of soil names"},
+      // The pairing: only beside draws, `none` or {samples: K}.
+      {", soil_pairing: {samples: 10}", kPadSoils, "study.soil_pairing: pairs the drawn soils"},
+      {", soil_uncertainty: {fjs1_lp: {calibration: cal.json}}, soil_pairing: all", kPadSoils,
+       "study.soil_pairing: must be none or a mapping {samples}"},
+      {", soil_uncertainty: {fjs1_lp: {calibration: cal.json}}, soil_pairing: {samples: 0}", kPadSoils,
+       "study.soil_pairing.samples"},
+      {", soil_uncertainty: {fjs1_lp: {calibration: cal.json}}, soil_pairing: {landings: 3}", kPadSoils,
+       "study.soil_pairing.landings"},
   };
   for (const Row& r : rows) EXPECT_NE(Refusal(r.block, r.extra).find(r.expected), std::string::npos) << r.block << "\n" << Refusal(r.block, r.extra);
   // A soil the calibration holds no interval for (held fixed, or at a bound) is refused by name.
@@ -566,6 +575,31 @@ TEST_F(SoilUncertaintyLandings, SummaryReportsTheSplit) {
   int rows = 0;
   while (std::getline(csv, line)) ++rows;
   EXPECT_EQ(rows, 12);
+  // The pairing (on by default): the 12 landings again at the best values, which the stored
+  // records carry as their soil parameters, against the drawn study.
+  ASSERT_TRUE(s.soil_pairing);
+  EXPECT_TRUE(s.soil_pairing->ran);
+  EXPECT_EQ(s.soil_pairing->samples, 12);
+  EXPECT_EQ(s.soil_pairing->landings + s.soil_pairing->failed, 12);
+  EXPECT_EQ(s.soil_pairing->tipped_drawn, s.tipped);
+  const nlohmann::json& p = u["paired_with_best_values"];
+  EXPECT_EQ(p["samples"], 12);
+  EXPECT_EQ(p["outcomes"][0]["outcome"], "tipped_over");
+  const sweep::ResultsDb db(sweep::ResultsDbPath(Path("out/soil_at_best_values")), sweep::ResultsDb::Access::kReadOnly);
+  int stored = 0;
+  db.ForEach(
+      [&](const sweep::DropRecord& r) {
+        ++stored;
+        ASSERT_EQ(r.soil_parameters.size(), 2u);
+        EXPECT_EQ(r.soil_parameters[0].second, 3.5);  // zeta LP's best value, exactly
+        EXPECT_EQ(r.soil_parameters[1].second, 6.0);
+      },
+      /*with_traces=*/false);
+  EXPECT_EQ(stored, 12);
+  // Every best-value landing differs from its drawn twin only by the soil: the same conditions.
+  const std::map<std::string, model::SoilOverride> best = SoilAtBestValuesPlan(study).soil_overrides_at(5);
+  EXPECT_EQ(best.at("fjs1_lp").zeta_N_m3, units::ZetaFromN_cm3(3.5));
+  EXPECT_EQ(best.at("fjs1_cp").zeta_N_m3, units::ZetaFromN_cm3(6.0));
 }
 
 // The estimator on hand-made records: an outcome that is a function of the drawn zeta alone is all
