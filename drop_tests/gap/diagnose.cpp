@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "drop_tests/gap/diagnose_selection.h"
+#include "drop_tests/gap/fixed_text.h"
 #include "drop_tests/util/nearest_name.h"
 #include "drop_tests/util/work_pool.h"
 #include "rft/input_error.h"
@@ -22,12 +23,6 @@ namespace touchdown::gap {
 namespace {
 
 const char* const kPhases[4] = {"impact_onset", "mid_stroke", "stopping", "rest"};
-
-std::string Fixed(double v, int digits) {
-  std::ostringstream s;
-  s << std::fixed << std::setprecision(digits) << v;
-  return s.str();
-}
 
 std::vector<bool> HeldOutSplit(const dataset::Dataset& ds) {
   std::map<std::string, std::vector<size_t>> cells;

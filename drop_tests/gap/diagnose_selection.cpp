@@ -5,15 +5,11 @@
 #include <iomanip>
 #include <sstream>
 
+#include "drop_tests/gap/fixed_text.h"
+
 namespace touchdown::gap {
 
 namespace {
-
-std::string Fixed(double v, int digits) {
-  std::ostringstream s;
-  s << std::fixed << std::setprecision(digits) << v;
-  return s.str();
-}
 
 std::string Short(double v) {
   std::ostringstream s;

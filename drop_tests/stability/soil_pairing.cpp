@@ -12,8 +12,6 @@ namespace touchdown::stability {
 namespace {
 using sweep::DropRecord;
 
-bool Tipped(const DropRecord& r) { return r.tipped_over == 1.0; }
-
 double SampleVariance(const std::vector<double>& x) {
   if (x.size() < 2) return 0.0;
   double mean = 0.0;

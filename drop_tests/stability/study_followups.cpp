@@ -11,6 +11,7 @@
 #include "drop_tests/formats/json_number.h"
 #include "drop_tests/scenario/lander_scenario_file.h"
 #include "drop_tests/scenario/lander_setup.h"
+#include "drop_tests/stability/study_summary.h"
 #include "lander/multibody/static_stability.h"
 #include "rft/units.h"
 
@@ -18,8 +19,6 @@ namespace touchdown::stability {
 
 namespace {
 using sweep::DropRecord;
-
-bool Tipped(const DropRecord& r) { return r.tipped_over == 1.0; }
 
 // The lander as a drop of the plan builds it (the pad of every pad the plan names, else the
 // scenario's), standing level at zero stroke: body and pads aligned with the world.

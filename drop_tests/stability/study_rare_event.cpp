@@ -52,8 +52,6 @@ std::vector<double> UniformsOf(const Eigen::VectorXd& u) {
   return out;
 }
 
-bool Tipped(const DropRecord& r) { return r.tipped_over == 1.0; }
-
 // The estimator's limit state: each batch of points runs as landings `next` onward of the
 // rare-event plan, through the sweep engine into `dir`, and comes back as their margins.
 class LandingLimitState {

@@ -13,9 +13,6 @@ namespace touchdown::stability {
 namespace {
 using sweep::DropRecord;
 
-
-bool Tipped(const DropRecord& r) { return r.tipped_over == 1.0; }
-
 std::vector<MapCell> EmptyMap(const StudyMap& map) {
   std::vector<MapCell> cells;
   const double wx = (map.x.high - map.x.low) / map.x.bins, wy = (map.y.high - map.y.low) / map.y.bins;
@@ -95,6 +92,8 @@ const std::vector<StudyMetric>& StudyMetrics() {
 double MapCoordinate(const Study& study, const MapAxis& axis, int64_t index) {
   return sweep::SweepParamFromSi(axis.param, sweep::ParamValue(study.plan.DropAt(index), axis.param));
 }
+
+bool Tipped(const DropRecord& r) { return r.tipped_over == 1.0; }
 
 bool StayedUp(const DropRecord& r) { return r.ok && !Tipped(r); }
 

@@ -76,6 +76,8 @@ struct StudySummary {
 // The value of a map axis for a landing: the plan's parameter for its index, in file units.
 double MapCoordinate(const Study& study, const MapAxis& axis, int64_t index);
 
+// Whether a landing tipped over (sweep::DropRecord::tipped_over is 1).
+bool Tipped(const sweep::DropRecord& r);
 // Whether a landing completed without tipping over: the landings percentiles, exceedance curves
 // and histograms describe.
 bool StayedUp(const sweep::DropRecord& r);

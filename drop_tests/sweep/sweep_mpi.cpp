@@ -48,7 +48,7 @@ constexpr int kTagResults = 1;  // rank -> 0: serialised records
 constexpr int kTagDone = 2;     // rank -> 0: no more results; payload: the stop signal (int), or empty
 constexpr int kTagRequest = 3;  // rank -> 0: uint64 count of indices wanted
 constexpr int kTagWork = 4;     // 0 -> rank: int64 drop indices (none: no more work)
-constexpr size_t kFeedLow = 256;  // a rank's queue length below which it asks for more
+constexpr size_t kRankFeedLow = 256;  // a rank's queue length below which it asks for more
 
 // One MPI session per process: MPI may be initialised and finalised once only, and a rare-event
 // study runs many sweeps. Started by the first RunSweepMpi, finalised at exit.
@@ -85,9 +85,9 @@ bool StopRequested(const SweepRunOptions& options) { return options.stop && opti
 
 // A rank other than 0: asks for work, computes it, sends the records.
 void RunWorkerRank(DropEngine& engine, const SweepRunOptions& options, SweepRunSummary& summary) {
-  const size_t want = std::max<size_t>(2 * kFeedLow, 16 * static_cast<size_t>(summary.threads));
+  const size_t want = std::max<size_t>(2 * kRankFeedLow, 16 * static_cast<size_t>(summary.threads));
   EngineDriver driver;
-  driver.feed_low = kFeedLow;
+  driver.feed_low = kRankFeedLow;
   driver.next = [&] {
     const uint64_t n = want;
     MPI_Send(&n, 1, MPI_UINT64_T, 0, kTagRequest, MPI_COMM_WORLD);
@@ -176,7 +176,7 @@ SweepRunSummary RunSweepMpi(const SweepPlan& plan, const std::string& out_dir, c
   // batch: N / 10 landings) is spread over the ranks rather than queued on rank 0 before the others
   // ask; a large sweep's shares exceed the chunks, which then decide alone.
   const size_t share = static_cast<size_t>(std::max<int64_t>(1, (todo->in_shard() - todo->already_done() + ranks - 1) / ranks));
-  auto feed = [&] { engine.Feed(std::min(kFeedLow, share), [&] { return todo->Next(std::min(4 * kFeedLow, share)); }); };
+  auto feed = [&] { engine.Feed(std::min(kRankFeedLow, share), [&] { return todo->Next(std::min(4 * kRankFeedLow, share)); }); };
   feed();
   while (!engine.Finished() || ranks_running > 0) {
     if (StopRequested(options)) stop(options.stop->load());
@@ -206,7 +206,7 @@ SweepRunSummary RunSweepMpi(const SweepPlan& plan, const std::string& out_dir, c
       }
     }
     feed();
-    commit(engine.Take(options.batch_size, engine.Finished() ? 0.0 : 0.02, kFeedLow,
+    commit(engine.Take(options.batch_size, engine.Finished() ? 0.0 : 0.02, kRankFeedLow,
                        stopping ? nullptr : options.stop));
     if (engine.Finished() && ranks_running > 0) {
       // Only remote work left: block until the next message arrives.

@@ -14,8 +14,6 @@ namespace fs = std::filesystem;
 namespace touchdown::targets {
 
 namespace {
-std::string Canonical(const std::string& path) { return fs::weakly_canonical(path).string(); }
-
 std::vector<std::string> SplitPath(const std::string& dotted) {
   std::vector<std::string> keys;
   std::stringstream s(dotted);

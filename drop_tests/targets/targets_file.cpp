@@ -84,8 +84,6 @@ std::string ResolveNear(const io::YamlFields& f, const std::string& kind, const 
   }
 }
 
-std::string Canonical(const std::string& path) { return fs::weakly_canonical(path).string(); }
-
 void ReadBounds(const io::YamlFields& p, Parameter& out) {
   out.lower = p.Number("lower");
   out.upper = p.Number("upper");
@@ -188,6 +186,8 @@ Quantity ReadQuantity(const io::YamlFields& m, bool lander) {
                          "; landers: " + KnownQuantities(true) + ")");
 }
 }  // namespace
+
+std::string Canonical(const std::string& path) { return fs::weakly_canonical(path).string(); }
 
 const char* QuantityName(Quantity q) {
   for (const QuantityEntry& e : kQuantities)

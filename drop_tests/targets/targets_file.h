@@ -129,5 +129,8 @@ struct TargetsFile {
 };
 
 TargetsFile LoadTargetsFile(const std::string& path);
+// A file's path as Parameter::file holds it (weakly canonical), so that a file compares equal to
+// itself however a scenario or targets file names it.
+std::string Canonical(const std::string& path);
 
 }  // namespace touchdown::targets
