@@ -94,10 +94,13 @@ void RunLanding(benchmark::State& state, const test::PaperLander& setup_in, cons
 // data/scenarios/lander_case_*.yaml), at the catalogue's 64 segments, on the soils as shipped
 // (their dynamic term included; TD_QUASI_STATIC=1: without it, as the lander tests pin).
 // The legs' ball joints have data/landers/sutoh2017_lander.yaml's 30 deg range (TD_FREE_JOINT=1: none);
-// TD_SEGMENTS meshes the pads at another number of rim segments (a study's pad_angular_segments).
+// TD_SEGMENTS meshes the pads at another number of rim segments (a study's pad_angular_segments),
+// TD_AREA_RIM=1 with the area-preserving rim (a study's pad_rim: area_preserving).
 test::PaperLander ShippedLanding(char ground_case) {
   const int segments = getenv("TD_SEGMENTS") ? atoi(getenv("TD_SEGMENTS")) : 64;
-  test::PaperLander setup = test::MakePaperLander(ground_case, segments, 0.10, getenv("TD_QUASI_STATIC") == nullptr);
+  const geom::RimPolygon rim = getenv("TD_AREA_RIM") ? geom::RimPolygon::kAreaPreserving : geom::RimPolygon::kInscribed;
+  test::PaperLander setup =
+      test::MakePaperLander(ground_case, segments, 0.10, getenv("TD_QUASI_STATIC") == nullptr, rim);
   if (!getenv("TD_FREE_JOINT"))
     for (lander::Leg& leg : setup.model.legs)
       leg.cone = lander::ConeLimit{.half_angle_rad = 30.0 * units::kDeg, .stiffness_N_m_rad = 200.0, .damping_N_m_s_rad = 0.16};

@@ -67,7 +67,12 @@ std::vector<ProfilePoint> ClosedGenerator(const AxisymmetricProfile& profile, do
 
 }  // namespace
 
-TriangleMesh RevolveProfileToMesh(const AxisymmetricProfile& profile, int angular_segments) {
+double AreaPreservingRadiusScale(int n) {
+  const double step = 2.0 * std::numbers::pi / n;
+  return std::sqrt(step / std::sin(step));
+}
+
+TriangleMesh RevolveProfileToMesh(const AxisymmetricProfile& profile, int angular_segments, RimPolygon rim) {
   if (angular_segments < kMinRingVertices)
     throw MakeInputError("", "angular_segments", "must be >= " + std::to_string(kMinRingVertices) + ", got " +
                                                      std::to_string(angular_segments));
@@ -95,9 +100,11 @@ TriangleMesh RevolveProfileToMesh(const AxisymmetricProfile& profile, int angula
       while (n % 2 == 0 && n / 2 >= kMinRingVertices && n / 2 >= n_rim * p.x_m / r_max) n /= 2;
     }
     rings.push_back({static_cast<int>(mesh.vertices.size()), n});
+    // Each ring scaled by its own count: the rings nearer the axis have fewer vertices.
+    const double r = n > 1 && rim == RimPolygon::kAreaPreserving ? p.x_m * AreaPreservingRadiusScale(n) : p.x_m;
     for (int i = 0; i < n; ++i) {
       const double theta = 2.0 * pi * i / n;
-      mesh.vertices.emplace_back(p.x_m * std::cos(theta), p.x_m * std::sin(theta), p.u_m);
+      mesh.vertices.emplace_back(r * std::cos(theta), r * std::sin(theta), p.u_m);
     }
   }
   // Bands between consecutive rings. Walking along the generator (outward on the bottom, up

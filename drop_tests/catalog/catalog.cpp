@@ -230,7 +230,7 @@ void LoadAxisymmetricPad(const YamlFields& f, PadSpec& pad) {
   mass.mass_kg = pad.mass_kg;
   ReadMassDistribution(f, mass, pad.file);
   pad.body = GuardedBody(f, [&] {
-    return geom::MakePadBody(geom::RevolveProfileToMesh(pad.profile, segments), mass, reference, f.file());
+    return geom::MakePadBody(geom::RevolveProfileToMesh(pad.profile, segments, pad.rim), mass, reference, f.file());
   });
 }
 
@@ -422,17 +422,18 @@ int PadRimSegments(const PadSpec& pad) {
   return pad.file.angular_segments > 0 ? pad.file.angular_segments : geom::kDefaultAngularSegments;
 }
 
-PadSpec PadWithAngularSegments(const PadSpec& pad, int angular_segments) {
+PadSpec PadWithAngularSegments(const PadSpec& pad, int angular_segments, geom::RimPolygon rim) {
   if (!pad.is_axisymmetric())
     throw MakeInputError(pad.source, "angular_segments", "pad '" + pad.name + "' is a mesh, not a revolved profile");
   YAML::Node node = YAML::Clone(YamlFields::LoadFile(pad.source).node());
   node["angular_segments"] = angular_segments;
-  return LoadPad(YamlFields(node, pad.source, ""));
+  return LoadPad(YamlFields(node, pad.source, ""), rim);
 }
 
-PadSpec LoadPad(const YamlFields& f) {
+PadSpec LoadPad(const YamlFields& f, geom::RimPolygon rim) {
   f.RequireSchemaVersion(1);
   PadSpec pad;
+  pad.rim = rim;
   pad.source = f.file();
   const std::string kind = f.StringOr("kind", "axisymmetric");
   pad.name = f.StringOr("name", fs::path(f.file()).stem().string());

@@ -9,6 +9,7 @@
 
 #include "footpad_geom/axisymmetric_profile.h"
 #include "footpad_geom/pad_body.h"
+#include "footpad_geom/revolve.h"
 #include <iosfwd>
 
 #include "rft/soil.h"
@@ -59,6 +60,9 @@ struct PadSpec {
   geom::PadBody body;  // every pad, in its pad frame B
   std::string mesh_file;  // a mesh pad's mesh, resolved path
   PadFileFields file;     // what the YAML file says (WritePad)
+  // How a revolved pad's rings stand for their circles: inscribed as a pad file meshes it; area
+  // preserving only as a scenario's simulation.pad_rim re-meshes it (not a pad-file field).
+  geom::RimPolygon rim = geom::RimPolygon::kInscribed;
 
   bool is_axisymmetric() const { return !profile.points.empty(); }
 };
@@ -103,17 +107,19 @@ std::string ResolveInputDocument(InputDocument document, const std::string& name
 
 PadSpec LoadPad(const std::string& name_or_path);
 // A pad from its file's YAML as read (YamlFields::LoadFile of the resolved file), possibly edited in
-// memory first (calibrate --targets changes a profile constant without touching the file).
-PadSpec LoadPad(const YamlFields& f);
+// memory first (calibrate --targets changes a profile constant without touching the file); a
+// revolved pad's rings `rim` (a mesh pad ignores it).
+PadSpec LoadPad(const YamlFields& f, geom::RimPolygon rim = geom::RimPolygon::kInscribed);
 
 // An inertia tensor block {ixx, iyy, izz, ixy, ixz, iyz} [kg m^2], products 0 when absent: the
 // moments within limits::kInertia_kg_m2 and the tensor a rigid body's (geom::ValidateInertia:
 // positive definite, I1 + I2 >= I3). A pad's inertia_kg_m2 and a lander's body_inertia_kg_m2.
 Eigen::Matrix3d ReadInertia(const YamlFields& block);
 // An axisymmetric pad revolved at another number of rim segments: its file read again with
-// `angular_segments` replaced (everything else as the file says). InputError naming the pad file
-// for a mesh pad or a count outside the range LoadPad accepts.
-PadSpec PadWithAngularSegments(const PadSpec& pad, int angular_segments);
+// `angular_segments` replaced (everything else as the file says), its rings' polygons `rim`.
+// InputError naming the pad file for a mesh pad or a count outside the range LoadPad accepts.
+PadSpec PadWithAngularSegments(const PadSpec& pad, int angular_segments,
+                               geom::RimPolygon rim = geom::RimPolygon::kInscribed);
 // The rim segments a revolved pad is meshed at (its file's angular_segments, or the default); 0 for
 // a mesh pad.
 int PadRimSegments(const PadSpec& pad);

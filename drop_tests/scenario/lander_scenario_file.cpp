@@ -198,6 +198,7 @@ LanderScenario AtPadFileMesh(const LanderScenario& scenario) {
                                  io::PadWithAngularSegments(scenario.lander.pad, scenario.pad_file_angular_segments));
   out.pad_angular_segments = 0;
   out.pad_file_angular_segments = 0;
+  out.pad_rim = geom::RimPolygon::kInscribed;
   return out;
 }
 
@@ -419,7 +420,8 @@ LanderInitialSpec ReadInitial(const io::YamlFields& in, bool resolved) {
 // The run options: duration, sampling, capture speed and the integrator's tolerances.
 void ReadSimulation(const io::YamlFields& sim, lander::LanderRunOptions& options) {
   sim.RequireOnly(
-      io::FieldKeys(RunNumberFields(), {"soil_ramp", "rtol", "atol", "max_step_s", "stiff", "pad_angular_segments"}));
+      io::FieldKeys(RunNumberFields(), {"soil_ramp", "rtol", "atol", "max_step_s", "stiff", "pad_angular_segments",
+                                                 "pad_rim"}));
   io::ReadFields(sim, RunNumberFields(), options);
   if (sim.Has("soil_ramp")) {
     const std::string v = sim.String("soil_ramp");
@@ -550,11 +552,20 @@ LanderScenario LoadLanderScenarioWithSetup(const std::string& path, std::optiona
   if (f.Has("simulation")) {
     const io::YamlFields sim = f.Child("simulation");
     ReadSimulation(sim, s.options);
+    if (sim.Has("pad_rim")) {
+      const std::string rim = sim.String("pad_rim");
+      if (rim != "inscribed" && rim != "area_preserving")
+        sim.Fail("pad_rim", "must be 'inscribed' or 'area_preserving', got '" + rim + "'");
+      // The pad file's own mesh is inscribed: another rim is a re-meshing, like another count.
+      if (!sim.Has("pad_angular_segments")) sim.Fail("pad_rim", "needs pad_angular_segments (the pads' re-meshing)");
+      if (rim == "area_preserving") s.pad_rim = geom::RimPolygon::kAreaPreserving;
+    }
     if (sim.Has("pad_angular_segments")) {
       s.pad_angular_segments = sim.PositiveInt("pad_angular_segments");
       s.pad_file_angular_segments = io::PadRimSegments(s.lander.pad);
       try {
-        s.lander = LanderSpecWithPad(s.lander, io::PadWithAngularSegments(s.lander.pad, s.pad_angular_segments));
+        s.lander = LanderSpecWithPad(s.lander,
+                                     io::PadWithAngularSegments(s.lander.pad, s.pad_angular_segments, s.pad_rim));
       } catch (const InputError& e) {
         sim.Fail("pad_angular_segments", e.what());
       }
@@ -715,6 +726,7 @@ void WriteResolvedLanderScenario(const LanderScenario& s, const LanderSetup& set
   if (s.options.soil_ramp != lander::LanderRunOptions{}.soil_ramp)
     y << YAML::Key << "soil_ramp" << YAML::Value << (s.options.soil_ramp == lander::SoilRamp::kElement ? "element" : "pad");
   if (s.pad_angular_segments > 0) y << YAML::Key << "pad_angular_segments" << YAML::Value << s.pad_angular_segments;
+  if (s.pad_rim == geom::RimPolygon::kAreaPreserving) y << YAML::Key << "pad_rim" << YAML::Value << "area_preserving";
   y << YAML::EndMap;
   if (!s.paper_ground_case.empty() || s.paper) {
     y << YAML::Key << "paper" << YAML::Value << YAML::BeginMap;

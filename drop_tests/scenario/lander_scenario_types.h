@@ -100,6 +100,9 @@ struct LanderScenario {
   // segments, a numerical resolution like rtol (0: as the pad file says).
   int pad_angular_segments = 0;
   int pad_file_angular_segments = 0;  // the pad file's own, when pad_angular_segments re-meshed it
+  // simulation.pad_rim: the re-meshed pads' rings inscribed in their circles (the pad file's way) or
+  // scaled to their circles' areas (geom::RimPolygon); only with pad_angular_segments.
+  geom::RimPolygon pad_rim = geom::RimPolygon::kInscribed;
   std::optional<LanderPaperCheck> paper;
   std::string paper_ground_case;  // e.g. "CP LP LP LP" (Table II), informational
   // `touchdown lander --model`: zeta per soil and the effect terms (3D forms), for every soil

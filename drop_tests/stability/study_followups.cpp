@@ -116,7 +116,8 @@ JointRangeReport JointRangeTrigger(const Study& study, const std::vector<DropRec
 std::string ReferenceMeshNote(const Study& study) {
   if (!study.plan.lander || study.plan.lander->pad_angular_segments == 0) return "";
   return ", pads at their file's " + std::to_string(study.plan.lander->pad_file_angular_segments) +
-         " rim segments instead of " + std::to_string(study.plan.lander->pad_angular_segments);
+         " rim segments instead of " + std::to_string(study.plan.lander->pad_angular_segments) +
+         (study.plan.lander->pad_rim == geom::RimPolygon::kAreaPreserving ? " area-preserving" : "");
 }
 }  // namespace
 

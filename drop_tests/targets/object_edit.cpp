@@ -136,19 +136,19 @@ YAML::Node ObjectEditor::EditedNode(const std::string& file, const std::vector<d
 }
 
 std::optional<io::PadSpec> ObjectEditor::EditedPad(const std::string& pad_file, const std::vector<double>& values,
-                                                   int angular_segments) const {
+                                                   int angular_segments, geom::RimPolygon rim) const {
   const std::string file = Canonical(pad_file);
   for (const Parameter& p : parameters_)
     if (p.kind == ParameterKind::kPadField && p.file == file) {
       YAML::Node node = EditedNode(file, values);
       if (angular_segments > 0) node["angular_segments"] = angular_segments;
-      return io::LoadPad(io::YamlFields(node, file, ""));
+      return io::LoadPad(io::YamlFields(node, file, ""), angular_segments > 0 ? rim : geom::RimPolygon::kInscribed);
     }
   return std::nullopt;
 }
 
 scenario::LanderSpec ObjectEditor::EditedLander(const scenario::LanderSpec& lander, const std::vector<double>& values,
-                                                int angular_segments) const {
+                                                int angular_segments, geom::RimPolygon rim) const {
   const std::string file = Canonical(lander.source);
   scenario::LanderSpec out = lander;
   for (const Parameter& p : parameters_)
@@ -156,11 +156,11 @@ scenario::LanderSpec ObjectEditor::EditedLander(const scenario::LanderSpec& land
       out = scenario::LoadLanderSpec(io::YamlFields(EditedNode(file, values), file, ""));
       break;
     }
-  if (std::optional<io::PadSpec> pad = EditedPad(out.pad.source, values, angular_segments)) {
+  if (std::optional<io::PadSpec> pad = EditedPad(out.pad.source, values, angular_segments, rim)) {
     out = scenario::LanderSpecWithPad(out, *pad);
-  } else if (angular_segments > 0 && out.pad.file.angular_segments != angular_segments) {
+  } else if (angular_segments > 0 && (out.pad.file.angular_segments != angular_segments || out.pad.rim != rim)) {
     // An edited lander file was read again, and its pad at the pad file's resolution.
-    out = scenario::LanderSpecWithPad(out, io::PadWithAngularSegments(out.pad, angular_segments));
+    out = scenario::LanderSpecWithPad(out, io::PadWithAngularSegments(out.pad, angular_segments, rim));
   }
   return out;
 }

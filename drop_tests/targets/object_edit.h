@@ -31,13 +31,16 @@ class ObjectEditor {
  public:
   explicit ObjectEditor(const std::vector<Parameter>& parameters);
   // The pad of `pad_file` with the pad parameters' values; none when no parameter changes it.
-  // `angular_segments` > 0: revolved at that many rim segments (a scenario's pad_angular_segments).
+  // `angular_segments` > 0: revolved at that many rim segments with rings `rim` (a scenario's
+  // pad_angular_segments and pad_rim).
   std::optional<io::PadSpec> EditedPad(const std::string& pad_file, const std::vector<double>& values,
-                                       int angular_segments = 0) const;
+                                       int angular_segments = 0,
+                                       geom::RimPolygon rim = geom::RimPolygon::kInscribed) const;
   // The lander as the scenario has it, with the lander's and its pad's parameters applied, its pad
-  // at the scenario's `angular_segments` (> 0) whether or not a parameter reloads it.
+  // at the scenario's `angular_segments` (> 0) and `rim` whether or not a parameter reloads it.
   scenario::LanderSpec EditedLander(const scenario::LanderSpec& lander, const std::vector<double>& values,
-                                    int angular_segments = 0) const;
+                                    int angular_segments = 0,
+                                    geom::RimPolygon rim = geom::RimPolygon::kInscribed) const;
 
  private:
   YAML::Node EditedNode(const std::string& file, const std::vector<double>& values) const;

@@ -92,7 +92,7 @@ ScenarioOutcome TargetEvaluator::RunScenario(size_t index, const std::vector<dou
   const ScenarioRun& run = file_.scenarios[index];
   if (run.kind == ScenarioRun::Kind::kLander) {
     scenario::LanderScenario s = *run.lander;
-    s.lander = editor_.EditedLander(s.lander, values, s.pad_angular_segments);
+    s.lander = editor_.EditedLander(s.lander, values, s.pad_angular_segments, s.pad_rim);
     s.model = SoilModel(file_.parameters, values);
     return LanderOutcome(scenario::RunLanderScenario(s));
   }

@@ -96,6 +96,34 @@ TEST(RevolvedPads, FlatPadIsTheInscribedPolygonPrism) {
   }
 }
 
+// The area-preserving rim: every horizontal section has its circle's area, so a flat pad's bottom
+// (a planar triangulation of the rim n-gon) is pi r^2 and its volume pi r^2 h at any n; the
+// side wall is the scaled n-gon's perimeter, 2 n r s sin(pi / n) with s = sqrt((2 pi / n) / sin(2 pi / n)).
+TEST(RevolvedPads, AreaPreservingRimHasTheCirclesArea) {
+  const double pi = std::numbers::pi;
+  for (int n : {6, 12, 16, 24, 100, 128}) {
+    const double s = AreaPreservingRadiusScale(n);
+    EXPECT_NEAR(0.5 * n * std::pow(s * kR, 2) * std::sin(2 * pi / n), pi * kR * kR, 1e-12 * pi * kR * kR) << n;
+    const TriangleMesh mesh = RevolveProfileToMesh(MakeFlatProfile(kR, kH), n, RimPolygon::kAreaPreserving);
+    EXPECT_NEAR(Volume(mesh), pi * kR * kR * kH, 1e-12 * pi * kR * kR * kH) << n;
+    EXPECT_NEAR(Area(mesh), 2 * pi * kR * kR + n * 2 * s * kR * std::sin(pi / n) * kH, 1e-12) << n;
+    double bottom = 0.0;  // the bottom alone: the triangles at z = 0
+    for (const auto& t : mesh.triangles)
+      if (mesh.vertices[t[0]].z() == 0.0 && mesh.vertices[t[1]].z() == 0.0 && mesh.vertices[t[2]].z() == 0.0)
+        bottom += 0.5 * (mesh.vertices[t[1]] - mesh.vertices[t[0]]).cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]).norm();
+    EXPECT_NEAR(bottom, pi * kR * kR, 1e-12 * pi * kR * kR) << n;
+    // Still closed, outward and valid; the lowest point stays on the axis at the origin.
+    const PreparedMesh prepared = PrepareTriangleMesh(ToPolygonSoup(mesh), "area_preserving");
+    EXPECT_FALSE(prepared.reoriented);
+    EXPECT_EQ(prepared.mesh.triangles.size(), mesh.triangles.size());
+  }
+  // The inscribed rim is the default and unchanged: vertex for vertex the mesh above.
+  const TriangleMesh plain = RevolveProfileToMesh(MakeFlatProfile(kR, kH), 24);
+  const TriangleMesh inscribed = RevolveProfileToMesh(MakeFlatProfile(kR, kH), 24, RimPolygon::kInscribed);
+  ASSERT_EQ(plain.vertices.size(), inscribed.vertices.size());
+  for (std::size_t i = 0; i < plain.vertices.size(); ++i) EXPECT_EQ(plain.vertices[i], inscribed.vertices[i]);
+}
+
 TEST(RevolvedPads, AreaAndVolumeConvergeToClosedForms) {
   for (const ShapeCase& s : Shapes()) {
     SCOPED_TRACE(s.name);

@@ -190,6 +190,62 @@ TEST_F(LanderScenarioRoundTrip, PadAngularSegmentsReMeshTheLandersPads) {
   }
 }
 
+// The largest distance of a pad vertex from the pad's axis (z_B through the frame's origin).
+double RimRadius(const LanderScenario& s) {
+  const Eigen::Matrix3Xd& v = s.lander.pad.body.vertices_B;
+  return v.topRows<2>().colwise().norm().maxCoeff();
+}
+
+// simulation.pad_rim: area_preserving re-meshes the pads with every ring scaled to its circle's
+// area; the resolved copy says it and loads to the
+// same pads, the reference model (AtPadFileMesh) is inscribed again, and the rim is refused without
+// pad_angular_segments or with an unknown name.
+TEST_F(LanderScenarioRoundTrip, PadRimAreaPreservingIsAReMeshing) {
+  const std::string head = "schema_version: 1\ntype: lander\nname: coarse\nlander: sutoh2017_lander\n"
+                           "ground: {soil: fjs1_lp}\ninitial: {drop_height_m: 0.1}\n";
+  std::ofstream(Path("plain.yaml")) << head << "simulation: {pad_angular_segments: 16}\n";
+  std::ofstream(Path("inscribed.yaml")) << head << "simulation: {pad_angular_segments: 16, pad_rim: inscribed}\n";
+  std::ofstream(Path("area.yaml")) << head << "simulation: {pad_angular_segments: 16, pad_rim: area_preserving}\n";
+  const LanderScenario plain = LoadLanderScenario(Path("plain.yaml"));
+  const LanderScenario inscribed = LoadLanderScenario(Path("inscribed.yaml"));
+  const LanderScenario area = LoadLanderScenario(Path("area.yaml"));
+  EXPECT_EQ(plain.pad_rim, geom::RimPolygon::kInscribed);
+  EXPECT_EQ(inscribed.pad_rim, geom::RimPolygon::kInscribed);
+  EXPECT_EQ(area.pad_rim, geom::RimPolygon::kAreaPreserving);
+  EXPECT_EQ(area.lander.pad.rim, geom::RimPolygon::kAreaPreserving);
+  ASSERT_EQ(plain.lander.pad.body.surface.size(), inscribed.lander.pad.body.surface.size());
+  EXPECT_EQ(plain.lander.pad.body.vertices_B, inscribed.lander.pad.body.vertices_B);
+  // sutoh2017_footpad (flat, r = 27.5 mm): the rim at r, or at r sqrt((2 pi / 16) / sin(2 pi / 16)).
+  EXPECT_NEAR(RimRadius(plain), 0.0275, 1e-15);
+  EXPECT_NEAR(RimRadius(area), 0.0275 * geom::AreaPreservingRadiusScale(16), 1e-15);
+  EXPECT_EQ(area.lander.body_mass_kg, plain.lander.body_mass_kg);
+  fs::create_directories(dir_ / "out");
+  RoundTripLanderScenario(Path("area.yaml"), Path("out/area_1.yaml"), Path("out/area_2.yaml"));
+  EXPECT_NE(Slurp(Path("out/area_1.yaml")).find("pad_rim: area_preserving"), std::string::npos);
+  EXPECT_EQ(LoadLanderScenario(Path("out/area_1.yaml")).lander.pad.body.vertices_B, area.lander.pad.body.vertices_B);
+  // The default writes nothing new: a plain re-meshing's resolved copy has no pad_rim.
+  RoundTripLanderScenario(Path("plain.yaml"), Path("out/plain_1.yaml"), Path("out/plain_2.yaml"));
+  EXPECT_EQ(Slurp(Path("out/plain_1.yaml")).find("pad_rim"), std::string::npos);
+  const LanderScenario as_file = AtPadFileMesh(area);
+  EXPECT_EQ(as_file.pad_rim, geom::RimPolygon::kInscribed);
+  EXPECT_EQ(as_file.lander.pad.rim, geom::RimPolygon::kInscribed);
+  EXPECT_EQ(as_file.lander.pad.body.vertices_B, AtPadFileMesh(plain).lander.pad.body.vertices_B);
+
+  const auto refused = [&](const std::string& simulation, const std::string& says) {
+    std::ofstream(Path("bad.yaml")) << head << "simulation: " << simulation << "\n";
+    try {
+      LoadLanderScenario(Path("bad.yaml"));
+      ADD_FAILURE() << simulation << " accepted";
+    } catch (const InputError& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find("simulation.pad_rim"), std::string::npos) << what;
+      EXPECT_NE(what.find(says), std::string::npos) << what;
+    }
+  };
+  refused("{pad_rim: area_preserving}", "needs pad_angular_segments");
+  refused("{pad_angular_segments: 16, pad_rim: circumscribed}", "must be 'inscribed' or 'area_preserving'");
+}
+
 TEST_F(LanderScenarioRoundTrip, APaperCheckUsedForAFitSaysByWhat) {
   const std::string head = "schema_version: 1\ntype: lander\nname: fitted\nlander: sutoh2017_lander\n"
                            "ground: {soil: fjs1_lp}\ninitial: {drop_height_m: 0.1}\n";
