@@ -1,5 +1,6 @@
 #include "drop_tests/stability/soil_pairing.h"
 
+#include <Eigen/Core>
 #include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -12,14 +13,11 @@ namespace touchdown::stability {
 namespace {
 using sweep::DropRecord;
 
+// The unbiased sample variance (n - 1 in the denominator); 0 below two values.
 double SampleVariance(const std::vector<double>& x) {
   if (x.size() < 2) return 0.0;
-  double mean = 0.0;
-  for (double v : x) mean += v;
-  mean /= double(x.size());
-  double sum = 0.0;
-  for (double v : x) sum += (v - mean) * (v - mean);
-  return sum / double(x.size() - 1);
+  const Eigen::Map<const Eigen::ArrayXd> v(x.data(), Eigen::Index(x.size()));
+  return (v - v.mean()).square().sum() / double(x.size() - 1);
 }
 
 PairedOutcome Compare(const std::string& outcome, const std::string& unit, const std::vector<double>& drawn,
@@ -70,9 +68,10 @@ std::vector<int64_t> SoilPairingIndices(const Study& study) {
 }
 
 SoilPairingReport PairBySoil(const std::vector<int64_t>& indices, const std::vector<DropRecord>& study_records,
-                             const std::map<int64_t, DropRecord>& at_best_values) {
-  std::map<int64_t, const DropRecord*> drawn;
+                             const std::vector<DropRecord>& at_best_values) {
+  std::map<int64_t, const DropRecord*> drawn, best;
   for (const DropRecord& r : study_records) drawn[r.index] = &r;
+  for (const DropRecord& r : at_best_values) best[r.index] = &r;
   SoilPairingReport p;
   p.ran = true;
   p.samples = int64_t(indices.size());
@@ -80,12 +79,12 @@ SoilPairingReport PairBySoil(const std::vector<int64_t>& indices, const std::vec
   std::vector<std::vector<double>> metric_drawn(StudyMetrics().size()), metric_best(StudyMetrics().size());
   for (int64_t i : indices) {
     const auto d = drawn.find(i);
-    const auto b = at_best_values.find(i);
-    if (d == drawn.end() || b == at_best_values.end() || !d->second->ok || !b->second.ok) {
+    const auto b = best.find(i);
+    if (d == drawn.end() || b == best.end() || !d->second->ok || !b->second->ok) {
       ++p.failed;
       continue;
     }
-    const DropRecord &x = *d->second, &y = b->second;
+    const DropRecord &x = *d->second, &y = *b->second;
     ++p.landings;
     p.tipped_drawn += Tipped(x);
     p.tipped_best += Tipped(y);

@@ -10,7 +10,6 @@
 // like the study's: those whose outcome could flip run again on the reference model
 // (DIR/soil_at_best_values/recheck/), so both sides of a pair are the same model's.
 #include <cstdint>
-#include <map>
 #include <nlohmann/json_fwd.hpp>
 #include <string>
 #include <vector>
@@ -56,7 +55,7 @@ std::vector<int64_t> SoilPairingIndices(const Study& study);
 
 // The pairs of `indices`: the study's records (after its re-checks) against the best-value ones.
 SoilPairingReport PairBySoil(const std::vector<int64_t>& indices, const std::vector<sweep::DropRecord>& study_records,
-                             const std::map<int64_t, sweep::DropRecord>& at_best_values);
+                             const std::vector<sweep::DropRecord>& at_best_values);
 nlohmann::json SoilPairingJson(const SoilPairingReport& report);
 
 }  // namespace touchdown::stability

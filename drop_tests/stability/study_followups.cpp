@@ -282,9 +282,7 @@ bool PairSoil(const Study& study, double tip_angle_deg, const std::vector<DropRe
   for (auto& [index, r] : ReadStored(dir, indices)) at_best.push_back(std::move(r));
   RecheckReport recheck;
   if (!Recheck(twin, tip_angle_deg, at_best, dir, options, say, f, recheck, nullptr)) return false;
-  std::map<int64_t, DropRecord> by_index;
-  for (DropRecord& r : at_best) by_index.emplace(r.index, std::move(r));
-  p = PairBySoil(indices, records, by_index);
+  p = PairBySoil(indices, records, at_best);
   p.rechecked = recheck.rechecked;
   p.recheck_changed = recheck.outcome_changed;
   f.soil_pairing = p;

@@ -2,7 +2,6 @@
 // P(tip) on both sides, and each outcome's share var(drawn - best) / var(drawn).
 #include <gtest/gtest.h>
 
-#include <map>
 #include <string>
 #include <vector>
 
@@ -29,12 +28,12 @@ TEST(SoilPairing, NamesTheFlipsAndSharesTheVarianceAsTheClosedFormSays) {
   // max tilt twice the best value's, so drawn - best = best and the share is var(b) / var(2 b) = 1/4.
   std::vector<int64_t> indices;
   std::vector<sweep::DropRecord> drawn;
-  std::map<int64_t, sweep::DropRecord> best;
+  std::vector<sweep::DropRecord> best;
   for (int64_t i = 0; i < 100; ++i) {
     indices.push_back(i);
     const double tilt = 1.0 + 0.1 * double(i);
     drawn.push_back(PairLanding(i, i % 10 == 0, 2.0 * tilt));
-    best.emplace(i, PairLanding(i, (i % 10 == 0 && i != 0) || i == 5, tilt));
+    best.push_back(PairLanding(i, (i % 10 == 0 && i != 0) || i == 5, tilt));
   }
   const SoilPairingReport p = PairBySoil(indices, drawn, best);
   EXPECT_EQ(p.landings, 100);
@@ -61,7 +60,7 @@ TEST(SoilPairing, NamesTheFlipsAndSharesTheVarianceAsTheClosedFormSays) {
 
 TEST(SoilPairing, ALandingFailedOnEitherSideIsNotPaired) {
   std::vector<sweep::DropRecord> drawn{PairLanding(0, false, 3.0), PairLanding(1, true, 50.0), PairLanding(2, false, 4.0)};
-  std::map<int64_t, sweep::DropRecord> best{{0, PairLanding(0, false, 3.0)}, {1, PairLanding(1, false, 30.0)}};
+  std::vector<sweep::DropRecord> best{PairLanding(0, false, 3.0), PairLanding(1, false, 30.0)};
   drawn[2].ok = false;
   const SoilPairingReport p = PairBySoil({0, 1, 2}, drawn, best);
   EXPECT_EQ(p.landings, 2);
