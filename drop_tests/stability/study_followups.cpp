@@ -26,8 +26,8 @@ double TipAngleOfLander(const scenario::LanderScenario& sc) {
   const lander::LanderModel model = scenario::BuildLanderModel(sc);  // no soil needed
   const lander::StateLayout layout(model);
   Eigen::VectorXd y = Eigen::VectorXd::Zero(layout.size);
-  y.segment<4>(layout.quat_B()) << 1.0, 0.0, 0.0, 0.0;
-  for (int i = 0; i < lander::kNumLegs; ++i) y.segment<4>(layout.quat_P(i)) << 1.0, 0.0, 0.0, 0.0;
+  y.segment<4>(layout.quat_WB()) << 1.0, 0.0, 0.0, 0.0;
+  for (int i = 0; i < lander::kNumLegs; ++i) y.segment<4>(layout.quat_WP(i)) << 1.0, 0.0, 0.0, 0.0;
   double smallest = INFINITY;
   for (const lander::EdgeTipping& e : lander::EdgeTippings(model, layout, y))
     smallest = std::min(smallest, e.tip_angle_rad);

@@ -38,7 +38,7 @@ void PadJacobians(const StateLayout& L, int i, const PadFrame& pf, const Eigen::
   J_J->block<3, 3>(0, 3) = -Skew(pf.r_BJ_W);
   if (L.stroke_slot[i] >= 0) J_J->col(L.u_stroke(i)) = -pf.axis_W;
   *J_C = *J_J;
-  J_C->block<3, 3>(0, L.u_w_P(i)) = -Skew(pf.c_JC_W);
+  J_C->block<3, 3>(0, L.u_w_WP_W(i)) = -Skew(pf.c_JC_W);
   *bias_J = w_B.cross(w_B.cross(pf.r_BJ_W)) - 2.0 * stroke_rate * w_B.cross(pf.axis_W);
   *bias_C = *bias_J + pf.w_WP_W.cross(pf.w_WP_W.cross(pf.c_JC_W));
 }
@@ -73,10 +73,10 @@ void FinishModel(LanderModel& model) {
 
 LanderPose ComputePose(const LanderModel& model, const StateLayout& L, const Eigen::Ref<const Eigen::VectorXd>& y) {
   LanderPose p;
-  p.R_WB = QuatAt(y, L.quat_B()).toRotationMatrix();
-  p.p_WB = y.segment<3>(L.p_B());
-  p.v_WB_W = y.segment<3>(L.v_B());
-  p.w_WB_W = y.segment<3>(L.w_B());
+  p.R_WB = QuatAt(y, L.quat_WB()).toRotationMatrix();
+  p.p_WB = y.segment<3>(L.p_WB());
+  p.v_WB_W = y.segment<3>(L.v_WB_W());
+  p.w_WB_W = y.segment<3>(L.w_WB_W());
   for (int i = 0; i < kNumLegs; ++i) {
     const Leg& leg = model.legs[i];
     PadFrame& f = p.pads[i];
@@ -86,8 +86,8 @@ LanderPose ComputePose(const LanderModel& model, const StateLayout& L, const Eig
     f.r_BJ_W = p.R_WB * leg.joint_B - s * f.axis_W;
     f.p_WJ = p.p_WB + f.r_BJ_W;
     f.v_WJ_W = p.v_WB_W + p.w_WB_W.cross(f.r_BJ_W) - sdot * f.axis_W;
-    f.R_WP = QuatAt(y, L.quat_P(i)).toRotationMatrix();
-    f.w_WP_W = y.segment<3>(L.w_P(i));
+    f.R_WP = QuatAt(y, L.quat_WP(i)).toRotationMatrix();
+    f.w_WP_W = y.segment<3>(L.w_WP_W(i));
     f.c_JC_W = f.R_WP * leg.pad->com_B;
     f.shear_displacement_m = L.has_shear ? y[L.shear(i)] : 0.0;
   }
@@ -165,7 +165,7 @@ void Assemble(const LanderModel& model, const StateLayout& L, const rft::Terrain
     PadJacobians(L, i, f, p.w_WB_W, sdot, &J_C, &a->J_J[i], &bias_C, &a->bias_J[i]);
     a->M.noalias() += m * J_C.transpose() * J_C;
     const Eigen::Matrix3d I_P = f.R_WP * leg.pad->inertia_com_B * f.R_WP.transpose();
-    a->M.block<3, 3>(L.u_w_P(i), L.u_w_P(i)) += I_P;
+    a->M.block<3, 3>(L.u_w_WP_W(i), L.u_w_WP_W(i)) += I_P;
 
     // Soil: RFT on a free pad in contact; a held pad's wrench is a constraint force (later).
     rft::ContactWrench& w = e->soil[i];
@@ -226,7 +226,7 @@ void Assemble(const LanderModel& model, const StateLayout& L, const rft::Terrain
         e->dissipation_W += pushes ? damping * rate : -spring * rate;
       }
     }
-    a->Q.segment<3>(L.u_w_P(i)) += tau;
+    a->Q.segment<3>(L.u_w_WP_W(i)) += tau;
 
     // Shock absorber: generalised force on the stroke (compression) coordinate.
     e->leg_force_N[i] = 0.0;
@@ -318,7 +318,7 @@ void EvaluateLander(const LanderModel& model, const StateLayout& L, const rft::T
         pad_row[i] = r;
         G.block(r, 0, 3, L.nu) = a.J_J[i];
         d.bias.segment<3>(r) = a.bias_J[i];
-        G.block<3, 3>(r + 3, L.u_w_P(i)).setIdentity();
+        G.block<3, 3>(r + 3, L.u_w_WP_W(i)).setIdentity();
         r += 6;
       }
       if (L.stroke_slot[i] >= 0 && model.legs[i].absorber->kind == ShockAbsorber::Kind::kCrushable &&
@@ -363,10 +363,10 @@ void StateDerivative(const StateLayout& L, const Eigen::Ref<const Eigen::VectorX
     ydot[qi] = 0.5 * d.w();
     ydot.segment<3>(qi + 1) = 0.5 * d.vec();
   };
-  ydot.segment<3>(L.p_B()) = y.segment<3>(L.v_B());
-  quat_rate(L.quat_B(), y.segment<3>(L.w_B()));
+  ydot.segment<3>(L.p_WB()) = y.segment<3>(L.v_WB_W());
+  quat_rate(L.quat_WB(), y.segment<3>(L.w_WB_W()));
   for (int i = 0; i < kNumLegs; ++i) {
-    quat_rate(L.quat_P(i), y.segment<3>(L.w_P(i)));
+    quat_rate(L.quat_WP(i), y.segment<3>(L.w_WP_W(i)));
     if (L.stroke_slot[i] >= 0) ydot[L.stroke(i)] = y[L.stroke_rate(i)];
   }
   ydot.segment(L.nq, L.nu) = e.u_dot;
@@ -421,7 +421,7 @@ Eigen::MatrixXd HoldJacobian(const LanderModel& model, const StateLayout& L, con
       Eigen::Vector3d bC, bJ;
       PadJacobians(L, i, pose.pads[i], pose.w_WB_W, sdot, &J_C, &J_J, &bC, &bJ);
       G.block(r, 0, 3, L.nu) = J_J;
-      G.block<3, 3>(r + 3, L.u_w_P(i)).setIdentity();
+      G.block<3, 3>(r + 3, L.u_w_WP_W(i)).setIdentity();
       r += 6;
     }
     if (L.stroke_slot[i] >= 0 && model.legs[i].absorber->kind == ShockAbsorber::Kind::kCrushable &&
@@ -447,7 +447,7 @@ double ProjectOntoConstraints(const LanderModel& model, const StateLayout& L, co
     Eigen::Vector3d bC, bJ;
     PadJacobians(L, i, f, pose.w_WB_W, sdot, &J_C, &J_J, &bC, &bJ);
     M.noalias() += model.legs[i].pad->mass_kg * J_C.transpose() * J_C;
-    M.block<3, 3>(L.u_w_P(i), L.u_w_P(i)) += f.R_WP * model.legs[i].pad->inertia_com_B * f.R_WP.transpose();
+    M.block<3, 3>(L.u_w_WP_W(i), L.u_w_WP_W(i)) += f.R_WP * model.legs[i].pad->inertia_com_B * f.R_WP.transpose();
   }
   const Eigen::MatrixXd G = HoldJacobian(model, L, modes, pose, y);
   if (G.rows() == 0) return 0.0;
@@ -478,8 +478,8 @@ bool HoldsFixTheStance(const LanderModel& model, const StateLayout& L, const Lan
 }
 
 void NormalizeQuaternions(const StateLayout& L, Eigen::Ref<Eigen::VectorXd> y) {
-  y.segment<4>(L.quat_B()).normalize();
-  for (int i = 0; i < kNumLegs; ++i) y.segment<4>(L.quat_P(i)).normalize();
+  y.segment<4>(L.quat_WB()).normalize();
+  for (int i = 0; i < kNumLegs; ++i) y.segment<4>(L.quat_WP(i)).normalize();
 }
 
 Attitude BodyAttitude(const Eigen::Matrix3d& R) {

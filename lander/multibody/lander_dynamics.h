@@ -32,8 +32,9 @@
 
 namespace touchdown::lander {
 
-// Index layout of the state vector for a model (absorber legs get a stroke coordinate), derived
-// from the number of legs: positions [p_WB (3), quat_WB (4), quat_WP per leg (4), strokes], speeds
+// Index layout of the state vector for a model (absorber legs get a stroke coordinate) of the
+// four legs (kNumLegs, fixed at compile time: the arrays of LanderModes and LanderRunResult are
+// sized by it): positions [p_WB (3), quat_WB (4), quat_WP per leg (4), strokes], speeds
 // [v_WB_W (3), w_WB_W (3), w_WP_W per leg (3), stroke rates], then the dissipated work.
 struct StateLayout {
   static constexpr int kBodyPositions = 3 + 4, kPadPositions = 4;
@@ -48,18 +49,18 @@ struct StateLayout {
   int stroke_slot[kNumLegs];  // index among strokes, -1 for a rigid leg
   int num_strokes = 0;
   int nq = 0, nu = 0, size = 0;
-  int p_B() const { return 0; }
-  int quat_B() const { return 3; }
-  int quat_P(int leg) const { return kBodyPositions + kPadPositions * leg; }
+  int p_WB() const { return 0; }
+  int quat_WB() const { return 3; }
+  int quat_WP(int leg) const { return kBodyPositions + kPadPositions * leg; }
   int stroke(int leg) const { return kFirstStroke + stroke_slot[leg]; }
-  int v_B() const { return nq; }
-  int w_B() const { return nq + 3; }
-  int w_P(int leg) const { return nq + u_w_P(leg); }
+  int v_WB_W() const { return nq; }
+  int w_WB_W() const { return nq + 3; }
+  int w_WP_W(int leg) const { return nq + u_w_WP_W(leg); }
   int stroke_rate(int leg) const { return nq + u_stroke(leg); }
   int work() const { return nq + nu; }
   int shear(int leg) const { return nq + nu + 1 + leg; }  // only with has_shear
   // Column of a generalised speed in u (not in y).
-  int u_w_P(int leg) const { return kBodySpeeds + kPadSpeeds * leg; }
+  int u_w_WP_W(int leg) const { return kBodySpeeds + kPadSpeeds * leg; }
   int u_stroke(int leg) const { return kFirstStrokeRate + stroke_slot[leg]; }
 };
 

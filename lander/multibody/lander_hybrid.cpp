@@ -148,7 +148,7 @@ void LanderHybrid::Record(double t, const Eigen::VectorXd& s) {
   x.v_WB_W = e.pose.v_WB_W;
   x.w_WB_W = e.pose.w_WB_W;
   x.attitude = BodyAttitude(e.pose.R_WB);
-  x.q_WB = s.segment<4>(L_.quat_B()).normalized();
+  x.q_WB = s.segment<4>(L_.quat_WB()).normalized();
   x.a_WB_W = e.u_dot.head<3>();
   for (int i = 0; i < kNumLegs; ++i) {
     x.pad_depth_m[i] = PadDepth(model_, terrain_, i, e.pose.pads[i]);
@@ -156,7 +156,7 @@ void LanderHybrid::Record(double t, const Eigen::VectorXd& s) {
     x.stroke_m[i] = L_.stroke_slot[i] >= 0 ? s[L_.stroke(i)] : 0.0;
     x.leg_force_N[i] = e.leg_force_N[i];
     x.pad_held[i] = modes_.pad[i] == PadMode::kHeld;
-    x.q_WP[i] = s.segment<4>(L_.quat_P(i)).normalized();
+    x.q_WP[i] = s.segment<4>(L_.quat_WP(i)).normalized();
     x.p_WJ[i] = e.pose.pads[i].p_WJ;
     x.v_WJ_W[i] = e.pose.pads[i].v_WJ_W;
     x.w_WP_W[i] = e.pose.pads[i].w_WP_W;
@@ -395,7 +395,7 @@ integ::EventAction LanderHybrid::OnEvent(double t, const std::vector<int>& found
 void LanderHybrid::StopFreePads(Eigen::VectorXd& y) {
   const double before = KineticEnergy(model_, L_, y);
   for (int i = 0; i < kNumLegs; ++i)
-    if (modes_.pad[i] == PadMode::kFree) y.segment<3>(L_.w_P(i)).setZero();
+    if (modes_.pad[i] == PadMode::kFree) y.segment<3>(L_.w_WP_W(i)).setZero();
   const double removed = before - KineticEnergy(model_, L_, y);
   y[L_.work()] += removed;
   result_.capture_loss_J += removed;

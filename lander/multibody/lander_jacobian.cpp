@@ -19,10 +19,10 @@ void QuaternionRateRows(const Eigen::Ref<const Eigen::VectorXd>& y, int qi, int 
 }
 
 void PositionRows(const StateLayout& L, const Eigen::Ref<const Eigen::VectorXd>& y, Eigen::Ref<Eigen::MatrixXd> J) {
-  J.block<3, 3>(L.p_B(), L.v_B()).setIdentity();
-  QuaternionRateRows(y, L.quat_B(), L.w_B(), J);
+  J.block<3, 3>(L.p_WB(), L.v_WB_W()).setIdentity();
+  QuaternionRateRows(y, L.quat_WB(), L.w_WB_W(), J);
   for (int i = 0; i < kNumLegs; ++i) {
-    QuaternionRateRows(y, L.quat_P(i), L.w_P(i), J);
+    QuaternionRateRows(y, L.quat_WP(i), L.w_WP_W(i), J);
     if (L.stroke_slot[i] >= 0) J(L.stroke(i), L.stroke_rate(i)) = 1.0;
   }
 }
@@ -107,7 +107,7 @@ struct JacobianPass {
   void Sensitivities() {
     for (int i = 0; i < kNumLegs; ++i)
       if (touching[i]) {
-        const SensitivitySteps h{Step(L.p_B()), Step(L.quat_P(i)), Step(L.v_B()), Step(L.w_P(i))};
+        const SensitivitySteps h{Step(L.p_WB()), Step(L.quat_WP(i)), Step(L.v_WB_W()), Step(L.w_WP_W(i))};
         w.sensitivity[i] = PadSensitivity(model, terrain, i, w.base.pose.pads[i], w.base.soil[i], h, w.attitude_sensitivity,
                                           &w.contact_evaluations);
       }

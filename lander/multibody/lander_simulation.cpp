@@ -20,13 +20,13 @@ Eigen::VectorXd Pack(const StateLayout& L, const LanderInitialState& s) {
     const Eigen::Quaterniond q(R);
     y.segment<4>(i) << q.w(), q.x(), q.y(), q.z();
   };
-  y.segment<3>(L.p_B()) = s.p_WB;
-  put_quat(L.quat_B(), s.R_WB);
-  y.segment<3>(L.v_B()) = s.v_WB_W;
-  y.segment<3>(L.w_B()) = s.w_WB_W;
+  y.segment<3>(L.p_WB()) = s.p_WB;
+  put_quat(L.quat_WB(), s.R_WB);
+  y.segment<3>(L.v_WB_W()) = s.v_WB_W;
+  y.segment<3>(L.w_WB_W()) = s.w_WB_W;
   for (int i = 0; i < kNumLegs; ++i) {
-    put_quat(L.quat_P(i), s.R_WP[i]);
-    y.segment<3>(L.w_P(i)) = s.w_WB_W;  // the pads turn with the body at release
+    put_quat(L.quat_WP(i), s.R_WP[i]);
+    y.segment<3>(L.w_WP_W(i)) = s.w_WB_W;  // the pads turn with the body at release
     if (L.stroke_slot[i] >= 0) y[L.stroke(i)] = s.stroke_m[i];
   }
   return y;
@@ -57,10 +57,10 @@ integ::IntegratorOptions ScaledTolerances(const LanderModel& model, const StateL
   const double r = o.rtol;
   o.component_atol.assign(L.size, r);  // quaternions
   for (int k = 0; k < 3; ++k) {
-    o.component_atol[L.p_B() + k] = r * length;
-    o.component_atol[L.v_B() + k] = r * V;
-    o.component_atol[L.w_B() + k] = r * V / length;
-    for (int i = 0; i < kNumLegs; ++i) o.component_atol[L.w_P(i) + k] = r * V / pad;
+    o.component_atol[L.p_WB() + k] = r * length;
+    o.component_atol[L.v_WB_W() + k] = r * V;
+    o.component_atol[L.w_WB_W() + k] = r * V / length;
+    for (int i = 0; i < kNumLegs; ++i) o.component_atol[L.w_WP_W(i) + k] = r * V / pad;
   }
   for (int i = 0; i < kNumLegs; ++i) {
     if (L.stroke_slot[i] < 0) continue;

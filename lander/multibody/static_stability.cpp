@@ -28,13 +28,13 @@ Eigen::VectorXd RotateLanderState(const StateLayout& L, const Eigen::Ref<const E
     const Eigen::Quaterniond q = turn * Eigen::Quaterniond(y[i], y[i + 1], y[i + 2], y[i + 3]);
     out.segment<4>(i) << q.w(), q.x(), q.y(), q.z();
   };
-  out.segment<3>(L.p_B()) = pivot_W + R_W * (y.segment<3>(L.p_B()) - pivot_W);
-  rotate_quat(L.quat_B());
-  out.segment<3>(L.v_B()) = R_W * y.segment<3>(L.v_B());
-  out.segment<3>(L.w_B()) = R_W * y.segment<3>(L.w_B());
+  out.segment<3>(L.p_WB()) = pivot_W + R_W * (y.segment<3>(L.p_WB()) - pivot_W);
+  rotate_quat(L.quat_WB());
+  out.segment<3>(L.v_WB_W()) = R_W * y.segment<3>(L.v_WB_W());
+  out.segment<3>(L.w_WB_W()) = R_W * y.segment<3>(L.w_WB_W());
   for (int i = 0; i < kNumLegs; ++i) {
-    rotate_quat(L.quat_P(i));
-    out.segment<3>(L.w_P(i)) = R_W * y.segment<3>(L.w_P(i));
+    rotate_quat(L.quat_WP(i));
+    out.segment<3>(L.w_WP_W(i)) = R_W * y.segment<3>(L.w_WP_W(i));
   }
   return out;
 }
@@ -100,7 +100,7 @@ Eigen::VectorXd Steepened(const StateLayout& layout, const Eigen::Ref<const Eige
                           const SlopeGeometry& slope, double extra_rad) {
   const Eigen::Vector3d contour = Eigen::Vector3d::UnitZ().cross(slope.downhill_W).normalized();
   const Eigen::Matrix3d R = Eigen::AngleAxisd(extra_rad, contour).toRotationMatrix();  // tips downhill down
-  return RotateLanderState(layout, y, R, y.segment<3>(layout.p_B()));
+  return RotateLanderState(layout, y, R, y.segment<3>(layout.p_WB()));
 }
 
 // The edge the CoM is nearest to leaving through (smallest inside distance).

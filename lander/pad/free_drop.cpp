@@ -16,6 +16,8 @@
 namespace touchdown::pad {
 
 namespace {
+using S = FreePadStateLayout;
+
 // The absolute tolerance of each state: rtol times the drop's own scale for that state (unless the
 // caller gave component_atol). Why: a state that stays near zero - the rotation about an axis the
 // drop is symmetric about, a level pad's spin - would be resolved to a scalar atol of 1e-11 in its
@@ -35,13 +37,13 @@ integ::IntegratorOptions WithScaledTolerances(integ::IntegratorOptions options, 
   const double r = options.rtol;
   options.component_atol.assign(size, 0.0);
   for (int i = 0; i < 3; ++i) {
-    options.component_atol[kP + i] = r * L;
-    options.component_atol[kV + i] = r * V;
-    options.component_atol[kW + i] = r * V / L;
+    options.component_atol[S::p_WC() + i] = r * L;
+    options.component_atol[S::v_WC_W() + i] = r * V;
+    options.component_atol[S::w_WB_B() + i] = r * V / L;
   }
-  for (int i = 0; i < 4; ++i) options.component_atol[kQ + i] = r;
-  options.component_atol[kWork] = r * E;
-  if (size > kSize) options.component_atol[kShearDisplacement] = r * L;
+  for (int i = 0; i < 4; ++i) options.component_atol[S::quat_WB() + i] = r;
+  options.component_atol[S::work()] = r * E;
+  if (size > S::shear()) options.component_atol[S::shear()] = r * L;
   return options;
 }
 
@@ -83,10 +85,10 @@ Eigen::VectorXd ReleaseState(const FreePadDynamics& pad, const FreeDropInput& in
   const Eigen::Matrix3d R0 = TiltRotation(in.tilt_axis, in.tilt_rad);
   const Eigen::Quaterniond q0(R0);
   Eigen::VectorXd y = Eigen::VectorXd::Zero(pad.size());
-  y.segment<3>(kP) = PlaceAtDepth(pad.body(), R0, -clearance) + R0 * pad.body().com_B;
-  y.segment<4>(kQ) << q0.w(), q0.x(), q0.y(), q0.z();
-  y.segment<3>(kV) << in.horizontal_speed_m_s, 0.0, -ReleaseSpeed(v_td, g, clearance);
-  y.segment<3>(kW) = R0.transpose() * in.omega_W;
+  y.segment<3>(S::p_WC()) = PlaceAtDepth(pad.body(), R0, -clearance) + R0 * pad.body().com_B;
+  y.segment<4>(S::quat_WB()) << q0.w(), q0.x(), q0.y(), q0.z();
+  y.segment<3>(S::v_WC_W()) << in.horizontal_speed_m_s, 0.0, -ReleaseSpeed(v_td, g, clearance);
+  y.segment<3>(S::w_WB_B()) = R0.transpose() * in.omega_W;
   return y;
 }
 
@@ -99,9 +101,9 @@ Eigen::VectorXd Approach(integ::HybridRun& run, const FreePadDynamics& pad, cons
   run.Start(0.0, release);
   Eigen::VectorXd y = run.AdvanceToRoot(ApproachTimeLimit(clearance, pad.gravity_m_s2()), 0,
                                         "touchdown was not reached during the approach");
-  y[kP + 2] += pad.Depth(pad.PoseOf(y));
+  y[S::p_WC() + 2] += pad.Depth(pad.PoseOf(y));
   for (int i = 0; i < 8 && pad.Depth(pad.PoseOf(y)) > 0.0; ++i)
-    y[kP + 2] = std::nextafter(y[kP + 2], std::numeric_limits<double>::infinity());
+    y[S::p_WC() + 2] = std::nextafter(y[S::p_WC() + 2], std::numeric_limits<double>::infinity());
   return y;
 }
 
@@ -131,7 +133,7 @@ FreeDropResult Stroke(integ::HybridRun& run, const FreePadDynamics& pad, const E
                             units::RadToDeg(TiltFromVertical(s.R_WB))});
     FreeDropSample& pose = result.trace.back();
     pose.p_WB = s.p_WB;
-    pose.q_WB = state.segment<4>(kQ).normalized();
+    pose.q_WB = state.segment<4>(S::quat_WB()).normalized();
     pose.v_WB_W = s.v_WB;
     pose.w_W = s.w_W;
     pose.shear_displacement_m = s.shear_displacement_m;
@@ -150,7 +152,7 @@ FreeDropResult Stroke(integ::HybridRun& run, const FreePadDynamics& pad, const E
   calls.event = [&](double t, const std::vector<int>& found, Eigen::VectorXd& s) {
     if (found.size() > 2 && found[2] != 0) {  // lift-off: the next contact shears fresh soil
       ++result.lift_offs;
-      s[kShearDisplacement] = 0.0;
+      s[S::shear()] = 0.0;
       return integ::EventAction::kRestart;
     }
     if (found[1] == 0) return integ::EventAction::kContinue;  // not the rest event
@@ -158,8 +160,8 @@ FreeDropResult Stroke(integ::HybridRun& run, const FreePadDynamics& pad, const E
     const FreePadPose probe = pad.PoseOf(s);
     if (pad.RestCapacity(probe) < m * g) return integ::EventAction::kContinue;
     result.final_kinetic_energy_J = pad.KineticEnergy(probe);
-    s.segment<3>(kV).setZero();
-    s.segment<3>(kW).setZero();
+    s.segment<3>(S::v_WC_W()).setZero();
+    s.segment<3>(S::w_WB_B()).setZero();
     record(t, s);
     return integ::EventAction::kStop;
   };
@@ -167,11 +169,11 @@ FreeDropResult Stroke(integ::HybridRun& run, const FreePadDynamics& pad, const E
   const FreePadPose end = pad.PoseOf(rest.y);
   result.time_to_rest_s = rest.t;
   result.final_penetration_m = std::max(pad.Depth(end), 0.0);
-  result.dissipated_energy_J = rest.y[kWork];
+  result.dissipated_energy_J = rest.y[S::work()];
   result.gravity_work_J = m * g * (z_C0 - end.p_WC.z());
   result.final_tilt_deg = units::RadToDeg(TiltFromVertical(end.R_WB));
   result.horizontal_travel_m = (end.p_WC.head<2>() - xy_C0).norm();
-  if (pad.has_shear_state()) result.final_shear_displacement_m = rest.y[kShearDisplacement];
+  if (pad.has_shear_state()) result.final_shear_displacement_m = rest.y[S::shear()];
   result.solver = run.summary().solver;
   return result;
 }
@@ -201,8 +203,8 @@ FreeDropResult RunFreeDrop(const geom::PadBody& body, const rft::Terrain& terrai
   const double clearance = ReleaseClearance(options.approach_clearance_m, v_td, g);
   Eigen::VectorXd y = ReleaseState(pad, in, clearance);
   if (clearance > 0.0) y = Approach(run, pad, y, clearance);
-  y[kWork] = 0.0;
-  if (pad.has_shear_state()) y[kShearDisplacement] = 0.0;  // j since touchdown (the approach may graze)
+  y[S::work()] = 0.0;
+  if (pad.has_shear_state()) y[S::shear()] = 0.0;  // j since touchdown (the approach may graze)
   approaching = false;
   run.Start(0.0, y);
   FreeDropResult result = Stroke(run, pad, y, options);

@@ -11,6 +11,8 @@
 namespace touchdown::pad {
 
 namespace {
+using L = FreePadStateLayout;
+
 double BodyRadius(const geom::PadBody& body) {
   return body.vertices_B.cols() > 0 ? (body.vertices_B.colwise() - body.com_B).colwise().norm().maxCoeff() : 0.0;
 }
@@ -34,15 +36,15 @@ FreePadDynamics::FreePadDynamics(const geom::PadBody& body, const rft::Terrain& 
 
 FreePadPose FreePadDynamics::PoseOf(const Eigen::Ref<const Eigen::VectorXd>& y) const {
   FreePadPose s;
-  const Eigen::Quaterniond q(y[kQ], y[kQ + 1], y[kQ + 2], y[kQ + 3]);
+  const Eigen::Quaterniond q(y[L::quat_WB()], y[L::quat_WB() + 1], y[L::quat_WB() + 2], y[L::quat_WB() + 3]);
   s.R_WB = q.normalized().toRotationMatrix();
-  s.p_WC = y.segment<3>(kP);
-  s.v_WC = y.segment<3>(kV);
-  s.w_B = y.segment<3>(kW);
+  s.p_WC = y.segment<3>(L::p_WC());
+  s.v_WC = y.segment<3>(L::v_WC_W());
+  s.w_B = y.segment<3>(L::w_WB_B());
   s.w_W = s.R_WB * s.w_B;
   s.p_WB = s.p_WC - s.R_WB * body_.com_B;
   s.v_WB = s.v_WC + s.w_W.cross(s.p_WB - s.p_WC);
-  if (shear_state_) s.shear_displacement_m = y[kShearDisplacement];
+  if (shear_state_) s.shear_displacement_m = y[L::shear()];
   return s;
 }
 
@@ -94,30 +96,30 @@ void FreePadDynamics::Derivative(const Eigen::Ref<const Eigen::VectorXd>& y, Eig
   const rft::SoilContactModel& soil = SoilUnder(s);
   const rft::ContactWrench w = Moving(s) ? Wrench(s, soil) : rft::ContactWrench{};
   const Eigen::Vector3d M_C = w.moment_W + (s.p_WB - s.p_WC).cross(w.force_W);
-  ydot.segment<3>(kP) = s.v_WC;
-  const Eigen::Vector4d q = y.segment<4>(kQ);
+  ydot.segment<3>(L::p_WC()) = s.v_WC;
+  const Eigen::Vector4d q = y.segment<4>(L::quat_WB());
   const Eigen::Vector3d& wb = s.w_B;
-  ydot.segment<4>(kQ) << -0.5 * (q[1] * wb.x() + q[2] * wb.y() + q[3] * wb.z()),
+  ydot.segment<4>(L::quat_WB()) << -0.5 * (q[1] * wb.x() + q[2] * wb.y() + q[3] * wb.z()),
       0.5 * (q[0] * wb.x() + q[2] * wb.z() - q[3] * wb.y()), 0.5 * (q[0] * wb.y() + q[3] * wb.x() - q[1] * wb.z()),
       0.5 * (q[0] * wb.z() + q[1] * wb.y() - q[2] * wb.x());
-  ydot.segment<3>(kV) = w.force_W / m_ - Eigen::Vector3d(0.0, 0.0, g_);
-  ydot.segment<3>(kW) = I_inv_ * (s.R_WB.transpose() * M_C - wb.cross(I_ * wb));
-  ydot[kWork] = -(w.force_W.dot(s.v_WB) + w.moment_W.dot(s.w_W));
+  ydot.segment<3>(L::v_WC_W()) = w.force_W / m_ - Eigen::Vector3d(0.0, 0.0, g_);
+  ydot.segment<3>(L::w_WB_B()) = I_inv_ * (s.R_WB.transpose() * M_C - wb.cross(I_ * wb));
+  ydot[L::work()] = -(w.force_W.dot(s.v_WB) + w.moment_W.dot(s.w_W));
   if (soil.pad_terms.has_added_mass()) {
     const FreePadVertical vz = Vertical(s, w, soil);
-    ydot[kV + 2] = vz.a_z;
-    ydot[kWork] += vz.accretion_W;
+    ydot[L::v_WC_W() + 2] = vz.a_z;
+    ydot[L::work()] += vz.accretion_W;
   }
   // Janosi's j: the horizontal slip of the contact's reference point while the pad is in the soil.
-  if (shear_state_) ydot[kShearDisplacement] = w.submerged_area_m2 > 0.0 ? std::hypot(s.v_WB.x(), s.v_WB.y()) : 0.0;
+  if (shear_state_) ydot[L::shear()] = w.submerged_area_m2 > 0.0 ? std::hypot(s.v_WB.x(), s.v_WB.y()) : 0.0;
 }
 
 int FreePadDynamics::JacobianContacts() const { return (depth_only_ ? 1 : 3) + 3 + 3 + 3 + (shear_state_ ? 1 : 0); }
 
 void FreePadDynamics::Jacobian(const Eigen::Ref<const Eigen::VectorXd>& y, const Eigen::Ref<const Eigen::VectorXd>& f0,
                                const Eigen::Ref<const Eigen::VectorXd>& scale, Eigen::Ref<Eigen::MatrixXd> J) const {
-  using State = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kSize + 1, 1>;  // on the stack
-  const int n = size(), soil_rows = n - kV;
+  using State = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, L::kMaxSize, 1>;  // on the stack
+  const int n = size(), soil_rows = n - L::v_WC_W();
   const double root_eps = std::sqrt(std::numeric_limits<double>::epsilon());
   State yp = y, fp(n);
   J.setZero();
@@ -130,46 +132,46 @@ void FreePadDynamics::Jacobian(const Eigen::Ref<const Eigen::VectorXd>& y, const
   };
   auto step = [&](int i) { return root_eps * std::max(std::abs(y[i]), scale[i]); };
   // Position: dp/dt = v; the soil's columns.
-  for (int i = 0; i < 3; ++i) J(kP + i, kV + i) = 1.0;
+  for (int i = 0; i < 3; ++i) J(L::p_WC() + i, L::v_WC_W() + i) = 1.0;
   if (depth_only_) {  // d/dp = g_W d/d(depth); the difference along -z (depth grows by h)
-    const double h = step(kP + 2);
-    yp[kP + 2] -= h;
+    const double h = step(L::p_WC() + 2);
+    yp[L::p_WC() + 2] -= h;
     const Eigen::Ref<const Eigen::VectorXd> dF = difference(h);
-    for (int i = 0; i < 3; ++i) J.col(kP + i).tail(soil_rows) = g_W_[i] * dF;
+    for (int i = 0; i < 3; ++i) J.col(L::p_WC() + i).tail(soil_rows) = g_W_[i] * dF;
   } else {
     for (int i = 0; i < 3; ++i) {
-      const double h = step(kP + i);
-      yp[kP + i] += h;
-      J.col(kP + i).tail(soil_rows) = difference(h);
+      const double h = step(L::p_WC() + i);
+      yp[L::p_WC() + i] += h;
+      J.col(L::p_WC() + i).tail(soil_rows) = difference(h);
     }
   }
   // Attitude: dq/dt = q (x) (0, w) / 2 is linear in q and w. The soil's rows depend on q / |q|
   // alone: differences along body-frame rotations theta_k, q' = q (x) (cos h/2, sin h/2 e_k) (same
   // norm); then d/dq_i = (2 / |q|) sum_k (q^ (x) e_k)_i d/dtheta_k, the tangent part of e_i.
-  const Eigen::Vector4d q = y.segment<4>(kQ);
-  const Eigen::Vector3d w = y.segment<3>(kW);
+  const Eigen::Vector4d q = y.segment<4>(L::quat_WB());
+  const Eigen::Vector3d w = y.segment<3>(L::w_WB_B());
   Eigen::Matrix4d dqdot_dq;
   dqdot_dq << 0.0, -w.x(), -w.y(), -w.z(), w.x(), 0.0, w.z(), -w.y(), w.y(), -w.z(), 0.0, w.x(), w.z(), w.y(), -w.x(), 0.0;
-  J.block<4, 4>(kQ, kQ) = 0.5 * dqdot_dq;
+  J.block<4, 4>(L::quat_WB(), L::quat_WB()) = 0.5 * dqdot_dq;
   Eigen::Matrix<double, 4, 3> qe;  // column k: q (x) (0, e_k)
   qe << -q[1], -q[2], -q[3], q[0], -q[3], q[2], q[3], q[0], -q[1], -q[2], q[1], q[0];
-  J.block<4, 3>(kQ, kW) = 0.5 * qe;
+  J.block<4, 3>(L::quat_WB(), L::w_WB_B()) = 0.5 * qe;
   const double norm = q.norm(), h_rot = root_eps;
   for (int k = 0; k < 3; ++k) {
-    yp.segment<4>(kQ) = std::cos(0.5 * h_rot) * q + std::sin(0.5 * h_rot) * qe.col(k);
+    yp.segment<4>(L::quat_WB()) = std::cos(0.5 * h_rot) * q + std::sin(0.5 * h_rot) * qe.col(k);
     const Eigen::Ref<const Eigen::VectorXd> dF = difference(h_rot);
-    for (int i = 0; i < 4; ++i) J.col(kQ + i).tail(soil_rows) += (2.0 * qe(i, k) / (norm * norm)) * dF;
+    for (int i = 0; i < 4; ++i) J.col(L::quat_WB() + i).tail(soil_rows) += (2.0 * qe(i, k) / (norm * norm)) * dF;
   }
   // Velocity, angular velocity and (with Janosi's shear) j: plain differences; work: no column.
-  for (const int i : {int{kV}, kV + 1, kV + 2, int{kW}, kW + 1, kW + 2}) {
+  for (const int i : {L::v_WC_W(), L::v_WC_W() + 1, L::v_WC_W() + 2, L::w_WB_B(), L::w_WB_B() + 1, L::w_WB_B() + 2}) {
     const double h = step(i);
     yp[i] += h;
     J.col(i).tail(soil_rows) = difference(h);
   }
   if (shear_state_) {
-    const double h = step(kShearDisplacement);
-    yp[kShearDisplacement] += h;
-    J.col(kShearDisplacement).tail(soil_rows) = difference(h);
+    const double h = step(L::shear());
+    yp[L::shear()] += h;
+    J.col(L::shear()).tail(soil_rows) = difference(h);
   }
 }
 

@@ -3,9 +3,13 @@
 // rigid body with 6 degrees of freedom under gravity and the 3D RFT soil wrench, Newton-Euler
 // about the centre of mass, with the pad-level added mass of the soil contact model.
 //
-// State y (kSize = 14): centre of mass p_WC, attitude quaternion q_WB (w, x, y, z), velocity v_WC,
-// body-frame angular velocity w_B, and the work done against the soil (dissipated energy); on a
-// terrain with a Bekker soil with shear, Janosi's shear displacement j after them (kShearDisplacement).
+// State y (FreePadStateLayout): centre of mass p_WC, attitude quaternion q_WB (w, x, y, z), velocity
+// v_WC_W, angular velocity w_WB_B in the pad's own frame, and the work done against the soil
+// (dissipated energy); on a terrain with a Bekker soil with shear, Janosi's shear displacement j
+// after them. The lander integrates world-frame angular velocities (lander::StateLayout); the free
+// pad keeps the body frame, where its inertia is constant: in the world frame its spinning and
+// curved drops took 20 % to almost three times the solver steps (docs/architecture.md, "State
+// vectors and frames").
 #include <Eigen/Core>
 
 #include "footpad_geom/pad_body.h"
@@ -16,11 +20,22 @@
 
 namespace touchdown::pad {
 
-enum FreePadState : int { kP = 0, kQ = 3, kV = 7, kW = 10, kWork = 13, kSize = 14 };
-// Janosi's shear displacement j [m] follows the 14 states above only when a soil of the pad's
-// terrain has a shear that mobilises with it (rft::SoilContactModel::has_janosi_shear): then
-// FreePadDynamics::size() is kSize + 1. Every other drop keeps the 14 states, and its results.
-constexpr int kShearDisplacement = kSize;
+// Index layout of the free pad's state vector, in the lander's idiom (lander::StateLayout): an
+// accessor per quantity, named with its frames. Janosi's shear displacement j [m] follows the 14
+// states only when a soil of the pad's terrain has a shear that mobilises with it
+// (rft::SoilContactModel::has_janosi_shear); every other drop keeps the 14 states.
+struct FreePadStateLayout {
+  static constexpr int kMaxSize = 15;
+  explicit constexpr FreePadStateLayout(bool shear_state) : has_shear(shear_state), size(shear_state ? 15 : 14) {}
+  bool has_shear;
+  int size;
+  static constexpr int p_WC() { return 0; }
+  static constexpr int quat_WB() { return 3; }
+  static constexpr int v_WC_W() { return 7; }
+  static constexpr int w_WB_B() { return 10; }
+  static constexpr int work() { return 13; }
+  static constexpr int shear() { return 14; }  // only with has_shear
+};
 
 // Kinematics of the pad at one state.
 struct FreePadPose {
@@ -73,11 +88,12 @@ class FreePadDynamics {
   double KineticEnergy(const FreePadPose& s) const;
 
   const geom::PadBody& body() const { return body_; }
-  // Whether the state carries Janosi's j (kShearDisplacement), and the state's size. j grows with
+  // Whether the state carries Janosi's j (FreePadStateLayout::shear), and the state's size. j grows with
   // the horizontal slip speed of the pad's reference point while the pad is in the soil (a rotating
   // pad's slip reduced to that one point: docs/bekker_soil.md argues it) and is reset at lift-off.
   bool has_shear_state() const { return shear_state_; }
-  int size() const { return shear_state_ ? kSize + 1 : kSize; }
+  int size() const { return layout().size; }
+  FreePadStateLayout layout() const { return FreePadStateLayout(shear_state_); }
   double mass_kg() const { return m_; }
   double gravity_m_s2() const { return g_; }
   // Radius about the centre of mass: spin times it is a speed.

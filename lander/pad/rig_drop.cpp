@@ -9,8 +9,7 @@
 namespace touchdown::pad {
 
 namespace {
-enum Index { kDepth = 0, kVelocity = 1, kWork = 2, kAccretion = 3 };
-constexpr int kStateSize = 4;
+using S = RigStateLayout;
 
 void RequireValid(const RigDropInput& in, const RigDropOptions& options) {
   if (!(in.mass_kg > 0.0 && std::isfinite(in.mass_kg)))
@@ -27,17 +26,17 @@ void RequireValid(const RigDropInput& in, const RigDropOptions& options) {
 
 void RigStrokeDerivative(const RigDropInput& in, const VerticalSoilResponse& response,
                          const Eigen::Ref<const Eigen::VectorXd>& y, Eigen::Ref<Eigen::VectorXd> ydot) {
-  const double d = y[kDepth];
-  const double v = std::max(y[kVelocity], 0.0);  // RFT resists only motion into the soil
+  const double d = y[S::depth()];
+  const double v = std::max(y[S::velocity_down()], 0.0);  // RFT resists only motion into the soil
   const bool in_soil = d > 0.0;
   const double force = in_soil ? response.Force(d, v) : 0.0;
   const double m_a = in_soil ? response.AddedMass(d) : 0.0;
   const double m_a_slope = in_soil ? response.AddedMassSlope(d) : 0.0;
   const double accretion = v * v * m_a_slope;  // momentum given per unit time to grains picked up
-  ydot[kDepth] = y[kVelocity];
-  ydot[kVelocity] = (in.mass_kg * in.gravity_m_s2 - force - accretion) / (in.mass_kg + m_a);
-  ydot[kWork] = force * v + 0.5 * accretion * v;
-  if (ydot.size() > kAccretion) ydot[kAccretion] = 0.5 * accretion * v;
+  ydot[S::depth()] = y[S::velocity_down()];
+  ydot[S::velocity_down()] = (in.mass_kg * in.gravity_m_s2 - force - accretion) / (in.mass_kg + m_a);
+  ydot[S::work()] = force * v + 0.5 * accretion * v;
+  if (ydot.size() > S::accretion()) ydot[S::accretion()] = 0.5 * accretion * v;
 }
 
 void RigStrokeDerivative(const RigDropInput& in, const VerticalResistance& resistance,
@@ -68,7 +67,7 @@ RigDropResult RunRigDrop(const RigDropInput& in, const VerticalSoilResponse& res
   bool resting = false;  // mode switch at the stop event
 
   auto rhs = [&](double, Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::VectorXd> ydot) {
-    if (resting && response.StaticCapacity(std::max(y[kDepth], 0.0)) >= weight) {
+    if (resting && response.StaticCapacity(std::max(y[S::depth()], 0.0)) >= weight) {
       ydot.setZero();  // static: the soil carries the weight, nothing moves
       return;
     }
@@ -78,16 +77,16 @@ RigDropResult RunRigDrop(const RigDropInput& in, const VerticalSoilResponse& res
   roots.count = 2;  // [0] touchdown: depth rises through 0; [1] stop: velocity falls through 0
   roots.directions = {+1, -1};
   roots.function = [](double, Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::VectorXd> gv) {
-    gv[0] = y[kDepth];
-    gv[1] = y[kVelocity];
+    gv[0] = y[S::depth()];
+    gv[1] = y[S::velocity_down()];
   };
-  integ::CvodeIntegrator integrator(kStateSize, rhs, options.integrator, roots);
+  integ::CvodeIntegrator integrator(S::size, rhs, options.integrator, roots);
   integ::HybridRun run(integrator);
 
   // Approach: free flight from a clearance chosen so the pad arrives at the requested speed.
   const double v_td = in.impact_speed_m_s;
   const double clearance = ReleaseClearance(options.approach_clearance_m, v_td, g);
-  Eigen::VectorXd y(kStateSize);
+  Eigen::VectorXd y(S::size);
   if (clearance > 0.0) {
     y << -clearance, ReleaseSpeed(v_td, g, clearance), 0.0, 0.0;
     run.Start(0.0, y);
@@ -96,15 +95,15 @@ RigDropResult RunRigDrop(const RigDropInput& in, const VerticalSoilResponse& res
     y << 0.0, v_td, 0.0, 0.0;
   }
   // Touchdown defines t = 0; the depth root is exactly 0 there.
-  y[kDepth] = 0.0;
-  y[kWork] = 0.0;
-  y[kAccretion] = 0.0;
+  y[S::depth()] = 0.0;
+  y[S::work()] = 0.0;
+  y[S::accretion()] = 0.0;
   run.Start(0.0, y);
 
   RigDropResult result;
-  result.impact_energy_J = 0.5 * m * y[kVelocity] * y[kVelocity];
+  result.impact_energy_J = 0.5 * m * y[S::velocity_down()] * y[S::velocity_down()];
   auto record = [&](double t, const Eigen::VectorXd& s, double force) {
-    result.trace.push_back({t, s[kDepth], s[kVelocity], force});
+    result.trace.push_back({t, s[S::depth()], s[S::velocity_down()], force});
     result.peak_force_N = std::max(result.peak_force_N, force);
     if (!resting) result.max_deceleration_m_s2 = std::max(result.max_deceleration_m_s2, (force - weight) / m);
   };
@@ -118,23 +117,23 @@ RigDropResult RunRigDrop(const RigDropInput& in, const VerticalSoilResponse& res
   stroke.failure = "the pad did not stop within " + std::to_string(options.max_stroke_duration_s) + " s";
   integ::HybridCallbacks stroke_calls;
   stroke_calls.sample = [&](double t, const Eigen::VectorXd& s) {
-    record(t, s, RigContactForce(in, response, s[kDepth], s[kVelocity]));
+    record(t, s, RigContactForce(in, response, s[S::depth()], s[S::velocity_down()]));
   };
   stroke_calls.event = [&](double t, const std::vector<int>& found, Eigen::VectorXd& s) {
     if (found[1] == 0) return integ::EventAction::kContinue;  // the touchdown root again (grazing the surface)
-    s[kVelocity] = 0.0;  // the root: exactly at rest
+    s[S::velocity_down()] = 0.0;  // the root: exactly at rest
     // At the stop v = 0: F_c = F + m_a dv/dt (the grains still push while the pad halts).
-    record(t, s, RigContactForce(in, response, s[kDepth], 0.0));
+    record(t, s, RigContactForce(in, response, s[S::depth()], 0.0));
     return integ::EventAction::kStop;
   };
   const integ::HybridOutcome stop = run.Run(stroke, stroke_calls);
   const double t_stop = stop.t;
   y = stop.y;
   result.time_to_rest_s = t_stop;
-  result.final_penetration_m = y[kDepth];
-  result.dissipated_energy_J = y[kWork];
-  result.accretion_loss_J = y[kAccretion];
-  result.gravity_work_J = weight * y[kDepth];
+  result.final_penetration_m = y[S::depth()];
+  result.dissipated_energy_J = y[S::work()];
+  result.accretion_loss_J = y[S::accretion()];
+  result.gravity_work_J = weight * y[S::depth()];
   result.mean_conversion_rate_W = t_stop > 0.0 ? result.impact_energy_J / t_stop : 0.0;
 
   // Rest: the soil carries the weight; integrate on to show nothing creeps.
@@ -148,12 +147,12 @@ RigDropResult RunRigDrop(const RigDropInput& in, const VerticalSoilResponse& res
   rest.end = integ::RunEnd::kIntegrateToEnd;
   integ::HybridCallbacks rest_calls;
   rest_calls.sample = [&](double t, const Eigen::VectorXd& s) {
-    record(t, s, std::min(response.StaticCapacity(std::max(s[kDepth], 0.0)), weight));
+    record(t, s, std::min(response.StaticCapacity(std::max(s[S::depth()], 0.0)), weight));
   };
   // A pad that loses its capacity sinks and stops again: the rest goes on through its events.
   rest_calls.event = [](double, const std::vector<int>&, Eigen::VectorXd&) { return integ::EventAction::kContinue; };
   const integ::HybridOutcome end = run.Run(rest, rest_calls);
-  result.rest_creep_m = end.y[kDepth] - result.final_penetration_m;
+  result.rest_creep_m = end.y[S::depth()] - result.final_penetration_m;
   result.solver = run.summary().solver;
   return result;
 }

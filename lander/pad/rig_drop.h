@@ -93,7 +93,19 @@ struct RigDropResult {
   integ::IntegratorSummary solver;
 };
 
-// Pure model: the state derivative of the rig during the stroke, y = [d, v, W, W_accretion].
+// Index layout of the rig's state vector, in the lander's idiom (lander::StateLayout): the pad's
+// depth below the surface and its downward speed (the rig's one axis), the work done against the
+// soil and, of it, the kinetic energy lost to accreted grains.
+struct RigStateLayout {
+  static constexpr int depth() { return 0; }
+  static constexpr int velocity_down() { return 1; }
+  static constexpr int work() { return 2; }
+  static constexpr int accretion() { return 3; }
+  static constexpr int size = 4;
+};
+
+// Pure model: the state derivative of the rig during the stroke, y as RigStateLayout (its first
+// three states when the caller keeps no accretion loss).
 void RigStrokeDerivative(const RigDropInput& in, const VerticalSoilResponse& response,
                          const Eigen::Ref<const Eigen::VectorXd>& y, Eigen::Ref<Eigen::VectorXd> ydot);
 void RigStrokeDerivative(const RigDropInput& in, const VerticalResistance& resistance,

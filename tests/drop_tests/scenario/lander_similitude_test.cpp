@@ -128,14 +128,14 @@ TEST(LanderSimilitude, RightHandSideOfTheModelScaledByFourIsTheModelsToTheLastBi
   const auto state = [&](const scenario::LanderSetup& S, double scale) {
     Eigen::VectorXd y = Eigen::VectorXd::Zero(L.size);
     const Eigen::Quaterniond q(S.initial.R_WB);
-    y.segment<3>(L.p_B()) = S.initial.p_WB - Eigen::Vector3d(0.0, 0.0, 0.012 * scale);
-    y.segment<4>(L.quat_B()) << q.w(), q.x(), q.y(), q.z();
-    y.segment<3>(L.v_B()) = S.initial.v_WB_W;
-    y.segment<3>(L.w_B()) = Eigen::Vector3d(0.3, -0.2, 0.1) / scale;
+    y.segment<3>(L.p_WB()) = S.initial.p_WB - Eigen::Vector3d(0.0, 0.0, 0.012 * scale);
+    y.segment<4>(L.quat_WB()) << q.w(), q.x(), q.y(), q.z();
+    y.segment<3>(L.v_WB_W()) = S.initial.v_WB_W;
+    y.segment<3>(L.w_WB_W()) = Eigen::Vector3d(0.3, -0.2, 0.1) / scale;
     for (int i = 0; i < kNumLegs; ++i) {
       const Eigen::Quaterniond p(Eigen::AngleAxisd(0.05 * i, Eigen::Vector3d::UnitX()) * S.initial.R_WB);
-      y.segment<4>(L.quat_P(i)) << p.w(), p.x(), p.y(), p.z();
-      y.segment<3>(L.w_P(i)) = Eigen::Vector3d(0.1 * i, 0.2, -0.3) / scale;
+      y.segment<4>(L.quat_WP(i)) << p.w(), p.x(), p.y(), p.z();
+      y.segment<3>(L.w_WP_W(i)) = Eigen::Vector3d(0.1 * i, 0.2, -0.3) / scale;
     }
     return y;
   };
@@ -152,9 +152,9 @@ TEST(LanderSimilitude, RightHandSideOfTheModelScaledByFourIsTheModelsToTheLastBi
   // Per state: d/dt of positions is a speed (x 1), of quaternions a rate (/ k); accelerations / k,
   // angular accelerations / k^2; power (the work state) force x speed, x k^2.
   Eigen::VectorXd unit = Eigen::VectorXd::Constant(L.size, 1.0 / k);
-  unit.segment<3>(L.p_B()).setConstant(1.0);
-  unit.segment<3>(L.w_B()).setConstant(1.0 / (k * k));
-  for (int i = 0; i < kNumLegs; ++i) unit.segment<3>(L.w_P(i)).setConstant(1.0 / (k * k));
+  unit.segment<3>(L.p_WB()).setConstant(1.0);
+  unit.segment<3>(L.w_WB_W()).setConstant(1.0 / (k * k));
+  for (int i = 0; i < kNumLegs; ++i) unit.segment<3>(L.w_WP_W(i)).setConstant(1.0 / (k * k));
   unit[L.work()] = k * k;
   for (int j = 0; j < L.size; ++j) EXPECT_EQ(db[j], unit[j] * da[j]) << "state " << j;
 }

@@ -92,7 +92,7 @@ TEST(LanderJacobian, WithoutAttitudeSensitivityCostsNineContactsPerPad) {
   double worst = 0.0, worst_attitude = 0.0;
   for (int j = 0; j < s.layout.size; ++j) {
     bool pad_attitude = false;
-    for (int i = 0; i < kNumLegs; ++i) pad_attitude |= j >= s.layout.quat_P(i) && j < s.layout.quat_P(i) + 4;
+    for (int i = 0; i < kNumLegs; ++i) pad_attitude |= j >= s.layout.quat_WP(i) && j < s.layout.quat_WP(i) + 4;
     (pad_attitude ? worst_attitude : worst) = std::max(pad_attitude ? worst_attitude : worst, ColumnError(J, reference, j));
   }
   EXPECT_LT(worst, 3e-5);

@@ -49,9 +49,9 @@ Eigen::VectorXd TipTestState(const LanderModel& model, const Eigen::Matrix3d& R_
   const StateLayout L(model);
   Eigen::VectorXd y = Eigen::VectorXd::Zero(L.size);
   const Eigen::Quaterniond q(R_WB);
-  y.segment<4>(L.quat_B()) << q.w(), q.x(), q.y(), q.z();
-  for (int i = 0; i < kNumLegs; ++i) y.segment<4>(L.quat_P(i)) << q.w(), q.x(), q.y(), q.z();
-  y.segment<3>(L.v_B()) = v_W;
+  y.segment<4>(L.quat_WB()) << q.w(), q.x(), q.y(), q.z();
+  for (int i = 0; i < kNumLegs; ++i) y.segment<4>(L.quat_WP(i)) << q.w(), q.x(), q.y(), q.z();
+  y.segment<3>(L.v_WB_W()) = v_W;
   return y;
 }
 
@@ -215,7 +215,7 @@ Eigen::VectorXd TallTouchdownState(const TipLanding& landing) {
   const StateLayout L(setup.model);
   const Eigen::Vector3d v(landing.downhill_speed, 0.0, -kTipTouchdownSpeed);
   Eigen::VectorXd y = TipTestState(setup.model, setup.initial.R_WB, v);
-  y.segment<3>(L.p_B()) = setup.initial.p_WB;
+  y.segment<3>(L.p_WB()) = setup.initial.p_WB;
   return y;
 }
 

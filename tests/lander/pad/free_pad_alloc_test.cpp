@@ -25,19 +25,19 @@ long AllocationsOfThreeDerivatives(const rft::SoilContactModel& soil) {
   terrain.patches.push_back({"far", rft::RectanglePolygon(5.0, 5.0, 6.0, 6.0), 0});
   const FreePadDynamics pad(body, terrain, 9.81);
   // 10 degrees of tilt, 5 mm into the soil, sinking, sliding and spinning.
-  Eigen::VectorXd y = Eigen::VectorXd::Zero(kSize);
+  Eigen::VectorXd y = Eigen::VectorXd::Zero(FreePadStateLayout(false).size);
   const Eigen::Quaterniond q(Eigen::AngleAxisd(0.17, Eigen::Vector3d::UnitX()));
-  y.segment<4>(kQ) << q.w(), q.x(), q.y(), q.z();
-  y.segment<3>(kV) << 0.3, 0.0, -0.8;
-  y.segment<3>(kW) << 0.5, -1.0, 2.0;
-  y[kP + 2] += pad.Depth(pad.PoseOf(y)) - 0.005;
+  y.segment<4>(FreePadStateLayout::quat_WB()) << q.w(), q.x(), q.y(), q.z();
+  y.segment<3>(FreePadStateLayout::v_WC_W()) << 0.3, 0.0, -0.8;
+  y.segment<3>(FreePadStateLayout::w_WB_B()) << 0.5, -1.0, 2.0;
+  y[FreePadStateLayout::p_WC() + 2] += pad.Depth(pad.PoseOf(y)) - 0.005;
   EXPECT_NEAR(pad.Depth(pad.PoseOf(y)), 0.005, 1e-12);
-  Eigen::VectorXd ydot(kSize);
+  Eigen::VectorXd ydot(FreePadStateLayout(false).size);
   pad.Derivative(y, ydot);  // any first-call setup outside the count
   const long allocations = testing_alloc::CountAllocations([&] {
     for (int k = 0; k < 3; ++k) pad.Derivative(y, ydot);
   });
-  EXPECT_GT(-ydot[kWork], -1e300);  // used
+  EXPECT_GT(-ydot[FreePadStateLayout::work()], -1e300);  // used
   EXPECT_TRUE(ydot.allFinite());
   return allocations;
 }

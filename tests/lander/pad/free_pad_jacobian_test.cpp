@@ -25,13 +25,13 @@ geom::PadBody JacobianTestPad() {
 // 10 degrees of tilt, 5 mm into the soil, sinking, sliding and spinning; the quaternion a little
 // off unit norm, as the integrator carries it.
 Eigen::VectorXd JacobianTestState(const FreePadDynamics& pad) {
-  Eigen::VectorXd y = Eigen::VectorXd::Zero(kSize);
+  Eigen::VectorXd y = Eigen::VectorXd::Zero(FreePadStateLayout(false).size);
   const Eigen::Quaterniond q(Eigen::AngleAxisd(0.17, Eigen::Vector3d(1.0, 0.3, 0.0).normalized()));
-  y.segment<4>(kQ) << q.w(), q.x(), q.y(), q.z();
-  y.segment<4>(kQ) *= 1.0 + 1e-7;
-  y.segment<3>(kV) << 0.3, 0.1, -0.8;
-  y.segment<3>(kW) << 0.5, -1.0, 2.0;
-  y[kP + 2] += pad.Depth(pad.PoseOf(y)) - 0.005;
+  y.segment<4>(FreePadStateLayout::quat_WB()) << q.w(), q.x(), q.y(), q.z();
+  y.segment<4>(FreePadStateLayout::quat_WB()) *= 1.0 + 1e-7;
+  y.segment<3>(FreePadStateLayout::v_WC_W()) << 0.3, 0.1, -0.8;
+  y.segment<3>(FreePadStateLayout::w_WB_B()) << 0.5, -1.0, 2.0;
+  y[FreePadStateLayout::p_WC() + 2] += pad.Depth(pad.PoseOf(y)) - 0.005;
   return y;
 }
 
@@ -58,21 +58,21 @@ void ExpectStructuredJacobianMatches(const rft::Terrain& terrain) {
   ASSERT_EQ(pad.JacobianContacts(), 10);  // over a plane: 1 depth + 3 rotations + 6 twist
   const Eigen::VectorXd y = JacobianTestState(pad);
   // Scales as the free drop's: length 0.05 m, speed 1 m/s, angle 1 rad, rate 20 rad/s, energy 1 J.
-  Eigen::VectorXd scale(kSize);
+  Eigen::VectorXd scale(FreePadStateLayout(false).size);
   scale << 0.05, 0.05, 0.05, 1, 1, 1, 1, 1, 1, 1, 20, 20, 20, 1;
-  Eigen::VectorXd f0(kSize);
+  Eigen::VectorXd f0(FreePadStateLayout(false).size);
   pad.Derivative(y, f0);
-  Eigen::MatrixXd J = Eigen::MatrixXd::Constant(kSize, kSize, 7.0);  // Jacobian sets every entry
+  Eigen::MatrixXd J = Eigen::MatrixXd::Constant(FreePadStateLayout(false).size, FreePadStateLayout(false).size, 7.0);  // Jacobian sets every entry
   pad.Jacobian(y, f0, scale, J);
   const Eigen::MatrixXd reference = CentralDifferenceJacobian(pad, y, scale);
   // Column by column, relative to the column's size (forward against central differences of a
   // right-hand side with kinks: the agreement is that of first-order differences, ~1e-5).
-  for (int i = 0; i < kSize; ++i) {
+  for (int i = 0; i < FreePadStateLayout(false).size; ++i) {
     const double size = reference.col(i).norm();
     EXPECT_LE((J.col(i) - reference.col(i)).norm(), 1e-4 * size + 1e-9) << "column " << i;
   }
-  EXPECT_GT(reference.col(kP + 2).norm(), 1e3);  // the soil's stiffness is in it
-  EXPECT_EQ(J.col(kWork).norm(), 0.0);
+  EXPECT_GT(reference.col(FreePadStateLayout::p_WC() + 2).norm(), 1e3);  // the soil's stiffness is in it
+  EXPECT_EQ(J.col(FreePadStateLayout::work()).norm(), 0.0);
 }
 
 TEST(FreePadJacobian, MatchesCentralDifferencesOnALevelPlane) {
@@ -89,9 +89,9 @@ TEST(FreePadJacobian, DoesNotAllocate) {
   const geom::PadBody body = JacobianTestPad();
   const rft::Terrain terrain = rft::UniformTerrain("lp", test::Fjs1Law(false));
   const FreePadDynamics pad(body, terrain, 9.81);
-  const Eigen::VectorXd y = JacobianTestState(pad), scale = Eigen::VectorXd::Ones(kSize);
-  Eigen::VectorXd f0(kSize);
-  Eigen::MatrixXd J(kSize, kSize);
+  const Eigen::VectorXd y = JacobianTestState(pad), scale = Eigen::VectorXd::Ones(FreePadStateLayout(false).size);
+  Eigen::VectorXd f0(FreePadStateLayout(false).size);
+  Eigen::MatrixXd J(FreePadStateLayout(false).size, FreePadStateLayout(false).size);
   pad.Derivative(y, f0);
   pad.Jacobian(y, f0, scale, J);
   EXPECT_EQ(testing_alloc::CountAllocations([&] { pad.Jacobian(y, f0, scale, J); }), 0);

@@ -45,10 +45,10 @@ rft::SoilContactModel JanosiModel(const rft::SoilParameters& soil, const geom::P
 // A level plate held at depth d, dragged along +x at V, after a shear displacement j: the state.
 Eigen::VectorXd DraggedPlate(const FreePadDynamics& pad, double depth, double speed, double j) {
   Eigen::VectorXd y = Eigen::VectorXd::Zero(pad.size());
-  y[kQ] = 1.0;
-  y[kV] = speed;
-  y[kShearDisplacement] = j;
-  y[kP + 2] += pad.Depth(pad.PoseOf(y)) - depth;
+  y[FreePadStateLayout::quat_WB()] = 1.0;
+  y[FreePadStateLayout::v_WC_W()] = speed;
+  y[FreePadStateLayout::shear()] = j;
+  y[FreePadStateLayout::p_WC() + 2] += pad.Depth(pad.PoseOf(y)) - depth;
   return y;
 }
 
@@ -59,7 +59,7 @@ TEST(JanosiShearState, PlateDraggedAtConstantDepthRampsAsJanosi) {
   ASSERT_TRUE(model.has_janosi_shear());
   const rft::Terrain terrain = rft::UniformTerrain("s", model);
   const FreePadDynamics pad(body, terrain, 1.62);  // keeps a reference to the terrain
-  ASSERT_EQ(pad.size(), kSize + 1);
+  ASSERT_EQ(pad.size(), FreePadStateLayout(true).size);
   const double depth = 0.01, speed = 0.3, K = soil.bekker.shear_modulus_K_m;
   // Fully mobilised shear on the bottom (Bekker's pressure at depth d on the footprint A):
   // A (c + p tan phi). The walls carry no shear (no footprint) but bulldoze, whatever j is.
@@ -68,30 +68,30 @@ TEST(JanosiShearState, PlateDraggedAtConstantDepthRampsAsJanosi) {
   const double full = A * (soil.bekker.cohesion_Pa + p * std::tan(soil.bekker.friction_angle_rad));
   Eigen::VectorXd ydot(pad.size());
   pad.Derivative(DraggedPlate(pad, depth, speed, 0.0), ydot);
-  const double bulldozing = body.mass_kg * ydot[kV];  // F_x at j = 0: the leading wall alone
+  const double bulldozing = body.mass_kg * ydot[FreePadStateLayout::v_WC_W()];  // F_x at j = 0: the leading wall alone
   EXPECT_LT(bulldozing, 0.0);
   for (const double j : {0.1 * K, 0.5 * K, K, 2.0 * K, 5.0 * K, 20.0 * K}) {
     pad.Derivative(DraggedPlate(pad, depth, speed, j), ydot);
-    const double shear = -(body.mass_kg * ydot[kV] - bulldozing);
+    const double shear = -(body.mass_kg * ydot[FreePadStateLayout::v_WC_W()] - bulldozing);
     EXPECT_NEAR(shear, full * -std::expm1(-j / K), 1e-9 * full) << "j = " << j;
-    EXPECT_DOUBLE_EQ(ydot[kShearDisplacement], speed);  // j' = |slip| in contact
+    EXPECT_DOUBLE_EQ(ydot[FreePadStateLayout::shear()], speed);  // j' = |slip| in contact
   }
   // Out of the soil j does not grow.
   Eigen::VectorXd above = DraggedPlate(pad, -0.01, speed, K);
   pad.Derivative(above, ydot);
-  EXPECT_EQ(ydot[kShearDisplacement], 0.0);
+  EXPECT_EQ(ydot[FreePadStateLayout::shear()], 0.0);
 }
 
 TEST(JanosiShearState, RftSoilsKeepTheirFourteenStates) {
   const geom::PadBody body = JanosiFlatPlate();
   const rft::Terrain rft_terrain = rft::UniformTerrain("s", test::Fjs1Law(false));
-  EXPECT_EQ(FreePadDynamics(body, rft_terrain, 9.81).size(), kSize);
+  EXPECT_EQ(FreePadDynamics(body, rft_terrain, 9.81).size(), FreePadStateLayout(false).size);
   rft::SoilParameters frictionless = JanosiLunarSoil();
   frictionless.bekker.cohesion_Pa = 0.0;
   frictionless.bekker.friction_angle_rad = 0.0;
   EXPECT_FALSE(JanosiModel(frictionless, body).has_janosi_shear());
   const rft::Terrain bekker_terrain = rft::UniformTerrain("s", JanosiModel(frictionless, body));
-  EXPECT_EQ(FreePadDynamics(body, bekker_terrain, 1.62).size(), kSize);
+  EXPECT_EQ(FreePadDynamics(body, bekker_terrain, 1.62).size(), FreePadStateLayout(false).size);
 }
 
 TEST(JanosiShearState, SlidingDropBalancesItsEnergy) {
