@@ -109,7 +109,9 @@ void PointsTable(std::ostringstream& md, const SourceResult& r) {
     const double f = QuantityToReport(p.point->quantity);
     const bool fitted = r.source->zeta_route == ZetaRoute::kCalibratedOn && p.point->id == r.source->calibrated_on;
     md << "| " << p.point->id << (fitted ? " (fitted)" : "") << " | " << Fixed(p.point->impact_speed_m_s, 2) << " | "
-       << Fixed(p.point->value * f, 1) << " +- " << Fixed(p.point->uncertainty * f, 1) << " "
+       << Fixed(p.point->value * f, 1)
+       // A value whose source states no uncertainty is printed without one, not as +- 0.
+       << (p.point->uncertainty > 0.0 ? " +- " + Fixed(p.point->uncertainty * f, 1) : std::string()) << " "
        << QuantityUnit(p.point->quantity) << " " << QuantityName(p.point->quantity) << " | "
        << ProvenanceName(p.point->how) << " |";
     for (size_t k = 0; k < r.variants.size(); ++k)

@@ -7,6 +7,7 @@
 
 #include "drop_tests/formats/yaml_fields.h"
 #include "drop_tests/validation/katsuragi_durian.h"
+#include "drop_tests/validation/shallow_impact_depth.h"
 #include "lander/pad/release.h"
 #include "rft/input_error.h"
 
@@ -70,11 +71,9 @@ auto LoadNamed(const io::YamlFields& f, const std::string& key, Load load) {
   }
 }
 
-KatsuragiDurianLaw ReadLaw(const io::YamlFields& f) {
+KatsuragiDurianLaw ReadKatsuragiDurianLaw(const io::YamlFields& f) {
   f.RequireOnly({"kind", "d1_mm", "d1_uncertainty_mm", "k_over_m_per_s2", "k_over_m_uncertainty_per_s2", "how",
                  "where"});
-  if (f.String("kind") != "katsuragi_durian")
-    f.Fail("kind", "must be katsuragi_durian, got '" + f.String("kind") + "'");
   KatsuragiDurianLaw law;
   law.d1_m = f.Positive("d1_mm") * 1e-3;
   law.d1_uncertainty_m = f.NonNegative("d1_uncertainty_mm") * 1e-3;
@@ -85,6 +84,40 @@ KatsuragiDurianLaw ReadLaw(const io::YamlFields& f) {
   law.how = ReadProvenance(f);
   law.where = f.String("where");
   return law;
+}
+
+// The law needs a sphere: its density and diameter come from the pad (a spherical_cap of the
+// sphere's own radius, the sphere's lower hemisphere).
+ShallowImpactLaw ReadShallowImpactLaw(const io::YamlFields& f, const ValidationSource& s) {
+  f.RequireOnly({"kind", "prefactor", "friction_coefficient", "how", "where"});
+  if (s.pad.file.shape != "spherical_cap" || s.pad.file.sphere_radius_mm != s.pad.file.radius_mm)
+    f.Fail("kind", "shallow_impact needs a sphere: a spherical_cap pad whose radius is its sphere_radius");
+  if (!(s.soil.bulk_density_kg_m3 > 0.0)) f.Fail("kind", "shallow_impact needs the soil's bulk_density_kg_m3 (rho_g)");
+  ShallowImpactLaw law;
+  law.prefactor = f.Positive("prefactor");
+  law.friction_coefficient = f.Positive("friction_coefficient");
+  law.how = ReadProvenance(f);
+  law.where = f.String("where");
+  return law;
+}
+
+void ReadLaw(const io::YamlFields& f, ValidationSource& s) {
+  const std::string kind = f.String("kind");
+  if (kind == "katsuragi_durian") s.law = ReadKatsuragiDurianLaw(f);
+  else if (kind == "shallow_impact") s.shallow_impact_law = ReadShallowImpactLaw(f, s);
+  else f.Fail("kind", "must be katsuragi_durian or shallow_impact, got '" + kind + "'");
+}
+
+// The depth of a `from_law` point and its half-range (zero where the law states no uncertainty).
+DepthWithUncertainty LawDepth(const ValidationSource& s, const MeasuredPoint& p) {
+  if (s.law)
+    return KatsuragiDurianStopDepthRange({s.law->d1_m, s.law->k_over_m_s2, s.gravity_m_s2}, s.law->d1_uncertainty_m,
+                                         s.law->k_over_m_uncertainty_s2, p.impact_speed_m_s);
+  const double radius_m = s.pad.file.sphere_radius_mm * 1e-3;
+  const ShallowImpactParameters law{s.shallow_impact_law->prefactor, s.shallow_impact_law->friction_coefficient,
+                                    s.pad.mass_kg / (4.0 / 3.0 * std::acos(-1.0) * radius_m * radius_m * radius_m),
+                                    s.soil.bulk_density_kg_m3, 2.0 * radius_m};
+  return {ShallowImpactDepth(law, p.drop_height_m.value_or(0.0)), 0.0};
 }
 
 // The impact speed of a point or trend: given, or from a drop height in free fall at gravity g.
@@ -107,12 +140,12 @@ MeasuredPoint ReadPoint(const io::YamlFields& f, const ValidationSource& s) {
   const char* value_key = p.quantity == Quantity::kFinalDepth ? "depth_mm" : "stop_time_ms";
   const char* uncertainty_key = p.quantity == Quantity::kFinalDepth ? "uncertainty_mm" : "uncertainty_ms";
   if (from_law) {
-    if (!s.law) f.Fail("from_law", "the source has no measured_law");
+    if (!s.law && !s.shallow_impact_law) f.Fail("from_law", "the source has no measured_law");
+    if (s.shallow_impact_law && !p.drop_height_m)
+      f.Fail("impact_speed_m_s", "the shallow_impact law is for drops from rest: give drop_height_mm");
     if (p.quantity != Quantity::kFinalDepth) f.Fail("from_law", "the law gives final_depth only");
     if (f.Has(value_key)) f.Fail(value_key, "give a value or from_law: true, not both");
-    const DepthWithUncertainty d = KatsuragiDurianStopDepthRange({s.law->d1_m, s.law->k_over_m_s2, s.gravity_m_s2},
-                                                                 s.law->d1_uncertainty_m,
-                                                                 s.law->k_over_m_uncertainty_s2, p.impact_speed_m_s);
+    const DepthWithUncertainty d = LawDepth(s, p);
     p.value = d.depth_m;
     p.uncertainty = d.half_range_m;
   } else {
@@ -231,7 +264,7 @@ ValidationSource LoadValidationSource(const std::string& path) {
   ReadMedium(f.Child("medium"), s);
   s.gravity_m_s2 = f.Positive("gravity_m_s2");
   if (f.Has("low_gravity")) s.low_gravity = f.Bool("low_gravity");
-  if (f.Has("measured_law")) s.law = ReadLaw(f.Child("measured_law"));
+  if (f.Has("measured_law")) ReadLaw(f.Child("measured_law"), s);
   if (f.Has("points"))
     for (const io::YamlFields& p : f.List("points")) s.points.push_back(ReadPoint(p, s));
   if (f.Has("trends"))

@@ -43,6 +43,17 @@ struct KatsuragiDurianLaw {
   Provenance how = Provenance::kQuoted;
 };
 
+// Uehara et al. / Ambroso et al.'s fitted penetration depth of spheres dropped from rest,
+// d = (c / mu) (rho_b / rho_g)^(1/2) D^(2/3) (h + d)^(1/3) (shallow_impact_depth.h): the
+// prefactor c and the medium's mu as the file gives them; rho_b and D from the source's sphere
+// pad, rho_g the soil's bulk density. A point's value when it says `from_law: true`.
+struct ShallowImpactLaw {
+  double prefactor = 0.0;
+  double friction_coefficient = 0.0;
+  std::string where;
+  Provenance how = Provenance::kQuoted;
+};
+
 struct MeasuredPoint {
   std::string id;
   double impact_speed_m_s = 0.0;  // given, or sqrt(2 g h) from drop_height_m
@@ -88,7 +99,9 @@ struct ValidationSource {
   std::string calibrated_on;  // a point id when zeta_route is kCalibratedOn
   double gravity_m_s2 = rft::kEarthGravity_m_s2;
   bool low_gravity = false;   // run with zeta scaled with g and with zeta fixed
+  // The measured law the `from_law` points come from: at most one (`measured_law.kind`).
   std::optional<KatsuragiDurianLaw> law;
+  std::optional<ShallowImpactLaw> shallow_impact_law;
   std::vector<MeasuredPoint> points;
   std::vector<MeasuredTrend> trends;
 };

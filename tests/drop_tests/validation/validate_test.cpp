@@ -77,6 +77,25 @@ TEST(ValidateShipped, ACalibratedSourceReproducesItsDesignatedPointOnly) {
   EXPECT_NEAR(r.zeta_N_m3[1] / r.zeta_N_m3[0], 1.0, 0.1);
 }
 
+TEST(ValidateShipped, ADerivedSourcesPointsAreAllPredictionsOfTheSameDropsAsItsTrend) {
+  const SourceResult& r = SourceNamed("ambroso_2005");
+  ASSERT_EQ(r.source->zeta_route, ZetaRoute::kDerived);
+  ASSERT_EQ(r.points.size(), 5u);
+  EXPECT_EQ(r.zeta_N_m3[0], r.zeta_N_m3[1]);  // the soil's own zeta, not fitted per variant
+  // The law's points sit at the drop heights of the total-drop-distance trend: the same rig drops.
+  const TrendResult& t = r.trends.at(0);
+  ASSERT_EQ(t.trend->vary, Variable::kTotalDropDistance);
+  for (size_t k = 0; k < r.variants.size(); ++k) {
+    double sum = 0.0;
+    for (size_t i = 0; i < r.points.size(); ++i) {
+      EXPECT_EQ(*r.points[i].point->drop_height_m, t.trend->values[i]);
+      EXPECT_EQ(r.points[i].simulated[k], t.simulated[k][i]) << r.points[i].point->id;
+      sum += std::abs(r.points[i].relative_error[k]);
+    }
+    EXPECT_NEAR(r.mean_abs_error[k], sum / 5.0, 1e-15);  // no fitted point to leave out
+  }
+}
+
 TEST(ValidateShipped, QuasiStaticLithostaticDepthFromRestDoesNotDependOnGravity) {
   // Weight and lithostatic resistance both scale with g: the stroke is the same, only slower.
   const SourceResult& r = SourceNamed("altshuler_2013");

@@ -1,9 +1,11 @@
 // Loading validation sources: the shipped ones load; a bad file names its file, field and value.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <string>
 
+#include "drop_tests/validation/shallow_impact_depth.h"
 #include "drop_tests/validation/validation_source.h"
 #include "rft/input_error.h"
 #include "tests/scratch_dir_test.h"
@@ -59,6 +61,26 @@ TEST_F(ValidationSourceLoad, ShippedSourcesLoadWithTheirNumbers) {
   EXPECT_EQ(set.sources[1].trends[1].vary, Variable::kProjectileDensity);
 }
 
+TEST_F(ValidationSourceLoad, ShallowImpactPointsAreTheLawForTheSourcesSphereAndMedium) {
+  const ValidationSource s = LoadValidationSource(kShippedSources + "/ambroso_2005.yaml");
+  ASSERT_TRUE(s.shallow_impact_law.has_value());
+  EXPECT_FALSE(s.law.has_value());
+  EXPECT_DOUBLE_EQ(s.shallow_impact_law->prefactor, 0.14);
+  EXPECT_DOUBLE_EQ(s.shallow_impact_law->friction_coefficient, 0.45);
+  ASSERT_EQ(s.points.size(), 5u);
+  // rho_b from the pad (69.2 g, radius 12.7 mm), rho_g the soil's 1520 kg/m^3, D = 25.4 mm.
+  const double rho_b = 0.0692 / (4.0 / 3.0 * std::acos(-1.0) * 0.0127 * 0.0127 * 0.0127);
+  const ShallowImpactParameters law{0.14, 0.45, rho_b, 1520.0, 0.0254};
+  for (const MeasuredPoint& p : s.points) {
+    ASSERT_TRUE(p.drop_height_m.has_value()) << p.id;
+    EXPECT_EQ(p.value, ShallowImpactDepth(law, *p.drop_height_m)) << p.id;
+    EXPECT_EQ(p.uncertainty, 0.0) << p.id;
+    EXPECT_EQ(p.how, Provenance::kDerivedFromMeasuredLaw) << p.id;
+  }
+  // h = 1 m: 63.2011 mm (the law iterated to its fixed point by hand, Python).
+  EXPECT_NEAR(s.points.back().value, 0.063201080516251274, 1e-12);
+}
+
 TEST_F(ValidationSourceLoad, AMinimalSourceLoads) {
   const ValidationSource s = LoadValidationSource(Write("tiny.yaml", MinimalSource("tiny", kOnePoint)));
   ASSERT_EQ(s.points.size(), 1u);
@@ -78,6 +100,18 @@ TEST_F(ValidationSourceLoad, BadFieldsAreNamedWithTheirValue) {
       "points:\n  - {id: a, drop_height_mm: 10, quantity: final_depth, from_law: true, how: derived_from_measured_law, "
       "where: w}\n";
   EXPECT_NE(ErrorOf("no_law", MinimalSource("no_law", no_law)).find("measured_law"), std::string::npos);
+  const std::string shallow = "measured_law: {kind: shallow_impact, prefactor: 0.14, friction_coefficient: 0.45, "
+                              "how: quoted, where: w}\n";
+  const std::string bad_kind = "measured_law: {kind: poncelet, how: quoted, where: w}\n" + kOnePoint;
+  EXPECT_NE(ErrorOf("bad_kind", MinimalSource("bad_kind", bad_kind)).find("poncelet"), std::string::npos);
+  const std::string law_at_speed =
+      shallow + "points:\n  - {id: a, impact_speed_m_s: 1.0, quantity: final_depth, from_law: true, "
+                "how: derived_from_measured_law, where: w}\n";
+  EXPECT_NE(ErrorOf("law_at_speed", MinimalSource("law_at_speed", law_at_speed)).find("drop_height_mm"),
+            std::string::npos);
+  const std::string no_mu = "measured_law: {kind: shallow_impact, prefactor: 0.14, friction_coefficient: 0, "
+                            "how: quoted, where: w}\n" + kOnePoint;
+  EXPECT_NE(ErrorOf("no_mu", MinimalSource("no_mu", no_mu)).find("friction_coefficient"), std::string::npos);
   const std::string flat_trend =
       "trends:\n  - {id: t, quantity: final_depth, vary: impact_speed_m_s, values: [1, 1], exponent: 1, "
       "tolerance: 0.1, tolerance_source: stated, how: quoted, where: w}\n";
