@@ -422,6 +422,14 @@ int PadRimSegments(const PadSpec& pad) {
   return pad.file.angular_segments > 0 ? pad.file.angular_segments : geom::kDefaultAngularSegments;
 }
 
+PadSpec FlatPadWithRadius(const PadSpec& pad, double radius_mm, geom::RimPolygon rim) {
+  if (pad.file.shape != "flat")
+    throw MakeInputError(pad.source, "profile.shape", "pad '" + pad.name + "' is not a flat revolved profile");
+  YAML::Node node = YAML::Clone(YamlFields::LoadFile(pad.source).node());
+  node["profile"]["radius_mm"] = radius_mm;
+  return LoadPad(YamlFields(node, pad.source, ""), rim);
+}
+
 PadSpec PadWithAngularSegments(const PadSpec& pad, int angular_segments, geom::RimPolygon rim) {
   if (!pad.is_axisymmetric())
     throw MakeInputError(pad.source, "angular_segments", "pad '" + pad.name + "' is a mesh, not a revolved profile");

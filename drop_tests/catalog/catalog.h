@@ -120,6 +120,10 @@ Eigen::Matrix3d ReadInertia(const YamlFields& block);
 // InputError naming the pad file for a mesh pad or a count outside the range LoadPad accepts.
 PadSpec PadWithAngularSegments(const PadSpec& pad, int angular_segments,
                                geom::RimPolygon rim = geom::RimPolygon::kInscribed);
+// A flat revolved pad at another radius: its file read again with profile.radius_mm replaced
+// (everything else as the file says), its rings' polygons `rim`. InputError naming the pad file for
+// a pad whose profile is not `shape: flat`.
+PadSpec FlatPadWithRadius(const PadSpec& pad, double radius_mm, geom::RimPolygon rim = geom::RimPolygon::kInscribed);
 // The rim segments a revolved pad is meshed at (its file's angular_segments, or the default); 0 for
 // a mesh pad.
 int PadRimSegments(const PadSpec& pad);

@@ -51,6 +51,18 @@ void WriteForceVtk(const io::OutputTarget& target, const geom::PadBody& body, co
 }
 }  // namespace
 
+HeldPadWrench ComputeHeldPadWrench(const io::PadSpec& pad, const rft::SoilParameters& soil, rft::LawKind law,
+                                   double gravity_m_s2, double depth_m, rft::PadKinematics& k) {
+  // The contact model (law and pad-level terms): Bekker's z^n is a pad-level depth law.
+  HeldPadWrench held{model::MakeContactModel(
+                         {.law = law, .soil = soil, .gravity_m_s2 = gravity_m_s2, .pad_surface = &pad.body.surface}),
+                     {}};
+  k.p_WB = pad::PlaceAtDepth(pad.body, k.R_WB, depth_m);
+  held.wrench = rft::ComputeContactWrench(pad.body.surface, k, rft::PlaneGround(), *held.model.law,
+                                          held.model.pad_terms);
+  return held;
+}
+
 nlohmann::json ForceJson(const ForceRequest& r, const RequestNaming& naming, const io::OutputTarget* vtk) {
   rft::PadKinematics k = RequestKinematics(r, naming);
   const pad::TiltAxis axis = pad::ParseTiltAxis(r.tilt_axis);
@@ -60,13 +72,10 @@ nlohmann::json ForceJson(const ForceRequest& r, const RequestNaming& naming, con
   if (r.zeta_N_cm3) soil.zeta_N_m3 = units::ZetaFromN_cm3(*r.zeta_N_cm3);
   soil.dynamic_term = soil.dynamic_term && r.dynamic;
   const rft::LawKind kind = r.law ? rft::ParseLawKind(*r.law, naming.context, naming.Field("law")) : soil.rft_law_3d;
-  // The contact model (law and pad-level terms): Bekker's z^n is a pad-level depth law.
-  const rft::SoilContactModel model = model::MakeContactModel(
-      {.law = kind, .soil = soil, .gravity_m_s2 = r.gravity_m_s2, .pad_surface = &pad.body.surface});
-  const rft::StressLaw3D& law = *model.law;
-  k.p_WB = pad::PlaceAtDepth(pad.body, k.R_WB, r.depth_m);
-  const rft::ContactWrench w = rft::ComputeContactWrench(pad.body.surface, k, rft::PlaneGround(), law, model.pad_terms);
-  if (vtk) WriteForceVtk(*vtk, pad.body, k, law, model.pad_terms.depth);
+  const HeldPadWrench held = ComputeHeldPadWrench(pad, soil, kind, r.gravity_m_s2, r.depth_m, k);
+  const rft::StressLaw3D& law = *held.model.law;
+  const rft::ContactWrench& w = held.wrench;
+  if (vtk) WriteForceVtk(*vtk, pad.body, k, law, held.model.pad_terms.depth);
   nlohmann::json out{
       {"pad", pad.name},
       {"soil", soil.name},

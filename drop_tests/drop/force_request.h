@@ -10,9 +10,14 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include "drop_tests/catalog/catalog.h"
 #include "drop_tests/drop/drop_request.h"
 #include "drop_tests/formats/output_path.h"
+#include "rft/contact_wrench.h"
 #include "rft/gravity_constants.h"
+#include "rft/law_kind.h"
+#include "rft/soil.h"
+#include "rft/soil_contact_model.h"
 
 namespace touchdown::drop {
 
@@ -25,6 +30,17 @@ struct ForceRequest {
   std::optional<double> zeta_N_cm3;  // overrides the soil's
   bool dynamic = false;               // add the soil's dynamic term at velocity_m_s (if it has one)
 };
+
+// The soil wrench on `pad` held with its lowest point at `depth_m`, turned by k.R_WB and moving as
+// k says (k.p_WB is set here), on `soil` under `law` with zeta scaled to `gravity_m_s2` as the soil
+// says: the one computation behind `touchdown force` and validate's static bearing pressure. The
+// model is returned with the wrench (its law names the result, its depth law draws the VTK).
+struct HeldPadWrench {
+  rft::SoilContactModel model;
+  rft::ContactWrench wrench;
+};
+HeldPadWrench ComputeHeldPadWrench(const io::PadSpec& pad, const rft::SoilParameters& soil, rft::LawKind law,
+                                   double gravity_m_s2, double depth_m, rft::PadKinematics& k);
 
 // Validates the request (InputError naming the field as `naming` spells it), loads the pad and
 // the soil and returns the wrench: pad, soil, law, the request, reference_point_m, force_N,

@@ -168,6 +168,30 @@ void RunTrends(const SourceRunner& runner, SourceResult& r) {
   }
 }
 
+// Each static bearing at the corners of its depth and diameter ranges, per variant: zeta the
+// variant's, scaled with g from the soil's reference gravity or (zeta fixed) not.
+void RunBearings(SourceResult& r) {
+  const ValidationSource& s = *r.source;
+  for (const MeasuredBearing& b : s.bearings) {
+    BearingResult br{&b, {}, {}, {}};
+    for (size_t k = 0; k < r.variants.size(); ++k) {
+      rft::SoilParameters soil = s.soil;
+      soil.zeta_N_m3 = r.zeta_N_m3[k];
+      if (r.variants[k].zeta_fixed) soil.reference_gravity_m_s2 = s.gravity_m_s2;
+      std::vector<double> corners;
+      for (const double depth : {b.depth_m.low, b.depth_m.high})
+        for (const double diameter : {b.diameter_m.low, b.diameter_m.high})
+          corners.push_back(StaticBearingPressure(s.pad, soil, s.gravity_m_s2, depth, diameter));
+      const Range range{*std::min_element(corners.begin(), corners.end()),
+                        *std::max_element(corners.begin(), corners.end())};
+      br.corners_Pa.push_back(std::move(corners));
+      br.simulated_Pa.push_back(range);
+      br.comparison.push_back(CompareRanges(range, b.pressure_Pa));
+    }
+    r.bearings.push_back(std::move(br));
+  }
+}
+
 // Per quantity with measured points: the simulated curve over the points' speed range.
 void RunCurves(const SourceRunner& runner, SourceResult& r) {
   const ValidationSource& s = *r.source;
@@ -199,12 +223,24 @@ void Score(SourceResult& r) {
     int reproduced = 0;
     for (const TrendResult& t : r.trends) reproduced += t.reproduced[k] ? 1 : 0;
     r.trends_reproduced.push_back(reproduced);
+    int met = 0;
+    double distance = 0.0;
+    for (const BearingResult& b : r.bearings) {
+      met += b.comparison[k].agreement != RangeAgreement::kOutside ? 1 : 0;
+      distance += std::abs(b.comparison[k].relative_distance);
+    }
+    r.bearings_met.push_back(met);
+    r.bearing_distance.push_back(distance);
   }
   for (size_t k = 1; k < r.variants.size(); ++k) {
     const size_t b = static_cast<size_t>(r.best_variant);
-    const bool more = r.trends_reproduced[k] > r.trends_reproduced[b];
-    const bool tie = r.trends_reproduced[k] == r.trends_reproduced[b];
-    if (more || (tie && r.mean_abs_error[k] < r.mean_abs_error[b])) r.best_variant = static_cast<int>(k);
+    const int score_k = r.trends_reproduced[k] + r.bearings_met[k], score_b = r.trends_reproduced[b] + r.bearings_met[b];
+    const bool more = score_k > score_b;
+    const bool tie = score_k == score_b;
+    const bool no_points = std::isnan(r.mean_abs_error[k]) && std::isnan(r.mean_abs_error[b]);
+    const bool closer = r.mean_abs_error[k] < r.mean_abs_error[b] ||
+                        (no_points && r.bearing_distance[k] < r.bearing_distance[b]);
+    if (more || (tie && closer)) r.best_variant = static_cast<int>(k);
   }
 }
 
@@ -235,6 +271,7 @@ ValidationResult RunValidation(const ValidationSet& set) {
       r.zeta_N_m3.push_back(s.zeta_route == ZetaRoute::kCalibratedOn ? CalibrateZeta(runner, s, v) : s.soil.zeta_N_m3);
     RunPoints(runner, r);
     RunTrends(runner, r);
+    RunBearings(r);
     RunCurves(runner, r);
     Score(r);
     result.sources.push_back(std::move(r));

@@ -15,6 +15,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include "drop_tests/validation/static_bearing.h"
 #include "drop_tests/validation/validation_source.h"
 
 namespace touchdown::validation {
@@ -41,6 +42,17 @@ struct TrendResult {
   std::vector<bool> reproduced;                // per variant
 };
 
+// A static bearing measurement against the model: per variant the pressure [Pa] at the corners
+// of the depth and diameter ranges (depth low/high x diameter low/high, in that order), their range
+// and how it stands against the measured range. The dynamic variants equal the quasi-static ones
+// (a static test: zero speed).
+struct BearingResult {
+  const MeasuredBearing* bearing = nullptr;
+  std::vector<std::vector<double>> corners_Pa;
+  std::vector<Range> simulated_Pa;
+  std::vector<RangeComparison> comparison;
+};
+
 // A simulated curve for the plots: quantity against impact speed over the measured range.
 struct Curve {
   Quantity quantity = Quantity::kFinalDepth;
@@ -54,12 +66,16 @@ struct SourceResult {
   std::vector<double> zeta_N_m3;  // per variant, at the reference gravity (fitted or the soil's)
   std::vector<PointResult> points;
   std::vector<TrendResult> trends;
+  std::vector<BearingResult> bearings;
   std::vector<Curve> curves;
   // Per variant: mean |relative error| over the predicted points (the calibration point
-  // excluded), NaN without points; trends reproduced.
+  // excluded), NaN without points; trends reproduced; static bearings met (inside or overlapping).
   std::vector<double> mean_abs_error;
   std::vector<int> trends_reproduced;
-  int best_variant = 0;  // most trends reproduced, then the smallest mean error
+  std::vector<int> bearings_met;
+  std::vector<double> bearing_distance;  // sum of |relative distance| of the bearings met by none
+  int best_variant = 0;  // most trends reproduced and bearings met, then the smallest mean
+                         // error, then (without points) the smallest bearing distance
 };
 
 struct ValidationResult {

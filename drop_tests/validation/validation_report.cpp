@@ -73,6 +73,30 @@ nlohmann::json TrendJson(const SourceResult& r, const TrendResult& t) {
   return j;
 }
 
+nlohmann::json RangeJson(const Range& r, double f) { return {r.low * f, r.high * f}; }
+
+nlohmann::json BearingJson(const SourceResult& r, const BearingResult& b) {
+  const MeasuredBearing& m = *b.bearing;
+  constexpr double kN_cm2 = 1e-4;
+  nlohmann::json j{{"id", m.id},
+                   {"quantity", "static_bearing_pressure"},
+                   {"unit", "N/cm^2"},
+                   {"measured", RangeJson(m.pressure_Pa, kN_cm2)},
+                   {"depth_mm", RangeJson(m.depth_m, 1e3)},
+                   {"diameter_mm", RangeJson(m.diameter_m, 1e3)},
+                   {"how", ProvenanceName(m.how)},
+                   {"where", m.where}};
+  for (size_t k = 0; k < r.variants.size(); ++k) {
+    nlohmann::json corners = nlohmann::json::array();
+    for (const double p : b.corners_Pa[k]) corners.push_back(p * kN_cm2);
+    j["simulated"][r.variants[k].Name()] = {{"range", RangeJson(b.simulated_Pa[k], kN_cm2)},
+                                            {"corners", corners},
+                                            {"agreement", RangeAgreementName(b.comparison[k].agreement)},
+                                            {"relative_distance", b.comparison[k].relative_distance}};
+  }
+  return j;
+}
+
 nlohmann::json SourceJson(const SourceResult& r) {
   const ValidationSource& s = *r.source;
   nlohmann::json j{{"id", s.id},
@@ -91,10 +115,17 @@ nlohmann::json SourceJson(const SourceResult& r) {
                                            {"mean_abs_relative_error", io::FiniteOrNull(r.mean_abs_error[k])},
                                            {"trends_reproduced", r.trends_reproduced[k]},
                                            {"trends", r.trends.size()}};
+  if (!r.bearings.empty())
+    for (size_t k = 0; k < r.variants.size(); ++k) {
+      j["variants"][r.variants[k].Name()]["static_bearings_met"] = r.bearings_met[k];
+      j["variants"][r.variants[k].Name()]["static_bearings"] = r.bearings.size();
+    }
   j["points"] = nlohmann::json::array();
   for (const PointResult& p : r.points) j["points"].push_back(PointJson(r, p));
   j["trends"] = nlohmann::json::array();
   for (const TrendResult& t : r.trends) j["trends"].push_back(TrendJson(r, t));
+  // Only a source with static bearings carries the key (the others' JSON stays as it was).
+  for (const BearingResult& b : r.bearings) j["static_bearing"].push_back(BearingJson(r, b));
   return j;
 }
 
@@ -140,6 +171,33 @@ void TrendsTable(std::ostringstream& md, const SourceResult& r) {
   md << "\n";
 }
 
+std::string BearingCell(const BearingResult& b, size_t k) {
+  const RangeComparison& c = b.comparison[k];
+  return Fixed(b.simulated_Pa[k].low * 1e-4, 2) + "-" + Fixed(b.simulated_Pa[k].high * 1e-4, 2) + " (" +
+         RangeAgreementName(c.agreement) +
+         (c.agreement == RangeAgreement::kOutside ? ", " + Percent(c.relative_distance) : std::string()) + ")";
+}
+
+void BearingsTable(std::ostringstream& md, const SourceResult& r) {
+  if (r.bearings.empty()) return;
+  md << "| static bearing | depth [mm] | diameter [mm] | measured [N/cm^2] | how |";
+  for (const Variant& v : r.variants) md << " " << v.Name() << " |";
+  md << "\n|---|---|---|---|---|";
+  for (size_t k = 0; k < r.variants.size(); ++k) md << "---|";
+  md << "\n";
+  const auto range = [](const Range& x, double f, int digits) {
+    return x.low == x.high ? Fixed(x.low * f, digits) : Fixed(x.low * f, digits) + "-" + Fixed(x.high * f, digits);
+  };
+  for (const BearingResult& b : r.bearings) {
+    const MeasuredBearing& m = *b.bearing;
+    md << "| " << m.id << " | " << range(m.depth_m, 1e3, 0) << " | " << range(m.diameter_m, 1e3, 0) << " | "
+       << range(m.pressure_Pa, 1e-4, 1) << " | " << ProvenanceName(m.how) << " |";
+    for (size_t k = 0; k < r.variants.size(); ++k) md << " " << BearingCell(b, k) << " |";
+    md << "\n";
+  }
+  md << "\n";
+}
+
 std::string PlotBase(const SourceResult& r, const std::string& panel) { return "plots/" + r.source->id + "_" + panel; }
 
 std::vector<std::string> PanelsOf(const SourceResult& r) {
@@ -176,10 +234,14 @@ std::string ValidationMarkdown(const ValidationResult& result) {
     md << " (at " << s.soil.reference_gravity_m_s2 << " m/s^2)\n\n";
     PointsTable(md, r);
     TrendsTable(md, r);
+    BearingsTable(md, r);
     md << "Per variant: ";
-    for (size_t k = 0; k < r.variants.size(); ++k)
+    for (size_t k = 0; k < r.variants.size(); ++k) {
       md << r.variants[k].Name() << " mean |error| " << Percent(r.mean_abs_error[k]) << ", trends "
-         << r.trends_reproduced[k] << "/" << r.trends.size() << (k + 1 < r.variants.size() ? "; " : ".");
+         << r.trends_reproduced[k] << "/" << r.trends.size();
+      if (!r.bearings.empty()) md << ", static bearings met " << r.bearings_met[k] << "/" << r.bearings.size();
+      md << (k + 1 < r.variants.size() ? "; " : ".");
+    }
     md << " Closer to this source: **" << r.variants[static_cast<size_t>(r.best_variant)].Name() << "**.\n\n";
     for (const std::string& panel : PanelsOf(r)) md << "![" << s.id << " " << panel << "](" << PlotBase(r, panel) << ".png)\n";
     md << "\n";
@@ -204,6 +266,13 @@ std::string ValidationSummary(const ValidationResult& result) {
       out << "  " << std::left << std::setw(14) << t.trend->id << std::right << " measured " << MeasuredTrendText(*t.trend);
       for (size_t k = 0; k < r.variants.size(); ++k)
         out << "  " << r.variants[k].Name() << " " << Fixed(t.exponent[k], 3) << (t.reproduced[k] ? " ok" : " no");
+      out << "\n";
+    }
+    for (const BearingResult& b : r.bearings) {
+      out << "  " << std::left << std::setw(14) << b.bearing->id << std::right << " measured "
+          << Fixed(b.bearing->pressure_Pa.low * 1e-4, 2) << "-" << Fixed(b.bearing->pressure_Pa.high * 1e-4, 2)
+          << " N/cm^2";
+      for (size_t k = 0; k < r.variants.size(); ++k) out << "  " << r.variants[k].Name() << " " << BearingCell(b, k);
       out << "\n";
     }
     out << "  closer: " << r.variants[static_cast<size_t>(r.best_variant)].Name() << "\n";

@@ -212,6 +212,31 @@ MeasuredTrend ReadTrend(const io::YamlFields& f, const ValidationSource& s) {
   return t;
 }
 
+// A measured range: one value, or [low, high] with low < high, each positive; SI by `to_si`.
+Range ReadRange(const io::YamlFields& f, const std::string& key, double to_si) {
+  const std::vector<double> v = f.NumberList(key, /*allow_zero=*/false);
+  if (v.empty() || v.size() > 2 || (v.size() == 2 && !(v[0] < v[1])))
+    f.Fail(key, "must be [value] or [low, high] with low < high");
+  for (const double x : v)
+    if (!(x > 0.0)) f.Fail(key, "must be positive");
+  return {v.front() * to_si, v.back() * to_si};
+}
+
+// The bearing area is the source's flat pad made at each bearing diameter (io::FlatPadWithRadius).
+MeasuredBearing ReadBearing(const io::YamlFields& f, const ValidationSource& s) {
+  f.RequireOnly({"id", "pressure_N_cm2", "depth_mm", "diameter_mm", "how", "where"});
+  if (s.pad.file.shape != "flat") f.Fail("id", "a static bearing needs a flat pad (profile shape: flat)");
+  MeasuredBearing b;
+  b.id = f.String("id");
+  b.pressure_Pa = ReadRange(f, "pressure_N_cm2", 1e4);
+  b.depth_m = ReadRange(f, "depth_mm", 1e-3);
+  b.diameter_m = ReadRange(f, "diameter_mm", 1e-3);
+  b.how = ReadProvenance(f);
+  if (b.how == Provenance::kDerivedFromMeasuredLaw) f.Fail("how", "a static bearing is quoted or read off a figure");
+  b.where = f.String("where");
+  return b;
+}
+
 void ReadMedium(const io::YamlFields& m, ValidationSource& s) {
   m.RequireOnly({"soil", "description", "zeta_route", "calibrated_on"});
   s.soil = LoadNamed(m, "soil", [](const std::string& p) { return io::LoadSoil(p); });
@@ -233,7 +258,10 @@ void CheckIds(const io::YamlFields& f, const ValidationSource& s) {
     if (!ids.insert(p.id).second) f.Fail("points", "repeated id '" + p.id + "'");
   for (const MeasuredTrend& t : s.trends)
     if (!ids.insert(t.id).second) f.Fail("trends", "repeated id '" + t.id + "'");
-  if (s.points.empty() && s.trends.empty()) f.Fail("points", "a source needs measured points or trends");
+  for (const MeasuredBearing& b : s.bearings)
+    if (!ids.insert(b.id).second) f.Fail("static_bearing", "repeated id '" + b.id + "'");
+  if (s.points.empty() && s.trends.empty() && s.bearings.empty())
+    f.Fail("points", "a source needs measured points, trends or a static_bearing");
   if (s.zeta_route == ZetaRoute::kCalibratedOn) {
     const auto it = std::find_if(s.points.begin(), s.points.end(),
                                  [&](const MeasuredPoint& p) { return p.id == s.calibrated_on; });
@@ -248,7 +276,7 @@ ValidationSource LoadValidationSource(const std::string& path) {
   const io::YamlFields f = io::YamlFields::LoadFile(path);
   f.RequireSchemaVersion(1);
   f.RequireOnly({"schema_version", "type", "id", "citation", "read_at", "projectile", "medium", "gravity_m_s2",
-                 "low_gravity", "measured_law", "points", "trends", "provenance"});
+                 "low_gravity", "measured_law", "points", "trends", "static_bearing", "provenance"});
   if (f.String("type") != "validation_source") f.Fail("type", "must be validation_source, got '" + f.String("type") + "'");
   ValidationSource s;
   s.file = path;
@@ -269,6 +297,8 @@ ValidationSource LoadValidationSource(const std::string& path) {
     for (const io::YamlFields& p : f.List("points")) s.points.push_back(ReadPoint(p, s));
   if (f.Has("trends"))
     for (const io::YamlFields& t : f.List("trends")) s.trends.push_back(ReadTrend(t, s));
+  if (f.Has("static_bearing"))
+    for (const io::YamlFields& b : f.List("static_bearing")) s.bearings.push_back(ReadBearing(b, s));
   CheckIds(f, s);
   return s;
 }

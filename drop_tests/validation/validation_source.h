@@ -2,9 +2,10 @@
 // A published granular-impact measurement as touchdown validates against it
 // (data/validation/<source_id>.yaml, `type: validation_source`): the citation, the projectile as a
 // catalogued pad, the medium as a soil with zeta's route (derived from density and friction angle,
-// or calibrated on ONE designated measured case), gravity, the measured points and the measured
-// trends (power-law exponents or directions). Every number carries where it was read and whether
-// it was quoted, read off a figure, or derived from a measured law the source fitted.
+// or calibrated on ONE designated measured case), gravity, the measured points, the measured
+// trends (power-law exponents or directions) and static bearings. Every number carries where it
+// was read and whether it was quoted, read off a figure, or derived from a measured law the source
+// fitted.
 // docs/validation.md describes the format and the sources.
 #include <optional>
 #include <string>
@@ -65,6 +66,20 @@ struct MeasuredPoint {
   std::string where;
 };
 
+// A static bearing measurement (`static_bearing`): the pressure under a flat bearing area pushed
+// slowly into the soil, static_bearing_pressure = vertical force / bearing area, over a range of
+// penetration depths and bearing diameters. Each is a range [low, high] (low = high for a single
+// value); the source's pad (`shape: flat`) is made at each bearing diameter.
+struct Range {
+  double low = 0.0, high = 0.0;  // SI
+};
+struct MeasuredBearing {
+  std::string id;
+  Range pressure_Pa, depth_m, diameter_m;
+  Provenance how = Provenance::kQuoted;
+  std::string where;
+};
+
 // A measured trend: quantity ~ variable^exponent over `values` (the measured range), the other
 // conditions fixed at `at_*`. `exponent` with its tolerance, or only a direction.
 enum class Direction { kExponent, kIncreasing, kDecreasing };
@@ -104,6 +119,7 @@ struct ValidationSource {
   std::optional<ShallowImpactLaw> shallow_impact_law;
   std::vector<MeasuredPoint> points;
   std::vector<MeasuredTrend> trends;
+  std::vector<MeasuredBearing> bearings;  // `static_bearing`
 };
 
 // Loads and checks one source; pad and soil paths are relative to the file. InputError naming

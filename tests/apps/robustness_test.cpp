@@ -755,6 +755,15 @@ std::vector<Case> Cases() {
   c.push_back({"CLI flag", "lander scenario by a mistyped name", "lander lander_cas_B --out out_h1"});
   c.push_back({"CLI flag", "stability by a lander scenario's name (not a study)",
                "stability lunar_paper_lander_scenario --out out_h2"});
+  // A static bearing (docs/validation.md) whose measured range runs backwards.
+  c.push_back({"validation sources", "static bearing pressure range reversed", "validate --sources vb --out out_v3",
+               {{"vb/dynamic_rft.yaml", "schema_version: 1\ntype: validation_model\ninertial_drag_lambda: 1.1\nsource: s\n"},
+                {"vb/lunar.yaml",
+                 "schema_version: 1\ntype: validation_source\nid: lunar\ncitation: c\nread_at: r\nprojectile:\n  pad: " +
+                     DataDir() + "/validation/pads/surveyor_flat_disc.yaml\n  description: d\nmedium:\n  soil: " +
+                     DataDir() + "/validation/soils/surveyor3_mare_soil.yaml\n  description: d\n  zeta_route: derived\n"
+                     "gravity_m_s2: 1.62\nstatic_bearing:\n  - {id: b, pressure_N_cm2: [6, 2], depth_mm: [20, 50], "
+                     "diameter_mm: [200, 300], how: quoted, where: w}\n"}}});
   return c;
 }
 

@@ -117,9 +117,36 @@ TEST(ValidateShipped, TrendVerdictsFollowTheTolerance) {
   EXPECT_FALSE(TrendReproduced(t, 0.01));
 }
 
+TEST(ValidateShipped, StaticBearingIsTheModelsRangeOverTheCornersAgainstTheMeasuredOne) {
+  const SourceResult& r = SourceNamed("surveyor3_1968");
+  ASSERT_EQ(r.bearings.size(), 1u);
+  const BearingResult& b = r.bearings[0];
+  const MeasuredBearing& m = *b.bearing;
+  for (size_t k = 0; k < r.variants.size(); ++k) {
+    rft::SoilParameters soil = r.source->soil;
+    if (r.variants[k].zeta_fixed) soil.reference_gravity_m_s2 = r.source->gravity_m_s2;
+    ASSERT_EQ(b.corners_Pa[k].size(), 4u);
+    // Corner order: depth low/high x diameter low/high; the pressure grows with depth and falls
+    // with the diameter, so the range's ends are the shallow-wide and the deep-narrow corners.
+    EXPECT_EQ(b.corners_Pa[k][2], StaticBearingPressure(r.source->pad, soil, 1.62, m.depth_m.high, m.diameter_m.low));
+    EXPECT_EQ(b.simulated_Pa[k].low, b.corners_Pa[k][1]);
+    EXPECT_EQ(b.simulated_Pa[k].high, b.corners_Pa[k][2]);
+    EXPECT_EQ(b.comparison[k].agreement, CompareRanges(b.simulated_Pa[k], m.pressure_Pa).agreement);
+  }
+  // Static: the dynamic variants are the quasi-static ones.
+  EXPECT_EQ(b.corners_Pa[VariantIndex(r, "dynamic")], b.corners_Pa[VariantIndex(r, "quasi_static")]);
+  const nlohmann::json j = ValidationJson(ShippedRun());
+  const nlohmann::json& s = j["sources"][4];
+  EXPECT_EQ(s["static_bearing"][0]["unit"], "N/cm^2");
+  EXPECT_DOUBLE_EQ(s["static_bearing"][0]["simulated"]["quasi_static"]["range"][0].get<double>(),
+                   b.simulated_Pa[0].low * 1e-4);
+  // The other sources' JSON carries no static_bearing key.
+  EXPECT_FALSE(j["sources"][2].contains("static_bearing"));
+}
+
 TEST(ValidateShipped, JsonAndReportCarryEverySource) {
   const nlohmann::json j = ValidationJson(ShippedRun());
-  ASSERT_EQ(j["sources"].size(), 4u);
+  ASSERT_EQ(j["sources"].size(), 5u);
   EXPECT_DOUBLE_EQ(j["dynamic_rft"]["inertial_drag_lambda"].get<double>(), 1.1);
   const nlohmann::json& kd = j["sources"][2];
   EXPECT_EQ(kd["id"], "katsuragi_durian_2007");
@@ -127,7 +154,7 @@ TEST(ValidateShipped, JsonAndReportCarryEverySource) {
   EXPECT_DOUBLE_EQ(kd["points"][0]["measured"].get<double>(), p.point->value * 1e3);
   EXPECT_DOUBLE_EQ(kd["points"][0]["simulated"]["dynamic"]["relative_error"].get<double>(), p.relative_error[1]);
   const std::string md = ValidationMarkdown(ShippedRun());
-  for (const char* id : {"altshuler_2013", "ambroso_2005", "katsuragi_durian_2007", "murdoch_2017"})
+  for (const char* id : {"altshuler_2013", "ambroso_2005", "katsuragi_durian_2007", "murdoch_2017", "surveyor3_1968"})
     EXPECT_NE(md.find(std::string("### ") + id), std::string::npos);
 }
 
@@ -141,7 +168,7 @@ TEST_F(ValidateOutputs, WritesTheReportAndEveryPlot) {
   EXPECT_TRUE(std::filesystem::exists(out + "/plots/katsuragi_durian_2007_final_depth.png"));
   EXPECT_TRUE(std::filesystem::exists(out + "/plots/murdoch_2017_depth_vs_gravity.svg"));
   const nlohmann::json j = nlohmann::json::parse(Slurp(out + "/validation.json"));
-  EXPECT_EQ(j["sources"].size(), 4u);
+  EXPECT_EQ(j["sources"].size(), 5u);
   // Trends: log ranges fitted to the values with tics inside them, the measured exponent's
   // tolerance drawn, a measured direction stated, each variant's fitted slope in the key.
   const std::string script = Slurp(out + "/plots/validation.gp");

@@ -44,11 +44,12 @@ class ValidationSourceLoad : public testing_scratch::ScratchDirTest {
 
 TEST_F(ValidationSourceLoad, ShippedSourcesLoadWithTheirNumbers) {
   const ValidationSet set = LoadValidationSet(kShippedSources);
-  ASSERT_EQ(set.sources.size(), 4u);
+  ASSERT_EQ(set.sources.size(), 5u);
   EXPECT_EQ(set.sources[0].id, "altshuler_2013");
   EXPECT_EQ(set.sources[1].id, "ambroso_2005");
   EXPECT_EQ(set.sources[2].id, "katsuragi_durian_2007");
   EXPECT_EQ(set.sources[3].id, "murdoch_2017");
+  EXPECT_EQ(set.sources[4].id, "surveyor3_1968");
   EXPECT_DOUBLE_EQ(set.dynamic.lambda, 1.1);
   const ValidationSource& kd = set.sources[2];
   ASSERT_TRUE(kd.law.has_value());
@@ -79,6 +80,57 @@ TEST_F(ValidationSourceLoad, ShallowImpactPointsAreTheLawForTheSourcesSphereAndM
   }
   // h = 1 m: 63.2011 mm (the law iterated to its fixed point by hand, Python).
   EXPECT_NEAR(s.points.back().value, 0.063201080516251274, 1e-12);
+}
+
+TEST_F(ValidationSourceLoad, SurveyorsStaticBearingIsARangeOverDepthsAndDiameters) {
+  const ValidationSource s = LoadValidationSource(kShippedSources + "/surveyor3_1968.yaml");
+  EXPECT_TRUE(s.points.empty());
+  EXPECT_TRUE(s.trends.empty());
+  EXPECT_TRUE(s.low_gravity);
+  EXPECT_DOUBLE_EQ(s.gravity_m_s2, 1.62);
+  ASSERT_EQ(s.bearings.size(), 1u);
+  const MeasuredBearing& b = s.bearings[0];
+  EXPECT_DOUBLE_EQ(b.pressure_Pa.low, 2e4);  // 2 N/cm^2
+  EXPECT_DOUBLE_EQ(b.pressure_Pa.high, 6e4);
+  EXPECT_DOUBLE_EQ(b.depth_m.low, 0.02);
+  EXPECT_DOUBLE_EQ(b.depth_m.high, 0.05);
+  EXPECT_DOUBLE_EQ(b.diameter_m.low, 0.2);
+  EXPECT_DOUBLE_EQ(b.diameter_m.high, 0.3);
+  EXPECT_EQ(b.how, Provenance::kQuoted);
+  EXPECT_EQ(s.pad.file.shape, "flat");
+  EXPECT_DOUBLE_EQ(s.soil.bulk_density_kg_m3, 1500.0);
+  EXPECT_EQ(s.zeta_route, ZetaRoute::kDerived);
+}
+
+TEST_F(ValidationSourceLoad, AStaticBearingNeedsAFlatPadAndRanges) {
+  // The minimal source with the shipped flat disc for its sphere.
+  const auto bearing = [](const std::string& id, const std::string& fields) {
+    std::string text = MinimalSource(id, "static_bearing:\n  - {id: b, " + fields + "}\n");
+    const std::string sphere = "kd2007_steel_sphere.yaml";
+    return text.replace(text.find(sphere), sphere.size(), "surveyor_flat_disc.yaml");
+  };
+  const std::string good = "pressure_N_cm2: [2, 6], depth_mm: [20, 50], diameter_mm: [200, 300], how: quoted, where: w";
+  EXPECT_EQ(LoadValidationSource(Write("ok.yaml", bearing("ok", good))).bearings.size(), 1u);
+  // A sphere is not a bearing area.
+  EXPECT_NE(ErrorOf("sphere", MinimalSource("sphere", "static_bearing:\n  - {id: b, " + good + "}\n")).find("flat"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf("reversed", bearing("reversed", "pressure_N_cm2: [6, 2], depth_mm: [20, 50], diameter_mm: [200, "
+                                                    "300], how: quoted, where: w"))
+                .find("pressure_N_cm2"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf("three", bearing("three", "pressure_N_cm2: [2, 6], depth_mm: [20, 30, 50], diameter_mm: [200, "
+                                              "300], how: quoted, where: w"))
+                .find("depth_mm"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf("no_diameter", bearing("no_diameter", "pressure_N_cm2: [2, 6], depth_mm: [20, 50], how: quoted, "
+                                                          "where: w"))
+                .find("diameter_mm"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf("law", bearing("law", "pressure_N_cm2: [2, 6], depth_mm: [20, 50], diameter_mm: [200, 300], "
+                                          "how: derived_from_measured_law, where: w"))
+                .find("how"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf("typo", bearing("typo", good + ", width_mm: 3")).find("width_mm"), std::string::npos);
 }
 
 TEST_F(ValidationSourceLoad, AMinimalSourceLoads) {
