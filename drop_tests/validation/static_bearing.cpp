@@ -1,6 +1,7 @@
 #include "drop_tests/validation/static_bearing.h"
 
 #include <cmath>
+#include <numbers>
 
 #include "drop_tests/drop/force_request.h"
 #include "rft/contact_wrench.h"
@@ -17,7 +18,7 @@ double StaticBearingPressure(const io::PadSpec& flat_pad, const rft::SoilParamet
   k.v_WB_W = {0.0, 0.0, -rft::kQuasiStaticProbeSpeed_m_s};
   const drop::HeldPadWrench held =
       drop::ComputeHeldPadWrench(pad, quasi_static, soil.rft_law_3d, gravity_m_s2, depth_m, k);
-  const double area = std::acos(-1.0) * 0.25 * diameter_m * diameter_m;
+  const double area = std::numbers::pi * 0.25 * diameter_m * diameter_m;
   return held.wrench.force_W.z() / area;
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <cstdint>
 #include <limits>
 #include <memory>
@@ -121,7 +122,7 @@ void RunPoints(const SourceRunner& runner, SourceResult& r) {
 // The sphere of the pad's radius at density rho [kg].
 double SphereMass(const ValidationSource& s, double rho_kg_m3) {
   const double radius = s.pad.profile.points.back().x_m;
-  return rho_kg_m3 * 4.0 / 3.0 * std::acos(-1.0) * radius * radius * radius;
+  return rho_kg_m3 * 4.0 / 3.0 * std::numbers::pi * radius * radius * radius;
 }
 
 // One trend point of one variant: (abscissa of the fit, simulated quantity).

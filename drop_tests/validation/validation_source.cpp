@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <filesystem>
 #include <set>
 
@@ -115,7 +116,7 @@ DepthWithUncertainty LawDepth(const ValidationSource& s, const MeasuredPoint& p)
                                          s.law->k_over_m_uncertainty_s2, p.impact_speed_m_s);
   const double radius_m = s.pad.file.sphere_radius_mm * 1e-3;
   const ShallowImpactParameters law{s.shallow_impact_law->prefactor, s.shallow_impact_law->friction_coefficient,
-                                    s.pad.mass_kg / (4.0 / 3.0 * std::acos(-1.0) * radius_m * radius_m * radius_m),
+                                    s.pad.mass_kg / (4.0 / 3.0 * std::numbers::pi * radius_m * radius_m * radius_m),
                                     s.soil.bulk_density_kg_m3, 2.0 * radius_m};
   return {ShallowImpactDepth(law, p.drop_height_m.value_or(0.0)), 0.0};
 }
