@@ -1,6 +1,7 @@
 // validate's outputs: validation.json, validation.md, the console summary and the plots.
 #include <cmath>
 #include <iomanip>
+#include <initializer_list>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -129,13 +130,22 @@ nlohmann::json SourceJson(const SourceResult& r) {
   return j;
 }
 
+// A results table's header row and rule: the fixed columns, then each variant's name (and an error
+// column beside it when `with_error`).
+void TableHeader(std::ostringstream& md, std::initializer_list<const char*> fixed, const SourceResult& r,
+                 bool with_error) {
+  md << "|";
+  for (const char* f : fixed) md << " " << f << " |";
+  for (const Variant& v : r.variants) md << " " << v.Name() << (with_error ? " | error |" : " |");
+  md << "\n|";
+  for (size_t i = 0; i < fixed.size(); ++i) md << "---|";
+  for (size_t k = 0; k < r.variants.size(); ++k) md << (with_error ? "---|---|" : "---|");
+  md << "\n";
+}
+
 void PointsTable(std::ostringstream& md, const SourceResult& r) {
   if (r.points.empty()) return;
-  md << "| point | v0 [m/s] | measured | how |";
-  for (const Variant& v : r.variants) md << " " << v.Name() << " | error |";
-  md << "\n|---|---|---|---|";
-  for (size_t k = 0; k < r.variants.size(); ++k) md << "---|---|";
-  md << "\n";
+  TableHeader(md, {"point", "v0 [m/s]", "measured", "how"}, r, true);
   for (const PointResult& p : r.points) {
     const double f = QuantityToReport(p.point->quantity);
     const bool fitted = r.source->zeta_route == ZetaRoute::kCalibratedOn && p.point->id == r.source->calibrated_on;
@@ -154,11 +164,7 @@ void PointsTable(std::ostringstream& md, const SourceResult& r) {
 
 void TrendsTable(std::ostringstream& md, const SourceResult& r) {
   if (r.trends.empty()) return;
-  md << "| trend | law | measured exponent | how |";
-  for (const Variant& v : r.variants) md << " " << v.Name() << " |";
-  md << "\n|---|---|---|---|";
-  for (size_t k = 0; k < r.variants.size(); ++k) md << "---|";
-  md << "\n";
+  TableHeader(md, {"trend", "law", "measured exponent", "how"}, r, false);
   for (const TrendResult& t : r.trends) {
     const MeasuredTrend& m = *t.trend;
     md << "| " << m.id << " | " << QuantityName(m.quantity) << " ~ " << VariableName(m.vary) << "^p over ["
@@ -180,11 +186,7 @@ std::string BearingCell(const BearingResult& b, size_t k) {
 
 void BearingsTable(std::ostringstream& md, const SourceResult& r) {
   if (r.bearings.empty()) return;
-  md << "| static bearing | depth [mm] | diameter [mm] | measured [N/cm^2] | how |";
-  for (const Variant& v : r.variants) md << " " << v.Name() << " |";
-  md << "\n|---|---|---|---|---|";
-  for (size_t k = 0; k < r.variants.size(); ++k) md << "---|";
-  md << "\n";
+  TableHeader(md, {"static bearing", "depth [mm]", "diameter [mm]", "measured [N/cm^2]", "how"}, r, false);
   const auto range = [](const Range& x, double f, int digits) {
     return x.low == x.high ? Fixed(x.low * f, digits) : Fixed(x.low * f, digits) + "-" + Fixed(x.high * f, digits);
   };
