@@ -1,3 +1,4 @@
+#include <chrono>
 #include <cmath>
 #include <csignal>
 #include <cstdlib>
@@ -7,12 +8,14 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <thread>
 
 #include "apps/command_help.h"
 #include "apps/commands.h"
 #include "apps/sweep_run_flags.h"
 #include "drop_tests/formats/dataset_csv.h"
 #include "drop_tests/formats/output_path.h"
+#include "drop_tests/stability/rare_event_shards.h"
 #include "drop_tests/stability/study.h"
 #include "drop_tests/stability/study_followups.h"
 #include "drop_tests/stability/study_outputs.h"
@@ -183,6 +186,26 @@ void PrintRareEventResult(const stability::Study& study, const stability::RareEv
   std::cout << "  the first level, " << r.samples << " plain Monte Carlo landings of the study's distribution:\n";
 }
 
+// A rare-event run's OUT, and a shard's own OUT/shard_I_of_N (rare_event_shards.h): every shard of
+// the run is given the same OUT.
+void OpenRareEventOutput(const StabilityArgs& args, const sweep::Shard& shard) {
+  const io::OutputTarget target{args.out, {args.study, args.run.model}};
+  if (shard.count == 1) {
+    io::OpenOutputDirectory(target, io::OutputKind::kSweep);
+    return;
+  }
+  try {
+    io::OpenOutputDirectory(target, io::OutputKind::kSweep);
+  } catch (const InputError&) {
+    // The shards of a job array start together: one may find OUT just created by another, its
+    // marker not yet in place (a directory not touchdown's). A moment later it is.
+    std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    io::OpenOutputDirectory(target, io::OutputKind::kSweep);
+  }
+  stability::RequireOneShardSplit(args.out, shard);
+  io::OpenOutputDirectory(stability::RareEventShardDir(args.out, shard), io::OutputKind::kSweep);
+}
+
 // `--method subset|importance`: the estimator's landings into OUT/<method>/, then the analysis
 // of its first level with the estimate in summary.json.
 void RunRareEventCommand(const StabilityArgs& args, const stability::Study& study, stability::StudyMethod method,
@@ -200,6 +223,13 @@ void RunRareEventCommand(const StabilityArgs& args, const stability::Study& stud
     std::cout << "stability " << study.plan.name << ": stopped by signal " << r.stop_signal
               << " after committing the landings in flight; run the same command again to resume\n";
     std::exit(128 + r.stop_signal);
+  }
+  if (options.shard.count > 1 && options.shard.index != 0) {
+    std::cout << "stability " << study.plan.name << " (" << stability::StudyMethodName(r.method) << "): shard "
+              << options.shard.Text() << " done, " << r.computed << " landings run now, " << r.already_done
+              << " already done, P(tip-over) = " << std::setprecision(4) << r.estimate.probability << "; shard 0/"
+              << options.shard.count << " writes " << args.out << "/summary.json\n";
+    return;
   }
   const stability::StudySummary summary = stability::WriteRareEventAnalysis(study, r, args.out);
   stability::Study first = study;
@@ -227,7 +257,9 @@ void AddStabilityCommand(CLI::App& app) {
                   "tip-over probability estimator: monte_carlo (the study's landings, default), subset (subset "
                   "simulation on the tip-over margin), importance (sampling around the subset run's design point); "
                   "with subset or importance, --samples is the landings per level / of the importance sample "
-                  "(default 1000, a multiple of 10)");
+                  "(default 1000, a multiple of 10), and the shards of a job array (--shard I/N) all take the "
+                  "same --out: each runs its share of every batch into OUT/shard_I_of_N/ and waits for the "
+                  "others' after it; shard 0 writes the outputs");
   AddSweepRunFlags(cmd, &args->run, "landings");
   cmd->callback([args, samples] {
     const stability::StudyMethod method = stability::ParseStudyMethod(args->method);
@@ -242,11 +274,7 @@ void AddStabilityCommand(CLI::App& app) {
     if (rare_event) {
       const int64_t per_level = given_samples.value_or(stability::kDefaultRareEventSamples);
       stability::RequireRareEventStudy(study, method, per_level);
-      if (options.shard.count > 1)
-        throw MakeInputError("", "--shard", "--method " + args->method + " chooses each batch of landings from the ones "
-                                            "before, so it cannot be split into independent shards: run it on one "
-                                            "process's threads, or on MPI (mpirun -np N touchdown stability ...)");
-      io::OpenOutputDirectory({args->out, {args->study, args->run.model}}, io::OutputKind::kSweep);
+      OpenRareEventOutput(*args, options.shard);
       const sweep::StopOnSignals stop_on_signals;
       options.stop = &sweep::StopOnSignals::flag();
       RunRareEventCommand(*args, study, method, per_level, options);

@@ -13,6 +13,7 @@
 
 #include "drop_tests/formats/dataset_csv.h"
 #include "drop_tests/formats/json_number.h"
+#include "drop_tests/stability/rare_event_shards.h"
 #include "drop_tests/stability/study_followups.h"
 #include "drop_tests/stability/study_outputs.h"
 #include "drop_tests/stability/study_summary.h"
@@ -52,14 +53,25 @@ std::vector<double> UniformsOf(const Eigen::VectorXd& u) {
   return out;
 }
 
+std::string MethodDir(const std::string& out_dir, StudyMethod method) {
+  return (std::filesystem::path(out_dir) / StudyMethodName(method)).string();
+}
+
 // The estimator's limit state: each batch of points runs as landings `next` onward of the
-// rare-event plan, through the sweep engine into `dir`, and comes back as their margins.
+// rare-event plan, through the sweep engine into the pass's directory, and comes back as their
+// margins. A shard (options.shard, N > 1) runs its share of each batch into its own directory and
+// meets the other shards after it (rare_event_shards.h).
 class LandingLimitState {
  public:
-  LandingLimitState(const Study& study, StudyMethod method, int64_t samples, std::string dir,
-                    const sweep::SweepRunOptions& options, RareEventStudyResult& result)
-      : study_(study), method_(method), samples_(samples), dir_(std::move(dir)), options_(options), result_(result) {
-    options_.shard = {};
+  LandingLimitState(const Study& study, StudyMethod method, int64_t samples, const std::string& out_dir,
+                    const sweep::SweepRunOptions& options, RareEventStudyResult& result, std::ostream* say)
+      : study_(study), method_(method), samples_(samples), options_(options), result_(result) {
+    if (sharded()) {
+      barrier_.emplace(out_dir, StudyMethodName(method), options.shard, options.stop, say);
+      dir_ = barrier_->OwnDir();
+    } else {
+      dir_ = MethodDir(out_dir, method);
+    }
   }
 
   void operator()(const std::vector<Eigen::VectorXd>& u, std::vector<double>& g) {
@@ -78,7 +90,14 @@ class LandingLimitState {
     result_.already_done += run.already_done;
     std::vector<DropRecord> batch;
     int stop_signal = run.stop_signal;
-    if (rank == 0 && stop_signal == 0) batch = StoredBatch(first, n);
+    if (rank == 0 && stop_signal == 0) {
+      batch = StoredBatch(first, n);
+      if (barrier_) {
+        std::optional<std::vector<DropRecord>> whole = barrier_->Gather(plan, first, n, batch);
+        if (whole) batch = std::move(*whole);
+        else stop_signal = options_.stop->load();
+      }
+    }
     if (mpi) {
       const std::string shared = sweep::BroadcastFromRankZero(
           rank != 0 ? std::string() : stop_signal != 0 ? "S" + std::to_string(stop_signal) : "R" + sweep::SerializeRecords(batch));
@@ -100,20 +119,24 @@ class LandingLimitState {
   }
 
   const std::vector<DropRecord>& records() const { return records_; }
+  bool sharded() const { return options_.shard.count > 1; }
 
-  // Landings first..first+n-1 as stored in dir_, in index order.
+  // This run's landings (its shard's) among first..first+n-1 as stored in dir_, in index order. A
+  // shard's come with their traces, if the plan stores any: shard 0 stores the whole run's at the end.
   std::vector<DropRecord> StoredBatch(int64_t first, int64_t n) const {
-    std::vector<DropRecord> batch(static_cast<size_t>(n));
-    std::vector<char> seen(static_cast<size_t>(n), 0);
+    const sweep::Shard& shard = options_.shard;
+    int64_t share = 0;
+    for (int64_t i = first; i < first + n; ++i) share += i % shard.count == shard.index;
     const sweep::ResultsDb db(sweep::ResultsDbPath(dir_), sweep::ResultsDb::Access::kReadOnly);
-    db.ForEach(
-        [&](const DropRecord& r) {
-          if (r.index >= first && r.index < first + n) batch[r.index - first] = r, seen[r.index - first] = 1;
-        },
-        /*with_traces=*/false);
-    for (int64_t k = 0; k < n; ++k)
-      if (!seen[k])  // the engine ran every listed landing: a missing one is a bug
-        throw std::logic_error("rare-event landing " + std::to_string(first + k) + " missing from " + dir_);
+    // The database holds the shard's landings only, so its next `share` from `first` are these.
+    const std::vector<DropRecord> batch = db.ReadPage(first, static_cast<size_t>(share), /*with_traces=*/sharded());
+    for (int64_t i = first, k = 0; i < first + n; ++i) {
+      if (i % shard.count != shard.index) continue;
+      // the engine ran every listed landing of the shard: a missing one is a bug
+      if (k >= static_cast<int64_t>(batch.size()) || batch[static_cast<size_t>(k)].index != i)
+        throw std::logic_error("rare-event landing " + std::to_string(i) + " missing from " + dir_);
+      ++k;
+    }
     return batch;
   }
   const std::vector<Eigen::VectorXd>& points() const { return points_; }
@@ -126,6 +149,7 @@ class LandingLimitState {
   std::string dir_;
   sweep::SweepRunOptions options_;
   RareEventStudyResult& result_;
+  std::optional<RareEventShardBarrier> barrier_;  // a shard's: where it meets the others
   std::vector<DropRecord> records_;  // in evaluation order: records_[k] is landing k
   std::vector<Eigen::VectorXd> points_;
   std::vector<double> values_;
@@ -145,8 +169,15 @@ std::vector<RareEventDesignPoint> DesignPoints(const std::vector<std::pair<Study
   return failing;
 }
 
-std::string MethodDir(const std::string& out_dir, StudyMethod method) {
-  return (std::filesystem::path(out_dir) / StudyMethodName(method)).string();
+// A sharded run's landings of a pass, all of them (every shard holds the whole run once it is
+// done), into DIR/<pass>/ as a single process stores them: so DIR is that of a single run, and
+// the same command without --shard resumes it, finding every landing done.
+void StoreWholeRun(const Study& study, StudyMethod pass, int64_t samples, const std::string& out_dir,
+                   const std::vector<DropRecord>& records) {
+  if (records.empty()) return;  // the pass did not run
+  sweep::SweepStore store = sweep::OpenSweepStore(RareEventPlan(study, pass, samples, 0, {}), MethodDir(out_dir, pass),
+                                                  sweep::Shard{});
+  store.db->Insert(records);  // one transaction; a landing stored already must be the same
 }
 
 nlohmann::json IntervalJson(const BinomialInterval& i) { return {i.low, i.high}; }
@@ -238,11 +269,9 @@ RareEventStudyResult RunRareEventStudy(const Study& study, StudyMethod method, i
   result.method = method;
   result.samples = samples;
   const int dimension = static_cast<int>(study.plan.random.size());
-  LandingLimitState state(study, StudyMethod::kSubset, samples, MethodDir(out_dir, StudyMethod::kSubset), options,
-                          result);
+  LandingLimitState state(study, StudyMethod::kSubset, samples, out_dir, options, result, say);
   const LimitStateBatch g = [&state](const std::vector<Eigen::VectorXd>& u, std::vector<double>& v) { state(u, v); };
-  LandingLimitState importance(study, StudyMethod::kImportance, samples, MethodDir(out_dir, StudyMethod::kImportance),
-                               options, result);
+  LandingLimitState importance(study, StudyMethod::kImportance, samples, out_dir, options, result, say);
   const LimitStateBatch gi = [&importance](const std::vector<Eigen::VectorXd>& u, std::vector<double>& v) {
     importance(u, v);
   };
@@ -268,6 +297,10 @@ RareEventStudyResult RunRareEventStudy(const Study& study, StudyMethod method, i
   } catch (const StoppedBySignal& stopped) {
     result.stop_signal = stopped.signal;
     return result;
+  }
+  if (state.sharded() && options.shard.index == 0 && sweep::RankFromMpirun() == 0) {
+    StoreWholeRun(study, StudyMethod::kSubset, samples, out_dir, state.records());
+    StoreWholeRun(study, StudyMethod::kImportance, samples, out_dir, importance.records());
   }
   result.landings = static_cast<int64_t>(state.records().size() + importance.records().size());
   result.design_points = DesignPoints({{StudyMethod::kSubset, &state}, {StudyMethod::kImportance, &importance}});

@@ -10,8 +10,9 @@
 //   derived from the study's (SweepPlan::given_uniforms; its `variant` names the method, seed and
 //   sizes) through the sweep engine, the k-th landing the estimator asks for under index k, into
 //   DIR/<method>/results.sqlite. The points follow from the seed and the landings' results alone,
-//   so results are bit-identical on any number of threads, and a killed run resumes: the landings
-//   already in the database are read back, not run again.
+//   so results are bit-identical on any number of threads, MPI ranks or shards, and a killed run
+//   resumes: the landings already in the database are read back, not run again. Shards run each
+//   batch together and meet after it through files (rare_event_shards.h).
 //
 //   subset:     subset simulation (Au & Beck), `samples` landings per level, p0 = 0.1.
 //   importance: the subset run as its first pass, its design point refined along its ray, then
@@ -87,10 +88,13 @@ struct RareEventStudyResult {
   int64_t computed = 0, already_done = 0;
 };
 
-// Runs the estimator on the study's landings (`options`' threads, progress and stop flag; a shard or
-// an index list in them is ignored). Both methods run the subset pass into DIR/subset/ (the same
+// Runs the estimator on the study's landings (`options`' threads, progress, stop flag and shard; an
+// index list in them is ignored). Both methods run the subset pass into DIR/subset/ (the same
 // landings, so one method's run resumes the other's); importance sampling then refines the design
-// point and runs its sample into DIR/importance/. `say`, when given, gets a line per pass.
+// point and runs its sample into DIR/importance/. Shard I/N of N > 1 runs its share of each batch
+// into DIR/shard_I_of_N/<pass>/ and waits for the others' after it; once done, shard 0 stores the
+// whole run's landings in DIR/<pass>/ as one process would. `say`, when given, gets a line per
+// pass (and a shard's long waits).
 RareEventStudyResult RunRareEventStudy(const Study& study, StudyMethod method, int64_t samples,
                                        const std::string& out_dir, const sweep::SweepRunOptions& options,
                                        std::ostream* say = nullptr);

@@ -4,6 +4,7 @@
 // the file and the field.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -269,6 +270,44 @@ TEST_F(StabilityCli, SubsetMethodWritesItsEstimateAndDesignPoints) {
   EXPECT_NE(r.out.find("(subset): " + std::to_string(e["landings_spent"].get<int>()) + " landings spent"),
             std::string::npos) << r.out;
   EXPECT_NE(r.out.find("design point "), std::string::npos) << r.out;
+}
+
+// `--method subset --shard I/N` as a job array runs it: two processes side by side with the same
+// --out meet after every batch; shard 0 writes the outputs, byte for byte the single process's, and
+// the whole run's landings in OUT/subset/. A shard of another split in OUT is refused, exit 2.
+TEST_F(StabilityCli, SubsetAsTwoShardProcessesEqualsTheSingleProcess) {
+  const std::string study = Write(
+      "study.yaml", "schema_version: 1\ntype: stability\nname: rare\nlander: {scenario: " + kCoarseScenario +
+                        "}\nfixed: {downhill_azimuth_deg: -90, yaw_relative_to_slope_deg: 90, horizontal_azimuth_deg: -90}\n"
+                        "random: {samples: 10, seed: 5, slope_deg: {uniform: [0, 20]},\n"
+                        "         horizontal_speed_m_s: {uniform: [0, 1.5]}}\n");
+  const std::vector<std::string> args = {"stability", study, "--method", "subset", "--samples", "10", "--progress", "none"};
+  std::vector<std::string> single = args;
+  single.insert(single.end(), {"--out", Path("one"), "--threads", "2"});
+  ASSERT_EQ(Run(single).status, 0);
+  std::vector<pid_t> shards;
+  for (const char* shard : {"0/2", "1/2"}) {
+    std::vector<std::string> a = args;
+    a.insert(a.end(), {"--out", Path("sharded"), "--threads", "1", "--shard", shard});
+    shards.push_back(touchdown::testing_process::StartTouchdown(a, "", Path(std::string("out_") + shard[0]),
+                                                                Path(std::string("err_") + shard[0])));
+  }
+  for (size_t k = 0; k < shards.size(); ++k) {
+    const int raw = touchdown::testing_process::WaitForStatus(shards[k]);
+    EXPECT_TRUE(WIFEXITED(raw) && WEXITSTATUS(raw) == 0) << k << Slurp(Path("err_" + std::to_string(k)));
+  }
+  for (const char* file : {"summary.json", "percentiles.csv"})
+    EXPECT_EQ(Slurp(Path("sharded") + "/" + file), Slurp(Path("one") + "/" + file)) << file;
+  EXPECT_EQ(Rows(Path("sharded") + "/subset/results.sqlite"), Rows(Path("one") + "/subset/results.sqlite"));
+  EXPECT_FALSE(Rows(Path("one") + "/subset/results.sqlite").empty());
+  EXPECT_NE(Slurp(Path("out_0")).find("landings spent"), std::string::npos) << Slurp(Path("out_0"));
+  EXPECT_NE(Slurp(Path("out_1")).find("shard 1/2 done"), std::string::npos) << Slurp(Path("out_1"));
+  std::vector<std::string> other_split = args;
+  other_split.insert(other_split.end(), {"--out", Path("sharded"), "--shard", "0/3"});
+  const StabilityRun refused = Run(other_split);
+  EXPECT_EQ(refused.status, 2);
+  EXPECT_EQ(std::count(refused.err.begin(), refused.err.end(), '\n'), 1) << refused.err;
+  EXPECT_NE(refused.err.find("--shard I/2"), std::string::npos) << refused.err;
 }
 
 // `mpirun -np 2 touchdown stability --method subset`: both ranks run the estimator, the landings
