@@ -764,6 +764,15 @@ std::vector<Case> Cases() {
                      DataDir() + "/validation/soils/surveyor3_mare_soil.yaml\n  description: d\n  zeta_route: derived\n"
                      "gravity_m_s2: 1.62\nstatic_bearing:\n  - {id: b, pressure_N_cm2: [6, 2], depth_mm: [20, 50], "
                      "diameter_mm: [200, 300], how: quoted, where: w}\n"}}});
+  // The shards of a rare-event run share one --out: one split N into another's DIR would wait forever.
+  c.push_back({"CLI flag", "stability --method subset --shard 0/3 into an --out holding shard_0_of_2",
+               "stability rare.yaml --method subset --samples 10 --shard 0/3 --progress none --out out_t4",
+               {{"rare.yaml", "schema_version: 1\ntype: stability\nlander: {scenario: lander_case_A}\n"
+                              "random: {samples: 10, seed: 1, slope_deg: {uniform: [0, 10]}}\n"}},
+               [](const fs::path& d) {
+                 fs::create_directories(d / "out_t4" / "shard_0_of_2");
+                 std::ofstream(d / "out_t4" / ".touchdown-output") << "touchdown output\nkind: sweep\n";
+               }});
   return c;
 }
 
