@@ -169,16 +169,28 @@ std::vector<RareEventDesignPoint> DesignPoints(const std::vector<std::pair<Study
   return failing;
 }
 
-// A sharded run's landings of a pass, all of them (every shard holds the whole run once it is
-// done), into DIR/<pass>/ as a single process stores them: so DIR is that of a single run, and
-// the same command without --shard resumes it, finding every landing done.
-void StoreWholeRun(const Study& study, StudyMethod pass, int64_t samples, const std::string& out_dir,
-                   const std::vector<DropRecord>& records) {
-  if (records.empty()) return;  // the pass did not run
-  sweep::SweepStore store = sweep::OpenSweepStore(RareEventPlan(study, pass, samples, 0, {}), MethodDir(out_dir, pass),
-                                                  sweep::Shard{});
-  store.db->Insert(records);  // one transaction; a landing stored already must be the same
-}
+// Where shard 0 of a sharded run stores the whole run's landings of each pass once it is done
+// (every shard then holds them all): DIR/<pass>/, as a single process stores them, so that the same
+// command without --shard finds every landing done. Opened before any landing runs: a DIR holding
+// another run there is refused at once, and no single process writes there meanwhile.
+class WholeRunStores {
+ public:
+  WholeRunStores(const Study& study, StudyMethod method, int64_t samples, const std::string& out_dir,
+                 const sweep::SweepRunOptions& options) {
+    if (options.shard.count == 1 || options.shard.index != 0 || sweep::RankFromMpirun() != 0) return;
+    for (StudyMethod pass : {StudyMethod::kSubset, StudyMethod::kImportance})
+      if (pass == StudyMethod::kSubset || method == StudyMethod::kImportance)
+        stores_.emplace(pass, sweep::OpenSweepStore(RareEventPlan(study, pass, samples, 0, {}), MethodDir(out_dir, pass),
+                                                    sweep::Shard{}));
+  }
+  void Store(StudyMethod pass, const std::vector<DropRecord>& records) {
+    const auto it = stores_.find(pass);
+    if (it != stores_.end() && !records.empty()) it->second.db->Insert(records);  // one transaction
+  }
+
+ private:
+  std::map<StudyMethod, sweep::SweepStore> stores_;
+};
 
 nlohmann::json IntervalJson(const BinomialInterval& i) { return {i.low, i.high}; }
 
@@ -269,6 +281,7 @@ RareEventStudyResult RunRareEventStudy(const Study& study, StudyMethod method, i
   result.method = method;
   result.samples = samples;
   const int dimension = static_cast<int>(study.plan.random.size());
+  WholeRunStores whole(study, method, samples, out_dir, options);
   LandingLimitState state(study, StudyMethod::kSubset, samples, out_dir, options, result, say);
   const LimitStateBatch g = [&state](const std::vector<Eigen::VectorXd>& u, std::vector<double>& v) { state(u, v); };
   LandingLimitState importance(study, StudyMethod::kImportance, samples, out_dir, options, result, say);
@@ -298,10 +311,8 @@ RareEventStudyResult RunRareEventStudy(const Study& study, StudyMethod method, i
     result.stop_signal = stopped.signal;
     return result;
   }
-  if (state.sharded() && options.shard.index == 0 && sweep::RankFromMpirun() == 0) {
-    StoreWholeRun(study, StudyMethod::kSubset, samples, out_dir, state.records());
-    StoreWholeRun(study, StudyMethod::kImportance, samples, out_dir, importance.records());
-  }
+  whole.Store(StudyMethod::kSubset, state.records());
+  whole.Store(StudyMethod::kImportance, importance.records());
   result.landings = static_cast<int64_t>(state.records().size() + importance.records().size());
   result.design_points = DesignPoints({{StudyMethod::kSubset, &state}, {StudyMethod::kImportance, &importance}});
   result.first_level_plan = RareEventPlan(study, StudyMethod::kSubset, samples, 0,

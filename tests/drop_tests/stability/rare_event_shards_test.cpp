@@ -107,7 +107,7 @@ TEST_F(RareEventShards, AShardStoppedWhileItWaitsResumes) {
   shard0.join();
   EXPECT_EQ(stopped.stop_signal, 15);
   EXPECT_EQ(stopped.computed, 5);  // its share of the first level's 10
-  EXPECT_FALSE(std::filesystem::exists(Path("dir") + "/subset"));  // no whole run stored
+  EXPECT_TRUE(Stored(Path("dir") + "/subset").empty());  // no whole run stored
   const auto [r0, r1] = RunTwoShards(study, Path("dir"));
   EXPECT_EQ(r0.already_done, 5);
   sweep::SweepRunOptions single = ShardOptions(0, 1);
@@ -147,6 +147,16 @@ TEST_F(RareEventShards, AnotherPlansBatchIsRefusedNamingTheFile) {
     EXPECT_NE(what.find(other), std::string::npos) << what;
     EXPECT_NE(what.find("another study or variant"), std::string::npos) << what;
   }
+}
+
+// DIR/subset/ holds a single run of another study: shard 0, which stores the whole run there at the
+// end, refuses it before running any landing.
+TEST_F(RareEventShards, Shard0RefusesADirHoldingAnotherRunBeforeRunningALanding) {
+  const Study study = LoadStudy(Write("study.yaml", kShardedStudy));
+  sweep::SweepPlan other = RareEventPlan(study, StudyMethod::kSubset, 20, 0, {});  // 20 a level: another variant
+  sweep::OpenSweepStore(other, Path("dir") + "/subset", sweep::Shard{});
+  EXPECT_THROW(RunRareEventStudy(study, StudyMethod::kSubset, 10, Path("dir"), ShardOptions(0, 2)), InputError);
+  EXPECT_FALSE(std::filesystem::exists(Path("dir") + "/shard_0_of_2/subset/results.sqlite"));
 }
 
 }  // namespace
