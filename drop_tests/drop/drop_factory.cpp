@@ -60,4 +60,19 @@ pad::EffectSoilResponse MakeRigResponse(const geom::AxisymmetricIntrusion& intru
   return pad::EffectSoilResponse(intrusion, in);
 }
 
+io::PadSpec FreeDropPad(const io::PadSpec& pad, FreeDropModel model, const std::string& context,
+                        const std::string& field) {
+  if (model == FreeDropModel::kReference) return pad;
+  if (!pad.is_axisymmetric())
+    throw MakeInputError(context, field,
+                         "pad '" + pad.name + "' is a mesh: the fast model re-meshes revolved pads only");
+  return io::PadWithAngularSegments(pad, kFastFreeDropRimSegments, geom::RimPolygon::kAreaPreserving);
+}
+
+pad::FreeDropOptions FreeDropOptionsFor(FreeDropModel model) {
+  pad::FreeDropOptions options;
+  if (model == FreeDropModel::kFast) options.integrator.rtol = kFastFreeDropRtol;
+  return options;
+}
+
 }  // namespace touchdown::drop

@@ -15,6 +15,7 @@
 #include "footpad_geom/axisymmetric_intrusion.h"
 #include "rft/soil.h"
 #include "lander/pad/effect_soil_response.h"
+#include "lander/pad/free_drop.h"
 #include "rft/law_kind.h"
 
 namespace touchdown::drop {
@@ -54,5 +55,25 @@ pad::EffectSoilResponse MakeBekkerRigResponse(const geom::AxisymmetricIntrusion&
 pad::EffectSoilResponse MakeRigResponse(const geom::AxisymmetricIntrusion& intrusion,
                                         const rft::SoilParameters& drop_soil, double gravity_m_s2,
                                         const rft::EffectTerms& terms);
+
+// A free drop's model. kReference: the pad as its file meshes it and pad::FreeDropOptions'
+// tolerances, what `touchdown drop --free` runs by default. kFast: the same drop at a coarser
+// resolution, for studies of many drops (`--fast`): a revolved pad re-meshed at
+// kFastFreeDropRimSegments rim segments with area-preserving rings (io::PadWithAngularSegments, the
+// rim a lander scenario's simulation.pad_rim selects) and rtol kFastFreeDropRtol. On the free-drop
+// benchmark drops (bench_free_drop, docs/lander_dynamics.md, "The free drops' fast model") it is
+// within 0.4 % in final depth and 0.05 deg in final tilt of the reference at rtol 1e-9, the studies'
+// contract (2 %, 0.1 deg), at 1.4-8 ms a drop; a spinning curved pad's final tilt, which converges
+// slowly in the mesh, is 0.12 deg off. A mesh pad has no fast model (its file fixes its mesh).
+enum class FreeDropModel { kReference, kFast };
+inline constexpr int kFastFreeDropRimSegments = 16;
+inline constexpr double kFastFreeDropRtol = 1e-5;
+
+// The pad a free drop of `model` runs on: `pad` itself (kReference), or re-meshed (kFast). A mesh
+// pad under kFast throws InputError naming `context` and `field`.
+io::PadSpec FreeDropPad(const io::PadSpec& pad, FreeDropModel model, const std::string& context,
+                        const std::string& field);
+// The free drop's integration options under `model`.
+pad::FreeDropOptions FreeDropOptionsFor(FreeDropModel model);
 
 }  // namespace touchdown::drop

@@ -30,6 +30,9 @@ void CheckFreeMotion(const DropRequest& r, const RequestNaming& n) {
     s << "must be between -90 and 90 deg, got " << r.tilt_deg;
     throw MakeInputError(n.context, n.Field("tilt-deg"), s.str());
   }
+  if (r.fast && !r.free)
+    throw MakeInputError(n.context, n.Field("fast"),
+                         "needs " + n.Field("free") + " (the fast model is the free pad's; the rig drop is one DOF)");
   const bool moves = r.tilt_deg != 0.0 || r.horizontal_speed_m_s != 0.0 ||
                      r.omega_rad_s != std::array<double, 3>{0.0, 0.0, 0.0};
   if (!r.free && moves)
@@ -58,6 +61,7 @@ void CheckSoilTakesLaw(const rft::SoilParameters& soil, const DropConditions& c,
     throw MakeInputError(n.context, c.law_3d ? n.Field("law") : n.Field("soil"), e.what());
   }
 }
+FreeDropModel ModelOf(const DropRequest& r) { return r.fast ? FreeDropModel::kFast : FreeDropModel::kReference; }
 }  // namespace
 
 DropConditions RequestConditions(const DropRequest& r, const RequestNaming& naming) {
@@ -79,8 +83,12 @@ DropConditions RequestConditions(const DropRequest& r, const RequestNaming& nami
   return c;
 }
 
+io::PadSpec RequestPad(const DropRequest& r, const RequestNaming& naming) {
+  return FreeDropPad(io::LoadPad(r.pad), ModelOf(r), naming.context, naming.Field("fast"));
+}
+
 PadDrop RunDropRequest(const DropRequest& r, DropConditions conditions, const RequestNaming& naming) {
-  const io::PadSpec pad = io::LoadPad(r.pad);
+  const io::PadSpec pad = RequestPad(r, naming);
   rft::SoilParameters soil = io::LoadSoil(r.soil);
   if (!r.model.empty()) {
     const model::ModelFile model = model::LoadModelFile(r.model);
@@ -89,7 +97,9 @@ PadDrop RunDropRequest(const DropRequest& r, DropConditions conditions, const Re
     conditions.effects_source = r.model;
   }
   CheckSoilTakesLaw(soil, conditions, naming);
-  return SimulateDrop(pad, soil, conditions, {});
+  DropRunOptions options;
+  options.free = FreeDropOptionsFor(ModelOf(r));
+  return SimulateDrop(pad, soil, conditions, options);
 }
 
 }  // namespace touchdown::drop

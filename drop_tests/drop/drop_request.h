@@ -35,6 +35,8 @@ struct DropRequest {
   std::string tilt_axis = "x";
   std::optional<std::string> law;  // li2013, agarwal2023 (free only) or bekker; none: the soil's own law
   std::array<double, 3> omega_rad_s{0.0, 0.0, 0.0};
+  // The free drop's fast model (FreeDropModel::kFast) instead of the reference; needs `free`.
+  bool fast = false;
 };
 
 // The request's conditions (without the model's effects, which RunDropRequest adds), validated:
@@ -44,6 +46,9 @@ DropConditions RequestConditions(const DropRequest& request, const RequestNaming
 // (RequestConditions). A soil that does not take the drop's law (li2013 on a Bekker soil without
 // zeta, a zeta for a soil running on the bekker law) throws InputError naming the field as
 // `naming` spells it; a failing integration throws integ::IntegrationFailure.
+// The pad the request's drop runs on (the fast model's re-meshed pad under `fast`): the drop's, and
+// the one its ParaView frames draw. InputError naming the field as `naming` spells it.
+io::PadSpec RequestPad(const DropRequest& request, const RequestNaming& naming);
 PadDrop RunDropRequest(const DropRequest& request, DropConditions conditions, const RequestNaming& naming);
 
 }  // namespace touchdown::drop

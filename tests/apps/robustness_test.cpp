@@ -211,6 +211,8 @@ void AddExitStatusAndInputCases(std::vector<Case>& c) {
   c.push_back({"CLI flag", "drop --speed 1e200", rig + "--speed 1e200"});
   c.push_back({"CLI flag", "drop --free --tilt-deg 1e308", rig + "--speed 1 --free --tilt-deg 1e308"});
   c.push_back({"CLI flag", "drop --free --omega 1e300,0,0", rig + "--speed 1 --free --omega 1e300,0,0"});
+  c.push_back({"CLI flag", "drop --fast without --free", rig + "--speed 1 --fast"});
+  c.push_back({"CLI flag", "drop --free --fast on a mesh pad", "drop --pad hex --soil fjs1_lp --speed 1 --free --fast"});
   c.push_back({"CLI flag", "force --depth 1e308", "force --pad flat --soil fjs1_lp --depth 1e308"});
   c.push_back({"CLI flag", "force --tilt-deg 1e308", "force --pad flat --soil fjs1_lp --depth 0.005 --tilt-deg 1e308"});
   c.push_back({"CLI flag", "force --omega 1e300,0,0", "force --pad flat --soil fjs1_lp --depth 0.005 --omega 1e300,0,0"});
