@@ -3,7 +3,6 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/commands.h"
-#include "drop_tests/drop/drop_factory.h"
 #include "drop_tests/drop/drop_request.h"
 #include "drop_tests/drop/drop_vtk.h"
 #include "drop_tests/catalog/catalog.h"
@@ -65,12 +64,7 @@ void AddDropCommand(CLI::App& app) {
     if (!args->trace.empty()) drop::WriteTraceCsv(result, trace);
     // The pad again with its 3D body (a PadDrop keeps the pad without it): the frames draw its surface.
     if (!args->vtk.empty()) drop::WriteDropVtk(result, drop::RequestPad(r, naming), vtk);
-    nlohmann::json summary = drop::SummaryJson(result);
-    // Which resolution ran, so a fast drop's numbers are never taken for the reference's.
-    if (r.fast)
-      summary["fast_model"] = {{"rim_segments", drop::kFastFreeDropRimSegments}, {"rim", "area_preserving"},
-                               {"rtol", drop::kFastFreeDropRtol}};
-    std::cout << summary.dump(2) << std::endl;
+    std::cout << drop::RequestSummaryJson(r, result).dump(2) << std::endl;
   });
 }
 

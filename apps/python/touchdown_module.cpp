@@ -196,7 +196,7 @@ py::tuple Drop(const drop::DropRequest& request, bool with_trace) {
     py::gil_scoped_release unlocked;
     result = drop::RunDropRequest(request, conditions, naming);
   }
-  const std::string summary = drop::SummaryJson(*result).dump(2);
+  const std::string summary = drop::RequestSummaryJson(request, *result).dump(2);
   return py::make_tuple(summary, with_trace ? py::object(TraceArrays(*result)) : py::object(py::none()));
 }
 
@@ -500,17 +500,18 @@ PYBIND11_MODULE(_touchdown, m) {
       "drop",
       [](std::string pad, std::string soil, double speed, std::optional<double> mass, double gravity,
          std::optional<double> zeta, std::string model, bool free, double tilt_deg, std::string tilt_axis,
-         double horizontal_speed, std::array<double, 3> omega, std::optional<std::string> law, bool trace) {
+         double horizontal_speed, std::array<double, 3> omega, std::optional<std::string> law, bool fast, bool trace) {
         drop::DropRequest r;
         r.pad = std::move(pad), r.soil = std::move(soil), r.model = std::move(model);
         r.speed_m_s = speed, r.mass_kg = mass, r.gravity_m_s2 = gravity, r.zeta_N_cm3 = zeta;
         r.free = free, r.tilt_deg = tilt_deg, r.tilt_axis = std::move(tilt_axis);
         r.horizontal_speed_m_s = horizontal_speed, r.omega_rad_s = omega, r.law = std::move(law);
+        r.fast = fast;
         return python::Drop(r, trace);
       },
       py::arg("pad"), py::arg("soil"), py::arg("speed"), py::arg("mass"), py::arg("gravity"), py::arg("zeta"),
       py::arg("model"), py::arg("free"), py::arg("tilt_deg"), py::arg("tilt_axis"), py::arg("horizontal_speed"),
-      py::arg("omega"), py::arg("law"), py::arg("trace"));
+      py::arg("omega"), py::arg("law"), py::arg("fast"), py::arg("trace"));
   m.def(
       "force",
       [](std::string pad, std::string soil, double depth, double tilt_deg, std::string tilt_axis,

@@ -102,4 +102,12 @@ PadDrop RunDropRequest(const DropRequest& r, DropConditions conditions, const Re
   return SimulateDrop(pad, soil, conditions, options);
 }
 
+nlohmann::json RequestSummaryJson(const DropRequest& r, const PadDrop& drop) {
+  nlohmann::json summary = SummaryJson(drop);
+  if (r.fast)
+    summary["fast_model"] = {
+        {"rim_segments", kFastFreeDropRimSegments}, {"rim", "area_preserving"}, {"rtol", kFastFreeDropRtol}};
+  return summary;
+}
+
 }  // namespace touchdown::drop

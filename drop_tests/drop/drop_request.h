@@ -8,6 +8,8 @@
 #include <string>
 #include <string_view>
 
+#include <nlohmann/json.hpp>
+
 #include "drop_tests/drop/pad_drop.h"
 #include "rft/gravity_constants.h"
 
@@ -50,5 +52,8 @@ DropConditions RequestConditions(const DropRequest& request, const RequestNaming
 // the one its ParaView frames draw. InputError naming the field as `naming` spells it.
 io::PadSpec RequestPad(const DropRequest& request, const RequestNaming& naming);
 PadDrop RunDropRequest(const DropRequest& request, DropConditions conditions, const RequestNaming& naming);
+// The summary both print: SummaryJson, and under `fast` the fast model's resolution
+// (`fast_model`: rim_segments, rim, rtol), so a fast drop's numbers are never taken for the reference's.
+nlohmann::json RequestSummaryJson(const DropRequest& request, const PadDrop& drop);
 
 }  // namespace touchdown::drop

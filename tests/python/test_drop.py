@@ -19,6 +19,9 @@ from conftest import data_file, run_touchdown, touchdown_json
     (["--pad", "flat", "--soil", "fjs1_lp", "--speed", "1.0", "--free", "--tilt-deg", "5", "--horizontal-speed",
       "0.2", "--omega", "0,0.5,0"],
      dict(pad="flat", soil="fjs1_lp", speed=1.0, free=True, tilt_deg=5.0, horizontal_speed=0.2, omega=(0, 0.5, 0))),
+    (["--pad", "curved", "--soil", "fjs1_lp", "--speed", "1.0", "--free", "--tilt-deg", "10", "--horizontal-speed",
+      "0.3", "--fast"],
+     dict(pad="curved", soil="fjs1_lp", speed=1.0, free=True, tilt_deg=10.0, horizontal_speed=0.3, fast=True)),
 ])
 def test_drop_equals_the_command_line_json(cli, kwargs):
     # Dicts compare their floats exactly: both sides are the same doubles (JSON numbers are

@@ -60,7 +60,7 @@ def data_dir():
 
 
 def drop(pad, soil, speed, *, mass=None, gravity=_touchdown.EARTH_GRAVITY_M_S2, zeta=None, model=None, free=False, tilt_deg=0.0,
-         tilt_axis="x", horizontal_speed=0.0, omega=(0.0, 0.0, 0.0), law=None, trace=False):
+         tilt_axis="x", horizontal_speed=0.0, omega=(0.0, 0.0, 0.0), law=None, fast=False, trace=False):
     """One drop, as `touchdown drop`: the summary dict the command prints as JSON.
 
     With trace=True, returns (summary, trace): trace maps the trace CSV's column names (t_s,
@@ -71,7 +71,7 @@ def drop(pad, soil, speed, *, mass=None, gravity=_touchdown.EARTH_GRAVITY_M_S2, 
         summary, columns = _touchdown.drop(
             pad=files["pad"], soil=files["soil"], speed=speed, mass=mass, gravity=gravity, zeta=zeta,
             model=_path_text(model), free=free, tilt_deg=tilt_deg, tilt_axis=tilt_axis,
-            horizontal_speed=horizontal_speed, omega=tuple(omega), law=law, trace=trace)
+            horizontal_speed=horizontal_speed, omega=tuple(omega), law=law, fast=fast, trace=trace)
     result = json.loads(summary)
     return (result, columns) if trace else result
 
