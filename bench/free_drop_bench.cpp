@@ -28,23 +28,28 @@ void ReportDrop(benchmark::State& state, const geom::PadBody& body, const touchd
 
 void RunFreeDrop(benchmark::State& state, const char* pad_name, double tilt_deg, double horizontal_m_s,
                  double spin_rad_s) {
-  touchdown::io::PadSpec pad = touchdown::io::LoadPad(pad_name);
-  if (getenv("TD_PROFILE_SEGMENTS") && pad.file.segments > 0) {
+  const touchdown::io::PadSpec pad = touchdown::io::LoadPad(pad_name);
+  const int segments = getenv("TD_SEGMENTS") ? atoi(getenv("TD_SEGMENTS")) : kRimSegments;
+  geom::PadBody body;
+  if (pad.is_axisymmetric() && (getenv("TD_PROFILE_SEGMENTS") || getenv("TD_AREA_RIM"))) {
+    // The pad file read again with the knobs' fields, as io::PadWithAngularSegments re-meshes a pad.
     YAML::Node node = YAML::Clone(touchdown::io::YamlFields::LoadFile(pad.source).node());
-    node["profile"]["segments"] = atoi(getenv("TD_PROFILE_SEGMENTS"));
-    pad = touchdown::io::LoadPad(touchdown::io::YamlFields(node, pad.source, ""));
-  }
-  if (getenv("TD_REMESH_EDGE_MM") && !pad.is_axisymmetric()) {
+    if (getenv("TD_PROFILE_SEGMENTS")) node["profile"]["segments"] = atoi(getenv("TD_PROFILE_SEGMENTS"));
+    node["angular_segments"] = segments;
+    body = touchdown::io::LoadPad(touchdown::io::YamlFields(node, pad.source, ""),
+                                  getenv("TD_AREA_RIM") ? geom::RimPolygon::kAreaPreserving : geom::RimPolygon::kInscribed)
+               .body;
+  } else if (pad.is_axisymmetric()) {
+    body = geom::RevolveProfileToBody(pad.profile, segments, pad.mass_kg,
+                                      Eigen::Vector3d(0.0, 0.0, pad.profile.thickness_m()));
+  } else if (getenv("TD_REMESH_EDGE_MM")) {
     YAML::Node node = YAML::Clone(touchdown::io::YamlFields::LoadFile(pad.source).node());
     node["mesh"]["remesh_edge_mm"] = atof(getenv("TD_REMESH_EDGE_MM"));
     node["mesh"]["file"] = pad.mesh_file;
-    pad = touchdown::io::LoadPad(touchdown::io::YamlFields(node, pad.source, ""));
+    body = touchdown::io::LoadPad(touchdown::io::YamlFields(node, pad.source, "")).body;
+  } else {
+    body = pad.body;  // a mesh pad as its file meshes it
   }
-  const int segments = getenv("TD_SEGMENTS") ? atoi(getenv("TD_SEGMENTS")) : kRimSegments;
-  const geom::PadBody body = !pad.is_axisymmetric() ? pad.body
-                             : getenv("TD_AREA_RIM") ? touchdown::io::PadWithAngularSegments(pad, segments, geom::RimPolygon::kAreaPreserving).body
-                             : geom::RevolveProfileToBody(pad.profile, segments, pad.mass_kg,
-                                                        Eigen::Vector3d(0.0, 0.0, pad.profile.thickness_m()));
   const rft::SoilParameters soil = touchdown::io::LoadSoil("fjs1_lp");
   const rft::SoilContactModel law = rft::MakeSoilContactModel(rft::LawKind::kLi2013, soil, rft::kEarthGravity_m_s2, {});
   const rft::Terrain bed = rft::UniformTerrain(soil.name, law);
