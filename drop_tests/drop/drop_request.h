@@ -44,13 +44,13 @@ struct DropRequest {
 // The request's conditions (without the model's effects, which RunDropRequest adds), validated:
 // InputError naming the field as `naming` spells it.
 DropConditions RequestConditions(const DropRequest& request, const RequestNaming& naming);
+// The pad the request's drop runs on (the fast model's re-meshed pad under `fast`): the drop's, and
+// the one its ParaView frames draw. InputError naming the field as `naming` spells it.
+io::PadSpec RequestPad(const DropRequest& request, const RequestNaming& naming);
 // Loads the pad, the soil and the model and runs the drop under `conditions`
 // (RequestConditions). A soil that does not take the drop's law (li2013 on a Bekker soil without
 // zeta, a zeta for a soil running on the bekker law) throws InputError naming the field as
 // `naming` spells it; a failing integration throws integ::IntegrationFailure.
-// The pad the request's drop runs on (the fast model's re-meshed pad under `fast`): the drop's, and
-// the one its ParaView frames draw. InputError naming the field as `naming` spells it.
-io::PadSpec RequestPad(const DropRequest& request, const RequestNaming& naming);
 PadDrop RunDropRequest(const DropRequest& request, DropConditions conditions, const RequestNaming& naming);
 // The summary both print: SummaryJson, and under `fast` the fast model's resolution
 // (`fast_model`: rim_segments, rim, rtol), so a fast drop's numbers are never taken for the reference's.
