@@ -5,7 +5,8 @@
 // TD_AREA_RIM=1 makes those rings area-preserving (geom::RimPolygon), TD_PROFILE_SEGMENTS a curved
 // profile's pieces and TD_REMESH_EDGE_MM a mesh pad's remeshing edge (the pad file's read again with
 // it); TD_MSBJ sets the most steps between Jacobians; TD_DQ_JACOBIAN=1 takes CVODE's difference-quotient Jacobian instead of the structured one.
-// BM_FreeDropFast*: the same drops under the shipped fast model (drop::FreeDropModel::kFast, as
+// BM_FreeDropHexTiltedSideways: the mesh pad hex as its file meshes it (4.6k triangles; the rim
+// knobs do not apply to it). BM_FreeDropFast*: the same drops under the shipped fast model (drop::FreeDropModel::kFast, as
 // `touchdown drop --free --fast` runs them; the knobs do not apply), target 10 ms a drop.
 #include <benchmark/benchmark.h>
 
