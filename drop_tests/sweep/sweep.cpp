@@ -107,6 +107,8 @@ SweepStore OpenSweepStore(const SweepPlan& plan, const std::string& out_dir, con
                                             {"source", fs::absolute(plan.source).string()},
                                             {"model", plan.model ? fs::absolute(plan.model->source).string() : ""}};
     m.insert(limits_meta.begin(), limits_meta.end());
+    // Only when fast (a reference database's meta stays as it was); plan_digest covers it too.
+    if (plan.free_drop_model == drop::FreeDropModel::kFast) m["free_drop_model"] = "fast";
     db.SetMeta(m);
     return store;
   }

@@ -101,11 +101,13 @@ DropRecord SimulatePadSweepDrop(const SweepModels& models, const SweepDropParams
   try {
     drop::DropRunOptions options;
     options.rig = plan.rig;
+    options.free = drop::FreeDropOptionsFor(plan.free_drop_model);
     options.free.sample_rate_hz = plan.rig.sample_rate_hz;
     options.free.integrator.max_wall_time_s = plan.rig.integrator.max_wall_time_s;
     options.free.integrator.max_rhs_evaluations = plan.rig.integrator.max_rhs_evaluations;
     options.intrusion = models.has_intrusion(p.pad) ? &models.intrusion(p.pad) : nullptr;
-    const drop::PadDrop drop = drop::SimulateDrop(plan.pads[p.pad], plan.soils[p.soil], c, options);
+    const io::PadSpec& pad = c.IsFree() ? models.free_pad(p.pad) : plan.pads[p.pad];
+    const drop::PadDrop drop = drop::SimulateDrop(pad, plan.soils[p.soil], c, options);
     const pad::RigDropResult& d = drop.result;
     r.ok = true;
     for (const MetricColumn& m : MetricColumns()) m.column->at(r) = d.*m.metric;
@@ -291,6 +293,9 @@ SweepModels::SweepModels(const SweepPlan& plan) : plan_(plan) {
     intrusions_.push_back(pad.is_axisymmetric()
                               ? drop::MakeRigIntrusion(pad.profile)
                               : nullptr);
+  if (plan.free_drop_model != drop::FreeDropModel::kReference)
+    for (const io::PadSpec& pad : plan.pads)
+      free_pads_.push_back(drop::FreeDropPad(pad, plan.free_drop_model, plan.source, "simulation.free_drop_model"));
   if (plan.model) effects_ = model::ModelEffectTerms(*plan.model);
   if (plan.lander) {
     // Every soil a landing's ground may name (the scenario's and the sweep's), read once, not per landing.

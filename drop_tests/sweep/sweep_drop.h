@@ -8,7 +8,8 @@
 //   rig drop     an axisymmetric pad, tilt = 0 and horizontal speed = 0: the paper's vertical rod (RunRigDrop)
 //   free drop    otherwise (a mesh pad always): the 6-DOF free pad (lander/pad/free_drop.h, RunFreeDrop), tilted
 //                about the world x axis, sliding along +x; its final tilt and horizontal travel
-//                are recorded (final_tilt_deg, horizontal_travel_m). Seconds per drop when tilted.
+//                are recorded (final_tilt_deg, horizontal_travel_m). Seconds per drop when tilted
+//                (milliseconds under the plan's fast free_drop_model, drop::FreeDropModel).
 //   lander drop  a lander sweep (SweepPlan::lander): the scenario with the drop's parameters,
 //                one whole lander run (seconds), recorded as its summary (pad penetrations,
 //                final roll and pitch, tipped over) and the soil under each pad at release
@@ -39,6 +40,9 @@ class SweepModels {
   // The pad's profile integral; axisymmetric pads only (has_intrusion).
   bool has_intrusion(int pad) const { return intrusions_[pad] != nullptr; }
   const geom::AxisymmetricIntrusion& intrusion(int pad) const { return *intrusions_[pad]; }
+  // The pad the sweep's free drops of pad `pad` run on under the plan's free_drop_model
+  // (drop::FreeDropPad): re-meshed once per sweep for the fast model, else the pad itself.
+  const io::PadSpec& free_pad(int pad) const { return free_pads_.empty() ? plan_.pads[pad] : free_pads_[pad]; }
   const rft::EffectTerms& effects() const { return effects_; }
   // A lander sweep: the scenario's default soil with the model applied (for drops that do not
   // set `soil`).
@@ -51,6 +55,7 @@ class SweepModels {
  private:
   const SweepPlan& plan_;
   std::vector<std::unique_ptr<geom::AxisymmetricIntrusion>> intrusions_;
+  std::vector<io::PadSpec> free_pads_;  // the fast model's re-meshed pads; empty for the reference
   rft::EffectTerms effects_;  // the model's, parsed once
   rft::SoilParameters lander_soil_;
   std::map<std::string, std::string> soil_names_;  // lander sweeps: soil reference -> name

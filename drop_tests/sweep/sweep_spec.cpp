@@ -420,6 +420,8 @@ std::string SweepPlan::DigestText() const {
   }
   if (model) s += model::ModelDigestText(*model);
   if (lander) s += "lander:" + lander->name + ":" + lander_digest + ";";
+  // Only when fast: a reference plan's digest stays, and neither resumes the other's database.
+  if (free_drop_model == drop::FreeDropModel::kFast) s += "free_drop_model=fast;";
   if (!variant.empty()) s += "variant:" + variant + ";";  // only when set: a loaded plan's digest stays
   return s;
 }
@@ -487,6 +489,20 @@ void ReadRunOptions(const io::YamlFields& f, SweepPlan& plan) {
                                          io::FormatNumber(n));
     plan.rig.integrator.max_rhs_evaluations = static_cast<long>(n);
   }
+}
+
+// The free drops' model (`simulation: {free_drop_model: reference | fast}`), checked against every
+// pad: the fast model re-meshes revolved pads and refuses a mesh pad, naming it.
+void ReadSimulation(const io::YamlFields& f, SweepPlan& plan) {
+  if (!f.Has("simulation")) return;
+  if (plan.lander) f.Fail("simulation", "a lander sweep runs the scenario's simulation options; remove it");
+  const io::YamlFields sim = f.Child("simulation");
+  sim.RequireOnly({"free_drop_model"});
+  const std::string model = sim.StringOr("free_drop_model", "reference");
+  if (model == "fast") plan.free_drop_model = drop::FreeDropModel::kFast;
+  else if (model != "reference") sim.Fail("free_drop_model", "must be 'reference' or 'fast', got '" + model + "'");
+  for (const io::PadSpec& pad : plan.pads)
+    drop::FreeDropPad(pad, plan.free_drop_model, sim.file(), sim.Path("free_drop_model"));
 }
 
 // Every parameter's key, the lander sweeps' after theirs: "pad, soil, ...; lander sweeps: roll_deg, ..."
@@ -658,7 +674,7 @@ SweepPlan LoadSweepPlan(const std::string& path, const std::string& model_overri
   f.RequireSchemaVersion(1);
   f.RequireOnly({"schema_version", "type", "name", "description", "model", "traces", "trace_max_samples",
                  "rest_duration_s", "max_drop_evaluations", "max_drop_wall_time_s", "fixed", "grid", "random", "lander",
-                 "study", "trade", "provenance"});
+                 "simulation", "study", "trade", "provenance"});
   // A stability study (docs/stability_studies.md) is a lander sweep whose `study` block says how
   // `touchdown stability` analyses its landings; the sweep itself ignores that block.
   const std::string type = f.String("type");
@@ -695,6 +711,7 @@ SweepPlan LoadSweepPlan(const std::string& path, const std::string& model_overri
     for (SweepParam required : {SweepParam::kPad, SweepParam::kSoil, SweepParam::kImpactSpeed})
       if (!claims.Seen(required))
         f.Fail(SweepParamKey(required), "not set in fixed, grid or random");
+  ReadSimulation(f, plan);
   // Counted in floating point first: the int64 product could overflow.
   double drops = static_cast<double>(plan.samples);
   for (const SweepAxis& a : plan.grid) drops *= static_cast<double>(a.values.size());
@@ -778,6 +795,9 @@ void WriteSweepPlan(const SweepPlan& plan, const std::string& path) {
       << YAML::Value << plan.rig.rest_duration_s;
   y << YAML::Key << "max_drop_evaluations" << YAML::Value << plan.rig.integrator.max_rhs_evaluations << YAML::Key
     << "max_drop_wall_time_s" << YAML::Value << plan.rig.integrator.max_wall_time_s;
+  if (plan.free_drop_model == drop::FreeDropModel::kFast)
+    y << YAML::Key << "simulation" << YAML::Value << YAML::Flow << YAML::BeginMap << YAML::Key << "free_drop_model"
+      << YAML::Value << "fast" << YAML::EndMap;
   bool any_fixed = false;
   for (const std::optional<double>& v : plan.fixed) any_fixed = any_fixed || v.has_value();
   if (any_fixed) {

@@ -17,6 +17,9 @@
 //   max_drop_wall_time_s: 0      # opt-in wall-clock limit per drop (0: none, the default); it
 //                                # depends on machine load, and the database says so
 //                                # (`sweep --max-drop-wall-time`)
+//   simulation: {free_drop_model: fast}  # reference (default) | fast: the free drops' model
+//                                # (drop::FreeDropModel, `touchdown drop --free --fast`); rig
+//                                # drops are unchanged; refused with a mesh pad or a lander
 //   fixed:  {soil: fjs1_lp, gravity_m_s2: 9.81}
 //   grid:   {pad: [flat, c4, curved], impact_speed_m_s: {from: 0.5, to: 2.0, count: 7}}
 //   random: {samples: 100, seed: 7, pad_mass_kg: {uniform: [1.2, 2.0]}, soil: {choice: [fjs1_lp, fjs1_cp]}}
@@ -95,6 +98,7 @@
 #include <vector>
 
 #include "drop_tests/catalog/catalog.h"
+#include "drop_tests/drop/drop_factory.h"
 #include "drop_tests/scenario/lander_scenario_types.h"
 #include "drop_tests/model/model_file.h"
 #include "lander/pad/rig_drop.h"
@@ -194,6 +198,8 @@ struct SweepPlan {
   uint64_t seed = 0;
   TraceStorage traces = TraceStorage::kDecimated;
   int trace_max_samples = 64;
+  // The free drops' model (`simulation: {free_drop_model}`); rig and lander drops keep theirs.
+  drop::FreeDropModel free_drop_model = drop::FreeDropModel::kReference;
   pad::RigDropOptions rig;  // rest_duration_s and integrator.max_rhs_evaluations/max_wall_time_s from the file
   // What a plan derived in memory from a loaded one changes (a stability study's re-checks at a
   // tighter tolerance, its joint-range variants: drop_tests/stability/study_followups.h), as text;
