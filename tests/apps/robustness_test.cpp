@@ -775,6 +775,14 @@ std::vector<Case> Cases() {
                  fs::create_directories(d / "out_t4" / "shard_0_of_2");
                  std::ofstream(d / "out_t4" / ".touchdown-output") << "touchdown output\nkind: sweep\n";
                }});
+  // The free drops' model of a sweep: a value it does not know, and the fast model on a mesh pad.
+  c.push_back({"sweep YAML", "unknown free_drop_model", "sweep fdm.yaml --threads 1 --progress lines --out out_fdm1",
+               {{"fdm.yaml", Sweep("simulation: {free_drop_model: quick}\nfixed: {pad: flat, soil: fjs1_lp, "
+                                   "impact_speed_m_s: 1}\n")}}});
+  c.push_back({"sweep YAML", "free_drop_model fast with a mesh pad",
+               "sweep fdm_mesh.yaml --threads 1 --progress lines --out out_fdm2",
+               {{"fdm_mesh.yaml", Sweep("simulation: {free_drop_model: fast}\nfixed: {pad: hex, soil: fjs1_lp, "
+                                        "impact_speed_m_s: 1}\n")}}});
   return c;
 }
 
