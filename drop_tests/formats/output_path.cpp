@@ -1,6 +1,7 @@
 #include "drop_tests/formats/output_path.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <csignal>
 #include <cstdio>
@@ -191,12 +192,31 @@ fs::path CheckDirectory(const OutputTarget& target, OutputKind kind, bool whole)
 
 bool ProcessAlive(long pid) { return ::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH; }
 
-// `.NAME.partial-PID` or `.NAME.old-PID` beside `p`: the pid, or -1 when `entry` is not one of those.
+// This machine's name as it appears in OutputOwnerTag (characters outside [A-Za-z0-9._-] as '_').
+const std::string& HostName() {
+  static const std::string name = [] {
+    char buffer[256] = {};
+    if (::gethostname(buffer, sizeof buffer - 1) != 0 || buffer[0] == '\0') return std::string("localhost");
+    std::string host(buffer);
+    for (char& c : host)
+      if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '_')) c = '_';
+    return host;
+  }();
+  return name;
+}
+
+// `.NAME.partial-PID@HOST` or `.NAME.old-PID@HOST` beside `p` (or, as earlier versions named them,
+// without `@HOST`): the pid, or -1 when `entry` is not one of those or another machine's. Only the
+// machine that made a leftover can tell whether its process is gone: on a disk that a cluster's
+// nodes share, a pid says nothing about another node's processes.
 long LeftoverPid(const std::string& entry, const std::string& name, const std::string& suffix) {
   const std::string prefix = "." + name + suffix;
   if (entry.size() <= prefix.size() || entry.compare(0, prefix.size(), prefix) != 0) return -1;
-  const std::string digits = entry.substr(prefix.size());
-  if (digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos) return -1;
+  const std::string tag = entry.substr(prefix.size());
+  const size_t at = tag.find('@');
+  const std::string digits = tag.substr(0, at);
+  if (digits.empty() || digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos) return -1;
+  if (at != std::string::npos && tag.substr(at + 1) != HostName()) return -1;
   return std::stol(digits);
 }
 
@@ -251,12 +271,12 @@ void CleanLeftovers(const fs::path& p) {
   }
 }
 
-// `.NAME<suffix>PID` beside `p`: hidden, and named so the next run knows whose it was.
+// `.NAME<suffix>PID@HOST` beside `p`: hidden, and named so the next run knows whose it was.
 fs::path Sibling(const fs::path& p, const char* suffix) {
   std::string name = ".";
   name += p.filename().string();
   name += suffix;
-  name += std::to_string(::getpid());
+  name += OutputOwnerTag();
   return p.parent_path() / name;
 }
 
@@ -456,6 +476,8 @@ void MoveIntoPlace(const fs::path& staging, const fs::path& directory, const std
 }
 
 }  // namespace
+
+std::string OutputOwnerTag() { return std::to_string(::getpid()) + "@" + HostName(); }
 
 void ReplaceDerivedOutputs(const std::string& directory, OutputKind kind, const std::string& complete,
                            const std::function<void(const std::string& staging)>& fill) {

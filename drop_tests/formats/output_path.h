@@ -9,10 +9,12 @@
 // current directory and its ancestors, a symbolic link, and any path equal to, inside or around one
 // of the command's inputs.
 //
-// A whole output is filled in a hidden staging directory beside the target (`.NAME.partial-PID`)
-// that takes the target's place in one atomic exchange (renameat2 RENAME_EXCHANGE); only then is the
-// old output removed. A kill at any moment leaves the old output or the new one, whole; the staging
-// directories of killed runs are removed by the next run that writes beside them.
+// A whole output is filled in a hidden staging directory beside the target
+// (`.NAME.partial-PID@HOST`) that takes the target's place in one atomic exchange (renameat2
+// RENAME_EXCHANGE); only then is the old output removed. A kill at any moment leaves the old output
+// or the new one, whole; the staging directories of killed runs are removed by the next run on the
+// same machine that writes beside them (another machine sharing the disk cannot tell whether their
+// process is gone, so it leaves them).
 #include <functional>
 #include <ostream>
 #include <string>
@@ -21,6 +23,9 @@
 namespace touchdown::io {
 
 inline constexpr const char* kOutputMarker = ".touchdown-output";
+
+// This process's tag in the names of its staging entries: `PID@HOST`.
+std::string OutputOwnerTag();
 
 // Which command wrote an output directory: one command never replaces another's output.
 // A trade study's tables go into its sweep's output, so they are of the sweep kind.

@@ -88,7 +88,7 @@ TEST_F(DatasetDir, RoundTripIsExactAndRewriteIsByteIdentical) {
   WriteDataset(back, (dir_ / "b").string());
   EXPECT_EQ(Slurp(dir_ / "a" / "drops.csv"), Slurp(dir_ / "b" / "drops.csv"));
   EXPECT_EQ(Slurp(dir_ / "a" / "traces" / "run_2.csv"), Slurp(dir_ / "b" / "traces" / "run_2.csv"));
-  EXPECT_FALSE(fs::exists(dir_.string() + "/a.partial-" + std::to_string(::getpid())));
+  EXPECT_FALSE(fs::exists(dir_.string() + "/.a.partial-" + touchdown::io::OutputOwnerTag()));
 }
 
 TEST_F(DatasetDir, DerivedFinalPenetrationAndPeakForceComeFromTheTrace) {

@@ -163,7 +163,7 @@ TEST_F(OutputPathTest, TrailingSlashSpacesQuotesAndNonAsciiNamesWork) {
     WriteOutputDirectory(path, OutputKind::kCampaign, Fill(path));
     EXPECT_EQ(Read(fs::path(path) / "summary.txt"), path);
   }
-  EXPECT_FALSE(fs::exists("new/.new.partial-" + std::to_string(::getpid())));
+  EXPECT_FALSE(fs::exists(".new.partial-" + OutputOwnerTag()));
   EXPECT_FALSE(fs::exists("PWNED"));
   EXPECT_EQ(Entries("."), 5);
 }
@@ -217,6 +217,27 @@ TEST_F(OutputPathTest, StagingLeftByAKilledRunIsRemovedByTheNextRun) {
   EXPECT_FALSE(fs::exists(".trace.csv.partial-" + dead));
   EXPECT_FALSE(fs::exists(".out.partial-2" + dead));
   EXPECT_TRUE(fs::exists(".out.partial-1" + dead));
+  EXPECT_EQ(Read("out/summary.txt"), "new");
+}
+
+// On a disk that a cluster's nodes share, a leftover of a process on another machine is that
+// machine's to judge: a pid that is dead here may be alive there (a shard writing now).
+TEST_F(OutputPathTest, StagingOfAProcessOnAnotherMachineIsLeftAlone) {
+  const std::string tag = OutputOwnerTag();
+  ASSERT_NE(tag.find('@'), std::string::npos) << tag;
+  EXPECT_EQ(tag.substr(0, tag.find('@')), std::to_string(::getpid()));
+  const std::string dead = std::to_string(DeadPid());
+  const std::string here = tag.substr(tag.find('@'));  // "@HOST"
+  fs::create_directory(".out.partial-" + dead + "@another-node");  // another node's shard, maybe alive
+  Write(".out.partial-" + dead + "@another-node/" + kOutputMarker, "touchdown output\nkind: lander\n");
+  fs::create_directory(".out.partial-" + dead + here);  // a killed run of this machine's
+  Write(".out.partial-" + dead + here + "/" + kOutputMarker, "touchdown output\nkind: lander\n");
+  Write(".trace.csv.partial-" + dead + "@another-node", "t_s\n");
+  WriteOutputDirectory("out", OutputKind::kLander, Fill("new"));
+  WriteOutputFile("trace.csv", [](std::ostream& out) { out << "t_s\n"; });
+  EXPECT_TRUE(fs::exists(".out.partial-" + dead + "@another-node"));
+  EXPECT_TRUE(fs::exists(".trace.csv.partial-" + dead + "@another-node"));
+  EXPECT_FALSE(fs::exists(".out.partial-" + dead + here));
   EXPECT_EQ(Read("out/summary.txt"), "new");
 }
 
