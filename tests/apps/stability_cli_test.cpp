@@ -56,6 +56,8 @@ class StabilityCli : public touchdown::testing_scratch::ScratchDirTest {
     sqlite3_close(db);
     return text;
   }
+  // study.yaml: ten random landings of the coarse lander across a slope (the rare-event tests' study).
+  std::string WriteRareStudy();
 };
 
 TEST_F(StabilityCli, SamplesOverrideIsRecordedAndARerunResumesToTheSameSummary) {
@@ -194,6 +196,13 @@ std::string FollowUpStudy(const std::string& scenario) {
 // The paper's lander with 16-segment pads for 1 s (data/studies/lab_coarse_lander_scenario.yaml).
 const std::string kCoarseScenario = std::string(TOUCHDOWN_SOURCE_DIR) + "/data/studies/lab_coarse_lander_scenario.yaml";
 
+std::string StabilityCli::WriteRareStudy() {
+  return Write("study.yaml", "schema_version: 1\ntype: stability\nname: rare\nlander: {scenario: " + kCoarseScenario +
+                                 "}\nfixed: {downhill_azimuth_deg: -90, yaw_relative_to_slope_deg: 90, horizontal_azimuth_deg: -90}\n"
+                                 "random: {samples: 10, seed: 5, slope_deg: {uniform: [0, 20]},\n"
+                                 "         horizontal_speed_m_s: {uniform: [0, 1.5]}}\n");
+}
+
 // The landing that tipped over ran again with the reference model; summary.json's counts match
 // the records; a rerun computes nothing and writes the same summary; so does a run on two threads.
 TEST_F(StabilityCli, FollowUpsRecheckTheTipOverAndRunTheJointRangeOnce) {
@@ -245,12 +254,7 @@ TEST_F(StabilityCli, FollowUpsRecheckTheTipOverAndRunTheJointRangeOnce) {
 // `--method subset` on a few random landings of the coarse lander: the estimate, the landings it
 // spent and its design points in summary.json and on stdout, its landings under subset/.
 TEST_F(StabilityCli, SubsetMethodWritesItsEstimateAndDesignPoints) {
-  const std::string study = Write(
-      "study.yaml", "schema_version: 1\ntype: stability\nname: rare\nlander: {scenario: " +
-                        kCoarseScenario +
-                        "}\nfixed: {downhill_azimuth_deg: -90, yaw_relative_to_slope_deg: 90, horizontal_azimuth_deg: -90}\n"
-                        "random: {samples: 10, seed: 5, slope_deg: {uniform: [0, 20]},\n"
-                        "         horizontal_speed_m_s: {uniform: [0, 1.5]}}\n");
+  const std::string study = WriteRareStudy();
   const StabilityRun r = Run({"stability", study, "--out", Path("subset"), "--method", "subset", "--samples", "10",
                               "--threads", "2", "--progress", "none"});
   ASSERT_EQ(r.status, 0) << r.err;
@@ -276,11 +280,7 @@ TEST_F(StabilityCli, SubsetMethodWritesItsEstimateAndDesignPoints) {
 // --out meet after every batch; shard 0 writes the outputs, byte for byte the single process's, and
 // the whole run's landings in OUT/subset/. A shard of another split in OUT is refused, exit 2.
 TEST_F(StabilityCli, SubsetAsTwoShardProcessesEqualsTheSingleProcess) {
-  const std::string study = Write(
-      "study.yaml", "schema_version: 1\ntype: stability\nname: rare\nlander: {scenario: " + kCoarseScenario +
-                        "}\nfixed: {downhill_azimuth_deg: -90, yaw_relative_to_slope_deg: 90, horizontal_azimuth_deg: -90}\n"
-                        "random: {samples: 10, seed: 5, slope_deg: {uniform: [0, 20]},\n"
-                        "         horizontal_speed_m_s: {uniform: [0, 1.5]}}\n");
+  const std::string study = WriteRareStudy();
   const std::vector<std::string> args = {"stability", study, "--method", "subset", "--samples", "10", "--progress", "none"};
   std::vector<std::string> single = args;
   single.insert(single.end(), {"--out", Path("one"), "--threads", "2"});
@@ -316,11 +316,7 @@ TEST_F(StabilityCli, SubsetOnMpiEqualsTheSingleProcess) {
 #ifndef TOUCHDOWN_TEST_WITH_MPI
   GTEST_SKIP() << "touchdown was built without MPI (TOUCHDOWN_WITH_MPI=OFF)";
 #endif
-  const std::string study = Write(
-      "study.yaml", "schema_version: 1\ntype: stability\nname: rare\nlander: {scenario: " + kCoarseScenario +
-                        "}\nfixed: {downhill_azimuth_deg: -90, yaw_relative_to_slope_deg: 90, horizontal_azimuth_deg: -90}\n"
-                        "random: {samples: 10, seed: 5, slope_deg: {uniform: [0, 20]},\n"
-                        "         horizontal_speed_m_s: {uniform: [0, 1.5]}}\n");
+  const std::string study = WriteRareStudy();
   const std::vector<std::string> args = {"stability", study, "--method", "subset", "--samples", "10", "--progress", "none"};
   std::vector<std::string> single = args;
   single.insert(single.end(), {"--out", Path("one"), "--threads", "2"});
