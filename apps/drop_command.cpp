@@ -61,10 +61,11 @@ void AddDropCommand(CLI::App& app) {
       if (!c.IsFree()) throw MakeInputError("command line", "--vtk", "needs --free (the rig's pad is not drawn)");
       drop::CheckDropVtkTarget(vtk);
     }
-    const drop::PadDrop result = drop::RunDropRequest(r, c, naming);
+    const io::PadSpec pad = drop::RequestPad(r, naming);
+    const drop::DropSetup setup = drop::ResolveDropRequest(r, pad, c, naming);
+    const drop::PadDrop result = drop::RunDrop(setup);
     if (!args->trace.empty()) drop::WriteTraceCsv(result, trace);
-    // The pad again with its 3D body (a PadDrop keeps the pad without it): the frames draw its surface.
-    if (!args->vtk.empty()) drop::WriteDropVtk(result, drop::RequestPad(r, naming), vtk);
+    if (!args->vtk.empty()) drop::WriteDropVtk(setup, result, vtk);
     std::cout << drop::RequestSummaryJson(r, result).dump(2) << std::endl;
   });
 }

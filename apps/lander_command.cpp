@@ -41,7 +41,7 @@ void AddLanderCommand(CLI::App& app) {
     io::CheckOutputDirectory(out, io::OutputKind::kLander);
     // A resolved copy is checked on the setup it builds; its landing runs on that setup, unless
     // --model changes the soils.
-    std::optional<scenario::LanderSetup> setup;
+    std::optional<lander::LanderSetup> setup;
     scenario::LanderScenario scenario = scenario::LoadLanderScenarioWithSetup(args->scenario, setup);
     if (!args->model.empty()) {
       scenario.model = model::LoadModelFile(args->model);

@@ -64,8 +64,9 @@ void RunFreeDrop(benchmark::State& state, const char* pad_name, double tilt_deg,
   if (getenv("TD_RTOL")) opt.integrator.rtol = atof(getenv("TD_RTOL"));
   if (getenv("TD_MSBJ")) opt.integrator.max_steps_between_jacobians = atol(getenv("TD_MSBJ"));
   if (getenv("TD_DQ_JACOBIAN")) opt.structured_jacobian = false;  // CVODE's difference quotients
+  const touchdown::pad::FreeDropSetup setup{&body, bed, in, opt};
   for (auto _ : state) {
-    r = touchdown::pad::RunFreeDrop(body, bed, in, opt);
+    r = touchdown::pad::RunFreeDrop(setup);
     benchmark::DoNotOptimize(r.final_penetration_m);
   }
   ReportDrop(state, body, r);
@@ -103,9 +104,10 @@ void RunFastDrop(benchmark::State& state, const char* pad_name, double tilt_deg,
   in.horizontal_speed_m_s = horizontal_m_s;
   in.omega_W = Eigen::Vector3d(0.0, 0.0, spin_rad_s);
   const touchdown::pad::FreeDropOptions opt = touchdown::drop::FreeDropOptionsFor(touchdown::drop::FreeDropModel::kFast);
+  const touchdown::pad::FreeDropSetup setup{&pad.body, bed, in, opt};
   touchdown::pad::FreeDropResult r;
   for (auto _ : state) {
-    r = touchdown::pad::RunFreeDrop(pad.body, bed, in, opt);
+    r = touchdown::pad::RunFreeDrop(setup);
     benchmark::DoNotOptimize(r.final_penetration_m);
   }
   ReportDrop(state, pad.body, r);

@@ -47,8 +47,8 @@ lander::LanderRunOptions Options() {
 }
 
 void RunLanding(benchmark::State& state, const test::PaperLander& setup_in, const char* name) {
-  const lander::LanderRunOptions options = Options();
   test::PaperLander setup = setup_in;
+  setup.options = Options();
   if (getenv("TD_PADI")) {
     auto body = std::make_shared<geom::PadBody>(*setup.model.legs[0].pad);
     body->inertia_com_B *= atof(getenv("TD_PADI"));
@@ -58,7 +58,7 @@ void RunLanding(benchmark::State& state, const test::PaperLander& setup_in, cons
     setup.model.soil_ramp = std::string(getenv("TD_SOIL_RAMP")) == "pad" ? lander::SoilRamp::kPad : lander::SoilRamp::kElement;
   lander::LanderRunResult last;
   for (auto _ : state) {
-    lander::LanderRunResult r = lander::SimulateLander(setup.model, setup.terrain, setup.initial, options);
+    lander::LanderRunResult r = lander::SimulateLander(setup);
     benchmark::DoNotOptimize(r.final_penetration_m);
     last = std::move(r);
   }
@@ -87,7 +87,7 @@ void RunLanding(benchmark::State& state, const test::PaperLander& setup_in, cons
   state.counters["energy_err"] = last.initial_energy_J - last.dissipated_J - last.final_kinetic_J - last.final_potential_J;
   state.counters["rest_time_s"] = last.rest_time_s.value_or(-1.0);
   state.counters["realtime_factor"] =
-      benchmark::Counter(options.duration_s * state.iterations(), benchmark::Counter::kIsRate);
+      benchmark::Counter(setup.options.duration_s * state.iterations(), benchmark::Counter::kIsRate);
 }
 
 // The paper's lander built in code from the catalogue's values (data/landers, data/soils,

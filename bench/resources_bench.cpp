@@ -26,6 +26,7 @@
 
 #include "drop_tests/catalog/catalog.h"
 #include "drop_tests/formats/dataset_csv.h"
+#include "drop_tests/drop/drop_setup.h"
 #include "drop_tests/drop/pad_drop.h"
 
 namespace {
@@ -125,7 +126,7 @@ fs::path BigTraceDataset(long rows) {
   fs::create_directories(dir / "traces");
   DropConditions c;
   c.impact_speed_m_s = 1.0;
-  const RigDropResult sim = RunPadDrop(LoadPad("flat"), LoadSoil("fjs1_lp"), c).result;
+  const RigDropResult sim = RunDrop(ResolveDrop(LoadPad("flat"), LoadSoil("fjs1_lp"), c)).result;
   std::ofstream(dir / "drops.csv")
       << "drop_id,pad,soil,atmosphere,impact_speed_m_s,pad_mass_kg,gravity_m_s2,trace\n"
       << "big,flat,fjs1_lp,vacuum,1,1.6,9.81,traces/big.csv\n";

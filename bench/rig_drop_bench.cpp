@@ -1,6 +1,7 @@
 // One axisymmetric single-footpad drop (target: under 1 ms per drop on one core).
 #include <benchmark/benchmark.h>
 
+#include "drop_tests/drop/drop_setup.h"
 #include "drop_tests/drop/pad_drop.h"
 
 namespace {
@@ -15,7 +16,7 @@ void RunDrop(benchmark::State& state, const char* pad_name, bool with_trace_rest
   touchdown::pad::RigDropOptions options;
   if (!with_trace_rest) options.rest_duration_s = 0.0;  // summary only, as in a sweep
   for (auto _ : state) {
-    touchdown::drop::PadDrop d = touchdown::drop::RunPadDrop(pad, soil, c, options);
+    touchdown::drop::PadDrop d = touchdown::drop::RunDrop(touchdown::drop::ResolveDrop(pad, soil, c, {.rig = options}));
     benchmark::DoNotOptimize(d.result.final_penetration_m);
   }
   state.SetItemsProcessed(state.iterations());
@@ -35,7 +36,7 @@ void RunDefaultVsQuasiStatic(benchmark::State& state, const char* pad_name, cons
   c.impact_speed_m_s = 1.0;
   long steps = 0, rhs = 0;
   for (auto _ : state) {
-    touchdown::drop::PadDrop d = touchdown::drop::RunPadDrop(pad, soil, c);
+    touchdown::drop::PadDrop d = touchdown::drop::RunDrop(touchdown::drop::ResolveDrop(pad, soil, c));
     steps = d.result.solver.steps;
     rhs = d.result.solver.rhs_evaluations;
     benchmark::DoNotOptimize(d.result.final_penetration_m);

@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <string>
 
+#include "drop_tests/drop/drop_setup.h"
 #include "drop_tests/drop/pad_drop.h"
 
 using namespace touchdown;
@@ -25,13 +26,13 @@ int main(int argc, char** argv) {
   soil.dynamic_term = false;
   touchdown::drop::DropConditions c;
   c.impact_speed_m_s = speed;
-  const double flat_depth = touchdown::drop::RunPadDrop(flat, soil, c).result.final_penetration_m;
+  const double flat_depth = touchdown::drop::RunDrop(touchdown::drop::ResolveDrop(flat, soil, c)).result.final_penetration_m;
   const double r = flat.profile.radius_m(), h = flat.profile.thickness_m();
 
   auto ratio = [&](double a1) {
     touchdown::io::PadSpec curved = flat;
     curved.profile = geom::MakeExponentialProfile(r, h, h / std::expm1(a1 * r), a1, 400);
-    return touchdown::drop::RunPadDrop(curved, soil, c).result.final_penetration_m / flat_depth;
+    return touchdown::drop::RunDrop(touchdown::drop::ResolveDrop(curved, soil, c)).result.final_penetration_m / flat_depth;
   };
   // The ratio falls as a1 grows (the pad flattens towards a rounded-edge flat pad).
   double lo = 1.0, hi = 2000.0;  // [1/m]

@@ -194,7 +194,8 @@ py::tuple Drop(const drop::DropRequest& request, bool with_trace) {
   std::optional<drop::PadDrop> result;
   {
     py::gil_scoped_release unlocked;
-    result = drop::RunDropRequest(request, conditions, naming);
+    const io::PadSpec pad = drop::RequestPad(request, naming);
+    result = drop::RunDrop(drop::ResolveDropRequest(request, pad, conditions, naming));
   }
   const std::string summary = drop::RequestSummaryJson(request, *result).dump(2);
   return py::make_tuple(summary, with_trace ? py::object(TraceArrays(*result)) : py::object(py::none()));

@@ -13,6 +13,7 @@
 #include "drop_tests/dataset/calibrate.h"
 #include "drop_tests/dataset/sensor_sampling.h"
 #include "drop_tests/formats/dataset_csv.h"
+#include "drop_tests/drop/drop_setup.h"
 #include "drop_tests/drop/pad_drop.h"
 #include "drop_tests/formats/plot_decimation.h"
 #include "drop_tests/formats/figure_style.h"
@@ -129,7 +130,7 @@ Dataset SimulateMeasuredDrops(const Dataset& measured, const std::optional<model
     row.horizontal_speed_m_s = ExtraOrZero(measured, m, "horizontal_speed_m_s");
     drop::DropConditions c = drop::DropConditionsFor(row, effects, effects_source, file + ": drop " + m.drop_id);
     c.free = !pads.at(pad_ref).is_axisymmetric();  // a mesh pad has no rig profile: the free pad, straight down
-    const drop::PadDrop d = drop::SimulateDrop(pads.at(pad_ref), soils.at(soil_ref), c, {});
+    const drop::PadDrop d = drop::RunDrop(drop::ResolveDrop(pads.at(pad_ref), soils.at(soil_ref), c));
     DatasetDrop s;
     s.drop_id = m.drop_id;
     s.pad = m.pad;

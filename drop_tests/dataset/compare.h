@@ -77,7 +77,7 @@ struct Comparison {
 };
 
 // Simulates every measured drop with its own pad, soil, atmosphere, speed, mass and gravity
-// (DropConditionsFor + SimulateDrop, drop_tests/drop/pad_drop.h) at 1 kHz, under `model` when given:
+// (DropConditionsFor + ResolveDrop + RunDrop, drop_tests/drop/drop_setup.h) at 1 kHz, under `model` when given:
 // its zeta per soil and its effects (gas_cushion on the drops in air only). A drop with a
 // non-zero tilt_deg or horizontal_speed_m_s column is a free 6-DOF drop (tilt about x, travel
 // along +x; the effects in their 3D form). Each simulated drop is recorded as the measured one was

@@ -5,6 +5,7 @@
 #include <iomanip>
 #include <map>
 #include <memory>
+#include <optional>
 #include <random>
 #include <sstream>
 
@@ -217,13 +218,13 @@ Dataset Synthesize(const SynthSpec& spec) {
     const pad::EffectSoilResponse response =
         bekker ? drop::MakeBekkerRigResponse(*intrusions[bekker_key], soil, terms)
                : drop::MakeRigResponse(*intrusions[sd.pad], soil, sd.gravity_m_s2, terms);
-    pad::RigDropOptions options;
-    options.rest_duration_s = spec.rest_duration_s + std::abs(terms.sensor_dt_s) + 2.0 / spec.sample_rate_hz;
+    pad::RigDropSetup setup{{mass}, &response, {sd.gravity_m_s2, sd.impact_speed_m_s}, {}};
+    std::optional<FloorStiffenedResponse> floored;
+    if (spec.floor) setup.terrain = &floored.emplace(response, *spec.floor);
+    setup.options.rest_duration_s = spec.rest_duration_s + std::abs(terms.sensor_dt_s) + 2.0 / spec.sample_rate_hz;
     pad::RigDropResult sim;
-    const pad::RigDropInput input{mass, sd.gravity_m_s2, sd.impact_speed_m_s};
     try {
-      if (spec.floor) sim = pad::RunRigDrop(input, FloorStiffenedResponse(response, *spec.floor), options);
-      else sim = pad::RunRigDrop(input, response, options);
+      sim = pad::RunRigDrop(setup);
     } catch (const integ::IntegrationFailure& e) {
       throw integ::IntegrationFailure(spec.source + ": " + group + ": the drop of pad " + sd.pad + " on soil " +
                                       sd.soil + " at " + io::FormatNumber(sd.impact_speed_m_s) + " m/s (trial " +

@@ -2,8 +2,8 @@
 // The one place a drop is made from a pad, a soil and the drop's conditions: the soil as the
 // drop sees it (zeta override, atmosphere), zeta scaled to the drop's gravity, the rig's 2D law,
 // the rig's soil response with the model's effect terms (the free pad's 3D contact model comes from
-// model::MakeContactModel, as every 3D contact's does). SimulateDrop (pad_drop.h) runs whole drops
-// from these; calibrate, diagnose and synth, which need the rig's pieces (a regressor, a fitted
+// model::MakeContactModel, as every 3D contact's does). ResolveDrop (drop_setup.h) resolves whole
+// drops from these; calibrate, diagnose and synth, which need the rig's pieces (a regressor, a fitted
 // zeta, a hidden effect around the response), take them from here too, so every drop of every
 // command is built alike.
 #include <memory>

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "drop_tests/drop/drop_factory.h"
+#include "drop_tests/drop/drop_setup.h"
 #include "drop_tests/model/model_file.h"
 #include "rft/input_error.h"
 #include "rft/stress_law_3d_factory.h"
@@ -87,8 +88,8 @@ io::PadSpec RequestPad(const DropRequest& r, const RequestNaming& naming) {
   return FreeDropPad(io::LoadPad(r.pad), ModelOf(r), naming.context, naming.Field("fast"));
 }
 
-PadDrop RunDropRequest(const DropRequest& r, DropConditions conditions, const RequestNaming& naming) {
-  const io::PadSpec pad = RequestPad(r, naming);
+DropSetup ResolveDropRequest(const DropRequest& r, const io::PadSpec& pad, DropConditions conditions,
+                             const RequestNaming& naming) {
   rft::SoilParameters soil = io::LoadSoil(r.soil);
   if (!r.model.empty()) {
     const model::ModelFile model = model::LoadModelFile(r.model);
@@ -99,7 +100,7 @@ PadDrop RunDropRequest(const DropRequest& r, DropConditions conditions, const Re
   CheckSoilTakesLaw(soil, conditions, naming);
   DropRunOptions options;
   options.free = FreeDropOptionsFor(ModelOf(r));
-  return SimulateDrop(pad, soil, conditions, options);
+  return ResolveDrop(pad, soil, conditions, options);
 }
 
 nlohmann::json RequestSummaryJson(const DropRequest& r, const PadDrop& drop) {

@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "drop_tests/drop/drop_setup.h"
 #include "drop_tests/drop/pad_drop.h"
 #include "rft/gravity_constants.h"
 
@@ -41,17 +42,18 @@ struct DropRequest {
   bool fast = false;
 };
 
-// The request's conditions (without the model's effects, which RunDropRequest adds), validated:
+// The request's conditions (without the model's effects, which ResolveDropRequest adds), validated:
 // InputError naming the field as `naming` spells it.
 DropConditions RequestConditions(const DropRequest& request, const RequestNaming& naming);
 // The pad the request's drop runs on (the fast model's re-meshed pad under `fast`): the drop's, and
 // the one its ParaView frames draw. InputError naming the field as `naming` spells it.
 io::PadSpec RequestPad(const DropRequest& request, const RequestNaming& naming);
-// Loads the pad, the soil and the model and runs the drop under `conditions`
-// (RequestConditions). A soil that does not take the drop's law (li2013 on a Bekker soil without
-// zeta, a zeta for a soil running on the bekker law) throws InputError naming the field as
-// `naming` spells it; a failing integration throws integ::IntegrationFailure.
-PadDrop RunDropRequest(const DropRequest& request, DropConditions conditions, const RequestNaming& naming);
+// Loads the soil and the model and resolves the drop of `pad` (RequestPad; the caller keeps it: a free
+// drop's setup points to its body) under `conditions` (RequestConditions); RunDrop runs it. A soil
+// that does not take the drop's law (li2013 on a Bekker soil without zeta, a zeta for a soil running
+// on the bekker law) throws InputError naming the field as `naming` spells it.
+DropSetup ResolveDropRequest(const DropRequest& request, const io::PadSpec& pad, DropConditions conditions,
+                             const RequestNaming& naming);
 // The summary both print: SummaryJson, and under `fast` the fast model's resolution
 // (`fast_model`: rim_segments, rim, rtol), so a fast drop's numbers are never taken for the reference's.
 nlohmann::json RequestSummaryJson(const DropRequest& request, const PadDrop& drop);

@@ -3,10 +3,9 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <stdexcept>
+#include <variant>
 
-#include "drop_tests/drop/drop_factory.h"
 #include "drop_tests/formats/vtk_pieces.h"
-#include "drop_tests/model/contact_model.h"
 #include "drop_tests/formats/vtk_series.h"
 #include "rft/bekker_law.h"
 #include "rft/element_stresses.h"
@@ -43,17 +42,14 @@ io::CraterSurface Crater(const pad::FreeDropResult& r, const io::PadSurfaceMesh&
 
 void CheckDropVtkTarget(const io::OutputTarget& dir) { io::CheckOutputDirectory(dir, io::OutputKind::kDropVtk); }
 
-void WriteDropVtk(const PadDrop& drop, const io::PadSpec& pad, const io::OutputTarget& dir) {
-  if (!drop.free) throw std::logic_error("WriteDropVtk: not a free drop");
+void WriteDropVtk(const DropSetup& setup, const PadDrop& drop, const io::OutputTarget& dir) {
+  const auto* free = std::get_if<pad::FreeDropSetup>(&setup.run);
+  if (!free || !drop.free) throw std::logic_error("WriteDropVtk: not a free drop");
   const pad::FreeDropResult& r = *drop.free;
-  const DropConditions& c = drop.conditions;
-  const rft::SoilParameters drop_soil = DropSoil(drop.soil, c.zeta_N_m3, c.atmosphere);
-  // As the drop itself ran (pad_drop.cpp).
-  const rft::SoilContactModel contact =
-      model::MakeContactModel({.law = c.law_3d, .soil = drop_soil, .gravity_m_s2 = c.gravity_m_s2,
-                               .effects = c.effects, .effects_source = c.effects_source, .pad_surface = &pad.body.surface});
-  const io::PadSurfaceMesh mesh = io::MakePadSurfaceMesh(pad.body.surface);
-  const rft::PlaneGround ground;  // the free drop's bed (rft::UniformTerrain's surface)
+  const geom::PadBody& body = *free->body;
+  const rft::SoilContactModel& contact = free->terrain.soils.front().contact;  // a uniform bed
+  const rft::GroundSurface& ground = *free->terrain.surface;
+  const io::PadSurfaceMesh mesh = io::MakePadSurfaceMesh(body.surface);
   io::WriteOutputDirectory(dir, io::OutputKind::kDropVtk, [&](const std::string& staging) {
     io::VtkSeries series(staging, "drop");
     rft::ElementStresses stresses;
@@ -62,7 +58,7 @@ void WriteDropVtk(const PadDrop& drop, const io::PadSpec& pad, const io::OutputT
       const Eigen::Matrix3d R_WB = Eigen::Quaterniond(s.q_WB[0], s.q_WB[1], s.q_WB[2], s.q_WB[3]).toRotationMatrix();
       rft::PadKinematics k{R_WB, s.p_WB, s.v_WB_W, s.w_W};
       if (contact.has_janosi_shear()) k.shear_mobilisation = contact.ShearMobilisation(s.shear_displacement_m);
-      rft::ComputeElementStresses(pad.body.surface, k, ground, *contact.law, contact.pad_terms.depth, &stresses);
+      rft::ComputeElementStresses(body.surface, k, ground, *contact.law, contact.pad_terms.depth, &stresses);
       series.AddFrame(s.t_s, "pad", {io::PadSurfacePiece(mesh, R_WB, s.p_WB, stresses)});
       crater.Press(mesh, R_WB, s.p_WB);
       series.AddFrame(s.t_s, "crater", {crater.Piece()});

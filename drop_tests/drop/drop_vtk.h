@@ -4,6 +4,7 @@
 // coordinates with its per-element soil stresses and forces (pad_NNNNNN.vtp), the soil's surface
 // pressed in by the pad so far (crater_NNNNNN.vtp, io::CraterSurface) and the soil's surface
 // (soil.vtp).
+#include "drop_tests/drop/drop_setup.h"
 #include "drop_tests/drop/pad_drop.h"
 #include "drop_tests/formats/output_path.h"
 
@@ -13,9 +14,9 @@ namespace touchdown::drop {
 // output: called before the drop runs, so a bad path costs nothing.
 void CheckDropVtkTarget(const io::OutputTarget& dir);
 
-// Writes the series of `drop` (a free drop of `pad`, which carries its 3D body) into `dir`, whole or
-// not at all. The stresses are computed here, at the trace's samples, with the contact model the drop
-// ran with (model::MakeContactModel on the drop's soil and conditions, as SimulateDrop builds it).
-void WriteDropVtk(const PadDrop& drop, const io::PadSpec& pad, const io::OutputTarget& dir);
+// Writes the series of `drop` (the free drop RunDrop ran on `setup`) into `dir`, whole or not at
+// all. The stresses are computed here, at the trace's samples, on the setup's pad body, terrain and
+// contact model: those the drop ran on.
+void WriteDropVtk(const DropSetup& setup, const PadDrop& drop, const io::OutputTarget& dir);
 
 }  // namespace touchdown::drop

@@ -9,46 +9,13 @@
 #include "drop_tests/drop/drop_columns.h"
 #include "drop_tests/drop/drop_factory.h"
 #include "drop_tests/drop/free_drop_output.h"
-#include "drop_tests/model/contact_model.h"
-#include "footpad_geom/axisymmetric_intrusion.h"
-#include "lander/pad/effect_soil_response.h"
-#include "rft/bekker_law.h"
-#include "rft/ground.h"
 #include "rft/input_error.h"
 #include "rft/physical_limits.h"
 #include "rft/units.h"
 
 namespace touchdown::drop {
 
-namespace {
 using units::kDeg;
-
-// A free pad of another mass keeps its shape and uniform density: inertia scales with the mass.
-geom::PadBody WithMass(const geom::PadBody& body, double mass_kg) {
-  geom::PadBody out = body;
-  out.inertia_com_B *= mass_kg / body.mass_kg;
-  out.mass_kg = mass_kg;
-  return out;
-}
-
-// A free drop's result in the rig's terms (summary and trace), for sweeps, datasets and plots.
-pad::RigDropResult AsRigResult(const pad::FreeDropResult& f) {
-  pad::RigDropResult r;
-  r.final_penetration_m = f.final_penetration_m;
-  r.peak_force_N = f.peak_force_N;
-  r.time_to_rest_s = f.time_to_rest_s;
-  r.max_deceleration_m_s2 = f.max_deceleration_m_s2;
-  r.impact_energy_J = f.impact_energy_J;
-  r.gravity_work_J = f.gravity_work_J;
-  r.dissipated_energy_J = f.dissipated_energy_J;
-  r.mean_conversion_rate_W = f.time_to_rest_s > 0.0 ? f.impact_energy_J / f.time_to_rest_s : 0.0;
-  r.rest_creep_m = 0.0;  // the free drop ends at rest: no rest phase is simulated
-  r.trace.reserve(f.trace.size());
-  for (const pad::FreeDropSample& s : f.trace) r.trace.push_back({s.t_s, s.penetration_m, s.velocity_m_s, s.force_N});
-  r.solver = f.solver;
-  return r;
-}
-}  // namespace
 
 void ValidateConditions(const DropConditions& c, const std::string& context) {
   auto bad = [&](const std::string& field, double v, const std::string& rule) {
@@ -86,73 +53,6 @@ DropConditions DropConditionsFor(const DropRow& row, const rft::EffectTerms& eff
   c.effects_source = effects_source;
   ValidateConditions(c, context);
   return c;
-}
-
-PadDrop SimulateDrop(const io::PadSpec& pad, const rft::SoilParameters& soil, const DropConditions& conditions,
-                     const DropRunOptions& options) {
-  ValidateConditions(conditions, pad.name + " on " + soil.name);
-  const bool free = conditions.IsFree();
-  // The rig drop integrates the exact axisymmetric profile; a mesh pad needs the 3D contact
-  // wrench (rft/contact_wrench.h) and the free-pad dynamics.
-  if (!free && !pad.is_axisymmetric())
-    throw MakeInputError(pad.source, "", "rig drop of mesh pads needs the 3D contact; use --free");
-  // The record keeps the pad's description but not its 3D body (megabytes for a fine mesh,
-  // unused by the rig drop): copying it per drop would cost more than the drop itself.
-  io::PadSpec described{pad.name, pad.source, pad.kind, pad.profile, pad.mass_kg, {}, pad.mesh_file, pad.file};
-  const rft::SoilParameters drop_soil = DropSoil(soil, conditions.zeta_N_m3, conditions.atmosphere);
-  PadDrop drop{std::move(described), DropSoil(soil, std::nullopt, conditions.atmosphere), conditions,
-               conditions.mass_kg.value_or(pad.mass_kg), ZetaAtGravity(drop_soil, conditions.gravity_m_s2), {}, {},
-               rft::LawKind::kLi2013, {}};
-
-  if (free) {
-    const rft::SoilContactModel law =
-        model::MakeContactModel({.law = conditions.law_3d, .soil = drop_soil, .gravity_m_s2 = conditions.gravity_m_s2,
-                                 .effects = conditions.effects, .effects_source = conditions.effects_source,
-                                 .pad_surface = &pad.body.surface});
-    drop.law_3d = law.law->kind();
-    drop.contact_model = law.name();
-    pad::FreeDropInput in;
-    in.impact_speed_m_s = conditions.impact_speed_m_s;
-    in.horizontal_speed_m_s = conditions.horizontal_speed_m_s;
-    in.tilt_rad = conditions.tilt_rad;
-    in.tilt_axis = conditions.tilt_axis;
-    in.omega_W = conditions.omega_W;
-    in.gravity_m_s2 = conditions.gravity_m_s2;
-    const geom::PadBody& body = pad.body;
-    const rft::Terrain bed = rft::UniformTerrain(soil.name, law);
-    const pad::FreeDropResult r = drop.mass_kg == body.mass_kg
-                                 ? RunFreeDrop(body, bed, in, options.free)
-                                 : RunFreeDrop(WithMass(body, drop.mass_kg), bed, in, options.free);
-    drop.result = AsRigResult(r);
-    drop.free = r;
-    return drop;
-  }
-
-  // A Bekker drop has its own integral (a caller's cached one is Li 2013's).
-  const bool bekker = RunsOnBekker(drop_soil, conditions.law_3d);
-  std::unique_ptr<geom::AxisymmetricIntrusion> own;
-  if (bekker) own = MakeBekkerRigIntrusion(pad.profile);
-  else if (!options.intrusion) own = MakeRigIntrusion(pad.profile);
-  const geom::AxisymmetricIntrusion& intrusion = own ? *own : *options.intrusion;
-  // With no effect terms this is exactly the quasi-static RFT force F_z(d; zeta) (or Bekker's).
-  std::optional<pad::EffectSoilResponse> response;
-  try {
-    if (bekker) response.emplace(MakeBekkerRigResponse(intrusion, drop_soil, conditions.effects));
-    else response.emplace(MakeRigResponse(intrusion, drop_soil, conditions.gravity_m_s2, conditions.effects));
-  } catch (const InputError& e) {
-    throw MakeInputError(soil.name, "", e.what());
-  }
-  drop.result =
-      pad::RunRigDrop({drop.mass_kg, conditions.gravity_m_s2, conditions.impact_speed_m_s}, *response, options.rig);
-  if (bekker) drop.law_3d = rft::LawKind::kBekker;
-  return drop;
-}
-
-PadDrop RunPadDrop(const io::PadSpec& pad, const rft::SoilParameters& soil, const DropConditions& conditions,
-                   const pad::RigDropOptions& options) {
-  DropRunOptions o;
-  o.rig = options;
-  return SimulateDrop(pad, soil, conditions, o);
 }
 
 nlohmann::json SummaryJson(const PadDrop& d) {

@@ -1,9 +1,9 @@
 #pragma once
 // One drop of a catalogued pad on a catalogued soil: the paper's rig (the pad on a vertical rod,
 // lander/pad/rig_drop.h) or, when the pad is tilted, slides or spins, the free 6-DOF pad
-// (lander/pad/free_drop.h) under the 3D contact. `drop`, `sweep` and `compare` all build their
-// drops here: DropConditionsFor turns a dataset row or a sweep point into DropConditions, and
-// SimulateDrop runs them, built from the drop factory's pieces (drop_factory.h).
+// (lander/pad/free_drop.h) under the 3D contact: its conditions, its record and its outputs.
+// DropConditionsFor turns a dataset row or a sweep point into DropConditions; ResolveDrop
+// (drop_setup.h) turns them into what the rig or the free pad runs on, and RunDrop runs it.
 #include <Eigen/Core>
 #include <optional>
 #include <ostream>
@@ -17,10 +17,6 @@
 #include "drop_tests/formats/output_path.h"
 #include "lander/pad/rig_drop.h"
 #include "rft/gravity_constants.h"
-
-namespace touchdown::geom {
-class AxisymmetricIntrusion;
-}
 
 namespace touchdown::drop {
 
@@ -83,22 +79,6 @@ struct PadDrop {
 void ValidateConditions(const DropConditions& c, const std::string& context);
 // zeta at the drop's gravity [N/m^3], as the drop uses it (before any gas cushion).
 double EffectiveZeta(const rft::SoilParameters& soil, const DropConditions& c);
-
-struct DropRunOptions {
-  pad::RigDropOptions rig;
-  pad::FreeDropOptions free;
-  // The pad's profile integral, built once by callers running many drops of one pad (sweeps);
-  // null: built here. Must be the pad's own (MakeRigIntrusion, drop_factory.h).
-  const geom::AxisymmetricIntrusion* intrusion = nullptr;
-};
-
-// Runs the drop: the rig for level, vertical drops, else the free pad (IsFree). Effects: all, on
-// the rig in their rig form, on the free pad in their 3D form (model::MakeContactModel). A failing
-// integration throws integ::IntegrationFailure.
-PadDrop SimulateDrop(const io::PadSpec& pad, const rft::SoilParameters& soil, const DropConditions& conditions,
-                     const DropRunOptions& options);
-PadDrop RunPadDrop(const io::PadSpec& pad, const rft::SoilParameters& soil, const DropConditions& conditions,
-                   const pad::RigDropOptions& options = {});
 
 // The JSON summary `touchdown drop` prints (SI values, unit-suffixed keys); a free drop adds
 // touchdown_tilt_deg, final_tilt_deg, horizontal_travel_m. With active effects: `effects` (those

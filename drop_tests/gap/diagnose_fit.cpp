@@ -115,7 +115,7 @@ std::optional<dataset::DatasetTrace> Recorded(const FitProblem& p, const FitDrop
     const pad::EffectSoilResponse response =
         p.bekker_base ? drop::MakeBekkerRigResponse(*p.bekker_intrusions[d.pad], soil, terms)
                       : drop::MakeRigResponse(*p.intrusions[d.pad], soil, d.gravity_m_s2, terms);
-    const pad::RigDropResult r = pad::RunRigDrop({d.mass_kg, d.gravity_m_s2, d.speed_m_s}, response, p.rig);
+    const pad::RigDropResult r = pad::RunRigDrop({{d.mass_kg}, &response, {d.gravity_m_s2, d.speed_m_s}, p.rig});
     return dataset::RecordedTrace(r, d.gravity_m_s2, terms, d.trace->t_s, p.sensor_sampling, d.sample_period_s);
   } catch (const integ::IntegrationFailure&) {
     return std::nullopt;

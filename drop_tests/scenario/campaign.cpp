@@ -9,6 +9,7 @@
 #include <set>
 #include <sstream>
 
+#include "drop_tests/drop/drop_setup.h"
 #include "drop_tests/formats/output_path.h"
 #include "drop_tests/scenario/campaign_plots.h"
 #include "drop_tests/formats/field_table.h"
@@ -328,7 +329,7 @@ void WriteResolvedScenario(const CampaignScenario& s, const std::string& path, c
 
 CampaignResult RunCampaign(const CampaignScenario& scenario) {
   CampaignResult result{scenario, {}};
-  for (const CampaignCase& c : scenario.cases) result.drops.push_back(drop::RunPadDrop(*c.pad, c.soil, c.conditions));
+  for (const CampaignCase& c : scenario.cases) result.drops.push_back(drop::RunDrop(drop::ResolveDrop(*c.pad, c.soil, c.conditions)));
   return result;
 }
 
@@ -407,7 +408,7 @@ CampaignResult RunCampaignToDirectory(const CampaignScenario& scenario, const io
     r.drops.clear();
     r.drops.reserve(scenario.cases.size());
     for (const CampaignCase& c : scenario.cases) {
-      drop::PadDrop d = drop::RunPadDrop(*c.pad, c.soil, c.conditions);
+      drop::PadDrop d = drop::RunDrop(drop::ResolveDrop(*c.pad, c.soil, c.conditions));
       drop::WriteTraceCsv(d.result, TracePath(staging, c));
       std::vector<pad::DropSample>().swap(d.result.trace);  // released: the file holds it
       if (d.free) std::vector<pad::FreeDropSample>().swap(d.free->trace);

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "drop_tests/drop/drop_setup.h"
 #include "drop_tests/formats/dataset_csv.h"
 #include "drop_tests/formats/figure_style.h"
 #include "drop_tests/formats/output_path.h"
@@ -42,7 +43,7 @@ std::vector<Stroke> DenseStrokes(const CampaignResult& r, const fs::path& dir) {
   double t_stop_max = 0.0;
   for (const CampaignCase& c : r.scenario.cases) {
     if (!SameSpeed(c.conditions.impact_speed_m_s, r.scenario.reference_speed_m_s)) continue;
-    runs.emplace_back(&c, drop::RunPadDrop(*c.pad, c.soil, c.conditions, dense));
+    runs.emplace_back(&c, drop::RunDrop(drop::ResolveDrop(*c.pad, c.soil, c.conditions, {.rig = dense})));
     t_stop_max = std::max(t_stop_max, runs.back().second.result.time_to_rest_s);
   }
   std::vector<Stroke> strokes;

@@ -475,7 +475,7 @@ const std::vector<std::string>& LanderInitialKeys() {
 
 namespace {
 void WriteLanderBlock(YAML::Emitter& y, const LanderSpec& l, const std::function<std::string(const std::string&)>& file);
-void WriteSoilsBlock(YAML::Emitter& y, const LanderScenario& s, const LanderSetup& setup);
+void WriteSoilsBlock(YAML::Emitter& y, const LanderScenario& s, const lander::LanderSetup& setup);
 void WriteVector(YAML::Emitter& y, const Eigen::Vector3d& v, double scale);
 
 // The block `key` of `f` must be what `write` writes now.
@@ -490,7 +490,7 @@ void RequireSameBlock(const io::YamlFields& f, const std::string& key, const std
 
 // A resolved copy's derived values (the lander's masses, pad and legs, the soils as run, the
 // release position) are read back against the files they came from, on `setup` built from it.
-void RequireResolvedValuesMatch(const io::YamlFields& f, const LanderScenario& s, const LanderSetup& setup) {
+void RequireResolvedValuesMatch(const io::YamlFields& f, const LanderScenario& s, const lander::LanderSetup& setup) {
   const std::string dir = fs::path(f.file()).parent_path().string();
   const auto file = [&](const std::string& p) { return io::PathForOutput(p, dir); };
   RequireSameBlock(f, "lander", [&](YAML::Emitter& y) { WriteLanderBlock(y, s.lander, file); });
@@ -501,11 +501,11 @@ void RequireResolvedValuesMatch(const io::YamlFields& f, const LanderScenario& s
 }  // namespace
 
 LanderScenario LoadLanderScenario(const std::string& path) {
-  std::optional<LanderSetup> setup;
+  std::optional<lander::LanderSetup> setup;
   return LoadLanderScenarioWithSetup(path, setup);
 }
 
-LanderScenario LoadLanderScenarioWithSetup(const std::string& path, std::optional<LanderSetup>& setup) {
+LanderScenario LoadLanderScenarioWithSetup(const std::string& path, std::optional<lander::LanderSetup>& setup) {
   setup.reset();
   const io::YamlFields f = io::YamlFields::LoadFile(path);
   f.RequireSchemaVersion(1);
@@ -636,7 +636,7 @@ void WriteLanderBlock(YAML::Emitter& y, const LanderSpec& l, const std::function
 }
 
 // The ground's `soils` block: every soil of the terrain as the run sees it (model applied).
-void WriteSoilsBlock(YAML::Emitter& y, const LanderScenario& s, const LanderSetup& setup) {
+void WriteSoilsBlock(YAML::Emitter& y, const LanderScenario& s, const lander::LanderSetup& setup) {
   y << YAML::BeginSeq;
   for (const rft::TerrainSoil& soil : setup.terrain.soils) {
     const rft::SoilParameters p = s.model ? model::ApplyModel(*s.model, io::LoadSoil(soil.name)) : io::LoadSoil(soil.name);
@@ -654,7 +654,7 @@ void WriteResolvedLanderScenario(const LanderScenario& s, const std::string& pat
   WriteResolvedLanderScenario(s, BuildLanderSetup(s), path, output_dir);
 }
 
-void WriteResolvedLanderScenario(const LanderScenario& s, const LanderSetup& setup, const std::string& path,
+void WriteResolvedLanderScenario(const LanderScenario& s, const lander::LanderSetup& setup, const std::string& path,
                                  const std::string& output_dir) {
   const FileName file = [&](const std::string& p) { return io::PathForOutput(p, output_dir); };
   YAML::Emitter y;

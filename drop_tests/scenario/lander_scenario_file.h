@@ -24,7 +24,7 @@ LanderScenario LoadLanderScenario(const std::string& path);
 // As LoadLanderScenario; a resolved copy is checked against the files it names by building its setup, which
 // comes back in `setup` so that its landing need not build it again (left empty for a scenario
 // file). The setup holds for the scenario as loaded: one edited afterwards needs its own.
-LanderScenario LoadLanderScenarioWithSetup(const std::string& path, std::optional<LanderSetup>& setup);
+LanderScenario LoadLanderScenarioWithSetup(const std::string& path, std::optional<lander::LanderSetup>& setup);
 // The scenario with its pads meshed as their file says (undoing simulation.pad_angular_segments): a
 // study's reference model when its own landings run on coarser pads (stability re-checks).
 LanderScenario AtPadFileMesh(const LanderScenario& scenario);
@@ -36,7 +36,7 @@ const std::vector<std::string>& LanderInitialKeys();
 // The files named are written for `output_dir`, the directory the file finally lives in
 // (drop_tests/catalog/paths_in_outputs.h: no absolute paths of this machine). `setup` is the
 // scenario's (BuildLanderSetup): the copy states the soils and the release position it gives.
-void WriteResolvedLanderScenario(const LanderScenario& scenario, const LanderSetup& setup, const std::string& path,
+void WriteResolvedLanderScenario(const LanderScenario& scenario, const lander::LanderSetup& setup, const std::string& path,
                                  const std::string& output_dir);
 // As above, building the setup first (a copy written without running the landing).
 void WriteResolvedLanderScenario(const LanderScenario& scenario, const std::string& path,

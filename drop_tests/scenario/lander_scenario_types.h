@@ -3,7 +3,7 @@
 // the lander (data/landers/<name>.yaml: body, legs, pads, absorbers, cone limits), the ground
 // (level plane or uniform slope, default soil and soil patches), the initial conditions (drop
 // height or touchdown speed, horizontal velocity, attitude, angular rate, yaw relative to the
-// slope) and the run options; the setup built from them and a run's result. Loading
+// slope) and the run options; a run: its result and the setup (lander::LanderSetup) it ran on. Loading
 // (lander_scenario_file.h) resolves and validates everything before anything runs; lander_setup.h
 // builds and runs, lander_outputs.h reports. Schema: docs/lander_dynamics.md.
 #include <array>
@@ -110,15 +110,9 @@ struct LanderScenario {
   std::optional<model::ModelFile> model;
 };
 
-struct LanderSetup {
-  lander::LanderModel model;
-  rft::Terrain terrain;
-  lander::LanderInitialState initial;
-};
-
 struct LanderRun {
   LanderScenario scenario;
-  LanderSetup setup;
+  lander::LanderSetup setup;
   lander::LanderRunResult result;
   std::array<std::string, lander::kNumLegs> soil_under_pad;  // at rest (or at the end)
 };

@@ -62,9 +62,10 @@ lander::LanderModel BuildLanderModel(const LanderScenario& sc) {
   return m;
 }
 
-LanderSetup BuildLanderSetup(const LanderScenario& sc, const LanderSoilCatalog* soils) {
-  LanderSetup out;
+lander::LanderSetup BuildLanderSetup(const LanderScenario& sc, const LanderSoilCatalog* soils) {
+  lander::LanderSetup out;
   out.model = BuildLanderModel(sc);
+  out.options = sc.options;
   const lander::LanderModel& m = out.model;
 
   // Ground: z = h0 - tan(slope) (x cos(az) + y sin(az)).
@@ -149,7 +150,7 @@ LanderRun RunLanderScenario(const LanderScenario& scenario) {
   return RunLanderScenario(scenario, BuildLanderSetup(scenario));
 }
 
-LanderRun RunLanderScenario(const LanderScenario& scenario, LanderSetup setup) {
+LanderRun RunLanderScenario(const LanderScenario& scenario, lander::LanderSetup setup) {
   if (scenario.ground.soil_field && scenario.ground.soil_field->seed_per_landing)
     throw MakeInputError(scenario.source, "ground.soil_field.seed",
                          "per_landing draws a field for each landing of a study; a single landing needs a number");
@@ -159,7 +160,7 @@ LanderRun RunLanderScenario(const LanderScenario& scenario, LanderSetup setup) {
   // A failed landing names its scenario (the integrator's message names only the failure).
   const std::string which = "lander scenario " + scenario.name + " (" + scenario.source + "): ";
   try {
-    run.result = lander::SimulateLander(run.setup.model, run.setup.terrain, run.setup.initial, scenario.options);
+    run.result = lander::SimulateLander(run.setup);
   } catch (const integ::LimitExceeded& e) {
     throw integ::LimitExceeded(which + e.what(), e.limit(), e.value());
   } catch (const integ::IntegrationFailure& e) {

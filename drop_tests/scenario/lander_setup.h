@@ -1,6 +1,7 @@
 #pragma once
-// A lander scenario turned into what the multibody code runs: the model (body, legs, pads), the
-// terrain with its soils' 3D laws, and the initial state; and the run itself.
+// A lander scenario turned into what the multibody code runs, a lander::LanderSetup: the model
+// (body, legs, pads), the terrain with its soils' 3D laws, the initial state and the run options;
+// and the run itself.
 #include <map>
 #include <vector>
 #include <string>
@@ -21,12 +22,12 @@ LanderSoilCatalog LoadLanderSoils(const LanderScenario& scenario, const std::vec
 double TouchdownSpeed(const LanderScenario& scenario);
 // The lander alone (body, legs, pads, gravity, soil ramp): no soil is read.
 lander::LanderModel BuildLanderModel(const LanderScenario& scenario);
-// Builds the model, terrain and initial state. Soils come from `soils` when given (a reference it
+// Builds the model, terrain, initial state and run options (the scenario's simulation block). Soils come from `soils` when given (a reference it
 // lacks, and every soil without it, loaded from data/soils by name).
-LanderSetup BuildLanderSetup(const LanderScenario& scenario, const LanderSoilCatalog* soils = nullptr);
+lander::LanderSetup BuildLanderSetup(const LanderScenario& scenario, const LanderSoilCatalog* soils = nullptr);
 LanderRun RunLanderScenario(const LanderScenario& scenario);
 // As above, on the setup BuildLanderSetup built for this scenario (built once, used for checks
 // before the run and by the run).
-LanderRun RunLanderScenario(const LanderScenario& scenario, LanderSetup setup);
+LanderRun RunLanderScenario(const LanderScenario& scenario, lander::LanderSetup setup);
 
 }  // namespace touchdown::scenario

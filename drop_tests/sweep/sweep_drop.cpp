@@ -11,6 +11,7 @@
 #include "drop_tests/scenario/lander_setup.h"
 #include "drop_tests/drop/drop_columns.h"
 #include "drop_tests/drop/drop_factory.h"
+#include "drop_tests/drop/drop_setup.h"
 #include "drop_tests/drop/pad_drop.h"
 #include "footpad_geom/axisymmetric_intrusion.h"
 #include "rft/units.h"
@@ -107,7 +108,7 @@ DropRecord SimulatePadSweepDrop(const SweepModels& models, const SweepDropParams
     options.free.integrator.max_rhs_evaluations = plan.rig.integrator.max_rhs_evaluations;
     options.intrusion = models.has_intrusion(p.pad) ? &models.intrusion(p.pad) : nullptr;
     const io::PadSpec& pad = c.IsFree() ? models.free_pad(p.pad) : plan.pads[p.pad];
-    const drop::PadDrop drop = drop::SimulateDrop(pad, plan.soils[p.soil], c, options);
+    const drop::PadDrop drop = drop::RunDrop(drop::ResolveDrop(pad, plan.soils[p.soil], c, options));
     const pad::RigDropResult& d = drop.result;
     r.ok = true;
     for (const MetricColumn& m : MetricColumns()) m.column->at(r) = d.*m.metric;
@@ -235,7 +236,7 @@ DropRecord SimulateLanderSweepDrop(const SweepModels& models, const SweepDropPar
   r.zeta_N_cm3 = units::ZetaToN_cm3(soil.ZetaAtGravity(sc.gravity_m_s2));
   RecordConditions(sc, r);
   try {
-    scenario::LanderSetup setup = scenario::BuildLanderSetup(sc, &models.lander_soils());
+    lander::LanderSetup setup = scenario::BuildLanderSetup(sc, &models.lander_soils());
     // The soil under each pad's joint at release, as the ground was built.
     for (int i = 0; i < lander::kNumLegs; ++i) {
       const Eigen::Vector3d c = setup.initial.p_WB + setup.initial.R_WB * setup.model.legs[i].joint_B;

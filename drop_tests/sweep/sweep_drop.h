@@ -14,7 +14,7 @@
 //                one whole lander run (seconds), recorded as its summary (pad penetrations,
 //                final roll and pitch, tipped over) and the soil under each pad at release
 //                (pad1_soil..pad4_soil, with the paper's ground case when it is one).
-// Both pad kinds go through DropConditionsFor + SimulateDrop (drop_tests/drop/pad_drop.h), as
+// Both pad kinds go through DropConditionsFor + ResolveDrop + RunDrop (drop_tests/drop/drop_setup.h), as
 // `compare` does, with the model's effects (all of them, on free pads in their 3D form).
 #include <map>
 #include <memory>

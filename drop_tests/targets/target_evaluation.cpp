@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "drop_tests/drop/drop_setup.h"
 #include "drop_tests/util/work_pool.h"
 #include "drop_tests/scenario/lander_setup.h"
 #include "rft/units.h"
@@ -103,7 +104,7 @@ ScenarioOutcome TargetEvaluator::RunScenario(size_t index, const std::vector<dou
   for (size_t p : depends_on_[index])
     if (file_.parameters[p].kind == ParameterKind::kSoilZeta) conditions.zeta_N_m3 = units::ZetaFromN_cm3(values[p]);
   const std::optional<io::PadSpec> pad = editor_.EditedPad(run.pad->source, values);
-  return DropOutcome(drop::RunPadDrop(pad ? *pad : *run.pad, soil, conditions));
+  return DropOutcome(drop::RunDrop(drop::ResolveDrop(pad ? *pad : *run.pad, soil, conditions)));
 }
 
 std::vector<ScenarioOutcome> TargetEvaluator::Run(const std::vector<double>& values, bool fit_only) {

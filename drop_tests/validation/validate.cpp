@@ -12,6 +12,7 @@
 #include <boost/math/tools/roots.hpp>
 
 #include "drop_tests/drop/drop_factory.h"
+#include "drop_tests/drop/drop_setup.h"
 #include "drop_tests/drop/pad_drop.h"
 #include "drop_tests/model/effects.h"
 #include "drop_tests/validation/power_law_fit.h"
@@ -63,7 +64,7 @@ class SourceRunner {
     c.effects_source = source_.file;
     drop::ValidateConditions(c, source_.file);
     try {
-      return Pick(drop::SimulateDrop(source_.pad, soil, c, RunOptions(intrusion_.get())), q);
+      return Pick(drop::RunDrop(drop::ResolveDrop(source_.pad, soil, c, RunOptions(intrusion_.get()))), q);
     } catch (const integ::IntegrationFailure& e) {
       // Name the drop: the source, the variant and its conditions.
       throw integ::IntegrationFailure(source_.id + ", " + v.Name() + ", impact speed " + std::to_string(speed_m_s) +

@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <drop_tests/drop/drop_setup.h>
 #include <drop_tests/drop/pad_drop.h>
 #include <drop_tests/catalog/catalog.h>
 #include <lander/integ/cvode_integrator.h>
@@ -50,7 +51,7 @@ int main(int argc, char** argv) {
     td::drop::DropConditions conditions;
     conditions.impact_speed_m_s = 1.0;
     td::drop::ValidateConditions(conditions, "cpp_consumer");
-    const td::drop::PadDrop drop = td::drop::SimulateDrop(pad, soil, conditions, {});
+    const td::drop::PadDrop drop = td::drop::RunDrop(td::drop::ResolveDrop(pad, soil, conditions));
 
     const nlohmann::json out{{"force", ForceAtDepth(pad, soil, 0.02)}, {"drop", td::drop::SummaryJson(drop)}};
     std::cout << out.dump(2) << std::endl;

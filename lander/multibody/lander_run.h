@@ -1,6 +1,6 @@
 #pragma once
-// What a lander run takes and gives: its initial state and options, the sampled trace, the
-// events and the summary. Types only (the simulation is lander_simulation.h; the hybrid system's
+// What a lander run takes and gives: its setup (initial state and options among it), the sampled
+// trace, the events and the summary. Types only (the simulation is lander_simulation.h; the hybrid system's
 // modes and events are lander_hybrid.h).
 #include <Eigen/Core>
 #include <array>
@@ -66,6 +66,16 @@ struct LanderRunOptions {
   // unless integrator.component_atol is given; false: the scalar integrator.atol for every state
   // (a scenario that sets `atol` asks for that).
   bool scale_tolerances = true;
+};
+
+// Everything a landing runs on, named as the rig's and the free pad's setups are: the model (body,
+// legs, pads, gravity), the terrain with its soils' contact models, the initial state and the options.
+// Held by value: one is built per landing and kept with its result (outputs draw from it).
+struct LanderSetup {
+  LanderModel model;
+  rft::Terrain terrain;
+  LanderInitialState initial;
+  LanderRunOptions options;
 };
 
 struct LanderSample {

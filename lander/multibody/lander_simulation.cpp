@@ -87,12 +87,14 @@ double BodyHeightForClearance(const LanderModel& model, const rft::Terrain& terr
   return depth + clearance_m;
 }
 
-LanderRunResult SimulateLander(const LanderModel& model, const rft::Terrain& terrain, const LanderInitialState& initial,
-                               const LanderRunOptions& options) {
+LanderRunResult SimulateLander(const LanderSetup& setup) {
+  const LanderModel& model = setup.model;
+  const LanderInitialState& initial = setup.initial;
+  const LanderRunOptions& options = setup.options;
   if (!(options.duration_s > 0.0) || !(options.sample_rate_hz > 0.0) || !(options.capture_speed_m_s >= 0.0))
     throw std::invalid_argument("SimulateLander: invalid options");
   LanderRunResult result;
-  LanderHybrid lander(model, terrain, options, result);
+  LanderHybrid lander(model, setup.terrain, options, result);
   const StateLayout& L = lander.layout();
   const integ::IntegratorOptions tolerances = ScaledTolerances(model, L, initial, options);
   integ::CvodeIntegrator integrator(

@@ -33,7 +33,6 @@ namespace touchdown::lander {
 double BodyHeightForClearance(const LanderModel& model, const rft::Terrain& terrain, const LanderInitialState& state,
                               double clearance_m);
 
-LanderRunResult SimulateLander(const LanderModel& model, const rft::Terrain& terrain, const LanderInitialState& initial,
-                               const LanderRunOptions& options = {});
+LanderRunResult SimulateLander(const LanderSetup& setup);
 
 }  // namespace touchdown::lander

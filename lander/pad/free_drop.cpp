@@ -180,10 +180,13 @@ FreeDropResult Stroke(integ::HybridRun& run, const FreePadDynamics& pad, const E
 
 }  // namespace
 
-FreeDropResult RunFreeDrop(const geom::PadBody& body, const rft::Terrain& terrain, const FreeDropInput& in,
-                           const FreeDropOptions& options) {
+FreeDropResult RunFreeDrop(const FreeDropSetup& setup) {
+  if (!setup.body) throw std::invalid_argument("RunFreeDrop: no pad body");
+  const geom::PadBody& body = *setup.body;
+  const FreeDropInput& in = setup.initial;
+  const FreeDropOptions& options = setup.options;
   Validate(body, in);
-  const FreePadDynamics pad(body, terrain, in.gravity_m_s2);
+  const FreePadDynamics pad(body, setup.terrain, in.gravity_m_s2);
   bool approaching = true;
   const integ::IntegratorOptions tolerances =
       WithScaledTolerances(options.integrator, body, in, pad.radius_m(), pad.size());

@@ -107,9 +107,17 @@ struct FreeDropResult {
   integ::IntegratorSummary solver;
 };
 
-// The pad lands on `terrain` (its surface and the soil under the pad: rft/soil_map.h); a uniform bed
-// is rft::UniformTerrain.
-FreeDropResult RunFreeDrop(const geom::PadBody& body, const rft::Terrain& terrain, const FreeDropInput& input,
-                           const FreeDropOptions& options = {});
+// Everything a free drop runs on, named as the rig's and the lander's setups are. The body is not
+// owned: a meshed pad's is megabytes and one pad's drops (a sweep's, a fit's) share it; it must
+// outlive the run. The pad lands on `terrain` (its surface and the soil under the pad:
+// rft/soil_map.h); a uniform bed is rft::UniformTerrain.
+struct FreeDropSetup {
+  const geom::PadBody* body = nullptr;
+  rft::Terrain terrain;
+  FreeDropInput initial;
+  FreeDropOptions options;
+};
+
+FreeDropResult RunFreeDrop(const FreeDropSetup& setup);
 
 }  // namespace touchdown::pad

@@ -11,8 +11,11 @@ namespace touchdown::pad {
 namespace {
 using S = RigStateLayout;
 
-void RequireValid(const RigDropInput& in, const RigDropOptions& options) {
-  if (!(in.mass_kg > 0.0 && std::isfinite(in.mass_kg)))
+void RequireValid(const RigDropSetup& setup) {
+  const RigDropInput& in = setup.initial;
+  const RigDropOptions& options = setup.options;
+  if (!setup.terrain) throw std::invalid_argument("RunRigDrop: no soil response");
+  if (!(setup.body.mass_kg > 0.0 && std::isfinite(setup.body.mass_kg)))
     throw std::invalid_argument("RunRigDrop: mass must be positive and finite");
   if (!(in.gravity_m_s2 > 0.0 && std::isfinite(in.gravity_m_s2)))
     throw std::invalid_argument("RunRigDrop: gravity must be positive and finite");
@@ -24,8 +27,10 @@ void RequireValid(const RigDropInput& in, const RigDropOptions& options) {
 }
 }  // namespace
 
-void RigStrokeDerivative(const RigDropInput& in, const VerticalSoilResponse& response,
-                         const Eigen::Ref<const Eigen::VectorXd>& y, Eigen::Ref<Eigen::VectorXd> ydot) {
+void RigStrokeDerivative(const RigDropSetup& setup, const Eigen::Ref<const Eigen::VectorXd>& y,
+                         Eigen::Ref<Eigen::VectorXd> ydot) {
+  const VerticalSoilResponse& response = *setup.terrain;
+  const double m = setup.body.mass_kg, g = setup.initial.gravity_m_s2;
   const double d = y[S::depth()];
   const double v = std::max(y[S::velocity_down()], 0.0);  // RFT resists only motion into the soil
   const bool in_soil = d > 0.0;
@@ -34,36 +39,29 @@ void RigStrokeDerivative(const RigDropInput& in, const VerticalSoilResponse& res
   const double m_a_slope = in_soil ? response.AddedMassSlope(d) : 0.0;
   const double accretion = v * v * m_a_slope;  // momentum given per unit time to grains picked up
   ydot[S::depth()] = y[S::velocity_down()];
-  ydot[S::velocity_down()] = (in.mass_kg * in.gravity_m_s2 - force - accretion) / (in.mass_kg + m_a);
+  ydot[S::velocity_down()] = (m * g - force - accretion) / (m + m_a);
   ydot[S::work()] = force * v + 0.5 * accretion * v;
   if (ydot.size() > S::accretion()) ydot[S::accretion()] = 0.5 * accretion * v;
 }
 
-void RigStrokeDerivative(const RigDropInput& in, const VerticalResistance& resistance,
-                         const Eigen::Ref<const Eigen::VectorXd>& y, Eigen::Ref<Eigen::VectorXd> ydot) {
-  RigStrokeDerivative(in, FunctionSoilResponse(resistance), y, ydot);
-}
-
-double RigContactForce(const RigDropInput& in, const VerticalSoilResponse& response, double d, double v) {
+double RigContactForce(const RigDropSetup& setup, double d, double v) {
+  const VerticalSoilResponse& response = *setup.terrain;
   if (!(d > 0.0)) return 0.0;
   v = std::max(v, 0.0);
   const double force = response.Force(d, v);
   const double m_a = response.AddedMass(d);
   if (m_a == 0.0) return force;  // exactly the soil force: no rounding from m (g - dv/dt)
   const double accretion = v * v * response.AddedMassSlope(d);
-  const double dvdt = (in.mass_kg * in.gravity_m_s2 - force - accretion) / (in.mass_kg + m_a);
+  const double m = setup.body.mass_kg, g = setup.initial.gravity_m_s2;
+  const double dvdt = (m * g - force - accretion) / (m + m_a);
   return force + m_a * dvdt + accretion;
 }
 
-RigDropResult RunRigDrop(const RigDropInput& in, const VerticalResistance& resistance,
-                         const RigDropOptions& options) {
-  return RunRigDrop(in, FunctionSoilResponse(resistance), options);
-}
-
-RigDropResult RunRigDrop(const RigDropInput& in, const VerticalSoilResponse& response,
-                         const RigDropOptions& options) {
-  RequireValid(in, options);
-  const double m = in.mass_kg, g = in.gravity_m_s2, weight = m * g;
+RigDropResult RunRigDrop(const RigDropSetup& setup) {
+  RequireValid(setup);
+  const VerticalSoilResponse& response = *setup.terrain;
+  const RigDropOptions& options = setup.options;
+  const double m = setup.body.mass_kg, g = setup.initial.gravity_m_s2, weight = m * g;
   bool resting = false;  // mode switch at the stop event
 
   auto rhs = [&](double, Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::VectorXd> ydot) {
@@ -71,7 +69,7 @@ RigDropResult RunRigDrop(const RigDropInput& in, const VerticalSoilResponse& res
       ydot.setZero();  // static: the soil carries the weight, nothing moves
       return;
     }
-    RigStrokeDerivative(in, response, y, ydot);
+    RigStrokeDerivative(setup, y, ydot);
   };
   integ::RootSpec roots;
   roots.count = 2;  // [0] touchdown: depth rises through 0; [1] stop: velocity falls through 0
@@ -84,7 +82,7 @@ RigDropResult RunRigDrop(const RigDropInput& in, const VerticalSoilResponse& res
   integ::HybridRun run(integrator);
 
   // Approach: free flight from a clearance chosen so the pad arrives at the requested speed.
-  const double v_td = in.impact_speed_m_s;
+  const double v_td = setup.initial.impact_speed_m_s;
   const double clearance = ReleaseClearance(options.approach_clearance_m, v_td, g);
   Eigen::VectorXd y(S::size);
   if (clearance > 0.0) {
@@ -117,13 +115,13 @@ RigDropResult RunRigDrop(const RigDropInput& in, const VerticalSoilResponse& res
   stroke.failure = "the pad did not stop within " + std::to_string(options.max_stroke_duration_s) + " s";
   integ::HybridCallbacks stroke_calls;
   stroke_calls.sample = [&](double t, const Eigen::VectorXd& s) {
-    record(t, s, RigContactForce(in, response, s[S::depth()], s[S::velocity_down()]));
+    record(t, s, RigContactForce(setup, s[S::depth()], s[S::velocity_down()]));
   };
   stroke_calls.event = [&](double t, const std::vector<int>& found, Eigen::VectorXd& s) {
     if (found[1] == 0) return integ::EventAction::kContinue;  // the touchdown root again (grazing the surface)
     s[S::velocity_down()] = 0.0;  // the root: exactly at rest
     // At the stop v = 0: F_c = F + m_a dv/dt (the grains still push while the pad halts).
-    record(t, s, RigContactForce(in, response, s[S::depth()], 0.0));
+    record(t, s, RigContactForce(setup, s[S::depth()], 0.0));
     return integ::EventAction::kStop;
   };
   const integ::HybridOutcome stop = run.Run(stroke, stroke_calls);

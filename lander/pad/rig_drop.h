@@ -47,7 +47,7 @@ class VerticalSoilResponse {
   virtual double StaticCapacity(double depth_m) const { return Force(depth_m, 0.0); }
 };
 
-// Adapts a VerticalResistance (no added mass) to the interface.
+// Adapts a VerticalResistance (no added mass) to the interface: a soil given as a closed form.
 class FunctionSoilResponse final : public VerticalSoilResponse {
  public:
   explicit FunctionSoilResponse(VerticalResistance f) : f_(std::move(f)) {}
@@ -65,10 +65,28 @@ struct RigDropOptions {
   integ::IntegratorOptions integrator{};
 };
 
-struct RigDropInput {
+// The rig's moving mass: the pad and whatever rides the rod with it. The pad's shape reaches the rig
+// through its soil response (the intrusion integral it was built on), so the mass is all the rig's
+// body needs.
+struct RigBody {
   double mass_kg = 0.0;
+};
+
+// Gravity and the pad's speed at touchdown.
+struct RigDropInput {
   double gravity_m_s2 = rft::kEarthGravity_m_s2;
   double impact_speed_m_s = 0.0;  // at touchdown, downward
+};
+
+// Everything a rig drop runs on, named as the free pad's and the lander's setups are: the body, the
+// terrain (for the rig a level bed seen along the rod: its vertical response), the initial state and
+// the options. The response is not owned: it is polymorphic and often wraps what its caller keeps for
+// many drops (a sweep's intrusion integral, synth's floor); it must outlive the run.
+struct RigDropSetup {
+  RigBody body;
+  const VerticalSoilResponse* terrain = nullptr;
+  RigDropInput initial;
+  RigDropOptions options;
 };
 
 struct DropSample {
@@ -106,17 +124,12 @@ struct RigStateLayout {
 
 // Pure model: the state derivative of the rig during the stroke, y as RigStateLayout (its first
 // three states when the caller keeps no accretion loss).
-void RigStrokeDerivative(const RigDropInput& in, const VerticalSoilResponse& response,
-                         const Eigen::Ref<const Eigen::VectorXd>& y, Eigen::Ref<Eigen::VectorXd> ydot);
-void RigStrokeDerivative(const RigDropInput& in, const VerticalResistance& resistance,
-                         const Eigen::Ref<const Eigen::VectorXd>& y, Eigen::Ref<Eigen::VectorXd> ydot);
+void RigStrokeDerivative(const RigDropSetup& setup, const Eigen::Ref<const Eigen::VectorXd>& y,
+                         Eigen::Ref<Eigen::VectorXd> ydot);
 // The load-cell force F_c = m (g - dv/dt) at a stroke state [N].
-double RigContactForce(const RigDropInput& in, const VerticalSoilResponse& response, double depth_m,
-                       double speed_down_m_s);
+double RigContactForce(const RigDropSetup& setup, double depth_m, double speed_down_m_s);
 
-RigDropResult RunRigDrop(const RigDropInput& input, const VerticalSoilResponse& response,
-                         const RigDropOptions& options = {});
-RigDropResult RunRigDrop(const RigDropInput& input, const VerticalResistance& resistance,
-                         const RigDropOptions& options = {});
+// Throws std::invalid_argument for a missing terrain, a bad body, initial state or options.
+RigDropResult RunRigDrop(const RigDropSetup& setup);
 
 }  // namespace touchdown::pad

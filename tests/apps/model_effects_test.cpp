@@ -19,6 +19,7 @@
 #include "drop_tests/scenario/lander_setup.h"
 #include "drop_tests/model/contact_model.h"
 #include "drop_tests/model/model_file.h"
+#include "drop_tests/drop/drop_setup.h"
 #include "drop_tests/drop/pad_drop.h"
 #include "drop_tests/dataset/sensor_sampling.h"
 #include "drop_tests/dataset/synth.h"
@@ -76,7 +77,7 @@ class ModelEffects : public ::testing::Test {
       c.effects = ModelEffectTerms(m);
       c.effects_source = path;
     }
-    return RunPadDrop(io::LoadPad(pad), soil, c);
+    return RunDrop(ResolveDrop(io::LoadPad(pad), soil, c));
   }
 
   fs::path dir_;
@@ -169,9 +170,9 @@ TEST_F(ModelEffects, FreeVerticalDropWithEffectsMatchesTheRigDrop) {
     c.impact_speed_m_s = 1.0;
     c.effects = ModelEffectTerms(m);
     c.effects_source = model;
-    const drop::PadDrop rig = RunPadDrop(pad, soil, c);
+    const drop::PadDrop rig = RunDrop(ResolveDrop(pad, soil, c));
     c.free = true;
-    const drop::PadDrop free = drop::SimulateDrop(pad, soil, c, {});
+    const drop::PadDrop free = drop::RunDrop(drop::ResolveDrop(pad, soil, c));
     ASSERT_TRUE(free.free.has_value()) << k.name;
     EXPECT_EQ(free.contact_model, k.law);
     // Peak force over the stroke's samples (1 kHz, before the stop): at the stop instant the rig
@@ -186,7 +187,7 @@ TEST_F(ModelEffects, FreeVerticalDropWithEffectsMatchesTheRigDrop) {
     drop::DropConditions plain = c;
     plain.effects = {};
     plain.free = false;
-    const drop::PadDrop base = RunPadDrop(pad, soil, plain);
+    const drop::PadDrop base = RunDrop(ResolveDrop(pad, soil, plain));
     std::printf("[ free vs rig ] %-12s %-6s depth %.5f / %.5f mm (%+.3f %%), peak %.2f / %.2f N (%+.3f %%); "
                 "without the effect %.5f mm, %.2f N\n",
                 k.name, k.pad, 1e3 * free.result.final_penetration_m, 1e3 * d,
@@ -218,7 +219,7 @@ TEST_F(ModelEffects, EveryEffectRunsOnFreeDropsAndLanders) {
     c.effects = ModelEffectTerms(m);
     c.effects_source = path;
     const auto t0 = std::chrono::steady_clock::now();
-    const drop::PadDrop d = drop::SimulateDrop(pad, io::LoadSoil("fjs1_lp"), c, {});
+    const drop::PadDrop d = drop::RunDrop(drop::ResolveDrop(pad, io::LoadSoil("fjs1_lp"), c));
     const auto t1 = std::chrono::steady_clock::now();
     ASSERT_TRUE(d.free.has_value());
     EXPECT_GT(d.result.final_penetration_m, 0.0) << effects;
@@ -266,7 +267,7 @@ TEST_F(ModelEffects, EveryEffectRunsOnFreeDropsAndLanders) {
 TEST_F(ModelEffects, LanderSoilsCarryTheModelsTerms) {
   scenario::LanderScenario s = scenario::LoadLanderScenario(std::string(TOUCHDOWN_SOURCE_DIR) + "/data/scenarios/lander_case_A.yaml");
   s.model = LoadModelFile(Model("lander", "{inertial_drag: {lambda: 1.5}, sensor_offset: {dz_mm: 1, dt_ms: 0}}"));
-  const scenario::LanderSetup setup = scenario::BuildLanderSetup(s);
+  const lander::LanderSetup setup = scenario::BuildLanderSetup(s);
   ASSERT_EQ(setup.terrain.soils.size(), 1u);
   EXPECT_EQ(setup.terrain.soils[0].contact.name(), "li2013+dynamic");
   const Eigen::Vector3d down(0, 0, -1);
@@ -357,7 +358,7 @@ TEST_F(ModelEffects, DiagnosedModelFileRoundTripsThroughDropAndCompare) {
   drop::DropConditions c;
   c.impact_speed_m_s = 1.2;
   c.effects = ModelEffectTerms(model);
-  const drop::PadDrop in_process = RunPadDrop(io::LoadPad("flat"), ApplyModel(model, io::LoadSoil("fjs1_lp")), c);
+  const drop::PadDrop in_process = RunDrop(ResolveDrop(io::LoadPad("flat"), ApplyModel(model, io::LoadSoil("fjs1_lp")), c));
   EXPECT_EQ(j["final_penetration_m"].get<double>(), in_process.result.final_penetration_m);
   EXPECT_NEAR(c.effects.damping_c_N_s_m3, w.fit.effects[0].values[0], 1e-6 * w.fit.effects[0].values[0]);
 

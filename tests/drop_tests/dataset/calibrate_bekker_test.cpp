@@ -7,6 +7,7 @@
 
 #include "drop_tests/dataset/calibrate_bekker.h"
 #include "drop_tests/dataset/synth.h"
+#include "drop_tests/drop/drop_setup.h"
 #include "drop_tests/drop/pad_drop.h"
 #include "drop_tests/catalog/catalog.h"
 #include "rft/bekker_law.h"
@@ -33,7 +34,7 @@ Dataset BekkerDataset(const std::vector<std::string>& pads) {
     for (double v : {0.7, 1.0, 1.5}) {
       drop::DropConditions c;
       c.impact_speed_m_s = v;
-      const drop::PadDrop sim = drop::RunPadDrop(io::LoadPad(pad), TrueBekkerSoil(), c);
+      const drop::PadDrop sim = drop::RunDrop(drop::ResolveDrop(io::LoadPad(pad), TrueBekkerSoil(), c));
       DatasetDrop d;
       d.drop_id = "bekker_" + std::to_string(k++);
       d.pad = pad;

@@ -15,6 +15,7 @@
 #include "drop_tests/dataset/calibrate.h"
 #include "drop_tests/formats/dataset_csv.h"
 #include "drop_tests/model/model_file.h"
+#include "drop_tests/drop/drop_setup.h"
 #include "drop_tests/drop/pad_drop.h"
 
 namespace {
@@ -43,7 +44,7 @@ Dataset SyntheticDataset(double noise, uint64_t seed, double rest_duration_s = R
       c.zeta_N_m3 = kZetaTrue;
       RigDropOptions rig;
       rig.rest_duration_s = rest_duration_s;
-      const PadDrop sim = RunPadDrop(LoadPad(pad_name), LoadSoil("fjs1_lp"), c, rig);
+      const PadDrop sim = RunDrop(ResolveDrop(LoadPad(pad_name), LoadSoil("fjs1_lp"), c, {.rig = rig}));
       DatasetDrop d;
       d.drop_id = "synthetic_" + std::to_string(k++);
       d.pad = pad_name;

@@ -1,5 +1,5 @@
 // synth and calibrate build their drops with the drop factory (drop_tests/drop/drop_factory.h):
-// a noise-free synthetic trace is what SimulateDrop's drop records, bit for bit, and calibrate's
+// a noise-free synthetic trace is what RunDrop's drop records, bit for bit, and calibrate's
 // regressor is the factory's rig integral at a unit zeta scaled to the drop's gravity.
 #include <gtest/gtest.h>
 
@@ -8,6 +8,7 @@
 #include "drop_tests/dataset/calibrate.h"
 #include "drop_tests/dataset/synth.h"
 #include "drop_tests/drop/drop_factory.h"
+#include "drop_tests/drop/drop_setup.h"
 #include "drop_tests/drop/pad_drop.h"
 #include "rft/stress_law_3d_factory.h"
 
@@ -49,7 +50,7 @@ TEST(FactoryDrops, SynthRecordsTheFactorysDrop) {
     c.effects = model::MakeEffectTerms({damping});
     drop::DropRunOptions options;
     options.rig.rest_duration_s = spec.rest_duration_s + std::abs(c.effects.sensor_dt_s) + 2.0 / spec.sample_rate_hz;
-    const drop::PadDrop drop = drop::SimulateDrop(io::LoadPad("curved"), io::LoadSoil("fjs1_lp"), c, options);
+    const drop::PadDrop drop = drop::RunDrop(drop::ResolveDrop(io::LoadPad("curved"), io::LoadSoil("fjs1_lp"), c, options));
     const DatasetTrace& tr = ds.drops[0].trace;
     ASSERT_GT(tr.size(), 20u);
     for (size_t i = 0; i < tr.size(); ++i) {

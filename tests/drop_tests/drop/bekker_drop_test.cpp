@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "drop_tests/drop/drop_factory.h"
+#include "drop_tests/drop/drop_setup.h"
 #include "drop_tests/drop/pad_drop.h"
 #include "drop_tests/catalog/catalog.h"
 #include "rft/bekker_law.h"
@@ -47,7 +48,7 @@ TEST(BekkerDrop, RigStopDepthFromTheEnergyBalance) {
       DropRunOptions options;
       options.rig.integrator.rtol = 1e-10;
       options.rig.integrator.atol = 1e-13;
-      const PadDrop d = SimulateDrop(flat, soil, BekkerDropConditions(speed, gravity), options);
+      const PadDrop d = RunDrop(ResolveDrop(flat, soil, BekkerDropConditions(speed, gravity), options));
       const double expected = BekkerEnergyBalanceDepth(flat.mass_kg, gravity, speed, area,
                                                        rft::BekkerModulus(soil.bekker, r), soil.bekker.n);
       EXPECT_NEAR(d.result.final_penetration_m, expected, 1e-6 * expected) << name << " v " << speed;
@@ -62,8 +63,8 @@ TEST(BekkerDrop, RigOnLunarGravityIsTheSameSoil) {
   // and the Earth only through the weight's work m g d (RFT's zeta would change with g too).
   const io::PadSpec flat = io::LoadPad("flat");
   const rft::SoilParameters soil = io::LoadSoil("lunar_nominal_bekker");
-  const double moon = RunPadDrop(flat, soil, BekkerDropConditions(1.0, 1.62)).result.final_penetration_m;
-  const double earth = RunPadDrop(flat, soil, BekkerDropConditions(1.0, 9.81)).result.final_penetration_m;
+  const double moon = RunDrop(ResolveDrop(flat, soil, BekkerDropConditions(1.0, 1.62))).result.final_penetration_m;
+  const double earth = RunDrop(ResolveDrop(flat, soil, BekkerDropConditions(1.0, 9.81))).result.final_penetration_m;
   EXPECT_GT(earth, moon);
   const double area = std::numbers::pi * 0.05 * 0.05, k = rft::BekkerModulus(soil.bekker, 0.05);
   EXPECT_NEAR(moon, BekkerEnergyBalanceDepth(1.6, 1.62, 1.0, area, k, 1.0), 1e-5 * moon);
@@ -73,10 +74,10 @@ TEST(BekkerDrop, FreeFlatPadAgreesWithTheRig) {
   const io::PadSpec flat = io::LoadPad("flat");
   for (const char* name : {"lunar_nominal_bekker", "toyoura_bekker"}) {
     const rft::SoilParameters soil = io::LoadSoil(name);
-    const PadDrop rig = RunPadDrop(flat, soil, BekkerDropConditions(1.0, 1.62));
+    const PadDrop rig = RunDrop(ResolveDrop(flat, soil, BekkerDropConditions(1.0, 1.62)));
     DropConditions c = BekkerDropConditions(1.0, 1.62);
     c.free = true;
-    const PadDrop free = SimulateDrop(flat, soil, c, {});
+    const PadDrop free = RunDrop(ResolveDrop(flat, soil, c));
     ASSERT_TRUE(free.free);
     EXPECT_EQ(rig.law_3d, rft::LawKind::kBekker);
     EXPECT_TRUE(rig.contact_model.empty());
@@ -104,10 +105,10 @@ TEST(BekkerDrop, FreePadSlidingFeelsTheShear) {
   rft::SoilParameters soil = io::LoadSoil("lunar_nominal_bekker");
   DropConditions c = BekkerDropConditions(1.0, 1.62);
   c.horizontal_speed_m_s = 0.5;
-  const PadDrop with_shear = SimulateDrop(flat, soil, c, {});
+  const PadDrop with_shear = RunDrop(ResolveDrop(flat, soil, c));
   soil.bekker.friction_angle_rad = 0.0;
   soil.bekker.cohesion_Pa = 0.0;
-  const PadDrop frictionless = SimulateDrop(flat, soil, c, {});
+  const PadDrop frictionless = RunDrop(ResolveDrop(flat, soil, c));
   ASSERT_TRUE(with_shear.free && frictionless.free);
   EXPECT_GT(frictionless.free->horizontal_travel_m, 1.2 * with_shear.free->horizontal_travel_m);
 }
@@ -117,7 +118,7 @@ TEST(BekkerDrop, LawAskedForOnAnRftSoilNeedsItsBlock) {
   DropConditions c = BekkerDropConditions(1.0, 1.62);
   c.law_3d = rft::LawKind::kBekker;
   try {
-    RunPadDrop(flat, io::LoadSoil("fjs1_lp"), c);
+    RunDrop(ResolveDrop(flat, io::LoadSoil("fjs1_lp"), c));
     ADD_FAILURE() << "no error";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("bekker"), std::string::npos) << e.what();

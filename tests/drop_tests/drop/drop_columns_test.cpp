@@ -11,6 +11,7 @@
 
 #include "drop_tests/catalog/catalog.h"
 #include "drop_tests/drop/free_drop_output.h"
+#include "drop_tests/drop/drop_setup.h"
 #include "drop_tests/drop/pad_drop.h"
 
 namespace touchdown::drop {
@@ -33,7 +34,7 @@ std::vector<std::string> ColumnNames(const std::vector<TraceColumn<Sample>>& col
 TEST(DropColumns, RigSummaryAndTraceAreTheirTables) {
   DropConditions conditions;
   conditions.impact_speed_m_s = 1.0;
-  const PadDrop d = RunPadDrop(io::LoadPad("flat"), io::LoadSoil("fjs1_lp"), conditions);
+  const PadDrop d = RunDrop(ResolveDrop(io::LoadPad("flat"), io::LoadSoil("fjs1_lp"), conditions));
   const nlohmann::json j = SummaryJson(d);
   for (const ResultNumber<pad::RigDropResult>& n : RigMetrics()) {
     ASSERT_TRUE(j.contains(n.name)) << n.name;

@@ -1,5 +1,5 @@
 // The drop factory (drop_tests/drop/drop_factory.h): the zeta override and its gravity scaling
-// against the closed form, and SimulateDrop's drops made of the factory's pieces bit for bit.
+// against the closed form, and RunDrop's drops made of the factory's pieces bit for bit.
 #include "drop_tests/drop/drop_factory.h"
 
 #include <gtest/gtest.h>
@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "drop_tests/drop/drop_setup.h"
 #include "drop_tests/drop/pad_drop.h"
 #include "drop_tests/model/contact_model.h"
 #include "drop_tests/model/effects.h"
@@ -67,18 +68,18 @@ TEST(DropFactory, SoilsDynamicTermIsInertialDragOnRigAndFreePad) {
     c.free = free;
     DropConditions with_effect = c;
     with_effect.effects.inertial_lambda = 0.8;
-    const PadDrop a = RunPadDrop(pad, dynamic, c), b = RunPadDrop(pad, plain, with_effect);
+    const PadDrop a = RunDrop(ResolveDrop(pad, dynamic, c)), b = RunDrop(ResolveDrop(pad, plain, with_effect));
     EXPECT_EQ(a.result.final_penetration_m, b.result.final_penetration_m);
     EXPECT_EQ(a.result.peak_force_N, b.result.peak_force_N);
-    EXPECT_LT(a.result.final_penetration_m, RunPadDrop(pad, plain, c).result.final_penetration_m);
+    EXPECT_LT(a.result.final_penetration_m, RunDrop(ResolveDrop(pad, plain, c)).result.final_penetration_m);
     DropConditions replaced = c;
     replaced.effects.inertial_replaces_soil = true;  // a model's inertial_drag at lambda 0
-    EXPECT_EQ(RunPadDrop(pad, dynamic, replaced).result.final_penetration_m,
-              RunPadDrop(pad, plain, c).result.final_penetration_m);
+    EXPECT_EQ(RunDrop(ResolveDrop(pad, dynamic, replaced)).result.final_penetration_m,
+              RunDrop(ResolveDrop(pad, plain, c)).result.final_penetration_m);
   }
 }
 
-TEST(DropFactory, SimulateDropIsTheFactorysRigDropBitForBit) {
+TEST(DropFactory, RunDropIsTheFactorysRigDropBitForBit) {
   const io::PadSpec pad = io::LoadPad("curved");
   const rft::SoilParameters soil = io::LoadSoil("fjs1_lp");
   DropConditions c;
@@ -91,12 +92,12 @@ TEST(DropFactory, SimulateDropIsTheFactorysRigDropBitForBit) {
   for (const model::EffectParameterInfo& q : model::FindEffect("rate_damping").parameters)
     damping.values.push_back(2 * q.start + q.scale);
   c.effects = model::MakeEffectTerms({damping});
-  const PadDrop drop = SimulateDrop(pad, soil, c, {});
+  const PadDrop drop = RunDrop(ResolveDrop(pad, soil, c));
 
   const rft::SoilParameters drop_soil = DropSoil(soil, c.zeta_N_m3, c.atmosphere);
   const auto intrusion = MakeRigIntrusion(pad.profile);
   const pad::EffectSoilResponse response = MakeRigResponse(*intrusion, drop_soil, kMoonG, c.effects);
-  const pad::RigDropResult own = pad::RunRigDrop({2.0, kMoonG, 1.1}, response, {});
+  const pad::RigDropResult own = pad::RunRigDrop({{2.0}, &response, {kMoonG, 1.1}, {}});
   ASSERT_EQ(drop.result.trace.size(), own.trace.size());
   ASSERT_GT(own.trace.size(), 10u);
   for (size_t i = 0; i < own.trace.size(); ++i) {
@@ -118,7 +119,7 @@ TEST(DropFactory, FreeDropRunsTheFactorysLaw) {
   c.gravity_m_s2 = kMoonG;
   c.zeta_N_m3 = 2.0e6;
   c.tilt_rad = 0.1;
-  const PadDrop drop = SimulateDrop(pad, soil, c, {});
+  const PadDrop drop = RunDrop(ResolveDrop(pad, soil, c));
   ASSERT_TRUE(drop.free.has_value());
   const auto law = model::MakeContactModel({.soil = DropSoil(soil, c.zeta_N_m3, std::nullopt), .gravity_m_s2 = kMoonG});
   EXPECT_EQ(drop.contact_model, law.name());
@@ -127,7 +128,7 @@ TEST(DropFactory, FreeDropRunsTheFactorysLaw) {
   in.impact_speed_m_s = 0.8;
   in.tilt_rad = 0.1;
   in.gravity_m_s2 = kMoonG;
-  const pad::FreeDropResult own = pad::RunFreeDrop(pad.body, rft::UniformTerrain("soil", law), in, {});
+  const pad::FreeDropResult own = pad::RunFreeDrop({&pad.body, rft::UniformTerrain("soil", law), in, {}});
   EXPECT_EQ(drop.free->final_penetration_m, own.final_penetration_m);
   EXPECT_EQ(drop.free->peak_force_N, own.peak_force_N);
   EXPECT_EQ(drop.free->final_tilt_deg, own.final_tilt_deg);

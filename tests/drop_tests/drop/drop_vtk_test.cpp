@@ -1,6 +1,7 @@
 // `drop --free --vtk DIR` (drop_tests/drop/drop_vtk.h) and the free drop's pose columns: the series
 // lists every sample with its time, its frames hold the stresses the contact gives at that pose, and
 // the trace carries the pose that draws it.
+#include "drop_tests/drop/drop_setup.h"
 #include "drop_tests/drop/drop_vtk.h"
 
 #include <Eigen/Geometry>
@@ -34,24 +35,28 @@ class DropVtkTest : public testing_scratch::ScratchDirTest {
     c.tilt_rad = units::DegToRad(5.0);
     c.tilt_axis = pad::TiltAxis::kY;
     c.omega_W = Eigen::Vector3d(0.0, 0.0, 2.0);
-    drop_ = new PadDrop(SimulateDrop(*pad_, *soil_, c, {}));
+    setup_ = new DropSetup(ResolveDrop(*pad_, *soil_, c));
+    drop_ = new PadDrop(RunDrop(*setup_));
   }
   static void TearDownTestSuite() {
     delete drop_;
+    delete setup_;
     delete soil_;
     delete pad_;
   }
   static io::PadSpec* pad_;
   static rft::SoilParameters* soil_;
+  static DropSetup* setup_;
   static PadDrop* drop_;
 };
 io::PadSpec* DropVtkTest::pad_ = nullptr;
 rft::SoilParameters* DropVtkTest::soil_ = nullptr;
+DropSetup* DropVtkTest::setup_ = nullptr;
 PadDrop* DropVtkTest::drop_ = nullptr;
 
 TEST_F(DropVtkTest, SeriesListsEverySampleWithItsTimeAndTheStressesAtThatPose) {
   const std::string out = Path("vtk");
-  WriteDropVtk(*drop_, *pad_, out);
+  WriteDropVtk(*setup_, *drop_, out);
   const std::vector<pad::FreeDropSample>& trace = drop_->free->trace;
   const auto sets = ReadXmlFile(out + "/drop.pvd").One("Collection").All("DataSet");
   // Samples at the same time (the rest event on the output grid) make one frame.
@@ -125,14 +130,15 @@ TEST_F(DropVtkTest, BekkerSoilWithShearWritesItsSeriesAndCarriesJ) {
   c.gravity_m_s2 = 1.62;
   c.free = true;
   c.horizontal_speed_m_s = 0.3;
-  const PadDrop bekker = SimulateDrop(flat, io::LoadSoil("lunar_nominal_bekker"), c, {});
+  const DropSetup bekker_setup = ResolveDrop(flat, io::LoadSoil("lunar_nominal_bekker"), c);
+  const PadDrop bekker = RunDrop(bekker_setup);
   ASSERT_TRUE(bekker.free);
   const std::vector<pad::FreeDropSample>& trace = bekker.free->trace;
   EXPECT_EQ(trace.front().shear_displacement_m, 0.0);
   EXPECT_GT(trace.back().shear_displacement_m, 0.5 * bekker.free->horizontal_travel_m);
   for (size_t i = 1; i < trace.size(); ++i) EXPECT_GE(trace[i].shear_displacement_m, trace[i - 1].shear_displacement_m);
   const std::string out = Path("bekker_vtk");
-  WriteDropVtk(bekker, flat, out);
+  WriteDropVtk(bekker_setup, bekker, out);
   EXPECT_GT(ReadXmlFile(out + "/drop.pvd").One("Collection").All("DataSet").size(), 10u);
 }
 
@@ -140,7 +146,7 @@ TEST_F(DropVtkTest, RefusesADirectoryOfTheUsers) {
   std::filesystem::create_directories(Path("mine"));
   Write("mine/keep.txt", "mine\n");
   EXPECT_THROW(CheckDropVtkTarget(Path("mine")), InputError);
-  EXPECT_THROW(WriteDropVtk(*drop_, *pad_, Path("mine")), InputError);
+  EXPECT_THROW(WriteDropVtk(*setup_, *drop_, Path("mine")), InputError);
   EXPECT_EQ(Slurp(Path("mine/keep.txt")), "mine\n");
 }
 

@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "drop_tests/drop/drop_setup.h"
 #include "drop_tests/drop/pad_drop.h"
 #include "drop_tests/catalog/catalog.h"
 #include "drop_tests/model/effects.h"
@@ -22,7 +23,7 @@ TEST_P(EveryEffect, PadDropKeepsEnergyBookkeeping) {
   c.atmosphere = rft::Atmosphere::kAir;
   c.effects = model::MakeEffectTerms({e});
   for (const char* pad_name : {"flat", "curved"}) {
-    const PadDrop drop = RunPadDrop(io::LoadPad(pad_name), io::LoadSoil("fjs1_lp"), c);
+    const PadDrop drop = RunDrop(ResolveDrop(io::LoadPad(pad_name), io::LoadSoil("fjs1_lp"), c));
     const pad::RigDropResult& r = drop.result;
     const double input = r.impact_energy_J + r.gravity_work_J;
     EXPECT_NEAR(r.dissipated_energy_J, input, 1e-6 * input) << pad_name;

@@ -1,5 +1,5 @@
 // The free pad drop with the catalogue's pads and soils (drop layer): the level drop against the
-// rig drop of drop::RunPadDrop, and every shipped pad tilted about x and y.
+// rig drop of drop::RunDrop, and every shipped pad tilted about x and y.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "drop_tests/drop/drop_setup.h"
 #include "drop_tests/drop/pad_drop.h"
 #include "drop_tests/catalog/catalog.h"
 #include "lander/pad/free_drop.h"
@@ -25,10 +26,10 @@ TEST(FreeDrop, VerticalLevelDropMatchesTheRigDrop) {
   const rft::SoilContactModel law = rft::MakeSoilContactModel(rft::LawKind::kLi2013, soil, 9.81, {});
   FreeDropInput in;
   in.impact_speed_m_s = 1.0;
-  const FreeDropResult free = RunFreeDrop(pad.body, rft::UniformTerrain("soil", law), in);
+  const FreeDropResult free = RunFreeDrop({&pad.body, rft::UniformTerrain("soil", law), in, {}});
   drop::DropConditions c;
   c.impact_speed_m_s = 1.0;
-  const RigDropResult rig = drop::RunPadDrop(pad, soil, c).result;
+  const RigDropResult rig = drop::RunDrop(drop::ResolveDrop(pad, soil, c)).result;
   EXPECT_NEAR(free.final_penetration_m, rig.final_penetration_m, 2e-3 * rig.final_penetration_m);
   EXPECT_NEAR(free.peak_force_N, rig.peak_force_N, 5e-3 * rig.peak_force_N);
   EXPECT_NEAR(free.final_tilt_deg, 0.0, 1e-9);
@@ -79,7 +80,7 @@ TEST_P(ShippedPadFreeDrop, LandsAtEveryTiltAboutXAndY) {
         in.tilt_rad = tilt_deg * std::numbers::pi / 180.0;
         in.tilt_axis = pad::ParseTiltAxis(axis);
         FreeDropResult r;
-        ASSERT_NO_THROW(r = RunFreeDrop(pad.body, rft::UniformTerrain("soil", law), in));
+        ASSERT_NO_THROW(r = RunFreeDrop({&pad.body, rft::UniformTerrain("soil", law), in, {}}));
         ++drops;
         EXPECT_GT(r.final_penetration_m, 0.0);
         EXPECT_LT(r.final_penetration_m, 0.1);

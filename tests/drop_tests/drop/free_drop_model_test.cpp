@@ -31,7 +31,8 @@ DropRequest FreeRequest(const std::string& pad, double tilt_deg, double horizont
 
 PadDrop Run(const DropRequest& r) {
   const RequestNaming naming;
-  return RunDropRequest(r, RequestConditions(r, naming), naming);
+  const io::PadSpec pad = RequestPad(r, naming);
+  return RunDrop(ResolveDropRequest(r, pad, RequestConditions(r, naming), naming));
 }
 
 void ExpectWithinContract(const std::string& pad, double tilt_deg, double horizontal_m_s) {
@@ -78,7 +79,8 @@ TEST(FreeDropFastModel, RunsAtItsStatedResolution) {
 
 std::string Refusal(const DropRequest& r, const RequestNaming& naming) {
   try {
-    RunDropRequest(r, RequestConditions(r, naming), naming);
+    const DropConditions c = RequestConditions(r, naming);
+    ResolveDropRequest(r, RequestPad(r, naming), c, naming);
   } catch (const InputError& e) {
     return e.what();
   }

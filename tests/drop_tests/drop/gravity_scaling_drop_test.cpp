@@ -8,6 +8,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "drop_tests/drop/drop_setup.h"
 #include "drop_tests/drop/pad_drop.h"
 
 namespace touchdown::drop {
@@ -26,7 +27,7 @@ double SettlingDepth(const rft::SoilParameters& soil, double gravity_m_s2) {
   DropConditions c;
   c.impact_speed_m_s = 0.0;
   c.gravity_m_s2 = gravity_m_s2;
-  return RunPadDrop(io::LoadPad("flat"), soil, c).result.final_penetration_m;
+  return RunDrop(ResolveDrop(io::LoadPad("flat"), soil, c)).result.final_penetration_m;
 }
 
 TEST(GravityScalingDrop, LithostaticSettlingDepthIsTheSameAtEveryGravity) {

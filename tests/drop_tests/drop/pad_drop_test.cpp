@@ -1,4 +1,5 @@
 // One drop from the catalogue's pads: what the drop layer refuses before it simulates.
+#include "drop_tests/drop/drop_setup.h"
 #include "drop_tests/drop/pad_drop.h"
 
 #include <gtest/gtest.h>
@@ -16,7 +17,7 @@ TEST(PadDrop, RigDropOfAMeshPadIsRefused) {
   DropConditions conditions;
   conditions.impact_speed_m_s = 1.0;
   try {
-    RunPadDrop(hex, io::LoadSoil("fjs1_lp"), conditions);
+    RunDrop(ResolveDrop(hex, io::LoadSoil("fjs1_lp"), conditions));
     ADD_FAILURE() << "no error";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("hex.yaml: rig drop of mesh pads needs the 3D contact; use --free"),

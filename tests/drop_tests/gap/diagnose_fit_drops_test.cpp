@@ -1,5 +1,5 @@
 // diagnose's fitter builds its drops with the drop factory (drop_tests/drop/drop_factory.h): what
-// it simulates for a dataset drop under a fitted model is, bit for bit, what SimulateDrop's drop
+// it simulates for a dataset drop under a fitted model is, bit for bit, what RunDrop's drop
 // of the same pad, soil, atmosphere, zeta override and effects records.
 #include "drop_tests/gap/diagnose_fit.h"
 #include "lander/pad/effect_soil_response.h"
@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "drop_tests/dataset/synth.h"
+#include "drop_tests/drop/drop_setup.h"
 #include "drop_tests/drop/pad_drop.h"
 
 namespace touchdown::gap {
@@ -42,7 +43,7 @@ TEST(DiagnoseFitDrops, SimulatedRecordIsTheFactorysDrop) {
   c.effects = model.terms();
   drop::DropRunOptions options;
   options.rig = p.rig;
-  const drop::PadDrop drop = drop::SimulateDrop(io::LoadPad("curved"), io::LoadSoil("fjs1_lp"), c, options);
+  const drop::PadDrop drop = drop::RunDrop(drop::ResolveDrop(io::LoadPad("curved"), io::LoadSoil("fjs1_lp"), c, options));
   const dataset::DatasetTrace& tr = ds.drops[0].trace;
   ASSERT_EQ(fitted->size(), tr.size());
   for (size_t i = 0; i < tr.size(); ++i) {

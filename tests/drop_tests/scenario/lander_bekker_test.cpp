@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "drop_tests/drop/drop_setup.h"
 #include "drop_tests/drop/pad_drop.h"
 #include "drop_tests/catalog/catalog.h"
 #include "rft/bekker_law.h"
@@ -26,7 +27,7 @@ TEST(LanderBekker, ScenarioOnABekkerSoilLandsLikeOneQuarterPad) {
   c.mass_kg = sc.lander.total_mass_kg / 4.0;
   c.gravity_m_s2 = sc.gravity_m_s2;
   c.impact_speed_m_s = std::sqrt(2.0 * c.gravity_m_s2 * *sc.initial.drop_height_m);
-  const drop::PadDrop single = drop::RunPadDrop(sc.lander.pad, io::LoadSoil("lunar_nominal_bekker"), c);
+  const drop::PadDrop single = drop::RunDrop(drop::ResolveDrop(sc.lander.pad, io::LoadSoil("lunar_nominal_bekker"), c));
   std::printf("[ bekker lander ] pad 1 %.4f mm, single pad (m/4) %.4f mm\n", run.result.final_penetration_m[0] * 1e3,
               single.result.final_penetration_m * 1e3);
   for (int leg = 0; leg < kNumLegs; ++leg)

@@ -36,19 +36,19 @@ TEST(LanderDrop, RigidLanderLandingFlatMatchesSinglePadWithAQuarterOfTheMass) {
   const rft::SoilParameters soil = io::LoadSoil("fjs1_lp");
   const rft::SoilContactModel contact = rft::MakeSoilContactModel(
       rft::LawKind::kLi2013, soil, run.scenario.gravity_m_s2, rft::WithSoilDynamicTerm({}, soil));
-  const pad::VerticalResistance resistance = [&](double depth, double speed_down) {
+  const pad::FunctionSoilResponse resistance([&](double depth, double speed_down) {
     rft::PadKinematics k;
     k.p_WB = Eigen::Vector3d(0, 0, -pad.lowest_z_B - depth);
     k.v_WB_W = Eigen::Vector3d(0, 0, -std::max(speed_down, 1e-12));  // at rest: the direction only
     return rft::ComputeContactWrench(pad.surface, k, ground, *contact.law).force_W.z();
-  };
-  pad::RigDropInput in;
-  in.mass_kg = run.scenario.lander.total_mass_kg / 4.0;
-  in.gravity_m_s2 = run.scenario.gravity_m_s2;
-  in.impact_speed_m_s = std::sqrt(2.0 * in.gravity_m_s2 * *run.scenario.initial.drop_height_m);
-  pad::RigDropOptions options;
-  options.rest_duration_s = 0.0;
-  const pad::RigDropResult single = pad::RunRigDrop(in, resistance, options);
+  });
+  pad::RigDropSetup single_pad;
+  single_pad.body.mass_kg = run.scenario.lander.total_mass_kg / 4.0;
+  single_pad.terrain = &resistance;
+  single_pad.initial.gravity_m_s2 = run.scenario.gravity_m_s2;
+  single_pad.initial.impact_speed_m_s = std::sqrt(2.0 * run.scenario.gravity_m_s2 * *run.scenario.initial.drop_height_m);
+  single_pad.options.rest_duration_s = 0.0;
+  const pad::RigDropResult single = pad::RunRigDrop(single_pad);
   const double lander_depth = run.result.final_penetration_m[0];
   std::printf("[ single pad ] lander %.4f mm, single pad (m/4) %.4f mm\n", lander_depth * 1e3,
               single.final_penetration_m * 1e3);

@@ -78,7 +78,7 @@ void ExpectSameScenario(const LanderScenario& a, const LanderScenario& b) {
     EXPECT_EQ(a.paper->reading, b.paper->reading);
   }
   // The setup the run starts from: patches resolved to the same corners, the same soils and pose.
-  const LanderSetup p = BuildLanderSetup(a), q = BuildLanderSetup(b);
+  const lander::LanderSetup p = BuildLanderSetup(a), q = BuildLanderSetup(b);
   ASSERT_EQ(p.terrain.patches.size(), q.terrain.patches.size());
   for (size_t k = 0; k < p.terrain.patches.size(); ++k) {
     EXPECT_EQ(p.terrain.patches[k].name, q.terrain.patches[k].name);
@@ -320,7 +320,7 @@ TEST_F(LanderScenarioRoundTrip, ResolvedCopyMustMatchItsFiles) {
 // (built once): the one BuildLanderSetup gives the loaded scenario. A scenario file builds none.
 TEST_F(LanderScenarioRoundTrip, ResolvedCopyHandsBackItsSetup) {
   const std::string source = io::DataDirectory() + "/scenarios/lander_case_B.yaml";
-  std::optional<LanderSetup> setup;
+  std::optional<lander::LanderSetup> setup;
   LanderScenario s = LoadLanderScenarioWithSetup(source, setup);
   EXPECT_FALSE(setup.has_value());
   s.initial.pad_attitude = PadAttitude::kLevel;  // written as its word, read back to the enum
@@ -329,7 +329,7 @@ TEST_F(LanderScenarioRoundTrip, ResolvedCopyHandsBackItsSetup) {
   const LanderScenario again = LoadLanderScenarioWithSetup(Path("resolved.yaml"), setup);
   EXPECT_EQ(again.initial.pad_attitude, PadAttitude::kLevel);
   ASSERT_TRUE(setup.has_value());
-  const LanderSetup built = BuildLanderSetup(again);
+  const lander::LanderSetup built = BuildLanderSetup(again);
   EXPECT_EQ(setup->initial.p_WB, built.initial.p_WB);
   EXPECT_EQ(setup->initial.R_WP, built.initial.R_WP);
   ASSERT_EQ(setup->terrain.patches.size(), built.terrain.patches.size());

@@ -121,11 +121,11 @@ TEST(LanderSimilitude, RightHandSideOfTheModelScaledByFourIsTheModelsToTheLastBi
   scenario::LanderScenario big = Scaled(lab, k);
   Asymmetric(lab, 0.08);
   Asymmetric(big, k * 0.08);
-  const scenario::LanderSetup A = scenario::BuildLanderSetup(lab), B = scenario::BuildLanderSetup(big);
+  const lander::LanderSetup A = scenario::BuildLanderSetup(lab), B = scenario::BuildLanderSetup(big);
   const StateLayout L(A.model);
   ASSERT_EQ(L.size, StateLayout(B.model).size);
   // Lowered 12 mm (x k) from release, turning (rad/s / k), pads tilted on their joints.
-  const auto state = [&](const scenario::LanderSetup& S, double scale) {
+  const auto state = [&](const lander::LanderSetup& S, double scale) {
     Eigen::VectorXd y = Eigen::VectorXd::Zero(L.size);
     const Eigen::Quaterniond q(S.initial.R_WB);
     y.segment<3>(L.p_WB()) = S.initial.p_WB - Eigen::Vector3d(0.0, 0.0, 0.012 * scale);

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <map>
 
+#include "drop_tests/drop/drop_setup.h"
 #include "drop_tests/drop/pad_drop.h"
 #include "drop_tests/scenario/campaign.h"
 
@@ -76,8 +77,8 @@ TEST_F(PaperCampaign, CurvedPadFitGivesThePapersRftRatioUnderQuasiStaticRft) {
   lp.dynamic_term = false;  // the paper's RFT
   drop::DropConditions c;
   c.impact_speed_m_s = 1.0;
-  const double ratio = drop::RunPadDrop(io::LoadPad("curved"), lp, c).result.final_penetration_m /
-                       drop::RunPadDrop(io::LoadPad("flat"), lp, c).result.final_penetration_m;
+  const double ratio = drop::RunDrop(drop::ResolveDrop(io::LoadPad("curved"), lp, c)).result.final_penetration_m /
+                       drop::RunDrop(drop::ResolveDrop(io::LoadPad("flat"), lp, c)).result.final_penetration_m;
   EXPECT_NEAR(ratio, 2.0, 1e-3);  // tools/fit_curved_pad solves it to 1e-4 of a1
 }
 

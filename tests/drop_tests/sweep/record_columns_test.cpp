@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "drop_tests/drop/drop_columns.h"
+#include "drop_tests/drop/drop_setup.h"
 #include "drop_tests/drop/pad_drop.h"
 #include "drop_tests/formats/dataset_csv.h"
 #include "drop_tests/sweep/results_db.h"
@@ -57,7 +58,7 @@ TEST(RecordColumns, SummaryDatabaseAndExportHoldTheSameRigDrop) {
   c.impact_speed_m_s = 1.0;
   drop::DropRunOptions o;
   o.rig = plan.rig;
-  const nlohmann::json j = drop::SummaryJson(drop::SimulateDrop(plan.pads[0], plan.soils[0], c, o));
+  const nlohmann::json j = drop::SummaryJson(drop::RunDrop(drop::ResolveDrop(plan.pads[0], plan.soils[0], c, o)));
   for (const drop::ResultNumber<pad::RigDropResult>& m : drop::RigMetrics())
     EXPECT_EQ(j[m.name].get<double>(), RecordNumberNamed(m.name).Of(r)) << m.name;
   EXPECT_EQ(j["solver_steps"].get<int64_t>(), r.solver_steps);

@@ -14,6 +14,7 @@
 #include "drop_tests/dataset/calibrate.h"
 #include "drop_tests/dataset/compare.h"
 #include "drop_tests/dataset/dataset.h"
+#include "drop_tests/drop/drop_setup.h"
 #include "drop_tests/drop/pad_drop.h"
 #include "drop_tests/formats/dataset_csv.h"
 #include "drop_tests/sweep/results_db.h"
@@ -111,7 +112,7 @@ grid: {pad: [coarse_hex.yaml, flat], impact_speed_m_s: [1.0]}
   c.free = true;
   drop::DropRunOptions o;
   o.free.integrator.max_wall_time_s = kDefaultMaxDropWallTimeS;
-  const drop::PadDrop direct = drop::SimulateDrop(plan.pads[0], plan.soils[0], c, o);
+  const drop::PadDrop direct = drop::RunDrop(drop::ResolveDrop(plan.pads[0], plan.soils[0], c, o));
   EXPECT_EQ(direct.result.final_penetration_m, hex.final_penetration_m);
   EXPECT_EQ(direct.result.peak_force_N, hex.peak_force_N);
   const std::vector<DropRecord> again = RunSweepInMemory(plan, 1);

@@ -1,5 +1,5 @@
 // A sweep's pad drops are the drop factory's drops (drop_tests/drop/drop_factory.h): each
-// record's trace is SimulateDrop's for the same pad, soil, gravity, mass and zeta override, bit
+// record's trace is RunDrop's for the same pad, soil, gravity, mass and zeta override, bit
 // for bit, and its zeta is the override scaled to the drop's gravity.
 #include <gtest/gtest.h>
 
@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include "drop_tests/drop/drop_factory.h"
+#include "drop_tests/drop/drop_setup.h"
 #include "drop_tests/drop/pad_drop.h"
 #include "drop_tests/sweep/sweep_drop.h"
 #include "drop_tests/sweep/sweep_spec.h"
@@ -45,7 +46,7 @@ random: {samples: 2, seed: 3, pad_mass_kg: {uniform: [1.2, 2.0]}, zeta_N_cm3: {c
     c.zeta_N_m3 = p.zeta_N_m3;
     drop::DropRunOptions options;
     options.rig = plan.rig;
-    const drop::PadDrop own = drop::SimulateDrop(plan.pads[p.pad], plan.soils[p.soil], c, options);
+    const drop::PadDrop own = drop::RunDrop(drop::ResolveDrop(plan.pads[p.pad], plan.soils[p.soil], c, options));
     ASSERT_EQ(r.trace.size(), own.result.trace.size()) << i;
     for (size_t k = 0; k < r.trace.size(); ++k) {
       ASSERT_EQ(r.trace[k].force_N, own.result.trace[k].force_N) << i << " " << k;

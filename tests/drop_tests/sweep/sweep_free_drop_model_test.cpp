@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "drop_tests/drop/drop_factory.h"
+#include "drop_tests/drop/drop_setup.h"
 #include "drop_tests/drop/pad_drop.h"
 #include "drop_tests/sweep/results_db.h"
 #include "drop_tests/sweep/sweep.h"
@@ -81,7 +82,7 @@ TEST_F(SweepFreeDropModel, FreeDropsAreTheFastDropsAndRigDropsStay) {
     o.free.integrator.max_wall_time_s = kDefaultMaxDropWallTimeS;
     o.free.integrator.max_rhs_evaluations = kDefaultMaxDropEvaluations;
     const drop::PadDrop direct =
-        drop::SimulateDrop(drop::FreeDropPad(pad, drop::FreeDropModel::kFast, "test", "fast"), fast.soils[0], c, o);
+        drop::RunDrop(drop::ResolveDrop(drop::FreeDropPad(pad, drop::FreeDropModel::kFast, "test", "fast"), fast.soils[0], c, o));
     ASSERT_TRUE(direct.free.has_value());
     EXPECT_EQ(direct.result.final_penetration_m, f[i].final_penetration_m) << f[i].drop_id;
     EXPECT_EQ(direct.result.peak_force_N, f[i].peak_force_N) << f[i].drop_id;

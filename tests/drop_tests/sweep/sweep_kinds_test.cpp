@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "drop_tests/dataset/dataset.h"
+#include "drop_tests/drop/drop_setup.h"
 #include "drop_tests/drop/pad_drop.h"
 #include "drop_tests/sweep/results_db.h"
 #include "drop_tests/sweep/sweep.h"
@@ -95,7 +96,7 @@ grid: {tilt_deg: [0, 2], horizontal_speed_m_s: [0, 0.1]}
   drop::DropConditions c;
   c.impact_speed_m_s = 1.0;
   c.tilt_rad = 2.0 * M_PI / 180.0;
-  const drop::PadDrop direct = drop::SimulateDrop(plan.pads[0], plan.soils[0], c, {});
+  const drop::PadDrop direct = drop::RunDrop(drop::ResolveDrop(plan.pads[0], plan.soils[0], c));
   EXPECT_EQ(direct.result.final_penetration_m, tilted.final_penetration_m);
   EXPECT_EQ(direct.free->final_tilt_deg, tilted.final_tilt_deg);
   // Any thread count gives the same records.
@@ -133,7 +134,7 @@ grid: {impact_speed_m_s: [0.8, 1.2]}
     c.effects.inertial_lambda = 4.0;
     pad::RigDropOptions rig;
     rig.rest_duration_s = 0.0;  // a sweep's default: summaries only
-    EXPECT_EQ(drop::RunPadDrop(io::LoadPad("flat"), io::LoadSoil("fjs1_lp"), c, rig).result.final_penetration_m,
+    EXPECT_EQ(drop::RunDrop(drop::ResolveDrop(io::LoadPad("flat"), io::LoadSoil("fjs1_lp"), c, {.rig = rig})).result.final_penetration_m,
               a[i].final_penetration_m);
   }
   // Every effect has a 3D form: a model with added mass loads for rig and tilted (free) sweeps alike.

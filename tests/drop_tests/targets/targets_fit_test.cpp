@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "drop_tests/drop/drop_setup.h"
 #include "drop_tests/targets/target_evaluation.h"
 #include "drop_tests/targets/targets_fit.h"
 #include "rft/units.h"
@@ -21,7 +22,7 @@ drop::PadDrop RigDropAtZeta(const std::string& pad, const std::string& soil, dou
   drop::DropConditions c;
   c.impact_speed_m_s = speed;
   c.zeta_N_m3 = units::ZetaFromN_cm3(zeta_N_cm3);
-  return drop::RunPadDrop(io::LoadPad(pad), io::LoadSoil(soil), c);
+  return drop::RunDrop(drop::ResolveDrop(io::LoadPad(pad), io::LoadSoil(soil), c));
 }
 
 std::string Num(double v) {
@@ -88,7 +89,7 @@ drop::PadDrop RigDropAtLambda(double zeta_N_cm3, double lambda, double speed) {
   drop::DropConditions c;
   c.impact_speed_m_s = speed;
   c.zeta_N_m3 = units::ZetaFromN_cm3(zeta_N_cm3);
-  return drop::RunPadDrop(io::LoadPad("flat"), soil, c);
+  return drop::RunDrop(drop::ResolveDrop(io::LoadPad("flat"), soil, c));
 }
 
 TEST_F(TargetsFit, RecoversZetaAndTheDynamicTermsLambdaJointly) {
@@ -155,7 +156,7 @@ TEST_F(TargetsFit, RecoversABekkerSoilsNKcAndKphiFromTwoPadsAndTwoSpeeds) {
   for (size_t k = 0; k < drops.size(); ++k) {
     drop::DropConditions c;
     c.impact_speed_m_s = drops[k].second;
-    const drop::PadDrop d = drop::RunPadDrop(io::LoadPad(drops[k].first), truth, c);
+    const drop::PadDrop d = drop::RunDrop(drop::ResolveDrop(io::LoadPad(drops[k].first), truth, c));
     for (const auto& [q, v] : std::vector<std::pair<std::string, double>>{
              {"final_penetration_m", d.result.final_penetration_m}, {"peak_force_N", d.result.peak_force_N}})
       targets += "  - {name: " + q + "_" + std::to_string(k) + ", drop: {pad: " + drops[k].first +
@@ -204,12 +205,12 @@ TEST_F(TargetsFit, LambdaAloneKeepsTheSoilsZetaBitForBit) {
   TargetEvaluator evaluator(file, 1);
   drop::DropConditions c;
   c.impact_speed_m_s = 1.0;
-  const drop::PadDrop plain = drop::RunPadDrop(io::LoadPad("flat"), io::LoadSoil("fjs1_lp"), c);
+  const drop::PadDrop plain = drop::RunDrop(drop::ResolveDrop(io::LoadPad("flat"), io::LoadSoil("fjs1_lp"), c));
   EXPECT_EQ(evaluator.Run({1.1}, false)[0].final_penetration_m, plain.result.final_penetration_m);
   // At lambda 0 the drop is the soil's with its file's zeta and no inertial stress: deeper.
   rft::SoilParameters no_inertia = io::LoadSoil("fjs1_lp");
   no_inertia.dynamic_lambda = 0.0;
-  const double deeper = drop::RunPadDrop(io::LoadPad("flat"), no_inertia, c).result.final_penetration_m;
+  const double deeper = drop::RunDrop(drop::ResolveDrop(io::LoadPad("flat"), no_inertia, c)).result.final_penetration_m;
   EXPECT_EQ(evaluator.Run({0.0}, false)[0].final_penetration_m, deeper);
   EXPECT_GT(deeper, plain.result.final_penetration_m);
 }
@@ -339,7 +340,7 @@ TEST_F(TargetsFit, FitsARatioOfTwoScenarios) {
   // The same ratio from two drops run here at the fitted zeta.
   drop::DropConditions own;
   own.impact_speed_m_s = 1.0;
-  const double lp = drop::RunPadDrop(io::LoadPad("flat"), io::LoadSoil("fjs1_lp"), own).result.final_penetration_m;
+  const double lp = drop::RunDrop(drop::ResolveDrop(io::LoadPad("flat"), io::LoadSoil("fjs1_lp"), own)).result.final_penetration_m;
   const double cp = RigDropAtZeta("flat", "fjs1_cp", fit.parameters[0].value).result.final_penetration_m;
   EXPECT_NEAR(lp / cp, fit.targets[0].simulated, 1e-12);
 }

@@ -46,9 +46,8 @@ LanderRunResult SlidingLanding(const std::optional<ConeLimit>& cone) {
   for (Eigen::Matrix3d& R_WP : s.R_WP) R_WP = s.R_WB;
   s.v_WB_W = Eigen::Vector3d(0.5, 0.0, 0.0);
   s.p_WB.z() = BodyHeightForClearance(setup.model, setup.terrain, s, setup.drop_height_m);
-  LanderRunOptions options;
-  options.duration_s = 1.0;
-  return SimulateLander(setup.model, setup.terrain, setup.initial, options);
+  setup.options.duration_s = 1.0;
+  return SimulateLander(setup);
 }
 
 Eigen::Matrix3d Rotation(const Eigen::Vector4d& q_wxyz) {

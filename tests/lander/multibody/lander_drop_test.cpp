@@ -35,7 +35,8 @@ LanderRunOptions CaseOptions() {
 
 CaseRun RunCase(char ground_case, const LanderRunOptions& options) {
   CaseRun run{std::string("lander_case_") + ground_case, test::MakePaperLander(ground_case), {}, {}};
-  run.result = SimulateLander(run.setup.model, run.setup.terrain, run.setup.initial, options);
+  run.setup.options = options;
+  run.result = SimulateLander(run.setup);
   const StateLayout L(run.setup.model);
   const LanderPose pose = ComputePose(run.setup.model, L, run.result.final_state);
   for (int i = 0; i < kNumLegs; ++i) {
@@ -148,7 +149,8 @@ TEST(LanderDrop, ThreeHeldPadsThatFixTheBodyAreARest) {
   setup.terrain.surface = std::make_shared<rft::PlaneGround>(0.0, -std::tan(10.0 * kDeg), 0.0);
   setup.initial.v_WB_W = Eigen::Vector3d(0.0, 0.5, 0.0);
   setup.initial.p_WB.z() = BodyHeightForClearance(setup.model, setup.terrain, setup.initial, setup.drop_height_m);
-  const LanderRunResult r = SimulateLander(setup.model, setup.terrain, setup.initial, CaseOptions());
+  setup.options = CaseOptions();
+  const LanderRunResult r = SimulateLander(setup);
   ASSERT_TRUE(r.rest_time_s);
   EXPECT_FALSE(r.tipped_over);
   ASSERT_FALSE(r.events.empty());

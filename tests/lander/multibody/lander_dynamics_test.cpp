@@ -43,12 +43,12 @@ TEST(LanderDynamics, FreeFlightConservesEnergyAndMomentum) {
   setup.initial.p_WB.z() = 100.0;
   setup.initial.w_WB_W = Eigen::Vector3d(1.5, -2.0, 3.0);
   setup.initial.v_WB_W = Eigen::Vector3d(0.3, 0.0, -1.0);
-  LanderRunOptions options;
+  LanderRunOptions& options = setup.options;
   options.duration_s = 0.3;
   // Conservation is a property of the equations: check it at a tolerance far below the default's.
   options.integrator.rtol = 1e-10;
   const StateLayout L(setup.model);
-  const LanderRunResult r = SimulateLander(setup.model, setup.terrain, setup.initial, options);
+  const LanderRunResult r = SimulateLander(setup);
   ASSERT_FALSE(r.first_touchdown_s);
   const double E0 = r.initial_energy_J;
   EXPECT_NEAR(r.final_kinetic_J + r.final_potential_J, E0, 1e-8 * std::abs(E0));
@@ -56,12 +56,12 @@ TEST(LanderDynamics, FreeFlightConservesEnergyAndMomentum) {
 
   // Linear momentum changes by M g t; angular momentum about the CoM is conserved.
   Eigen::VectorXd y0 = r.final_state;  // rebuild the initial state through a zero-length run
-  LanderRunOptions zero = options;
-  zero.duration_s = 1e-9;
-  const Eigen::VectorXd y_start = SimulateLander(setup.model, setup.terrain, setup.initial, zero).final_state;
+  LanderSetup zero = setup;
+  zero.options.duration_s = 1e-9;
+  const Eigen::VectorXd y_start = SimulateLander(zero).final_state;
   const Momenta a = ComputeMomenta(setup.model, L, y_start), b = ComputeMomenta(setup.model, L, y0);
   const double M = setup.model.TotalMass(), g = setup.model.gravity_m_s2;
-  EXPECT_NEAR((b.linear - a.linear - Eigen::Vector3d(0, 0, -M * g * (options.duration_s - zero.duration_s))).norm(),
+  EXPECT_NEAR((b.linear - a.linear - Eigen::Vector3d(0, 0, -M * g * (options.duration_s - zero.options.duration_s))).norm(),
               0.0, 1e-7);
   EXPECT_LT((b.angular_about_com - a.angular_about_com).norm(), 1e-8 * a.angular_about_com.norm());
   EXPECT_GT(a.angular_about_com.norm(), 0.01);  // the check is not vacuous

@@ -40,10 +40,9 @@ TEST(LanderJanosi, PadsCarryJOnlyOnABekkerSoilWithShear) {
 }
 
 TEST(LanderJanosi, SidewaysLandingBalancesEnergyAndAccumulatesSlip) {
-  const test::PaperLander setup = JanosiLander(0.3);
-  LanderRunOptions options;
-  options.duration_s = 1.0;
-  const LanderRunResult r = SimulateLander(setup.model, setup.terrain, setup.initial, options);
+  test::PaperLander setup = JanosiLander(0.3);
+  setup.options.duration_s = 1.0;
+  const LanderRunResult r = SimulateLander(setup);
   const StateLayout L(setup.model, true);
   ASSERT_EQ(r.final_state.size(), L.size);
   EXPECT_FALSE(r.tipped_over);

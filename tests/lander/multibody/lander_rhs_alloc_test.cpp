@@ -15,12 +15,11 @@ namespace {
 TEST(LanderRightHandSide, DoesNotAllocate) {
   if (!testing_alloc::kCountsMalloc) GTEST_SKIP() << "malloc is not counted under AddressSanitizer";
   ASSERT_GE(testing_alloc::AllocationsOfAnEigenBuffer(), 1);  // the counter works, for Eigen's buffers too
-  const test::PaperLander setup = test::MakePaperLander('A');
+  test::PaperLander setup = test::MakePaperLander('A');
   const StateLayout L(setup.model);
-  LanderRunOptions options;
-  options.duration_s = 0.4;
+  setup.options.duration_s = 0.4;
   // At rest on the soil: every pad submerged.
-  const Eigen::VectorXd y = SimulateLander(setup.model, setup.terrain, setup.initial, options).final_state;
+  const Eigen::VectorXd y = SimulateLander(setup).final_state;
   LanderData data;
   LanderEvaluation e;
   e.u_dot = Eigen::VectorXd::Zero(L.nu);

@@ -195,11 +195,10 @@ test::PaperLander TallLanderOnSlope(const TipLanding& landing) {
 }
 
 LanderRunResult LandTall(const TipLanding& landing, double duration_s) {
-  const test::PaperLander setup = TallLanderOnSlope(landing);
-  LanderRunOptions options;
-  options.duration_s = duration_s;
-  options.sample_rate_hz = 100.0;  // the verdict and the final state are all these tests read
-  return SimulateLander(setup.model, setup.terrain, setup.initial, options);
+  test::PaperLander setup = TallLanderOnSlope(landing);
+  setup.options.duration_s = duration_s;
+  setup.options.sample_rate_hz = 100.0;  // the verdict and the final state are all these tests read
+  return SimulateLander(setup);
 }
 
 // The tall lander after a slow landing on a 5 deg slope, at rest (shared by the tests below).
@@ -356,12 +355,11 @@ namespace {
 // zero, so the tip-over is declared at the first touchdown, or at release if a pad already touches.
 TEST(TipOverCriteria, ALanderOutsideItsSupportPolygonAtTouchdownIsOver) {
   const double slope = 20.0 * units::kDeg;
-  const test::PaperLander falling = TallLanderOnSlope({slope, 0.0, 0.0});
+  test::PaperLander falling = TallLanderOnSlope({slope, 0.0, 0.0});
   const StateLayout L(falling.model);
-  LanderRunOptions options;
-  options.duration_s = 0.5;
-  options.sample_rate_hz = 100.0;
-  const LanderRunResult r = SimulateLander(falling.model, falling.terrain, falling.initial, options);
+  falling.options.duration_s = 0.5;
+  falling.options.sample_rate_hz = 100.0;
+  const LanderRunResult r = SimulateLander(falling);
   ASSERT_TRUE(r.first_touchdown_s);
   EXPECT_TRUE(r.tipped_over);
   ASSERT_FALSE(r.events.empty());
@@ -372,7 +370,7 @@ TEST(TipOverCriteria, ALanderOutsideItsSupportPolygonAtTouchdownIsOver) {
   test::PaperLander standing = falling;
   standing.initial.v_WB_W.setZero();
   standing.initial.p_WB.z() = BodyHeightForClearance(standing.model, standing.terrain, standing.initial, 0.0);
-  const LanderRunResult at_release = SimulateLander(standing.model, standing.terrain, standing.initial, options);
+  const LanderRunResult at_release = SimulateLander(standing);
   EXPECT_TRUE(at_release.tipped_over);
   EXPECT_EQ(at_release.end_time_s, 0.0);
   EXPECT_EQ(at_release.solver.steps, 0);

@@ -108,7 +108,7 @@ TEST(EffectRig, RateDampingMatchesTheDampedOscillator) {
   EffectTerms t;
   t.damping_c_N_s_m3 = 12000.0;
   const double A = std::numbers::pi * kR * kR, k = kZeta * A, b = t.damping_c_N_s_m3 * A, v0 = 1.2;
-  const pad::RigDropResult r = pad::RunRigDrop({kMass, kG, v0}, Response(pad, t));
+  const pad::RigDropResult r = RunRig(Response(pad, t), kMass, kG, v0);
   const double gamma = b / (2 * kMass), wd = std::sqrt(k / kMass - gamma * gamma), y0 = -kMass * kG / k;
   const double B = (v0 + gamma * y0) / wd;
   auto y = [&](double s) { return std::exp(-gamma * s) * (y0 * std::cos(wd * s) + B * std::sin(wd * s)); };
@@ -141,9 +141,9 @@ struct GrainsOnly final : pad::VerticalSoilResponse {
 class GrainsOnlyStroke {
  public:
   explicit GrainsOnlyStroke(const GrainsOnly& grains)
-      : in_{kMass, 1e-12, 1.0},
-        integ_(4, [this, &grains](double, Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::VectorXd> yd) {
-          pad::RigStrokeDerivative(in_, grains, y, yd);
+      : setup_{{kMass}, &grains, {1e-12, 1.0}, {}},
+        integ_(4, [this](double, Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::VectorXd> yd) {
+          pad::RigStrokeDerivative(setup_, y, yd);
         }, integ::IntegratorOptions{}) {
     Eigen::VectorXd y0(4);
     y0 << 1e-12, 1.0, 0.0, 0.0;
@@ -155,7 +155,7 @@ class GrainsOnlyStroke {
   }
 
  private:
-  pad::RigDropInput in_;
+  pad::RigDropSetup setup_;
   integ::CvodeIntegrator integ_;
 };
 
@@ -232,7 +232,7 @@ TEST(EffectRig, PlugTendsToTheInstantImpulse) {
     double AddedMass(double d) const override { return d > 0.0 ? m_p * (d < d_f ? d / d_f : 1.0) : 0.0; }
     double AddedMassSlope(double d) const override { return d > 0.0 && d < d_f ? m_p / d_f : 0.0; }
   };
-  const pad::RigDropResult instant = pad::RunRigDrop({kMass, kG, kMass * v0 / (kMass + m_p)}, Plug(soil, m_p, 0.0));
+  const pad::RigDropResult instant = RunRig(Plug(soil, m_p, 0.0), kMass, kG, kMass * v0 / (kMass + m_p));
   double previous = 0.0;
   for (const double d_f : {1e-3, 1e-4, 1e-5}) {
     // The plug as EntrainedPlug forms it, on this pad's constant footprint.
@@ -240,7 +240,7 @@ TEST(EffectRig, PlugTendsToTheInstantImpulse) {
     const rft::EntrainedMass e = rft::EntrainedPlug(0.5 * kRho, d_f, 0.5 * d_f, 1.0, A, 0.0);
     ASSERT_NEAR(e.mass_kg, 0.5 * m_p, 1e-14);
     ASSERT_NEAR(e.rate_kg_s, m_p / d_f, 1e-9 * m_p / d_f);
-    const pad::RigDropResult r = pad::RunRigDrop({kMass, kG, v0}, Plug(soil, m_p, d_f));
+    const pad::RigDropResult r = RunRig(Plug(soil, m_p, d_f), kMass, kG, v0);
     const double gap = std::abs(r.final_penetration_m - instant.final_penetration_m);
     std::printf("[ plug ] d_f %.0e m: final depth %.9f m (instant impulse %.9f), accretion loss %.6f J (impact %.6f)\n",
                 d_f, r.final_penetration_m, instant.final_penetration_m, r.accretion_loss_J,
@@ -264,7 +264,7 @@ TEST(EffectRig, PlugEnergyIsAccountedFor) {
       EffectTerms t;
       t.added_mass_plug_cp = 1.5;
       t.added_mass_ca = c_a;
-      const pad::RigDropResult r = pad::RunRigDrop({kMass, kG, 1.3}, Response(*pad, t));
+      const pad::RigDropResult r = RunRig(Response(*pad, t), kMass, kG, 1.3);
       const double input = r.impact_energy_J + r.gravity_work_J;
       EXPECT_NEAR(r.dissipated_energy_J, input, 1e-6 * input) << c_a;
       EXPECT_GT(r.accretion_loss_J, 0.0);
@@ -282,7 +282,7 @@ TEST(EffectRig, InertialDragMatchesKatsuragiDurian) {
   auto s = [&](double z) { return Ac + Bc * z + (v0 * v0 - Ac) * std::exp(-2 * z / d1); };
   double lo = 1e-6, hi = 0.5;
   for (int i = 0; i < 200; ++i) (s(0.5 * (lo + hi)) > 0 ? lo : hi) = 0.5 * (lo + hi);
-  const pad::RigDropResult r = pad::RunRigDrop({kMass, kG, v0}, Response(pad, t));
+  const pad::RigDropResult r = RunRig(Response(pad, t), kMass, kG, v0);
   EXPECT_NEAR(r.final_penetration_m, 0.5 * (lo + hi), 1e-5 * lo);
   for (const pad::DropSample& x : r.trace) {
     if (x.t_s > 0 && x.t_s < r.time_to_rest_s) {
@@ -294,7 +294,7 @@ TEST(EffectRig, InertialDragMatchesKatsuragiDurian) {
 }
 TEST(EffectRecord, SensorOffsetShiftsTimeAndZero) {
   const geom::AxisymmetricIntrusion pad = ThinFlat();
-  const RigDropResult r = RunRigDrop({kMass, kG, 1.0}, Response(pad, {}));
+  const RigDropResult r = RunRig(Response(pad, {}), kMass, kG, 1.0);
   EffectTerms t;
   t.sensor_dz_m = 0.001;
   t.sensor_dt_s = 0.002;

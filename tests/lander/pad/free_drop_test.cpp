@@ -38,7 +38,7 @@ TEST(FreeDrop, SidewaysDropTravelsAndStaysLevelEnough) {
   FreeDropInput in;
   in.impact_speed_m_s = 1.0;
   in.horizontal_speed_m_s = 0.2;
-  const FreeDropResult r = RunFreeDrop(body, rft::UniformTerrain("soil", law), in);
+  const FreeDropResult r = RunFreeDrop({&body, rft::UniformTerrain("soil", law), in, {}});
   EXPECT_GT(r.horizontal_travel_m, 1e-3);
   EXPECT_GT(r.trace.back().horizontal_m, 0.0);
   EXPECT_GT(r.final_penetration_m, 0.0);
@@ -61,15 +61,15 @@ TEST(FreeDrop, ScaledTolerancesMatchATighterRunInFewerSteps) {
   in.tilt_rad = 5.0 * std::numbers::pi / 180.0;
   FreeDropOptions defaults;
   defaults.integrator.rtol = 1e-8;  // the scales' effect as measured when they came (the default is 1e-6 now)
-  const FreeDropResult r = RunFreeDrop(body, rft::UniformTerrain("soil", law), in, defaults);
+  const FreeDropResult r = RunFreeDrop({&body, rft::UniformTerrain("soil", law), in, defaults});
   FreeDropOptions tight = defaults;
   tight.integrator.rtol = 1e-10;
   tight.integrator.max_num_steps = 200000;
-  const FreeDropResult ref = RunFreeDrop(body, rft::UniformTerrain("soil", law), in, tight);
+  const FreeDropResult ref = RunFreeDrop({&body, rft::UniformTerrain("soil", law), in, tight});
   FreeDropOptions scalar = defaults;
   scalar.integrator.component_atol.assign(14, 1e-11);
   scalar.integrator.max_num_steps = 200000;
-  const FreeDropResult old = RunFreeDrop(body, rft::UniformTerrain("soil", law), in, scalar);
+  const FreeDropResult old = RunFreeDrop({&body, rft::UniformTerrain("soil", law), in, scalar});
   std::printf("[ tolerances ] steps: scaled %ld, scalar 1e-11 %ld, rtol 1e-10 %ld; depth %.7f / %.7f mm, "
               "tilt %.6f / %.6f deg\n",
               r.solver.steps, old.solver.steps, ref.solver.steps, 1e3 * r.final_penetration_m,
@@ -92,7 +92,7 @@ TEST(FreeDrop, FirstSampleIsAtTheSurface) {
   const rft::SoilContactModel law = rft::MakeSoilContactModel(rft::LawKind::kLi2013, test::Fjs1(false), 9.81, {});
   FreeDropInput in;
   in.impact_speed_m_s = 1.0;
-  const FreeDropResult r = RunFreeDrop(body, rft::UniformTerrain("soil", law), in);
+  const FreeDropResult r = RunFreeDrop({&body, rft::UniformTerrain("soil", law), in, {}});
   ASSERT_FALSE(r.trace.empty());
   EXPECT_EQ(r.trace.front().t_s, 0.0);
   EXPECT_EQ(r.trace.front().penetration_m, 0.0);
@@ -108,22 +108,22 @@ TEST(FreeDrop, TakesTheSoilOfThePatchUnderThePad) {
   const rft::SoilContactModel lp = test::Fjs1Law(false), cp = test::Fjs1Law(true);
   FreeDropInput in;
   in.impact_speed_m_s = 1.0;
-  const FreeDropResult on_lp = RunFreeDrop(body, rft::UniformTerrain("lp", lp), in);
-  const FreeDropResult on_cp = RunFreeDrop(body, rft::UniformTerrain("cp", cp), in);
+  const FreeDropResult on_lp = RunFreeDrop({&body, rft::UniformTerrain("lp", lp), in, {}});
+  const FreeDropResult on_cp = RunFreeDrop({&body, rft::UniformTerrain("cp", cp), in, {}});
   ASSERT_LT(on_cp.final_penetration_m, 0.8 * on_lp.final_penetration_m);  // the two soils differ
 
   rft::Terrain patched = rft::UniformTerrain("lp", lp);
   patched.soils.push_back({"cp", cp});
   patched.patches.push_back({"cp_square", rft::RectanglePolygon(-0.5, -0.5, 0.5, 0.5), 1});
-  EXPECT_EQ(RunFreeDrop(body, patched, in).final_penetration_m, on_cp.final_penetration_m);
+  EXPECT_EQ(RunFreeDrop({&body, patched, in, {}}).final_penetration_m, on_cp.final_penetration_m);
   patched.patches[0].polygon_W = rft::RectanglePolygon(2.0, 2.0, 3.0, 3.0);
-  EXPECT_EQ(RunFreeDrop(body, patched, in).final_penetration_m, on_lp.final_penetration_m);
+  EXPECT_EQ(RunFreeDrop({&body, patched, in, {}}).final_penetration_m, on_lp.final_penetration_m);
 
   // Sliding at 0.5 m/s onto dense soil that starts 2 mm ahead of the pad's centre.
   in.horizontal_speed_m_s = 0.5;
   patched.patches[0].polygon_W = rft::RectanglePolygon(0.002, -0.5, 1.0, 0.5);
-  const FreeDropResult onto_cp = RunFreeDrop(body, patched, in);
-  const FreeDropResult sliding_lp = RunFreeDrop(body, rft::UniformTerrain("lp", lp), in);
+  const FreeDropResult onto_cp = RunFreeDrop({&body, patched, in, {}});
+  const FreeDropResult sliding_lp = RunFreeDrop({&body, rft::UniformTerrain("lp", lp), in, {}});
   EXPECT_LT(onto_cp.final_penetration_m, sliding_lp.final_penetration_m);
   EXPECT_GT(onto_cp.final_penetration_m, 0.0);
 }

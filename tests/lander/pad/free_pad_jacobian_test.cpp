@@ -112,7 +112,7 @@ TEST(FreePadJacobian, DropMatchesCvodesDifferenceQuotients) {
   FreeDropOptions structured, dq;
   structured.integrator.rtol = dq.integrator.rtol = 1e-8;
   dq.structured_jacobian = false;
-  const FreeDropResult a = RunFreeDrop(body, bed, in, structured), b = RunFreeDrop(body, bed, in, dq);
+  const FreeDropResult a = RunFreeDrop({&body, bed, in, structured}), b = RunFreeDrop({&body, bed, in, dq});
   EXPECT_NEAR(a.final_penetration_m, b.final_penetration_m, 1e-6 * b.final_penetration_m);
   EXPECT_NEAR(a.final_tilt_deg, b.final_tilt_deg, 1e-4);
   ASSERT_GT(a.solver.jacobian_evaluations, 0);

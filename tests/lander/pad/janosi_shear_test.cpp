@@ -102,7 +102,7 @@ TEST(JanosiShearState, SlidingDropBalancesItsEnergy) {
   in.tilt_rad = 3.0 * units::kDeg;
   in.gravity_m_s2 = 1.62;
   const FreeDropResult r =
-      RunFreeDrop(body, rft::UniformTerrain("s", JanosiModel(JanosiLunarSoil(), body)), in);
+      RunFreeDrop({&body, rft::UniformTerrain("s", JanosiModel(JanosiLunarSoil(), body)), in, {}});
   const double input = r.impact_energy_J + r.gravity_work_J;
   EXPECT_NEAR(r.dissipated_energy_J + r.final_kinetic_energy_J, input, 1e-5 * input);
   EXPECT_GT(r.horizontal_travel_m, 1e-3);
@@ -130,9 +130,9 @@ TEST(JanosiShearState, ResetsAtLiftOff) {
   in.horizontal_speed_m_s = 1.0;
   in.gravity_m_s2 = 1.62;
   const rft::SoilContactModel model = JanosiModel(JanosiLunarSoil(), body);
-  const FreeDropResult flat = RunFreeDrop(body, rft::UniformTerrain("s", model), in);
+  const FreeDropResult flat = RunFreeDrop({&body, rft::UniformTerrain("s", model), in, {}});
   const FreeDropResult ledge =
-      RunFreeDrop(body, rft::UniformTerrain("s", model, std::make_shared<const LedgeGround>(0.08, 0.05)), in);
+      RunFreeDrop({&body, rft::UniformTerrain("s", model, std::make_shared<const LedgeGround>(0.08, 0.05)), in, {}});
   EXPECT_EQ(flat.lift_offs, 0);
   EXPECT_GE(ledge.lift_offs, 1);
   // On the flat the pad slides from touchdown to rest; past the ledge j counts only the slip after

@@ -35,7 +35,7 @@ RigDropResult Drop(const geom::AxisymmetricIntrusion& pad, double zeta, double l
   rft::EffectTerms terms;
   terms.inertial_lambda = lambda;
   const EffectSoilResponse response(pad, {zeta, kRho, false, terms});
-  return RunRigDrop({kMass, kG, speed}, response);
+  return RunRig(response, kMass, kG, speed);
 }
 
 double Relative(double a, double b) { return std::fabs(a - b) / std::fabs(b); }

@@ -40,7 +40,7 @@ class RigDropSpeeds : public ::testing::TestWithParam<double> {};
 
 TEST_P(RigDropSpeeds, FlatPadDepthMatchesEnergyBalance) {
   const geom::AxisymmetricIntrusion pad(geom::MakeFlatProfile(kR, kH), rft::Li2013Law{});
-  const RigDropResult r = RunRigDrop({kMass, kG, GetParam()}, FlatPad(pad));
+  const RigDropResult r = RunRig(FlatPad(pad), kMass, kG, GetParam());
   const double expected = ClosedFormFlatDepth(GetParam());
   ASSERT_LT(expected, kH);
   EXPECT_NEAR(r.final_penetration_m, expected, 1e-4 * expected);
@@ -49,7 +49,7 @@ TEST_P(RigDropSpeeds, FlatPadDepthMatchesEnergyBalance) {
 TEST_P(RigDropSpeeds, EnergyIsAccountedFor) {
   // Kinetic energy at touchdown plus the weight's work during the stroke is all dissipated.
   const geom::AxisymmetricIntrusion pad(geom::MakeFlatProfile(kR, kH), rft::Li2013Law{});
-  const RigDropResult r = RunRigDrop({kMass, kG, GetParam()}, FlatPad(pad));
+  const RigDropResult r = RunRig(FlatPad(pad), kMass, kG, GetParam());
   EXPECT_NEAR(r.impact_energy_J, 0.5 * kMass * GetParam() * GetParam(), 1e-9);
   const double input = r.impact_energy_J + r.gravity_work_J;
   EXPECT_NEAR(r.dissipated_energy_J, input, 1e-6 * input);
@@ -61,7 +61,7 @@ TEST(RigDrop, NoReboundAndNoCreepAtRest) {
   const geom::AxisymmetricIntrusion pad(geom::MakeFlatProfile(kR, kH), rft::Li2013Law{});
   RigDropOptions options;
   options.rest_duration_s = 1.0;
-  const RigDropResult r = RunRigDrop({kMass, kG, 1.0}, FlatPad(pad), options);
+  const RigDropResult r = RunRig(FlatPad(pad), kMass, kG, 1.0, options);
   double max_depth = 0.0;
   for (const DropSample& s : r.trace) {
     EXPECT_GE(s.velocity_m_s, -1e-12) << "rebound at t " << s.t_s;
@@ -75,7 +75,7 @@ TEST(RigDrop, NoReboundAndNoCreepAtRest) {
 
 TEST(RigDrop, StopIsAnEventNotASample) {
   const geom::AxisymmetricIntrusion pad(geom::MakeFlatProfile(kR, kH), rft::Li2013Law{});
-  const RigDropResult r = RunRigDrop({kMass, kG, 1.0}, FlatPad(pad));
+  const RigDropResult r = RunRig(FlatPad(pad), kMass, kG, 1.0);
   // The stop time is off the 1 kHz grid and the trace holds a sample exactly there, at rest.
   EXPECT_GT(std::abs(r.time_to_rest_s * 1000 - std::round(r.time_to_rest_s * 1000)), 1e-9);
   bool found = false;
@@ -87,14 +87,14 @@ TEST(RigDrop, StopIsAnEventNotASample) {
   EXPECT_TRUE(found);
   // Against a closed-form-free check: a linear spring F = k d stops at a quarter period.
   const double k = 1e4;
-  const RigDropResult spring = RunRigDrop({1.0, 1e-12, 1.0}, [k](double d, double) { return k * d; });
+  const RigDropResult spring = RunRig([k](double d, double) { return k * d; }, 1.0, 1e-12, 1.0);
   EXPECT_NEAR(spring.time_to_rest_s, 0.25 * 2 * std::numbers::pi / std::sqrt(k), 1e-7);
   EXPECT_NEAR(spring.final_penetration_m, 1.0 / std::sqrt(k), 1e-8);
 }
 
 TEST(RigDrop, SamplesAtOneKilohertzFromTouchdown) {
   const geom::AxisymmetricIntrusion pad(geom::MakeFlatProfile(kR, kH), rft::Li2013Law{});
-  const RigDropResult r = RunRigDrop({kMass, kG, 1.5}, FlatPad(pad));
+  const RigDropResult r = RunRig(FlatPad(pad), kMass, kG, 1.5);
   ASSERT_GE(r.trace.size(), 3u);
   EXPECT_EQ(r.trace[0].t_s, 0.0);
   EXPECT_EQ(r.trace[0].penetration_m, 0.0);
@@ -106,7 +106,7 @@ TEST(RigDrop, SamplesAtOneKilohertzFromTouchdown) {
 TEST(RigDrop, PeakForceAndDecelerationAreAtTheStop) {
   // Quasi-static RFT force grows with depth, and depth grows until the stop.
   const geom::AxisymmetricIntrusion pad(geom::MakeFlatProfile(kR, kH), rft::Li2013Law{});
-  const RigDropResult r = RunRigDrop({kMass, kG, 1.0}, FlatPad(pad));
+  const RigDropResult r = RunRig(FlatPad(pad), kMass, kG, 1.0);
   const double f_stop = pad.VerticalForce(r.final_penetration_m, kZeta);
   EXPECT_NEAR(r.peak_force_N, f_stop, 1e-9 * f_stop);
   EXPECT_NEAR(r.max_deceleration_m_s2, (f_stop - kMass * kG) / kMass, 1e-6);
@@ -116,21 +116,22 @@ TEST(RigDrop, ZeroSpeedPlacementSinksToStaticEquilibriumOvershoot) {
   // Placed with no speed, the pad sinks until the work of F equals m g d (F = m g at half way
   // for a linear law): with F = k d, d_final = 2 m g / k.
   const double k = 5e4;
-  const RigDropResult r = RunRigDrop({2.0, 9.81, 0.0}, [k](double d, double) { return k * d; });
+  const RigDropResult r = RunRig([k](double d, double) { return k * d; }, 2.0, 9.81, 0.0);
   EXPECT_NEAR(r.final_penetration_m, 2 * 2.0 * 9.81 / k, 1e-9);
 }
 
 TEST(RigDrop, BadArgumentsAreRejected) {
   auto f = [](double d, double) { return 1e5 * d; };
-  EXPECT_THROW(RunRigDrop({0.0, 9.81, 1.0}, f), std::invalid_argument);
-  EXPECT_THROW(RunRigDrop({1.0, -1.0, 1.0}, f), std::invalid_argument);
-  EXPECT_THROW(RunRigDrop({1.0, 9.81, NAN}, f), std::invalid_argument);
+  EXPECT_THROW(RunRig(f, 0.0, 9.81, 1.0), std::invalid_argument);
+  EXPECT_THROW(RunRig(f, 1.0, -1.0, 1.0), std::invalid_argument);
+  EXPECT_THROW(RunRig(f, 1.0, 9.81, NAN), std::invalid_argument);
+  EXPECT_THROW(RunRigDrop({{1.0}, nullptr, {9.81, 1.0}, {}}), std::invalid_argument);  // no soil
 }
 
 TEST(RigDrop, PadThatNeverStopsIsAFailureNotAHang) {
   RigDropOptions options;
   options.max_stroke_duration_s = 0.5;
-  EXPECT_THROW(RunRigDrop({1.0, 9.81, 1.0}, [](double, double) { return 0.0; }, options), integ::IntegrationFailure);
+  EXPECT_THROW(RunRig([](double, double) { return 0.0; }, 1.0, 9.81, 1.0, options), integ::IntegrationFailure);
 }
 
 }  // namespace
