@@ -19,8 +19,8 @@
 namespace touchdown::drop {
 
 struct DropRunOptions {
-  pad::RigDropOptions rig;
-  pad::FreeDropOptions free;
+  pad::RigDropOptions rig{};    // (`{}` on each member: callers name only what they set, `{.rig = r}`)
+  pad::FreeDropOptions free{};
   // The pad's profile integral, built once by callers running many drops of one pad (sweeps);
   // null: built here. Must be the pad's own (MakeRigIntrusion, drop_factory.h).
   const geom::AxisymmetricIntrusion* intrusion = nullptr;

@@ -586,7 +586,7 @@ LanderScenario LoadLanderScenarioWithSetup(const std::string& path, std::optiona
     if (by && !used) p.Fail("fit_by", "only with used_for_fit: true");
   }
   if (resolved) {
-    setup = BuildLanderSetup(s);
+    setup = ResolveLander(s);
     RequireResolvedValuesMatch(f, s, *setup);
   }
   return s;
@@ -651,7 +651,7 @@ void WriteSoilsBlock(YAML::Emitter& y, const LanderScenario& s, const lander::La
 }  // namespace
 
 void WriteResolvedLanderScenario(const LanderScenario& s, const std::string& path, const std::string& output_dir) {
-  WriteResolvedLanderScenario(s, BuildLanderSetup(s), path, output_dir);
+  WriteResolvedLanderScenario(s, ResolveLander(s), path, output_dir);
 }
 
 void WriteResolvedLanderScenario(const LanderScenario& s, const lander::LanderSetup& setup, const std::string& path,

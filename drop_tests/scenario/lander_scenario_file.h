@@ -35,7 +35,7 @@ const std::vector<std::string>& LanderInitialKeys();
 
 // The files named are written for `output_dir`, the directory the file finally lives in
 // (drop_tests/catalog/paths_in_outputs.h: no absolute paths of this machine). `setup` is the
-// scenario's (BuildLanderSetup): the copy states the soils and the release position it gives.
+// scenario's (ResolveLander): the copy states the soils and the release position it gives.
 void WriteResolvedLanderScenario(const LanderScenario& scenario, const lander::LanderSetup& setup, const std::string& path,
                                  const std::string& output_dir);
 // As above, building the setup first (a copy written without running the landing).

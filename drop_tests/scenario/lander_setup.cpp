@@ -62,7 +62,7 @@ lander::LanderModel BuildLanderModel(const LanderScenario& sc) {
   return m;
 }
 
-lander::LanderSetup BuildLanderSetup(const LanderScenario& sc, const LanderSoilCatalog* soils) {
+lander::LanderSetup ResolveLander(const LanderScenario& sc, const LanderSoilCatalog* soils) {
   lander::LanderSetup out;
   out.model = BuildLanderModel(sc);
   out.options = sc.options;
@@ -147,7 +147,7 @@ LanderRun RunLanderScenario(const LanderScenario& scenario) {
   if (scenario.ground.soil_field && scenario.ground.soil_field->seed_per_landing)
     throw MakeInputError(scenario.source, "ground.soil_field.seed",
                          "per_landing draws a field for each landing of a study; a single landing needs a number");
-  return RunLanderScenario(scenario, BuildLanderSetup(scenario));
+  return RunLanderScenario(scenario, ResolveLander(scenario));
 }
 
 LanderRun RunLanderScenario(const LanderScenario& scenario, lander::LanderSetup setup) {

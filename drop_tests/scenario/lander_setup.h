@@ -22,11 +22,13 @@ LanderSoilCatalog LoadLanderSoils(const LanderScenario& scenario, const std::vec
 double TouchdownSpeed(const LanderScenario& scenario);
 // The lander alone (body, legs, pads, gravity, soil ramp): no soil is read.
 lander::LanderModel BuildLanderModel(const LanderScenario& scenario);
-// Builds the model, terrain, initial state and run options (the scenario's simulation block). Soils come from `soils` when given (a reference it
-// lacks, and every soil without it, loaded from data/soils by name).
-lander::LanderSetup BuildLanderSetup(const LanderScenario& scenario, const LanderSoilCatalog* soils = nullptr);
+// The landing's one resolution step (drop::ResolveDrop's counterpart): the model, the terrain with
+// its soils' contact models, the initial state and the run options (the scenario's simulation block).
+// Soils come from `soils` when given (a reference it lacks, and every soil without it, loaded from
+// data/soils by name).
+lander::LanderSetup ResolveLander(const LanderScenario& scenario, const LanderSoilCatalog* soils = nullptr);
 LanderRun RunLanderScenario(const LanderScenario& scenario);
-// As above, on the setup BuildLanderSetup built for this scenario (built once, used for checks
+// As above, on the setup ResolveLander built for this scenario (built once, used for checks
 // before the run and by the run).
 LanderRun RunLanderScenario(const LanderScenario& scenario, lander::LanderSetup setup);
 

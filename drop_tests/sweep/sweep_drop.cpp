@@ -100,12 +100,7 @@ DropRecord SimulatePadSweepDrop(const SweepModels& models, const SweepDropParams
   const drop::DropConditions c = ConditionsOf(models, p);
   DropRecord r = Describe(plan, p, c);
   try {
-    drop::DropRunOptions options;
-    options.rig = plan.rig;
-    options.free = drop::FreeDropOptionsFor(plan.free_drop_model);
-    options.free.sample_rate_hz = plan.rig.sample_rate_hz;
-    options.free.integrator.max_wall_time_s = plan.rig.integrator.max_wall_time_s;
-    options.free.integrator.max_rhs_evaluations = plan.rig.integrator.max_rhs_evaluations;
+    drop::DropRunOptions options = models.drop_options();
     options.intrusion = models.has_intrusion(p.pad) ? &models.intrusion(p.pad) : nullptr;
     const io::PadSpec& pad = c.IsFree() ? models.free_pad(p.pad) : plan.pads[p.pad];
     const drop::PadDrop drop = drop::RunDrop(drop::ResolveDrop(pad, plan.soils[p.soil], c, options));
@@ -197,7 +192,7 @@ DropRecord SimulateLanderSweepDrop(const SweepModels& models, const SweepDropPar
     for (int i = 0; i < lander::kNumLegs; ++i) {
       const std::string& ref = plan.soil_refs[set.soil[i]];
       if (ref == sc.ground.default_soil) continue;
-      // (pad, half width): resolved below the pad's joint at release by BuildLanderSetup.
+      // (pad, half width): resolved below the pad's joint at release by ResolveLander.
       sc.ground.patches.push_back(
           {"pad_soils_under_pad_" + std::to_string(i + 1), ref, {Eigen::Vector2d(i + 1, plan.pad_patch_half_width_m)}});
     }
@@ -236,7 +231,7 @@ DropRecord SimulateLanderSweepDrop(const SweepModels& models, const SweepDropPar
   r.zeta_N_cm3 = units::ZetaToN_cm3(soil.ZetaAtGravity(sc.gravity_m_s2));
   RecordConditions(sc, r);
   try {
-    lander::LanderSetup setup = scenario::BuildLanderSetup(sc, &models.lander_soils());
+    lander::LanderSetup setup = scenario::ResolveLander(sc, &models.lander_soils());
     // The soil under each pad's joint at release, as the ground was built.
     for (int i = 0; i < lander::kNumLegs; ++i) {
       const Eigen::Vector3d c = setup.initial.p_WB + setup.initial.R_WB * setup.model.legs[i].joint_B;
@@ -298,6 +293,13 @@ SweepModels::SweepModels(const SweepPlan& plan) : plan_(plan) {
     for (const io::PadSpec& pad : plan.pads)
       free_pads_.push_back(drop::FreeDropPad(pad, plan.free_drop_model, plan.source, "simulation.free_drop_model"));
   if (plan.model) effects_ = model::ModelEffectTerms(*plan.model);
+  // The free pad's integration follows the plan's model, and the plan's sampling and work limits,
+  // which the sweep states once for both kinds of drop.
+  drop_options_.rig = plan.rig;
+  drop_options_.free = drop::FreeDropOptionsFor(plan.free_drop_model);
+  drop_options_.free.sample_rate_hz = plan.rig.sample_rate_hz;
+  drop_options_.free.integrator.max_wall_time_s = plan.rig.integrator.max_wall_time_s;
+  drop_options_.free.integrator.max_rhs_evaluations = plan.rig.integrator.max_rhs_evaluations;
   if (plan.lander) {
     // Every soil a landing's ground may name (the scenario's and the sweep's), read once, not per landing.
     lander_soils_ = scenario::LoadLanderSoils(*plan.lander, plan.soil_refs);

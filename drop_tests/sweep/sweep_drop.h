@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "drop_tests/drop/drop_setup.h"
 #include "drop_tests/model/effects.h"
 #include "drop_tests/scenario/lander_setup.h"
 #include "drop_tests/sweep/results_db.h"
@@ -44,6 +45,8 @@ class SweepModels {
   // (drop::FreeDropPad): re-meshed once per sweep for the fast model, else the pad itself.
   const io::PadSpec& free_pad(int pad) const { return free_pads_.empty() ? plan_.pads[pad] : free_pads_[pad]; }
   const rft::EffectTerms& effects() const { return effects_; }
+  // The run options of the sweep's drops, resolved once (no profile integral: that is per pad).
+  const drop::DropRunOptions& drop_options() const { return drop_options_; }
   // A lander sweep: the scenario's default soil with the model applied (for drops that do not
   // set `soil`).
   const rft::SoilParameters& lander_soil() const { return lander_soil_; }
@@ -57,6 +60,7 @@ class SweepModels {
   std::vector<std::unique_ptr<geom::AxisymmetricIntrusion>> intrusions_;
   std::vector<io::PadSpec> free_pads_;  // the fast model's re-meshed pads; empty for the reference
   rft::EffectTerms effects_;  // the model's, parsed once
+  drop::DropRunOptions drop_options_;
   rft::SoilParameters lander_soil_;
   std::map<std::string, std::string> soil_names_;  // lander sweeps: soil reference -> name
   scenario::LanderSoilCatalog lander_soils_;

@@ -728,7 +728,7 @@ SweepPlan LoadSweepPlan(const std::string& path, const std::string& model_overri
     plan.lander->model = plan.model;
     try {
       const scenario::LanderSoilCatalog soils = scenario::LoadLanderSoils(*plan.lander, plan.soil_refs);
-      scenario::BuildLanderSetup(*plan.lander, &soils);  // the scenario's own soils under the model
+      scenario::ResolveLander(*plan.lander, &soils);  // the scenario's own soils under the model
       for (const std::string& ref : plan.soil_refs)
         model::MakeContactModel({.law = plan.lander->ground.law, .soil = soils.at(ref),
                                  .gravity_m_s2 = plan.lander->gravity_m_s2, .model = model,

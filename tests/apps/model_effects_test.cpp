@@ -267,7 +267,7 @@ TEST_F(ModelEffects, EveryEffectRunsOnFreeDropsAndLanders) {
 TEST_F(ModelEffects, LanderSoilsCarryTheModelsTerms) {
   scenario::LanderScenario s = scenario::LoadLanderScenario(std::string(TOUCHDOWN_SOURCE_DIR) + "/data/scenarios/lander_case_A.yaml");
   s.model = LoadModelFile(Model("lander", "{inertial_drag: {lambda: 1.5}, sensor_offset: {dz_mm: 1, dt_ms: 0}}"));
-  const lander::LanderSetup setup = scenario::BuildLanderSetup(s);
+  const lander::LanderSetup setup = scenario::ResolveLander(s);
   ASSERT_EQ(setup.terrain.soils.size(), 1u);
   EXPECT_EQ(setup.terrain.soils[0].contact.name(), "li2013+dynamic");
   const Eigen::Vector3d down(0, 0, -1);
@@ -275,7 +275,7 @@ TEST_F(ModelEffects, LanderSoilsCarryTheModelsTerms) {
               1.5 * io::LoadSoil("fjs1_lp").bulk_density_kg_m3 * 4.0, 1e-9);
   // gas_cushion only where the bed is in air (fjs1_lp is a vacuum bed).
   s.model = LoadModelFile(Model("gas", "{gas_cushion: {chi: 0.3, c_g_N_s_m3: 5000}}"));
-  EXPECT_EQ(scenario::BuildLanderSetup(s).terrain.soils[0].contact.name(), "li2013+dynamic");  // the soil's own term
+  EXPECT_EQ(scenario::ResolveLander(s).terrain.soils[0].contact.name(), "li2013+dynamic");  // the soil's own term
   rft::SoilParameters air = io::LoadSoil("fjs1_lp");
   air.atmosphere = rft::Atmosphere::kAir;
   EXPECT_EQ(MakeContactModel({.law = rft::LawKind::kLi2013, .soil = air, .gravity_m_s2 = 9.81, .model = &*s.model}).name(),

@@ -9,7 +9,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string path = touchdown::fuzz::WriteFuzzInput(data, size, "_lander.yaml");
   try {
     const touchdown::scenario::LanderScenario scenario = touchdown::scenario::LoadLanderScenario(path);
-    touchdown::scenario::BuildLanderSetup(scenario);
+    touchdown::scenario::ResolveLander(scenario);
   } catch (const touchdown::InputError&) {
   }
   return 0;

@@ -193,7 +193,11 @@ def _stored_landings(db_path):
 
 
 def test_ctrl_c_stops_a_study_keeping_the_committed_landings(tmp_path):
-    study = _study(tmp_path / "study.yaml", "[" + ", ".join(f"{0.5 + 0.01 * k:.2f}" for k in range(30)) + "]")
+    # Enough landings that the study cannot finish before its first commit (every 0.5 s) on a fast,
+    # idle machine: 30 landings of about 16 ms each once all fitted in the first transaction.
+    landings_in_study = 120
+    study = _study(tmp_path / "study.yaml",
+                   "[" + ", ".join(f"{0.5 + 0.005 * k:.3f}" for k in range(landings_in_study)) + "]")
     out = tmp_path / "out"
     child = subprocess.Popen([sys.executable, "-c", textwrap.dedent(f"""
         import touchdown
@@ -217,11 +221,11 @@ def test_ctrl_c_stops_a_study_keeping_the_committed_landings(tmp_path):
     assert child.returncode == 130 and stdout.strip() == "KeyboardInterrupt", stderr
     assert stopped_after < 10  # the landing in flight, not the study's other ones
     landings = _stored_landings(out / "results.sqlite")
-    assert 0 < landings < 30
+    assert 0 < landings < landings_in_study
     assert not (out / "summary.json").exists()  # no analysis of a stopped study
     # A rerun resumes from what was committed.
     result = touchdown.stability(study, out, threads=2)
-    assert result.summary["landings"] == 30
+    assert result.summary["landings"] == landings_in_study
 
 
 def test_options_in_messages_are_named_as_python_arguments(tmp_path):

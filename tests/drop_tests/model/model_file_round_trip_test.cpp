@@ -32,7 +32,9 @@ void ExpectSameModel(const ModelFile& a, const ModelFile& b) {
     EXPECT_EQ(o.dynamic_lambda, p.dynamic_lambda);
     for (const BekkerOverrideField& e : BekkerOverrideFields()) {
       ASSERT_EQ((o.*e.member).has_value(), (p.*e.member).has_value()) << e.key;
-      if (o.*e.member) EXPECT_DOUBLE_EQ(*(o.*e.member), *(p.*e.member)) << e.key;
+      if (o.*e.member) {
+        EXPECT_DOUBLE_EQ(*(o.*e.member), *(p.*e.member)) << e.key;
+      }
     }
     ASSERT_EQ(o.fit.has_value(), p.fit.has_value());
     if (o.fit) {

@@ -125,9 +125,9 @@ TEST(LanderRanges, PadAttitude) {
   EXPECT_EQ(s.initial.pad_attitude, PadAttitude::kBody);  // the default
   s.initial.roll_rad = 0.1;
   s.initial.pad_attitude = PadAttitude::kLevel;
-  const lander::LanderSetup level = BuildLanderSetup(s);
+  const lander::LanderSetup level = ResolveLander(s);
   s.initial.pad_attitude = PadAttitude::kBody;
-  const lander::LanderSetup body = BuildLanderSetup(s);
+  const lander::LanderSetup body = ResolveLander(s);
   for (int i = 0; i < lander::kNumLegs; ++i) {
     EXPECT_TRUE(level.initial.R_WP[i].isApprox(Eigen::Matrix3d::Identity(), 1e-15));
     EXPECT_TRUE(body.initial.R_WP[i].isApprox(body.initial.R_WB, 1e-15));

@@ -78,7 +78,7 @@ void ExpectSameScenario(const LanderScenario& a, const LanderScenario& b) {
     EXPECT_EQ(a.paper->reading, b.paper->reading);
   }
   // The setup the run starts from: patches resolved to the same corners, the same soils and pose.
-  const lander::LanderSetup p = BuildLanderSetup(a), q = BuildLanderSetup(b);
+  const lander::LanderSetup p = ResolveLander(a), q = ResolveLander(b);
   ASSERT_EQ(p.terrain.patches.size(), q.terrain.patches.size());
   for (size_t k = 0; k < p.terrain.patches.size(); ++k) {
     EXPECT_EQ(p.terrain.patches[k].name, q.terrain.patches[k].name);
@@ -317,7 +317,7 @@ TEST_F(LanderScenarioRoundTrip, ResolvedCopyMustMatchItsFiles) {
 
 
 // A resolved copy is checked on the setup it builds, and that setup comes back for its landing
-// (built once): the one BuildLanderSetup gives the loaded scenario. A scenario file builds none.
+// (built once): the one ResolveLander gives the loaded scenario. A scenario file builds none.
 TEST_F(LanderScenarioRoundTrip, ResolvedCopyHandsBackItsSetup) {
   const std::string source = io::DataDirectory() + "/scenarios/lander_case_B.yaml";
   std::optional<lander::LanderSetup> setup;
@@ -329,7 +329,7 @@ TEST_F(LanderScenarioRoundTrip, ResolvedCopyHandsBackItsSetup) {
   const LanderScenario again = LoadLanderScenarioWithSetup(Path("resolved.yaml"), setup);
   EXPECT_EQ(again.initial.pad_attitude, PadAttitude::kLevel);
   ASSERT_TRUE(setup.has_value());
-  const lander::LanderSetup built = BuildLanderSetup(again);
+  const lander::LanderSetup built = ResolveLander(again);
   EXPECT_EQ(setup->initial.p_WB, built.initial.p_WB);
   EXPECT_EQ(setup->initial.R_WP, built.initial.R_WP);
   ASSERT_EQ(setup->terrain.patches.size(), built.terrain.patches.size());

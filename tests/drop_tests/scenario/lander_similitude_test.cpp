@@ -121,7 +121,7 @@ TEST(LanderSimilitude, RightHandSideOfTheModelScaledByFourIsTheModelsToTheLastBi
   scenario::LanderScenario big = Scaled(lab, k);
   Asymmetric(lab, 0.08);
   Asymmetric(big, k * 0.08);
-  const lander::LanderSetup A = scenario::BuildLanderSetup(lab), B = scenario::BuildLanderSetup(big);
+  const lander::LanderSetup A = scenario::ResolveLander(lab), B = scenario::ResolveLander(big);
   const StateLayout L(A.model);
   ASSERT_EQ(L.size, StateLayout(B.model).size);
   // Lowered 12 mm (x k) from release, turning (rad/s / k), pads tilted on their joints.

@@ -81,9 +81,9 @@ simulation: {duration_s: 7.5, sample_rate_hz: 200, rtol: 1.0e-5, pad_angular_seg
 TEST_F(LanderSoilRamp, IsASimulationSettingThatReachesTheModel) {
   const LanderScenario sc = LoadLanderScenario(Write("ramp.yaml", CreepingLanding(", soil_ramp_speed_m_s: 1.0e-3")));
   EXPECT_EQ(sc.options.soil_ramp_speed_m_s, 1e-3);
-  EXPECT_EQ(BuildLanderSetup(sc).model.soil_ramp_speed_m_s, 1e-3);
+  EXPECT_EQ(ResolveLander(sc).model.soil_ramp_speed_m_s, 1e-3);
   const LanderScenario by_default = LoadLanderScenario(Write("default.yaml", CreepingLanding("")));
-  EXPECT_EQ(BuildLanderSetup(by_default).model.soil_ramp_speed_m_s, lander::kDefaultSoilRampSpeed_m_s);
+  EXPECT_EQ(ResolveLander(by_default).model.soil_ramp_speed_m_s, lander::kDefaultSoilRampSpeed_m_s);
   // The resolved copy states it and reloads to the same value.
   WriteResolvedLanderScenario(sc, Path("resolved.yaml"), dir_.string());
   EXPECT_EQ(LoadLanderScenario(Path("resolved.yaml")).options.soil_ramp_speed_m_s, 1e-3);
@@ -91,9 +91,9 @@ TEST_F(LanderSoilRamp, IsASimulationSettingThatReachesTheModel) {
 
 TEST_F(LanderSoilRamp, WhereItActsIsASimulationSettingThatReachesTheModel) {
   const LanderScenario by_default = LoadLanderScenario(Write("default.yaml", CreepingLanding("")));
-  EXPECT_EQ(BuildLanderSetup(by_default).model.soil_ramp, lander::SoilRamp::kElement);
+  EXPECT_EQ(ResolveLander(by_default).model.soil_ramp, lander::SoilRamp::kElement);
   const LanderScenario pad = LoadLanderScenario(Write("pad.yaml", CreepingLanding(", soil_ramp: pad")));
-  EXPECT_EQ(BuildLanderSetup(pad).model.soil_ramp, lander::SoilRamp::kPad);
+  EXPECT_EQ(ResolveLander(pad).model.soil_ramp, lander::SoilRamp::kPad);
   WriteResolvedLanderScenario(pad, Path("resolved.yaml"), dir_.string());
   EXPECT_EQ(LoadLanderScenario(Path("resolved.yaml")).options.soil_ramp, lander::SoilRamp::kPad);
   try {

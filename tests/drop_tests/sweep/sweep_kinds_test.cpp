@@ -209,7 +209,7 @@ fixed: {pitch_deg: 2, roll_deg: -1, gravity_m_s2: 1.62, horizontal_speed_m_s: 0.
   }
   const SweepPlan with_model = LoadSweepPlan(Write("with_model.yaml", text + "model: mass.yaml\n"));
   ASSERT_TRUE(with_model.lander.has_value());
-  EXPECT_EQ(scenario::BuildLanderSetup(*with_model.lander).terrain.soils.at(0).contact.name(), "li2013+dynamic+added_mass");
+  EXPECT_EQ(scenario::ResolveLander(*with_model.lander).terrain.soils.at(0).contact.name(), "li2013+dynamic+added_mass");
 }
 
 }  // namespace
