@@ -9,6 +9,7 @@
 #include <system_error>
 
 #include "drop_tests/formats/field_table.h"
+#include "drop_tests/formats/key_table.h"
 #include "drop_tests/util/nearest_name.h"
 #include "drop_tests/formats/output_path.h"
 #include "drop_tests/formats/yaml_fields.h"
@@ -59,11 +60,53 @@ const FieldTable<rft::BekkerParameters>& BekkerFields() {
   return fields;
 }
 
+const KeyTable<rft::BekkerParameters>& BekkerKeys() {
+  static const KeyTable<rft::BekkerParameters> keys = [] {
+    KeyTable<rft::BekkerParameters> k;
+    AppendNumberKeys(k, BekkerFields());
+    k.push_back({"provenance"});
+    return k;
+  }();
+  return keys;
+}
+
+// A soil file's keys, in the order WriteSoil writes them.
+const KeyTable<rft::SoilParameters>& SoilKeys() {
+  using S = rft::SoilParameters;
+  using Y = YAML::Emitter;
+  const auto bekker_law = [](const S& s) { return s.rft_law_3d == rft::LawKind::kBekker; };
+  static const KeyTable<S> keys = [&] {
+    KeyTable<S> k{
+        {"schema_version", Always<S>, [](Y& y, const S&) { y << 1; }},
+        {"name", Always<S>, [](Y& y, const S& s) { y << s.name; }},
+        {"description"},
+        {"atmosphere", Always<S>, [](Y& y, const S& s) { y << rft::AtmosphereName(s.atmosphere); }},
+        {"gravity_scaling", [](const S& s) { return s.gravity_scaling != rft::GravityScaling::kLithostatic; },
+         [](Y& y, const S& s) { y << rft::GravityScalingName(s.gravity_scaling); }},
+        // A Bekker soil without zeta leaves it out (0 would not read back); RFT soils always state it.
+        {"zeta_N_cm3", [=](const S& s) { return !bekker_law(s) || s.zeta_N_m3 > 0.0; },
+         [](Y& y, const S& s) { y << units::ZetaToN_cm3(s.zeta_N_m3); }},
+    };
+    AppendNumberKeys(k, SoilNumberFields());
+    k.push_back({"law", [](const S& s) { return s.rft_law_3d != rft::LawKind::kLi2013; },
+                 [](Y& y, const S& s) { y << std::string(rft::LawKindName(s.rft_law_3d)); }});
+    k.push_back({"bekker",
+                 [=](const S& s) { return bekker_law(s) || s.bekker.k_c_N_m_n1 + s.bekker.k_phi_N_m_n2 > 0.0; },
+                 [](Y& y, const S& s) {
+                   y << YAML::BeginMap;
+                   WriteKeys(y, BekkerKeys(), s.bekker);
+                   y << YAML::EndMap;
+                 }});
+    k.push_back({"dynamic_term", [](const S& s) { return s.dynamic_term; }, [](Y& y, const S&) { y << true; }});
+    k.push_back({"provenance"});
+    return k;
+  }();
+  return keys;
+}
+
 rft::BekkerParameters ReadBekkerBlock(const YamlFields& f) {
   const YamlFields b = f.Child("bekker");
-  std::vector<std::string> known = FieldKeys(BekkerFields());
-  known.push_back("provenance");
-  b.RequireOnly(known);
+  b.RequireOnly(Keys(BekkerKeys()));
   rft::BekkerParameters out;
   ReadFields(b, BekkerFields(), out);
   if (out.n > limits::kBekkerN.high) b.Fail("n", "must be at most 5 (Bekker exponents are about 0.5 to 1.5)");
@@ -129,16 +172,30 @@ const FieldTable<PadFileFields>* ProfileFields(const std::string& shape) {
 
 bool HasSegments(const std::string& shape) { return shape == "exponential" || shape == "spherical_cap"; }
 
+// A profile block's keys for its shape, in the order WritePad writes them.
+KeyTable<PadFileFields> ProfileKeys(const std::string& shape) {
+  using P = PadFileFields;
+  using Y = YAML::Emitter;
+  KeyTable<P> k{{"shape", Always<P>, [](Y& y, const P& p) { y << p.shape; }}};
+  AppendNumberKeys(k, *ProfileFields(shape));
+  if (HasSegments(shape))
+    k.push_back({"segments", [](const P& p) { return p.segments > 0; }, [](Y& y, const P& p) { y << p.segments; }});
+  if (shape == "table")
+    k.push_back({"points_mm", Always<P>, [](Y& y, const P& p) {
+                   y << YAML::BeginSeq;
+                   for (const std::array<double, 2>& q : p.points_mm)
+                     y << YAML::Flow << YAML::BeginSeq << q[0] << q[1] << YAML::EndSeq;
+                   y << YAML::EndSeq;
+                 }});
+  return k;
+}
+
 geom::AxisymmetricProfile ReadProfile(const YamlFields& f, PadFileFields& file) {
   file.shape = f.String("shape");
   const FieldTable<PadFileFields>* fields = ProfileFields(file.shape);
   if (!fields)
     f.Fail("shape", "unknown shape '" + file.shape + "' (flat, chamfer, exponential, spherical_cap, cone, table)");
-  std::vector<std::string> known{"shape"};
-  for (const std::string& key : FieldKeys(*fields)) known.push_back(key);
-  if (HasSegments(file.shape)) known.push_back("segments");
-  if (file.shape == "table") known.push_back("points_mm");
-  f.RequireOnly(known);
+  f.RequireOnly(Keys(ProfileKeys(file.shape)));
   limits::Require(limits::kPadSize_mm, f.Positive("radius_mm"), f.file(), f.Path("radius_mm"));
   limits::Require(limits::kPadSize_mm, f.Positive("thickness_mm"), f.file(), f.Path("thickness_mm"));
   ReadFields(f, *fields, file);
@@ -234,9 +291,92 @@ void LoadAxisymmetricPad(const YamlFields& f, PadSpec& pad) {
   });
 }
 
+// A pad to write, and where (a mesh is written relative to the pad file).
+struct PadToWrite {
+  const PadSpec& pad;
+  fs::path path;
+};
+
+// The `mesh` block's keys, in the order WritePad writes them.
+const KeyTable<PadToWrite>& MeshKeys() {
+  using W = PadToWrite;
+  using Y = YAML::Emitter;
+  static const KeyTable<W> keys{
+      {"file", Always<W>,
+       [](Y& y, const W& w) {
+         // The mesh relative to the written file (as LoadPad reads it), wherever either lives.
+         const fs::path mesh = fs::absolute(w.pad.mesh_file).lexically_normal();
+         const fs::path rel = mesh.lexically_relative(fs::absolute(w.path).parent_path().lexically_normal());
+         y << (rel.empty() ? mesh : rel).generic_string();
+       }},
+      {"unit", Always<W>, [](Y& y, const W& w) { y << w.pad.file.mesh_unit; }},
+      {"remesh_edge_mm", [](const W& w) { return w.pad.file.remesh_edge_mm > 0.0; },
+       [](Y& y, const W& w) { y << w.pad.file.remesh_edge_mm; }},
+  };
+  return keys;
+}
+
+// An inertia block's keys (ixx, iyy, izz, ixy, ixz, iyz), as a pad file and a lander file give it.
+const KeyTable<std::array<double, 6>>& InertiaKeys() {
+  using I = std::array<double, 6>;
+  const auto entry = [](const char* key, int k) -> FileKey<I> {
+    return {key, Always<I>, [k](YAML::Emitter& y, const I& i) { y << i[k]; }};
+  };
+  static const KeyTable<I> keys{entry("ixx", 0), entry("iyy", 1), entry("izz", 2),
+                                entry("ixy", 3), entry("ixz", 4), entry("iyz", 5)};
+  return keys;
+}
+
+void WritePoint(YAML::Emitter& y, const std::array<double, 3>& v) {
+  y << YAML::Flow << YAML::BeginSeq << v[0] << v[1] << v[2] << YAML::EndSeq;
+}
+
+// A pad file's keys (both kinds), in the order WritePad writes them.
+const KeyTable<PadToWrite>& PadKeys() {
+  using W = PadToWrite;
+  using Y = YAML::Emitter;
+  const auto axisymmetric = [](const W& w) { return w.pad.kind == PadKind::kAxisymmetric; };
+  static const KeyTable<W> keys{
+      {"schema_version", Always<W>, [](Y& y, const W&) { y << 1; }},
+      {"name", Always<W>, [](Y& y, const W& w) { y << w.pad.name; }},
+      {"kind", Always<W>, [](Y& y, const W& w) { y << (w.pad.kind == PadKind::kMesh ? "mesh" : "axisymmetric"); }},
+      {"description", [](const W& w) { return !w.pad.file.description.empty(); },
+       [](Y& y, const W& w) { y << w.pad.file.description; }},
+      {"mass_kg", [](const W& w) { return w.pad.file.mass_kg > 0.0; }, [](Y& y, const W& w) { y << w.pad.file.mass_kg; }},
+      {"density_kg_m3", [](const W& w) { return w.pad.file.density_kg_m3 > 0.0; },
+       [](Y& y, const W& w) { y << w.pad.file.density_kg_m3; }},
+      {"profile", axisymmetric,
+       [](Y& y, const W& w) {
+         y << YAML::BeginMap;
+         WriteKeys(y, ProfileKeys(w.pad.file.shape), w.pad.file);
+         y << YAML::EndMap;
+       }},
+      {"mesh", [=](const W& w) { return !axisymmetric(w); },
+       [](Y& y, const W& w) {
+         y << YAML::BeginMap;
+         WriteKeys(y, MeshKeys(), w);
+         y << YAML::EndMap;
+       }},
+      {"angular_segments", [=](const W& w) { return axisymmetric(w) && w.pad.file.angular_segments > 0; },
+       [](Y& y, const W& w) { y << w.pad.file.angular_segments; }},
+      {"reference_point_mm", [](const W& w) { return w.pad.file.reference_point_mm.has_value(); },
+       [](Y& y, const W& w) { WritePoint(y, *w.pad.file.reference_point_mm); }},
+      {"inertia_kg_m2", [](const W& w) { return w.pad.file.inertia_kg_m2.has_value(); },
+       [](Y& y, const W& w) {
+         y << YAML::Flow << YAML::BeginMap;
+         WriteKeys(y, InertiaKeys(), *w.pad.file.inertia_kg_m2);
+         y << YAML::EndMap;
+       }},
+      {"center_of_mass_mm", [](const W& w) { return w.pad.file.center_of_mass_mm.has_value(); },
+       [](Y& y, const W& w) { WritePoint(y, *w.pad.file.center_of_mass_mm); }},
+      {"provenance"},
+  };
+  return keys;
+}
+
 void LoadMeshPad(const YamlFields& f, PadSpec& pad) {
   const YamlFields m = f.Child("mesh");
-  m.RequireOnly({"file", "unit", "remesh_edge_mm"});
+  m.RequireOnly(Keys(MeshKeys()));
   fs::path file = m.String("file");
   if (file.is_relative()) file = fs::path(f.file()).parent_path() / file;  // relative to the YAML file
   pad.mesh_file = file.lexically_normal().string();
@@ -279,7 +419,7 @@ void LoadMeshPad(const YamlFields& f, PadSpec& pad) {
 }  // namespace
 
 Eigen::Matrix3d ReadInertia(const YamlFields& i) {
-  i.RequireOnly({"ixx", "iyy", "izz", "ixy", "ixz", "iyz"});
+  i.RequireOnly(Keys(InertiaKeys()));
   const auto moment = [&](const char* key) { return ReadNumber(i, key, Sign::kPositive, &limits::kInertia_kg_m2); };
   const auto product = [&](const char* key) { return i.Has(key) ? i.Number(key) : 0.0; };
   Eigen::Matrix3d m;
@@ -449,13 +589,11 @@ PadSpec LoadPad(const YamlFields& f, geom::RimPolygon rim) {
   if (!IsValidUtf8(pad.name)) f.Fail("name", "the pad name (from the file name) is not valid UTF-8 text");
   if (kind == "axisymmetric") {
     pad.kind = PadKind::kAxisymmetric;
-    f.RequireOnly({"schema_version", "name", "kind", "mass_kg", "profile", "description", "provenance",
-                   "angular_segments", "reference_point_mm", "inertia_kg_m2", "center_of_mass_mm"});
+    f.RequireOnly(Keys(PadKeys(), {"mesh", "density_kg_m3"}));
     LoadAxisymmetricPad(f, pad);
   } else if (kind == "mesh") {
     pad.kind = PadKind::kMesh;
-    f.RequireOnly({"schema_version", "name", "kind", "mesh", "mass_kg", "density_kg_m3", "description",
-                   "provenance", "reference_point_mm", "inertia_kg_m2", "center_of_mass_mm"});
+    f.RequireOnly(Keys(PadKeys(), {"profile", "angular_segments"}));
     LoadMeshPad(f, pad);
   } else {
     f.Fail("kind", "unknown pad kind '" + kind + "' (axisymmetric, mesh)");
@@ -467,10 +605,7 @@ rft::SoilParameters LoadSoil(const std::string& name_or_path) {
   const std::string path = ResolveCatalogFile("soils", name_or_path);
   const YamlFields f = YamlFields::LoadFile(path);
   f.RequireSchemaVersion(1);
-  std::vector<std::string> known{"schema_version", "name", "description", "atmosphere", "zeta_N_cm3", "provenance",
-                                 "dynamic_term", "law", "bekker", "gravity_scaling"};
-  for (const std::string& key : FieldKeys(SoilNumberFields())) known.push_back(key);
-  f.RequireOnly(known);
+  f.RequireOnly(Keys(SoilKeys()));
   rft::SoilParameters soil;
   soil.name = f.StringOr("name", fs::path(path).stem().string());
   if (!IsValidUtf8(soil.name)) f.Fail("name", "the soil name (from the file name) is not valid UTF-8 text");
@@ -523,45 +658,9 @@ rft::SoilParameters LoadSoil(const std::string& name_or_path) {
 }
 
 void WritePad(const PadSpec& pad, const std::string& path) {
-  const PadFileFields& p = pad.file;
   YAML::Emitter y;
-  const auto point = [&](const char* key, const std::optional<std::array<double, 3>>& v) {
-    if (v) y << YAML::Key << key << YAML::Value << YAML::Flow << YAML::BeginSeq << (*v)[0] << (*v)[1] << (*v)[2] << YAML::EndSeq;
-  };
-  y << YAML::BeginMap << YAML::Key << "schema_version" << YAML::Value << 1 << YAML::Key << "name" << YAML::Value
-    << pad.name << YAML::Key << "kind" << YAML::Value << (pad.kind == PadKind::kMesh ? "mesh" : "axisymmetric");
-  if (!p.description.empty()) y << YAML::Key << "description" << YAML::Value << p.description;
-  if (p.mass_kg > 0.0) y << YAML::Key << "mass_kg" << YAML::Value << p.mass_kg;
-  if (p.density_kg_m3 > 0.0) y << YAML::Key << "density_kg_m3" << YAML::Value << p.density_kg_m3;
-  if (pad.kind == PadKind::kAxisymmetric) {
-    y << YAML::Key << "profile" << YAML::Value << YAML::BeginMap << YAML::Key << "shape" << YAML::Value << p.shape;
-    WriteFields(y, *ProfileFields(p.shape), p);
-    if (p.segments > 0) y << YAML::Key << "segments" << YAML::Value << p.segments;
-    if (p.shape == "table") {
-      y << YAML::Key << "points_mm" << YAML::Value << YAML::BeginSeq;
-      for (const std::array<double, 2>& q : p.points_mm) y << YAML::Flow << YAML::BeginSeq << q[0] << q[1] << YAML::EndSeq;
-      y << YAML::EndSeq;
-    }
-    y << YAML::EndMap;
-    if (p.angular_segments > 0) y << YAML::Key << "angular_segments" << YAML::Value << p.angular_segments;
-  } else {
-    // The mesh relative to the written file (as LoadPad reads it), wherever either lives.
-    const fs::path mesh = fs::absolute(pad.mesh_file).lexically_normal();
-    const fs::path rel = mesh.lexically_relative(fs::absolute(fs::path(path)).parent_path().lexically_normal());
-    y << YAML::Key << "mesh" << YAML::Value << YAML::BeginMap << YAML::Key << "file" << YAML::Value
-      << (rel.empty() ? mesh : rel).generic_string() << YAML::Key << "unit" << YAML::Value << p.mesh_unit;
-    if (p.remesh_edge_mm > 0.0) y << YAML::Key << "remesh_edge_mm" << YAML::Value << p.remesh_edge_mm;
-    y << YAML::EndMap;
-  }
-  point("reference_point_mm", p.reference_point_mm);
-  if (p.inertia_kg_m2) {
-    const std::array<double, 6>& i = *p.inertia_kg_m2;
-    y << YAML::Key << "inertia_kg_m2" << YAML::Value << YAML::Flow << YAML::BeginMap;
-    const char* keys[] = {"ixx", "iyy", "izz", "ixy", "ixz", "iyz"};
-    for (int k = 0; k < 6; ++k) y << YAML::Key << keys[k] << YAML::Value << i[k];
-    y << YAML::EndMap;
-  }
-  point("center_of_mass_mm", p.center_of_mass_mm);
+  y << YAML::BeginMap;
+  WriteKeys(y, PadKeys(), PadToWrite{pad, path});
   y << YAML::EndMap;
   WriteFileAtomically(path, [&](std::ostream& out) { out << y.c_str() << '\n'; });
 }
@@ -572,23 +671,8 @@ void WriteSoil(const rft::SoilParameters& soil, const std::string& path) {
 
 void WriteSoil(const rft::SoilParameters& soil, std::ostream& out) {
   YAML::Emitter y;
-  y << YAML::BeginMap << YAML::Key << "schema_version" << YAML::Value << 1 << YAML::Key << "name" << YAML::Value
-    << soil.name << YAML::Key << "atmosphere" << YAML::Value << rft::AtmosphereName(soil.atmosphere);
-  if (soil.gravity_scaling != rft::GravityScaling::kLithostatic)
-    y << YAML::Key << "gravity_scaling" << YAML::Value << rft::GravityScalingName(soil.gravity_scaling);
-  const bool bekker = soil.rft_law_3d == rft::LawKind::kBekker;
-  // A Bekker soil without zeta leaves it out (0 would not read back); RFT soils always state it.
-  if (!bekker || soil.zeta_N_m3 > 0.0)
-    y << YAML::Key << "zeta_N_cm3" << YAML::Value << units::ZetaToN_cm3(soil.zeta_N_m3);
-  WriteFields(y, SoilNumberFields(), soil);
-  if (soil.rft_law_3d != rft::LawKind::kLi2013)
-    y << YAML::Key << "law" << YAML::Value << std::string(rft::LawKindName(soil.rft_law_3d));
-  if (bekker || soil.bekker.k_c_N_m_n1 + soil.bekker.k_phi_N_m_n2 > 0.0) {
-    y << YAML::Key << "bekker" << YAML::Value << YAML::BeginMap;
-    WriteFields(y, BekkerFields(), soil.bekker);
-    y << YAML::EndMap;
-  }
-  if (soil.dynamic_term) y << YAML::Key << "dynamic_term" << YAML::Value << true;
+  y << YAML::BeginMap;
+  WriteKeys(y, SoilKeys(), soil);
   y << YAML::EndMap;
   out << y.c_str() << '\n';
 }

@@ -36,18 +36,12 @@ struct NumberField {
 template <typename T>
 using FieldTable = std::vector<NumberField<T>>;
 
-// The keys of a table, for YamlFields::RequireOnly.
+// The keys of a table, for YamlFields::RequireOnly (a block of numbers only; a block with other
+// keys has a KeyTable, key_table.h).
 template <typename T>
 std::vector<std::string> FieldKeys(const FieldTable<T>& fields) {
   std::vector<std::string> keys;
   for (const NumberField<T>& field : fields) keys.push_back(field.key);
-  return keys;
-}
-// The keys of a table, then the block's keys that no number field reads.
-template <typename T>
-std::vector<std::string> FieldKeys(const FieldTable<T>& fields, const std::vector<std::string>& others) {
-  std::vector<std::string> keys = FieldKeys(fields);
-  keys.insert(keys.end(), others.begin(), others.end());
   return keys;
 }
 

@@ -6,6 +6,7 @@
 #include "drop_tests/formats/output_path.h"
 #include "drop_tests/formats/dataset_csv.h"
 #include "drop_tests/formats/field_table.h"
+#include "drop_tests/formats/key_table.h"
 #include "drop_tests/model/effects.h"
 #include "drop_tests/model/effects_yaml.h"
 #include "drop_tests/catalog/paths_in_outputs.h"
@@ -42,8 +43,94 @@ void ReadBekkerOverride(const io::YamlFields& f, SoilOverride& o) {
   if (!o.HasBekker()) f.Fail("bekker", "must give at least one of n, k_c_kN_m_n1, k_phi_kN_m_n2");
 }
 
+// What a model file's writer needs beside the model: the folder its paths are written relative to.
+template <typename T>
+struct ToWrite {
+  const T& value;
+  const std::string& directory;
+};
+
+// An override's `fit` block's keys, in the order WriteModelFile writes them.
+const io::KeyTable<ToWrite<SoilFit>>& FitKeys() {
+  using W = ToWrite<SoilFit>;
+  using Y = YAML::Emitter;
+  static const io::KeyTable<W> keys{
+      {"method", io::Always<W>, [](Y& y, const W& w) { y << w.value.method; }},
+      {"drops", io::Always<W>, [](Y& y, const W& w) { y << w.value.drops; }},
+      {"samples", io::Always<W>, [](Y& y, const W& w) { y << w.value.samples; }},
+      {"residual_rms_N", io::Always<W>, [](Y& y, const W& w) { y << w.value.residual_rms_N; }},
+      {"dataset", [](const W& w) { return !w.value.dataset.empty(); },
+       [](Y& y, const W& w) { y << io::PathForOutput(w.value.dataset, w.directory); }},
+  };
+  return keys;
+}
+
+// A soil override's keys, in the order WriteModelFile writes them.
+const io::KeyTable<ToWrite<SoilOverride>>& OverrideKeys() {
+  using W = ToWrite<SoilOverride>;
+  using Y = YAML::Emitter;
+  const auto interval = [](const W& w) { return w.value.zeta_low_N_m3 && w.value.zeta_high_N_m3; };
+  static const io::KeyTable<W> keys = [&] {
+    io::KeyTable<W> k;
+    io::AppendNumberKeys<W, SoilOverride>(
+        k, OverrideNumberFields(), [](const W& w) -> const SoilOverride& { return w.value; },
+        [](const W& w) { return w.value.GivesZeta(); });
+    k.push_back({"zeta_interval_N_cm3", interval, [](Y& y, const W& w) {
+                   y << YAML::Flow << YAML::BeginSeq << units::ZetaToN_cm3(*w.value.zeta_low_N_m3)
+                     << units::ZetaToN_cm3(*w.value.zeta_high_N_m3) << YAML::EndSeq;
+                 }});
+    k.push_back({"confidence", interval, [](Y& y, const W& w) { y << w.value.confidence; }});
+    k.push_back({"dynamic_lambda", [](const W& w) { return w.value.dynamic_lambda.has_value(); },
+                 [](Y& y, const W& w) { y << *w.value.dynamic_lambda; }});
+    k.push_back({"bekker", [](const W& w) { return w.value.HasBekker(); }, [](Y& y, const W& w) {
+                   y << YAML::BeginMap;
+                   for (const BekkerOverrideField& e : BekkerOverrideFields())
+                     if (w.value.*e.member) y << YAML::Key << e.key << YAML::Value << *(w.value.*e.member) / e.si_per_unit;
+                   y << YAML::EndMap;
+                 }});
+    k.push_back({"fit", [](const W& w) { return w.value.fit.has_value(); }, [](Y& y, const W& w) {
+                   y << YAML::BeginMap;
+                   io::WriteKeys(y, FitKeys(), ToWrite<SoilFit>{*w.value.fit, w.directory});
+                   y << YAML::EndMap;
+                 }});
+    return k;
+  }();
+  return keys;
+}
+
+// A model file's keys, in the order WriteModelFile writes them.
+const io::KeyTable<ToWrite<ModelFile>>& ModelKeys() {
+  using W = ToWrite<ModelFile>;
+  using Y = YAML::Emitter;
+  static const io::KeyTable<W> keys{
+      {"schema_version", io::Always<W>, [](Y& y, const W&) { y << 1; }},
+      {"type", io::Always<W>, [](Y& y, const W&) { y << "model"; }},
+      {"name", [](const W& w) { return !w.value.name.empty(); }, [](Y& y, const W& w) { y << w.value.name; }},
+      {"description", [](const W& w) { return !w.value.description.empty(); },
+       [](Y& y, const W& w) { y << w.value.description; }},
+      {"soils", io::Always<W>,
+       [](Y& y, const W& w) {
+         y << YAML::BeginMap;
+         for (const auto& [name, o] : w.value.soils) {
+           y << YAML::Key << name << YAML::Value << YAML::BeginMap;
+           io::WriteKeys(y, OverrideKeys(), ToWrite<SoilOverride>{o, w.directory});
+           y << YAML::EndMap;
+         }
+         y << YAML::EndMap;
+       }},
+      {"effects", io::Always<W>,
+       [](Y& y, const W& w) {
+         if (w.value.HasEffects()) y << EffectsToYaml(w.value.effects, w.value.effect_intervals);
+         else y << YAML::Flow << YAML::BeginMap << YAML::EndMap;
+       }},
+      {"provenance", [](const W& w) { return !w.value.provenance_yaml.empty(); },
+       [](Y& y, const W& w) { y << YAML::Load(w.value.provenance_yaml); }},
+  };
+  return keys;
+}
+
 SoilOverride ReadOverride(const io::YamlFields& f) {
-  f.RequireOnly(io::FieldKeys(OverrideNumberFields(), {"zeta_interval_N_cm3", "confidence", "dynamic_lambda", "bekker", "fit"}));
+  f.RequireOnly(io::Keys(OverrideKeys()));
   SoilOverride o;
   // An override that gives lambda or Bekker's fields may leave zeta out: the soil file's (none for
   // some Bekker soils) is kept to the last bit, which a written copy of it would not be.
@@ -75,7 +162,7 @@ SoilOverride ReadOverride(const io::YamlFields& f) {
   }
   if (f.Has("fit")) {
     const io::YamlFields fit = f.Child("fit");
-    fit.RequireOnly({"method", "drops", "samples", "residual_rms_N", "dataset"});
+    fit.RequireOnly(io::Keys(FitKeys()));
     SoilFit s;
     s.method = fit.StringOr("method", "");
     if (fit.Has("drops")) s.drops = fit.PositiveInt("drops");
@@ -106,7 +193,7 @@ const BekkerOverrideField* FindBekkerOverrideField(std::string_view key) {
 ModelFile LoadModelFile(const std::string& path) {
   const io::YamlFields f = io::YamlFields::LoadFile(path);
   f.RequireSchemaVersion(1);
-  f.RequireOnly({"schema_version", "type", "name", "description", "soils", "effects", "provenance"});
+  f.RequireOnly(io::Keys(ModelKeys()));
   if (f.String("type") != "model") f.Fail("type", "must be 'model', got '" + f.String("type") + "'");
   ModelFile m;
   m.source = path;
@@ -132,40 +219,8 @@ void WriteModelFile(const ModelFile& m, const io::OutputTarget& target, const st
       output_dir.empty() ? std::filesystem::path(target.path).parent_path().string() : output_dir;
   YAML::Emitter y;
   y.SetDoublePrecision(10);
-  y << YAML::BeginMap << YAML::Key << "schema_version" << YAML::Value << 1 << YAML::Key << "type" << YAML::Value
-    << "model";
-  if (!m.name.empty()) y << YAML::Key << "name" << YAML::Value << m.name;
-  if (!m.description.empty()) y << YAML::Key << "description" << YAML::Value << m.description;
-  y << YAML::Key << "soils" << YAML::Value << YAML::BeginMap;
-  for (const auto& [name, o] : m.soils) {
-    y << YAML::Key << name << YAML::Value << YAML::BeginMap;
-    if (o.GivesZeta()) io::WriteFields(y, OverrideNumberFields(), o);
-    if (o.zeta_low_N_m3 && o.zeta_high_N_m3)
-      y << YAML::Key << "zeta_interval_N_cm3" << YAML::Value << YAML::Flow << YAML::BeginSeq
-        << units::ZetaToN_cm3(*o.zeta_low_N_m3) << units::ZetaToN_cm3(*o.zeta_high_N_m3) << YAML::EndSeq << YAML::Key << "confidence"
-        << YAML::Value << o.confidence;
-    if (o.dynamic_lambda) y << YAML::Key << "dynamic_lambda" << YAML::Value << *o.dynamic_lambda;
-    if (o.HasBekker()) {
-      y << YAML::Key << "bekker" << YAML::Value << YAML::BeginMap;
-      for (const BekkerOverrideField& e : BekkerOverrideFields())
-        if (o.*e.member) y << YAML::Key << e.key << YAML::Value << *(o.*e.member) / e.si_per_unit;
-      y << YAML::EndMap;
-    }
-    if (o.fit) {
-      y << YAML::Key << "fit" << YAML::Value << YAML::BeginMap << YAML::Key << "method" << YAML::Value << o.fit->method
-        << YAML::Key << "drops" << YAML::Value << o.fit->drops << YAML::Key << "samples" << YAML::Value
-        << o.fit->samples << YAML::Key << "residual_rms_N" << YAML::Value << o.fit->residual_rms_N;
-      if (!o.fit->dataset.empty())
-        y << YAML::Key << "dataset" << YAML::Value << io::PathForOutput(o.fit->dataset, directory);
-      y << YAML::EndMap;
-    }
-    y << YAML::EndMap;
-  }
-  y << YAML::EndMap;
-  y << YAML::Key << "effects" << YAML::Value;
-  if (m.HasEffects()) y << EffectsToYaml(m.effects, m.effect_intervals);
-  else y << YAML::Flow << YAML::BeginMap << YAML::EndMap;
-  if (!m.provenance_yaml.empty()) y << YAML::Key << "provenance" << YAML::Value << YAML::Load(m.provenance_yaml);
+  y << YAML::BeginMap;
+  io::WriteKeys(y, ModelKeys(), ToWrite<ModelFile>{m, directory});
   y << YAML::EndMap;
   io::WriteOutputFile(target, [&](std::ostream& out) { out << kModelFileMark << '\n' << y.c_str() << '\n'; }, kModelFileMark);
 }

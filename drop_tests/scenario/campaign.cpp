@@ -13,6 +13,7 @@
 #include "drop_tests/formats/output_path.h"
 #include "drop_tests/scenario/campaign_plots.h"
 #include "drop_tests/formats/field_table.h"
+#include "drop_tests/formats/key_table.h"
 #include "drop_tests/catalog/paths_in_outputs.h"
 #include "drop_tests/formats/yaml_fields.h"
 #include "rft/gravity_constants.h"
@@ -71,15 +72,64 @@ const io::FieldTable<PaperCheck>& PaperFigureFields() {
   return fields;
 }
 
+// A check's `numerator` and `denominator`: a pad and a soil by name.
+struct PadSoil {
+  const std::string& pad;
+  const std::string& soil;
+};
+const io::KeyTable<PadSoil>& PadSoilKeys() {
+  using Y = YAML::Emitter;
+  static const io::KeyTable<PadSoil> keys{
+      {"pad", io::Always<PadSoil>, [](Y& y, const PadSoil& p) { y << p.pad; }},
+      {"soil", io::Always<PadSoil>, [](Y& y, const PadSoil& p) { y << p.soil; }},
+  };
+  return keys;
+}
+void WritePadSoil(YAML::Emitter& y, const PadSoil& p) {
+  y << YAML::Flow << YAML::BeginMap;
+  io::WriteKeys(y, PadSoilKeys(), p);
+  y << YAML::EndMap;
+}
+
+// A paper check's keys, in the order a resolved copy writes them.
+const io::KeyTable<PaperCheck>& CheckKeys() {
+  using C = PaperCheck;
+  using Y = YAML::Emitter;
+  static const io::KeyTable<C> keys = [] {
+    io::KeyTable<C> k{
+        {"name", io::Always<C>, [](Y& y, const C& c) { y << c.name; }},
+        {"quantity", io::Always<C>, [](Y& y, const C& c) { y << c.quantity; }},
+        {"numerator", io::Always<C>, [](Y& y, const C& c) { WritePadSoil(y, {c.numerator_pad, c.numerator_soil}); }},
+        {"denominator", io::Always<C>,
+         [](Y& y, const C& c) { WritePadSoil(y, {c.denominator_pad, c.denominator_soil}); }},
+    };
+    io::AppendNumberKeys(k, CheckFields());
+    k.push_back({"paper", [](const C& c) { return c.paper_experiment > 0 || c.paper_rft > 0; },
+                 [](Y& y, const C& c) {
+                   y << YAML::Flow << YAML::BeginMap;
+                   io::WriteFields(y, PaperFigureFields(), c);
+                   y << YAML::EndMap;
+                 }});
+    k.push_back({"source", [](const C& c) { return !c.source.empty(); }, [](Y& y, const C& c) { y << c.source; }});
+    k.push_back({"used_for_fit", [](const C& c) { return c.used_for_fit; }, [](Y& y, const C&) { y << true; }});
+    k.push_back({"fit_by", [](const C& c) { return c.used_for_fit; }, [](Y& y, const C& c) { y << c.fit_by; }});
+    k.push_back({"reading", [](const C& c) { return c.reading.has_value(); },
+                 [](Y& y, const C& c) { y << std::string(PaperReadingName(*c.reading)); }});
+    return k;
+  }();
+  return keys;
+}
+
 PaperCheck ReadCheck(const io::YamlFields& f) {
-  f.RequireOnly({"name", "quantity", "numerator", "denominator", "speed_m_s", "paper", "source", "used_for_fit", "fit_by",
-                 "reading"});
+  f.RequireOnly(io::Keys(CheckKeys()));
   PaperCheck c;
   c.name = f.String("name");
   c.quantity = f.String("quantity");
   if (c.quantity != "final_penetration_m" && c.quantity != "peak_force_N")
     f.Fail("quantity", "must be final_penetration_m or peak_force_N, got '" + c.quantity + "'");
   const io::YamlFields num = f.Child("numerator"), den = f.Child("denominator");
+  num.RequireOnly(io::Keys(PadSoilKeys()));
+  den.RequireOnly(io::Keys(PadSoilKeys()));
   c.numerator_pad = num.String("pad");
   c.numerator_soil = num.String("soil");
   c.denominator_pad = den.String("pad");
@@ -97,28 +147,6 @@ PaperCheck ReadCheck(const io::YamlFields& f) {
   if (!c.used_for_fit && !c.fit_by.empty()) f.Fail("fit_by", "only with used_for_fit: true");
   c.reading = ReadPaperReading(f);
   return c;
-}
-
-void WriteCheck(YAML::Emitter& y, const PaperCheck& c) {
-  auto pad_soil = [&](const char* key, const std::string& pad, const std::string& soil) {
-    y << YAML::Key << key << YAML::Value << YAML::Flow << YAML::BeginMap << YAML::Key << "pad" << YAML::Value << pad
-      << YAML::Key << "soil" << YAML::Value << soil << YAML::EndMap;
-  };
-  y << YAML::BeginMap << YAML::Key << "name" << YAML::Value << c.name << YAML::Key << "quantity" << YAML::Value
-    << c.quantity;
-  pad_soil("numerator", c.numerator_pad, c.numerator_soil);
-  pad_soil("denominator", c.denominator_pad, c.denominator_soil);
-  io::WriteFields(y, CheckFields(), c);
-  if (c.paper_experiment > 0 || c.paper_rft > 0) {
-    y << YAML::Key << "paper" << YAML::Value << YAML::Flow << YAML::BeginMap;
-    io::WriteFields(y, PaperFigureFields(), c);
-    y << YAML::EndMap;
-  }
-  if (!c.source.empty()) y << YAML::Key << "source" << YAML::Value << c.source;
-  if (c.used_for_fit)
-    y << YAML::Key << "used_for_fit" << YAML::Value << true << YAML::Key << "fit_by" << YAML::Value << c.fit_by;
-  if (c.reading) y << YAML::Key << "reading" << YAML::Value << std::string(PaperReadingName(*c.reading));
-  y << YAML::EndMap;
 }
 
 // What a resolved copy states about a case's pad and soil besides their files: derived from the
@@ -167,13 +195,106 @@ const io::FieldTable<CaseNumbers>& CaseFields() {
   return fields;
 }
 
-template <typename... Tables>
-std::vector<std::string> Keys(std::vector<std::string> keys, const Tables&... tables) {
-  (
-      [&] {
-        for (const std::string& k : io::FieldKeys(tables)) keys.push_back(k);
-      }(),
-      ...);
+// One case of a resolved copy to write, with what it states besides its files.
+struct CaseToWrite {
+  const CampaignCase& c;
+  PadSummary pad;
+  CaseNumbers numbers;
+  const std::string& dir;  // the folder the copy lives in (its files are written relative to it)
+};
+
+const io::KeyTable<CaseToWrite>& PadSummaryKeys() {
+  using W = CaseToWrite;
+  using Y = YAML::Emitter;
+  static const io::KeyTable<W> keys = [] {
+    io::KeyTable<W> k{
+        {"name", io::Always<W>, [](Y& y, const W& w) { y << w.c.pad->name; }},
+        {"file", io::Always<W>, [](Y& y, const W& w) { y << io::PathForOutput(w.c.pad->source, w.dir); }},
+    };
+    io::AppendNumberKeys<W, PadSummary>(k, PadSummaryFields(), [](const W& w) -> const PadSummary& { return w.pad; });
+    return k;
+  }();
+  return keys;
+}
+
+const io::KeyTable<CaseToWrite>& SoilSummaryKeys() {
+  using W = CaseToWrite;
+  using Y = YAML::Emitter;
+  static const io::KeyTable<W> keys = [] {
+    io::KeyTable<W> k{
+        {"name", io::Always<W>, [](Y& y, const W& w) { y << w.c.soil.name; }},
+        {"file", io::Always<W>, [](Y& y, const W& w) { y << io::PathForOutput(w.c.soil_source, w.dir); }},
+        {"atmosphere", io::Always<W>, [](Y& y, const W& w) { y << rft::AtmosphereName(w.c.soil.atmosphere); }},
+    };
+    io::AppendNumberKeys<W, rft::SoilParameters>(k, SoilSummaryFields(),
+                                                 [](const W& w) -> const rft::SoilParameters& { return w.c.soil; });
+    return k;
+  }();
+  return keys;
+}
+
+// A resolved copy's case (one entry of its `drops`).
+const io::KeyTable<CaseToWrite>& CaseKeys() {
+  using W = CaseToWrite;
+  using Y = YAML::Emitter;
+  const auto block = [](const io::KeyTable<W>& (*table)()) {
+    return [table](Y& y, const W& w) {
+      y << YAML::BeginMap;
+      io::WriteKeys(y, table(), w);
+      y << YAML::EndMap;
+    };
+  };
+  static const io::KeyTable<W> keys = [&] {
+    io::KeyTable<W> k{
+        {"drop_id", io::Always<W>, [](Y& y, const W& w) { y << w.c.drop_id; }},
+        {"pad", io::Always<W>, block(PadSummaryKeys)},
+        {"soil", io::Always<W>, block(SoilSummaryKeys)},
+    };
+    io::AppendNumberKeys<W, CaseNumbers>(k, CaseFields(), [](const W& w) -> const CaseNumbers& { return w.numbers; });
+    return k;
+  }();
+  return keys;
+}
+
+// A campaign scenario's top-level keys (`source` only in a resolved copy, `gravity_m_s2` and
+// `provenance` only in the user's: a resolved copy states each case's gravity).
+struct CampaignToWrite {
+  const CampaignScenario& s;
+  const std::string& dir;
+};
+const io::KeyTable<CampaignToWrite>& CampaignKeys() {
+  using W = CampaignToWrite;
+  using Y = YAML::Emitter;
+  static const io::KeyTable<W> keys{
+      {"schema_version", io::Always<W>, [](Y& y, const W&) { y << 1; }},
+      {"type", io::Always<W>, [](Y& y, const W&) { y << "campaign_resolved"; }},
+      {"name", io::Always<W>, [](Y& y, const W& w) { y << w.s.name; }},
+      {"description", [](const W& w) { return !w.s.description.empty(); }, [](Y& y, const W& w) { y << w.s.description; }},
+      {"source", io::Always<W>, [](Y& y, const W& w) { y << io::PathForOutput(w.s.source, w.dir); }},
+      {"gravity_m_s2"},
+      {"reference_speed_m_s", io::Always<W>, [](Y& y, const W& w) { y << w.s.reference_speed_m_s; }},
+      {"drops", io::Always<W>,
+       [](Y& y, const W& w) {
+         y << YAML::BeginSeq;
+         for (const CampaignCase& c : w.s.cases) {
+           y << YAML::BeginMap;
+           io::WriteKeys(y, CaseKeys(), CaseToWrite{c, SummaryOf(*c.pad), NumbersOf(c), w.dir});
+           y << YAML::EndMap;
+         }
+         y << YAML::EndSeq;
+       }},
+      {"paper_checks", [](const W& w) { return !w.s.checks.empty(); },
+       [](Y& y, const W& w) {
+         y << YAML::BeginSeq;
+         for (const PaperCheck& c : w.s.checks) {
+           y << YAML::BeginMap;
+           io::WriteKeys(y, CheckKeys(), c);
+           y << YAML::EndMap;
+         }
+         y << YAML::EndSeq;
+       }},
+      {"provenance"},
+  };
   return keys;
 }
 
@@ -237,10 +358,10 @@ void ReadResolvedCases(const io::YamlFields& f, const std::string& dir, Campaign
   SoilCache soils;
   std::set<std::string> ids;
   for (const io::YamlFields& entry : f.List("drops")) {
-    entry.RequireOnly(Keys({"drop_id", "pad", "soil"}, CaseFields()));
+    entry.RequireOnly(io::Keys(CaseKeys()));
     const io::YamlFields pf = entry.Child("pad"), sf = entry.Child("soil");
-    pf.RequireOnly(Keys({"name", "file"}, PadSummaryFields()));
-    sf.RequireOnly(Keys({"name", "file", "atmosphere"}, SoilSummaryFields()));
+    pf.RequireOnly(io::Keys(PadSummaryKeys()));
+    sf.RequireOnly(io::Keys(SoilSummaryKeys()));
     const std::string pad_file = io::PathFromOutput(pf.String("file"), dir);
     const std::string soil_file = io::PathFromOutput(sf.String("file"), dir);
     const std::shared_ptr<const io::PadSpec>& pad = Cached(pads, pad_file, pf, "file", LoadSharedPad);
@@ -270,12 +391,7 @@ CampaignScenario LoadCampaignScenario(const std::string& path) {
   const std::string type = f.StringOr("type", "campaign");
   if (type != "campaign" && type != "campaign_resolved") f.Fail("type", "must be 'campaign' or 'campaign_resolved'");
   const bool resolved = type == "campaign_resolved";
-  if (resolved)
-    f.RequireOnly({"schema_version", "type", "name", "description", "source", "reference_speed_m_s", "drops",
-                   "paper_checks"});
-  else
-    f.RequireOnly({"schema_version", "type", "name", "description", "gravity_m_s2", "reference_speed_m_s", "drops",
-                   "paper_checks", "provenance"});
+  f.RequireOnly(resolved ? io::Keys(CampaignKeys(), {"gravity_m_s2", "provenance"}) : io::Keys(CampaignKeys(), {"source"}));
   CampaignScenario s;
   const std::string dir = fs::path(path).parent_path().string();
   // A resolved copy names the scenario it was resolved from, and stands for it.
@@ -297,32 +413,8 @@ CampaignScenario LoadCampaignScenario(const std::string& path) {
 
 void WriteResolvedScenario(const CampaignScenario& s, const std::string& path, const std::string& output_dir) {
   YAML::Emitter y;
-  y << YAML::BeginMap << YAML::Key << "schema_version" << YAML::Value << 1 << YAML::Key << "type" << YAML::Value
-    << "campaign_resolved" << YAML::Key << "name" << YAML::Value << s.name;
-  if (!s.description.empty()) y << YAML::Key << "description" << YAML::Value << s.description;
-  y << YAML::Key << "source" << YAML::Value << io::PathForOutput(s.source, output_dir) << YAML::Key
-    << "reference_speed_m_s" << YAML::Value << s.reference_speed_m_s << YAML::Key << "drops" << YAML::Value
-    << YAML::BeginSeq;
-  for (const CampaignCase& c : s.cases) {
-    y << YAML::BeginMap << YAML::Key << "drop_id" << YAML::Value << c.drop_id;
-    y << YAML::Key << "pad" << YAML::Value << YAML::BeginMap << YAML::Key << "name" << YAML::Value << c.pad->name
-      << YAML::Key << "file" << YAML::Value << io::PathForOutput(c.pad->source, output_dir);
-    io::WriteFields(y, PadSummaryFields(), SummaryOf(*c.pad));
-    y << YAML::EndMap;
-    y << YAML::Key << "soil" << YAML::Value << YAML::BeginMap << YAML::Key << "name" << YAML::Value << c.soil.name
-      << YAML::Key << "file" << YAML::Value << io::PathForOutput(c.soil_source, output_dir) << YAML::Key
-      << "atmosphere" << YAML::Value << rft::AtmosphereName(c.soil.atmosphere);
-    io::WriteFields(y, SoilSummaryFields(), c.soil);
-    y << YAML::EndMap;
-    io::WriteFields(y, CaseFields(), NumbersOf(c));
-    y << YAML::EndMap;
-  }
-  y << YAML::EndSeq;
-  if (!s.checks.empty()) {
-    y << YAML::Key << "paper_checks" << YAML::Value << YAML::BeginSeq;
-    for (const PaperCheck& c : s.checks) WriteCheck(y, c);
-    y << YAML::EndSeq;
-  }
+  y << YAML::BeginMap;
+  io::WriteKeys(y, CampaignKeys(), CampaignToWrite{s, output_dir});
   y << YAML::EndMap;
   io::WriteFileAtomically(path, [&](std::ostream& out) { out << y.c_str() << '\n'; });
 }

@@ -10,6 +10,7 @@
 
 #include "drop_tests/formats/dataset_csv.h"  // io::FormatNumber
 #include "drop_tests/formats/field_table.h"
+#include "drop_tests/formats/key_table.h"
 #include "drop_tests/formats/output_path.h"
 #include "drop_tests/catalog/paths_in_outputs.h"
 #include "drop_tests/formats/yaml_diff.h"
@@ -86,6 +87,14 @@ const io::FieldTable<lander::ConeLimit>& ConeFields() {
   return fields;
 }
 
+// An absorber block's keys for its kind, in the order a resolved copy writes them.
+io::KeyTable<lander::ShockAbsorber> AbsorberKeys(lander::ShockAbsorber::Kind kind) {
+  using A = lander::ShockAbsorber;
+  io::KeyTable<A> k{{"kind", io::Always<A>, [](YAML::Emitter& y, const A& a) { y << AbsorberKindName(a.kind); }}};
+  io::AppendNumberKeys(k, AbsorberFields(kind));
+  return k;
+}
+
 lander::ShockAbsorber ReadAbsorber(const io::YamlFields& f) {
   lander::ShockAbsorber a;
   const std::string kind = f.String("kind");
@@ -96,16 +105,14 @@ lander::ShockAbsorber ReadAbsorber(const io::YamlFields& f) {
   } else {
     f.Fail("kind", "unknown absorber kind '" + kind + "' (spring_damper, crushable)");
   }
-  std::vector<std::string> known{"kind"};
-  for (const std::string& key : io::FieldKeys(AbsorberFields(a.kind))) known.push_back(key);
-  f.RequireOnly(known);
+  f.RequireOnly(io::Keys(AbsorberKeys(a.kind)));
   io::ReadFields(f, AbsorberFields(a.kind), a);
   return a;
 }
 
 void WriteAbsorber(YAML::Emitter& y, const lander::ShockAbsorber& a) {
-  y << YAML::BeginMap << YAML::Key << "kind" << YAML::Value << AbsorberKindName(a.kind);
-  io::WriteFields(y, AbsorberFields(a.kind), a);
+  y << YAML::BeginMap;
+  io::WriteKeys(y, AbsorberKeys(a.kind), a);
   y << YAML::EndMap;
 }
 
@@ -228,14 +235,6 @@ const io::FieldTable<LanderInitialSpec>& AttitudeNumberFields() {
 
 constexpr const char* kReleaseBodyComKey = "release_body_com_m";
 
-// The field of `table` with `key`; a key the table does not hold is a bug in the key list.
-template <typename T>
-const io::NumberField<T>& FieldNamed(const io::FieldTable<T>& table, const std::string& key) {
-  for (const io::NumberField<T>& field : table)
-    if (key == field.key) return field;
-  throw std::logic_error("lander scenario: no writer for initial." + key);
-}
-
 const io::FieldTable<lander::LanderRunOptions>& RunNumberFields() {
   using R = lander::LanderRunOptions;
   static const io::FieldTable<R> fields{
@@ -247,11 +246,195 @@ const io::FieldTable<lander::LanderRunOptions>& RunNumberFields() {
   return fields;
 }
 
+using FileName = std::function<std::string(const std::string&)>;
+void WriteLanderBlock(YAML::Emitter& y, const LanderSpec& l, const FileName& file);
+void WriteSoilsBlock(YAML::Emitter& y, const LanderScenario& s, const lander::LanderSetup& setup);
+void WriteVector(YAML::Emitter& y, const Eigen::Vector3d& v, double scale);
+
+// A resolved copy to write: the scenario, the setup it resolves to, and how the files it names are
+// written (relative to the folder the copy lives in).
+struct ResolvedToWrite {
+  const LanderScenario& s;
+  const lander::LanderSetup& setup;
+  FileName file;
+};
+
+// The tables below hold a scenario's keys, block by block, in the order a resolved copy writes
+// them; a key with no writer is one only the user's scenario has (the resolved copy writes what
+// it resolves to instead: a patch's polygon, a soil field's cells as patches).
+
+struct PatchToWrite {
+  const rft::SoilPatch& patch;
+  const std::string& soil;
+};
+
+const io::KeyTable<PatchToWrite>& PatchKeys() {
+  using P = PatchToWrite;
+  using Y = YAML::Emitter;
+  static const io::KeyTable<P> keys{
+      {"name", io::Always<P>, [](Y& y, const P& p) { y << p.patch.name; }},
+      {"soil", io::Always<P>, [](Y& y, const P& p) { y << p.soil; }},
+      {"rectangle_m"},
+      {"polygon_m", io::Always<P>,
+       [](Y& y, const P& p) {
+         y << YAML::BeginSeq;
+         for (const Eigen::Vector2d& c : p.patch.polygon_W) y << YAML::Flow << YAML::BeginSeq << c.x() << c.y() << YAML::EndSeq;
+         y << YAML::EndSeq;
+       }},
+      {"under_pad"},
+      {"half_width_m"},
+  };
+  return keys;
+}
+
+void WritePatch(YAML::Emitter& y, const rft::SoilPatch& patch, const std::string& soil) {
+  y << YAML::BeginMap;
+  io::WriteKeys(y, PatchKeys(), PatchToWrite{patch, soil});
+  y << YAML::EndMap;
+}
+
+// The ground's patches as a resolved copy states them: the scenario's, then a patch field's cells
+// of another soil than the default (the copy reads back to the same ground).
+void WritePatches(YAML::Emitter& y, const rft::Terrain& terrain) {
+  y << YAML::BeginSeq;
+  for (const rft::SoilPatch& p : terrain.patches) WritePatch(y, p, terrain.soils[p.soil].name);
+  const rft::SoilGrid& grid = terrain.grid;
+  for (int k = 0; k < grid.nx * grid.ny; ++k) {
+    if (grid.soil[k] == 0) continue;
+    const double x0 = grid.x0_m + (k % grid.nx) * grid.cell_m, y0 = grid.y0_m + (k / grid.nx) * grid.cell_m;
+    WritePatch(y,
+               {"soil_field_" + std::to_string(k + 1), rft::RectanglePolygon(x0, y0, x0 + grid.cell_m, y0 + grid.cell_m),
+                grid.soil[k]},
+               terrain.soils[grid.soil[k]].name);
+  }
+  y << YAML::EndSeq;
+}
+
+const io::KeyTable<ResolvedToWrite>& GroundKeys() {
+  using W = ResolvedToWrite;
+  using Y = YAML::Emitter;
+  static const io::KeyTable<W> keys = [] {
+    io::KeyTable<W> k;
+    io::AppendNumberKeys<W, LanderGroundSpec>(k, GroundNumberFields(), [](const W& w) -> const LanderGroundSpec& { return w.s.ground; });
+    k.push_back({"law", io::Always<W>, [](Y& y, const W& w) { y << std::string(rft::LawKindName(w.s.ground.law)); }});
+    k.push_back({"soil", io::Always<W>, [](Y& y, const W& w) { y << w.s.ground.default_soil; }});
+    k.push_back({"soils", io::Always<W>, [](Y& y, const W& w) { WriteSoilsBlock(y, w.s, w.setup); }});
+    k.push_back({"model", [](const W& w) { return w.s.model.has_value(); },
+                 [](Y& y, const W& w) { y << w.file(w.s.model->source); }});
+    k.push_back({"patches", io::Always<W>, [](Y& y, const W& w) { WritePatches(y, w.setup.terrain); }});
+    k.push_back({"soil_field"});
+    return k;
+  }();
+  return keys;
+}
+
+const io::KeyTable<ResolvedToWrite>& InitialKeys() {
+  using W = ResolvedToWrite;
+  using Y = YAML::Emitter;
+  const auto from_height = [](const W& w) { return w.s.initial.drop_height_m.has_value(); };
+  static const io::KeyTable<W> keys = [&] {
+    io::KeyTable<W> k{
+        {"drop_height_m", from_height, [](Y& y, const W& w) { y << *w.s.initial.drop_height_m; }},
+        {"release_vertical_speed_m_s", from_height, [](Y& y, const W& w) { y << w.s.initial.release_vertical_speed_m_s; }},
+        {"touchdown_speed_m_s", [](const W& w) { return w.s.initial.touchdown_speed_m_s.has_value(); },
+         [](Y& y, const W& w) { y << *w.s.initial.touchdown_speed_m_s; }},
+        {"horizontal_velocity_m_s", io::Always<W>,
+         [](Y& y, const W& w) {
+           const Eigen::Vector2d& v = w.s.initial.horizontal_velocity_m_s;
+           y << YAML::Flow << YAML::BeginSeq << v.x() << v.y() << YAML::EndSeq;
+         }},
+    };
+    io::AppendNumberKeys<W, LanderInitialSpec>(k, AttitudeNumberFields(),
+                                               [](const W& w) -> const LanderInitialSpec& { return w.s.initial; });
+    k.push_back({"align_to_slope", io::Always<W>, [](Y& y, const W& w) { y << w.s.initial.align_to_slope; }});
+    k.push_back({"angular_rate_deg_s", io::Always<W>,
+                 [](Y& y, const W& w) { WriteVector(y, w.s.initial.angular_rate_B, 1.0 / kDeg); }});
+    k.push_back({"pad_attitude", io::Always<W>, [](Y& y, const W& w) { y << PadAttitudeName(w.s.initial.pad_attitude); }});
+    k.push_back({kReleaseBodyComKey, io::Always<W>, [](Y& y, const W& w) { WriteVector(y, w.setup.initial.p_WB, 1.0); }});
+    return k;
+  }();
+  return keys;
+}
+
+const io::KeyTable<ResolvedToWrite>& SimulationKeys() {
+  using W = ResolvedToWrite;
+  using Y = YAML::Emitter;
+  using R = lander::LanderRunOptions;
+  static const io::KeyTable<W> keys = [] {
+    io::KeyTable<W> k;
+    io::AppendNumberKeys<W, R>(k, RunNumberFields(), [](const W& w) -> const R& { return w.s.options; });
+    k.push_back({"rtol", io::Always<W>, [](Y& y, const W& w) { y << w.s.options.integrator.rtol; }});
+    // Without `atol` the absolute tolerances are rtol times each state's scale (lander_simulation.h).
+    k.push_back({"atol", [](const W& w) { return !w.s.options.scale_tolerances; },
+                 [](Y& y, const W& w) { y << w.s.options.integrator.atol; }});
+    k.push_back({"max_step_s", [](const W& w) { return w.s.options.integrator.max_step != R{}.integrator.max_step; },
+                 [](Y& y, const W& w) { y << w.s.options.integrator.max_step; }});
+    k.push_back({"stiff", io::Always<W>, [](Y& y, const W& w) { y << w.s.options.integrator.stiff; }});
+    k.push_back({"soil_ramp", [](const W& w) { return w.s.options.soil_ramp != R{}.soil_ramp; },
+                 [](Y& y, const W& w) { y << (w.s.options.soil_ramp == lander::SoilRamp::kElement ? "element" : "pad"); }});
+    k.push_back({"pad_angular_segments", [](const W& w) { return w.s.pad_angular_segments > 0; },
+                 [](Y& y, const W& w) { y << w.s.pad_angular_segments; }});
+    k.push_back({"pad_rim", [](const W& w) { return w.s.pad_rim == geom::RimPolygon::kAreaPreserving; },
+                 [](Y& y, const W&) { y << "area_preserving"; }});
+    return k;
+  }();
+  return keys;
+}
+
+const io::KeyTable<ResolvedToWrite>& PaperKeys() {
+  using W = ResolvedToWrite;
+  using Y = YAML::Emitter;
+  const auto check = [](const W& w) { return w.s.paper.has_value(); };
+  const auto fitted = [](const W& w) { return w.s.paper && w.s.paper->used_for_fit; };
+  static const io::KeyTable<W> keys{
+      {"ground_case", [](const W& w) { return !w.s.paper_ground_case.empty(); },
+       [](Y& y, const W& w) { y << w.s.paper_ground_case; }},
+      {"roll_pitch_within_deg", check, [](Y& y, const W& w) { y << w.s.paper->roll_pitch_within_deg; }},
+      {"source", [](const W& w) { return w.s.paper && !w.s.paper->source.empty(); },
+       [](Y& y, const W& w) { y << w.s.paper->source; }},
+      {"used_for_fit", fitted, [](Y& y, const W&) { y << true; }},
+      {"fit_by", fitted, [](Y& y, const W& w) { y << w.s.paper->fit_by; }},
+      {"reading", [](const W& w) { return w.s.paper && w.s.paper->reading.has_value(); },
+       [](Y& y, const W& w) { y << std::string(PaperReadingName(*w.s.paper->reading)); }},
+  };
+  return keys;
+}
+
+// A block written from its table.
+std::function<void(YAML::Emitter&, const ResolvedToWrite&)> Block(const io::KeyTable<ResolvedToWrite>& (*table)()) {
+  return [table](YAML::Emitter& y, const ResolvedToWrite& w) {
+    y << YAML::BeginMap;
+    io::WriteKeys(y, table(), w);
+    y << YAML::EndMap;
+  };
+}
+
+// A scenario's top-level keys (`source` only in a resolved copy, `provenance` only in the user's).
+const io::KeyTable<ResolvedToWrite>& LanderScenarioKeys() {
+  using W = ResolvedToWrite;
+  using Y = YAML::Emitter;
+  static const io::KeyTable<W> keys{
+      {"schema_version", io::Always<W>, [](Y& y, const W&) { y << 1; }},
+      {"type", io::Always<W>, [](Y& y, const W&) { y << "lander_resolved"; }},
+      {"name", io::Always<W>, [](Y& y, const W& w) { y << w.s.name; }},
+      {"description", [](const W& w) { return !w.s.description.empty(); }, [](Y& y, const W& w) { y << w.s.description; }},
+      {"source", io::Always<W>, [](Y& y, const W& w) { y << w.file(w.s.source); }},
+      {"gravity_m_s2", io::Always<W>, [](Y& y, const W& w) { y << w.s.gravity_m_s2; }},
+      {"lander", io::Always<W>, [](Y& y, const W& w) { WriteLanderBlock(y, w.s.lander, w.file); }},
+      {"ground", io::Always<W>, Block(GroundKeys)},
+      {"initial", io::Always<W>, Block(InitialKeys)},
+      {"simulation", io::Always<W>, Block(SimulationKeys)},
+      {"paper", [](const W& w) { return !w.s.paper_ground_case.empty() || w.s.paper.has_value(); }, Block(PaperKeys)},
+      {"provenance"},
+  };
+  return keys;
+}
+
 using SoilCheck = std::function<void(const io::YamlFields&, const std::string&, const std::string&)>;
 
-// One soil patch; an under_pad patch keeps (pad, half width) until the release pose is known.
+// One soil patch: its corners, or an under_pad square placed once the release pose is known.
 LanderPatchSpec ReadPatch(const io::YamlFields& p, const SoilCheck& check_soil) {
-  p.RequireOnly({"name", "soil", "rectangle_m", "polygon_m", "under_pad", "half_width_m"});
+  p.RequireOnly(io::Keys(PatchKeys()));
   LanderPatchSpec patch;
   patch.soil = p.String("soil");
   check_soil(p, "soil", patch.soil);
@@ -260,8 +443,9 @@ LanderPatchSpec ReadPatch(const io::YamlFields& p, const SoilCheck& check_soil) 
   if (p.Has("rectangle_m")) {
     const std::vector<double> r = FixedList(p, "rectangle_m", 4);
     if (!(r[2] > r[0] && r[3] > r[1])) p.Fail("rectangle_m", "must be [x0, y0, x1, y1] with x1 > x0, y1 > y0");
-    patch.polygon_W = rft::RectanglePolygon(r[0], r[1], r[2], r[3]);
+    patch.area = rft::RectanglePolygon(r[0], r[1], r[2], r[3]);
   } else if (p.Has("polygon_m")) {
+    std::vector<Eigen::Vector2d> polygon_W;
     const YAML::Node list = p.node()["polygon_m"];
     if (!list.IsSequence() || list.size() < 3) p.Fail("polygon_m", "must list at least three [x, y] corners");
     for (size_t k = 0; k < list.size(); ++k) {
@@ -269,16 +453,17 @@ LanderPatchSpec ReadPatch(const io::YamlFields& p, const SoilCheck& check_soil) 
       if (!list[k].IsSequence() || list[k].size() != 2 || !YAML::convert<double>::decode(list[k][0], x) ||
           !YAML::convert<double>::decode(list[k][1], y) || !std::isfinite(x) || !std::isfinite(y))
         p.Fail("polygon_m[" + std::to_string(k) + "]", "must be a pair of finite numbers [x, y]");
-      patch.polygon_W.emplace_back(x, y);
+      polygon_W.emplace_back(x, y);
     }
-    if (const std::string problem = rft::PolygonProblem(patch.polygon_W); !problem.empty())
+    if (const std::string problem = rft::PolygonProblem(polygon_W); !problem.empty())
       p.Fail("polygon_m", "must be a simple polygon with an area: " + problem);
+    patch.area = std::move(polygon_W);
   } else {
     const int pad = p.PositiveInt("under_pad");
     if (pad > lander::kNumLegs) p.Fail("under_pad", "must be 1..4, got " + std::to_string(pad));
     const double h = p.Positive("half_width_m");
     patch.name = "under_pad_" + std::to_string(pad);
-    patch.polygon_W = {Eigen::Vector2d(pad, h)};  // resolved below, once the initial pose is known
+    patch.area = UnderPadSquare{pad, h};  // placed by ResolveLander, once the release pose is known
   }
   if (p.Has("name")) patch.name = p.String("name");
   return patch;
@@ -328,10 +513,7 @@ constexpr double kAnyPlateB_m = 1.0;
 // A resolved copy's ground also has its `soils` and `model` (checked and read by the caller).
 LanderGroundSpec ReadGround(const io::YamlFields& g, double gravity_m_s2, bool resolved) {
   LanderGroundSpec ground;
-  if (resolved)
-    g.RequireOnly(io::FieldKeys(GroundNumberFields(), {"law", "soil", "soils", "model", "patches"}));
-  else
-    g.RequireOnly(io::FieldKeys(GroundNumberFields(), {"law", "soil", "patches", "soil_field"}));
+  g.RequireOnly(resolved ? io::Keys(GroundKeys(), {"soil_field"}) : io::Keys(GroundKeys(), {"soils", "model"}));
   io::ReadFields(g, GroundNumberFields(), ground);
   if (ground.slope_rad >= limits::kGroundSlopeBelow_deg * kDeg)
     g.Fail("slope_deg", "must be below " + std::to_string(limits::kGroundSlopeBelow_deg));
@@ -373,9 +555,7 @@ LanderGroundSpec ReadGround(const io::YamlFields& g, double gravity_m_s2, bool r
 // A resolved copy's release also states the body's position (checked by the caller).
 LanderInitialSpec ReadInitial(const io::YamlFields& in, bool resolved) {
   LanderInitialSpec ic;
-  std::vector<std::string> known = LanderInitialKeys();
-  if (!resolved) known.erase(std::find(known.begin(), known.end(), kReleaseBodyComKey));
-  in.RequireOnly(known);
+  in.RequireOnly(resolved ? io::Keys(InitialKeys()) : io::Keys(InitialKeys(), {kReleaseBodyComKey}));
   if (in.Has("drop_height_m") == in.Has("touchdown_speed_m_s"))
     in.Fail("drop_height_m", "give exactly one of drop_height_m and touchdown_speed_m_s");
   if (in.Has("drop_height_m"))
@@ -419,9 +599,7 @@ LanderInitialSpec ReadInitial(const io::YamlFields& in, bool resolved) {
 
 // The run options: duration, sampling, capture speed and the integrator's tolerances.
 void ReadSimulation(const io::YamlFields& sim, lander::LanderRunOptions& options) {
-  sim.RequireOnly(
-      io::FieldKeys(RunNumberFields(), {"soil_ramp", "rtol", "atol", "max_step_s", "stiff", "pad_angular_segments",
-                                                 "pad_rim"}));
+  sim.RequireOnly(io::Keys(SimulationKeys()));
   io::ReadFields(sim, RunNumberFields(), options);
   if (sim.Has("soil_ramp")) {
     const std::string v = sim.String("soil_ramp");
@@ -463,20 +641,11 @@ void ReadSimulation(const io::YamlFields& sim, lander::LanderRunOptions& options
 }  // namespace
 
 const std::vector<std::string>& LanderInitialKeys() {
-  static const std::vector<std::string> keys = [] {
-    std::vector<std::string> k{"drop_height_m", "release_vertical_speed_m_s", "touchdown_speed_m_s",
-                               "horizontal_velocity_m_s"};
-    for (const std::string& attitude : io::FieldKeys(AttitudeNumberFields())) k.push_back(attitude);
-    for (const char* rest : {"align_to_slope", "angular_rate_deg_s", "pad_attitude", kReleaseBodyComKey}) k.push_back(rest);
-    return k;
-  }();
+  static const std::vector<std::string> keys = io::Keys(InitialKeys());
   return keys;
 }
 
 namespace {
-void WriteLanderBlock(YAML::Emitter& y, const LanderSpec& l, const std::function<std::string(const std::string&)>& file);
-void WriteSoilsBlock(YAML::Emitter& y, const LanderScenario& s, const lander::LanderSetup& setup);
-void WriteVector(YAML::Emitter& y, const Eigen::Vector3d& v, double scale);
 
 // The block `key` of `f` must be what `write` writes now.
 void RequireSameBlock(const io::YamlFields& f, const std::string& key, const std::function<void(YAML::Emitter&)>& write) {
@@ -513,12 +682,7 @@ LanderScenario LoadLanderScenarioWithSetup(const std::string& path, std::optiona
   if (type != "lander" && type != "lander_resolved")
     f.Fail("type", "must be 'lander' or 'lander_resolved', got '" + type + "'");
   const bool resolved = type == "lander_resolved";
-  if (resolved)
-    f.RequireOnly({"schema_version", "type", "name", "description", "source", "lander", "gravity_m_s2", "ground",
-                   "initial", "simulation", "paper"});
-  else
-    f.RequireOnly({"schema_version", "type", "name", "description", "lander", "gravity_m_s2", "ground", "initial",
-                   "simulation", "paper", "provenance"});
+  f.RequireOnly(resolved ? io::Keys(LanderScenarioKeys(), {"provenance"}) : io::Keys(LanderScenarioKeys(), {"source"}));
   const std::string dir = fs::path(path).parent_path().string();
   LanderScenario s;
   // A resolved copy names the scenario it was resolved from, and stands for it.
@@ -573,7 +737,7 @@ LanderScenario LoadLanderScenarioWithSetup(const std::string& path, std::optiona
   }
   if (f.Has("paper")) {
     const io::YamlFields p = f.Child("paper");
-    p.RequireOnly({"ground_case", "roll_pitch_within_deg", "source", "used_for_fit", "fit_by", "reading"});
+    p.RequireOnly(io::Keys(PaperKeys()));
     s.paper_ground_case = p.StringOr("ground_case", "");
     if (p.Has("roll_pitch_within_deg"))
       s.paper = LanderPaperCheck{p.Positive("roll_pitch_within_deg"), p.StringOr("source", ""),
@@ -593,14 +757,12 @@ LanderScenario LoadLanderScenarioWithSetup(const std::string& path, std::optiona
 }
 
 namespace {
-using FileName = std::function<std::string(const std::string&)>;
-
 void WriteVector(YAML::Emitter& y, const Eigen::Vector3d& v, double scale) {
   y << YAML::Flow << YAML::BeginSeq << v.x() * scale << v.y() * scale << v.z() * scale << YAML::EndSeq;
 }
 
 // The resolved copy's `lander` block: the lander file and what it resolves to (masses, pad, legs).
-void WriteLanderBlock(YAML::Emitter& y, const LanderSpec& l, const std::function<std::string(const std::string&)>& file) {
+void WriteLanderBlock(YAML::Emitter& y, const LanderSpec& l, const FileName& file) {
   y << YAML::BeginMap << YAML::Key << "name" << YAML::Value << l.name << YAML::Key << "file" << YAML::Value
     << file(l.source) << YAML::Key << "total_mass_kg" << YAML::Value << l.total_mass_kg << YAML::Key
     << "body_mass_kg" << YAML::Value << l.body_mass_kg << YAML::Key << "cog_height_mm" << YAML::Value
@@ -658,88 +820,8 @@ void WriteResolvedLanderScenario(const LanderScenario& s, const lander::LanderSe
                                  const std::string& output_dir) {
   const FileName file = [&](const std::string& p) { return io::PathForOutput(p, output_dir); };
   YAML::Emitter y;
-  y << YAML::BeginMap << YAML::Key << "schema_version" << YAML::Value << 1 << YAML::Key << "type" << YAML::Value
-    << "lander_resolved" << YAML::Key << "name" << YAML::Value << s.name;
-  if (!s.description.empty()) y << YAML::Key << "description" << YAML::Value << s.description;
-  y << YAML::Key << "source" << YAML::Value << file(s.source) << YAML::Key << "gravity_m_s2" << YAML::Value
-    << s.gravity_m_s2;
-  y << YAML::Key << "lander" << YAML::Value;
-  WriteLanderBlock(y, s.lander, file);
-  y << YAML::Key << "ground" << YAML::Value << YAML::BeginMap;
-  io::WriteFields(y, GroundNumberFields(), s.ground);
-  y << YAML::Key << "law" << YAML::Value << std::string(rft::LawKindName(s.ground.law)) << YAML::Key << "soil" << YAML::Value << s.ground.default_soil;
-  y << YAML::Key << "soils" << YAML::Value;
-  WriteSoilsBlock(y, s, setup);
-  if (s.model) y << YAML::Key << "model" << YAML::Value << file(s.model->source);
-  y << YAML::Key << "patches" << YAML::Value << YAML::BeginSeq;
-  auto write_patch = [&](const rft::SoilPatch& p) {
-    y << YAML::BeginMap << YAML::Key << "name" << YAML::Value << p.name << YAML::Key << "soil" << YAML::Value
-      << setup.terrain.soils[p.soil].name << YAML::Key << "polygon_m" << YAML::Value << YAML::BeginSeq;
-    for (const Eigen::Vector2d& c : p.polygon_W) y << YAML::Flow << YAML::BeginSeq << c.x() << c.y() << YAML::EndSeq;
-    y << YAML::EndSeq << YAML::EndMap;
-  };
-  for (const rft::SoilPatch& p : setup.terrain.patches) write_patch(p);
-  // A patch field's cells of another soil than the default, as patches: the resolved copy reads
-  // back to the same ground.
-  const rft::SoilGrid& grid = setup.terrain.grid;
-  for (int k = 0; k < grid.nx * grid.ny; ++k) {
-    if (grid.soil[k] == 0) continue;
-    const double x0 = grid.x0_m + (k % grid.nx) * grid.cell_m, y0 = grid.y0_m + (k / grid.nx) * grid.cell_m;
-    write_patch({"soil_field_" + std::to_string(k + 1), rft::RectanglePolygon(x0, y0, x0 + grid.cell_m, y0 + grid.cell_m),
-                 grid.soil[k]});
-  }
-  y << YAML::EndSeq << YAML::EndMap;
-  const LanderInitialSpec& ic = s.initial;
-  y << YAML::Key << "initial" << YAML::Value << YAML::BeginMap;
-  // Every key from the one list the reader accepts (LanderInitialKeys), in its order.
-  for (const std::string& key : LanderInitialKeys()) {
-    if (key == "drop_height_m" || key == "release_vertical_speed_m_s") {
-      if (!ic.drop_height_m) continue;
-      y << YAML::Key << key << YAML::Value << (key == "drop_height_m" ? *ic.drop_height_m : ic.release_vertical_speed_m_s);
-    } else if (key == "touchdown_speed_m_s") {
-      if (ic.touchdown_speed_m_s) y << YAML::Key << key << YAML::Value << *ic.touchdown_speed_m_s;
-    } else if (key == "horizontal_velocity_m_s") {
-      y << YAML::Key << key << YAML::Value << YAML::Flow << YAML::BeginSeq << ic.horizontal_velocity_m_s.x()
-        << ic.horizontal_velocity_m_s.y() << YAML::EndSeq;
-    } else if (key == "align_to_slope") {
-      y << YAML::Key << key << YAML::Value << ic.align_to_slope;
-    } else if (key == "angular_rate_deg_s") {
-      y << YAML::Key << key << YAML::Value;
-      WriteVector(y, ic.angular_rate_B, 1.0 / kDeg);
-    } else if (key == "pad_attitude") {
-      y << YAML::Key << key << YAML::Value << PadAttitudeName(ic.pad_attitude);
-    } else if (key == kReleaseBodyComKey) {
-      y << YAML::Key << key << YAML::Value;
-      WriteVector(y, setup.initial.p_WB, 1.0);
-    } else {
-      io::WriteFields(y, io::FieldTable<LanderInitialSpec>{FieldNamed(AttitudeNumberFields(), key)}, ic);
-    }
-  }
-  y << YAML::EndMap;
-  y << YAML::Key << "simulation" << YAML::Value << YAML::BeginMap;
-  io::WriteFields(y, RunNumberFields(), s.options);
-  y << YAML::Key << "rtol" << YAML::Value << s.options.integrator.rtol;
-  // Without `atol` the absolute tolerances are rtol times each state's scale (lander_simulation.h).
-  if (!s.options.scale_tolerances) y << YAML::Key << "atol" << YAML::Value << s.options.integrator.atol;
-  if (s.options.integrator.max_step != lander::LanderRunOptions{}.integrator.max_step) y << YAML::Key << "max_step_s" << YAML::Value << s.options.integrator.max_step;
-  y << YAML::Key << "stiff" << YAML::Value << s.options.integrator.stiff;
-  if (s.options.soil_ramp != lander::LanderRunOptions{}.soil_ramp)
-    y << YAML::Key << "soil_ramp" << YAML::Value << (s.options.soil_ramp == lander::SoilRamp::kElement ? "element" : "pad");
-  if (s.pad_angular_segments > 0) y << YAML::Key << "pad_angular_segments" << YAML::Value << s.pad_angular_segments;
-  if (s.pad_rim == geom::RimPolygon::kAreaPreserving) y << YAML::Key << "pad_rim" << YAML::Value << "area_preserving";
-  y << YAML::EndMap;
-  if (!s.paper_ground_case.empty() || s.paper) {
-    y << YAML::Key << "paper" << YAML::Value << YAML::BeginMap;
-    if (!s.paper_ground_case.empty()) y << YAML::Key << "ground_case" << YAML::Value << s.paper_ground_case;
-    if (s.paper) {
-      y << YAML::Key << "roll_pitch_within_deg" << YAML::Value << s.paper->roll_pitch_within_deg;
-      if (!s.paper->source.empty()) y << YAML::Key << "source" << YAML::Value << s.paper->source;
-      if (s.paper->used_for_fit)
-        y << YAML::Key << "used_for_fit" << YAML::Value << true << YAML::Key << "fit_by" << YAML::Value << s.paper->fit_by;
-      if (s.paper->reading) y << YAML::Key << "reading" << YAML::Value << std::string(PaperReadingName(*s.paper->reading));
-    }
-    y << YAML::EndMap;
-  }
+  y << YAML::BeginMap;
+  io::WriteKeys(y, LanderScenarioKeys(), ResolvedToWrite{s, setup, file});
   y << YAML::EndMap;
   io::WriteFileAtomically(path, [&](std::ostream& out) { out << y.c_str() << '\n'; });
 }

@@ -9,6 +9,7 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "drop_tests/scenario/soil_field.h"
@@ -46,10 +47,17 @@ struct LanderSpec {
   std::array<LanderLegSpec, lander::kNumLegs> legs;
 };
 
+// A square soil patch centred below one pad's joint at release (`under_pad`); its corners are
+// known only once the release pose is (ResolveLander).
+struct UnderPadSquare {
+  int pad_number = 1;        // 1..kNumLegs
+  double half_width_m = 0.0;
+};
+
 struct LanderPatchSpec {
   std::string name;
-  std::string soil;                          // soil name as given
-  std::vector<Eigen::Vector2d> polygon_W;    // resolved corners [m]
+  std::string soil;  // soil name as given
+  std::variant<std::vector<Eigen::Vector2d>, UnderPadSquare> area;  // corners [m] in the world frame, or a square under a pad
 };
 
 struct LanderGroundSpec {

@@ -114,12 +114,13 @@ lander::LanderSetup ResolveLander(const LanderScenario& sc, const LanderSoilCata
   s.p_WB.z() = lander::BodyHeightForClearance(m, out.terrain, s, clearance);
 
   for (const LanderPatchSpec& p : sc.ground.patches) {
-    rft::SoilPatch patch{p.name, p.polygon_W, soil_index(p.soil)};
-    if (p.polygon_W.size() == 1) {  // under_pad: a square centred below that pad's joint at release
-      const int leg = int(p.polygon_W[0].x()) - 1;
-      const double h = p.polygon_W[0].y();
-      const Eigen::Vector3d c = s.p_WB + R_WB * m.legs[leg].joint_B;
+    rft::SoilPatch patch{p.name, {}, soil_index(p.soil)};
+    if (const auto* square = std::get_if<UnderPadSquare>(&p.area)) {  // centred below that pad's joint at release
+      const double h = square->half_width_m;
+      const Eigen::Vector3d c = s.p_WB + R_WB * m.legs[square->pad_number - 1].joint_B;
       patch.polygon_W = rft::RectanglePolygon(c.x() - h, c.y() - h, c.x() + h, c.y() + h);
+    } else {
+      patch.polygon_W = std::get<std::vector<Eigen::Vector2d>>(p.area);
     }
     out.terrain.patches.push_back(patch);
   }

@@ -192,9 +192,8 @@ DropRecord SimulateLanderSweepDrop(const SweepModels& models, const SweepDropPar
     for (int i = 0; i < lander::kNumLegs; ++i) {
       const std::string& ref = plan.soil_refs[set.soil[i]];
       if (ref == sc.ground.default_soil) continue;
-      // (pad, half width): resolved below the pad's joint at release by ResolveLander.
-      sc.ground.patches.push_back(
-          {"pad_soils_under_pad_" + std::to_string(i + 1), ref, {Eigen::Vector2d(i + 1, plan.pad_patch_half_width_m)}});
+      sc.ground.patches.push_back({"pad_soils_under_pad_" + std::to_string(i + 1), ref,
+                                   scenario::UnderPadSquare{i + 1, plan.pad_patch_half_width_m}});
     }
   }
   // A random patch field drawn per landing: its seed from the study's and the landing's index, so

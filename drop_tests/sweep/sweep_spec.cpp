@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "drop_tests/formats/dataset_csv.h"
+#include "drop_tests/formats/key_table.h"
 #include "drop_tests/formats/output_path.h"
 #include "drop_tests/util/splitmix.h"
 #include "drop_tests/formats/yaml_fields.h"
@@ -427,11 +428,172 @@ std::string SweepPlan::DigestText() const {
 }
 
 namespace {
+std::string Absolute(const std::string& path) { return fs::absolute(path).lexically_normal().string(); }
+
+// A soil as the plan resolved it: a catalogue name stays a name, a path becomes absolute.
+std::string SoilRef(const SweepPlan& plan, int soil) {
+  const std::string& ref = plan.soil_refs[soil];
+  return ref.find('/') == std::string::npos && !ref.ends_with(".yaml") && !ref.ends_with(".yml") ? ref : Absolute(ref);
+}
+
+// One value of `p` as a sweep file gives it: a pad or soil, a pad_soils case, or a number.
+void EmitValue(YAML::Emitter& y, const SweepPlan& plan, SweepParam p, double v) {
+  const int i = static_cast<int>(v);
+  if (p == SweepParam::kPad) {
+    y << Absolute(plan.pads[i].source);
+  } else if (p == SweepParam::kSoil) {
+    y << SoilRef(plan, i);
+  } else if (p == SweepParam::kPadSoils) {
+    const PadSoilSet& set = plan.pad_soil_sets[i];
+    if (!set.label.empty()) {
+      y << set.label;
+    } else {
+      y << YAML::Flow << YAML::BeginSeq;
+      for (int soil : set.soil) y << SoilRef(plan, soil);
+      y << YAML::EndSeq;
+    }
+  } else {
+    y << FromSi(p, v);
+  }
+}
+
+// A sweep file's keys, block by block, in the order WriteSweepPlan writes them. A key with no
+// writer is one only a person writes, or a block the sweep itself does not read (a study's
+// `study`, `touchdown trade`'s `trade`).
+const io::KeyTable<SweepPlan>& LanderBlockKeys() {
+  using Y = YAML::Emitter;
+  static const io::KeyTable<SweepPlan> keys{
+      {"scenario", io::Always<SweepPlan>, [](Y& y, const SweepPlan& plan) { y << Absolute(plan.lander->source); }},
+      {"pad_patch_half_width_m", io::Always<SweepPlan>,
+       [](Y& y, const SweepPlan& plan) { y << plan.pad_patch_half_width_m; }},
+  };
+  return keys;
+}
+
+const io::KeyTable<SweepPlan>& SimulationBlockKeys() {
+  using Y = YAML::Emitter;
+  static const io::KeyTable<SweepPlan> keys{
+      {"free_drop_model", [](const SweepPlan& plan) { return plan.free_drop_model == drop::FreeDropModel::kFast; },
+       [](Y& y, const SweepPlan&) { y << "fast"; }},
+  };
+  return keys;
+}
+
+// One random parameter's draw: exactly one of uniform, choice and per_pad_choice.
+struct RandomToWrite {
+  const SweepPlan& plan;
+  const SweepRandom& r;
+};
+
+const io::KeyTable<RandomToWrite>& RandomSpecKeys() {
+  using R = RandomToWrite;
+  using Y = YAML::Emitter;
+  static const io::KeyTable<R> keys{
+      {"uniform", [](const R& w) { return !w.r.choice; },
+       [](Y& y, const R& w) {
+         y << YAML::BeginSeq << FromSi(w.r.param, w.r.low) << FromSi(w.r.param, w.r.high) << YAML::EndSeq;
+       }},
+      {"choice", [](const R& w) { return w.r.choice && !w.r.per_pad; },
+       [](Y& y, const R& w) {
+         y << YAML::BeginSeq;
+         for (double v : w.r.values) EmitValue(y, w.plan, w.r.param, v);
+         y << YAML::EndSeq;
+       }},
+      {"per_pad_choice", [](const R& w) { return w.r.per_pad; },
+       [](Y& y, const R& w) {
+         y << YAML::BeginSeq;
+         for (double v : w.r.values) y << SoilRef(w.plan, static_cast<int>(v));
+         y << YAML::EndSeq;
+       }},
+      {"probabilities", [](const R& w) { return !w.r.probabilities.empty(); },
+       [](Y& y, const R& w) {
+         y << YAML::BeginSeq;
+         for (double v : w.r.probabilities) y << v;
+         y << YAML::EndSeq;
+       }},
+  };
+  return keys;
+}
+
+void WriteFixed(YAML::Emitter& y, const SweepPlan& plan) {
+  y << YAML::BeginMap;
+  for (SweepParam p : kAll)
+    if (plan.fixed[static_cast<int>(p)]) {
+      y << YAML::Key << SweepParamKey(p) << YAML::Value;
+      EmitValue(y, plan, p, *plan.fixed[static_cast<int>(p)]);
+    }
+  y << YAML::EndMap;
+}
+
+void WriteGrid(YAML::Emitter& y, const SweepPlan& plan) {
+  y << YAML::BeginMap;
+  for (const SweepAxis& axis : plan.grid) {
+    y << YAML::Key << SweepParamKey(axis.param) << YAML::Value << YAML::Flow << YAML::BeginSeq;
+    for (double v : axis.values) EmitValue(y, plan, axis.param, v);
+    y << YAML::EndSeq;
+  }
+  y << YAML::EndMap;
+}
+
+void WriteRandom(YAML::Emitter& y, const SweepPlan& plan) {
+  y << YAML::BeginMap << YAML::Key << "samples" << YAML::Value << plan.samples << YAML::Key << "seed" << YAML::Value
+    << plan.seed;
+  for (const SweepRandom& r : plan.random) {
+    y << YAML::Key << SweepParamKey(r.param) << YAML::Value << YAML::Flow << YAML::BeginMap;
+    io::WriteKeys(y, RandomSpecKeys(), RandomToWrite{plan, r});
+    y << YAML::EndMap;
+  }
+  y << YAML::EndMap;
+}
+
+const io::KeyTable<SweepPlan>& SweepKeys() {
+  using P = SweepPlan;
+  using Y = YAML::Emitter;
+  const auto single_pad = [](const P& plan) { return !plan.lander.has_value(); };
+  static const io::KeyTable<P> keys{
+      {"schema_version", io::Always<P>, [](Y& y, const P&) { y << 1; }},
+      {"type", io::Always<P>, [](Y& y, const P&) { y << "sweep"; }},
+      {"name", io::Always<P>, [](Y& y, const P& plan) { y << plan.name; }},
+      {"description"},
+      {"model", [](const P& plan) { return plan.model.has_value(); },
+       [](Y& y, const P& plan) { y << Absolute(plan.model->source); }},
+      {"lander", [](const P& plan) { return plan.lander.has_value(); },
+       [](Y& y, const P& plan) {
+         y << YAML::BeginMap;
+         io::WriteKeys(y, LanderBlockKeys(), plan);
+         y << YAML::EndMap;
+       }},
+      {"traces", io::Always<P>, [](Y& y, const P& plan) { y << TraceStorageName(plan.traces); }},
+      {"trace_max_samples", single_pad, [](Y& y, const P& plan) { y << plan.trace_max_samples; }},
+      {"rest_duration_s", single_pad, [](Y& y, const P& plan) { y << plan.rig.rest_duration_s; }},
+      {"max_drop_evaluations", io::Always<P>,
+       [](Y& y, const P& plan) { y << plan.rig.integrator.max_rhs_evaluations; }},
+      {"max_drop_wall_time_s", io::Always<P>, [](Y& y, const P& plan) { y << plan.rig.integrator.max_wall_time_s; }},
+      {"simulation", [](const P& plan) { return plan.free_drop_model == drop::FreeDropModel::kFast; },
+       [](Y& y, const P& plan) {
+         y << YAML::Flow << YAML::BeginMap;
+         io::WriteKeys(y, SimulationBlockKeys(), plan);
+         y << YAML::EndMap;
+       }},
+      {"fixed",
+       [](const P& plan) {
+         return std::any_of(std::begin(plan.fixed), std::end(plan.fixed), [](const auto& v) { return v.has_value(); });
+       },
+       WriteFixed},
+      {"grid", [](const P& plan) { return !plan.grid.empty(); }, WriteGrid},
+      {"random", [](const P& plan) { return !plan.random.empty(); }, WriteRandom},
+      {"study"},
+      {"trade"},
+      {"provenance"},
+  };
+  return keys;
+}
+
 // The scenario a lander sweep starts every drop from, the digest of the files it reads, and the
 // half width of the patches `pad_soils` lays; options only single-pad sweeps take are refused.
 void ReadLanderBlock(const io::YamlFields& f, const std::string& base, SweepPlan& plan) {
   const io::YamlFields l = f.Child("lander");
-  l.RequireOnly({"scenario", "pad_patch_half_width_m"});
+  l.RequireOnly(io::Keys(LanderBlockKeys()));
   std::string ref = l.String("scenario");
   const bool is_path = ref.find('/') != std::string::npos || ref.ends_with(".yaml") || ref.ends_with(".yml");
   if (is_path && fs::path(ref).is_relative()) ref = (fs::path(base) / ref).lexically_normal().string();
@@ -451,9 +613,10 @@ void ReadLanderBlock(const io::YamlFields& f, const std::string& base, SweepPlan
   std::snprintf(hex, sizeof hex, "%016" PRIx64, Fnv1a64(files));
   plan.lander_digest = hex;
   // The half width of the patches `pad_soils` lays under the pads: given, or the scenario's own
-  // under_pad patches' (unresolved there as (pad, half width)), or 0.08 m as the shipped scenarios.
+  // under_pad patches', or 0.08 m as the shipped scenarios.
   for (const scenario::LanderPatchSpec& patch : plan.lander->ground.patches)
-    if (patch.polygon_W.size() == 1) plan.pad_patch_half_width_m = patch.polygon_W[0].y();
+    if (const auto* square = std::get_if<scenario::UnderPadSquare>(&patch.area))
+      plan.pad_patch_half_width_m = square->half_width_m;
   if (l.Has("pad_patch_half_width_m")) {
     plan.pad_patch_half_width_m = l.Positive("pad_patch_half_width_m");
     if (plan.pad_patch_half_width_m > 1.0)
@@ -497,7 +660,7 @@ void ReadSimulation(const io::YamlFields& f, SweepPlan& plan) {
   if (!f.Has("simulation")) return;
   if (plan.lander) f.Fail("simulation", "a lander sweep runs the scenario's simulation options; remove it");
   const io::YamlFields sim = f.Child("simulation");
-  sim.RequireOnly({"free_drop_model"});
+  sim.RequireOnly(io::Keys(SimulationBlockKeys()));
   const std::string model = sim.StringOr("free_drop_model", "reference");
   if (model == "fast") plan.free_drop_model = drop::FreeDropModel::kFast;
   else if (model != "reference") sim.Fail("free_drop_model", "must be 'reference' or 'fast', got '" + model + "'");
@@ -638,7 +801,7 @@ void ReadRandom(const io::YamlFields& block, ParamClaims& claims, Loader& loader
     if (key == "samples" || key == "seed") continue;
     const SweepParam p = claims.Claim(block, key);
     const io::YamlFields spec = block.Child(key);
-    spec.RequireOnly({"uniform", "choice", "per_pad_choice", "probabilities"});
+    spec.RequireOnly(io::Keys(RandomSpecKeys()));
     SweepRandom r;
     r.param = p;
     const int given = int(spec.Has("uniform")) + int(spec.Has("choice")) + int(spec.Has("per_pad_choice"));
@@ -672,9 +835,7 @@ void ReadRandom(const io::YamlFields& block, ParamClaims& claims, Loader& loader
 SweepPlan LoadSweepPlan(const std::string& path, const std::string& model_override) {
   const io::YamlFields f = io::YamlFields::LoadFile(path);
   f.RequireSchemaVersion(1);
-  f.RequireOnly({"schema_version", "type", "name", "description", "model", "traces", "trace_max_samples",
-                 "rest_duration_s", "max_drop_evaluations", "max_drop_wall_time_s", "fixed", "grid", "random", "lander",
-                 "simulation", "study", "trade", "provenance"});
+  f.RequireOnly(io::Keys(SweepKeys()));
   // A stability study (docs/stability_studies.md) is a lander sweep whose `study` block says how
   // `touchdown stability` analyses its landings; the sweep itself ignores that block.
   const std::string type = f.String("type");
@@ -748,101 +909,12 @@ SweepPlan LoadSweepPlan(const std::string& path, const std::string& model_overri
   return plan;
 }
 
-namespace {
-std::string Absolute(const std::string& path) { return fs::absolute(path).lexically_normal().string(); }
-
-// A soil as the plan resolved it: a catalogue name stays a name, a path becomes absolute.
-std::string SoilRef(const SweepPlan& plan, int soil) {
-  const std::string& ref = plan.soil_refs[soil];
-  return ref.find('/') == std::string::npos && !ref.ends_with(".yaml") && !ref.ends_with(".yml") ? ref : Absolute(ref);
-}
-
-// One value of `p` as a sweep file gives it: a pad or soil, a pad_soils case, or a number.
-void EmitValue(YAML::Emitter& y, const SweepPlan& plan, SweepParam p, double v) {
-  const int i = static_cast<int>(v);
-  if (p == SweepParam::kPad) {
-    y << Absolute(plan.pads[i].source);
-  } else if (p == SweepParam::kSoil) {
-    y << SoilRef(plan, i);
-  } else if (p == SweepParam::kPadSoils) {
-    const PadSoilSet& set = plan.pad_soil_sets[i];
-    if (!set.label.empty()) {
-      y << set.label;
-    } else {
-      y << YAML::Flow << YAML::BeginSeq;
-      for (int soil : set.soil) y << SoilRef(plan, soil);
-      y << YAML::EndSeq;
-    }
-  } else {
-    y << FromSi(p, v);
-  }
-}
-}  // namespace
 
 void WriteSweepPlan(const SweepPlan& plan, const std::string& path) {
   YAML::Emitter y;
   y.SetDoublePrecision(17);  // every value reads back to the same double
-  y << YAML::BeginMap << YAML::Key << "schema_version" << YAML::Value << 1 << YAML::Key << "type" << YAML::Value
-    << "sweep" << YAML::Key << "name" << YAML::Value << plan.name;
-  if (plan.model) y << YAML::Key << "model" << YAML::Value << Absolute(plan.model->source);
-  if (plan.lander)
-    y << YAML::Key << "lander" << YAML::Value << YAML::BeginMap << YAML::Key << "scenario" << YAML::Value
-      << Absolute(plan.lander->source) << YAML::Key << "pad_patch_half_width_m" << YAML::Value
-      << plan.pad_patch_half_width_m << YAML::EndMap;
-  y << YAML::Key << "traces" << YAML::Value << TraceStorageName(plan.traces);
-  if (!plan.lander)
-    y << YAML::Key << "trace_max_samples" << YAML::Value << plan.trace_max_samples << YAML::Key << "rest_duration_s"
-      << YAML::Value << plan.rig.rest_duration_s;
-  y << YAML::Key << "max_drop_evaluations" << YAML::Value << plan.rig.integrator.max_rhs_evaluations << YAML::Key
-    << "max_drop_wall_time_s" << YAML::Value << plan.rig.integrator.max_wall_time_s;
-  if (plan.free_drop_model == drop::FreeDropModel::kFast)
-    y << YAML::Key << "simulation" << YAML::Value << YAML::Flow << YAML::BeginMap << YAML::Key << "free_drop_model"
-      << YAML::Value << "fast" << YAML::EndMap;
-  bool any_fixed = false;
-  for (const std::optional<double>& v : plan.fixed) any_fixed = any_fixed || v.has_value();
-  if (any_fixed) {
-    y << YAML::Key << "fixed" << YAML::Value << YAML::BeginMap;
-    for (SweepParam p : kAll)
-      if (plan.fixed[static_cast<int>(p)]) {
-        y << YAML::Key << SweepParamKey(p) << YAML::Value;
-        EmitValue(y, plan, p, *plan.fixed[static_cast<int>(p)]);
-      }
-    y << YAML::EndMap;
-  }
-  if (!plan.grid.empty()) {
-    y << YAML::Key << "grid" << YAML::Value << YAML::BeginMap;
-    for (const SweepAxis& axis : plan.grid) {
-      y << YAML::Key << SweepParamKey(axis.param) << YAML::Value << YAML::Flow << YAML::BeginSeq;
-      for (double v : axis.values) EmitValue(y, plan, axis.param, v);
-      y << YAML::EndSeq;
-    }
-    y << YAML::EndMap;
-  }
-  if (!plan.random.empty()) {
-    y << YAML::Key << "random" << YAML::Value << YAML::BeginMap << YAML::Key << "samples" << YAML::Value
-      << plan.samples << YAML::Key << "seed" << YAML::Value << plan.seed;
-    for (const SweepRandom& r : plan.random) {
-      y << YAML::Key << SweepParamKey(r.param) << YAML::Value << YAML::Flow << YAML::BeginMap;
-      if (r.per_pad) {
-        y << YAML::Key << "per_pad_choice" << YAML::Value << YAML::BeginSeq;
-        for (double v : r.values) y << SoilRef(plan, static_cast<int>(v));
-      } else if (r.choice) {
-        y << YAML::Key << "choice" << YAML::Value << YAML::BeginSeq;
-        for (double v : r.values) EmitValue(y, plan, r.param, v);
-      } else {
-        y << YAML::Key << "uniform" << YAML::Value << YAML::BeginSeq << FromSi(r.param, r.low)
-          << FromSi(r.param, r.high);
-      }
-      y << YAML::EndSeq;
-      if (!r.probabilities.empty()) {
-        y << YAML::Key << "probabilities" << YAML::Value << YAML::BeginSeq;
-        for (double v : r.probabilities) y << v;
-        y << YAML::EndSeq;
-      }
-      y << YAML::EndMap;
-    }
-    y << YAML::EndMap;
-  }
+  y << YAML::BeginMap;
+  io::WriteKeys(y, SweepKeys(), plan);
   y << YAML::EndMap;
   io::WriteFileAtomically(path, [&](std::ostream& out) { out << y.c_str() << '\n'; });
 }

@@ -2,6 +2,7 @@
 // load, with the file and the reason, before any loader walks the tree.
 #include "drop_tests/formats/yaml_fields.h"
 #include "drop_tests/formats/field_table.h"
+#include "drop_tests/formats/key_table.h"
 
 #include <gtest/gtest.h>
 
@@ -77,15 +78,54 @@ TEST_F(YamlLoad, MalformedTextIsRefusedAtOnce) {
   EXPECT_NE(Refusal(",ype: \nsoils: Dfjs2_lp:3{z 2],onz i"), "");
 }
 
-// A block's known keys: its number fields in table order, then the keys no number field reads,
-// the order an unknown key's message lists them in.
-TEST(FieldTableKeys, TheTablesKeysThenTheOthers) {
+// A block of numbers only: its known keys are its number fields, in table order.
+TEST(FieldTableKeys, TheTablesKeysInOrder) {
   struct Block {
     double a = 0.0, b = 0.0;
   };
   const FieldTable<Block> fields{{"a_m", &Block::a}, {"b_deg", &Block::b}};
   EXPECT_EQ(FieldKeys(fields), (std::vector<std::string>{"a_m", "b_deg"}));
-  EXPECT_EQ(FieldKeys(fields, {"law", "soil"}), (std::vector<std::string>{"a_m", "b_deg", "law", "soil"}));
+}
+
+// A key table is both lists: the loader's known keys (less a variant's) and the writer's order. A
+// key is written only when the value has it, a person's key (no writer) never, and the number
+// fields as WriteFields writes them (file units, a default left out where the field says so).
+struct Pad {
+  std::string name;
+  double radius_m = 0.0, segments = 0.0;
+  bool dynamic = false;
+};
+const KeyTable<Pad>& PadKeys() {
+  using Y = YAML::Emitter;
+  static const KeyTable<Pad> keys = [] {
+    KeyTable<Pad> k{{"name", Always<Pad>, [](Y& y, const Pad& p) { y << p.name; }}, {"description"}};
+    AppendNumberKeys(k, FieldTable<Pad>{{"radius_mm", &Pad::radius_m, 1e-3},
+                                        {"segments", &Pad::segments, 1.0, Sign::kPositive, true, true}});
+    k.push_back({"dynamic", [](const Pad& p) { return p.dynamic; }, [](Y& y, const Pad&) { y << true; }});
+    return k;
+  }();
+  return keys;
+}
+std::string Written(const Pad& pad) {
+  YAML::Emitter y;
+  y << YAML::Flow << YAML::BeginMap;
+  WriteKeys(y, PadKeys(), pad);
+  y << YAML::EndMap;
+  return y.c_str();
+}
+
+TEST(KeyTable, IsTheLoadersKeysAndTheWritersOrder) {
+  EXPECT_EQ(Keys(PadKeys()), (std::vector<std::string>{"name", "description", "radius_mm", "segments", "dynamic"}));
+  EXPECT_EQ(Keys(PadKeys(), {"description", "dynamic"}), (std::vector<std::string>{"name", "radius_mm", "segments"}));
+  EXPECT_EQ(Written({"flat", 0.05, 0.0, false}), "{name: flat, radius_mm: 50}");
+  EXPECT_EQ(Written({"flat", 0.05, 16.0, true}), "{name: flat, radius_mm: 50, segments: 16, dynamic: true}");
+}
+
+// What the writer writes, the loader's key list accepts: YamlFields::RequireOnly passes it.
+TEST(KeyTable, WhatItWritesItsLoaderAccepts) {
+  const YamlFields f(YAML::Load(Written({"flat", 0.05, 16.0, true})), "pad.yaml", "");
+  EXPECT_NO_THROW(f.RequireOnly(Keys(PadKeys())));
+  EXPECT_THROW(f.RequireOnly(Keys(PadKeys(), {"dynamic"})), InputError);
 }
 
 }  // namespace

@@ -54,7 +54,7 @@ void Asymmetric(scenario::LanderScenario& s, double patch_m) {
   s.initial.roll_rad = 3.0 * kDeg;
   s.initial.pitch_rad = -2.0 * kDeg;
   s.initial.yaw_relative_to_slope_rad = 20.0 * kDeg;
-  s.ground.patches = {{"cp_under_pad_1", "fjs1_cp", {Eigen::Vector2d(1.0, patch_m)}}};
+  s.ground.patches = {{"cp_under_pad_1", "fjs1_cp", scenario::UnderPadSquare{1, patch_m}}};
   test::CoarsenPad(s);
 }
 
