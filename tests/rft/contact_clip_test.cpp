@@ -76,7 +76,7 @@ TEST(ContactClip, HexPadOnItsEdgeHasNoSpuriousForce) {
 // The attitude and motion at touchdown of `touchdown drop --pad hex --soil fjs1_lp --speed 1
 // --free --tilt-deg 5` (q_WB, v_WC, w_B), on which the right-hand side returned 5e12 N, with the
 // lowest vertex on the surface to rounding.
-TEST(ContactClip, HexPadTouchdownStateOfIssue13) {
+TEST(ContactClip, HexPadTouchdownStateThatGaveFiveTeraNewtons) {
   const SurfaceElements pad = HexPad();
   const Eigen::Quaterniond q(0.99904822158426054, 0.043619387310304569, 6.0453897080618375e-21,
                              4.3460556768933539e-22);

@@ -98,7 +98,7 @@ TEST_P(ShippedPadFreeDrop, LandsAtEveryTiltAboutXAndY) {
   EXPECT_EQ(drops, 3 * 9);
 }
 
-INSTANTIATE_TEST_SUITE_P(Issue13, ShippedPadFreeDrop, ::testing::ValuesIn(ShippedPads()),
+INSTANTIATE_TEST_SUITE_P(EveryShippedPad, ShippedPadFreeDrop, ::testing::ValuesIn(ShippedPads()),
                          [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
 
 TEST(FreeDrop, EveryShippedPadIsSwept) { EXPECT_GE(ShippedPads().size(), 4u); }

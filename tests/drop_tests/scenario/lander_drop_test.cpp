@@ -14,11 +14,12 @@
 #include "rft/input_error.h"
 #include "rft/stress_law_3d_factory.h"
 #include "tests/drop_tests/scenario/lander_test_support.h"
+#include "rft/units.h"
 
 namespace touchdown::lander {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
+using units::kDeg;
 
 const scenario::LanderRun& CaseRun(const std::string& name) {
   static std::map<std::string, scenario::LanderRun> cache;

@@ -18,11 +18,12 @@
 #include <string>
 
 #include "tests/drop_tests/scenario/lander_test_support.h"
+#include "rft/units.h"
 
 namespace touchdown::lander::similitude_test {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
+using units::kDeg;
 constexpr double kLength = 6.0, kMass = kLength * kLength * kLength, kTime = kLength, kForce = kLength * kLength;
 
 // Homologous quantities agree to these bounds. Nothing in the simulation breaks the similitude:

@@ -19,6 +19,7 @@
 #include "drop_tests/sweep/sweep_export.h"
 #include "rft/input_error.h"
 #include "tests/drop_tests/scenario/lander_test_support.h"
+#include "rft/units.h"
 
 namespace touchdown::sweep {
 namespace {
@@ -95,7 +96,7 @@ grid: {tilt_deg: [0, 2], horizontal_speed_m_s: [0, 0.1]}
   ASSERT_EQ(tilted.tilt_deg, 2.0);
   drop::DropConditions c;
   c.impact_speed_m_s = 1.0;
-  c.tilt_rad = 2.0 * M_PI / 180.0;
+  c.tilt_rad = 2.0 * units::kDeg;
   const drop::PadDrop direct = drop::RunDrop(drop::ResolveDrop(plan.pads[0], plan.soils[0], c));
   EXPECT_EQ(direct.result.final_penetration_m, tilted.final_penetration_m);
   EXPECT_EQ(direct.free->final_tilt_deg, tilted.final_tilt_deg);
@@ -196,7 +197,7 @@ fixed: {pitch_deg: 2, roll_deg: -1, gravity_m_s2: 1.62, horizontal_speed_m_s: 0.
 )");
   const SweepPlan plan = LoadSweepPlan(file);
   const SweepDropParams p = plan.DropAt(0);
-  EXPECT_NEAR(p.pitch_rad, 2.0 * M_PI / 180.0, 1e-15);
+  EXPECT_NEAR(p.pitch_rad, 2.0 * units::kDeg, 1e-15);
   EXPECT_TRUE(p.Given(SweepParam::kRoll));
   EXPECT_FALSE(p.Given(SweepParam::kImpactSpeed));  // the scenario's drop height stays
   EXPECT_EQ(plan.soils.at(0).name, "fjs1_cp");

@@ -15,12 +15,13 @@
 #include "rft/input_error.h"
 #include "tests/drop_tests/scenario/lander_test_support.h"
 #include "tests/round_trip.h"
+#include "rft/units.h"
 
 namespace touchdown::sweep {
 namespace {
 
 namespace fs = std::filesystem;
-constexpr double kStudyDeg = M_PI / 180.0;
+using units::kDeg;
 
 std::string StudyLanderHead() {
   return std::string("schema_version: 1\ntype: sweep\nname: study_params\nlander: {scenario: ") + TOUCHDOWN_SOURCE_DIR +
@@ -43,12 +44,12 @@ TEST_F(SweepStudyParams, EveryNewParameterLoadsInEveryBlockWithItsUnits) {
                       "         angular_rate_z_deg_s: {choice: [0, 10]}, horizontal_speed_m_s: {uniform: [0, 1]}}\n"));
   ASSERT_EQ(plan.size(), 2 * 3 * 3);
   const SweepDropParams last = plan.DropAt(plan.size() - 1);
-  EXPECT_NEAR(last.slope_rad, 12.5 * kStudyDeg, 1e-15);
-  EXPECT_NEAR(last.yaw_to_slope_rad, 90.0 * kStudyDeg, 1e-15);
-  EXPECT_NEAR(last.downhill_azimuth_rad, 30.0 * kStudyDeg, 1e-15);
-  EXPECT_NEAR(last.angular_rate_rad_s[0], 2.0 * kStudyDeg, 1e-15);
-  EXPECT_NEAR(last.angular_rate_rad_s[1], -3.0 * kStudyDeg, 1e-15);
-  EXPECT_TRUE(last.angular_rate_rad_s[2] == 0.0 || std::abs(last.angular_rate_rad_s[2] - 10.0 * kStudyDeg) < 1e-15);
+  EXPECT_NEAR(last.slope_rad, 12.5 * kDeg, 1e-15);
+  EXPECT_NEAR(last.yaw_to_slope_rad, 90.0 * kDeg, 1e-15);
+  EXPECT_NEAR(last.downhill_azimuth_rad, 30.0 * kDeg, 1e-15);
+  EXPECT_NEAR(last.angular_rate_rad_s[0], 2.0 * kDeg, 1e-15);
+  EXPECT_NEAR(last.angular_rate_rad_s[1], -3.0 * kDeg, 1e-15);
+  EXPECT_TRUE(last.angular_rate_rad_s[2] == 0.0 || std::abs(last.angular_rate_rad_s[2] - 10.0 * kDeg) < 1e-15);
   EXPECT_LE(std::abs(last.horizontal_azimuth_rad), M_PI);
   for (SweepParam p : {SweepParam::kSlope, SweepParam::kDownhillAzimuth, SweepParam::kYawToSlope,
                        SweepParam::kHorizontalAzimuth, SweepParam::kRateX, SweepParam::kRateY, SweepParam::kRateZ})
@@ -187,11 +188,11 @@ TEST_F(SweepStudyParams, SlopeAndMotionReachTheLanderAsTheScenarioFieldsWould) {
   ASSERT_TRUE(r.ok) << r.failure;
 
   scenario::LanderScenario sc = *plan.lander;
-  sc.ground.slope_rad = 8.0 * kStudyDeg;
-  sc.ground.downhill_azimuth_rad = 90.0 * kStudyDeg;
-  sc.initial.yaw_relative_to_slope_rad = 30.0 * kStudyDeg;
-  sc.initial.horizontal_velocity_m_s = 0.2 * Eigen::Vector2d(std::cos(90.0 * kStudyDeg), std::sin(90.0 * kStudyDeg));
-  sc.initial.angular_rate_B.x() = 3.0 * kStudyDeg;
+  sc.ground.slope_rad = 8.0 * kDeg;
+  sc.ground.downhill_azimuth_rad = 90.0 * kDeg;
+  sc.initial.yaw_relative_to_slope_rad = 30.0 * kDeg;
+  sc.initial.horizontal_velocity_m_s = 0.2 * Eigen::Vector2d(std::cos(90.0 * kDeg), std::sin(90.0 * kDeg));
+  sc.initial.angular_rate_B.x() = 3.0 * kDeg;
   sc.initial.drop_height_m.reset();
   sc.initial.touchdown_speed_m_s = 1.0;
   sc.options.integrator.max_rhs_evaluations = plan.rig.integrator.max_rhs_evaluations;
@@ -200,8 +201,8 @@ TEST_F(SweepStudyParams, SlopeAndMotionReachTheLanderAsTheScenarioFieldsWould) {
     EXPECT_EQ(r.pad_final_penetration_m[i], direct.result.final_penetration_m[i]) << i;
     EXPECT_EQ(r.pad_peak_force_N[i], direct.result.peak_pad_force_N[i]) << i;
   }
-  EXPECT_EQ(r.max_tilt_deg, direct.result.max_tilt_rad / kStudyDeg);
-  EXPECT_EQ(r.final_tilt_deg, direct.result.final_attitude.tilt_rad / kStudyDeg);
+  EXPECT_EQ(r.max_tilt_deg, direct.result.max_tilt_rad / kDeg);
+  EXPECT_EQ(r.final_tilt_deg, direct.result.final_attitude.tilt_rad / kDeg);
   EXPECT_NEAR(r.slope_deg, 8.0, 1e-12);
   EXPECT_NEAR(r.downhill_azimuth_deg, 90.0, 1e-12);
   EXPECT_NEAR(r.yaw_relative_to_slope_deg, 30.0, 1e-12);
