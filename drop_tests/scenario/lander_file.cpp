@@ -1,0 +1,126 @@
+#include <filesystem>
+#include <optional>
+#include <variant>
+
+#include "drop_tests/catalog/catalog.h"
+#include "drop_tests/scenario/lander_scenario_file.h"
+#include "drop_tests/scenario/lander_scenario_yaml.h"
+#include "lander/multibody/leg_placement.h"
+#include "rft/input_error.h"
+#include "rft/physical_limits.h"
+#include "rft/units.h"
+
+// The lander file (data/landers): the lander's masses, its pad and its legs, placed.
+namespace touchdown::scenario {
+
+namespace fs = std::filesystem;
+
+namespace {
+using namespace file_yaml;
+using units::kMm;
+
+lander::ShockAbsorber ReadAbsorber(const io::YamlFields& f) {
+  lander::ShockAbsorber a;
+  const std::string kind = f.String("kind");
+  if (kind == AbsorberKindName(lander::ShockAbsorber::Kind::kSpringDamper)) {
+    a.kind = lander::ShockAbsorber::Kind::kSpringDamper;
+  } else if (kind == AbsorberKindName(lander::ShockAbsorber::Kind::kCrushable)) {
+    a.kind = lander::ShockAbsorber::Kind::kCrushable;
+  } else {
+    f.Fail("kind", "unknown absorber kind '" + kind + "' (spring_damper, crushable)");
+  }
+  f.RequireOnly(io::Keys(AbsorberKeys(a.kind)));
+  io::ReadFields(f, AbsorberFields(a.kind), a);
+  return a;
+}
+// The lander file's key that a leg placement's error names.
+const char* PlacementKey(lander::LegPlacementError::Field field) {
+  switch (field) {
+    case lander::LegPlacementError::Field::kTotalMass: return "total_mass_kg";
+    case lander::LegPlacementError::Field::kCogHeight: return "cog_height_mm";
+    case lander::LegPlacementError::Field::kHipHeight: return "hip_height_mm";
+  }
+  return "";
+}
+
+// The body's mass and CoM and the legs' joints and hips from the pad and the leg layout
+// (lander/multibody/leg_placement.h); the error when they do not fit.
+std::optional<lander::LegPlacementError> PlaceLegs(LanderSpec& s) {
+  const lander::LegLayout layout{s.layout.joint_radius_m, s.layout.hip_radius_m, s.layout.hip_height_m};
+  const auto placed = lander::PlaceLegs(s.pad.body, s.total_mass_kg, s.cog_height_m, layout);
+  if (const auto* error = std::get_if<lander::LegPlacementError>(&placed)) return *error;
+  const lander::LegPlacement& p = std::get<lander::LegPlacement>(placed);
+  s.body_mass_kg = p.body_mass_kg;
+  for (int i = 0; i < lander::kNumLegs; ++i) {
+    s.legs[i].joint_B = p.joint_B[i];
+    s.legs[i].hip_B = p.hip_B[i];
+    s.legs[i].absorber = s.layout.absorber;
+    s.legs[i].cone = s.layout.cone;
+  }
+  return std::nullopt;
+}
+}  // namespace
+
+LanderSpec LoadLanderSpec(const std::string& name_or_path) {
+  return LoadLanderSpec(io::YamlFields::LoadFile(io::ResolveCatalogFile("landers", name_or_path)));
+}
+
+LanderSpec LoadLanderSpec(const io::YamlFields& f) {
+  const std::string& path = f.file();
+  f.RequireSchemaVersion(1);
+  f.RequireOnly({"schema_version", "name", "description", "total_mass_kg", "cog_height_mm", "body_inertia_kg_m2",
+                 "pad", "legs", "provenance"});
+  LanderSpec s;
+  s.source = path;
+  s.name = f.StringOr("name", fs::path(path).stem().string());
+  s.total_mass_kg = io::ReadNumber(f, "total_mass_kg", io::Sign::kPositive, &limits::kMass_kg);
+  s.cog_height_m = io::ReadNumber(f, "cog_height_mm", io::Sign::kPositive, &limits::kLanderSize_mm) * kMm;
+  s.body_inertia_B = io::ReadInertia(f.Child("body_inertia_kg_m2"));
+  try {
+    s.pad = io::LoadPad(ResolveRelative(f, "pads", f.String("pad")));
+  } catch (const InputError& e) {
+    f.Fail("pad", e.what());
+  }
+  const io::YamlFields legs = f.Child("legs");
+  legs.RequireOnly({"joint_radius_mm", "hip_radius_mm", "hip_height_mm", "absorber", "cone_limit"});
+  const auto size = [&](const char* key, io::Sign sign) {
+    return io::ReadNumber(legs, key, sign, &limits::kLanderSize_mm) * kMm;
+  };
+  s.layout.joint_radius_m = size("joint_radius_mm", io::Sign::kPositive);
+  s.layout.hip_radius_m = size("hip_radius_mm", io::Sign::kNonNegative);
+  s.layout.hip_height_m = size("hip_height_mm", io::Sign::kPositive);
+  if (legs.Has("absorber")) s.layout.absorber = ReadAbsorber(legs.Child("absorber"));
+  if (legs.Has("cone_limit")) {
+    const io::YamlFields c = legs.Child("cone_limit");
+    c.RequireOnly(io::FieldKeys(ConeFields()));
+    s.layout.cone.emplace();
+    io::ReadFields(c, ConeFields(), *s.layout.cone);
+  }
+  if (const auto error = PlaceLegs(s)) {
+    const bool hips = error->field == lander::LegPlacementError::Field::kHipHeight;
+    (hips ? legs : f).Fail(PlacementKey(error->field), error->reason);
+  }
+  return s;
+}
+
+LanderSpec LanderSpecWithPad(const LanderSpec& spec, const io::PadSpec& pad) {
+  LanderSpec s = spec;
+  s.pad = pad;
+  if (const auto error = PlaceLegs(s))
+    throw InputError("pad " + pad.name + " does not fit lander " + spec.name + " (its " + PlacementKey(error->field) +
+                     ": " + error->reason + "; pad file " + pad.source + ")");
+  return s;
+}
+
+LanderScenario AtPadFileMesh(const LanderScenario& scenario) {
+  if (scenario.pad_angular_segments == 0) return scenario;
+  LanderScenario out = scenario;
+  out.lander = LanderSpecWithPad(scenario.lander,
+                                 io::PadWithAngularSegments(scenario.lander.pad, scenario.pad_file_angular_segments));
+  out.pad_angular_segments = 0;
+  out.pad_file_angular_segments = 0;
+  out.pad_rim = geom::RimPolygon::kInscribed;
+  return out;
+}
+
+}  // namespace touchdown::scenario
