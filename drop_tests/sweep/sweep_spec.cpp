@@ -9,13 +9,13 @@
 #include <sstream>
 
 #include "drop_tests/formats/dataset_csv.h"
-#include "drop_tests/formats/key_table.h"
 #include "drop_tests/formats/output_path.h"
 #include "drop_tests/util/splitmix.h"
 #include "drop_tests/formats/yaml_fields.h"
 #include "drop_tests/model/contact_model.h"
 #include "drop_tests/scenario/lander_scenario_file.h"
 #include "drop_tests/sweep/sweep_drop.h"
+#include "drop_tests/sweep/sweep_file_keys.h"
 #include "rft/bekker_law.h"
 #include "rft/input_error.h"
 #include "rft/physical_limits.h"
@@ -26,6 +26,7 @@ namespace touchdown::sweep {
 namespace fs = std::filesystem;
 
 namespace {
+using namespace file_keys;
 using units::kDeg;
 using limits::kMaxGridCount;  // rft/physical_limits.h
 using limits::kMaxSweepDrops;
@@ -211,10 +212,11 @@ bool IsSinglePadOnly(SweepParam p) {
   return p == SweepParam::kPad || p == SweepParam::kMass || p == SweepParam::kTilt || p == SweepParam::kZeta;
 }
 
+}  // namespace
+
 const char* TraceStorageName(TraceStorage t) {
   return t == TraceStorage::kNone ? "none" : t == TraceStorage::kFull ? "full" : "decimated";
 }
-}  // namespace
 
 std::optional<SweepParam> SweepParamFromKey(const std::string& key) { return ParamFromKey(key); }
 double SweepParamFromSi(SweepParam p, double si) { return FromSi(p, si); }
@@ -428,167 +430,6 @@ std::string SweepPlan::DigestText() const {
 }
 
 namespace {
-std::string Absolute(const std::string& path) { return fs::absolute(path).lexically_normal().string(); }
-
-// A soil as the plan resolved it: a catalogue name stays a name, a path becomes absolute.
-std::string SoilRef(const SweepPlan& plan, int soil) {
-  const std::string& ref = plan.soil_refs[soil];
-  return ref.find('/') == std::string::npos && !ref.ends_with(".yaml") && !ref.ends_with(".yml") ? ref : Absolute(ref);
-}
-
-// One value of `p` as a sweep file gives it: a pad or soil, a pad_soils case, or a number.
-void EmitValue(YAML::Emitter& y, const SweepPlan& plan, SweepParam p, double v) {
-  const int i = static_cast<int>(v);
-  if (p == SweepParam::kPad) {
-    y << Absolute(plan.pads[i].source);
-  } else if (p == SweepParam::kSoil) {
-    y << SoilRef(plan, i);
-  } else if (p == SweepParam::kPadSoils) {
-    const PadSoilSet& set = plan.pad_soil_sets[i];
-    if (!set.label.empty()) {
-      y << set.label;
-    } else {
-      y << YAML::Flow << YAML::BeginSeq;
-      for (int soil : set.soil) y << SoilRef(plan, soil);
-      y << YAML::EndSeq;
-    }
-  } else {
-    y << FromSi(p, v);
-  }
-}
-
-// A sweep file's keys, block by block, in the order WriteSweepPlan writes them. A key with no
-// writer is one only a person writes, or a block the sweep itself does not read (a study's
-// `study`, `touchdown trade`'s `trade`).
-const io::KeyTable<SweepPlan>& LanderBlockKeys() {
-  using Y = YAML::Emitter;
-  static const io::KeyTable<SweepPlan> keys{
-      {"scenario", io::Always<SweepPlan>, [](Y& y, const SweepPlan& plan) { y << Absolute(plan.lander->source); }},
-      {"pad_patch_half_width_m", io::Always<SweepPlan>,
-       [](Y& y, const SweepPlan& plan) { y << plan.pad_patch_half_width_m; }},
-  };
-  return keys;
-}
-
-const io::KeyTable<SweepPlan>& SimulationBlockKeys() {
-  using Y = YAML::Emitter;
-  static const io::KeyTable<SweepPlan> keys{
-      {"free_drop_model", [](const SweepPlan& plan) { return plan.free_drop_model == drop::FreeDropModel::kFast; },
-       [](Y& y, const SweepPlan&) { y << "fast"; }},
-  };
-  return keys;
-}
-
-// One random parameter's draw: exactly one of uniform, choice and per_pad_choice.
-struct RandomToWrite {
-  const SweepPlan& plan;
-  const SweepRandom& r;
-};
-
-const io::KeyTable<RandomToWrite>& RandomSpecKeys() {
-  using R = RandomToWrite;
-  using Y = YAML::Emitter;
-  static const io::KeyTable<R> keys{
-      {"uniform", [](const R& w) { return !w.r.choice; },
-       [](Y& y, const R& w) {
-         y << YAML::BeginSeq << FromSi(w.r.param, w.r.low) << FromSi(w.r.param, w.r.high) << YAML::EndSeq;
-       }},
-      {"choice", [](const R& w) { return w.r.choice && !w.r.per_pad; },
-       [](Y& y, const R& w) {
-         y << YAML::BeginSeq;
-         for (double v : w.r.values) EmitValue(y, w.plan, w.r.param, v);
-         y << YAML::EndSeq;
-       }},
-      {"per_pad_choice", [](const R& w) { return w.r.per_pad; },
-       [](Y& y, const R& w) {
-         y << YAML::BeginSeq;
-         for (double v : w.r.values) y << SoilRef(w.plan, static_cast<int>(v));
-         y << YAML::EndSeq;
-       }},
-      {"probabilities", [](const R& w) { return !w.r.probabilities.empty(); },
-       [](Y& y, const R& w) {
-         y << YAML::BeginSeq;
-         for (double v : w.r.probabilities) y << v;
-         y << YAML::EndSeq;
-       }},
-  };
-  return keys;
-}
-
-void WriteFixed(YAML::Emitter& y, const SweepPlan& plan) {
-  y << YAML::BeginMap;
-  for (SweepParam p : kAll)
-    if (plan.fixed[static_cast<int>(p)]) {
-      y << YAML::Key << SweepParamKey(p) << YAML::Value;
-      EmitValue(y, plan, p, *plan.fixed[static_cast<int>(p)]);
-    }
-  y << YAML::EndMap;
-}
-
-void WriteGrid(YAML::Emitter& y, const SweepPlan& plan) {
-  y << YAML::BeginMap;
-  for (const SweepAxis& axis : plan.grid) {
-    y << YAML::Key << SweepParamKey(axis.param) << YAML::Value << YAML::Flow << YAML::BeginSeq;
-    for (double v : axis.values) EmitValue(y, plan, axis.param, v);
-    y << YAML::EndSeq;
-  }
-  y << YAML::EndMap;
-}
-
-void WriteRandom(YAML::Emitter& y, const SweepPlan& plan) {
-  y << YAML::BeginMap << YAML::Key << "samples" << YAML::Value << plan.samples << YAML::Key << "seed" << YAML::Value
-    << plan.seed;
-  for (const SweepRandom& r : plan.random) {
-    y << YAML::Key << SweepParamKey(r.param) << YAML::Value << YAML::Flow << YAML::BeginMap;
-    io::WriteKeys(y, RandomSpecKeys(), RandomToWrite{plan, r});
-    y << YAML::EndMap;
-  }
-  y << YAML::EndMap;
-}
-
-const io::KeyTable<SweepPlan>& SweepKeys() {
-  using P = SweepPlan;
-  using Y = YAML::Emitter;
-  const auto single_pad = [](const P& plan) { return !plan.lander.has_value(); };
-  static const io::KeyTable<P> keys{
-      {"schema_version", io::Always<P>, [](Y& y, const P&) { y << 1; }},
-      {"type", io::Always<P>, [](Y& y, const P&) { y << "sweep"; }},
-      {"name", io::Always<P>, [](Y& y, const P& plan) { y << plan.name; }},
-      {"description"},
-      {"model", [](const P& plan) { return plan.model.has_value(); },
-       [](Y& y, const P& plan) { y << Absolute(plan.model->source); }},
-      {"lander", [](const P& plan) { return plan.lander.has_value(); },
-       [](Y& y, const P& plan) {
-         y << YAML::BeginMap;
-         io::WriteKeys(y, LanderBlockKeys(), plan);
-         y << YAML::EndMap;
-       }},
-      {"traces", io::Always<P>, [](Y& y, const P& plan) { y << TraceStorageName(plan.traces); }},
-      {"trace_max_samples", single_pad, [](Y& y, const P& plan) { y << plan.trace_max_samples; }},
-      {"rest_duration_s", single_pad, [](Y& y, const P& plan) { y << plan.rig.rest_duration_s; }},
-      {"max_drop_evaluations", io::Always<P>,
-       [](Y& y, const P& plan) { y << plan.rig.integrator.max_rhs_evaluations; }},
-      {"max_drop_wall_time_s", io::Always<P>, [](Y& y, const P& plan) { y << plan.rig.integrator.max_wall_time_s; }},
-      {"simulation", [](const P& plan) { return plan.free_drop_model == drop::FreeDropModel::kFast; },
-       [](Y& y, const P& plan) {
-         y << YAML::Flow << YAML::BeginMap;
-         io::WriteKeys(y, SimulationBlockKeys(), plan);
-         y << YAML::EndMap;
-       }},
-      {"fixed",
-       [](const P& plan) {
-         return std::any_of(std::begin(plan.fixed), std::end(plan.fixed), [](const auto& v) { return v.has_value(); });
-       },
-       WriteFixed},
-      {"grid", [](const P& plan) { return !plan.grid.empty(); }, WriteGrid},
-      {"random", [](const P& plan) { return !plan.random.empty(); }, WriteRandom},
-      {"study"},
-      {"trade"},
-      {"provenance"},
-  };
-  return keys;
-}
-
 // The scenario a lander sweep starts every drop from, the digest of the files it reads, and the
 // half width of the patches `pad_soils` lays; options only single-pad sweeps take are refused.
 void ReadLanderBlock(const io::YamlFields& f, const std::string& base, SweepPlan& plan) {
@@ -909,14 +750,5 @@ SweepPlan LoadSweepPlan(const std::string& path, const std::string& model_overri
   return plan;
 }
 
-
-void WriteSweepPlan(const SweepPlan& plan, const std::string& path) {
-  YAML::Emitter y;
-  y.SetDoublePrecision(17);  // every value reads back to the same double
-  y << YAML::BeginMap;
-  io::WriteKeys(y, SweepKeys(), plan);
-  y << YAML::EndMap;
-  io::WriteFileAtomically(path, [&](std::ostream& out) { out << y.c_str() << '\n'; });
-}
 
 }  // namespace touchdown::sweep

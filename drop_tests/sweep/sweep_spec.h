@@ -125,6 +125,7 @@ double SweepParamToSi(SweepParam p, double file_value);
 bool IsLanderNumber(SweepParam p);
 
 enum class TraceStorage { kNone, kDecimated, kFull };
+const char* TraceStorageName(TraceStorage t);  // as a sweep file names it: none, decimated, full
 
 // The parameters of one drop, in SI units; pad and soil as indices into SweepPlan::pads/soils.
 struct SweepDropParams {
