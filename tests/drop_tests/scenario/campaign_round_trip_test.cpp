@@ -157,5 +157,30 @@ TEST_F(CampaignRoundTrip, PaperCheckNamesItsReading) {
   }
 }
 
+// A check's numerator and denominator take a pad and a soil and nothing else: a misspelt key is
+// refused with its path (it used to pass unread).
+TEST_F(CampaignRoundTrip, CheckSidesRefuseUnknownKeys) {
+  const std::string head = "schema_version: 1\ntype: campaign\nname: k\n"
+                           "drops:\n  - {pad: flat, soil: fjs1_lp, impact_speeds_m_s: 1.0}\n"
+                           "  - {pad: flat, soil: fjs1_cp, impact_speeds_m_s: 1.0}\n"
+                           "paper_checks:\n  - {name: c, quantity: final_penetration_m, speed_m_s: 1.0, ";
+  std::ofstream(Path("ok.yaml")) << head << "numerator: {pad: flat, soil: fjs1_lp}, denominator: {pad: flat, soil: fjs1_cp}}\n";
+  EXPECT_EQ(LoadCampaignScenario(Path("ok.yaml")).checks.at(0).denominator_soil, "fjs1_cp");
+  for (const auto& [sides, path] :
+       {std::pair<std::string, std::string>{"numerator: {pad: flat, soil: fjs1_lp, sol: fjs1_cp}, "
+                                            "denominator: {pad: flat, soil: fjs1_cp}",
+                                            "paper_checks[0].numerator.sol"},
+        {"numerator: {pad: flat, soil: fjs1_lp}, denominator: {pad: flat, soil: fjs1_cp, speed_m_s: 2}",
+         "paper_checks[0].denominator.speed_m_s"}}) {
+    std::ofstream(Path("bad.yaml")) << head << sides << "}\n";
+    try {
+      LoadCampaignScenario(Path("bad.yaml"));
+      ADD_FAILURE() << sides << " accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(path + ": unknown field"), std::string::npos) << e.what();
+    }
+  }
+}
+
 }  // namespace
 }  // namespace touchdown::scenario
