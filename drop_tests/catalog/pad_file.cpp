@@ -261,15 +261,11 @@ const KeyTable<PadToWrite>& PadKeys() {
        [](Y& y, const W& w) { y << w.pad.file.density_kg_m3; }},
       {"profile", axisymmetric,
        [](Y& y, const W& w) {
-         y << YAML::BeginMap;
-         WriteKeys(y, ProfileKeys(w.pad.file.shape), w.pad.file);
-         y << YAML::EndMap;
+         WriteMap(y, ProfileKeys(w.pad.file.shape), w.pad.file);
        }},
       {"mesh", [=](const W& w) { return !axisymmetric(w); },
        [](Y& y, const W& w) {
-         y << YAML::BeginMap;
-         WriteKeys(y, MeshKeys(), w);
-         y << YAML::EndMap;
+         WriteMap(y, MeshKeys(), w);
        }},
       {"angular_segments", [=](const W& w) { return axisymmetric(w) && w.pad.file.angular_segments > 0; },
        [](Y& y, const W& w) { y << w.pad.file.angular_segments; }},
@@ -277,9 +273,7 @@ const KeyTable<PadToWrite>& PadKeys() {
        [](Y& y, const W& w) { WritePoint(y, *w.pad.file.reference_point_mm); }},
       {"inertia_kg_m2", [](const W& w) { return w.pad.file.inertia_kg_m2.has_value(); },
        [](Y& y, const W& w) {
-         y << YAML::Flow << YAML::BeginMap;
-         WriteKeys(y, InertiaKeys(), *w.pad.file.inertia_kg_m2);
-         y << YAML::EndMap;
+         WriteMap(y, InertiaKeys(), *w.pad.file.inertia_kg_m2, YAML::Flow);
        }},
       {"center_of_mass_mm", [](const W& w) { return w.pad.file.center_of_mass_mm.has_value(); },
        [](Y& y, const W& w) { WritePoint(y, *w.pad.file.center_of_mass_mm); }},
@@ -394,9 +388,7 @@ PadSpec LoadPad(const YamlFields& f, geom::RimPolygon rim) {
 
 void WritePad(const PadSpec& pad, const std::string& path) {
   YAML::Emitter y;
-  y << YAML::BeginMap;
-  WriteKeys(y, PadKeys(), PadToWrite{pad, path});
-  y << YAML::EndMap;
+  WriteMap(y, PadKeys(), PadToWrite{pad, path});
   WriteFileAtomically(path, [&](std::ostream& out) { out << y.c_str() << '\n'; });
 }
 

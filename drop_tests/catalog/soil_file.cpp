@@ -83,9 +83,7 @@ const KeyTable<rft::SoilParameters>& SoilKeys() {
     k.push_back({"bekker",
                  [=](const S& s) { return bekker_law(s) || s.bekker.k_c_N_m_n1 + s.bekker.k_phi_N_m_n2 > 0.0; },
                  [](Y& y, const S& s) {
-                   y << YAML::BeginMap;
-                   WriteKeys(y, BekkerKeys(), s.bekker);
-                   y << YAML::EndMap;
+                   WriteMap(y, BekkerKeys(), s.bekker);
                  }});
     k.push_back({"dynamic_term", [](const S& s) { return s.dynamic_term; }, [](Y& y, const S&) { y << true; }});
     k.push_back({"provenance"});
@@ -169,9 +167,7 @@ void WriteSoil(const rft::SoilParameters& soil, const std::string& path) {
 
 void WriteSoil(const rft::SoilParameters& soil, std::ostream& out) {
   YAML::Emitter y;
-  y << YAML::BeginMap;
-  WriteKeys(y, SoilKeys(), soil);
-  y << YAML::EndMap;
+  WriteMap(y, SoilKeys(), soil);
   out << y.c_str() << '\n';
 }
 

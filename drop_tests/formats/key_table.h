@@ -1,7 +1,7 @@
 #pragma once
 // One block's keys in the order its writer writes them (a file type's top level, or one of its
 // blocks). The loader accepts exactly these keys (YamlFields::RequireOnly(Keys(table))) and the
-// writer walks the same table (WriteKeys), so a key written is always a key read back, and a key
+// writer walks the same table (WriteMap), so a key written is always a key read back, and a key
 // added in one place is added for both. Each key says when a value has it and how its value is
 // written; a key with no writer is one only a person writes (description, provenance). What the
 // loader makes of a value, with the checks that tie several keys together, stays with the loader.
@@ -10,6 +10,7 @@
 // Private to the .cpp files of the YAML edge (it writes YAML).
 #include <algorithm>
 #include <functional>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -66,14 +67,23 @@ std::vector<std::string> Keys(const KeyTable<T>& table, std::initializer_list<st
   return keys;
 }
 
-// Writes every key `value` has, in table order (the emitter inside a map).
+// Writes `value` as a map of every key it has, in table order; YAML::Flow for a one-line map.
 template <typename T>
-void WriteKeys(YAML::Emitter& y, const KeyTable<T>& table, const T& value) {
+void WriteMap(YAML::Emitter& y, const KeyTable<T>& table, const T& value, std::optional<YAML::EMITTER_MANIP> style = {}) {
+  if (style) y << *style;
+  y << YAML::BeginMap;
   for (const FileKey<T>& k : table) {
     if (!k.written || !k.written(value)) continue;
     y << YAML::Key << k.key << YAML::Value;
     k.value(y, value);
   }
+  y << YAML::EndMap;
+}
+
+// A FileKey's writer for a block that is a map of its own table (`table` returns that table).
+template <typename T>
+std::function<void(YAML::Emitter&, const T&)> MapOf(const KeyTable<T>& (*table)()) {
+  return [table](YAML::Emitter& y, const T& value) { WriteMap(y, table(), value); };
 }
 
 }  // namespace touchdown::io

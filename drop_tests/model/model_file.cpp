@@ -89,9 +89,7 @@ const io::KeyTable<ToWrite<SoilOverride>>& OverrideKeys() {
                    y << YAML::EndMap;
                  }});
     k.push_back({"fit", [](const W& w) { return w.value.fit.has_value(); }, [](Y& y, const W& w) {
-                   y << YAML::BeginMap;
-                   io::WriteKeys(y, FitKeys(), ToWrite<SoilFit>{*w.value.fit, w.directory});
-                   y << YAML::EndMap;
+                   io::WriteMap(y, FitKeys(), ToWrite<SoilFit>{*w.value.fit, w.directory});
                  }});
     return k;
   }();
@@ -112,9 +110,8 @@ const io::KeyTable<ToWrite<ModelFile>>& ModelKeys() {
        [](Y& y, const W& w) {
          y << YAML::BeginMap;
          for (const auto& [name, o] : w.value.soils) {
-           y << YAML::Key << name << YAML::Value << YAML::BeginMap;
-           io::WriteKeys(y, OverrideKeys(), ToWrite<SoilOverride>{o, w.directory});
-           y << YAML::EndMap;
+           y << YAML::Key << name << YAML::Value;
+           io::WriteMap(y, OverrideKeys(), ToWrite<SoilOverride>{o, w.directory});
          }
          y << YAML::EndMap;
        }},
@@ -219,9 +216,7 @@ void WriteModelFile(const ModelFile& m, const io::OutputTarget& target, const st
       output_dir.empty() ? std::filesystem::path(target.path).parent_path().string() : output_dir;
   YAML::Emitter y;
   y.SetDoublePrecision(10);
-  y << YAML::BeginMap;
-  io::WriteKeys(y, ModelKeys(), ToWrite<ModelFile>{m, directory});
-  y << YAML::EndMap;
+  io::WriteMap(y, ModelKeys(), ToWrite<ModelFile>{m, directory});
   io::WriteOutputFile(target, [&](std::ostream& out) { out << kModelFileMark << '\n' << y.c_str() << '\n'; }, kModelFileMark);
 }
 

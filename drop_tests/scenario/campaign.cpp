@@ -86,9 +86,7 @@ const io::KeyTable<PadSoil>& PadSoilKeys() {
   return keys;
 }
 void WritePadSoil(YAML::Emitter& y, const PadSoil& p) {
-  y << YAML::Flow << YAML::BeginMap;
-  io::WriteKeys(y, PadSoilKeys(), p);
-  y << YAML::EndMap;
+  io::WriteMap(y, PadSoilKeys(), p, YAML::Flow);
 }
 
 // A paper check's keys, in the order a resolved copy writes them.
@@ -237,18 +235,11 @@ const io::KeyTable<CaseToWrite>& SoilSummaryKeys() {
 const io::KeyTable<CaseToWrite>& CaseKeys() {
   using W = CaseToWrite;
   using Y = YAML::Emitter;
-  const auto block = [](const io::KeyTable<W>& (*table)()) {
-    return [table](Y& y, const W& w) {
-      y << YAML::BeginMap;
-      io::WriteKeys(y, table(), w);
-      y << YAML::EndMap;
-    };
-  };
-  static const io::KeyTable<W> keys = [&] {
+  static const io::KeyTable<W> keys = [] {
     io::KeyTable<W> k{
         {"drop_id", io::Always<W>, [](Y& y, const W& w) { y << w.c.drop_id; }},
-        {"pad", io::Always<W>, block(PadSummaryKeys)},
-        {"soil", io::Always<W>, block(SoilSummaryKeys)},
+        {"pad", io::Always<W>, io::MapOf(PadSummaryKeys)},
+        {"soil", io::Always<W>, io::MapOf(SoilSummaryKeys)},
     };
     io::AppendNumberKeys<W, CaseNumbers>(k, CaseFields(), [](const W& w) -> const CaseNumbers& { return w.numbers; });
     return k;
@@ -277,9 +268,7 @@ const io::KeyTable<CampaignToWrite>& CampaignKeys() {
        [](Y& y, const W& w) {
          y << YAML::BeginSeq;
          for (const CampaignCase& c : w.s.cases) {
-           y << YAML::BeginMap;
-           io::WriteKeys(y, CaseKeys(), CaseToWrite{c, SummaryOf(*c.pad), NumbersOf(c), w.dir});
-           y << YAML::EndMap;
+           io::WriteMap(y, CaseKeys(), CaseToWrite{c, SummaryOf(*c.pad), NumbersOf(c), w.dir});
          }
          y << YAML::EndSeq;
        }},
@@ -287,9 +276,7 @@ const io::KeyTable<CampaignToWrite>& CampaignKeys() {
        [](Y& y, const W& w) {
          y << YAML::BeginSeq;
          for (const PaperCheck& c : w.s.checks) {
-           y << YAML::BeginMap;
-           io::WriteKeys(y, CheckKeys(), c);
-           y << YAML::EndMap;
+           io::WriteMap(y, CheckKeys(), c);
          }
          y << YAML::EndSeq;
        }},
@@ -413,9 +400,7 @@ CampaignScenario LoadCampaignScenario(const std::string& path) {
 
 void WriteResolvedScenario(const CampaignScenario& s, const std::string& path, const std::string& output_dir) {
   YAML::Emitter y;
-  y << YAML::BeginMap;
-  io::WriteKeys(y, CampaignKeys(), CampaignToWrite{s, output_dir});
-  y << YAML::EndMap;
+  io::WriteMap(y, CampaignKeys(), CampaignToWrite{s, output_dir});
   io::WriteFileAtomically(path, [&](std::ostream& out) { out << y.c_str() << '\n'; });
 }
 

@@ -366,9 +366,7 @@ void WriteResolvedLanderScenario(const LanderScenario& s, const lander::LanderSe
                                  const std::string& output_dir) {
   const FileName file = [&](const std::string& p) { return io::PathForOutput(p, output_dir); };
   YAML::Emitter y;
-  y << YAML::BeginMap;
-  io::WriteKeys(y, LanderScenarioKeys(), ResolvedToWrite{s, setup, file});
-  y << YAML::EndMap;
+  io::WriteMap(y, LanderScenarioKeys(), ResolvedToWrite{s, setup, file});
   io::WriteFileAtomically(path, [&](std::ostream& out) { out << y.c_str() << '\n'; });
 }
 

@@ -78,9 +78,7 @@ io::KeyTable<lander::ShockAbsorber> AbsorberKeys(lander::ShockAbsorber::Kind kin
 }
 
 void WriteAbsorber(YAML::Emitter& y, const lander::ShockAbsorber& a) {
-  y << YAML::BeginMap;
-  io::WriteKeys(y, AbsorberKeys(a.kind), a);
-  y << YAML::EndMap;
+  io::WriteMap(y, AbsorberKeys(a.kind), a);
 }
 
 // The number fields of the scenario's sections that the resolved copy writes back as given
@@ -138,9 +136,7 @@ const io::KeyTable<PatchToWrite>& PatchKeys() {
 
 namespace {
 void WritePatch(YAML::Emitter& y, const rft::SoilPatch& patch, const std::string& soil) {
-  y << YAML::BeginMap;
-  io::WriteKeys(y, PatchKeys(), PatchToWrite{patch, soil});
-  y << YAML::EndMap;
+  io::WriteMap(y, PatchKeys(), PatchToWrite{patch, soil});
 }
 
 // The ground's patches as a resolved copy states them: the scenario's, then a patch field's cells
@@ -251,17 +247,6 @@ const io::KeyTable<ResolvedToWrite>& PaperKeys() {
   return keys;
 }
 
-namespace {
-// A block written from its table.
-std::function<void(YAML::Emitter&, const ResolvedToWrite&)> Block(const io::KeyTable<ResolvedToWrite>& (*table)()) {
-  return [table](YAML::Emitter& y, const ResolvedToWrite& w) {
-    y << YAML::BeginMap;
-    io::WriteKeys(y, table(), w);
-    y << YAML::EndMap;
-  };
-}
-}  // namespace
-
 // A scenario's top-level keys (`source` only in a resolved copy, `provenance` only in the user's).
 const io::KeyTable<ResolvedToWrite>& LanderScenarioKeys() {
   using W = ResolvedToWrite;
@@ -274,10 +259,10 @@ const io::KeyTable<ResolvedToWrite>& LanderScenarioKeys() {
       {"source", io::Always<W>, [](Y& y, const W& w) { y << w.file(w.s.source); }},
       {"gravity_m_s2", io::Always<W>, [](Y& y, const W& w) { y << w.s.gravity_m_s2; }},
       {"lander", io::Always<W>, [](Y& y, const W& w) { WriteLanderBlock(y, w.s.lander, w.file); }},
-      {"ground", io::Always<W>, Block(GroundKeys)},
-      {"initial", io::Always<W>, Block(InitialKeys)},
-      {"simulation", io::Always<W>, Block(SimulationKeys)},
-      {"paper", [](const W& w) { return !w.s.paper_ground_case.empty() || w.s.paper.has_value(); }, Block(PaperKeys)},
+      {"ground", io::Always<W>, io::MapOf(GroundKeys)},
+      {"initial", io::Always<W>, io::MapOf(InitialKeys)},
+      {"simulation", io::Always<W>, io::MapOf(SimulationKeys)},
+      {"paper", [](const W& w) { return !w.s.paper_ground_case.empty() || w.s.paper.has_value(); }, io::MapOf(PaperKeys)},
       {"provenance"},
   };
   return keys;

@@ -68,9 +68,8 @@ void WriteRandom(YAML::Emitter& y, const SweepPlan& plan) {
   y << YAML::BeginMap << YAML::Key << "samples" << YAML::Value << plan.samples << YAML::Key << "seed" << YAML::Value
     << plan.seed;
   for (const SweepRandom& r : plan.random) {
-    y << YAML::Key << SweepParamKey(r.param) << YAML::Value << YAML::Flow << YAML::BeginMap;
-    io::WriteKeys(y, RandomSpecKeys(), RandomToWrite{plan, r});
-    y << YAML::EndMap;
+    y << YAML::Key << SweepParamKey(r.param) << YAML::Value;
+    io::WriteMap(y, RandomSpecKeys(), RandomToWrite{plan, r}, YAML::Flow);
   }
   y << YAML::EndMap;
 }
@@ -139,9 +138,7 @@ const io::KeyTable<SweepPlan>& SweepKeys() {
        [](Y& y, const P& plan) { y << Absolute(plan.model->source); }},
       {"lander", [](const P& plan) { return plan.lander.has_value(); },
        [](Y& y, const P& plan) {
-         y << YAML::BeginMap;
-         io::WriteKeys(y, LanderBlockKeys(), plan);
-         y << YAML::EndMap;
+         io::WriteMap(y, LanderBlockKeys(), plan);
        }},
       {"traces", io::Always<P>, [](Y& y, const P& plan) { y << TraceStorageName(plan.traces); }},
       {"trace_max_samples", single_pad, [](Y& y, const P& plan) { y << plan.trace_max_samples; }},
@@ -151,9 +148,7 @@ const io::KeyTable<SweepPlan>& SweepKeys() {
       {"max_drop_wall_time_s", io::Always<P>, [](Y& y, const P& plan) { y << plan.rig.integrator.max_wall_time_s; }},
       {"simulation", [](const P& plan) { return plan.free_drop_model == drop::FreeDropModel::kFast; },
        [](Y& y, const P& plan) {
-         y << YAML::Flow << YAML::BeginMap;
-         io::WriteKeys(y, SimulationBlockKeys(), plan);
-         y << YAML::EndMap;
+         io::WriteMap(y, SimulationBlockKeys(), plan, YAML::Flow);
        }},
       {"fixed",
        [](const P& plan) {
@@ -174,9 +169,7 @@ const io::KeyTable<SweepPlan>& SweepKeys() {
 void WriteSweepPlan(const SweepPlan& plan, const std::string& path) {
   YAML::Emitter y;
   y.SetDoublePrecision(17);  // every value reads back to the same double
-  y << YAML::BeginMap;
-  io::WriteKeys(y, file_keys::SweepKeys(), plan);
-  y << YAML::EndMap;
+  io::WriteMap(y, file_keys::SweepKeys(), plan);
   io::WriteFileAtomically(path, [&](std::ostream& out) { out << y.c_str() << '\n'; });
 }
 

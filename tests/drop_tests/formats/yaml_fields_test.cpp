@@ -108,9 +108,7 @@ const KeyTable<Pad>& PadKeys() {
 }
 std::string Written(const Pad& pad) {
   YAML::Emitter y;
-  y << YAML::Flow << YAML::BeginMap;
-  WriteKeys(y, PadKeys(), pad);
-  y << YAML::EndMap;
+  WriteMap(y, PadKeys(), pad, YAML::Flow);
   return y.c_str();
 }
 
