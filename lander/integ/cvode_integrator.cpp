@@ -50,6 +50,7 @@ struct CvodeIntegrator::Impl {
   std::exception_ptr pending;  // exception caught inside a C callback
   std::string last_error;      // CVODE's own message for the last failure
   bool initialised = false;
+  bool returned_root = false;    // the last AdvanceTo stopped at a root (and no Reset since)
   double max_wall_time_s = 0.0;  // 0: no limit
   long max_rhs_evaluations = 0;  // 0: no limit
   long rhs_calls = 0;            // over the integrator's life (CVODE's own counter restarts at each Reset)
@@ -232,6 +233,7 @@ void CvodeIntegrator::Reset(double t0, const Eigen::VectorXd& y0) {
   y_ = y0;
   t_ = t0;
   m.initialised = true;
+  m.returned_root = false;
 }
 
 AdvanceResult CvodeIntegrator::AdvanceTo(double t_out) {
@@ -241,12 +243,17 @@ AdvanceResult CvodeIntegrator::AdvanceTo(double t_out) {
   m.pending = nullptr;
   const int flag = CVode(m.cvode, t_out, m.y, &t_reached, CV_NORMAL);
   if (m.pending) std::rethrow_exception(std::exchange(m.pending, nullptr));
+  // Right after a root, with a valid t_out, CVODE's only bad-input return is its close-root check.
+  if (flag == CV_ILL_INPUT && std::exchange(m.returned_root, false))
+    throw RootStillZero("CVode: a root function is still exactly zero at the root just returned (" + m.last_error +
+                        ")");
   m.Check(flag, "CVode");
   y_ = Eigen::Map<const Eigen::VectorXd>(N_VGetArrayPointer(m.y), m.n);
   if (!y_.allFinite()) throw IntegrationFailure("CVode produced a non-finite state");
   t_ = t_reached;
   AdvanceResult result;
   result.t = t_reached;
+  m.returned_root = flag == CV_ROOT_RETURN;
   if (flag == CV_ROOT_RETURN) {
     result.status = AdvanceStatus::kFoundRoot;
     result.roots_found.assign(m.roots.count, 0);

@@ -109,6 +109,16 @@ class LimitExceeded : public IntegrationFailure {
   double value_;
 };
 
+// An IntegrationFailure at a root the integrator has just returned: a root function is still
+// exactly zero there and a rounding step later (a lander's sink rate -v_z can round to 0.0 at its
+// located root), so CVODE, asked to go on, reports the same root again instead (CV_ILL_INPUT, "root
+// found at and very near t"). Nothing was integrated: time() and state() are still the root's, and
+// a Reset there goes on (CVODE then sets such a function aside until it moves off zero).
+class RootStillZero : public IntegrationFailure {
+ public:
+  using IntegrationFailure::IntegrationFailure;
+};
+
 class CvodeIntegrator {
  public:
   CvodeIntegrator(int state_size, RhsFunction rhs, const IntegratorOptions& options,

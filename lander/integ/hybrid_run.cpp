@@ -47,7 +47,17 @@ HybridOutcome HybridRun::Run(const HybridPhase& phase, const HybridCallbacks& ca
       t_out = phase.end_s;
       sampled = phase.end == RunEnd::kSampleAtEnd;
     }
-    const AdvanceResult r = integrator_.AdvanceTo(t_out);
+    // An event restarted the integrator exactly at this output time: CVODE cannot start towards
+    // its own start time (CV_TOO_CLOSE), and the state there is the output.
+    AdvanceResult r{AdvanceStatus::kReachedTime, t_out, {}};
+    if (integrator_.time() != t_out) {
+      try {
+        r = integrator_.AdvanceTo(t_out);
+      } catch (const RootStillZero&) {  // after a kContinue: restart where CVODE stopped (at the root)
+        Restart(integrator_.time(), integrator_.state());
+        continue;
+      }
+    }
     if (r.status == AdvanceStatus::kReachedTime) {
       if (sampled) {
         callbacks.sample(t_out, integrator_.state());

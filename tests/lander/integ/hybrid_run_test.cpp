@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -142,6 +143,38 @@ TEST(HybridRun, ContinueGoesOnToTheSameOutputTimeAndEventsAreLimited) {
   EXPECT_EQ(times, (std::vector<double>{0.1}));
   EXPECT_EQ(quiet.summary().events, 1);
   EXPECT_LT(out.y[0], 0.0);  // through the floor: nothing reset it
+}
+
+// A root function that is exactly zero where its root was found and stays zero just after it (a
+// lander's sink rate -v_z that rounds to 0.0 at the located root): CVODE, continuing, would find
+// the root "at and very near" that time again and fail (CV_ILL_INPUT). The loop restarts there
+// instead, where CVODE sets such a function aside until it moves off zero.
+TEST(HybridRun, ContinueAtARootFunctionStillExactlyZeroRestartsInstead) {
+  CvodeIntegrator integrator{
+      1, [](double, Eigen::Ref<const Eigen::VectorXd>, Eigen::Ref<Eigen::VectorXd> d) { d[0] = 1.0; }, Tight(),
+      RootSpec{1,
+               [](double, Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::VectorXd> g) {
+                 g[0] = std::max(0.5 - y[0], 0.0);  // falls to zero at y = 0.5 and stays there
+               },
+               {-1}}};
+  HybridRun run(integrator);
+  run.Start(0.0, Eigen::VectorXd::Zero(1));
+  std::vector<double> events, samples;
+  HybridCallbacks calls;
+  calls.sample = [&](double t, const Eigen::VectorXd&) { samples.push_back(t); };
+  calls.event = [&](double t, const std::vector<int>&, Eigen::VectorXd&) {
+    events.push_back(t);
+    return EventAction::kContinue;
+  };
+  HybridPhase phase;
+  phase.sample_rate_hz = 4.0;
+  phase.end_s = 1.0;
+  const HybridOutcome out = run.Run(phase, calls);
+  ASSERT_EQ(events.size(), 1u);
+  EXPECT_NEAR(events[0], 0.5, 1e-9);
+  EXPECT_EQ(samples, (std::vector<double>{0.25, 0.5, 0.75, 1.0}));
+  EXPECT_NEAR(out.y[0], 1.0, 1e-9);
+  EXPECT_EQ(run.summary().restarts, 1);  // the continue became a restart
 }
 
 TEST(HybridRun, AdvanceToRootNeedsThatRootAndStartClearsTheCounters) {
