@@ -177,6 +177,37 @@ TEST(HybridRun, ContinueAtARootFunctionStillExactlyZeroRestartsInstead) {
   EXPECT_EQ(run.summary().restarts, 1);  // the continue became a restart
 }
 
+// An event exactly on the output grid whose handler restarts the integrator: the output there is
+// the state after the event (CVODE, asked to integrate towards its own start time, would fail).
+TEST(HybridRun, RestartExactlyAtAnOutputTimeSamplesThere) {
+  CvodeIntegrator integrator{
+      1, [](double, Eigen::Ref<const Eigen::VectorXd>, Eigen::Ref<Eigen::VectorXd> d) { d[0] = 1.0; }, Tight(),
+      RootSpec{1, [](double, Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::VectorXd> g) { g[0] = 0.5 - y[0]; },
+               {-1}}};
+  HybridRun run(integrator);
+  run.Start(0.0, Eigen::VectorXd::Zero(1));
+  std::vector<double> events, samples, values;
+  HybridCallbacks calls;
+  calls.sample = [&](double t, const Eigen::VectorXd& y) {
+    samples.push_back(t);
+    values.push_back(y[0]);
+  };
+  calls.event = [&](double t, const std::vector<int>&, Eigen::VectorXd& y) {
+    events.push_back(t);
+    y[0] += 1.0;  // a jump: the output at the event's time is the state after it
+    return EventAction::kRestart;
+  };
+  HybridPhase phase;
+  phase.sample_rate_hz = 4.0;
+  phase.end_s = 1.0;
+  run.Run(phase, calls);
+  ASSERT_EQ(events, (std::vector<double>{0.5}));  // exactly on the grid (y = t is integrated exactly)
+  EXPECT_EQ(samples, (std::vector<double>{0.25, 0.5, 0.75, 1.0}));
+  ASSERT_EQ(values.size(), 4u);
+  EXPECT_NEAR(values[1], 1.5, 1e-12);
+  EXPECT_NEAR(values[3], 2.0, 1e-9);
+}
+
 TEST(HybridRun, AdvanceToRootNeedsThatRootAndStartClearsTheCounters) {
   Ball ball;
   HybridRun run(ball.integrator);
