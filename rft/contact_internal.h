@@ -323,8 +323,10 @@ inline bool IsSpinning(const SurfaceElements& elements, const PadKinematics& k) 
 // wholly submerged, wholly leading - worked in vectorised passes over each block of elements. A law
 // with a dynamic stress (StressLaw3D::has_dynamic_stress) has that stress taken over each leading
 // element's submerged area, at its centroid, as the general path does. Needs elements with bounds
-// (SurfaceElements::HasBounds).
+// (SurfaceElements::HasBounds). Wholly submerged elements that trail the motion at every vertex add
+// their area without the per-element code; `skip_trailing` false takes that code for them too (a test
+// checks that the two agree bit for bit).
 ContactWrench RotatingWrenchOverPlane(const SurfaceElements& elements, const PadKinematics& kinematics,
-                                      const PlaneGround& plane, const StressLaw3D& law);
+                                      const PlaneGround& plane, const StressLaw3D& law, bool skip_trailing = true);
 
 }  // namespace touchdown::rft::contact_internal

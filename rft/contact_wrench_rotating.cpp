@@ -30,20 +30,32 @@ namespace {
 constexpr int kBlock = SurfaceElements::kBlockSize;
 
 // What the branch-free pass finds for each element of one block: `whole` > 0: wholly submerged and
-// wholly leading, with weight > 0; `touches` > 0: some vertex below the surface; the lead weight,
-// the depth integral D and depth moment M (in B) of the whole triangle, and the velocity at its
-// depth-weighted centroid (in B).
+// wholly leading, with weight > 0; `trails` > 0: wholly submerged and trailing beyond the band at
+// every vertex (no stress, only its area; see kTrailMargin); `touches` > 0: some vertex below the
+// surface; the lead weight, the depth integral D and depth moment M (in B) of the whole triangle,
+// and the velocity at its depth-weighted centroid (in B).
 struct BlockPass {
-  alignas(64) double whole[kBlock], touches[kBlock], weight[kBlock], depth[kBlock];
+  alignas(64) double whole[kBlock], trails[kBlock], touches[kBlock], weight[kBlock], depth[kBlock];
   alignas(64) double mx[kBlock], my[kBlock], mz[kBlock], vx[kBlock], vy[kBlock], vz[kBlock];
 };
 
+// How far below zero the pass's leading test must be at every vertex of a wholly submerged element
+// for it to count as trailing without the per-element code, relative to the size of the test's terms
+// (|D n.u| + |D v| + |D (n x w)| r_max). The per-element code (LeadingPartOf) forms
+// the same test divided by D in another order; the two differ by a few roundings of those terms, far
+// below this margin, so an element the pass calls trailing is one the per-element code would find
+// trailing at every vertex too, and every vertex deeper than kCullMargin is one it finds submerged:
+// it adds the element's area and nothing else (tests/rft/contact_block_cull_test.cpp).
+// Such elements (the back of a sliding pad, the top of a buried one) were a third of the elements a
+// lunar-study landing sends through the pass.
+constexpr double kTrailMargin = 1e-9;
+
 // The branch-free pass over the n elements of a block from `first` (vectorised): vertex depths,
 // the integrals of the whole triangle, the velocity at its depth-weighted centroid, the leading
-// test and the lead weight.
+// test and the lead weight. `r_max`: the largest |p_B| of any vertex.
 [[gnu::always_inline]] inline void PassBlock(const SurfaceElements& elements, int first, int n,
                                              const PlaneDepthInB& plane, const Vec& u, const Vec& w,
-                                             double ramp, BlockPass& out) {
+                                             double ramp, double r_max, BlockPass& out) {
   constexpr double kThird = 1.0 / 3.0, kTwelfth = 1.0 / 12.0;
   constexpr double kTiny = std::numeric_limits<double>::min();
   const double depth0 = plane.depth0, gx = plane.gx, gy = plane.gy, gz = plane.gz;
@@ -85,8 +97,15 @@ struct BlockPass {
     const double inv = 1.0 / std::max(D, kTiny);
     const double speed = V * inv, v_x = Vx * inv, v_y = Vy * inv, v_z = Vz * inv;
     const double lead_weight = x * x * (3.0 - 2.0 * x) * RampFactor(speed, ramp);
-    out.whole[i] = static_cast<double>(std::min(std::min(d0, d1), d2) > 0.0) *
-                   static_cast<double>(std::min(std::min(t0, t1), t2) >= 0.0) * static_cast<double>(speed > 0.0);
+    const double submerged = static_cast<double>(std::min(std::min(d0, d1), d2) > 0.0);
+    out.whole[i] = submerged * static_cast<double>(std::min(std::min(t0, t1), t2) >= 0.0) *
+                   static_cast<double>(speed > 0.0);
+    // (Bounded by D |n.u| + V + ..., no product of lead0's own again: a second use of one would
+    // change how the compiler fuses lead0's multiply-adds, and with it the last bits of every wrench.)
+    const double test_size = D * std::abs(nx * u.x + ny * u.y + nz * u.z) + V +
+                             (std::abs(tx) + std::abs(ty) + std::abs(tz)) * r_max;
+    out.trails[i] = static_cast<double>(std::min(std::min(d0, d1), d2) > kCullMargin) *
+                    static_cast<double>(std::max(std::max(t0, t1), t2) < -kTrailMargin * test_size);
     out.touches[i] = static_cast<double>(std::max(std::max(d0, d1), d2) > 0.0);
     out.weight[i] = lead_weight;
     out.depth[i] = D;
@@ -184,9 +203,10 @@ template <bool kDynamic>
 
 }  // namespace
 
-// kDynamic: the law has a dynamic stress.
+// kDynamic: the law has a dynamic stress. kSkipTrailing: wholly trailing submerged elements add their
+// area without the per-element code (the pass's `trails`); false only to test that this changes no bit.
 namespace {
-template <bool kDynamic>
+template <bool kDynamic, bool kSkipTrailing>
 ContactWrench RotatingWrench(const SurfaceElements& elements, const PadKinematics& kinematics,
                              const PlaneGround& plane, const StressLaw3D& law) {
   const int count = elements.size();
@@ -197,6 +217,7 @@ ContactWrench RotatingWrench(const SurfaceElements& elements, const PadKinematic
   const TwistInB twist(u_B, w_B);
   const RotationToW rotate(R);
   const double ramp = kinematics.element_ramp_speed_m_s;
+  const double r_max = elements.max_vertex_radius_m;
   const double* p0 = elements.p0_B.data();
   const double* p1 = elements.p1_B.data();
   const double* p2 = elements.p2_B.data();
@@ -217,10 +238,14 @@ ContactWrench RotatingWrench(const SurfaceElements& elements, const PadKinematic
       for (int e = first; e < first + n; ++e) submerged_area += areas[e];
       continue;
     }
-    PassBlock(elements, first, n, depth, u, w, ramp, pass);
+    PassBlock(elements, first, n, depth, u, w, ramp, r_max, pass);
     for (int i = 0; i < n; ++i) {
       if (pass.touches[i] == 0.0) continue;
       const int e = first + i;
+      if (kSkipTrailing && pass.trails[i] != 0.0) {  // wholly submerged, trailing everywhere: its area only
+        submerged_area += areas[e];
+        continue;
+      }
       const Vec nrm = Load(nb + 3 * e);
       if (pass.whole[i] != 0.0) {
         submerged_area += areas[e];
@@ -262,9 +287,12 @@ ContactWrench RotatingWrench(const SurfaceElements& elements, const PadKinematic
 }  // namespace
 
 ContactWrench RotatingWrenchOverPlane(const SurfaceElements& elements, const PadKinematics& kinematics,
-                                      const PlaneGround& plane, const StressLaw3D& law) {
-  return law.has_dynamic_stress() ? RotatingWrench<true>(elements, kinematics, plane, law)
-                                  : RotatingWrench<false>(elements, kinematics, plane, law);
+                                      const PlaneGround& plane, const StressLaw3D& law, bool skip_trailing) {
+  if (!skip_trailing)
+    return law.has_dynamic_stress() ? RotatingWrench<true, false>(elements, kinematics, plane, law)
+                                    : RotatingWrench<false, false>(elements, kinematics, plane, law);
+  return law.has_dynamic_stress() ? RotatingWrench<true, true>(elements, kinematics, plane, law)
+                                  : RotatingWrench<false, true>(elements, kinematics, plane, law);
 }
 
 }  // namespace touchdown::rft::contact_internal

@@ -115,5 +115,62 @@ TEST(RftContactBlockCull, SkippingLeavesEveryWrenchBitForBit) {
   }
 }
 
+// Wholly submerged elements that trail the motion at every vertex add their area in the vectorised
+// pass, without the per-element code (contact_wrench_rotating.cpp, kTrailMargin): over random poses,
+// depths and twists - spins from none to fast, joint speeds down to the element ramp's, buried and
+// partly submerged, the soil ramp on and off - the leading elements and the submerged area are the
+// per-element code's exactly and the wrench is to rounding, and the shortcut had elements to serve.
+TEST(RftContactBlockCull, TrailingElementsSkipTheElementCodeAndChangeNothing) {
+  const SurfaceElements pad = BoundedPad();
+  const Li2013TreersLaw quasi_static(3.48e6);
+  const DynamicTermLaw dynamic(std::make_unique<Li2013TreersLaw>(3.48e6), 1.1, 1540.0);
+  std::mt19937 rng(30);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int compared = 0;
+  long trailing_submerged = 0;
+  double largest_difference = 0.0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    PadKinematics k;
+    k.R_WB = Eigen::AngleAxisd(0.6 * unit(rng), Eigen::Vector3d(normal(rng), normal(rng), normal(rng)).normalized())
+                 .toRotationMatrix();
+    k.p_WB = Eigen::Vector3d(0.0, 0.0, -0.012 + 0.040 * unit(rng));  // buried to lifted clear
+    const double speed = std::pow(10.0, -5.0 + 5.0 * unit(rng));   // 10 um/s to 1 m/s
+    k.v_WB_W = speed * Eigen::Vector3d(normal(rng), normal(rng), normal(rng)).normalized();
+    k.w_WB_W = std::pow(10.0, -3.0 + 4.0 * unit(rng)) * speed / 0.0275 *
+               Eigen::Vector3d(normal(rng), normal(rng), normal(rng)).normalized();
+    if (trial % 5 == 0) k.w_WB_W.setZero();
+    k.element_ramp_speed_m_s = trial % 2 == 0 ? 1e-4 : 0.0;
+    for (const StressLaw3D* law : {static_cast<const StressLaw3D*>(&quasi_static), static_cast<const StressLaw3D*>(&dynamic)}) {
+      const ContactWrench a = contact_internal::RotatingWrenchOverPlane(pad, k, PlaneGround(), *law, true);
+      const ContactWrench b = contact_internal::RotatingWrenchOverPlane(pad, k, PlaneGround(), *law, false);
+      // An element skipped that the per-element code would have let lead, even by a sliver, would
+      // be one leading element more there.
+      ASSERT_EQ(a.leading_elements, b.leading_elements) << "trial " << trial;
+      ASSERT_EQ(a.submerged_area_m2, b.submerged_area_m2) << "trial " << trial;
+      // The two paths are separate instantiations, which the compiler may contract into fused
+      // multiply-adds differently: the sums agree to rounding.
+      const double force = b.force_W.norm(), moment = b.moment_W.norm() + 0.0275 * force;
+      largest_difference = std::max({largest_difference, (a.force_W - b.force_W).norm() / std::max(force, 1e-300),
+                                     (a.moment_W - b.moment_W).norm() / std::max(moment, 1e-300)});
+      ++compared;
+    }
+    // Elements the shortcut is for: every vertex submerged and trailing beyond the band there.
+    for (int e = 0; e < pad.size(); ++e) {
+      bool trails = true;
+      for (const Eigen::Matrix3Xd* p : {&pad.p0_B, &pad.p1_B, &pad.p2_B}) {
+        const Eigen::Vector3d r_W = k.R_WB * p->col(e);
+        const Eigen::Vector3d v = Velocity(k.v_WB_W, k.w_WB_W, r_W);
+        trails &= k.p_WB.z() + r_W.z() < 0.0 &&
+                  (k.R_WB * pad.n_B.col(e)).dot(v) + contact_internal::kTrailingBand * v.norm() < -1e-6 * v.norm();
+      }
+      trailing_submerged += trails;
+    }
+  }
+  EXPECT_EQ(compared, 6000);
+  EXPECT_LT(largest_difference, 1e-13);
+  EXPECT_GT(trailing_submerged, 100000);  // the shortcut had elements to serve
+}
+
 }  // namespace
 }  // namespace touchdown::rft
