@@ -12,7 +12,8 @@
 // TD_RTOL / TD_ATOL / TD_ADAMS (Adams instead of BDF) / TD_MSBJ (most steps between Jacobians) /
 // TD_NLCOEF (Newton's convergence coefficient; 0.1 is CVODE's, the lander's default 0.03) /
 // TD_ATTJAC (the Jacobian's contact derivatives with respect to the pads' attitude too) /
-// TD_SOIL_RAMP (pad or element: where the soil's low-speed ramp acts, lander::SoilRamp)
+// TD_SOIL_RAMP (pad or element: where the soil's low-speed ramp acts, lander::SoilRamp) /
+// TD_SUNDIALS_LU (SUNDIALS' dense LU for the Newton matrix instead of Eigen's, integ::DenseSolver)
 // override the integrator for convergence studies, and TD_PRINT prints each landing's final depths,
 // roll and pitch to stderr at full precision; TD_PADI scales the pads' rotational inertia (an
 // experiment: how much of the step count the pads' fast rotation in the soil causes).
@@ -43,6 +44,7 @@ lander::LanderRunOptions Options() {
   if (getenv("TD_MSBJ")) options.integrator.max_steps_between_jacobians = atol(getenv("TD_MSBJ"));
   if (getenv("TD_NLCOEF")) options.integrator.nonlinear_convergence_coefficient = atof(getenv("TD_NLCOEF"));
   if (getenv("TD_ATTJAC")) options.jacobian_attitude_sensitivity = true;
+  if (getenv("TD_SUNDIALS_LU")) options.integrator.dense_solver = integ::DenseSolver::kSundials;
   return options;
 }
 

@@ -14,6 +14,8 @@
 #include <sstream>
 #include <utility>
 
+#include "lander/integ/eigen_dense_solver.h"
+
 namespace touchdown::integ {
 
 bool IntegratorOptions::IsValid(std::string* error) const {
@@ -196,7 +198,8 @@ CvodeIntegrator::CvodeIntegrator(int state_size, RhsFunction rhs, const Integrat
   if (options.max_step > 0) m.Check(CVodeSetMaxStep(m.cvode, options.max_step), "CVodeSetMaxStep");
   if (options.stiff) {
     m.matrix = SUNDenseMatrix(state_size, state_size, m.context);
-    m.linear_solver = SUNLinSol_Dense(m.y, m.matrix, m.context);
+    m.linear_solver = options.dense_solver == DenseSolver::kEigen ? MakeEigenDenseSolver(state_size, m.context)
+                                                                  : SUNLinSol_Dense(m.y, m.matrix, m.context);
     m.Check(CVodeSetLinearSolver(m.cvode, m.linear_solver, m.matrix), "CVodeSetLinearSolver");
     if (options.max_steps_between_jacobians > 0)
       m.Check(CVodeSetJacEvalFrequency(m.cvode, options.max_steps_between_jacobians), "CVodeSetJacEvalFrequency");

@@ -26,6 +26,10 @@ using RootFunction = std::function<void(double t, Eigen::Ref<const Eigen::Vector
 using JacobianFunction = std::function<void(double t, Eigen::Ref<const Eigen::VectorXd> y,
                                             Eigen::Ref<const Eigen::VectorXd> ydot, Eigen::Ref<Eigen::MatrixXd> J)>;
 
+// Stiff mode: who factors the Newton matrix. Both are dense LU with partial pivoting; they agree to
+// rounding, not bit for bit (lander/integ/eigen_dense_solver.h says why Eigen's is the default).
+enum class DenseSolver { kEigen, kSundials };
+
 struct IntegratorOptions {
   double rtol = 1e-10;
   double atol = 1e-12;
@@ -35,6 +39,7 @@ struct IntegratorOptions {
   // Stiff mode: most steps between Jacobian evaluations (CVodeSetJacEvalFrequency); 0 = CVODE's
   // default (51). Each difference-quotient Jacobian costs one right-hand side per state.
   long max_steps_between_jacobians = 0;
+  DenseSolver dense_solver = DenseSolver::kEigen;
   // Stiff mode: the Newton iteration's convergence coefficient (CVodeSetNonlinConvCoef: it stops
   // when its estimated error is below this times the error test's tolerance); 0 = CVODE's default
   // (0.1).

@@ -4,10 +4,13 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/QR>
 #include <chrono>
 #include <cmath>
 #include <limits>
 #include <thread>
+
+#include "tests/malloc_counter.h"
 
 namespace touchdown::integ {
 namespace {
@@ -173,6 +176,82 @@ TEST(CvodeIntegrator, NoWallClockLimitByDefault) {
   EXPECT_NE(why.find("max_wall_time_s"), std::string::npos);
   options.max_wall_time_s = std::numeric_limits<double>::infinity();
   EXPECT_FALSE(options.IsValid(&why));
+}
+
+// A stiff linear system of the lander's size, y' = A y with A = V D V^T (V orthogonal, D from -1 to
+// -1e6: a stiffness ratio of a million, and a Newton matrix that needs row pivoting), against its
+// closed form V exp(D t) V^T y0, with each of the two dense LU solvers of the Newton matrix.
+TEST(CvodeIntegrator, StiffSystemMatchesClosedFormWithEitherDenseSolver) {
+  constexpr int n = 44;
+  const Eigen::MatrixXd V = Eigen::MatrixXd::Random(n, n).householderQr().householderQ();
+  Eigen::VectorXd d(n);
+  for (int k = 0; k < n; ++k) d[k] = -std::pow(10.0, 6.0 * k / (n - 1));
+  const Eigen::MatrixXd A = V * d.asDiagonal() * V.transpose();
+  Eigen::VectorXd y0 = Eigen::VectorXd::LinSpaced(n, 1.0, 2.0);
+  const double t = 0.5;
+  const Eigen::VectorXd exact = V * (d * t).array().exp().matrix().asDiagonal() * (V.transpose() * y0);
+  for (DenseSolver solver : {DenseSolver::kEigen, DenseSolver::kSundials}) {
+    IntegratorOptions options;
+    options.stiff = true;
+    options.rtol = 1e-9;
+    options.atol = 1e-12;
+    options.dense_solver = solver;
+    CvodeIntegrator integ(n, [&](double, Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::VectorXd> dy) {
+      dy.noalias() = A * y;
+    }, options);
+    integ.SetJacobian([&](double, auto, auto, Eigen::Ref<Eigen::MatrixXd> J) { J = A; });
+    integ.Reset(0.0, y0);
+    integ.AdvanceTo(t);
+    EXPECT_LT((integ.state() - exact).norm(), 1e-7 * exact.norm()) << static_cast<int>(solver);
+    EXPECT_GT(integ.summary().jacobian_evaluations, 0);
+  }
+  EXPECT_TRUE(IntegratorOptions{}.dense_solver == DenseSolver::kEigen);
+}
+
+// House style: once the integrator exists, stepping allocates nothing, the Newton matrix's
+// factorisations and solves included (Eigen's LU works in the storage it was given at construction).
+TEST(CvodeIntegrator, StiffStepsAllocateNothing) {
+  if (!testing_alloc::kCountsMalloc) GTEST_SKIP() << "malloc is not counted under AddressSanitizer";
+  ASSERT_GT(testing_alloc::AllocationsOfAnEigenBuffer(), 0);
+  constexpr int n = 20;
+  const Eigen::MatrixXd V = Eigen::MatrixXd::Random(n, n).householderQr().householderQ();
+  Eigen::VectorXd d(n);
+  for (int k = 0; k < n; ++k) d[k] = -std::pow(10.0, 5.0 * k / (n - 1));
+  const Eigen::MatrixXd A = V * d.asDiagonal() * V.transpose();
+  IntegratorOptions options;
+  options.stiff = true;
+  options.rtol = 1e-8;
+  options.atol = 1e-12;
+  CvodeIntegrator integ(n, [&](double, Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::VectorXd> dy) {
+    dy.noalias() = A * y;
+  }, options);
+  integ.SetJacobian([&](double, auto, auto, Eigen::Ref<Eigen::MatrixXd> J) { J = A; });
+  integ.Reset(0.0, Eigen::VectorXd::Ones(n));
+  integ.AdvanceTo(1e-3);
+  const long before = integ.summary().jacobian_evaluations;
+  EXPECT_EQ(testing_alloc::CountAllocations([&] { integ.AdvanceTo(1.0); }), 0);
+  EXPECT_GT(integ.summary().jacobian_evaluations, before);  // factorisations happened while counting
+}
+
+// A Newton matrix that cannot be factored (here not finite) fails the setup as recoverable, as
+// SUNDIALS' own solver does for a zero pivot: CVODE counts it as a convergence failure, retries with
+// smaller steps and gives up, and the advance fails with CVODE's reason.
+TEST(CvodeIntegrator, NewtonMatrixThatCannotBeFactoredFailsTheAdvance) {
+  IntegratorOptions options;
+  options.stiff = true;
+  CvodeIntegrator integ(3, [](double, Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::VectorXd> dy) {
+    dy = -y;
+  }, options);
+  integ.SetJacobian([](double, auto, auto, Eigen::Ref<Eigen::MatrixXd> J) {
+    J.setConstant(std::numeric_limits<double>::quiet_NaN());
+  });
+  integ.Reset(0.0, Eigen::Vector3d(1.0, 2.0, 3.0));
+  try {
+    integ.AdvanceTo(1.0);
+    FAIL() << "the advance should fail";
+  } catch (const IntegrationFailure& e) {
+    EXPECT_NE(std::string(e.what()).find("CV_CONV_FAILURE"), std::string::npos) << e.what();
+  }
 }
 
 TEST(CvodeIntegrator, OptionsAreValidated) {
