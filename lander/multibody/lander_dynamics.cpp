@@ -140,15 +140,19 @@ struct Assembly {
 
 // Mass matrix and generalised forces without constraint forces. Fills e->soil, leg forces and
 // the dissipation of free pads, dampers and crushing.
+// `mass` false: without M (an evaluation that reuses M's factor).
 void Assemble(const LanderModel& model, const StateLayout& L, const rft::Terrain& terrain, const LanderModes& modes,
-              const Eigen::Ref<const Eigen::VectorXd>& y, const GivenSoil* given, LanderEvaluation* e, Assembly* a) {
+              const Eigen::Ref<const Eigen::VectorXd>& y, const GivenSoil* given, bool mass, LanderEvaluation* e,
+              Assembly* a) {
   const LanderPose& p = e->pose;
   const Eigen::Vector3d g(0, 0, -model.gravity_m_s2);
-  a->M.setZero(L.nu, L.nu);
   a->Q.setZero(L.nu);
-  a->M.block<3, 3>(0, 0).diagonal().setConstant(model.body_mass_kg);
   const Eigen::Matrix3d I_B = p.R_WB * model.body_inertia_B * p.R_WB.transpose();
-  a->M.block<3, 3>(3, 3) = I_B;
+  if (mass) {
+    a->M.setZero(L.nu, L.nu);
+    a->M.block<3, 3>(0, 0).diagonal().setConstant(model.body_mass_kg);
+    a->M.block<3, 3>(3, 3) = I_B;
+  }
   a->Q.segment<3>(0) = model.body_mass_kg * g;
   a->Q.segment<3>(3) = -p.w_WB_W.cross(I_B * p.w_WB_W);
   e->dissipation_W = 0.0;
@@ -163,9 +167,11 @@ void Assemble(const LanderModel& model, const StateLayout& L, const rft::Terrain
     const double s = has_stroke ? y[L.stroke(i)] : 0.0;
     const double sdot = has_stroke ? y[L.stroke_rate(i)] : 0.0;
     PadJacobians(L, i, f, p.w_WB_W, sdot, &J_C, &a->J_J[i], &bias_C, &a->bias_J[i]);
-    a->M.noalias() += m * J_C.transpose() * J_C;
     const Eigen::Matrix3d I_P = f.R_WP * leg.pad->inertia_com_B * f.R_WP.transpose();
-    a->M.block<3, 3>(L.u_w_WP_W(i), L.u_w_WP_W(i)) += I_P;
+    if (mass) {
+      a->M.noalias() += m * J_C.transpose() * J_C;
+      a->M.block<3, 3>(L.u_w_WP_W(i), L.u_w_WP_W(i)) += I_P;
+    }
 
     // Soil: RFT on a free pad in contact; a held pad's wrench is a constraint force (later).
     rft::ContactWrench& w = e->soil[i];
@@ -197,7 +203,8 @@ void Assemble(const LanderModel& model, const StateLayout& L, const rft::Terrain
         const double force_z = -ea.mass_kg * bias_C.z() - std::max(ea.rate_kg_s, 0.0) * v_z;
         for (int r = 0; r < L.nu; ++r) {  // M += m_a J_z^T J_z, Q += J_z^T force_z (no temporaries)
           a->Q[r] += J_C(2, r) * force_z;
-          for (int c = 0; c < L.nu; ++c) a->M(r, c) += ea.mass_kg * J_C(2, r) * J_C(2, c);
+          if (mass)
+            for (int c = 0; c < L.nu; ++c) a->M(r, c) += ea.mass_kg * J_C(2, r) * J_C(2, c);
         }
         e->dissipation_W += 0.5 * std::abs(ea.rate_kg_s) * v_z * v_z;
       }
@@ -296,11 +303,15 @@ void EvaluateLander(const LanderModel& model, const StateLayout& L, const rft::T
 
 void EvaluateLander(const LanderModel& model, const StateLayout& L, const rft::Terrain& terrain, const LanderModes& modes,
                     const Eigen::Ref<const Eigen::VectorXd>& y, LanderEvaluation* e, LanderData* data,
-                    const GivenSoil* given) {
+                    const GivenSoil* given, PositionTerms positions) {
   e->pose = ComputePose(model, L, y);
+  const bool reuse = positions == PositionTerms::kReuse;
   Assembly a;
-  Assemble(model, L, terrain, modes, y, given, e, &a);
-  const Eigen::LLT<Mat> llt(a.M);
+  Assemble(model, L, terrain, modes, y, given, /*mass=*/!reuse, e, &a);
+  Eigen::LLT<Mat> formed;
+  if (!reuse) formed.compute(a.M);
+  if (positions == PositionTerms::kKeep) data->mass_llt = formed;
+  const Eigen::LLT<Mat>& llt = reuse ? data->mass_llt : formed;
   Vec u_dot = llt.solve(a.Q);
 
   // Constraints of held pads and locked crushable strokes.
@@ -309,30 +320,35 @@ void EvaluateLander(const LanderModel& model, const StateLayout& L, const rft::T
   if (rows > 0) {
     LanderData& d = *data;
     LanderData::RowsBySpeeds& G = d.G;
-    G.setZero(rows, L.nu);
+    if (!reuse) G.setZero(rows, L.nu);
     d.bias.setZero(rows);
     int r = 0;
     std::array<int, kNumLegs> pad_row{-1, -1, -1, -1}, stroke_row{-1, -1, -1, -1};
     for (int i = 0; i < kNumLegs; ++i) {
       if (modes.pad[i] == PadMode::kHeld) {
         pad_row[i] = r;
-        G.block(r, 0, 3, L.nu) = a.J_J[i];
+        if (!reuse) {
+          G.block(r, 0, 3, L.nu) = a.J_J[i];
+          G.block<3, 3>(r + 3, L.u_w_WP_W(i)).setIdentity();
+        }
         d.bias.segment<3>(r) = a.bias_J[i];
-        G.block<3, 3>(r + 3, L.u_w_WP_W(i)).setIdentity();
         r += 6;
       }
       if (L.stroke_slot[i] >= 0 && model.legs[i].absorber->kind == ShockAbsorber::Kind::kCrushable &&
           modes.stroke[i] != StrokeMode::kFree) {
         stroke_row[i] = r;
-        G(r++, L.u_stroke(i)) = 1.0;
+        if (!reuse) G(r, L.u_stroke(i)) = 1.0;
+        ++r;
       }
     }
-    d.MinvGt = llt.solve(G.transpose());
-    d.A.noalias() = G * d.MinvGt;
+    if (!reuse) {
+      d.MinvGt = llt.solve(G.transpose());
+      d.A.noalias() = G * d.MinvGt;
+    }
     d.u_free = u_dot;
     d.rhs.noalias() = -d.bias - G * d.u_free;
     // Minimum-norm multipliers: four held pads are statically indeterminate.
-    d.cod.compute(d.A);
+    if (!reuse) d.cod.compute(d.A);
     d.c.resize(rows);
     d.z.resize(rows);
     d.householder.resize(rows);

@@ -127,7 +127,17 @@ struct LanderData {
   SpeedVector u_free, correction;    // du/dt without constraints, M^-1 G^T lambda
   RowVector c, z, householder;       // the minimum-norm solve's temporaries
   Eigen::CompleteOrthogonalDecomposition<RowsByRows> cod;
+  // The mass matrix's Cholesky factor. With G, MinvGt, A and cod above it is all of an evaluation
+  // that depends on the positions q alone: an evaluation with PositionTerms::kReuse takes them from
+  // the last one with kKeep (same q, same modes) instead of forming them again.
+  using MassMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxSpeeds, kMaxSpeeds>;
+  Eigen::LLT<MassMatrix> mass_llt;
 };
+
+// What an evaluation does with LanderData's position terms (above). A Jacobian's speed columns move
+// u only: they reuse the factorisations of the evaluation at their base point, bit for bit what
+// forming them again would give.
+enum class PositionTerms { kForm, kKeep, kReuse };
 
 // Soil wrenches an evaluation takes as given instead of computing them: a Jacobian column that
 // moves one pad leaves the other pads' contact unchanged (their contact depends on their own
@@ -149,9 +159,12 @@ LanderPose ComputePose(const LanderModel& model, const StateLayout& layout, cons
 double PadDepth(const LanderModel& model, const rft::Terrain& terrain, int leg, const PadFrame& pad);
 
 // The equations of motion (pure function of model, terrain, modes and state).
+// `positions`: kKeep leaves the position terms in `data`; kReuse takes them from there (the caller
+// guarantees the same q and modes as the kKeep evaluation, and no soil with added mass, whose mass
+// moves with the contact).
 void EvaluateLander(const LanderModel& model, const StateLayout& layout, const rft::Terrain& terrain,
                     const LanderModes& modes, const Eigen::Ref<const Eigen::VectorXd>& y, LanderEvaluation* out,
-                    LanderData* data, const GivenSoil* given = nullptr);
+                    LanderData* data, const GivenSoil* given = nullptr, PositionTerms positions = PositionTerms::kForm);
 // The same with scratch of its own (allocates: for samples and events, not right-hand sides).
 void EvaluateLander(const LanderModel& model, const StateLayout& layout, const rft::Terrain& terrain,
                     const LanderModes& modes, const Eigen::Ref<const Eigen::VectorXd>& y, LanderEvaluation* out);

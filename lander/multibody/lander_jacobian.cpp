@@ -94,12 +94,12 @@ struct JacobianPass {
   }
 
   // Column j of the speed and work rows from an evaluation at y + h e_j.
-  void Column(int j, const GivenSoil* given) {
+  void Column(int j, const GivenSoil* given, PositionTerms positions = PositionTerms::kForm) {
     const double h = Step(j);
     const int rows = L.size - L.nq;  // speeds, work and the pads' shear displacements
     w.y = y;
     w.y[j] += h;
-    EvaluateLander(model, L, terrain, modes, w.y, &w.probe, data, given);
+    EvaluateLander(model, L, terrain, modes, w.y, &w.probe, data, given, positions);
     StateDerivative(L, w.y, w.probe, w.ydot);
     J.block(L.nq, j, rows, 1) = (w.ydot.segment(L.nq, rows) - w.f0.segment(L.nq, rows)) / h;
   }
@@ -113,9 +113,19 @@ struct JacobianPass {
       }
   }
 
+  // The base point's position terms (mass matrix factor, constraint decomposition) into `data`,
+  // for the speed columns, which move u only. An evaluation at y with the base's wrenches given.
+  void KeepPositionTerms() {
+    GivenSoil given;
+    for (int i = 0; i < kNumLegs; ++i)
+      if (touching[i]) given.wrench[i] = &w.base.soil[i];
+    EvaluateLander(model, L, terrain, modes, y, &w.probe, data, &given, PositionTerms::kKeep);
+  }
+
   // Column j with every touching pad's wrench predicted to first order from its motion (chain rule
-  // through the sensitivities): no contact is evaluated again.
-  void PredictedColumn(int j) {
+  // through the sensitivities): no contact is evaluated again. `positions`: kReuse for a speed
+  // column after KeepPositionTerms.
+  void PredictedColumn(int j, PositionTerms positions = PositionTerms::kForm) {
     w.y = y;  // Column() perturbs it the same way again
     w.y[j] += Step(j);
     const LanderPose moved = ComputePose(model, L, w.y);
@@ -128,7 +138,7 @@ struct JacobianPass {
       w.predicted[i].moment_W += dw.tail<3>();
       given.wrench[i] = &w.predicted[i];
     }
-    Column(j, &given);
+    Column(j, &given, positions);
   }
 
   // Janosi's j reaches only its own pad's contact (not through the pad's motion): evaluated again.
@@ -162,7 +172,15 @@ void LanderJacobian(const LanderModel& model, const StateLayout& L, const rft::T
   for (int i = 0; i < kNumLegs; ++i)
     pass.touching[i] = modes.pad[i] == PadMode::kFree && PadDepth(model, terrain, i, w.base.pose.pads[i]) > 0.0;
   pass.Sensitivities();
-  for (int j = 0; j < L.nq + L.nu; ++j) pass.PredictedColumn(j);
+  for (int j = 0; j < L.nq; ++j) pass.PredictedColumn(j);
+  // The speed columns leave q, and so the mass matrix and the holds' constraint Jacobian, as they
+  // are at y: their factorisations are formed once (not with added mass, whose mass moves with the
+  // contact and so with the speeds' predicted wrenches).
+  bool added_mass = false;
+  for (const rft::TerrainSoil& soil : terrain.soils) added_mass |= soil.contact.pad_terms.has_added_mass();
+  if (!added_mass) pass.KeepPositionTerms();
+  for (int j = L.nq; j < L.nq + L.nu; ++j)
+    pass.PredictedColumn(j, added_mass ? PositionTerms::kForm : PositionTerms::kReuse);
   if (L.has_shear)
     for (int i = 0; i < kNumLegs; ++i) pass.ShearColumn(i);
 }

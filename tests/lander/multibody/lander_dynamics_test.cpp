@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 #include "lander/multibody/lander_dynamics.h"
 #include "lander/multibody/lander_simulation.h"
@@ -65,6 +66,51 @@ TEST(LanderDynamics, FreeFlightConservesEnergyAndMomentum) {
               0.0, 1e-7);
   EXPECT_LT((b.angular_about_com - a.angular_about_com).norm(), 1e-8 * a.angular_about_com.norm());
   EXPECT_GT(a.angular_about_com.norm(), 0.01);  // the check is not vacuous
+}
+
+// An evaluation that reuses the position terms (mass matrix factor, the holds' constraint
+// decomposition) of one at the same positions gives what forming them again gives, bit for bit:
+// case B rocking in the soil with every pad free, and case A at rest with two pads held and its
+// speeds set going, each at speeds other than the kept evaluation's.
+TEST(LanderDynamics, ReusedPositionTermsGiveTheSameEvaluationBitForBit) {
+  struct Case {
+    const char* name;
+    test::PaperLander setup;
+    Eigen::VectorXd y;
+    LanderModes modes;
+  };
+  std::vector<Case> cases;
+  {
+    Case rocking{"case B rocking, pads free", test::MakePaperLander('B'), {}, {}};
+    rocking.y = test::StateAfterFirstTouchdown(rocking.setup, 0.004);
+    cases.push_back(rocking);
+    Case held{"case A, pads 1 and 3 held", test::MakePaperLander('A'), {}, {}};
+    held.setup.options.duration_s = 0.4;
+    held.y = SimulateLander(held.setup).final_state;
+    held.modes.pad[0] = held.modes.pad[2] = PadMode::kHeld;
+    cases.push_back(held);
+  }
+  for (const Case& c : cases) {
+    const StateLayout L(c.setup.model);
+    LanderData kept;
+    LanderEvaluation e;
+    EvaluateLander(c.setup.model, L, c.setup.terrain, c.modes, c.y, &e, &kept, nullptr, PositionTerms::kKeep);
+    for (int k = 0; k < 5; ++k) {
+      Eigen::VectorXd moved = c.y;
+      for (int j = 0; j < L.nu; ++j) moved[L.nq + j] += 0.01 * std::sin(1.0 + 7.0 * k + 3.0 * j);
+      LanderEvaluation reused, formed;
+      LanderData scratch;
+      EvaluateLander(c.setup.model, L, c.setup.terrain, c.modes, moved, &reused, &kept, nullptr, PositionTerms::kReuse);
+      EvaluateLander(c.setup.model, L, c.setup.terrain, c.modes, moved, &formed, &scratch);
+      EXPECT_EQ(reused.u_dot, formed.u_dot) << c.name << ", speeds " << k;
+      EXPECT_GT((formed.u_dot - e.u_dot).norm(), 0.0) << c.name;  // the speeds did change the evaluation
+      for (int i = 0; i < kNumLegs; ++i) {
+        EXPECT_EQ(reused.soil[i].force_W, formed.soil[i].force_W) << c.name;
+        EXPECT_EQ(reused.soil[i].moment_W, formed.soil[i].moment_W) << c.name;
+      }
+      EXPECT_EQ(reused.dissipation_W, formed.dissipation_W) << c.name;
+    }
+  }
 }
 
 TEST(LanderDynamics, AttitudeAnglesFollowAerospaceSigns) {
