@@ -308,10 +308,10 @@ void EvaluateLander(const LanderModel& model, const StateLayout& L, const rft::T
   const bool reuse = positions == PositionTerms::kReuse;
   Assembly a;
   Assemble(model, L, terrain, modes, y, given, /*mass=*/!reuse, e, &a);
+  // kKeep factors into `data` (for later kReuse evaluations), kForm into a local.
   Eigen::LLT<Mat> formed;
-  if (!reuse) formed.compute(a.M);
-  if (positions == PositionTerms::kKeep) data->mass_llt = formed;
-  const Eigen::LLT<Mat>& llt = reuse ? data->mass_llt : formed;
+  Eigen::LLT<Mat>& llt = positions == PositionTerms::kForm ? formed : data->mass_llt;
+  if (!reuse) llt.compute(a.M);
   Vec u_dot = llt.solve(a.Q);
 
   // Constraints of held pads and locked crushable strokes.
