@@ -1,7 +1,7 @@
 // Lander landings of 1 s simulated time from release 10 cm above the bed, four meshed pads of about
 // 2k triangles each (data/landers, 64 segments around the rim), ball joints with the lander file's
 // 30 deg range, one core. The symmetric case A is the reference; the target is every other landing
-// within 3x its time (the studies' fast model: TD_SEGMENTS=24 TD_RTOL=1e-5; docs/stability_studies.md,
+// within 3x its time (the studies' fast model: TD_SEGMENTS=24 TD_RTOL=1e-5 TD_SPIN_FACTOR=10; docs/stability_studies.md,
 // "Fast model and re-checks"):
 //   CaseA                 the paper's Table II case A (LP under every pad)
 //   CaseB, CaseC          CP under pad 1 (B), pads 1 and 2 (C)
@@ -13,7 +13,9 @@
 // TD_NLCOEF (Newton's convergence coefficient; 0.1 is CVODE's, the lander's default 0.03) /
 // TD_ATTJAC (the Jacobian's contact derivatives with respect to the pads' attitude too) /
 // TD_SOIL_RAMP (pad or element: where the soil's low-speed ramp acts, lander::SoilRamp) /
-// TD_SUNDIALS_LU (SUNDIALS' dense LU for the Newton matrix instead of Eigen's, integ::DenseSolver)
+// TD_SUNDIALS_LU (SUNDIALS' dense LU for the Newton matrix instead of Eigen's, integ::DenseSolver) /
+// TD_SPIN_FACTOR (the pads' spins' absolute tolerance times this, LanderRunOptions::
+// pad_spin_tolerance_factor)
 // override the integrator for convergence studies, and TD_PRINT prints each landing's final depths,
 // roll and pitch to stderr at full precision; TD_PADI scales the pads' rotational inertia (an
 // experiment: how much of the step count the pads' fast rotation in the soil causes).
@@ -44,6 +46,7 @@ lander::LanderRunOptions Options() {
   if (getenv("TD_MSBJ")) options.integrator.max_steps_between_jacobians = atol(getenv("TD_MSBJ"));
   if (getenv("TD_NLCOEF")) options.integrator.nonlinear_convergence_coefficient = atof(getenv("TD_NLCOEF"));
   if (getenv("TD_ATTJAC")) options.jacobian_attitude_sensitivity = true;
+  if (getenv("TD_SPIN_FACTOR")) options.pad_spin_tolerance_factor = atof(getenv("TD_SPIN_FACTOR"));
   if (getenv("TD_SUNDIALS_LU")) options.integrator.dense_solver = integ::DenseSolver::kSundials;
   return options;
 }

@@ -31,6 +31,9 @@ inline constexpr Range kZeta_N_cm3{"N/cm^3", 0.0, 1e4, true};           // RFT s
 // Dynamic RFT's inertial coefficient lambda [-] (rft/dynamic_term.h): order one in every fit
 // published (Agarwal et al. 2021: 1.1); 100 is far beyond, and a negative one would pull the pad in.
 inline constexpr Range kDynamicLambda{"(dimensionless)", 0.0, 100.0, false};
+// simulation.pad_spin_tolerance_factor: 1 is every state's tolerance; beyond 1e3 a pad's spin is
+// hardly resolved at all (30 already let a study landing stall, docs/lander_dynamics.md).
+inline constexpr Range kPadSpinToleranceFactor{"(dimensionless)", 1.0, 1000.0, false};
 inline constexpr Range kPadSize_m{"m", 0.0, 10.0, true};                // pad radius, thickness, mesh extent
 inline constexpr Range kPadSize_mm{"mm", 0.0, kPadSize_m.high * 1e3, true};  // the same, as pad YAML gives it
 // Worker threads a run may start (--threads, the Python module's `threads`; 0: every core). Far

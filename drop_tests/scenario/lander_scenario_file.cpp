@@ -230,6 +230,9 @@ void ReadSimulation(const io::YamlFields& sim, lander::LanderRunOptions& options
   if (sim.Has("atol")) {
     options.integrator.atol = sim.Positive("atol");
     options.scale_tolerances = false;
+    // One scalar for every state has no per-state scale for the factor to multiply.
+    if (sim.Has("pad_spin_tolerance_factor"))
+      sim.Fail("pad_spin_tolerance_factor", "needs the scaled tolerances: give rtol only, not atol");
   }
   if (sim.Has("max_step_s")) options.integrator.max_step = sim.Positive("max_step_s");
   if (sim.Has("stiff")) {

@@ -111,6 +111,8 @@ const io::FieldTable<lander::LanderRunOptions>& RunNumberFields() {
       {"sample_rate_hz", &R::sample_rate_hz, 1.0, io::Sign::kPositive},
       {"capture_speed_m_s", &R::capture_speed_m_s, 1.0, io::Sign::kNonNegative, true, false, &limits::kSpeed_m_s},
       {"soil_ramp_speed_m_s", &R::soil_ramp_speed_m_s, 1.0, io::Sign::kPositive, true, true, &limits::kSpeed_m_s},
+      {"pad_spin_tolerance_factor", &R::pad_spin_tolerance_factor, 1.0, io::Sign::kPositive, true, true,
+       &limits::kPadSpinToleranceFactor},
   };
   return fields;
 }

@@ -152,6 +152,9 @@ sweep::SweepPlan RecheckPlan(const Study& study) {
   // (simulation.pad_angular_segments, a resolution like rtol) is re-checked at the file's.
   plan.lander = scenario::AtPadFileMesh(*plan.lander);
   plan.lander->options.integrator.rtol = study.recheck.rtol;
+  // ... and its pads' spins are resolved as every other state (simulation.pad_spin_tolerance_factor
+  // is the fast model's, a resolution like rtol).
+  plan.lander->options.pad_spin_tolerance_factor = 1.0;
   // A scenario that sets a scalar atol keeps it in proportion to rtol (the tighter reference);
   // without one the absolute tolerances are rtol times each state's scale already.
   if (!plan.lander->options.scale_tolerances)
@@ -159,7 +162,8 @@ sweep::SweepPlan RecheckPlan(const Study& study) {
   // Appended: the study's own variant (its soil draws) holds for its re-checks too.
   plan.variant += std::string(plan.variant.empty() ? "" : ";") + "recheck: reference model, rtol " +
                   io::FormatNumber(study.recheck.rtol) +
-                  (study.plan.lander->pad_angular_segments > 0 ? ", pads as their file" : "");
+                  (study.plan.lander->pad_angular_segments > 0 ? ", pads as their file" : "") +
+                  (study.plan.lander->options.pad_spin_tolerance_factor != 1.0 ? ", pads' spins at every state's tolerance" : "");
   return plan;
 }
 

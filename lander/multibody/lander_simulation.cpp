@@ -39,7 +39,8 @@ Eigen::VectorXd Pack(const StateLayout& L, const LanderInitialState& s) {
 // step counts).
 //   length L: the largest distance of a ball joint from the body's centre of mass; pad size l:
 //   the largest pad vertex distance from its joint; speed V: the initial speed plus sqrt(2 g L);
-//   angles 1 rad; angular speeds V / L (body) and V / l (pads); energy M V^2 / 2 + M g L.
+//   angles 1 rad; angular speeds V / L (body) and V / l (pads, times options.
+//   pad_spin_tolerance_factor); energy M V^2 / 2 + M g L.
 integ::IntegratorOptions ScaledTolerances(const LanderModel& model, const StateLayout& L,
                                           const LanderInitialState& initial, const LanderRunOptions& options) {
   integ::IntegratorOptions o = options.integrator;
@@ -60,7 +61,7 @@ integ::IntegratorOptions ScaledTolerances(const LanderModel& model, const StateL
     o.component_atol[L.p_WB() + k] = r * length;
     o.component_atol[L.v_WB_W() + k] = r * V;
     o.component_atol[L.w_WB_W() + k] = r * V / length;
-    for (int i = 0; i < kNumLegs; ++i) o.component_atol[L.w_WP_W(i) + k] = r * V / pad;
+    for (int i = 0; i < kNumLegs; ++i) o.component_atol[L.w_WP_W(i) + k] = r * V / pad * options.pad_spin_tolerance_factor;
   }
   for (int i = 0; i < kNumLegs; ++i) {
     if (L.stroke_slot[i] < 0) continue;

@@ -246,6 +246,39 @@ TEST_F(LanderScenarioRoundTrip, PadRimAreaPreservingIsAReMeshing) {
   refused("{pad_angular_segments: 16, pad_rim: circumscribed}", "must be 'inscribed' or 'area_preserving'");
 }
 
+// simulation.pad_spin_tolerance_factor (the studies' fast model) reaches the run's options, the
+// resolved copy says it (and nothing when it is the default), and it is refused outside [1, 1000]
+// and beside a scalar atol, which has no per-state scale to multiply.
+TEST_F(LanderScenarioRoundTrip, PadSpinToleranceFactorIsAnOptionOfTheRun) {
+  const std::string head = "schema_version: 1\ntype: lander\nname: spin\nlander: sutoh2017_lander\n"
+                           "ground: {soil: fjs1_lp}\ninitial: {drop_height_m: 0.1}\n";
+  std::ofstream(Path("loose.yaml")) << head << "simulation: {rtol: 1.0e-5, pad_spin_tolerance_factor: 30}\n";
+  std::ofstream(Path("plain.yaml")) << head << "simulation: {rtol: 1.0e-5}\n";
+  EXPECT_EQ(LoadLanderScenario(Path("loose.yaml")).options.pad_spin_tolerance_factor, 30.0);
+  EXPECT_EQ(LoadLanderScenario(Path("plain.yaml")).options.pad_spin_tolerance_factor, 1.0);
+  fs::create_directories(dir_ / "out");
+  RoundTripLanderScenario(Path("loose.yaml"), Path("out/loose_1.yaml"), Path("out/loose_2.yaml"));
+  EXPECT_NE(Slurp(Path("out/loose_1.yaml")).find("pad_spin_tolerance_factor: 30"), std::string::npos);
+  EXPECT_EQ(LoadLanderScenario(Path("out/loose_1.yaml")).options.pad_spin_tolerance_factor, 30.0);
+  RoundTripLanderScenario(Path("plain.yaml"), Path("out/plain_1.yaml"), Path("out/plain_2.yaml"));
+  EXPECT_EQ(Slurp(Path("out/plain_1.yaml")).find("pad_spin_tolerance_factor"), std::string::npos);
+
+  const auto refused = [&](const std::string& simulation, const std::string& says) {
+    std::ofstream(Path("bad.yaml")) << head << "simulation: " << simulation << "\n";
+    try {
+      LoadLanderScenario(Path("bad.yaml"));
+      ADD_FAILURE() << simulation << " accepted";
+    } catch (const InputError& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find("simulation.pad_spin_tolerance_factor"), std::string::npos) << what;
+      EXPECT_NE(what.find(says), std::string::npos) << what;
+    }
+  };
+  refused("{pad_spin_tolerance_factor: 0.5}", "0.5");
+  refused("{pad_spin_tolerance_factor: 2000}", "2000");
+  refused("{atol: 1.0e-9, pad_spin_tolerance_factor: 30}", "needs the scaled tolerances");
+}
+
 TEST_F(LanderScenarioRoundTrip, APaperCheckUsedForAFitSaysByWhat) {
   const std::string head = "schema_version: 1\ntype: lander\nname: fitted\nlander: sutoh2017_lander\n"
                            "ground: {soil: fjs1_lp}\ninitial: {drop_height_m: 0.1}\n";

@@ -106,8 +106,9 @@ TEST_F(StudyFollowUpsTest, DerivedPlansChangeTheirModelAndTheirDigest) {
   EXPECT_EQ(recheck.DropAt(7).slope_rad, study.plan.DropAt(7).slope_rad);
 }
 
-// The shipped lunar study lands coarser pads than their file's (its fast model); the reference model
-// of its re-checks meshes them as the file says, and the report names both.
+// The shipped lunar study lands coarser pads than their file's, with looser spins (its fast model);
+// the reference model of its re-checks meshes them as the file says and resolves the spins as every
+// other state, and the report names both meshes.
 TEST_F(StudyFollowUpsTest, TheReferenceModelMeshesThePadsAsTheirFileSays) {
   const Study study = LoadStudy(std::string(TOUCHDOWN_SOURCE_DIR) + "/data/studies/lunar_paper_lander.yaml");
   ASSERT_GT(study.plan.lander->pad_angular_segments, 0);
@@ -118,6 +119,9 @@ TEST_F(StudyFollowUpsTest, TheReferenceModelMeshesThePadsAsTheirFileSays) {
             io::LoadPad(study.plan.lander->lander.pad.source).body.surface.size());
   EXPECT_GT(recheck.lander->lander.pad.body.surface.size(), study.plan.lander->lander.pad.body.surface.size());
   EXPECT_EQ(recheck.lander->lander.body_mass_kg, study.plan.lander->lander.body_mass_kg);
+  // ... and resolves the pads' spins as every other state (the fast model loosens them).
+  EXPECT_EQ(study.plan.lander->options.pad_spin_tolerance_factor, 10.0);
+  EXPECT_EQ(recheck.lander->options.pad_spin_tolerance_factor, 1.0);
   std::vector<DropRecord> records = {Landing(0, false, 2.0)};
   const RecheckReport r = ApplyRechecks(study, 40.0, records, {}, nullptr);
   EXPECT_EQ(r.fast_pad_angular_segments, study.plan.lander->pad_angular_segments);

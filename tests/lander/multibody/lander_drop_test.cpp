@@ -176,3 +176,39 @@ TEST(LanderDrop, ThreeHeldPadsThatFixTheBodyAreARest) {
 
 }  // namespace
 }  // namespace touchdown::lander
+
+namespace touchdown::lander {
+namespace {
+
+// The studies' fast model (24-segment pads, rtol 1e-5, the shipped soils, the 30 deg joint range) on
+// bench_lander's slope landing, with the pads' spins' absolute tolerance as every state's (factor 1)
+// and 10 times looser (the studies' pad_spin_tolerance_factor): the error test no longer resolves the
+// spins' quasi-static rocking, and the landing takes far fewer steps (635 against 389). Its answers
+// move well inside the accuracy contract (2 % in a loaded pad's depth, 0.1 deg in roll and pitch; the
+// fast model itself is within 0.82 % and 0.025 deg of the reference): measured 0.07 % and 0.002 deg.
+TEST(LanderDrop, LooserPadSpinsLandTheFastModelInFewerSteps) {
+  const auto run = [](double factor) {
+    test::PaperLander setup = test::MakePaperLander('A', 24, 0.10, /*shipped_soils=*/true);
+    for (Leg& leg : setup.model.legs)
+      leg.cone = ConeLimit{.half_angle_rad = 30.0 * kDeg, .stiffness_N_m_rad = 200.0, .damping_N_m_s_rad = 0.16};
+    setup.terrain.surface = std::make_shared<rft::PlaneGround>(0.0, -std::tan(10.0 * kDeg), 0.0);
+    setup.initial.v_WB_W = Eigen::Vector3d(0.0, 0.5, 0.0);
+    setup.initial.p_WB.z() = BodyHeightForClearance(setup.model, setup.terrain, setup.initial, setup.drop_height_m);
+    setup.options = CaseOptions();
+    setup.options.integrator.rtol = 1e-5;
+    setup.options.pad_spin_tolerance_factor = factor;
+    return SimulateLander(setup);
+  };
+  const LanderRunResult tight = run(1.0), loose = run(10.0);
+  ASSERT_TRUE(tight.rest_time_s && loose.rest_time_s);
+  std::printf("[ spin tolerance ] slope landing steps: factor 1 %ld, factor 10 %ld\n", tight.solver.steps,
+              loose.solver.steps);
+  for (int i = 0; i < kNumLegs; ++i)
+    EXPECT_NEAR(loose.final_penetration_m[i], tight.final_penetration_m[i], 2e-3 * tight.final_penetration_m[i]) << i;
+  EXPECT_NEAR(loose.final_attitude.roll_rad, tight.final_attitude.roll_rad, 0.006 * kDeg);
+  EXPECT_NEAR(loose.final_attitude.pitch_rad, tight.final_attitude.pitch_rad, 0.006 * kDeg);
+  EXPECT_LT(loose.solver.steps, 0.7 * tight.solver.steps);
+}
+
+}  // namespace
+}  // namespace touchdown::lander
