@@ -163,7 +163,8 @@ sweep::SweepPlan RecheckPlan(const Study& study) {
   plan.variant += std::string(plan.variant.empty() ? "" : ";") + "recheck: reference model, rtol " +
                   io::FormatNumber(study.recheck.rtol) +
                   (study.plan.lander->pad_angular_segments > 0 ? ", pads as their file" : "") +
-                  (study.plan.lander->options.pad_spin_tolerance_factor != 1.0 ? ", pads' spins at every state's tolerance" : "");
+                  (study.plan.lander->options.pad_spin_tolerance_factor != 1.0 ? ", pads' spins at every state's tolerance"
+                                                                               : "");
   return plan;
 }
 

@@ -61,7 +61,8 @@ integ::IntegratorOptions ScaledTolerances(const LanderModel& model, const StateL
     o.component_atol[L.p_WB() + k] = r * length;
     o.component_atol[L.v_WB_W() + k] = r * V;
     o.component_atol[L.w_WB_W() + k] = r * V / length;
-    for (int i = 0; i < kNumLegs; ++i) o.component_atol[L.w_WP_W(i) + k] = r * V / pad * options.pad_spin_tolerance_factor;
+    for (int i = 0; i < kNumLegs; ++i)
+      o.component_atol[L.w_WP_W(i) + k] = r * V / pad * options.pad_spin_tolerance_factor;
   }
   for (int i = 0; i < kNumLegs; ++i) {
     if (L.stroke_slot[i] < 0) continue;
