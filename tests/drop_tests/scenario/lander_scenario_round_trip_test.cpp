@@ -66,6 +66,7 @@ void ExpectSameScenario(const LanderScenario& a, const LanderScenario& b) {
   EXPECT_EQ(a.options.integrator.rtol, b.options.integrator.rtol);
   EXPECT_EQ(a.options.integrator.max_step, b.options.integrator.max_step);
   EXPECT_EQ(a.options.integrator.stiff, b.options.integrator.stiff);
+  EXPECT_EQ(a.options.pad_spin_tolerance_factor, b.options.pad_spin_tolerance_factor);
   EXPECT_EQ(a.pad_angular_segments, b.pad_angular_segments);
   EXPECT_EQ(a.lander.pad.body.surface.size(), b.lander.pad.body.surface.size());
   EXPECT_EQ(a.paper_ground_case, b.paper_ground_case);
@@ -91,6 +92,21 @@ void ExpectSameScenario(const LanderScenario& a, const LanderScenario& b) {
   EXPECT_EQ(p.initial.v_WB_W, q.initial.v_WB_W);
   EXPECT_EQ(p.initial.R_WB, q.initial.R_WB);
   EXPECT_EQ(p.model.body_mass_kg, q.model.body_mass_kg);
+}
+
+// A scenario of `head` and `simulation: <simulation>`, written to `path`, that the loader must refuse
+// naming simulation.<field> and saying `says`.
+void ExpectSimulationRefused(const std::string& path, const std::string& head, const std::string& simulation,
+                             const std::string& field, const std::string& says) {
+  std::ofstream(path) << head << "simulation: " << simulation << "\n";
+  try {
+    LoadLanderScenario(path);
+    ADD_FAILURE() << simulation << " accepted";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("simulation." + field), std::string::npos) << what;
+    EXPECT_NE(what.find(says), std::string::npos) << what;
+  }
 }
 
 void RoundTripLanderScenario(const std::string& source, const std::string& first, const std::string& second) {
@@ -232,15 +248,7 @@ TEST_F(LanderScenarioRoundTrip, PadRimAreaPreservingIsAReMeshing) {
   EXPECT_EQ(as_file.lander.pad.body.vertices_B, AtPadFileMesh(plain).lander.pad.body.vertices_B);
 
   const auto refused = [&](const std::string& simulation, const std::string& says) {
-    std::ofstream(Path("bad.yaml")) << head << "simulation: " << simulation << "\n";
-    try {
-      LoadLanderScenario(Path("bad.yaml"));
-      ADD_FAILURE() << simulation << " accepted";
-    } catch (const InputError& e) {
-      const std::string what = e.what();
-      EXPECT_NE(what.find("simulation.pad_rim"), std::string::npos) << what;
-      EXPECT_NE(what.find(says), std::string::npos) << what;
-    }
+    ExpectSimulationRefused(Path("bad.yaml"), head, simulation, "pad_rim", says);
   };
   refused("{pad_rim: area_preserving}", "needs pad_angular_segments");
   refused("{pad_angular_segments: 16, pad_rim: circumscribed}", "must be 'inscribed' or 'area_preserving'");
@@ -264,15 +272,7 @@ TEST_F(LanderScenarioRoundTrip, PadSpinToleranceFactorIsAnOptionOfTheRun) {
   EXPECT_EQ(Slurp(Path("out/plain_1.yaml")).find("pad_spin_tolerance_factor"), std::string::npos);
 
   const auto refused = [&](const std::string& simulation, const std::string& says) {
-    std::ofstream(Path("bad.yaml")) << head << "simulation: " << simulation << "\n";
-    try {
-      LoadLanderScenario(Path("bad.yaml"));
-      ADD_FAILURE() << simulation << " accepted";
-    } catch (const InputError& e) {
-      const std::string what = e.what();
-      EXPECT_NE(what.find("simulation.pad_spin_tolerance_factor"), std::string::npos) << what;
-      EXPECT_NE(what.find(says), std::string::npos) << what;
-    }
+    ExpectSimulationRefused(Path("bad.yaml"), head, simulation, "pad_spin_tolerance_factor", says);
   };
   refused("{pad_spin_tolerance_factor: 0.5}", "0.5");
   refused("{pad_spin_tolerance_factor: 2000}", "2000");
