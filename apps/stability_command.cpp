@@ -1,4 +1,3 @@
-#include <chrono>
 #include <cmath>
 #include <csignal>
 #include <cstdlib>
@@ -8,7 +7,6 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
-#include <thread>
 
 #include "apps/command_help.h"
 #include "apps/commands.h"
@@ -189,19 +187,8 @@ void PrintRareEventResult(const stability::Study& study, const stability::RareEv
 // A rare-event run's OUT, and a shard's own OUT/shard_I_of_N (rare_event_shards.h): every shard of
 // the run is given the same OUT.
 void OpenRareEventOutput(const StabilityArgs& args, const sweep::Shard& shard) {
-  const io::OutputTarget target{args.out, {args.study, args.run.model}};
-  if (shard.count == 1) {
-    io::OpenOutputDirectory(target, io::OutputKind::kSweep);
-    return;
-  }
-  try {
-    io::OpenOutputDirectory(target, io::OutputKind::kSweep);
-  } catch (const InputError&) {
-    // The shards of a job array start together: one may find OUT just created by another, its
-    // marker not yet in place (a directory not touchdown's). A moment later it is.
-    std::this_thread::sleep_for(std::chrono::milliseconds(500));
-    io::OpenOutputDirectory(target, io::OutputKind::kSweep);
-  }
+  OpenSweepOutput({args.out, {args.study, args.run.model}}, shard.count > 1 || sweep::LaunchedByMpirun());
+  if (shard.count == 1) return;
   stability::RequireOneShardSplit(args.out, shard);
   io::OpenOutputDirectory(stability::RareEventShardDir(args.out, shard), io::OutputKind::kSweep);
 }
@@ -280,7 +267,7 @@ void AddStabilityCommand(CLI::App& app) {
       RunRareEventCommand(*args, study, method, per_level, options);
       return;
     }
-    io::OpenOutputDirectory({args->out, {args->study, args->run.model}}, io::OutputKind::kSweep);
+    OpenSweepOutput({args->out, {args->study, args->run.model}}, sweep::LaunchedByMpirun());
     const sweep::StopOnSignals stop_on_signals;
     options.stop = &sweep::StopOnSignals::flag();
     int rank = 0;

@@ -30,7 +30,7 @@ void AddSweepCommand(CLI::App& app) {
     sweep::SweepRunOptions options = RunOptionsFrom(args->run);
     sweep::SweepPlan plan = sweep::LoadSweepPlan(args->sweep, args->run.model);
     ApplyDropLimits(args->run, &plan);
-    io::OpenOutputDirectory({args->out, {args->sweep, args->run.model}}, io::OutputKind::kSweep);
+    OpenSweepOutput({args->out, {args->sweep, args->run.model}}, sweep::LaunchedByMpirun());
     // SIGINT/SIGTERM: the running drops finish and are committed; exit 128 + signal below.
     const sweep::StopOnSignals stop_on_signals;
     options.stop = &sweep::StopOnSignals::flag();

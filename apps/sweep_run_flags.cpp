@@ -1,6 +1,8 @@
 #include "apps/sweep_run_flags.h"
 
+#include <chrono>
 #include <cmath>
+#include <thread>
 
 #include "rft/input_error.h"
 #include "rft/physical_limits.h"
@@ -53,6 +55,19 @@ sweep::SweepRunOptions RunOptionsFrom(const SweepRunFlags& flags) {
                      : flags.progress == "none"  ? sweep::ProgressMode::kNone
                                                  : sweep::ProgressMode::kAuto;
   return options;
+}
+
+void OpenSweepOutput(const io::OutputTarget& target, bool together) {
+  if (!together) {
+    io::OpenOutputDirectory(target, io::OutputKind::kSweep);
+    return;
+  }
+  try {
+    io::OpenOutputDirectory(target, io::OutputKind::kSweep);
+  } catch (const InputError&) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    io::OpenOutputDirectory(target, io::OutputKind::kSweep);
+  }
 }
 
 }  // namespace touchdown::app

@@ -6,6 +6,7 @@
 
 #include <string>
 
+#include "drop_tests/formats/output_path.h"
 #include "drop_tests/sweep/sweep.h"
 #include "drop_tests/sweep/sweep_spec.h"
 
@@ -29,5 +30,11 @@ void AddSweepRunFlags(CLI::App* cmd, SweepRunFlags* flags, const std::string& ru
 void ApplyDropLimits(const SweepRunFlags& flags, sweep::SweepPlan* plan);
 
 sweep::SweepRunOptions RunOptionsFrom(const SweepRunFlags& flags);
+
+// Opens a sweep's output directory (io::OpenOutputDirectory) for processes that start together, the
+// ranks under mpirun and the shards of a job array (`together`): one may find it just created by
+// another, its marker not yet in place (a directory not touchdown's, refused); a moment later it is,
+// so such a refusal is tried once more after half a second. Alone, a refusal stands.
+void OpenSweepOutput(const io::OutputTarget& target, bool together);
 
 }  // namespace touchdown::app

@@ -221,10 +221,14 @@ void Assemble(const LanderModel& model, const StateLayout& L, const rft::Terrain
       const Eigen::Vector3d zB = p.R_WB.col(2), zP = f.R_WP.col(2);
       const Eigen::Vector3d cr = zB.cross(zP);
       const double theta = std::atan2(cr.norm(), zB.dot(zP));
-      if (theta > leg.cone->half_angle_rad && cr.norm() > 0.0) {
+      // kAtStop acts just inside the rim too (lander_hybrid.cpp, StopHysteresis), its damping alone.
+      const double over = theta - leg.cone->half_angle_rad;
+      const StopMode stop = modes.stop[i];
+      const bool acts = stop == StopMode::kAtStop || (stop == StopMode::kByAngle && over > 0.0);
+      if (acts && cr.norm() > 0.0) {
         const Eigen::Vector3d n = cr.normalized();
         const double rate = n.dot(f.w_WP_W - p.w_WB_W);
-        const double spring = leg.cone->stiffness_N_m_rad * (theta - leg.cone->half_angle_rad);
+        const double spring = leg.cone->stiffness_N_m_rad * std::max(over, 0.0);
         const double damping = leg.cone->damping_N_m_s_rad * rate;
         const bool pushes = spring + damping > 0.0;
         const double torque = pushes ? spring + damping : 0.0;

@@ -74,9 +74,18 @@ inline Eigen::Matrix3d Skew(const Eigen::Vector3d& v) {
 }
 enum class StrokeMode { kFree, kLocked, kBottomed };  // crushable absorbers only
 
+// Whether a ball joint's stop (ConeLimit) acts. kByAngle: wherever the pad is beyond the cone. The
+// hybrid run switches kClear / kAtStop at root functions instead (LanderRunOptions::
+// joint_stops_as_modes), so that the stop's damping, which acts the instant the pad reaches the rim,
+// never switches on inside a solver step: kAtStop from the rim on, until the pad is back a little
+// inside it (lander_hybrid.cpp, StopHysteresis); there the stop has no spring, only its damping.
+enum class StopMode { kByAngle, kClear, kAtStop };
+
 // Discrete state of the hybrid system, changed only at events.
 struct LanderModes {
   std::array<PadMode, kNumLegs> pad{PadMode::kFree, PadMode::kFree, PadMode::kFree, PadMode::kFree};
+  std::array<StopMode, kNumLegs> stop{StopMode::kByAngle, StopMode::kByAngle, StopMode::kByAngle,
+                                      StopMode::kByAngle};
   std::array<StrokeMode, kNumLegs> stroke{StrokeMode::kLocked, StrokeMode::kLocked, StrokeMode::kLocked,
                                           StrokeMode::kLocked};
 };

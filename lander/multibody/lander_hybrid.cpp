@@ -12,12 +12,24 @@ namespace {
 // below the capture speed / the soil ramp speed while submerged (capture); held pad: [1..3] lift /
 // sink / slide (release); all but [0] falling.
 constexpr int kPadRoots = 4;
-// Per leg: [0..1] crushable absorber events (falling).
-constexpr int kLegRoots = 2;
+// Per leg: [0..1] crushable absorber events; [2] the pad reaching its joint's stop, or leaving it
+// (StopHysteresis below the rim) (all falling).
+constexpr int kLegRoots = 3;
 constexpr int kNumRoots = kNumLegs * (kPadRoots + kLegRoots) + 1;
 constexpr int kTipRoot = kNumRoots - 1;
 int PadRoot(int leg, int k) { return kPadRoots * leg + k; }
 int LegRoot(int leg, int k) { return kNumLegs * kPadRoots + kLegRoots * leg + k; }
+// How far inside the rim a pad at its joint's stop must swing back before the stop is off again
+// (StopMode::kAtStop to kClear) [rad]: 100 times the run's rtol, at most 0.01 rad. Why: a pad
+// pressed against its stop sits at the rim to within its attitude's integration error (about rtol),
+// and with the stop off at the rim itself that error crossed it back and forth: events every few
+// milliseconds, and where the root function was exactly zero at a restart CVODE counted it from the
+// far side and the stop was lost (25 of the lunar study's 10,000 landings turned a pad past
+// edge-on). Inside the rim the stop has no spring (ConeLimit); its damping acts there only on a pad
+// that turns back out before it has left, as it would from the rim 100 rtol further in. As rtol goes
+// to 0 the band closes.
+double StopHysteresis(const LanderRunOptions& options) { return std::min(100.0 * options.integrator.rtol, 0.01); }
+
 // A pad whose joint centre moves slower than this is kinematically at rest (numerical zero,
 // e.g. the fourth pad once three held pads have stopped a rigid-legged lander).
 constexpr double kAtRestSpeed = 1e-10;
@@ -126,6 +138,11 @@ void LanderHybrid::Roots(Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::
         g[LegRoot(i, 0)] = ab.crush_force_N - root_eval_.leg_force_N[i];
       }
     }
+    if (const std::optional<ConeLimit>& cone = model_.legs[i].cone; cone && modes_.stop[i] != StopMode::kByAngle) {
+      const double swing = JointSwingAngle(pose.R_WB, f.R_WP);
+      g[LegRoot(i, 2)] = modes_.stop[i] == StopMode::kClear ? cone->half_angle_rad - swing
+                                                             : swing - (cone->half_angle_rad - StopHysteresis(options_));
+    }
   }
   g[kTipRoot] = StabilityMargin(model_, L_, y);
 }
@@ -193,6 +210,10 @@ bool LanderHybrid::TouchdownsAtRelease(const Eigen::VectorXd& y) {
   // Rounding of the placement, far below any sinkage: 1e-9 of the lander's size.
   const double touching = 1e-9 * LengthScale(model_);
   const LanderPose pose = ComputePose(model_, L_, y);
+  for (int i = 0; i < kNumLegs; ++i)
+    if (const std::optional<ConeLimit>& cone = model_.legs[i].cone; cone && options_.joint_stops_as_modes)
+      modes_.stop[i] = JointSwingAngle(pose.R_WB, pose.pads[i].R_WP) > cone->half_angle_rad ? StopMode::kAtStop
+                                                                                              : StopMode::kClear;
   for (int i = 0; i < kNumLegs; ++i)
     if (PadDepth(model_, terrain_, i, pose.pads[i]) >= -touching) {
       result_.events.push_back({0.0, LanderEventKind::kTouchdown, i});
@@ -353,7 +374,15 @@ integ::EventAction LanderHybrid::OnEvent(double t, const std::vector<int>& found
   // already outside its support polygon when a pad touches (aligned to a slope steeper than its
   // static angle) would never see it fall.
   bool touched = false;
-  for (int i = 0; i < kNumLegs; ++i) touched |= found[PadRoot(i, 0)] != 0;
+  bool stopped = false;
+  for (int i = 0; i < kNumLegs; ++i) {
+    touched |= found[PadRoot(i, 0)] != 0;
+    if (found[LegRoot(i, 2)] == 0) continue;
+    const bool reached = modes_.stop[i] == StopMode::kClear;  // the other root function reports leaving
+    modes_.stop[i] = reached ? StopMode::kAtStop : StopMode::kClear;
+    result_.events.push_back({t, reached ? LanderEventKind::kStopReached : LanderEventKind::kStopLeft, i});
+    stopped = true;
+  }
   if (found[kTipRoot] != 0 || (touched && StabilityMargin(model_, L_, y) < 0.0)) {
     TipOver(t, y);
     return integ::EventAction::kStop;
@@ -369,7 +398,7 @@ integ::EventAction LanderHybrid::OnEvent(double t, const std::vector<int>& found
   // pad's depth is 0 to rounding at its touchdown); continuing instead, CVODE reported that zero
   // as the same touchdown again and again (20,000 events at one instant in a calibrate --targets run).
   if (!SwitchModes(t, found, pose, fresh))
-    return shear_reset || touched ? integ::EventAction::kRestart : integ::EventAction::kContinue;
+    return shear_reset || touched || stopped ? integ::EventAction::kRestart : integ::EventAction::kContinue;
   OfferCaptures(pose, fresh);
   NormalizeQuaternions(L_, y);
   HoldStoppedPads(y, fresh);

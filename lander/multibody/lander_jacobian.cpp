@@ -1,5 +1,7 @@
 #include "lander/multibody/lander_jacobian.h"
 
+#include "rft/ground.h"
+
 #include <cmath>
 #include <limits>
 
@@ -48,13 +50,19 @@ PadMotion MotionBetween(const PadFrame& from, const PadFrame& to) {
 struct SensitivitySteps {
   double position, angle, velocity, spin;
 };
+// Over a plane the contact sees the joint's position only through its depth below the surface: moving
+// the pad along the plane changes nothing. So the x and y columns are the z column times the depth's
+// gradient over dz (-slope_x, -slope_y): one contact instead of three (on level ground they were
+// exactly zero already).
 ContactSensitivity PadSensitivity(const LanderModel& model, const rft::Terrain& terrain, int i, const PadFrame& f,
                                   const rft::ContactWrench& w0, const SensitivitySteps& h, bool attitude,
                                   long* contacts) {
   const rft::SoilContactModel& contact = terrain.soils[terrain.SoilAt(f.p_WJ.x(), f.p_WJ.y())].contact;
+  const auto* plane = dynamic_cast<const rft::PlaneGround*>(terrain.surface.get());
   ContactSensitivity D = ContactSensitivity::Zero();
   for (int k = 0; k < 12; ++k) {
     if (k / 3 == 1 && !attitude) continue;
+    if (plane && k < 2) continue;  // from the z column, below
     PadFrame g = f;
     const int axis = k % 3;
     double step = 0.0;
@@ -70,6 +78,10 @@ ContactSensitivity PadSensitivity(const LanderModel& model, const rft::Terrain& 
     const rft::ContactWrench w = FreePadSoilWrench(model, contact, i, g, *terrain.surface);
     D.col(k) << (w.force_W - w0.force_W) / step, (w.moment_W - w0.moment_W) / step;
     ++*contacts;
+  }
+  if (plane) {
+    D.col(0) = -plane->slope_x() * D.col(2);
+    D.col(1) = -plane->slope_y() * D.col(2);
   }
   return D;
 }

@@ -14,17 +14,19 @@
 //     (except for Janosi's shear displacement j, which reaches only its own pad's contact).
 // A Jacobian costs 12 contact evaluations per pad in the soil (about 12 right-hand sides), where
 // CVODE's difference quotients cost 42 (and the earlier structured Jacobian, which evaluated a
-// pad's contact again for each of its own seven attitude and spin columns, 13).
+// pad's contact again for each of its own seven attitude and spin columns, 13). Over a plane
+// (rft::PlaneGround) 10: the contact sees the joint's position only through its depth, so one
+// quotient along z gives the x and y columns too (times the plane's slopes; exact).
 // SimulateLander leaves out the attitude derivatives (LanderRunOptions's
-// jacobian_attitude_sensitivity): 9 contacts per pad. Why that is safe: the stiff part of a pad in
-// the soil is its velocity and spin (RFT resists motion at a force nearly independent of speed, so
-// the wrench's derivative with respect to the velocity is large at low speed: estimated, a time
-// constant of order 1e-6 s for the spin of the paper's pad at 0.1 m/s); its moment against a change
-// of attitude (a rotational stiffness of order F r^2 / depth, a period of milliseconds) is not
-// stiff at the 10-100 us steps taken (measured: steps and Newton failures within a few per cent). Leaving out
-// the position derivatives too (the soil's vertical stiffness) was tried: fewer contacts, but case
-// A's energy balance error grew from 15 to 99 uJ (bench_lander; the Newton iteration stops at its
-// tolerance, and a worse Jacobian leaves more of it there).
+// jacobian_attitude_sensitivity): 9 contacts per pad, 7 over a plane. Why that is safe: the stiff
+// part of a pad in the soil is its velocity and spin (RFT resists motion at a force nearly
+// independent of speed, so the wrench's derivative with respect to the velocity is large at low
+// speed: estimated, a time constant of order 1e-6 s for the spin of the paper's pad at 0.1 m/s); its
+// moment against a change of attitude (a rotational stiffness of order F r^2 / depth, a period of
+// milliseconds) is not stiff at the 10-100 us steps taken (measured: steps and Newton failures
+// within a few per cent). Leaving out the position derivatives too (the soil's vertical stiffness)
+// was tried: fewer contacts, but case A's energy balance error grew from 15 to 99 uJ (bench_lander;
+// the Newton iteration stops at its tolerance, and a worse Jacobian leaves more of it there).
 // A Jacobian only steers the Newton iteration; the error test decides the accuracy.
 #include <Eigen/Core>
 #include <array>

@@ -12,6 +12,8 @@ const char* LanderEventName(LanderEventKind kind) {
     case LanderEventKind::kCrush: return "crush";
     case LanderEventKind::kLock: return "lock";
     case LanderEventKind::kBottom: return "bottom";
+    case LanderEventKind::kStopReached: return "stop_reached";
+    case LanderEventKind::kStopLeft: return "stop_left";
     case LanderEventKind::kTipOver: return "tip_over";
     case LanderEventKind::kRest: return "rest";
   }
