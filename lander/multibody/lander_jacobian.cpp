@@ -1,9 +1,9 @@
 #include "lander/multibody/lander_jacobian.h"
 
-#include "rft/ground.h"
-
 #include <cmath>
 #include <limits>
+
+#include "rft/ground.h"
 
 namespace touchdown::lander {
 

@@ -70,17 +70,16 @@ struct LanderRunOptions {
   // soil is a stiff, nearly quasi-static state that the error test resolves at the scale of a rim
   // moving at the landing's speed; the attitude it integrates into is what the contact sees. 1 (the
   // default, and the reference model's): as every other state. The studies' fast model takes 10:
-  // 35 % fewer steps and 18 % less CPU on the lunar study's landings; 30 moves the 1,000-landing
-  // study's 99th percentile of the largest tilt 2.2 % from the reference model's, beyond the 2 % its
-  // contract allows (docs/lander_dynamics.md, "The pads' spin tolerance").
+  // 35 % fewer steps and 18 % less CPU on the lunar study's landings; 30 takes 8 % fewer steps on
+  // its first 1,000 landings but no less CPU (docs/lander_dynamics.md, "The pads' spin tolerance").
   double pad_spin_tolerance_factor = 1.0;
   // A ball joint's stop (ConeLimit) as a mode of the hybrid run: a root where the pad reaches the
-  // cone and where it leaves it, the stop's torque on between the two, and a restart at each. The
-  // stop's damping acts the instant the pad reaches the rim, a jump in the right-hand side that,
-  // found by the angle inside a step, cost CVODE 30-40 steps of failed Newton iterations at each
-  // impact on a stop. false: the torque wherever the pad is beyond the cone, switched on inside the
-  // steps (the same model, kept to measure against; docs/lander_dynamics.md, "The joints' stops as
-  // modes").
+  // cone and one where it has left it (a band inside the rim, lander_hybrid.cpp's StopHysteresis),
+  // the stop's torque on between the two, and a restart at each. The stop's damping acts the instant
+  // the pad reaches the rim, a jump in the right-hand side that, found by the angle inside a step,
+  // cost CVODE 30-40 steps of failed Newton iterations at each impact on a stop. false: the torque
+  // wherever the pad is beyond the cone, switched on inside the steps (the same model, kept to
+  // measure against; docs/lander_dynamics.md, "The joints' stops as modes").
   bool joint_stops_as_modes = true;
 };
 
