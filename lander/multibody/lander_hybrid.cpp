@@ -204,16 +204,21 @@ void LanderHybrid::TipOver(double t, const Eigen::VectorXd& y) {
   result_.events.push_back({t, LanderEventKind::kTipOver, -1});
 }
 
+void LanderHybrid::StopsAtRelease(const Eigen::VectorXd& y) {
+  if (!options_.joint_stops_as_modes) return;
+  const LanderPose pose = ComputePose(model_, L_, y);
+  for (int i = 0; i < kNumLegs; ++i)
+    if (const std::optional<ConeLimit>& cone = model_.legs[i].cone)
+      modes_.stop[i] = JointSwingAngle(pose.R_WB, pose.pads[i].R_WP) > cone->half_angle_rad ? StopMode::kAtStop
+                                                                                              : StopMode::kClear;
+}
+
 // A pad already on the surface at release (touchdown_speed_m_s: 0 places the lowest pad there)
 // touches down at t = 0: CVODE never reports a root that holds at the start.
 bool LanderHybrid::TouchdownsAtRelease(const Eigen::VectorXd& y) {
   // Rounding of the placement, far below any sinkage: 1e-9 of the lander's size.
   const double touching = 1e-9 * LengthScale(model_);
   const LanderPose pose = ComputePose(model_, L_, y);
-  for (int i = 0; i < kNumLegs; ++i)
-    if (const std::optional<ConeLimit>& cone = model_.legs[i].cone; cone && options_.joint_stops_as_modes)
-      modes_.stop[i] = JointSwingAngle(pose.R_WB, pose.pads[i].R_WP) > cone->half_angle_rad ? StopMode::kAtStop
-                                                                                              : StopMode::kClear;
   for (int i = 0; i < kNumLegs; ++i)
     if (PadDepth(model_, terrain_, i, pose.pads[i]) >= -touching) {
       result_.events.push_back({0.0, LanderEventKind::kTouchdown, i});

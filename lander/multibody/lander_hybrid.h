@@ -39,6 +39,9 @@ class LanderHybrid {
   long jacobian_contact_evaluations() const { return jacobian_data_.contact_evaluations; }
   integ::RootSpec RootFunctions();
   void Record(double t, const Eigen::VectorXd& s);
+  // The joints' stops' modes at release (LanderRunOptions::joint_stops_as_modes): at the stop where a
+  // pad starts beyond its cone, clear of it elsewhere. Before the first step.
+  void StopsAtRelease(const Eigen::VectorXd& y);
   // Touchdowns of pads touching at release; true if the lander is over already (it stands with
   // its centre of mass outside the support polygon).
   bool TouchdownsAtRelease(const Eigen::VectorXd& y);

@@ -113,6 +113,7 @@ LanderRunResult SimulateLander(const LanderSetup& setup) {
 
   const Eigen::VectorXd y0 = Pack(L, initial);
   result.initial_energy_J = KineticEnergy(model, L, y0) + PotentialEnergy(model, L, y0);
+  lander.StopsAtRelease(y0);
   integ::HybridRun run(integrator);
   run.Start(0.0, y0);
   const bool over_at_release = lander.TouchdownsAtRelease(y0);
