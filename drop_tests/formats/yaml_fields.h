@@ -36,7 +36,10 @@ class YamlFields {
   const std::string& prefix() const { return prefix_; }
   std::string Path(const std::string& key) const { return prefix_.empty() ? key : prefix_ + "." + key; }
   [[noreturn]] void Fail(const std::string& key, const std::string& message) const;
-  const YAML::Node& node() const { return node_; }
+  // A handle (yaml-cpp nodes share their data), not a const reference: yaml-cpp's const operator[]
+  // on a missing key gives an invalid node whose IsSequence() throws YAML::InvalidNode (the pad
+  // fuzzer's `profile: {shape: table}` without points_mm), where a handle's gives an undefined node.
+  YAML::Node node() const { return node_; }
 
  private:
   YAML::Node node_;

@@ -154,6 +154,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadPadCase{"bad table pair",
                    "mass_kg: 1\nprofile: {shape: table, radius_mm: 50, thickness_mm: 16, points_mm: [[0, 0], [50]]}\n",
                    "points_mm[1]: must be a pair"},
+        // The pad fuzzer's find: a table without its points threw yaml-cpp's InvalidNode (exit 1).
+        BadPadCase{"table without points", "mass_kg: 1\nprofile: {shape: table, radius_mm: 40, thickness_mm: 10,}\n",
+                   "points_mm: must be a list"},
         BadPadCase{"unknown kind", "kind: banana\nmass_kg: 1\nprofile: {shape: flat}\n", "kind: unknown pad kind"},
         BadPadCase{"schema", "schema_version: 7\nmass_kg: 1\nprofile: {shape: flat, radius_mm: 5, thickness_mm: 1}\n",
                    "unsupported version"}));
