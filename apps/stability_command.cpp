@@ -77,6 +77,11 @@ void PrintFollowUps(const stability::StudySummary& s) {
       std::cout << "P(tip-over) = " << v.probability << ", 95 % interval [" << v.interval.low << ", "
                 << v.interval.high << "], " << v.differs_from_study << " differ from x1\n";
   }
+  if (j.screen_margin_deg && j.screened_in < j.samples)
+    std::cout << "  joint-range screen: " << j.screened_in << " of the " << j.samples
+              << " landings ran at x0.5 and x1.5; the other " << j.samples - j.screened_in
+              << " stood, settled, more than " << *j.screen_margin_deg << " deg below the tip-over angle ("
+              << j.tip_angle_deg << " deg) and kept the study's outcome\n";
 }
 
 // The soil's share of the outcome's variance, and P(tip) across the soil's 95 % range.

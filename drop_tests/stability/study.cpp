@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "drop_tests/drop/drop_request.h"
 #include "drop_tests/formats/dataset_csv.h"
@@ -131,15 +133,18 @@ RecheckSettings ReadRecheck(const io::YamlFields& study, RecheckSettings r, doub
   return r;
 }
 
-// A follow-up's `KEY: none` (false), or `KEY: {samples: K}` (true; K, 1 to 1e9, into `samples`).
-bool ReadFollowUpSamples(const io::YamlFields& study, const std::string& key, std::optional<int64_t>& samples) {
+// A follow-up's `KEY: none` (false), or `KEY: {samples: K, ...}` (true; K, 1 to 1e9, into `samples`;
+// `keys`: every key the mapping may have).
+bool ReadFollowUpSamples(const io::YamlFields& study, const std::string& key, std::optional<int64_t>& samples,
+                         const std::vector<std::string>& keys = {"samples"}) {
   if (study.node()[key].IsScalar()) {
-    if (study.String(key) != "none")
-      study.Fail(key, "must be none or a mapping {samples}, got '" + study.String(key) + "'");
+    std::string names;
+    for (const std::string& k : keys) names += (names.empty() ? "" : ", ") + k;
+    if (study.String(key) != "none") study.Fail(key, "must be none or a mapping {" + names + "}, got '" + study.String(key) + "'");
     return false;
   }
   const io::YamlFields f = study.Child(key);
-  f.RequireOnly({"samples"});
+  f.RequireOnly(keys);
   if (f.Has("samples")) {
     const double v = f.Number("samples");
     limits::Require(limits::kSamples, v, f.file(), f.Path("samples"));
@@ -149,14 +154,26 @@ bool ReadFollowUpSamples(const io::YamlFields& study, const std::string& key, st
   return true;
 }
 
-// `joint_range_sensitivity: none`, or `{samples: K}` (default 1000).
+// `joint_range_sensitivity: none`, or `{samples: K, screen_margin_deg: M}` (defaults 1000 and
+// kDefaultJointRangeScreenDeg; `screen_margin_deg: none` runs all K).
 JointRangeSettings ReadJointRange(const io::YamlFields& study) {
   JointRangeSettings j;
   const std::string key = "joint_range_sensitivity";
   if (!study.Has(key)) return j;
   std::optional<int64_t> samples;
-  j.enabled = ReadFollowUpSamples(study, key, samples);
+  j.enabled = ReadFollowUpSamples(study, key, samples, {"samples", "screen_margin_deg"});
   j.samples = samples.value_or(j.samples);
+  if (!j.enabled) return j;
+  const io::YamlFields f = study.Child(key);
+  if (!f.Has("screen_margin_deg")) return j;
+  if (f.node()["screen_margin_deg"].IsScalar() && f.String("screen_margin_deg") == "none") {
+    j.screen_margin_deg.reset();
+    return j;
+  }
+  const double m = f.Number("screen_margin_deg");
+  if (!(m >= 0.0 && m <= 90.0))
+    f.Fail("screen_margin_deg", "must be none or from 0 to 90 deg, got " + io::FormatNumber(m));
+  j.screen_margin_deg = m;
   return j;
 }
 

@@ -146,6 +146,12 @@ bool NeedsRecheck(const DropRecord& r, double tip_angle_deg, const RecheckSettin
 
 bool ReachedStops(const DropRecord& r, double half_angle_deg) { return r.max_joint_swing_deg > half_angle_deg; }
 
+bool MayTipAtAnotherRange(const DropRecord& r, double tip_angle_deg, const JointRangeSettings& s) {
+  if (!s.screen_margin_deg || !r.ok || Tipped(r)) return true;
+  const bool unsettled = std::isnan(r.time_to_rest_s);  // as Summarise counts them (not tipped here)
+  return unsettled || r.max_tilt_deg >= tip_angle_deg - *s.screen_margin_deg;
+}
+
 sweep::SweepPlan RecheckPlan(const Study& study) {
   sweep::SweepPlan plan = study.plan;
   // The reference model's pads are meshed as their file says: a study that lands coarser pads
@@ -304,21 +310,37 @@ StudyFollowUps RunStudyFollowUps(const Study& study, std::vector<DropRecord> rec
 
   f.joint_range = JointRangeTrigger(study, records);
   JointRangeReport& j = f.joint_range;
+  j.screen_margin_deg = study.joint_range.screen_margin_deg;
+  j.tip_angle_deg = tip_angle_deg;
   if (j.reason.empty()) {
     const std::vector<int64_t> indices = JointRangeIndices(study);
     j.samples = static_cast<int64_t>(indices.size());
     std::map<int64_t, DropRecord> at_study;
     for (const DropRecord& r : records)
       if (std::binary_search(indices.begin(), indices.end(), r.index)) at_study.emplace(r.index, r);
+    std::vector<int64_t> run;  // ascending, as `indices`
+    for (const auto& [index, r] : at_study)
+      if (MayTipAtAnotherRange(r, tip_angle_deg, study.joint_range)) run.push_back(index);
+    j.screened_in = static_cast<int64_t>(run.size());
     std::map<double, std::map<int64_t, DropRecord>> at_factor;
     for (double factor : kJointRangeFactors) {
       const std::string dir = JointRangeDir(out_dir, factor);
-      if (say)
+      if (say) {
         *say << "stability " << study.plan.name << ": pads at their stops in " << j.at_stops << " of " << j.landings
-             << " landings; running " << indices.size() << " of them with the joints' range x"
-             << io::FormatNumber(factor) << " in " << dir << "/\n";
-      if (!RunFollowUp(JointRangePlan(study, factor), indices, dir, options, f)) return f;
-      at_factor[factor] = ReadStored(dir, indices);
+             << " landings; running " << run.size() << " of " << indices.size() << " with the joints' range x"
+             << io::FormatNumber(factor);
+        if (run.size() < indices.size())
+          *say << " (the other " << indices.size() - run.size() << " stood, settled, more than "
+               << io::FormatNumber(*j.screen_margin_deg) << " deg below the tip-over angle: the study's outcome)";
+        *say << (run.empty() ? "\n" : " in " + dir + "/\n");
+      }
+      if (!run.empty()) {
+        if (!RunFollowUp(JointRangePlan(study, factor), run, dir, options, f)) return f;
+        at_factor[factor] = ReadStored(dir, run);
+      }
+      // Left out by the screen: the study's record stands for the landing at this range too.
+      for (const auto& [index, r] : at_study)
+        if (!std::binary_search(run.begin(), run.end(), index)) at_factor[factor].emplace(index, r);
     }
     const double low = kJointRangeFactors[0], high = kJointRangeFactors[1];
     j.variants = {Variant(low, j.half_angle_deg, indices, at_factor[low], at_study),
@@ -369,6 +391,19 @@ nlohmann::json JointRangeJson(const JointRangeReport& j) {
     return out;
   }
   out["samples"] = j.samples;
+  out["screen"] = {
+      {"margin_deg", j.screen_margin_deg ? nlohmann::json(*j.screen_margin_deg) : nlohmann::json(nullptr)},
+      {"tip_angle_deg", io::FiniteOrNull(j.tip_angle_deg)},
+      {"landings_run", j.screened_in},
+      {"landings_kept_from_study", j.samples - j.screened_in},
+      {"meaning",
+       j.screen_margin_deg
+           ? "of the K landings, those that tipped over, ended unsettled or failed, or whose max tilt came within "
+             "margin_deg of tip_angle_deg ran again at x0.5 and x1.5 (landings_run); the others stood, settled, "
+             "further below the tip-over angle than the range moves a max tilt there, and count at every range "
+             "with the study's outcome (landings_kept_from_study; docs/stability_studies.md, \"Joint-range "
+             "sensitivity\")"
+           : "no screen (screen_margin_deg: none): all K landings ran again at x0.5 and x1.5"}};
   out["variants_meaning"] =
       "the same K landings of the study (its indices floor(j N / K), j < K) at every joint's half angle x0.5, x1 "
       "(the study's own records, after the re-checks) and x1.5, stiffness and damping unchanged; "

@@ -14,7 +14,9 @@
 //   Joint-range sensitivity. When the pads reach their ball joints' stops (a swing beyond the cone
 //   limit's half angle) in more than 5 % of the landings, K of them run again with every joint's
 //   half angle x0.5 and x1.5 (stiffness and damping unchanged): P(tip) on those K landings at the
-//   three ranges says how much the answer hangs on the range.
+//   three ranges says how much the answer hangs on the range. Of the K, only the landings that could
+//   tip over at another range run again (MayTipAtAnotherRange: tipped, unsettled, failed, or a max
+//   tilt within `screen_margin_deg` of the tip-over angle); the others keep the study's outcome.
 //
 // Each follow-up is a plan derived from the study's (its `variant` names the change, so its
 // database is never mixed up with the study's) run by the sweep engine with a list of the drops
@@ -54,6 +56,13 @@ bool NeedsRecheck(const sweep::DropRecord& r, double tip_angle_deg, const Rechec
 
 // A landing reached its joints' stops: a pad swung further than the cone's half angle.
 bool ReachedStops(const sweep::DropRecord& r, double half_angle_deg);
+
+// Whether the joint-range sensitivity runs a landing again at another range: always without a
+// screen (`s.screen_margin_deg` unset); else when the study's landing failed, tipped over, ended
+// unsettled, or its max tilt came within the screen's margin of `tip_angle_deg`. A landing left out
+// stood, settled, that far below the tip-over angle; the range moves max tilts by a few degrees
+// there (study.h, kDefaultJointRangeScreenDeg), so it keeps the study's outcome.
+bool MayTipAtAnotherRange(const sweep::DropRecord& r, double tip_angle_deg, const JointRangeSettings& s);
 
 // The study's plan with the reference model (the re-checks') / every joint's half angle x factor.
 sweep::SweepPlan RecheckPlan(const Study& study);
@@ -104,6 +113,11 @@ struct JointRangeReport {
   bool ran = false;
   std::string reason;   // why it did not run
   int64_t samples = 0;  // K
+  // The screen (MayTipAtAnotherRange): its margin (unset: none, all K run), the tip-over angle it
+  // counts from, and how many of the K ran at x0.5 and x1.5 (the others: the study's records).
+  std::optional<double> screen_margin_deg;
+  double tip_angle_deg = 0.0;
+  int64_t screened_in = 0;
   std::vector<JointRangeVariant> variants;  // x0.5, x1 (the study's records), x1.5
 };
 

@@ -185,13 +185,13 @@ TEST_F(StabilityCli, MaxDropEvaluationsFailsLandingsThatARerunWithAHigherLimitRu
 }
 
 // Two landings on a coarse pad: level (stays up, far from the boundary) and a 30 deg slope
-// (tips over, its pads at their stops); the joint-range sensitivity on K = 1 landing.
+// (tips over, its pads at their stops); the joint-range sensitivity on both (K = 2).
 std::string FollowUpStudy(const std::string& scenario) {
   return "schema_version: 1\ntype: stability\nname: followups\nlander: {scenario: " + scenario +
          "}\n"
          "fixed: {downhill_azimuth_deg: -90, yaw_relative_to_slope_deg: 90}\n"
          "grid: {slope_deg: [0, 30]}\n"
-         "study: {joint_range_sensitivity: {samples: 1}}\n";
+         "study: {joint_range_sensitivity: {samples: 2}}\n";
 }
 // The paper's lander with 16-segment pads for 1 s (data/studies/lab_coarse_lander_scenario.yaml).
 const std::string kCoarseScenario = std::string(TOUCHDOWN_SOURCE_DIR) + "/data/studies/lab_coarse_lander_scenario.yaml";
@@ -227,18 +227,28 @@ TEST_F(StabilityCli, FollowUpsRecheckTheTipOverAndRunTheJointRangeOnce) {
   const std::string rechecked = Rows(Path("one") + "/recheck/results.sqlite");
   EXPECT_EQ(std::count(rechecked.begin(), rechecked.end(), '\n'), 1);
   EXPECT_EQ(rechecked.substr(0, 2), "1|") << rechecked;  // drop 1, under its study index
-  // The tipping landing swung its pads to the stops (1 of 2 > 5 %): x0.5, x1, x1.5 on drop 0.
+  // The tipping landing swung its pads to the stops (1 of 2 > 5 %): x0.5, x1, x1.5 on both landings.
+  // The screen runs only drop 1 again (it tipped); drop 0 stood level, settled, far below the
+  // tip-over angle, and keeps its outcome at every range.
   const nlohmann::json& range = j["joint_range_sensitivity"];
   EXPECT_EQ(range["landings_at_stops"], 1);
   ASSERT_EQ(range["ran"], true) << range.dump();
-  EXPECT_EQ(range["samples"], 1);
+  EXPECT_EQ(range["samples"], 2);
+  EXPECT_EQ(range["screen"]["margin_deg"], 20.0);
+  EXPECT_EQ(range["screen"]["landings_run"], 1);
+  EXPECT_EQ(range["screen"]["landings_kept_from_study"], 1);
   ASSERT_EQ(range["variants"].size(), 3u);
+  for (const nlohmann::json& v : range["variants"]) EXPECT_EQ(v["landings"], 2) << v.dump();
+  EXPECT_EQ(range["variants"][1]["tipped_over"], 1);
   for (const char* factor : {"0.5", "1.5"}) {
     const std::string rows = Rows(Path("one") + "/joint_range_x" + factor + "/results.sqlite");
-    EXPECT_EQ(rows.substr(0, 2), "0|") << rows;
+    EXPECT_EQ(std::count(rows.begin(), rows.end(), '\n'), 1) << rows;
+    EXPECT_EQ(rows.substr(0, 2), "1|") << rows;
   }
-  EXPECT_NE(first.out.find("joint range x0.5 (half angle 15 deg), 1 landings: P(tip-over) = "), std::string::npos)
+  EXPECT_NE(first.out.find("joint range x0.5 (half angle 15 deg), 2 landings: P(tip-over) = "), std::string::npos)
       << first.out;
+  EXPECT_NE(first.out.find("joint-range screen: 1 of the 2 landings ran at x0.5 and x1.5; the other 1 stood"),
+            std::string::npos) << first.out;
   EXPECT_NE(first.out.find("follow-ups 3 landings run now, 0 already done"), std::string::npos) << first.out;
 
   const std::string summary = Slurp(Path("one") + "/summary.json");

@@ -146,5 +146,35 @@ TEST_F(StudyFollowUpsTest, StandingTipAngleIsTheSmallestEdgesAndKSpreadsOverTheS
   EXPECT_EQ(JointRangeIndices(study).size(), 10u);
 }
 
+// The joint-range screen: a landing runs again at the other ranges when it tipped, ended unsettled,
+// failed, or its max tilt came within the margin of the tip-over angle; without a screen, always.
+TEST_F(StudyFollowUpsTest, TheJointRangeScreenRunsWhatCouldTipAtAnotherRange) {
+  const Study study = LoadCaseA("random: {samples: 10, seed: 1, slope_deg: {uniform: [0, 20]}}\n");
+  const JointRangeSettings& s = study.joint_range;
+  ASSERT_TRUE(s.screen_margin_deg.has_value());
+  EXPECT_EQ(*s.screen_margin_deg, kDefaultJointRangeScreenDeg);
+  const double tip = 45.0, edge = tip - kDefaultJointRangeScreenDeg;  // 25 deg
+  EXPECT_FALSE(MayTipAtAnotherRange(Landing(0, false, 10.0), tip, s));
+  EXPECT_FALSE(MayTipAtAnotherRange(Landing(0, false, std::nextafter(edge, 0.0)), tip, s));
+  EXPECT_TRUE(MayTipAtAnotherRange(Landing(0, false, edge), tip, s));
+  EXPECT_TRUE(MayTipAtAnotherRange(Landing(0, true, 44.0), tip, s));
+  EXPECT_TRUE(MayTipAtAnotherRange(Landing(0, false, 10.0, /*at_rest=*/false), tip, s));
+  DropRecord failed = Landing(0, false, 10.0);
+  failed.ok = false;
+  EXPECT_TRUE(MayTipAtAnotherRange(failed, tip, s));
+  JointRangeSettings none = s;
+  none.screen_margin_deg.reset();
+  EXPECT_TRUE(MayTipAtAnotherRange(Landing(0, false, 0.0), tip, none));
+
+  const Study off = LoadCaseA("random: {samples: 10, seed: 1, slope_deg: {uniform: [0, 20]}}\n"
+                              "study: {joint_range_sensitivity: {samples: 4, screen_margin_deg: none}}\n");
+  EXPECT_FALSE(off.joint_range.screen_margin_deg.has_value());
+  EXPECT_EQ(off.joint_range.samples, 4);
+  const Study wide = LoadCaseA("random: {samples: 10, seed: 1, slope_deg: {uniform: [0, 20]}}\n"
+                               "study: {joint_range_sensitivity: {screen_margin_deg: 35}}\n");
+  EXPECT_EQ(wide.joint_range.screen_margin_deg.value_or(0.0), 35.0);
+  EXPECT_EQ(wide.joint_range.samples, 1000);
+}
+
 }  // namespace
 }  // namespace touchdown::stability

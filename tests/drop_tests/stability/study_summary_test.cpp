@@ -197,6 +197,12 @@ TEST_F(StudySummaryTest, BadStudyBlocksNameFileAndField) {
   expect_error(head + "study: {joint_range_sensitivity: {samples: 2.5}}\n", "study.joint_range_sensitivity.samples",
                "whole number");
   expect_error(head + "study: {joint_range_sensitivity: {factor: 2}}\n", "study.joint_range_sensitivity.factor", "");
+  expect_error(head + "study: {joint_range_sensitivity: {screen_margin_deg: -1}}\n",
+               "study.joint_range_sensitivity.screen_margin_deg", "none or from 0 to 90");
+  expect_error(head + "study: {joint_range_sensitivity: {screen_margin_deg: some}}\n",
+               "study.joint_range_sensitivity.screen_margin_deg", "");
+  expect_error(head + "study: {joint_range_sensitivity: always}\n", "study.joint_range_sensitivity",
+               "none or a mapping {samples, screen_margin_deg}");
   expect_error(head, "--samples", "no random block", 5);
   expect_error("schema_version: 1\ntype: stability\ngrid: {slope_deg: [0, 5]}\n", "lander", "missing");
   // A plain sweep file is no study.
