@@ -32,6 +32,7 @@
 //  - No allocation inside the element loop.
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <vector>
 
 #include "rft/ground.h"
 #include "rft/pad_level_terms.h"
@@ -82,5 +83,43 @@ struct ContactWrench {
 ContactWrench ComputeContactWrench(const SurfaceElements& elements, const PadKinematics& kinematics,
                                    const GroundSurface& ground, const StressLaw3D& law,
                                    const PadLevelTerms& pad_terms = {});
+
+// A pad that keeps still (a held lander pad, whose capacity is probed in every direction of load):
+// the integrals of its submerged elements at one pose, summed in the runs of equal normals that the
+// translation path of ComputeContactWrench forms. TranslationWrenchAt then gives the wrench of a
+// translation at that pose in any direction for the cost of the law on each run, with no clipping:
+// its force is ComputeContactWrench's for the same pose and twist, bit for bit over a plane, and its
+// moment to rounding (the compiler contracts the cross products, and off a plane the depths, into
+// multiply-adds differently; tests/rft/fixed_pose_integrals_test.cpp); its other fields stay zero. Only for contacts without
+// pad-level terms (FixedPoseIntegrals::Supports).
+struct FixedPoseIntegrals {
+  struct Run {
+    int normal_class = -1;  // SurfaceElements::normal_class of its elements, or -1
+    Eigen::Vector3d n_B = Eigen::Vector3d::Zero();  // its first element's normal
+    // Over its elements with a positive depth integral, as the translation path sums them: without
+    // and with the area terms a dynamic stress needs (the path clips either way, by the stress).
+    double depth = 0.0, depth_with_area = 0.0, area = 0.0;
+    Eigen::Vector3d depth_moment = Eigen::Vector3d::Zero(), depth_moment_with_area = Eigen::Vector3d::Zero(),
+                    area_moment = Eigen::Vector3d::Zero();
+  };
+  static bool Supports(const PadLevelTerms& pad_terms) {
+    return !pad_terms.has_compaction() && !pad_terms.has_added_mass() && !pad_terms.has_power_depth();
+  }
+  Eigen::Matrix3d R_WB = Eigen::Matrix3d::Identity();
+  std::vector<Run> runs;  // in element order
+  bool classes = false;   // the elements' normal classes are used (as the translation path does)
+};
+
+// The integrals of `elements` at the pose (R_WB, p_WB) over `ground`, into `out` (its storage is
+// reused: no allocation once it has held as many runs).
+void FormFixedPoseIntegrals(const SurfaceElements& elements, const Eigen::Matrix3d& R_WB, const Eigen::Vector3d& p_WB,
+                            const GroundSurface& ground, FixedPoseIntegrals* out);
+
+// The wrench on the pad of `integrals` translating at v_W (w = 0), as ComputeContactWrench gives it
+// at their pose with `shear_mobilisation` and `element_ramp_speed_m_s` (PadKinematics). Requires
+// FixedPoseIntegrals::Supports(pad_terms).
+ContactWrench TranslationWrenchAt(const FixedPoseIntegrals& integrals, const Eigen::Vector3d& v_W,
+                                  const StressLaw3D& law, const PadLevelTerms& pad_terms,
+                                  double shear_mobilisation = 1.0, double element_ramp_speed_m_s = 0.0);
 
 }  // namespace touchdown::rft

@@ -401,8 +401,8 @@ nlohmann::json JointRangeJson(const JointRangeReport& j) {
            ? "of the K landings, those that tipped over, ended unsettled or failed, or whose max tilt came within "
              "margin_deg of tip_angle_deg ran again at x0.5 and x1.5 (landings_run); the others stood, settled, "
              "further below the tip-over angle than the range moves a max tilt there, and count at every range "
-             "with the study's outcome (landings_kept_from_study; docs/stability_studies.md, \"Joint-range "
-             "sensitivity\")"
+             "with the study's outcome (landings_kept_from_study; docs/stability_studies.md, \"Follow-ups\", "
+             "\"The screen\")"
            : "no screen (screen_margin_deg: none): all K landings ran again at x0.5 and x1.5"}};
   out["variants_meaning"] =
       "the same K landings of the study (its indices floor(j N / K), j < K) at every joint's half angle x0.5, x1 "

@@ -130,6 +130,28 @@ rft::ContactWrench QuasiStaticWrench(const LanderModel& model, const rft::Terrai
   return rft::ComputeContactWrench(model.legs[leg].pad->surface, k, *terrain.surface, *contact.law, contact.pad_terms);
 }
 
+Eigen::Vector3d HeldPadCapacityForce(const LanderModel& model, const rft::Terrain& terrain, int leg, const PadFrame& pad,
+                                     const Eigen::Vector3d& direction_W, HeldPadCapacity* held, long* contacts) {
+  const int soil = terrain.SoilAt(pad.p_WJ.x(), pad.p_WJ.y());
+  const rft::SoilContactModel& contact = terrain.soils[soil].contact;
+  if (!rft::FixedPoseIntegrals::Supports(contact.pad_terms)) {
+    ++*contacts;
+    return QuasiStaticWrench(model, terrain, leg, pad, direction_W).force_W;
+  }
+  if (!held->formed || held->soil != soil) {
+    ++*contacts;
+    rft::FormFixedPoseIntegrals(model.legs[leg].pad->surface, pad.R_WP, pad.p_WJ, *terrain.surface, &held->integrals);
+    held->formed = true;
+    held->soil = soil;
+  }
+  // As QuasiStaticWrench probes (its speed, and Janosi's shear at the pad's own j).
+  const double mobilisation =
+      contact.has_janosi_shear() ? contact.ShearMobilisation(pad.shear_displacement_m) : 1.0;
+  return rft::TranslationWrenchAt(held->integrals, rft::kQuasiStaticProbeSpeed_m_s * direction_W.normalized(),
+                                  *contact.law, contact.pad_terms, mobilisation)
+      .force_W;
+}
+
 namespace {
 struct Assembly {
   Mat M;

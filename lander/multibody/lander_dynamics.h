@@ -195,6 +195,23 @@ rft::ContactWrench FreePadSoilWrench(const LanderModel& model, const rft::SoilCo
 rft::ContactWrench QuasiStaticWrench(const LanderModel& model, const rft::Terrain& terrain, int leg, const PadFrame& pad,
                                      const Eigen::Vector3d& direction_W);
 
+// A held pad's soil integrals at the pose it is held in (rft::FixedPoseIntegrals): formed at its
+// first probe after an event, they give its quasi-static capacity in every direction of load until
+// the next event without clipping its elements again (the root functions' slide check: most of
+// their contacts). Per-run scratch of the hybrid run, not model data.
+struct HeldPadCapacity {
+  rft::FixedPoseIntegrals integrals;
+  bool formed = false;  // false: form at the next probe (after an event)
+  int soil = -1;        // the terrain's soil under the pad when formed
+};
+
+// QuasiStaticWrench's force for a held pad, from `held` (formed here from `pad`'s pose when it is not
+// yet): bit for bit the same force at the pose it was formed in (over a plane). A soil with pad-level
+// terms (rft::FixedPoseIntegrals::Supports false) takes QuasiStaticWrench itself. `contacts` counts
+// the contacts evaluated (1 when it forms or falls back, else 0).
+Eigen::Vector3d HeldPadCapacityForce(const LanderModel& model, const rft::Terrain& terrain, int leg, const PadFrame& pad,
+                                     const Eigen::Vector3d& direction_W, HeldPadCapacity* held, long* contacts);
+
 // Projects the speeds onto the constraints of `modes` with the least kinetic-energy change (a
 // perfectly plastic capture). Returns the kinetic energy removed [J].
 double ProjectOntoConstraints(const LanderModel& model, const StateLayout& layout, const LanderModes& modes,

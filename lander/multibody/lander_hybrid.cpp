@@ -66,14 +66,18 @@ struct HoldCheck {
 // `sink_capacity` (optional): the pad's vertical capacity, NaN until known. A held pad does not
 // move, so its capacity straight down is the same until the next event; the root functions keep it
 // (on a slope, where pads stay held while the lander slides, the capacity checks would otherwise be
-// half of all contact evaluations).
+// half of all contact evaluations). `slide_capacity` (optional, with the root functions'): the
+// pad's soil integrals at the pose it is held in, for its capacity in the direction of the load,
+// which turns from step to step (HeldPadCapacity); the events' checks (none given) evaluate the
+// contact at the pose they see.
 // `contacts` (optional) counts the contacts evaluated.
 HoldCheck CheckHold(const LanderModel& model, const rft::Terrain& terrain, int i, const PadFrame& f,
-                    const rft::ContactWrench& reaction, double* sink_capacity = nullptr, long* contacts = nullptr) {
+                    const rft::ContactWrench& reaction, double* sink_capacity = nullptr, long* contacts = nullptr,
+                    HeldPadCapacity* slide_capacity = nullptr) {
   HoldCheck h;
   h.lift = reaction.force_W.z();
   const bool known = sink_capacity && !std::isnan(*sink_capacity);
-  if (contacts) *contacts += known ? 1 : 2;
+  long evaluated = known ? 0 : 1;
   const double down = known ? *sink_capacity : QuasiStaticWrench(model, terrain, i, f, Eigen::Vector3d(0, 0, -1)).force_W.z();
   if (sink_capacity) *sink_capacity = down;
   h.sink = down - h.lift;
@@ -81,11 +85,19 @@ HoldCheck CheckHold(const LanderModel& model, const rft::Terrain& terrain, int i
   const double load = horizontal.norm();
   if (load > 0.0) {
     h.slide_direction = -horizontal / load;  // the load pushes the pad against the reaction
-    const rft::ContactWrench cap = QuasiStaticWrench(model, terrain, i, f, h.slide_direction);
-    h.slide = -cap.force_W.dot(h.slide_direction) - load;
+    Eigen::Vector3d cap;
+    if (slide_capacity) {
+      cap = HeldPadCapacityForce(model, terrain, i, f, h.slide_direction, slide_capacity, &evaluated);
+    } else {
+      ++evaluated;
+      cap = QuasiStaticWrench(model, terrain, i, f, h.slide_direction).force_W;
+    }
+    h.slide = -cap.dot(h.slide_direction) - load;
   } else {
+    ++evaluated;
     h.slide = QuasiStaticWrench(model, terrain, i, f, Eigen::Vector3d(1, 0, 0)).force_W.head<2>().norm();
   }
+  if (contacts) *contacts += evaluated;
   return h;
 }
 
@@ -124,7 +136,9 @@ void LanderHybrid::Roots(Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::
       // has slowed down once more.
       g[PadRoot(i, 3)] = g[PadRoot(i, 0)] > 0.0 ? f.v_WJ_W.norm() - model_.soil_ramp_speed_m_s : 1.0;
     } else {
-      const HoldCheck h = CheckHold(model_, terrain_, i, f, root_eval_.soil[i], &sink_capacity_[i], &root_contacts_);
+      const HoldCheck h =
+          CheckHold(model_, terrain_, i, f, root_eval_.soil[i], &sink_capacity_[i], &root_contacts_,
+                    options_.held_capacity_from_integrals ? &slide_capacity_[i] : nullptr);
       g[PadRoot(i, 1)] = h.lift;
       g[PadRoot(i, 2)] = h.sink;
       g[PadRoot(i, 3)] = h.slide;
@@ -371,6 +385,7 @@ bool LanderHybrid::RecordCaptures(double t, const Eigen::VectorXd& y, const std:
 
 integ::EventAction LanderHybrid::OnEvent(double t, const std::vector<int>& found, Eigen::VectorXd& y) {
   sink_capacity_.fill(std::numeric_limits<double>::quiet_NaN());  // holds and poses may change here
+  for (HeldPadCapacity& c : slide_capacity_) c.formed = false;
   last_rhs_valid_ = false;
   Record(t, y);  // the state at the event, in the old modes (peak forces before a capture)
   const LanderPose pose = ComputePose(model_, L_, y);

@@ -26,6 +26,9 @@ class LanderHybrid {
     eval_.u_dot = Eigen::VectorXd::Zero(L_.nu);
     last_rhs_y_ = Eigen::VectorXd::Zero(L_.size);
     jacobian_data_.attitude_sensitivity = options.jacobian_attitude_sensitivity;
+    // The slide checks form their integrals inside the root functions: their storage, reserved here.
+    for (int i = 0; i < kNumLegs; ++i)
+      slide_capacity_[i].integrals.runs.reserve(static_cast<size_t>(model.legs[i].pad->surface.size()));
   }
   const StateLayout& layout() const { return L_; }
   void Derivative(Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::VectorXd> ydot);
@@ -81,6 +84,8 @@ class LanderHybrid {
   long rhs_contacts_ = 0, root_contacts_ = 0;  // pad contacts evaluated (LanderRunResult)
   // Vertical capacity of each held pad since the last event (NaN: not yet evaluated).
   std::array<double, kNumLegs> sink_capacity_{kUnknown, kUnknown, kUnknown, kUnknown};
+  // Each held pad's soil integrals at its pose since the last event, for its slide checks.
+  std::array<HeldPadCapacity, kNumLegs> slide_capacity_;
   static constexpr double kUnknown = std::numeric_limits<double>::quiet_NaN();
 };
 

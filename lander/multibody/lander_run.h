@@ -81,6 +81,13 @@ struct LanderRunOptions {
   // wherever the pad is beyond the cone, switched on inside the steps (the same model, kept to
   // measure against; docs/lander_dynamics.md, "The joints' stops as modes").
   bool joint_stops_as_modes = true;
+  // The root functions' slide checks of a held pad from its soil integrals at the pose it was held in
+  // at the last event (HeldPadCapacity): its capacity in the load's direction without clipping its
+  // elements again, the same force bit for bit at that pose. false: the contact evaluated at the
+  // pose of every root-function call, which differs from the held pose by the integration's drift
+  // only (kept to measure against; docs/lander_dynamics.md, "The held pads' capacity from their
+  // integrals").
+  bool held_capacity_from_integrals = true;
 };
 
 // Everything a landing runs on, named as the rig's and the free pad's setups are: the model (body,

@@ -113,6 +113,34 @@ TEST(LanderDynamics, ReusedPositionTermsGiveTheSameEvaluationBitForBit) {
   }
 }
 
+// A held pad's capacity from its integrals (HeldPadCapacity) is QuasiStaticWrench's force at the
+// pose they were formed in, bit for bit, in every direction of load: case A at rest in the soil.
+// Forming counts one contact; the probes after it none, until the integrals are formed again.
+TEST(LanderDynamics, HeldPadCapacityIsTheQuasiStaticForceAtItsPose) {
+  test::PaperLander setup = test::MakePaperLander('A');
+  setup.options.duration_s = 0.4;
+  const Eigen::VectorXd y = SimulateLander(setup).final_state;
+  const StateLayout L(setup.model);
+  const LanderPose pose = ComputePose(setup.model, L, y);
+  for (int i = 0; i < kNumLegs; ++i) {
+    ASSERT_GT(PadDepth(setup.model, setup.terrain, i, pose.pads[i]), 0.0) << "pad " << i + 1;
+    HeldPadCapacity held;
+    long contacts = 0;
+    for (int k = 0; k < 36; ++k) {
+      const double a = k * M_PI / 18.0;
+      const Eigen::Vector3d d(std::cos(a), std::sin(a), 0.0);
+      const Eigen::Vector3d fast = HeldPadCapacityForce(setup.model, setup.terrain, i, pose.pads[i], d, &held, &contacts);
+      EXPECT_EQ(fast, QuasiStaticWrench(setup.model, setup.terrain, i, pose.pads[i], d).force_W)
+          << "pad " << i + 1 << " direction " << k;
+      EXPECT_GT(-fast.dot(d), 0.0) << "pad " << i + 1 << " direction " << k;  // it resists the push
+    }
+    EXPECT_EQ(contacts, 1) << "pad " << i + 1;
+    held.formed = false;  // as after an event
+    HeldPadCapacityForce(setup.model, setup.terrain, i, pose.pads[i], Eigen::Vector3d::UnitX(), &held, &contacts);
+    EXPECT_EQ(contacts, 2) << "pad " << i + 1;
+  }
+}
+
 TEST(LanderDynamics, AttitudeAnglesFollowAerospaceSigns) {
   // Right side (negative y) down: roll > 0. Nose (positive x) up: pitch > 0.
   const Eigen::Matrix3d roll = Eigen::AngleAxisd(0.1, Eigen::Vector3d::UnitX()).toRotationMatrix();
