@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "rft/contact_wrench.h"
+#include "rft/pad_level_terms.h"
 #include "rft/surface_elements.h"
 
 namespace touchdown::rft::contact_internal {
@@ -316,6 +317,46 @@ inline bool IsSpinning(const SurfaceElements& elements, const PadKinematics& k) 
       r2 = std::max(r2, p->colwise().squaredNorm().maxCoeff());
   }
   return k.w_WB_W.squaredNorm() * r2 > kNegligibleSpin * kNegligibleSpin * k.v_WB_W.squaredNorm();
+}
+
+// The stresses of one normal class in translation (the same for every element with that normal):
+// the current run's, and cached per class (SurfaceElements::normal_class).
+struct ClassStress {
+  double nz = 0.0;  // z of the normal in W (footprint)
+  bool leads = false, dynamic = false, compaction = false;
+  Eigen::Vector3d sigma = Eigen::Vector3d::Zero(), sigma_dyn = Eigen::Vector3d::Zero(),
+                  sigma_comp = Eigen::Vector3d::Zero();
+};
+
+[[gnu::always_inline]] inline bool IsZero(const Eigen::Vector3d& a) {
+  return a.x() == 0.0 && a.y() == 0.0 && a.z() == 0.0;
+}
+
+// One step of the translation path: the stresses on elements of normal n_W (in W) moving at v_W,
+// weighted by how much they lead (0 at rest: no direction, no RFT stress). `leads` false leaves
+// the stresses as they were (the caller skips them).
+template <bool kPadTerms>
+[[gnu::always_inline]] inline void StressOfNormal(const StressLaw3D& law, const PadLevelTerms& pad_terms,
+                                                  bool compaction, double unmobilised, double ramp,
+                                                  const Eigen::Vector3d& n_W, const Eigen::Vector3d& v_W,
+                                                  ClassStress& s) {
+  s.nz = n_W.z();
+  const double speed2 = v_W.squaredNorm();
+  const double speed = std::sqrt(speed2);
+  const double weight = speed2 > 0.0 ? LeadWeight(n_W.dot(v_W) / speed) * RampFactor(speed, ramp) : 0.0;
+  s.leads = weight > 0.0;
+  if (!s.leads) return;
+  s.sigma = weight * law.StressPerDepth(n_W, v_W);
+  s.sigma_dyn = weight * law.DynamicStress(n_W, v_W);
+  if (unmobilised != 0.0) {  // Janosi's shear, not yet fully mobilised (PadKinematics::shear_mobilisation)
+    s.sigma -= (weight * unmobilised) * law.MobilisedShearPerDepth(n_W, v_W);
+    s.sigma_dyn -= (weight * unmobilised) * law.MobilisedShearStress(n_W, v_W);
+  }
+  s.dynamic = !IsZero(s.sigma_dyn);
+  if (kPadTerms && compaction) {
+    s.sigma_comp = weight * pad_terms.CompactionStress(n_W, v_W);
+    s.compaction = !IsZero(s.sigma_comp);
+  }
 }
 
 // The wrench on a rotating pad over a plane for a law without pad-level terms (compaction, added
