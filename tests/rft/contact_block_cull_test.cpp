@@ -19,17 +19,8 @@
 namespace touchdown::rft {
 namespace {
 
-// A flat pad like the lander's (27.5 mm radius, 10 mm thick, 20 mm below its reference point),
-// with its bottom in three rings and its wall in two rows, so blocks hold one face each.
-SurfaceElements BoundedPad() {
-  const double r = 0.0275, h = 0.010;
-  SurfaceElements pad =
-      testing::MakeRevolvedPad({{0.0, 0.0}, {r / 3, 0.0}, {2 * r / 3, 0.0}, {r, 0.0}, {r, h / 2}, {r, h}}, 64);
-  for (int e = 0; e < pad.size(); ++e)
-    for (Eigen::Matrix3Xd* p : {&pad.p0_B, &pad.p1_B, &pad.p2_B}) p->col(e).z() -= 0.020;
-  pad.UpdateBounds();
-  return pad;
-}
+// The lander-like flat pad at 64 sectors (pad_meshes.h).
+SurfaceElements BoundedPad() { return testing::LanderLikeFlatPad(64); }
 
 // The same pad with every block's normal cone opened to the whole sphere: nothing is skipped.
 SurfaceElements WithoutSkips(SurfaceElements pad) {

@@ -18,18 +18,6 @@
 namespace touchdown::rft {
 namespace {
 
-// A flat pad like the lander's (27.5 mm radius, 10 mm thick, 20 mm below its reference point) at
-// 24 rim segments, its bottom in rings and its wall in rows (several runs per face).
-SurfaceElements FlatPad() {
-  const double r = 0.0275, h = 0.010;
-  SurfaceElements pad =
-      testing::MakeRevolvedPad({{0.0, 0.0}, {r / 3, 0.0}, {2 * r / 3, 0.0}, {r, 0.0}, {r, h / 2}, {r, h}}, 24);
-  for (int e = 0; e < pad.size(); ++e)
-    for (Eigen::Matrix3Xd* p : {&pad.p0_B, &pad.p1_B, &pad.p2_B}) p->col(e).z() -= 0.020;
-  pad.UpdateBounds();
-  return pad;
-}
-
 // A ground that is a plane but not a PlaneGround: the general path's depths.
 class WavyGround final : public GroundSurface {
  public:
@@ -79,7 +67,7 @@ void ExpectBitForBit(const SurfaceElements& pad, const GroundSurface& ground, co
 }
 
 TEST(RftFixedPoseIntegrals, TranslationWrenchesAreTheContactsBitForBit) {
-  const SurfaceElements pad = FlatPad();
+  const SurfaceElements pad = testing::LanderLikeFlatPad(24);  // the studies' fast rim (pad_meshes.h)
   const Li2013TreersLaw quasi_static(3.48e6);
   const DynamicTermLaw dynamic(std::make_unique<Li2013TreersLaw>(3.48e6), 1.1, 1540.0);
   const PlaneGround level, slope(0.0, std::tan(10.0 * M_PI / 180.0), -0.02);
@@ -108,7 +96,7 @@ TEST(RftFixedPoseIntegrals, TranslationWrenchesAreTheContactsBitForBit) {
 
 // Storage is reused: a second pose forms its runs in the same vector, with no leftovers.
 TEST(RftFixedPoseIntegrals, FormingAgainReplacesTheRuns) {
-  const SurfaceElements pad = FlatPad();
+  const SurfaceElements pad = testing::LanderLikeFlatPad(24);  // the studies' fast rim (pad_meshes.h)
   const PlaneGround level;
   FixedPoseIntegrals held;
   FormFixedPoseIntegrals(pad, Eigen::Matrix3d::Identity(), Eigen::Vector3d(0.0, 0.0, 0.012), level, &held);

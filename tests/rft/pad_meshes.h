@@ -111,6 +111,19 @@ inline Eigen::Matrix3d RotX(double a) {
 inline Eigen::Matrix3d RotY(double a) {
   return Eigen::AngleAxisd(a, Eigen::Vector3d::UnitY()).toRotationMatrix();
 }
+// A flat pad like the lander's (27.5 mm radius, 10 mm thick, its bottom 20 mm below the reference
+// point) with its bottom in three rings and its wall in two rows, so blocks hold one face each and
+// each face is several runs of equal normals; bounds filled.
+inline SurfaceElements LanderLikeFlatPad(int sectors) {
+  const double r = 0.0275, h = 0.010;
+  SurfaceElements pad =
+      MakeRevolvedPad({{0.0, 0.0}, {r / 3, 0.0}, {2 * r / 3, 0.0}, {r, 0.0}, {r, h / 2}, {r, h}}, sectors);
+  for (int e = 0; e < pad.size(); ++e)
+    for (Eigen::Matrix3Xd* p : {&pad.p0_B, &pad.p1_B, &pad.p2_B}) p->col(e).z() -= 0.020;
+  pad.UpdateBounds();
+  return pad;
+}
+
 inline Eigen::Matrix3d RotZ(double a) {
   return Eigen::AngleAxisd(a, Eigen::Vector3d::UnitZ()).toRotationMatrix();
 }
