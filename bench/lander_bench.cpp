@@ -20,7 +20,8 @@
 // TD_SPIN_FACTOR (the pads' spins' absolute tolerance times this, LanderRunOptions::
 // pad_spin_tolerance_factor) / TD_STOP_BY_ANGLE (the joints' stops switched on inside the steps,
 // LanderRunOptions::joint_stops_as_modes false) / TD_HELD_CONTACT (the held pads' slide checks from
-// their contact at every call, LanderRunOptions::held_capacity_from_integrals false)
+// their contact at every call, LanderRunOptions::held_capacity_from_integrals false) / TD_NO_CREEP_REST (rest by
+// holds only, LanderRunOptions::rest_at_creep false)
 // override the integrator for convergence studies, and TD_PRINT prints each landing's final depths,
 // roll and pitch to stderr at full precision; TD_PADI scales the pads' rotational inertia (an
 // experiment: how much of the step count the pads' fast rotation in the soil causes).
@@ -69,6 +70,7 @@ lander::LanderRunOptions Options(Model model) {
   if (getenv("TD_SPIN_FACTOR")) options.pad_spin_tolerance_factor = atof(getenv("TD_SPIN_FACTOR"));
   if (getenv("TD_STOP_BY_ANGLE")) options.joint_stops_as_modes = false;
   if (getenv("TD_HELD_CONTACT")) options.held_capacity_from_integrals = false;
+  if (getenv("TD_NO_CREEP_REST")) options.rest_at_creep = false;
   if (getenv("TD_SUNDIALS_LU")) options.integrator.dense_solver = integ::DenseSolver::kSundials;
   return options;
 }

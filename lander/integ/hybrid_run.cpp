@@ -64,6 +64,13 @@ HybridOutcome HybridRun::Run(const HybridPhase& phase, const HybridCallbacks& ca
         ++totals_.samples;
       }
       ++k;
+      if (sampled && callbacks.stop_after_sample && callbacks.stop_after_sample(t_out)) {
+        out.stopped = true;
+        out.t = t_out;
+        out.y = integrator_.state();
+        out.next_sample = k;
+        return out;
+      }
       continue;
     }
     ++totals_.events;

@@ -45,6 +45,9 @@ struct HybridCallbacks {
   // A root: which functions crossed (CvodeIntegrator's roots_found); y is the state there and
   // may be updated (kRestart, kStop).
   std::function<EventAction(double t, const std::vector<int>& roots_found, Eigen::VectorXd& y)> event;
+  // Optional, after each grid output: true ends the run there (HybridOutcome::stopped, at that
+  // output's time and state), for a system whose rest shows in its samples rather than in a root.
+  std::function<bool(double t)> stop_after_sample;
 };
 
 struct HybridOutcome {

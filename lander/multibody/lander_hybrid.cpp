@@ -51,6 +51,12 @@ double LengthScale(const LanderModel& m) {
   return length;
 }
 double PadWeightShare(const LanderModel& m) { return m.TotalMass() * m.gravity_m_s2 / kNumLegs; }
+// How long every joint must creep below the soil's ramp speed for the lander to be at rest: a
+// quarter of its time scale sqrt(L / g). A rocking lander passes through the ramp speed at a turning
+// point in 2 ramp / a; the dwell excludes every such passage with an acceleration a above
+// 8 ramp / sqrt(L / g) (7e-4 m/s^2 for the full-scale lander on the Moon, whose rocking runs at
+// 0.1-1 m/s^2).
+double CreepDwell(const LanderModel& m) { return 0.25 * std::sqrt(LengthScale(m) / m.gravity_m_s2); }
 
 bool IsCrushable(const LanderModel& m, const StateLayout& L, int i) {
   return L.stroke_slot[i] >= 0 && m.legs[i].absorber->kind == ShockAbsorber::Kind::kCrushable;
@@ -208,6 +214,25 @@ void LanderHybrid::Record(double t, const Eigen::VectorXd& s) {
   if (result_.first_touchdown_s)
     result_.max_body_deceleration_m_s2 = std::max(result_.max_body_deceleration_m_s2, x.a_WB_W.z());
   result_.trace.push_back(x);
+  TrackCreep(t, e.pose);
+}
+
+void LanderHybrid::TrackCreep(double t, const LanderPose& pose) {
+  bool creeping = options_.rest_at_creep && options_.stop_at_rest && result_.first_touchdown_s.has_value() &&
+                  model_.soil_ramp_speed_m_s > 0.0;
+  for (int i = 0; i < kNumLegs && creeping; ++i) creeping = pose.pads[i].v_WJ_W.norm() < model_.soil_ramp_speed_m_s;
+  if (!creeping) {
+    creeping_since_ = kUnknown;
+  } else if (std::isnan(creeping_since_)) {
+    creeping_since_ = t;
+  }
+}
+
+bool LanderHybrid::RestsAtCreep(double t) {
+  if (std::isnan(creeping_since_) || at_rest() || t - creeping_since_ < CreepDwell(model_)) return false;
+  result_.rest_time_s = t;
+  result_.events.push_back({t, LanderEventKind::kRest, -1});
+  return true;
 }
 
 void LanderHybrid::TipOver(double t, const Eigen::VectorXd& y) {

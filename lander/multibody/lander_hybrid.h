@@ -49,10 +49,16 @@ class LanderHybrid {
   // its centre of mass outside the support polygon).
   bool TouchdownsAtRelease(const Eigen::VectorXd& y);
   integ::EventAction OnEvent(double t, const std::vector<int>& found, Eigen::VectorXd& y);
+  // After each grid sample: true, and the rest recorded, once every ball joint has crept slower
+  // than the soil's ramp speed for the creep dwell (LanderRunOptions::rest_at_creep).
+  bool RestsAtCreep(double t);
   bool at_rest() const { return result_.rest_time_s.has_value(); }
   void Finish(double t, const Eigen::VectorXd& y);
 
  private:
+  // Whether every ball joint moves slower than the soil's ramp speed at this record, and since when
+  // (creeping_since_; RestsAtCreep).
+  void TrackCreep(double t, const LanderPose& pose);
   // Records a tip-over at t: the event and the support edge the lander goes over.
   void TipOver(double t, const Eigen::VectorXd& y);
   // Records the touchdowns; resets their pads' j (true if any changed: the run must restart).
@@ -86,6 +92,9 @@ class LanderHybrid {
   std::array<double, kNumLegs> sink_capacity_{kUnknown, kUnknown, kUnknown, kUnknown};
   // Each held pad's soil integrals at its pose since the last event, for its slide checks.
   std::array<HeldPadCapacity, kNumLegs> slide_capacity_;
+  // The time since which every recorded sample had its joints below the soil's ramp speed (NaN: the
+  // last one did not).
+  double creeping_since_ = kUnknown;
   static constexpr double kUnknown = std::numeric_limits<double>::quiet_NaN();
 };
 

@@ -34,6 +34,15 @@ struct LanderRunOptions {
   double soil_ramp_speed_m_s = kDefaultSoilRampSpeed_m_s;
   SoilRamp soil_ramp = SoilRamp::kElement;
   bool stop_at_rest = true;             // rest is static: the remaining time is not integrated
+  // With stop_at_rest: the lander is also at rest once every ball joint has moved slower than the
+  // soil's ramp speed at every sample for a quarter of its time scale sqrt(L / g) (L: the largest
+  // joint distance from the body's centre of mass). Why: below the ramp speed the soil's stress is a
+  // regularisation (LanderModel::soil_ramp_speed_m_s), so a lander whose free pads carry their loads
+  // while creeping there would stand in the rate-independent soil it models. Without this such
+  // landings ran on to their end unsettled, and the reference model's Newton iteration could stall
+  // on the creep (docs/lander_dynamics.md, "Rest at creep"). The dwell excludes a passage through
+  // low speed at a turning point of a rocking lander. false: rest only by holds, as before 2026-12-06.
+  bool rest_at_creep = true;
   int max_events = 20000;               // guard against Zeno behaviour
   // BDF with the lander's structured Jacobian (lander_jacobian.h), rtol 1e-7: a pad rocking on its
   // ball joint in the soil is stiff, so Adams' steps are limited by stability (2,000-12,000 per
@@ -132,7 +141,8 @@ enum class LanderEventKind {
   kStopReached,     // a pad reaches its ball joint's stop (ConeLimit; with joint_stops_as_modes)
   kStopLeft,        // ... and leaves it
   kTipOver,         // the lander tips over
-  kRest,            // the lander is static: every pad held, or the holds fix the body (HoldsFixTheStance)
+  kRest,            // the lander is static: every pad held, or the holds fix the body (HoldsFixTheStance),
+                    // or its joints crept below the soil's ramp speed (LanderRunOptions::rest_at_creep)
 };
 // The event's name in outputs (events.csv): "touchdown", "release_liftoff", "tip_over", ...
 const char* LanderEventName(LanderEventKind kind);

@@ -133,6 +133,7 @@ LanderRunResult SimulateLander(const LanderSetup& setup) {
   integ::HybridCallbacks calls;
   calls.sample = [&](double t, const Eigen::VectorXd& y) { lander.Record(t, y); };
   calls.event = [&](double t, const std::vector<int>& found, Eigen::VectorXd& y) { return lander.OnEvent(t, found, y); };
+  calls.stop_after_sample = [&](double t) { return lander.RestsAtCreep(t); };
   const integ::HybridOutcome end = run.Run(phase, calls);
 
   double t_end = end.t;

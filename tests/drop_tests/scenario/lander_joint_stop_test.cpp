@@ -10,6 +10,7 @@
 
 #include "drop_tests/scenario/lander_scenario_file.h"
 #include "drop_tests/scenario/lander_setup.h"
+#include "tests/drop_tests/scenario/lander_test_support.h"
 #include "rft/units.h"
 #include "tests/scratch_dir_test.h"
 
@@ -20,26 +21,15 @@ struct LanderJointStop : testing_scratch::ScratchDirTest {};
 
 TEST_F(LanderJointStop, APadHangingAgainstItsStopKeepsIt) {
   // CP under pads 1 and 3, LP under pads 2 and 4; 4.7 deg slope; 0.95 m/s at 23 deg from downhill.
-  const std::string path = Write("d1059.yaml", R"(schema_version: 1
-type: lander
-name: d1059
-lander: sutoh2017_lander_full_scale
-gravity_m_s2: 1.62
-ground:
-  slope_deg: 4.66822839223839
-  downhill_azimuth_deg: 0
-  soil: fjs1_lp
-  patches:
-    - {soil: fjs1_cp, under_pad: 1, half_width_m: 0.48}
-    - {soil: fjs1_cp, under_pad: 3, half_width_m: 0.48}
-initial:
-  touchdown_speed_m_s: 1.4
-  horizontal_velocity_m_s: [0.8757584566840529, 0.36701439598657976]
-  roll_deg: -0.0199678280703786
-  pitch_deg: 1.95383762765602
-  yaw_relative_to_slope_deg: 14.2883782034583
-simulation: {duration_s: 7.5, sample_rate_hz: 200, rtol: 1.0e-5, pad_angular_segments: 24, pad_spin_tolerance_factor: 10}
-)");
+  const std::string path = Write(
+      "d1059.yaml", test::LunarStudyLandingYaml({.name = "d1059",
+                                                 .slope_deg = 4.66822839223839,
+                                                 .vx_m_s = 0.8757584566840529,
+                                                 .vy_m_s = 0.36701439598657976,
+                                                 .roll_deg = -0.0199678280703786,
+                                                 .pitch_deg = 1.95383762765602,
+                                                 .yaw_relative_to_slope_deg = 14.2883782034583,
+                                                 .soils = {"fjs1_cp", "fjs1_lp", "fjs1_cp", "fjs1_lp"}}));
   const LanderRun run = RunLanderScenario(LoadLanderScenario(path));
   const lander::LanderRunResult& r = run.result;
   ASSERT_TRUE(r.rest_time_s.has_value());

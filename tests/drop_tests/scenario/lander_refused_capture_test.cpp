@@ -9,6 +9,7 @@
 
 #include "drop_tests/scenario/lander_scenario_file.h"
 #include "drop_tests/scenario/lander_setup.h"
+#include "tests/drop_tests/scenario/lander_test_support.h"
 #include "tests/scratch_dir_test.h"
 
 namespace touchdown::scenario {
@@ -18,27 +19,16 @@ struct LanderRefusedCapture : testing_scratch::ScratchDirTest {};
 
 TEST_F(LanderRefusedCapture, ASlidingPadRefusedByTheSoilDoesNotChatter) {
   // CP under pads 1-3, LP under pad 4; 3.2 deg slope; 0.78 m/s at 120 deg from downhill.
-  const std::string path = Write("d570.yaml", R"(schema_version: 1
-type: lander
-name: d570
-lander: sutoh2017_lander_full_scale
-gravity_m_s2: 1.62
-ground:
-  slope_deg: 3.21959043931777
-  downhill_azimuth_deg: 0
-  soil: fjs1_lp
-  patches:
-    - {soil: fjs1_cp, under_pad: 1, half_width_m: 0.48}
-    - {soil: fjs1_cp, under_pad: 2, half_width_m: 0.48}
-    - {soil: fjs1_cp, under_pad: 3, half_width_m: 0.48}
-initial:
-  touchdown_speed_m_s: 1.4
-  horizontal_velocity_m_s: [-0.38868591436571616, 0.6723119599012566]
-  roll_deg: 4.55408255858813
-  pitch_deg: 3.22154457057323
-  yaw_relative_to_slope_deg: 87.1448880945474
-simulation: {duration_s: 7.5, sample_rate_hz: 200, rtol: 1.0e-5, pad_angular_segments: 24}
-)");
+  const std::string path = Write(
+      "d570.yaml", test::LunarStudyLandingYaml({.name = "d570",
+                                                .slope_deg = 3.21959043931777,
+                                                .vx_m_s = -0.38868591436571616,
+                                                .vy_m_s = 0.6723119599012566,
+                                                .roll_deg = 4.55408255858813,
+                                                .pitch_deg = 3.22154457057323,
+                                                .yaw_relative_to_slope_deg = 87.1448880945474,
+                                                .soils = {"fjs1_cp", "fjs1_cp", "fjs1_cp", "fjs1_lp"},
+                                                .simulation_extra = ""}));
   const LanderRun run = RunLanderScenario(LoadLanderScenario(path));
   const lander::LanderRunResult& r = run.result;
   ASSERT_TRUE(r.rest_time_s.has_value());

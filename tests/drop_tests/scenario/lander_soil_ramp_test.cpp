@@ -12,6 +12,7 @@
 
 #include "drop_tests/scenario/lander_scenario_file.h"
 #include "drop_tests/scenario/lander_setup.h"
+#include "tests/drop_tests/scenario/lander_test_support.h"
 #include "drop_tests/catalog/catalog.h"
 #include "rft/input_error.h"
 #include "tests/scratch_dir_test.h"
@@ -25,28 +26,15 @@ struct LanderSoilRamp : testing_scratch::ScratchDirTest {};
 // fast model: at 1.37 s pads 1 and 2 are released from their holds (pad 1 slides, pad 2 lifts)
 // and ride in the soil at about 1 mm/s until 2.84 s.
 std::string CreepingLanding(const std::string& ramp_line) {
-  return R"(schema_version: 1
-type: lander
-name: d4556
-lander: sutoh2017_lander_full_scale
-gravity_m_s2: 1.62
-ground:
-  slope_deg: 18.11897526588294
-  downhill_azimuth_deg: 0
-  soil: fjs1_lp
-  patches:
-    - {soil: fjs1_lp, under_pad: 1, half_width_m: 0.48}
-    - {soil: fjs1_cp, under_pad: 2, half_width_m: 0.48}
-    - {soil: fjs1_cp, under_pad: 3, half_width_m: 0.48}
-    - {soil: fjs1_lp, under_pad: 4, half_width_m: 0.48}
-initial:
-  touchdown_speed_m_s: 1.4
-  horizontal_velocity_m_s: [0.15473637566993279, -0.6528304248081103]
-  roll_deg: 0.666572064580585
-  pitch_deg: -2.6517055588887084
-  yaw_relative_to_slope_deg: -3.504814719891325
-simulation: {duration_s: 7.5, sample_rate_hz: 200, rtol: 1.0e-5, pad_angular_segments: 24)" +
-         ramp_line + "}\n";
+  return test::LunarStudyLandingYaml({.name = "d4556",
+                                      .slope_deg = 18.11897526588294,
+                                      .vx_m_s = 0.15473637566993279,
+                                      .vy_m_s = -0.6528304248081103,
+                                      .roll_deg = 0.666572064580585,
+                                      .pitch_deg = -2.6517055588887084,
+                                      .yaw_relative_to_slope_deg = -3.504814719891325,
+                                      .soils = {"fjs1_lp", "fjs1_cp", "fjs1_cp", "fjs1_lp"},
+                                      .simulation_extra = ramp_line});
 }
 
 // Landing d5662 of data/studies/lunar_paper_lander.yaml, rebuilt from its record, on the study's
@@ -54,28 +42,15 @@ simulation: {duration_s: 7.5, sample_rate_hz: 200, rtol: 1.0e-5, pad_angular_seg
 // it, its spin held near 1-2 mrad/s by the soil, so its rim elements move at about the ramp's
 // speed.
 std::string StraddlingLanding(const std::string& ramp_line) {
-  return R"(schema_version: 1
-type: lander
-name: d5662
-lander: sutoh2017_lander_full_scale
-gravity_m_s2: 1.62
-ground:
-  slope_deg: 18.982766479648728
-  downhill_azimuth_deg: 0
-  soil: fjs1_lp
-  patches:
-    - {soil: fjs1_lp, under_pad: 1, half_width_m: 0.48}
-    - {soil: fjs1_cp, under_pad: 2, half_width_m: 0.48}
-    - {soil: fjs1_cp, under_pad: 3, half_width_m: 0.48}
-    - {soil: fjs1_lp, under_pad: 4, half_width_m: 0.48}
-initial:
-  touchdown_speed_m_s: 1.4
-  horizontal_velocity_m_s: [-0.07928644818744833, 0.07639691369489038]
-  roll_deg: -0.8423693044008429
-  pitch_deg: -1.7917025855985802
-  yaw_relative_to_slope_deg: 11.37737404498086
-simulation: {duration_s: 7.5, sample_rate_hz: 200, rtol: 1.0e-5, pad_angular_segments: 24)" +
-         ramp_line + "}\n";
+  return test::LunarStudyLandingYaml({.name = "d5662",
+                                      .slope_deg = 18.982766479648728,
+                                      .vx_m_s = -0.07928644818744833,
+                                      .vy_m_s = 0.07639691369489038,
+                                      .roll_deg = -0.8423693044008429,
+                                      .pitch_deg = -1.7917025855985802,
+                                      .yaw_relative_to_slope_deg = 11.37737404498086,
+                                      .soils = {"fjs1_lp", "fjs1_cp", "fjs1_cp", "fjs1_lp"},
+                                      .simulation_extra = ramp_line});
 }
 
 TEST_F(LanderSoilRamp, IsASimulationSettingThatReachesTheModel) {

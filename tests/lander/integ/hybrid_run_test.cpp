@@ -29,6 +29,36 @@ struct Ball {
 
 Eigen::VectorXd State(double h, double v) { return (Eigen::VectorXd(2) << h, v).finished(); }
 
+// A system whose rest shows in its samples (the lander's creep) ends the run after the sample that
+// shows it: at that grid time and state, the next sample the first not taken, no event counted.
+TEST(HybridRun, AStopAfterASampleEndsTheRunAtThatSample) {
+  Ball ball;
+  HybridRun run(ball.integrator);
+  run.Start(0.0, State(10.0, 0.0));
+  std::vector<double> sample_times;
+  HybridCallbacks calls;
+  calls.event = [](double, const std::vector<int>&, Eigen::VectorXd&) { return EventAction::kRestart; };
+  // Stops at the first sample whose speed exceeds 5 m/s: t = 0.51 s on a 100 Hz grid (5 / 9.81 = 0.5097).
+  double last_speed = 0.0;
+  calls.sample = [&](double t, const Eigen::VectorXd& y) {
+    sample_times.push_back(t);
+    last_speed = -y[1];
+  };
+  calls.stop_after_sample = [&](double) { return last_speed > 5.0; };
+  HybridPhase phase;
+  phase.sample_rate_hz = 100.0;
+  phase.end_s = 1.0;
+  const HybridOutcome out = run.Run(phase, calls);
+  ASSERT_TRUE(out.stopped);
+  EXPECT_EQ(out.t, 51 * (1.0 / 100.0));
+  EXPECT_EQ(out.next_sample, 52);
+  ASSERT_EQ(sample_times.size(), 51u);  // 0.01, ..., 0.51 (the grid starts at k = 1)
+  EXPECT_EQ(sample_times.back(), out.t);
+  EXPECT_NEAR(out.y[1], -kG * out.t, 1e-9);
+  EXPECT_NEAR(out.y[0], 10.0 - 0.5 * kG * out.t * out.t, 1e-9);
+  EXPECT_EQ(run.summary().events, 0);
+}
+
 TEST(HybridRun, BouncesAreEventsWithResetsAndSamplesStayOnTheGrid) {
   Ball ball;
   HybridRun run(ball.integrator);
