@@ -78,12 +78,12 @@ lander::LanderRunOptions Options(Model model) {
 void RunLanding(benchmark::State& state, const test::PaperLander& setup_in, const char* name, Model model) {
   test::PaperLander setup = setup_in;
   setup.options = Options(model);
-  if (getenv("TD_PADI")) {
+  if (model == Model::kDefault && getenv("TD_PADI")) {
     auto body = std::make_shared<geom::PadBody>(*setup.model.legs[0].pad);
     body->inertia_com_B *= atof(getenv("TD_PADI"));
     for (auto& leg : setup.model.legs) leg.pad = body;
   }
-  if (getenv("TD_SOIL_RAMP"))  // pad or element (lander::SoilRamp)
+  if (model == Model::kDefault && getenv("TD_SOIL_RAMP"))  // pad or element (lander::SoilRamp)
     setup.model.soil_ramp = std::string(getenv("TD_SOIL_RAMP")) == "pad" ? lander::SoilRamp::kPad : lander::SoilRamp::kElement;
   lander::LanderRunResult last;
   for (auto _ : state) {
