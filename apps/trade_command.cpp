@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "apps/command_help.h"
+#include "apps/option_checks.h"
 #include "apps/commands.h"
 #include "drop_tests/sweep/trade_run.h"
 #include "rft/physical_limits.h"
@@ -21,9 +22,9 @@ void AddTradeCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "trade", "Footpad trade study: run a sweep, tabulate and plot penetration, peak force, conversion rate, Pareto front");
   cmd->add_option("sweep", args->sweep, "sweep: a YAML file, or a bundled one by name (pad_trade)")->required();
-  cmd->add_option("--out", args->out, "output directory (results.sqlite, trade.csv, summary.json, plots/)")->required();
+  cmd->add_option("--out", args->out, "output directory (results.sqlite, trade.csv, summary.json, plots/)")->required()->check(NonEmptyPath());
   cmd->add_option("--threads", args->threads, "worker threads (default: every core)")
-      ->check(CLI::Range(0, limits::kMaxThreads));
+      ->check(NumberIn(0, limits::kMaxThreads));
   cmd->add_option("--model", args->model, "model file with per-soil zeta overrides");
   cmd->callback([args] {
     args->sweep = ResolveCommandInput("trade", args->sweep);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 
 #include "drop_tests/formats/plot_runner.h"
@@ -32,21 +33,77 @@ std::string Style() {
 
 std::string Figure(const std::string& base, const std::string& body, FigureSize size) {
   const std::string dims = " size " + std::to_string(size.width) + "," + std::to_string(size.height);
+  // Each file from the style afresh: a body that unsets what it no longer needs (a key strip's
+  // border, tics and grid) draws the SVG as it drew the PNG.
   return "reset\n" + Style() + "set terminal pngcairo noenhanced" + dims + " font 'sans,16'\nset output " +
-         GnuplotQuote(base + ".png") + "\n" + body + "set terminal svg noenhanced" + dims +
+         GnuplotQuote(base + ".png") + "\n" + body + "reset\n" + Style() + "set terminal svg noenhanced" + dims +
          " font 'sans,16'\nset output " + GnuplotQuote(base + ".svg") + "\n" + body + "unset output\n";
 }
 
 std::string FigurePng(const std::string& base) { return base + ".png"; }
 
+namespace {
+// `multiple` times 10^`exponent`, a negative power dividing: 0.013 is written "0.013", not the
+// neighbouring double 13 * 0.001 = 0.013000000000000001.
+double Scaled(double multiple, int exponent) {
+  return exponent >= 0 ? multiple * std::pow(10.0, exponent) : multiple / std::pow(10.0, -exponent);
+}
+int Decade(double v) { return static_cast<int>(std::floor(std::log10(v))); }
+}  // namespace
+
+double PowerOfTen(int exponent) { return Scaled(1.0, exponent); }
+
+double RoundScaleTop(double v) {
+  const int exponent = Decade(v);
+  for (const double m : {1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0})
+    if (Scaled(m, exponent) >= v * (1.0 - 1e-12)) return Scaled(m, exponent);
+  return Scaled(1.0, exponent + 1);
+}
+
+double AxisTopPast(double largest) {
+  for (int exponent = Decade(largest) - 2;; ++exponent)
+    for (const double m : {1.0, 2.0, 5.0})
+      if (largest / Scaled(m, exponent) <= 20.0)
+        return Scaled(std::ceil(1.03 * largest / Scaled(m, exponent) - 1e-9) * m, exponent);
+}
+
+double TicStep(double span, int max_tics) {
+  for (int exponent = Decade(span / max_tics) - 1;; ++exponent)
+    for (const double m : {1.0, 2.0, 5.0})
+      if (span / Scaled(m, exponent) <= max_tics) return Scaled(m, exponent);
+}
+
 std::string SeriesColour(int k) { return kPalette[static_cast<size_t>(k) % kPalette.size()]; }
 
-std::string PadColour(const std::string& pad_name) {
+namespace {
+// The colours no catalogue pad holds: the rest of Okabe-Ito, then four of Paul Tol's "muted" set
+// apart from every pad's and law's colour (wine, olive, indigo, teal), so a trade of a dozen pad
+// designs still tells them apart.
+constexpr std::array<const char*, 7> kSparePadColours = {"#E69F00", "#56B4E9", "#F0E442", "#882255",
+                                                          "#999933", "#332288", "#44AA99"};
+
+const char* CatalogueColour(const std::string& pad_name) {
   for (const Named& n : kPadColours)
     if (pad_name == n.name) return kPalette[n.index];
-  // Other pads: the colours no catalogue pad holds.
-  const size_t free_colours = kPalette.size() - kPadColours.size();
-  return kPalette[kPadColours.size() + StableHash(pad_name) % free_colours];
+  return nullptr;
+}
+}  // namespace
+
+std::string PadColour(const std::string& pad_name) {
+  if (const char* c = CatalogueColour(pad_name)) return c;
+  return kSparePadColours[StableHash(pad_name) % kSparePadColours.size()];
+}
+
+std::vector<std::string> PadColours(const std::vector<std::string>& pad_names) {
+  std::vector<std::string> colours;
+  size_t spare = 0;
+  for (const std::string& pad : pad_names) {
+    if (const char* c = CatalogueColour(pad))
+      colours.push_back(c);
+    else
+      colours.push_back(spare < kSparePadColours.size() ? kSparePadColours[spare++] : PadColour(pad));
+  }
+  return colours;
 }
 
 int SoilDash(const std::string& soil_name) {
@@ -113,8 +170,12 @@ std::string LawColour(const std::string& law) {
   return kPalette[4 + StableHash(law) % 3];
 }
 
+std::string ColourSoilLine(const std::string& colour, const std::string& soil_name) {
+  return "lw 2.5 lc rgb '" + colour + "' dt " + std::to_string(SoilDash(soil_name));
+}
+
 std::string PadSoilLine(const std::string& pad_name, const std::string& soil_name) {
-  return "lw 2.5 lc rgb '" + PadColour(pad_name) + "' dt " + std::to_string(SoilDash(soil_name));
+  return ColourSoilLine(PadColour(pad_name), soil_name);
 }
 
 }  // namespace touchdown::io

@@ -70,9 +70,38 @@ MapAxis ReadMapAxis(const io::YamlFields& map, const std::string& key, int bins,
   return axis;
 }
 
+// `contours: [p1, p2, ...]`: the probabilities the map figure draws contours at, each in (0, 1),
+// increasing, at most kMaxMapContours of them (a single number is one level).
+std::vector<double> ReadContours(const io::YamlFields& map) {
+  if (!map.Has("contours")) return kDefaultMapContours;
+  const std::vector<double> levels = map.NumberList("contours", /*allow_zero=*/false);
+  if (levels.size() > static_cast<size_t>(kMaxMapContours))
+    map.Fail("contours", "must list at most " + std::to_string(kMaxMapContours) + " probabilities, got " +
+                             std::to_string(levels.size()));
+  for (size_t i = 0; i < levels.size(); ++i) {
+    const std::string path = map.Path("contours") + "[" + std::to_string(i) + "]";
+    if (!(levels[i] < 1.0))
+      throw MakeInputError(map.file(), path, "must be a probability below 1, got " + io::FormatNumber(levels[i]));
+    if (i > 0 && !(levels[i] > levels[i - 1]))
+      throw MakeInputError(map.file(), path, "must be above the level before it (" + io::FormatNumber(levels[i - 1]) +
+                                                 "): the levels increase, got " + io::FormatNumber(levels[i]));
+  }
+  return levels;
+}
+
+// `max_drawn_landings: N`: the most landings the map figure draws one mark each for (0: none).
+int64_t ReadMaxDrawnLandings(const io::YamlFields& map) {
+  if (!map.Has("max_drawn_landings")) return kDefaultMaxDrawnLandings;
+  const double v = map.NonNegative("max_drawn_landings");
+  if (v != std::floor(v) || v > limits::kSamples.high)  // a study's landings are at most kSamples' bound
+    map.Fail("max_drawn_landings", "must be a whole number from 0 to " + io::FormatNumber(limits::kSamples.high) +
+                                       ", got " + io::FormatNumber(v));
+  return static_cast<int64_t>(v);
+}
+
 StudyMap ReadMap(const io::YamlFields& study, const sweep::SweepPlan& plan) {
   const io::YamlFields map = study.Child("map");
-  map.RequireOnly({"x", "y", "bins"});
+  map.RequireOnly({"x", "y", "bins", "contours", "max_drawn_landings"});
   int bins[2] = {10, 10};
   if (map.Has("bins")) {
     const YAML::Node n = map.node()["bins"];
@@ -90,6 +119,8 @@ StudyMap ReadMap(const io::YamlFields& study, const sweep::SweepPlan& plan) {
   }
   StudyMap m{ReadMapAxis(map, "x", bins[0], plan), ReadMapAxis(map, "y", bins[1], plan)};
   if (m.x.param == m.y.param) map.Fail("y", "must differ from x");
+  m.contours = ReadContours(map);
+  m.max_drawn_landings = ReadMaxDrawnLandings(map);
   return m;
 }
 

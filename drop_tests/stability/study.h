@@ -4,7 +4,8 @@
 // into DIR/results.sqlite, plus a `study` block saying how to analyse them:
 //
 //   study:
-//     map: {x: slope_deg, y: horizontal_speed_m_s, bins: [10, 10]}  # optional
+//     map: {x: slope_deg, y: horizontal_speed_m_s, bins: [10, 10],   # optional
+//           contours: [0.01, 0.1], max_drawn_landings: 500}           # the figure's (defaults)
 //     worst_cases: 5          # the largest max tilts listed with their conditions (default 5)
 //     max_tip_over_cases: 100 # tip-overs listed with their conditions, at most (default 100)
 //     recheck: {rtol: 1e-8, tilt_margin_deg: 2, unsettled: false}  # or `none` (study_followups.h)
@@ -18,6 +19,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "drop_tests/stability/soil_uncertainty.h"
 #include "drop_tests/sweep/sweep_spec.h"
@@ -34,8 +36,21 @@ struct MapAxis {
   int bins = 10;
 };
 
+// The map figure's default contour levels: the probabilities a lander team states its risk at
+// (one in a hundred, one in ten landings), drawn where the map crosses them.
+inline const std::vector<double> kDefaultMapContours = {0.01, 0.1};
+// At most this many contour levels: each is a line style of its own in one key.
+inline constexpr int kMaxMapContours = 5;
+// The map figure draws every landing as a mark only when the study has at most this many (and its
+// tip-overs only when they are at most this many): the map's frame is about 510 x 600 pixels and a
+// circle about 10 across, so 500 take about a tenth of it, where the 10,000 of the shipped lunar
+// study covered every cell's colour (docs/stability_studies.md, "The map figure").
+inline constexpr int64_t kDefaultMaxDrawnLandings = 500;
+
 struct StudyMap {
   MapAxis x, y;
+  std::vector<double> contours = kDefaultMapContours;  // probabilities in (0, 1), increasing
+  int64_t max_drawn_landings = kDefaultMaxDrawnLandings;
 };
 
 // The default margin of the re-checks' tilt criterion [deg]. Measured (2026-11-27) on the first 40

@@ -1,7 +1,7 @@
 #pragma once
 // The statistics of a stability study, each with its definition (docs/stability_studies.md):
 // percentiles, the exact binomial interval of a probability, exceedance curves, histograms, and
-// the p = 0.5 boundary of a binned probability map.
+// the contours of a binned probability map.
 #include <array>
 #include <cstdint>
 #include <vector>

@@ -235,7 +235,8 @@ nlohmann::json MapJson(const Study& study, const StudySummary& s) {
   const StudyMap& m = *study.map;
   return {{"x", sweep::SweepParamKey(m.x.param)}, {"y", sweep::SweepParamKey(m.y.param)},
           {"x_range", {m.x.low, m.x.high}},       {"y_range", {m.y.low, m.y.high}},
-          {"bins", {m.x.bins, m.y.bins}},         {"cells", cells}};
+          {"bins", {m.x.bins, m.y.bins}},         {"contours", m.contours},
+          {"max_drawn_landings", m.max_drawn_landings}, {"cells", cells}};
 }
 // Every soil the study's landings can stand on, with the model choices it carries, so that a
 // lunar study records how its soils were scaled to the study's gravity.

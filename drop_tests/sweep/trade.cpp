@@ -10,8 +10,6 @@
 #include "drop_tests/formats/json_number.h"
 #include "drop_tests/formats/output_path.h"
 #include "drop_tests/formats/dataset_csv.h"
-#include "drop_tests/formats/figure_style.h"
-#include "drop_tests/formats/plot_runner.h"
 #include "drop_tests/formats/yaml_fields.h"
 #include "rft/input_error.h"
 
@@ -140,67 +138,7 @@ nlohmann::json TradeJson(const std::vector<TradeRow>& rows, const TradeLimits& l
 }
 
 namespace {
-// One data file per (pad, soil) series against speed: speed, penetration, force, conversion rate,
-// feasible (1/0).
-std::vector<std::pair<std::string, std::string>> WriteSeries(const std::vector<TradeRow>& rows, const fs::path& dir) {
-  std::map<std::pair<std::string, std::string>, std::vector<const TradeRow*>> series;
-  for (const TradeRow& r : rows)
-    if (r.drops != r.failed) series[{r.pad, r.soil}].push_back(&r);
-  std::vector<std::pair<std::string, std::string>> files;  // file, "pad|soil"
-  for (auto& [key, list] : series) {
-    std::sort(list.begin(), list.end(), [](auto a, auto b) { return a->impact_speed_m_s < b->impact_speed_m_s; });
-    const std::string file = "plots/data/" + key.first + "__" + key.second + ".csv";
-    io::WriteFileAtomically((dir / file).string(), [&, &list = list](std::ostream& out) {
-      for (const TradeRow* r : list)
-        out << io::FormatNumber(r->impact_speed_m_s) << ',' << io::FormatNumber(r->final_penetration_m) << ','
-            << io::FormatNumber(r->peak_force_N) << ',' << io::FormatNumber(r->mean_conversion_rate_W) << ','
-            << (r->feasible ? 1 : 0) << '\n';
-    });
-    files.push_back({file, key.first + "|" + key.second});
-  }
-  return files;
-}
-
-struct Front {
-  std::string file;   // penetration, force, pad, sorted along the front
-  std::string label;  // its condition: "1 m/s, FJS-1 LP"
-  double end_mm = 0.0, end_N = 0.0;  // its last point, where the label goes
-};
-
-// One data file per condition's front.
-std::vector<Front> WriteFronts(const std::vector<TradeRow>& rows, const fs::path& dir) {
-  std::map<std::pair<std::string, double>, std::vector<const TradeRow*>> fronts;
-  for (const TradeRow& r : rows)
-    if (r.pareto) fronts[{r.soil, r.impact_speed_m_s}].push_back(&r);
-  std::vector<Front> files;
-  for (auto& [key, list] : fronts) {
-    std::sort(list.begin(), list.end(), [](auto a, auto b) { return a->final_penetration_m < b->final_penetration_m; });
-    const std::string file = "plots/data/front_" + std::to_string(files.size()) + ".csv";
-    io::WriteFileAtomically((dir / file).string(), [&, &list = list](std::ostream& out) {
-      for (const TradeRow* r : list)
-        out << io::FormatNumber(r->final_penetration_m) << ',' << io::FormatNumber(r->peak_force_N) << ',' << r->pad << '\n';
-    });
-    files.push_back({file, io::FormatNumber(key.second) + " m/s, " + io::SoilDisplayName(key.first),
-                     list.back()->final_penetration_m * 1e3, list.back()->peak_force_N});
-  }
-  return files;
-}
-
-std::string SeriesTitle(const std::string& key) {
-  return key.substr(0, key.find('|')) + ", " + io::SoilDisplayName(key.substr(key.find('|') + 1));
-}
-
-// Marks of a series: its soil's shape (circles LP, squares CP).
-std::string SeriesPoint(const std::string& key) {
-  return "pt " + std::to_string(io::SoilPoint(key.substr(key.find('|') + 1))) + " ps 1.2";
-}
-std::string SeriesLine(const std::string& key) { return io::PadSoilLine(key.substr(0, key.find('|')), key.substr(key.find('|') + 1)); }
-std::string SeriesColourOf(const std::string& key) { return io::PadColour(key.substr(0, key.find('|'))); }
-}  // namespace
-
-namespace {
 void WriteTradeFiles(const std::vector<TradeRow>& rows, const fs::path& dir, const TradeLimits& limits) {
-  fs::create_directories(dir / "plots" / "data");
   io::WriteFileAtomically((dir / "trade.csv").string(), [&](std::ostream& out) {
     out << "pad,soil,impact_speed_m_s,drops,failed,final_penetration_m,peak_force_N,mean_conversion_rate_W,pad_mass_kg,"
            "feasible,margin,pareto,best\n";
@@ -212,76 +150,7 @@ void WriteTradeFiles(const std::vector<TradeRow>& rows, const fs::path& dir, con
           << (r.best ? 1 : 0) << '\n';
   });
   io::WriteFileAtomically((dir / "summary.json").string(), [&](std::ostream& out) { out << TradeJson(rows, limits).dump(2) << '\n'; });
-
-  const std::vector<std::pair<std::string, std::string>> series = WriteSeries(rows, dir);
-  const std::vector<Front> fronts = WriteFronts(rows, dir);
-  // A sweep whose drops all failed has no series: each panel says so instead (a `plot` of
-  // nothing is a gnuplot error).
-  const std::string nothing = io::PlaceholderPlot("no completed drops: nothing to plot");
-  // The three panels side by side over a strip that holds the key alone (no key covers a panel's
-  // tics or label); the strip's "plot" draws nothing but the key, every series at NaN.
-  auto plot = [&](const std::string& columns, double limit) {
-    if (series.empty()) return nothing;
-    std::string s = "plot ";
-    for (size_t i = 0; i < series.size(); ++i)
-      s += (i ? ", \\\n     " : "") + io::GnuplotQuote(series[i].first) + " using " + columns + " with linespoints " +
-           SeriesLine(series[i].second) + " " + SeriesPoint(series[i].second) + " notitle";
-    if (std::isfinite(limit)) s += ", \\\n     " + io::FormatNumber(limit) + " with lines " + io::kPaperBandLine + " notitle";
-    return s + "\n";
-  };
-  std::string key = "set origin 0, 0\nset size 1, 0.2\nunset border\nunset tics\nunset grid\nunset xlabel\nunset ylabel\n"
-                    "set xrange [0:1]\nset yrange [0:1]\nset key center center horizontal Left reverse samplen 3 width 2\nplot ";
-  for (size_t i = 0; i < series.size(); ++i)
-    key += (i ? ", " : "") + std::string("NaN with linespoints ") + SeriesLine(series[i].second) + " " + SeriesPoint(series[i].second) +
-           " title " + io::GnuplotQuote(SeriesTitle(series[i].second));
-  if (limits.any()) key += ", NaN with lines " + std::string(io::kPaperBandLine) + " title 'design limit'";
-  const bool any_key = !series.empty();  // no series: the panels say so, and there is nothing to key
-  const std::string speeds =
-      "set multiplot title 'Footpad trade study against impact speed'\nset xlabel 'impact speed [m/s]'\nunset key\n"
-      "set size 0.333, 0.74\nset origin 0, 0.2\nset ylabel 'final penetration [mm]'\n" +
-      plot("1:($2*1000)", limits.max_final_penetration_m * 1e3) + "set origin 0.333, 0.2\nset ylabel 'peak force [N]'\n" +
-      plot("1:3", limits.max_peak_force_N) + "set origin 0.666, 0.2\nset ylabel 'energy-conversion rate [W]'\n" +
-      plot("1:4", INFINITY) + (any_key ? key + "\n" : std::string()) + "unset multiplot\n";
-  // The allowable region (lower left, inside the limits) shaded; feasible rows filled, the others open.
-  std::string pareto = "set title " +
-                       io::GnuplotQuote(limits.any() ? "Peak force against penetration (shaded: within the limits; filled: feasible; "
-                                                       "dashed: fronts)"
-                                                     : "Peak force against final penetration (no limits given: every pad is "
-                                                       "feasible); dashed: fronts") +
-                       "\nset xlabel 'final penetration [mm]'\nset ylabel 'peak force [N]'\nset key outside right top\n";
-  if (std::isfinite(limits.max_final_penetration_m) || std::isfinite(limits.max_peak_force_N))
-    pareto += "set object 1 rect from graph 0, graph 0 to " +
-              (std::isfinite(limits.max_final_penetration_m) ? "first " + io::FormatNumber(limits.max_final_penetration_m * 1e3)
-                                                               : std::string("graph 1")) +
-              ", " + (std::isfinite(limits.max_peak_force_N) ? "first " + io::FormatNumber(limits.max_peak_force_N) : std::string("graph 1")) +
-              " behind fc rgb '#e8f4e8' fs solid 1 noborder\n";
-  if (series.empty()) {
-    pareto += nothing;
-  } else {
-    pareto += "plot ";
-    for (size_t i = 0; i < series.size(); ++i) {
-      // Circles on loosely packed soil, squares on others; filled within the limits, open outside.
-      const std::string soil = series[i].second.substr(series[i].second.find('|') + 1);
-      const std::string file = io::GnuplotQuote(series[i].first), colour = " lc rgb '" + SeriesColourOf(series[i].second) + "'";
-      pareto += (i ? ", \\\n     " : "") + file + " using ($2*1000):($5 > 0 ? $3 : 1/0) with points pt " +
-                std::to_string(io::SoilPoint(soil)) + " ps 1.6" + colour + " title " +
-                io::GnuplotQuote(SeriesTitle(series[i].second)) + ", \\\n     " + file +
-                " using ($2*1000):($5 > 0 ? 1/0 : $3) with points pt " + std::to_string(io::SoilPoint(soil, false)) + " ps 1.6" +
-                colour + " notitle";
-    }
-    for (const Front& f : fronts)
-      pareto += ", \\\n     " + io::GnuplotQuote(f.file) + " using ($1*1000):2 with lines lw 1.2 dt 2 lc rgb '#000000' notitle";
-    pareto += "\n";
-    // Each front named by its condition at its far end.
-    std::string labels;
-    for (size_t i = 0; i < fronts.size(); ++i)
-      labels += "set label " + std::to_string(10 + i) + " " + io::GnuplotQuote(fronts[i].label) + " at first " +
-                io::FormatNumber(fronts[i].end_mm) + ", first " + io::FormatNumber(fronts[i].end_N) +
-                " offset 1,0.6 left front font ',12'\n";
-    pareto = labels + pareto;
-  }
-  const std::string gp = io::Figure("plots/trade", speeds, io::kFigureStrip) + io::Figure("plots/pareto", pareto, io::kFigureWide);
-  io::RenderPlots(dir, {"plots/trade.gp", gp, {io::FigurePng("plots/trade"), io::FigurePng("plots/pareto")}});
+  WriteTradePlots(rows, dir.string(), limits);
 }
 }  // namespace
 

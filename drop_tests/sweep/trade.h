@@ -15,9 +15,9 @@
 // to the limits is marked best: the design a review would pick when the front holds several.
 //
 // Outputs in DIR: trade.csv (rows, with feasible and pareto columns), summary.json, plots/trade
-// (three panels against speed), plots/pareto (peak force against penetration: the allowable
-// region, feasible pads filled, infeasible open, the fronts per condition), PNG and SVG, and
-// their gnuplot script plots/trade.gp.
+// (three panels against speed), plots/pareto (peak force against penetration, a panel per soil:
+// the allowable region, feasible pads filled, infeasible open, the fronts per condition), PNG and
+// SVG, and their gnuplot script plots/trade.gp.
 #include <cmath>
 #include <string>
 #include <vector>
@@ -64,6 +64,10 @@ std::vector<TradeRow> TradeTable(const std::vector<DropRecord>& records, const T
 // Marks rows[i].pareto for the feasible rows of one condition (indices), by the rule above.
 void MarkParetoFront(std::vector<TradeRow>& rows, const std::vector<size_t>& condition);
 nlohmann::json TradeJson(const std::vector<TradeRow>& rows, const TradeLimits& limits = {});
+// plots/trade and plots/pareto (PNG and SVG) and their script plots/trade.gp in `dir`
+// (trade_plots.cpp): a series of more than 30 speeds (a random-speed sweep) drawn as its drops'
+// dots and its speed bins' medians, the Pareto panels one per soil, fronts drawn up to 12 a soil.
+void WriteTradePlots(const std::vector<TradeRow>& rows, const std::string& dir, const TradeLimits& limits = {});
 // trade.csv, summary.json and plots/ in a sweep output, replacing an earlier trade analysis as one
 // whole (io::ReplaceDerivedOutputs).
 void WriteTradeOutputs(const std::vector<TradeRow>& rows, const std::string& out_dir, const TradeLimits& limits = {});

@@ -1,11 +1,13 @@
 // The one figure style: every figure written as PNG and SVG, and one meaning per colour, dash and
-// mark (pads, soils, a lander's pads, laws), with soils named as a reader knows them.
+// mark (pads, soils, a lander's pads, laws), with soils named as a reader knows them; ranges and
+// tics fitted to the data in round numbers.
 #include "drop_tests/formats/figure_style.h"
 
 #include <gtest/gtest.h>
 
 #include <set>
 #include <string>
+#include <vector>
 
 namespace touchdown::io {
 namespace {
@@ -17,6 +19,34 @@ TEST(FigureStyle, EveryFigureIsWrittenAsPngAndSvg) {
   EXPECT_NE(script.find("set terminal svg"), std::string::npos) << script;
   EXPECT_NE(script.find("set output 'plots/x.svg'"), std::string::npos) << script;
   EXPECT_EQ(FigurePng("plots/x"), "plots/x.png");
+  // The SVG is drawn from the style afresh, whatever the PNG's body left unset.
+  EXPECT_EQ(script.find("reset\n", script.find("set output 'plots/x.png'")) < script.find("set terminal svg"), true)
+      << script;
+}
+
+TEST(FigureStyle, RangesEndOnRoundNumbersJustPastTheData) {
+  // A colour scale's top: the round number at or above the highest value, at most a third above.
+  EXPECT_EQ(RoundScaleTop(0.176), 0.2);
+  EXPECT_EQ(RoundScaleTop(0.2), 0.2);
+  EXPECT_EQ(RoundScaleTop(0.21), 0.25);
+  EXPECT_EQ(RoundScaleTop(0.9), 1.0);
+  EXPECT_EQ(RoundScaleTop(0.0123), 0.015);
+  EXPECT_EQ(RoundScaleTop(7.1), 8.0);
+  // An axis from 0 a little past its largest value: 3 % or more past it, on a 1-2-5 step.
+  EXPECT_EQ(AxisTopPast(349.4), 360.0);  // the shipped lunar study's deepest pad [mm]
+  EXPECT_EQ(AxisTopPast(43.4), 45.0);    // its largest max tilt [deg]
+  EXPECT_EQ(AxisTopPast(100.0), 105.0);
+  EXPECT_EQ(AxisTopPast(0.0123), 0.013);
+  for (double v : {0.37, 1.0, 2.9, 57.0, 811.0, 12345.0}) {
+    EXPECT_GE(AxisTopPast(v), 1.03 * v) << v;
+    EXPECT_LE(AxisTopPast(v), 1.16 * v) << v;
+  }
+  EXPECT_EQ(PowerOfTen(-3), 0.001);
+  EXPECT_EQ(PowerOfTen(2), 100.0);
+  // Tics: 1, 2 or 5 times a power of ten, at most the number asked for.
+  EXPECT_EQ(TicStep(2.0, 5), 0.5);   // 0.5 to 2.5 m/s in a narrow panel: 0.5, 1, ... 2.5
+  EXPECT_EQ(TicStep(1.5, 5), 0.5);
+  EXPECT_EQ(TicStep(100.0, 5), 20.0);
 }
 
 TEST(FigureStyle, SoilsAreNamedAsInThePapers) {
@@ -61,6 +91,14 @@ TEST(FigureStyle, OneMeaningPerStyle) {
   EXPECT_NE(LawColour("dynamic"), LawColour("quasi_static"));
   EXPECT_NE(LawColour("bekker"), LawColour("dynamic"));
   EXPECT_EQ(PadSoilLine("curved", "fjs1_cp"), "lw 2.5 lc rgb '" + PadColour("curved") + "' dt 2");
+  // The pads of one figure: the catalogue's keep theirs, the others one colour each while the
+  // seven spare ones last (a trade of a pad family).
+  const std::vector<std::string> family = {"flat", "r35", "c4", "r40", "r45", "r55", "r60", "r65", "r70", "curved", "hex"};
+  const std::vector<std::string> colours = PadColours(family);
+  ASSERT_EQ(colours.size(), family.size());
+  EXPECT_EQ(colours[0], PadColour("flat"));
+  EXPECT_EQ(colours[9], PadColour("curved"));
+  EXPECT_EQ(std::set<std::string>(colours.begin(), colours.end()).size(), family.size());
 }
 
 }  // namespace

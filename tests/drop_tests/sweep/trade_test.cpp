@@ -1,5 +1,6 @@
 // The trade study: Pareto fronts against a hand-checked table, aggregation of drops into rows,
-// and `touchdown trade` on the paper's three pads (curved deepest and gentlest, as the paper).
+// `touchdown trade` on the paper's three pads (curved deepest and gentlest, as the paper), and its
+// figures at size (a random-speed sweep of thousands of drops, a trade of ten pads).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <set>
 #include <nlohmann/json.hpp>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -14,6 +16,7 @@
 #include "drop_tests/sweep/sweep_spec.h"
 #include "drop_tests/sweep/trade.h"
 #include "rft/input_error.h"
+#include "tests/scratch_dir_test.h"
 
 namespace {
 
@@ -169,6 +172,65 @@ TEST(TradeLander, LanderSweepIsRefusedBeforeAnythingRuns) {
   const std::string text((std::istreambuf_iterator<char>(err)), std::istreambuf_iterator<char>());
   EXPECT_NE(text.find("lander_speed_soil.yaml: lander: "), std::string::npos) << text;
   fs::remove_all(dir);
+}
+
+// A feasible row on its condition's front (the figures read only these flags and numbers).
+TradeRow PlotRow(const std::string& pad, const std::string& soil, double speed, double scale) {
+  TradeRow r;
+  r.pad = pad;
+  r.soil = soil;
+  r.impact_speed_m_s = speed;
+  r.drops = 1;
+  r.final_penetration_m = 0.01 * speed * scale;
+  r.peak_force_N = 200.0 * speed / scale;
+  r.mean_conversion_rate_W = 50.0 * speed * speed;
+  r.pareto = true;
+  return r;
+}
+
+struct TradePlotsTest : touchdown::testing_scratch::ScratchDirTest {};
+
+TEST_F(TradePlotsTest, RandomSpeedSweepDrawsDotsAndMediansAndNoFronts) {
+  // 1,800 drops at 300 random-like speeds (a row, and a condition, per drop), the mass varying
+  // under them: the rows of a series zigzag.
+  std::vector<TradeRow> rows;
+  for (int i = 0; i < 300; ++i)
+    for (const char* soil : {"fjs1_lp", "fjs1_cp"})
+      for (const char* pad : {"flat", "c4", "curved"})
+        rows.push_back(PlotRow(pad, soil, 0.5 + 2.0 * ((i * 37) % 300) / 300.0, 1.0 + 0.2 * (i % 5)));
+  WriteTradePlots(rows, dir_.string());
+  const std::string script = Slurp(dir_ / "plots" / "trade.gp");
+  EXPECT_TRUE(fs::is_regular_file(dir_ / "plots" / "data" / "flat__fjs1_lp__medians.csv"));
+  EXPECT_NE(script.find("'plots/data/flat__fjs1_lp__medians.csv' using 1:($2*1000) with lines"), std::string::npos) << script;
+  EXPECT_NE(script.find("'plots/data/flat__fjs1_lp.csv' using 1:($2*1000) with points pt 7 ps 0.35"), std::string::npos);
+  // Tics on the speed axis: 0.5 apart, not gnuplot's 0.2 that ran together.
+  EXPECT_NE(script.find("set xtics 0.5\n"), std::string::npos);
+  // The Pareto panels: one per soil, fronts not drawn past 12 a soil, and said so.
+  EXPECT_NE(script.find("set multiplot layout 1,2"), std::string::npos);
+  EXPECT_NE(script.find("FJS-1 LP: 300 conditions, fronts not drawn (drawn up to 12)"), std::string::npos);
+  EXPECT_EQ(script.find("front_"), std::string::npos);
+  EXPECT_TRUE(fs::is_regular_file(dir_ / "plots" / "pareto.png"));
+}
+
+TEST_F(TradePlotsTest, TenPadsTakeTenColoursAndTheKeyItsRows) {
+  std::vector<TradeRow> rows;
+  const std::vector<std::string> pads = {"flat", "c4", "curved", "r35", "r40", "r45", "r55", "r60", "r65", "r70"};
+  for (const std::string& pad : pads)
+    for (const double speed : {0.5, 1.0, 1.5}) rows.push_back(PlotRow(pad, "fjs1_lp", speed, 1.0 + pad.size() * 0.1));
+  WriteTradePlots(rows, dir_.string());
+  const std::string script = Slurp(dir_ / "plots" / "trade.gp");
+  std::set<std::string> colours;
+  for (const std::string& pad : pads) {
+    const std::string series = "'plots/data/" + pad + "__fjs1_lp.csv' using 1:($2*1000) with linespoints lw 2.5 lc rgb '";
+    const size_t at = script.find(series);
+    ASSERT_NE(at, std::string::npos) << pad;
+    colours.insert(script.substr(at + series.size(), 7));
+  }
+  EXPECT_EQ(colours.size(), pads.size());
+  // Ten series (and no limit) in rows of four: three rows, the figure a row (30 pixels) taller.
+  EXPECT_NE(script.find("size 1600,630"), std::string::npos) << script.substr(0, 400);
+  // The fronts of three speeds, each named by its speed.
+  EXPECT_NE(script.find("'1.5 m/s'"), std::string::npos);
 }
 
 }  // namespace
