@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "apps/commands.h"
+#include "apps/option_checks.h"
 #include "drop_tests/dataset/calibration_run.h"
 #include "drop_tests/targets/targets_calibration.h"
 #include "rft/input_error.h"
@@ -61,9 +62,10 @@ void AddCalibrateCommand(CLI::App& app) {
   cmd->add_option("--report", args->report,
                   "also write the fit's report as JSON to this file: with --targets every parameter and target; "
                   "for a dataset each soil's zeta with its covariance (what a stability study's soil_uncertainty "
-                  "draws from)");
+                  "draws from)")
+      ->check(NonEmptyPath());
   cmd->add_option("--threads", args->threads, "--targets: scenarios run side by side (default: every core)")
-      ->check(CLI::Range(1, 1024));
+      ->check(NumberIn(0, limits::kMaxThreads));
   cmd->add_flag("--evaluate-only", args->evaluate_only,
                 "--targets: no fit; every target at the parameters' start values (use: predict for all)");
   cmd->add_option("--param", args->param, "parameter to fit (zeta)")->check(CLI::IsMember({"zeta"}));
@@ -72,9 +74,10 @@ void AddCalibrateCommand(CLI::App& app) {
   cmd->add_option("--atmosphere", args->atmosphere, "use only drops in vacuum, air, or all (default)")
       ->check(CLI::IsMember({"vacuum", "air", "all"}));
   cmd->add_option("--confidence", args->confidence, "confidence level of the interval (default 0.95)")
-      ->check(CLI::Range(limits::kMinConfidence, limits::kMaxConfidence));
+      ->check(NumberIn(limits::kMinConfidence, limits::kMaxConfidence));
   cmd->add_option("--out", args->out, "model file to write (MODEL.yaml); with --law bekker a soil file (SOIL.yaml)")
-      ->required();
+      ->required()
+      ->check(NonEmptyPath());
   cmd->add_option("--law", args->law, "rft: fit zeta (default); bekker: fit Bekker's n, k_c and k_phi (a soil file)")
       ->check(CLI::IsMember(dataset::CalibrationLawNames()));
   cmd->add_option("--soil", args->soil, "--law bekker: only the drops on this soil (as drops.csv names it)");

@@ -4,6 +4,7 @@
 
 #include "apps/command_help.h"
 #include "apps/commands.h"
+#include "apps/option_checks.h"
 #include "drop_tests/formats/output_path.h"
 #include "drop_tests/scenario/campaign.h"
 
@@ -12,15 +13,21 @@ namespace touchdown::app {
 void AddCampaignCommand(CLI::App& app) {
   auto scenario_path = std::make_shared<std::string>();
   auto out_dir = std::make_shared<std::string>();
+  auto model = std::make_shared<std::string>();
   CLI::App* cmd = app.add_subcommand("campaign", "Run a list of drops from a scenario YAML; write tables, traces, plots");
   cmd->add_option("scenario", *scenario_path, "campaign scenario: a YAML file, or a bundled one by name (sutoh2017_single_footpad)")
       ->required();
-  cmd->add_option("--out", *out_dir, "output directory: new, empty, or an earlier campaign output (replaced whole when the run completes)")->required();
-  cmd->callback([scenario_path, out_dir] {
+  cmd->add_option("--out", *out_dir, "output directory: new, empty, or an earlier campaign output (replaced whole when the run completes)")->required()->check(NonEmptyPath());
+  cmd->add_option("--model", *model,
+                  "model file (MODEL.yaml: calibrated zeta per soil, effect terms) for every drop, as drop --model; "
+                  "replaces the campaign file's own model:")
+      ->check(NonEmptyPath());
+  cmd->callback([scenario_path, out_dir, model] {
     *scenario_path = ResolveCommandInput("campaign", *scenario_path);
-    const io::OutputTarget out(*out_dir, {*scenario_path});
+    const io::OutputTarget out(*out_dir, {*scenario_path, *model});
     io::CheckOutputDirectory(out, io::OutputKind::kCampaign);
-    const scenario::CampaignScenario scenario = scenario::LoadCampaignScenario(*scenario_path);
+    scenario::CampaignScenario scenario = scenario::LoadCampaignScenario(*scenario_path);
+    if (!model->empty()) scenario::SetCampaignModel(scenario, *model);
     const scenario::CampaignResult result = scenario::RunCampaignToDirectory(scenario, out, {io::ProgressMode::kAuto});  // traces streamed
     std::cout << std::left << std::setw(28) << "drop" << std::right << std::setw(12) << "depth [mm]" << std::setw(14)
               << "peak F [N]" << std::setw(14) << "t_rest [ms]" << "\n";

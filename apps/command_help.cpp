@@ -57,6 +57,7 @@ const std::vector<CommandExamples>& Examples() {
       {"stability",
        {"touchdown stability data/studies/lunar_paper_lander.yaml --out runs/lunar_quick --samples 10   # a quick look"}},
       {"validate", {"touchdown validate --out runs/validation"}},
+      {"import", {"touchdown import data/datasets/rig_daq_synthetic_raw/import.yaml --out runs/rig_daq"}},
   };
   return examples;
 }

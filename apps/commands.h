@@ -19,5 +19,6 @@ void AddSynthCommand(CLI::App& app);     // touchdown synth SPEC.yaml --out DATA
 void AddDiagnoseCommand(CLI::App& app);  // touchdown diagnose MEASURED_DIR [--model M] --out DIR
 void AddStabilityCommand(CLI::App& app);  // touchdown stability STUDY.yaml --out DIR [--samples N]
 void AddValidateCommand(CLI::App& app);   // touchdown validate [--sources DIR] [--out DIR]
+void AddImportCommand(CLI::App& app);     // touchdown import MAPPING.yaml --out DATASET_DIR
 
 }  // namespace touchdown::app

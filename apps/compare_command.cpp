@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/commands.h"
+#include "apps/option_checks.h"
 #include "drop_tests/formats/output_path.h"
 #include "drop_tests/dataset/compare.h"
 #include "drop_tests/dataset/sensor_sampling.h"
@@ -25,7 +26,7 @@ void AddCompareCommand(CLI::App& app) {
   auto* sim = cmd->add_option("--simulated", args->simulated,
                               "simulated dataset directory to join on the drop conditions (default: simulate here)");
   cmd->add_option("--model", args->model, "model file to simulate with (per-soil zeta and effect terms)")->excludes(sim);
-  cmd->add_option("--out", args->out, "output directory: new, empty, or an earlier output of this command (replaced whole when complete)")->required();
+  cmd->add_option("--out", args->out, "output directory: new, empty, or an earlier output of this command (replaced whole when complete)")->required()->check(NonEmptyPath());
   cmd->add_option("--sensor-sampling", args->sensor_sampling,
                   "how the measured drops were sampled, and so the drops simulated here are recorded: period_mean "
                   "(the mean over each sample period, as an averaging load cell records; default) or instantaneous "

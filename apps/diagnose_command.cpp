@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/commands.h"
+#include "apps/option_checks.h"
 #include "drop_tests/dataset/sensor_sampling.h"
 #include "drop_tests/formats/output_path.h"
 #include "drop_tests/util/work_pool.h"
@@ -16,11 +17,11 @@ namespace touchdown::app {
 
 namespace {
 struct DiagnoseArgs {
-  std::string measured, model, out, base = "rft", sensor_sampling = "period_mean";
+  std::string measured, model, out, base = "rft", sensor_sampling = "auto";
   int threads = 0;
   double min_step_explained = gap::DiagnoseOptions{}.min_step_explained;
   std::vector<std::string> fit_on;
-  bool no_pairs = false, law_candidate = false;
+  bool no_pairs = false, law_candidate = false, no_drop_nuisances = false;
 };
 }  // namespace
 
@@ -30,14 +31,14 @@ void AddDiagnoseCommand(CLI::App& app) {
       "diagnose", "Find where simulation and measurement disagree, name the missing effect, show the gap shrink");
   cmd->add_option("measured", args->measured, "measured dataset directory (drops.csv + traces)")->required();
   cmd->add_option("--model", args->model, "model file whose zeta per soil starts the calibration");
-  cmd->add_option("--out", args->out, "output directory: new, empty, or an earlier output of this command (replaced whole when complete)")->required();
+  cmd->add_option("--out", args->out, "output directory: new, empty, or an earlier output of this command (replaced whole when complete)")->required()->check(NonEmptyPath());
   cmd->add_option("--threads", args->threads, "threads (default: all cores)")
-      ->check(CLI::Range(0, limits::kMaxThreads));
+      ->check(NumberIn(0, limits::kMaxThreads));
   cmd->add_flag("--no-pairs", args->no_pairs, "name one term at most (no search again after the first, docs/model_gap.md)");
   cmd->add_option("--min-step-explained", args->min_step_explained,
                   "share of the held-out excess over the noise floor, left by the model so far, that a term must "
                   "explain to be added (default 0.5; 0: the rule before it, docs/model_gap.md)")
-      ->check(CLI::Range(0.0, 1.0));
+      ->check(NumberIn(0.0, 1.0));
   cmd->add_option("--fit-on", args->fit_on,
                   "drop ids (comma-separated or repeated) every model is fitted on; every other drop is held out and "
                   "predicted (default: every third drop by speed is held out, docs/model_gap.md)")
@@ -49,12 +50,16 @@ void AddDiagnoseCommand(CLI::App& app) {
   cmd->add_flag("--law-candidate", args->law_candidate,
                 "also fit the Bekker law per soil on the training drops and score it (docs/bekker_soil.md)");
   cmd->add_option("--sensor-sampling", args->sensor_sampling,
-                  "how the simulated drops are sampled to compare with the measured ones, as the measured ones were: "
-                  "period_mean (the mean over each sample period, as an averaging load cell records; default) or "
-                  "instantaneous (the value at each sample time; docs/model_gap.md)")
-      ->check(CLI::IsMember(dataset::SensorSamplingNames()));
+                  "how the measured drops were sampled: auto (default: inferred from the data, with an anti-alias "
+                  "low-pass and a ringing load cell among the candidates), or, as an override, period_mean (the "
+                  "mean over each sample period) or instantaneous (the value at each sample time); docs/model_gap.md")
+      ->check(CLI::IsMember(gap::SensorSamplingOptionNames()));
+  cmd->add_flag("--no-drop-nuisances", args->no_drop_nuisances,
+                "fit every drop at its nominal strength, speed and touchdown time (the workflow before per-drop "
+                "scatter was modelled; docs/model_gap.md)");
   cmd->callback([args] {
     gap::DiagnoseOptions o;
+    o.drop_nuisances = !args->no_drop_nuisances;
     o.threads = io::ThreadsFor(args->threads);
     o.try_pairs = !args->no_pairs;
     o.min_step_explained = args->min_step_explained;
@@ -62,7 +67,7 @@ void AddDiagnoseCommand(CLI::App& app) {
     o.law_candidate = args->law_candidate;
     o.fit_on = args->fit_on;
     o.base = gap::ParseDiagnoseBase(args->base, "command line", "--base");
-    o.sensor_sampling = *dataset::ParseSensorSampling(args->sensor_sampling);  // checked by IsMember
+    o.sensor_sampling = dataset::ParseSensorSampling(args->sensor_sampling);  // nullopt: auto (checked by IsMember)
     if (!args->model.empty()) o.start_model = model::LoadModelFile(args->model);
     const gap::Diagnosis d = gap::DiagnoseToDirectory(args->measured, o, {args->out, {args->measured, args->model}});
     const nlohmann::json j = gap::DiagnosisJson(d);

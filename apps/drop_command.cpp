@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/commands.h"
+#include "apps/option_checks.h"
 #include "drop_tests/drop/drop_request.h"
 #include "drop_tests/drop/drop_vtk.h"
 #include "drop_tests/catalog/catalog.h"
@@ -31,7 +32,7 @@ void AddDropCommand(CLI::App& app) {
   cmd->add_option("--mass", args->mass_kg, "dropped mass [kg] (default: the pad's mass)");
   cmd->add_option("--gravity", args->gravity_m_s2, "gravity [m/s^2] (default " + io::FormatNumber(rft::kEarthGravity_m_s2) + ")");
   cmd->add_option("--zeta", args->zeta_N_cm3, "override the soil's RFT scaling factor zeta [N/cm^3]");
-  cmd->add_option("--trace", args->trace, "write the trace CSV (t_s,penetration_m,velocity_m_s,force_N)");
+  cmd->add_option("--trace", args->trace, "write the trace CSV (t_s,penetration_m,velocity_m_s,force_N)")->check(NonEmptyPath());
   cmd->add_option("--model", args->model,
                   "model file (MODEL.yaml, from calibrate or diagnose): per-soil zeta overrides and effect terms");
   cmd->add_flag("--free", args->free, "a free 6-DOF pad (3D contact) instead of the rig's vertical rod");
@@ -48,7 +49,8 @@ void AddDropCommand(CLI::App& app) {
                   "li2013, agarwal2023 (--free only) or bekker (default: the soil's own law; docs/bekker_soil.md)");
   cmd->add_option("--vtk", args->vtk,
                   "--free: write a ParaView time series into this new directory (drop.pvd: the pad with its "
-                  "per-element soil stresses at every trace sample, and the soil surface; docs/paraview.md)");
+                  "per-element soil stresses at every trace sample, and the soil surface; docs/paraview.md)")
+      ->check(NonEmptyPath());
   cmd->callback([args] {
     drop::DropRequest r = *args;
     r.omega_rad_s = {args->omega[0], args->omega[1], args->omega[2]};

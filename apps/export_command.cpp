@@ -2,6 +2,7 @@
 #include <memory>
 
 #include "apps/commands.h"
+#include "apps/option_checks.h"
 #include "drop_tests/formats/output_path.h"
 #include "drop_tests/sweep/sweep_export.h"
 #include "rft/physical_limits.h"
@@ -14,11 +15,11 @@ void AddExportCommand(CLI::App& app) {
   auto options = std::make_shared<sweep::ExportOptions>();
   CLI::App* cmd = app.add_subcommand("export", "Write a sweep's results (DIR/results.sqlite) in the dataset format");
   cmd->add_option("dir", *dir, "sweep output directory")->required();
-  cmd->add_option("--to", *to, "dataset directory: new, empty, or an earlier dataset touchdown wrote (replaced whole when complete)")->required();
+  cmd->add_option("--to", *to, "dataset directory: new, empty, or an earlier dataset touchdown wrote (replaced whole when complete)")->required()->check(NonEmptyPath());
   cmd->add_flag("--full-traces", options->full_traces,
                 "simulate every drop again for its full 1 kHz trace (default: stored traces; re-simulated if none)");
   cmd->add_option("--threads", options->threads, "threads for re-simulated traces (default: every core)")
-      ->check(CLI::Range(0, limits::kMaxThreads));
+      ->check(NumberIn(0, limits::kMaxThreads));
   cmd->callback([dir, to, options] {
     const io::OutputTarget out(*to, {*dir});
     io::CheckOutputDirectory(out, io::OutputKind::kDataset);

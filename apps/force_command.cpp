@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/commands.h"
+#include "apps/option_checks.h"
 #include "drop_tests/drop/force_request.h"
 #include "drop_tests/formats/dataset_csv.h"  // io::FormatNumber
 #include "drop_tests/formats/output_path.h"
@@ -42,7 +43,8 @@ void AddForceCommand(CLI::App& app) {
                 "the force is quasi-static and --velocity gives only the direction of motion");
   cmd->add_option("--vtk", a->vtk,
                   "write the pad at its pose with the soil stress on each surface element to this new .vtp file "
-                  "(ParaView; docs/paraview.md)");
+                  "(ParaView; docs/paraview.md)")
+      ->check(NonEmptyPath());
   cmd->callback([a] {
     drop::ForceRequest r = *a;
     r.velocity_m_s = {a->velocity[0], a->velocity[1], a->velocity[2]};

@@ -6,6 +6,8 @@
 
 #include "apps/command_help.h"
 #include "apps/commands.h"
+#include "lander/integ/cvode_integrator.h"
+#include "apps/option_checks.h"
 #include "drop_tests/formats/output_path.h"
 #include "drop_tests/scenario/lander_outputs.h"
 #include "drop_tests/scenario/lander_scenario_file.h"
@@ -28,7 +30,7 @@ void AddLanderCommand(CLI::App& app) {
   cmd->add_option("--out", args->out, "output directory (summary.json, trace.csv, events.csv, plots/, "
                                       "scenario_resolved.yaml, vtk/lander.pvd for ParaView: docs/paraview.md), "
                                       "written complete or not at all")
-      ->required();
+      ->required()->check(NonEmptyPath());
   cmd->add_option("--model", args->model,
                   "model file (MODEL.yaml): zeta per soil and every effect term in its 3D form (gas_cushion on "
                   "beds in air only; sensor_offset, a measurement effect, is not applied: summary.json's "
@@ -47,8 +49,19 @@ void AddLanderCommand(CLI::App& app) {
       scenario.model = model::LoadModelFile(args->model);
       setup.reset();
     }
-    const scenario::LanderRun run = setup ? scenario::RunLanderScenario(scenario, std::move(*setup))
-                                          : scenario::RunLanderScenario(scenario);
+    const scenario::LanderRun run = [&] {
+      try {
+        return setup ? scenario::RunLanderScenario(scenario, std::move(*setup)) : scenario::RunLanderScenario(scenario);
+      } catch (const integ::LimitExceeded& e) {  // which of the scenario's keys sets the limit
+        if (e.limit() != "max_rhs_evaluations") throw;
+        throw integ::LimitExceeded("lander scenario " + scenario.name + " (" + scenario.source +
+                                       "): stopped at its deterministic work limit, " +
+                                       std::to_string(static_cast<long long>(e.value())) +
+                                       " right-hand-side evaluations (simulation.max_evaluations in the scenario; a "
+                                       "stiff joint stop or a chattering contact needs many)",
+                                   e.limit(), e.value());
+      }
+    }();
     scenario::WriteLanderOutputs(run, out, {.vtk = !args->no_vtk});
     const nlohmann::json j = scenario::LanderSummaryJson(run);
     std::cout << j.dump(2) << std::endl;

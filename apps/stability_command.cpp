@@ -10,6 +10,7 @@
 
 #include "apps/command_help.h"
 #include "apps/commands.h"
+#include "apps/option_checks.h"
 #include "apps/sweep_run_flags.h"
 #include "drop_tests/formats/dataset_csv.h"
 #include "drop_tests/formats/output_path.h"
@@ -241,7 +242,8 @@ void AddStabilityCommand(CLI::App& app) {
   cmd->add_option("study", args->study, "study (type: stability): a YAML file, or a bundled one by name (lunar_paper_lander)")
       ->required();
   cmd->add_option("--out", args->out, "output directory (results.sqlite, summary.json, *.csv, plots/); a rerun resumes")
-      ->required();
+      ->required()
+      ->check(NonEmptyPath());
   CLI::Option* samples = cmd->add_option(
       "--samples", args->samples,
       "random samples instead of the study's, 1 to 1e9 (a quick look; recorded in summary.json)");

@@ -5,6 +5,7 @@
 
 #include "apps/command_help.h"
 #include "apps/commands.h"
+#include "apps/option_checks.h"
 #include "apps/sweep_run_flags.h"
 #include "drop_tests/formats/output_path.h"
 #include "drop_tests/sweep/sweep.h"
@@ -23,7 +24,8 @@ void AddSweepCommand(CLI::App& app) {
       "sweep", "Run a sweep of drops (grids, random samples) into DIR/results.sqlite; restartable; threads, MPI, shards");
   cmd->add_option("sweep", args->sweep, "sweep or study: a YAML file, or a bundled one by name (pad_trade)")->required();
   cmd->add_option("--out", args->out, "output directory; a restart with the same command finishes the missing drops")
-      ->required();
+      ->required()
+      ->check(NonEmptyPath());
   AddSweepRunFlags(cmd, &args->run, "drops");
   cmd->callback([args] {
     args->sweep = ResolveCommandInput("sweep", args->sweep);

@@ -1,4 +1,5 @@
 #include "apps/sweep_run_flags.h"
+#include "apps/option_checks.h"
 
 #include <chrono>
 #include <cmath>
@@ -11,14 +12,14 @@ namespace touchdown::app {
 
 void AddSweepRunFlags(CLI::App* cmd, SweepRunFlags* flags, const std::string& runs) {
   cmd->add_option("--threads", flags->threads, "worker threads per process (default: every core)")
-      ->check(CLI::Range(0, limits::kMaxThreads));
+      ->check(NumberIn(0, limits::kMaxThreads));
   cmd->add_option("--shard", flags->shard,
                   "I/N: run only " + runs + " with index mod N == I (job arrays; combine the shards with merge)");
   cmd->add_option("--model", flags->model, "model file (MODEL.yaml) with per-soil zeta overrides");
   cmd->add_option("--progress", flags->progress, "auto (bar on a terminal, else lines), bar, lines or none")
       ->check(CLI::IsMember({"auto", "bar", "lines", "none"}));
   cmd->add_option("--batch", flags->batch, runs + " per database transaction (default 512)")
-      ->check(CLI::Range(1, 1000000));  // a bounded range: CLI::PositiveNumber prints DBL_MAX as its range
+      ->check(NumberIn(1, 1000000));  // a bounded range: CLI::PositiveNumber prints DBL_MAX as its range
   flags->max_evaluations = cmd->add_option(
       "--max-drop-evaluations", flags->max_drop_evaluations,
       "work limit per run: right-hand-side evaluations of its integrator, 0 = none (default: the file's "

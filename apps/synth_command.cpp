@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "apps/commands.h"
+#include "apps/option_checks.h"
 #include "drop_tests/formats/output_path.h"
 #include "drop_tests/dataset/synth.h"
 
@@ -19,7 +20,7 @@ void AddSynthCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "synth", "Make a SYNTHETIC measured-like dataset (noise, drift, quantisation; optionally a hidden effect)");
   cmd->add_option("spec", args->spec, "synth spec YAML (see docs/model_gap.md)")->required();
-  cmd->add_option("--out", args->out, "dataset directory: new, empty, or an earlier dataset touchdown wrote (replaced whole when complete)")->required();
+  cmd->add_option("--out", args->out, "dataset directory: new, empty, or an earlier dataset touchdown wrote (replaced whole when complete)")->required()->check(NonEmptyPath());
   cmd->callback([args] {
     const dataset::SynthRun run = dataset::SynthesizeToDirectory(args->spec, {args->out, {args->spec}});
     const dataset::SynthSpec& spec = run.spec;

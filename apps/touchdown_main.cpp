@@ -10,6 +10,7 @@
 
 #include "apps/command_help.h"
 #include "apps/commands.h"
+#include "drop_tests/formats/output_path.h"
 #include "lander/integ/cvode_integrator.h"
 #include "rft/input_error.h"
 
@@ -33,6 +34,7 @@ int main(int argc, char** argv) {
   touchdown::app::AddDiagnoseCommand(app);
   touchdown::app::AddStabilityCommand(app);
   touchdown::app::AddValidateCommand(app);
+  touchdown::app::AddImportCommand(app);
   touchdown::app::AddHelpFooters(app);
   // `touchdown` alone asks what there is: the command list, as --help shows it, and success.
   // Nothing was given that could be wrong (an empty "$VAR" is an argument, and an unknown command).
@@ -54,26 +56,36 @@ int main(int argc, char** argv) {
     // An option nobody defines is the mistake to name first: CLI11 reports a missing required
     // option before it, so `drop --sped 1` would say only "--speed is required".
     std::cerr << "touchdown: " << touchdown::app::UnknownOptionMessage(app).value_or(e.what()) << "\n";
+    touchdown::io::RemoveUnusedNewOutputDirectories();
     return 2;
   } catch (const touchdown::InputError& e) {
     std::cerr << "touchdown: " << e.what() << "\n";
+    touchdown::io::RemoveUnusedNewOutputDirectories();
     return 2;
   } catch (const touchdown::integ::IntegrationFailure& e) {
     std::cerr << "touchdown: integration failed: " << e.what() << "\n";
+    touchdown::io::RemoveUnusedNewOutputDirectories();
+    return 3;
+  } catch (const touchdown::SolverFailure& e) {
+    std::cerr << "touchdown: " << e.what() << "\n";
+    touchdown::io::RemoveUnusedNewOutputDirectories();
     return 3;
   } catch (const std::filesystem::filesystem_error& e) {
     // A path the OS refused (read-only or full file system, permissions, a loop): the user's
     // to fix, so the path and the OS reason, exit 2.
     std::cerr << "touchdown: " << (e.path1().empty() ? std::string("a path") : e.path1().string()) << ": "
               << e.code().message() << "\n";
+    touchdown::io::RemoveUnusedNewOutputDirectories();
     return 2;
   } catch (const std::bad_alloc&) {
     std::cerr << "touchdown: out of memory: the input asks for more than this machine holds (fewer drops, "
                  "samples or trace points)\n";
+    touchdown::io::RemoveUnusedNewOutputDirectories();
     return 2;
   } catch (const std::exception& e) {
     // Anything else is a bug in touchdown (please report it with the command line).
     std::cerr << "touchdown: internal error: " << e.what() << "\n";
+    touchdown::io::RemoveUnusedNewOutputDirectories();
     return 1;
   }
   return 0;

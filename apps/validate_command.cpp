@@ -2,6 +2,7 @@
 #include <memory>
 
 #include "apps/commands.h"
+#include "apps/option_checks.h"
 #include "drop_tests/catalog/catalog.h"
 #include "drop_tests/formats/output_path.h"
 #include "drop_tests/validation/validate.h"
@@ -22,7 +23,7 @@ void AddValidateCommand(CLI::App& app) {
       "dynamic RFT), error, and whether each measured trend is reproduced (docs/validation.md)");
   cmd->add_option("--sources", args->sources,
                   "directory of validation sources and dynamic_rft.yaml (default: the data's validation/)");
-  cmd->add_option("--out", args->out, "output directory (validation.json, validation.md, plots/)");
+  cmd->add_option("--out", args->out, "output directory (validation.json, validation.md, plots/)")->check(NonEmptyPath());
   cmd->callback([args] {
     const validation::ValidationResult result = validation::ValidateSources(args->sources, args->out);
     std::cout << validation::ValidationSummary(result);

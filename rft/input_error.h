@@ -12,6 +12,14 @@ class InputError : public std::runtime_error {
   explicit InputError(const std::string& message) : std::runtime_error(message) {}
 };
 
+// A fit's solver failed on input that was valid (its cost could not be evaluated). `main` prints
+// the one line and exits with status 3, as for integ::IntegrationFailure (lander/integ keeps its
+// own type: it uses no other module); the message says what failed and why.
+class SolverFailure : public std::runtime_error {
+ public:
+  explicit SolverFailure(const std::string& message) : std::runtime_error(message) {}
+};
+
 // "file: field: message (value)" - the single shape every input error takes.
 inline InputError MakeInputError(const std::string& file, const std::string& field,
                                  const std::string& message) {

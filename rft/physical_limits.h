@@ -44,8 +44,11 @@ inline constexpr Range kThreads{"threads", 0.0, double(kMaxThreads), false};
 
 // Bodies and the world they land in. Each bound is far beyond any lander, and keeps the
 // products the dynamics forms (m g, k x, I w^2) finite and the integrator's tolerances meaningful.
-inline constexpr Range kGravity_m_s2{"m/s^2", 0.0, 1000.0, true};  // ~100 g; the Sun's photosphere is 274
-inline constexpr Range kMass_kg{"kg", 0.0, 1e6, true};             // a 1000 t lander, a pad, a dropped mass
+// The low ends: a 1 mg dropped mass and 1e-6 m/s^2, below the surface gravity of the smallest bodies
+// landed on (comet 67P about 2e-4, asteroid Itokawa about 1e-4 m/s^2). Down at denormal values
+// (1e-320) every product with them underflows and the integrator fails instead of the input.
+inline constexpr Range kGravity_m_s2{"m/s^2", 1e-6, 1000.0, false};  // ~100 g; the Sun's photosphere is 274
+inline constexpr Range kMass_kg{"kg", 1e-6, 1e6, false};             // a 1000 t lander, a pad, a dropped mass
 inline constexpr Range kLanderSize_mm{"mm", 0.0, 1e5, false};      // CoG height, leg radii, stroke: 100 m
 // A principal moment of inertia: the mass bound times the size bound squared (1e6 kg x (100 m)^2).
 inline constexpr Range kInertia_kg_m2{"kg m^2", 0.0, 1e10, true};
@@ -92,6 +95,8 @@ inline constexpr Range kSamples{"samples", 1.0, 1e9, false};
 // integrator, the same on any machine under any load; far above what any shipped drop or landing
 // needs (bench/sweep_bench.cpp and the sweep limit tests measure them).
 inline constexpr long kDefaultMaxRunEvaluations = 2000000;
+// The largest such limit a file may set (a sweep's max_drop_evaluations, a landing's max_evaluations).
+inline constexpr double kMaxRunEvaluations = 1e15;
 
 // Resolution and size caps, checked at load so that a hand-written 1e9 is refused instead of
 // exhausting memory or running for days; each is far above what a shipped file asks for.
@@ -134,9 +139,6 @@ inline constexpr int kMaxStudyListed = 100000;
 inline constexpr double kMaxWholeNumber = 1e9;
 inline constexpr int kMaxYamlDepth = 64;
 inline constexpr long kMaxYamlNodes = 1'000'000;
-// A dataset's drop id names its trace files: most filesystems take names of up to 255 bytes, and
-// the id gets a suffix ("_measured.csv").
-inline constexpr std::size_t kMaxDropIdBytes = 200;
 // A fit's confidence level (calibrate --confidence, touchdown.calibrate's `confidence`).
 inline constexpr double kMinConfidence = 0.5, kMaxConfidence = 0.9999;
 

@@ -11,6 +11,7 @@
 #include "rft/gas_cushion_term.h"
 #include "rft/input_error.h"
 #include "rft/li2013_3d.h"
+#include "rft/physical_limits.h"
 #include "rft/rate_damping_term.h"
 
 namespace touchdown::rft {
@@ -86,6 +87,11 @@ std::unique_ptr<StressLaw3D> MakeStressLaw3D(LawKind law, const SoilParameters& 
             soil, "surface_friction", "must be non-negative", soil.surface_friction_coefficient);
     const double xi_n = AgarwalScalingXi(soil.bulk_density_kg_m3, gravity_m_s2, std::tan(phi));
     Require(xi_n > 0.0, soil, "internal_friction_angle", "gives a non-positive xi_n", xi_n);
+    // The scaling is a cubic in tan(phi), unbounded as phi nears 90 deg: its xi_n meets the range a
+    // given zeta must (N/cm^3 in the message, as a soil file gives it).
+    Require(limits::Within(limits::kZeta_N_cm3, xi_n * 1e-6), soil, "internal_friction_angle",
+            "the agarwal2023 scaling of this density and friction angle gives xi_n outside 0 to 1e4 N/cm^3",
+            xi_n * 1e-6);
     quasi_static = std::make_unique<Agarwal2023Law>(xi_n, soil.surface_friction_coefficient);
   }
 

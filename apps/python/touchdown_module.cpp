@@ -20,11 +20,14 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <regex>
 #include <string>
 #include <thread>
 
 #include "drop_tests/dataset/calibration_run.h"
 #include "drop_tests/dataset/compare.h"
+#include "drop_tests/dataset/dataset.h"
+#include "drop_tests/dataset/daq_import.h"
 #include "drop_tests/dataset/sensor_sampling.h"
 #include "drop_tests/dataset/synth.h"
 #include "drop_tests/gap/diagnose.h"
@@ -265,12 +268,14 @@ py::dict Sweep(const std::string& plan_arg, const std::string& out, const std::s
 }
 
 // touchdown campaign: the drops into `out` (a new directory); its summary.json's text.
-std::string Campaign(const std::string& scenario_arg, const std::string& out) {
+std::string Campaign(const std::string& scenario_arg, const std::string& out, const std::string& model) {
   py::gil_scoped_release unlocked;
   const std::string scenario_path = io::ResolveInputDocument(io::InputDocument::kCampaign, scenario_arg);
-  const io::OutputTarget target(out, {scenario_path});
+  const io::OutputTarget target(out, {scenario_path, model});
   io::CheckOutputDirectory(target, io::OutputKind::kCampaign);
-  scenario::RunCampaignToDirectory(scenario::LoadCampaignScenario(scenario_path), target);
+  scenario::CampaignScenario scenario = scenario::LoadCampaignScenario(scenario_path);
+  if (!model.empty()) scenario::SetCampaignModel(scenario, model);
+  scenario::RunCampaignToDirectory(scenario, target);
   std::ifstream in(std::filesystem::path(out) / "summary.json");
   return std::string(std::istreambuf_iterator<char>(in), {});
 }
@@ -379,14 +384,15 @@ std::string Validate(const std::string& sources, const std::string& out) {
 std::string Diagnose(const std::string& measured, const std::string& model, const std::string& out,
                      const py::object& threads_arg, bool pairs, double min_step_explained, bool law_candidate,
                      const std::string& base, const std::string& sensor_sampling,
-                     const std::vector<std::string>& fit_on, py::object progress_arg) {
+                     const std::vector<std::string>& fit_on, bool drop_nuisances, py::object progress_arg) {
   const int threads = ThreadsArgument(threads_arg, "touchdown.diagnose");
   const auto fail = [](const std::string& field, const std::string& allowed, const std::string& value) {
     throw MakeInputError("touchdown.diagnose", field, "must be " + allowed + ", got '" + value + "'");
   };
   const gap::DiagnoseBase diagnose_base = gap::ParseDiagnoseBase(base, "touchdown.diagnose", "base");
   const std::optional<pad::SensorSampling> sampling = dataset::ParseSensorSampling(sensor_sampling);
-  if (!sampling) fail("sensor_sampling", dataset::SensorSamplingChoices(), sensor_sampling);
+  if (!sampling && sensor_sampling != "auto")
+    fail("sensor_sampling", "auto or " + dataset::SensorSamplingChoices(), sensor_sampling);
   if (!(min_step_explained >= 0.0 && min_step_explained <= 1.0))
     fail("min_step_explained", "a share in [0, 1]", io::FormatNumber(min_step_explained));
   std::atomic<int> stop{0};
@@ -399,7 +405,8 @@ std::string Diagnose(const std::string& measured, const std::string& model, cons
     o.law_candidate = law_candidate;
     o.fit_on = fit_on;
     o.base = diagnose_base;
-    o.sensor_sampling = *sampling;
+    o.sensor_sampling = sampling;  // nullopt: auto
+    o.drop_nuisances = drop_nuisances;
     o.progress.counts = progress.counts();
     if (!model.empty()) o.start_model = model::LoadModelFile(model);
     return gap::DiagnosisJson(gap::DiagnoseToDirectory(measured, o, {out, {measured, model}})).dump(2);
@@ -468,6 +475,23 @@ void SetInputFileError(const InputFileError& e) {
   PyErr_SetObject(type, exception.ptr());
 }
 
+// A message of the shared library code names its inputs as the command line has them; from Python
+// they are the function's arguments: `--samples` is `samples`, `--fit-on` is `fit_on`.
+std::string WithPythonArgumentNames(const std::string& message) {
+  static const std::regex flag(R"((^|[^-\w])--([a-z][a-z0-9-]*))");
+  std::string out;
+  auto begin = std::sregex_iterator(message.begin(), message.end(), flag);
+  size_t last = 0;
+  for (auto it = begin; it != std::sregex_iterator(); ++it) {
+    const std::smatch& m = *it;
+    std::string name = m[2].str();
+    std::replace(name.begin(), name.end(), '-', '_');
+    out += message.substr(last, m.position(0) - last) + m[1].str() + name;
+    last = m.position(0) + m.length(0);
+  }
+  return out + message.substr(last);
+}
+
 // The command line's exit statuses as Python exceptions, with the same one-line messages:
 // bad input (2) ValueError, an input file or a path the OS refused (2) OSError (an input file
 // not found: FileNotFoundError), a failed solver (3) RuntimeError.
@@ -477,9 +501,11 @@ void TranslateErrors(std::exception_ptr error) {
   } catch (const InputFileError& e) {
     SetInputFileError(e);
   } catch (const InputError& e) {
-    PyErr_SetString(PyExc_ValueError, e.what());
+    PyErr_SetString(PyExc_ValueError, WithPythonArgumentNames(e.what()).c_str());
   } catch (const integ::IntegrationFailure& e) {
     PyErr_SetString(PyExc_RuntimeError, (std::string("integration failed: ") + e.what()).c_str());
+  } catch (const SolverFailure& e) {
+    PyErr_SetString(PyExc_RuntimeError, e.what());
   } catch (const std::filesystem::filesystem_error& e) {
     const std::string path = e.path1().empty() ? std::string("a path") : e.path1().string();
     PyErr_SetString(PyExc_OSError, (path + ": " + e.code().message()).c_str());
@@ -497,6 +523,18 @@ PYBIND11_MODULE(_touchdown, m) {
   m.attr("EARTH_GRAVITY_M_S2") = rft::kEarthGravity_m_s2;
   py::register_exception_translator(&python::TranslateErrors);
   m.def("data_dir", &io::DataDirectory, "The directory of the bundled pads, soils and scenarios");
+  // read_dataset's check: the dataset reader's, before pandas reads the files (its columns,
+  // numbers and ids, and with traces each trace's), so a drops.csv without a required column is
+  // refused here as `compare` or `diagnose` refuse it.
+  m.def(
+      "check_dataset",
+      [](const std::string& directory, bool traces) {
+        dataset::DatasetReadOptions options;
+        options.load_traces = traces;
+        options.check_catalog = false;  // a dataset may name pads and soils this machine lacks
+        dataset::ReadDataset(directory, options);
+      },
+      py::arg("directory"), py::arg("traces"));
   m.def(
       "drop",
       [](std::string pad, std::string soil, double speed, std::optional<double> mass, double gravity,
@@ -532,7 +570,7 @@ PYBIND11_MODULE(_touchdown, m) {
         py::arg("atmosphere"), py::arg("confidence"), py::arg("soil"), py::arg("pad"), py::arg("shear_from"), py::arg("report"));
   m.def("diagnose", &python::Diagnose, py::arg("measured"), py::arg("model"), py::arg("out"), py::arg("threads"),
         py::arg("pairs"), py::arg("min_step_explained"), py::arg("law_candidate"), py::arg("base"),
-        py::arg("sensor_sampling"), py::arg("fit_on"),
+        py::arg("sensor_sampling"), py::arg("fit_on"), py::arg("drop_nuisances") = true,
         py::arg("progress") = py::none());
   m.def("calibrate_targets", &python::CalibrateTargets, py::arg("targets"), py::arg("out"), py::arg("report"),
         py::arg("threads"), py::arg("evaluate_only"), py::arg("progress") = py::none());
@@ -540,8 +578,16 @@ PYBIND11_MODULE(_touchdown, m) {
   m.def("trade", &python::Trade, py::arg("plan"), py::arg("out"), py::arg("model"), py::arg("threads"),
         py::arg("progress") = py::none());
   m.def("synth", &python::Synth, py::arg("spec"), py::arg("out"));
+  // touchdown import: the dataset into `out`; the summary the command prints, as JSON text.
+  m.def(
+      "import_raw",
+      [](const std::string& mapping, const std::string& out) {
+        py::gil_scoped_release unlocked;
+        return dataset::ImportSummaryJson(dataset::ImportToDirectory(mapping, {out, {mapping}}), out).dump(2);
+      },
+      py::arg("mapping"), py::arg("out"));
   m.def("export", &python::Export, py::arg("sweep"), py::arg("to"), py::arg("full_traces"), py::arg("threads"));
-  m.def("campaign", &python::Campaign, py::arg("scenario"), py::arg("out"));
+  m.def("campaign", &python::Campaign, py::arg("scenario"), py::arg("out"), py::arg("model"));
   m.def("compare", &python::Compare, py::arg("measured"), py::arg("simulated"), py::arg("model"), py::arg("out"),
         py::arg("sensor_sampling"));
   m.def("sweep", &python::Sweep, py::arg("plan"), py::arg("out"), py::arg("model"), py::arg("threads"),

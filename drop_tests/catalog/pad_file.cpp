@@ -369,7 +369,7 @@ PadSpec LoadPad(const YamlFields& f, geom::RimPolygon rim) {
   pad.rim = rim;
   pad.source = f.file();
   const std::string kind = f.StringOr("kind", "axisymmetric");
-  pad.name = f.StringOr("name", fs::path(f.file()).stem().string());
+  pad.name = f.Name("name", fs::path(f.file()).stem().string());
   pad.file.description = f.StringOr("description", "");
   if (!IsValidUtf8(pad.name)) f.Fail("name", "the pad name (from the file name) is not valid UTF-8 text");
   if (kind == "axisymmetric") {

@@ -1,6 +1,7 @@
 #include "drop_tests/catalog/catalog.h"
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <optional>
 
@@ -111,7 +112,7 @@ rft::SoilParameters LoadSoil(const std::string& name_or_path) {
   f.RequireSchemaVersion(1);
   f.RequireOnly(Keys(SoilKeys()));
   rft::SoilParameters soil;
-  soil.name = f.StringOr("name", fs::path(path).stem().string());
+  soil.name = f.Name("name", fs::path(path).stem().string());
   if (!IsValidUtf8(soil.name)) f.Fail("name", "the soil name (from the file name) is not valid UTF-8 text");
   const std::string atmosphere = f.StringOr("atmosphere", "vacuum");
   const std::optional<rft::Atmosphere> parsed = rft::ParseAtmosphere(atmosphere);
@@ -150,6 +151,15 @@ rft::SoilParameters LoadSoil(const std::string& name_or_path) {
       f.Fail("zeta_N_cm3", "'agarwal2023' needs bulk_density_kg_m3 and internal_friction_angle_deg");
     soil.zeta_N_m3 = rft::AgarwalScalingXi(soil.bulk_density_kg_m3, soil.reference_gravity_m_s2,
                                            std::tan(soil.internal_friction_angle_rad));
+    // The derived value meets the range a given one must (the scaling's cubic in tan(phi) grows
+    // without bound as phi nears 90 deg: 18,917 N/cm^3 at 85 deg, 2.5e15 at 89.999).
+    const double derived_N_cm3 = units::ZetaToN_cm3(soil.zeta_N_m3);
+    if (!limits::Within(limits::kZeta_N_cm3, derived_N_cm3)) {
+      char inputs[160];
+      std::snprintf(inputs, sizeof inputs, " (derived by agarwal2023 from bulk_density_kg_m3 %g, internal_friction_angle_deg %g)",
+                    soil.bulk_density_kg_m3, units::RadToDeg(soil.internal_friction_angle_rad));
+      f.Fail("zeta_N_cm3", limits::Describe(limits::kZeta_N_cm3, derived_N_cm3) + inputs);
+    }
   } else {
     const double zeta_N_cm3 = f.Positive("zeta_N_cm3");
     limits::Require(limits::kZeta_N_cm3, zeta_N_cm3, f.file(), "zeta_N_cm3");

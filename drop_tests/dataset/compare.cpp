@@ -8,6 +8,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 
+#include "drop_tests/dataset/sensor_model.h"
 #include "drop_tests/formats/json_number.h"
 #include "drop_tests/formats/output_path.h"
 #include "drop_tests/dataset/calibrate.h"
@@ -104,6 +105,15 @@ NrmseResult ForceNrmsePenetration(const DatasetTrace& m, const DatasetTrace& s) 
   return r;
 }
 
+double RecordingSimulationRate_Hz(const Dataset& measured) {
+  double fastest = 0.0;
+  for (const DatasetDrop& d : measured.drops) {
+    const double period = SamplePeriod(d.trace);
+    if (period > 0.0) fastest = std::max(fastest, 1.0 / period);
+  }
+  return SimulationRateFor_Hz(fastest);
+}
+
 Dataset SimulateMeasuredDrops(const Dataset& measured, const std::optional<model::ModelFile>& model,
                               pad::SensorSampling sampling) {
   Dataset out;
@@ -114,6 +124,7 @@ Dataset SimulateMeasuredDrops(const Dataset& measured, const std::optional<model
   const std::string file = (fs::path(measured.directory) / "drops.csv").string();
   const rft::EffectTerms effects = model ? model::ModelEffectTerms(*model) : rft::EffectTerms{};
   const std::string effects_source = model ? model->source : "";
+  const double rate_hz = RecordingSimulationRate_Hz(measured);
   for (const DatasetDrop& m : measured.drops) {
     const std::string pad_ref = measured.PadReference(m), soil_ref = measured.SoilReference(m);
     if (!pads.count(pad_ref)) pads.emplace(pad_ref, io::LoadPad(pad_ref));
@@ -130,7 +141,9 @@ Dataset SimulateMeasuredDrops(const Dataset& measured, const std::optional<model
     row.horizontal_speed_m_s = ExtraOrZero(measured, m, "horizontal_speed_m_s");
     drop::DropConditions c = drop::DropConditionsFor(row, effects, effects_source, file + ": drop " + m.drop_id);
     c.free = !pads.at(pad_ref).is_axisymmetric();  // a mesh pad has no rig profile: the free pad, straight down
-    const drop::PadDrop d = drop::RunDrop(drop::ResolveDrop(pads.at(pad_ref), soils.at(soil_ref), c));
+    drop::DropRunOptions run;
+    run.rig.sample_rate_hz = run.free.sample_rate_hz = rate_hz;
+    const drop::PadDrop d = drop::RunDrop(drop::ResolveDrop(pads.at(pad_ref), soils.at(soil_ref), c, run));
     DatasetDrop s;
     s.drop_id = m.drop_id;
     s.pad = m.pad;

@@ -77,7 +77,8 @@ struct Comparison {
 };
 
 // Simulates every measured drop with its own pad, soil, atmosphere, speed, mass and gravity
-// (DropConditionsFor + ResolveDrop + RunDrop, drop_tests/drop/drop_setup.h) at 1 kHz, under `model` when given:
+// (DropConditionsFor + ResolveDrop + RunDrop, drop_tests/drop/drop_setup.h), its trace at
+// RecordingSimulationRate_Hz, under `model` when given:
 // its zeta per soil and its effects (gas_cushion on the drops in air only). A drop with a
 // non-zero tilt_deg or horizontal_speed_m_s column is a free 6-DOF drop (tilt about x, travel
 // along +x; the effects in their 3D form). Each simulated drop is recorded as the measured one was
@@ -86,6 +87,10 @@ struct Comparison {
 // sensor_offset's shifts (time by -dt, penetration by +dz). Its final penetration and peak force
 // come from the simulation where the measured drop has those columns, else from its recorded
 // trace. Returns a dataset with the same drop ids.
+// The rate a drop is simulated at to be recorded on `measured`'s sample times: SimulationRateFor_Hz
+// (sensor_model.h) of its fastest sample rate. compare and diagnose simulate at the same rate.
+double RecordingSimulationRate_Hz(const Dataset& measured);
+
 Dataset SimulateMeasuredDrops(const Dataset& measured, const std::optional<model::ModelFile>& model,
                               pad::SensorSampling sampling);
 // For each measured drop the first simulated drop with the same conditions (pad, soil,

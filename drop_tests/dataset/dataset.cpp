@@ -7,6 +7,7 @@
 #include "drop_tests/formats/output_path.h"
 #include "drop_tests/catalog/catalog.h"
 #include "drop_tests/formats/dataset_csv.h"
+#include "drop_tests/util/file_name.h"
 #include "rft/input_error.h"
 #include "rft/input_file.h"
 #include "rft/physical_limits.h"
@@ -75,18 +76,10 @@ DatasetTrace ReadTrace(const std::string& path) {
   return trace;
 }
 
-using limits::kMaxDropIdBytes;
 }  // namespace
 
 std::string DropIdProblem(const std::string& id) {
-  if (id.empty()) return "empty drop id";
-  if (id == "." || id == "..") return "drop id '" + id + "' cannot be a file name";
-  if (id.size() > kMaxDropIdBytes)
-    return "drop id longer than " + std::to_string(kMaxDropIdBytes) + " bytes (it names files)";
-  for (const char c : id) {
-    if (c == '/' || c == '\\') return "drop id '" + id + "' contains '" + std::string(1, c) + "' (it names files)";
-    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) return "drop id contains a control character (it names files)";
-  }
+  if (std::string problem = io::FileNameProblem("drop id", id); !problem.empty()) return problem;
   if (!IsValidUtf8(id)) return "drop id is not valid UTF-8 text";
   return "";
 }

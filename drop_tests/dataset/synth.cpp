@@ -11,6 +11,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "drop_tests/dataset/sensor_model.h"
 #include "drop_tests/drop/drop_factory.h"
 #include "drop_tests/formats/output_path.h"
 #include "drop_tests/catalog/catalog.h"
@@ -77,7 +78,7 @@ SynthSpec LoadSynthSpec(const std::string& path) {
   if (f.String("type") != "synth") f.Fail("type", "must be 'synth', got '" + f.String("type") + "'");
   SynthSpec s;
   s.source = path;
-  s.name = f.StringOr("name", fs::path(path).stem().string());
+  s.name = f.Name("name", fs::path(path).stem().string());
   s.description = f.StringOr("description", "");
   if (f.Has("seed")) {
     // As a sweep's seed: a whole number a double holds exactly (a larger one would be rounded
@@ -222,6 +223,7 @@ Dataset Synthesize(const SynthSpec& spec) {
     std::optional<FloorStiffenedResponse> floored;
     if (spec.floor) setup.terrain = &floored.emplace(response, *spec.floor);
     setup.options.rest_duration_s = spec.rest_duration_s + std::abs(terms.sensor_dt_s) + 2.0 / spec.sample_rate_hz;
+    setup.options.sample_rate_hz = SimulationRateFor_Hz(spec.sample_rate_hz);  // as compare and diagnose record
     pad::RigDropResult sim;
     try {
       sim = pad::RunRigDrop(setup);

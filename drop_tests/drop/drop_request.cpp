@@ -28,7 +28,7 @@ void CheckFreeMotion(const DropRequest& r, const RequestNaming& n) {
       throw MakeInputError(n.context, n.Field("free"), "tilt, horizontal speed and omega must be finite");
   if (!(std::abs(r.tilt_deg) < 90.0)) {
     std::ostringstream s;
-    s << "must be between -90 and 90 deg, got " << r.tilt_deg;
+    s << "must lie strictly between -90 and 90 deg (on its side a pad does not land on its bottom), got " << r.tilt_deg;
     throw MakeInputError(n.context, n.Field("tilt-deg"), s.str());
   }
   if (r.fast && !r.free)

@@ -91,7 +91,7 @@ DropSetup ResolveDrop(const io::PadSpec& pad, const rft::SoilParameters& soil, c
   // The rig drop integrates the exact axisymmetric profile; a mesh pad needs the 3D contact
   // wrench (rft/contact_wrench.h) and the free-pad dynamics.
   if (!free && !pad.is_axisymmetric())
-    throw MakeInputError(pad.source, "", "rig drop of mesh pads needs the 3D contact; use --free");
+    throw MakeInputError(pad.source, "", "a mesh pad drops only as a free pad (touchdown drop --free, or a sweep), not on the paper's rig, which drops axisymmetric pads");
   // The record keeps the pad's description but not its 3D body (megabytes for a fine mesh,
   // unused by the rig drop): copying it per drop would cost more than the drop itself.
   io::PadSpec described{pad.name, pad.source, pad.kind, pad.profile, pad.mass_kg, {}, pad.mesh_file, pad.file};

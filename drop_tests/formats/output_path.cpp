@@ -1,6 +1,7 @@
 #include "drop_tests/formats/output_path.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cctype>
 #include <cerrno>
 #include <csignal>
@@ -8,6 +9,7 @@
 #include <cstring>
 #include <fcntl.h>
 #include <filesystem>
+#include <mutex>
 #include <fstream>
 #include <set>
 #include <unistd.h>
@@ -205,8 +207,8 @@ const std::string& HostName() {
   return name;
 }
 
-// `.NAME.partial-PID@HOST` or `.NAME.old-PID@HOST` beside `p` (or, as earlier versions named them,
-// without `@HOST`): the pid, or -1 when `entry` is not one of those or another machine's. Only the
+// `.NAME.partial-PID.WRITER@HOST` or `.NAME.old-PID.WRITER@HOST` beside `p` (or, as earlier versions
+// named them, without `.WRITER` or `@HOST`): the pid, or -1 when `entry` is not one of those or another machine's. Only the
 // machine that made a leftover can tell whether its process is gone: on a disk that a cluster's
 // nodes share, a pid says nothing about another node's processes.
 long LeftoverPid(const std::string& entry, const std::string& name, const std::string& suffix) {
@@ -214,7 +216,7 @@ long LeftoverPid(const std::string& entry, const std::string& name, const std::s
   if (entry.size() <= prefix.size() || entry.compare(0, prefix.size(), prefix) != 0) return -1;
   const std::string tag = entry.substr(prefix.size());
   const size_t at = tag.find('@');
-  const std::string digits = tag.substr(0, at);
+  const std::string digits = tag.substr(0, std::min(at, tag.find('.')));  // PID, or PID.WRITER
   if (digits.empty() || digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos) return -1;
   if (at != std::string::npos && tag.substr(at + 1) != HostName()) return -1;
   return std::stol(digits);
@@ -271,12 +273,15 @@ void CleanLeftovers(const fs::path& p) {
   }
 }
 
-// `.NAME<suffix>PID@HOST` beside `p`: hidden, and named so the next run knows whose it was.
+// `.NAME<suffix>PID.WRITER@HOST` beside `p`: hidden, named so the next run knows whose it was, and
+// one of its own for every writer (two threads of one process writing one output each stage apart,
+// as two processes do).
 fs::path Sibling(const fs::path& p, const char* suffix) {
+  static std::atomic<unsigned long> writers{0};
   std::string name = ".";
   name += p.filename().string();
   name += suffix;
-  name += OutputOwnerTag();
+  name += std::to_string(::getpid()) + "." + std::to_string(++writers) + "@" + HostName();
   return p.parent_path() / name;
 }
 
@@ -377,6 +382,24 @@ const char* OutputKindName(OutputKind kind) {
   return "?";
 }
 
+namespace {
+std::mutex new_directories_mutex;
+std::vector<fs::path> new_directories;  // in the order created, each after its parent
+
+// create_directories(p), noting each folder it makes.
+void CreateNoted(const fs::path& p, std::error_code& ec) {
+  std::vector<fs::path> missing;
+  for (fs::path q = p; !q.empty() && !fs::exists(fs::symlink_status(q, ec)); q = q.parent_path()) {
+    missing.push_back(q);
+    if (q == q.parent_path()) break;
+  }
+  fs::create_directories(p, ec);
+  if (ec) return;
+  const std::lock_guard<std::mutex> lock(new_directories_mutex);
+  new_directories.insert(new_directories.end(), missing.rbegin(), missing.rend());
+}
+}  // namespace
+
 void CheckOutputDirectory(const OutputTarget& target, OutputKind kind) { CheckDirectory(target, kind, true); }
 
 void WriteOutputDirectory(const OutputTarget& target, OutputKind kind,
@@ -384,7 +407,7 @@ void WriteOutputDirectory(const OutputTarget& target, OutputKind kind,
   const fs::path p = CheckDirectory(target, kind, true);
   CleanLeftovers(p);
   std::error_code ec;
-  fs::create_directories(p.parent_path(), ec);
+  CreateNoted(p.parent_path(), ec);
   if (ec) Refuse(target.path, "cannot create '" + p.parent_path().string() + "': " + Reason(ec));
   const fs::path staging = StagingPath(p);
   if (fs::exists(staging, ec)) {  // left by an earlier process with this pid
@@ -413,10 +436,25 @@ void WriteOutputDirectory(const OutputTarget& target, OutputKind kind,
   }
 }
 
+
+void RemoveUnusedNewOutputDirectories() {
+  const std::lock_guard<std::mutex> lock(new_directories_mutex);
+  for (auto it = new_directories.rbegin(); it != new_directories.rend(); ++it) {
+    std::error_code ec;
+    bool unused = true;
+    for (const fs::directory_entry& e : fs::directory_iterator(*it, ec))
+      unused &= e.path().filename() == kOutputMarker && e.is_regular_file(ec) && !e.is_symlink(ec);
+    if (ec || !unused) continue;
+    fs::remove(*it / kOutputMarker, ec);
+    fs::remove(*it, ec);  // only if empty now
+  }
+  new_directories.clear();
+}
+
 void OpenOutputDirectory(const OutputTarget& target, OutputKind kind) {
   const fs::path p = CheckDirectory(target, kind, false);
   std::error_code ec;
-  fs::create_directories(p, ec);
+  CreateNoted(p, ec);
   if (ec) Refuse(target.path, "cannot create: " + Reason(ec));
   if (!ReadMarker(p).present) WriteMarker(p, kind, nullptr);
   for (const fs::directory_entry& e : fs::directory_iterator(p, ec))

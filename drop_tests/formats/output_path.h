@@ -10,7 +10,7 @@
 // of the command's inputs.
 //
 // A whole output is filled in a hidden staging directory beside the target
-// (`.NAME.partial-PID@HOST`) that takes the target's place in one atomic exchange (renameat2
+// (`.NAME.partial-PID.WRITER@HOST`, one per writer, so two threads stage apart) that takes the target's place in one atomic exchange (renameat2
 // RENAME_EXCHANGE); only then is the old output removed. A kill at any moment leaves the old output
 // or the new one, whole; the staging directories of killed runs are removed by the next run on the
 // same machine that writes beside them (another machine sharing the disk cannot tell whether their
@@ -24,7 +24,7 @@ namespace touchdown::io {
 
 inline constexpr const char* kOutputMarker = ".touchdown-output";
 
-// This process's tag in the names of its staging entries: `PID@HOST`.
+// This process's tag, `PID@HOST`; its staging entries are named `PID.WRITER@HOST`.
 std::string OutputOwnerTag();
 
 // Which command wrote an output directory: one command never replaces another's output.
@@ -55,6 +55,12 @@ void WriteOutputDirectory(const OutputTarget& target, OutputKind kind,
 // with its marker, or reopened when it is an earlier output of the same kind and holds no symbolic
 // link (touchdown makes none, and would write through it). Nothing is removed.
 void OpenOutputDirectory(const OutputTarget& target, OutputKind kind);
+
+// The folders this process created for outputs (OpenOutputDirectory's, and the missing parents
+// either writer creates) that still hold nothing but touchdown's marker, removed, deepest first: a
+// command that fails (bad input found late, a full disk, no memory) before it wrote any result
+// leaves no empty folder behind. `touchdown`'s exit paths call it.
+void RemoveUnusedNewOutputDirectories();
 
 // The outputs a command derives from a directory it fills in place (a stability study's or a trade
 // study's tables, plots and summary, beside the sweep database), replaced as one whole: `fill`

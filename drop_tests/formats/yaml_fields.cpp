@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 
+#include "drop_tests/util/file_name.h"
 #include "drop_tests/util/nearest_name.h"
 #include "rft/input_error.h"
 #include "rft/input_file.h"
@@ -66,6 +67,16 @@ void CheckTree(const YAML::Node& node, TreeWalk& walk, const std::string& path, 
       if (!fresh)
         throw MakeInputError(file, join(key),
                              "duplicate key (" + LineOf(item.first) + "; first at " + LineOf(first->second) + ")");
+      // yaml-cpp reads a merge key as a key named "<<": the keys it merges would be missing, and
+      // the first of them reported so ("profile.shape: missing").
+      if (key == "<<")
+        throw MakeInputError(file, join(key),
+                             "YAML merge keys are not supported: write the keys out (" + LineOf(item.first) + ")");
+      // `key: ~`, `key: null` or `key:` alone would read as the key left out, its default taken.
+      if (item.second.IsNull())
+        throw MakeInputError(file, join(key),
+                             "is empty (~, null or nothing): leave the key out for its default, or give a value (" +
+                                 LineOf(item.first) + ")");
       CheckTree(item.second, walk, join(key), depth + 1);
     }
   }
@@ -157,6 +168,19 @@ std::string YamlFields::String(const std::string& key) const {
 
 std::string YamlFields::StringOr(const std::string& key, const std::string& fallback) const {
   return Has(key) ? String(key) : fallback;
+}
+
+std::string YamlFields::Name(const std::string& key) const {
+  const std::string name = String(key);
+  if (const std::string problem = FileNameProblem("", name); !problem.empty()) Fail(key, problem);
+  return name;
+}
+
+std::string YamlFields::Name(const std::string& key, const std::string& fallback) const {
+  if (Has(key)) return Name(key);
+  if (const std::string problem = FileNameProblem("", fallback); !problem.empty())
+    Fail(key, problem + ", and the file's name gives it where the key is left out");
+  return fallback;
 }
 
 double YamlFields::Number(const std::string& key) const {

@@ -20,6 +20,11 @@ class YamlFields {
   std::vector<YamlFields> List(const std::string& key) const;  // a required sequence of mappings
   std::string String(const std::string& key) const;
   std::string StringOr(const std::string& key, const std::string& fallback) const;
+  // A name that becomes part of file names (a pad's, a soil's, a sweep's: util/file_name.h): the
+  // string at `key` (or `fallback`, the file's stem, where the key is optional), refused unless it
+  // can be one. Name(key) requires the key.
+  std::string Name(const std::string& key) const;
+  std::string Name(const std::string& key, const std::string& fallback) const;
   double Number(const std::string& key) const;  // finite
   bool Bool(const std::string& key) const;      // true/false (yes/no, on/off as YAML 1.1 has them)
   double Positive(const std::string& key) const;

@@ -12,6 +12,7 @@
 #include <set>
 #include <sstream>
 
+#include "drop_tests/dataset/sensor_sampling.h"
 #include "drop_tests/gap/diagnose_selection.h"
 #include "drop_tests/gap/fixed_text.h"
 #include "drop_tests/util/nearest_name.h"
@@ -105,6 +106,7 @@ DropGap ComputeGap(const FitProblem& p, const FitDrop& d, const FitResult& model
     if (t < 0) continue;
     const int phase = t < 0.2 * t_stop ? 0 : t < 0.7 * t_stop ? 1 : t <= t_stop ? 2 : 3;
     const double e = (sim->force_N[i] - m.trace.force_N[i]) / d.force_scale_N;
+    g.force_residual.push_back(e);
     g.phase_ms[phase] += e * e;
     if (phase < 3) bias += e, stroke += 1;
     count[phase] += 1;
@@ -314,6 +316,12 @@ std::string DescribeResidual(const Diagnosis& d) {
 
 std::vector<std::string> DiagnoseBaseNames() { return {"rft", "bekker"}; }
 
+std::vector<std::string> SensorSamplingOptionNames() {
+  std::vector<std::string> names{"auto"};
+  for (const std::string& n : dataset::SensorSamplingNames()) names.push_back(n);
+  return names;
+}
+
 DiagnoseBase ParseDiagnoseBase(const std::string& name, const std::string& where, const std::string& field) {
   if (name == "rft") return DiagnoseBase::kRft;
   if (name == "bekker") return DiagnoseBase::kBekker;
@@ -328,7 +336,6 @@ Diagnosis RunDiagnosis(const dataset::Dataset& ds, const DiagnoseOptions& o) {
   d.fit_on = o.fit_on;
   d.held_out = o.fit_on.empty() ? HeldOutSplit(ds) : DesignatedSplit(ds, o.fit_on);
   d.problem = MakeFitProblem(ds, d.held_out, o.threads);
-  d.problem.sensor_sampling = o.sensor_sampling;
   if (o.base == DiagnoseBase::kBekker) {
     if (o.start_model)
       throw MakeInputError(o.start_model->name, "soils", "--model starts RFT's zeta; the Bekker base fits its own soils");
@@ -342,20 +349,60 @@ Diagnosis RunDiagnosis(const dataset::Dataset& ds, const DiagnoseOptions& o) {
       }
     StartZetaWhereMissing(ds, d.problem);  // a Bekker soil's RFT base (law_candidate.h)
   }
+  // The record's common offsets in time and depth are the rig's nuisances in every fit (no longer
+  // a candidate of the soil's): a detector's lag behind an anti-alias filter is in every raw file.
+  d.problem.sensor_fit.offsets = o.drop_nuisances;
   SetCandidateTerms(d.problem);  // from the base's soils (a Bekker base's too)
   io::Progress progress("diagnose", "fits", 1 + static_cast<int64_t>(d.problem.terms.size()), o.progress);
-  // 1-2: the base model, its gap, where it concentrates.
-  d.base = Score(d, ds, {}, nullptr, o);
+  // 1: the sensor (inferred, or as given) and the drops' nuisances: their spreads from the base's
+  // fit under that sensor, within the conditions the drops repeat.
+  d.problem.drop_nuisances = o.drop_nuisances;
+  FitResult first;
+  if (o.sensor_sampling) {
+    d.problem.sensor = dataset::SensorModel{*o.sensor_sampling};
+    d.sensor.given = true;
+    d.sensor.chosen = d.problem.sensor;
+    first = FitCandidate(d.problem, {});
+  } else {
+    d.sensor = InferSensor(d.problem, o.min_delta_bic);
+    first = d.sensor.base;
+  }
+  d.simulations += first.simulations;
+  if (d.problem.drop_nuisances && EstimateNuisanceSpreads(d.problem, first) < kMinNuisanceDf) {
+    d.problem.drop_nuisances = false;
+    d.nuisances_without_replicates = true;
+  }
+  // 2: the base model, its gap, where it concentrates.
+  d.base = Score(d, ds, {}, &first, o);
   progress.Add(1, ", last: base");
   d.where = WhereAnalysis(ds, d.problem, d.base.gaps, o);
+  d.floor = ComputeFloor(d.problem, d.base.gaps, d.base.held_out.noise_mean_square);
+  d.lack_of_fit_before = LackOfFit(d.problem, d.base.gaps);
   if (o.law_candidate) d.law_candidate = ScoreBekkerLaw(ds, d.problem, d.base.held_out.force_nrmse);
   // 3: forward selection of the candidate terms.
-  SelectForward(d, o, [&](const std::vector<std::string>& ids, const FitResult& start) {
+  const auto score = [&](const std::vector<std::string>& ids, const FitResult& start) {
     return Score(d, ds, ids, &start, o);
-  }, progress);
+  };
+  ScreenModel screen = [&](const std::vector<std::string>& ids, const FitResult& start) -> std::optional<FitResult> {
+    std::string why;
+    if (!CandidateApplies(d.problem, ids, &why)) return std::nullopt;
+    FitResult f = FitCandidate(d.problem, ids, &start, kScreenIterations);
+    d.simulations += f.simulations;
+    return f;
+  };
+  const long training = std::count_if(d.problem.drops.begin(), d.problem.drops.end(), [](const FitDrop& x) { return x.train; });
+  if (training < kMinTrainingDropsScreened) screen = nullptr;
+  SelectForward(d, o, score, screen, progress);
   progress.Finish();
+  // The rig's common offsets are named (as nuisances) when the final model's intervals exclude 0.
+  const CandidateScore& final_model = d.winner >= 0 ? d.candidates[d.winner] : d.base;
+  for (const ParameterEstimate& e : final_model.fit.sensor_estimates)
+    if (e.effect == "sensor_offset" && (e.low > 0.0 || e.high < 0.0) &&
+        std::find(d.named_nuisances.begin(), d.named_nuisances.end(), "sensor_offset") == d.named_nuisances.end())
+      d.named_nuisances.push_back("sensor_offset");
   if (d.winner < 0) d.residual_description = DescribeResidual(d);
   else d.where_after = WhereAnalysis(ds, d.problem, d.candidates[d.winner].gaps, o);
+  if (d.winner >= 0) d.lack_of_fit_after = LackOfFit(d.problem, d.candidates[d.winner].gaps);
   d.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return d;
 }

@@ -43,9 +43,14 @@
 #include "drop_tests/util/progress.h"
 #include "drop_tests/dataset/compare.h"
 #include "drop_tests/gap/diagnose_fit.h"
+#include "drop_tests/gap/gap_floor.h"
 #include "drop_tests/gap/law_candidate.h"
+#include "drop_tests/gap/sensor_inference.h"
 
 namespace touchdown::gap {
+
+// --sensor-sampling's values: "auto" (inferred) and the samplings' names.
+std::vector<std::string> SensorSamplingOptionNames();
 
 enum class DiagnoseBase { kRft, kBekker };
 // The names on the command line and in Python ("rft", "bekker"), in the enum's order.
@@ -60,6 +65,9 @@ struct DiagnoseOptions {
   double min_gap_reduction = 0.5;
   double min_explained = 0.8;
   double min_step_explained = 0.5;   // of the extended model's excess, for a step to add its term
+  // With a floor from replicates (gap_floor.h): the most a step's held-out improvement may be left
+  // to chance (sign-flip p over the held-out drops).
+  double max_step_p = 0.05;
   int permutations = 2000;
   unsigned seed = 12345;             // permutation tests only
   std::optional<model::ModelFile> start_model;  // --model: starting zeta (and the file it came from)
@@ -69,11 +77,13 @@ struct DiagnoseOptions {
   // drops (calibrate --law bekker), its moduli scaled per soil with the effects (UseBekkerBase).
   DiagnoseBase base = DiagnoseBase::kRft;
   bool law_candidate = false;        // --law-candidate: also fit and score the Bekker law (law_candidate.h)
-  // --sensor-sampling: how the simulated drops are recorded to compare with the measured samples
-  // (pad::SensorSampling), as the measured ones were: by default the mean over each sample period (an
-  // averaging load cell), which also makes the fits' cost continuous where a stop crosses a sample
-  // (docs/model_gap.md, "Sensor sampling"); or the value at each sample time.
-  pad::SensorSampling sensor_sampling = pad::SensorSampling::kPeriodMean;
+  // --sensor-sampling: how the simulated drops are recorded to compare with the measured samples.
+  // By default (nullopt) inferred from the data (sensor_inference.h: the sampling, an anti-alias
+  // low-pass, a ringing load cell); given, the mean over each sample period or the value at each
+  // sample time, as an override (docs/model_gap.md, "The sensor is part of the model").
+  std::optional<pad::SensorSampling> sensor_sampling;
+  // Per-drop nuisances (diagnose_fit.h: strength, speed, touchdown time) in every fit.
+  bool drop_nuisances = true;
   // --fit-on: the drop ids every model is fitted on; every other drop is held out and predicted.
   // Empty: the split by speed above. Each id must be in the dataset, every soil needs one, and at
   // least one drop must be left to predict (InputError otherwise).
@@ -90,6 +100,9 @@ struct DropGap {
   double noise_nrmse = 0.0;   // estimated sensor-noise floor of force_nrmse
   double force_bias = 0.0;    // mean (F_sim - F_meas) / max F_meas over the stroke (+: model too stiff)
   std::vector<double> phase_ms;  // mean squared normalised force residual per phase (4)
+  // (F_sim - F) / max F at every sample from touchdown on: replicates' residuals compared
+  // sample by sample (gap_floor.h).
+  std::vector<double> force_residual;
   double overall_ms = 0.0;
   bool failed = false;
 };
@@ -113,6 +126,9 @@ struct CandidateScore {
   std::string name;  // ids joined by '+'
   bool applies = true;
   std::string why_not;
+  // Ranked below the step's best few by a screening fit (FitResult::screening): not fitted in
+  // full nor scored on the held-out drops, so never chosen.
+  bool screened_out = false;
   FitResult fit;
   std::vector<DropGap> gaps;
   GapSummary held_out;
@@ -123,7 +139,8 @@ struct CandidateScore {
   int extends = -1;            // index into Diagnosis::candidates of the model it extends, -1: the base
   double delta_bic_step = 0.0;      // vs the model it extends (positive = better)
   double step_gap_reduction = 0.0;  // 1 - held-out force NRMSE / the extended model's
-  double step_explained = 0.0;      // of the extended model's excess mean square above the noise floor
+  double step_explained = 0.0;      // of the extended model's excess mean square above the floor
+  double step_improvement_p = 1.0;  // one-sided: the held-out drops fitted better than by the extended model
 };
 
 struct Diagnosis {
@@ -131,12 +148,19 @@ struct Diagnosis {
   std::vector<bool> held_out;
   std::vector<std::string> fit_on;  // DiagnoseOptions::fit_on: the designated training drops, or empty
   FitProblem problem;
+  // Per-drop nuisances asked for but off: the drops repeat too few conditions (kMinNuisanceDf).
+  bool nuisances_without_replicates = false;
   CandidateScore base;
   std::vector<CandidateScore> candidates;  // every step's, in order
   std::vector<int> selection;              // the model after each accepted step (index into candidates)
   int winner = -1;                         // index into candidates of the named model, -1: none
   std::string named_effect = "none";       // named_effects joined by '+', or none
-  std::vector<std::string> named_effects;  // library effects found, in the order selected
+  std::vector<std::string> named_effects;  // the soil's effects found, in the order selected
+  // Nuisance terms of the rig found in the named model (sensor_offset): measurement, not the soil.
+  std::vector<std::string> named_nuisances;
+  SensorInference sensor;                  // the sensor model, inferred (with its evidence) or given
+  GapFloor floor;                          // what the held-out gap is judged against (the base's)
+  std::vector<CellLackOfFit> lack_of_fit_before, lack_of_fit_after;  // the base's and the named model's
   // When the named model weakens the soils' own dynamic term: what the data say about it, in words
   // (the term's weakening is reported there, not as an effect found). Else empty.
   std::string dynamic_term_statement;

@@ -6,8 +6,16 @@
 //   force:       (F_sim(t_i) - F_i) / max F         (compare.h's force NRMSE normalisation)
 //   penetration: (d_sim(t_i) - d_i) / max d
 // each divided by sqrt(samples of the drop), so every drop weighs the same and the cost is the
-// mean over drops of the squared NRMSEs. F_sim, d_sim are what the rig would record
-// (lander/pad/effect_soil_response.h RecordedAt, sensor_offset included).
+// mean over drops of the squared NRMSEs. F_sim, d_sim are what the rig would record through the
+// problem's sensor model (drop_tests/dataset/sensor_model.h; sensor_offset included).
+//
+// Per-drop nuisances (random effects, FitProblem::drop_nuisances): a drop's soil strength and
+// impact speed differ from their nominal values by a few per cent (bed preparation, release
+// height), and its recorded t = 0 from the true touchdown (the detector). Each training drop gets
+// its own log zeta factor, log speed factor and time offset, drawn from N(0, spread^2): fitted
+// with the model, each with the penalty row (sigma / sqrt(n)) b / spread beside its drop's data
+// rows (sigma the residual's per-sample scale), so the fit is the penalised likelihood of the
+// mixed model. The spreads are estimated from the base's fitted nuisances (EstimateNuisanceSpreads).
 //
 // Solver: Levenberg-Marquardt (Marquardt's diagonal scaling) on scaled parameters (zeta /
 // zeta_catalogue, effect values / their typical scale), box bounds by projection, forward-
@@ -23,12 +31,37 @@
 
 #include "drop_tests/catalog/catalog.h"
 #include "drop_tests/dataset/dataset.h"
+#include "drop_tests/dataset/sensor_model.h"
 #include "drop_tests/model/effects.h"
 #include "footpad_geom/axisymmetric_intrusion.h"
 #include "lander/pad/effect_soil_response.h"
 #include "lander/pad/rig_drop.h"
 
 namespace touchdown::gap {
+
+// A drop's nuisances (random effects): what its own bed, release and detector did.
+struct DropNuisance {
+  double log_zeta = 0.0;   // its soil's strength, as ln(zeta_drop / zeta)
+  double log_speed = 0.0;  // its impact speed, as ln(v_drop / v_nominal)
+  double time_s = 0.0;     // its recorded t = 0 after the true touchdown (as sensor_offset's dt)
+  bool operator==(const DropNuisance&) const = default;
+};
+inline constexpr int kDropNuisances = 3;
+
+// The spreads (standard deviations) of the nuisances over the drops.
+struct NuisanceSpreads {
+  double log_zeta = 0.03, log_speed = 0.01, time_s = 2e-4;
+};
+
+// Which of the rig's nuisance parameters a fit estimates beside the model's: the anti-alias
+// low-pass's cutoff, the load cell's frequency and damping, and the record's common offsets in
+// time and depth (sensor_offset's dt and dz: the detector's and the displacement sensor's zero).
+struct SensorFit {
+  bool cutoff = false;
+  bool load_cell = false;
+  bool offsets = false;
+  int count() const { return int(cutoff) + 2 * int(load_cell) + 2 * int(offsets); }
+};
 
 struct FitDrop {
   size_t dataset_index = 0;
@@ -63,8 +96,17 @@ struct FitProblem {
   std::vector<rft::SoilParameters> soils;  // catalogue values: the starting zeta
   std::vector<FitDrop> drops;
   pad::RigDropOptions rig;
-  // How the simulated drops are recorded for the comparison with the measured samples.
-  pad::SensorSampling sensor_sampling = pad::SensorSampling::kPeriodMean;
+  // How the simulated drops are recorded for the comparison with the measured samples (inferred
+  // from the data by diagnose, or given), and which of its parameters a fit estimates.
+  dataset::SensorModel sensor;
+  SensorFit sensor_fit;
+  // Per-drop nuisances in every fit (above), with their spreads and the residual's per-sample scale
+  // (normalised units) that weighs their penalties.
+  bool drop_nuisances = false;
+  NuisanceSpreads spreads;
+  double residual_sigma = 0.01;
+  // Levenberg-Marquardt's iterations per fit at most (a screening fit may take fewer).
+  int max_iterations = 20;
   int threads = 2;
   bool has_air = false, has_vacuum = false;
   // The soils' own dynamic term as an inertial_drag lambda (rft::WithSoilDynamicTerm) when every
@@ -100,12 +142,21 @@ struct FitResult {
   std::vector<std::string> effect_ids;  // candidate term names, in the order added; empty: the base
   std::vector<double> zeta_N_m3;        // per soil, at the soil's reference gravity
   std::vector<model::Effect> effects;          // fitted values, as library effects (ids: effect_id)
-  std::vector<ParameterEstimate> estimates;
+  std::vector<ParameterEstimate> estimates;    // zeta per soil, then the terms' parameters
+  dataset::SensorModel sensor;                 // as fitted (the problem's, with its free parameters)
+  std::vector<ParameterEstimate> sensor_estimates;  // the sensor's fitted parameters (nuisances)
+  double offset_dt_s = 0.0, offset_dz_m = 0.0;      // the common offsets, with SensorFit::offsets
+  // Per problem drop (FitProblem::drops' order): the training drops' fitted nuisances; zero for
+  // the held-out ones (SimulateRecorded fits theirs when it predicts them).
+  std::vector<DropNuisance> nuisances;
+  double penalty = 0.0;    // the nuisances' penalty rows' sum of squares (part of cost)
   double cost = 0.0;       // weighted, as minimised
   double rss = 0.0;        // unweighted sum of squared normalised residuals
   long samples = 0;        // residual count (training)
   int parameters = 0;
-  double bic = 0.0;        // samples ln(rss / samples) + parameters ln(samples)
+  // samples ln((rss + penalty) / samples) + parameters ln(samples), the nuisances' penalty in the
+  // residual sum (their prior as observations), their count not among the parameters.
+  double bic = 0.0;
   // Per soil (index as FitProblem::soils): the RMS force residual of the fitted model,
   // sqrt(mean_i (F_sim(t_i) - F_i)^2) [N] over every measured sample i of the soil's training
   // drops (F_sim as recorded, sensor_offset included), and how many samples that is. What a model
@@ -115,6 +166,7 @@ struct FitResult {
   int iterations = 0;
   long simulations = 0;
   bool converged = false;
+  bool screening = false;  // a screening fit (FitCandidate's screen_iterations): no intervals
   rft::EffectTerms terms() const;
 };
 
@@ -123,11 +175,39 @@ bool CandidateApplies(const FitProblem& problem, const std::vector<std::string>&
 // Fits zeta per soil and the effects' parameters on the training drops. `start` (a fit of a
 // sub-model, e.g. the base, or the model a forward-selection step extends) seeds zeta and the
 // parameters of the terms it shares with this one.
+// `screen_iterations` > 0: a screening fit, at most that many iterations and no intervals
+// (estimates empty), to rank candidates before the best few are fitted in full from it.
 FitResult FitCandidate(const FitProblem& problem, const std::vector<std::string>& effect_ids,
-                       const FitResult* start = nullptr);
+                       const FitResult* start = nullptr, int screen_iterations = 0);
 
 // What the rig would record for drop `d` under a fitted model, at the measured times; nullopt if
-// the simulation failed (the pad never stopped, ...).
+// the simulation failed (the pad never stopped, ...). With the problem's drop nuisances, a training
+// drop's are the fitted ones and a held-out drop's are fitted here to its own record (the model's
+// parameters held, the spreads as the prior): the prediction of a new drop of that condition.
 std::optional<dataset::DatasetTrace> SimulateRecorded(const FitProblem& problem, const FitDrop& d, const FitResult& model);
+// A way of recording a simulation: a sensor, and a time offset added to the model's.
+struct Recording {
+  dataset::SensorModel sensor;
+  double extra_dt_s = 0.0;
+};
+// The weighted data cost (penalty rows apart) of `model` (its values and training nuisances as
+// they are, nothing fitted) on the problem's training drops, recorded in each of `recordings`:
+// each drop simulated once.
+std::vector<double> TrainingCostsUnder(const FitProblem& problem, const FitResult& model,
+                                       const std::vector<Recording>& recordings);
+// A held-out drop's nuisances under `model` (the penalised fit above); zero without them.
+DropNuisance FitDropNuisance(const FitProblem& problem, const FitDrop& d, const FitResult& model);
+// The spreads of the nuisances fitted in `fit` (their root mean square within conditions, over
+// the training drops that repeat one, each at least a floor: half a per cent in strength, a fifth
+// in speed, 2 ms or 2 samples in time), and the residual's per-sample scale from its data rows.
+// Returns the degrees of freedom they were read from (sum over conditions of replicates - 1).
+int EstimateNuisanceSpreads(FitProblem& problem, const FitResult& fit);
+// Fewer degrees of freedom of replicates, and the drops are fitted at their nominal conditions:
+// where every condition is one drop, nothing tells a drop's scatter from the model's misfit at that
+// condition, and the nuisances take up the effect (a hidden plug, an impulse at contact, was absorbed
+// by the drops' speeds and time shifts on the 12 unreplicated drops of the unit tests).
+inline constexpr int kMinNuisanceDf = 3;
+// Replicates share a condition: pad, soil, atmosphere, nominal speed, mass and gravity.
+std::string ConditionKey(const FitDrop& d);
 
 }  // namespace touchdown::gap

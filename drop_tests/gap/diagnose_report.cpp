@@ -14,6 +14,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "drop_tests/gap/diagnose.h"
+#include "drop_tests/gap/diagnose_selection.h"
 #include "drop_tests/formats/dataset_csv.h"
 #include "drop_tests/formats/json_number.h"
 #include "drop_tests/formats/output_path.h"
@@ -95,8 +96,65 @@ const CandidateScore* Shown(const Diagnosis& d) {
   if (d.winner >= 0) return &d.candidates[d.winner];
   const CandidateScore* best = nullptr;
   for (const CandidateScore& c : d.candidates)
-    if (c.applies && (!best || c.fit.bic < best->fit.bic)) best = &c;
+    if (c.applies && !c.screened_out && (!best || c.fit.bic < best->fit.bic)) best = &c;
   return best;
+}
+
+nlohmann::json EstimatesJson(const std::vector<ParameterEstimate>& estimates) {
+  nlohmann::json j = nlohmann::json::object();
+  for (const ParameterEstimate& e : estimates)
+    j[e.key] = {{"value", io::FiniteOrNull(e.value)}, {"interval_95", {io::FiniteOrNull(e.low), io::FiniteOrNull(e.high)}},
+                {"unit", e.unit}};
+  return j;
+}
+
+// The sensor model: inferred (every sampling fitted, with its BIC: the evidence) or given.
+nlohmann::json SensorJson(const Diagnosis& d) {
+  nlohmann::json j{{"inferred", !d.sensor.given}, {"model", dataset::DescribeSensor(d.sensor.chosen)}};
+  if (d.sensor.given) return j;
+  j["evidence"] = d.sensor.evidence;
+  nlohmann::json fits = nlohmann::json::array();
+  for (const SensorCandidate& c : d.sensor.candidates)
+    fits.push_back({{"name", c.name}, {"bic", c.bic}, {"parameter_count", c.parameters}, {"chosen", c.chosen},
+                    {"screening_fit", c.screened}, {"model", dataset::DescribeSensor(c.sensor)},
+                    {"parameters", EstimatesJson(c.estimates)}});
+  j["candidates"] = fits;
+  return j;
+}
+
+// The drops' nuisances: their spreads (the replicate scatter the fits allowed for).
+nlohmann::json NuisancesJson(const Diagnosis& d) {
+  const NuisanceSpreads& s = d.problem.spreads;
+  return {{"on", d.problem.drop_nuisances},
+          {"off_without_replicates", d.nuisances_without_replicates},
+          {"strength_spread_percent", 100 * s.log_zeta},
+          {"speed_spread_percent", 100 * s.log_speed},
+          {"touchdown_time_spread_ms", 1e3 * s.time_s},
+          {"residual_sigma", d.problem.residual_sigma}};
+}
+
+// The floor's parts, in force NRMSE (the root of the mean squares): the sensor's noise, the
+// replicates' pure error (noise and the scatter the nuisances leave), and the base's excess above
+// the floor (what a model of the conditions must explain).
+nlohmann::json FloorJson(const Diagnosis& d) {
+  const GapFloor& f = d.floor;
+  nlohmann::json j{{"source", f.from_replicates ? "replicates (pure error)" : "sensor noise at rest"},
+                   {"force_nrmse", std::sqrt(f.ms)},
+                   {"sensor_noise_force_nrmse", std::sqrt(f.noise_ms)},
+                   {"replicate_conditions", f.conditions},
+                   {"replicate_degrees_of_freedom", f.replicate_df},
+                   {"base_excess_force_nrmse", std::sqrt(std::max(d.base.held_out.mean_square - f.ms, 0.0))}};
+  j["replicate_pure_error_force_nrmse"] = std::isfinite(f.replicate_ms) ? nlohmann::json(std::sqrt(f.replicate_ms)) : nlohmann::json();
+  return j;
+}
+
+nlohmann::json LackOfFitJson(const std::vector<CellLackOfFit>& cells) {
+  nlohmann::json j = nlohmann::json::array();
+  for (const CellLackOfFit& c : cells)
+    j.push_back({{"cell", c.cell}, {"conditions", c.conditions}, {"drops", c.drops},
+                 {"lack_of_fit_force_nrmse", std::sqrt(c.lack_of_fit_ms)},
+                 {"pure_error_force_nrmse", std::sqrt(c.pure_error_ms)}, {"F", c.F}, {"p_value", c.p_value}});
+  return j;
 }
 
 bool IsSynthetic(const dataset::Dataset& ds) {
@@ -114,6 +172,11 @@ nlohmann::json DiagnosisJson(const Diagnosis& d) {
   const CandidateScore* after = d.winner >= 0 ? &d.candidates[d.winner] : &d.base;
   j["named_effect"] = d.named_effect;
   j["named_effects"] = d.named_effects;
+  j["named_nuisances"] = d.named_nuisances;
+  j["sensor"] = SensorJson(d);
+  j["drop_nuisances"] = NuisancesJson(d);
+  j["floor"] = FloorJson(d);
+  j["lack_of_fit"] = {{"before", LackOfFitJson(d.lack_of_fit_before)}, {"after", LackOfFitJson(d.lack_of_fit_after)}};
   j["selected_terms"] = d.winner >= 0 ? nlohmann::json(d.candidates[d.winner].effect_ids) : nlohmann::json::array();
   if (!d.dynamic_term_statement.empty()) j["dynamic_term_statement"] = d.dynamic_term_statement;
   j["decision"] = d.decision;
@@ -131,6 +194,14 @@ nlohmann::json DiagnosisJson(const Diagnosis& d) {
                      {"extends", c.extends < 0 ? std::string("base") : d.candidates[c.extends].name}};
     if (!c.applies) {
       e["why_not"] = c.why_not;
+    } else if (c.screened_out) {
+      e["screened_out"] = true;
+      e["bic"] = c.fit.bic;
+      e["delta_bic_vs_base"] = c.delta_bic;
+      e["delta_bic_vs_extended"] = c.delta_bic_step;
+      e["parameter_count"] = c.fit.parameters;
+      e["iterations"] = c.fit.iterations;
+      e["simulations"] = c.fit.simulations;
     } else {
       e["parameters"] = ParametersJson(c.fit, false);
       e["held_out_force_nrmse"] = c.held_out.force_nrmse;
@@ -447,8 +518,18 @@ void WriteReport(const Diagnosis& d, const dataset::Dataset& ds, const Candidate
       for (size_t i = 0; i < d.named_effects.size(); ++i) out << (i ? ", `" : " `") << d.named_effects[i] << "`";
       out << ".**";
     }
+    for (const std::string& n : d.named_nuisances)
+      out << " **The rig's `" << n << "` (a nuisance of the measurement, not of the soil) is part of the named model.**";
     if (!d.dynamic_term_statement.empty()) out << " **" << d.dynamic_term_statement << "**";
     out << " " << d.decision << ".\n\n";
+    out << "**Sensor:** " << (d.sensor.given ? "as given, " : "inferred: ") << dataset::DescribeSensor(d.sensor.chosen)
+        << (d.sensor.given ? "" : " (" + d.sensor.evidence + ")") << ". **Drop-to-drop scatter allowed for:** strength "
+        << Num(100 * d.problem.spreads.log_zeta, 3) << " %, speed " << Num(100 * d.problem.spreads.log_speed, 3)
+        << " %, touchdown time " << Num(1e3 * d.problem.spreads.time_s, 3) << " ms (per-drop nuisances"
+        << (d.problem.drop_nuisances ? ""
+            : d.nuisances_without_replicates ? ": off, the drops do not repeat their conditions (fewer than 3 "
+                                               "degrees of freedom of replicates)"
+                                             : ": off") << ").\n\n";
     if (!d.residual_description.empty()) out << d.residual_description << "\n\n";
     size_t n_train = 0;
     for (const FitDrop& f : d.problem.drops) n_train += f.train;
@@ -499,6 +580,12 @@ void WriteReport(const Diagnosis& d, const dataset::Dataset& ds, const Candidate
     for (const CandidateScore& c : d.candidates) {
       if (!c.applies) {
         out << "| " << c.step << " | " << c.name << " | not tried: " << c.why_not << " | | | | | |\n";
+        continue;
+      }
+      if (c.screened_out) {
+        out << "| " << c.step << " | " << c.name << " | screened out: BIC after " << c.fit.iterations
+            << " iterations ranks below the step's " << kFullyScored << " best | | | | " << Num(c.delta_bic, 5) << " | "
+            << Num(c.delta_bic_step, 5) << " |\n";
         continue;
       }
       std::ostringstream params;

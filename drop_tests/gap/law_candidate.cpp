@@ -5,7 +5,7 @@
 
 #include "drop_tests/dataset/calibrate.h"
 #include "drop_tests/dataset/compare.h"
-#include "drop_tests/dataset/sensor_sampling.h"
+#include "drop_tests/dataset/sensor_model.h"
 #include "drop_tests/drop/drop_factory.h"
 #include "drop_tests/drop/drop_setup.h"
 #include "drop_tests/drop/pad_drop.h"
@@ -43,7 +43,7 @@ double HeldOutNrmse(const FitProblem& p, const FitDrop& d, const rft::SoilParame
   try {
     const drop::PadDrop sim = drop::RunDrop(drop::ResolveDrop(p.pads[d.pad], soil, c, options));
     const dataset::DatasetTrace recorded =
-        dataset::RecordedTrace(sim.result, d.gravity_m_s2, {}, d.trace->t_s, p.sensor_sampling, d.sample_period_s);
+        dataset::RecordedTrace(sim.result, d.gravity_m_s2, {}, d.trace->t_s, p.sensor, d.sample_period_s);
     return dataset::ForceNrmseTime(*d.trace, recorded).value;
   } catch (const integ::IntegrationFailure&) {
     *failed = true;

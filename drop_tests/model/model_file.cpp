@@ -194,7 +194,7 @@ ModelFile LoadModelFile(const std::string& path) {
   if (f.String("type") != "model") f.Fail("type", "must be 'model', got '" + f.String("type") + "'");
   ModelFile m;
   m.source = path;
-  m.name = f.StringOr("name", std::filesystem::path(path).stem().string());
+  m.name = f.Name("name", std::filesystem::path(path).stem().string());
   m.description = f.StringOr("description", "");
   if (f.Has("soils")) {
     const io::YamlFields soils = f.Child("soils");

@@ -121,7 +121,7 @@ const io::KeyTable<PaperCheck>& CheckKeys() {
 PaperCheck ReadCheck(const io::YamlFields& f) {
   f.RequireOnly(io::Keys(CheckKeys()));
   PaperCheck c;
-  c.name = f.String("name");
+  c.name = f.Name("name");
   c.quantity = f.String("quantity");
   if (c.quantity != "final_penetration_m" && c.quantity != "peak_force_N")
     f.Fail("quantity", "must be final_penetration_m or peak_force_N, got '" + c.quantity + "'");
@@ -272,6 +272,8 @@ const io::KeyTable<CampaignToWrite>& CampaignKeys() {
          }
          y << YAML::EndSeq;
        }},
+      {"model", [](const W& w) { return w.s.model.has_value(); },
+       [](Y& y, const W& w) { y << io::PathForOutput(w.s.model_source, w.dir); }},
       {"paper_checks", [](const W& w) { return !w.s.checks.empty(); },
        [](Y& y, const W& w) {
          y << YAML::BeginSeq;
@@ -383,7 +385,7 @@ CampaignScenario LoadCampaignScenario(const std::string& path) {
   const std::string dir = fs::path(path).parent_path().string();
   // A resolved copy names the scenario it was resolved from, and stands for it.
   s.source = resolved ? io::PathFromOutput(f.String("source"), dir) : path;
-  s.name = f.StringOr("name", fs::path(path).stem().string());
+  s.name = f.Name("name", fs::path(path).stem().string());
   s.description = f.StringOr("description", "");
   if (resolved)
     ReadResolvedCases(f, dir, s);
@@ -395,7 +397,22 @@ CampaignScenario LoadCampaignScenario(const std::string& path) {
     s.reference_speed_m_s = f.PositiveOr("reference_speed_m_s", s.cases.front().conditions.impact_speed_m_s);
   if (f.Has("paper_checks"))
     for (const io::YamlFields& c : f.List("paper_checks")) s.checks.push_back(ReadCheck(c));
+  if (f.Has("model")) {
+    const fs::path given = f.String("model");
+    const std::string model = resolved ? io::PathFromOutput(given.string(), dir)
+                              : given.is_absolute() ? given.string() : (fs::path(dir) / given).string();
+    try {
+      SetCampaignModel(s, model);
+    } catch (const InputError& e) {
+      f.Fail("model", e.what());
+    }
+  }
   return s;
+}
+
+void SetCampaignModel(CampaignScenario& scenario, const std::string& model_path) {
+  scenario.model = model::LoadModelFile(model_path);
+  scenario.model_source = model_path;
 }
 
 void WriteResolvedScenario(const CampaignScenario& s, const std::string& path, const std::string& output_dir) {
@@ -404,9 +421,20 @@ void WriteResolvedScenario(const CampaignScenario& s, const std::string& path, c
   io::WriteFileAtomically(path, [&](std::ostream& out) { out << y.c_str() << '\n'; });
 }
 
+namespace {
+// A case as it runs: with the scenario's model, as `drop --model` runs one drop.
+drop::PadDrop RunCase(const CampaignScenario& s, const CampaignCase& c) {
+  if (!s.model) return drop::RunDrop(drop::ResolveDrop(*c.pad, c.soil, c.conditions));
+  drop::DropConditions conditions = c.conditions;
+  conditions.effects = model::ModelEffectTerms(*s.model);
+  conditions.effects_source = s.model_source;
+  return drop::RunDrop(drop::ResolveDrop(*c.pad, model::ApplyModel(*s.model, c.soil), conditions));
+}
+}  // namespace
+
 CampaignResult RunCampaign(const CampaignScenario& scenario) {
   CampaignResult result{scenario, {}};
-  for (const CampaignCase& c : scenario.cases) result.drops.push_back(drop::RunDrop(drop::ResolveDrop(*c.pad, c.soil, c.conditions)));
+  for (const CampaignCase& c : scenario.cases) result.drops.push_back(RunCase(scenario, c));
   return result;
 }
 
@@ -485,7 +513,7 @@ CampaignResult RunCampaignToDirectory(const CampaignScenario& scenario, const io
     r.drops.clear();
     r.drops.reserve(scenario.cases.size());
     for (const CampaignCase& c : scenario.cases) {
-      drop::PadDrop d = drop::RunDrop(drop::ResolveDrop(*c.pad, c.soil, c.conditions));
+      drop::PadDrop d = RunCase(scenario, c);
       drop::WriteTraceCsv(d.result, TracePath(staging, c));
       std::vector<pad::DropSample>().swap(d.result.trace);  // released: the file holds it
       if (d.free) std::vector<pad::FreeDropSample>().swap(d.free->trace);

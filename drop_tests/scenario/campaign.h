@@ -11,6 +11,7 @@
 
 #include "drop_tests/util/progress.h"
 #include "drop_tests/drop/pad_drop.h"
+#include "drop_tests/model/model_file.h"
 #include "drop_tests/scenario/paper_reading.h"
 
 namespace touchdown::scenario {
@@ -49,6 +50,10 @@ struct CampaignScenario {
   double reference_speed_m_s = 0.0;  // the speed shown in the per-case plots (paper: 1.0 m/s)
   std::vector<CampaignCase> cases;
   std::vector<PaperCheck> checks;
+  // A model file (MODEL.yaml: calibrated zeta, effect terms) every case runs with, as `drop
+  // --model` runs one drop; the cases keep their soils as the files give them.
+  std::optional<model::ModelFile> model;
+  std::string model_source;
 };
 
 struct CampaignResult {
@@ -61,7 +66,10 @@ struct CheckOutcome {
   double simulated = 0.0;
 };
 
+// A campaign file may name a model file (`model:`, beside the file); `campaign --model` sets or
+// replaces it (SetCampaignModel).
 CampaignScenario LoadCampaignScenario(const std::string& path);
+void SetCampaignModel(CampaignScenario& scenario, const std::string& model_path);
 
 // One check's entry in summary.json's paper_checks.
 nlohmann::json CheckOutcomeJson(const CheckOutcome& c);

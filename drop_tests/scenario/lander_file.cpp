@@ -1,3 +1,4 @@
+#include <cstdio>
 #include <filesystem>
 #include <optional>
 #include <variant>
@@ -59,6 +60,18 @@ std::optional<lander::LegPlacementError> PlaceLegs(LanderSpec& s) {
   }
   return std::nullopt;
 }
+// Why the joints' stop is too stiff for the pad (lander::MaxStopStiffness), or "".
+std::string StopStiffnessProblem(const LanderSpec& s) {
+  if (!s.layout.cone) return "";
+  const double k_max = lander::MaxStopStiffness(s.pad.body);
+  if (s.layout.cone->stiffness_N_m_rad <= k_max) return "";
+  char text[256];
+  std::snprintf(text, sizeof text,
+                "must be at most %.3g N m/rad for this pad, got %.6g (the pad would ring on its stop faster than %g "
+                "kHz, which the integrator resolves step by step: lander::MaxStopStiffness)",
+                k_max, s.layout.cone->stiffness_N_m_rad, lander::kMaxStopRingingHz / 1e3);
+  return text;
+}
 }  // namespace
 
 LanderSpec LoadLanderSpec(const std::string& name_or_path) {
@@ -72,7 +85,7 @@ LanderSpec LoadLanderSpec(const io::YamlFields& f) {
                  "pad", "legs", "provenance"});
   LanderSpec s;
   s.source = path;
-  s.name = f.StringOr("name", fs::path(path).stem().string());
+  s.name = f.Name("name", fs::path(path).stem().string());
   s.total_mass_kg = io::ReadNumber(f, "total_mass_kg", io::Sign::kPositive, &limits::kMass_kg);
   s.cog_height_m = io::ReadNumber(f, "cog_height_mm", io::Sign::kPositive, &limits::kLanderSize_mm) * kMm;
   s.body_inertia_B = io::ReadInertia(f.Child("body_inertia_kg_m2"));
@@ -100,6 +113,8 @@ LanderSpec LoadLanderSpec(const io::YamlFields& f) {
     const bool hips = error->field == lander::LegPlacementError::Field::kHipHeight;
     (hips ? legs : f).Fail(PlacementKey(error->field), error->reason);
   }
+  if (const std::string problem = StopStiffnessProblem(s); !problem.empty())
+    legs.Child("cone_limit").Fail("stiffness_N_m_rad", problem);
   return s;
 }
 
@@ -109,6 +124,9 @@ LanderSpec LanderSpecWithPad(const LanderSpec& spec, const io::PadSpec& pad) {
   if (const auto error = PlaceLegs(s))
     throw InputError("pad " + pad.name + " does not fit lander " + spec.name + " (its " + PlacementKey(error->field) +
                      ": " + error->reason + "; pad file " + pad.source + ")");
+  if (const std::string problem = StopStiffnessProblem(s); !problem.empty())
+    throw InputError("pad " + pad.name + " does not fit lander " + spec.name + " (its legs.cone_limit.stiffness_N_m_rad " +
+                     problem + "; pad file " + pad.source + ")");
   return s;
 }
 

@@ -67,7 +67,7 @@ LanderPatchSpec ReadPatch(const io::YamlFields& p, const SoilCheck& check_soil) 
     patch.name = "under_pad_" + std::to_string(pad);
     patch.area = UnderPadSquare{pad, h};  // placed by ResolveLander, once the release pose is known
   }
-  if (p.Has("name")) patch.name = p.String("name");
+  if (p.Has("name")) patch.name = p.Name("name");
   return patch;
 }
 
@@ -226,6 +226,13 @@ void ReadSimulation(const io::YamlFields& sim, lander::LanderRunOptions& options
                                    io::FormatNumber(options.duration_s * options.sample_rate_hz) +
                                    " trace samples, at most " + io::FormatNumber(limits::kMaxLanderTraceSamples) +
                                    " (lower the rate or the duration)");
+  if (sim.Has("max_evaluations")) {
+    const double n = sim.Positive("max_evaluations");
+    if (n != std::floor(n) || n > limits::kMaxRunEvaluations)
+      sim.Fail("max_evaluations", "must be a whole number of right-hand-side evaluations from 1 to " +
+                                      io::FormatNumber(limits::kMaxRunEvaluations) + ", got " + io::FormatNumber(n));
+    options.integrator.max_rhs_evaluations = static_cast<long>(n);
+  }
   if (sim.Has("rtol")) options.integrator.rtol = sim.Positive("rtol");
   if (sim.Has("atol")) {
     options.integrator.atol = sim.Positive("atol");
@@ -292,7 +299,7 @@ LanderScenario LoadLanderScenarioWithSetup(const std::string& path, std::optiona
   LanderScenario s;
   // A resolved copy names the scenario it was resolved from, and stands for it.
   s.source = resolved ? io::PathFromOutput(f.String("source"), dir) : path;
-  s.name = f.StringOr("name", fs::path(path).stem().string());
+  s.name = f.Name("name", fs::path(path).stem().string());
   s.description = f.StringOr("description", "");
   s.gravity_m_s2 = f.Has("gravity_m_s2") ? io::ReadNumber(f, "gravity_m_s2", io::Sign::kPositive, &limits::kGravity_m_s2)
                                          : rft::kEarthGravity_m_s2;

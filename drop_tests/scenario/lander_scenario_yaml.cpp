@@ -212,6 +212,9 @@ const io::KeyTable<ResolvedToWrite>& SimulationKeys() {
   static const io::KeyTable<W> keys = [] {
     io::KeyTable<W> k;
     io::AppendNumberKeys<W, R>(k, RunNumberFields(), [](const W& w) -> const R& { return w.s.options; });
+    k.push_back({"max_evaluations",
+                 [](const W& w) { return w.s.options.integrator.max_rhs_evaluations != limits::kDefaultMaxRunEvaluations; },
+                 [](Y& y, const W& w) { y << w.s.options.integrator.max_rhs_evaluations; }});
     k.push_back({"rtol", io::Always<W>, [](Y& y, const W& w) { y << w.s.options.integrator.rtol; }});
     // Without `atol` the absolute tolerances are rtol times each state's scale (lander_simulation.h).
     k.push_back({"atol", [](const W& w) { return !w.s.options.scale_tolerances; },

@@ -215,9 +215,18 @@ SubsetEstimate EstimateSubset(const LimitStateBatch& g, int dimension, const Sub
   SubsetEstimate r;
   Evaluator evaluate(g, r);
 
+  // The first level in chunks: its landings start (and a stop is seen between chunks) before a
+  // large level's last point is drawn; the points and values are the same, chunked or not.
+  constexpr int64_t kChunk = 100000;
   LevelSamples level;
-  for (int64_t i = 0; i < n; ++i) level.u.push_back(NormalPoint(dimension, o.seed, static_cast<uint64_t>(i), Method::kSubset, 0));
-  level.g = evaluate(level.u);
+  for (int64_t start = 0; start < n; start += kChunk) {
+    std::vector<Eigen::VectorXd> chunk;
+    for (int64_t i = start; i < std::min(n, start + kChunk); ++i)
+      chunk.push_back(NormalPoint(dimension, o.seed, static_cast<uint64_t>(i), Method::kSubset, 0));
+    const std::vector<double> g_chunk = evaluate(chunk);
+    level.g.insert(level.g.end(), g_chunk.begin(), g_chunk.end());
+    level.u.insert(level.u.end(), std::make_move_iterator(chunk.begin()), std::make_move_iterator(chunk.end()));
+  }
   int64_t level_evaluations = r.evaluations, accepted = 0;
 
   double log_probability = 0.0, cov2 = 0.0, cov_sum = 0.0;
@@ -305,8 +314,7 @@ RareEventEstimate EstimateImportance(const LimitStateBatch& g, const Eigen::Vect
   const double half_c2 = 0.5 * centre.squaredNorm();
   RareEventEstimate r;
   Evaluator evaluate(g, r);
-  std::vector<double> weighted;  // 1[g <= 0] phi(u) / h(u), per sample
-  weighted.reserve(static_cast<size_t>(o.samples));
+  std::vector<double> weighted;  // 1[g <= 0] phi(u) / h(u), per sample (grown as they run)
   for (int64_t start = 0; start < o.samples; start += o.batch) {
     const int64_t end = std::min(o.samples, start + o.batch);
     std::vector<Eigen::VectorXd> points;

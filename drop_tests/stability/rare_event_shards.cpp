@@ -115,9 +115,31 @@ void RequireOneShardSplit(const std::string& out_dir, const sweep::Shard& shard)
   }
 }
 
-RareEventShardBarrier::RareEventShardBarrier(std::string out_dir, std::string pass, sweep::Shard shard,
-                                             const std::atomic<int>* stop, std::ostream* log)
-    : out_dir_(std::move(out_dir)), pass_(std::move(pass)), shard_(shard), stop_(stop), log_(log) {}
+void RequireOneShardMethod(const std::string& out_dir, const sweep::Shard& shard, const std::string& method) {
+  const fs::path own = fs::path(RareEventShardDir(out_dir, shard)) / "method";
+  std::error_code ec;
+  fs::create_directories(own.parent_path(), ec);
+  if (ec) throw MakeInputError(own.parent_path().string(), "", "cannot create: " + ec.message());
+  io::WriteFileAtomically(own.string(), [&](std::ostream& out) { out << method << '\n'; });
+  for (int j = 0; j < shard.count; ++j) {
+    if (j == shard.index) continue;
+    const fs::path other = fs::path(RareEventShardDir(out_dir, {j, shard.count})) / "method";
+    std::ifstream in(other);
+    std::string theirs;
+    if (!in || !std::getline(in, theirs) || theirs == method) continue;
+    throw MakeInputError("", "--method",
+                         method + ": " + out_dir + " holds shard " + sweep::Shard{j, shard.count}.Text() +
+                             " of a --method " + theirs + " run (" + other.string() +
+                             "); every shard of one --out runs one method: give this one another --out");
+  }
+}
+
+RareEventShardBarrier::RareEventShardBarrier(std::string out_dir, std::string pass, std::string run_method,
+                                             sweep::Shard shard, const std::atomic<int>* stop, std::ostream* log)
+    : out_dir_(std::move(out_dir)), pass_(std::move(pass)), run_method_(std::move(run_method)), shard_(shard),
+      stop_(stop), log_(log) {
+  RequireOneShardMethod(out_dir_, shard_, run_method_);
+}
 
 std::string RareEventShardBarrier::OwnDir() const {
   return (fs::path(RareEventShardDir(out_dir_, shard_)) / pass_).string();
@@ -159,6 +181,7 @@ std::optional<std::vector<DropRecord>> RareEventShardBarrier::Gather(const sweep
       }
       if (stop_ && stop_->load() != 0) return std::nullopt;
       RequireOneShardSplit(out_dir_, shard_);
+      RequireOneShardMethod(out_dir_, shard_, run_method_);
       if (log_ && Since(start) >= next_report) {
         *log_ << "stability: shard " << shard_.Text() << " waits for shard " << other.Text() << "'s " << pass_
               << " landings " << first << " to " << first + n - 1 << " (" << path << ")"

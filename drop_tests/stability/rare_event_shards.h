@@ -37,13 +37,19 @@ std::string RareEventShardDir(const std::string& out_dir, const sweep::Shard& sh
 // M != N): the shards of one run must agree on N, or each would wait for shards that never come.
 void RequireOneShardSplit(const std::string& out_dir, const sweep::Shard& shard);
 
-// One pass's meeting point of the shards (`pass`: "subset" or "importance").
+// Records the run's --method in DIR/shard_I_of_N/method and refuses (InputError naming --method) a
+// DIR where another shard's names another: an importance run's shards go on past the subset pass
+// that a subset run's shards end with, and would wait for them forever.
+void RequireOneShardMethod(const std::string& out_dir, const sweep::Shard& shard, const std::string& method);
+
+// One pass's meeting point of the shards (`pass`: "subset" or "importance") of a run of
+// `run_method` (the --method: an importance run has a subset pass too).
 class RareEventShardBarrier {
  public:
   // `stop`: when it becomes non-zero, a wait ends (Gather returns nothing). `log`: what a long wait
   // waits for (nullptr: silent).
-  RareEventShardBarrier(std::string out_dir, std::string pass, sweep::Shard shard, const std::atomic<int>* stop,
-                        std::ostream* log);
+  RareEventShardBarrier(std::string out_dir, std::string pass, std::string run_method, sweep::Shard shard,
+                        const std::atomic<int>* stop, std::ostream* log);
   // This shard's directory of the pass (DIR/shard_I_of_N/<pass>): its sweep output.
   std::string OwnDir() const;
   // Publishes `own` (this shard's landings of first..first+n-1, in index order) and returns the
@@ -55,7 +61,7 @@ class RareEventShardBarrier {
 
  private:
   std::string BatchPath(const sweep::Shard& shard, int64_t first) const;
-  std::string out_dir_, pass_;
+  std::string out_dir_, pass_, run_method_;
   sweep::Shard shard_;
   const std::atomic<int>* stop_;
   std::ostream* log_;

@@ -45,11 +45,25 @@ nlohmann::json ReadJsonFile(const std::string& path, const std::string& study_fi
   std::ifstream in(path);
   if (!fs::is_regular_file(path) || !in)
     throw MakeInputError(study_file, field, "cannot read the calibration report '" + path + "'");
+  // A key given twice in one object: the parser keeps the last silently; a report never has one.
+  std::vector<std::set<std::string>> keys;  // per open object
+  std::string duplicate;
+  const nlohmann::json::parser_callback_t check = [&](int, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+    if (event == nlohmann::json::parse_event_t::object_start) keys.emplace_back();
+    if (event == nlohmann::json::parse_event_t::object_end && !keys.empty()) keys.pop_back();
+    if (event == nlohmann::json::parse_event_t::key && !keys.empty() && !keys.back().insert(parsed.get<std::string>()).second &&
+        duplicate.empty())
+      duplicate = parsed.get<std::string>();
+    return true;
+  };
+  nlohmann::json report;
   try {
-    return nlohmann::json::parse(in);
+    report = nlohmann::json::parse(in, check);
   } catch (const nlohmann::json::exception& e) {
     throw MakeInputError(path, "", std::string("is not JSON: ") + e.what());
   }
+  if (!duplicate.empty()) throw MakeInputError(path, duplicate, "given twice in one object (a report has each key once)");
+  return report;
 }
 
 double JsonNumber(const nlohmann::json& j, const std::string& file, const std::string& field) {
@@ -91,6 +105,12 @@ CalibrationCovariance ReadCovariance(const nlohmann::json& report, const std::st
     const std::string field = "covariance.parameters[" + std::to_string(a) + "]";
     if (!p.is_object() || !p.contains("name") || !p["name"].is_string() || !p.contains("value") || !p.contains("kind"))
       throw MakeInputError(file, field, "must have a name, a kind and a value");
+    // The kinds a calibration report writes: a soil field's (kSoilFields), a pad's or a lander's
+    // field. Another is a report this touchdown does not know, whose rows would be skipped unseen.
+    std::set<std::string> kinds = {"pad_field", "lander_field"};
+    for (const SoilField f : kSoilFields) kinds.insert(InfoOf(f).kind);
+    if (!p["kind"].is_string() || !kinds.count(p["kind"].get<std::string>()))
+      throw MakeInputError(file, field + ".kind", "unknown kind " + p["kind"].dump() + " (" + Joined(kinds) + ")");
     JsonNumber(p["value"], file, field + ".value");
     out.parameters.push_back(p);
   }

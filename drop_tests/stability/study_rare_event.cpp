@@ -1,7 +1,10 @@
 #include "drop_tests/stability/study_rare_event.h"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <functional>
 #include <limits>
@@ -63,11 +66,12 @@ std::string MethodDir(const std::string& out_dir, StudyMethod method) {
 // meets the other shards after it (rare_event_shards.h).
 class LandingLimitState {
  public:
-  LandingLimitState(const Study& study, StudyMethod method, int64_t samples, const std::string& out_dir,
-                    const sweep::SweepRunOptions& options, RareEventStudyResult& result, std::ostream* say)
+  LandingLimitState(const Study& study, StudyMethod method, StudyMethod run_method, int64_t samples,
+                    const std::string& out_dir, const sweep::SweepRunOptions& options, RareEventStudyResult& result,
+                    std::ostream* say)
       : study_(study), method_(method), samples_(samples), options_(options), result_(result) {
     if (sharded()) {
-      barrier_.emplace(out_dir, StudyMethodName(method), options.shard, options.stop, say);
+      barrier_.emplace(out_dir, StudyMethodName(method), StudyMethodName(run_method), options.shard, options.stop, say);
       dir_ = barrier_->OwnDir();
     } else {
       dir_ = MethodDir(out_dir, method);
@@ -218,6 +222,35 @@ StudyMethod ParseStudyMethod(const std::string& text, const std::string& field) 
   throw MakeInputError("", field, "must be one of monte_carlo, subset, importance, got '" + text + "'");
 }
 
+namespace {
+// What a rare-event run holds per landing of its first level before that level's landings run,
+// and keeps: the estimator's point (and its candidate's), the limit state's point, value and
+// record. Refused against the machine's memory up front, so that a billion samples per level is
+// one line and exit 2, not gigabytes allocated point by point before the first landing.
+// Past kMaxSamplesPerLevel a level is refused on every machine (about 10 GB at a few variables; a
+// run of 30 such levels is 3e8 landings, years of CPU); below it, against this machine's memory.
+constexpr int64_t kMaxSamplesPerLevel = 10'000'000;
+
+void RequireMemoryFor(int64_t samples, int dimension) {
+  const double point = sizeof(Eigen::VectorXd) + 16.0 + 8.0 * dimension;  // the object, malloc's header, the values
+  const double per_landing = 3.0 * point + sizeof(DropRecord) + 2.0 * sizeof(double);
+  if (samples > kMaxSamplesPerLevel)
+    throw MakeInputError("", "--samples",
+                         std::to_string(samples) + ": a subset run holds each level's landings in memory (about a "
+                             "kilobyte each): at most " + std::to_string(kMaxSamplesPerLevel) + " samples per level");
+  const double need = per_landing * static_cast<double>(samples);
+  const double have = static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGESIZE));
+  if (have <= 0.0 || need <= 0.5 * have) return;
+  char text[320];
+  std::snprintf(text, sizeof text,
+                "%lld: a subset run holds each level's landings in memory, %.3g GB for %lld (%.0f bytes a landing); "
+                "this machine has %.3g GB, half of which allows at most %.3g samples per level",
+                static_cast<long long>(samples), need / 1e9, static_cast<long long>(samples), per_landing, have / 1e9,
+                std::floor(0.5 * have / per_landing));
+  throw MakeInputError("", "--samples", text);
+}
+}  // namespace
+
 void RequireRareEventStudy(const Study& study, StudyMethod method, int64_t samples) {
   if (method == StudyMethod::kMonteCarlo) return;
   const std::string name = StudyMethodName(method);
@@ -235,6 +268,7 @@ void RequireRareEventStudy(const Study& study, StudyMethod method, int64_t sampl
     throw MakeInputError("", "--samples",
                          name + " runs its levels in chains of 1 / p0 = 10 landings: samples must be a multiple of 10, "
                                 "at least 10, got " + std::to_string(samples));
+  RequireMemoryFor(samples, static_cast<int>(study.plan.random.size()));
 }
 
 sweep::SweepPlan RareEventPlan(const Study& study, StudyMethod method, int64_t samples, int64_t first,
@@ -274,17 +308,19 @@ double LimitStateOfLanding(const DropRecord& r) {
   return std::isnan(m) || m <= 0.0 ? std::numeric_limits<double>::denorm_min() : m;
 }
 
+
 RareEventStudyResult RunRareEventStudy(const Study& study, StudyMethod method, int64_t samples,
                                        const std::string& out_dir, const sweep::SweepRunOptions& options,
                                        std::ostream* say) {
+  RequireRareEventStudy(study, method, samples);  // the callers' check, again: nothing may run past it
   RareEventStudyResult result;
   result.method = method;
   result.samples = samples;
   const int dimension = static_cast<int>(study.plan.random.size());
   WholeRunStores whole(study, method, samples, out_dir, options);
-  LandingLimitState state(study, StudyMethod::kSubset, samples, out_dir, options, result, say);
+  LandingLimitState state(study, StudyMethod::kSubset, method, samples, out_dir, options, result, say);
   const LimitStateBatch g = [&state](const std::vector<Eigen::VectorXd>& u, std::vector<double>& v) { state(u, v); };
-  LandingLimitState importance(study, StudyMethod::kImportance, samples, out_dir, options, result, say);
+  LandingLimitState importance(study, StudyMethod::kImportance, method, samples, out_dir, options, result, say);
   const LimitStateBatch gi = [&importance](const std::vector<Eigen::VectorXd>& u, std::vector<double>& v) {
     importance(u, v);
   };

@@ -95,7 +95,7 @@ void CheckValue(SweepParam p, double v, const std::string& file, const std::stri
     case SweepParam::kMass: limits::Require(limits::kMass_kg, v, file, path); break;
     case SweepParam::kGravity: limits::Require(limits::kGravity_m_s2, v, file, path); break;
     case SweepParam::kTilt:
-      if (!(std::abs(v) < 90.0)) fail("between -90 and 90");
+      if (!(std::abs(v) < 90.0)) fail("strictly between -90 and 90 (on its side a pad does not land on its bottom)");
       break;
     case SweepParam::kRoll:
     case SweepParam::kPitch:
@@ -689,7 +689,7 @@ SweepPlan LoadSweepPlan(const std::string& path, const std::string& model_overri
   const std::string base = fs::path(path).parent_path().string();
   SweepPlan plan;
   plan.source = path;
-  plan.name = f.StringOr("name", fs::path(path).stem().string());
+  plan.name = f.Name("name", fs::path(path).stem().string());
   if (f.Has("lander")) ReadLanderBlock(f, base, plan);
   ReadRunOptions(f, plan);
 

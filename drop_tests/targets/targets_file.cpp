@@ -26,17 +26,24 @@ struct QuantityEntry {
   const char* name;
   bool lander;
   bool signed_value;  // roll and pitch take either sign; the others are magnitudes (>= 0)
+  double largest;     // the largest magnitude a value may have (rft/physical_limits.h where it has one)
+  const char* unit;
 };
+// Ratios of two quantities, and the pads' depth spread, are dimensionless.
+constexpr double kLargestRatio = 1e6;
 constexpr QuantityEntry kQuantities[] = {
-    {Quantity::kFinalPenetration, "final_penetration_m", false, false},
-    {Quantity::kPeakForce, "peak_force_N", false, false},
-    {Quantity::kTimeToRest, "time_to_rest_s", false, false},
-    {Quantity::kFinalRoll, "final_roll_deg", true, true},
-    {Quantity::kFinalPitch, "final_pitch_deg", true, true},
-    {Quantity::kMaxTilt, "max_tilt_deg", true, false},
-    {Quantity::kPadDepth, "pad_depth_m", true, false},
-    {Quantity::kPadDepthSpread, "pad_depth_spread", true, false},
+    {Quantity::kFinalPenetration, "final_penetration_m", false, false, limits::kDepth_m.high, "m"},
+    {Quantity::kPeakForce, "peak_force_N", false, false, limits::kForce_N.high, "N"},
+    {Quantity::kTimeToRest, "time_to_rest_s", false, false, limits::kMaxLanderDuration_s, "s"},
+    {Quantity::kFinalRoll, "final_roll_deg", true, true, 180.0, "deg"},
+    {Quantity::kFinalPitch, "final_pitch_deg", true, true, 180.0, "deg"},
+    {Quantity::kMaxTilt, "max_tilt_deg", true, false, 180.0, "deg"},
+    {Quantity::kPadDepth, "pad_depth_m", true, false, limits::kDepth_m.high, "m"},
+    {Quantity::kPadDepthSpread, "pad_depth_spread", true, false, kLargestRatio, "(dimensionless)"},
 };
+// An uncertainty divides its target's residual: below this share of the largest value its
+// residuals and their squares leave the doubles (1e-320 is denormal; 1/1e-320 overflows).
+constexpr double kSmallestUncertaintyShare = 1e-12;
 
 const QuantityEntry& EntryOf(Quantity q) {
   for (const QuantityEntry& e : kQuantities)
@@ -112,7 +119,7 @@ ParameterPrior ReadPrior(const io::YamlFields& m, const Parameter& p) {
 Parameter ReadParameter(const io::YamlFields& p) {
   p.RequireOnly({"name", "soil", "pad", "lander", "field", "lower", "upper", "start", "source", "prior"});
   Parameter out;
-  out.name = p.String("name");
+  out.name = p.Name("name");
   out.source = p.String("source");
   out.field = p.String("field");
   const int given = int(p.Has("soil")) + int(p.Has("pad")) + int(p.Has("lander"));
@@ -322,7 +329,7 @@ Target ReadTarget(const io::YamlFields& t, ScenarioReader& reader) {
   t.RequireOnly({"name", "drop", "campaign", "lander", "quantity", "pad", "ratio", "value", "at_most", "at_least",
                  "uncertainty", "use", "source"});
   Target out;
-  out.name = t.String("name");
+  out.name = t.Name("name");
   out.source = t.String("source");
   if (t.Has("ratio")) {
     for (const char* k : {"drop", "campaign", "lander", "quantity", "pad"})
@@ -342,7 +349,17 @@ Target ReadTarget(const io::YamlFields& t, ScenarioReader& reader) {
   if (out.at_most && out.at_least && !(*out.at_least < *out.at_most))
     t.Fail("at_most", "must exceed at_least (" + Number(*out.at_least) + "), got " + Number(*out.at_most));
   RequireReachableSign(t, out);
+  // Every number within what the quantity can be, so that residuals and the fit's cost stay finite
+  // (a value of 1e308 made the cost infinite and the fit "fail" with exit 0).
+  const QuantityEntry& entry = EntryOf(out.measure.quantity);
+  const double largest = out.denominator ? kLargestRatio : entry.largest;
+  const char* unit = out.denominator ? "(dimensionless)" : entry.unit;
+  const limits::Range values{unit, -largest, largest, false};
+  for (const char* key : {"value", "at_most", "at_least"})
+    if (t.Has(key)) limits::Require(values, t.Number(key), t.file(), t.Path(key));
   out.uncertainty = t.Positive("uncertainty");
+  limits::Require({unit, kSmallestUncertaintyShare * largest, largest, false}, out.uncertainty, t.file(),
+                  t.Path("uncertainty"));
   const std::string use = t.String("use");
   if (use != "fit" && use != "predict") t.Fail("use", "must be 'fit' or 'predict', got '" + use + "'");
   out.fit = use == "fit";
@@ -386,7 +403,7 @@ TargetsFile LoadTargetsFile(const std::string& path) {
   if (f.String("type") != "targets") f.Fail("type", "must be 'targets', got '" + f.String("type") + "'");
   TargetsFile out;
   out.source = path;
-  out.name = f.StringOr("name", fs::path(path).stem().string());
+  out.name = f.Name("name", fs::path(path).stem().string());
   out.description = f.StringOr("description", "");
   if (f.Has("fit")) ReadSettings(f.Child("fit"), out.settings);
   std::vector<std::string> names, addresses;

@@ -12,6 +12,7 @@
 #include <glog/logging.h>
 
 #include "drop_tests/targets/target_evaluation.h"
+#include "rft/input_error.h"
 
 namespace touchdown::targets {
 
@@ -248,6 +249,10 @@ void Solve(const TargetsFile& file, TargetEvaluator& evaluator, const TargetsFit
   ceres::Solver::Summary summary;
   ceres::Solve(options, &problem, &summary);
   if (failure) std::rethrow_exception(failure);
+  // A cost Ceres could not evaluate (not finite) is a failed fit, not a result: no model is written.
+  if (summary.termination_type == ceres::FAILURE || !std::isfinite(summary.final_cost))
+    throw SolverFailure("calibrate --targets: the fit failed after " + std::to_string(summary.iterations.size()) +
+                        " evaluations of the targets: " + summary.message);
   result.iterations = int(summary.iterations.size()) - 1;
   result.converged = summary.termination_type == ceres::CONVERGENCE || summary.termination_type == ceres::USER_SUCCESS;
   result.termination = summary.termination_type == ceres::USER_SUCCESS

@@ -5,12 +5,14 @@
 #include <numbers>
 #include <filesystem>
 #include <set>
+#include <stdexcept>
 
 #include "drop_tests/formats/yaml_fields.h"
 #include "drop_tests/validation/katsuragi_durian.h"
 #include "drop_tests/validation/shallow_impact_depth.h"
 #include "lander/pad/release.h"
 #include "rft/input_error.h"
+#include "rft/physical_limits.h"
 
 namespace touchdown::validation {
 
@@ -38,6 +40,28 @@ const char* ProvenanceName(Provenance p) {
 }
 
 namespace {
+
+// Every number a source gives is range-checked at load, as a scenario's is (rft/physical_limits.h
+// where a bound exists there), in the file's own units: a measured depth of 1e9 mm would otherwise
+// be simulated, and a law's 1e308 reach its Lambert W.
+constexpr limits::Range kLength_mm{"mm", 0.0, limits::kDepth_m.high * 1e3, true};       // depths, d1, diameters
+constexpr limits::Range kUncertainty_mm{"mm", 0.0, limits::kDepth_m.high * 1e3, false};
+constexpr limits::Range kDropHeight_mm{"mm", 0.0, limits::kDropHeight_m.high * 1e3, false};
+constexpr limits::Range kStopTime_ms{"ms", 0.0, 1e5, true};                               // 100 s
+constexpr limits::Range kUncertainty_ms{"ms", 0.0, 1e5, false};
+constexpr limits::Range kPressure_N_cm2{"N/cm^2", 0.0, 1e6, true};                        // 10 GPa
+// Katsuragi & Durian's k/m: 1040 s^-2 for their sphere; 1e8 is a 1e4 times stiffer bed under a
+// 1e4 times lighter sphere.
+constexpr limits::Range kKOverM_per_s2{"1/s^2", 0.0, 1e8, true};
+constexpr limits::Range kKOverMUncertainty_per_s2{"1/s^2", 0.0, 1e8, false};
+constexpr limits::Range kCoefficient{"(dimensionless)", 0.0, 1e3, true};  // a prefactor, a friction coefficient
+constexpr limits::Range kExponent{"(dimensionless)", -100.0, 100.0, false};
+
+double InRange(const io::YamlFields& f, const std::string& key, const limits::Range& range) {
+  const double v = f.Number(key);
+  limits::Require(range, v, f.file(), f.Path(key));
+  return v;
+}
 
 Quantity ReadQuantity(const io::YamlFields& f) {
   const std::string q = f.String("quantity");
@@ -76,10 +100,10 @@ KatsuragiDurianLaw ReadKatsuragiDurianLaw(const io::YamlFields& f) {
   f.RequireOnly({"kind", "d1_mm", "d1_uncertainty_mm", "k_over_m_per_s2", "k_over_m_uncertainty_per_s2", "how",
                  "where"});
   KatsuragiDurianLaw law;
-  law.d1_m = f.Positive("d1_mm") * 1e-3;
-  law.d1_uncertainty_m = f.NonNegative("d1_uncertainty_mm") * 1e-3;
-  law.k_over_m_s2 = f.Positive("k_over_m_per_s2");
-  law.k_over_m_uncertainty_s2 = f.NonNegative("k_over_m_uncertainty_per_s2");
+  law.d1_m = InRange(f, "d1_mm", kLength_mm) * 1e-3;
+  law.d1_uncertainty_m = InRange(f, "d1_uncertainty_mm", kUncertainty_mm) * 1e-3;
+  law.k_over_m_s2 = InRange(f, "k_over_m_per_s2", kKOverM_per_s2);
+  law.k_over_m_uncertainty_s2 = InRange(f, "k_over_m_uncertainty_per_s2", kKOverMUncertainty_per_s2);
   if (law.d1_uncertainty_m >= law.d1_m) f.Fail("d1_uncertainty_mm", "must be below d1_mm");
   if (law.k_over_m_uncertainty_s2 >= law.k_over_m_s2) f.Fail("k_over_m_uncertainty_per_s2", "must be below k_over_m_per_s2");
   law.how = ReadProvenance(f);
@@ -95,8 +119,8 @@ ShallowImpactLaw ReadShallowImpactLaw(const io::YamlFields& f, const ValidationS
     f.Fail("kind", "shallow_impact needs a sphere: a spherical_cap pad whose radius is its sphere_radius");
   if (!(s.soil.bulk_density_kg_m3 > 0.0)) f.Fail("kind", "shallow_impact needs the soil's bulk_density_kg_m3 (rho_g)");
   ShallowImpactLaw law;
-  law.prefactor = f.Positive("prefactor");
-  law.friction_coefficient = f.Positive("friction_coefficient");
+  law.prefactor = InRange(f, "prefactor", kCoefficient);
+  law.friction_coefficient = InRange(f, "friction_coefficient", kCoefficient);
   law.how = ReadProvenance(f);
   law.where = f.String("where");
   return law;
@@ -125,8 +149,8 @@ DepthWithUncertainty LawDepth(const ValidationSource& s, const MeasuredPoint& p)
 double ReadImpactSpeed(const io::YamlFields& f, double gravity_m_s2, std::optional<double>& drop_height_m) {
   if (f.Has("impact_speed_m_s") == f.Has("drop_height_mm"))
     f.Fail("impact_speed_m_s", "give exactly one of impact_speed_m_s and drop_height_mm");
-  if (f.Has("impact_speed_m_s")) return f.NonNegative("impact_speed_m_s");
-  drop_height_m = f.NonNegative("drop_height_mm") * 1e-3;
+  if (f.Has("impact_speed_m_s")) return InRange(f, "impact_speed_m_s", limits::kSpeed_m_s);
+  drop_height_m = InRange(f, "drop_height_mm", kDropHeight_mm) * 1e-3;
   return pad::TouchdownSpeed(0.0, gravity_m_s2, *drop_height_m);
 }
 
@@ -134,7 +158,7 @@ MeasuredPoint ReadPoint(const io::YamlFields& f, const ValidationSource& s) {
   f.RequireOnly({"id", "impact_speed_m_s", "drop_height_mm", "quantity", "depth_mm", "stop_time_ms", "uncertainty_mm",
                  "uncertainty_ms", "from_law", "how", "where"});
   MeasuredPoint p;
-  p.id = f.String("id");
+  p.id = f.Name("id");
   p.impact_speed_m_s = ReadImpactSpeed(f, s.gravity_m_s2, p.drop_height_m);
   p.quantity = ReadQuantity(f);
   const bool from_law = f.Has("from_law") && f.Bool("from_law");
@@ -146,12 +170,22 @@ MeasuredPoint ReadPoint(const io::YamlFields& f, const ValidationSource& s) {
       f.Fail("impact_speed_m_s", "the shallow_impact law is for drops from rest: give drop_height_mm");
     if (p.quantity != Quantity::kFinalDepth) f.Fail("from_law", "the law gives final_depth only");
     if (f.Has(value_key)) f.Fail(value_key, "give a value or from_law: true, not both");
-    const DepthWithUncertainty d = LawDepth(s, p);
+    // The law's depth at this point is a number the run will simulate towards: it must exist and
+    // lie within the depths any value may (a law whose bed barely resists gives none, or 1e9 m).
+    DepthWithUncertainty d;
+    try {
+      d = LawDepth(s, p);
+    } catch (const std::invalid_argument& e) {
+      f.Fail("from_law", std::string("the measured law gives no final depth at this point (") + e.what() + ")");
+    }
+    if (!limits::Within(kLength_mm, d.depth_m * 1e3) || !limits::Within(kUncertainty_mm, d.half_range_m * 1e3))
+      f.Fail("from_law", "the measured law's final depth here " + limits::Describe(kLength_mm, d.depth_m * 1e3));
     p.value = d.depth_m;
     p.uncertainty = d.half_range_m;
   } else {
-    p.value = f.Positive(value_key) * 1e-3;
-    if (f.Has(uncertainty_key)) p.uncertainty = f.NonNegative(uncertainty_key) * 1e-3;
+    const bool depth = p.quantity == Quantity::kFinalDepth;
+    p.value = InRange(f, value_key, depth ? kLength_mm : kStopTime_ms) * 1e-3;
+    if (f.Has(uncertainty_key)) p.uncertainty = InRange(f, uncertainty_key, depth ? kUncertainty_mm : kUncertainty_ms) * 1e-3;
   }
   p.how = ReadProvenance(f);
   if (from_law != (p.how == Provenance::kDerivedFromMeasuredLaw))
@@ -178,8 +212,8 @@ void ReadTrendLaw(const io::YamlFields& f, MeasuredTrend& t) {
     else f.Fail("direction", "must be increasing or decreasing, got '" + d + "'");
     return;
   }
-  t.exponent = f.Number("exponent");
-  t.tolerance = f.Positive("tolerance");
+  t.exponent = InRange(f, "exponent", kExponent);
+  t.tolerance = InRange(f, "tolerance", kCoefficient);
   const std::string from = f.String("tolerance_source");
   if (from != "stated" && from != "assumed") f.Fail("tolerance_source", "must be stated or assumed, got '" + from + "'");
   t.tolerance_assumed = from == "assumed";
@@ -190,19 +224,25 @@ MeasuredTrend ReadTrend(const io::YamlFields& f, const ValidationSource& s) {
   f.RequireOnly({"id", "quantity", "vary", "values", "at_impact_speed_m_s", "at_gravity_m_s2", "exponent", "tolerance",
                  "tolerance_source", "tolerance_note", "direction", "how", "where"});
   MeasuredTrend t;
-  t.id = f.String("id");
+  t.id = f.Name("id");
   t.quantity = ReadQuantity(f);
   t.vary = ReadVariable(f);
   t.values = f.NumberList("values", /*allow_zero=*/false);
   if (t.values.size() < 2 || !std::is_sorted(t.values.begin(), t.values.end()) ||
       t.values.front() == t.values.back())
     f.Fail("values", "must be two or more increasing values spanning the measured range");
-  t.at_gravity_m_s2 = f.PositiveOr("at_gravity_m_s2", s.gravity_m_s2);
+  const limits::Range& values_range = t.vary == Variable::kImpactSpeed        ? limits::kSpeed_m_s
+                                      : t.vary == Variable::kGravity          ? limits::kGravity_m_s2
+                                      : t.vary == Variable::kTotalDropDistance ? limits::kDropHeight_m
+                                                                               : limits::kDensity_kg_m3;
+  for (const double v : t.values)
+    if (!limits::Within(values_range, v)) f.Fail("values", limits::Describe(values_range, v));
+  t.at_gravity_m_s2 = f.Has("at_gravity_m_s2") ? InRange(f, "at_gravity_m_s2", limits::kGravity_m_s2) : s.gravity_m_s2;
   const bool varies_speed = t.vary == Variable::kImpactSpeed || t.vary == Variable::kTotalDropDistance;
   if (varies_speed) {
     if (f.Has("at_impact_speed_m_s")) f.Fail("at_impact_speed_m_s", "the trend varies the impact speed");
   } else {
-    t.at_impact_speed_m_s = f.NonNegative("at_impact_speed_m_s");
+    t.at_impact_speed_m_s = InRange(f, "at_impact_speed_m_s", limits::kSpeed_m_s);
   }
   if (t.vary == Variable::kGravity && f.Has("at_gravity_m_s2")) f.Fail("at_gravity_m_s2", "the trend varies gravity");
   if (t.vary == Variable::kProjectileDensity && s.pad.file.shape != "spherical_cap")
@@ -213,13 +253,14 @@ MeasuredTrend ReadTrend(const io::YamlFields& f, const ValidationSource& s) {
   return t;
 }
 
-// A measured range: one value, or [low, high] with low < high, each positive; SI by `to_si`.
-Range ReadRange(const io::YamlFields& f, const std::string& key, double to_si) {
+// A measured range: one value, or [low, high] with low < high, each within `range` (the file's
+// units); SI by `to_si`.
+Range ReadRange(const io::YamlFields& f, const std::string& key, const limits::Range& range, double to_si) {
   const std::vector<double> v = f.NumberList(key, /*allow_zero=*/false);
   if (v.empty() || v.size() > 2 || (v.size() == 2 && !(v[0] < v[1])))
     f.Fail(key, "must be [value] or [low, high] with low < high");
   for (const double x : v)
-    if (!(x > 0.0)) f.Fail(key, "must be positive");
+    if (!limits::Within(range, x)) f.Fail(key, limits::Describe(range, x));
   return {v.front() * to_si, v.back() * to_si};
 }
 
@@ -228,19 +269,30 @@ MeasuredBearing ReadBearing(const io::YamlFields& f, const ValidationSource& s) 
   f.RequireOnly({"id", "pressure_N_cm2", "depth_mm", "diameter_mm", "how", "where"});
   if (s.pad.file.shape != "flat") f.Fail("id", "a static bearing needs a flat pad (profile shape: flat)");
   MeasuredBearing b;
-  b.id = f.String("id");
-  b.pressure_Pa = ReadRange(f, "pressure_N_cm2", 1e4);
-  b.depth_m = ReadRange(f, "depth_mm", 1e-3);
-  b.diameter_m = ReadRange(f, "diameter_mm", 1e-3);
+  b.id = f.Name("id");
+  b.pressure_Pa = ReadRange(f, "pressure_N_cm2", kPressure_N_cm2, 1e4);
+  b.depth_m = ReadRange(f, "depth_mm", kLength_mm, 1e-3);
+  b.diameter_m = ReadRange(f, "diameter_mm", limits::kPadSize_mm, 1e-3);
   b.how = ReadProvenance(f);
   if (b.how == Provenance::kDerivedFromMeasuredLaw) f.Fail("how", "a static bearing is quoted or read off a figure");
   b.where = f.String("where");
   return b;
 }
 
-void ReadMedium(const io::YamlFields& m, ValidationSource& s) {
+// A file loaded once per cache (by its path, as resolved beside the source).
+template <typename T, typename Load>
+T Cached(std::map<std::string, T>* cache, const std::string& path, Load load) {
+  if (!cache) return load(path);
+  const auto it = cache->find(path);
+  if (it != cache->end()) return it->second;
+  return cache->emplace(path, load(path)).first->second;
+}
+
+void ReadMedium(const io::YamlFields& m, ValidationSource& s, SourceFileCache* cache) {
   m.RequireOnly({"soil", "description", "zeta_route", "calibrated_on"});
-  s.soil = LoadNamed(m, "soil", [](const std::string& p) { return io::LoadSoil(p); });
+  s.soil = LoadNamed(m, "soil", [cache](const std::string& p) {
+    return Cached(cache ? &cache->soils : nullptr, p, [](const std::string& q) { return io::LoadSoil(q); });
+  });
   s.medium = m.String("description");
   const std::string route = m.String("zeta_route");
   if (route == "derived") {
@@ -273,7 +325,7 @@ void CheckIds(const io::YamlFields& f, const ValidationSource& s) {
 
 }  // namespace
 
-ValidationSource LoadValidationSource(const std::string& path) {
+ValidationSource LoadValidationSource(const std::string& path, SourceFileCache* cache) {
   const io::YamlFields f = io::YamlFields::LoadFile(path);
   f.RequireSchemaVersion(1);
   f.RequireOnly({"schema_version", "type", "id", "citation", "read_at", "projectile", "medium", "gravity_m_s2",
@@ -287,11 +339,13 @@ ValidationSource LoadValidationSource(const std::string& path) {
   s.read_at = f.String("read_at");
   const io::YamlFields projectile = f.Child("projectile");
   projectile.RequireOnly({"pad", "description"});
-  s.pad = LoadNamed(projectile, "pad", [](const std::string& p) { return io::LoadPad(p); });
+  s.pad = LoadNamed(projectile, "pad", [cache](const std::string& p) {
+    return Cached(cache ? &cache->pads : nullptr, p, [](const std::string& q) { return io::LoadPad(q); });
+  });
   if (!s.pad.is_axisymmetric()) projectile.Fail("pad", "must be an axisymmetric pad (the rig drop)");
   s.projectile = projectile.String("description");
-  ReadMedium(f.Child("medium"), s);
-  s.gravity_m_s2 = f.Positive("gravity_m_s2");
+  ReadMedium(f.Child("medium"), s, cache);
+  s.gravity_m_s2 = InRange(f, "gravity_m_s2", limits::kGravity_m_s2);
   if (f.Has("low_gravity")) s.low_gravity = f.Bool("low_gravity");
   if (f.Has("measured_law")) ReadLaw(f.Child("measured_law"), s);
   if (f.Has("points"))
@@ -325,7 +379,8 @@ ValidationSet LoadValidationSet(const std::string& directory) {
     if (e.path().extension() == ".yaml" && e.path().filename() != "dynamic_rft.yaml") files.push_back(e.path().string());
   std::sort(files.begin(), files.end());
   ValidationSet set;
-  for (const std::string& file : files) set.sources.push_back(LoadValidationSource(file));
+  SourceFileCache cache;
+  for (const std::string& file : files) set.sources.push_back(LoadValidationSource(file, &cache));
   if (set.sources.empty()) throw MakeInputError(directory, "", "holds no validation source (*.yaml)");
   const fs::path model = fs::path(directory) / "dynamic_rft.yaml";
   if (!fs::exists(model)) throw MakeInputError(model.string(), "", "missing (the dynamic variant's lambda)");

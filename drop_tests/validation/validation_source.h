@@ -8,6 +8,7 @@
 // fitted.
 // docs/validation.md describes the format and the sources.
 #include <optional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -124,7 +125,14 @@ struct ValidationSource {
 
 // Loads and checks one source; pad and soil paths are relative to the file. InputError naming
 // file, field and value on anything wrong.
-ValidationSource LoadValidationSource(const std::string& path);
+// The pads and soils sources name, each loaded once per set (a set of many sources naming the same
+// sphere loaded its mesh thousands of times: 10,000 sources took four minutes to reach a malformed
+// last one).
+struct SourceFileCache {
+  std::map<std::string, io::PadSpec> pads;
+  std::map<std::string, rft::SoilParameters> soils;
+};
+ValidationSource LoadValidationSource(const std::string& path, SourceFileCache* cache = nullptr);
 
 // The dynamic-RFT coefficient the `dynamic` variant uses (data/validation/dynamic_rft.yaml,
 // `type: validation_model`), with its source.

@@ -7,6 +7,7 @@
 #include <sunmatrix/sunmatrix_dense.h>
 #include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -45,6 +46,8 @@ struct CvodeIntegrator::Impl {
   JacobianFunction jacobian;
   SUNContext context = nullptr;
   N_Vector y = nullptr;
+  N_Vector dky = nullptr;  // DenseSegment's scratch
+  long max_num_steps = 0;  // per AdvanceTo
   SUNMatrix matrix = nullptr;
   SUNLinearSolver linear_solver = nullptr;
   SUNNonlinearSolver nonlinear_solver = nullptr;
@@ -88,6 +91,7 @@ struct CvodeIntegrator::Impl {
     if (linear_solver) SUNLinSolFree(linear_solver);
     if (matrix) SUNMatDestroy(matrix);
     if (y) N_VDestroy(y);
+    if (dky) N_VDestroy(dky);
     if (context) SUNContext_Free(&context);
   }
 
@@ -175,7 +179,9 @@ CvodeIntegrator::CvodeIntegrator(int state_size, RhsFunction rhs, const Integrat
   m.started = std::chrono::steady_clock::now();
   if (SUNContext_Create(nullptr, &m.context) != 0) throw IntegrationFailure("SUNContext_Create failed");
   m.y = N_VNew_Serial(state_size, m.context);
+  m.dky = N_VNew_Serial(state_size, m.context);
   N_VConst(0.0, m.y);
+  m.max_num_steps = options.max_num_steps;
   m.cvode = CVodeCreate(options.stiff ? CV_BDF : CV_ADAMS, m.context);
   if (!m.cvode || !m.y) throw IntegrationFailure("CVodeCreate failed");
   m.Check(CVodeSetErrHandlerFn(m.cvode, &Impl::ErrorHandler, &m), "CVodeSetErrHandlerFn");
@@ -246,6 +252,11 @@ AdvanceResult CvodeIntegrator::AdvanceTo(double t_out) {
   m.pending = nullptr;
   const int flag = CVode(m.cvode, t_out, m.y, &t_reached, CV_NORMAL);
   if (m.pending) std::rethrow_exception(std::exchange(m.pending, nullptr));
+  return Finish(flag, t_reached);
+}
+
+AdvanceResult CvodeIntegrator::Finish(int flag, double t_reached) {
+  Impl& m = *impl_;
   // Right after a root, with a valid t_out, CVODE's only bad-input return is its close-root check.
   if (flag == CV_ILL_INPUT && std::exchange(m.returned_root, false))
     throw RootStillZero("CVode: a root function is still exactly zero at the root just returned (" + m.last_error +
@@ -263,6 +274,62 @@ AdvanceResult CvodeIntegrator::AdvanceTo(double t_out) {
     m.Check(CVodeGetRootInfo(m.cvode, result.roots_found.data()), "CVodeGetRootInfo");
   }
   return result;
+}
+
+void DenseSegment::Derivative(double t, int k, Eigen::Ref<Eigen::VectorXd> out) const {
+  const auto& m = *static_cast<const CvodeIntegrator::Impl*>(impl_);
+  if (out.size() != m.n) throw std::invalid_argument("DenseSegment::Derivative: wrong output size");
+  const int flag = CVodeGetDky(m.cvode, t, k, m.dky);
+  if (flag != CV_SUCCESS) throw std::logic_error("DenseSegment::Derivative: t or k outside the step's polynomial");
+  out = Eigen::Map<const Eigen::VectorXd>(N_VGetArrayPointer(m.dky), m.n);
+}
+
+// CVODE's CV_NORMAL mode with a budget of one internal step per call: each call steps once and
+// returns (CV_TOO_MUCH_WORK, the state at the step's end) unless the step reached t_out or a root,
+// which it returns as an uninterrupted call would. Its root search and its output at t_out are
+// those of the uninterrupted call (CV_ONE_STEP would search roots over whole steps instead of up to
+// t_out, and locate them differently in the last bits); a call after a step only repeats the error
+// weights' computation from the same history. So the trajectory is the same, bit for bit.
+AdvanceResult CvodeIntegrator::AdvanceTo(double t_out, const SegmentObserver& observer) {
+  if (!observer) return AdvanceTo(t_out);
+  Impl& m = *impl_;
+  if (!m.initialised) throw std::logic_error("CvodeIntegrator::AdvanceTo before Reset");
+  double seen = t_;  // observed up to here
+  auto observe = [&](double until) {
+    if (until > seen) observer(DenseSegment(seen, until, &m));
+    seen = std::max(seen, until);
+  };
+  // The rest of the current step, where the last return (an output or a root the run goes on
+  // from) lay inside it: the next step's polynomial no longer covers it.
+  realtype t_n = 0.0;
+  m.Check(CVodeGetCurrentTime(m.cvode, &t_n), "CVodeGetCurrentTime");
+  observe(std::min(t_n, t_out));
+  struct StepBudget {  // one step per call while here; the caller's budget back on every exit
+    Impl& m;
+    ~StepBudget() { CVodeSetMaxNumSteps(m.cvode, m.max_num_steps); }
+  } budget{m};
+  m.Check(CVodeSetMaxNumSteps(m.cvode, 1), "CVodeSetMaxNumSteps");
+  const std::string error_before = m.last_error;
+  for (long steps = 0;; ++steps) {
+    realtype t_reached = 0.0;
+    m.pending = nullptr;
+    const int flag = CVode(m.cvode, t_out, m.y, &t_reached, CV_NORMAL);
+    if (m.pending) std::rethrow_exception(std::exchange(m.pending, nullptr));
+    if (flag == CV_TOO_MUCH_WORK) {  // one step taken, short of t_out and of any root
+      m.last_error = error_before;
+      observe(t_reached);
+      if (steps + 1 >= m.max_num_steps) {
+        std::ostringstream s;
+        s << "CVode failed: CV_TOO_MUCH_WORK (at t = " << t_reached << ", " << m.max_num_steps
+          << " steps taken before reaching tout)";
+        throw IntegrationFailure(s.str());
+      }
+      continue;
+    }
+    AdvanceResult result = Finish(flag, t_reached);
+    observe(t_reached);
+    return result;
+  }
 }
 
 IntegratorSummary CvodeIntegrator::summary() const {

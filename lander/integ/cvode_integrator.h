@@ -124,6 +124,27 @@ class RootStillZero : public IntegrationFailure {
   using IntegrationFailure::IntegrationFailure;
 };
 
+// A piece of the solution, t_begin < t_end, inside one internal step of the integrator: CVODE's
+// interpolating polynomial there (its dense output). A quantity that peaks between output times (a
+// drop's force, which rises and falls within one sample period on stiff soil) is read from these
+// pieces rather than from the samples. Valid only during the observer's call.
+class DenseSegment {
+ public:
+  double t_begin() const { return t_begin_; }
+  double t_end() const { return t_end_; }
+  // The k-th time derivative of the state at t in [t_begin, t_end] (k = 0: the state; at most the
+  // method's current order). At a step's end, k = 1 is the right-hand side there to the nonlinear
+  // solver's tolerance (the Nordsieck history's first column after the corrector).
+  void Derivative(double t, int k, Eigen::Ref<Eigen::VectorXd> out) const;
+
+ private:
+  friend class CvodeIntegrator;
+  DenseSegment(double t_begin, double t_end, const void* impl) : t_begin_(t_begin), t_end_(t_end), impl_(impl) {}
+  double t_begin_, t_end_;
+  const void* impl_;  // the integrator's CVODE memory (no SUNDIALS type in this header)
+};
+using SegmentObserver = std::function<void(const DenseSegment& segment)>;
+
 class CvodeIntegrator {
  public:
   CvodeIntegrator(int state_size, RhsFunction rhs, const IntegratorOptions& options,
@@ -139,13 +160,21 @@ class CvodeIntegrator {
   void Reset(double t0, const Eigen::VectorXd& y0);
   // Integrates towards t_out and stops there or at the first root, whichever comes first.
   AdvanceResult AdvanceTo(double t_out);
+  // The same integration, bit for bit (every step, root and output: CVODE's own mode, handed back
+  // control after each internal step), and `observer` sees the solution since the last return (or
+  // the last Reset) in time order, without gaps, in pieces each inside one internal step. A piece
+  // past a root is seen only when the integration goes on from it (the next AdvanceTo).
+  AdvanceResult AdvanceTo(double t_out, const SegmentObserver& observer);
   // Time and state after the last Reset or AdvanceTo (at a root: the root's time).
   double time() const { return t_; }
   const Eigen::VectorXd& state() const { return y_; }
   IntegratorSummary summary() const;
 
  private:
+  friend class DenseSegment;
   struct Impl;
+  // The return of a CVode call that did not stop short (`flag`: success or a root), at t_reached.
+  AdvanceResult Finish(int flag, double t_reached);
   std::unique_ptr<Impl> impl_;
   Eigen::VectorXd y_;
   double t_ = 0.0;

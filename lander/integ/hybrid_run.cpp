@@ -52,7 +52,7 @@ HybridOutcome HybridRun::Run(const HybridPhase& phase, const HybridCallbacks& ca
     AdvanceResult r{AdvanceStatus::kReachedTime, t_out, {}};
     if (integrator_.time() != t_out) {
       try {
-        r = integrator_.AdvanceTo(t_out);
+        r = callbacks.segment ? integrator_.AdvanceTo(t_out, callbacks.segment) : integrator_.AdvanceTo(t_out);
       } catch (const RootStillZero&) {  // after a kContinue: restart where CVODE stopped (at the root)
         Restart(integrator_.time(), integrator_.state());
         continue;

@@ -48,6 +48,9 @@ struct HybridCallbacks {
   // Optional, after each grid output: true ends the run there (HybridOutcome::stopped, at that
   // output's time and state), for a system whose rest shows in its samples rather than in a root.
   std::function<bool(double t)> stop_after_sample;
+  // Optional: the solution between outputs, piece by piece (CvodeIntegrator's observed advance, the
+  // same trajectory bit for bit), for what peaks between samples (a drop's peak force).
+  SegmentObserver segment;
 };
 
 struct HybridOutcome {

@@ -1,5 +1,6 @@
 #include "lander/multibody/leg_placement.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "rft/units.h"
@@ -10,6 +11,14 @@ namespace {
 // Pads clockwise seen from above, pad 1 front-left (x forward, y left).
 constexpr double kPadAzimuthDeg[kNumLegs] = {45.0, -45.0, -135.0, 135.0};
 }  // namespace
+
+double MaxStopStiffness(const geom::PadBody& pad) {
+  const Eigen::Vector3d& d = pad.com_B;  // the joint is the pad frame's origin
+  const Eigen::Matrix3d I_joint =
+      pad.inertia_com_B + pad.mass_kg * (d.squaredNorm() * Eigen::Matrix3d::Identity() - d * d.transpose());
+  const double omega = 2.0 * M_PI * kMaxStopRingingHz;
+  return std::min(I_joint(0, 0), I_joint(1, 1)) * omega * omega;
+}
 
 std::variant<LegPlacement, LegPlacementError> PlaceLegs(const geom::PadBody& pad, double total_mass_kg,
                                                         double cog_height_m, const LegLayout& layout) {

@@ -39,6 +39,17 @@ struct LegPlacementError {
   std::string reason;
 };
 
+// The stiffest ball-joint stop (ConeLimit) a landing can carry: a pad of inertia I about its joint
+// on a stop of stiffness k rings at sqrt(k / I) each time it meets the rim, and the integrator takes
+// several steps every period. A 0.5 s sliding landing of the paper's lander (pad 3.4e-5 kg m^2 about
+// its joint, 5 deg cone) took 9 s at 200 N m/rad (386 Hz), 40 s at 1e6 (27 kHz) and 245 s at 1e8
+// (274 kHz): past kMaxStopRingingHz a stop is refused. 20 kHz is 50 times the shipped stop's
+// ringing, and a metal rim's (a few kHz) is below it.
+inline constexpr double kMaxStopRingingHz = 20000.0;
+// k at which `pad` rings at kMaxStopRingingHz about its joint (the pad frame's origin), tilting
+// about its least inertia among the horizontal axes [N m/rad].
+double MaxStopStiffness(const geom::PadBody& pad);
+
 // Places the legs of a lander of `total_mass_kg` whose CoG stands `cog_height_m` above the pad
 // bottoms on four copies of `pad`.
 std::variant<LegPlacement, LegPlacementError> PlaceLegs(const geom::PadBody& pad, double total_mass_kg,

@@ -78,7 +78,7 @@ RecordedSample RecordedAt(const RigDropResult& r, double gravity_m_s2, const rft
   RecordedSample s;
   const std::vector<DropSample>& tr = r.trace;
   if (tr.empty()) return s;
-  if (t <= tr.front().t_s) {
+  if (t < tr.front().t_s) {  // right-continuous at touchdown: t = 0 reads the contact's first force
     const double dt = t - tr.front().t_s;  // free fall before touchdown
     s.penetration_m = tr.front().penetration_m + tr.front().velocity_m_s * dt + 0.5 * gravity_m_s2 * dt * dt;
     s.force_N = 0.0;

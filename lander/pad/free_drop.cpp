@@ -11,6 +11,7 @@
 #include "lander/integ/hybrid_run.h"
 #include "lander/pad/free_pad_dynamics.h"
 #include "lander/pad/pad_pose.h"
+#include "lander/pad/vertical_peaks.h"
 #include "rft/units.h"
 
 namespace touchdown::pad {
@@ -165,7 +166,12 @@ FreeDropResult Stroke(integ::HybridRun& run, const FreePadDynamics& pad, const E
     record(t, s);
     return integ::EventAction::kStop;
   };
+  // Between samples too: a stiff soil stops the pad within one sample period.
+  VerticalPeaks peaks(pad.size(), S::v_WC_W() + 2, 1.0, m, g);
+  calls.segment = [&](const integ::DenseSegment& segment) { peaks.Observe(segment); };
   const integ::HybridOutcome rest = run.Run(stroke, calls);
+  result.peak_force_N = std::max(result.peak_force_N, peaks.peak_force_N());
+  result.max_deceleration_m_s2 = std::max(result.max_deceleration_m_s2, peaks.max_deceleration_m_s2());
   const FreePadPose end = pad.PoseOf(rest.y);
   result.time_to_rest_s = rest.t;
   result.final_penetration_m = std::max(pad.Depth(end), 0.0);

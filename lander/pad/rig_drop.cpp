@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "lander/integ/hybrid_run.h"
+#include "lander/pad/vertical_peaks.h"
 
 namespace touchdown::pad {
 
@@ -105,7 +107,11 @@ RigDropResult RunRigDrop(const RigDropSetup& setup) {
     result.peak_force_N = std::max(result.peak_force_N, force);
     if (!resting) result.max_deceleration_m_s2 = std::max(result.max_deceleration_m_s2, (force - weight) / m);
   };
-  record(0.0, y, 0.0);
+  // The force just after contact (depth 0+): the velocity terms act on the first submerged face at
+  // once (a flat pad's inertial drag lambda rho v^2 A, the plug's accretion), so the record starts
+  // there rather than at the free fall's zero, which a recorder interpolating from it would smear
+  // over the first sample period (found by an independent generator: 61 N recorded where 98 N acted).
+  record(0.0, y, RigContactForce(setup, std::numeric_limits<double>::min(), y[S::velocity_down()]));
 
   // Stroke: sample until the velocity root.
   integ::HybridPhase stroke;
@@ -124,7 +130,13 @@ RigDropResult RunRigDrop(const RigDropSetup& setup) {
     record(t, s, RigContactForce(setup, s[S::depth()], 0.0));
     return integ::EventAction::kStop;
   };
+  // Between samples too: a stiff soil stops the pad within one sample period.
+  VerticalPeaks peaks(S::size, S::velocity_down(), -1.0, m, g);
+  if (options.peaks_between_samples)
+    stroke_calls.segment = [&](const integ::DenseSegment& segment) { peaks.Observe(segment); };
   const integ::HybridOutcome stop = run.Run(stroke, stroke_calls);
+  result.peak_force_N = std::max(result.peak_force_N, peaks.peak_force_N());
+  result.max_deceleration_m_s2 = std::max(result.max_deceleration_m_s2, peaks.max_deceleration_m_s2());
   const double t_stop = stop.t;
   y = stop.y;
   result.time_to_rest_s = t_stop;

@@ -63,6 +63,9 @@ struct RigDropOptions {
   double max_stroke_duration_s = 10.0;  // a pad still moving after this is a failure
   double approach_clearance_m = kDefaultApproachClearance_m;  // release point above the surface
   integ::IntegratorOptions integrator{};
+  // The peak force and deceleration read between samples too (VerticalPeaks); a caller that reads
+  // only the trace (a fit's recorder) saves the dense output's evaluations (a fifth of a fit).
+  bool peaks_between_samples = true;
 };
 
 // The rig's moving mass: the pad and whatever rides the rod with it. The pad's shape reaches the rig

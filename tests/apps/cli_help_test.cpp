@@ -20,7 +20,8 @@ struct HelpRun {
 
 const std::vector<std::string> kHelpCommands = {"drop",    "campaign", "force", "sweep", "export",
                                                 "merge",   "compare",  "calibrate", "trade", "lander",
-                                                "synth",   "diagnose", "stability", "validate"};
+                                                "synth",   "diagnose", "stability", "validate",
+                                                "import"};
 
 class CliHelp : public touchdown::testing_scratch::ScratchDirTest {
  protected:

@@ -242,7 +242,7 @@ INSTANTIATE_TEST_SUITE_P(
                  "impact_speed_m_s: must be between 0 and 100 m/s, got -1"},
         BadInput{"NanSpeed", "drop --pad flat --soil fjs1_lp --speed nan", "impact_speed_m_s"},
         BadInput{"InfiniteMass", "drop --pad flat --soil fjs1_lp --speed 1 --mass inf",
-                 "mass_kg: must be above 0 and at most 1e+06 kg, got inf"},
+                 "mass_kg: must be between 1e-06 and 1e+06 kg, got inf"},
         BadInput{"ZeroGravity", "drop --pad flat --soil fjs1_lp --speed 1 --gravity 0", "gravity_m_s2"},
         BadInput{"NegativeZeta", "drop --pad flat --soil fjs1_lp --speed 1 --zeta -3", "zeta_N_cm3"},
         BadInput{"TextSpeed", "drop --pad flat --soil fjs1_lp --speed fast", "speed"},

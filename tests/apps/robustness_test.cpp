@@ -160,6 +160,7 @@ std::string TwoBoxesOff(const std::string& second) {
 std::string NestedBoxOff() { return TwoBoxesOff("2 2 1\n8 2 1\n8 8 1\n2 8 1\n2 2 4\n8 2 4\n8 8 4\n2 8 4\n"); }
 
 std::string with_soil_cmd() { return "drop --pad flat --speed 1 --soil "; }
+std::string rig_cmd() { return "drop --pad flat --soil fjs1_lp "; }
 
 void AddExitStatusAndInputCases(std::vector<Case>& c) {
   const std::string force = " --soil fjs1_lp --depth 0.002";
@@ -353,6 +354,116 @@ void AddNewUserDefectCases(std::vector<Case>& c) {
                "trade link_trade.yaml --out out_n4",
                {{"link_trade.yaml", Sweep("traces: none\nfixed: {soil: fjs1_lp}\ngrid: {pad: [flat], impact_speed_m_s: [1.0]}\n")}},
                linked_plots("out_n4")});
+}
+
+// The fourth round of hostile inputs: names that become file names, numbers reported from samples,
+// numbers a derivation or a source file lets past a range, fits that fail, unbounded work.
+void AddFourthRoundCases(std::vector<Case>& c) {
+  const std::string flat_pad = Pad(kFlatProfile);
+  // Every name that becomes part of a path is checked where it is read.
+  c.push_back({"pad YAML", "name ../../../PWNED in a campaign (wrote outside --out)", "campaign evil_campaign.yaml --out out_q1",
+               {{"evil_pad.yaml", "name: ../../../PWNED\n" + flat_pad},
+                {"evil_campaign.yaml", "drops:\n  - {pad: evil_pad.yaml, soil: fjs1_lp, impact_speeds_m_s: [1.0]}\n"}}});
+  c.push_back({"pad YAML", "absolute name /some/dir/ABS", "drop --pad abs_pad.yaml --soil fjs1_lp --speed 1",
+               {{"abs_pad.yaml", "name: /some/dir/ABS\n" + flat_pad}}});
+  c.push_back({"pad YAML", "name ../x in a trade study (per-pad tables)", "trade evil_trade.yaml --out out_q2",
+               {{"evil_trade_pad.yaml", "name: ../x\n" + flat_pad},
+                {"evil_trade.yaml", Sweep("fixed: {soil: fjs1_lp}\ngrid: {pad: [evil_trade_pad.yaml], impact_speed_m_s: [1.0]}\n")}}});
+  c.push_back({"soil YAML", "name with a '/'", with_soil_cmd() + "slash_soil.yaml",
+               {{"slash_soil.yaml", "schema_version: 1\nname: a/b\nzeta_N_cm3: 3\n"}}});
+  c.push_back({"sweep YAML", "name ../sweep", "sweep evil_sweep.yaml --threads 1 --progress lines --out out_q3",
+               {{"evil_sweep.yaml", Sweep("name: ../sweep\n" + kSweepBase + "grid: {impact_speed_m_s: [1]}\n")}}});
+  c.push_back({"lander YAML", "scenario name with a control character", "lander evil_lander.yaml --out out_q4",
+               {{"evil_lander.yaml", Lander("name: \"a\\tb\"\nlander: sutoh2017_lander\n" + kLanderGround + kLanderInitial)}}});
+  // Peaks read from the solution between samples: the pad stops within one sample period.
+  c.push_back({"extreme", "free drop stopping within one sample (zeta 1000)",
+               "drop --pad flat --soil fjs1_lp --speed 1 --zeta 1000 --free"});
+  c.push_back({"extreme", "free drop of 10 g stopping within one sample",
+               "drop --pad flat --soil fjs1_lp --speed 1 --zeta 1000 --mass 0.01 --free"});
+  // A derived zeta meets the range a given one must.
+  const std::string agarwal = "zeta_N_cm3: agarwal2023\nbulk_density_kg_m3: 1540\n";
+  c.push_back({"soil YAML", "agarwal2023 zeta at a friction angle of 89.999 deg", with_soil_cmd() + "phi_89.yaml",
+               {{"phi_89.yaml", Soil(agarwal + "internal_friction_angle_deg: 89.999\n")}}});
+  c.push_back({"soil YAML", "agarwal2023 zeta at a friction angle of 85 deg", with_soil_cmd() + "phi_85.yaml",
+               {{"phi_85.yaml", Soil(agarwal + "internal_friction_angle_deg: 85\n")}}});
+  c.push_back({"CLI flag", "force --law agarwal2023 on a soil of friction angle 89.9 deg",
+               "force --pad flat --soil phi_899.yaml --depth 0.01 --law agarwal2023",
+               {{"phi_899.yaml", Soil("zeta_N_cm3: 3\nbulk_density_kg_m3: 1540\ninternal_friction_angle_deg: 89.9\n")}}});
+  // Every number of a validation source in range at load.
+  const auto source = [&](const std::string& name, const std::string& what, const std::string& body) {
+    c.push_back({"validation sources", what, "validate --sources " + name + " --out out_" + name,
+                 {{name + "/dynamic_rft.yaml", "schema_version: 1\ntype: validation_model\ninertial_drag_lambda: 1.1\nsource: s\n"},
+                  {name + "/src.yaml", "schema_version: 1\ntype: validation_source\nid: src\ncitation: c\nread_at: r\n"
+                                       "projectile:\n  pad: " + DataDir() + "/validation/pads/kd2007_steel_sphere.yaml\n"
+                                       "  description: d\nmedium:\n  soil: " + DataDir() +
+                                       "/validation/soils/kd2007_glass_beads.yaml\n  description: d\n  zeta_route: derived\n" +
+                                       body}}});
+  };
+  const std::string law = "measured_law: {kind: katsuragi_durian, d1_mm: D1, d1_uncertainty_mm: 1, k_over_m_per_s2: KM, "
+                          "k_over_m_uncertainty_per_s2: 1, how: quoted, where: w}\npoints:\n  - {id: p, impact_speed_m_s: 1, "
+                          "quantity: final_depth, from_law: true, how: derived_from_measured_law, where: w}\n";
+  const auto with = [](std::string s, const std::string& d1, const std::string& km) {
+    s.replace(s.find("D1"), 2, d1);
+    s.replace(s.find("KM"), 2, km);
+    return s;
+  };
+  source("vq1", "law d1_mm 1e308 (exit 1 before)", "gravity_m_s2: 9.81\n" + with(law, "1e308", "1040"));
+  source("vq2", "law k_over_m_per_s2 1e300 (exit 1 before)", "gravity_m_s2: 9.81\n" + with(law, "87", "1e300"));
+  source("vq3", "gravity_m_s2 1e308 (exit 1 before)", "gravity_m_s2: 1e308\n" + with(law, "87", "1040"));
+  source("vq4", "measured depth 1e9 mm (simulated before)",
+         "gravity_m_s2: 9.81\npoints:\n  - {id: p, impact_speed_m_s: 1, quantity: final_depth, depth_mm: 1e9, how: quoted, "
+         "where: w}\n");
+  // A fit's targets in range; a failed fit exits 3 and writes no model.
+  const auto targets = [&](const std::string& name, const std::string& what, const std::string& value) {
+    c.push_back({"targets YAML", what, "calibrate --targets " + name + ".yaml --out " + name + "_model.yaml",
+                 {{name + ".yaml", "schema_version: 1\ntype: targets\nparameters: [{name: z, soil: fjs1_lp, field: zeta_N_cm3, "
+                                   "lower: 1, upper: 8, start: 3, source: s}]\ntargets: [{name: d, drop: {pad: flat, soil: "
+                                   "fjs1_lp, speed_m_s: 1}, quantity: final_penetration_m, " + value + ", use: fit, source: s}]\n"}}});
+  };
+  targets("tq1", "target value 1e308 (exit 0 with a failed fit before)", "value: 1e308, uncertainty: 0.001");
+  targets("tq2", "target uncertainty 1e-320 (exit 0 with a failed fit before)", "value: 0.01, uncertainty: 1e-320");
+  // Unbounded work.
+  const std::string study = "schema_version: 1\ntype: stability\nlander: {scenario: lander_case_A}\n"
+                            "random: {samples: 10, seed: 1, slope_deg: {uniform: [0, 10]}}\n";
+  c.push_back({"CLI flag", "stability --method subset --samples 1e9 (11 GB before the first landing)",
+               "stability uq.yaml --method subset --samples 1000000000 --progress none --out out_q5", {{"uq.yaml", study}}});
+  c.push_back({"lander YAML", "cone_limit stiffness 1e12 N m/rad at 5 deg (minutes a landing)", "lander stiff_cone.yaml --out out_q6",
+               {{"stiff_cone_lander.yaml",
+                 "schema_version: 1\ntotal_mass_kg: 4.3\ncog_height_mm: 230\npad: " + DataDir() + "/landers/sutoh2017_footpad.yaml\n"
+                 "body_inertia_kg_m2: {ixx: 0.05, iyy: 0.05, izz: 0.06}\nlegs: {joint_radius_mm: 300, hip_radius_mm: 120, "
+                 "hip_height_mm: 200, cone_limit: {half_angle_deg: 5, stiffness_N_m_rad: 1e12, damping_N_m_s_rad: 0.16}}\n"},
+                {"stiff_cone.yaml", Lander("lander: stiff_cone_lander.yaml\n" + kLanderGround + kLanderInitial)}}});
+  c.push_back({"lander YAML", "simulation.max_evaluations 100: the work limit reached", "lander few_evals.yaml --out out_q7",
+               {{"few_evals.yaml", Lander("lander: sutoh2017_lander\n" + kLanderGround + kLanderInitial +
+                                          "simulation: {max_evaluations: 100}\n")}}});
+  c.push_back({"CLI flag", "stability shards of one --out given different --methods",
+               "stability uq.yaml --method subset --samples 10 --shard 0/2 --progress none --out out_q8", {{"uq.yaml", study}},
+               [](const fs::path& d) {
+                 fs::create_directories(d / "out_q8" / "shard_1_of_2");
+                 std::ofstream(d / "out_q8" / ".touchdown-output") << "touchdown output\nkind: sweep\n";
+                 std::ofstream(d / "out_q8" / "shard_1_of_2" / "method") << "importance\n";
+               }});
+  // Smaller ones.
+  c.push_back({"diagnose", "--min-step-explained nan", "diagnose measured --min-step-explained nan --out out_q9"});
+  c.push_back({"CLI flag", "--threads abc", "diagnose measured --threads abc --out out_q10"});
+  c.push_back({"sweep YAML", "free_drop_model: ~ (read as the default before)",
+               "sweep tilde.yaml --threads 1 --progress lines --out out_q11",
+               {{"tilde.yaml", Sweep("simulation: {free_drop_model: ~}\n" + kSweepBase + "grid: {impact_speed_m_s: [1]}\n")}}});
+  c.push_back({"soil YAML", "atmosphere: (nothing)", with_soil_cmd() + "empty_atmosphere.yaml",
+               {{"empty_atmosphere.yaml", Soil("zeta_N_cm3: 3\natmosphere:\n")}}});
+  c.push_back({"pad YAML", "YAML merge key <<", "drop --pad merge.yaml --soil fjs1_lp --speed 1",
+               {{"merge.yaml", "schema_version: 1\nmass_kg: 1.6\nbase: &b {shape: flat, radius_mm: 50, thickness_mm: 16}\n"
+                               "profile: {<<: *b}\n"}}});
+  c.push_back({"CLI flag", "drop --mass 1e-320", rig_cmd() + "--speed 1 --mass 1e-320"});
+  c.push_back({"CLI flag", "drop --gravity 1e-300", rig_cmd() + "--speed 1 --gravity 1e-300"});
+  c.push_back({"CLI flag", "drop --trace '' (wrote nothing, said nothing)", rig_cmd() + "--speed 1 --trace ''"});
+  c.push_back({"CLI flag", "drop --free --tilt-deg 90", rig_cmd() + "--speed 1 --free --tilt-deg 90"});
+  c.push_back({"scenario YAML", "campaign with a mesh pad", "campaign mesh_campaign.yaml --out out_q12",
+               {{"mesh_campaign.yaml", "drops:\n  - {pad: hex, soil: fjs1_lp, impact_speeds_m_s: [1.0]}\n"}}});
+  c.push_back({"CLI flag", "campaign --model (a model file for every drop)",
+               "campaign model_campaign.yaml --model campaign_model.yaml --out out_q13",
+               {{"model_campaign.yaml", "drops:\n  - {pad: flat, soil: fjs1_lp, impact_speeds_m_s: [1.0]}\n"},
+                {"campaign_model.yaml", Model("soils: {fjs1_lp: {zeta_N_cm3: 2.0}}\n")}}});
 }
 
 // Two 10 x 10 x 5 mm boxes 10 mm apart: two closed shells, neither inside the other.
@@ -604,6 +715,27 @@ std::vector<Case> Cases() {
   c.push_back({"lander YAML", "pitch 85 deg", "lander pitch.yaml --out out_l5",
                {{"pitch.yaml", Lander("lander: sutoh2017_lander\n" + kLanderGround +
                                       "initial: {drop_height_m: 0.1, pitch_deg: 85}\n")}}});
+  // Import mapping YAML and raw DAQ files (`touchdown import`).
+  {
+    const std::string head = "schema_version: 1\ntype: import\nname: rig\ndaq: {delimiter: \",\", time: {column: t, unit: s}}\n"
+                             "channels: {force: {column: f, gain: 1.0}, displacement: {column: x, gain: 0.001}}\n";
+    const std::string drop = "  - {file: raw.csv, drop_id: d1, pad: flat, soil: fjs1_lp, atmosphere: vacuum, "
+                             "impact_speed_m_s: 1.0, pad_mass_kg: 1.6, gravity_m_s2: 9.81}\n";
+    std::string raw = "t,f,x\n";
+    for (int i = 0; i < 200; ++i)
+      raw += std::to_string(i * 1e-3) + "," + (i < 50 ? "0" : std::to_string(10.0 * (i - 50))) + "," +
+             (i < 50 ? "0" : std::to_string(0.1 * (i - 50))) + "\n";
+    c.push_back({"import mapping", "a drop id with a path separator", "import i1.yaml --out out_i1",
+                 {{"i1.yaml", head + "drops:\n" + std::regex_replace(drop, std::regex("drop_id: d1"), "drop_id: ../d1")},
+                  {"raw.csv", raw}}});
+    c.push_back({"import mapping", "a name that climbs out", "import i2.yaml --out out_i2",
+                 {{"i2.yaml", std::regex_replace(head, std::regex("name: rig"), "name: ../../rig") + "drops:\n" + drop},
+                  {"raw.csv", raw}}});
+    c.push_back({"raw DAQ file", "a text cell in the force column", "import i3.yaml --out out_i3",
+                 {{"i3.yaml", head + "drops:\n" + drop}, {"raw.csv", raw + "0.2,abc,20\n"}}});
+    c.push_back({"import mapping", "a raw file that is missing", "import i4.yaml --out out_i4",
+                 {{"i4.yaml", head + "drops:\n" + std::regex_replace(drop, std::regex("raw\\.csv"), "gone.csv")}}});
+  }
   // Model YAML.
   const std::string with_model = "drop --pad flat --soil fjs1_lp --speed 1 --model ";
   c.push_back({"model YAML", "wrong type", with_model + "m_type.yaml", {{"m_type.yaml", "type: sweep\n"}}});
@@ -737,6 +869,7 @@ std::vector<Case> Cases() {
                                     "final_roll_deg, value: 0, uncertainty: 1, use: fit, source: s}]\n"}}});
   }
   AddMessageCases(c);
+  AddFourthRoundCases(c);
   // How the sensors sample (synth's sensor_sampling, diagnose --sensor-sampling).
   c.push_back({"synth YAML", "sensor_sampling: averaged", "synth sampling.synth.yaml --out out_w1",
                {{"sampling.synth.yaml", "schema_version: 1\ntype: synth\nseed: 1\nsensor_sampling: averaged\n"

@@ -107,7 +107,8 @@ def test_a_bad_soil_dict_field_raises_value_error_naming_it(change, field):
 
 
 def test_bad_arguments_raise_the_command_lines_message_with_python_names():
-    with pytest.raises(ValueError, match=r"^touchdown\.drop: tilt_deg: must be between -90 and 90 deg, got 95$"):
+    with pytest.raises(ValueError, match=r"^touchdown\.drop: tilt_deg: must lie strictly between -90 and 90 deg \(on its side a pad does not land "
+                                          r"on its bottom\), got 95$"):
         touchdown.drop(pad="flat", soil="fjs1_lp", speed=1.0, free=True, tilt_deg=95.0)
     with pytest.raises(ValueError, match=r"^touchdown\.drop: free: tilt_deg, horizontal_speed and omega need free"):
         touchdown.drop(pad="flat", soil="fjs1_lp", speed=1.0, tilt_deg=5.0)

@@ -78,7 +78,7 @@ def test_samples_out_of_range_names_the_python_argument(tmp_path):
 
 def test_diagnose_choices_name_the_python_argument(tmp_path):
     for argument, value, allowed in [("base", "bekkerr", "rft or bekker"),
-                                     ("sensor_sampling", "averaged", "period_mean or instantaneous"),
+                                     ("sensor_sampling", "averaged", "auto or period_mean or instantaneous"),
                                      ("min_step_explained", 1.5, r"a share in \[0, 1\]")]:
         with pytest.raises(ValueError, match=rf"^touchdown\.diagnose: {argument}: must be {allowed}, got '{value}'$"):
             touchdown.diagnose(tmp_path / "m", tmp_path / "d", **{argument: value})
@@ -121,7 +121,7 @@ def test_readers_name_the_file_they_cannot_read(tiny_sweep, tmp_path):
     broken = tmp_path / "dataset"
     shutil.copytree(dataset, broken)
     (broken / "drops.csv").write_text("")
-    with pytest.raises(ValueError, match=rf"^{broken / 'drops.csv'}: not a readable CSV table"):
+    with pytest.raises(ValueError, match=rf"^{broken / 'drops.csv'}: line 1: empty file"):
         touchdown.read_dataset(broken)
 
 
@@ -262,3 +262,45 @@ def test_hostile_yaml_and_mesh_pads_raise_value_error_instead_of_killing_python(
     with pytest.raises(ValueError, match=r"drops\[0\]\.pads: 'hex' is a mesh pad"):
         touchdown.synth(str(spec), out=str(tmp_path / "out"))
     assert not (tmp_path / "out").exists()
+
+
+def test_read_dataset_checks_the_required_columns(tmp_path):
+    # A drops.csv without the required columns was read as if it were a dataset.
+    (tmp_path / "ds").mkdir()
+    (tmp_path / "ds" / "drops.csv").write_text("drop_id,pad\nd0,flat\n")
+    with pytest.raises(ValueError, match=r"drops\.csv: .*soil"):
+        touchdown.read_dataset(tmp_path / "ds")
+
+
+def test_a_subset_study_larger_than_memory_is_refused_naming_samples(tmp_path):
+    # A billion samples per level allocated without bound before the first landing (11 GB in 24 s).
+    study = tmp_path / "study.yaml"
+    study.write_text("schema_version: 1\ntype: stability\nname: big\n"
+                     f"lander: {{scenario: {data_file('scenarios', 'lander_case_A.yaml')}}}\n"
+                     "random: {samples: 4, seed: 1, slope_deg: {uniform: [0, 10]}}\n")
+    with pytest.raises(ValueError, match=r"samples: 1000000000: a subset run holds each level.s landings in memory"):
+        touchdown.stability(study, tmp_path / "out", samples=10**9, method="subset")
+    assert not (tmp_path / "out").exists()
+
+
+def test_two_threads_writing_one_out_both_finish(tmp_path):
+    # The staging name was per process: two threads writing one `out` collided ("cannot move the
+    # finished file into place: Success"). Each writer stages apart now, as two processes do.
+    import threading
+
+    errors = []
+
+    def run():
+        try:
+            touchdown.campaign(data_file("scenarios", "sutoh2017_single_footpad.yaml"), tmp_path / "out")
+        except Exception as e:  # noqa: BLE001 - collected for the assertion
+            errors.append(e)
+
+    threads = [threading.Thread(target=run) for _ in range(2)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    assert errors == []
+    assert (tmp_path / "out" / "summary.json").is_file()
+    assert [p for p in os.listdir(tmp_path) if ".partial-" in p] == []

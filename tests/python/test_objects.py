@@ -191,3 +191,48 @@ def test_a_campaign_in_memory_equals_the_one_on_disk(tmp_path, private_tmp):
     row = in_memory.drops.iloc[0]
     drop = touchdown.drop(pad=row["pad"], soil=row["soil"], speed=row["impact_speed_m_s"])
     assert row["final_penetration_m"] == pytest.approx(drop["final_penetration_m"], rel=1e-9)
+
+
+def test_objects_pickle_and_copy_for_other_processes():
+    # Pad, Soil.from_dict, Lander and Scenario objects go to multiprocessing and concurrent.futures:
+    # they pickle (a dict-made one with its content) and copy; they raised RecursionError before.
+    import concurrent.futures
+    import copy
+    import pickle
+
+    objects = [touchdown.Pad.load("flat"), touchdown.Lander.load("sutoh2017_lander"),
+               touchdown.Scenario.load("lander_case_A"),
+               touchdown.Soil.from_dict({"name": "picklable", "zeta_N_cm3": 3, "bulk_density_kg_m3": 1540})]
+    for obj in objects:
+        back = pickle.loads(pickle.dumps(obj))
+        assert back == obj and type(back) is type(obj)
+        assert copy.deepcopy(obj) == obj and copy.copy(obj) is obj
+        assert os.path.isfile(os.fspath(back))
+    soil = objects[-1]
+    with concurrent.futures.ProcessPoolExecutor(max_workers=1) as pool:
+        depth = pool.submit(_final_depth_of, soil).result()
+    assert depth == pytest.approx(touchdown.drop(pad="flat", soil=soil, speed=1.0)["final_penetration_m"], rel=1e-12)
+
+
+def _final_depth_of(soil):
+    return touchdown.drop(pad="flat", soil=soil, speed=1.0)["final_penetration_m"]
+
+
+def test_fields_are_read_only_and_a_change_raises():
+    # Setting a field or changing `fields` silently did nothing: both raise now; a deep copy of the
+    # fields is plain dicts to change and build another object from.
+    import copy
+
+    pad = touchdown.Pad.load("flat")
+    with pytest.raises(AttributeError, match="read-only"):
+        pad.mass_kg = 2.0
+    with pytest.raises(TypeError, match="read-only"):
+        pad.fields["mass_kg"] = 2.0
+    with pytest.raises(TypeError, match="read-only"):
+        pad.fields["profile"]["radius_mm"] = 60
+    assert pad.mass_kg == 1.6
+    changed = copy.deepcopy(pad.fields)
+    changed["mass_kg"] = 2.0
+    del changed["body"]
+    assert touchdown.Pad.from_dict(changed).mass_kg == 2.0
+    assert json.loads(json.dumps(pad.fields)) == copy.deepcopy(pad.fields)

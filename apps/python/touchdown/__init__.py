@@ -99,10 +99,12 @@ def lander(scenario, *, model=None, out=None, trace=False, vtk=True):
     return (json.loads(summary), arrays) if trace else json.loads(summary)
 
 
-def campaign(scenario, out):
-    """A campaign scenario file run as `touchdown campaign SCENARIO --out OUT`: the drops' tables,
-    traces and figures into the new directory OUT; returns its summary.json as a dict."""
-    return json.loads(_touchdown.campaign(scenario=_path_text(scenario), out=_path_text(out)))
+def campaign(scenario, out, *, model=None):
+    """A campaign scenario file run as `touchdown campaign SCENARIO --out OUT [--model MODEL]`: the
+    drops' tables, traces and figures into the new directory OUT (every drop with the model file's
+    zeta and effect terms, as drop's `model`); returns its summary.json as a dict."""
+    return json.loads(_touchdown.campaign(scenario=_path_text(scenario), out=_path_text(out),
+                                          model=_path_text(model)))
 
 
 def compare(measured, out, *, simulated=None, model=None, sensor_sampling="period_mean"):
@@ -156,13 +158,14 @@ def validate(*, sources=None, out=None):
 
 
 def diagnose(measured, out, *, model=None, threads=0, pairs=True, min_step_explained=0.5, law_candidate=False,
-             base="rft", sensor_sampling="period_mean", fit_on=(), progress=True):
+             base="rft", sensor_sampling="auto", fit_on=(), drop_nuisances=True, progress=True):
     """`touchdown diagnose MEASURED --out OUT [--model M] [--threads N] [--no-pairs]
     [--min-step-explained X] [--law-candidate] [--base rft|bekker] [--sensor-sampling
-    instantaneous|period_mean] [--fit-on ID,...]`: the model-gap workflow into the new directory OUT
+    auto|instantaneous|period_mean] [--fit-on ID,...] [--no-drop-nuisances]`: the model-gap workflow into the new directory OUT
     (docs/model_gap.md); returns diagnosis.json as a dict (the command prints a part of it).
     `pairs=False` is `--no-pairs`: forward selection stops after the first term. `fit_on` (drop
     ids) is `--fit-on`: every model is fitted on those drops and predicts the others.
+    `drop_nuisances=False` is `--no-drop-nuisances`: every drop at its nominal strength, speed and time.
     `progress` counts the candidate models fitted (see sweep); Ctrl-C abandons the fit, writing nothing."""
     with _progress_reporter(progress, "diagnose", "fits") as report:
         return json.loads(_touchdown.diagnose(measured=_path_text(measured), model=_path_text(model),
@@ -170,7 +173,7 @@ def diagnose(measured, out, *, model=None, threads=0, pairs=True, min_step_expla
                                               min_step_explained=min_step_explained,
                                               law_candidate=law_candidate, base=base,
                                               sensor_sampling=sensor_sampling, fit_on=_id_list(fit_on, "diagnose", "fit_on"),
-                                              progress=report))
+                                              drop_nuisances=bool(drop_nuisances), progress=report))
 
 
 def trade(plan, out, *, model=None, threads=0, progress=True):
@@ -194,6 +197,20 @@ def synth(spec, out):
     drops = read_dataset(out)
     drops.attrs["synth"] = made
     return drops
+
+
+def import_raw(mapping, out):
+    """`touchdown import MAPPING --out OUT`: raw DAQ files of drop tests, as the mapping file names
+    them (docs/import.md), into the new dataset directory OUT; returns read_dataset(out), with
+    df.attrs["import"] the summary the command prints (name, drops, penetration_from, and per drop
+    its touchdown in the raw file's clock with its uncertainty)."""
+    made = json.loads(_touchdown.import_raw(mapping=_path_text(mapping), out=_path_text(out)))
+    drops = read_dataset(out)
+    drops.attrs["import"] = made
+    return drops
+
+
+__all__ += ["import_raw"]
 
 
 def export(sweep, to, *, full_traces=False, threads=0):

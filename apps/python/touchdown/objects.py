@@ -12,6 +12,9 @@ writes one, a pad as the loader's pad file plus its rigid body, a lander and a s
 `touchdown lander --out` writes scenario_resolved.yaml): defaults filled in, a derived zeta as
 its number, keys with unit suffixes. An object stands for its file (os.fspath(obj)); one made
 from a dict writes it once into a private temporary directory that lives as long as the object.
+Objects never change once made: their fields are read-only (setting one raises; change a copy,
+copy.deepcopy(obj.fields), and build another with from_dict), and they pickle (to another
+process: multiprocessing, concurrent.futures), a dict-made one with its content.
 """
 import collections.abc
 import copy
@@ -29,11 +32,13 @@ class InputObject:
     _label = ""         # "pad": the word in messages and a dict's file name
     _path_fields = ()   # dotted keys of a dict that name files, relative to the working directory
 
-    def __init__(self, source, fields, *, document=None, scratch=None):
-        self._source = source        # the file read (for a dict: its private copy)
-        self._fields = fields
-        self._document = document    # the dict it was made from, or None
-        self._scratch = scratch      # the TemporaryDirectory holding a dict's file
+    def __init__(self, source, fields, *, document=None, scratch=None, text=None):
+        set_ = object.__setattr__  # the object is read-only from outside (__setattr__)
+        set_(self, "_source", source)        # the file read (for a dict: its private copy)
+        set_(self, "_fields", _frozen(fields))
+        set_(self, "_document", document)    # the dict it was made from, or None
+        set_(self, "_scratch", scratch)      # the TemporaryDirectory holding a dict's file
+        set_(self, "_text", text)            # a dict's file content, as written (what a pickle carries)
 
     @classmethod
     def load(cls, name_or_path):
@@ -68,13 +73,13 @@ class InputObject:
         except (ValueError, OSError) as e:
             scratch.cleanup()
             raise _renamed(e, path, cls._label + " dict") from None
-        return cls(path, fields, document=copy.deepcopy(dict(document)), scratch=scratch)
+        return cls(path, fields, document=copy.deepcopy(dict(document)), scratch=scratch, text=text)
 
     @property
     def fields(self):
-        """The resolved fields (a copy: changing it changes nothing; build another object with
-        from_dict for that)."""
-        return copy.deepcopy(self._fields)
+        """The resolved fields, read-only (a change raises TypeError; copy.deepcopy(obj.fields)
+        gives plain dicts and lists to change and build another object with from_dict)."""
+        return self._fields
 
     @property
     def name(self):
@@ -94,11 +99,22 @@ class InputObject:
         return self._source
 
     def __getattr__(self, key):
-        fields = self.__dict__.get("_fields", {})
+        # Only a field: private and special names are never fields (unpickling and copying probe
+        # them before the object has any fields, where a lookup of self._fields would recurse).
+        fields = self.__dict__.get("_fields")
+        if key.startswith("_") or fields is None:
+            raise AttributeError(key)
         if key in fields:
-            return copy.deepcopy(fields[key])
-        raise AttributeError(f"{type(self).__name__} {self.name!r} has no field {key!r} "
+            return fields[key]
+        raise AttributeError(f"{type(self).__name__} {fields.get('name')!r} has no field {key!r} "
                              f"(fields: {', '.join(fields)})")
+
+    def __setattr__(self, key, value):
+        raise AttributeError(f"{type(self).__name__} fields are read-only ({key!r}): build another with "
+                             f"{type(self).__name__}.from_dict(dict(copy.deepcopy(obj.fields), {key}=...))")
+
+    def __delattr__(self, key):
+        raise AttributeError(f"{type(self).__name__} fields are read-only ({key!r})")
 
     def __dir__(self):
         return sorted(set(super().__dir__()) | set(self._fields))
@@ -114,6 +130,14 @@ class InputObject:
 
     def __deepcopy__(self, memo):
         return self
+
+    # To another process: a loaded file's object as its path and fields (read again there only
+    # for its file: the fields are kept as resolved here); a dict-made one as its content, written
+    # into a private directory of the receiving process, and its dict.
+    def __reduce__(self):
+        if self._text is not None:
+            return (_from_text, (type(self), self._text, self._document))
+        return (_from_resolved, (type(self), self._source, _thawed(self._fields)))
 
     def __repr__(self):
         shown = [f"{key}={value!r}" for key, value in self._fields.items()
@@ -236,6 +260,72 @@ class Lander(InputObject):
                 return _resolved_scenario(probe)["lander"]
             except (ValueError, OSError) as e:
                 raise _unwrapped(e, probe + ": lander: ") from None
+
+
+class _FrozenDict(dict):
+    """A resolved object's fields: a dict that refuses changes (a change to a copy used to do
+    nothing, silently). copy.deepcopy gives plain dicts and lists back."""
+
+    def _refuse(self, *args, **kwargs):
+        raise TypeError("an object's fields are read-only: change copy.deepcopy(obj.fields) and build another "
+                        "object with from_dict")
+
+    __setitem__ = __delitem__ = __ior__ = clear = pop = popitem = setdefault = update = _refuse
+
+    def __deepcopy__(self, memo):
+        return _thawed(self)
+
+    def __copy__(self):
+        return dict(self)
+
+    def __reduce__(self):
+        return (dict, (_thawed(self),))
+
+
+class _FrozenList(list):
+    """A list among an object's fields: read-only, as _FrozenDict."""
+
+    _refuse = _FrozenDict._refuse
+    __setitem__ = __delitem__ = __iadd__ = __imul__ = append = clear = extend = insert = pop = remove = \
+        reverse = sort = _refuse
+
+    def __deepcopy__(self, memo):
+        return _thawed(self)
+
+    def __copy__(self):
+        return list(self)
+
+    def __reduce__(self):
+        return (list, (_thawed(self),))
+
+
+def _frozen(value):
+    if isinstance(value, collections.abc.Mapping):
+        return _FrozenDict({k: _frozen(v) for k, v in value.items()})
+    if isinstance(value, list):
+        return _FrozenList(_frozen(v) for v in value)
+    return value
+
+
+def _thawed(value):
+    if isinstance(value, collections.abc.Mapping):
+        return {k: _thawed(v) for k, v in value.items()}
+    if isinstance(value, list):
+        return [_thawed(v) for v in value]
+    return value
+
+
+def _from_resolved(cls, source, fields):
+    return cls(source, fields)
+
+
+def _from_text(cls, text, document):
+    """A dict-made object again, from the file content it wrote (paths in it already absolute)."""
+    scratch = tempfile.TemporaryDirectory(prefix="touchdown_")
+    path = os.path.join(scratch.name, cls._label + ".yaml")
+    with open(path, "w", encoding="utf-8") as f:
+        f.write(text + "\n")
+    return cls(path, cls._read_fields(path), document=document, scratch=scratch, text=text)
 
 
 def _resolved_scenario(path):

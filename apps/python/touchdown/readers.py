@@ -19,6 +19,8 @@ import sqlite3
 import urllib.parse
 from dataclasses import dataclass
 
+from . import _touchdown
+
 # The columns of a trace BLOB in the sweep database (pad::DropSample, four float64 per sample).
 SWEEP_TRACE_COLUMNS = ("t_s", "penetration_m", "velocity_m_s", "force_N")
 
@@ -211,6 +213,7 @@ def read_dataset(directory, traces=False):
     drops_csv = os.path.join(directory, "drops.csv")
     if not os.path.isfile(drops_csv):
         raise _missing(directory, "no dataset (drops.csv missing)")
+    _touchdown.check_dataset(directory, bool(traces))  # ValueError naming file, line and column
     drops = _read_csv(drops_csv, dtype=_DATASET_TEXT_COLUMNS, keep_default_na=False, na_values={
         c: [""] for c in ("final_penetration_m", "peak_force_N")})
     if not traces:

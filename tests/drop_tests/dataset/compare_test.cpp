@@ -150,8 +150,10 @@ TEST(CompareCli, SimulatedDatasetAgainstItselfHasZeroErrors) {
     std::ifstream in(dir / out / "summary.json");
     const nlohmann::json j = nlohmann::json::parse(in);
     EXPECT_EQ(j["drops_compared"].get<int>(), 4) << out;
+    // compare simulates at its recording rate (4 kHz under the sweep's 1 kHz traces): the same
+    // drops to the integrator's tolerance; joined, the same numbers exactly.
     for (const char* key : {"final_penetration_rel_error", "peak_force_rel_error", "force_nrmse"})
-      EXPECT_NEAR(j[key].get<double>(), 0.0, 1e-12) << out << " " << key;
+      EXPECT_NEAR(j[key].get<double>(), 0.0, std::string(out) == "join" ? 1e-12 : 1e-8) << out << " " << key;
     EXPECT_TRUE(fs::is_regular_file(dir / out / "per_drop.csv"));
     EXPECT_TRUE(fs::is_regular_file(dir / out / "plots" / "compare.gp"));
     if (std::system("command -v gnuplot >/dev/null 2>&1") == 0) {

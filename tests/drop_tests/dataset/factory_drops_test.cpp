@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "drop_tests/dataset/calibrate.h"
+#include "drop_tests/dataset/sensor_model.h"
 #include "drop_tests/dataset/synth.h"
 #include "drop_tests/drop/drop_factory.h"
 #include "drop_tests/drop/drop_setup.h"
@@ -50,6 +51,7 @@ TEST(FactoryDrops, SynthRecordsTheFactorysDrop) {
     c.effects = model::MakeEffectTerms({damping});
     drop::DropRunOptions options;
     options.rig.rest_duration_s = spec.rest_duration_s + std::abs(c.effects.sensor_dt_s) + 2.0 / spec.sample_rate_hz;
+    options.rig.sample_rate_hz = SimulationRateFor_Hz(spec.sample_rate_hz);  // as synth simulates
     const drop::PadDrop drop = drop::RunDrop(drop::ResolveDrop(io::LoadPad("curved"), io::LoadSoil("fjs1_lp"), c, options));
     const DatasetTrace& tr = ds.drops[0].trace;
     ASSERT_GT(tr.size(), 20u);

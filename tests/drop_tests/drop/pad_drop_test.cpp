@@ -20,7 +20,7 @@ TEST(PadDrop, RigDropOfAMeshPadIsRefused) {
     RunDrop(ResolveDrop(hex, io::LoadSoil("fjs1_lp"), conditions));
     ADD_FAILURE() << "no error";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("hex.yaml: rig drop of mesh pads needs the 3D contact; use --free"),
+    EXPECT_NE(std::string(e.what()).find("hex.yaml: a mesh pad drops only as a free pad"),
               std::string::npos)
         << e.what();
   }

@@ -11,6 +11,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <thread>
 
 #include "rft/input_error.h"
 
@@ -163,7 +164,8 @@ TEST_F(OutputPathTest, TrailingSlashSpacesQuotesAndNonAsciiNamesWork) {
     WriteOutputDirectory(path, OutputKind::kCampaign, Fill(path));
     EXPECT_EQ(Read(fs::path(path) / "summary.txt"), path);
   }
-  EXPECT_FALSE(fs::exists(".new.partial-" + OutputOwnerTag()));
+  for (const fs::directory_entry& e : fs::directory_iterator("."))
+    EXPECT_EQ(e.path().filename().string().rfind(".new.partial-", 0), std::string::npos) << e.path();
   EXPECT_FALSE(fs::exists("PWNED"));
   EXPECT_EQ(Entries("."), 5);
 }
@@ -336,6 +338,33 @@ auto Analysis(const std::string& version) {
     Write(fs::path(staging) / "table.csv", version);
     Write(fs::path(staging) / "summary.json", version);
   };
+}
+
+// Two threads of one process writing one output (Python's threads, one `out`) each stage their own
+// copy, as two processes do: both finish, and what is there is one of them, whole. They used to
+// share one staging name and fail ("cannot move the finished file into place").
+TEST_F(OutputPathTest, TwoThreadsWritingOneOutputEachStageApart) {
+  for (int round = 0; round < 20; ++round) {
+    std::string errors[2];
+    std::thread writers[2];
+    for (int k = 0; k < 2; ++k)
+      writers[k] = std::thread([&, k] {
+        try {
+          WriteOutputDirectory("out", OutputKind::kLander, Fill(std::string(1, char('a' + k))));
+          WriteFileAtomically("trace.csv", [&](std::ostream& out) { out << std::string(100000, char('a' + k)); });
+        } catch (const std::exception& e) {
+          errors[k] = e.what();
+        }
+      });
+    for (std::thread& t : writers) t.join();
+    EXPECT_EQ(errors[0], "");
+    EXPECT_EQ(errors[1], "");
+    const std::string summary = Read("out/summary.txt"), trace = Read("trace.csv");
+    EXPECT_TRUE(summary == "a" || summary == "b") << summary;
+    EXPECT_TRUE(trace == std::string(100000, 'a') || trace == std::string(100000, 'b'));
+  }
+  for (const fs::directory_entry& e : fs::directory_iterator("."))
+    EXPECT_EQ(e.path().filename().string().find(".partial-"), std::string::npos) << e.path();
 }
 
 TEST_F(OutputPathTest, DerivedOutputsAreReplacedAsOneWhole) {

@@ -126,5 +126,28 @@ TEST(KeyTable, WhatItWritesItsLoaderAccepts) {
   EXPECT_THROW(f.RequireOnly(Keys(PadKeys(), {"dynamic"})), InputError);
 }
 
+// A name read from a file becomes part of file names: one that could leave the output folder is
+// refused where it is read, naming the file and the field; the file's stem stands in when the key
+// is left out, and is checked the same way.
+TEST(YamlName, ANameThatCouldLeaveTheOutputFolderIsRefusedAtLoad) {
+  const YamlFields good(YAML::Load("name: flat\n"), "pad.yaml", "");
+  EXPECT_EQ(good.Name("name", "stem"), "flat");
+  EXPECT_EQ(YamlFields(YAML::Load("mass_kg: 1\n"), "pad.yaml", "").Name("name", "stem"), "stem");
+  const auto refusal = [](const std::string& text, const std::string& fallback) {
+    try {
+      YamlFields(YAML::Load(text), "pad.yaml", "patch").Name("name", fallback);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_EQ(refusal("name: ../../../PWNED\n", "x"), "pad.yaml: patch.name: '../../../PWNED' contains '/' (it names files)");
+  EXPECT_EQ(refusal("name: /some/dir/ABS\n", "x"), "pad.yaml: patch.name: '/some/dir/ABS' contains '/' (it names files)");
+  EXPECT_EQ(refusal("name: \"a\\tb\"\n", "x"), "pad.yaml: patch.name: contains a control character (it names files)");
+  EXPECT_EQ(refusal("name: ..\n", "x"), "pad.yaml: patch.name: '..' cannot be a file name");
+  EXPECT_EQ(refusal("mass_kg: 1\n", ".."),
+            "pad.yaml: patch.name: '..' cannot be a file name, and the file's name gives it where the key is left out");
+}
+
 }  // namespace
 }  // namespace touchdown::io

@@ -48,7 +48,7 @@ TEST(DiagnoseFitDrops, SimulatedRecordIsTheFactorysDrop) {
   ASSERT_EQ(fitted->size(), tr.size());
   for (size_t i = 0; i < tr.size(); ++i) {
     const pad::RecordedSample r =
-        pad::RecordedSampleOf(drop.result, 1.62, c.effects, tr.t_s[i], p.sensor_sampling, d.sample_period_s);
+        pad::RecordedSampleOf(drop.result, 1.62, c.effects, tr.t_s[i], model.sensor.sampling, d.sample_period_s);
     ASSERT_EQ(fitted->force_N[i], r.force_N) << i;
     ASSERT_EQ(fitted->penetration_m[i], r.penetration_m) << i;
   }

@@ -55,6 +55,7 @@ Diagnosis Select(double pair_nrmse, DiagnoseOptions options = {},
   d.problem.shipped_lambda = 1.1;
   for (const char* t : {kWeakerDynamicTerm, "depth_exponent", "rate_damping"}) d.problem.terms.push_back({t, {}, {}});
   d.base = Scored({}, 0.0456, 0.0);
+  d.floor.noise_ms = d.floor.ms = kNoise * kNoise;  // no replicates: the sensor's noise is the floor
   const std::map<std::vector<std::string>, std::pair<double, double>> models = {
       {{kWeakerDynamicTerm}, {0.0250, -1500.0}},
       {{"depth_exponent"}, {0.0350, -600.0}},
@@ -67,9 +68,53 @@ Diagnosis Select(double pair_nrmse, DiagnoseOptions options = {},
     return it != models.end() ? Scored(ids, it->second.first, it->second.second, exponent_interval)
                               : Scored(ids, 0.05, 100.0);
   };
+  const ScreenModel screen = [&](const std::vector<std::string>& ids, const FitResult& start) {
+    return std::optional<FitResult>(score(ids, start).fit);
+  };
   io::Progress progress("diagnose", "fits", 0, {io::ProgressMode::kNone});
-  SelectForward(d, options, score, progress);
+  SelectForward(d, options, score, screen, progress);
   return d;
+}
+
+// With more candidates than kFullyScored, a step scores in full only the best kFullyScored by their
+// screening BIC; the rest are listed as screened out, with their screening BIC, and never chosen -
+// even one that would cut the held-out gap most.
+TEST(DiagnoseSelection, OnlyTheBestScreenedCandidatesAreScoredAndChosen) {
+  Diagnosis d;
+  d.problem.shipped_lambda = 1.1;
+  const std::vector<std::string> terms{"a", "b", "c", "d", "e"};
+  for (const std::string& t : terms) d.problem.terms.push_back({t, {}, {}});
+  d.base = Scored({}, 0.0456, 0.0);
+  // Screening BIC: e best, then c, a, d, b; b has the best held-out gap but screens last.
+  const std::map<std::string, double> screen_bic = {{"a", -300.0}, {"b", -50.0}, {"c", -400.0}, {"d", -200.0}, {"e", -500.0}};
+  std::vector<std::string> scored;
+  const ScoreModel score = [&](const std::vector<std::string>& ids, const FitResult& start) {
+    scored.push_back(ids.back());
+    EXPECT_EQ(start.bic, screen_bic.at(ids.back()));  // fitted in full from its screening fit
+    return Scored(ids, ids.back() == "e" ? 0.0020 : 0.0300, screen_bic.at(ids.back()) - 10.0);
+  };
+  const ScreenModel screen = [&](const std::vector<std::string>& ids, const FitResult&) {
+    if (ids.size() > 1) return std::optional<FitResult>();  // the second step: nothing applies
+    FitResult f;
+    f.bic = screen_bic.at(ids.back());
+    f.parameters = 2;
+    return std::optional<FitResult>(f);
+  };
+  DiagnoseOptions o;
+  o.try_pairs = false;
+  io::Progress progress("diagnose", "fits", 0, {io::ProgressMode::kNone});
+  SelectForward(d, o, score, screen, progress);
+  EXPECT_EQ(scored, (std::vector<std::string>{"a", "c", "e"}));
+  ASSERT_EQ(d.candidates.size(), 5u);
+  for (const CandidateScore& c : d.candidates) {
+    const bool out = c.name == "b" || c.name == "d";
+    EXPECT_EQ(c.screened_out, out) << c.name;
+    if (out) {
+      EXPECT_EQ(c.delta_bic, -screen_bic.at(c.name)) << c.name;
+    }
+  }
+  ASSERT_EQ(d.selection.size(), 1u) << d.decision;
+  EXPECT_EQ(d.candidates[d.selection[0]].name, "e");
 }
 
 TEST(DiagnoseSelection, AStepThatExplainsLessThanHalfOfWhatRemainsIsNotTaken) {

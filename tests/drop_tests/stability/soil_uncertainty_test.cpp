@@ -76,6 +76,13 @@ TEST_F(SoilUncertaintyTest, LoadTimeValidationNamesFileAndField) {
         R"({"covariance": {"parameters": [{"name": "z", "kind": "soil_zeta", "soil": "fjs1_lp", "value": 3},
             {"name": "y", "kind": "soil_zeta", "soil": "fjs1_cp", "value": 4}], "matrix": [[1, 0.5], [0, 1]]}})");
   Write("negative.json", Calibration(-1.0, 4.1, 0.2, 0.1, 0.0));
+  // A key given twice (the parser kept the last silently), and a kind no report writes (ignored).
+  Write("twice.json",
+        R"({"covariance": {"parameters": [{"name": "z", "kind": "soil_zeta", "soil": "fjs1_lp", "value": 3, "value": 30}],
+            "matrix": [[0.01]]}})");
+  Write("unknown_kind.json",
+        R"({"covariance": {"parameters": [{"name": "z", "kind": "soil_zetta", "soil": "fjs1_lp", "value": 3}],
+            "matrix": [[0.01]]}})");
   struct Row {
     std::string block, extra, expected;
   };
@@ -91,6 +98,9 @@ TEST_F(SoilUncertaintyTest, LoadTimeValidationNamesFileAndField) {
        "positive definite"},
       {", soil_uncertainty: {fjs1_lp: {calibration: asymmetric.json}}", kPadSoils, "must be symmetric"},
       {", soil_uncertainty: {fjs1_lp: {calibration: negative.json}}", kPadSoils, "covariance.parameters[0].value"},
+      {", soil_uncertainty: {fjs1_lp: {calibration: twice.json}}", kPadSoils, "twice.json: value: given twice in one object"},
+      {", soil_uncertainty: {fjs1_lp: {calibration: unknown_kind.json}}", kPadSoils,
+       "unknown_kind.json: covariance.parameters[0].kind: unknown kind \"soil_zetta\""},
       {", soil_uncertainty: fjs1_lp", kPadSoils, "must be a mapping of soil names"},
       {", soil_uncertainty: {}", kPadSoils, "must be a mapping of soil names"},
       // The pairing: only beside draws, `none` or {samples: K}.

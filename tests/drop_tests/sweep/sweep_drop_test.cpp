@@ -130,8 +130,10 @@ grid: {pad: [coarse_hex.yaml, flat], impact_speed_m_s: [1.0]}
   EXPECT_EQ(ds.drops[0].pad, fs::absolute(dir_ / "coarse_hex.yaml").string());
   const dataset::Dataset sim = dataset::SimulateMeasuredDrops(ds, std::nullopt, pad::SensorSampling::kInstantaneous);
   ASSERT_EQ(sim.drops.size(), 2u);
-  EXPECT_NEAR(*sim.drops[0].final_penetration_m, hex.final_penetration_m, 1e-12);
-  EXPECT_NEAR(*sim.drops[1].final_penetration_m, flat.final_penetration_m, 1e-12);
+  // compare simulates at its recording rate (dataset::RecordingSimulationRate_Hz: 4 kHz under these
+  // 1 kHz traces), the sweep at 1 kHz: the same drop, to the integrator's tolerance.
+  EXPECT_NEAR(*sim.drops[0].final_penetration_m, hex.final_penetration_m, 1e-6 * hex.final_penetration_m);
+  EXPECT_NEAR(*sim.drops[1].final_penetration_m, flat.final_penetration_m, 1e-6 * flat.final_penetration_m);
   // ... and calibrate: the mesh pad's regressor is its 3D force straight down, so the simulated
   // drops (the soil file's zeta) give that zeta back, from both pads. Noise-free, but the soil's
   // dynamic term (2 % of the force) is taken off with the sink rate from central differences of

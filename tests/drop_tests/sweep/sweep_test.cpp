@@ -154,7 +154,7 @@ INSTANTIATE_TEST_SUITE_P(
     Cases, SweepBadFile,
     ::testing::Values(
         BadSweep{"TiltOutOfRange", "fixed: {pad: flat, soil: fjs1_lp, impact_speed_m_s: 1, tilt_deg: 95}\n",
-                 "fixed.tilt_deg: must be between -90 and 90"},
+                 "fixed.tilt_deg: must be strictly between -90 and 90"},
         BadSweep{"RollNeedsALander", "fixed: {pad: flat, soil: fjs1_lp, impact_speed_m_s: 1}\ngrid: {roll_deg: [0, 2]}\n",
                  "grid.roll_deg: a lander parameter"},
         BadSweep{"LanderBlockFields", "lander: {legs: 4}\n", "lander.legs: unknown field"},
