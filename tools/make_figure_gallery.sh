@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Regenerates docs/figures/gallery/: one PNG of every figure touchdown draws, from the shipped
 # examples at the size they are run (a campaign, the three lander cases, the shipped lunar
-# stability study of 10,000 landings, the pad trade, a comparison, a diagnosis, the validation
+# stability study of 10,000 landings, the pad trade, a comparison, a diagnosis of the shipped 24
+# drops and one of the same campaign with four trials of each condition, 96 drops, the validation
 # set), shrunk to 800 pixels wide and to a 64-colour palette so the committed gallery stays under a
 # few MB. docs/figures.md shows them. About 15 minutes on the project's 2-core machine, 7 of them
 # the study's landings: its figures are drawn to read at that size, and are shown at it.
@@ -30,6 +31,11 @@ done
 "$td" trade "$root/data/sweeps/pad_trade.yaml" --out trade > /dev/null
 "$td" compare "$root/data/datasets/air_vs_vacuum_synthetic" --out compare > /dev/null
 "$td" diagnose "$root/data/datasets/air_vs_vacuum_synthetic" --out diagnose --threads 2 > /dev/null
+# The same campaign with four trials of each condition (96 drops): the diagnosis's figures as a
+# replicated campaign draws them (conditions grouped, residuals as bands).
+sed 's/^trials: 1$/trials: 4/' "$root/data/datasets/air_vs_vacuum_synthetic.synth.yaml" > replicated.synth.yaml
+"$td" synth replicated.synth.yaml --out replicated_dataset > /dev/null
+"$td" diagnose replicated_dataset --out diagnose_replicated --threads 2 > /dev/null
 "$td" validate --out validation > /dev/null
 
 # Every PNG a command drew, named <run>__<figure>.png; per-drop comparison plots: the first two.

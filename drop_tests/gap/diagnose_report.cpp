@@ -14,6 +14,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "drop_tests/gap/diagnose.h"
+#include "drop_tests/gap/diagnose_plots.h"
 #include "drop_tests/gap/diagnose_selection.h"
 #include "drop_tests/formats/dataset_csv.h"
 #include "drop_tests/formats/json_number.h"
@@ -353,30 +354,68 @@ void WriteOverlayData(const Diagnosis& d, const dataset::Dataset& ds, const Cand
   }
 }
 
-// data/residuals_held_out.csv: the force residual of every held-out drop, base and `shown`, one
-// block per drop. False when no held-out drop could be simulated.
-bool WriteResiduals(const Diagnosis& d, const dataset::Dataset& ds, const CandidateScore* shown, const fs::path& dir) {
+// The held-out drops' force residuals, base and `shown`: data/residuals_held_out.csv (every
+// plotted sample, one block per drop) for an atmosphere of at most kMaxResidualDropsDrawn drops,
+// data/residual_bands_<atmosphere>.csv past that; and what each panel draws, on one scale.
+ResidualPanels WriteResiduals(const Diagnosis& d, const dataset::Dataset& ds, const CandidateScore* shown, const fs::path& dir) {
+  ResidualPanels panels;
+  std::array<size_t, 2> planned{0, 0};
+  for (const FitDrop& f : d.problem.drops)
+    if (!f.train) ++planned[f.atmosphere == rft::Atmosphere::kAir ? 1 : 0];
   std::ostringstream residual_rows;
+  std::array<std::vector<ResidualSample>, 2> banded;
+  double t_lo = INFINITY, t_hi = -INFINITY, r_lo = INFINITY, r_hi = -INFINITY;
+  const auto extend = [&](double t_ms, double r) {
+    t_lo = std::min(t_lo, t_ms), t_hi = std::max(t_hi, t_ms), r_lo = std::min(r_lo, r), r_hi = std::max(r_hi, r);
+  };
   for (size_t i = 0; i < d.problem.drops.size(); ++i) {
     const FitDrop& f = d.problem.drops[i];
     if (f.train) continue;
+    const int panel = f.atmosphere == rft::Atmosphere::kAir ? 1 : 0;
     const dataset::DatasetDrop& m = ds.drops[f.dataset_index];
     const std::optional<dataset::DatasetTrace> b = SimulateRecorded(d.problem, f, d.base.fit);
     const std::optional<dataset::DatasetTrace> a = shown ? SimulateRecorded(d.problem, f, shown->fit) : b;
     if (!a || !b) continue;
-    const auto residual = [&](size_t k, size_t column) {
-      return ((column == 0 ? *b : *a).force_N[k] - m.trace.force_N[k]) / f.force_scale_N;
+    ++panels.drops[panel];
+    const auto residual = [&](const dataset::DatasetTrace& sim, size_t k) {
+      return (sim.force_N[k] - m.trace.force_N[k]) / f.force_scale_N;
     };
-    for (const size_t k : io::PlotRowsToKeep(m.trace.size(), 2, residual))
-      residual_rows << io::FormatNumber(m.trace.t_s[k]) << ',' << io::FormatNumber((b->force_N[k] - m.trace.force_N[k]) / f.force_scale_N)
-                    << ',' << io::FormatNumber((a->force_N[k] - m.trace.force_N[k]) / f.force_scale_N) << ','
-                    << rft::AtmosphereName(m.atmosphere) << '\n';
+    if (planned[panel] > kMaxResidualDropsDrawn) {
+      // Every sample of a drop up to 2,000, then a uniform stride: the bands weigh each drop
+      // alike and a campaign of long traces stays in memory.
+      const size_t stride = (m.trace.size() + 1999) / 2000;
+      for (size_t k = 0; k < m.trace.size(); k += std::max<size_t>(stride, 1))
+        banded[panel].push_back({m.trace.t_s[k], residual(*b, k), residual(*a, k)});
+      continue;
+    }
+    const auto plotted = [&](size_t k, size_t column) { return residual(column == 0 ? *b : *a, k); };
+    for (const size_t k : io::PlotRowsToKeep(m.trace.size(), 2, plotted)) {
+      residual_rows << io::FormatNumber(m.trace.t_s[k]) << ',' << io::FormatNumber(residual(*b, k)) << ','
+                    << io::FormatNumber(residual(*a, k)) << ',' << rft::AtmosphereName(m.atmosphere) << '\n';
+      extend(m.trace.t_s[k] * 1e3, residual(*b, k));
+      extend(m.trace.t_s[k] * 1e3, residual(*a, k));
+    }
     residual_rows << '\n';
   }
-  io::WriteFileAtomically((dir / "data" / "residuals_held_out.csv").string(), [&](std::ostream& out) {
-    out << "t_s,residual_base,residual_augmented,atmosphere\n" << residual_rows.str();
-  });
-  return !residual_rows.str().empty();
+  for (int panel = 0; panel < 2; ++panel) {
+    if (panels.drops[panel] == 0) continue;
+    if (planned[panel] <= kMaxResidualDropsDrawn) {
+      panels.layout[panel] = ResidualLayout::kSamples;
+      continue;
+    }
+    const std::vector<ResidualBand> bands = ResidualBands(banded[panel]);
+    if (bands.empty()) continue;
+    panels.layout[panel] = ResidualLayout::kBands;
+    for (const ResidualBand& band : bands)
+      for (const std::array<double, 3>& p : {band.base, band.augmented}) extend(band.t_ms, p[0]), extend(band.t_ms, p[2]);
+    WriteResidualBands(bands, rft::AtmosphereName(panel == 1 ? rft::Atmosphere::kAir : rft::Atmosphere::kVacuum), dir);
+  }
+  if (!residual_rows.str().empty())
+    io::WriteFileAtomically((dir / "data" / "residuals_held_out.csv").string(), [&](std::ostream& out) {
+      out << "t_s,residual_base,residual_augmented,atmosphere\n" << residual_rows.str();
+    });
+  if (std::isfinite(r_lo)) panels.t_lo_ms = t_lo, panels.t_hi_ms = std::max(t_hi, t_lo + 1e-3), panels.r_lo = r_lo, panels.r_hi = r_hi;
+  return panels;
 }
 
 // plots/diagnose.gp: overlays (force against time and against penetration), residuals, gap per
@@ -384,27 +423,34 @@ bool WriteResiduals(const Diagnosis& d, const dataset::Dataset& ds, const Candid
 // with the effect: one accent colour that no pad uses elsewhere.
 constexpr const char* kBaseLine = io::kBaseLine;
 const std::string kAugmentedLine = std::string("lw 2.5 lc rgb '") + io::kAugmentedColour + "'";
-// Residuals are noisy samples: points, not lines joining the noise.
-constexpr const char* kBasePoints = "pt 7 ps 0.8 lc rgb '#6e6e6e'";
-const std::string kAugmentedPoints = std::string("pt 7 ps 0.8 lc rgb '") + io::kAugmentedColour + "'";
 // Six panels on a grid, room between them for their titles and labels.
 constexpr const char* kSixPanels = " margins 0.07, 0.98, 0.1, 0.9 spacing 0.07, 0.15";
 
+// A measured trace of more samples than this is drawn as a thin line: its points, at the size that
+// reads on a short trace, merge into a band that hides the simulated lines.
+constexpr size_t kMeasuredPointsUpTo = 300;
+
 std::string OverlayFigure(const Diagnosis& d, const dataset::Dataset& ds, const std::vector<size_t>& held,
                           const std::string& aug_title, bool against_penetration) {
+  size_t held_out = 0;
+  for (const FitDrop& f : d.problem.drops) held_out += f.train ? 0 : 1;
   std::ostringstream body;
   // The styles named in the title, no key: a key inside a panel covers its peak.
+  const std::string which = held.size() < held_out ? "the " + std::to_string(held.size()) + " worst of " +
+                                                         std::to_string(held_out) + " held-out drops (base force NRMSE)"
+                                                   : "the held-out drops";
   body << "set multiplot layout 2,3" << kSixPanels << " title "
-       << io::GnuplotQuote(std::string(against_penetration ? "Force against penetration" : "Force against time") +
-                           " of the held-out drops: measured (black points), base (grey, dashed), " + aug_title +
-                           " (purple)")
+       << io::GnuplotQuote(std::string(against_penetration ? "Force against penetration" : "Force against time") + " of " +
+                           which + ": measured (black), base (grey, dashed), " + aug_title + " (purple)")
        << "\nunset key\n";
   for (size_t i : held) {
     const dataset::DatasetDrop& m = ds.drops[d.problem.drops[i].dataset_index];
     const std::string columns = against_penetration ? "($5*1000):2" : "($1*1000):2";
+    const std::string measured = m.trace.size() <= kMeasuredPointsUpTo ? "with points pt 7 ps 0.8 lc rgb '#000000'"
+                                                                       : "with lines lw 1 lc rgb '#000000'";
     body << "set title " << io::GnuplotQuote(m.drop_id + " (" + rft::AtmosphereName(m.atmosphere) + ")") << "\nset xlabel "
          << (against_penetration ? "'penetration [mm]'" : "'t [ms]'") << "\nset ylabel 'force [N]'\nplot "
-         << io::GnuplotQuote("data/" + m.drop_id + ".csv") << " using " << columns << " with points pt 7 ps 0.8 lc rgb '#000000' title 'measured', "
+         << io::GnuplotQuote("data/" + m.drop_id + ".csv") << " using " << columns << ' ' << measured << " title 'measured', "
          << "'' using " << (against_penetration ? "($6*1000):3" : "($1*1000):3") << " with lines " << kBaseLine << " title 'base', "
          << "'' using " << (against_penetration ? "($7*1000):4" : "($1*1000):4") << " with lines " << kAugmentedLine
          << " title 'with effect'\n";
@@ -412,35 +458,6 @@ std::string OverlayFigure(const Diagnosis& d, const dataset::Dataset& ds, const 
   if (held.empty()) body << io::PlaceholderPlot("no held-out drop could be simulated");
   body << "unset multiplot\n";
   return io::Figure(against_penetration ? "plots/overlays_force_penetration" : "plots/overlays_force_time", body.str());
-}
-
-// Residuals of every held-out drop, base and with the effect, drops in vacuum and in air apart
-// (the effects the library names often act in one atmosphere only).
-std::string ResidualFigure(const std::string& aug_title, bool residuals) {
-  std::ostringstream body;
-  body << "set xlabel 't [ms]'\nset ylabel 'normalised residual'\nunset key\n";
-  // One scale on every panel, so base and effect, vacuum and air compare by eye.
-  if (residuals)
-    body << "stats 'data/residuals_held_out.csv' using ($1*1000):2 nooutput name 'B'\n"
-            "stats 'data/residuals_held_out.csv' using ($1*1000):3 nooutput name 'A'\n"
-            "r_lo = (A_min_y < B_min_y ? A_min_y : B_min_y); r_hi = (A_max_y > B_max_y ? A_max_y : B_max_y)\n"
-            "r_pad = 0.05 * (r_hi - r_lo) + 1e-3\nset yrange [r_lo - r_pad : r_hi + r_pad]\n"
-            "set xrange [(A_min_x < B_min_x ? A_min_x : B_min_x) : (A_max_x > B_max_x ? A_max_x : B_max_x)]\n";
-  body << "set multiplot layout 2,2 title 'Held-out force residual (simulated - measured) / measured peak force; "
-          "every drop, one scale'\n";
-  for (const char* atmosphere : {"vacuum", "air"})
-    for (int model = 0; model < 2; ++model) {
-      body << "set title " << io::GnuplotQuote(std::string(model == 0 ? "base" : aug_title) + ", drops in " + atmosphere) << "\n";
-      if (!residuals) {
-        body << io::PlaceholderPlot("no held-out drop could be simulated");
-        continue;
-      }
-      body << "plot 'data/residuals_held_out.csv' using ($1*1000):(strcol(4) eq '" << atmosphere << "' ? $"
-           << (model == 0 ? 2 : 3) << " : 1/0) with points " << (model == 0 ? std::string(kBasePoints) : kAugmentedPoints)
-           << " notitle, 0 with lines lw 1 lc rgb '#000000' notitle\n";
-    }
-  body << "unset multiplot\n";
-  return io::Figure("plots/residuals", body.str());
 }
 
 // A drop id for a tic under a panel that already names the atmosphere: "_<atmosphere>" and a
@@ -451,22 +468,27 @@ std::string ShortId(std::string id, const std::string& atmosphere) {
   return id;
 }
 
-// data/gap_<atmosphere>.csv: the drops in one atmosphere, numbered, with their force NRMSE before
-// and after and the noise floor; false when there is none.
-bool WriteGapPerDropData(const Diagnosis& d, const dataset::Dataset& ds, const CandidateScore& after,
-                         rft::Atmosphere atmosphere, const fs::path& dir) {
-  std::ostringstream rows;
-  int k = 0;
+// A condition as a tic reads it: pad, soil and speed ("flat FJS-1 LP 1.2 m/s"; a pad or soil
+// given by path by its file's stem).
+std::string ConditionLabel(const dataset::DatasetDrop& m) {
+  std::ostringstream label;
+  label << fs::path(m.pad).stem().string() << ' ' << io::SoilDisplayName(fs::path(m.soil).stem().string()) << ' '
+        << std::setprecision(3) << m.impact_speed_m_s << " m/s";
+  return label.str();
+}
+
+// The drops in one atmosphere, in the dataset's order, for the gap-per-drop figure.
+std::vector<GapRow> GapRows(const Diagnosis& d, const dataset::Dataset& ds, const CandidateScore& after,
+                            rft::Atmosphere atmosphere) {
+  std::vector<GapRow> rows;
   for (size_t i = 0; i < d.problem.drops.size(); ++i) {
-    const dataset::DatasetDrop& m = ds.drops[d.problem.drops[i].dataset_index];
+    const FitDrop& f = d.problem.drops[i];
+    const dataset::DatasetDrop& m = ds.drops[f.dataset_index];
     if (m.atmosphere != atmosphere) continue;
-    rows << k++ << ',' << ShortId(m.drop_id, rft::AtmosphereName(atmosphere)) << (d.problem.drops[i].train ? "" : "*") << ','
-         << io::FormatNumber(d.base.gaps[i].force_nrmse) << ',' << io::FormatNumber(after.gaps[i].force_nrmse) << ','
-         << io::FormatNumber(d.base.gaps[i].noise_nrmse) << '\n';
+    rows.push_back({ShortId(m.drop_id, rft::AtmosphereName(atmosphere)), ConditionLabel(m), ConditionKey(f), !f.train,
+                    d.base.gaps[i].force_nrmse, after.gaps[i].force_nrmse, d.base.gaps[i].noise_nrmse});
   }
-  io::WriteFileAtomically((dir / "data" / ("gap_" + std::string(rft::AtmosphereName(atmosphere)) + ".csv")).string(),
-                          [&](std::ostream& out) { out << "k,drop,force_nrmse_before,force_nrmse_after,noise_floor\n" << rows.str(); });
-  return k > 0;
+  return rows;
 }
 
 // True when the effect raised any drop's force NRMSE: only then does the figure's key explain the
@@ -475,35 +497,6 @@ bool AnyDropMadeWorse(const Diagnosis& d, const CandidateScore& after) {
   for (size_t i = 0; i < d.base.gaps.size() && i < after.gaps.size(); ++i)
     if (after.gaps[i].force_nrmse > d.base.gaps[i].force_nrmse) return true;
   return false;
-}
-
-// Force NRMSE per drop before and after, drops in vacuum and in air in separate panels, with
-// the sensor-noise floor each drop cannot go below.
-std::string GapPerDropFigure(const std::string& aug_title, const std::array<bool, 2>& has_drops, bool any_worse) {
-  std::ostringstream body;
-  // Drop ids upright and small, held-out ones starred; a drop the effect made worse carries a
-  // down-pointing mark above its bars.
-  body << "set multiplot layout 2,1 margins 0.08, 0.98, 0.14, 0.83 spacing 0, 0.2 title "
-       << io::GnuplotQuote("Force NRMSE per drop: base and " + aug_title + " (* held out)")
-       << "\nset style fill solid 1 border lc rgb '#303030'\nset boxwidth 0.38\nset xtics rotate by 30 right font ',11'\n"
-          "set ylabel 'force NRMSE'\nset yrange [0:*]\nset offsets 0, 0, graph 0.12, 0\n"
-          "set key at screen 0.5, screen 0.955 center top horizontal maxrows 1 Left reverse samplen 2\n";
-  int panel = 0;
-  for (const char* atmosphere : {"vacuum", "air"}) {
-    body << "set title 'drops in " << atmosphere << "'\n" << (panel > 0 ? "unset key\n" : "");
-    if (!has_drops[panel++]) {
-      body << io::PlaceholderPlot(std::string("no drop in ") + atmosphere);
-      continue;
-    }
-    const std::string file = std::string("'data/gap_") + atmosphere + ".csv'";
-    body << "plot " << file << " skip 1 using ($1-0.2):3:xtic(2) with boxes lc rgb '#9e9e9e' title 'base', "
-         << file << " skip 1 using ($1+0.2):4 with boxes lc rgb '" << io::kAugmentedColour << "' title 'with effect', "
-         << file << " skip 1 using 1:5 with points pt 5 ps 1 lc rgb '#000000' title 'sensor-noise floor', "
-         << file << " skip 1 using 1:($4 > $3 ? ($4 > $5 ? $4 : $5) * 1.08 : 1/0) with points pt 11 ps 1.8 lc rgb '"
-         << io::kAugmentedColour << "' " << (any_worse ? "title 'made worse by the effect'" : "notitle") << "\n";
-  }
-  body << "unset multiplot\n";
-  return io::Figure("plots/gap_per_drop", body.str(), io::kFigureWide);
 }
 
 void WriteReport(const Diagnosis& d, const dataset::Dataset& ds, const CandidateScore& after, const fs::path& file) {
@@ -665,14 +658,14 @@ void WriteDiagnosis(const Diagnosis& d, const dataset::Dataset& ds, const io::Ou
     WritePerDropCsv(d, ds, after, dir / "per_drop.csv");
     const std::vector<size_t> held = OverlaidDrops(d);
     WriteOverlayData(d, ds, shown, held, dir);
-    const bool residuals = WriteResiduals(d, ds, shown, dir);
+    const ResidualPanels residuals = WriteResiduals(d, ds, shown, dir);
     const std::string aug_title = shown ? (d.winner >= 0 ? "base + " + shown->name : "best candidate " + shown->name + " (not named)")
                                         : std::string("base");
     const std::string gp = OverlayFigure(d, ds, held, aug_title, false) + OverlayFigure(d, ds, held, aug_title, true) +
                            ResidualFigure(aug_title, residuals) +
                            GapPerDropFigure(aug_title,
-                                            {WriteGapPerDropData(d, ds, after, rft::Atmosphere::kVacuum, dir),
-                                             WriteGapPerDropData(d, ds, after, rft::Atmosphere::kAir, dir)},
+                                            {WriteGapPanelData(GapRows(d, ds, after, rft::Atmosphere::kVacuum), "vacuum", dir),
+                                             WriteGapPanelData(GapRows(d, ds, after, rft::Atmosphere::kAir), "air", dir)},
                                             AnyDropMadeWorse(d, after));
     io::RenderPlots(dir, {"plots/diagnose.gp", gp,
                           {io::FigurePng("plots/overlays_force_time"), io::FigurePng("plots/overlays_force_penetration"),
