@@ -21,7 +21,7 @@ struct DiagnoseArgs {
   int threads = 0;
   double min_step_explained = gap::DiagnoseOptions{}.min_step_explained;
   std::vector<std::string> fit_on;
-  bool no_pairs = false, law_candidate = false, no_drop_nuisances = false;
+  bool no_pairs = false, law_candidate = false, no_drop_nuisances = false, floor_from_base = false;
 };
 }  // namespace
 
@@ -57,9 +57,13 @@ void AddDiagnoseCommand(CLI::App& app) {
   cmd->add_flag("--no-drop-nuisances", args->no_drop_nuisances,
                 "fit every drop at its nominal strength, speed and touchdown time (the workflow before per-drop "
                 "scatter was modelled; docs/model_gap.md)");
+  cmd->add_flag("--floor-from-base", args->floor_from_base,
+                "read the replicates' floor from the base model's residuals alone, as the release before (by "
+                "default it is read from each fully fitted candidate's too and the lowest kept; docs/model_gap.md)");
   cmd->callback([args] {
     gap::DiagnoseOptions o;
     o.drop_nuisances = !args->no_drop_nuisances;
+    o.floor_from_best_model = !args->floor_from_base;
     o.threads = io::ThreadsFor(args->threads);
     o.try_pairs = !args->no_pairs;
     o.min_step_explained = args->min_step_explained;

@@ -84,6 +84,9 @@ struct DiagnoseOptions {
   std::optional<pad::SensorSampling> sensor_sampling;
   // Per-drop nuisances (diagnose_fit.h: strength, speed, touchdown time) in every fit.
   bool drop_nuisances = true;
+  // The replicates' floor read from the best-fitting candidate's residuals too, the lowest kept
+  // (gap_floor.h LowerFloorByCandidates); false (--floor-from-base): from the base's alone.
+  bool floor_from_best_model = true;
   // --fit-on: the drop ids every model is fitted on; every other drop is held out and predicted.
   // Empty: the split by speed above. Each id must be in the dataset, every soil needs one, and at
   // least one drop must be left to predict (InputError otherwise).

@@ -141,6 +141,8 @@ nlohmann::json FloorJson(const Diagnosis& d) {
   const GapFloor& f = d.floor;
   nlohmann::json j{{"source", f.from_replicates ? "replicates (pure error)" : "sensor noise at rest"},
                    {"force_nrmse", std::sqrt(f.ms)},
+                   {"force_nrmse_upper_95", std::sqrt(f.ms_upper)},
+                   {"read_from_model", f.model},
                    {"sensor_noise_force_nrmse", std::sqrt(f.noise_ms)},
                    {"replicate_conditions", f.conditions},
                    {"replicate_degrees_of_freedom", f.replicate_df},
@@ -185,6 +187,14 @@ nlohmann::json DiagnosisJson(const Diagnosis& d) {
   if (!d.residual_description.empty()) j["residual_description"] = d.residual_description;
   j["effect_parameters"] = d.winner >= 0 ? ParametersJson(after->fit, false) : nlohmann::json::object();
   j["zeta_N_cm3"] = ParametersJson(after->fit, true);
+  // The rig's fitted parameters in the final model (its common offsets; a fitted low-pass cutoff or
+  // load cell): measurement, reported apart from the soil's effects, whether the sensor was
+  // inferred or given.
+  nlohmann::json rig = nlohmann::json::object();
+  for (const ParameterEstimate& e : after->fit.sensor_estimates)
+    rig[e.effect + "." + e.key] = {{"value", e.value / e.file_to_si},
+                                   {"interval_95", {e.low / e.file_to_si, e.high / e.file_to_si}}};
+  j["rig_parameters"] = rig;
   j["gap_before"] = GapJson(d.base.held_out);
   j["gap_after"] = GapJson(after->held_out);
   j["gap_reduction"] = d.winner >= 0 ? after->gap_reduction : 0.0;
@@ -523,6 +533,14 @@ void WriteReport(const Diagnosis& d, const dataset::Dataset& ds, const Candidate
             : d.nuisances_without_replicates ? ": off, the drops do not repeat their conditions (fewer than 3 "
                                                "degrees of freedom of replicates)"
                                              : ": off") << ").\n\n";
+    const GapFloor& fl = d.floor;
+    out << "**Floor** (what no model of the conditions goes below): force NRMSE " << Num(std::sqrt(fl.ms))
+        << (fl.from_replicates ? " from the replicates' pure error on " + std::to_string(fl.replicate_df) +
+                                     " degrees of freedom, read from the residuals of " + fl.model +
+                                     " (95 % upper bound " + Num(std::sqrt(fl.ms_upper)) + ")"
+                               : std::string(" from the sensor's noise at rest (too few replicates)"))
+        << "; sensor noise " << Num(std::sqrt(fl.noise_ms)) << "; the base's held-out excess above it "
+        << Num(std::sqrt(std::max(d.base.held_out.mean_square - fl.ms, 0.0))) << ".\n\n";
     if (!d.residual_description.empty()) out << d.residual_description << "\n\n";
     size_t n_train = 0;
     for (const FitDrop& f : d.problem.drops) n_train += f.train;

@@ -173,9 +173,13 @@ StepOutcome DecideStep(const Diagnosis& d, const CandidateScore& current, const 
 // the held-out cut (which a gap near the noise could not reach) is not asked.
 bool ExplainsTheGap(const Diagnosis& d, const CandidateScore& m, const DiagnoseOptions& o, std::string* why) {
   if (d.floor.from_replicates) {
-    if (m.explained >= o.min_explained) return true;
+    // The floor is itself an estimate (a mean square on the replicates' degrees of freedom): a
+    // model whose held-out gap lies within its 95 % upper bound has left nothing the replicates can
+    // tell from their scatter, whatever share that is of an excess measured against the estimate.
+    if (m.explained >= o.min_explained || m.held_out.mean_square <= d.floor.ms_upper) return true;
     *why = "the selected model, " + m.name + ", explains " + Fixed(100 * m.explained, 0) +
-           " % of the base's held-out excess over the replicates' floor (needs >= " + Fixed(100 * o.min_explained, 0) + " %)";
+           " % of the base's held-out excess over the replicates' floor (needs >= " + Fixed(100 * o.min_explained, 0) +
+           " %, or a held-out force NRMSE within the floor's 95 % upper bound, " + Fixed(std::sqrt(d.floor.ms_upper), 4) + ")";
     return false;
   }
   if (m.gap_reduction >= o.min_gap_reduction && m.explained >= o.min_explained) return true;
@@ -260,6 +264,18 @@ void SelectForward(Diagnosis& d, const DiagnoseOptions& o, const ScoreModel& sco
       tried.push_back(static_cast<int>(d.candidates.size()) - 1);
       progress.Add(1, ", last: " + d.candidates.back().name);
     }
+    // The floor read from the replicates of the model that fits them best (gap_floor.h); every
+    // score related to it again. It only falls, so a step decided on a higher floor stands.
+    if (o.floor_from_best_model) {
+      std::vector<const std::vector<DropGap>*> gaps;
+      std::vector<std::string> names;
+      for (int i : tried)
+        if (d.candidates[i].applies && !d.candidates[i].screened_out)
+          gaps.push_back(&d.candidates[i].gaps), names.push_back(d.candidates[i].name);
+      if (LowerFloorByCandidates(d.problem, gaps, names, d.floor))
+        for (CandidateScore& c : d.candidates)
+          if (c.applies && !c.screened_out) Relate(c, d.base, c.extends < 0 ? d.base : d.candidates[c.extends], d.floor.ms);
+    }
     const StepOutcome outcome = DecideStep(d, current < 0 ? d.base : d.candidates[current], tried, o);
     steps.push_back("step " + std::to_string(step) + ": " + outcome.why);
     if (outcome.chosen < 0) break;
@@ -283,8 +299,10 @@ void SelectForward(Diagnosis& d, const DiagnoseOptions& o, const ScoreModel& sco
         d.named_effects.push_back(id);
     }
     verdict = w.name + " explains the gap: held-out force NRMSE " + Fixed(d.base.held_out.force_nrmse, 4) + " -> " +
-              Fixed(w.held_out.force_nrmse, 4) + ", " + Fixed(100 * w.explained, 0) +
-              " % of the excess over the noise floor explained";
+              Fixed(w.held_out.force_nrmse, 4) + ", " +
+              // Past 100 %: the gap left is below the floor's estimate, which is itself uncertain.
+              (w.explained >= 1.0 ? std::string("all of the excess over the noise floor explained (what is left is within it)")
+                                  : Fixed(100 * w.explained, 0) + " % of the excess over the noise floor explained");
   }
   // The statement on the soils' own term stands on the steps that selected it (each beat the model
   // before it and explained most of what it left), even when the whole model is not named.

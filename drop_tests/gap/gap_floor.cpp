@@ -1,6 +1,7 @@
 #include "drop_tests/gap/gap_floor.h"
 
 #include <algorithm>
+#include <boost/math/distributions/chi_squared.hpp>
 #include <boost/math/distributions/fisher_f.hpp>
 #include <cmath>
 #include <functional>
@@ -70,7 +71,25 @@ GapFloor ComputeFloor(const FitProblem& p, const std::vector<DropGap>& gaps, dou
   // The pure error holds the noise too; where it reads lower (few replicates, a quiet stretch),
   // the noise stands: no model does better than the sensor.
   f.ms = f.from_replicates ? std::max(f.replicate_ms, f.noise_ms) : f.noise_ms;
+  f.ms_upper = f.ms;
+  if (f.from_replicates && f.replicate_ms > f.noise_ms)
+    f.ms_upper = f.replicate_ms * f.replicate_df /
+                 boost::math::quantile(boost::math::chi_squared(static_cast<double>(f.replicate_df)), 0.05);
   return f;
+}
+
+bool LowerFloorByCandidates(const FitProblem& p, const std::vector<const std::vector<DropGap>*>& candidate_gaps,
+                            const std::vector<std::string>& names, GapFloor& floor) {
+  if (!floor.from_replicates) return false;
+  bool lowered = false;
+  for (size_t k = 0; k < candidate_gaps.size(); ++k) {
+    GapFloor f = ComputeFloor(p, *candidate_gaps[k], floor.noise_ms);
+    if (!f.from_replicates || !(f.ms < floor.ms)) continue;
+    f.model = names[k];
+    floor = f;
+    lowered = true;
+  }
+  return lowered;
 }
 
 std::vector<CellLackOfFit> LackOfFit(const FitProblem& p, const std::vector<DropGap>& gaps) {

@@ -28,7 +28,14 @@ struct GapFloor {
   int replicate_df = 0;    // sum over conditions of (replicates - 1)
   int conditions = 0;      // conditions with two or more drops
   double ms = 0.0;         // the floor used
+  // The floor's one-sided 95 % upper bound: from replicates, the pure error's chi-square bound on its
+  // degrees of freedom (replicate_ms df / chi2_0.05(df): 1.9 ms at 18 df); else the noise itself.
+  // A held-out gap at or below it is not told apart from the floor.
+  double ms_upper = 0.0;
   bool from_replicates = false;
+  // The model whose residuals the pure error was read from ("base", or the candidate that fits the
+  // replicates best: LowerFloorByCandidates).
+  std::string model = "base";
 };
 
 // A cell's (pad, soil, atmosphere) lack of fit against its replicates' pure error.
@@ -44,6 +51,13 @@ inline constexpr int kMinPureErrorDf = 4;
 
 // The floor of `gaps` (every drop's, the base's: DropGap::force_residual), with the held-out noise.
 GapFloor ComputeFloor(const FitProblem& problem, const std::vector<DropGap>& gaps, double held_out_noise_ms);
+// A model's misfit, shifted from replicate to replicate by their touchdown times and speeds, counts
+// as pure error: read from the base, whose misfit is the largest, the floor came out above the
+// held-out gap the hidden effect's own model reached (independent blind sets, docs/model_gap.md).
+// Read from each fitted candidate's residuals too, the floor is the lowest (never below the noise):
+// the least inflated. True when a candidate lowered `floor`.
+bool LowerFloorByCandidates(const FitProblem& problem, const std::vector<const std::vector<DropGap>*>& candidate_gaps,
+                            const std::vector<std::string>& names, GapFloor& floor);
 // Per cell, for the cells with replicates; and the pooled test over all of them (cell "all").
 std::vector<CellLackOfFit> LackOfFit(const FitProblem& problem, const std::vector<DropGap>& gaps);
 

@@ -150,6 +150,22 @@ def test_diagnose_fit_on_equals_the_command_line(tmp_path):
     assert py["split"]["rule"].startswith("--fit-on")
 
 
+def test_diagnose_floor_from_base_equals_the_command_line(tmp_path):
+    # Two trials of six conditions: a floor from the replicates (6 degrees of freedom). Python's
+    # `floor_from_base` is --floor-from-base: the floor read from the base's residuals alone.
+    spec = tmp_path / "synth.yaml"
+    spec.write_text(SYNTH_SPEC.replace("impact_speeds_m_s: [1.0]", "impact_speeds_m_s: [0.7, 1.0, 1.5]")
+                    .replace("trials: 1", "trials: 2"))
+    run_touchdown("synth", spec, "--out", tmp_path / "measured")
+    run_touchdown("diagnose", tmp_path / "measured", "--out", tmp_path / "cli", "--no-pairs", "--threads", "2",
+                  "--floor-from-base")
+    py = touchdown.diagnose(tmp_path / "measured", tmp_path / "py", pairs=False, threads=2, floor_from_base=True)
+    assert _without_seconds(py) == _without_seconds(_json(tmp_path / "cli" / "diagnosis.json"))
+    assert py["floor"]["source"] == "replicates (pure error)"
+    assert py["floor"]["read_from_model"] == "base"
+    assert py["floor"]["force_nrmse_upper_95"] >= py["floor"]["force_nrmse"]
+
+
 TRADE_PLAN = ("schema_version: 1\ntype: sweep\nname: tiny_trade\nfixed: {gravity_m_s2: 9.81}\n"
               "grid: {pad: [flat, c4], soil: [fjs1_lp], impact_speed_m_s: [1.0]}\n"
               "trade: {allowable_final_penetration_mm: 15, allowable_peak_force_N: 400}\n")

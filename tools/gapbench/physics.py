@@ -1,6 +1,6 @@
 """gapbench physics: RFT on an axisymmetric footpad profile and the 1-DOF drop rig.
 
-Written from /work/shared/reference/physics.md (sections 1, 2, 4) and /work/main/docs/model_gap.md
+Written from the project's physics reference (physics.md, sections 1, 2, 4) and docs/model_gap.md
 ("The effect library", "Rig dynamics with added mass"), independently of touchdown's source code.
 
 Units: SI everywhere inside (m, s, kg, N); zeta is given in N/cm^3 and multiplied by 1e6.

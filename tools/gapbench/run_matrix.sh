@@ -28,8 +28,8 @@ if [ ! -x "$TD" ]; then
   exit 2
 fi
 HERE=$(cd "$(dirname "$0")" && pwd)
-export TOUCHDOWN_DATA_DIR=/work/main/data
-[ -d "$TOUCHDOWN_DATA_DIR" ] || export TOUCHDOWN_DATA_DIR="$HERE/../../data"
+# The repository's catalogue unless the caller names another.
+export TOUCHDOWN_DATA_DIR=${TOUCHDOWN_DATA_DIR:-$(cd "$HERE/../.." && pwd)/data}
 export TD OUT_DIR SETS_DIR
 export GAPBENCH_TIMEOUT=${GAPBENCH_TIMEOUT:-3600}
 export GAPBENCH_NICE=${GAPBENCH_NICE:-10}

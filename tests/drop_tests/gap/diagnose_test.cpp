@@ -108,6 +108,7 @@ TEST(Diagnose, AHiddenSensorOffsetIsNamedAsTheRigsNuisance) {
   EXPECT_EQ(d.named_effect, "none") << d.decision;
   EXPECT_EQ(d.named_nuisances, std::vector<std::string>{"sensor_offset"}) << d.decision;
   const CandidateScore& final_model = d.winner >= 0 ? d.candidates[d.winner] : d.base;
+  const nlohmann::json json = DiagnosisJson(d);
   int found = 0;
   for (const ParameterEstimate& e : final_model.fit.sensor_estimates) {
     if (e.effect != "sensor_offset") continue;
@@ -115,8 +116,13 @@ TEST(Diagnose, AHiddenSensorOffsetIsNamedAsTheRigsNuisance) {
     std::printf("[ sensor_offset ] %s = %.6g [%.6g, %.6g], truth %.6g\n", e.key.c_str(), e.value, e.low, e.high, truth);
     EXPECT_LE(std::abs(e.value - truth), std::max(1.5 * 0.5 * (e.high - e.low), 0.02 * truth)) << e.key;
     ++found;
+    // diagnosis.json reports it apart from the soil's effects, in file units.
+    const nlohmann::json& rig = json.at("rig_parameters").at("sensor_offset." + e.key);
+    EXPECT_DOUBLE_EQ(rig["value"].get<double>(), e.value / 1e-3);
+    EXPECT_DOUBLE_EQ(rig["interval_95"][1].get<double>(), e.high / 1e-3);
   }
   EXPECT_EQ(found, 2);
+  EXPECT_TRUE(json.at("effect_parameters").empty());
 }
 
 TEST(Diagnose, NothingHiddenNamesNone) {

@@ -61,6 +61,31 @@ TEST(GapFloor, ThePureErrorIsTheReplicatesScatterAboutTheirConditionsMean) {
               1e-15);
 }
 
+TEST(GapFloor, ItsUpperBoundIsThePureErrorsChiSquareBound) {
+  const Case k = Make(3, 4, 0.02, 0.01);
+  const GapFloor f = ComputeFloor(k.problem, k.gaps, 1e-6);
+  // 9 degrees of freedom: ms 9 / chi2_0.05(9), the factor from SciPy (9 / chi2.ppf(0.05, 9)).
+  EXPECT_NEAR(f.ms_upper / f.ms, 2.70667505879263, 1e-12);
+  // A floor that is the sensor's noise (read from every rest sample) is its own bound.
+  const GapFloor quiet = ComputeFloor(Make(3, 4, 0.02, 1e-4).problem, Make(3, 4, 0.02, 1e-4).gaps, 4e-4);
+  EXPECT_EQ(quiet.ms_upper, quiet.ms);
+}
+
+TEST(GapFloor, ACandidateThatFitsTheReplicatesBetterLowersTheFloor) {
+  // The base's residuals: the replicates differ by 0.01 each; a candidate's by 0.004 (its misfit,
+  // shifted from replicate to replicate, no longer in them); another's by 0.02.
+  const Case base = Make(3, 4, 0.02, 0.01), better = Make(3, 4, 0.0, 0.004), worse = Make(3, 4, 0.0, 0.02);
+  GapFloor f = ComputeFloor(base.problem, base.gaps, 1e-6);
+  ASSERT_TRUE(LowerFloorByCandidates(base.problem, {&worse.gaps, &better.gaps}, {"worse", "better"}, f));
+  EXPECT_EQ(f.model, "better");
+  EXPECT_NEAR(f.ms, 3 * 4 * 0.004 * 0.004 / 9, 1e-15);
+  EXPECT_FALSE(LowerFloorByCandidates(base.problem, {&worse.gaps}, {"worse"}, f));
+  // Never below the sensor's noise.
+  GapFloor g = ComputeFloor(base.problem, base.gaps, 1e-4);
+  ASSERT_TRUE(LowerFloorByCandidates(base.problem, {&better.gaps}, {"better"}, g));
+  EXPECT_EQ(g.ms, 1e-4);
+}
+
 TEST(GapFloor, TooFewReplicatesOrAQuietStretchLeaveTheSensorsNoise) {
   const double noise_ms = 4e-4;
   const GapFloor few = ComputeFloor(Make(2, 2, 0.02, 0.01).problem, Make(2, 2, 0.02, 0.01).gaps, noise_ms);
