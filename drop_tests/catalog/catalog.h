@@ -5,6 +5,7 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "footpad_geom/axisymmetric_profile.h"
@@ -29,6 +30,17 @@ class YamlFields;
 // -integral of x y dm) and optionally `center_of_mass_mm` are given.
 enum class PadKind { kAxisymmetric, kMesh };  // `kind: axisymmetric` or `kind: mesh`
 
+// A revolved pad's `profile.shape`. The names table is the one place its file names live.
+enum class PadShape { kFlat, kChamfer, kExponential, kSphericalCap, kCone, kTable };
+inline constexpr std::array<std::pair<PadShape, const char*>, 6> kPadShapeNames{{{PadShape::kFlat, "flat"},
+                                                                                {PadShape::kChamfer, "chamfer"},
+                                                                                {PadShape::kExponential, "exponential"},
+                                                                                {PadShape::kSphericalCap, "spherical_cap"},
+                                                                                {PadShape::kCone, "cone"},
+                                                                                {PadShape::kTable, "table"}}};
+const char* PadShapeName(PadShape shape);
+std::optional<PadShape> ParsePadShape(const std::string& name);
+
 // What a pad file says, in its own units, kept with the pad so WritePad writes a file LoadPad
 // reads back to the same pad. A 0 (or an empty optional) is a field the file leaves out.
 struct PadFileFields {
@@ -36,7 +48,7 @@ struct PadFileFields {
   double mass_kg = 0.0;
   double density_kg_m3 = 0.0;  // a mesh pad's alternative to mass_kg
   // An axisymmetric pad's `profile` (the shape's own parameters) and `angular_segments`.
-  std::string shape;  // flat, chamfer, exponential, spherical_cap, cone, table
+  std::optional<PadShape> shape;  // empty for a mesh pad
   double radius_mm = 0.0, thickness_mm = 0.0, chamfer_mm = 0.0, a0_mm = 0.0, rim_height_mm = 0.0, a1_per_mm = 0.0,
          sphere_radius_mm = 0.0, half_angle_deg = 0.0;
   int segments = 0;

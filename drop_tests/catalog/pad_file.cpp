@@ -59,9 +59,25 @@ geom::AxisymmetricProfile Guarded(const YamlFields& f, Build build) {
   }
 }
 
+}  // namespace
+
+const char* PadShapeName(PadShape shape) {
+  for (const auto& [value, name] : kPadShapeNames)
+    if (value == shape) return name;
+  return "flat";  // not reached: every enumerator is in the table
+}
+
+std::optional<PadShape> ParsePadShape(const std::string& name) {
+  for (const auto& [value, shape_name] : kPadShapeNames)
+    if (name == shape_name) return value;
+  return std::nullopt;
+}
+
+namespace {
+
 // Each profile shape's number fields, as the file gives them (mm, degrees; kept in PadFileFields),
 // read by LoadPad and written by WritePad. nullptr for an unknown shape.
-const FieldTable<PadFileFields>* ProfileFields(const std::string& shape) {
+const FieldTable<PadFileFields>* ProfileFields(PadShape shape) {
   using P = PadFileFields;
   const auto with = [](std::initializer_list<NumberField<P>> own) {
     FieldTable<P> fields{{"radius_mm", &P::radius_mm, 1.0, Sign::kPositive, false},
@@ -69,32 +85,32 @@ const FieldTable<PadFileFields>* ProfileFields(const std::string& shape) {
     fields.insert(fields.end(), own);
     return fields;
   };
-  static const std::map<std::string, FieldTable<P>> tables{
-      {"flat", with({})},
-      {"chamfer", with({{"chamfer_mm", &P::chamfer_mm, 1.0, Sign::kPositive, false}})},
+  static const std::map<PadShape, FieldTable<P>> tables{
+      {PadShape::kFlat, with({})},
+      {PadShape::kChamfer, with({{"chamfer_mm", &P::chamfer_mm, 1.0, Sign::kPositive, false}})},
       // u = a0 (exp(a1 x) - 1): give a0 directly, or the rim height u(r) that fixes it.
-      {"exponential", with({{"a0_mm", &P::a0_mm, 1.0, Sign::kPositive, true, true},
+      {PadShape::kExponential, with({{"a0_mm", &P::a0_mm, 1.0, Sign::kPositive, true, true},
                             {"rim_height_mm", &P::rim_height_mm, 1.0, Sign::kPositive, true, true},
                             {"a1_per_mm", &P::a1_per_mm, 1.0, Sign::kPositive, false}})},
-      {"spherical_cap", with({{"sphere_radius_mm", &P::sphere_radius_mm, 1.0, Sign::kPositive, false}})},
-      {"cone", with({{"half_angle_deg", &P::half_angle_deg, 1.0, Sign::kPositive, false}})},
-      {"table", with({})},
+      {PadShape::kSphericalCap, with({{"sphere_radius_mm", &P::sphere_radius_mm, 1.0, Sign::kPositive, false}})},
+      {PadShape::kCone, with({{"half_angle_deg", &P::half_angle_deg, 1.0, Sign::kPositive, false}})},
+      {PadShape::kTable, with({})},
   };
   const auto it = tables.find(shape);
   return it == tables.end() ? nullptr : &it->second;
 }
 
-bool HasSegments(const std::string& shape) { return shape == "exponential" || shape == "spherical_cap"; }
+bool HasSegments(PadShape shape) { return shape == PadShape::kExponential || shape == PadShape::kSphericalCap; }
 
 // A profile block's keys for its shape, in the order WritePad writes them.
-KeyTable<PadFileFields> ProfileKeys(const std::string& shape) {
+KeyTable<PadFileFields> ProfileKeys(PadShape shape) {
   using P = PadFileFields;
   using Y = YAML::Emitter;
-  KeyTable<P> k{{"shape", Always<P>, [](Y& y, const P& p) { y << p.shape; }}};
+  KeyTable<P> k{{"shape", Always<P>, [](Y& y, const P& p) { y << PadShapeName(*p.shape); }}};
   AppendNumberKeys(k, *ProfileFields(shape));
   if (HasSegments(shape))
     k.push_back({"segments", [](const P& p) { return p.segments > 0; }, [](Y& y, const P& p) { y << p.segments; }});
-  if (shape == "table")
+  if (shape == PadShape::kTable)
     k.push_back({"points_mm", Always<P>, [](Y& y, const P& p) {
                    y << YAML::BeginSeq;
                    for (const std::array<double, 2>& q : p.points_mm)
@@ -105,11 +121,13 @@ KeyTable<PadFileFields> ProfileKeys(const std::string& shape) {
 }
 
 geom::AxisymmetricProfile ReadProfile(const YamlFields& f, PadFileFields& file) {
-  file.shape = f.String("shape");
-  const FieldTable<PadFileFields>* fields = ProfileFields(file.shape);
-  if (!fields)
-    f.Fail("shape", "unknown shape '" + file.shape + "' (flat, chamfer, exponential, spherical_cap, cone, table)");
-  f.RequireOnly(Keys(ProfileKeys(file.shape)));
+  const std::string shape_name = f.String("shape");
+  file.shape = ParsePadShape(shape_name);
+  if (!file.shape)
+    f.Fail("shape", "unknown shape '" + shape_name + "' (flat, chamfer, exponential, spherical_cap, cone, table)");
+  const PadShape shape = *file.shape;
+  const FieldTable<PadFileFields>* fields = ProfileFields(shape);
+  f.RequireOnly(Keys(ProfileKeys(shape)));
   limits::Require(limits::kPadSize_mm, f.Positive("radius_mm"), f.file(), f.Path("radius_mm"));
   limits::Require(limits::kPadSize_mm, f.Positive("thickness_mm"), f.file(), f.Path("thickness_mm"));
   ReadFields(f, *fields, file);
@@ -119,22 +137,22 @@ geom::AxisymmetricProfile ReadProfile(const YamlFields& f, PadFileFields& file) 
   const int segments = file.segments > 0 ? file.segments : 400;
   if (segments > kMaxProfileSegments)
     f.Fail("segments", "must be at most " + std::to_string(kMaxProfileSegments) + ", got " + std::to_string(segments));
-  if (file.shape == "flat") return Guarded(f, [&] { return geom::MakeFlatProfile(r, h); });
-  if (file.shape == "chamfer") {
+  if (shape == PadShape::kFlat) return Guarded(f, [&] { return geom::MakeFlatProfile(r, h); });
+  if (shape == PadShape::kChamfer) {
     const double c = file.chamfer_mm * kMm;
     return Guarded(f, [&] { return geom::MakeChamferProfile(r, h, c); });
   }
-  if (file.shape == "exponential") {
+  if (shape == PadShape::kExponential) {
     const double a1 = file.a1_per_mm / kMm;
     if (f.Has("a0_mm") == f.Has("rim_height_mm")) f.Fail("a0_mm", "give exactly one of a0_mm and rim_height_mm");
     const double a0 = f.Has("a0_mm") ? file.a0_mm * kMm : file.rim_height_mm * kMm / std::expm1(a1 * r);
     return Guarded(f, [&] { return geom::MakeExponentialProfile(r, h, a0, a1, segments); });
   }
-  if (file.shape == "spherical_cap") {
+  if (shape == PadShape::kSphericalCap) {
     const double R = file.sphere_radius_mm * kMm;
     return Guarded(f, [&] { return geom::MakeSphericalCapProfile(r, h, R, segments); });
   }
-  if (file.shape == "cone") {
+  if (shape == PadShape::kCone) {
     const double half_angle = file.half_angle_deg * kDeg;
     return Guarded(f, [&] { return geom::MakeConeProfile(r, h, half_angle); });
   }
@@ -261,7 +279,7 @@ const KeyTable<PadToWrite>& PadKeys() {
        [](Y& y, const W& w) { y << w.pad.file.density_kg_m3; }},
       {"profile", axisymmetric,
        [](Y& y, const W& w) {
-         WriteMap(y, ProfileKeys(w.pad.file.shape), w.pad.file);
+         WriteMap(y, ProfileKeys(*w.pad.file.shape), w.pad.file);
        }},
       {"mesh", [=](const W& w) { return !axisymmetric(w); },
        [](Y& y, const W& w) {
@@ -348,7 +366,7 @@ int PadRimSegments(const PadSpec& pad) {
 }
 
 PadSpec FlatPadWithRadius(const PadSpec& pad, double radius_mm, geom::RimPolygon rim) {
-  if (pad.file.shape != "flat")
+  if (pad.file.shape != PadShape::kFlat)
     throw MakeInputError(pad.source, "profile.shape", "pad '" + pad.name + "' is not a flat revolved profile");
   YAML::Node node = YAML::Clone(YamlFields::LoadFile(pad.source).node());
   node["profile"]["radius_mm"] = radius_mm;

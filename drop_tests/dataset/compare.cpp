@@ -212,7 +212,7 @@ Comparison CompareDrops(const Dataset& measured, const std::vector<const Dataset
     d.simulated_id = s.drop_id;
     d.pad = m.pad;
     d.soil = m.soil;
-    d.atmosphere = rft::AtmosphereName(m.atmosphere);
+    d.atmosphere = m.atmosphere;
     d.impact_speed_m_s = m.impact_speed_m_s;
     d.measured_final_penetration_m = m.FinalPenetration();
     d.simulated_final_penetration_m = s.FinalPenetration();
@@ -257,7 +257,7 @@ nlohmann::json ComparisonJson(const Comparison& c) {
                      {"simulated_id", d.simulated_id},
                      {"pad", d.pad},
                      {"soil", d.soil},
-                     {"atmosphere", d.atmosphere},
+                     {"atmosphere", rft::AtmosphereName(d.atmosphere)},
                      {"impact_speed_m_s", d.impact_speed_m_s},
                      {"measured_final_penetration_m", io::FiniteOrNull(d.measured_final_penetration_m)},
                      {"simulated_final_penetration_m", io::FiniteOrNull(d.simulated_final_penetration_m)},
@@ -349,7 +349,7 @@ std::string ParityFigure(const Comparison& c, const fs::path& dir) {
       for (int k = 0; k < 4; ++k) out << (std::isfinite(v[k]) ? io::FormatNumber(v[k]) : "NaN") << ',';
       for (int k = 0; k < 4; ++k)
         if (std::isfinite(v[k])) top[k / 2] = std::max(top[k / 2], v[k]);
-      out << std::stoi(io::PadColour(d.pad).substr(1), nullptr, 16) << ',' << (d.atmosphere == "air" ? 6 : 7) << '\n';
+      out << std::stoi(io::PadColour(d.pad).substr(1), nullptr, 16) << ',' << (d.atmosphere == rft::Atmosphere::kAir ? 6 : 7) << '\n';
     }
   });
   // The key: one entry per pad (its colour) and per atmosphere (filled or open), from points
@@ -387,7 +387,7 @@ void WriteComparison(const Comparison& c, const Dataset& measured, const Dataset
              "simulated_final_penetration_m,final_penetration_rel_error,measured_peak_force_N,simulated_peak_force_N,"
              "peak_force_rel_error,force_nrmse_time,force_nrmse_penetration\n";
       for (const DropComparison& d : c.drops)
-        out << d.drop_id << ',' << d.simulated_id << ',' << d.pad << ',' << d.soil << ',' << d.atmosphere << ','
+        out << d.drop_id << ',' << d.simulated_id << ',' << d.pad << ',' << d.soil << ',' << rft::AtmosphereName(d.atmosphere) << ','
             << io::FormatNumber(d.impact_speed_m_s) << ',' << io::FormatNumber(d.measured_final_penetration_m) << ','
             << io::FormatNumber(d.simulated_final_penetration_m) << ',' << io::FormatNumber(d.final_penetration_rel_error)
             << ',' << io::FormatNumber(d.measured_peak_force_N) << ',' << io::FormatNumber(d.simulated_peak_force_N) << ','

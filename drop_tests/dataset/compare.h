@@ -50,7 +50,8 @@ double InterpolateClamped(const std::vector<double>& xs, const std::vector<doubl
 struct DropComparison {
   std::string drop_id;          // the measured drop
   std::string simulated_id;     // its simulated partner
-  std::string pad, soil, atmosphere;
+  std::string pad, soil;
+  rft::Atmosphere atmosphere = rft::Atmosphere::kVacuum;
   double impact_speed_m_s = 0.0;
   double measured_final_penetration_m = 0.0, simulated_final_penetration_m = 0.0;
   double measured_peak_force_N = 0.0, simulated_peak_force_N = 0.0;

@@ -21,6 +21,8 @@
 
 namespace touchdown::gap {
 
+const char* FindingKindName(FindingKind kind) { return kind == FindingKind::kPhase ? "phase" : "condition"; }
+
 namespace {
 
 const char* const kPhases[4] = {"impact_onset", "mid_stroke", "stopping", "rest"};
@@ -214,7 +216,7 @@ std::vector<Finding> WhereAnalysis(const dataset::Dataset& ds, const FitProblem&
       std::shuffle(perm.begin(), perm.end(), rng);
       hits += EtaSquared(y, perm, G) >= stat - 1e-15;
     }
-    Finding f{"condition", factor + (on_bias ? " (penetration bias)" : ""), "", stat, (hits + 1.0) / (o.permutations + 1.0), false};
+    Finding f{FindingKind::kCondition, factor + (on_bias ? " (penetration bias)" : ""), "", stat, (hits + 1.0) / (o.permutations + 1.0), false};
     std::ostringstream s;
     s << (on_bias ? "signed final penetration error (sim - measured) / measured by " : "force NRMSE by ") << factor << ":";
     for (const auto& [name, gi] : ids) {
@@ -248,7 +250,7 @@ std::vector<Finding> WhereAnalysis(const dataset::Dataset& ds, const FitProblem&
       std::shuffle(perm.begin(), perm.end(), rng);
       hits += std::abs(Pearson(rx, perm)) >= std::abs(rho) - 1e-15;
     }
-    Finding f{"condition", factor, "", rho, (hits + 1.0) / (o.permutations + 1.0), false};
+    Finding f{FindingKind::kCondition, factor, "", rho, (hits + 1.0) / (o.permutations + 1.0), false};
     f.summary = "force NRMSE " + std::string(rho > 0 ? "grows" : "falls") + " with " + factor +
                 " (Spearman rho = " + Fixed(rho, 2) + ")";
     out.push_back(f);
@@ -270,13 +272,13 @@ std::vector<Finding> WhereAnalysis(const dataset::Dataset& ds, const FitProblem&
       for (double v : l) s += coin(rng) ? v : -v;
       hits += s / l.size() >= mean - 1e-15;
     }
-    Finding f{"phase", kPhases[ph], "", std::exp(mean), (hits + 1.0) / (o.permutations + 1.0), false};
+    Finding f{FindingKind::kPhase, kPhases[ph], "", std::exp(mean), (hits + 1.0) / (o.permutations + 1.0), false};
     f.summary = std::string(kPhases[ph]) + ": mean squared force residual " + Fixed(std::exp(mean), 2) +
                 "x the drop's average (geometric mean over " + std::to_string(l.size()) + " drops)";
     out.push_back(f);
   }
   const double alpha = 0.05 / std::max<size_t>(out.size(), 1);  // Bonferroni over the tests made
-  for (Finding& f : out) f.significant = f.p_value < alpha && (f.kind != "phase" || f.statistic > 1.0);
+  for (Finding& f : out) f.significant = f.p_value < alpha && (f.kind != FindingKind::kPhase || f.statistic > 1.0);
   return out;
 }
 

@@ -115,8 +115,13 @@ struct GapSummary {  // held-out means
          peak_force_rel_error = 0.0, noise_nrmse = 0.0, mean_square = 0.0, noise_mean_square = 0.0;
 };
 
+// What a "where" finding is about: a condition of the drops (speed, pad, ...) or a phase of the
+// stroke (impact onset, ...).
+enum class FindingKind { kCondition, kPhase };
+const char* FindingKindName(FindingKind kind);  // "condition", "phase"
+
 struct Finding {  // one line of "where"
-  std::string kind;    // condition or phase
+  FindingKind kind = FindingKind::kCondition;
   std::string factor;  // speed, pad, ..., impact_onset, ...
   std::string summary;
   double statistic = 0.0;

@@ -69,7 +69,7 @@ nlohmann::json ParametersJson(const FitResult& f, bool zeta) {
 nlohmann::json FindingsJson(const std::vector<Finding>& fs) {
   nlohmann::json out = nlohmann::json::array();
   for (const Finding& f : fs)
-    out.push_back({{"kind", f.kind}, {"factor", f.factor}, {"summary", f.summary}, {"statistic", f.statistic},
+    out.push_back({{"kind", FindingKindName(f.kind)}, {"factor", f.factor}, {"summary", f.summary}, {"statistic", f.statistic},
                    {"p_value", f.p_value}, {"significant", f.significant}});
   return out;
 }
@@ -575,7 +575,7 @@ void WriteReport(const Diagnosis& d, const dataset::Dataset& ds, const Candidate
         << Num(100 * d.base.held_out.peak_force_rel_error, 3) << " %.\n\n"
         << "| kind | factor | finding | p | significant |\n| --- | --- | --- | --- | --- |\n";
     for (const Finding& f : d.where)
-      out << "| " << f.kind << " | " << f.factor << " | " << f.summary << " | " << Num(f.p_value, 3) << " | "
+      out << "| " << FindingKindName(f.kind) << " | " << f.factor << " | " << f.summary << " | " << Num(f.p_value, 3) << " | "
           << (f.significant ? "yes" : "no") << " |\n";
     out << "\nPermutation tests (" << 2000 << " permutations); significant means p below 0.05 / number of tests "
            "(Bonferroni).\n\n## 3. Candidates\n\n"
@@ -651,7 +651,7 @@ void WriteReport(const Diagnosis& d, const dataset::Dataset& ds, const Candidate
     if (!d.where_after.empty()) {
       out << "After the named effect:\n\n| kind | factor | finding | p | significant |\n| --- | --- | --- | --- | --- |\n";
       for (const Finding& f : d.where_after)
-        out << "| " << f.kind << " | " << f.factor << " | " << f.summary << " | " << Num(f.p_value, 3) << " | "
+        out << "| " << FindingKindName(f.kind) << " | " << f.factor << " | " << f.summary << " | " << Num(f.p_value, 3) << " | "
             << (f.significant ? "yes" : "no") << " |\n";
       out << "\n";
     }

@@ -115,7 +115,7 @@ KatsuragiDurianLaw ReadKatsuragiDurianLaw(const io::YamlFields& f) {
 // sphere's own radius, the sphere's lower hemisphere).
 ShallowImpactLaw ReadShallowImpactLaw(const io::YamlFields& f, const ValidationSource& s) {
   f.RequireOnly({"kind", "prefactor", "friction_coefficient", "how", "where"});
-  if (s.pad.file.shape != "spherical_cap" || s.pad.file.sphere_radius_mm != s.pad.file.radius_mm)
+  if (s.pad.file.shape != io::PadShape::kSphericalCap || s.pad.file.sphere_radius_mm != s.pad.file.radius_mm)
     f.Fail("kind", "shallow_impact needs a sphere: a spherical_cap pad whose radius is its sphere_radius");
   if (!(s.soil.bulk_density_kg_m3 > 0.0)) f.Fail("kind", "shallow_impact needs the soil's bulk_density_kg_m3 (rho_g)");
   ShallowImpactLaw law;
@@ -245,7 +245,7 @@ MeasuredTrend ReadTrend(const io::YamlFields& f, const ValidationSource& s) {
     t.at_impact_speed_m_s = InRange(f, "at_impact_speed_m_s", limits::kSpeed_m_s);
   }
   if (t.vary == Variable::kGravity && f.Has("at_gravity_m_s2")) f.Fail("at_gravity_m_s2", "the trend varies gravity");
-  if (t.vary == Variable::kProjectileDensity && s.pad.file.shape != "spherical_cap")
+  if (t.vary == Variable::kProjectileDensity && s.pad.file.shape != io::PadShape::kSphericalCap)
     f.Fail("vary", "projectile_density_kg_m3 needs a sphere (a spherical_cap pad)");
   ReadTrendLaw(f, t);
   t.how = ReadProvenance(f);
@@ -267,7 +267,7 @@ Range ReadRange(const io::YamlFields& f, const std::string& key, const limits::R
 // The bearing area is the source's flat pad made at each bearing diameter (io::FlatPadWithRadius).
 MeasuredBearing ReadBearing(const io::YamlFields& f, const ValidationSource& s) {
   f.RequireOnly({"id", "pressure_N_cm2", "depth_mm", "diameter_mm", "how", "where"});
-  if (s.pad.file.shape != "flat") f.Fail("id", "a static bearing needs a flat pad (profile shape: flat)");
+  if (s.pad.file.shape != io::PadShape::kFlat) f.Fail("id", "a static bearing needs a flat pad (profile shape: flat)");
   MeasuredBearing b;
   b.id = f.Name("id");
   b.pressure_Pa = ReadRange(f, "pressure_N_cm2", kPressure_N_cm2, 1e4);

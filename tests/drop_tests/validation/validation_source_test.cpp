@@ -97,7 +97,7 @@ TEST_F(ValidationSourceLoad, SurveyorsStaticBearingIsARangeOverDepthsAndDiameter
   EXPECT_DOUBLE_EQ(b.diameter_m.low, 0.2);
   EXPECT_DOUBLE_EQ(b.diameter_m.high, 0.3);
   EXPECT_EQ(b.how, Provenance::kQuoted);
-  EXPECT_EQ(s.pad.file.shape, "flat");
+  EXPECT_EQ(s.pad.file.shape, io::PadShape::kFlat);
   EXPECT_DOUBLE_EQ(s.soil.bulk_density_kg_m3, 1500.0);
   EXPECT_EQ(s.zeta_route, ZetaRoute::kDerived);
 }
