@@ -179,11 +179,7 @@ LanderInitialSpec ReadInitial(const io::YamlFields& in, bool resolved) {
   const std::string within = "must be within +-" + std::to_string(limits::kInitialRollPitchWithin_deg);
   if (std::abs(ic.roll_rad) >= limits::kInitialRollPitchWithin_deg * kDeg) in.Fail("roll_deg", within);
   if (std::abs(ic.pitch_rad) >= limits::kInitialRollPitchWithin_deg * kDeg) in.Fail("pitch_deg", within);
-  if (in.Has("align_to_slope")) {
-    const std::string a = in.String("align_to_slope");
-    if (a != "true" && a != "false") in.Fail("align_to_slope", "must be true or false, got '" + a + "'");
-    ic.align_to_slope = a == "true";
-  }
+  if (in.Has("align_to_slope")) ic.align_to_slope = in.Bool("align_to_slope");
   if (in.Has("angular_rate_deg_s")) {
     const std::vector<double> w = FixedList(in, "angular_rate_deg_s", 3);
     for (size_t k = 0; k < w.size(); ++k)
@@ -242,11 +238,7 @@ void ReadSimulation(const io::YamlFields& sim, lander::LanderRunOptions& options
       sim.Fail("pad_spin_tolerance_factor", "needs the scaled tolerances: give rtol only, not atol");
   }
   if (sim.Has("max_step_s")) options.integrator.max_step = sim.Positive("max_step_s");
-  if (sim.Has("stiff")) {
-    const std::string v = sim.String("stiff");
-    if (v != "true" && v != "false") sim.Fail("stiff", "must be true or false, got '" + v + "'");
-    options.integrator.stiff = v == "true";
-  }
+  if (sim.Has("stiff")) options.integrator.stiff = sim.Bool("stiff");
   std::string why;
   if (!options.integrator.IsValid(&why)) sim.Fail("rtol", why);
 }
