@@ -14,16 +14,6 @@ std::vector<double> Finite(std::vector<double> values) {
 }
 }  // namespace
 
-double Percentile(std::vector<double> values, double q) {
-  values = Finite(std::move(values));
-  if (values.empty()) return std::nan("");
-  std::sort(values.begin(), values.end());
-  const double h = (static_cast<double>(values.size()) - 1.0) * q / 100.0;
-  const size_t below = static_cast<size_t>(std::floor(h));
-  if (below + 1 >= values.size()) return values.back();
-  return values[below] + (h - static_cast<double>(below)) * (values[below + 1] - values[below]);
-}
-
 BinomialInterval ClopperPearson(int64_t successes, int64_t trials, double confidence) {
   using Binomial = boost::math::binomial_distribution<double>;
   if (trials <= 0) return {};

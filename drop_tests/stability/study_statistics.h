@@ -6,13 +6,11 @@
 #include <cstdint>
 #include <vector>
 
+#include "drop_tests/util/percentile.h"
+
 namespace touchdown::stability {
 
-// The q-th percentile (q in [0, 100]) of `values` (NaNs ignored; NaN when none is left): linear
-// interpolation between order statistics, x(h) with h = (n - 1) q / 100 on the sorted values
-// x(0) <= ... <= x(n-1) (Hyndman & Fan's definition 7, numpy's and R's default); the 100th is the
-// largest value.
-double Percentile(std::vector<double> values, double q);
+using io::Percentile;  // drop_tests/util/percentile.h
 
 struct BinomialInterval {
   double low = 0.0, high = 1.0;

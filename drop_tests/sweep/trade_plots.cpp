@@ -14,6 +14,7 @@
 #include "drop_tests/formats/output_path.h"
 #include "drop_tests/formats/plot_runner.h"
 #include "drop_tests/sweep/trade.h"
+#include "drop_tests/util/percentile.h"
 
 namespace touchdown::sweep {
 
@@ -39,12 +40,6 @@ struct Series {
   std::string medians;                // "" unless dense: speed, penetration, force, conversion rate
   bool dense() const { return rows.size() > kMaxJoinedRows; }
 };
-
-double Median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 // A speed with 3 significant digits, as a label shows it ("1.75"; a random draw would show 17).
 std::string SpeedText(double v) {
@@ -72,8 +67,8 @@ void WriteMedians(Series& s, const fs::path& dir) {
         for (const auto& [k, x] : {std::pair{0, r->impact_speed_m_s}, std::pair{1, r->final_penetration_m},
                                    std::pair{2, r->peak_force_N}, std::pair{3, r->mean_conversion_rate_W}})
           v[k].push_back(x);
-      out << io::FormatNumber(Median(v[0])) << ',' << io::FormatNumber(Median(v[1])) << ','
-          << io::FormatNumber(Median(v[2])) << ',' << io::FormatNumber(Median(v[3])) << '\n';
+      out << io::FormatNumber(io::Percentile(v[0], 50)) << ',' << io::FormatNumber(io::Percentile(v[1], 50)) << ','
+          << io::FormatNumber(io::Percentile(v[2], 50)) << ',' << io::FormatNumber(io::Percentile(v[3], 50)) << '\n';
     }
   });
 }

@@ -11,20 +11,6 @@
 namespace touchdown::stability {
 namespace {
 
-TEST(StudyStatistics, PercentilesInterpolateBetweenOrderStatistics) {
-  const std::vector<double> v = {5, 1, 4, std::nan(""), 2, 3};  // NaN ignored; order does not matter
-  EXPECT_DOUBLE_EQ(Percentile(v, 50), 3.0);
-  EXPECT_DOUBLE_EQ(Percentile(v, 95), 4.8);   // h = 4 x 0.95 = 3.8: 4 + 0.8 (5 - 4)
-  EXPECT_DOUBLE_EQ(Percentile(v, 99), 4.96);  // h = 3.96
-  EXPECT_DOUBLE_EQ(Percentile(v, 100), 5.0);
-  EXPECT_DOUBLE_EQ(Percentile(v, 0), 1.0);
-  EXPECT_DOUBLE_EQ(Percentile({7.5}, 95), 7.5);
-  EXPECT_TRUE(std::isnan(Percentile({}, 50)));
-  EXPECT_TRUE(std::isnan(Percentile({std::nan("")}, 50)));
-  // numpy.percentile([0, 10, 20, 30], 95) = 28.5
-  EXPECT_DOUBLE_EQ(Percentile({30, 0, 20, 10}, 95), 28.5);
-}
-
 // P[X >= k] and P[X <= k] of Binomial(n, p), summed term by term.
 double UpperTail(int k, int n, double p) {
   double sum = 0.0;
