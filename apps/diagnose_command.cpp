@@ -21,7 +21,8 @@ struct DiagnoseArgs {
   int threads = 0;
   double min_step_explained = gap::DiagnoseOptions{}.min_step_explained;
   std::vector<std::string> fit_on;
-  bool no_pairs = false, law_candidate = false, no_drop_nuisances = false, floor_from_base = false;
+  bool no_pairs = false, law_candidate = false, no_drop_nuisances = false, floor_from_base = false,
+       count_stop_samples = false;
 };
 }  // namespace
 
@@ -60,10 +61,14 @@ void AddDiagnoseCommand(CLI::App& app) {
   cmd->add_flag("--floor-from-base", args->floor_from_base,
                 "read the replicates' floor from the base model's residuals alone, as the release before (by "
                 "default it is read from each fully fitted candidate's too and the lowest kept; docs/model_gap.md)");
+  cmd->add_flag("--count-stop-samples", args->count_stop_samples,
+                "count the two samples either side of each drop's measured stop in its force residual, as the "
+                "release before (by default they are left out; docs/model_gap.md)");
   cmd->callback([args] {
     gap::DiagnoseOptions o;
     o.drop_nuisances = !args->no_drop_nuisances;
     o.floor_from_best_model = !args->floor_from_base;
+    o.skip_stop_samples = !args->count_stop_samples;
     o.threads = io::ThreadsFor(args->threads);
     o.try_pairs = !args->no_pairs;
     o.min_step_explained = args->min_step_explained;

@@ -88,7 +88,12 @@ DropGap ComputeGap(const FitProblem& p, const FitDrop& d, const FitResult& model
     g.overall_ms = 1.0;
     return g;
   }
-  g.force_nrmse = dataset::ForceNrmseTime(m.trace, *sim).value;
+  // The force NRMSE over the counted samples (FitDrop::ForceCounted); sim is recorded at the
+  // measured times, sample by sample.
+  double sum = 0.0, used = 0.0;
+  for (size_t i = 0; i < sim->size(); ++i)
+    if (d.ForceCounted(i)) sum += std::pow(sim->force_N[i] - m.trace.force_N[i], 2), used += 1;
+  g.force_nrmse = used > 0 ? std::sqrt(sum / used) / d.force_scale_N : std::nan("");
   g.force_nrmse_penetration = dataset::ForceNrmsePenetration(m.trace, *sim).value;
   const double d_meas = m.FinalPenetration(), f_meas = m.PeakForce();
   g.final_penetration_rel_error = (sim->penetration_m.back() - d_meas) / d_meas;
@@ -107,8 +112,10 @@ DropGap ComputeGap(const FitProblem& p, const FitDrop& d, const FitResult& model
     const double t = sim->t_s[i];
     if (t < 0) continue;
     const int phase = t < 0.2 * t_stop ? 0 : t < 0.7 * t_stop ? 1 : t <= t_stop ? 2 : 3;
-    const double e = (sim->force_N[i] - m.trace.force_N[i]) / d.force_scale_N;
+    // A skipped sample stays in force_residual as 0, so replicates still align sample by sample.
+    const double e = d.ForceCounted(i) ? (sim->force_N[i] - m.trace.force_N[i]) / d.force_scale_N : 0.0;
     g.force_residual.push_back(e);
+    if (!d.ForceCounted(i)) continue;
     g.phase_ms[phase] += e * e;
     if (phase < 3) bias += e, stroke += 1;
     count[phase] += 1;
@@ -337,7 +344,7 @@ Diagnosis RunDiagnosis(const dataset::Dataset& ds, const DiagnoseOptions& o) {
   d.dataset_dir = ds.directory;
   d.fit_on = o.fit_on;
   d.held_out = o.fit_on.empty() ? HeldOutSplit(ds) : DesignatedSplit(ds, o.fit_on);
-  d.problem = MakeFitProblem(ds, d.held_out, o.threads);
+  d.problem = MakeFitProblem(ds, d.held_out, o.threads, o.skip_stop_samples);
   if (o.base == DiagnoseBase::kBekker) {
     if (o.start_model)
       throw MakeInputError(o.start_model->name, "soils", "--model starts RFT's zeta; the Bekker base fits its own soils");
@@ -359,6 +366,7 @@ Diagnosis RunDiagnosis(const dataset::Dataset& ds, const DiagnoseOptions& o) {
   // 1: the sensor (inferred, or as given) and the drops' nuisances: their spreads from the base's
   // fit under that sensor, within the conditions the drops repeat.
   d.problem.drop_nuisances = o.drop_nuisances;
+  if (!(o.drop_nuisances && TrainingReplicateDf(d.problem) >= kMinNuisanceDf)) CountStopSamples(d.problem);
   FitResult first;
   if (o.sensor_sampling) {
     d.problem.sensor = dataset::SensorModel{*o.sensor_sampling};

@@ -87,6 +87,10 @@ struct DiagnoseOptions {
   // The replicates' floor read from the best-fitting candidate's residuals too, the lowest kept
   // (gap_floor.h LowerFloorByCandidates); false (--floor-from-base): from the base's alone.
   bool floor_from_best_model = true;
+  // Each drop's two samples either side of its measured stop left out of its force residuals
+  // (diagnose_fit.h StopSamples) where the per-drop nuisances are on (diagnose_fit.h
+  // CountStopSamples says why not elsewhere); false (--count-stop-samples): every sample counts.
+  bool skip_stop_samples = true;
   // --fit-on: the drop ids every model is fitted on; every other drop is held out and predicted.
   // Empty: the split by speed above. Each id must be in the dataset, every soil needs one, and at
   // least one drop must be left to predict (InputError otherwise).

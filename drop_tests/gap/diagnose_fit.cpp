@@ -48,15 +48,26 @@ std::vector<double> RestSecondDifferences(const dataset::DatasetTrace& tr) {
   const double band = 0.01 * std::max(*std::max_element(z.begin(), z.end()), 1e-9);
   size_t first = n;
   while (first > 0 && std::abs(z[first - 1] - z_final) <= band) --first;
-  size_t fall = static_cast<size_t>(std::max_element(f.begin(), f.end()) - f.begin());
-  double steepest = 0.0;
-  for (size_t i = fall; i + 1 < n; ++i)
-    if (f[i + 1] - f[i] < steepest) steepest = f[i + 1] - f[i], fall = i;
-  first = std::max(first, fall + 2);
+  const SampleRange stop = StopSamples(f);
+  first = std::max(first, stop.end > 0 ? stop.end : static_cast<size_t>(std::max_element(f.begin(), f.end()) - f.begin()) + 2);
   std::vector<double> d2;
   for (size_t i = first + 1; i + 1 < n; ++i) d2.push_back(std::abs(f[i + 1] - 2 * f[i] + f[i - 1]));
   return d2;
 }
+
+}  // namespace
+
+SampleRange StopSamples(const std::vector<double>& f) {
+  if (f.size() < 2) return {};
+  size_t fall = static_cast<size_t>(std::max_element(f.begin(), f.end()) - f.begin());
+  double steepest = 0.0;
+  for (size_t i = fall; i + 1 < f.size(); ++i)
+    if (f[i + 1] - f[i] < steepest) steepest = f[i + 1] - f[i], fall = i;
+  if (steepest == 0.0) return {};  // no fall: the record ends before the stop
+  return {fall, fall + 2};
+}
+
+namespace {
 
 double StrokeNoiseEstimate(const std::vector<double>& y) {
   std::vector<double> d3;
@@ -277,7 +288,7 @@ void DropRows(const FitDrop& d, const std::optional<dataset::DatasetTrace>& sim,
   const long n = static_cast<long>(tr.size());
   const double w = 1.0 / std::sqrt(static_cast<double>(n));
   for (long i = 0; i < n; ++i) {
-    const double ef = sim ? (sim->force_N[i] - tr.force_N[i]) / d.force_scale_N : 10.0;
+    const double ef = !sim ? 10.0 : d.ForceCounted(static_cast<size_t>(i)) ? (sim->force_N[i] - tr.force_N[i]) / d.force_scale_N : 0.0;
     const double ep = sim ? (sim->penetration_m[i] - tr.penetration_m[i]) / d.penetration_scale_m : 10.0;
     r[2 * i] = w * ef;
     r[2 * i + 1] = w * ep;
@@ -440,9 +451,11 @@ const CandidateTerm& FindTerm(const FitProblem& p, const std::string& name) {
   throw std::logic_error("diagnose: no candidate term '" + name + "'");
 }
 
-FitProblem MakeFitProblem(const dataset::Dataset& ds, const std::vector<bool>& held_out, int threads) {
+FitProblem MakeFitProblem(const dataset::Dataset& ds, const std::vector<bool>& held_out, int threads,
+                          bool skip_stop_samples) {
   FitProblem p;
   p.threads = threads;
+  p.stop_samples_skipped = skip_stop_samples;
   p.rig.rest_duration_s = 0.003;  // at rest the record holds its last value (RecordedAt)
   p.rig.max_stroke_duration_s = 2.0;
   p.rig.integrator.rtol = 1e-8;
@@ -490,6 +503,10 @@ FitProblem MakeFitProblem(const dataset::Dataset& ds, const std::vector<bool>& h
     d.noise_force_N = StrokeNoiseEstimate(dd.trace.force_N);
     for (double r : RestSecondDifferences(dd.trace)) rest_differences.push_back(r);
     d.sample_period_s = dataset::SamplePeriod(dd.trace);
+    if (skip_stop_samples) {
+      const SampleRange stop = StopSamples(dd.trace.force_N);
+      d.stop_skip_begin = stop.begin, d.stop_skip_end = stop.end;
+    }
     p.drops.push_back(d);
   }
   // Enough rest samples for a pooled estimate (its median's relative error about 1.2/sqrt(count)):
@@ -925,6 +942,20 @@ std::string ConditionKey(const FitDrop& d) {
   key << d.pad << '|' << d.soil << '|' << static_cast<int>(d.atmosphere) << '|' << std::setprecision(6) << d.speed_m_s
       << '|' << d.mass_kg << '|' << d.gravity_m_s2;
   return key.str();
+}
+
+int TrainingReplicateDf(const FitProblem& p) {
+  std::map<std::string, int> drops;
+  for (const FitDrop& d : p.drops)
+    if (d.train) ++drops[ConditionKey(d)];
+  int df = 0;
+  for (const auto& [key, n] : drops) df += n - 1;
+  return df;
+}
+
+void CountStopSamples(FitProblem& p) {
+  for (FitDrop& d : p.drops) d.stop_skip_begin = d.stop_skip_end = 0;
+  p.stop_samples_skipped = false;
 }
 
 int EstimateNuisanceSpreads(FitProblem& p, const FitResult& fit) {

@@ -75,7 +75,25 @@ struct FitDrop {
   double penetration_scale_m = 1.0;  // max measured penetration
   double noise_force_N = 0.0;        // estimated sensor noise (at rest, pooled over the drops; diagnose_fit.cpp)
   double sample_period_s = 0.0;      // of its trace (dataset::SamplePeriod): what a sample averages over
+  // The samples either side of the measured stop, [stop_skip_begin, stop_skip_end): their force
+  // residuals are not counted (StopSamples; empty when MakeFitProblem is told to count them, and
+  // after CountStopSamples).
+  size_t stop_skip_begin = 0, stop_skip_end = 0;
+  bool ForceCounted(size_t i) const { return i < stop_skip_begin || i >= stop_skip_end; }
 };
+
+// The two samples of a measured force record either side of its stop, the steepest fall past its
+// peak, as a half-open index range: sampled at instants, the rigid-plastic stop is a step, and
+// which side of it those two samples fall on turns on where the stop lies within one sample
+// period. Their residual is then 0 or the whole peak force by a shift of a fraction of a sample,
+// a step in every parameter that moves the stop: it carries no more than the neighbouring samples
+// and the penetration record say of the stop's time, and it outweighed the rest of a drop
+// (docs/model_gap.md, "The stop's two samples").
+struct SampleRange {
+  size_t begin = 0, end = 0;
+};
+SampleRange StopSamples(const std::vector<double>& force_N);
+
 
 // A term a fit can add to the base: a library effect with the range its parameters are fitted
 // in. Usually the library's own range; but when every soil carries the same dynamic term (the
@@ -103,6 +121,7 @@ struct FitProblem {
   // Per-drop nuisances in every fit (above), with their spreads and the residual's per-sample scale
   // (normalised units) that weighs their penalties.
   bool drop_nuisances = false;
+  bool stop_samples_skipped = false;  // MakeFitProblem's skip_stop_samples (FitDrop::ForceCounted)
   NuisanceSpreads spreads;
   double residual_sigma = 0.01;
   // Levenberg-Marquardt's iterations per fit at most (a screening fit may take fewer).
@@ -121,8 +140,10 @@ struct FitProblem {
   std::vector<std::unique_ptr<geom::AxisymmetricIntrusion>> bekker_intrusions;  // per pad
 };
 
-// Prepares every dataset drop; `held_out` marks the drops not used for fitting.
-FitProblem MakeFitProblem(const dataset::Dataset& dataset, const std::vector<bool>& held_out, int threads);
+// Prepares every dataset drop; `held_out` marks the drops not used for fitting. `skip_stop_samples`:
+// each drop's StopSamples are left out of its force residuals (false: every sample counts).
+FitProblem MakeFitProblem(const dataset::Dataset& dataset, const std::vector<bool>& held_out, int threads,
+                          bool skip_stop_samples = true);
 // The candidate terms of `problem` (from its soils' dynamic term, above); sets problem.terms.
 void SetCandidateTerms(FitProblem& problem);
 // The candidate term called `name`; throws std::logic_error if there is none.
@@ -209,5 +230,15 @@ int EstimateNuisanceSpreads(FitProblem& problem, const FitResult& fit);
 inline constexpr int kMinNuisanceDf = 3;
 // Replicates share a condition: pad, soil, atmosphere, nominal speed, mass and gravity.
 std::string ConditionKey(const FitDrop& d);
+// The training drops' degrees of freedom of replicates: the sum over conditions of drops - 1 (what
+// EstimateNuisanceSpreads reads the spreads from).
+int TrainingReplicateDf(const FitProblem& problem);
+// Every drop's stop samples counted again (FitDrop::ForceCounted true everywhere). Diagnose leaves
+// them out only where each drop's touchdown time is its own nuisance (replicates, kMinNuisanceDf):
+// then a drop's stop alone times it, a step within a sample. Where the drops share the record's
+// common offsets only, the stops of all drops, at their several phases within a sample, time the
+// record together, and left out there the common dt and dz and then a hidden gas cushion's fit
+// went astray (6 unreplicated drops at 1 kHz, tests/python/test_commands.py).
+void CountStopSamples(FitProblem& problem);
 
 }  // namespace touchdown::gap

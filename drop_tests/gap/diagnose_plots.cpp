@@ -10,6 +10,7 @@
 #include "drop_tests/formats/figure_style.h"
 #include "drop_tests/formats/output_path.h"
 #include "drop_tests/formats/plot_runner.h"
+#include "drop_tests/util/percentile.h"
 
 namespace touchdown::gap {
 
@@ -34,29 +35,11 @@ std::vector<ConditionGroup> GroupByCondition(const std::vector<GapRow>& rows) {
   return groups;
 }
 
-// Linear interpolation between order statistics of sorted `v` (non-empty) at fraction q.
-double Percentile(const std::vector<double>& v, double q) {
-  const double at = q * static_cast<double>(v.size() - 1);
-  const size_t lo = static_cast<size_t>(std::floor(at));
-  const size_t hi = std::min(lo + 1, v.size() - 1);
-  return v[lo] + (at - static_cast<double>(lo)) * (v[hi] - v[lo]);
-}
-
-std::array<double, 3> Percentiles(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return {Percentile(v, 0.05), Percentile(v, 0.5), Percentile(v, 0.95)};
+std::array<double, 3> Percentiles(const std::vector<double>& v) {
+  return {io::Percentile(v, 5), io::Percentile(v, 50), io::Percentile(v, 95)};
 }
 
 }  // namespace
-
-const char* GapLayoutName(GapLayout layout) {
-  switch (layout) {
-    case GapLayout::kPerDrop: return "per_drop";
-    case GapLayout::kByCondition: return "by_condition";
-    case GapLayout::kScatter: return "scatter";
-  }
-  return "per_drop";
-}
 
 GapLayout ChooseGapLayout(const std::vector<GapRow>& rows) {
   if (rows.size() <= kMaxBarsPerPanel) return GapLayout::kPerDrop;

@@ -32,7 +32,6 @@ struct GapRow {
 };
 
 enum class GapLayout { kPerDrop, kByCondition, kScatter };
-const char* GapLayoutName(GapLayout layout);
 GapLayout ChooseGapLayout(const std::vector<GapRow>& rows);
 
 // Writes data/gap_<atmosphere>.csv in the columns of the layout it chooses (nullopt, and no file,

@@ -179,6 +179,7 @@ nlohmann::json DiagnosisJson(const Diagnosis& d) {
   j["sensor"] = SensorJson(d);
   j["drop_nuisances"] = NuisancesJson(d);
   j["floor"] = FloorJson(d);
+  j["stop_samples_skipped"] = d.problem.stop_samples_skipped;
   j["lack_of_fit"] = {{"before", LackOfFitJson(d.lack_of_fit_before)}, {"after", LackOfFitJson(d.lack_of_fit_after)}};
   j["selected_terms"] = d.winner >= 0 ? nlohmann::json(d.candidates[d.winner].effect_ids) : nlohmann::json::array();
   if (!d.dynamic_term_statement.empty()) j["dynamic_term_statement"] = d.dynamic_term_statement;
@@ -532,7 +533,12 @@ void WriteReport(const Diagnosis& d, const dataset::Dataset& ds, const Candidate
         << (d.problem.drop_nuisances ? ""
             : d.nuisances_without_replicates ? ": off, the drops do not repeat their conditions (fewer than 3 "
                                                "degrees of freedom of replicates)"
-                                             : ": off") << ").\n\n";
+                                             : ": off") << ")."
+        << (d.problem.stop_samples_skipped ? " The two samples either side of each drop's measured stop are not "
+                                             "counted in its force residual (their residual is a step in the stop's "
+                                             "time within one sample)."
+                                           : "")
+        << "\n\n";
     const GapFloor& fl = d.floor;
     out << "**Floor** (what no model of the conditions goes below): force NRMSE " << Num(std::sqrt(fl.ms))
         << (fl.from_replicates ? " from the replicates' pure error on " + std::to_string(fl.replicate_df) +

@@ -84,6 +84,42 @@ const ParameterEstimate* Unidentified(const CandidateScore& c) {
 // The term a candidate adds to the model it extends (its last).
 const std::string& Added(const CandidateScore& c) { return c.effect_ids.back(); }
 
+// Whether candidate i is a richer model the data cannot tell from the chosen one (it loses on
+// parsimony, e.g. compaction_peak with a long decay against inertial_drag): not a rival.
+bool RicherTwin(const CandidateScore& c, const CandidateScore& chosen, double bic_min, const DiagnoseOptions& o) {
+  return c.fit.parameters > chosen.fit.parameters && c.fit.bic - bic_min < o.min_delta_bic;
+}
+
+// The runner-up to `chosen` among `valid`: the best other by BIC that is a real rival; -1 if none.
+int RunnerUp(const Diagnosis& d, const std::vector<int>& valid, int chosen, double bic_min, const DiagnoseOptions& o) {
+  int runner = -1;
+  for (int i : valid)
+    if (i != chosen && !RicherTwin(d.candidates[i], d.candidates[chosen], bic_min, o) &&
+        (runner < 0 || d.candidates[i].fit.bic < d.candidates[runner].fit.bic))
+      runner = i;
+  return runner;
+}
+
+// A rival of `chosen` (the step's best by BIC) that itself beats the model they extend (Delta BIC
+// >= min_delta_bic) and predicts the held-out drops better; -1 if none. The two criteria then
+// disagree on which term the data hold, and the one the training fit prefers is not named: on the
+// independent blind sets an inertial drag at 3x was fitted best as an added mass (Delta BIC 589
+// ahead, both over 18,000 above the base) while the inertial drag predicted the held-out drops
+// better (0.0030 against 0.0032); no set where the hidden effect was named had such a rival.
+int BetterPredictingRival(const Diagnosis& d, const std::vector<int>& valid, int chosen, double bic_min,
+                          const DiagnoseOptions& o) {
+  const CandidateScore& w = d.candidates[chosen];
+  int rival = -1;
+  for (int i : valid) {
+    const CandidateScore& c = d.candidates[i];
+    if (i == chosen || RicherTwin(c, w, bic_min, o) || c.delta_bic_step < o.min_delta_bic) continue;
+    if (c.held_out.force_nrmse < w.held_out.force_nrmse &&
+        (rival < 0 || c.held_out.force_nrmse < d.candidates[rival].held_out.force_nrmse))
+      rival = i;
+  }
+  return rival;
+}
+
 struct StepOutcome {
   int chosen = -1;  // index into d.candidates
   std::string why;
@@ -144,18 +180,15 @@ StepOutcome DecideStep(const Diagnosis& d, const CandidateScore& current, const 
         << "), is not identified by the training drops: " << u->effect << "." << u->key << " = "
         << Short(u->value / u->file_to_si) << " with a 95 % interval [" << Short(u->low / u->file_to_si) << ", "
         << Short(u->high / u->file_to_si) << "] over its whole range";
+  } else if (const int r = BetterPredictingRival(d, valid, simplest.front(), bic_min, o); r >= 0) {
+    const CandidateScore& rival = d.candidates[r];
+    why << "ambiguous on top of " << from << ": " << Added(w) << " fits the training drops best (Delta BIC "
+        << Fixed(w.delta_bic_step, 1) << ") but " << Added(rival) << " (Delta BIC " << Fixed(rival.delta_bic_step, 1)
+        << ") predicts the held-out drops better (force NRMSE " << Fixed(rival.held_out.force_nrmse, 4) << " against "
+        << Fixed(w.held_out.force_nrmse, 4) << "): the data do not tell them apart";
   } else {
     out.chosen = simplest.front();
-    // The runner-up: the best other candidate that is a real rival, i.e. not a richer model the
-    // data cannot tell from the chosen one (those lose on parsimony, e.g. compaction_peak with a
-    // long decay against inertial_drag).
-    int runner = -1;
-    for (int i : valid) {
-      if (i == out.chosen) continue;
-      const bool richer_twin =
-          d.candidates[i].fit.parameters > w.fit.parameters && d.candidates[i].fit.bic - bic_min < o.min_delta_bic;
-      if (!richer_twin && (runner < 0 || d.candidates[i].fit.bic < d.candidates[runner].fit.bic)) runner = i;
-    }
+    const int runner = RunnerUp(d, valid, out.chosen, bic_min, o);
     why << Added(w) << " beats " << from << " (Delta BIC " << Fixed(w.delta_bic_step, 1) << ", held-out force NRMSE "
         << Fixed(current.held_out.force_nrmse, 4) << " -> " << Fixed(w.held_out.force_nrmse, 4) << ")";
     if (runner >= 0)
