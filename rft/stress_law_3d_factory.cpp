@@ -32,7 +32,6 @@ void Require(bool ok, const SoilParameters& soil, const std::string& field, cons
 }
 
 std::unique_ptr<StressLaw3D> MakeBekkerLaw(const SoilParameters& soil, double plate_b_m) {
-  RequireBekkerParameters(soil);
   Require(std::isfinite(plate_b_m) && plate_b_m > 0.0, soil, "bekker",
           "the bekker law needs the pad's footprint dimension b > 0 [m]", plate_b_m);
   return std::make_unique<BekkerLaw3D>(soil.bekker, plate_b_m);
@@ -58,14 +57,11 @@ void RequireBekkerParameters(const SoilParameters& soil) {
           "must be positive [m]", b.shear_modulus_K_m);
 }
 
-std::unique_ptr<StressLaw3D> MakeStressLaw3D(LawKind law, const SoilParameters& soil,
-                                             double gravity_m_s2, double bekker_plate_b_m) {
+void CheckSoilTakesLaw(LawKind law, const SoilParameters& soil, double gravity_m_s2) {
   if (!(std::isfinite(gravity_m_s2) && gravity_m_s2 > 0.0))
     throw MakeInputError(SoilLabel(soil), "gravity_m_s2", "must be positive (" + Str(gravity_m_s2) + ")");
-
-  std::unique_ptr<StressLaw3D> quasi_static;
   if (law == LawKind::kBekker) {
-    quasi_static = MakeBekkerLaw(soil, bekker_plate_b_m);
+    RequireBekkerParameters(soil);
   } else if (law == LawKind::kLi2013) {
     // A Bekker soil file may leave zeta out: say that, not "zeta 0", when it meets an RFT law.
     if (soil.rft_law_3d == LawKind::kBekker && !(soil.zeta_N_m3 > 0.0))
@@ -76,7 +72,6 @@ std::unique_ptr<StressLaw3D> MakeStressLaw3D(LawKind law, const SoilParameters& 
             "li2013 needs a positive zeta [N/cm^3]", soil.zeta_N_m3 * 1e-6);
     Require(std::isfinite(soil.reference_gravity_m_s2) && soil.reference_gravity_m_s2 > 0.0, soil,
             "reference_gravity_m_s2", "must be positive", soil.reference_gravity_m_s2);
-    quasi_static = std::make_unique<Li2013TreersLaw>(soil.ZetaAtGravity(gravity_m_s2));
   } else {  // LawKind::kAgarwal2023
     Require(std::isfinite(soil.bulk_density_kg_m3) && soil.bulk_density_kg_m3 > 0.0, soil,
             "bulk_density_kg_m3", "agarwal2023 needs the bulk density", soil.bulk_density_kg_m3);
@@ -92,10 +87,17 @@ std::unique_ptr<StressLaw3D> MakeStressLaw3D(LawKind law, const SoilParameters& 
     Require(limits::Within(limits::kZeta_N_cm3, xi_n * 1e-6), soil, "internal_friction_angle",
             "the agarwal2023 scaling of this density and friction angle gives xi_n outside 0 to 1e4 N/cm^3",
             xi_n * 1e-6);
-    quasi_static = std::make_unique<Agarwal2023Law>(xi_n, soil.surface_friction_coefficient);
   }
+}
 
-  return quasi_static;
+std::unique_ptr<StressLaw3D> MakeStressLaw3D(LawKind law, const SoilParameters& soil,
+                                             double gravity_m_s2, double bekker_plate_b_m) {
+  CheckSoilTakesLaw(law, soil, gravity_m_s2);
+  if (law == LawKind::kBekker) return MakeBekkerLaw(soil, bekker_plate_b_m);
+  if (law == LawKind::kLi2013) return std::make_unique<Li2013TreersLaw>(soil.ZetaAtGravity(gravity_m_s2));
+  const double xi_n =
+      AgarwalScalingXi(soil.bulk_density_kg_m3, gravity_m_s2, std::tan(soil.internal_friction_angle_rad));
+  return std::make_unique<Agarwal2023Law>(xi_n, soil.surface_friction_coefficient);
 }
 
 EffectTerms WithSoilDynamicTerm(const EffectTerms& terms, const SoilParameters& soil) {

@@ -30,6 +30,10 @@ std::unique_ptr<StressLaw3D> MakeStressLaw3D(LawKind law, const SoilParameters& 
 EffectTerms WithSoilDynamicTerm(const EffectTerms& terms, const SoilParameters& soil);
 // Checks a soil's bekker block (what kBekker needs), naming the soil and the field on an error.
 void RequireBekkerParameters(const SoilParameters& soil);
+// Whether `soil` can run on `law` at `gravity_m_s2`: every check MakeStressLaw3D makes of the soil
+// and the gravity (InputError naming the soil and the field), without a pad. The one soil-law
+// check at load time (a lander's ground, a drop request), before a pad's b is known.
+void CheckSoilTakesLaw(LawKind law, const SoilParameters& soil, double gravity_m_s2);
 
 // The soil's law with the effect terms (rft/effect_terms.h) in their 3D form. The per-element
 // terms wrap the law above:

@@ -127,13 +127,14 @@ PadSpec LoadPad(const YamlFields& f, geom::RimPolygon rim = geom::RimPolygon::kI
 // moments within limits::kInertia_kg_m2 and the tensor a rigid body's (geom::ValidateInertia:
 // positive definite, I1 + I2 >= I3). A pad's inertia_kg_m2 and a lander's body_inertia_kg_m2.
 Eigen::Matrix3d ReadInertia(const YamlFields& block);
-// An axisymmetric pad revolved at another number of rim segments: its file read again with
-// `angular_segments` replaced (everything else as the file says), its rings' polygons `rim`.
+// An axisymmetric pad revolved at another number of rim segments: the pad's own file fields
+// (pad.file, in memory; its file is not read again) with `angular_segments` replaced, its rings'
+// polygons `rim`.
 // InputError naming the pad file for a mesh pad or a count outside the range LoadPad accepts.
 PadSpec PadWithAngularSegments(const PadSpec& pad, int angular_segments,
                                geom::RimPolygon rim = geom::RimPolygon::kInscribed);
-// A flat revolved pad at another radius: its file read again with profile.radius_mm replaced
-// (everything else as the file says), its rings' polygons `rim`. InputError naming the pad file for
+// A flat revolved pad at another radius: the pad's own file fields (in memory) with
+// profile.radius_mm replaced, its rings' polygons `rim`. InputError naming the pad file for
 // a pad whose profile is not `shape: flat`.
 PadSpec FlatPadWithRadius(const PadSpec& pad, double radius_mm, geom::RimPolygon rim = geom::RimPolygon::kInscribed);
 // The rim segments a revolved pad is meshed at (its file's angular_segments, or the default); 0 for

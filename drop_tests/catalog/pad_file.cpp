@@ -365,10 +365,21 @@ int PadRimSegments(const PadSpec& pad) {
   return pad.file.angular_segments > 0 ? pad.file.angular_segments : geom::kDefaultAngularSegments;
 }
 
+namespace {
+// The pad's file as a YAML node made from what the pad holds (WritePad's fields; a mesh path
+// relative to its own file), so a variant of a resolved pad is re-made from memory, never by
+// reading its file again (which may have changed, or never existed for a pad built in memory).
+YAML::Node PadNode(const PadSpec& pad) {
+  YAML::Emitter y;
+  WriteMap(y, PadKeys(), PadToWrite{pad, pad.source});
+  return YAML::Load(y.c_str());
+}
+}  // namespace
+
 PadSpec FlatPadWithRadius(const PadSpec& pad, double radius_mm, geom::RimPolygon rim) {
   if (pad.file.shape != PadShape::kFlat)
     throw MakeInputError(pad.source, "profile.shape", "pad '" + pad.name + "' is not a flat revolved profile");
-  YAML::Node node = YAML::Clone(YamlFields::LoadFile(pad.source).node());
+  YAML::Node node = PadNode(pad);
   node["profile"]["radius_mm"] = radius_mm;
   return LoadPad(YamlFields(node, pad.source, ""), rim);
 }
@@ -376,7 +387,7 @@ PadSpec FlatPadWithRadius(const PadSpec& pad, double radius_mm, geom::RimPolygon
 PadSpec PadWithAngularSegments(const PadSpec& pad, int angular_segments, geom::RimPolygon rim) {
   if (!pad.is_axisymmetric())
     throw MakeInputError(pad.source, "angular_segments", "pad '" + pad.name + "' is a mesh, not a revolved profile");
-  YAML::Node node = YAML::Clone(YamlFields::LoadFile(pad.source).node());
+  YAML::Node node = PadNode(pad);
   node["angular_segments"] = angular_segments;
   return LoadPad(YamlFields(node, pad.source, ""), rim);
 }

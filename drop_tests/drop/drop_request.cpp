@@ -44,7 +44,7 @@ void CheckFreeMotion(const DropRequest& r, const RequestNaming& n) {
 
 // The soil must take the law the drop runs on, before anything runs: a soil running on the bekker
 // law has no zeta to override, and li2013 needs a zeta (a Bekker soil may have none), checked as a
-// lander's ground checks its soils (rft::MakeStressLaw3D).
+// lander's ground checks its soils (rft::CheckSoilTakesLaw).
 void CheckSoilTakesLaw(const rft::SoilParameters& soil, const DropConditions& c, const RequestNaming& n) {
   if (RunsOnBekker(soil, c.law_3d)) {
     if (c.zeta_N_m3)
@@ -53,11 +53,9 @@ void CheckSoilTakesLaw(const rft::SoilParameters& soil, const DropConditions& c,
                                " li2013 runs it on RFT with this zeta)");
     return;
   }
-  // The footprint dimension only matters to the bekker law, which is not this one.
-  constexpr double kAnyPlateB_m = 1.0;
   try {
-    rft::MakeStressLaw3D(c.law_3d.value_or(soil.rft_law_3d), DropSoil(soil, c.zeta_N_m3, c.atmosphere),
-                         c.gravity_m_s2, kAnyPlateB_m);
+    rft::CheckSoilTakesLaw(c.law_3d.value_or(soil.rft_law_3d), DropSoil(soil, c.zeta_N_m3, c.atmosphere),
+                           c.gravity_m_s2);
   } catch (const InputError& e) {
     throw MakeInputError(n.context, c.law_3d ? n.Field("law") : n.Field("soil"), e.what());
   }

@@ -107,9 +107,6 @@ SoilFieldSpec ReadSoilField(const io::YamlFields& f, const SoilCheck& check_soil
   return field;
 }
 
-// A footprint dimension for checking a soil against the bekker law before the pad is placed.
-constexpr double kAnyPlateB_m = 1.0;
-
 // The ground: plane or slope, the 3D law, the default soil and the soil patches (every soil
 // loaded and checked against the law at `gravity_m_s2`).
 // A resolved copy's ground also has its `soils` and `model` (checked and read by the caller).
@@ -120,17 +117,21 @@ LanderGroundSpec ReadGround(const io::YamlFields& g, double gravity_m_s2, bool r
   if (ground.slope_rad >= limits::kGroundSlopeBelow_deg * kDeg)
     g.Fail("slope_deg", "must be below " + std::to_string(limits::kGroundSlopeBelow_deg));
   ground.default_soil = g.String("soil");
+  // Each soil read once, kept in the ground (LanderGroundSpec::soils).
+  const auto soil_of = [&](const std::string& ref) -> const rft::SoilParameters& {
+    auto it = ground.soils.find(ref);
+    if (it == ground.soils.end()) it = ground.soils.emplace(ref, io::LoadSoil(ref)).first;
+    return it->second;
+  };
   try {
     // No `law`: the default soil's own (li2013 for every RFT soil file, bekker for a Bekker soil).
-    ground.law = g.Has("law") ? rft::ParseLawKind(g.String("law"), "", "")
-                              : io::LoadSoil(ground.default_soil).rft_law_3d;
+    ground.law = g.Has("law") ? rft::ParseLawKind(g.String("law"), "", "") : soil_of(ground.default_soil).rft_law_3d;
   } catch (const InputError& e) {
     g.Fail(g.Has("law") ? "law" : "soil", e.what());
   }
   const SoilCheck check_soil = [&](const io::YamlFields& where, const std::string& key, const std::string& soil) {
     try {
-      // The pad is not known yet: any b checks the soil (its checks do not depend on b).
-      rft::MakeStressLaw3D(ground.law, io::LoadSoil(soil), gravity_m_s2, kAnyPlateB_m);
+      rft::CheckSoilTakesLaw(ground.law, soil_of(soil), gravity_m_s2);
     } catch (const InputError& e) {
       where.Fail(key, e.what());
     }

@@ -7,6 +7,7 @@
 // (lander_scenario_file.h) resolves and validates everything before anything runs; lander_setup.h
 // builds and runs, lander_outputs.h reports. Schema: docs/lander_dynamics.md.
 #include <array>
+#include <map>
 #include <optional>
 #include <string>
 #include <variant>
@@ -68,6 +69,10 @@ struct LanderGroundSpec {
   std::string default_soil;
   std::vector<LanderPatchSpec> patches;
   std::optional<SoilFieldSpec> soil_field;  // a random patch field, after the patches (soil_field.h)
+  // Every soil the ground names (the default, the patches', the field's), by its reference, as
+  // loaded and checked against `law` when the scenario was read: a setup takes them from here
+  // instead of reading the files again. Empty for a ground built in memory (then read from files).
+  std::map<std::string, rft::SoilParameters> soils;
 };
 
 // The pads' attitude at release: parallel to the body (the paper's tiltmeter), or level.

@@ -317,7 +317,9 @@ void WriteLanderBlock(YAML::Emitter& y, const LanderSpec& l, const FileName& fil
 void WriteSoilsBlock(YAML::Emitter& y, const LanderScenario& s, const lander::LanderSetup& setup) {
   y << YAML::BeginSeq;
   for (const rft::TerrainSoil& soil : setup.terrain.soils) {
-    const rft::SoilParameters p = s.model ? model::ApplyModel(*s.model, io::LoadSoil(soil.name)) : io::LoadSoil(soil.name);
+    const auto loaded = s.ground.soils.find(soil.name);  // as the scenario read it, else its file
+    const rft::SoilParameters file_soil = loaded != s.ground.soils.end() ? loaded->second : io::LoadSoil(soil.name);
+    const rft::SoilParameters p = s.model ? model::ApplyModel(*s.model, file_soil) : file_soil;
     y << YAML::BeginMap << YAML::Key << "name" << YAML::Value << p.name << YAML::Key << "zeta_N_cm3_at_gravity"
       << YAML::Value << units::ZetaToN_cm3(p.ZetaAtGravity(s.gravity_m_s2)) << YAML::Key << "atmosphere" << YAML::Value
       << rft::AtmosphereName(p.atmosphere) << YAML::Key << "gravity_scaling" << YAML::Value

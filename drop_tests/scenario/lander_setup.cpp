@@ -18,10 +18,12 @@ Eigen::Matrix3d AxisRotation(const Eigen::Vector3d& axis, double angle) {
   return Eigen::AngleAxisd(angle, axis).toRotationMatrix();
 }
 
-// The soil `name` refers to: from the catalogue when it holds it, else from its file.
-rft::SoilParameters SoilFor(const std::string& name, const LanderSoilCatalog* soils) {
+// The soil `name` refers to: from the catalogue when it holds it, else as the scenario's ground
+// read it, else from its file (a ground built in memory).
+rft::SoilParameters SoilFor(const std::string& name, const LanderSoilCatalog* soils, const LanderGroundSpec& ground) {
   if (soils)
     if (const auto it = soils->find(name); it != soils->end()) return it->second;
+  if (const auto it = ground.soils.find(name); it != ground.soils.end()) return it->second;
   return io::LoadSoil(name);
 }
 }  // namespace
@@ -33,7 +35,7 @@ LanderSoilCatalog LoadLanderSoils(const LanderScenario& sc, const std::vector<st
   refs.insert(refs.end(), more.begin(), more.end());
   LanderSoilCatalog out;
   for (const std::string& ref : refs)
-    if (!out.count(ref)) out.emplace(ref, io::LoadSoil(ref));
+    if (!out.count(ref)) out.emplace(ref, SoilFor(ref, nullptr, sc.ground));
   return out;
 }
 
@@ -138,7 +140,7 @@ lander::LanderSetup ResolveLander(const LanderScenario& sc, const LanderSoilCata
     for (const SoilFieldCell& cell : cells) grid.soil.push_back(soil_index(field.soils[cell.soil]));
   }
   for (const std::string& name : soil_names)
-    out.terrain.soils.push_back({name, model::MakeContactModel({.law = sc.ground.law, .soil = SoilFor(name, soils),
+    out.terrain.soils.push_back({name, model::MakeContactModel({.law = sc.ground.law, .soil = SoilFor(name, soils, sc.ground),
                                                                 .gravity_m_s2 = g, .model = sc.model ? &*sc.model : nullptr,
                                                                 .pad_surface = &sc.lander.pad.body.surface})});  // one pad on every leg
   return out;

@@ -729,10 +729,10 @@ SweepPlan LoadSweepPlan(const std::string& path, const std::string& model_overri
   if (plan.lander) {
     plan.lander->model = plan.model;
     try {
-      const scenario::LanderSoilCatalog soils = scenario::LoadLanderSoils(*plan.lander, plan.soil_refs);
-      scenario::ResolveLander(*plan.lander, &soils);  // the scenario's own soils under the model
-      for (const std::string& ref : plan.soil_refs)
-        model::MakeContactModel({.law = plan.lander->ground.law, .soil = soils.at(ref),
+      // Every soil the landings can stand on (the scenario's own and the sweep's), under the model,
+      // as a landing's setup builds its contact (scenario::ResolveLander), without building one.
+      for (const auto& [ref, soil] : scenario::LoadLanderSoils(*plan.lander, plan.soil_refs))
+        model::MakeContactModel({.law = plan.lander->ground.law, .soil = soil,
                                  .gravity_m_s2 = plan.lander->gravity_m_s2, .model = model,
                                  .pad_surface = &plan.lander->lander.pad.body.surface});
     } catch (const InputError& e) {

@@ -250,6 +250,12 @@ TEST_F(CatalogFiles, ARevolvedPadAtOtherAngularSegmentsIsItsFileWithThatCount) {
   EXPECT_EQ(coarse.body.surface.p0_B, written.body.surface.p0_B);
   EXPECT_EQ(coarse.mass_kg, fine.mass_kg);
   EXPECT_EQ(coarse.body.lowest_z_B, fine.body.lowest_z_B);
+  // Re-made from the resolved pad, not from its file: the file changed or gone changes nothing.
+  std::filesystem::remove(file);
+  const PadSpec again = PadWithAngularSegments(fine, 32);
+  EXPECT_EQ(again.body.surface.p0_B, coarse.body.surface.p0_B);
+  EXPECT_EQ(again.body.surface.area_m2, coarse.body.surface.area_m2);
+  EXPECT_EQ(FlatPadWithRadius(fine, 20.0).file.radius_mm, 20.0);
   try {
     PadWithAngularSegments(fine, 3);
     ADD_FAILURE() << "3 segments accepted";
