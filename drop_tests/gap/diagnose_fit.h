@@ -94,7 +94,6 @@ struct SampleRange {
 };
 SampleRange StopSamples(const std::vector<double>& force_N);
 
-
 // A term a fit can add to the base: a library effect with the range its parameters are fitted
 // in. Usually the library's own range; but when every soil carries the same dynamic term (the
 // shipped soils' dynamic RFT, lambda rho (v.n)^2), that term is split in two: `weaker_dynamic_term`
