@@ -131,15 +131,8 @@ Dataset SimulateMeasuredDrops(const Dataset& measured, const std::optional<model
     if (!soils.count(soil_ref)) soils.emplace(soil_ref, model ? model::ApplyModel(*model, io::LoadSoil(soil_ref)) : io::LoadSoil(soil_ref));
     // The drop's own conditions, atmosphere included (gas_cushion acts on the drops in air);
     // a tilt or a horizontal speed makes it a free 6-DOF drop (tilt about x, travel along +x).
-    drop::DropRow row;
-    row.impact_speed_m_s = m.impact_speed_m_s;
-    row.mass_kg = m.pad_mass_kg;
-    row.gravity_m_s2 = m.gravity_m_s2;
-    row.atmosphere = m.atmosphere;
-    const double tilt_deg = ExtraOrZero(measured, m, "tilt_deg");
-    row.tilt_rad = units::DegToRad(tilt_deg);
-    row.horizontal_speed_m_s = ExtraOrZero(measured, m, "horizontal_speed_m_s");
-    drop::DropConditions c = drop::DropConditionsFor(row, effects, effects_source, file + ": drop " + m.drop_id);
+    drop::DropConditions c =
+        drop::DropConditionsFor(measured.Row(m), effects, effects_source, file + ": drop " + m.drop_id);
     c.free = !pads.at(pad_ref).is_axisymmetric();  // a mesh pad has no rig profile: the free pad, straight down
     drop::DropRunOptions run;
     run.rig.sample_rate_hz = run.free.sample_rate_hz = rate_hz;
@@ -163,8 +156,8 @@ Dataset SimulateMeasuredDrops(const Dataset& measured, const std::optional<model
     // where it has none, from the recorded trace as the measured drop's come from its own.
     if (m.final_penetration_m) s.final_penetration_m = d.result.final_penetration_m + c.effects.sensor_dz_m;
     if (m.peak_force_N) s.peak_force_N = d.result.peak_force_N;
-    s.extra = {io::FormatNumber(tilt_deg),
-               io::FormatNumber(row.horizontal_speed_m_s),
+    s.extra = {io::FormatNumber(ExtraOrZero(measured, m, "tilt_deg")),  // as the measured drop gives it
+               io::FormatNumber(c.horizontal_speed_m_s),
                io::FormatNumber(units::ZetaToN_cm3(d.zeta_effective_N_m3)),
                io::FormatNumber(d.result.time_to_rest_s),
                io::FormatNumber(d.result.mean_conversion_rate_W),

@@ -11,6 +11,7 @@
 #include "rft/input_error.h"
 #include "rft/input_file.h"
 #include "rft/physical_limits.h"
+#include "rft/units.h"
 
 namespace touchdown::dataset {
 
@@ -124,6 +125,17 @@ std::optional<double> Dataset::ExtraNumber(const DatasetDrop& drop, const std::s
 
 std::string Dataset::PadReference(const DatasetDrop& drop) const { return Resolve(directory, drop.pad); }
 std::string Dataset::SoilReference(const DatasetDrop& drop) const { return Resolve(directory, drop.soil); }
+
+drop::DropRow Dataset::Row(const DatasetDrop& d) const {
+  drop::DropRow row;
+  row.impact_speed_m_s = d.impact_speed_m_s;
+  row.mass_kg = d.pad_mass_kg;
+  row.gravity_m_s2 = d.gravity_m_s2;
+  row.atmosphere = d.atmosphere;
+  row.tilt_rad = units::DegToRad(ExtraNumber(d, "tilt_deg").value_or(0.0));
+  row.horizontal_speed_m_s = ExtraNumber(d, "horizontal_speed_m_s").value_or(0.0);
+  return row;
+}
 
 Dataset ReadDataset(const std::string& directory, const DatasetReadOptions& options) {
   std::error_code ec;

@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "drop_tests/drop/drop_row.h"
 #include "drop_tests/formats/output_path.h"
 #include "rft/atmosphere.h"
 
@@ -76,6 +77,9 @@ struct Dataset {
   // Pad/soil references resolved for LoadPad/LoadSoil (relative paths against `directory`).
   std::string PadReference(const DatasetDrop& drop) const;
   std::string SoilReference(const DatasetDrop& drop) const;
+  // The drop's stated conditions as the one row type every drop is resolved from: speed, mass,
+  // gravity, atmosphere, and the optional columns tilt_deg and horizontal_speed_m_s (0 if absent).
+  drop::DropRow Row(const DatasetDrop& drop) const;
   bool operator==(const Dataset& o) const { return extra_columns == o.extra_columns && drops == o.drops; }
 };
 

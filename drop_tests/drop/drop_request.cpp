@@ -65,16 +65,17 @@ FreeDropModel ModelOf(const DropRequest& r) { return r.fast ? FreeDropModel::kFa
 
 DropConditions RequestConditions(const DropRequest& r, const RequestNaming& naming) {
   DropConditions c;
-  c.impact_speed_m_s = r.speed_m_s;
-  c.mass_kg = r.mass_kg;
-  c.gravity_m_s2 = r.gravity_m_s2;
-  if (r.zeta_N_cm3) c.zeta_N_m3 = units::ZetaFromN_cm3(*r.zeta_N_cm3);
+  DropRow& row = c;  // the stated conditions, from the request's units
+  row.impact_speed_m_s = r.speed_m_s;
+  row.mass_kg = r.mass_kg;
+  row.gravity_m_s2 = r.gravity_m_s2;
+  if (r.zeta_N_cm3) row.zeta_N_m3 = units::ZetaFromN_cm3(*r.zeta_N_cm3);
   CheckFreeMotion(r, naming);
   if (r.free) {
     c.free = true;
-    c.tilt_rad = units::DegToRad(r.tilt_deg);
+    row.tilt_rad = units::DegToRad(r.tilt_deg);
     c.tilt_axis = pad::ParseTiltAxis(r.tilt_axis, naming.context);
-    c.horizontal_speed_m_s = r.horizontal_speed_m_s;
+    row.horizontal_speed_m_s = r.horizontal_speed_m_s;
     c.omega_W = Eigen::Vector3d(r.omega_rad_s[0], r.omega_rad_s[1], r.omega_rad_s[2]);
   }
   if (r.law) c.law_3d = rft::ParseLawKind(*r.law, naming.context, naming.Field("law"));

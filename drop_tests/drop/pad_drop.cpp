@@ -42,13 +42,7 @@ double EffectiveZeta(const rft::SoilParameters& soil, const DropConditions& c) {
 DropConditions DropConditionsFor(const DropRow& row, const rft::EffectTerms& effects, const std::string& effects_source,
                                  const std::string& context) {
   DropConditions c;
-  c.impact_speed_m_s = row.impact_speed_m_s;
-  c.mass_kg = row.mass_kg;
-  c.gravity_m_s2 = row.gravity_m_s2;
-  c.zeta_N_m3 = row.zeta_N_m3;
-  c.atmosphere = row.atmosphere;
-  c.tilt_rad = row.tilt_rad;
-  c.horizontal_speed_m_s = row.horizontal_speed_m_s;
+  static_cast<DropRow&>(c) = row;
   c.effects = effects;
   c.effects_source = effects_source;
   ValidateConditions(c, context);

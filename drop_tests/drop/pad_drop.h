@@ -12,6 +12,7 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include "drop_tests/catalog/catalog.h"
+#include "drop_tests/drop/drop_row.h"
 #include "drop_tests/model/effects.h"
 #include "lander/pad/free_drop.h"
 #include "drop_tests/formats/output_path.h"
@@ -20,18 +21,12 @@
 
 namespace touchdown::drop {
 
-struct DropConditions {
-  double impact_speed_m_s = 0.0;
-  std::optional<double> mass_kg;        // default: the pad's mass
-  double gravity_m_s2 = rft::kEarthGravity_m_s2;
-  std::optional<double> zeta_N_m3;      // overrides the soil's zeta (at its reference gravity)
-  std::optional<rft::Atmosphere> atmosphere;  // default: the soil's
+// A drop's stated conditions (DropRow) with how to run it.
+struct DropConditions : DropRow {
   // The free 6-DOF pad instead of the rig's rod: asked for with `free`, implied by a non-zero
   // tilt, horizontal speed or angular velocity (IsFree).
   bool free = false;
-  double tilt_rad = 0.0;                // at release, about tilt_axis (world x or y)
-  pad::TiltAxis tilt_axis = pad::TiltAxis::kX;
-  double horizontal_speed_m_s = 0.0;    // along +x of the world
+  pad::TiltAxis tilt_axis = pad::TiltAxis::kX;  // DropRow::tilt_rad is about it (world x or y)
   Eigen::Vector3d omega_W = Eigen::Vector3d::Zero();  // angular velocity at release [rad/s]
   std::optional<rft::LawKind> law_3d;   // free drop: the 3D law; none = the soil's rft_law_3d
   rft::EffectTerms effects;                  // default: none (quasi-static RFT)
@@ -42,16 +37,6 @@ struct DropConditions {
   }
 };
 
-// A drop as a dataset row or a sweep point states it (SI), and the model effects it runs under.
-struct DropRow {
-  double impact_speed_m_s = 0.0;
-  std::optional<double> mass_kg;
-  double gravity_m_s2 = rft::kEarthGravity_m_s2;
-  std::optional<double> zeta_N_m3;
-  std::optional<rft::Atmosphere> atmosphere;  // a dataset row states it; a sweep takes the soil's
-  double tilt_rad = 0.0;
-  double horizontal_speed_m_s = 0.0;
-};
 // The one place a row becomes the conditions of its drop: every field, the effects (with the
 // model file they came from), validated (InputError naming `context`).
 DropConditions DropConditionsFor(const DropRow& row, const rft::EffectTerms& effects, const std::string& effects_source,

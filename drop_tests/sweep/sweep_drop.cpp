@@ -21,18 +21,11 @@ namespace touchdown::sweep {
 namespace {
 using units::kDeg;
 
-// The sweep point as a drop row (the atmosphere is the soil's), under the model's effects.
+// The sweep point's row (the atmosphere is the soil's), under the model's effects.
 drop::DropConditions ConditionsOf(const SweepModels& models, const SweepDropParams& p) {
-  drop::DropRow row;
-  row.impact_speed_m_s = p.impact_speed_m_s;
-  row.mass_kg = p.mass_kg;
-  row.gravity_m_s2 = p.gravity_m_s2;
-  row.zeta_N_m3 = p.zeta_N_m3;
-  row.tilt_rad = p.tilt_rad;
-  row.horizontal_speed_m_s = p.horizontal_speed_m_s;
   const SweepPlan& plan = models.plan();
-  drop::DropConditions c = drop::DropConditionsFor(row, models.effects(), plan.model ? plan.model->source : "",
-                                       plan.source + ": drop " + plan.DropId(p.index));
+  drop::DropConditions c = drop::DropConditionsFor(p, models.effects(), plan.model ? plan.model->source : "",
+                                                   plan.source + ": drop " + plan.DropId(p.index));
   // A mesh pad has no profile for the rig's integral: the free 6-DOF pad, level and straight
   // down unless tilted or sliding.
   c.free = !plan.pads[p.pad].is_axisymmetric();

@@ -99,6 +99,7 @@
 
 #include "drop_tests/catalog/catalog.h"
 #include "drop_tests/drop/drop_factory.h"
+#include "drop_tests/drop/drop_row.h"
 #include "drop_tests/scenario/lander_scenario_types.h"
 #include "drop_tests/model/model_file.h"
 #include "lander/pad/rig_drop.h"
@@ -128,16 +129,12 @@ enum class TraceStorage { kNone, kDecimated, kFull };
 const char* TraceStorageName(TraceStorage t);  // as a sweep file names it: none, decimated, full
 
 // The parameters of one drop, in SI units; pad and soil as indices into SweepPlan::pads/soils.
-struct SweepDropParams {
+// A drop's stated conditions (drop::DropRow: speed, mass, gravity, zeta, tilt, horizontal speed;
+// the atmosphere is the soil's) are its row, passed to the drop as they stand.
+struct SweepDropParams : drop::DropRow {
   int64_t index = 0;
   int pad = 0;
   int soil = 0;
-  double impact_speed_m_s = 0.0;
-  std::optional<double> mass_kg;  // default: the pad's
-  double gravity_m_s2 = rft::kEarthGravity_m_s2;
-  double tilt_rad = 0.0;
-  double horizontal_speed_m_s = 0.0;
-  std::optional<double> zeta_N_m3;  // at the soil's reference gravity; default: the soil's
   double roll_rad = 0.0, pitch_rad = 0.0;  // lander sweeps
   int pad_soils = 0;  // lander sweeps: index into SweepPlan::pad_soil_sets
   // Lander sweeps: ground slope and its downhill azimuth (from world +x towards +y), body x from
