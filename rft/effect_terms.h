@@ -19,8 +19,21 @@
 //   sensor_offset    measurement only: the recorded penetration reads dz more than the true one,
 //                    and the recorded t = 0 lies dt after the true touchdown dz [m], dt [s]
 //
+//   registered       the effects of rft/effects/ (one file each: cohesion, ...), their values
+//                    below by index in RegisteredEffects()
+//
 // rho is the soil's bulk density. Defaults: every term neutral (quasi-static RFT).
+#include <array>
+
+#include "rft/effects/effect_definition.h"
+
 namespace touchdown::rft {
+
+// A registered effect's values (SI, in EffectDefinition::parameters order); off unless active.
+struct RegisteredEffectValues {
+  bool active = false;
+  std::array<double, kMaxEffectParameters> values{};
+};
 
 struct EffectTerms {
   double inertial_lambda = 0.0;      // lambda [-]
@@ -38,8 +51,20 @@ struct EffectTerms {
   // inertial_drag is stated (by a model or a fit), even at lambda 0: it replaces the soil's own
   // dynamic term (rft/stress_law_3d_factory.h WithSoilDynamicTerm) instead of adding to it.
   bool inertial_replaces_soil = false;
+  // The registered effects (rft/effects/), by index in RegisteredEffects().
+  std::array<RegisteredEffectValues, kMaxRegisteredEffects> registered{};
   // Needs the soil's bulk density (inertial_drag, added_mass, added_mass_plug).
-  bool NeedsDensity() const { return inertial_lambda != 0.0 || added_mass_ca != 0.0 || added_mass_plug_cp != 0.0; }
+  bool NeedsDensity() const {
+    if (inertial_lambda != 0.0 || added_mass_ca != 0.0 || added_mass_plug_cp != 0.0) return true;
+    for (size_t i = 0; i < RegisteredEffects().size(); ++i)
+      if (registered[i].active && RegisteredEffects()[i].needs_bulk_density) return true;
+    return false;
+  }
+  bool HasRegistered() const {
+    for (const RegisteredEffectValues& r : registered)
+      if (r.active) return true;
+    return false;
+  }
   bool HasDepthExponent() const { return depth_exponent != 1.0; }
   bool HasSensorOffset() const { return sensor_dz_m != 0.0 || sensor_dt_s != 0.0; }
 };

@@ -13,6 +13,7 @@
 #include "rft/li2013_3d.h"
 #include "rft/physical_limits.h"
 #include "rft/rate_damping_term.h"
+#include "rft/registered_effects_law.h"
 
 namespace touchdown::rft {
 
@@ -153,6 +154,19 @@ SoilContactModel MakeSoilContactModel(LawKind law, const SoilParameters& soil, d
   if (terms.gas_chi > 0.0 || terms.gas_c_N_s_m3 > 0.0)
     out = std::make_unique<GasCushionLaw>(std::move(out), terms.gas_chi, terms.gas_c_N_s_m3);
   if (terms.damping_c_N_s_m3 > 0.0) out = std::make_unique<RateDampingLaw>(std::move(out), terms.damping_c_N_s_m3);
+  if (terms.HasRegistered()) {
+    for (size_t i = 0; i < RegisteredEffects().size(); ++i) {
+      const EffectDefinition& e = RegisteredEffects()[i];
+      if (!terms.registered[i].active) continue;
+      for (size_t k = 0; k < e.parameters.size(); ++k)
+        if (const std::string why = e.parameters[k].RangeProblem(terms.registered[i].values[k]); !why.empty())
+          throw MakeInputError(SoilLabel(soil), e.id + "." + e.parameters[k].key, why);
+      if (e.needs_bulk_density)
+        Require(std::isfinite(soil.bulk_density_kg_m3) && soil.bulk_density_kg_m3 > 0.0, soil, "bulk_density_kg_m3",
+                e.id + " needs the soil's bulk density", soil.bulk_density_kg_m3);
+    }
+    out = std::make_unique<RegisteredEffectsLaw>(std::move(out), terms, soil.bulk_density_kg_m3);
+  }
   SoilContactModel model;
   if (terms.depth_exponent != 1.0) model.pad_terms.depth = {terms.depth_exponent, terms.depth_reference_m};
   // Bekker's z^n: the depth law with z_ref = 1 m, so z_ref (z / z_ref)^n = z^n in SI.

@@ -42,6 +42,7 @@ hidden() {  # the hidden_effect block of a set (the parameters of tests/drop_tes
     depth_exponent) echo "hidden_effect: {id: depth_exponent, p: $(sc 1 1.3)}" ;;
     gas_cushion) echo "hidden_effect: {id: gas_cushion, chi: $(sc 0 0.3), c_g_N_s_m3: $(sc 0 8000)}" ;;
     sensor_offset) echo "hidden_effect: {id: sensor_offset, dz_mm: $(sc 0 1), dt_ms: $(sc 0 3)}" ;;
+    cohesion) echo "hidden_effect: {id: cohesion, c_kPa: $(sc 0 1.0)}" ;;
     floor) echo "hidden_effect: {id: floor_stiffening}" ;;
   esac
 }
@@ -50,7 +51,7 @@ printf '%-26s %-60s %-9s %s\n' "set" "selected terms (parameters)" "no term?" "h
 for term in ${BLIND_TERMS:-with without}; do
   soil=fjs1_lp
   [ "$term" = without ] && soil="$quasi_static"
-  for effect in ${BLIND_EFFECTS:-none inertial_drag rate_damping added_mass added_mass_plug compaction_peak depth_exponent gas_cushion sensor_offset floor}; do
+  for effect in ${BLIND_EFFECTS:-none inertial_drag rate_damping added_mass added_mass_plug compaction_peak depth_exponent gas_cushion sensor_offset cohesion floor}; do
     name="${effect}_${term}_term"
     cat > "$out/$name.synth.yaml" <<SPEC
 schema_version: 1

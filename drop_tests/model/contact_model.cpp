@@ -15,7 +15,11 @@ rft::SoilContactModel MakeContactModel(const ContactModelRequest& r) {
   rft::EffectTerms terms = r.model ? ModelEffectTerms(*r.model) : r.effects;
   const std::string source =
       !r.model ? r.effects_source : r.model->source.empty() ? "model " + r.model->name : r.model->source;
-  if (soil.atmosphere != rft::Atmosphere::kAir) terms.gas_chi = terms.gas_c_N_s_m3 = 0.0;  // beds in air only
+  if (soil.atmosphere != rft::Atmosphere::kAir) {  // beds in air only
+    terms.gas_chi = terms.gas_c_N_s_m3 = 0.0;
+    for (size_t i = 0; i < rft::RegisteredEffects().size(); ++i)
+      if (rft::RegisteredEffects()[i].air_only) terms.registered[i].active = false;
+  }
   if (terms.NeedsDensity() && !(soil.bulk_density_kg_m3 > 0.0))
     throw MakeInputError(soil.name, "bulk_density_kg_m3",
                          "the soil must state its bulk density for inertial_drag, added_mass and added_mass_plug (model " +

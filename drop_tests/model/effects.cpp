@@ -15,8 +15,15 @@ namespace touchdown::model {
 namespace {
 
 EffectParameterInfo Param(std::string key, std::string symbol, std::string unit, double file_to_si, double lower,
-                          double upper, double scale, double start, std::vector<double> scan = {}) {
-  return {std::move(key), std::move(symbol), std::move(unit), file_to_si, lower, upper, scale, start, std::move(scan)};
+                          double upper, double scale, double start, std::vector<double> scan = {},
+                          double neutral = 0.0) {
+  return {std::move(key), std::move(symbol), std::move(unit), file_to_si, lower, upper, scale, start, std::move(scan),
+          neutral};
+}
+
+// The index in rft::RegisteredEffects() of a registered effect's kind.
+size_t RegisteredIndex(EffectId kind) {
+  return static_cast<size_t>(kind) - static_cast<size_t>(EffectId::kRegisteredBegin);
 }
 
 // Sets the terms of effect `kind` from its values (SI, in EffectInfo::parameters order).
@@ -46,6 +53,12 @@ void SetTerm(EffectId kind, const std::vector<double>& v, rft::EffectTerms& t) {
     case EffectId::kSensorOffset:
       t.sensor_dz_m = v[0], t.sensor_dt_s = v[1];
       return;
+    default: {  // a registered effect
+      rft::RegisteredEffectValues& r = t.registered[RegisteredIndex(kind)];
+      r.active = true;
+      std::copy(v.begin(), v.end(), r.values.begin());
+      return;
+    }
   }
 }
 
@@ -68,28 +81,25 @@ bool IsActive(EffectId kind, const rft::EffectTerms& t) {
       return t.gas_chi != 0.0 || t.gas_c_N_s_m3 != 0.0;
     case EffectId::kSensorOffset:
       return t.HasSensorOffset();
+    default: {  // a registered effect: on, and not all of its parameters neutral
+      const size_t i = RegisteredIndex(kind);
+      const std::vector<rft::EffectParameter>& params = rft::RegisteredEffects()[i].parameters;
+      if (!t.registered[i].active) return false;
+      for (size_t k = 0; k < params.size(); ++k)
+        if (t.registered[i].values[k] != params[k].neutral) return true;
+      return false;
+    }
   }
-  return false;  // not reached: every enumerator is handled above
 }
 
-std::string Text(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
 }  // namespace
-
-std::string EffectParameterInfo::RangeProblem(double v) const {
-  if (std::isfinite(v) && v >= lower && v <= upper) return "";
-  return "must be in [" + Text(lower / file_to_si) + ", " + Text(upper / file_to_si) + "], got " +
-         Text(v / file_to_si);
-}
 
 const std::vector<EffectInfo>& EffectLibrary() {
   // Ranges are physical bounds (no negative damping, chi < 1); scales and starts are typical
   // magnitudes for 0.1 m pads at ~1 m/s on lunar simulants (a 100 N term), used by fits only.
   using enum EffectId;
-  static const std::vector<EffectInfo> library = {
+  static const std::vector<EffectInfo> library = [] {
+    std::vector<EffectInfo> built_in = {
       {kInertialDrag, "inertial_drag", "stress lambda rho (v.n)^2 on leading elements: F += lambda rho v^2 I3(d)",
        {Param("lambda", "lambda", "-", 1.0, 0.0, 1e3, 1.0, 1.0)}, false, false, true},
       {kRateDamping, "rate_damping", "stress c (v.n) on leading elements: F += c v I2(d)",
@@ -106,7 +116,7 @@ const std::vector<EffectInfo>& EffectLibrary() {
         Param("d_c_mm", "d_c", "m", 1e-3, 1e-4, 0.1, 3e-3, 3e-3)},
        false, false, false},
       {kDepthExponent, "depth_exponent", "stress zeta alpha z_ref (z/z_ref)^p instead of zeta alpha z (z_ref = 10 mm)",
-       {Param("p", "p", "-", 1.0, 0.2, 3.0, 0.2, 1.0)}, false, false, false},
+       {Param("p", "p", "-", 1.0, 0.2, 3.0, 0.2, 1.0, {}, 1.0)}, false, false, false},
       {kGasCushion, "gas_cushion", "air drops only: zeta -> (1 - chi) zeta, plus stress c_g (v.n): F += c_g v I2(d)",
        {Param("chi", "chi", "-", 1.0, 0.0, 0.95, 0.1, 0.1), Param("c_g_N_s_m3", "c_g", "N s/m^3", 1.0, 0.0, 1e7, 1e4, 2e3)},
        true, false, false},
@@ -115,7 +125,14 @@ const std::vector<EffectInfo>& EffectLibrary() {
        {Param("dz_mm", "dz", "m", 1e-3, -0.05, 0.05, 1e-3, 0.0), Param("dt_ms", "dt", "s", 1e-3, -0.05, 0.05, 1e-3, 0.0,
               {-0.008, -0.004, 0.0, 0.004, 0.008, 0.012})},
        false, true, false},
-  };
+    };
+    for (size_t i = 0; i < rft::RegisteredEffects().size(); ++i) {
+      const rft::EffectDefinition& e = rft::RegisteredEffects()[i];
+      built_in.push_back({static_cast<EffectId>(static_cast<size_t>(kRegisteredBegin) + i), e.id, e.form, e.parameters,
+                          e.air_only, false, e.needs_bulk_density, &e});
+    }
+    return built_in;
+  }();
   return library;
 }
 

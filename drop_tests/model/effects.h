@@ -3,6 +3,8 @@
 // section 4), each switchable in every simulation (rig drops; free drops and the lander in its 3D
 // form, below) and fitted by `touchdown diagnose` on rig drops.
 // The ids are part of the interface (model files, diagnosis.json, the command line).
+// A new effect of the stress kind is one file, rft/effects/<name>_effect.cpp
+// (rft/effects/effect_definition.h); it joins this library by itself.
 //
 // The terms themselves (rft::EffectTerms, the flat numbers every simulation reads) are in
 // rft/effect_terms.h; this file holds what a file and a fit know about them (ids, parameter keys,
@@ -25,6 +27,7 @@
 #include <vector>
 
 #include "rft/effect_terms.h"
+#include "rft/effects/effect_definition.h"
 
 namespace touchdown::model {
 
@@ -39,23 +42,15 @@ enum class EffectId {
   kDepthExponent,
   kGasCushion,
   kSensorOffset,
+  // The registered effects (rft/effects/, one file each) follow, the i-th of
+  // rft::RegisteredEffects() as EffectId(int(kRegisteredBegin) + i): code past the file edge treats
+  // them through their definition, never by name.
+  kRegisteredBegin,
 };
 
-// One parameter of an effect as a file and a fit see it.
-struct EffectParameterInfo {
-  std::string key;         // in files, unit-suffixed: "c_N_s_m3", "d_c_mm"
-  std::string symbol;      // in the documentation: "c", "d_c"
-  std::string unit;        // SI unit of the value held in memory
-  double file_to_si = 1.0;  // value_SI = value_file * file_to_si
-  double lower = 0.0, upper = 0.0;  // admissible range (SI)
-  double scale = 1.0;       // a typical magnitude (SI), for fitting
-  double start = 0.0;       // starting value of a fit (SI)
-  std::vector<double> scan;  // if given, a fit first picks the best of these starts (SI)
-
-  // Why the SI value v is not admissible ("must be in [lower, upper], got v", in file units), or
-  // empty when it is.
-  std::string RangeProblem(double v) const;
-};
+// One parameter of an effect as a file and a fit see it (its key, unit, range, neutral value and
+// fitting scales): rft/effects/effect_definition.h.
+using EffectParameterInfo = rft::EffectParameter;
 
 struct EffectInfo {
   EffectId kind;
@@ -65,9 +60,12 @@ struct EffectInfo {
   bool air_only = false;         // acts only on drops in air
   bool measurement_only = false;  // changes what the sensors record, not the physics
   bool needs_bulk_density = false;  // its force scales with the soil's bulk density rho
+  // A registered effect's definition (rft/effects/), null for the built-in ones.
+  const rft::EffectDefinition* registered = nullptr;
 };
 
-// The library, in EffectId's order (EffectLibrary()[int(kind)].kind == kind).
+// The library, in EffectId's order (EffectLibrary()[int(kind)].kind == kind): the built-in effects,
+// then the registered ones.
 const std::vector<EffectInfo>& EffectLibrary();
 // Throws InputError naming `context` if `id` is not in the library.
 const EffectInfo& FindEffect(const std::string& id, const std::string& context = "");

@@ -20,9 +20,26 @@ EffectSoilResponse::EffectSoilResponse(const geom::AxisymmetricIntrusion& pad, c
                          "the soil must state its bulk density for inertial_drag, added_mass and added_mass_plug");
   zeta_qs_ = in_.zeta_N_m3 * (in_.in_air ? 1.0 - in_.terms.gas_chi : 1.0);
   i2_coefficient_ = in_.terms.damping_c_N_s_m3 + (in_.in_air ? in_.terms.gas_c_N_s_m3 : 0.0);
+  for (size_t i = 0; i < rft::RegisteredEffects().size(); ++i) {
+    const rft::EffectDefinition& e = rft::RegisteredEffects()[i];
+    if (!in_.terms.registered[i].active || (e.air_only && !in_.in_air)) continue;
+    registered_.push_back(static_cast<int>(i));
+  }
 }
 
-double EffectSoilResponse::QuasiStaticForce(double d) const {
+double EffectSoilResponse::RegisteredForce(double d, double v) const {
+  if (registered_.empty() || !(d > 0.0)) return 0.0;
+  const rft::RigPoint p{d, std::max(v, 0.0), pad_.CosinePowerIntegral(d, 1), pad_.CosinePowerIntegral(d, 2),
+                        pad_.CosinePowerIntegral(d, 3), in_.bulk_density_kg_m3};
+  double f = 0.0;
+  for (const int i : registered_)
+    f += rft::RegisteredEffects()[i].rig_force_N(in_.terms.registered[i].values.data(), p);
+  return f;
+}
+
+double EffectSoilResponse::QuasiStaticForce(double d) const { return BaseQuasiStaticForce(d) + RegisteredForce(d, 0.0); }
+
+double EffectSoilResponse::BaseQuasiStaticForce(double d) const {
   // p = 1 is the linear law itself: computed as such, so a neutral depth_exponent changes nothing.
   if (in_.terms.HasDepthExponent())
     return pad_.PowerLawVerticalForce(d, zeta_qs_, in_.terms.depth_exponent, in_.terms.depth_reference_m);
@@ -30,7 +47,7 @@ double EffectSoilResponse::QuasiStaticForce(double d) const {
 }
 
 double EffectSoilResponse::Force(double d, double v) const {
-  double f = QuasiStaticForce(d);
+  double f = BaseQuasiStaticForce(d) + RegisteredForce(d, v);
   if (!(v > 0.0) || !(d > 0.0)) return f;
   const rft::EffectTerms& t = in_.terms;
   const double quadratic =

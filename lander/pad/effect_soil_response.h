@@ -21,9 +21,13 @@
 //   depth_exponent   zeta alpha z_ref (z/z_ref)^p instead of zeta alpha z
 //   gas_cushion      only drops in air: zeta -> (1 - chi) zeta, and F += c_g v I_2(d)
 //   sensor_offset    not physics: RecordedAt below
+//   registered       each active effect of rft/effects/ adds its rig form
+//                    (EffectDefinition::rig_force_N, from I_1..I_3), at rest too
 //
 // Every velocity term vanishes at rest, so the static capacity is the quasi-static force (with
-// the depth law and the gas cushion applied).
+// the depth law and the gas cushion applied, and the registered effects at v = 0).
+#include <vector>
+
 #include "footpad_geom/axisymmetric_intrusion.h"
 #include "lander/pad/rig_drop.h"
 #include "rft/effect_terms.h"
@@ -51,11 +55,14 @@ class EffectSoilResponse final : public VerticalSoilResponse {
 
  private:
   rft::EntrainedMass Plug(double depth_m) const;  // rate_kg_s: the slope dm_p/dd
+  double BaseQuasiStaticForce(double depth_m) const;  // without the registered effects
+  double RegisteredForce(double depth_m, double speed_down_m_s) const;
 
   const geom::AxisymmetricIntrusion& pad_;
   SoilResponseInputs in_;
   double zeta_qs_;  // with the gas cushion applied
   double i2_coefficient_;  // c (+ c_g in air)
+  std::vector<int> registered_;  // the active registered effects, by index in rft::RegisteredEffects()
 };
 
 // What the rig's sensors record at recorded time t_rec [s] for a simulated drop, with the

@@ -49,11 +49,14 @@ TEST(EffectFile, ParsesWritesAndRejects) {
   EXPECT_THROW(LoadModelFile(dir + "/bad.yaml"), InputError);
 }
 
-// The library is one table in EffectId's order: each id's entry is found by its kind and by its
-// name, and the terms each effect sets are read back as that effect (and only it) active.
+// The library is one table in EffectId's order, the eight built-in effects and then the registered
+// ones (rft/effects/): each id's entry is found by its kind and by its name, and the terms each
+// effect sets are read back as that effect (and only it) active.
 TEST(EffectLibrary, OneTableInEnumOrder) {
   const std::vector<EffectInfo>& library = EffectLibrary();
-  ASSERT_EQ(library.size(), 8u);
+  ASSERT_EQ(library.size(), static_cast<size_t>(EffectId::kRegisteredBegin) + rft::RegisteredEffects().size());
+  for (size_t i = 0; i < rft::RegisteredEffects().size(); ++i)
+    EXPECT_EQ(library[static_cast<size_t>(EffectId::kRegisteredBegin) + i].registered, &rft::RegisteredEffects()[i]);
   for (size_t i = 0; i < library.size(); ++i) {
     const EffectId kind = static_cast<EffectId>(i);
     EXPECT_EQ(library[i].kind, kind);
