@@ -101,6 +101,14 @@ std::string ResolvedScenario(const std::string& name_or_path, const std::string&
   return YamlJson(YAML::LoadFile(scratch_file)).dump();
 }
 
+// A lander alone as a scenario's resolved copy states it (its `lander` block), from its file: no
+// ground, release or landing setup is built for it.
+std::string ResolvedLander(const std::string& name_or_path, const std::string& scratch_file,
+                           const std::string& output_dir) {
+  scenario::WriteResolvedLander(scenario::LoadLanderSpec(name_or_path), scratch_file, output_dir);
+  return YamlJson(YAML::LoadFile(scratch_file)).dump();
+}
+
 }  // namespace
 
 void RegisterObjectBindings(py::module_& m) {
@@ -129,6 +137,13 @@ void RegisterObjectBindings(py::module_& m) {
       [](const std::string& name_or_path, const std::string& scratch_file, const std::string& output_dir) {
         py::gil_scoped_release unlocked;
         return ResolvedScenario(name_or_path, scratch_file, output_dir);
+      },
+      py::arg("name_or_path"), py::arg("scratch_file"), py::arg("output_dir"));
+  m.def(
+      "resolved_lander",
+      [](const std::string& name_or_path, const std::string& scratch_file, const std::string& output_dir) {
+        py::gil_scoped_release unlocked;
+        return ResolvedLander(name_or_path, scratch_file, output_dir);
       },
       py::arg("name_or_path"), py::arg("scratch_file"), py::arg("output_dir"));
 }

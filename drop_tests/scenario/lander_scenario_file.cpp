@@ -373,4 +373,11 @@ void WriteResolvedLanderScenario(const LanderScenario& s, const lander::LanderSe
   io::WriteFileAtomically(path, [&](std::ostream& out) { out << y.c_str() << '\n'; });
 }
 
+void WriteResolvedLander(const LanderSpec& lander, const std::string& path, const std::string& output_dir) {
+  const FileName file = [&](const std::string& p) { return io::PathForOutput(p, output_dir); };
+  YAML::Emitter y;
+  WriteLanderBlock(y, lander, file);
+  io::WriteFileAtomically(path, [&](std::ostream& out) { out << y.c_str() << '\n'; });
+}
+
 }  // namespace touchdown::scenario

@@ -41,5 +41,8 @@ void WriteResolvedLanderScenario(const LanderScenario& scenario, const lander::L
 // As above, building the setup first (a copy written without running the landing).
 void WriteResolvedLanderScenario(const LanderScenario& scenario, const std::string& path,
                                  const std::string& output_dir);
+// The lander alone as a resolved copy's `lander` block states it (masses, pad, legs; files named as
+// from `output_dir`), written to `path`: a lander resolves without a ground or a release.
+void WriteResolvedLander(const LanderSpec& lander, const std::string& path, const std::string& output_dir);
 
 }  // namespace touchdown::scenario

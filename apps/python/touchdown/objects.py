@@ -248,18 +248,11 @@ class Lander(InputObject):
 
     @classmethod
     def _read_fields(cls, path):
-        # A lander resolves inside a scenario (its pad placed, its body's mass and centre of mass
-        # derived); any ground and release do, the lander block does not depend on them.
+        # The lander alone (its pad placed, its body's mass and centre of mass derived): the
+        # `lander` block a scenario's resolved copy states, without a ground or a release.
         with tempfile.TemporaryDirectory(prefix="touchdown_") as scratch:
-            probe = os.path.join(scratch, "lander_probe.yaml")
-            with open(probe, "w", encoding="utf-8") as f:
-                f.write("schema_version: 1\ntype: lander\nname: lander_probe\n"
-                        f"lander: {json.dumps(path)}\nground: {{soil: fjs1_lp}}\n"
-                        "initial: {drop_height_m: 0.1}\n")
-            try:
-                return _resolved_scenario(probe)["lander"]
-            except (ValueError, OSError) as e:
-                raise _unwrapped(e, probe + ": lander: ") from None
+            return json.loads(_touchdown.resolved_lander(path, os.path.join(scratch, "lander_resolved.yaml"),
+                                                         os.getcwd()))
 
 
 class _FrozenDict(dict):
@@ -348,17 +341,6 @@ def _with_object_paths(value):
     if isinstance(value, (list, tuple)):
         return [_with_object_paths(v) for v in value]
     return value
-
-
-def _unwrapped(error, prefix):
-    """The same exception without `prefix` before its message (the message of the file it names)."""
-    message = str(error)
-    if not message.startswith(prefix):
-        return error
-    unwrapped = type(error)(message[len(prefix):])
-    if isinstance(error, OSError):
-        unwrapped.errno = error.errno
-    return unwrapped
 
 
 def _renamed(error, path, name):
