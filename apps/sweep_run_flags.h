@@ -8,7 +8,7 @@
 
 #include "drop_tests/formats/output_path.h"
 #include "drop_tests/sweep/sweep.h"
-#include "drop_tests/sweep/sweep_spec.h"
+#include "drop_tests/sweep/sweep_plan.h"
 
 namespace touchdown::app {
 

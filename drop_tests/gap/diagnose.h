@@ -188,6 +188,8 @@ struct Diagnosis {
 
 Diagnosis RunDiagnosis(const dataset::Dataset& measured, const DiagnoseOptions& options = {});
 nlohmann::json DiagnosisJson(const Diagnosis& d);
+// How the drops were split, in words (diagnosis.json's split.rule and the report's section 1).
+std::string SplitRule(const Diagnosis& d);
 // DIR (replaced when complete): model.yaml, diagnosis.json, report.md, per_drop.csv, data/,
 // plots/ (PNG via gnuplot when installed, with the script).
 void WriteDiagnosis(const Diagnosis& d, const dataset::Dataset& measured, const io::OutputTarget& out);

@@ -9,7 +9,7 @@
 
 #include <boost/math/distributions/normal.hpp>
 
-#include "drop_tests/sweep/sweep_spec.h"
+#include "drop_tests/sweep/sweep_plan.h"
 
 namespace touchdown::stability {
 

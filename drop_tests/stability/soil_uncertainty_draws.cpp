@@ -6,7 +6,7 @@
 
 #include "drop_tests/formats/dataset_csv.h"
 #include "drop_tests/stability/rare_event.h"
-#include "drop_tests/sweep/sweep_spec.h"
+#include "drop_tests/sweep/sweep_plan.h"
 #include "rft/physical_limits.h"
 #include "rft/units.h"
 

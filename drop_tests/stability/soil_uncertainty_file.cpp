@@ -11,7 +11,7 @@
 #include "drop_tests/catalog/catalog.h"
 #include "drop_tests/formats/dataset_csv.h"
 #include "drop_tests/formats/yaml_fields.h"
-#include "drop_tests/sweep/sweep_spec.h"
+#include "drop_tests/sweep/sweep_plan.h"
 #include "rft/input_error.h"
 
 namespace touchdown::stability {

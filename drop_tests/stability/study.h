@@ -1,6 +1,6 @@
 #pragma once
 // A stability study (`touchdown stability STUDY.yaml --out DIR [--samples N]`): a lander sweep
-// (drop_tests/sweep/sweep_spec.h, `type: stability`) whose landings are run by the sweep engine
+// (drop_tests/sweep/sweep_plan.h, `type: stability`) whose landings are run by the sweep engine
 // into DIR/results.sqlite, plus a `study` block saying how to analyse them:
 //
 //   study:
@@ -22,7 +22,7 @@
 #include <vector>
 
 #include "drop_tests/stability/soil_uncertainty.h"
-#include "drop_tests/sweep/sweep_spec.h"
+#include "drop_tests/sweep/sweep_plan.h"
 
 namespace touchdown::drop {
 struct RequestNaming;

@@ -32,7 +32,7 @@
 #include "drop_tests/util/progress.h"
 #include "drop_tests/sweep/results_db.h"
 #include "drop_tests/sweep/sweep_lock.h"
-#include "drop_tests/sweep/sweep_spec.h"
+#include "drop_tests/sweep/sweep_plan.h"
 
 namespace touchdown::sweep {
 

@@ -25,7 +25,7 @@
 #include "drop_tests/model/effects.h"
 #include "drop_tests/scenario/lander_setup.h"
 #include "drop_tests/sweep/results_db.h"
-#include "drop_tests/sweep/sweep_spec.h"
+#include "drop_tests/sweep/sweep_plan.h"
 
 namespace touchdown::geom {
 class AxisymmetricIntrusion;

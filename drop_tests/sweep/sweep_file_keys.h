@@ -1,11 +1,11 @@
 #pragma once
 // A sweep file's keys, block by block, in the order WriteSweepPlan writes them (private to
-// sweep_spec.cpp, whose loader accepts exactly these, and sweep_file_keys.cpp, which writes them;
+// sweep_plan_file.cpp, whose loader accepts exactly these, and sweep_file_keys.cpp, which writes them;
 // drop_tests/formats/key_table.h). A key with no writer is one only a person writes, or a block
 // the sweep itself does not read (a study's `study`, `touchdown trade`'s `trade`). The parameters
 // under fixed, grid and random are keyed by SweepParamKey, not listed here.
 #include "drop_tests/formats/key_table.h"
-#include "drop_tests/sweep/sweep_spec.h"
+#include "drop_tests/sweep/sweep_plan.h"
 
 namespace touchdown::sweep::file_keys {
 

@@ -25,7 +25,7 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include "drop_tests/sweep/results_db.h"
-#include "drop_tests/sweep/sweep_spec.h"
+#include "drop_tests/sweep/sweep_plan.h"
 
 namespace touchdown::sweep {
 

@@ -1,5 +1,5 @@
 // Fuzz target: sweep YAML (pads, soils and models resolved from data/ or relative paths).
-#include "drop_tests/sweep/sweep_spec.h"
+#include "drop_tests/sweep/sweep_plan.h"
 #include "rft/input_error.h"
 #include "tests/fuzz/fuzz_input_file.h"
 

@@ -11,7 +11,7 @@
 #include "drop_tests/drop/drop_setup.h"
 #include "drop_tests/drop/pad_drop.h"
 #include "drop_tests/sweep/sweep_drop.h"
-#include "drop_tests/sweep/sweep_spec.h"
+#include "drop_tests/sweep/sweep_plan.h"
 #include "rft/units.h"
 
 namespace touchdown::sweep {

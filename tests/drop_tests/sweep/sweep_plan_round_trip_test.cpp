@@ -6,7 +6,7 @@
 #include <fstream>
 
 #include "drop_tests/catalog/catalog.h"
-#include "drop_tests/sweep/sweep_spec.h"
+#include "drop_tests/sweep/sweep_plan.h"
 #include "tests/round_trip.h"
 
 namespace touchdown::sweep {

@@ -13,7 +13,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "drop_tests/sweep/sweep_spec.h"
+#include "drop_tests/sweep/sweep_plan.h"
 #include "drop_tests/sweep/trade.h"
 #include "rft/input_error.h"
 #include "tests/scratch_dir_test.h"
