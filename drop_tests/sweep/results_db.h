@@ -141,6 +141,12 @@ struct RecordNumber {
   double& (*at)(DropRecord&);
   double Of(const DropRecord& r) const { return at(const_cast<DropRecord&>(r)); }  // reads only
 };
+// The record's text fields after its numbers (the soil under each lander pad, the ground case),
+// in table order: the database's and the byte serialisation's one list of them.
+template <typename R>
+auto DropRecordTexts(R& r) {
+  return std::array{&r.pad_soil[0], &r.pad_soil[1], &r.pad_soil[2], &r.pad_soil[3], &r.ground_case};
+}
 // The drops table's numbers in groups, in table order. A drop's conditions and the rig drop's
 // metrics (impact_speed_m_s .. rest_creep_m; the metrics are drop::RigMetrics(), by name):
 const std::vector<RecordNumber>& RigNumbers();
