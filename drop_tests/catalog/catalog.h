@@ -14,6 +14,7 @@
 #include <iosfwd>
 
 #include "rft/soil.h"
+#include "rft/enum_names.h"
 
 namespace touchdown::io {
 
@@ -32,7 +33,7 @@ enum class PadKind { kAxisymmetric, kMesh };  // `kind: axisymmetric` or `kind: 
 
 // A revolved pad's `profile.shape`. The names table is the one place its file names live.
 enum class PadShape { kFlat, kChamfer, kExponential, kSphericalCap, kCone, kTable };
-inline constexpr std::array<std::pair<PadShape, const char*>, 6> kPadShapeNames{{{PadShape::kFlat, "flat"},
+inline constexpr std::array<EnumName<PadShape>, 6> kPadShapeNames{{{PadShape::kFlat, "flat"},
                                                                                 {PadShape::kChamfer, "chamfer"},
                                                                                 {PadShape::kExponential, "exponential"},
                                                                                 {PadShape::kSphericalCap, "spherical_cap"},

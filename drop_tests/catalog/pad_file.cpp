@@ -61,17 +61,9 @@ geom::AxisymmetricProfile Guarded(const YamlFields& f, Build build) {
 
 }  // namespace
 
-const char* PadShapeName(PadShape shape) {
-  for (const auto& [value, name] : kPadShapeNames)
-    if (value == shape) return name;
-  return "flat";  // not reached: every enumerator is in the table
-}
+const char* PadShapeName(PadShape shape) { return NameIn(kPadShapeNames, shape); }
 
-std::optional<PadShape> ParsePadShape(const std::string& name) {
-  for (const auto& [value, shape_name] : kPadShapeNames)
-    if (name == shape_name) return value;
-  return std::nullopt;
-}
+std::optional<PadShape> ParsePadShape(const std::string& name) { return FindName(kPadShapeNames, name); }
 
 namespace {
 

@@ -1,32 +1,27 @@
 #include "drop_tests/dataset/sensor_sampling.h"
 
+#include <array>
+
+#include "rft/enum_names.h"
+
 namespace touchdown::dataset {
 
 namespace {
-constexpr pad::SensorSampling kAll[] = {pad::SensorSampling::kPeriodMean, pad::SensorSampling::kInstantaneous};
+constexpr std::array<EnumName<pad::SensorSampling>, 2> kNames{
+    {{pad::SensorSampling::kPeriodMean, "period_mean"}, {pad::SensorSampling::kInstantaneous, "instantaneous"}}};
 }  // namespace
 
-const char* SensorSamplingName(pad::SensorSampling sampling) {
-  return sampling == pad::SensorSampling::kPeriodMean ? "period_mean" : "instantaneous";
-}
+const char* SensorSamplingName(pad::SensorSampling sampling) { return NameIn(kNames, sampling); }
 
 std::vector<std::string> SensorSamplingNames() {
   std::vector<std::string> names;
-  for (pad::SensorSampling s : kAll) names.push_back(SensorSamplingName(s));
+  for (const EnumName<pad::SensorSampling>& e : kNames) names.push_back(e.name);
   return names;
 }
 
-std::optional<pad::SensorSampling> ParseSensorSampling(const std::string& name) {
-  for (pad::SensorSampling s : kAll)
-    if (name == SensorSamplingName(s)) return s;
-  return std::nullopt;
-}
+std::optional<pad::SensorSampling> ParseSensorSampling(const std::string& name) { return FindName(kNames, name); }
 
-std::string SensorSamplingChoices() {
-  std::string out;
-  for (const std::string& n : SensorSamplingNames()) out += (out.empty() ? "" : " or ") + n;
-  return out;
-}
+std::string SensorSamplingChoices() { return NameChoices(kNames); }
 
 DatasetTrace RecordedTrace(const pad::RigDropResult& result, double gravity_m_s2, const rft::EffectTerms& terms,
                            const std::vector<double>& t_s, pad::SensorSampling sampling, double sample_period_s) {

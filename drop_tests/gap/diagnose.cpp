@@ -21,7 +21,7 @@
 
 namespace touchdown::gap {
 
-const char* FindingKindName(FindingKind kind) { return kind == FindingKind::kPhase ? "phase" : "condition"; }
+const char* FindingKindName(FindingKind kind) { return NameIn(kFindingKindNames, kind); }
 
 namespace {
 

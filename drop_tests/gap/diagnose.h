@@ -34,6 +34,7 @@
 //     base AND >= 80 % of the excess mean-square residual above the estimated sensor-noise floor is
 //     explained. Otherwise `none`, with the residual described (what it correlates with).
 //  4-5. DIR/model.yaml, DIR/diagnosis.json, DIR/report.md with plots (diagnose_report.cpp).
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -46,6 +47,7 @@
 #include "drop_tests/gap/gap_floor.h"
 #include "drop_tests/gap/law_candidate.h"
 #include "drop_tests/gap/sensor_inference.h"
+#include "rft/enum_names.h"
 
 namespace touchdown::gap {
 
@@ -122,7 +124,9 @@ struct GapSummary {  // held-out means
 // What a "where" finding is about: a condition of the drops (speed, pad, ...) or a phase of the
 // stroke (impact onset, ...).
 enum class FindingKind { kCondition, kPhase };
-const char* FindingKindName(FindingKind kind);  // "condition", "phase"
+inline constexpr std::array<EnumName<FindingKind>, 2> kFindingKindNames{
+    {{FindingKind::kCondition, "condition"}, {FindingKind::kPhase, "phase"}}};
+const char* FindingKindName(FindingKind kind);
 
 struct Finding {  // one line of "where"
   FindingKind kind = FindingKind::kCondition;

@@ -23,13 +23,10 @@ using units::kMm;
 lander::ShockAbsorber ReadAbsorber(const io::YamlFields& f) {
   lander::ShockAbsorber a;
   const std::string kind = f.String("kind");
-  if (kind == AbsorberKindName(lander::ShockAbsorber::Kind::kSpringDamper)) {
-    a.kind = lander::ShockAbsorber::Kind::kSpringDamper;
-  } else if (kind == AbsorberKindName(lander::ShockAbsorber::Kind::kCrushable)) {
-    a.kind = lander::ShockAbsorber::Kind::kCrushable;
-  } else {
+  if (const std::optional<lander::ShockAbsorber::Kind> k = FindName(kAbsorberKindNames, kind))
+    a.kind = *k;
+  else
     f.Fail("kind", "unknown absorber kind '" + kind + "' (spring_damper, crushable)");
-  }
   f.RequireOnly(io::Keys(AbsorberKeys(a.kind)));
   io::ReadFields(f, AbsorberFields(a.kind), a);
   return a;

@@ -26,7 +26,7 @@ namespace touchdown::scenario {
 
 namespace fs = std::filesystem;
 
-const char* PadAttitudeName(PadAttitude attitude) { return attitude == PadAttitude::kLevel ? "level" : "body"; }
+const char* PadAttitudeName(PadAttitude attitude) { return NameIn(kPadAttitudeNames, attitude); }
 
 namespace {
 using namespace file_yaml;
@@ -189,9 +189,9 @@ LanderInitialSpec ReadInitial(const io::YamlFields& in, bool resolved) {
     ic.angular_rate_B = Eigen::Vector3d(w[0], w[1], w[2]) * kDeg;
   }
   const std::string attitude = in.StringOr("pad_attitude", PadAttitudeName(PadAttitude::kBody));
-  if (attitude == PadAttitudeName(PadAttitude::kLevel))
-    ic.pad_attitude = PadAttitude::kLevel;
-  else if (attitude != PadAttitudeName(PadAttitude::kBody))
+  if (const std::optional<PadAttitude> a = FindName(kPadAttitudeNames, attitude))
+    ic.pad_attitude = *a;
+  else
     in.Fail("pad_attitude", "must be 'body' or 'level', got '" + attitude + "'");
   return ic;
 }

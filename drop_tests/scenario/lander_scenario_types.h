@@ -19,6 +19,7 @@
 #include "drop_tests/scenario/paper_reading.h"
 #include "lander/multibody/lander_simulation.h"
 #include "rft/gravity_constants.h"
+#include "rft/enum_names.h"
 
 namespace touchdown::scenario {
 
@@ -77,6 +78,8 @@ struct LanderGroundSpec {
 
 // The pads' attitude at release: parallel to the body (the paper's tiltmeter), or level.
 enum class PadAttitude { kBody, kLevel };
+inline constexpr std::array<EnumName<PadAttitude>, 2> kPadAttitudeNames{
+    {{PadAttitude::kBody, "body"}, {PadAttitude::kLevel, "level"}}};
 // The file's word for each ("body", "level"), read and written.
 const char* PadAttitudeName(PadAttitude attitude);
 

@@ -37,10 +37,7 @@ std::string ResolveRelative(const io::YamlFields& f, const std::string& kind, co
   }
 }
 
-// The absorber kinds as files name them (read and written).
-const char* AbsorberKindName(lander::ShockAbsorber::Kind kind) {
-  return kind == lander::ShockAbsorber::Kind::kSpringDamper ? "spring_damper" : "crushable";
-}
+const char* AbsorberKindName(lander::ShockAbsorber::Kind kind) { return NameIn(kAbsorberKindNames, kind); }
 
 // The number fields of each absorber kind and of the cone limit, read from a lander file and
 // written into a resolved copy (every field, defaults included).

@@ -4,6 +4,7 @@
 // relative to the file, the absorber's and the cone limit's fields, the scenario's number fields
 // and key tables (drop_tests/formats/key_table.h: the loader's known keys and the resolved copy's
 // writer from one list), and the blocks a resolved copy writes.
+#include <array>
 #include <functional>
 #include <string>
 #include <vector>
@@ -16,6 +17,7 @@
 #include "drop_tests/formats/yaml_fields.h"
 #include "drop_tests/scenario/lander_scenario_types.h"
 #include "lander/multibody/lander_run.h"
+#include "rft/enum_names.h"
 
 namespace touchdown::scenario::file_yaml {
 
@@ -25,6 +27,9 @@ std::vector<double> FixedList(const io::YamlFields& f, const std::string& key, s
 std::string ResolveRelative(const io::YamlFields& f, const std::string& kind, const std::string& name);
 
 // The absorber kinds as files name them (read and written).
+// The absorber kinds as files name them (read and written).
+inline constexpr std::array<EnumName<lander::ShockAbsorber::Kind>, 2> kAbsorberKindNames{
+    {{lander::ShockAbsorber::Kind::kSpringDamper, "spring_damper"}, {lander::ShockAbsorber::Kind::kCrushable, "crushable"}}};
 const char* AbsorberKindName(lander::ShockAbsorber::Kind kind);
 // The number fields of each absorber kind and of the cone limit, read from a lander file and
 // written into a resolved copy (every field, defaults included).

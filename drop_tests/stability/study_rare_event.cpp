@@ -208,18 +208,10 @@ const char* IntervalConstruction(StudyMethod m) {
 }
 }  // namespace
 
-const char* StudyMethodName(StudyMethod m) {
-  switch (m) {
-    case StudyMethod::kSubset: return "subset";
-    case StudyMethod::kImportance: return "importance";
-    default: return "monte_carlo";
-  }
-}
+const char* StudyMethodName(StudyMethod m) { return NameIn(kStudyMethodNames, m); }
 
 StudyMethod ParseStudyMethod(const std::string& text, const std::string& field) {
-  for (StudyMethod m : {StudyMethod::kMonteCarlo, StudyMethod::kSubset, StudyMethod::kImportance})
-    if (text == StudyMethodName(m)) return m;
-  throw MakeInputError("", field, "must be one of monte_carlo, subset, importance, got '" + text + "'");
+  return ParseName(kStudyMethodNames, text, "", field);
 }
 
 namespace {

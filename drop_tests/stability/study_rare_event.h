@@ -17,6 +17,7 @@
 //   subset:     subset simulation (Au & Beck), `samples` landings per level, p0 = 0.1.
 //   importance: the subset run as its first pass, its design point refined along its ray, then
 //               `samples` landings drawn around it.
+#include <array>
 #include <cstdint>
 #include <iosfwd>
 #include <optional>
@@ -26,6 +27,7 @@
 #include <Eigen/Core>
 #include <nlohmann/json_fwd.hpp>
 
+#include "rft/enum_names.h"
 #include "drop_tests/stability/rare_event.h"
 #include "drop_tests/stability/study.h"
 #include "drop_tests/sweep/sweep.h"
@@ -33,6 +35,9 @@
 namespace touchdown::stability {
 
 enum class StudyMethod { kMonteCarlo, kSubset, kImportance };
+inline constexpr std::array<EnumName<StudyMethod>, 3> kStudyMethodNames{{{StudyMethod::kMonteCarlo, "monte_carlo"},
+                                                                        {StudyMethod::kSubset, "subset"},
+                                                                        {StudyMethod::kImportance, "importance"}}};
 // "monte_carlo", "subset", "importance".
 const char* StudyMethodName(StudyMethod m);
 // The method `--method` names; InputError naming `field` (and the valid values) otherwise.

@@ -123,19 +123,10 @@ bool SameRecord(const DropRecord& a, const DropRecord& b, bool compare_traces) {
          (a.trace.empty() || std::memcmp(a.trace.data(), b.trace.data(), a.trace.size() * sizeof(pad::DropSample)) == 0);
 }
 
-const char* DropKindName(DropKind kind) {
-  switch (kind) {
-    case DropKind::kRig: return "rig";
-    case DropKind::kFree: return "free";
-    case DropKind::kLander: return "lander";
-  }
-  return "rig";
-}
+const char* DropKindName(DropKind kind) { return NameIn(kDropKindNames, kind); }
 
 DropKind ParseDropKind(const std::string& text, const std::string& where) {
-  for (DropKind k : {DropKind::kRig, DropKind::kFree, DropKind::kLander})
-    if (text == DropKindName(k)) return k;
-  throw MakeInputError(where, "drop_kind", "must be rig, free or lander, got '" + text + "'");
+  return ParseName(kDropKindNames, text, where, "drop_kind");
 }
 
 std::string SerializeRecords(const std::vector<DropRecord>& records) {

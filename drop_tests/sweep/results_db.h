@@ -32,6 +32,7 @@
 #include <string>
 #include <vector>
 
+#include "rft/enum_names.h"
 #include "lander/pad/rig_drop.h"
 
 struct sqlite3;
@@ -49,6 +50,8 @@ inline constexpr int kResultsDbVersion = 8;
 // The database keeps it as text (drop_kind 'rig'|'free'|'lander'), converted where it is read
 // and written.
 enum class DropKind { kRig, kFree, kLander };
+inline constexpr std::array<EnumName<DropKind>, 3> kDropKindNames{
+    {{DropKind::kRig, "rig"}, {DropKind::kFree, "free"}, {DropKind::kLander, "lander"}}};
 const char* DropKindName(DropKind kind);
 // Throws InputError naming `where` on a text that is no drop kind.
 DropKind ParseDropKind(const std::string& text, const std::string& where);

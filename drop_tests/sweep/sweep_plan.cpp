@@ -30,9 +30,7 @@ namespace touchdown::sweep {
 namespace fs = std::filesystem;
 using namespace param_table;
 
-const char* TraceStorageName(TraceStorage t) {
-  return t == TraceStorage::kNone ? "none" : t == TraceStorage::kFull ? "full" : "decimated";
-}
+const char* TraceStorageName(TraceStorage t) { return NameIn(kTraceStorageNames, t); }
 
 std::optional<SweepParam> SweepParamFromKey(const std::string& key) { return ParamFromKey(key); }
 double SweepParamFromSi(SweepParam p, double si) { return FromSi(p, si); }

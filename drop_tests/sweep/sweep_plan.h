@@ -105,6 +105,7 @@
 #include "lander/pad/rig_drop.h"
 #include "rft/gravity_constants.h"
 #include "rft/physical_limits.h"
+#include "rft/enum_names.h"
 
 namespace touchdown::sweep {
 
@@ -126,7 +127,10 @@ double SweepParamToSi(SweepParam p, double file_value);
 bool IsLanderNumber(SweepParam p);
 
 enum class TraceStorage { kNone, kDecimated, kFull };
-const char* TraceStorageName(TraceStorage t);  // as a sweep file names it: none, decimated, full
+// As a sweep file names them.
+inline constexpr std::array<EnumName<TraceStorage>, 3> kTraceStorageNames{
+    {{TraceStorage::kNone, "none"}, {TraceStorage::kDecimated, "decimated"}, {TraceStorage::kFull, "full"}}};
+const char* TraceStorageName(TraceStorage t);
 
 // The parameters of one drop, in SI units; pad and soil as indices into SweepPlan::pads/soils.
 // A drop's stated conditions (drop::DropRow: speed, mass, gravity, zeta, tilt, horizontal speed;

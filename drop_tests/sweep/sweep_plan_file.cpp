@@ -184,17 +184,16 @@ void ReadLanderBlock(const io::YamlFields& f, const std::string& base, SweepPlan
   }
   for (const char* key : {"rest_duration_s", "trace_max_samples"})
     if (f.Has(key)) f.Fail(key, "a lander sweep runs the scenario's simulation options; remove it");
-  if (f.Has("traces") && f.String("traces") != "none")
+  if (f.Has("traces") && f.String("traces") != TraceStorageName(TraceStorage::kNone))
     f.Fail("traces", "a lander sweep stores summaries only (traces: none); run `touchdown lander` for a trace");
 }
 
 // Trace storage and the per-drop options and work limits.
 void ReadRunOptions(const io::YamlFields& f, SweepPlan& plan) {
-  const std::string traces = f.StringOr("traces", plan.lander ? "none" : "decimated");
-  if (traces == "none") plan.traces = TraceStorage::kNone;
-  else if (traces == "full") plan.traces = TraceStorage::kFull;
-  else if (traces == "decimated") plan.traces = TraceStorage::kDecimated;
-  else f.Fail("traces", "must be none, decimated or full, got '" + traces + "'");
+  const std::string traces =
+      f.StringOr("traces", TraceStorageName(plan.lander ? TraceStorage::kNone : TraceStorage::kDecimated));
+  if (const std::optional<TraceStorage> t = FindName(kTraceStorageNames, traces)) plan.traces = *t;
+  else f.Fail("traces", "must be " + NameChoices(kTraceStorageNames) + ", got '" + traces + "'");
   if (f.Has("trace_max_samples")) plan.trace_max_samples = f.PositiveInt("trace_max_samples");
   if (plan.trace_max_samples < 3) f.Fail("trace_max_samples", "must be at least 3");
   plan.rig.rest_duration_s = f.Has("rest_duration_s") ? f.NonNegative("rest_duration_s") : 0.0;

@@ -9,12 +9,10 @@
 namespace touchdown::pad {
 
 TiltAxis ParseTiltAxis(const std::string& text, const std::string& file) {
-  if (text == "x") return TiltAxis::kX;
-  if (text == "y") return TiltAxis::kY;
-  throw MakeInputError(file, "tilt_axis", "must be x or y, got '" + text + "'");
+  return ParseName(kTiltAxisNames, text, file, "tilt_axis");
 }
 
-const char* TiltAxisName(TiltAxis axis) { return axis == TiltAxis::kX ? "x" : "y"; }
+const char* TiltAxisName(TiltAxis axis) { return NameIn(kTiltAxisNames, axis); }
 
 Eigen::Matrix3d TiltRotation(TiltAxis axis, double tilt_rad) {
   const Eigen::Vector3d unit = axis == TiltAxis::kX ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();

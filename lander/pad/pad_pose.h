@@ -2,15 +2,18 @@
 // Placing a pad for a force query or the start of a free drop: a tilt about a horizontal axis
 // of W, and the pad lifted or lowered so that its lowest surface point sits at a given depth
 // below a level surface z = 0.
+#include <array>
 #include <Eigen/Core>
 #include <string>
 
 #include "footpad_geom/pad_body.h"
+#include "rft/enum_names.h"
 
 namespace touchdown::pad {
 
 // The horizontal axis of W a pad is tilted about. Files and the command line say "x" or "y".
 enum class TiltAxis { kX, kY };
+inline constexpr std::array<EnumName<TiltAxis>, 2> kTiltAxisNames{{{TiltAxis::kX, "x"}, {TiltAxis::kY, "y"}}};
 // "x" or "y"; InputError naming `file` and the field tilt_axis otherwise.
 TiltAxis ParseTiltAxis(const std::string& text, const std::string& file = "");
 const char* TiltAxisName(TiltAxis axis);
