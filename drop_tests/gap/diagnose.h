@@ -68,7 +68,8 @@ struct DiagnoseOptions {
   double min_explained = 0.8;
   double min_step_explained = 0.5;   // of the extended model's excess, for a step to add its term
   // With a floor from replicates (gap_floor.h): the most a step's held-out improvement may be left
-  // to chance (sign-flip p over the held-out drops).
+  // to chance (sign-flip p over the held-out drops). Where the held-out drops are too few for any
+  // outcome to reach it (2^-n > max_step_p), the level is 2^-n: every held-out drop fitted better.
   double max_step_p = 0.05;
   int permutations = 2000;
   unsigned seed = 12345;             // permutation tests only
@@ -157,6 +158,9 @@ struct CandidateScore {
   double step_gap_reduction = 0.0;  // 1 - held-out force NRMSE / the extended model's
   double step_explained = 0.0;      // of the extended model's excess mean square above the floor
   double step_improvement_p = 1.0;  // one-sided: the held-out drops fitted better than by the extended model
+  // The smallest p the sign-flip test can give on those drops (2^-n for n drops): with 4 or fewer it
+  // lies above max_step_p, and the step then asks that every held-out drop fit better.
+  double step_improvement_p_min = 1.0;
 };
 
 struct Diagnosis {

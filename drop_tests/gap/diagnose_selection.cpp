@@ -22,13 +22,15 @@ std::string Short(double v) {
 // The one-sided p of "the candidate fits the held-out drops better than the model it extends": a
 // sign-flip test of the per-drop log ratio of their force mean squares (every sign pattern for up
 // to 16 drops, else 20,000 seeded draws). A term the data hold improves most held-out drops; one
-// bending to a misfit or to scatter improves some and worsens others.
-double HeldOutImprovementP(const CandidateScore& c, const CandidateScore& current) {
+// bending to a misfit or to scatter improves some and worsens others. `p_min`: the smallest p the
+// test can give on those drops (every one improved), 2^-n.
+double HeldOutImprovementP(const CandidateScore& c, const CandidateScore& current, double* p_min) {
   std::vector<double> l;
   for (size_t i = 0; i < c.gaps.size() && i < current.gaps.size(); ++i)
     if (c.gaps[i].held_out && !c.gaps[i].failed && !current.gaps[i].failed && c.gaps[i].force_nrmse > 0 &&
         current.gaps[i].force_nrmse > 0)
       l.push_back(2.0 * std::log(current.gaps[i].force_nrmse / c.gaps[i].force_nrmse));
+  *p_min = std::ldexp(1.0, -static_cast<int>(std::min<size_t>(l.size(), 60)));
   if (l.empty()) return 1.0;
   double observed = 0.0;
   for (double v : l) observed += v;
@@ -52,6 +54,12 @@ double HeldOutImprovementP(const CandidateScore& c, const CandidateScore& curren
   return double(hits) / double(total);
 }
 
+// The level a step's sign-flip p is held to: max_step_p, or the smallest p its held-out drops can
+// give when that is higher (a level no outcome reaches would refuse every term on a small design).
+double StepLevel(const CandidateScore& c, const DiagnoseOptions& o) {
+  return std::max(o.max_step_p, c.step_improvement_p_min);
+}
+
 // Gap reduction and explained fraction against the base; Delta BIC against the base and against
 // the model the candidate extends. `floor`: the held-out mean square no model of the conditions
 // goes below (gap_floor.h).
@@ -67,7 +75,7 @@ void Relate(CandidateScore& c, const CandidateScore& base, const CandidateScore&
   c.delta_bic_step = current.fit.bic - c.fit.bic;
   c.step_gap_reduction =
       current.held_out.force_nrmse > 0 ? 1.0 - c.held_out.force_nrmse / current.held_out.force_nrmse : 0.0;
-  c.step_improvement_p = HeldOutImprovementP(c, current);
+  c.step_improvement_p = HeldOutImprovementP(c, current, &c.step_improvement_p_min);
 }
 
 // The first of a candidate's term parameters the training drops do not identify: its 95 % interval
@@ -166,10 +174,12 @@ StepOutcome DecideStep(const Diagnosis& d, const CandidateScore& current, const 
     why << "the best candidate on top of " << from << ", " << Added(w) << " (Delta BIC " << Fixed(w.delta_bic_step, 1)
         << "), does not cut the held-out force NRMSE (" << Fixed(current.held_out.force_nrmse, 4) << " -> "
         << Fixed(w.held_out.force_nrmse, 4) << ")";
-  } else if (d.floor.from_replicates && w.step_improvement_p > o.max_step_p) {
+  } else if (d.floor.from_replicates && w.step_improvement_p > StepLevel(w, o)) {
     why << "the best candidate on top of " << from << ", " << Added(w) << " (Delta BIC " << Fixed(w.delta_bic_step, 1)
         << "), does not fit the held-out drops consistently better (sign-flip p = " << Fixed(w.step_improvement_p, 3)
-        << " > " << o.max_step_p << " over the held-out drops): it bends to scatter or to a misfit";
+        << " > " << Short(StepLevel(w, o)) << " over the held-out drops";
+    if (StepLevel(w, o) > o.max_step_p) why << ", too few to reach " << o.max_step_p << ": every one must fit better";
+    why << "): it bends to scatter or to a misfit";
   } else if (w.step_explained < o.min_step_explained) {
     why << "the best candidate on top of " << from << ", " << Added(w) << " (Delta BIC " << Fixed(w.delta_bic_step, 1)
         << "), explains only " << Fixed(100 * w.step_explained, 0) << " % of the held-out excess over the floor "

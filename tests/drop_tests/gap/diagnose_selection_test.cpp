@@ -166,5 +166,54 @@ TEST(DiagnoseSelection, AStepWhoseParameterIsNotIdentifiedIsNotTaken) {
   EXPECT_EQ(Select(0.0020, {}, {0.3, 2.9}).named_effect, "depth_exponent");
 }
 
+// A design of 12 drops in two cells holds out 4 (diagnose's split): the sign-flip test's smallest
+// p on 4 drops is 2^-4 = 0.0625, above the 0.05 level, so at that level no term could be taken on
+// such a design. The level is then the smallest p the drops can give: every held-out drop fitted
+// better takes the term; three of four refuse it, saying why.
+Diagnosis SelectOnFourHeldOutDrops(const std::vector<double>& candidate_nrmse) {
+  const std::vector<double> base_nrmse{0.030, 0.028, 0.034, 0.031};
+  Diagnosis d;
+  d.problem.shipped_lambda = 1.1;
+  d.problem.terms.push_back({"depth_exponent", {}, {}});
+  d.floor.noise_ms = kNoise * kNoise;
+  d.floor.ms = d.floor.ms_upper = 0.004 * 0.004;  // the replicates' pure error and its bound
+  d.floor.from_replicates = true;
+  const auto with_gaps = [](CandidateScore c, const std::vector<double>& nrmse) {
+    for (size_t i = 0; i < nrmse.size(); ++i) {
+      DropGap g;
+      g.drop_id = "h" + std::to_string(i);
+      g.held_out = true;
+      g.force_nrmse = nrmse[i];
+      c.gaps.push_back(g);
+    }
+    return c;
+  };
+  d.base = with_gaps(Scored({}, 0.031, 0.0), base_nrmse);
+  const ScoreModel score = [&](const std::vector<std::string>& ids, const FitResult&) {
+    return with_gaps(Scored(ids, 0.0035, -5000.0), candidate_nrmse);
+  };
+  DiagnoseOptions o;
+  o.try_pairs = false;
+  io::Progress progress("diagnose", "fits", 0, {io::ProgressMode::kNone});
+  SelectForward(d, o, score, nullptr, progress);
+  return d;
+}
+
+TEST(DiagnoseSelection, FourHeldOutDropsTakeATermThatFitsEveryOneBetter) {
+  const Diagnosis d = SelectOnFourHeldOutDrops({0.0036, 0.0033, 0.0038, 0.0034});
+  ASSERT_EQ(d.candidates.size(), 1u);
+  EXPECT_EQ(d.candidates[0].step_improvement_p, 1.0 / 16.0);
+  EXPECT_EQ(d.candidates[0].step_improvement_p_min, 1.0 / 16.0);
+  EXPECT_EQ(d.named_effect, "depth_exponent") << d.decision;
+}
+
+TEST(DiagnoseSelection, FourHeldOutDropsRefuseATermThatFitsOneWorse) {
+  const Diagnosis d = SelectOnFourHeldOutDrops({0.0036, 0.0033, 0.0038, 0.0400});
+  ASSERT_EQ(d.candidates.size(), 1u);
+  EXPECT_GT(d.candidates[0].step_improvement_p, 1.0 / 16.0);
+  EXPECT_EQ(d.named_effect, "none") << d.decision;
+  EXPECT_NE(d.decision.find("too few to reach 0.05: every one must fit better"), std::string::npos) << d.decision;
+}
+
 }  // namespace
 }  // namespace touchdown::gap
