@@ -36,8 +36,8 @@ void CalibrateTargets(const CalibrateArgs& args) {
 }
 
 void PrintBekkerFit(const dataset::BekkerFit& fit, const std::string& out) {
-  std::cout << "bekker: n = " << std::setprecision(4) << fit.bekker.n << ", k_c = " << fit.bekker.k_c_N_m_n1 / 1e3
-            << " kN/m^(n+1), k_phi = " << fit.bekker.k_phi_N_m_n2 / 1e3 << " kN/m^(n+2) from " << fit.drops << " drops, "
+  std::cout << "bekker: n = " << std::setprecision(4) << fit.bekker.n << ", k_c = " << fit.bekker.k_c_N_m_n1 / units::kKilo
+            << " kN/m^(n+1), k_phi = " << fit.bekker.k_phi_N_m_n2 / units::kKilo << " kN/m^(n+2) from " << fit.drops << " drops, "
             << fit.samples << " samples, residual RMS " << std::setprecision(3) << fit.residual_rms_N << " N ("
             << fit.pad_sizes << " pad size" << (fit.pad_sizes == 1 ? ": k_c = 0" : "s") << ")\nwrote " << out << "\n";
 }

@@ -7,6 +7,7 @@
 #include "apps/option_checks.h"
 #include "drop_tests/formats/output_path.h"
 #include "drop_tests/scenario/campaign.h"
+#include "rft/units.h"
 
 namespace touchdown::app {
 
@@ -34,8 +35,8 @@ void AddCampaignCommand(CLI::App& app) {
     for (size_t i = 0; i < result.drops.size(); ++i) {
       const auto& r = result.drops[i].result;
       std::cout << std::left << std::setw(28) << scenario.cases[i].drop_id << std::right << std::fixed
-                << std::setprecision(2) << std::setw(12) << r.final_penetration_m * 1e3 << std::setw(14)
-                << r.peak_force_N << std::setw(14) << r.time_to_rest_s * 1e3 << "\n";
+                << std::setprecision(2) << std::setw(12) << r.final_penetration_m * units::kMmPerM << std::setw(14)
+                << r.peak_force_N << std::setw(14) << r.time_to_rest_s * units::kMsPerS << "\n";
     }
     for (const scenario::CheckOutcome& c : scenario::EvaluateChecks(result)) {
       std::cout << c.check.name << " at " << c.check.speed_m_s << " m/s: simulated " << std::setprecision(2)

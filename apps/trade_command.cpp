@@ -7,6 +7,7 @@
 #include "apps/commands.h"
 #include "drop_tests/sweep/trade_run.h"
 #include "rft/physical_limits.h"
+#include "rft/units.h"
 
 namespace touchdown::app {
 
@@ -41,7 +42,7 @@ void AddTradeCommand(CLI::App& app) {
     for (const sweep::TradeRow& r : rows)
       std::cout << std::left << std::setw(12) << r.pad << std::setw(12) << r.soil << std::right << std::fixed
                 << std::setprecision(2) << std::setw(10) << r.impact_speed_m_s << std::setw(12)
-                << r.final_penetration_m * 1e3 << std::setw(12) << r.peak_force_N << std::setw(12)
+                << r.final_penetration_m * units::kMmPerM << std::setw(12) << r.peak_force_N << std::setw(12)
                 << r.mean_conversion_rate_W << std::setw(8) << std::setprecision(2) << r.margin << "  "
                 << (r.pareto ? "*     " : "      ") << (r.best ? "<- best" : "") << "\n";
     int feasible = 0, front = 0;

@@ -27,6 +27,7 @@
 #include "rft/input_error.h"
 #include "rft/input_file.h"
 #include "rft/physical_limits.h"
+#include "rft/units.h"
 
 namespace touchdown::geom {
 
@@ -312,7 +313,7 @@ PreparedMesh LoadTriangleMesh(const std::string& path, const MeshLoadOptions& op
       char text[160];
       std::snprintf(text, sizeof text,
                     "remesh edge length %.6g mm would make about %.3g triangles (at most %.0f): use a longer edge",
-                    options.remesh_edge_m * 1e3, estimate, kMaxRemeshTriangles);
+                    options.remesh_edge_m * units::kMmPerM, estimate, kMaxRemeshTriangles);
       throw Defect(path, text);
     }
     const PreparedMesh remeshed =

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "rft/input_error.h"
+#include "rft/units.h"
 
 namespace touchdown::limits {
 
@@ -35,7 +36,7 @@ inline constexpr Range kDynamicLambda{"(dimensionless)", 0.0, 100.0, false};
 // hardly resolved at all (30 already let a study landing stall, docs/lander_dynamics.md).
 inline constexpr Range kPadSpinToleranceFactor{"(dimensionless)", 1.0, 1000.0, false};
 inline constexpr Range kPadSize_m{"m", 0.0, 10.0, true};                // pad radius, thickness, mesh extent
-inline constexpr Range kPadSize_mm{"mm", 0.0, kPadSize_m.high * 1e3, true};  // the same, as pad YAML gives it
+inline constexpr Range kPadSize_mm{"mm", 0.0, kPadSize_m.high * units::kMmPerM, true};  // the same, as pad YAML gives it
 // Worker threads a run may start (--threads, the Python module's `threads`; 0: every core). Far
 // beyond any machine's cores, and checked before a thread starts: a process that cannot start the
 // threads it asked for ends in std::terminate, not in an error message.

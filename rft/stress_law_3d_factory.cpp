@@ -14,6 +14,7 @@
 #include "rft/physical_limits.h"
 #include "rft/rate_damping_term.h"
 #include "rft/registered_effects_law.h"
+#include "rft/units.h"
 
 namespace touchdown::rft {
 
@@ -70,7 +71,7 @@ void CheckSoilTakesLaw(LawKind law, const SoilParameters& soil, double gravity_m
                            "missing: it is a Bekker soil (law: bekker) and the law here is li2013, which needs "
                            "zeta_N_cm3; use the bekker law with it (a lander's ground.law: bekker) or an RFT soil");
     Require(std::isfinite(soil.zeta_N_m3) && soil.zeta_N_m3 > 0.0, soil, "zeta_N_cm3",
-            "li2013 needs a positive zeta [N/cm^3]", soil.zeta_N_m3 * 1e-6);
+            "li2013 needs a positive zeta [N/cm^3]", soil.zeta_N_m3 * units::kN_cm3_per_N_m3);
     Require(std::isfinite(soil.reference_gravity_m_s2) && soil.reference_gravity_m_s2 > 0.0, soil,
             "reference_gravity_m_s2", "must be positive", soil.reference_gravity_m_s2);
   } else {  // LawKind::kAgarwal2023
@@ -85,9 +86,9 @@ void CheckSoilTakesLaw(LawKind law, const SoilParameters& soil, double gravity_m
     Require(xi_n > 0.0, soil, "internal_friction_angle", "gives a non-positive xi_n", xi_n);
     // The scaling is a cubic in tan(phi), unbounded as phi nears 90 deg: its xi_n meets the range a
     // given zeta must (N/cm^3 in the message, as a soil file gives it).
-    Require(limits::Within(limits::kZeta_N_cm3, xi_n * 1e-6), soil, "internal_friction_angle",
+    Require(limits::Within(limits::kZeta_N_cm3, xi_n * units::kN_cm3_per_N_m3), soil, "internal_friction_angle",
             "the agarwal2023 scaling of this density and friction angle gives xi_n outside 0 to 1e4 N/cm^3",
-            xi_n * 1e-6);
+            xi_n * units::kN_cm3_per_N_m3);
   }
 }
 

@@ -17,6 +17,7 @@
 #include "drop_tests/catalog/catalog.h"
 #include "drop_tests/formats/yaml_fields.h"
 #include "drop_tests/scenario/lander_scenario_file.h"
+#include "rft/units.h"
 
 namespace touchdown::python {
 namespace {
@@ -60,7 +61,7 @@ json YamlJson(const YAML::Node& node) {
   }
 }
 
-json Millimetres(const Eigen::Vector3d& v_m) { return json::array({v_m.x() * 1e3, v_m.y() * 1e3, v_m.z() * 1e3}); }
+json Millimetres(const Eigen::Vector3d& v_m) { return json::array({v_m.x() * units::kMmPerM, v_m.y() * units::kMmPerM, v_m.z() * units::kMmPerM}); }
 
 // A soil as `touchdown` uses it: WriteSoil's text (zeta as a number, every field the file left
 // to its default stated when the writer states it).
@@ -86,7 +87,7 @@ std::string ResolvedPad(const std::string& name_or_path, const std::string& scra
   doc["body"] = {{"mass_kg", b.mass_kg},
                  {"center_of_mass_mm", Millimetres(b.com_B)},
                  {"inertia_kg_m2", inertia},
-                 {"lowest_point_mm", b.lowest_z_B * 1e3},
+                 {"lowest_point_mm", b.lowest_z_B * units::kMmPerM},
                  {"triangles", b.surface.area_m2.size()},
                  {"rim_segments", io::PadRimSegments(pad)}};
   return doc.dump();

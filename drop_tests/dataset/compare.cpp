@@ -315,7 +315,7 @@ std::string DropFigure(const DatasetDrop& m, const DatasetDrop& sim_drop) {
   const std::string sim = io::GnuplotQuote("plots/data/" + m.drop_id + "_simulated.csv");
   const std::string line = io::PadSoilLine(m.pad, m.soil);
   const double end_s = ContactEnd(m.trace, sim_drop.trace);
-  const std::string xrange = end_s > 0.0 ? "set xrange [*:" + io::FormatNumber(1.15 * end_s * 1e3) + "]\n" : "";
+  const std::string xrange = end_s > 0.0 ? "set xrange [*:" + io::FormatNumber(1.15 * end_s * units::kMsPerS) + "]\n" : "";
   const std::string body =
       "set multiplot layout 1,2 title " +
       io::GnuplotQuote(m.drop_id + ": " + m.pad + " on " + io::SoilDisplayName(m.soil) + " (" + rft::AtmosphereName(m.atmosphere) + "), " +
@@ -337,7 +337,7 @@ std::string ParityFigure(const Comparison& c, const fs::path& dir) {
     out << "measured_penetration_mm,simulated_penetration_mm,measured_peak_force_N,simulated_peak_force_N,colour,"
            "point_type\n";
     for (const DropComparison& d : c.drops) {
-      const double v[4] = {d.measured_final_penetration_m * 1e3, d.simulated_final_penetration_m * 1e3,
+      const double v[4] = {d.measured_final_penetration_m * units::kMmPerM, d.simulated_final_penetration_m * units::kMmPerM,
                            d.measured_peak_force_N, d.simulated_peak_force_N};
       for (int k = 0; k < 4; ++k) out << (std::isfinite(v[k]) ? io::FormatNumber(v[k]) : "NaN") << ',';
       for (int k = 0; k < 4; ++k)

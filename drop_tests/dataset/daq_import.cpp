@@ -14,6 +14,7 @@
 #include "drop_tests/formats/dataset_csv.h"
 #include "rft/input_error.h"
 #include "rft/input_file.h"
+#include "rft/units.h"
 
 namespace touchdown::dataset {
 
@@ -158,7 +159,7 @@ ImportedDrop ImportDrop(const DaqMapping& m, const DaqDropEntry& d, DatasetDrop*
 
 std::string Milliseconds(double seconds) {
   std::ostringstream s;
-  s << std::fixed << std::setprecision(3) << seconds * 1e3;
+  s << std::fixed << std::setprecision(3) << seconds * units::kMsPerS;
   return s.str();
 }
 

@@ -7,6 +7,7 @@
 
 #include "drop_tests/formats/dataset_csv.h"
 #include "rft/input_error.h"
+#include "rft/units.h"
 
 namespace touchdown::dataset {
 
@@ -54,7 +55,7 @@ DisplacementPenetration PenetrationFromDisplacement(const std::vector<double>& t
   if (out.speed_m_s < 0 && out.penetration_m.back() < 0)
     throw MakeInputError(source, "displacement",
                          "moves up through the drop (" + io::FormatNumber(out.speed_m_s) + " m/s before touchdown, and it ends " +
-                             io::FormatNumber(-out.penetration_m.back() * 1e3) +
+                             io::FormatNumber(-out.penetration_m.back() * units::kMmPerM) +
                              " mm above where it touched down): positive must be down after the gain (flip its sign?)");
   return out;
 }
@@ -101,7 +102,7 @@ AccelerationPenetration PenetrationFromAcceleration(const std::vector<double>& t
   if (std::abs(out.rest_velocity_m_s) > 0.25 * std::max(std::abs(v0), 0.1))
     throw MakeInputError(source, "acceleration",
                          "v0 + int (a - bias) dt is " + io::FormatNumber(out.rest_velocity_m_s) + " m/s where the pad rests (" +
-                             io::FormatNumber((t[rest] - t0) * 1e3) + " ms after touchdown), not 0: the acceleration must be "
+                             io::FormatNumber((t[rest] - t0) * units::kMsPerS) + " ms after touchdown), not 0: the acceleration must be "
                              "the pad's, positive down (+g in free fall), in m/s^2 after the gain, and impact_speed_m_s its speed "
                              "at touchdown");
   size_t stop = std::upper_bound(t.begin(), t.end(), t0) - t.begin();

@@ -145,12 +145,12 @@ SynthSpec LoadSynthSpec(const std::string& path) {
                    "force_resolution_N", "penetration_resolution_mm"});
     SynthNoise& o = s.noise;
     if (n.Has("force_sigma_N")) o.force_sigma_N = n.NonNegative("force_sigma_N");
-    if (n.Has("penetration_sigma_mm")) o.penetration_sigma_m = n.NonNegative("penetration_sigma_mm") * 1e-3;
+    if (n.Has("penetration_sigma_mm")) o.penetration_sigma_m = n.NonNegative("penetration_sigma_mm") * units::kMm;
     if (n.Has("force_drift_N_s")) o.force_drift_N_s = n.NonNegative("force_drift_N_s");
-    if (n.Has("penetration_drift_mm_s")) o.penetration_drift_m_s = n.NonNegative("penetration_drift_mm_s") * 1e-3;
+    if (n.Has("penetration_drift_mm_s")) o.penetration_drift_m_s = n.NonNegative("penetration_drift_mm_s") * units::kMm;
     if (n.Has("force_resolution_N")) o.force_resolution_N = n.NonNegative("force_resolution_N");
     if (n.Has("penetration_resolution_mm"))
-      o.penetration_resolution_m = n.NonNegative("penetration_resolution_mm") * 1e-3;
+      o.penetration_resolution_m = n.NonNegative("penetration_resolution_mm") * units::kMm;
   }
   if (f.Has("hidden_effect")) {
     const io::YamlFields h = f.Child("hidden_effect");
@@ -158,9 +158,9 @@ SynthSpec LoadSynthSpec(const std::string& path) {
     if (id == "floor_stiffening") {
       h.RequireOnly({"id", "bed_depth_mm", "bulb_depth_mm", "influence_mm"});
       FloorStiffening fl;
-      fl.bed_depth_m = h.PositiveOr("bed_depth_mm", 150.0) * 1e-3;
-      fl.bulb_depth_m = h.PositiveOr("bulb_depth_mm", 100.0) * 1e-3;
-      fl.influence_m = h.PositiveOr("influence_mm", 15.0) * 1e-3;
+      fl.bed_depth_m = h.PositiveOr("bed_depth_mm", 150.0) * units::kMm;
+      fl.bulb_depth_m = h.PositiveOr("bulb_depth_mm", 100.0) * units::kMm;
+      fl.influence_m = h.PositiveOr("influence_mm", 15.0) * units::kMm;
       s.floor = fl;
     } else {
       YAML::Node params(YAML::NodeType::Map);
@@ -288,11 +288,11 @@ void WriteSpecYaml(const SynthSpec& s, YAML::Emitter& y, bool with_truth) {
     << s.drops.size();
   y << YAML::Key << "sensor_sampling" << YAML::Value << SensorSamplingName(s.sensor_sampling);
   y << YAML::Key << "noise" << YAML::Value << YAML::BeginMap << YAML::Key << "force_sigma_N" << YAML::Value
-    << s.noise.force_sigma_N << YAML::Key << "penetration_sigma_mm" << YAML::Value << s.noise.penetration_sigma_m * 1e3
+    << s.noise.force_sigma_N << YAML::Key << "penetration_sigma_mm" << YAML::Value << s.noise.penetration_sigma_m * units::kMmPerM
     << YAML::Key << "force_drift_N_s" << YAML::Value << s.noise.force_drift_N_s << YAML::Key
-    << "penetration_drift_mm_s" << YAML::Value << s.noise.penetration_drift_m_s * 1e3 << YAML::Key
+    << "penetration_drift_mm_s" << YAML::Value << s.noise.penetration_drift_m_s * units::kMmPerM << YAML::Key
     << "force_resolution_N" << YAML::Value << s.noise.force_resolution_N << YAML::Key << "penetration_resolution_mm"
-    << YAML::Value << s.noise.penetration_resolution_m * 1e3 << YAML::EndMap;
+    << YAML::Value << s.noise.penetration_resolution_m * units::kMmPerM << YAML::EndMap;
   if (with_truth) {
     y << YAML::Key << "true_zeta_N_cm3" << YAML::Value << YAML::BeginMap;
     for (const auto& [soil, zeta] : s.true_zeta_N_m3) y << YAML::Key << soil << YAML::Value << units::ZetaToN_cm3(zeta);
@@ -300,9 +300,9 @@ void WriteSpecYaml(const SynthSpec& s, YAML::Emitter& y, bool with_truth) {
     if (s.hidden_effect) y << model::EffectsToYaml({*s.hidden_effect});
     else if (s.floor)
       y << YAML::BeginMap << YAML::Key << "floor_stiffening (outside the library)" << YAML::Value << YAML::BeginMap
-        << YAML::Key << "bed_depth_mm" << YAML::Value << s.floor->bed_depth_m * 1e3 << YAML::Key << "bulb_depth_mm"
-        << YAML::Value << s.floor->bulb_depth_m * 1e3 << YAML::Key << "influence_mm" << YAML::Value
-        << s.floor->influence_m * 1e3 << YAML::EndMap << YAML::EndMap;
+        << YAML::Key << "bed_depth_mm" << YAML::Value << s.floor->bed_depth_m * units::kMmPerM << YAML::Key << "bulb_depth_mm"
+        << YAML::Value << s.floor->bulb_depth_m * units::kMmPerM << YAML::Key << "influence_mm" << YAML::Value
+        << s.floor->influence_m * units::kMmPerM << YAML::EndMap << YAML::EndMap;
     else y << "none";
   }
   y << YAML::EndMap;
@@ -323,8 +323,8 @@ void WriteSyntheticDataset(const SynthSpec& spec, const Dataset& dataset, const 
           << "\n- sampling: " << spec.sample_rate_hz << " Hz, seed " << spec.seed
           << "\n- noise: load cell sigma " << spec.noise.force_sigma_N << " N, drift sigma "
           << spec.noise.force_drift_N_s << " N/s, resolution " << spec.noise.force_resolution_N
-          << " N; displacement sigma " << spec.noise.penetration_sigma_m * 1e3 << " mm, drift sigma "
-          << spec.noise.penetration_drift_m_s * 1e3 << " mm/s, resolution " << spec.noise.penetration_resolution_m * 1e3
+          << " N; displacement sigma " << spec.noise.penetration_sigma_m * units::kMmPerM << " mm, drift sigma "
+          << spec.noise.penetration_drift_m_s * units::kMmPerM << " mm/s, resolution " << spec.noise.penetration_resolution_m * units::kMmPerM
           << " mm\n\nsynthetic.yaml holds the generator settings; synthetic_truth.yaml the hidden effect and "
           << "true soils (for checking a diagnosis; `touchdown diagnose` never reads it).\n";
     });

@@ -9,6 +9,7 @@
 #include "drop_tests/formats/vtk_series.h"
 #include "rft/bekker_law.h"
 #include "rft/element_stresses.h"
+#include "rft/units.h"
 
 namespace touchdown::drop {
 
@@ -35,7 +36,7 @@ io::CraterSurface Crater(const pad::FreeDropResult& r, const io::PadSurfaceMesh&
     hi = hi.cwiseMax(s.p_WB.head<2>());
   }
   const int step_mm = io::CraterSurface::StepFor(radius);
-  const double margin = radius + 2.0 * step_mm / 1000.0;
+  const double margin = radius + 2.0 * step_mm / units::kMmPerM;
   return io::CraterSurface(ground, lo.array() - margin, hi.array() + margin, step_mm);
 }
 }  // namespace

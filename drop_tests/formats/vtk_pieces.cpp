@@ -1,4 +1,5 @@
 #include "drop_tests/formats/vtk_pieces.h"
+#include "rft/units.h"
 
 #include <algorithm>
 #include <array>
@@ -83,7 +84,7 @@ VtkPolyData SoilSurfacePiece(const rft::GroundSurface& ground, const Eigen::Vect
 CraterSurface::CraterSurface(const rft::GroundSurface& ground, const Eigen::Vector2d& lo_W, const Eigen::Vector2d& hi_W,
                              int step_mm)
     : step_mm_(step_mm) {
-  const double step = step_mm / 1000.0;
+  const double step = step_mm / units::kMmPerM;
   i0_ = static_cast<int>(std::floor(lo_W.x() / step));
   j0_ = static_cast<int>(std::floor(lo_W.y() / step));
   nx_ = std::max(1, static_cast<int>(std::ceil(hi_W.x() / step)) - i0_);
@@ -95,11 +96,11 @@ CraterSurface::CraterSurface(const rft::GroundSurface& ground, const Eigen::Vect
 }
 
 int CraterSurface::StepFor(double pad_radius_m) {
-  return std::max(1, static_cast<int>(std::lround(pad_radius_m * 1000.0 / 14.0)));
+  return std::max(1, static_cast<int>(std::lround(pad_radius_m * units::kMmPerM / 14.0)));
 }
 
 void CraterSurface::Press(const PadSurfaceMesh& mesh, const Eigen::Matrix3d& R_WB, const Eigen::Vector3d& p_WB) {
-  const double step = step_mm_ / 1000.0;
+  const double step = step_mm_ / units::kMmPerM;
   const Eigen::Matrix3Xd p_W = (R_WB * mesh.points_B).colwise() + p_WB;
   // Each triangle's plane over the grid points inside its projection; walls seen edge-on (no
   // projected area) are skipped, their neighbours cover their points.

@@ -12,6 +12,7 @@
 #include "rft/element_stresses.h"
 #include "rft/ground.h"
 #include "rft/surface_elements.h"
+#include "rft/units.h"
 
 namespace touchdown::io {
 
@@ -66,8 +67,8 @@ class CraterSurface {
   static int StepFor(double pad_radius_m);
 
  private:
-  double X(int i) const { return (i0_ + i) * step_mm_ / 1000.0; }
-  double Y(int j) const { return (j0_ + j) * step_mm_ / 1000.0; }
+  double X(int i) const { return (i0_ + i) * step_mm_ / units::kMmPerM; }
+  double Y(int j) const { return (j0_ + j) * step_mm_ / units::kMmPerM; }
   int Index(int i, int j) const { return j * (nx_ + 1) + i; }
   int step_mm_, i0_, j0_, nx_, ny_;
   std::vector<double> surface_z_, z_;

@@ -44,7 +44,7 @@ Eigen::VectorXd StartingPoint(const FitProblem& p, const Layout& L, const FitRes
   const dataset::SensorModel& sensor = start && start->sensor.HasFilters() ? start->sensor : p.sensor;
   if (p.sensor_fit.cutoff) x[k++] = sensor.lowpass_cutoff_hz / SampleRate(p);
   if (p.sensor_fit.load_cell) {
-    x[k++] = sensor.load_cell_hz / 1e3;
+    x[k++] = sensor.load_cell_hz / units::kKilo;
     x[k++] = sensor.load_cell_damping;
   }
   if (p.sensor_fit.offsets) {

@@ -11,6 +11,7 @@
 #include "drop_tests/formats/output_path.h"
 #include "drop_tests/formats/plot_runner.h"
 #include "drop_tests/util/percentile.h"
+#include "rft/units.h"
 
 namespace touchdown::gap {
 
@@ -174,7 +175,7 @@ std::vector<ResidualBand> ResidualBands(const std::vector<ResidualSample>& sampl
   }
   for (int b = 0; b < bins; ++b) {
     if (base[b].size() < 5) continue;
-    out.push_back({(t_lo + (b + 0.5) * width) * 1e3, Percentiles(base[b]), Percentiles(aug[b]), base[b].size()});
+    out.push_back({(t_lo + (b + 0.5) * width) * units::kMsPerS, Percentiles(base[b]), Percentiles(aug[b]), base[b].size()});
   }
   return out;
 }

@@ -199,8 +199,8 @@ ResidualPanels WriteResiduals(const Diagnosis& d, const dataset::Dataset& ds, co
     for (const size_t k : io::PlotRowsToKeep(m.trace.size(), 2, plotted)) {
       residual_rows << io::FormatNumber(m.trace.t_s[k]) << ',' << io::FormatNumber(residual(*b, k)) << ','
                     << io::FormatNumber(residual(*a, k)) << ',' << rft::AtmosphereName(m.atmosphere) << '\n';
-      extend(m.trace.t_s[k] * 1e3, residual(*b, k));
-      extend(m.trace.t_s[k] * 1e3, residual(*a, k));
+      extend(m.trace.t_s[k] * units::kMsPerS, residual(*b, k));
+      extend(m.trace.t_s[k] * units::kMsPerS, residual(*a, k));
     }
     residual_rows << '\n';
   }
@@ -357,8 +357,8 @@ void WriteReport(const Diagnosis& d, const dataset::Dataset& ds, const Candidate
       for (size_t s = 0; s < d.problem.soils.size(); ++s) {
         const ParameterEstimate& b = d.base.fit.estimates[s];
         const rft::BekkerParameters& k = d.bekker_base[s].bekker;
-        out << "| " << d.problem.soils[s].name << " | " << Num(k.n) << " | " << Num(k.k_c_N_m_n1 / 1e3) << " | "
-            << Num(k.k_phi_N_m_n2 / 1e3) << " | " << Num(b.value) << " | [" << Num(b.low) << ", " << Num(b.high)
+        out << "| " << d.problem.soils[s].name << " | " << Num(k.n) << " | " << Num(k.k_c_N_m_n1 / units::kKilo) << " | "
+            << Num(k.k_phi_N_m_n2 / units::kKilo) << " | " << Num(b.value) << " | [" << Num(b.low) << ", " << Num(b.high)
             << "] | " << Num(after.fit.estimates[s].value) << " |\n";
       }
     } else {

@@ -201,8 +201,8 @@ nlohmann::json DiagnosisJson(const Diagnosis& d) {
       const dataset::BekkerFit& f = d.bekker_base[s];
       soils.push_back({{"soil", d.problem.soils[s].name},
                        {"n", f.bekker.n},
-                       {"k_c_kN_m_n1", f.bekker.k_c_N_m_n1 / 1e3},
-                       {"k_phi_kN_m_n2", f.bekker.k_phi_N_m_n2 / 1e3},
+                       {"k_c_kN_m_n1", f.bekker.k_c_N_m_n1 / units::kKilo},
+                       {"k_phi_kN_m_n2", f.bekker.k_phi_N_m_n2 / units::kKilo},
                        {"modulus_scale_fitted", d.base.fit.zeta_N_m3[s]},
                        {"training_drops", f.drops},
                        {"method", f.method}});

@@ -8,6 +8,7 @@
 #include "drop_tests/drop/drop_factory.h"
 #include "drop_tests/util/work_pool.h"
 #include "lander/pad/effect_soil_response.h"
+#include "rft/units.h"
 
 namespace touchdown::gap::fit {
 
@@ -50,7 +51,7 @@ ModelValues Unscale(const FitProblem& p, const Layout& L, const Eigen::VectorXd&
   m.sensor = p.sensor;
   if (p.sensor_fit.cutoff) m.sensor.lowpass_cutoff_hz = x[k++] * SampleRate(p);
   if (p.sensor_fit.load_cell) {
-    m.sensor.load_cell_hz = x[k++] * 1e3;
+    m.sensor.load_cell_hz = x[k++] * units::kKilo;
     m.sensor.load_cell_damping = x[k++];
   }
   if (p.sensor_fit.offsets) {
@@ -80,7 +81,7 @@ void Bounds(const FitProblem& p, const Layout& L, Eigen::VectorXd* lo, Eigen::Ve
   if (p.sensor_fit.load_cell) {
     // 100 Hz to 5 kHz, and under the Nyquist frequency: a ring above it aliases, and a fit there
     // follows the noise.
-    (*lo)[k] = 0.1, (*hi)[k] = std::min(5.0, 0.5 * SampleRate(p) / 1e3), ++k;
+    (*lo)[k] = 0.1, (*hi)[k] = std::min(5.0, 0.5 * SampleRate(p) / units::kKilo), ++k;
     (*lo)[k] = 0.005, (*hi)[k] = 0.9, ++k;
   }
   if (p.sensor_fit.offsets) {  // sensor_offset's ranges: 50 ms and 50 mm

@@ -12,6 +12,7 @@
 #include "lander/integ/cvode_integrator.h"
 #include "lander/pad/effect_soil_response.h"
 #include "rft/input_error.h"
+#include "rft/units.h"
 
 namespace touchdown::gap {
 
@@ -141,8 +142,8 @@ nlohmann::json LawCandidateJson(const LawCandidate& c) {
   for (const dataset::BekkerFit& f : c.fits)
     fits.push_back({{"soils", f.soils},
                     {"n", f.bekker.n},
-                    {"k_c_kN_m_n1", f.bekker.k_c_N_m_n1 / 1e3},
-                    {"k_phi_kN_m_n2", f.bekker.k_phi_N_m_n2 / 1e3},
+                    {"k_c_kN_m_n1", f.bekker.k_c_N_m_n1 / units::kKilo},
+                    {"k_phi_kN_m_n2", f.bekker.k_phi_N_m_n2 / units::kKilo},
                     {"training_drops", f.drops},
                     {"residual_rms_N", f.residual_rms_N},
                     {"method", f.method}});

@@ -155,7 +155,7 @@ struct PadSummary {
 };
 PadSummary SummaryOf(const io::PadSpec& pad) {
   if (!pad.is_axisymmetric()) return {pad.mass_kg, 0.0, 0.0, 0.0};
-  return {pad.mass_kg, pad.profile.radius_m() * 1e3, pad.profile.thickness_m() * 1e3,
+  return {pad.mass_kg, pad.profile.radius_m() * units::kMmPerM, pad.profile.thickness_m() * units::kMmPerM,
           static_cast<double>(pad.profile.points.size())};
 }
 const io::FieldTable<PadSummary>& PadSummaryFields() {

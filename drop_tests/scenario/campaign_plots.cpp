@@ -15,6 +15,7 @@
 #include "drop_tests/formats/figure_style.h"
 #include "drop_tests/formats/output_path.h"
 #include "drop_tests/formats/plot_runner.h"
+#include "rft/units.h"
 
 namespace touchdown::scenario {
 
@@ -55,7 +56,7 @@ std::vector<Stroke> DenseStrokes(const CampaignResult& r, const fs::path& dir) {
       out << "t_ms,penetration_mm,force_N\n" << std::setprecision(6);  // a figure's resolution
       for (const pad::DropSample& s : d.result.trace) {
         if (s.t_s > kStrokeWindow * t_stop_max) break;
-        out << s.t_s * 1e3 << ',' << s.penetration_m * 1e3 << ',' << s.force_N << '\n';
+        out << s.t_s * units::kMsPerS << ',' << s.penetration_m * units::kMmPerM << ',' << s.force_N << '\n';
       }
     });
     strokes.push_back({file, c->pad->name, c->soil.name, d.result.time_to_rest_s});
@@ -70,7 +71,7 @@ std::string StrokePlot(const std::vector<Stroke>& strokes, const std::string& co
   for (size_t i = 0; i < strokes.size(); ++i) {
     const Stroke& k = strokes[i];
     s << (i ? ", \\\n     " : "") << io::GnuplotQuote(k.file) << " skip 1 using ";
-    if (stroke_only) s << "($1 <= " << k.t_stop_s * 1e3 << " ? $2 : 1/0):3";  // force on penetration up to the stop
+    if (stroke_only) s << "($1 <= " << k.t_stop_s * units::kMsPerS << " ? $2 : 1/0):3";  // force on penetration up to the stop
     else s << columns;
     s << " with lines " << io::PadSoilLine(k.pad, k.soil) << " title " << io::GnuplotQuote(Label(k.pad, k.soil));
   }
@@ -85,7 +86,7 @@ std::string TimeHistories(const std::vector<Stroke>& strokes, const std::string&
   body << "set multiplot layout 2,1 margins 0.08, 0.98, 0.1, 0.87 spacing 0, 0.1 title 'Time histories at " << speed
        << " m/s (t = 0 at touchdown)'\n"
        << "set key at screen 0.5, screen 0.935 center top horizontal Left reverse samplen 3 width -1\nset xrange [0:"
-       << std::max(kStrokeWindow * t_stop_max * 1e3, 1.0) << "]\nset xlabel 't [ms]'\nset ylabel 'force on pad [N]'\n"
+       << std::max(kStrokeWindow * t_stop_max * units::kMsPerS, 1.0) << "]\nset xlabel 't [ms]'\nset ylabel 'force on pad [N]'\n"
        << "set yrange [0:*]\n" << StrokePlot(strokes, "1:3", false)
        << "unset key\nset ylabel 'penetration [mm] (down)'\nset yrange [0:*] reverse\n" << StrokePlot(strokes, "1:2", false)
        << "unset multiplot\n";
@@ -155,7 +156,7 @@ std::string Peaks(const CampaignResult& r, const fs::path& dir) {
             continue;
           out << io::FormatNumber(i + (k - 0.5 * (speeds.size() - 1.0)) * width) << ',' << c.drop_id << ','
               << io::FormatNumber(speeds[k]) << ',' << io::FormatNumber(r.drops[j].result.peak_force_N) << ','
-              << io::FormatNumber(r.drops[j].result.final_penetration_m * 1e3) << ','
+              << io::FormatNumber(r.drops[j].result.final_penetration_m * units::kMmPerM) << ','
               << Shade(io::PadColour(c.pad->name), weight(k)) << ',' << (Hatched(c.soil.name) ? 1 : 0) << '\n';
         }
   });

@@ -66,7 +66,7 @@ std::string StopStiffnessProblem(const LanderSpec& s) {
   std::snprintf(text, sizeof text,
                 "must be at most %.3g N m/rad for this pad, got %.6g (the pad would ring on its stop faster than %g "
                 "kHz, which the integrator resolves step by step: lander::MaxStopStiffness)",
-                k_max, s.layout.cone->stiffness_N_m_rad, lander::kMaxStopRingingHz / 1e3);
+                k_max, s.layout.cone->stiffness_N_m_rad, lander::kMaxStopRingingHz / units::kKilo);
   return text;
 }
 }  // namespace

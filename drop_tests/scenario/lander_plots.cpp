@@ -87,10 +87,10 @@ Window ContactWindow(const lander::LanderRunResult& r) {
     if (e.kind == lander::LanderEventKind::kTouchdown && !(e.t_s >= first)) first = e.t_s;
     if (e.kind == lander::LanderEventKind::kRest || e.kind == lander::LanderEventKind::kTipOver) last = e.t_s;
   }
-  if (!std::isfinite(first)) return {0.0, last * 1e3};  // never touched down: the whole run
+  if (!std::isfinite(first)) return {0.0, last * units::kMsPerS};  // never touched down: the whole run
   const double span = std::max(last - first, 1e-3);
   const double end = r.trace.empty() ? last : r.trace.back().t_s;
-  return {std::max(0.0, first - 0.1 * span) * 1e3, std::min(end, last + 0.25 * span) * 1e3};
+  return {std::max(0.0, first - 0.1 * span) * units::kMsPerS, std::min(end, last + 0.25 * span) * units::kMsPerS};
 }
 
 // The columns' values inside the window, per column (row order).
@@ -98,7 +98,7 @@ std::vector<std::vector<double>> InWindow(const LanderSpec& lander, const std::v
                                           const Window& w, size_t first_column, size_t count) {
   std::vector<std::vector<double>> v(count);
   for (const lander::LanderSample& s : trace) {
-    const double t = s.t_s * 1e3;
+    const double t = s.t_s * units::kMsPerS;
     if (t < w.from_ms || t > w.to_ms) continue;
     for (size_t c = 0; c < count; ++c) v[c].push_back(PlottedValue(lander, s, first_column + c));
   }
@@ -219,7 +219,7 @@ std::string EventMarkers(const lander::LanderRunResult& r, const std::string& re
       if (captures_at.empty() || captures_at.back().first != e.t_s) captures_at.push_back({e.t_s, {}});
       captures_at.back().second.push_back(e.leg);
     }
-  const std::string t = io::FormatNumber(rest->t_s * 1e3);
+  const std::string t = io::FormatNumber(rest->t_s * units::kMsPerS);
   std::string s;
   double y = 0.9;
   for (const auto& [t_s, legs] : captures_at) {
@@ -227,9 +227,9 @@ std::string EventMarkers(const lander::LanderRunResult& r, const std::string& re
     for (size_t k = 0; k < legs.size(); ++k)
       pads += (k == 0 ? "" : k + 1 == legs.size() ? " and " : ", ") + std::to_string(legs[k] + 1);
     std::ostringstream at;
-    at << std::setprecision(5) << t_s * 1e3;
+    at << std::setprecision(5) << t_s * units::kMsPerS;
     const std::string id = std::to_string(10 + legs.front());
-    s += line(10 + legs.front(), io::FormatNumber(t_s * 1e3)) + "set label " + id + " \"" + pads + " held\\nat " + at.str() +
+    s += line(10 + legs.front(), io::FormatNumber(t_s * units::kMsPerS)) + "set label " + id + " \"" + pads + " held\\nat " + at.str() +
          " ms\" at first " + t + ", graph " + io::FormatNumber(y) + " left offset 0.5,0 textcolor rgb '#606060' front\n";
     y -= 0.22;
   }
@@ -350,7 +350,7 @@ void WriteLanderPlots(const LanderRun& run, const std::string& out_dir) {
   xrange << std::setprecision(6) << "[" << w.from_ms << ":" << w.to_ms << "]";
   // About a dozen marks per trace across the window, whatever the decimation kept.
   const auto in_window = std::count_if(rows.begin(), rows.end(), [&](size_t k) {
-    const double t = trace[k].t_s * 1e3;
+    const double t = trace[k].t_s * units::kMsPerS;
     return t >= w.from_ms && t <= w.to_ms;
   });
   const PlotFrame frame{run, w, xrange.str(), std::max(1, static_cast<int>(in_window / 12))};

@@ -279,7 +279,7 @@ void WriteLanderBlock(YAML::Emitter& y, const LanderSpec& l, const FileName& fil
   y << YAML::BeginMap << YAML::Key << "name" << YAML::Value << l.name << YAML::Key << "file" << YAML::Value
     << file(l.source) << YAML::Key << "total_mass_kg" << YAML::Value << l.total_mass_kg << YAML::Key
     << "body_mass_kg" << YAML::Value << l.body_mass_kg << YAML::Key << "cog_height_mm" << YAML::Value
-    << l.cog_height_m * 1e3 << YAML::Key << "body_inertia_kg_m2" << YAML::Value << YAML::Flow << YAML::BeginSeq;
+    << l.cog_height_m * units::kMmPerM << YAML::Key << "body_inertia_kg_m2" << YAML::Value << YAML::Flow << YAML::BeginSeq;
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 3; ++c) y << l.body_inertia_B(r, c);
   y << YAML::EndSeq << YAML::Key << "pad" << YAML::Value << YAML::BeginMap << YAML::Key << "name" << YAML::Value
@@ -287,7 +287,7 @@ void WriteLanderBlock(YAML::Emitter& y, const LanderSpec& l, const FileName& fil
     << l.pad.body.mass_kg << YAML::Key << "triangles" << YAML::Value << l.pad.body.surface.size() << YAML::Key
     << "com_from_joint_mm" << YAML::Value;
   WriteVector(y, l.pad.body.com_B, 1e3);
-  y << YAML::Key << "lowest_point_from_joint_mm" << YAML::Value << l.pad.body.lowest_z_B * 1e3 << YAML::EndMap;
+  y << YAML::Key << "lowest_point_from_joint_mm" << YAML::Value << l.pad.body.lowest_z_B * units::kMmPerM << YAML::EndMap;
   y << YAML::Key << "legs" << YAML::Value << YAML::BeginSeq;
   for (int i = 0; i < lander::kNumLegs; ++i) {
     const LanderLegSpec& leg = l.legs[i];

@@ -8,6 +8,7 @@
 #include "drop_tests/formats/vtk_series.h"
 #include "drop_tests/scenario/lander_leg_load.h"
 #include "rft/element_stresses.h"
+#include "rft/units.h"
 
 namespace touchdown::scenario {
 
@@ -116,7 +117,7 @@ std::vector<io::CraterSurface> Craters(const LanderRun& run) {
         hi = hi.cwiseMax(s.p_WJ[i].head<2>());
       }
     const int step_mm = io::CraterSurface::StepFor(PadRadius(run, i));
-    const double margin = PadRadius(run, i) + 2.0 * step_mm / 1000.0;
+    const double margin = PadRadius(run, i) + 2.0 * step_mm / units::kMmPerM;
     craters.emplace_back(*run.setup.terrain.surface, lo.array() - margin, hi.array() + margin, step_mm);
   }
   return craters;

@@ -12,6 +12,7 @@
 #include "drop_tests/formats/dataset_csv.h"
 #include "drop_tests/formats/yaml_fields.h"
 #include "rft/input_error.h"
+#include "rft/units.h"
 
 namespace touchdown::sweep {
 
@@ -35,7 +36,7 @@ TradeLimits LoadTradeLimits(const std::string& sweep_file) {
   if (!f.Has("trade")) return limits;
   const io::YamlFields t = f.Child("trade");
   t.RequireOnly({"allowable_final_penetration_mm", "allowable_peak_force_N", "max_pad_mass_kg"});
-  if (t.Has("allowable_final_penetration_mm")) limits.max_final_penetration_m = t.Positive("allowable_final_penetration_mm") * 1e-3;
+  if (t.Has("allowable_final_penetration_mm")) limits.max_final_penetration_m = t.Positive("allowable_final_penetration_mm") * units::kMm;
   if (t.Has("allowable_peak_force_N")) limits.max_peak_force_N = t.Positive("allowable_peak_force_N");
   if (t.Has("max_pad_mass_kg")) limits.max_pad_mass_kg = t.Positive("max_pad_mass_kg");
   return limits;

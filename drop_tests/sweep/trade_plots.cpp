@@ -15,6 +15,7 @@
 #include "drop_tests/formats/plot_runner.h"
 #include "drop_tests/sweep/trade.h"
 #include "drop_tests/util/percentile.h"
+#include "rft/units.h"
 
 namespace touchdown::sweep {
 
@@ -178,7 +179,7 @@ std::string SpeedFigure(const std::vector<Series>& series, const TradeLimits& li
   // tics or label).
   return "set multiplot title " + io::GnuplotQuote(title) + "\nset xlabel 'impact speed [m/s]'\nunset key\n" +
          SpeedTics(series) + panel_size + origin("0") + "set ylabel 'final penetration [mm]'\n" +
-         panel(2, "*1000", limits.max_final_penetration_m * 1e3) + origin("0.333") + "set ylabel 'peak force [N]'\n" +
+         panel(2, "*1000", limits.max_final_penetration_m * units::kMmPerM) + origin("0.333") + "set ylabel 'peak force [N]'\n" +
          panel(3, "", limits.max_peak_force_N) + origin("0.666") + "set ylabel 'energy-conversion rate [W]'\n" +
          panel(4, "", INFINITY) + (series.empty() ? std::string() : SpeedKey(series, limits.any(), strip)) +
          "unset multiplot\n";
@@ -207,7 +208,7 @@ std::vector<Front> WriteFronts(const std::vector<TradeRow>& rows, const std::str
       for (const TradeRow* r : list)
         out << io::FormatNumber(r->final_penetration_m) << ',' << io::FormatNumber(r->peak_force_N) << ',' << r->pad << '\n';
     });
-    files.push_back({file, SpeedText(speed) + " m/s", list.back()->final_penetration_m * 1e3, list.back()->peak_force_N});
+    files.push_back({file, SpeedText(speed) + " m/s", list.back()->final_penetration_m * units::kMmPerM, list.back()->peak_force_N});
   }
   return files;
 }
@@ -246,10 +247,10 @@ std::string ParetoRanges(const std::vector<TradeRow>& rows, const TradeLimits& l
   double mm = 0.0, newton = 0.0;
   for (const TradeRow& r : rows)
     if (r.drops != r.failed) {
-      mm = std::max(mm, r.final_penetration_m * 1e3);
+      mm = std::max(mm, r.final_penetration_m * units::kMmPerM);
       newton = std::max(newton, r.peak_force_N);
     }
-  if (std::isfinite(limits.max_final_penetration_m)) mm = std::max(mm, limits.max_final_penetration_m * 1e3);
+  if (std::isfinite(limits.max_final_penetration_m)) mm = std::max(mm, limits.max_final_penetration_m * units::kMmPerM);
   if (std::isfinite(limits.max_peak_force_N)) newton = std::max(newton, limits.max_peak_force_N);
   return (mm > 0.0 ? "set xrange [0:" + io::FormatNumber(io::AxisTopPast(mm)) + "]\n" : "") +
          (newton > 0.0 ? "set yrange [0:" + io::FormatNumber(io::AxisTopPast(newton)) + "]\n" : "");
@@ -274,7 +275,7 @@ std::string ParetoFigure(const std::vector<Series>& series, const std::vector<Tr
   // The allowable region (lower left, inside the limits) shaded in every panel.
   if (std::isfinite(limits.max_final_penetration_m) || std::isfinite(limits.max_peak_force_N))
     body += "set object 1 rect from graph 0, graph 0 to " +
-            (std::isfinite(limits.max_final_penetration_m) ? "first " + io::FormatNumber(limits.max_final_penetration_m * 1e3)
+            (std::isfinite(limits.max_final_penetration_m) ? "first " + io::FormatNumber(limits.max_final_penetration_m * units::kMmPerM)
                                                            : std::string("graph 1")) +
             ", " +
             (std::isfinite(limits.max_peak_force_N) ? "first " + io::FormatNumber(limits.max_peak_force_N)

@@ -5,13 +5,14 @@
 
 #include "drop_tests/drop/force_request.h"
 #include "rft/contact_wrench.h"
+#include "rft/units.h"
 
 namespace touchdown::validation {
 
 double StaticBearingPressure(const io::PadSpec& flat_pad, const rft::SoilParameters& soil, double gravity_m_s2,
                              double depth_m, double diameter_m) {
   // Area-preserving rims: the meshed bottom has the bearing area the pressure is taken over.
-  const io::PadSpec pad = io::FlatPadWithRadius(flat_pad, 0.5 * diameter_m * 1e3, geom::RimPolygon::kAreaPreserving);
+  const io::PadSpec pad = io::FlatPadWithRadius(flat_pad, 0.5 * diameter_m * units::kMmPerM, geom::RimPolygon::kAreaPreserving);
   rft::SoilParameters quasi_static = soil;
   quasi_static.dynamic_term = false;  // a static test: lambda rho v^2 vanishes at zero speed
   rft::PadKinematics k;

@@ -20,6 +20,7 @@
 #include "lander/integ/cvode_integrator.h"
 #include "lander/pad/release.h"
 #include "rft/input_error.h"
+#include "rft/units.h"
 
 namespace touchdown::validation {
 
@@ -69,7 +70,7 @@ class SourceRunner {
       // Name the drop: the source, the variant and its conditions.
       throw integ::IntegrationFailure(source_.id + ", " + v.Name() + ", impact speed " + std::to_string(speed_m_s) +
                                       " m/s, gravity " + std::to_string(gravity_m_s2) + " m/s^2, zeta " +
-                                      std::to_string(zeta_N_m3 * 1e-6) + " N/cm^3: " + e.what());
+                                      std::to_string(zeta_N_m3 * units::kN_cm3_per_N_m3) + " N/cm^3: " + e.what());
     }
   }
 

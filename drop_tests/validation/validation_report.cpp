@@ -44,7 +44,7 @@ nlohmann::json PointJson(const SourceResult& r, const PointResult& p) {
                    {"how", ProvenanceName(p.point->how)},
                    {"where", p.point->where},
                    {"fitted", r.source->zeta_route == ZetaRoute::kCalibratedOn && p.point->id == r.source->calibrated_on}};
-  if (p.point->drop_height_m) j["drop_height_mm"] = *p.point->drop_height_m * 1e3;
+  if (p.point->drop_height_m) j["drop_height_mm"] = *p.point->drop_height_m * units::kMmPerM;
   for (size_t k = 0; k < r.variants.size(); ++k)
     j["simulated"][r.variants[k].Name()] = {{"value", io::FiniteOrNull(p.simulated[k] * f)},
                                             {"relative_error", io::FiniteOrNull(p.relative_error[k])}};
@@ -179,7 +179,7 @@ void TrendsTable(std::ostringstream& md, const SourceResult& r) {
 
 std::string BearingCell(const BearingResult& b, size_t k) {
   const RangeComparison& c = b.comparison[k];
-  return Fixed(b.simulated_Pa[k].low * 1e-4, 2) + "-" + Fixed(b.simulated_Pa[k].high * 1e-4, 2) + " (" +
+  return Fixed(b.simulated_Pa[k].low * units::kN_cm2_per_Pa, 2) + "-" + Fixed(b.simulated_Pa[k].high * units::kN_cm2_per_Pa, 2) + " (" +
          RangeAgreementName(c.agreement) +
          (c.agreement == RangeAgreement::kOutside ? ", " + Percent(c.relative_distance) : std::string()) + ")";
 }
@@ -227,7 +227,7 @@ std::string ValidationMarkdown(const ValidationResult& result) {
   for (const SourceResult& r : result.sources) {
     const ValidationSource& s = *r.source;
     md << "### " << s.id << "\n\n" << s.citation << "\n\n- projectile: " << s.projectile << " (pad `" << s.pad.name
-       << "`, " << Fixed(s.pad.mass_kg * 1e3, 1) << " g)\n- medium: " << s.medium << " (soil `" << s.soil.name
+       << "`, " << Fixed(s.pad.mass_kg * units::kGPerKg, 1) << " g)\n- medium: " << s.medium << " (soil `" << s.soil.name
        << "`)\n- gravity: " << s.gravity_m_s2 << " m/s^2" << (s.low_gravity ? " (low-gravity source)" : "")
        << "\n- zeta: " << ZetaRouteText(s) << ";";
     for (size_t k = 0; k < r.variants.size(); ++k)
@@ -272,7 +272,7 @@ std::string ValidationSummary(const ValidationResult& result) {
     }
     for (const BearingResult& b : r.bearings) {
       out << "  " << std::left << std::setw(14) << b.bearing->id << std::right << " measured "
-          << Fixed(b.bearing->pressure_Pa.low * 1e-4, 2) << "-" << Fixed(b.bearing->pressure_Pa.high * 1e-4, 2)
+          << Fixed(b.bearing->pressure_Pa.low * units::kN_cm2_per_Pa, 2) << "-" << Fixed(b.bearing->pressure_Pa.high * units::kN_cm2_per_Pa, 2)
           << " N/cm^2";
       for (size_t k = 0; k < r.variants.size(); ++k) out << "  " << r.variants[k].Name() << " " << BearingCell(b, k);
       out << "\n";

@@ -13,6 +13,7 @@
 #include "lander/pad/release.h"
 #include "rft/input_error.h"
 #include "rft/physical_limits.h"
+#include "rft/units.h"
 
 namespace touchdown::validation {
 
@@ -44,9 +45,9 @@ namespace {
 // Every number a source gives is range-checked at load, as a scenario's is (rft/physical_limits.h
 // where a bound exists there), in the file's own units: a measured depth of 1e9 mm would otherwise
 // be simulated, and a law's 1e308 reach its Lambert W.
-constexpr limits::Range kLength_mm{"mm", 0.0, limits::kDepth_m.high * 1e3, true};       // depths, d1, diameters
-constexpr limits::Range kUncertainty_mm{"mm", 0.0, limits::kDepth_m.high * 1e3, false};
-constexpr limits::Range kDropHeight_mm{"mm", 0.0, limits::kDropHeight_m.high * 1e3, false};
+constexpr limits::Range kLength_mm{"mm", 0.0, limits::kDepth_m.high * units::kMmPerM, true};       // depths, d1, diameters
+constexpr limits::Range kUncertainty_mm{"mm", 0.0, limits::kDepth_m.high * units::kMmPerM, false};
+constexpr limits::Range kDropHeight_mm{"mm", 0.0, limits::kDropHeight_m.high * units::kMmPerM, false};
 constexpr limits::Range kStopTime_ms{"ms", 0.0, 1e5, true};                               // 100 s
 constexpr limits::Range kUncertainty_ms{"ms", 0.0, 1e5, false};
 constexpr limits::Range kPressure_N_cm2{"N/cm^2", 0.0, 1e6, true};                        // 10 GPa
@@ -100,8 +101,8 @@ KatsuragiDurianLaw ReadKatsuragiDurianLaw(const io::YamlFields& f) {
   f.RequireOnly({"kind", "d1_mm", "d1_uncertainty_mm", "k_over_m_per_s2", "k_over_m_uncertainty_per_s2", "how",
                  "where"});
   KatsuragiDurianLaw law;
-  law.d1_m = InRange(f, "d1_mm", kLength_mm) * 1e-3;
-  law.d1_uncertainty_m = InRange(f, "d1_uncertainty_mm", kUncertainty_mm) * 1e-3;
+  law.d1_m = InRange(f, "d1_mm", kLength_mm) * units::kMm;
+  law.d1_uncertainty_m = InRange(f, "d1_uncertainty_mm", kUncertainty_mm) * units::kMm;
   law.k_over_m_s2 = InRange(f, "k_over_m_per_s2", kKOverM_per_s2);
   law.k_over_m_uncertainty_s2 = InRange(f, "k_over_m_uncertainty_per_s2", kKOverMUncertainty_per_s2);
   if (law.d1_uncertainty_m >= law.d1_m) f.Fail("d1_uncertainty_mm", "must be below d1_mm");
@@ -138,7 +139,7 @@ DepthWithUncertainty LawDepth(const ValidationSource& s, const MeasuredPoint& p)
   if (s.law)
     return KatsuragiDurianStopDepthRange({s.law->d1_m, s.law->k_over_m_s2, s.gravity_m_s2}, s.law->d1_uncertainty_m,
                                          s.law->k_over_m_uncertainty_s2, p.impact_speed_m_s);
-  const double radius_m = s.pad.file.sphere_radius_mm * 1e-3;
+  const double radius_m = s.pad.file.sphere_radius_mm * units::kMm;
   const ShallowImpactParameters law{s.shallow_impact_law->prefactor, s.shallow_impact_law->friction_coefficient,
                                     s.pad.mass_kg / (4.0 / 3.0 * std::numbers::pi * radius_m * radius_m * radius_m),
                                     s.soil.bulk_density_kg_m3, 2.0 * radius_m};
@@ -150,7 +151,7 @@ double ReadImpactSpeed(const io::YamlFields& f, double gravity_m_s2, std::option
   if (f.Has("impact_speed_m_s") == f.Has("drop_height_mm"))
     f.Fail("impact_speed_m_s", "give exactly one of impact_speed_m_s and drop_height_mm");
   if (f.Has("impact_speed_m_s")) return InRange(f, "impact_speed_m_s", limits::kSpeed_m_s);
-  drop_height_m = InRange(f, "drop_height_mm", kDropHeight_mm) * 1e-3;
+  drop_height_m = InRange(f, "drop_height_mm", kDropHeight_mm) * units::kMm;
   return pad::TouchdownSpeed(0.0, gravity_m_s2, *drop_height_m);
 }
 
@@ -178,14 +179,14 @@ MeasuredPoint ReadPoint(const io::YamlFields& f, const ValidationSource& s) {
     } catch (const std::invalid_argument& e) {
       f.Fail("from_law", std::string("the measured law gives no final depth at this point (") + e.what() + ")");
     }
-    if (!limits::Within(kLength_mm, d.depth_m * 1e3) || !limits::Within(kUncertainty_mm, d.half_range_m * 1e3))
-      f.Fail("from_law", "the measured law's final depth here " + limits::Describe(kLength_mm, d.depth_m * 1e3));
+    if (!limits::Within(kLength_mm, d.depth_m * units::kMmPerM) || !limits::Within(kUncertainty_mm, d.half_range_m * units::kMmPerM))
+      f.Fail("from_law", "the measured law's final depth here " + limits::Describe(kLength_mm, d.depth_m * units::kMmPerM));
     p.value = d.depth_m;
     p.uncertainty = d.half_range_m;
   } else {
     const bool depth = p.quantity == Quantity::kFinalDepth;
-    p.value = InRange(f, value_key, depth ? kLength_mm : kStopTime_ms) * 1e-3;
-    if (f.Has(uncertainty_key)) p.uncertainty = InRange(f, uncertainty_key, depth ? kUncertainty_mm : kUncertainty_ms) * 1e-3;
+    p.value = InRange(f, value_key, depth ? kLength_mm : kStopTime_ms) * (depth ? units::kMm : units::kMs);
+    if (f.Has(uncertainty_key)) p.uncertainty = InRange(f, uncertainty_key, depth ? kUncertainty_mm : kUncertainty_ms) * (depth ? units::kMm : units::kMs);
   }
   p.how = ReadProvenance(f);
   if (from_law != (p.how == Provenance::kDerivedFromMeasuredLaw))
