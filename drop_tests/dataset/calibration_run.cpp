@@ -13,12 +13,14 @@
 
 namespace touchdown::dataset {
 
-std::vector<std::string> CalibrationLawNames() { return {"rft", "bekker"}; }
+std::vector<std::string> CalibrationLawNames() {
+  std::vector<std::string> names;
+  for (const auto& e : kCalibrationLawNames) names.push_back(e.name);
+  return names;
+}
 
 CalibrationLaw ParseCalibrationLaw(const std::string& name, const std::string& where, const std::string& field) {
-  if (name == "rft") return CalibrationLaw::kRft;
-  if (name == "bekker") return CalibrationLaw::kBekker;
-  throw MakeInputError(where, field, "must be rft or bekker, got '" + name + "'");
+  return ParseName(kCalibrationLawNames, name, where, field);
 }
 
 namespace {

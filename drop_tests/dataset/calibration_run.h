@@ -3,6 +3,7 @@
 // (touchdown.calibrate): reads the dataset, fits, and writes the model file (law rft: zeta per
 // soil, calibrate.h) or the Bekker soil file (law bekker: n, k_c, k_phi, calibrate_bekker.h) to
 // `out` (a new file, or one an earlier calibrate wrote).
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -12,10 +13,13 @@
 #include "drop_tests/dataset/calibrate.h"
 #include "drop_tests/drop/drop_request.h"
 #include "drop_tests/dataset/calibrate_bekker.h"
+#include "rft/enum_names.h"
 
 namespace touchdown::dataset {
 
 enum class CalibrationLaw { kRft, kBekker };
+inline constexpr std::array<EnumName<CalibrationLaw>, 2> kCalibrationLawNames{
+    {{CalibrationLaw::kRft, "rft"}, {CalibrationLaw::kBekker, "bekker"}}};
 // The names on the command line and in Python ("rft", "bekker"), in the enum's order.
 std::vector<std::string> CalibrationLawNames();
 // The law a name stands for. Throws InputError naming `where` and `field` on any other text.

@@ -7,14 +7,13 @@ namespace touchdown::dataset {
 namespace {
 struct FilterClassRow {
   ChannelFilter filter;
-  const char* name;
   double cfc;
 };
-constexpr FilterClassRow kFilterClasses[] = {{ChannelFilter::kNone, "none", 0.0},
-                                             {ChannelFilter::kCfc60, "cfc60", 60.0},
-                                             {ChannelFilter::kCfc180, "cfc180", 180.0},
-                                             {ChannelFilter::kCfc600, "cfc600", 600.0},
-                                             {ChannelFilter::kCfc1000, "cfc1000", 1000.0}};
+constexpr FilterClassRow kFilterClasses[] = {{ChannelFilter::kNone, 0.0},
+                                             {ChannelFilter::kCfc60, 60.0},
+                                             {ChannelFilter::kCfc180, 180.0},
+                                             {ChannelFilter::kCfc600, 600.0},
+                                             {ChannelFilter::kCfc1000, 1000.0}};
 
 // One pass of the standard's difference equation over x[first], x[first + step], ... (step +1 or
 // -1), started in the steady state of its first sample (the DC gain a0 + a1 + a2 = 1 - b1 - b2).
@@ -31,19 +30,11 @@ void CfcPass(const std::vector<double>& x, std::vector<double>& y, const CfcCoef
 }
 }  // namespace
 
-const char* ChannelFilterName(ChannelFilter filter) {
-  for (const FilterClassRow& row : kFilterClasses)
-    if (row.filter == filter) return row.name;
-  return "none";
-}
+const char* ChannelFilterName(ChannelFilter filter) { return NameIn(kChannelFilterNames, filter); }
 
-std::optional<ChannelFilter> ParseChannelFilter(const std::string& name) {
-  for (const FilterClassRow& row : kFilterClasses)
-    if (name == row.name) return row.filter;
-  return std::nullopt;
-}
+std::optional<ChannelFilter> ParseChannelFilter(const std::string& name) { return FindName(kChannelFilterNames, name); }
 
-std::string ChannelFilterChoices() { return "cfc60, cfc180, cfc600, cfc1000 or none"; }
+std::string ChannelFilterChoices() { return NameChoices(kChannelFilterNames); }
 
 double ChannelFrequencyClass(ChannelFilter filter) {
   for (const FilterClassRow& row : kFilterClasses)

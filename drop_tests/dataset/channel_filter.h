@@ -17,15 +17,23 @@
 // begins in free fall and ends at rest (every drop) starts and ends without a transient beyond
 // the noise of that one sample. It is scipy.signal.filtfilt(b, a, x, padtype=None), which is how
 // tools/cfc_reference.py checks it (tests/drop_tests/dataset/channel_filter_test.cpp).
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "rft/enum_names.h"
+
 namespace touchdown::dataset {
 
 enum class ChannelFilter { kNone, kCfc60, kCfc180, kCfc600, kCfc1000 };
+// The names a mapping file uses (rft/enum_names.h).
+inline constexpr std::array<EnumName<ChannelFilter>, 5> kChannelFilterNames{{{ChannelFilter::kCfc60, "cfc60"},
+                                                                            {ChannelFilter::kCfc180, "cfc180"},
+                                                                            {ChannelFilter::kCfc600, "cfc600"},
+                                                                            {ChannelFilter::kCfc1000, "cfc1000"},
+                                                                            {ChannelFilter::kNone, "none"}}};
 
-// "none", "cfc60", "cfc180", "cfc600", "cfc1000": the names a mapping file uses.
 const char* ChannelFilterName(ChannelFilter filter);
 std::optional<ChannelFilter> ParseChannelFilter(const std::string& name);
 // "cfc60, cfc180, cfc600, cfc1000 or none", for messages.

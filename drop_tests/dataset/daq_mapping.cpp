@@ -28,18 +28,9 @@ const std::vector<std::string> kImportDisplacementColumns = {"displacement_at_to
 const std::vector<std::string> kImportAccelerationColumns = {"acceleration_bias_m_s2", "rest_velocity_m_s",
                                                               "pretrigger_acceleration_m_s2"};
 
-const char* ChannelZeroName(ChannelZero zero) {
-  switch (zero) {
-    case ChannelZero::kPreTrigger: return "pre_trigger";
-    case ChannelZero::kFreeFall: return "free_fall";
-    case ChannelZero::kNone: break;
-  }
-  return "none";
-}
+const char* ChannelZeroName(ChannelZero zero) { return NameIn(kChannelZeroNames, zero); }
 
-const char* MotionChannelName(MotionChannel kind) {
-  return kind == MotionChannel::kAcceleration ? "acceleration" : "displacement";
-}
+const char* MotionChannelName(MotionChannel kind) { return NameIn(kMotionChannelNames, kind); }
 
 namespace {
 

@@ -25,6 +25,7 @@
 // free_fall (the pre-trigger's mean set to +g: an accelerometer reading specific force).
 // `offset` defaults to 0. Paths are relative to the mapping file. Everything is checked here,
 // raw files readable included, before a single raw file is read.
+#include <array>
 #include <optional>
 #include <string>
 #include <utility>
@@ -33,10 +34,13 @@
 #include "drop_tests/dataset/channel_filter.h"
 #include "drop_tests/dataset/daq_csv.h"
 #include "rft/atmosphere.h"
+#include "rft/enum_names.h"
 
 namespace touchdown::dataset {
 
 enum class ChannelZero { kNone, kPreTrigger, kFreeFall };
+inline constexpr std::array<EnumName<ChannelZero>, 3> kChannelZeroNames{
+    {{ChannelZero::kNone, "none"}, {ChannelZero::kPreTrigger, "pre_trigger"}, {ChannelZero::kFreeFall, "free_fall"}}};
 const char* ChannelZeroName(ChannelZero zero);
 
 struct DaqChannel {
@@ -49,6 +53,8 @@ struct DaqChannel {
 };
 
 enum class MotionChannel { kDisplacement, kAcceleration };
+inline constexpr std::array<EnumName<MotionChannel>, 2> kMotionChannelNames{
+    {{MotionChannel::kDisplacement, "displacement"}, {MotionChannel::kAcceleration, "acceleration"}}};
 const char* MotionChannelName(MotionChannel kind);
 
 struct DaqDropEntry {

@@ -371,19 +371,7 @@ void RefuseMissingDirectory(const std::string& path, const fs::path& p) {
 
 using namespace output_internal;
 
-const char* OutputKindName(OutputKind kind) {
-  switch (kind) {
-    case OutputKind::kCampaign: return "campaign";
-    case OutputKind::kLander: return "lander";
-    case OutputKind::kComparison: return "compare";
-    case OutputKind::kDataset: return "dataset";
-    case OutputKind::kDiagnosis: return "diagnose";
-    case OutputKind::kSweep: return "sweep";
-    case OutputKind::kDropVtk: return "drop";
-    case OutputKind::kValidation: return "validate";
-  }
-  return "?";
-}
+const char* OutputKindName(OutputKind kind) { return NameIn(kOutputKindNames, kind); }
 
 namespace {
 std::mutex new_directories_mutex;

@@ -15,10 +15,13 @@
 // or the new one, whole; the staging directories of killed runs are removed by the next run on the
 // same machine that writes beside them (another machine sharing the disk cannot tell whether their
 // process is gone, so it leaves them).
+#include <array>
 #include <functional>
 #include <ostream>
 #include <string>
 #include <vector>
+
+#include "rft/enum_names.h"
 
 namespace touchdown::io {
 
@@ -32,6 +35,15 @@ std::string OutputOwnerTag();
 // `touchdown drop --vtk DIR` writes a ParaView time series (kDropVtk); `touchdown validate` its
 // report (kValidation).
 enum class OutputKind { kCampaign, kLander, kComparison, kDataset, kDiagnosis, kSweep, kDropVtk, kValidation };
+// The names an output's marker file holds (the command that wrote it).
+inline constexpr std::array<EnumName<OutputKind>, 8> kOutputKindNames{{{OutputKind::kCampaign, "campaign"},
+                                                                       {OutputKind::kLander, "lander"},
+                                                                       {OutputKind::kComparison, "compare"},
+                                                                       {OutputKind::kDataset, "dataset"},
+                                                                       {OutputKind::kDiagnosis, "diagnose"},
+                                                                       {OutputKind::kSweep, "sweep"},
+                                                                       {OutputKind::kDropVtk, "drop"},
+                                                                       {OutputKind::kValidation, "validate"}}};
 const char* OutputKindName(OutputKind kind);
 
 // An output path as the user gave it, with the paths the command reads from.

@@ -323,7 +323,11 @@ std::string DescribeResidual(const Diagnosis& d) {
 
 }  // namespace
 
-std::vector<std::string> DiagnoseBaseNames() { return {"rft", "bekker"}; }
+std::vector<std::string> DiagnoseBaseNames() {
+  std::vector<std::string> names;
+  for (const auto& e : kDiagnoseBaseNames) names.push_back(e.name);
+  return names;
+}
 
 std::vector<std::string> SensorSamplingOptionNames() {
   std::vector<std::string> names{"auto"};
@@ -332,9 +336,7 @@ std::vector<std::string> SensorSamplingOptionNames() {
 }
 
 DiagnoseBase ParseDiagnoseBase(const std::string& name, const std::string& where, const std::string& field) {
-  if (name == "rft") return DiagnoseBase::kRft;
-  if (name == "bekker") return DiagnoseBase::kBekker;
-  throw MakeInputError(where, field, "must be rft or bekker, got '" + name + "'");
+  return ParseName(kDiagnoseBaseNames, name, where, field);
 }
 
 Diagnosis RunDiagnosis(const dataset::Dataset& ds, const DiagnoseOptions& o) {

@@ -55,6 +55,8 @@ namespace touchdown::gap {
 std::vector<std::string> SensorSamplingOptionNames();
 
 enum class DiagnoseBase { kRft, kBekker };
+inline constexpr std::array<EnumName<DiagnoseBase>, 2> kDiagnoseBaseNames{
+    {{DiagnoseBase::kRft, "rft"}, {DiagnoseBase::kBekker, "bekker"}}};
 // The names on the command line and in Python ("rft", "bekker"), in the enum's order.
 std::vector<std::string> DiagnoseBaseNames();
 // The base a name stands for. Throws InputError naming `where` and `field` on any other text.

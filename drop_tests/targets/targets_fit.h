@@ -7,6 +7,7 @@
 // uncertainties taken as one standard deviation, not rescaled by the residuals; with priors, the
 // posterior's Laplace approximation), over the parameters not at a bound; a parameter at a bound
 // gets none.
+#include <array>
 #include <functional>
 #include <optional>
 #include <string>
@@ -16,6 +17,7 @@
 
 #include "drop_tests/model/model_file.h"
 #include "drop_tests/targets/targets_file.h"
+#include "rft/enum_names.h"
 
 namespace touchdown::targets {
 
@@ -27,6 +29,11 @@ struct ParameterResult {
   std::string interval_note;                  // why there is none, when there is none
   std::optional<double> prior_residual;       // (value - prior) / prior sd, when it has a prior
 };
+// The bound names a report gives (at_bound).
+inline constexpr std::array<EnumName<ParameterResult::Bound>, 3> kBoundNames{{{ParameterResult::Bound::kNone, "none"},
+                                                                          {ParameterResult::Bound::kLower, "lower"},
+                                                                          {ParameterResult::Bound::kUpper, "upper"}}};
+
 
 struct TargetResult {
   double simulated = 0.0;

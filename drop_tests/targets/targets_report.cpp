@@ -20,14 +20,7 @@ bool HasPriors(const TargetsFile& file) {
   return false;
 }
 
-const char* BoundName(ParameterResult::Bound b) {
-  switch (b) {
-    case ParameterResult::Bound::kLower: return "lower";
-    case ParameterResult::Bound::kUpper: return "upper";
-    case ParameterResult::Bound::kNone: break;
-  }
-  return "none";
-}
+const char* BoundName(ParameterResult::Bound b) { return NameIn(kBoundNames, b); }
 
 std::string TargetText(const Target& t) {
   char buffer[96];

@@ -23,14 +23,7 @@ double StaticBearingPressure(const io::PadSpec& flat_pad, const rft::SoilParamet
   return held.wrench.force_W.z() / area;
 }
 
-const char* RangeAgreementName(RangeAgreement a) {
-  switch (a) {
-    case RangeAgreement::kInside: return "inside";
-    case RangeAgreement::kOverlaps: return "overlaps";
-    case RangeAgreement::kOutside: return "outside";
-  }
-  return "";
-}
+const char* RangeAgreementName(RangeAgreement a) { return NameIn(kRangeAgreementNames, a); }
 
 RangeComparison CompareRanges(const Range& simulated, const Range& measured) {
   if (simulated.high < measured.low)

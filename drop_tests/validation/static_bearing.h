@@ -8,6 +8,7 @@
 // diameter (the side wall's share), so its extremes are at the corners.
 #include "drop_tests/catalog/catalog.h"
 #include "drop_tests/validation/validation_source.h"
+#include "rft/enum_names.h"
 #include "rft/soil.h"
 
 namespace touchdown::validation {
@@ -18,7 +19,9 @@ double StaticBearingPressure(const io::PadSpec& flat_pad, const rft::SoilParamet
 
 // How a simulated range stands against a measured one.
 enum class RangeAgreement { kInside, kOverlaps, kOutside };
-const char* RangeAgreementName(RangeAgreement a);  // "inside", "overlaps", "outside"
+inline constexpr std::array<EnumName<RangeAgreement>, 3> kRangeAgreementNames{
+    {{RangeAgreement::kInside, "inside"}, {RangeAgreement::kOverlaps, "overlaps"}, {RangeAgreement::kOutside, "outside"}}};
+const char* RangeAgreementName(RangeAgreement a);
 struct RangeComparison {
   RangeAgreement agreement = RangeAgreement::kOutside;
   // Outside: the gap to the nearer measured end over that end, signed (negative: the model is

@@ -19,26 +19,11 @@ namespace touchdown::validation {
 
 namespace fs = std::filesystem;
 
-const char* QuantityName(Quantity q) { return q == Quantity::kFinalDepth ? "final_depth" : "stop_time"; }
+const char* QuantityName(Quantity q) { return NameIn(kQuantityNames, q); }
 const char* QuantityUnit(Quantity q) { return q == Quantity::kFinalDepth ? "mm" : "ms"; }
 double QuantityToReport(Quantity) { return 1e3; }
-const char* VariableName(Variable v) {
-  switch (v) {
-    case Variable::kImpactSpeed: return "impact_speed_m_s";
-    case Variable::kGravity: return "gravity_m_s2";
-    case Variable::kTotalDropDistance: return "drop_height_m";
-    case Variable::kProjectileDensity: return "projectile_density_kg_m3";
-  }
-  return "";
-}
-const char* ProvenanceName(Provenance p) {
-  switch (p) {
-    case Provenance::kQuoted: return "quoted";
-    case Provenance::kReadOffFigure: return "read_off_figure";
-    case Provenance::kDerivedFromMeasuredLaw: return "derived_from_measured_law";
-  }
-  return "";
-}
+const char* VariableName(Variable v) { return NameIn(kVariableNames, v); }
+const char* ProvenanceName(Provenance p) { return NameIn(kProvenanceNames, p); }
 
 namespace {
 

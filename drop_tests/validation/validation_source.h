@@ -7,12 +7,14 @@
 // was read and whether it was quoted, read off a figure, or derived from a measured law the source
 // fitted.
 // docs/validation.md describes the format and the sources.
+#include <array>
 #include <optional>
 #include <map>
 #include <string>
 #include <vector>
 
 #include "drop_tests/catalog/catalog.h"
+#include "rft/enum_names.h"
 #include "rft/gravity_constants.h"
 #include "rft/soil.h"
 
@@ -20,7 +22,9 @@ namespace touchdown::validation {
 
 // What a point or a trend measures.
 enum class Quantity { kFinalDepth, kStopTime };
-const char* QuantityName(Quantity q);   // "final_depth", "stop_time"
+inline constexpr std::array<EnumName<Quantity>, 2> kQuantityNames{
+    {{Quantity::kFinalDepth, "final_depth"}, {Quantity::kStopTime, "stop_time"}}};
+const char* QuantityName(Quantity q);
 const char* QuantityUnit(Quantity q);   // the unit the reports print: "mm", "ms"
 double QuantityToReport(Quantity q);    // SI -> report unit factor (1e3 for both)
 
@@ -29,11 +33,19 @@ double QuantityToReport(Quantity q);    // SI -> report unit factor (1e3 for bot
 // kProjectileDensity: the sphere's density at its fixed size (a spherical_cap pad: the sphere of
 // the pad's radius), i.e. its mass.
 enum class Variable { kImpactSpeed, kGravity, kTotalDropDistance, kProjectileDensity };
-const char* VariableName(Variable v);  // "impact_speed_m_s", "gravity_m_s2", "drop_height_m", "projectile_density_kg_m3"
+inline constexpr std::array<EnumName<Variable>, 4> kVariableNames{{{Variable::kImpactSpeed, "impact_speed_m_s"},
+                                                                   {Variable::kGravity, "gravity_m_s2"},
+                                                                   {Variable::kTotalDropDistance, "drop_height_m"},
+                                                                   {Variable::kProjectileDensity, "projectile_density_kg_m3"}}};
+const char* VariableName(Variable v);
 
 // How a number came out of its source.
 enum class Provenance { kQuoted, kReadOffFigure, kDerivedFromMeasuredLaw };
-const char* ProvenanceName(Provenance p);  // "quoted", "read_off_figure", "derived_from_measured_law"
+inline constexpr std::array<EnumName<Provenance>, 3> kProvenanceNames{
+    {{Provenance::kQuoted, "quoted"},
+     {Provenance::kReadOffFigure, "read_off_figure"},
+     {Provenance::kDerivedFromMeasuredLaw, "derived_from_measured_law"}}};
+const char* ProvenanceName(Provenance p);
 
 // Katsuragi & Durian's force law fitted to their measured trajectories:
 // m dv/dt = m g - m v^2 / d1 - k z (z down). Its stop depth is a measured point's value when the

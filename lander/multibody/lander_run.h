@@ -11,6 +11,7 @@
 
 #include "lander/integ/cvode_integrator.h"
 #include "lander/multibody/lander_dynamics.h"
+#include "rft/enum_names.h"
 
 namespace touchdown::lander {
 
@@ -144,7 +145,21 @@ enum class LanderEventKind {
   kRest,            // the lander is static: every pad held, or the holds fix the body (HoldsFixTheStance),
                     // or its joints crept below the soil's ramp speed (LanderRunOptions::rest_at_creep)
 };
-// The event's name in outputs (events.csv): "touchdown", "release_liftoff", "tip_over", ...
+// The events' names in outputs (events.csv).
+inline constexpr std::array<EnumName<LanderEventKind>, 12> kLanderEventNames{{
+    {LanderEventKind::kTouchdown, "touchdown"},
+    {LanderEventKind::kCapture, "capture"},
+    {LanderEventKind::kReleaseLiftoff, "release_liftoff"},
+    {LanderEventKind::kReleaseSink, "release_sink"},
+    {LanderEventKind::kReleaseSlide, "release_slide"},
+    {LanderEventKind::kCrush, "crush"},
+    {LanderEventKind::kLock, "lock"},
+    {LanderEventKind::kBottom, "bottom"},
+    {LanderEventKind::kStopReached, "stop_reached"},
+    {LanderEventKind::kStopLeft, "stop_left"},
+    {LanderEventKind::kTipOver, "tip_over"},
+    {LanderEventKind::kRest, "rest"},
+}};
 const char* LanderEventName(LanderEventKind kind);
 
 struct LanderEvent {
