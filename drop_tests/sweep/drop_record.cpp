@@ -125,6 +125,11 @@ bool SameRecord(const DropRecord& a, const DropRecord& b, bool compare_traces) {
 
 const char* DropKindName(DropKind kind) { return NameIn(kDropKindNames, kind); }
 
+rft::Atmosphere ParseRecordAtmosphere(const std::string& text, const std::string& where) {
+  if (const std::optional<rft::Atmosphere> a = rft::ParseAtmosphere(text)) return *a;
+  throw InputError(where + ": atmosphere '" + text + "' is neither vacuum nor air");
+}
+
 DropKind ParseDropKind(const std::string& text, const std::string& where) {
   return ParseName(kDropKindNames, text, where, "drop_kind");
 }
@@ -136,8 +141,8 @@ std::string SerializeRecords(const std::vector<DropRecord>& records) {
     Put(out, r.index);
     PutString(out, r.drop_id);
     Put<uint8_t>(out, r.ok ? 1 : 0);
-    const std::string kind = DropKindName(r.kind);
-    for (const std::string* s : {&r.failure, &kind, &r.pad, &r.soil, &r.atmosphere}) PutString(out, *s);
+    const std::string kind = DropKindName(r.kind), atmosphere = rft::AtmosphereName(r.atmosphere);
+    for (const std::string* s : {&r.failure, &kind, &r.pad, &r.soil, &atmosphere}) PutString(out, *s);
     for (const RecordNumber& n : RigNumbers()) Put(out, n.Of(r));
     for (const RecordNumber& n : FreeAndLanderNumbers()) Put(out, n.Of(r));
     for (const std::string* t : DropRecordTexts(r)) PutString(out, *t);
@@ -163,9 +168,10 @@ std::vector<DropRecord> DeserializeRecords(const std::string& bytes) {
     r.index = in.Get<int64_t>();
     r.drop_id = in.GetString();
     r.ok = in.Get<uint8_t>() != 0;
-    std::string kind;
-    for (std::string* s : {&r.failure, &kind, &r.pad, &r.soil, &r.atmosphere}) *s = in.GetString();
+    std::string kind, atmosphere;
+    for (std::string* s : {&r.failure, &kind, &r.pad, &r.soil, &atmosphere}) *s = in.GetString();
     r.kind = ParseDropKind(kind, "drop " + r.drop_id);
+    r.atmosphere = ParseRecordAtmosphere(atmosphere, "drop " + r.drop_id);
     for (const RecordNumber& n : RigNumbers()) n.at(r) = in.Get<double>();
     for (const RecordNumber& n : FreeAndLanderNumbers()) n.at(r) = in.Get<double>();
     for (std::string* t : DropRecordTexts(r)) *t = in.GetString();

@@ -106,7 +106,7 @@ void BindRecord(Statement& st, const DropRecord& r) {
   st.Text(i++, r.failure);
   st.Text(i++, r.pad);
   st.Text(i++, r.soil);
-  st.Text(i++, r.atmosphere);
+  st.Text(i++, rft::AtmosphereName(r.atmosphere));
   for (const RecordNumber& n : RigNumbers()) st.Real(i++, n.Of(r));
   st.Int(i++, r.solver_steps);
   st.Text(i++, DropKindName(r.kind));
@@ -126,12 +126,13 @@ DropRecord ReadRecord(Statement& st) {
   r.failure = st.ColumnText(i++);
   r.pad = st.ColumnText(i++);
   r.soil = st.ColumnText(i++);
-  r.atmosphere = st.ColumnText(i++);
+  const std::string atmosphere = st.ColumnText(i++);
   for (const RecordNumber& n : RigNumbers()) n.at(r) = st.ColumnReal(i++);
   r.solver_steps = sqlite3_column_int64(st.get(), i++);
   const std::string kind = st.ColumnText(i++);
   // A format-1 row read through the added columns has none: a rig drop.
   r.kind = kind.empty() ? DropKind::kRig : ParseDropKind(kind, "drop " + r.drop_id);
+  r.atmosphere = ParseRecordAtmosphere(atmosphere, "drop " + r.drop_id);
   for (const RecordNumber& n : FreeAndLanderNumbers()) n.at(r) = st.ColumnReal(i++);
   for (std::string* t : DropRecordTexts(r)) *t = st.ColumnText(i++);
   r.failure_limit = st.ColumnText(i++);

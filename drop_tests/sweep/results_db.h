@@ -32,6 +32,7 @@
 #include <string>
 #include <vector>
 
+#include "rft/atmosphere.h"
 #include "rft/enum_names.h"
 #include "lander/pad/rig_drop.h"
 
@@ -55,6 +56,8 @@ inline constexpr std::array<EnumName<DropKind>, 3> kDropKindNames{
 const char* DropKindName(DropKind kind);
 // Throws InputError naming `where` on a text that is no drop kind.
 DropKind ParseDropKind(const std::string& text, const std::string& where);
+// The atmosphere a stored record names; InputError naming `where` for any other text.
+rft::Atmosphere ParseRecordAtmosphere(const std::string& text, const std::string& where);
 
 // One drop as stored. Metrics are NaN (NULL in SQL) for a failed drop, and for quantities a kind
 // of drop does not have.
@@ -68,7 +71,8 @@ struct DropRecord {
   std::string failure_limit;
   double failure_limit_value = std::numeric_limits<double>::quiet_NaN();
   DropKind kind = DropKind::kRig;
-  std::string pad, soil, atmosphere;
+  std::string pad, soil;
+  rft::Atmosphere atmosphere = rft::Atmosphere::kVacuum;  // its name in the database and exports
   double impact_speed_m_s = 0.0, pad_mass_kg = 0.0, gravity_m_s2 = 0.0;
   double tilt_deg = 0.0, horizontal_speed_m_s = 0.0;
   double zeta_N_cm3 = 0.0;  // as used, at the drop's gravity

@@ -41,7 +41,7 @@ DropRecord Describe(const SweepPlan& plan, const SweepDropParams& p, const drop:
   const rft::SoilParameters& soil = plan.soils[p.soil];
   r.pad = pad.name;
   r.soil = soil.name;
-  r.atmosphere = rft::AtmosphereName(soil.atmosphere);
+  r.atmosphere = soil.atmosphere;
   r.impact_speed_m_s = p.impact_speed_m_s;
   r.pad_mass_kg = p.mass_kg.value_or(pad.mass_kg);
   r.gravity_m_s2 = p.gravity_m_s2;
@@ -211,7 +211,7 @@ DropRecord SimulateLanderSweepDrop(const SweepModels& models, const SweepDropPar
   const rft::SoilParameters& soil = p.Given(SweepParam::kSoil) ? plan.soils[p.soil] : models.lander_soil();
   r.pad = sc.lander.pad.name;
   r.soil = soil.name;
-  r.atmosphere = rft::AtmosphereName(soil.atmosphere);
+  r.atmosphere = soil.atmosphere;
   r.impact_speed_m_s = scenario::TouchdownSpeed(sc);
   r.pad_mass_kg = sc.lander.pad.body.mass_kg;
   r.gravity_m_s2 = sc.gravity_m_s2;

@@ -73,7 +73,7 @@ const std::vector<ExportColumn>& LanderColumns() {
     std::vector<ExportColumn> out = {TextColumn("drop_id", [](const DropRecord& r) -> const std::string& { return r.drop_id; }),
                                      TextColumn("pad", [](const DropRecord& r) -> const std::string& { return r.pad; }),
                                      TextColumn("soil", [](const DropRecord& r) -> const std::string& { return r.soil; }),
-                                     TextColumn("atmosphere", [](const DropRecord& r) -> const std::string& { return r.atmosphere; })};
+                                     {"atmosphere", [](const DropRecord& r) { return std::string(rft::AtmosphereName(r.atmosphere)); }}};
     for (const char* n : {"impact_speed_m_s", "pad_mass_kg", "gravity_m_s2", "horizontal_speed_m_s", "roll_deg",
                           "pitch_deg", "tilt_deg"})
       out.push_back(NumberColumn(n, NotFinite::kWritten));
@@ -235,9 +235,7 @@ dataset::Dataset SweepToDataset(const std::string& sweep_dir, const ExportOption
     // A pad or soil from a file (not a catalogue name) is written as its absolute path.
     if (const auto it = pad_files.find(r.pad); it != pad_files.end()) d.pad = it->second;
     if (const auto it = soil_files.find(r.soil); it != soil_files.end()) d.soil = it->second;
-    const std::optional<rft::Atmosphere> atmosphere = rft::ParseAtmosphere(r.atmosphere);
-    if (!atmosphere) throw InputError("drop " + r.drop_id + ": atmosphere '" + r.atmosphere + "' is neither vacuum nor air");
-    d.atmosphere = *atmosphere;
+    d.atmosphere = r.atmosphere;
     d.impact_speed_m_s = r.impact_speed_m_s;
     d.pad_mass_kg = r.pad_mass_kg;
     d.gravity_m_s2 = r.gravity_m_s2;
@@ -296,7 +294,7 @@ ExportSummary ExportLanderSweep(const ResultsDb& db, const io::OutputTarget& dat
               ++summary.failed;
               return;
             }
-            for (const std::string* s : {&r.pad, &r.soil, &r.atmosphere, &r.pad_soil[0], &r.pad_soil[1],
+            for (const std::string* s : {&r.pad, &r.soil, &r.pad_soil[0], &r.pad_soil[1],
                                          &r.pad_soil[2], &r.pad_soil[3], &r.ground_case})
               if (s->find_first_of(",\n\r") != std::string::npos)
                 throw MakeInputError(db_path, "drop " + r.drop_id, "a name contains a comma or line break: " + *s);
@@ -392,7 +390,7 @@ ExportSummary ExportPadSweep(const ResultsDb& db, const std::map<std::string, st
             if (name->find_first_of(",\n\r") != std::string::npos)
               throw MakeInputError(dataset_dir.path, "drop " + r.drop_id,
                                    "a name or path contains a comma or line break: " + *name);
-          out << r.drop_id << ',' << pad << ',' << soil << ',' << r.atmosphere << ',' << io::FormatNumber(r.impact_speed_m_s)
+          out << r.drop_id << ',' << pad << ',' << soil << ',' << rft::AtmosphereName(r.atmosphere) << ',' << io::FormatNumber(r.impact_speed_m_s)
               << ',' << io::FormatNumber(r.pad_mass_kg) << ',' << io::FormatNumber(r.gravity_m_s2) << ',' << trace_file << ','
               << io::FormatNumber(r.final_penetration_m) << ',' << io::FormatNumber(r.peak_force_N);
           for (const std::string& cell : ExtraCells(r)) out << ',' << cell;
