@@ -222,7 +222,8 @@ bool ExplainsTheGap(const Diagnosis& d, const CandidateScore& m, const DiagnoseO
     if (m.explained >= o.min_explained || m.held_out.mean_square <= d.floor.ms_upper) return true;
     *why = "the selected model, " + m.name + ", explains " + Fixed(100 * m.explained, 0) +
            " % of the base's held-out excess over the replicates' floor (needs >= " + Fixed(100 * o.min_explained, 0) +
-           " %, or a held-out force NRMSE within the floor's 95 % upper bound, " + Fixed(std::sqrt(d.floor.ms_upper), 4) + ")";
+           " %, or a held-out force NRMSE within the floor's 95 % upper bound, as root mean square over the held-out "
+           "drops: " + Fixed(std::sqrt(m.held_out.mean_square), 4) + " against " + Fixed(std::sqrt(d.floor.ms_upper), 4) + ")";
     return false;
   }
   if (m.gap_reduction >= o.min_gap_reduction && m.explained >= o.min_explained) return true;
