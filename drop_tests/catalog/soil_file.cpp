@@ -42,9 +42,9 @@ const FieldTable<rft::BekkerParameters>& BekkerFields() {
   using B = rft::BekkerParameters;
   static const FieldTable<B> fields{
       {"n", &B::n, 1.0, Sign::kPositive, false, false, &limits::kBekkerN},
-      {"k_c_kN_m_n1", &B::k_c_N_m_n1, 1e3, Sign::kNonNegative, false, false, &limits::kBekkerKc_kN_m_n1},
-      {"k_phi_kN_m_n2", &B::k_phi_N_m_n2, 1e3, Sign::kNonNegative, false, false, &limits::kBekkerKphi_kN_m_n2},
-      {"cohesion_kPa", &B::cohesion_Pa, 1e3, Sign::kNonNegative, false, false, &limits::kCohesion_kPa},
+      {"k_c_kN_m_n1", &B::k_c_N_m_n1, units::kKilo, Sign::kNonNegative, false, false, &limits::kBekkerKc_kN_m_n1},
+      {"k_phi_kN_m_n2", &B::k_phi_N_m_n2, units::kKilo, Sign::kNonNegative, false, false, &limits::kBekkerKphi_kN_m_n2},
+      {"cohesion_kPa", &B::cohesion_Pa, units::kKilo, Sign::kNonNegative, false, false, &limits::kCohesion_kPa},
       {"friction_angle_deg", &B::friction_angle_rad, kDeg, Sign::kNonNegative, false, false},
       {"shear_modulus_K_mm", &B::shear_modulus_K_m, kMm, Sign::kPositive, false, false, &limits::kShearModulusK_mm},
   };

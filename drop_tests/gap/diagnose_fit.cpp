@@ -266,12 +266,12 @@ void Estimates(const FitProblem& p, const Layout& L, const Objective& obj, const
       estimate(out.estimates, e->name, q.key, q.scale, q.file_to_si, q.unit);
   if (p.sensor_fit.cutoff) estimate(out.sensor_estimates, "sensor", "lowpass_cutoff_hz", SampleRate(p), 1.0, "Hz");
   if (p.sensor_fit.load_cell) {
-    estimate(out.sensor_estimates, "sensor", "load_cell_hz", 1e3, 1.0, "Hz");
+    estimate(out.sensor_estimates, "sensor", "load_cell_hz", units::kKilo, 1.0, "Hz");
     estimate(out.sensor_estimates, "sensor", "load_cell_damping", 1.0, 1.0, "-");
   }
   if (p.sensor_fit.offsets) {
-    estimate(out.sensor_estimates, "sensor_offset", "dt_ms", kOffsetTimeScale_s, 1e-3, "s");
-    estimate(out.sensor_estimates, "sensor_offset", "dz_mm", kOffsetDepthScale_m, 1e-3, "m");
+    estimate(out.sensor_estimates, "sensor_offset", "dt_ms", kOffsetTimeScale_s, units::kMs, "s");
+    estimate(out.sensor_estimates, "sensor_offset", "dz_mm", kOffsetDepthScale_m, units::kMm, "m");
   }
 }
 }  // namespace

@@ -9,6 +9,7 @@
 
 #include "drop_tests/formats/yaml_fields.h"
 #include "rft/input_error.h"
+#include "rft/units.h"
 
 namespace touchdown::model {
 
@@ -113,7 +114,7 @@ const std::vector<EffectInfo>& EffectLibrary() {
       {kCompactionPeak, "compaction_peak",
        "stress k_c (v.n)^2 exp(-d/d_c) on leading elements: F += k_c v^2 exp(-d/d_c) I3(d)",
        {Param("k_c_kg_m3", "k_c", "kg/m^3", 1.0, 0.0, 1e7, 1e4, 1e4),
-        Param("d_c_mm", "d_c", "m", 1e-3, 1e-4, 0.1, 3e-3, 3e-3)},
+        Param("d_c_mm", "d_c", "m", units::kMm, 1e-4, 0.1, 3e-3, 3e-3)},
        false, false, false},
       {kDepthExponent, "depth_exponent", "stress zeta alpha z_ref (z/z_ref)^p instead of zeta alpha z (z_ref = 10 mm)",
        {Param("p", "p", "-", 1.0, 0.2, 3.0, 0.2, 1.0, {}, 1.0)}, false, false, false},
@@ -122,7 +123,7 @@ const std::vector<EffectInfo>& EffectLibrary() {
        true, false, false},
       {kSensorOffset, "sensor_offset",
        "measurement: recorded penetration = true + dz; recorded t = 0 lies dt after the true touchdown",
-       {Param("dz_mm", "dz", "m", 1e-3, -0.05, 0.05, 1e-3, 0.0), Param("dt_ms", "dt", "s", 1e-3, -0.05, 0.05, 1e-3, 0.0,
+       {Param("dz_mm", "dz", "m", units::kMm, -0.05, 0.05, 1e-3, 0.0), Param("dt_ms", "dt", "s", units::kMs, -0.05, 0.05, 1e-3, 0.0,
               {-0.008, -0.004, 0.0, 0.004, 0.008, 0.012})},
        false, true, false},
     };

@@ -175,8 +175,8 @@ SoilOverride ReadOverride(const io::YamlFields& f) {
 const std::vector<BekkerOverrideField>& BekkerOverrideFields() {
   static const std::vector<BekkerOverrideField> fields{
       {"n", "n", "-", 1.0, &limits::kBekkerN, &SoilOverride::bekker_n},
-      {"k_c_kN_m_n1", "k_c", "kN/m^(n+1)", 1e3, &limits::kBekkerKc_kN_m_n1, &SoilOverride::bekker_k_c_N_m_n1},
-      {"k_phi_kN_m_n2", "k_phi", "kN/m^(n+2)", 1e3, &limits::kBekkerKphi_kN_m_n2, &SoilOverride::bekker_k_phi_N_m_n2},
+      {"k_c_kN_m_n1", "k_c", "kN/m^(n+1)", units::kKilo, &limits::kBekkerKc_kN_m_n1, &SoilOverride::bekker_k_c_N_m_n1},
+      {"k_phi_kN_m_n2", "k_phi", "kN/m^(n+2)", units::kKilo, &limits::kBekkerKphi_kN_m_n2, &SoilOverride::bekker_k_phi_N_m_n2},
   };
   return fields;
 }

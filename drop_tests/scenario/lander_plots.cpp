@@ -50,8 +50,8 @@ const LanderTraceColumn* TraceColumn(const std::string& name) {
 const std::vector<PlottedColumn>& PlottedColumns() {
   static const std::vector<PlottedColumn> columns = [] {
     std::vector<PlottedColumn> c = {
-        {TraceColumn("t_s"), 1e3}, {TraceColumn("roll_deg")}, {TraceColumn("pitch_deg")}, {TraceColumn("tilt_deg")}};
-    for (int i = 1; i <= kLegs; ++i) c.push_back({TraceColumn("depth" + std::to_string(i) + "_m"), 1e3});
+        {TraceColumn("t_s"), units::kMsPerS}, {TraceColumn("roll_deg")}, {TraceColumn("pitch_deg")}, {TraceColumn("tilt_deg")}};
+    for (int i = 1; i <= kLegs; ++i) c.push_back({TraceColumn("depth" + std::to_string(i) + "_m"), units::kMmPerM});
     for (int i = 1; i <= kLegs; ++i) c.push_back({TraceColumn("force" + std::to_string(i) + "_N")});
     for (int i = 0; i < kLegs; ++i) c.push_back({nullptr, 1.0, i});
     c.push_back({TraceColumn("az_m_s2")});

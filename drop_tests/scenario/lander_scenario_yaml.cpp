@@ -286,16 +286,16 @@ void WriteLanderBlock(YAML::Emitter& y, const LanderSpec& l, const FileName& fil
     << l.pad.name << YAML::Key << "file" << YAML::Value << file(l.pad.source) << YAML::Key << "mass_kg" << YAML::Value
     << l.pad.body.mass_kg << YAML::Key << "triangles" << YAML::Value << l.pad.body.surface.size() << YAML::Key
     << "com_from_joint_mm" << YAML::Value;
-  WriteVector(y, l.pad.body.com_B, 1e3);
+  WriteVector(y, l.pad.body.com_B, units::kMmPerM);
   y << YAML::Key << "lowest_point_from_joint_mm" << YAML::Value << l.pad.body.lowest_z_B * units::kMmPerM << YAML::EndMap;
   y << YAML::Key << "legs" << YAML::Value << YAML::BeginSeq;
   for (int i = 0; i < lander::kNumLegs; ++i) {
     const LanderLegSpec& leg = l.legs[i];
     y << YAML::BeginMap << YAML::Key << "pad_number" << YAML::Value << i + 1 << YAML::Key << "joint_from_body_com_mm"
       << YAML::Value;
-    WriteVector(y, leg.joint_B, 1e3);
+    WriteVector(y, leg.joint_B, units::kMmPerM);
     y << YAML::Key << "hip_from_body_com_mm" << YAML::Value;
-    WriteVector(y, leg.hip_B, 1e3);
+    WriteVector(y, leg.hip_B, units::kMmPerM);
     if (leg.absorber) {
       y << YAML::Key << "absorber" << YAML::Value;
       WriteAbsorber(y, *leg.absorber);

@@ -257,8 +257,8 @@ MeasuredBearing ReadBearing(const io::YamlFields& f, const ValidationSource& s) 
   MeasuredBearing b;
   b.id = f.Name("id");
   b.pressure_Pa = ReadRange(f, "pressure_N_cm2", kPressure_N_cm2, 1e4);
-  b.depth_m = ReadRange(f, "depth_mm", kLength_mm, 1e-3);
-  b.diameter_m = ReadRange(f, "diameter_mm", limits::kPadSize_mm, 1e-3);
+  b.depth_m = ReadRange(f, "depth_mm", kLength_mm, units::kMm);
+  b.diameter_m = ReadRange(f, "diameter_mm", limits::kPadSize_mm, units::kMm);
   b.how = ReadProvenance(f);
   if (b.how == Provenance::kDerivedFromMeasuredLaw) f.Fail("how", "a static bearing is quoted or read off a figure");
   b.where = f.String("where");
