@@ -137,6 +137,10 @@ ImportedDrop ImportDrop(const DaqMapping& m, const DaqDropEntry& d, DatasetDrop*
   out->trace.t_s.resize(t.size());
   for (size_t i = 0; i < t.size(); ++i) out->trace.t_s[i] = t[i] - r.onset.t0_s;
   out->trace.penetration_m = std::move(penetration);
+  // Both ways zero it at the detected touchdown: the displacement at the free-fall fit's value
+  // there, the acceleration's double integral from there. A late detection moves that zero along
+  // the free fall (dataset.h), which diagnose's per-drop time takes up with it.
+  out->penetration_zero = PenetrationZero::kTouchdown;
   out->trace.force_N = std::move(force);
   out->extra = d.extra;
   const auto number = [](double v) { return io::FormatNumber(v); };

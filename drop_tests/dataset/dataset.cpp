@@ -31,7 +31,7 @@ const std::vector<std::string> kDatasetDropColumns = {"drop_id",      "pad",    
 const std::vector<std::string> kDatasetTraceColumns = {"t_s", "penetration_m", "force_N"};
 
 namespace {
-const std::vector<std::string> kOptionalColumns = {"final_penetration_m", "peak_force_N"};
+const std::vector<std::string> kOptionalColumns = {"final_penetration_m", "peak_force_N", "penetration_zero"};
 
 bool IsPathLike(const std::string& s) {
   return s.find('/') != std::string::npos || s.ends_with(".yaml") || s.ends_with(".yml");
@@ -146,7 +146,7 @@ Dataset ReadDataset(const std::string& directory, const DatasetReadOptions& opti
   const io::CsvTable t = io::ReadCsv(drops_csv);
   std::vector<int> required;
   for (const std::string& c : kDatasetDropColumns) required.push_back(t.Require(c));
-  const int c_final = t.Find("final_penetration_m"), c_peak = t.Find("peak_force_N");
+  const int c_final = t.Find("final_penetration_m"), c_peak = t.Find("peak_force_N"), c_zero = t.Find("penetration_zero");
   Dataset ds;
   ds.directory = directory;
   std::vector<int> extra_index;
@@ -196,6 +196,11 @@ Dataset ReadDataset(const std::string& directory, const DatasetReadOptions& opti
     }
     if (c_final >= 0 && !cells[c_final].empty()) d.final_penetration_m = t.Number(r, c_final);
     if (c_peak >= 0 && !cells[c_peak].empty()) d.peak_force_N = t.Number(r, c_peak);
+    if (c_zero >= 0 && !cells[c_zero].empty()) {
+      const std::optional<PenetrationZero> zero = FindName(kPenetrationZeroNames, cells[c_zero]);
+      if (!zero) t.Fail(r, c_zero, "must be " + NameChoices(kPenetrationZeroNames) + ", got '" + cells[c_zero] + "'");
+      d.penetration_zero = *zero;
+    }
     for (int c : extra_index) d.extra.push_back(cells[c]);
     if (options.load_traces) d.trace = ReadTrace(trace_path);
     ds.drops.push_back(std::move(d));
@@ -204,11 +209,12 @@ Dataset ReadDataset(const std::string& directory, const DatasetReadOptions& opti
 }
 
 void WriteDatasetFiles(const Dataset& ds, const std::string& directory) {
-  bool any_final = false, any_peak = false;
+  bool any_final = false, any_peak = false, any_zero = false;
   std::set<std::string> ids;
   for (const DatasetDrop& d : ds.drops) {
     any_final |= d.final_penetration_m.has_value();
     any_peak |= d.peak_force_N.has_value();
+    any_zero |= d.penetration_zero != PenetrationZero::kSurface;
     if (const std::string problem = DropIdProblem(d.drop_id); !problem.empty())
       throw MakeInputError(directory, "drop_id", problem);
     if (!ids.insert(d.drop_id).second) throw MakeInputError(directory, "drop_id", "duplicate drop id '" + d.drop_id + "'");
@@ -225,6 +231,7 @@ void WriteDatasetFiles(const Dataset& ds, const std::string& directory) {
     for (size_t i = 0; i < kDatasetDropColumns.size(); ++i) out << (i ? "," : "") << kDatasetDropColumns[i];
     if (any_final) out << ",final_penetration_m";
     if (any_peak) out << ",peak_force_N";
+    if (any_zero) out << ",penetration_zero";
     for (const std::string& c : ds.extra_columns) out << ',' << c;
     out << '\n';
     for (const DatasetDrop& d : ds.drops) {
@@ -233,6 +240,7 @@ void WriteDatasetFiles(const Dataset& ds, const std::string& directory) {
           << io::FormatNumber(d.gravity_m_s2) << ',' << d.trace_file;
       if (any_final) out << ',' << (d.final_penetration_m ? io::FormatNumber(*d.final_penetration_m) : "");
       if (any_peak) out << ',' << (d.peak_force_N ? io::FormatNumber(*d.peak_force_N) : "");
+      if (any_zero) out << ',' << NameIn(kPenetrationZeroNames, d.penetration_zero);
       for (const std::string& cell : d.extra) out << ',' << cell;
       out << '\n';
     }

@@ -4,18 +4,22 @@
 //
 //   drops.csv   one row per drop, the columns
 //                 drop_id,pad,soil,atmosphere,impact_speed_m_s,pad_mass_kg,gravity_m_s2,trace
-//               optionally final_penetration_m,peak_force_N, then any further parameter
+//               optionally final_penetration_m,peak_force_N,penetration_zero, then any further parameter
 //               columns (tilt_deg, horizontal_speed_m_s, ...). `atmosphere` is vacuum or air;
 //               `trace` is a path relative to the directory.
 //   each trace  t_s,penetration_m,force_N (+ extra columns): t = 0 at touchdown (earlier,
 //               negative times are allowed), penetration positive downward from the
 //               undisturbed surface, force = soil reaction on the pad, positive upward.
+//               `penetration_zero: touchdown` (an imported record's): the penetration is
+//               zeroed instead where the pad's free fall puts it at the recorded t = 0, so a
+//               touchdown detected late by dt moves it by the free fall's v dt + g dt^2 / 2.
 //
 // Reading validates everything (columns, numbers, strictly increasing time, pads and soils
 // known to the catalogue, unique drop ids, trace files present) before returning, and throws
 // InputError naming file, line and column on the first problem: a dataset is read whole or
 // not at all. Writing goes to a staged directory that appears only when complete. Numbers are
 // written in shortest round-trip form, so write -> read gives back identical values.
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,6 +27,7 @@
 #include "drop_tests/drop/drop_row.h"
 #include "drop_tests/formats/output_path.h"
 #include "rft/atmosphere.h"
+#include "rft/enum_names.h"
 
 namespace touchdown::dataset {
 
@@ -30,6 +35,12 @@ namespace touchdown::dataset {
 extern const std::vector<std::string> kDatasetDropColumns;
 // The required trace columns.
 extern const std::vector<std::string> kDatasetTraceColumns;
+
+// Where a trace's penetration is zero: the undisturbed surface, or the free-fall path's point at
+// the recorded touchdown (t = 0), which is the surface only when the touchdown is found exactly.
+enum class PenetrationZero { kSurface, kTouchdown };
+inline constexpr std::array<EnumName<PenetrationZero>, 2> kPenetrationZeroNames{
+    {{PenetrationZero::kSurface, "surface"}, {PenetrationZero::kTouchdown, "touchdown"}}};
 
 struct DatasetTrace {
   std::vector<double> t_s;
@@ -55,6 +66,7 @@ struct DatasetDrop {
   std::string trace_file;  // relative to the dataset directory
   std::optional<double> final_penetration_m;
   std::optional<double> peak_force_N;
+  PenetrationZero penetration_zero = PenetrationZero::kSurface;
   std::vector<std::string> extra;  // cells of Dataset::extra_columns, as written ("" = empty)
   DatasetTrace trace;              // empty when read with load_traces = false
 

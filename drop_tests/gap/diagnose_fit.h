@@ -70,6 +70,7 @@ struct FitDrop {
   rft::Atmosphere atmosphere = rft::Atmosphere::kVacuum;  // the dataset row's
   bool train = true;
   double speed_m_s = 0.0, mass_kg = 0.0, gravity_m_s2 = 0.0;
+  dataset::PenetrationZero penetration_zero = dataset::PenetrationZero::kSurface;  // the dataset row's
   const dataset::DatasetTrace* trace = nullptr;
   double force_scale_N = 1.0;        // max measured force
   double penetration_scale_m = 1.0;  // max measured penetration

@@ -157,6 +157,7 @@ FitProblem MakeFitProblem(const dataset::Dataset& ds, const std::vector<bool>& h
     p.has_vacuum |= d.atmosphere == rft::Atmosphere::kVacuum;
     d.train = !held_out[i];
     d.speed_m_s = dd.impact_speed_m_s;
+    d.penetration_zero = dd.penetration_zero;
     d.mass_kg = dd.pad_mass_kg;
     d.gravity_m_s2 = dd.gravity_m_s2;
     d.trace = &dd.trace;

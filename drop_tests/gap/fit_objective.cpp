@@ -144,7 +144,16 @@ std::optional<dataset::DatasetTrace> Record(const FitDrop& d, const ModelValues&
   if (!sim) return std::nullopt;
   terms.sensor_dt_s += b.time_s;
   try {
-    return dataset::RecordedTrace(*sim, d.gravity_m_s2, terms, d.trace->t_s, m.sensor, d.sample_period_s);
+    dataset::DatasetTrace recorded =
+        dataset::RecordedTrace(*sim, d.gravity_m_s2, terms, d.trace->t_s, m.sensor, d.sample_period_s);
+    if (d.penetration_zero == dataset::PenetrationZero::kTouchdown) {
+      // Zeroed where the free fall put the pad at the recorded t = 0, dt after the true touchdown
+      // (before it for dt < 0): v dt + g dt^2 / 2 below the surface, v the drop's impact speed.
+      const double dt = terms.sensor_dt_s, v = d.speed_m_s * std::exp(b.log_speed);
+      const double zero = v * dt + 0.5 * d.gravity_m_s2 * dt * dt;
+      for (double& z : recorded.penetration_m) z -= zero;
+    }
+    return recorded;
   } catch (const std::invalid_argument&) {
     return std::nullopt;
   }

@@ -80,6 +80,7 @@ TEST_F(DaqImport, DisplacementRoundTrip) {
     // The penetration is referenced to the detected touchdown: off by v0 times its error.
     EXPECT_NEAR(d.trace.penetration_m.back(), records_[k].final_depth_m, shapes_[k].speed_m_s * 3 * u + 3e-5);
     EXPECT_NEAR(d.trace.force_N.back(), 1.6 * 9.81, 0.5);
+    EXPECT_EQ(d.penetration_zero, PenetrationZero::kTouchdown);  // what diagnose's time moves with
   }
   EXPECT_EQ(run.dataset, back);
   const std::string readme = Slurp(dir_ / "out" / "README.md");
@@ -98,6 +99,7 @@ TEST_F(DaqImport, AccelerationRoundTrip) {
     const DatasetDrop& d = back.drops[k];
     EXPECT_EQ(Cell(back, d, "raw_file"), "raw/d" + std::to_string(k + 1) + ".csv");
     EXPECT_EQ(Cell(back, d, "penetration_from"), "acceleration");
+    EXPECT_EQ(d.penetration_zero, PenetrationZero::kTouchdown);
     EXPECT_NEAR(*back.ExtraNumber(d, "pretrigger_acceleration_m_s2"), 9.81, 0.05);
     EXPECT_NEAR(*back.ExtraNumber(d, "acceleration_bias_m_s2"), 0.0, 0.05);  // free_fall took it with g
     const double u = *back.ExtraNumber(d, "touchdown_uncertainty_s");

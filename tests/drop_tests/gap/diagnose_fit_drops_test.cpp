@@ -6,7 +6,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "drop_tests/dataset/synth.h"
+#include "drop_tests/gap/fit_objective.h"
 #include "drop_tests/drop/drop_setup.h"
 #include "drop_tests/drop/pad_drop.h"
 
@@ -52,6 +55,45 @@ TEST(DiagnoseFitDrops, SimulatedRecordIsTheFactorysDrop) {
     ASSERT_EQ(fitted->force_N[i], r.force_N) << i;
     ASSERT_EQ(fitted->penetration_m[i], r.penetration_m) << i;
   }
+}
+
+// An imported record's penetration is zeroed where the free fall put the pad at its recorded
+// touchdown (dataset::PenetrationZero::kTouchdown): with the drop's recorded t = 0 dt after the
+// true touchdown, the simulated record's penetration is the surface-zeroed one less v dt + g dt^2 / 2,
+// v the drop's impact speed with its nuisance, at every sample; its force is unchanged.
+TEST(DiagnoseFitDrops, ATouchdownZeroedRecordMovesItsZeroAlongTheFreeFall) {
+  dataset::SynthSpec spec;
+  spec.name = "zeroed";
+  spec.source = "zeroed.yaml";
+  spec.rest_duration_s = 0.008;
+  spec.drops.push_back({"flat", "fjs1_lp", rft::Atmosphere::kVacuum, 1.1, 1.6, 9.81, 0});
+  dataset::Dataset ds = dataset::Synthesize(spec);
+  ds.directory = "in-memory";
+  FitProblem p = MakeFitProblem(ds, {false}, 1);
+  FitDrop surface = p.drops[0];
+  FitDrop touchdown = surface;
+  touchdown.penetration_zero = dataset::PenetrationZero::kTouchdown;
+  FitResult model;
+  model.zeta_N_m3 = {2.3e6};
+  const fit::ModelValues m = fit::ValuesOf(model);
+  DropNuisance b;
+  b.time_s = 1.5e-3;
+  b.log_speed = 0.02;
+  const std::optional<pad::RigDropResult> sim = fit::Simulate(p, surface, m, m.Terms(), b);
+  ASSERT_TRUE(sim.has_value());
+  const std::optional<dataset::DatasetTrace> a = fit::Record(surface, m, m.Terms(), b, sim);
+  const std::optional<dataset::DatasetTrace> z = fit::Record(touchdown, m, m.Terms(), b, sim);
+  ASSERT_TRUE(a && z);
+  const double v = 1.1 * std::exp(0.02), dt = 1.5e-3;
+  const double zero = v * dt + 0.5 * 9.81 * dt * dt;
+  for (size_t i = 0; i < a->size(); ++i) {
+    ASSERT_NEAR(z->penetration_m[i], a->penetration_m[i] - zero, 1e-15) << i;
+    ASSERT_EQ(z->force_N[i], a->force_N[i]) << i;
+  }
+  // With no time offset the two zeros agree.
+  b.time_s = 0.0;
+  const std::optional<pad::RigDropResult> at0 = fit::Simulate(p, surface, m, m.Terms(), b);
+  EXPECT_EQ(fit::Record(touchdown, m, m.Terms(), b, at0)->penetration_m, fit::Record(surface, m, m.Terms(), b, at0)->penetration_m);
 }
 
 }  // namespace
