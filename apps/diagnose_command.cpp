@@ -22,7 +22,7 @@ struct DiagnoseArgs {
   double min_step_explained = gap::DiagnoseOptions{}.min_step_explained;
   std::vector<std::string> fit_on;
   bool no_pairs = false, law_candidate = false, no_drop_nuisances = false, floor_from_base = false,
-       count_stop_samples = false;
+       count_stop_samples = false, search_within_floor = false;
 };
 }  // namespace
 
@@ -64,8 +64,12 @@ void AddDiagnoseCommand(CLI::App& app) {
   cmd->add_flag("--count-stop-samples", args->count_stop_samples,
                 "count the two samples either side of each drop's measured stop in its force residual, as the "
                 "release before (by default they are left out; docs/model_gap.md)");
+  cmd->add_flag("--search-within-floor", args->search_within_floor,
+                "search for a further term after a model whose held-out gap lies within the replicates' floor's "
+                "95 % upper bound, as the release before (by default the search stops there; docs/model_gap.md)");
   cmd->callback([args] {
     gap::DiagnoseOptions o;
+    o.stop_within_floor = !args->search_within_floor;
     o.drop_nuisances = !args->no_drop_nuisances;
     o.floor_from_best_model = !args->floor_from_base;
     o.skip_stop_samples = !args->count_stop_samples;

@@ -92,6 +92,10 @@ struct DiagnoseOptions {
   // The replicates' floor read from the best-fitting candidate's residuals too, the lowest kept
   // (gap_floor.h LowerFloorByCandidates); false (--floor-from-base): from the base's alone.
   bool floor_from_best_model = true;
+  // With a floor from replicates: no further term once the model's held-out mean square lies
+  // within the floor's 95 % upper bound (what is left, the replicates cannot tell from their
+  // scatter; the rule the selected model is named by). false (--search-within-floor): search on.
+  bool stop_within_floor = true;
   // Each drop's two samples either side of its measured stop left out of its force residuals
   // (diagnose_fit.h StopSamples) where the per-drop nuisances are on (diagnose_fit.h
   // CountStopSamples says why not elsewhere); false (--count-stop-samples): every sample counts.

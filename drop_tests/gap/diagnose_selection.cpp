@@ -257,6 +257,16 @@ void SelectForward(Diagnosis& d, const DiagnoseOptions& o, const ScoreModel& sco
   int current = -1;  // index into d.candidates, -1: the base
   for (int step = 1;; ++step) {
     const CandidateScore& cur = current < 0 ? d.base : d.candidates[current];
+    // A model that leaves nothing the replicates tell from their scatter is not extended: a
+    // further term would fit that scatter (on the independent blind sets, a compaction beside a
+    // rate damping and a rate damping beside a plug, each named after a first term within the bound).
+    if (current >= 0 && o.stop_within_floor && d.floor.from_replicates && cur.held_out.mean_square <= d.floor.ms_upper) {
+      steps.push_back("step " + std::to_string(step) + ": " + cur.name + " already fits within the replicates' floor " +
+                      "(held-out RMS force NRMSE " + Fixed(std::sqrt(cur.held_out.mean_square), 4) +
+                      " within its 95 % upper bound " + Fixed(std::sqrt(d.floor.ms_upper), 4) +
+                      "): a further term would fit their scatter");
+      break;
+    }
     const std::vector<std::string> cur_ids = cur.effect_ids;
     const FitResult start = cur.fit;
     std::vector<std::vector<std::string>> models;

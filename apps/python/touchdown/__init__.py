@@ -159,11 +159,11 @@ def validate(*, sources=None, out=None):
 
 def diagnose(measured, out, *, model=None, threads=0, pairs=True, min_step_explained=0.5, law_candidate=False,
              base="rft", sensor_sampling="auto", fit_on=(), drop_nuisances=True, floor_from_base=False,
-             count_stop_samples=False, progress=True):
+             count_stop_samples=False, search_within_floor=False, progress=True):
     """`touchdown diagnose MEASURED --out OUT [--model M] [--threads N] [--no-pairs]
     [--min-step-explained X] [--law-candidate] [--base rft|bekker] [--sensor-sampling
     auto|instantaneous|period_mean] [--fit-on ID,...] [--no-drop-nuisances] [--floor-from-base]
-    [--count-stop-samples]`: the model-gap
+    [--count-stop-samples] [--search-within-floor]`: the model-gap
     workflow into the new directory OUT
     (docs/model_gap.md); returns diagnosis.json as a dict (the command prints a part of it).
     `pairs=False` is `--no-pairs`: forward selection stops after the first term. `fit_on` (drop
@@ -171,6 +171,7 @@ def diagnose(measured, out, *, model=None, threads=0, pairs=True, min_step_expla
     `drop_nuisances=False` is `--no-drop-nuisances`: every drop at its nominal strength, speed and time.
     `floor_from_base=True` is `--floor-from-base`: the replicates' floor read from the base's residuals only.
     `count_stop_samples=True` is `--count-stop-samples`: the two samples either side of each stop counted.
+    `search_within_floor=True` is `--search-within-floor`: terms added after a model within the floor.
     `progress` counts the candidate models fitted (see sweep); Ctrl-C abandons the fit, writing nothing."""
     with _progress_reporter(progress, "diagnose", "fits") as report:
         return json.loads(_touchdown.diagnose(measured=_path_text(measured), model=_path_text(model),
@@ -180,7 +181,8 @@ def diagnose(measured, out, *, model=None, threads=0, pairs=True, min_step_expla
                                               sensor_sampling=sensor_sampling, fit_on=_id_list(fit_on, "diagnose", "fit_on"),
                                               drop_nuisances=bool(drop_nuisances),
                                               floor_from_base=bool(floor_from_base),
-                                              count_stop_samples=bool(count_stop_samples), progress=report))
+                                              count_stop_samples=bool(count_stop_samples),
+                                              search_within_floor=bool(search_within_floor), progress=report))
 
 
 def trade(plan, out, *, model=None, threads=0, progress=True):
