@@ -16,14 +16,20 @@
 namespace touchdown::gap {
 namespace {
 
-TEST(DiagnoseFitDrops, SimulatedRecordIsTheFactorysDrop) {
+// A dataset of one drop simulated by synth (its defaults otherwise), kept in memory.
+dataset::Dataset OneDrop(const dataset::SynthDrop& drop) {
   dataset::SynthSpec spec;
-  spec.name = "fit_drops";
-  spec.source = "fit_drops.yaml";
+  spec.name = "one_drop";
+  spec.source = "one_drop.yaml";
   spec.rest_duration_s = 0.008;
-  spec.drops.push_back({"curved", "fjs1_lp", rft::Atmosphere::kAir, 1.2, 1.9, 1.62, 0});
+  spec.drops.push_back(drop);
   dataset::Dataset ds = dataset::Synthesize(spec);
   ds.directory = "in-memory";
+  return ds;
+}
+
+TEST(DiagnoseFitDrops, SimulatedRecordIsTheFactorysDrop) {
+  const dataset::Dataset ds = OneDrop({"curved", "fjs1_lp", rft::Atmosphere::kAir, 1.2, 1.9, 1.62, 0});
   const FitProblem p = MakeFitProblem(ds, {false}, 1);
   ASSERT_EQ(p.drops.size(), 1u);
   const FitDrop& d = p.drops[0];
@@ -62,14 +68,8 @@ TEST(DiagnoseFitDrops, SimulatedRecordIsTheFactorysDrop) {
 // true touchdown, the simulated record's penetration is the surface-zeroed one less v dt + g dt^2 / 2,
 // v the drop's impact speed with its nuisance, at every sample; its force is unchanged.
 TEST(DiagnoseFitDrops, ATouchdownZeroedRecordMovesItsZeroAlongTheFreeFall) {
-  dataset::SynthSpec spec;
-  spec.name = "zeroed";
-  spec.source = "zeroed.yaml";
-  spec.rest_duration_s = 0.008;
-  spec.drops.push_back({"flat", "fjs1_lp", rft::Atmosphere::kVacuum, 1.1, 1.6, 9.81, 0});
-  dataset::Dataset ds = dataset::Synthesize(spec);
-  ds.directory = "in-memory";
-  FitProblem p = MakeFitProblem(ds, {false}, 1);
+  const dataset::Dataset ds = OneDrop({"flat", "fjs1_lp", rft::Atmosphere::kVacuum, 1.1, 1.6, 9.81, 0});
+  const FitProblem p = MakeFitProblem(ds, {false}, 1);
   FitDrop surface = p.drops[0];
   FitDrop touchdown = surface;
   touchdown.penetration_zero = dataset::PenetrationZero::kTouchdown;
