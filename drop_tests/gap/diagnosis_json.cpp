@@ -68,11 +68,15 @@ nlohmann::json SelectionJson(const Diagnosis& d) {
   return out;
 }
 
+// In file units, as the key's suffix says (dz_mm in mm), like every other parameter written.
 nlohmann::json EstimatesJson(const std::vector<ParameterEstimate>& estimates) {
   nlohmann::json j = nlohmann::json::object();
-  for (const ParameterEstimate& e : estimates)
-    j[e.key] = {{"value", io::FiniteOrNull(e.value)}, {"interval_95", {io::FiniteOrNull(e.low), io::FiniteOrNull(e.high)}},
-                {"unit", e.unit}};
+  for (const ParameterEstimate& e : estimates) {
+    const std::string unit = e.file_to_si == 1.0 ? e.unit : e.key.substr(e.key.rfind('_') + 1);
+    j[e.key] = {{"value", io::FiniteOrNull(e.value / e.file_to_si)},
+                {"interval_95", {io::FiniteOrNull(e.low / e.file_to_si), io::FiniteOrNull(e.high / e.file_to_si)}},
+                {"unit", unit}};
+  }
   return j;
 }
 
