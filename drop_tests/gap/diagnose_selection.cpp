@@ -258,8 +258,8 @@ void SelectForward(Diagnosis& d, const DiagnoseOptions& o, const ScoreModel& sco
   for (int step = 1;; ++step) {
     const CandidateScore& cur = current < 0 ? d.base : d.candidates[current];
     // A model that leaves nothing the replicates tell from their scatter is not extended: a
-    // further term would fit that scatter (on the independent blind sets, a compaction beside a
-    // rate damping and a rate damping beside a plug, each named after a first term within the bound).
+    // further term would fit that scatter (on the independent blind sets, a rate damping named
+    // beside a plug that already fitted within the bound).
     if (current >= 0 && o.stop_within_floor && d.floor.from_replicates && cur.held_out.mean_square <= d.floor.ms_upper) {
       steps.push_back("step " + std::to_string(step) + ": " + cur.name + " already fits within the replicates' floor " +
                       "(held-out RMS force NRMSE " + Fixed(std::sqrt(cur.held_out.mean_square), 4) +
