@@ -23,6 +23,7 @@ struct DiagnoseArgs {
   std::vector<std::string> fit_on;
   bool no_pairs = false, law_candidate = false, no_drop_nuisances = false, floor_from_base = false,
        count_stop_samples = false, search_within_floor = false;
+  std::string rig_offsets = "every";
 };
 }  // namespace
 
@@ -67,8 +68,13 @@ void AddDiagnoseCommand(CLI::App& app) {
   cmd->add_flag("--search-within-floor", args->search_within_floor,
                 "search for a further term after a model whose held-out gap lies within the replicates' floor's "
                 "95 % upper bound, as the release before (by default the search stops there; docs/model_gap.md)");
+  cmd->add_option("--rig-offsets", args->rig_offsets,
+                  "the record's common offsets in time and depth: every (fitted in every model, default) or "
+                  "candidate (added only as a step of the selection, judged as the soil's terms; docs/model_gap.md)")
+      ->check(CLI::IsMember(gap::RigOffsetsNames()));
   cmd->callback([args] {
     gap::DiagnoseOptions o;
+    o.rig_offsets = gap::ParseRigOffsets(args->rig_offsets, "command line", "--rig-offsets");
     o.stop_within_floor = !args->search_within_floor;
     o.drop_nuisances = !args->no_drop_nuisances;
     o.floor_from_best_model = !args->floor_from_base;

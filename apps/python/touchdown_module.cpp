@@ -385,12 +385,14 @@ std::string Diagnose(const std::string& measured, const std::string& model, cons
                      const py::object& threads_arg, bool pairs, double min_step_explained, bool law_candidate,
                      const std::string& base, const std::string& sensor_sampling,
                      const std::vector<std::string>& fit_on, bool drop_nuisances, bool floor_from_base,
-                     bool count_stop_samples, bool search_within_floor, py::object progress_arg) {
+                     bool count_stop_samples, bool search_within_floor, const std::string& rig_offsets,
+                     py::object progress_arg) {
   const int threads = ThreadsArgument(threads_arg, "touchdown.diagnose");
   const auto fail = [](const std::string& field, const std::string& allowed, const std::string& value) {
     throw MakeInputError("touchdown.diagnose", field, "must be " + allowed + ", got '" + value + "'");
   };
   const gap::DiagnoseBase diagnose_base = gap::ParseDiagnoseBase(base, "touchdown.diagnose", "base");
+  const gap::RigOffsets offsets = gap::ParseRigOffsets(rig_offsets, "touchdown.diagnose", "rig_offsets");
   const std::optional<pad::SensorSampling> sampling = dataset::ParseSensorSampling(sensor_sampling);
   if (!sampling && sensor_sampling != "auto")
     fail("sensor_sampling", "auto or " + dataset::SensorSamplingChoices(), sensor_sampling);
@@ -411,6 +413,7 @@ std::string Diagnose(const std::string& measured, const std::string& model, cons
     o.floor_from_best_model = !floor_from_base;
     o.skip_stop_samples = !count_stop_samples;
     o.stop_within_floor = !search_within_floor;
+    o.rig_offsets = offsets;
     o.progress.counts = progress.counts();
     if (!model.empty()) o.start_model = model::LoadModelFile(model);
     return gap::DiagnosisJson(gap::DiagnoseToDirectory(measured, o, {out, {measured, model}})).dump(2);
@@ -527,7 +530,7 @@ PYBIND11_MODULE(_touchdown, m) {
         py::arg("pairs"), py::arg("min_step_explained"), py::arg("law_candidate"), py::arg("base"),
         py::arg("sensor_sampling"), py::arg("fit_on"), py::arg("drop_nuisances") = true,
         py::arg("floor_from_base") = false, py::arg("count_stop_samples") = false,
-        py::arg("search_within_floor") = false, py::arg("progress") = py::none());
+        py::arg("search_within_floor") = false, py::arg("rig_offsets") = "every", py::arg("progress") = py::none());
   m.def("calibrate_targets", &python::CalibrateTargets, py::arg("targets"), py::arg("out"), py::arg("report"),
         py::arg("threads"), py::arg("evaluate_only"), py::arg("progress") = py::none());
   m.def("validate", &python::Validate, py::arg("sources"), py::arg("out"));

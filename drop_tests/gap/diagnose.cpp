@@ -339,6 +339,16 @@ DiagnoseBase ParseDiagnoseBase(const std::string& name, const std::string& where
   return ParseName(kDiagnoseBaseNames, name, where, field);
 }
 
+std::vector<std::string> RigOffsetsNames() {
+  std::vector<std::string> names;
+  for (const auto& e : kRigOffsetsNames) names.push_back(e.name);
+  return names;
+}
+
+RigOffsets ParseRigOffsets(const std::string& name, const std::string& where, const std::string& field) {
+  return ParseName(kRigOffsetsNames, name, where, field);
+}
+
 Diagnosis RunDiagnosis(const dataset::Dataset& ds, const DiagnoseOptions& o) {
   const auto t0 = std::chrono::steady_clock::now();
   if (ds.drops.size() < 3) throw MakeInputError(ds.directory, "drops.csv", "diagnose needs at least 3 drops");
@@ -362,7 +372,7 @@ Diagnosis RunDiagnosis(const dataset::Dataset& ds, const DiagnoseOptions& o) {
   }
   // The record's common offsets in time and depth are the rig's nuisances in every fit (no longer
   // a candidate of the soil's): a detector's lag behind an anti-alias filter is in every raw file.
-  d.problem.sensor_fit.offsets = o.drop_nuisances;
+  d.problem.sensor_fit.offsets = o.drop_nuisances && o.rig_offsets == RigOffsets::kEveryModel;
   SetCandidateTerms(d.problem);  // from the base's soils (a Bekker base's too)
   io::Progress progress("diagnose", "fits", 1 + static_cast<int64_t>(d.problem.terms.size()), o.progress);
   // 1: the sensor (inferred, or as given) and the drops' nuisances: their spreads from the base's

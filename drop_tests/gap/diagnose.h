@@ -62,6 +62,18 @@ std::vector<std::string> DiagnoseBaseNames();
 // The base a name stands for. Throws InputError naming `where` and `field` on any other text.
 DiagnoseBase ParseDiagnoseBase(const std::string& name, const std::string& where, const std::string& field);
 
+// The record's common offsets in time and depth (sensor_offset): fitted in every model, the base's
+// included (kEveryModel, the default), or a candidate of their own that enters the model only as a
+// step of the forward selection, judged as the soil's terms are (kCandidate). docs/model_gap.md
+// measures both on the independent blind sets.
+enum class RigOffsets { kEveryModel, kCandidate };
+inline constexpr std::array<EnumName<RigOffsets>, 2> kRigOffsetsNames{
+    {{RigOffsets::kEveryModel, "every"}, {RigOffsets::kCandidate, "candidate"}}};
+// The names on the command line and in Python ("every", "candidate"), in the enum's order.
+std::vector<std::string> RigOffsetsNames();
+// The choice a name stands for. Throws InputError naming `where` and `field` on any other text.
+RigOffsets ParseRigOffsets(const std::string& name, const std::string& where, const std::string& field);
+
 struct DiagnoseOptions {
   int threads = 2;
   bool try_pairs = true;             // search again after the first term (--no-pairs: one at most)
@@ -96,6 +108,8 @@ struct DiagnoseOptions {
   // within the floor's 95 % upper bound (what is left, the replicates cannot tell from their
   // scatter; the rule the selected model is named by). false (--search-within-floor): search on.
   bool stop_within_floor = true;
+  // --rig-offsets: the record's common offsets in every model or as a candidate (RigOffsets).
+  RigOffsets rig_offsets = RigOffsets::kEveryModel;
   // Each drop's two samples either side of its measured stop left out of its force residuals
   // (diagnose_fit.h StopSamples) where the per-drop nuisances are on (diagnose_fit.h
   // CountStopSamples says why not elsewhere); false (--count-stop-samples): every sample counts.

@@ -154,20 +154,24 @@ def test_diagnose_floor_from_base_equals_the_command_line(tmp_path):
     # Two trials of six conditions: a floor from the replicates (6 degrees of freedom). Python's
     # `floor_from_base` is --floor-from-base: the floor read from the base's residuals alone; and
     # `count_stop_samples` is --count-stop-samples: every sample in the force residual; and
-    # `search_within_floor` is --search-within-floor (accepted by both; one term here, so no search).
+    # `search_within_floor` is --search-within-floor (accepted by both; one term here, so no search);
+    # `rig_offsets="candidate"` is --rig-offsets candidate: the common offsets leave the base and
+    # are a candidate of their own.
     spec = tmp_path / "synth.yaml"
     spec.write_text(SYNTH_SPEC.replace("impact_speeds_m_s: [1.0]", "impact_speeds_m_s: [0.7, 1.0, 1.5]")
                     .replace("trials: 1", "trials: 2"))
     run_touchdown("synth", spec, "--out", tmp_path / "measured")
     run_touchdown("diagnose", tmp_path / "measured", "--out", tmp_path / "cli", "--no-pairs", "--threads", "2",
-                  "--floor-from-base", "--count-stop-samples", "--search-within-floor")
+                  "--floor-from-base", "--count-stop-samples", "--search-within-floor", "--rig-offsets", "candidate")
     py = touchdown.diagnose(tmp_path / "measured", tmp_path / "py", pairs=False, threads=2, floor_from_base=True,
-                            count_stop_samples=True, search_within_floor=True)
+                            count_stop_samples=True, search_within_floor=True, rig_offsets="candidate")
     assert _without_seconds(py) == _without_seconds(_json(tmp_path / "cli" / "diagnosis.json"))
     assert py["floor"]["source"] == "replicates (pure error)"
     assert py["floor"]["read_from_model"] == "base"
     assert py["floor"]["force_nrmse_upper_95"] >= py["floor"]["force_nrmse"]
     assert py["stop_samples_skipped"] is False
+    assert not any(k.startswith("sensor_offset.") for k in py["rig_parameters"])
+    assert any(c["effect"] == "sensor_offset" for c in py["candidates"])
 
 
 TRADE_PLAN = ("schema_version: 1\ntype: sweep\nname: tiny_trade\nfixed: {gravity_m_s2: 9.81}\n"
