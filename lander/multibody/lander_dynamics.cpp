@@ -395,6 +395,12 @@ void EvaluateLander(const LanderModel& model, const StateLayout& L, const rft::T
   e->u_dot = u_dot;
 }
 
+void Derivative(const LanderSystem& system, LanderData& data, const Eigen::Ref<const Eigen::VectorXd>& y,
+                Eigen::Ref<Eigen::VectorXd> ydot) {
+  EvaluateLander(system.model, system.layout, system.terrain, system.modes, y, &data.evaluation, &data);
+  StateDerivative(system.layout, y, data.evaluation, ydot);
+}
+
 void StateDerivative(const StateLayout& L, const Eigen::Ref<const Eigen::VectorXd>& y, const LanderEvaluation& e,
                      Eigen::Ref<Eigen::VectorXd> ydot) {
   auto quat_rate = [&](int qi, const Eigen::Vector3d& w) {

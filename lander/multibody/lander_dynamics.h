@@ -141,6 +141,9 @@ struct LanderData {
   // the last one with kKeep (same q, same modes) instead of forming them again.
   using MassMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxSpeeds, kMaxSpeeds>;
   Eigen::LLT<MassMatrix> mass_llt;
+  // The last Derivative's evaluation (forces, accelerations, the pads' wrenches): what the
+  // right-hand side found at its state, for the Jacobian formed there and for records.
+  LanderEvaluation evaluation;
 };
 
 // What an evaluation does with LanderData's position terms (above). A Jacobian's speed columns move
@@ -180,6 +183,20 @@ void EvaluateLander(const LanderModel& model, const StateLayout& layout, const r
 // dy/dt from an evaluation (quaternion kinematics, du/dt, dW/dt).
 void StateDerivative(const StateLayout& layout, const Eigen::Ref<const Eigen::VectorXd>& y,
                      const LanderEvaluation& e, Eigen::Ref<Eigen::VectorXd> ydot);
+
+// The lander's Model for its right-hand side: the fixed model, its state layout and terrain, and
+// the hybrid modes of the continuous phase (fixed between events). References: each must outlive it.
+struct LanderSystem {
+  const LanderModel& model;
+  const StateLayout& layout;
+  const rft::Terrain& terrain;
+  const LanderModes& modes;
+};
+// The lander's right-hand side: dy/dt at y, its evaluation left in data.evaluation (the three
+// right-hand sides, rig, free pad and lander, take this one shape, as Pinocchio's algorithms do).
+// Nothing allocates once data.evaluation.u_dot has the layout's nu entries.
+void Derivative(const LanderSystem& system, LanderData& data, const Eigen::Ref<const Eigen::VectorXd>& y,
+                Eigen::Ref<Eigen::VectorXd> ydot);
 
 // Kinetic energy, and potential energy (gravity, absorber springs, cone stops) [J].
 double KineticEnergy(const LanderModel& model, const StateLayout& layout, const Eigen::Ref<const Eigen::VectorXd>& y);

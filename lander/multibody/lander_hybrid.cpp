@@ -110,11 +110,10 @@ HoldCheck CheckHold(const LanderModel& model, const rft::Terrain& terrain, int i
 }  // namespace
 
 void LanderHybrid::Derivative(Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::VectorXd> ydot) {
-  EvaluateLander(model_, L_, terrain_, modes_, y, &eval_, &data_);
+  lander::Derivative(LanderSystem{model_, L_, terrain_, modes_}, data_, y, ydot);
   last_rhs_y_ = y;
   last_rhs_valid_ = true;
-  rhs_contacts_ += eval_.pad_contacts;
-  StateDerivative(L_, y, eval_, ydot);
+  rhs_contacts_ += data_.evaluation.pad_contacts;
 }
 
 void LanderHybrid::Roots(Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::VectorXd> g) {

@@ -23,7 +23,7 @@ class LanderHybrid {
                LanderRunResult& result)
       : model_(model), L_(model, HasJanosiShear(terrain)), terrain_(terrain), options_(options), result_(result) {
     for (int i = 0; i < kNumLegs; ++i) modes_.stroke[i] = StrokeMode::kLocked;
-    eval_.u_dot = Eigen::VectorXd::Zero(L_.nu);
+    data_.evaluation.u_dot = Eigen::VectorXd::Zero(L_.nu);
     last_rhs_y_ = Eigen::VectorXd::Zero(L_.size);
     jacobian_data_.attitude_sensitivity = options.jacobian_attitude_sensitivity;
     // The slide checks form their integrals inside the root functions: their storage, reserved here.
@@ -37,7 +37,8 @@ class LanderHybrid {
   void Jacobian(Eigen::Ref<const Eigen::VectorXd> y, const Eigen::VectorXd& scale, Eigen::Ref<Eigen::MatrixXd> J) {
     // CVODE forms its Jacobian at the predicted state, where it has just evaluated the right-hand side.
     const bool at_last_rhs = last_rhs_valid_ && y == last_rhs_y_;
-    LanderJacobian(model_, L_, terrain_, modes_, y, scale, &data_, &jacobian_data_, J, at_last_rhs ? &eval_ : nullptr);
+    LanderJacobian(model_, L_, terrain_, modes_, y, scale, &data_, &jacobian_data_, J,
+                   at_last_rhs ? &data_.evaluation : nullptr);
   }
   long jacobian_contact_evaluations() const { return jacobian_data_.contact_evaluations; }
   integ::RootSpec RootFunctions();
@@ -76,9 +77,9 @@ class LanderHybrid {
   const LanderRunOptions& options_;
   LanderRunResult& result_;
   LanderModes modes_;
-  LanderData data_;  // scratch of the right-hand side and the root functions
-  LanderEvaluation eval_, root_eval_;
-  // The state of eval_, the last right-hand side (false after an event: the modes may have changed).
+  LanderData data_;  // the right-hand side's (its last evaluation in data_.evaluation), and the root functions' scratch
+  LanderEvaluation root_eval_;
+  // The state of data_.evaluation, the last right-hand side (false after an event: the modes may have changed).
   Eigen::VectorXd last_rhs_y_;
   bool last_rhs_valid_ = false;
   LanderJacobianData jacobian_data_;

@@ -196,8 +196,10 @@ FreeDropResult RunFreeDrop(const FreeDropSetup& setup) {
   bool approaching = true;
   const integ::IntegratorOptions tolerances =
       WithScaledTolerances(options.integrator, body, in, pad.radius_m(), pad.size());
+  FreePadData data;
   integ::CvodeIntegrator integrator(
-      pad.size(), [&pad](double, Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::VectorXd> ydot) { pad.Derivative(y, ydot); },
+      pad.size(),
+      [&pad, &data](double, Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::VectorXd> ydot) { Derivative(pad, data, y, ydot); },
       tolerances, FreeDropRoots(pad, options.rest_speed_m_s, approaching));
   // Each state's typical size, atol / rtol, sizes the structured Jacobian's differences.
   const Eigen::VectorXd scale =

@@ -91,7 +91,13 @@ FreePadVertical FreePadDynamics::Vertical(const FreePadPose& s, const rft::Conta
   return out;
 }
 
-void FreePadDynamics::Derivative(const Eigen::Ref<const Eigen::VectorXd>& y, Eigen::Ref<Eigen::VectorXd> ydot) const {
+void Derivative(const FreePadDynamics& model, FreePadData& data, const Eigen::Ref<const Eigen::VectorXd>& y,
+                Eigen::Ref<Eigen::VectorXd> ydot) {
+  model.Evaluate(y, data, ydot);
+}
+
+void FreePadDynamics::Evaluate(const Eigen::Ref<const Eigen::VectorXd>& y, FreePadData& data,
+                               Eigen::Ref<Eigen::VectorXd> ydot) const {
   const FreePadPose s = PoseOf(y);
   const rft::SoilContactModel& soil = SoilUnder(s);
   const rft::ContactWrench w = Moving(s) ? Wrench(s, soil) : rft::ContactWrench{};
@@ -112,6 +118,8 @@ void FreePadDynamics::Derivative(const Eigen::Ref<const Eigen::VectorXd>& y, Eig
   }
   // Janosi's j: the horizontal slip of the contact's reference point while the pad is in the soil.
   if (shear_state_) ydot[L::shear()] = w.submerged_area_m2 > 0.0 ? std::hypot(s.v_WB.x(), s.v_WB.y()) : 0.0;
+  data.pose = s;
+  data.soil = w;
 }
 
 int FreePadDynamics::JacobianContacts() const { return (depth_only_ ? 1 : 3) + 3 + 3 + 3 + (shear_state_ ? 1 : 0); }
@@ -122,10 +130,11 @@ void FreePadDynamics::Jacobian(const Eigen::Ref<const Eigen::VectorXd>& y, const
   const int n = size(), soil_rows = n - L::v_WC_W();
   const double root_eps = std::sqrt(std::numeric_limits<double>::epsilon());
   State yp = y, fp(n);
+  FreePadData probe;
   J.setZero();
   // The soil's rows (v, w, work, j) of one column: a forward difference of step h along yp - y.
   auto difference = [&](double h) -> Eigen::Ref<const Eigen::VectorXd> {
-    Derivative(yp, fp);
+    Evaluate(yp, probe, fp);
     fp.tail(soil_rows) = (fp.tail(soil_rows) - f0.tail(soil_rows)) / h;
     yp = y;
     return fp.tail(soil_rows);

@@ -51,6 +51,13 @@ struct FreePadVertical {
   double force_z = 0.0;      // vertical force on the pad from below: soil and entrained grains, m (a_z + g)
 };
 
+// What one evaluation of the free pad's right-hand side found at its state (the free pad's Data;
+// its Model is FreePadDynamics).
+struct FreePadData {
+  FreePadPose pose;
+  rft::ContactWrench soil;  // the soil's wrench on the pad (zero at rest or in the air)
+};
+
 class FreePadDynamics {
  public:
   // References are kept: `body` and `terrain` must outlive this object.
@@ -67,9 +74,7 @@ class FreePadDynamics {
   // The soil wrench and the vertical motion at pose s on `soil` (SoilUnder(s), looked up once).
   rft::ContactWrench Wrench(const FreePadPose& s, const rft::SoilContactModel& soil) const;
   FreePadVertical Vertical(const FreePadPose& s, const rft::ContactWrench& w, const rft::SoilContactModel& soil) const;
-  // dy/dt at y.
-  void Derivative(const Eigen::Ref<const Eigen::VectorXd>& y, Eigen::Ref<Eigen::VectorXd> ydot) const;
-  // d(ydot)/dy at y, ydot = Derivative(y), into J (size() x size()), formed from the structure:
+  // d(ydot)/dy at y, ydot = Derivative(*this, data, y, ydot), into J (size() x size()), formed from the structure:
   // the kinematic rows (p, q) exactly; the soil's columns by forward differences of Derivative
   // along the pose's and twist's own coordinates: over a plane the wrench depends on
   // the position only through the depth (one difference, not three); the attitude through the
@@ -100,6 +105,10 @@ class FreePadDynamics {
   double radius_m() const { return radius_; }
 
  private:
+  friend void Derivative(const FreePadDynamics& model, FreePadData& data, const Eigen::Ref<const Eigen::VectorXd>& y,
+                         Eigen::Ref<Eigen::VectorXd> ydot);
+  void Evaluate(const Eigen::Ref<const Eigen::VectorXd>& y, FreePadData& data, Eigen::Ref<Eigen::VectorXd> ydot) const;
+
   const geom::PadBody& body_;
   const rft::Terrain& terrain_;
   const rft::GroundSurface& ground_;
@@ -114,5 +123,10 @@ class FreePadDynamics {
   bool depth_only_ = false;
   Eigen::Vector3d g_W_ = Eigen::Vector3d(0.0, 0.0, -1.0);
 };
+
+// The free pad's right-hand side: dy/dt at y (the three right-hand sides, rig, free pad and
+// lander, take this one shape, as Pinocchio's algorithms do). Nothing allocates.
+void Derivative(const FreePadDynamics& model, FreePadData& data, const Eigen::Ref<const Eigen::VectorXd>& y,
+                Eigen::Ref<Eigen::VectorXd> ydot);
 
 }  // namespace touchdown::pad

@@ -29,10 +29,10 @@ void RequireValid(const RigDropSetup& setup) {
 }
 }  // namespace
 
-void RigStrokeDerivative(const RigDropSetup& setup, const Eigen::Ref<const Eigen::VectorXd>& y,
-                         Eigen::Ref<Eigen::VectorXd> ydot) {
-  const VerticalSoilResponse& response = *setup.terrain;
-  const double m = setup.body.mass_kg, g = setup.initial.gravity_m_s2;
+void Derivative(const RigDropSetup& model, RigData& data, const Eigen::Ref<const Eigen::VectorXd>& y,
+                Eigen::Ref<Eigen::VectorXd> ydot) {
+  const VerticalSoilResponse& response = *model.terrain;
+  const double m = model.body.mass_kg, g = model.initial.gravity_m_s2;
   const double d = y[S::depth()];
   const double v = std::max(y[S::velocity_down()], 0.0);  // RFT resists only motion into the soil
   const bool in_soil = d > 0.0;
@@ -40,6 +40,9 @@ void RigStrokeDerivative(const RigDropSetup& setup, const Eigen::Ref<const Eigen
   const double m_a = in_soil ? response.AddedMass(d) : 0.0;
   const double m_a_slope = in_soil ? response.AddedMassSlope(d) : 0.0;
   const double accretion = v * v * m_a_slope;  // momentum given per unit time to grains picked up
+  data.soil_force_N = force;
+  data.added_mass_kg = m_a;
+  data.accretion_N = accretion;
   ydot[S::depth()] = y[S::velocity_down()];
   ydot[S::velocity_down()] = (m * g - force - accretion) / (m + m_a);
   ydot[S::work()] = force * v + 0.5 * accretion * v;
@@ -66,12 +69,13 @@ RigDropResult RunRigDrop(const RigDropSetup& setup) {
   const double m = setup.body.mass_kg, g = setup.initial.gravity_m_s2, weight = m * g;
   bool resting = false;  // mode switch at the stop event
 
+  RigData data;
   auto rhs = [&](double, Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::VectorXd> ydot) {
     if (resting && response.StaticCapacity(std::max(y[S::depth()], 0.0)) >= weight) {
       ydot.setZero();  // static: the soil carries the weight, nothing moves
       return;
     }
-    RigStrokeDerivative(setup, y, ydot);
+    Derivative(setup, data, y, ydot);
   };
   integ::RootSpec roots;
   roots.count = 2;  // [0] touchdown: depth rises through 0; [1] stop: velocity falls through 0

@@ -125,10 +125,19 @@ struct RigStateLayout {
   static constexpr int size = 4;
 };
 
+// What one evaluation of the rig's right-hand side found at its state (the rig's Data: the
+// three right-hand sides take one shape, Derivative(model, data, y, ydot), as Pinocchio's
+// algorithms do; the rig's model is its RigDropSetup).
+struct RigData {
+  double soil_force_N = 0.0;   // the soil's resistance, upward
+  double added_mass_kg = 0.0;  // the grains moving with the pad
+  double accretion_N = 0.0;    // momentum given per unit time to grains picked up
+};
+
 // Pure model: the state derivative of the rig during the stroke, y as RigStateLayout (its first
 // three states when the caller keeps no accretion loss).
-void RigStrokeDerivative(const RigDropSetup& setup, const Eigen::Ref<const Eigen::VectorXd>& y,
-                         Eigen::Ref<Eigen::VectorXd> ydot);
+void Derivative(const RigDropSetup& model, RigData& data, const Eigen::Ref<const Eigen::VectorXd>& y,
+                Eigen::Ref<Eigen::VectorXd> ydot);
 // The load-cell force F_c = m (g - dv/dt) at a stroke state [N].
 double RigContactForce(const RigDropSetup& setup, double depth_m, double speed_down_m_s);
 

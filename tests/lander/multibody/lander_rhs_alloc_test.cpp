@@ -21,17 +21,15 @@ TEST(LanderRightHandSide, DoesNotAllocate) {
   // At rest on the soil: every pad submerged.
   const Eigen::VectorXd y = SimulateLander(setup).final_state;
   LanderData data;
-  LanderEvaluation e;
-  e.u_dot = Eigen::VectorXd::Zero(L.nu);
+  data.evaluation.u_dot = Eigen::VectorXd::Zero(L.nu);
+  const LanderEvaluation& e = data.evaluation;
   Eigen::VectorXd ydot(L.size);
   LanderModes modes;
   for (int i = 0; i < kNumLegs; ++i) modes.pad[i] = PadMode::kHeld;
-  EvaluateLander(setup.model, L, setup.terrain, modes, y, &e, &data);
+  const LanderSystem system{setup.model, L, setup.terrain, modes};
+  Derivative(system, data, y, ydot);
   EXPECT_EQ(testing_alloc::CountAllocations([&] {
-              for (int k = 0; k < 3; ++k) {
-                EvaluateLander(setup.model, L, setup.terrain, modes, y, &e, &data);
-                StateDerivative(L, y, e, ydot);
-              }
+              for (int k = 0; k < 3; ++k) Derivative(system, data, y, ydot);
             }),
             0);
   EXPECT_TRUE(e.constrained);

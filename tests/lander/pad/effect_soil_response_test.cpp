@@ -143,7 +143,7 @@ class GrainsOnlyStroke {
   explicit GrainsOnlyStroke(const GrainsOnly& grains)
       : setup_{{kMass}, &grains, {1e-12, 1.0}, {}},
         integ_(4, [this](double, Eigen::Ref<const Eigen::VectorXd> y, Eigen::Ref<Eigen::VectorXd> yd) {
-          pad::RigStrokeDerivative(setup_, y, yd);
+          pad::Derivative(setup_, data_, y, yd);
         }, integ::IntegratorOptions{}) {
     Eigen::VectorXd y0(4);
     y0 << 1e-12, 1.0, 0.0, 0.0;
@@ -156,6 +156,7 @@ class GrainsOnlyStroke {
 
  private:
   pad::RigDropSetup setup_;
+  pad::RigData data_;
   integ::CvodeIntegrator integ_;
 };
 

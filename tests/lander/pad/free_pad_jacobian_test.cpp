@@ -41,12 +41,13 @@ Eigen::MatrixXd CentralDifferenceJacobian(const FreePadDynamics& pad, const Eige
   const int n = pad.size();
   Eigen::MatrixXd J(n, n);
   Eigen::VectorXd fp(n), fm(n);
+  FreePadData data;
   for (int i = 0; i < n; ++i) {
     const double h = 1e-6 * scale[i];
     Eigen::VectorXd yp = y, ym = y;
     yp[i] += h, ym[i] -= h;
-    pad.Derivative(yp, fp);
-    pad.Derivative(ym, fm);
+    Derivative(pad, data, yp, fp);
+    Derivative(pad, data, ym, fm);
     J.col(i) = (fp - fm) / (2.0 * h);
   }
   return J;
@@ -55,13 +56,14 @@ Eigen::MatrixXd CentralDifferenceJacobian(const FreePadDynamics& pad, const Eige
 void ExpectStructuredJacobianMatches(const rft::Terrain& terrain) {
   const geom::PadBody body = JacobianTestPad();
   const FreePadDynamics pad(body, terrain, 9.81);
+  FreePadData data;
   ASSERT_EQ(pad.JacobianContacts(), 10);  // over a plane: 1 depth + 3 rotations + 6 twist
   const Eigen::VectorXd y = JacobianTestState(pad);
   // Scales as the free drop's: length 0.05 m, speed 1 m/s, angle 1 rad, rate 20 rad/s, energy 1 J.
   Eigen::VectorXd scale(FreePadStateLayout(false).size);
   scale << 0.05, 0.05, 0.05, 1, 1, 1, 1, 1, 1, 1, 20, 20, 20, 1;
   Eigen::VectorXd f0(FreePadStateLayout(false).size);
-  pad.Derivative(y, f0);
+  Derivative(pad, data, y, f0);
   Eigen::MatrixXd J = Eigen::MatrixXd::Constant(FreePadStateLayout(false).size, FreePadStateLayout(false).size, 7.0);  // Jacobian sets every entry
   pad.Jacobian(y, f0, scale, J);
   const Eigen::MatrixXd reference = CentralDifferenceJacobian(pad, y, scale);
@@ -89,10 +91,11 @@ TEST(FreePadJacobian, DoesNotAllocate) {
   const geom::PadBody body = JacobianTestPad();
   const rft::Terrain terrain = rft::UniformTerrain("lp", test::Fjs1Law(false));
   const FreePadDynamics pad(body, terrain, 9.81);
+  FreePadData data;
   const Eigen::VectorXd y = JacobianTestState(pad), scale = Eigen::VectorXd::Ones(FreePadStateLayout(false).size);
   Eigen::VectorXd f0(FreePadStateLayout(false).size);
   Eigen::MatrixXd J(FreePadStateLayout(false).size, FreePadStateLayout(false).size);
-  pad.Derivative(y, f0);
+  Derivative(pad, data, y, f0);
   pad.Jacobian(y, f0, scale, J);
   EXPECT_EQ(testing_alloc::CountAllocations([&] { pad.Jacobian(y, f0, scale, J); }), 0);
   EXPECT_TRUE(J.allFinite());

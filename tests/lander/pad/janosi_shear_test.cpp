@@ -59,6 +59,7 @@ TEST(JanosiShearState, PlateDraggedAtConstantDepthRampsAsJanosi) {
   ASSERT_TRUE(model.has_janosi_shear());
   const rft::Terrain terrain = rft::UniformTerrain("s", model);
   const FreePadDynamics pad(body, terrain, 1.62);  // keeps a reference to the terrain
+  FreePadData data;
   ASSERT_EQ(pad.size(), FreePadStateLayout(true).size);
   const double depth = 0.01, speed = 0.3, K = soil.bekker.shear_modulus_K_m;
   // Fully mobilised shear on the bottom (Bekker's pressure at depth d on the footprint A):
@@ -67,18 +68,18 @@ TEST(JanosiShearState, PlateDraggedAtConstantDepthRampsAsJanosi) {
   const double p = rft::BekkerPressure(soil.bekker, rft::BekkerPlateB(body.surface), depth);
   const double full = A * (soil.bekker.cohesion_Pa + p * std::tan(soil.bekker.friction_angle_rad));
   Eigen::VectorXd ydot(pad.size());
-  pad.Derivative(DraggedPlate(pad, depth, speed, 0.0), ydot);
+  Derivative(pad, data, DraggedPlate(pad, depth, speed, 0.0), ydot);
   const double bulldozing = body.mass_kg * ydot[FreePadStateLayout::v_WC_W()];  // F_x at j = 0: the leading wall alone
   EXPECT_LT(bulldozing, 0.0);
   for (const double j : {0.1 * K, 0.5 * K, K, 2.0 * K, 5.0 * K, 20.0 * K}) {
-    pad.Derivative(DraggedPlate(pad, depth, speed, j), ydot);
+    Derivative(pad, data, DraggedPlate(pad, depth, speed, j), ydot);
     const double shear = -(body.mass_kg * ydot[FreePadStateLayout::v_WC_W()] - bulldozing);
     EXPECT_NEAR(shear, full * -std::expm1(-j / K), 1e-9 * full) << "j = " << j;
     EXPECT_DOUBLE_EQ(ydot[FreePadStateLayout::shear()], speed);  // j' = |slip| in contact
   }
   // Out of the soil j does not grow.
   Eigen::VectorXd above = DraggedPlate(pad, -0.01, speed, K);
-  pad.Derivative(above, ydot);
+  Derivative(pad, data, above, ydot);
   EXPECT_EQ(ydot[FreePadStateLayout::shear()], 0.0);
 }
 
