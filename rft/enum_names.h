@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "rft/input_error.h"
 
@@ -41,6 +42,14 @@ std::string NameChoices(const std::array<EnumName<E>, N>& table) {
   std::string out;
   for (std::size_t i = 0; i < N; ++i) out += (i == 0 ? "" : i + 1 == N ? " or " : ", ") + std::string(table[i].name);
   return out;
+}
+
+// The names in table order, as a list (a command line's choices).
+template <typename E, std::size_t N>
+std::vector<std::string> NameList(const std::array<EnumName<E>, N>& table) {
+  std::vector<std::string> names;
+  for (const EnumName<E>& e : table) names.push_back(e.name);
+  return names;
 }
 
 // The value named `text`; an InputError naming `where` and `field` for any other text.

@@ -14,9 +14,7 @@
 namespace touchdown::dataset {
 
 std::vector<std::string> CalibrationLawNames() {
-  std::vector<std::string> names;
-  for (const auto& e : kCalibrationLawNames) names.push_back(e.name);
-  return names;
+  return NameList(kCalibrationLawNames);
 }
 
 CalibrationLaw ParseCalibrationLaw(const std::string& name, const std::string& where, const std::string& field) {

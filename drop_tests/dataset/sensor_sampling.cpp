@@ -14,9 +14,7 @@ constexpr std::array<EnumName<pad::SensorSampling>, 2> kNames{
 const char* SensorSamplingName(pad::SensorSampling sampling) { return NameIn(kNames, sampling); }
 
 std::vector<std::string> SensorSamplingNames() {
-  std::vector<std::string> names;
-  for (const EnumName<pad::SensorSampling>& e : kNames) names.push_back(e.name);
-  return names;
+  return NameList(kNames);
 }
 
 std::optional<pad::SensorSampling> ParseSensorSampling(const std::string& name) { return FindName(kNames, name); }

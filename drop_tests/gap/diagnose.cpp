@@ -324,9 +324,7 @@ std::string DescribeResidual(const Diagnosis& d) {
 }  // namespace
 
 std::vector<std::string> DiagnoseBaseNames() {
-  std::vector<std::string> names;
-  for (const auto& e : kDiagnoseBaseNames) names.push_back(e.name);
-  return names;
+  return NameList(kDiagnoseBaseNames);
 }
 
 std::vector<std::string> SensorSamplingOptionNames() {
@@ -340,9 +338,7 @@ DiagnoseBase ParseDiagnoseBase(const std::string& name, const std::string& where
 }
 
 std::vector<std::string> RigOffsetsNames() {
-  std::vector<std::string> names;
-  for (const auto& e : kRigOffsetsNames) names.push_back(e.name);
-  return names;
+  return NameList(kRigOffsetsNames);
 }
 
 RigOffsets ParseRigOffsets(const std::string& name, const std::string& where, const std::string& field) {
