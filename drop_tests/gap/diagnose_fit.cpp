@@ -259,19 +259,19 @@ void Estimates(const FitProblem& p, const Layout& L, const Objective& obj, const
     if (p.bekker_base)
       estimate(out.estimates, "", "bekker_modulus_scale:" + soil.name, 1.0, 1.0, "-");
     else
-      estimate(out.estimates, "", "zeta_N_cm3:" + soil.name, soil.zeta_N_m3, units::kN_m3_per_N_cm3, "N/m^3");
+      estimate(out.estimates, "", "zeta_N_cm3:" + soil.name, soil.zeta_N_m3, units::kN_m3_per_N_cm3, "N/cm^3");
   }
   for (const CandidateTerm* e : L.infos)
     for (const model::EffectParameterInfo& q : e->parameters)
-      estimate(out.estimates, e->name, q.key, q.scale, q.file_to_si, q.unit);
+      estimate(out.estimates, e->name, q.key, q.scale, q.file_to_si, q.FileUnit());
   if (p.sensor_fit.cutoff) estimate(out.sensor_estimates, "sensor", "lowpass_cutoff_hz", SampleRate(p), 1.0, "Hz");
   if (p.sensor_fit.load_cell) {
     estimate(out.sensor_estimates, "sensor", "load_cell_hz", units::kKilo, 1.0, "Hz");
     estimate(out.sensor_estimates, "sensor", "load_cell_damping", 1.0, 1.0, "-");
   }
   if (p.sensor_fit.offsets) {
-    estimate(out.sensor_estimates, "sensor_offset", "dt_ms", kOffsetTimeScale_s, units::kMs, "s");
-    estimate(out.sensor_estimates, "sensor_offset", "dz_mm", kOffsetDepthScale_m, units::kMm, "m");
+    estimate(out.sensor_estimates, "sensor_offset", "dt_ms", kOffsetTimeScale_s, units::kMs, "ms");
+    estimate(out.sensor_estimates, "sensor_offset", "dz_mm", kOffsetDepthScale_m, units::kMm, "mm");
   }
 }
 }  // namespace

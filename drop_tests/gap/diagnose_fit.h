@@ -154,7 +154,7 @@ struct ParameterEstimate {
   std::string key;     // file key ("chi", "d_c_mm") or "zeta_N_cm3:<soil>"
   double value = 0.0, low = 0.0, high = 0.0;  // SI
   double file_to_si = 1.0;
-  std::string unit;
+  std::string unit;  // of value / file_to_si, the file's (the key's suffix: "mm", "N/cm^3")
   // The range the fit may take (SI); an interval that covers (nearly) all of it is not identified.
   double bound_low = -std::numeric_limits<double>::infinity(), bound_high = std::numeric_limits<double>::infinity();
 };

@@ -29,14 +29,18 @@ nlohmann::json GapJson(const GapSummary& g) {
           {"averaged_over", "held-out drops (mean; relative errors as mean |.|)"}};
 }
 
+// One fitted parameter: its value and 95 % interval in its file unit, and that unit.
+nlohmann::json EstimateJson(const ParameterEstimate& e) {
+  return {{"value", io::FiniteOrNull(e.value / e.file_to_si)},
+          {"interval_95", {io::FiniteOrNull(e.low / e.file_to_si), io::FiniteOrNull(e.high / e.file_to_si)}},
+          {"unit", e.unit}};
+}
+
 nlohmann::json ParametersJson(const FitResult& f, bool zeta) {
   nlohmann::json out = nlohmann::json::object();
   for (const ParameterEstimate& e : f.estimates) {
     if (e.effect.empty() != zeta) continue;
-    const std::string key = zeta ? e.key.substr(e.key.find(':') + 1) : e.effect + "." + e.key;
-    out[key] = {{"value", e.value / e.file_to_si},
-                {"interval_95", {e.low / e.file_to_si, e.high / e.file_to_si}},
-                {"unit", zeta ? "N/cm^3" : e.key}};
+    out[zeta ? e.key.substr(e.key.find(':') + 1) : e.effect + "." + e.key] = EstimateJson(e);
   }
   return out;
 }
@@ -71,12 +75,7 @@ nlohmann::json SelectionJson(const Diagnosis& d) {
 // In file units, as the key's suffix says (dz_mm in mm), like every other parameter written.
 nlohmann::json EstimatesJson(const std::vector<ParameterEstimate>& estimates) {
   nlohmann::json j = nlohmann::json::object();
-  for (const ParameterEstimate& e : estimates) {
-    const std::string unit = e.file_to_si == 1.0 ? e.unit : e.key.substr(e.key.rfind('_') + 1);
-    j[e.key] = {{"value", io::FiniteOrNull(e.value / e.file_to_si)},
-                {"interval_95", {io::FiniteOrNull(e.low / e.file_to_si), io::FiniteOrNull(e.high / e.file_to_si)}},
-                {"unit", unit}};
-  }
+  for (const ParameterEstimate& e : estimates) j[e.key] = EstimateJson(e);
   return j;
 }
 
@@ -156,8 +155,7 @@ nlohmann::json DiagnosisJson(const Diagnosis& d) {
   // inferred or given.
   nlohmann::json rig = nlohmann::json::object();
   for (const ParameterEstimate& e : after->fit.sensor_estimates)
-    rig[e.effect + "." + e.key] = {{"value", e.value / e.file_to_si},
-                                   {"interval_95", {e.low / e.file_to_si, e.high / e.file_to_si}}};
+    rig[e.effect + "." + e.key] = EstimateJson(e);
   j["rig_parameters"] = rig;
   j["gap_before"] = GapJson(d.base.held_out);
   j["gap_after"] = GapJson(after->held_out);

@@ -17,9 +17,9 @@ namespace {
 
 EffectParameterInfo Param(std::string key, std::string symbol, std::string unit, double file_to_si, double lower,
                           double upper, double scale, double start, std::vector<double> scan = {},
-                          double neutral = 0.0) {
+                          double neutral = 0.0, std::string file_unit = {}) {
   return {std::move(key), std::move(symbol), std::move(unit), file_to_si, lower, upper, scale, start, std::move(scan),
-          neutral};
+          neutral, std::move(file_unit)};
 }
 
 // The index in rft::RegisteredEffects() of a registered effect's kind.
@@ -114,7 +114,7 @@ const std::vector<EffectInfo>& EffectLibrary() {
       {kCompactionPeak, "compaction_peak",
        "stress k_c (v.n)^2 exp(-d/d_c) on leading elements: F += k_c v^2 exp(-d/d_c) I3(d)",
        {Param("k_c_kg_m3", "k_c", "kg/m^3", 1.0, 0.0, 1e7, 1e4, 1e4),
-        Param("d_c_mm", "d_c", "m", units::kMm, 1e-4, 0.1, 3e-3, 3e-3)},
+        Param("d_c_mm", "d_c", "m", units::kMm, 1e-4, 0.1, 3e-3, 3e-3, {}, 0.0, "mm")},
        false, false, false},
       {kDepthExponent, "depth_exponent", "stress zeta alpha z_ref (z/z_ref)^p instead of zeta alpha z (z_ref = 10 mm)",
        {Param("p", "p", "-", 1.0, 0.2, 3.0, 0.2, 1.0, {}, 1.0)}, false, false, false},
@@ -123,8 +123,8 @@ const std::vector<EffectInfo>& EffectLibrary() {
        true, false, false},
       {kSensorOffset, "sensor_offset",
        "measurement: recorded penetration = true + dz; recorded t = 0 lies dt after the true touchdown",
-       {Param("dz_mm", "dz", "m", units::kMm, -0.05, 0.05, 1e-3, 0.0), Param("dt_ms", "dt", "s", units::kMs, -0.05, 0.05, 1e-3, 0.0,
-              {-0.008, -0.004, 0.0, 0.004, 0.008, 0.012})},
+       {Param("dz_mm", "dz", "m", units::kMm, -0.05, 0.05, 1e-3, 0.0, {}, 0.0, "mm"), Param("dt_ms", "dt", "s", units::kMs, -0.05, 0.05, 1e-3, 0.0,
+              {-0.008, -0.004, 0.0, 0.004, 0.008, 0.012}, 0.0, "ms")},
        false, true, false},
     };
     for (size_t i = 0; i < rft::RegisteredEffects().size(); ++i) {

@@ -39,7 +39,7 @@ EffectDefinition cohesion_effect() {
   e.id = "cohesion";
   e.form = "stress N_c c on leading elements, N_c = pi + 2, at rest too: F += N_c c I1(d)";
   // key, symbol, SI unit, file -> SI, range, fitting scale and start, scan, neutral
-  e.parameters = {{"c_kPa", "c", "Pa", 1e3, 0.0, 1e5, 500.0, 500.0, {}, 0.0}};
+  e.parameters = {{"c_kPa", "c", "Pa", 1e3, 0.0, 1e5, 500.0, 500.0, {}, 0.0, "kPa"}};
   e.rig_force_N = RigForce;
   e.element_stress_Pa = ElementStress;
   e.docs_rig_row = "| `cohesion` | stress `N_c c`, `N_c = pi + 2`, at rest too: `F += N_c c I_1(d)` | `c_kPa` [kPa] |";

@@ -41,6 +41,9 @@ struct EffectParameter {
   double start = 0.0;       // starting value of a fit (SI)
   std::vector<double> scan;  // if given, a fit first picks the best of these starts (SI)
   double neutral = 0.0;     // the value at which the effect changes nothing (SI)
+  std::string file_unit;    // of the value in files, the key's suffix ("mm" for d_c_mm); empty: `unit`
+
+  const std::string& FileUnit() const { return file_unit.empty() ? unit : file_unit; }
 
   // Why the SI value v is not admissible ("must be in [lower, upper], got v", in file units), or
   // empty when it is.

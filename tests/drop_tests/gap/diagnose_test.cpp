@@ -120,6 +120,7 @@ TEST(Diagnose, AHiddenSensorOffsetIsNamedAsTheRigsNuisance) {
     const nlohmann::json& rig = json.at("rig_parameters").at("sensor_offset." + e.key);
     EXPECT_DOUBLE_EQ(rig["value"].get<double>(), e.value / 1e-3);
     EXPECT_DOUBLE_EQ(rig["interval_95"][1].get<double>(), e.high / 1e-3);
+    EXPECT_EQ(rig["unit"].get<std::string>(), e.key == "dz_mm" ? "mm" : "ms");
   }
   EXPECT_EQ(found, 2);
   EXPECT_TRUE(json.at("effect_parameters").empty());

@@ -76,6 +76,23 @@ TEST(EffectLibrary, OneTableInEnumOrder) {
   EXPECT_TRUE(FindEffect(EffectId::kAddedMassPlug).needs_bulk_density);
 }
 
+// A value in a file is in its key's unit: a parameter scaled from SI for its file names that unit,
+// and its key ends in it (diagnosis.json reports each estimate in it).
+TEST(EffectLibrary, EveryScaledParameterNamesItsFileUnitAsItsKeyEnds) {
+  for (const EffectInfo& e : EffectLibrary())
+    for (const EffectParameterInfo& p : e.parameters) {
+      if (p.file_to_si == 1.0) {
+        EXPECT_EQ(p.FileUnit(), p.unit) << e.id << "." << p.key;
+        continue;
+      }
+      ASSERT_FALSE(p.file_unit.empty()) << e.id << "." << p.key;
+      const std::string suffix = "_" + p.file_unit;
+      EXPECT_TRUE(p.key.size() > suffix.size() && p.key.ends_with(suffix)) << e.id << "." << p.key;
+    }
+  EXPECT_EQ(FindEffect(EffectId::kCompactionPeak).parameters[1].FileUnit(), "mm");
+  EXPECT_EQ(FindEffect(EffectId::kRateDamping).parameters[0].FileUnit(), "N s/m^3");
+}
+
 TEST(EffectLibrary, EffectsNotAppliedFollowTheTable) {
   const rft::EffectTerms t = MakeEffectTerms({{"gas_cushion", {0.3, 1e3}}, {"sensor_offset", {1e-3, 0.0}},
                                               {"rate_damping", {1e3}}});
