@@ -38,7 +38,7 @@ EffectDefinition cohesion_effect() {
   EffectDefinition e;
   e.id = "cohesion";
   e.form = "stress N_c c on leading elements, N_c = pi + 2, at rest too: F += N_c c I1(d)";
-  // key, symbol, SI unit, file -> SI, range, fitting scale and start, scan, neutral
+  // key, symbol, SI unit, file -> SI, range, fitting scale and start, scan, neutral, file unit
   e.parameters = {{"c_kPa", "c", "Pa", 1e3, 0.0, 1e5, 500.0, 500.0, {}, 0.0, "kPa"}};
   e.rig_force_N = RigForce;
   e.element_stress_Pa = ElementStress;
