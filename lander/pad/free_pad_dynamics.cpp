@@ -93,14 +93,9 @@ FreePadVertical FreePadDynamics::Vertical(const FreePadPose& s, const rft::Conta
 
 void Derivative(const FreePadDynamics& model, FreePadData& data, const Eigen::Ref<const Eigen::VectorXd>& y,
                 Eigen::Ref<Eigen::VectorXd> ydot) {
-  model.Evaluate(y, data, ydot);
-}
-
-void FreePadDynamics::Evaluate(const Eigen::Ref<const Eigen::VectorXd>& y, FreePadData& data,
-                               Eigen::Ref<Eigen::VectorXd> ydot) const {
-  const FreePadPose s = PoseOf(y);
-  const rft::SoilContactModel& soil = SoilUnder(s);
-  const rft::ContactWrench w = Moving(s) ? Wrench(s, soil) : rft::ContactWrench{};
+  const FreePadPose s = model.PoseOf(y);
+  const rft::SoilContactModel& soil = model.SoilUnder(s);
+  const rft::ContactWrench w = model.Moving(s) ? model.Wrench(s, soil) : rft::ContactWrench{};
   const Eigen::Vector3d M_C = w.moment_W + (s.p_WB - s.p_WC).cross(w.force_W);
   ydot.segment<3>(L::p_WC()) = s.v_WC;
   const Eigen::Vector4d q = y.segment<4>(L::quat_WB());
@@ -108,16 +103,16 @@ void FreePadDynamics::Evaluate(const Eigen::Ref<const Eigen::VectorXd>& y, FreeP
   ydot.segment<4>(L::quat_WB()) << -0.5 * (q[1] * wb.x() + q[2] * wb.y() + q[3] * wb.z()),
       0.5 * (q[0] * wb.x() + q[2] * wb.z() - q[3] * wb.y()), 0.5 * (q[0] * wb.y() + q[3] * wb.x() - q[1] * wb.z()),
       0.5 * (q[0] * wb.z() + q[1] * wb.y() - q[2] * wb.x());
-  ydot.segment<3>(L::v_WC_W()) = w.force_W / m_ - Eigen::Vector3d(0.0, 0.0, g_);
-  ydot.segment<3>(L::w_WB_B()) = I_inv_ * (s.R_WB.transpose() * M_C - wb.cross(I_ * wb));
+  ydot.segment<3>(L::v_WC_W()) = w.force_W / model.m_ - Eigen::Vector3d(0.0, 0.0, model.g_);
+  ydot.segment<3>(L::w_WB_B()) = model.I_inv_ * (s.R_WB.transpose() * M_C - wb.cross(model.I_ * wb));
   ydot[L::work()] = -(w.force_W.dot(s.v_WB) + w.moment_W.dot(s.w_W));
   if (soil.pad_terms.has_added_mass()) {
-    const FreePadVertical vz = Vertical(s, w, soil);
+    const FreePadVertical vz = model.Vertical(s, w, soil);
     ydot[L::v_WC_W() + 2] = vz.a_z;
     ydot[L::work()] += vz.accretion_W;
   }
   // Janosi's j: the horizontal slip of the contact's reference point while the pad is in the soil.
-  if (shear_state_) ydot[L::shear()] = w.submerged_area_m2 > 0.0 ? std::hypot(s.v_WB.x(), s.v_WB.y()) : 0.0;
+  if (model.shear_state_) ydot[L::shear()] = w.submerged_area_m2 > 0.0 ? std::hypot(s.v_WB.x(), s.v_WB.y()) : 0.0;
   data.pose = s;
   data.soil = w;
 }
@@ -134,7 +129,7 @@ void FreePadDynamics::Jacobian(const Eigen::Ref<const Eigen::VectorXd>& y, const
   J.setZero();
   // The soil's rows (v, w, work, j) of one column: a forward difference of step h along yp - y.
   auto difference = [&](double h) -> Eigen::Ref<const Eigen::VectorXd> {
-    Evaluate(yp, probe, fp);
+    Derivative(*this, probe, yp, fp);
     fp.tail(soil_rows) = (fp.tail(soil_rows) - f0.tail(soil_rows)) / h;
     yp = y;
     return fp.tail(soil_rows);

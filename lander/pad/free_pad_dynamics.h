@@ -105,9 +105,9 @@ class FreePadDynamics {
   double radius_m() const { return radius_; }
 
  private:
+  // The right-hand side (below) reads the pad's mass, inertia and soil lookup held here.
   friend void Derivative(const FreePadDynamics& model, FreePadData& data, const Eigen::Ref<const Eigen::VectorXd>& y,
                          Eigen::Ref<Eigen::VectorXd> ydot);
-  void Evaluate(const Eigen::Ref<const Eigen::VectorXd>& y, FreePadData& data, Eigen::Ref<Eigen::VectorXd> ydot) const;
 
   const geom::PadBody& body_;
   const rft::Terrain& terrain_;
