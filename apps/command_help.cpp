@@ -58,6 +58,7 @@ const std::vector<CommandExamples>& Examples() {
        {"touchdown stability data/studies/lunar_paper_lander.yaml --out runs/lunar_quick --samples 10   # a quick look"}},
       {"validate", {"touchdown validate --out runs/validation"}},
       {"import", {"touchdown import data/datasets/rig_daq_synthetic_raw/import.yaml --out runs/rig_daq"}},
+      {"schema", {"touchdown schema pad   # the keys a pad file takes", "touchdown schema --json"}},
   };
   return examples;
 }

@@ -20,5 +20,6 @@ void AddDiagnoseCommand(CLI::App& app);  // touchdown diagnose MEASURED_DIR [--m
 void AddStabilityCommand(CLI::App& app);  // touchdown stability STUDY.yaml --out DIR [--samples N]
 void AddValidateCommand(CLI::App& app);   // touchdown validate [--sources DIR] [--out DIR]
 void AddImportCommand(CLI::App& app);     // touchdown import MAPPING.yaml --out DATASET_DIR
+void AddSchemaCommand(CLI::App& app);     // touchdown schema [FILE_TYPE] [--json]
 
 }  // namespace touchdown::app

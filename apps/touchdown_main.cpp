@@ -35,6 +35,7 @@ int main(int argc, char** argv) {
   touchdown::app::AddStabilityCommand(app);
   touchdown::app::AddValidateCommand(app);
   touchdown::app::AddImportCommand(app);
+  touchdown::app::AddSchemaCommand(app);
   touchdown::app::AddHelpFooters(app);
   // `touchdown` alone asks what there is: the command list, as --help shows it, and success.
   // Nothing was given that could be wrong (an empty "$VAR" is an argument, and an unknown command).

@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "drop_tests/formats/schema_doc.h"
 #include "footpad_geom/axisymmetric_profile.h"
 #include "footpad_geom/pad_body.h"
 #include "footpad_geom/revolve.h"
@@ -119,6 +120,10 @@ std::vector<std::string> ShelfNames(const CatalogShelf& shelf);
 std::string ResolveInputDocument(InputDocument document, const std::string& name_or_path);
 
 PadSpec LoadPad(const std::string& name_or_path);
+// The reference of a pad file's and a soil file's keys, from the tables their loaders read with
+// (schema_doc.h; `touchdown schema`, docs/reference.md).
+std::vector<BlockDoc> PadFileSchema();
+std::vector<BlockDoc> SoilFileSchema();
 // A pad from its file's YAML as read (YamlFields::LoadFile of the resolved file), possibly edited in
 // memory first (calibrate --targets changes a profile constant without touching the file); a
 // revolved pad's rings `rim` (a mesh pad ignores it).

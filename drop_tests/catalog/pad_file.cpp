@@ -1,5 +1,6 @@
 #include "drop_tests/catalog/catalog.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -71,21 +72,23 @@ namespace {
 // read by LoadPad and written by WritePad. nullptr for an unknown shape.
 const FieldTable<PadFileFields>* ProfileFields(PadShape shape) {
   using P = PadFileFields;
+  static constexpr const char* kA0OrRimHeight = "one of `a0_mm`, `rim_height_mm` (exponential)";
   const auto with = [](std::initializer_list<NumberField<P>> own) {
-    FieldTable<P> fields{{"radius_mm", &P::radius_mm, 1.0, Sign::kPositive, false},
-                         {"thickness_mm", &P::thickness_mm, 1.0, Sign::kPositive, false}};
+    FieldTable<P> fields{{"radius_mm", &P::radius_mm, 1.0, Sign::kPositive, false, false, &limits::kPadSize_mm},
+                         {"thickness_mm", &P::thickness_mm, 1.0, Sign::kPositive, false, false, &limits::kPadSize_mm}};
     fields.insert(fields.end(), own);
     return fields;
   };
   static const std::map<PadShape, FieldTable<P>> tables{
       {PadShape::kFlat, with({})},
-      {PadShape::kChamfer, with({{"chamfer_mm", &P::chamfer_mm, 1.0, Sign::kPositive, false}})},
+      {PadShape::kChamfer, with({{"chamfer_mm", &P::chamfer_mm, 1.0, Sign::kPositive, false, false, nullptr, "*required* (chamfer)"}})},
       // u = a0 (exp(a1 x) - 1): give a0 directly, or the rim height u(r) that fixes it.
-      {PadShape::kExponential, with({{"a0_mm", &P::a0_mm, 1.0, Sign::kPositive, true, true},
-                            {"rim_height_mm", &P::rim_height_mm, 1.0, Sign::kPositive, true, true},
-                            {"a1_per_mm", &P::a1_per_mm, 1.0, Sign::kPositive, false}})},
-      {PadShape::kSphericalCap, with({{"sphere_radius_mm", &P::sphere_radius_mm, 1.0, Sign::kPositive, false}})},
-      {PadShape::kCone, with({{"half_angle_deg", &P::half_angle_deg, 1.0, Sign::kPositive, false}})},
+      {PadShape::kExponential, with({{"a0_mm", &P::a0_mm, 1.0, Sign::kPositive, true, true, nullptr, kA0OrRimHeight},
+                            {"rim_height_mm", &P::rim_height_mm, 1.0, Sign::kPositive, true, true, nullptr, kA0OrRimHeight},
+                            {"a1_per_mm", &P::a1_per_mm, 1.0, Sign::kPositive, false, false, nullptr, "*required* (exponential)"}})},
+      {PadShape::kSphericalCap, with({{"sphere_radius_mm", &P::sphere_radius_mm, 1.0, Sign::kPositive, false, false, nullptr,
+                                     "*required* (spherical_cap)"}})},
+      {PadShape::kCone, with({{"half_angle_deg", &P::half_angle_deg, 1.0, Sign::kPositive, false, false, nullptr, "*required* (cone)"}})},
       {PadShape::kTable, with({})},
   };
   const auto it = tables.find(shape);
@@ -120,8 +123,6 @@ geom::AxisymmetricProfile ReadProfile(const YamlFields& f, PadFileFields& file) 
   const PadShape shape = *file.shape;
   const FieldTable<PadFileFields>* fields = ProfileFields(shape);
   f.RequireOnly(Keys(ProfileKeys(shape)));
-  limits::Require(limits::kPadSize_mm, f.Positive("radius_mm"), f.file(), f.Path("radius_mm"));
-  limits::Require(limits::kPadSize_mm, f.Positive("thickness_mm"), f.file(), f.Path("thickness_mm"));
   ReadFields(f, *fields, file);
   const double r = file.radius_mm * kMm;
   const double h = file.thickness_mm * kMm;
@@ -411,6 +412,21 @@ void WritePad(const PadSpec& pad, const std::string& path) {
   YAML::Emitter y;
   WriteMap(y, PadKeys(), PadToWrite{pad, path});
   WriteFileAtomically(path, [&](std::ostream& out) { out << y.c_str() << '\n'; });
+}
+
+std::vector<BlockDoc> PadFileSchema() {
+  const std::string read_by = "drop_tests/catalog/pad_file.cpp";
+  std::vector<KeyDoc> profile;
+  for (PadShape shape : {PadShape::kFlat, PadShape::kChamfer, PadShape::kExponential, PadShape::kSphericalCap,
+                         PadShape::kCone, PadShape::kTable})
+    for (const KeyDoc& k : DocsOf(ProfileKeys(shape)))
+      if (std::none_of(profile.begin(), profile.end(), [&](const KeyDoc& p) { return p.key == k.key; }))
+        profile.push_back(k);
+  return {MakeBlock("pad", read_by, DocsOf(PadKeys(), {"mesh", "density_kg_m3"})),
+          MakeBlock("pad.profile", read_by, profile),
+          MakeBlock("pad.mesh_kind", read_by, DocsOf(PadKeys(), {"profile", "angular_segments"})),
+          MakeBlock("pad.mesh", read_by, DocsOf(MeshKeys())),
+          MakeBlock("pad.inertia_kg_m2", read_by, DocsOf(InertiaKeys()))};
 }
 
 }  // namespace touchdown::io

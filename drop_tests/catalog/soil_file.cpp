@@ -32,7 +32,8 @@ const FieldTable<rft::SoilParameters>& SoilNumberFields() {
       {"internal_friction_angle_deg", &S::internal_friction_angle_rad, kDeg, Sign::kPositive, true, true},
       {"mu_surf", &S::surface_friction_coefficient, 1.0, Sign::kNonNegative, true, true},
       {"dynamic_lambda", &S::dynamic_lambda, 1.0, Sign::kNonNegative, true, true},
-      {"dynamic_density_kg_m3", &S::dynamic_density_kg_m3, 1.0, Sign::kPositive, true, true, &limits::kDensity_kg_m3},
+      {"dynamic_density_kg_m3", &S::dynamic_density_kg_m3, 1.0, Sign::kPositive, true, true, &limits::kDensity_kg_m3,
+       "`bulk_density_kg_m3`"},
   };
   return fields;
 }
@@ -179,6 +180,11 @@ void WriteSoil(const rft::SoilParameters& soil, std::ostream& out) {
   YAML::Emitter y;
   WriteMap(y, SoilKeys(), soil);
   out << y.c_str() << '\n';
+}
+
+std::vector<BlockDoc> SoilFileSchema() {
+  const std::string read_by = "drop_tests/catalog/soil_file.cpp";
+  return {MakeBlock("soil", read_by, DocsOf(SoilKeys())), MakeBlock("soil.bekker", read_by, DocsOf(BekkerKeys()))};
 }
 
 }  // namespace touchdown::io

@@ -33,6 +33,31 @@ const char* ChannelZeroName(ChannelZero zero) { return NameIn(kChannelZeroNames,
 const char* MotionChannelName(MotionChannel kind) { return NameIn(kMotionChannelNames, kind); }
 
 namespace {
+// An import mapping's keys, block by block (docs/import.md; docs/reference.md).
+const std::vector<std::string>& MappingKeys() {
+  static const std::vector<std::string> keys{"schema_version", "type", "name", "description", "daq", "channels", "touchdown", "drops"};
+  return keys;
+}
+const std::vector<std::string>& DaqKeys() {
+  static const std::vector<std::string> keys{"delimiter", "comment", "decimal", "time"};
+  return keys;
+}
+const std::vector<std::string>& TimeKeys() {
+  static const std::vector<std::string> keys{"column", "unit", "sample_rate_hz"};
+  return keys;
+}
+const std::vector<std::string>& ChannelsKeys() {
+  static const std::vector<std::string> keys{"force", "displacement", "acceleration"};
+  return keys;
+}
+const std::vector<std::string>& ChannelKeys() {
+  static const std::vector<std::string> keys{"column", "gain", "offset", "filter", "zero"};
+  return keys;
+}
+const std::vector<std::string>& TouchdownKeys() {
+  static const std::vector<std::string> keys{"channel", "threshold_N"};
+  return keys;
+}
 
 constexpr double kMaxDaqSampleRate_Hz = 1e7;
 
@@ -44,7 +69,7 @@ char OneCharacter(const io::YamlFields& f, const std::string& key, const std::st
 
 DaqChannel LoadChannel(const io::YamlFields& channels, const std::string& key, ChannelZero default_zero) {
   const io::YamlFields f = channels.Child(key);
-  f.RequireOnly({"column", "gain", "offset", "filter", "zero"});
+  f.RequireOnly(ChannelKeys());
   DaqChannel c;
   c.field = f.prefix();
   c.column = f.String("column");
@@ -71,7 +96,7 @@ DaqChannel LoadChannel(const io::YamlFields& channels, const std::string& key, C
 
 void LoadTime(const io::YamlFields& daq, DaqMapping& m) {
   const io::YamlFields f = daq.Child("time");
-  f.RequireOnly({"column", "unit", "sample_rate_hz"});
+  f.RequireOnly(TimeKeys());
   if (f.Has("column") == f.Has("sample_rate_hz"))
     throw MakeInputError(f.file(), f.prefix(), "give either {column: NAME, unit: s|ms|us} or {sample_rate_hz: RATE}");
   if (f.Has("sample_rate_hz")) {
@@ -91,7 +116,7 @@ void LoadTime(const io::YamlFields& daq, DaqMapping& m) {
 
 void LoadDaq(const io::YamlFields& root, DaqMapping& m) {
   const io::YamlFields f = root.Child("daq");
-  f.RequireOnly({"delimiter", "comment", "decimal", "time"});
+  f.RequireOnly(DaqKeys());
   m.text.delimiter = OneCharacter(f, "delimiter", ",");
   m.text.decimal = OneCharacter(f, "decimal", ".");
   m.text.comment = f.StringOr("comment", "#");
@@ -179,9 +204,20 @@ DaqDropEntry LoadDropEntry(const io::YamlFields& f, DaqMapping& m) {
 
 }  // namespace
 
+std::vector<io::BlockDoc> DaqMappingSchema() {
+  const std::string read_by = "drop_tests/dataset/daq_mapping.cpp";
+  return {io::MakeBlock("import", read_by, io::PlainKeyDocs(MappingKeys())),
+          io::MakeBlock("import.daq", read_by, io::PlainKeyDocs(DaqKeys())),
+          io::MakeBlock("import.daq.time", read_by, io::PlainKeyDocs(TimeKeys())),
+          io::MakeBlock("import.channels", read_by, io::PlainKeyDocs(ChannelsKeys())),
+          io::MakeBlock("import.channels.channel", read_by, io::PlainKeyDocs(ChannelKeys())),
+          io::MakeBlock("import.touchdown", read_by, io::PlainKeyDocs(TouchdownKeys())),
+          io::MakeBlock("import.drops", read_by, io::PlainKeyDocs(kDaqDropKeys))};
+}
+
 DaqMapping LoadDaqMapping(const std::string& path) {
   const io::YamlFields root = io::YamlFields::LoadFile(path);
-  root.RequireOnly({"schema_version", "type", "name", "description", "daq", "channels", "touchdown", "drops"});
+  root.RequireOnly(MappingKeys());
   root.RequireSchemaVersion(1);
   if (const std::string type = root.String("type"); type != "import")
     root.Fail("type", "must be 'import' for a mapping of raw drop files, got '" + type + "'");
@@ -192,7 +228,7 @@ DaqMapping LoadDaqMapping(const std::string& path) {
   LoadDaq(root, m);
 
   const io::YamlFields channels = root.Child("channels");
-  channels.RequireOnly({"force", "displacement", "acceleration"});
+  channels.RequireOnly(ChannelsKeys());
   m.force = LoadChannel(channels, "force", ChannelZero::kPreTrigger);
   if (channels.Has("displacement") == channels.Has("acceleration"))
     throw MakeInputError(path, "channels", "give one of displacement or acceleration (the penetration comes from one of them)");
@@ -204,7 +240,7 @@ DaqMapping LoadDaqMapping(const std::string& path) {
 
   if (root.Has("touchdown")) {
     const io::YamlFields f = root.Child("touchdown");
-    f.RequireOnly({"channel", "threshold_N"});
+    f.RequireOnly(TouchdownKeys());
     if (const std::string channel = f.StringOr("channel", "force"); channel != "force")
       f.Fail("channel", "must be force (touchdown is found on the force), got '" + channel + "'");
     if (f.Has("threshold_N")) m.threshold_N = f.Positive("threshold_N");

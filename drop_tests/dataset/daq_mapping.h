@@ -32,6 +32,7 @@
 #include <vector>
 
 #include "drop_tests/dataset/channel_filter.h"
+#include "drop_tests/formats/schema_doc.h"
 #include "drop_tests/dataset/daq_csv.h"
 #include "rft/atmosphere.h"
 #include "rft/enum_names.h"
@@ -92,5 +93,7 @@ extern const std::vector<std::string> kImportAccelerationColumns;
 
 // Reads and checks the mapping at `path`; throws InputError naming the file, the field and the value.
 DaqMapping LoadDaqMapping(const std::string& path);
+// The reference of an import mapping's keys (schema_doc.h; `touchdown schema`, docs/reference.md).
+std::vector<io::BlockDoc> DaqMappingSchema();
 
 }  // namespace touchdown::dataset

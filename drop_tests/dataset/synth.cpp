@@ -16,6 +16,7 @@
 #include "drop_tests/formats/output_path.h"
 #include "drop_tests/catalog/catalog.h"
 #include "drop_tests/formats/dataset_csv.h"
+#include "drop_tests/formats/field_table.h"
 #include "drop_tests/formats/yaml_fields.h"
 #include "drop_tests/model/effects_yaml.h"
 #include "lander/integ/cvode_integrator.h"
@@ -70,11 +71,44 @@ std::string SpeedTag(double v) {
 double Quantise(double x, double step) { return step > 0.0 ? std::round(x / step) * step : x; }
 }  // namespace
 
+namespace {
+// A synth spec's keys, a `drops` group's, and the `noise` block's fields (each optional).
+const std::vector<std::string>& SynthKeys() {
+  static const std::vector<std::string> keys{
+      "schema_version", "type", "name", "description", "seed", "sample_rate_hz", "rest_duration_s", "trials",
+      "drops", "true_zeta_N_cm3", "noise", "hidden_effect", "sensor_sampling", "provenance"};
+  return keys;
+}
+const std::vector<std::string>& SynthDropKeys() {
+  static const std::vector<std::string> keys{"pads", "soils", "atmospheres", "impact_speeds_m_s", "mass_kg",
+                                             "gravity_m_s2"};
+  return keys;
+}
+const io::FieldTable<SynthNoise>& NoiseFields() {
+  using N = SynthNoise;
+  static const io::FieldTable<N> fields{
+      {"force_sigma_N", &N::force_sigma_N, 1.0, io::Sign::kNonNegative},
+      {"penetration_sigma_mm", &N::penetration_sigma_m, units::kMm, io::Sign::kNonNegative},
+      {"force_drift_N_s", &N::force_drift_N_s, 1.0, io::Sign::kNonNegative},
+      {"penetration_drift_mm_s", &N::penetration_drift_m_s, units::kMm, io::Sign::kNonNegative},
+      {"force_resolution_N", &N::force_resolution_N, 1.0, io::Sign::kNonNegative},
+      {"penetration_resolution_mm", &N::penetration_resolution_m, units::kMm, io::Sign::kNonNegative},
+  };
+  return fields;
+}
+}  // namespace
+
+std::vector<io::BlockDoc> SynthSpecSchema() {
+  const std::string read_by = "drop_tests/dataset/synth.cpp";
+  return {io::MakeBlock("synth", read_by, io::PlainKeyDocs(SynthKeys())),
+          io::MakeBlock("synth.drops", read_by, io::PlainKeyDocs(SynthDropKeys())),
+          io::MakeBlock("synth.noise", read_by, io::DocsOf(NoiseFields()))};
+}
+
 SynthSpec LoadSynthSpec(const std::string& path) {
   const io::YamlFields f = io::YamlFields::LoadFile(path);
   f.RequireSchemaVersion(1);
-  f.RequireOnly({"schema_version", "type", "name", "description", "seed", "sample_rate_hz", "rest_duration_s",
-                 "trials", "drops", "true_zeta_N_cm3", "noise", "hidden_effect", "sensor_sampling", "provenance"});
+  f.RequireOnly(SynthKeys());
   if (f.String("type") != "synth") f.Fail("type", "must be 'synth', got '" + f.String("type") + "'");
   SynthSpec s;
   s.source = path;
@@ -110,7 +144,7 @@ SynthSpec LoadSynthSpec(const std::string& path) {
   int group = -1;
   for (const io::YamlFields& g : f.List("drops")) {
     ++group;
-    g.RequireOnly({"pads", "soils", "atmospheres", "impact_speeds_m_s", "mass_kg", "gravity_m_s2"});
+    g.RequireOnly(SynthDropKeys());
     const std::vector<std::string> pads = StringList(g, "pads"), soils = StringList(g, "soils");
     std::vector<rft::Atmosphere> atmospheres;
     for (const std::string& a : g.Has("atmospheres") ? StringList(g, "atmospheres") : std::vector<std::string>{"vacuum"}) {
@@ -141,16 +175,8 @@ SynthSpec LoadSynthSpec(const std::string& path) {
   }
   if (f.Has("noise")) {
     const io::YamlFields n = f.Child("noise");
-    n.RequireOnly({"force_sigma_N", "penetration_sigma_mm", "force_drift_N_s", "penetration_drift_mm_s",
-                   "force_resolution_N", "penetration_resolution_mm"});
-    SynthNoise& o = s.noise;
-    if (n.Has("force_sigma_N")) o.force_sigma_N = n.NonNegative("force_sigma_N");
-    if (n.Has("penetration_sigma_mm")) o.penetration_sigma_m = n.NonNegative("penetration_sigma_mm") * units::kMm;
-    if (n.Has("force_drift_N_s")) o.force_drift_N_s = n.NonNegative("force_drift_N_s");
-    if (n.Has("penetration_drift_mm_s")) o.penetration_drift_m_s = n.NonNegative("penetration_drift_mm_s") * units::kMm;
-    if (n.Has("force_resolution_N")) o.force_resolution_N = n.NonNegative("force_resolution_N");
-    if (n.Has("penetration_resolution_mm"))
-      o.penetration_resolution_m = n.NonNegative("penetration_resolution_mm") * units::kMm;
+    n.RequireOnly(io::FieldKeys(NoiseFields()));
+    io::ReadFields(n, NoiseFields(), s.noise);
   }
   if (f.Has("hidden_effect")) {
     const io::YamlFields h = f.Child("hidden_effect");

@@ -39,6 +39,7 @@
 #include <vector>
 
 #include "drop_tests/dataset/dataset.h"
+#include "drop_tests/formats/schema_doc.h"
 #include "drop_tests/model/effects.h"
 #include "drop_tests/dataset/sensor_sampling.h"
 #include "rft/gravity_constants.h"
@@ -87,6 +88,8 @@ struct SynthSpec {
 inline constexpr double kSynthStrokeBoundS = 0.1;  // an allowance for the stroke (tens of ms at 1 m/s)
 
 SynthSpec LoadSynthSpec(const std::string& path);
+// The reference of a synth spec's keys (schema_doc.h; `touchdown schema`, docs/reference.md).
+std::vector<io::BlockDoc> SynthSpecSchema();
 // Builds the dataset in memory (traces included); drop ids like flat_fjs1_lp_air_v1.00_t0.
 Dataset Synthesize(const SynthSpec& spec);
 // Writes the dataset (the measured-drop format, docs/guide.md "Datasets") plus README.md, synthetic.yaml and synthetic_truth.yaml,

@@ -15,6 +15,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "drop_tests/formats/schema_doc.h"
 #include "drop_tests/formats/yaml_fields.h"
 #include "rft/physical_limits.h"
 
@@ -31,6 +32,7 @@ struct NumberField {
   bool optional = true;
   bool omit_default = false;
   const limits::Range* range = nullptr;  // in file units; none: any value of the sign
+  const char* default_text = nullptr;    // the reference's default when the member's is not it (derived later)
 };
 
 template <typename T>
@@ -43,6 +45,32 @@ std::vector<std::string> FieldKeys(const FieldTable<T>& fields) {
   std::vector<std::string> keys;
   for (const NumberField<T>& field : fields) keys.push_back(field.key);
   return keys;
+}
+
+// The values a field accepts, as the reference states them: "(0, 1e+04]", "> 0", "any".
+inline std::string RangeText(Sign sign, const limits::Range* range) {
+  std::ostringstream out;
+  if (range) {
+    out << (range->low_open || sign == Sign::kPositive ? "(" : "[") << range->low << ", " << range->high << "]";
+    return out.str();
+  }
+  return sign == Sign::kPositive ? "> 0" : sign == Sign::kNonNegative ? ">= 0" : "any";
+}
+
+// What the reference says about one field: its unit, range and default (the member's default in
+// file units, unless the field states its own text; "*required*" when it must be given).
+template <typename T>
+KeyDoc DocOf(const NumberField<T>& field) {
+  std::ostringstream value;
+  value << T{}.*field.member / field.file_to_si;
+  return {field.key, UnitOfKey(field.key), RangeText(field.sign, field.range),
+          field.default_text ? field.default_text : !field.optional ? "*required*" : value.str()};
+}
+template <typename T>
+std::vector<KeyDoc> DocsOf(const FieldTable<T>& fields) {
+  std::vector<KeyDoc> docs;
+  for (const NumberField<T>& field : fields) docs.push_back(DocOf(field));
+  return docs;
 }
 
 // One number of `f` (file units): of `sign`, and within `range` when there is one.

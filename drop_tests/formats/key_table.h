@@ -26,6 +26,7 @@ struct FileKey {
   const char* key;
   std::function<bool(const T&)> written{};                 // empty: never written (a person's text)
   std::function<void(YAML::Emitter&, const T&)> value{};   // writes the value (the key is written before)
+  std::optional<KeyDoc> doc{};  // the reference's unit, range and default of a number field; none: the unit only
 };
 
 template <typename T>
@@ -49,7 +50,8 @@ void AppendNumberKeys(KeyTable<V>& table, const FieldTable<T>& fields, std::func
                        if (when && !when(v)) return false;
                        return !(field.omit_default && part(v).*field.member == T{}.*field.member);
                      },
-                     [field, part](YAML::Emitter& y, const V& v) { y << part(v).*field.member / field.file_to_si; }});
+                     [field, part](YAML::Emitter& y, const V& v) { y << part(v).*field.member / field.file_to_si; },
+                     DocOf(field)});
   }
 }
 template <typename T>
@@ -65,6 +67,16 @@ std::vector<std::string> Keys(const KeyTable<T>& table, std::initializer_list<st
   for (const FileKey<T>& k : table)
     if (std::find(except.begin(), except.end(), std::string_view(k.key)) == except.end()) keys.push_back(k.key);
   return keys;
+}
+
+// What the reference says about the table's keys (schema_doc.h), less those in `except`.
+template <typename T>
+std::vector<KeyDoc> DocsOf(const KeyTable<T>& table, std::initializer_list<std::string_view> except = {}) {
+  std::vector<KeyDoc> docs;
+  for (const FileKey<T>& k : table)
+    if (std::find(except.begin(), except.end(), std::string_view(k.key)) == except.end())
+      docs.push_back(k.doc ? *k.doc : PlainKeyDoc(k.key));
+  return docs;
 }
 
 // Writes `value` as a map of every key it has, in table order; YAML::Flow for a one-line map.

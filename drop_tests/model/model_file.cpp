@@ -1,6 +1,7 @@
 #include "drop_tests/model/model_file.h"
 
 #include <filesystem>
+#include <sstream>
 #include <nlohmann/json.hpp>
 
 #include "drop_tests/formats/output_path.h"
@@ -22,7 +23,8 @@ namespace {
 // A soil override's zeta and its reference gravity, read and written (always, both) from here.
 const io::FieldTable<SoilOverride>& OverrideNumberFields() {
   static const io::FieldTable<SoilOverride> fields{
-      {"zeta_N_cm3", &SoilOverride::zeta_N_m3, units::kN_m3_per_N_cm3, io::Sign::kPositive, /*optional=*/false},
+      {"zeta_N_cm3", &SoilOverride::zeta_N_m3, units::kN_m3_per_N_cm3, io::Sign::kPositive, /*optional=*/false, false,
+       nullptr, "*required* (optional beside `dynamic_lambda` or `bekker`: the soil file's kept to the bit)"},
       {"reference_gravity_m_s2", &SoilOverride::reference_gravity_m_s2, 1.0, io::Sign::kPositive},
   };
   return fields;
@@ -185,6 +187,27 @@ const BekkerOverrideField* FindBekkerOverrideField(std::string_view key) {
   for (const BekkerOverrideField& e : BekkerOverrideFields())
     if (key == e.key) return &e;
   return nullptr;
+}
+
+std::vector<io::BlockDoc> ModelFileSchema() {
+  const std::string read_by = "drop_tests/model/model_file.cpp";
+  std::vector<io::KeyDoc> bekker;
+  for (const BekkerOverrideField& e : BekkerOverrideFields())
+    bekker.push_back({e.key, e.unit, io::RangeText(io::Sign::kAny, e.range), "the soil file's"});
+  // An effect's parameters, "id.key" (each required when the effect is listed), ranges in file units.
+  std::vector<io::KeyDoc> effects;
+  for (const EffectInfo& e : EffectLibrary())
+    for (const EffectParameterInfo& p : e.parameters) {
+      std::ostringstream range;
+      range << "[" << p.lower / p.file_to_si << ", " << p.upper / p.file_to_si << "]";
+      const std::string unit = p.FileUnit();
+      effects.push_back({e.id + "." + p.key, unit.empty() || unit == "1" ? "-" : unit, range.str(), "*required*"});
+    }
+  return {io::MakeBlock("model", read_by, io::DocsOf(ModelKeys())),
+          io::MakeBlock("model.effects.parameters", "drop_tests/model/effects_yaml.cpp", effects),
+          io::MakeBlock("model.soil", read_by, io::DocsOf(OverrideKeys())),
+          io::MakeBlock("model.soil.bekker", read_by, bekker),
+          io::MakeBlock("model.soil.fit", read_by, io::DocsOf(FitKeys()))};
 }
 
 ModelFile LoadModelFile(const std::string& path) {

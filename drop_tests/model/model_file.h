@@ -41,6 +41,7 @@
 #include "drop_tests/model/effects.h"
 #include "rft/physical_limits.h"
 #include "drop_tests/formats/output_path.h"
+#include "drop_tests/formats/schema_doc.h"
 #include "rft/gravity_constants.h"
 #include "rft/soil.h"
 #include "rft/stress_law_3d.h"
@@ -102,6 +103,9 @@ struct ModelFile {
   bool HasEffects() const { return !effects.empty(); }
 };
 
+// The reference of a model file's keys (schema_doc.h; `touchdown schema`, docs/reference.md); the
+// effects' keys are the effect library's (effects.h).
+std::vector<io::BlockDoc> ModelFileSchema();
 ModelFile LoadModelFile(const std::string& path);
 // The first line of every model file touchdown writes: a file that starts with it may be replaced by
 // the next `calibrate --out`; any other file at that path is the user's and is never overwritten.

@@ -67,8 +67,8 @@ const io::FieldTable<PaperCheck>& CheckFields() {
 }
 const io::FieldTable<PaperCheck>& PaperFigureFields() {
   static const io::FieldTable<PaperCheck> fields{
-      {"experiment", &PaperCheck::paper_experiment, 1.0, io::Sign::kPositive, true, true},
-      {"rft", &PaperCheck::paper_rft, 1.0, io::Sign::kPositive, true, true}};
+      {"experiment", &PaperCheck::paper_experiment, 1.0, io::Sign::kPositive, true, true, nullptr, "none"},
+      {"rft", &PaperCheck::paper_rft, 1.0, io::Sign::kPositive, true, true, nullptr, "none"}};
   return fields;
 }
 
@@ -318,6 +318,12 @@ std::string DropId(const io::PadSpec& pad, const rft::SoilParameters& soil, doub
   return pad.name + "_" + soil.name + "_v" + SpeedTag(speed_m_s);
 }
 
+// A scenario's `drops` entry's keys: a pad and a soil by name or path, and its list of speeds.
+const std::vector<std::string>& DropEntryKeys() {
+  static const std::vector<std::string> keys{"pad", "soil", "impact_speeds_m_s", "mass_kg", "zeta_N_cm3", "gravity_m_s2"};
+  return keys;
+}
+
 // A scenario's `drops`: each entry a pad and a soil by name or path, and its list of speeds.
 void ReadDropEntries(const io::YamlFields& f, CampaignScenario& s) {
   const double gravity = f.PositiveOr("gravity_m_s2", rft::kEarthGravity_m_s2);
@@ -325,7 +331,7 @@ void ReadDropEntries(const io::YamlFields& f, CampaignScenario& s) {
   SoilCache soils;
   std::set<std::string> ids;
   for (const io::YamlFields& entry : f.List("drops")) {
-    entry.RequireOnly({"pad", "soil", "impact_speeds_m_s", "mass_kg", "zeta_N_cm3", "gravity_m_s2"});
+    entry.RequireOnly(DropEntryKeys());
     const std::shared_ptr<const io::PadSpec>& pad = Cached(pads, entry.String("pad"), entry, "pad", LoadSharedPad);
     const rft::SoilParameters& soil = Cached(soils, entry.String("soil"), entry, "soil", io::LoadSoil);
     const std::string soil_source = io::ResolveCatalogFile("soils", entry.String("soil"));
@@ -373,6 +379,15 @@ void ReadResolvedCases(const io::YamlFields& f, const std::string& dir, Campaign
   }
 }
 }  // namespace
+
+std::vector<io::BlockDoc> CampaignSchema() {
+  const std::string read_by = "drop_tests/scenario/campaign.cpp";
+  return {io::MakeBlock("campaign", read_by, io::DocsOf(CampaignKeys(), {"source"})),
+          io::MakeBlock("campaign.drops", read_by, io::PlainKeyDocs(DropEntryKeys())),
+          io::MakeBlock("campaign.paper_checks", read_by, io::DocsOf(CheckKeys())),
+          io::MakeBlock("campaign.paper_checks.numerator", read_by, io::DocsOf(PadSoilKeys())),
+          io::MakeBlock("campaign.paper_checks.paper", read_by, io::DocsOf(PaperFigureFields()))};
+}
 
 CampaignScenario LoadCampaignScenario(const std::string& path) {
   const io::YamlFields f = io::YamlFields::LoadFile(path);

@@ -69,6 +69,8 @@ struct CheckOutcome {
 // A campaign file may name a model file (`model:`, beside the file); `campaign --model` sets or
 // replaces it (SetCampaignModel).
 CampaignScenario LoadCampaignScenario(const std::string& path);
+// The reference of a campaign scenario's keys (schema_doc.h; `touchdown schema`, docs/reference.md).
+std::vector<io::BlockDoc> CampaignSchema();
 void SetCampaignModel(CampaignScenario& scenario, const std::string& model_path);
 
 // One check's entry in summary.json's paper_checks.

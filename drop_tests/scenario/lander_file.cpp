@@ -31,6 +31,45 @@ lander::ShockAbsorber ReadAbsorber(const io::YamlFields& f) {
   io::ReadFields(f, AbsorberFields(a.kind), a);
   return a;
 }
+// A lander file's number fields, and its `legs` block's (placed by PlaceLegs).
+const io::FieldTable<LanderSpec>& LanderNumberFields() {
+  static const io::FieldTable<LanderSpec> fields{
+      {"total_mass_kg", &LanderSpec::total_mass_kg, 1.0, io::Sign::kPositive, false, false, &limits::kMass_kg},
+      {"cog_height_mm", &LanderSpec::cog_height_m, kMm, io::Sign::kPositive, false, false, &limits::kLanderSize_mm},
+  };
+  return fields;
+}
+const io::FieldTable<LanderLegLayout>& LegNumberFields() {
+  using L = LanderLegLayout;
+  static const io::FieldTable<L> fields{
+      {"joint_radius_mm", &L::joint_radius_m, kMm, io::Sign::kPositive, false, false, &limits::kLanderSize_mm},
+      {"hip_radius_mm", &L::hip_radius_m, kMm, io::Sign::kNonNegative, false, false, &limits::kLanderSize_mm},
+      {"hip_height_mm", &L::hip_height_m, kMm, io::Sign::kPositive, false, false, &limits::kLanderSize_mm},
+  };
+  return fields;
+}
+// A lander file's keys, and its `legs` block's (a person writes them; a resolved lander scenario
+// states what they resolve to).
+const io::KeyTable<LanderSpec>& LanderFileKeys() {
+  static const io::KeyTable<LanderSpec> keys = [] {
+    io::KeyTable<LanderSpec> k{{"schema_version"}, {"name"}, {"description"}};
+    io::AppendNumberKeys(k, LanderNumberFields());
+    for (const char* key : {"body_inertia_kg_m2", "pad", "legs", "provenance"}) k.push_back({key});
+    return k;
+  }();
+  return keys;
+}
+const io::KeyTable<LanderLegLayout>& LegKeys() {
+  static const io::KeyTable<LanderLegLayout> keys = [] {
+    io::KeyTable<LanderLegLayout> k;
+    io::AppendNumberKeys(k, LegNumberFields());
+    k.push_back({"absorber"});
+    k.push_back({"cone_limit"});
+    return k;
+  }();
+  return keys;
+}
+
 // The lander file's key that a leg placement's error names.
 const char* PlacementKey(lander::LegPlacementError::Field field) {
   switch (field) {
@@ -78,13 +117,11 @@ LanderSpec LoadLanderSpec(const std::string& name_or_path) {
 LanderSpec LoadLanderSpec(const io::YamlFields& f) {
   const std::string& path = f.file();
   f.RequireSchemaVersion(1);
-  f.RequireOnly({"schema_version", "name", "description", "total_mass_kg", "cog_height_mm", "body_inertia_kg_m2",
-                 "pad", "legs", "provenance"});
+  f.RequireOnly(io::Keys(LanderFileKeys()));
   LanderSpec s;
   s.source = path;
   s.name = f.Name("name", fs::path(path).stem().string());
-  s.total_mass_kg = io::ReadNumber(f, "total_mass_kg", io::Sign::kPositive, &limits::kMass_kg);
-  s.cog_height_m = io::ReadNumber(f, "cog_height_mm", io::Sign::kPositive, &limits::kLanderSize_mm) * kMm;
+  io::ReadFields(f, LanderNumberFields(), s);
   s.body_inertia_B = io::ReadInertia(f.Child("body_inertia_kg_m2"));
   try {
     s.pad = io::LoadPad(ResolveRelative(f, "pads", f.String("pad")));
@@ -92,13 +129,8 @@ LanderSpec LoadLanderSpec(const io::YamlFields& f) {
     f.Fail("pad", e.what());
   }
   const io::YamlFields legs = f.Child("legs");
-  legs.RequireOnly({"joint_radius_mm", "hip_radius_mm", "hip_height_mm", "absorber", "cone_limit"});
-  const auto size = [&](const char* key, io::Sign sign) {
-    return io::ReadNumber(legs, key, sign, &limits::kLanderSize_mm) * kMm;
-  };
-  s.layout.joint_radius_m = size("joint_radius_mm", io::Sign::kPositive);
-  s.layout.hip_radius_m = size("hip_radius_mm", io::Sign::kNonNegative);
-  s.layout.hip_height_m = size("hip_height_mm", io::Sign::kPositive);
+  legs.RequireOnly(io::Keys(LegKeys()));
+  io::ReadFields(legs, LegNumberFields(), s.layout);
   if (legs.Has("absorber")) s.layout.absorber = ReadAbsorber(legs.Child("absorber"));
   if (legs.Has("cone_limit")) {
     const io::YamlFields c = legs.Child("cone_limit");
@@ -113,6 +145,16 @@ LanderSpec LoadLanderSpec(const io::YamlFields& f) {
   if (const std::string problem = StopStiffnessProblem(s); !problem.empty())
     legs.Child("cone_limit").Fail("stiffness_N_m_rad", problem);
   return s;
+}
+
+std::vector<io::BlockDoc> LanderFileSchema() {
+  const std::string read_by = "drop_tests/scenario/lander_file.cpp";
+  std::vector<io::BlockDoc> blocks{io::MakeBlock("lander", read_by, io::DocsOf(LanderFileKeys())),
+                                   io::MakeBlock("lander.legs", read_by, io::DocsOf(LegKeys()))};
+  for (const auto& [kind, name] : kAbsorberKindNames)
+    blocks.push_back(io::MakeBlock("lander.legs.absorber." + std::string(name), read_by, io::DocsOf(AbsorberKeys(kind))));
+  blocks.push_back(io::MakeBlock("lander.legs.cone_limit", read_by, io::DocsOf(ConeFields())));
+  return blocks;
 }
 
 LanderSpec LanderSpecWithPad(const LanderSpec& spec, const io::PadSpec& pad) {

@@ -73,8 +73,12 @@ LanderPatchSpec ReadPatch(const io::YamlFields& p, const SoilCheck& check_soil) 
 
 // `ground.soil_field` (soil_field.h): soils checked like any patch's, probabilities summing to 1,
 // at most 400 cells a side.
+const std::vector<std::string>& SoilFieldKeys() {
+  static const std::vector<std::string> keys{"soils", "probabilities", "cell_size_m", "half_extent_m", "seed"};
+  return keys;
+}
 SoilFieldSpec ReadSoilField(const io::YamlFields& f, const SoilCheck& check_soil) {
-  f.RequireOnly({"soils", "probabilities", "cell_size_m", "half_extent_m", "seed"});
+  f.RequireOnly(SoilFieldKeys());
   SoilFieldSpec field;
   const YAML::Node soils = f.node()["soils"];
   if (!soils || !soils.IsSequence() || soils.size() < 1 || soils.size() > 8)
@@ -277,6 +281,17 @@ void RequireResolvedValuesMatch(const io::YamlFields& f, const LanderScenario& s
 LanderScenario LoadLanderScenario(const std::string& path) {
   std::optional<lander::LanderSetup> setup;
   return LoadLanderScenarioWithSetup(path, setup);
+}
+
+std::vector<io::BlockDoc> LanderScenarioSchema() {
+  const std::string read_by = "drop_tests/scenario/lander_scenario_file.cpp";
+  return {io::MakeBlock("lander_scenario", read_by, io::DocsOf(LanderScenarioKeys(), {"source"})),
+          io::MakeBlock("lander_scenario.ground", read_by, io::DocsOf(GroundKeys(), {"soils", "model"})),
+          io::MakeBlock("lander_scenario.ground.patches", read_by, io::DocsOf(PatchKeys())),
+          io::MakeBlock("lander_scenario.ground.soil_field", read_by, io::PlainKeyDocs(SoilFieldKeys())),
+          io::MakeBlock("lander_scenario.initial", read_by, io::DocsOf(InitialKeys(), {kReleaseBodyComKey})),
+          io::MakeBlock("lander_scenario.simulation", read_by, io::DocsOf(SimulationKeys())),
+          io::MakeBlock("lander_scenario.paper", read_by, io::DocsOf(PaperKeys()))};
 }
 
 LanderScenario LoadLanderScenarioWithSetup(const std::string& path, std::optional<lander::LanderSetup>& setup) {

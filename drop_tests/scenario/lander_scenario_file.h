@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "drop_tests/catalog/catalog.h"
+#include "drop_tests/formats/schema_doc.h"
 #include "drop_tests/formats/yaml_fields.h"
 #include "drop_tests/scenario/lander_scenario_types.h"
 
@@ -21,6 +22,10 @@ LanderSpec LoadLanderSpec(const io::YamlFields& f);
 // four pads heavier than the lander, or the body's CoM or the hips below the joints.
 LanderSpec LanderSpecWithPad(const LanderSpec& spec, const io::PadSpec& pad);
 LanderScenario LoadLanderScenario(const std::string& path);
+// The reference of a lander scenario's and a lander file's keys (schema_doc.h; `touchdown schema`,
+// docs/reference.md).
+std::vector<io::BlockDoc> LanderScenarioSchema();
+std::vector<io::BlockDoc> LanderFileSchema();
 // As LoadLanderScenario; a resolved copy is checked against the files it names by building its setup, which
 // comes back in `setup` so that its landing need not build it again (left empty for a scenario
 // file). The setup holds for the scenario as loaded: one edited afterwards needs its own.

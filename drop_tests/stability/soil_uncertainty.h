@@ -111,6 +111,8 @@ enum class SoilTruncation {
 // whose dynamic term is on, a drawn Bekker field only where the soil runs on the bekker law.
 // InputError naming the file and field.
 SoilUncertainty ReadSoilUncertainty(const io::YamlFields& study_block, const sweep::SweepPlan& plan);
+// The keys of one soil's entry under `study.soil_uncertainty`.
+const std::vector<std::string>& SoilUncertaintyEntryKeys();
 
 // The parameters landing `index` runs with, in file units (N/cm^3, -, kN/m^(n+1), kN/m^(n+2)), in
 // `parameters` order.

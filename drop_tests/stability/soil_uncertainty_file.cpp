@@ -179,6 +179,11 @@ void SetBox(UncertainParameter& q, const nlohmann::json& entry, SoilTruncation t
 }
 }  // namespace
 
+const std::vector<std::string>& SoilUncertaintyEntryKeys() {
+  static const std::vector<std::string> keys{"calibration", "truncate"};
+  return keys;
+}
+
 SoilUncertainty ReadSoilUncertainty(const io::YamlFields& study_block, const sweep::SweepPlan& plan) {
   SoilUncertainty u;
   u.seed = plan.seed;
@@ -205,7 +210,7 @@ SoilUncertainty ReadSoilUncertainty(const io::YamlFields& study_block, const swe
       all.Fail(soil, "is not a soil this study's landings stand on (" + Joined(names) + ")");
     const rft::SoilParameters& soil_file = soils.at(soil);
     const io::YamlFields f = all.Child(soil);
-    f.RequireOnly({"calibration", "truncate"});
+    f.RequireOnly(SoilUncertaintyEntryKeys());
     const std::string given = f.String("calibration");
     const SoilTruncation truncation = ReadTruncation(f);
     const fs::path p = fs::path(given).is_absolute() ? fs::path(given) : base / given;

@@ -99,9 +99,29 @@ int64_t ReadMaxDrawnLandings(const io::YamlFields& map) {
   return static_cast<int64_t>(v);
 }
 
+// The `study` block's keys, and its blocks' (soil_uncertainty's are its file's, soil_pairing's
+// `samples`).
+const std::vector<std::string>& StudyKeys() {
+  static const std::vector<std::string> keys{"map", "worst_cases", "max_tip_over_cases", "recheck",
+                                             "joint_range_sensitivity", "soil_uncertainty", "soil_pairing"};
+  return keys;
+}
+const std::vector<std::string>& MapKeys() {
+  static const std::vector<std::string> keys{"x", "y", "bins", "contours", "max_drawn_landings"};
+  return keys;
+}
+const std::vector<std::string>& RecheckKeys() {
+  static const std::vector<std::string> keys{"rtol", "tilt_margin_deg", "unsettled"};
+  return keys;
+}
+const std::vector<std::string>& JointRangeKeys() {
+  static const std::vector<std::string> keys{"samples", "screen_margin_deg"};
+  return keys;
+}
+
 StudyMap ReadMap(const io::YamlFields& study, const sweep::SweepPlan& plan) {
   const io::YamlFields map = study.Child("map");
-  map.RequireOnly({"x", "y", "bins", "contours", "max_drawn_landings"});
+  map.RequireOnly(MapKeys());
   int bins[2] = {10, 10};
   if (map.Has("bins")) {
     const YAML::Node n = map.node()["bins"];
@@ -148,7 +168,7 @@ RecheckSettings ReadRecheck(const io::YamlFields& study, RecheckSettings r, doub
     return r;
   }
   const io::YamlFields f = study.Child("recheck");
-  f.RequireOnly({"rtol", "tilt_margin_deg", "unsettled"});
+  f.RequireOnly(RecheckKeys());
   if (f.Has("unsettled")) r.unsettled = f.Bool("unsettled");
   if (f.Has("rtol")) {
     r.rtol = f.Number("rtol");
@@ -192,7 +212,7 @@ JointRangeSettings ReadJointRange(const io::YamlFields& study) {
   const std::string key = "joint_range_sensitivity";
   if (!study.Has(key)) return j;
   std::optional<int64_t> samples;
-  j.enabled = ReadFollowUpSamples(study, key, samples, {"samples", "screen_margin_deg"});
+  j.enabled = ReadFollowUpSamples(study, key, samples, JointRangeKeys());
   j.samples = samples.value_or(j.samples);
   if (!j.enabled) return j;
   const io::YamlFields f = study.Child(key);
@@ -220,6 +240,16 @@ SoilPairingSettings ReadSoilPairing(const io::YamlFields& study) {
 }
 }  // namespace
 
+std::vector<io::BlockDoc> StudySchema() {
+  const std::string read_by = "drop_tests/stability/study.cpp";
+  return {io::MakeBlock("study", read_by, io::PlainKeyDocs(StudyKeys())),
+          io::MakeBlock("study.map", read_by, io::PlainKeyDocs(MapKeys())),
+          io::MakeBlock("study.recheck", read_by, io::PlainKeyDocs(RecheckKeys())),
+          io::MakeBlock("study.joint_range_sensitivity", read_by, io::PlainKeyDocs(JointRangeKeys())),
+          io::MakeBlock("study.soil_uncertainty.soil", "drop_tests/stability/soil_uncertainty_file.cpp",
+                        io::PlainKeyDocs(SoilUncertaintyEntryKeys()))};
+}
+
 Study LoadStudy(const std::string& path, const std::string& model_override, std::optional<int64_t> samples_override) {
   return LoadStudy(path, model_override, samples_override, drop::RequestNaming{"", true});
 }
@@ -243,8 +273,7 @@ Study LoadStudy(const std::string& path, const std::string& model_override, std:
   if (!(study.recheck.rtol < ScenarioRtol(study.plan))) study.recheck.rtol = ScenarioRtol(study.plan) / 100.0;
   if (f.Has("study")) {
     const io::YamlFields s = f.Child("study");
-    s.RequireOnly({"map", "worst_cases", "max_tip_over_cases", "recheck", "joint_range_sensitivity", "soil_uncertainty",
-                   "soil_pairing"});
+    s.RequireOnly(StudyKeys());
     if (s.Has("map")) study.map = ReadMap(s, study.plan);
     study.worst_cases = ReadCount(s, "worst_cases", study.worst_cases);
     study.max_tip_over_cases = ReadCount(s, "max_tip_over_cases", study.max_tip_over_cases);

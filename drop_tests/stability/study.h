@@ -119,6 +119,9 @@ struct Study {
   SoilPairingSettings soil_pairing;  // read only with soil_uncertainty
 };
 
+// The reference of a stability study's `study` block (schema_doc.h; `touchdown schema`,
+// docs/reference.md); the rest of the file is a sweep's.
+std::vector<io::BlockDoc> StudySchema();
 // Loads and validates the study (the sweep plan, then the study block) before anything runs.
 // `samples_override` (--samples N) replaces the random block's sample count; a study without a
 // random block refuses it (InputError naming --samples, or as `naming` names it: the Python

@@ -240,6 +240,9 @@ struct SweepPlan {
 inline constexpr long kDefaultMaxDropEvaluations = limits::kDefaultMaxRunEvaluations;
 inline constexpr double kDefaultMaxDropWallTimeS = 0.0;  // none: wall-clock limits are opt-in
 SweepPlan LoadSweepPlan(const std::string& path, const std::string& model_override = "");
+// The reference of a sweep file's keys (schema_doc.h; `touchdown schema`, docs/reference.md); the
+// parameters under fixed, grid and random are the sweep parameters' table.
+std::vector<io::BlockDoc> SweepPlanSchema();
 // A sweep file that LoadSweepPlan reads back to the same plan (same DigestText, limits and
 // drops): every value in file units, grids as lists, pads, model and lander scenario by absolute
 // path, soils as the plan resolved them.

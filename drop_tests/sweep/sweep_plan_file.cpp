@@ -274,6 +274,12 @@ void ReadFixed(const io::YamlFields& block, ParamClaims& claims, Loader& loader,
   }
 }
 
+// A grid axis given as a range.
+const std::vector<std::string>& GridRangeKeys() {
+  static const std::vector<std::string> keys{"from", "to", "count"};
+  return keys;
+}
+
 // Grid axes: a list of values or {from, to, count}; the first-listed axis varies slowest.
 void ReadGrid(const io::YamlFields& block, ParamClaims& claims, Loader& loader, SweepPlan& plan) {
   for (const auto& item : block.node()) {
@@ -282,7 +288,7 @@ void ReadGrid(const io::YamlFields& block, ParamClaims& claims, Loader& loader, 
     SweepAxis axis{p, {}};
     if (item.second.IsMap() && !IsName(p)) {
       const io::YamlFields range = block.Child(key);
-      range.RequireOnly({"from", "to", "count"});
+      range.RequireOnly(GridRangeKeys());
       const double from = range.Number("from"), to = range.Number("to");
       const int count = range.PositiveInt("count");
       if (count < 2 && from != to) range.Fail("count", "must be at least 2 when from != to");
@@ -390,6 +396,15 @@ void ReadRandom(const io::YamlFields& block, ParamClaims& claims, Loader& loader
 }
 
 }  // namespace
+
+std::vector<io::BlockDoc> SweepPlanSchema() {
+  const std::string read_by = "drop_tests/sweep/sweep_plan_file.cpp";
+  return {io::MakeBlock("sweep", read_by, io::DocsOf(SweepKeys())),
+          io::MakeBlock("sweep.lander", read_by, io::DocsOf(LanderBlockKeys())),
+          io::MakeBlock("sweep.simulation", read_by, io::DocsOf(SimulationBlockKeys())),
+          io::MakeBlock("sweep.grid.range", read_by, io::PlainKeyDocs(GridRangeKeys())),
+          io::MakeBlock("sweep.random.draw", read_by, io::DocsOf(RandomSpecKeys()))};
+}
 
 SweepPlan LoadSweepPlan(const std::string& path, const std::string& model_override) {
   const io::YamlFields f = io::YamlFields::LoadFile(path);

@@ -10,6 +10,7 @@
 #include "drop_tests/formats/json_number.h"
 #include "drop_tests/formats/output_path.h"
 #include "drop_tests/formats/dataset_csv.h"
+#include "drop_tests/formats/field_table.h"
 #include "drop_tests/formats/yaml_fields.h"
 #include "rft/input_error.h"
 #include "rft/units.h"
@@ -30,16 +31,32 @@ bool TradeLimits::any() const {
   return std::isfinite(max_final_penetration_m) || std::isfinite(max_peak_force_N) || std::isfinite(max_pad_mass_kg);
 }
 
+namespace {
+// The sweep file's `trade:` block: each limit optional (absent: none).
+const io::FieldTable<TradeLimits>& TradeLimitFields() {
+  using L = TradeLimits;
+  static const io::FieldTable<L> fields{
+      {"allowable_final_penetration_mm", &L::max_final_penetration_m, units::kMm, io::Sign::kPositive, true, false,
+       nullptr, "none"},
+      {"allowable_peak_force_N", &L::max_peak_force_N, 1.0, io::Sign::kPositive, true, false, nullptr, "none"},
+      {"max_pad_mass_kg", &L::max_pad_mass_kg, 1.0, io::Sign::kPositive, true, false, nullptr, "none"},
+  };
+  return fields;
+}
+}  // namespace
+
 TradeLimits LoadTradeLimits(const std::string& sweep_file) {
   const io::YamlFields f = io::YamlFields::LoadFile(sweep_file);
   TradeLimits limits;
   if (!f.Has("trade")) return limits;
   const io::YamlFields t = f.Child("trade");
-  t.RequireOnly({"allowable_final_penetration_mm", "allowable_peak_force_N", "max_pad_mass_kg"});
-  if (t.Has("allowable_final_penetration_mm")) limits.max_final_penetration_m = t.Positive("allowable_final_penetration_mm") * units::kMm;
-  if (t.Has("allowable_peak_force_N")) limits.max_peak_force_N = t.Positive("allowable_peak_force_N");
-  if (t.Has("max_pad_mass_kg")) limits.max_pad_mass_kg = t.Positive("max_pad_mass_kg");
+  t.RequireOnly(io::FieldKeys(TradeLimitFields()));
+  io::ReadFields(t, TradeLimitFields(), limits);
   return limits;
+}
+
+std::vector<io::BlockDoc> TradeSchema() {
+  return {io::MakeBlock("sweep.trade", "drop_tests/sweep/trade.cpp", io::DocsOf(TradeLimitFields()))};
 }
 
 std::vector<TradeRow> TradeTable(const std::vector<DropRecord>& records, const TradeLimits& limits) {

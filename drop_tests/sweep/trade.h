@@ -53,6 +53,8 @@ struct TradeLimits {
 
 // The sweep file's `trade:` block (absent: no limits); InputError naming file and field.
 TradeLimits LoadTradeLimits(const std::string& sweep_file);
+// The reference of the `trade:` block's keys (schema_doc.h; `touchdown schema`, docs/reference.md).
+std::vector<io::BlockDoc> TradeSchema();
 
 // A trade study compares footpads dropped on their own; a lander sweep (one pad design on four
 // legs, whole-lander summaries) is refused with an InputError naming the sweep file and field.

@@ -21,6 +21,40 @@ namespace fs = std::filesystem;
 namespace touchdown::targets {
 
 namespace {
+// A targets file's keys, block by block (docs/calibration_targets.md; docs/reference.md).
+const std::vector<std::string>& TargetsKeys() {
+  static const std::vector<std::string> keys{"schema_version", "type", "name", "description", "parameters", "targets", "fit", "provenance"};
+  return keys;
+}
+const std::vector<std::string>& ParameterKeys() {
+  static const std::vector<std::string> keys{"name", "soil", "pad", "lander", "field", "lower", "upper", "start", "source", "prior"};
+  return keys;
+}
+const std::vector<std::string>& PriorKeys() {
+  static const std::vector<std::string> keys{"value", "sd", "source"};
+  return keys;
+}
+const std::vector<std::string>& TargetKeys() {
+  static const std::vector<std::string> keys{"name", "drop", "campaign", "lander", "quantity", "pad", "ratio", "value", "at_most", "at_least",
+                                             "uncertainty", "use", "source"};
+  return keys;
+}
+const std::vector<std::string>& RatioKeys() {
+  static const std::vector<std::string> keys{"numerator", "denominator"};
+  return keys;
+}
+const std::vector<std::string>& DropKeys() {
+  static const std::vector<std::string> keys{"pad", "soil", "speed_m_s", "gravity_m_s2"};
+  return keys;
+}
+const std::vector<std::string>& CampaignRowKeys() {
+  static const std::vector<std::string> keys{"file", "pad", "soil", "speed_m_s"};
+  return keys;
+}
+const std::vector<std::string>& FitKeys() {
+  static const std::vector<std::string> keys{"relative_step", "max_iterations", "confidence"};
+  return keys;
+}
 struct QuantityEntry {
   Quantity quantity;
   const char* name;
@@ -107,7 +141,7 @@ void ReadBounds(const io::YamlFields& p, Parameter& out) {
 }
 
 ParameterPrior ReadPrior(const io::YamlFields& m, const Parameter& p) {
-  m.RequireOnly({"value", "sd", "source"});
+  m.RequireOnly(PriorKeys());
   ParameterPrior out{m.Number("value"), m.Number("sd"), m.String("source")};
   if (out.value < p.lower || out.value > p.upper)
     m.Fail("value", "must lie within [lower, upper] = [" + Number(p.lower) + ", " + Number(p.upper) + "], got " +
@@ -117,7 +151,7 @@ ParameterPrior ReadPrior(const io::YamlFields& m, const Parameter& p) {
 }
 
 Parameter ReadParameter(const io::YamlFields& p) {
-  p.RequireOnly({"name", "soil", "pad", "lander", "field", "lower", "upper", "start", "source", "prior"});
+  p.RequireOnly(ParameterKeys());
   Parameter out;
   out.name = p.Name("name");
   out.source = p.String("source");
@@ -260,7 +294,7 @@ class ScenarioReader {
   }
 
   size_t Drop(const io::YamlFields& d) {
-    d.RequireOnly({"pad", "soil", "speed_m_s", "gravity_m_s2"});
+    d.RequireOnly(DropKeys());
     ScenarioRun run;
     run.kind = ScenarioRun::Kind::kDrop;
     const std::string pad_file = Canonical(ResolveNear(d, "pads", "pad"));
@@ -279,7 +313,7 @@ class ScenarioReader {
   }
 
   size_t CampaignRow(const io::YamlFields& c) {
-    c.RequireOnly({"file", "pad", "soil", "speed_m_s"});
+    c.RequireOnly(CampaignRowKeys());
     const std::string file = Canonical(ResolveNear(c, "scenarios", "file"));
     auto& campaign = campaigns_[file];
     if (!campaign) {
@@ -326,8 +360,7 @@ class ScenarioReader {
 };
 
 Target ReadTarget(const io::YamlFields& t, ScenarioReader& reader) {
-  t.RequireOnly({"name", "drop", "campaign", "lander", "quantity", "pad", "ratio", "value", "at_most", "at_least",
-                 "uncertainty", "use", "source"});
+  t.RequireOnly(TargetKeys());
   Target out;
   out.name = t.Name("name");
   out.source = t.String("source");
@@ -335,7 +368,7 @@ Target ReadTarget(const io::YamlFields& t, ScenarioReader& reader) {
     for (const char* k : {"drop", "campaign", "lander", "quantity", "pad"})
       if (t.Has(k)) t.Fail(k, "a ratio target gives its scenarios in ratio.numerator and ratio.denominator");
     const io::YamlFields r = t.Child("ratio");
-    r.RequireOnly({"numerator", "denominator"});
+    r.RequireOnly(RatioKeys());
     out.measure = reader.ReadMeasure(r.Child("numerator"));
     out.denominator = reader.ReadMeasure(r.Child("denominator"));
   } else {
@@ -367,7 +400,7 @@ Target ReadTarget(const io::YamlFields& t, ScenarioReader& reader) {
 }
 
 void ReadSettings(const io::YamlFields& f, FitSettings& s) {
-  f.RequireOnly({"relative_step", "max_iterations", "confidence"});
+  f.RequireOnly(FitKeys());
   if (f.Has("relative_step")) s.relative_step = f.Positive("relative_step");
   if (s.relative_step > 0.1) f.Fail("relative_step", "must be at most 0.1, got " + Number(s.relative_step));
   if (f.Has("max_iterations")) s.max_iterations = f.PositiveInt("max_iterations");
@@ -396,10 +429,28 @@ void CheckSameFieldOnce(const io::YamlFields& f, const std::vector<Parameter>& p
 }
 }  // namespace
 
+std::vector<io::BlockDoc> TargetsFileSchema() {
+  const std::string read_by = "drop_tests/targets/targets_file.cpp";
+  // The fit's settings take FitSettings' defaults.
+  const FitSettings defaults;
+  std::vector<io::KeyDoc> fit = io::PlainKeyDocs(FitKeys());
+  fit[0].default_value = Number(defaults.relative_step);
+  fit[1].default_value = std::to_string(defaults.max_iterations);
+  fit[2].default_value = Number(defaults.confidence);
+  return {io::MakeBlock("targets", read_by, io::PlainKeyDocs(TargetsKeys())),
+          io::MakeBlock("targets.parameters", read_by, io::PlainKeyDocs(ParameterKeys())),
+          io::MakeBlock("targets.parameters.prior", read_by, io::PlainKeyDocs(PriorKeys())),
+          io::MakeBlock("targets.targets", read_by, io::PlainKeyDocs(TargetKeys())),
+          io::MakeBlock("targets.targets.ratio", read_by, io::PlainKeyDocs(RatioKeys())),
+          io::MakeBlock("targets.targets.drop", read_by, io::PlainKeyDocs(DropKeys())),
+          io::MakeBlock("targets.targets.campaign", read_by, io::PlainKeyDocs(CampaignRowKeys())),
+          io::MakeBlock("targets.fit", read_by, fit)};
+}
+
 TargetsFile LoadTargetsFile(const std::string& path) {
   const io::YamlFields f = io::YamlFields::LoadFile(path);
   f.RequireSchemaVersion(1);
-  f.RequireOnly({"schema_version", "type", "name", "description", "parameters", "targets", "fit", "provenance"});
+  f.RequireOnly(TargetsKeys());
   if (f.String("type") != "targets") f.Fail("type", "must be 'targets', got '" + f.String("type") + "'");
   TargetsFile out;
   out.source = path;

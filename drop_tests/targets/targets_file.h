@@ -129,6 +129,8 @@ struct TargetsFile {
 };
 
 TargetsFile LoadTargetsFile(const std::string& path);
+// The reference of a targets file's keys (schema_doc.h; `touchdown schema`, docs/reference.md).
+std::vector<io::BlockDoc> TargetsFileSchema();
 // A file's path as Parameter::file holds it (weakly canonical), so that a file compares equal to
 // itself however a scenario or targets file names it.
 std::string Canonical(const std::string& path);

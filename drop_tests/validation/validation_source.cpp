@@ -26,6 +26,48 @@ const char* VariableName(Variable v) { return NameIn(kVariableNames, v); }
 const char* ProvenanceName(Provenance p) { return NameIn(kProvenanceNames, p); }
 
 namespace {
+// A validation source's keys, block by block, and a validation model file's (docs/validation.md;
+// docs/reference.md).
+const std::vector<std::string>& SourceKeys() {
+  static const std::vector<std::string> keys{"schema_version", "type", "id", "citation", "read_at", "projectile", "medium", "gravity_m_s2",
+                                             "low_gravity", "measured_law", "points", "trends", "static_bearing", "provenance"};
+  return keys;
+}
+const std::vector<std::string>& ProjectileKeys() {
+  static const std::vector<std::string> keys{"pad", "description"};
+  return keys;
+}
+const std::vector<std::string>& MediumKeys() {
+  static const std::vector<std::string> keys{"soil", "description", "zeta_route", "calibrated_on"};
+  return keys;
+}
+const std::vector<std::string>& KatsuragiDurianKeys() {
+  static const std::vector<std::string> keys{"kind", "d1_mm", "d1_uncertainty_mm", "k_over_m_per_s2", "k_over_m_uncertainty_per_s2",
+                                             "how", "where"};
+  return keys;
+}
+const std::vector<std::string>& ShallowImpactKeys() {
+  static const std::vector<std::string> keys{"kind", "prefactor", "friction_coefficient", "how", "where"};
+  return keys;
+}
+const std::vector<std::string>& PointKeys() {
+  static const std::vector<std::string> keys{"id", "impact_speed_m_s", "drop_height_mm", "quantity", "depth_mm", "stop_time_ms",
+                                             "uncertainty_mm", "uncertainty_ms", "from_law", "how", "where"};
+  return keys;
+}
+const std::vector<std::string>& TrendKeys() {
+  static const std::vector<std::string> keys{"id", "quantity", "vary", "values", "at_impact_speed_m_s", "at_gravity_m_s2", "exponent",
+                                             "tolerance", "tolerance_source", "tolerance_note", "direction", "how", "where"};
+  return keys;
+}
+const std::vector<std::string>& BearingKeys() {
+  static const std::vector<std::string> keys{"id", "pressure_N_cm2", "depth_mm", "diameter_mm", "how", "where"};
+  return keys;
+}
+const std::vector<std::string>& ValidationModelKeys() {
+  static const std::vector<std::string> keys{"schema_version", "type", "inertial_drag_lambda", "source", "provenance"};
+  return keys;
+}
 
 // Every number a source gives is range-checked at load, as a scenario's is (rft/physical_limits.h
 // where a bound exists there), in the file's own units: a measured depth of 1e9 mm would otherwise
@@ -83,8 +125,7 @@ auto LoadNamed(const io::YamlFields& f, const std::string& key, Load load) {
 }
 
 KatsuragiDurianLaw ReadKatsuragiDurianLaw(const io::YamlFields& f) {
-  f.RequireOnly({"kind", "d1_mm", "d1_uncertainty_mm", "k_over_m_per_s2", "k_over_m_uncertainty_per_s2", "how",
-                 "where"});
+  f.RequireOnly(KatsuragiDurianKeys());
   KatsuragiDurianLaw law;
   law.d1_m = InRange(f, "d1_mm", kLength_mm) * units::kMm;
   law.d1_uncertainty_m = InRange(f, "d1_uncertainty_mm", kUncertainty_mm) * units::kMm;
@@ -100,7 +141,7 @@ KatsuragiDurianLaw ReadKatsuragiDurianLaw(const io::YamlFields& f) {
 // The law needs a sphere: its density and diameter come from the pad (a spherical_cap of the
 // sphere's own radius, the sphere's lower hemisphere).
 ShallowImpactLaw ReadShallowImpactLaw(const io::YamlFields& f, const ValidationSource& s) {
-  f.RequireOnly({"kind", "prefactor", "friction_coefficient", "how", "where"});
+  f.RequireOnly(ShallowImpactKeys());
   if (s.pad.file.shape != io::PadShape::kSphericalCap || s.pad.file.sphere_radius_mm != s.pad.file.radius_mm)
     f.Fail("kind", "shallow_impact needs a sphere: a spherical_cap pad whose radius is its sphere_radius");
   if (!(s.soil.bulk_density_kg_m3 > 0.0)) f.Fail("kind", "shallow_impact needs the soil's bulk_density_kg_m3 (rho_g)");
@@ -141,8 +182,7 @@ double ReadImpactSpeed(const io::YamlFields& f, double gravity_m_s2, std::option
 }
 
 MeasuredPoint ReadPoint(const io::YamlFields& f, const ValidationSource& s) {
-  f.RequireOnly({"id", "impact_speed_m_s", "drop_height_mm", "quantity", "depth_mm", "stop_time_ms", "uncertainty_mm",
-                 "uncertainty_ms", "from_law", "how", "where"});
+  f.RequireOnly(PointKeys());
   MeasuredPoint p;
   p.id = f.Name("id");
   p.impact_speed_m_s = ReadImpactSpeed(f, s.gravity_m_s2, p.drop_height_m);
@@ -207,8 +247,7 @@ void ReadTrendLaw(const io::YamlFields& f, MeasuredTrend& t) {
 }
 
 MeasuredTrend ReadTrend(const io::YamlFields& f, const ValidationSource& s) {
-  f.RequireOnly({"id", "quantity", "vary", "values", "at_impact_speed_m_s", "at_gravity_m_s2", "exponent", "tolerance",
-                 "tolerance_source", "tolerance_note", "direction", "how", "where"});
+  f.RequireOnly(TrendKeys());
   MeasuredTrend t;
   t.id = f.Name("id");
   t.quantity = ReadQuantity(f);
@@ -252,7 +291,7 @@ Range ReadRange(const io::YamlFields& f, const std::string& key, const limits::R
 
 // The bearing area is the source's flat pad made at each bearing diameter (io::FlatPadWithRadius).
 MeasuredBearing ReadBearing(const io::YamlFields& f, const ValidationSource& s) {
-  f.RequireOnly({"id", "pressure_N_cm2", "depth_mm", "diameter_mm", "how", "where"});
+  f.RequireOnly(BearingKeys());
   if (s.pad.file.shape != io::PadShape::kFlat) f.Fail("id", "a static bearing needs a flat pad (profile shape: flat)");
   MeasuredBearing b;
   b.id = f.Name("id");
@@ -275,7 +314,7 @@ T Cached(std::map<std::string, T>* cache, const std::string& path, Load load) {
 }
 
 void ReadMedium(const io::YamlFields& m, ValidationSource& s, SourceFileCache* cache) {
-  m.RequireOnly({"soil", "description", "zeta_route", "calibrated_on"});
+  m.RequireOnly(MediumKeys());
   s.soil = LoadNamed(m, "soil", [cache](const std::string& p) {
     return Cached(cache ? &cache->soils : nullptr, p, [](const std::string& q) { return io::LoadSoil(q); });
   });
@@ -311,11 +350,23 @@ void CheckIds(const io::YamlFields& f, const ValidationSource& s) {
 
 }  // namespace
 
+std::vector<io::BlockDoc> ValidationSourceSchema() {
+  const std::string read_by = "drop_tests/validation/validation_source.cpp";
+  return {io::MakeBlock("validation_source", read_by, io::PlainKeyDocs(SourceKeys())),
+          io::MakeBlock("validation_source.projectile", read_by, io::PlainKeyDocs(ProjectileKeys())),
+          io::MakeBlock("validation_source.medium", read_by, io::PlainKeyDocs(MediumKeys())),
+          io::MakeBlock("validation_source.measured_law.katsuragi_durian", read_by, io::PlainKeyDocs(KatsuragiDurianKeys())),
+          io::MakeBlock("validation_source.measured_law.shallow_impact", read_by, io::PlainKeyDocs(ShallowImpactKeys())),
+          io::MakeBlock("validation_source.points", read_by, io::PlainKeyDocs(PointKeys())),
+          io::MakeBlock("validation_source.trends", read_by, io::PlainKeyDocs(TrendKeys())),
+          io::MakeBlock("validation_source.static_bearing", read_by, io::PlainKeyDocs(BearingKeys())),
+          io::MakeBlock("validation_model", read_by, io::PlainKeyDocs(ValidationModelKeys()))};
+}
+
 ValidationSource LoadValidationSource(const std::string& path, SourceFileCache* cache) {
   const io::YamlFields f = io::YamlFields::LoadFile(path);
   f.RequireSchemaVersion(1);
-  f.RequireOnly({"schema_version", "type", "id", "citation", "read_at", "projectile", "medium", "gravity_m_s2",
-                 "low_gravity", "measured_law", "points", "trends", "static_bearing", "provenance"});
+  f.RequireOnly(SourceKeys());
   if (f.String("type") != "validation_source") f.Fail("type", "must be validation_source, got '" + f.String("type") + "'");
   ValidationSource s;
   s.file = path;
@@ -324,7 +375,7 @@ ValidationSource LoadValidationSource(const std::string& path, SourceFileCache* 
   s.citation = f.String("citation");
   s.read_at = f.String("read_at");
   const io::YamlFields projectile = f.Child("projectile");
-  projectile.RequireOnly({"pad", "description"});
+  projectile.RequireOnly(ProjectileKeys());
   s.pad = LoadNamed(projectile, "pad", [cache](const std::string& p) {
     return Cached(cache ? &cache->pads : nullptr, p, [](const std::string& q) { return io::LoadPad(q); });
   });
@@ -347,7 +398,7 @@ ValidationSource LoadValidationSource(const std::string& path, SourceFileCache* 
 DynamicRftModel LoadDynamicRftModel(const std::string& path) {
   const io::YamlFields f = io::YamlFields::LoadFile(path);
   f.RequireSchemaVersion(1);
-  f.RequireOnly({"schema_version", "type", "inertial_drag_lambda", "source", "provenance"});
+  f.RequireOnly(ValidationModelKeys());
   if (f.String("type") != "validation_model") f.Fail("type", "must be validation_model, got '" + f.String("type") + "'");
   DynamicRftModel m;
   m.lambda = f.Positive("inertial_drag_lambda");

@@ -145,6 +145,9 @@ struct SourceFileCache {
   std::map<std::string, rft::SoilParameters> soils;
 };
 ValidationSource LoadValidationSource(const std::string& path, SourceFileCache* cache = nullptr);
+// The reference of a validation source's and a validation model file's keys (schema_doc.h;
+// `touchdown schema`, docs/reference.md).
+std::vector<io::BlockDoc> ValidationSourceSchema();
 
 // The dynamic-RFT coefficient the `dynamic` variant uses (data/validation/dynamic_rft.yaml,
 // `type: validation_model`), with its source.

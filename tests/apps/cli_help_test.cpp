@@ -21,7 +21,7 @@ struct HelpRun {
 const std::vector<std::string> kHelpCommands = {"drop",    "campaign", "force", "sweep", "export",
                                                 "merge",   "compare",  "calibrate", "trade", "lander",
                                                 "synth",   "diagnose", "stability", "validate",
-                                                "import"};
+                                                "import", "schema"};
 
 class CliHelp : public touchdown::testing_scratch::ScratchDirTest {
  protected:

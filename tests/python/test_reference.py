@@ -1,6 +1,8 @@
-"""docs/reference.md says what the code does: every input table lists exactly the keys its loader
-accepts (read from the loader's own refusal of an unknown key, which names them), and every output
-table exactly the keys or columns the command writes, in their order for CSV files.
+"""docs/reference.md says what the code does: every input table is what tools/reference_tables.py
+generates from the loaders' own tables (`touchdown schema --json`: keys, units, ranges, defaults)
+and lists exactly the keys its loader accepts (read from the loader's own refusal of an unknown
+key, which names them), and every output table exactly the keys or columns the command writes, in
+their order for CSV files.
 
 Uses only the touchdown executable and PyYAML. A failure names the table and the keys that differ:
 update docs/reference.md (or the code) so that both say the same."""
@@ -193,6 +195,20 @@ def _mesh_pad(tmp, path):
     pad["mesh"]["file"] = os.path.join(DATA, "pads", pad["mesh"]["file"])
     f = _write(tmp / "pad.yaml", _inject(pad, path))
     return ["drop", "--pad", f, "--soil", "fjs1_lp", "--speed", 1]
+
+
+def test_input_tables_are_what_the_loaders_tables_generate():
+    """tools/reference_tables.py would write docs/reference.md as it is: every block the loaders
+    read has its table, every key its unit, range, default and a meaning."""
+    import importlib.util
+    spec = importlib.util.spec_from_file_location("reference_tables", os.path.join(ROOT, "tools", "reference_tables.py"))
+    tables = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(tables)
+    with open(REFERENCE, encoding="utf-8") as f:
+        text = f.read()
+    generated, problems = tables.regenerate(text, tables.schema(BINARY))
+    assert not problems, problems
+    assert generated == text, "docs/reference.md's input tables are out of date: run python3 tools/reference_tables.py"
 
 
 @pytest.mark.parametrize("table", sorted(k for k, v in INPUTS.items() if v))
