@@ -14,6 +14,7 @@
 #include "footpad_geom/revolve.h"
 #include <iosfwd>
 
+#include "rft/physical_limits.h"
 #include "rft/soil.h"
 #include "rft/enum_names.h"
 
@@ -124,6 +125,16 @@ PadSpec LoadPad(const std::string& name_or_path);
 // (schema_doc.h; `touchdown schema`, docs/reference.md).
 std::vector<BlockDoc> PadFileSchema();
 std::vector<BlockDoc> SoilFileSchema();
+// Bekker's pressure-sinkage parameters as a soil file's `bekker` block gives them (n, k_c_kN_m_n1,
+// k_phi_kN_m_n2): one table, which the soil file and a model file's per-soil override both read
+// with (the key, the factor from file units to SI, the range in file units, the member set).
+struct BekkerFileField {
+  const char* key;
+  double file_to_si;
+  const limits::Range* range;
+  double rft::BekkerParameters::*member;
+};
+const std::array<BekkerFileField, 3>& BekkerPressureSinkageFields();
 // A pad from its file's YAML as read (YamlFields::LoadFile of the resolved file), possibly edited in
 // memory first (calibrate --targets changes a profile constant without touching the file); a
 // revolved pad's rings `rim` (a mesh pad ignores it).

@@ -38,17 +38,21 @@ const FieldTable<rft::SoilParameters>& SoilNumberFields() {
   return fields;
 }
 
-// The `bekker:` block of a soil file (rft/bekker_parameters.h): kN, kPa, deg and mm in the file.
+// The `bekker:` block of a soil file (rft/bekker_parameters.h): kN, kPa, deg and mm in the file;
+// the pressure-sinkage parameters first, from their one table.
 const FieldTable<rft::BekkerParameters>& BekkerFields() {
   using B = rft::BekkerParameters;
-  static const FieldTable<B> fields{
-      {"n", &B::n, 1.0, Sign::kPositive, false, false, &limits::kBekkerN},
-      {"k_c_kN_m_n1", &B::k_c_N_m_n1, units::kKilo, Sign::kNonNegative, false, false, &limits::kBekkerKc_kN_m_n1},
-      {"k_phi_kN_m_n2", &B::k_phi_N_m_n2, units::kKilo, Sign::kNonNegative, false, false, &limits::kBekkerKphi_kN_m_n2},
-      {"cohesion_kPa", &B::cohesion_Pa, units::kKilo, Sign::kNonNegative, false, false, &limits::kCohesion_kPa},
-      {"friction_angle_deg", &B::friction_angle_rad, kDeg, Sign::kNonNegative, false, false},
-      {"shear_modulus_K_mm", &B::shear_modulus_K_m, kMm, Sign::kPositive, false, false, &limits::kShearModulusK_mm},
-  };
+  static const FieldTable<B> fields = [] {
+    FieldTable<B> f;
+    for (const BekkerFileField& e : BekkerPressureSinkageFields())
+      f.push_back({e.key, e.member, e.file_to_si, e.range->low_open ? Sign::kPositive : Sign::kNonNegative, false, false,
+                   e.range});
+    f.insert(f.end(),
+             {{"cohesion_kPa", &B::cohesion_Pa, units::kKilo, Sign::kNonNegative, false, false, &limits::kCohesion_kPa},
+              {"friction_angle_deg", &B::friction_angle_rad, kDeg, Sign::kNonNegative, false, false},
+              {"shear_modulus_K_mm", &B::shear_modulus_K_m, kMm, Sign::kPositive, false, false, &limits::kShearModulusK_mm}});
+    return f;
+  }();
   return fields;
 }
 
@@ -180,6 +184,16 @@ void WriteSoil(const rft::SoilParameters& soil, std::ostream& out) {
   YAML::Emitter y;
   WriteMap(y, SoilKeys(), soil);
   out << y.c_str() << '\n';
+}
+
+const std::array<BekkerFileField, 3>& BekkerPressureSinkageFields() {
+  using B = rft::BekkerParameters;
+  static const std::array<BekkerFileField, 3> fields{{
+      {"n", 1.0, &limits::kBekkerN, &B::n},
+      {"k_c_kN_m_n1", units::kKilo, &limits::kBekkerKc_kN_m_n1, &B::k_c_N_m_n1},
+      {"k_phi_kN_m_n2", units::kKilo, &limits::kBekkerKphi_kN_m_n2, &B::k_phi_N_m_n2},
+  }};
+  return fields;
 }
 
 std::vector<BlockDoc> SoilFileSchema() {

@@ -1,5 +1,6 @@
 #include "drop_tests/model/model_file.h"
 
+#include <array>
 #include <filesystem>
 #include <sstream>
 #include <nlohmann/json.hpp>
@@ -10,6 +11,7 @@
 #include "drop_tests/formats/key_table.h"
 #include "drop_tests/model/effects.h"
 #include "drop_tests/model/effects_yaml.h"
+#include "drop_tests/catalog/catalog.h"
 #include "drop_tests/catalog/paths_in_outputs.h"
 #include "drop_tests/formats/yaml_fields.h"
 #include "rft/input_error.h"
@@ -174,12 +176,21 @@ SoilOverride ReadOverride(const io::YamlFields& f) {
 }
 }  // namespace
 
+// The soil file's table (io::BekkerPressureSinkageFields), each row with its override member.
 const std::vector<BekkerOverrideField>& BekkerOverrideFields() {
-  static const std::vector<BekkerOverrideField> fields{
-      {"n", "n", "-", 1.0, &limits::kBekkerN, &SoilOverride::bekker_n},
-      {"k_c_kN_m_n1", "k_c", "kN/m^(n+1)", units::kKilo, &limits::kBekkerKc_kN_m_n1, &SoilOverride::bekker_k_c_N_m_n1},
-      {"k_phi_kN_m_n2", "k_phi", "kN/m^(n+2)", units::kKilo, &limits::kBekkerKphi_kN_m_n2, &SoilOverride::bekker_k_phi_N_m_n2},
-  };
+  static const std::vector<BekkerOverrideField> fields = [] {
+    constexpr std::array<std::pair<const char*, std::optional<double> SoilOverride::*>, 3> own{{
+        {"n", &SoilOverride::bekker_n},
+        {"k_c", &SoilOverride::bekker_k_c_N_m_n1},
+        {"k_phi", &SoilOverride::bekker_k_phi_N_m_n2},
+    }};
+    std::vector<BekkerOverrideField> f;
+    for (size_t i = 0; i < own.size(); ++i) {
+      const io::BekkerFileField& file = io::BekkerPressureSinkageFields()[i];
+      f.push_back({file.key, own[i].first, io::UnitOfKey(file.key), file.file_to_si, file.range, own[i].second});
+    }
+    return f;
+  }();
   return fields;
 }
 

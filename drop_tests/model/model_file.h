@@ -82,7 +82,7 @@ struct SoilOverride {
 struct BekkerOverrideField {
   const char* key;         // in the soil file's bekker block: n, k_c_kN_m_n1, k_phi_kN_m_n2
   const char* short_name;  // n, k_c, k_phi (a calibration report's kind soil_bekker_<short_name>)
-  const char* unit;        // of the file's value
+  std::string unit;        // of the file's value (from its key's suffix: "-", "kN/m^(n+1)")
   double si_per_unit;      // SI value = file value * si_per_unit
   const limits::Range* range;  // the file value's physical range
   std::optional<double> SoilOverride::*member;
