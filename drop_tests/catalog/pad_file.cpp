@@ -166,7 +166,12 @@ Eigen::Vector3d ReadPointMm(const YamlFields& f, const std::string& key, std::op
   return p * kMm;
 }
 
-double Mass(const YamlFields& f, const std::string& key) { return ReadNumber(f, key, Sign::kPositive, &limits::kMass_kg); }
+// A pad file's numbers read on their own (their defaults differ by pad kind: the reference states them).
+const NumberKey kPadMass{"mass_kg", Sign::kPositive, &limits::kMass_kg, ""};
+const NumberKey kPadDensity{"density_kg_m3", Sign::kPositive, &limits::kDensity_kg_m3, ""};
+const NumberKey kRemeshEdge{"remesh_edge_mm", Sign::kPositive, nullptr, "none"};
+
+double Mass(const YamlFields& f) { return ReadNumber(f, kPadMass); }
 
 // The optional explicit inertia and centre of mass, shared by both pad kinds.
 void ReadMassDistribution(const YamlFields& f, geom::PadMassModel& mass, PadFileFields& file) {
@@ -193,7 +198,7 @@ geom::PadBody GuardedBody(const YamlFields& f, Build build) {
 }
 
 void LoadAxisymmetricPad(const YamlFields& f, PadSpec& pad) {
-  pad.file.mass_kg = Mass(f, "mass_kg");
+  pad.file.mass_kg = Mass(f);
   pad.mass_kg = pad.file.mass_kg;
   pad.profile = ReadProfile(f.Child("profile"), pad.file);
   geom::ValidateProfile(pad.profile, f.file());
@@ -236,16 +241,22 @@ const KeyTable<PadToWrite>& MeshKeys() {
        }},
       {"unit", Always<W>, [](Y& y, const W& w) { y << w.pad.file.mesh_unit; }},
       {"remesh_edge_mm", [](const W& w) { return w.pad.file.remesh_edge_mm > 0.0; },
-       [](Y& y, const W& w) { y << w.pad.file.remesh_edge_mm; }},
+       [](Y& y, const W& w) { y << w.pad.file.remesh_edge_mm; }, DocOf(kRemeshEdge)},
   };
   return keys;
 }
+
+// An inertia block's moments (ixx, iyy, izz: required) and products (ixy, ixz, iyz: 0 when absent).
+const NumberKey kMoment{"ixx", Sign::kPositive, &limits::kInertia_kg_m2};
+const NumberKey kProduct{"ixy", Sign::kAny, nullptr, nullptr, 0.0};
 
 // An inertia block's keys (ixx, iyy, izz, ixy, ixz, iyz), as a pad file and a lander file give it.
 const KeyTable<std::array<double, 6>>& InertiaKeys() {
   using I = std::array<double, 6>;
   const auto entry = [](const char* key, int k) -> FileKey<I> {
-    return {key, Always<I>, [k](YAML::Emitter& y, const I& i) { y << i[k]; }};
+    NumberKey number = k < 3 ? kMoment : kProduct;
+    number.key = key;
+    return {key, Always<I>, [k](YAML::Emitter& y, const I& i) { y << i[k]; }, DocOf(number)};
   };
   static const KeyTable<I> keys{entry("ixx", 0), entry("iyy", 1), entry("izz", 2),
                                 entry("ixy", 3), entry("ixz", 4), entry("iyz", 5)};
@@ -267,9 +278,10 @@ const KeyTable<PadToWrite>& PadKeys() {
       {"kind", Always<W>, [](Y& y, const W& w) { y << (w.pad.kind == PadKind::kMesh ? "mesh" : "axisymmetric"); }},
       {"description", [](const W& w) { return !w.pad.file.description.empty(); },
        [](Y& y, const W& w) { y << w.pad.file.description; }},
-      {"mass_kg", [](const W& w) { return w.pad.file.mass_kg > 0.0; }, [](Y& y, const W& w) { y << w.pad.file.mass_kg; }},
+      {"mass_kg", [](const W& w) { return w.pad.file.mass_kg > 0.0; }, [](Y& y, const W& w) { y << w.pad.file.mass_kg; },
+       DocOf(kPadMass)},
       {"density_kg_m3", [](const W& w) { return w.pad.file.density_kg_m3 > 0.0; },
-       [](Y& y, const W& w) { y << w.pad.file.density_kg_m3; }},
+       [](Y& y, const W& w) { y << w.pad.file.density_kg_m3; }, DocOf(kPadDensity)},
       {"profile", axisymmetric,
        [](Y& y, const W& w) {
          WriteMap(y, ProfileKeys(*w.pad.file.shape), w.pad.file);
@@ -303,7 +315,7 @@ void LoadMeshPad(const YamlFields& f, PadSpec& pad) {
   pad.file.mesh_unit = m.String("unit");
   options.unit = geom::ParseLengthUnit(pad.file.mesh_unit, f.file(), m.Path("unit"));
   if (m.Has("remesh_edge_mm")) {
-    pad.file.remesh_edge_mm = m.Positive("remesh_edge_mm");
+    pad.file.remesh_edge_mm = ReadNumber(m, kRemeshEdge);
     options.remesh_edge_m = pad.file.remesh_edge_mm * kMm;
   }
   geom::TriangleMesh mesh;
@@ -315,9 +327,8 @@ void LoadMeshPad(const YamlFields& f, PadSpec& pad) {
 
   geom::PadMassModel mass;
   if (f.Has("mass_kg") == f.Has("density_kg_m3")) f.Fail("mass_kg", "give exactly one of mass_kg and density_kg_m3");
-  if (f.Has("mass_kg")) mass.mass_kg = pad.file.mass_kg = Mass(f, "mass_kg");
-  if (f.Has("density_kg_m3"))
-    mass.density_kg_m3 = pad.file.density_kg_m3 = ReadNumber(f, "density_kg_m3", Sign::kPositive, &limits::kDensity_kg_m3);
+  if (f.Has("mass_kg")) mass.mass_kg = pad.file.mass_kg = Mass(f);
+  if (f.Has("density_kg_m3")) mass.density_kg_m3 = pad.file.density_kg_m3 = ReadNumber(f, kPadDensity);
   ReadMassDistribution(f, mass, pad.file);
   Eigen::Vector3d reference;
   if (f.Has("reference_point_mm")) {
@@ -339,8 +350,8 @@ void LoadMeshPad(const YamlFields& f, PadSpec& pad) {
 
 Eigen::Matrix3d ReadInertia(const YamlFields& i) {
   i.RequireOnly(Keys(InertiaKeys()));
-  const auto moment = [&](const char* key) { return ReadNumber(i, key, Sign::kPositive, &limits::kInertia_kg_m2); };
-  const auto product = [&](const char* key) { return i.Has(key) ? i.Number(key) : 0.0; };
+  const auto moment = [&](const char* key) { return ReadNumber(i, {key, kMoment.sign, kMoment.range}); };
+  const auto product = [&](const char* key) { return ReadNumberOr(i, {key, kProduct.sign}, kProduct.default_value); };
   Eigen::Matrix3d m;
   m << moment("ixx"), product("ixy"), product("ixz"),  //
       product("ixy"), moment("iyy"), product("iyz"),   //

@@ -23,6 +23,9 @@ namespace {
 using units::kDeg;
 using units::kMm;
 
+// Zeta: a number in its range, or 'agarwal2023' (derived, then held to the same range).
+const NumberKey kSoilZeta{"zeta_N_cm3", Sign::kPositive, &limits::kZeta_N_cm3, "*required* (optional with `law: bekker`)"};
+
 // A soil file's number fields (zeta, with its 'agarwal2023' alternative, is read on its own).
 const FieldTable<rft::SoilParameters>& SoilNumberFields() {
   using S = rft::SoilParameters;
@@ -80,8 +83,8 @@ const KeyTable<rft::SoilParameters>& SoilKeys() {
         {"gravity_scaling", [](const S& s) { return s.gravity_scaling != rft::GravityScaling::kLithostatic; },
          [](Y& y, const S& s) { y << rft::GravityScalingName(s.gravity_scaling); }},
         // A Bekker soil without zeta leaves it out (0 would not read back); RFT soils always state it.
-        {"zeta_N_cm3", [=](const S& s) { return !bekker_law(s) || s.zeta_N_m3 > 0.0; },
-         [](Y& y, const S& s) { y << units::ZetaToN_cm3(s.zeta_N_m3); }},
+        {kSoilZeta.key, [=](const S& s) { return !bekker_law(s) || s.zeta_N_m3 > 0.0; },
+         [](Y& y, const S& s) { y << units::ZetaToN_cm3(s.zeta_N_m3); }, DocOf(kSoilZeta)},
     };
     AppendNumberKeys(k, SoilNumberFields());
     k.push_back({"law", [](const S& s) { return s.rft_law_3d != rft::LawKind::kLi2013; },
@@ -166,8 +169,8 @@ rft::SoilParameters LoadSoil(const std::string& name_or_path) {
       f.Fail("zeta_N_cm3", limits::Describe(limits::kZeta_N_cm3, derived_N_cm3) + inputs);
     }
   } else {
-    const double zeta_N_cm3 = f.Positive("zeta_N_cm3");
-    limits::Require(limits::kZeta_N_cm3, zeta_N_cm3, f.file(), "zeta_N_cm3");
+    const double zeta_N_cm3 = f.Positive(kSoilZeta.key);
+    limits::Require(*kSoilZeta.range, zeta_N_cm3, f.file(), kSoilZeta.key);
     soil.zeta_N_m3 = units::ZetaFromN_cm3(zeta_N_cm3);
   }
   if (f.Has("dynamic_term")) soil.dynamic_term = f.Bool("dynamic_term");

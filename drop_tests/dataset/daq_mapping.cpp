@@ -8,6 +8,7 @@
 #include "drop_tests/catalog/catalog.h"
 #include "drop_tests/dataset/dataset.h"
 #include "drop_tests/formats/dataset_csv.h"
+#include "drop_tests/formats/field_table.h"
 #include "drop_tests/formats/yaml_fields.h"
 #include "rft/input_error.h"
 #include "rft/input_file.h"
@@ -34,6 +35,12 @@ const char* MotionChannelName(MotionChannel kind) { return NameIn(kMotionChannel
 
 namespace {
 // An import mapping's keys, block by block (docs/import.md; docs/reference.md).
+// The numbers a mapping gives on their own: checked at load, documented from the same entries.
+const io::NumberKey kDaqSampleRate{"sample_rate_hz", io::Sign::kPositive, nullptr, "one of `column`, `sample_rate_hz`"};
+const io::NumberKey kDaqThreshold{"threshold_N", io::Sign::kPositive, nullptr, "automatic (5 sigma of the pre-trigger's noise)"};
+const io::NumberKey kDaqDropSpeed{"impact_speed_m_s", io::Sign::kAny, &limits::kSpeed_m_s};
+const io::NumberKey kDaqDropMass{"pad_mass_kg", io::Sign::kAny, &limits::kMass_kg};
+const io::NumberKey kDaqDropGravity{"gravity_m_s2", io::Sign::kAny, &limits::kGravity_m_s2};
 const std::vector<std::string>& MappingKeys() {
   static const std::vector<std::string> keys{"schema_version", "type", "name", "description", "daq", "channels", "touchdown", "drops"};
   return keys;
@@ -101,7 +108,7 @@ void LoadTime(const io::YamlFields& daq, DaqMapping& m) {
     throw MakeInputError(f.file(), f.prefix(), "give either {column: NAME, unit: s|ms|us} or {sample_rate_hz: RATE}");
   if (f.Has("sample_rate_hz")) {
     if (f.Has("unit")) f.Fail("unit", "goes with a time column, not with sample_rate_hz");
-    m.sample_rate_hz = f.Positive("sample_rate_hz");
+    m.sample_rate_hz = io::ReadNumber(f, kDaqSampleRate);
     if (m.sample_rate_hz > kMaxDaqSampleRate_Hz)
       f.Fail("sample_rate_hz", "must be at most 1e7 Hz, got " + io::FormatNumber(m.sample_rate_hz));
     return;
@@ -174,12 +181,9 @@ DaqDropEntry LoadDropEntry(const io::YamlFields& f, DaqMapping& m) {
   const std::optional<rft::Atmosphere> parsed = rft::ParseAtmosphere(atmosphere);
   if (!parsed) f.Fail("atmosphere", "must be vacuum or air, got '" + atmosphere + "'");
   d.atmosphere = *parsed;
-  d.impact_speed_m_s = f.Number("impact_speed_m_s");
-  limits::Require(limits::kSpeed_m_s, d.impact_speed_m_s, f.file(), f.Path("impact_speed_m_s"));
-  d.pad_mass_kg = f.Number("pad_mass_kg");
-  limits::Require(limits::kMass_kg, d.pad_mass_kg, f.file(), f.Path("pad_mass_kg"));
-  d.gravity_m_s2 = f.Number("gravity_m_s2");
-  limits::Require(limits::kGravity_m_s2, d.gravity_m_s2, f.file(), f.Path("gravity_m_s2"));
+  d.impact_speed_m_s = io::ReadNumber(f, kDaqDropSpeed);
+  d.pad_mass_kg = io::ReadNumber(f, kDaqDropMass);
+  d.gravity_m_s2 = io::ReadNumber(f, kDaqDropGravity);
   // Further keys: columns of drops.csv, in the order they first appear over the drops.
   std::vector<std::pair<std::string, std::string>> extra;
   for (const auto& item : f.node()) {
@@ -208,11 +212,11 @@ std::vector<io::BlockDoc> DaqMappingSchema() {
   const std::string read_by = "drop_tests/dataset/daq_mapping.cpp";
   return {io::MakeBlock("import", read_by, io::PlainKeyDocs(MappingKeys())),
           io::MakeBlock("import.daq", read_by, io::PlainKeyDocs(DaqKeys())),
-          io::MakeBlock("import.daq.time", read_by, io::PlainKeyDocs(TimeKeys())),
+          io::MakeBlock("import.daq.time", read_by, io::DocsWith(TimeKeys(), {kDaqSampleRate})),
           io::MakeBlock("import.channels", read_by, io::PlainKeyDocs(ChannelsKeys())),
           io::MakeBlock("import.channels.channel", read_by, io::PlainKeyDocs(ChannelKeys())),
-          io::MakeBlock("import.touchdown", read_by, io::PlainKeyDocs(TouchdownKeys())),
-          io::MakeBlock("import.drops", read_by, io::PlainKeyDocs(kDaqDropKeys))};
+          io::MakeBlock("import.touchdown", read_by, io::DocsWith(TouchdownKeys(), {kDaqThreshold})),
+          io::MakeBlock("import.drops", read_by, io::DocsWith(kDaqDropKeys, {kDaqDropSpeed, kDaqDropMass, kDaqDropGravity}))};
 }
 
 DaqMapping LoadDaqMapping(const std::string& path) {
@@ -243,7 +247,7 @@ DaqMapping LoadDaqMapping(const std::string& path) {
     f.RequireOnly(TouchdownKeys());
     if (const std::string channel = f.StringOr("channel", "force"); channel != "force")
       f.Fail("channel", "must be force (touchdown is found on the force), got '" + channel + "'");
-    if (f.Has("threshold_N")) m.threshold_N = f.Positive("threshold_N");
+    if (f.Has(kDaqThreshold.key)) m.threshold_N = io::ReadNumber(f, kDaqThreshold);
   }
 
   std::map<std::string, std::string> ids, files;

@@ -73,6 +73,11 @@ double Quantise(double x, double step) { return step > 0.0 ? std::round(x / step
 
 namespace {
 // A synth spec's keys, a `drops` group's, and the `noise` block's fields (each optional).
+// The spec's numbers read on their own, with SynthSpec's defaults.
+const io::NumberKey kSynthSampleRate{"sample_rate_hz", io::Sign::kPositive, nullptr, nullptr, SynthSpec{}.sample_rate_hz};
+const io::NumberKey kSynthRestDuration{"rest_duration_s", io::Sign::kNonNegative, nullptr, nullptr, SynthSpec{}.rest_duration_s};
+const io::NumberKey kSynthMass{"mass_kg", io::Sign::kPositive, nullptr, "the pad's `mass_kg`"};
+const io::NumberKey kSynthGravity{"gravity_m_s2", io::Sign::kPositive, nullptr, nullptr, rft::kEarthGravity_m_s2};
 const std::vector<std::string>& SynthKeys() {
   static const std::vector<std::string> keys{
       "schema_version", "type", "name", "description", "seed", "sample_rate_hz", "rest_duration_s", "trials",
@@ -100,8 +105,8 @@ const io::FieldTable<SynthNoise>& NoiseFields() {
 
 std::vector<io::BlockDoc> SynthSpecSchema() {
   const std::string read_by = "drop_tests/dataset/synth.cpp";
-  return {io::MakeBlock("synth", read_by, io::PlainKeyDocs(SynthKeys())),
-          io::MakeBlock("synth.drops", read_by, io::PlainKeyDocs(SynthDropKeys())),
+  return {io::MakeBlock("synth", read_by, io::DocsWith(SynthKeys(), {kSynthSampleRate, kSynthRestDuration})),
+          io::MakeBlock("synth.drops", read_by, io::DocsWith(SynthDropKeys(), {kSynthMass, kSynthGravity})),
           io::MakeBlock("synth.noise", read_by, io::DocsOf(NoiseFields()))};
 }
 
@@ -122,8 +127,8 @@ SynthSpec LoadSynthSpec(const std::string& path) {
       f.Fail("seed", "must be a whole number from 0 to 9e15, got " + f.node()["seed"].Scalar());
     s.seed = static_cast<unsigned long long>(seed);
   }
-  s.sample_rate_hz = f.PositiveOr("sample_rate_hz", 1000.0);
-  if (f.Has("rest_duration_s")) s.rest_duration_s = f.NonNegative("rest_duration_s");
+  s.sample_rate_hz = io::ReadNumberOr(f, kSynthSampleRate, s.sample_rate_hz);
+  s.rest_duration_s = io::ReadNumberOr(f, kSynthRestDuration, s.rest_duration_s);
   if (f.Has("sensor_sampling")) {
     const std::string sampling = f.String("sensor_sampling");
     const std::optional<pad::SensorSampling> parsed = ParseSensorSampling(sampling);
@@ -164,8 +169,8 @@ SynthSpec LoadSynthSpec(const std::string& path) {
               if (s.drops.size() == limits::kMaxSynthDrops)
                 f.Fail("drops", "more than " + std::to_string(limits::kMaxSynthDrops) + " drops (pads x soils x atmospheres x "
                                 "impact speeds x trials)");
-              SynthDrop d{pad, soil, atm, v, std::nullopt, g.PositiveOr("gravity_m_s2", rft::kEarthGravity_m_s2), t, group};
-              if (g.Has("mass_kg")) d.mass_kg = g.Positive("mass_kg");
+              SynthDrop d{pad, soil, atm, v, std::nullopt, io::ReadNumberOr(g, kSynthGravity, rft::kEarthGravity_m_s2), t, group};
+              if (g.Has(kSynthMass.key)) d.mass_kg = io::ReadNumber(g, kSynthMass);
               s.drops.push_back(d);
             }
   }

@@ -8,7 +8,9 @@
 // rft/physical_limits.h). Checks that tie several fields together stay with the loader that needs them.
 //
 // Private to the .cpp files of the YAML edge (it reads YamlFields and writes YAML).
+#include <cmath>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -51,7 +53,9 @@ std::vector<std::string> FieldKeys(const FieldTable<T>& fields) {
 inline std::string RangeText(Sign sign, const limits::Range* range) {
   std::ostringstream out;
   if (range) {
-    out << (range->low_open || sign == Sign::kPositive ? "(" : "[") << range->low << ", " << range->high << "]";
+    // A positive sign excludes the low end only where the range's own low end is 0 or below.
+    const bool open = range->low_open || (sign == Sign::kPositive && range->low <= 0.0);
+    out << (open ? "(" : "[") << range->low << ", " << range->high << "]";
     return out.str();
   }
   return sign == Sign::kPositive ? "> 0" : sign == Sign::kNonNegative ? ">= 0" : "any";
@@ -81,6 +85,38 @@ inline double ReadNumber(const YamlFields& f, const std::string& key, Sign sign,
                                                 : f.Number(key);
   if (range) limits::Require(*range, v, f.file(), f.Path(key));
   return v;
+}
+
+// A number read on its own rather than into a table's struct: the key, the sign and range it must
+// have (file units) and the reference's default. The loader reads it with ReadNumber(f, key) and the
+// reference documents it with DocOf(key), so both state the same check.
+struct NumberKey {
+  const char* key;
+  Sign sign = Sign::kAny;
+  const limits::Range* range = nullptr;
+  const char* default_text = nullptr;  // what an absent key means; none: `default_value`
+  double default_value = std::numeric_limits<double>::quiet_NaN();  // file units; NaN, no text: required
+};
+inline double ReadNumber(const YamlFields& f, const NumberKey& k) { return ReadNumber(f, k.key, k.sign, k.range); }
+inline double ReadNumberOr(const YamlFields& f, const NumberKey& k, double fallback) {
+  return f.Has(k.key) ? ReadNumber(f, k) : fallback;
+}
+inline KeyDoc DocOf(const NumberKey& k) {
+  std::ostringstream value;
+  value << k.default_value;
+  return {k.key, UnitOfKey(k.key), RangeText(k.sign, k.range),
+          k.default_text ? k.default_text : std::isnan(k.default_value) ? "*required*" : value.str()};
+}
+// A block's keys (in order) documented plainly, except those `numbers` describe.
+inline std::vector<KeyDoc> DocsWith(const std::vector<std::string>& keys, std::initializer_list<NumberKey> numbers) {
+  std::vector<KeyDoc> docs;
+  for (const std::string& key : keys) {
+    const NumberKey* number = nullptr;
+    for (const NumberKey& n : numbers)
+      if (key == n.key) number = &n;
+    docs.push_back(number ? DocOf(*number) : PlainKeyDoc(key));
+  }
+  return docs;
 }
 
 // Reads every field `f` has (a missing required field fails) into `out`.

@@ -54,6 +54,8 @@ struct ToWrite {
   const std::string& directory;
 };
 
+const io::NumberKey kResidualRms{"residual_rms_N", io::Sign::kNonNegative, nullptr, nullptr, 0.0};
+
 // An override's `fit` block's keys, in the order WriteModelFile writes them.
 const io::KeyTable<ToWrite<SoilFit>>& FitKeys() {
   using W = ToWrite<SoilFit>;
@@ -62,7 +64,7 @@ const io::KeyTable<ToWrite<SoilFit>>& FitKeys() {
       {"method", io::Always<W>, [](Y& y, const W& w) { y << w.value.method; }},
       {"drops", io::Always<W>, [](Y& y, const W& w) { y << w.value.drops; }},
       {"samples", io::Always<W>, [](Y& y, const W& w) { y << w.value.samples; }},
-      {"residual_rms_N", io::Always<W>, [](Y& y, const W& w) { y << w.value.residual_rms_N; }},
+      {kResidualRms.key, io::Always<W>, [](Y& y, const W& w) { y << w.value.residual_rms_N; }, io::DocOf(kResidualRms)},
       {"dataset", [](const W& w) { return !w.value.dataset.empty(); },
        [](Y& y, const W& w) { y << io::PathForOutput(w.value.dataset, w.directory); }},
   };
@@ -168,7 +170,7 @@ SoilOverride ReadOverride(const io::YamlFields& f) {
     s.method = fit.StringOr("method", "");
     if (fit.Has("drops")) s.drops = fit.PositiveInt("drops");
     if (fit.Has("samples")) s.samples = fit.PositiveInt("samples");
-    if (fit.Has("residual_rms_N")) s.residual_rms_N = fit.NonNegative("residual_rms_N");
+    s.residual_rms_N = io::ReadNumberOr(fit, kResidualRms, s.residual_rms_N);
     s.dataset = fit.StringOr("dataset", "");
     o.fit = s;
   }

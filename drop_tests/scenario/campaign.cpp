@@ -318,6 +318,13 @@ std::string DropId(const io::PadSpec& pad, const rft::SoilParameters& soil, doub
   return pad.name + "_" + soil.name + "_v" + SpeedTag(speed_m_s);
 }
 
+// A scenario's numbers read on their own (each drop's are checked again as its conditions).
+const io::NumberKey kCampaignGravity{"gravity_m_s2", io::Sign::kPositive, nullptr, nullptr, rft::kEarthGravity_m_s2};
+const io::NumberKey kReferenceSpeed{"reference_speed_m_s", io::Sign::kPositive, nullptr, "the first drop's speed"};
+const io::NumberKey kEntryGravity{"gravity_m_s2", io::Sign::kPositive, nullptr, "the campaign's"};
+const io::NumberKey kEntryMass{"mass_kg", io::Sign::kPositive, nullptr, "the pad's `mass_kg`"};
+const io::NumberKey kEntryZeta{"zeta_N_cm3", io::Sign::kPositive, nullptr, "the soil's"};
+
 // A scenario's `drops` entry's keys: a pad and a soil by name or path, and its list of speeds.
 const std::vector<std::string>& DropEntryKeys() {
   static const std::vector<std::string> keys{"pad", "soil", "impact_speeds_m_s", "mass_kg", "zeta_N_cm3", "gravity_m_s2"};
@@ -326,7 +333,7 @@ const std::vector<std::string>& DropEntryKeys() {
 
 // A scenario's `drops`: each entry a pad and a soil by name or path, and its list of speeds.
 void ReadDropEntries(const io::YamlFields& f, CampaignScenario& s) {
-  const double gravity = f.PositiveOr("gravity_m_s2", rft::kEarthGravity_m_s2);
+  const double gravity = io::ReadNumberOr(f, kCampaignGravity, rft::kEarthGravity_m_s2);
   PadCache pads;
   SoilCache soils;
   std::set<std::string> ids;
@@ -338,9 +345,9 @@ void ReadDropEntries(const io::YamlFields& f, CampaignScenario& s) {
     for (double v : entry.NumberList("impact_speeds_m_s", /*allow_zero=*/true)) {
       CampaignCase c{DropId(*pad, soil, v), pad, soil, soil_source, {}};
       c.conditions.impact_speed_m_s = v;
-      c.conditions.gravity_m_s2 = entry.PositiveOr("gravity_m_s2", gravity);
-      if (entry.Has("mass_kg")) c.conditions.mass_kg = entry.Positive("mass_kg");
-      if (entry.Has("zeta_N_cm3")) c.conditions.zeta_N_m3 = units::ZetaFromN_cm3(entry.Positive("zeta_N_cm3"));
+      c.conditions.gravity_m_s2 = io::ReadNumberOr(entry, kEntryGravity, gravity);
+      if (entry.Has(kEntryMass.key)) c.conditions.mass_kg = io::ReadNumber(entry, kEntryMass);
+      if (entry.Has(kEntryZeta.key)) c.conditions.zeta_N_m3 = units::ZetaFromN_cm3(io::ReadNumber(entry, kEntryZeta));
       AddCase(s, ids, entry, "impact_speeds_m_s", std::move(c));
     }
   }
@@ -382,8 +389,12 @@ void ReadResolvedCases(const io::YamlFields& f, const std::string& dir, Campaign
 
 std::vector<io::BlockDoc> CampaignSchema() {
   const std::string read_by = "drop_tests/scenario/campaign.cpp";
-  return {io::MakeBlock("campaign", read_by, io::DocsOf(CampaignKeys(), {"source"})),
-          io::MakeBlock("campaign.drops", read_by, io::PlainKeyDocs(DropEntryKeys())),
+  std::vector<io::KeyDoc> top = io::DocsOf(CampaignKeys(), {"source"});
+  for (io::KeyDoc& k : top)
+    for (const io::NumberKey& n : {kCampaignGravity, kReferenceSpeed})
+      if (k.key == n.key) k = io::DocOf(n);
+  return {io::MakeBlock("campaign", read_by, top),
+          io::MakeBlock("campaign.drops", read_by, io::DocsWith(DropEntryKeys(), {kEntryMass, kEntryZeta, kEntryGravity})),
           io::MakeBlock("campaign.paper_checks", read_by, io::DocsOf(CheckKeys())),
           io::MakeBlock("campaign.paper_checks.numerator", read_by, io::DocsOf(PadSoilKeys())),
           io::MakeBlock("campaign.paper_checks.paper", read_by, io::DocsOf(PaperFigureFields()))};
@@ -409,7 +420,7 @@ CampaignScenario LoadCampaignScenario(const std::string& path) {
   if (resolved)
     s.reference_speed_m_s = f.NonNegative("reference_speed_m_s");
   else
-    s.reference_speed_m_s = f.PositiveOr("reference_speed_m_s", s.cases.front().conditions.impact_speed_m_s);
+    s.reference_speed_m_s = io::ReadNumberOr(f, kReferenceSpeed, s.cases.front().conditions.impact_speed_m_s);
   if (f.Has("paper_checks"))
     for (const io::YamlFields& c : f.List("paper_checks")) s.checks.push_back(ReadCheck(c));
   if (f.Has("model")) {

@@ -63,7 +63,7 @@ LanderPatchSpec ReadPatch(const io::YamlFields& p, const SoilCheck& check_soil) 
   } else {
     const int pad = p.PositiveInt("under_pad");
     if (pad > lander::kNumLegs) p.Fail("under_pad", "must be 1..4, got " + std::to_string(pad));
-    const double h = p.Positive("half_width_m");
+    const double h = io::ReadNumber(p, kPatchHalfWidthKey);
     patch.name = "under_pad_" + std::to_string(pad);
     patch.area = UnderPadSquare{pad, h};  // placed by ResolveLander, once the release pose is known
   }
@@ -96,8 +96,8 @@ SoilFieldSpec ReadSoilField(const io::YamlFields& f, const SoilCheck& check_soil
     sum += p;
   }
   if (!(std::abs(sum - 1.0) <= 1e-9)) f.Fail("probabilities", "must sum to 1, got " + io::FormatNumber(sum));
-  field.cell_size_m = f.Positive("cell_size_m");
-  field.half_extent_m = f.Positive("half_extent_m");
+  field.cell_size_m = io::ReadNumber(f, kCellSizeKey);
+  field.half_extent_m = io::ReadNumber(f, kHalfExtentKey);
   if (!(field.half_extent_m / field.cell_size_m <= 200.0))
     f.Fail("half_extent_m", "makes more than 400 cells a side (half_extent_m / cell_size_m at most 200)");
   if (f.node()["seed"] && f.node()["seed"].IsScalar() && f.node()["seed"].Scalar() == "per_landing") {
@@ -163,16 +163,13 @@ LanderGroundSpec ReadGround(const io::YamlFields& g, double gravity_m_s2, bool r
 LanderInitialSpec ReadInitial(const io::YamlFields& in, bool resolved) {
   LanderInitialSpec ic;
   in.RequireOnly(resolved ? io::Keys(InitialKeys()) : io::Keys(InitialKeys(), {kReleaseBodyComKey}));
-  if (in.Has("drop_height_m") == in.Has("touchdown_speed_m_s"))
+  if (in.Has(kDropHeightKey.key) == in.Has(kTouchdownSpeedKey.key))
     in.Fail("drop_height_m", "give exactly one of drop_height_m and touchdown_speed_m_s");
-  if (in.Has("drop_height_m"))
-    ic.drop_height_m = io::ReadNumber(in, "drop_height_m", io::Sign::kNonNegative, &limits::kDropHeight_m);
-  if (in.Has("touchdown_speed_m_s"))
-    ic.touchdown_speed_m_s = io::ReadNumber(in, "touchdown_speed_m_s", io::Sign::kNonNegative, &limits::kSpeed_m_s);
-  if (in.Has("release_vertical_speed_m_s")) {
-    if (!in.Has("drop_height_m")) in.Fail("release_vertical_speed_m_s", "only with drop_height_m");
-    ic.release_vertical_speed_m_s =
-        io::ReadNumber(in, "release_vertical_speed_m_s", io::Sign::kAny, &limits::kAbsSpeed_m_s);
+  if (in.Has(kDropHeightKey.key)) ic.drop_height_m = io::ReadNumber(in, kDropHeightKey);
+  if (in.Has(kTouchdownSpeedKey.key)) ic.touchdown_speed_m_s = io::ReadNumber(in, kTouchdownSpeedKey);
+  if (in.Has(kReleaseVerticalSpeedKey.key)) {
+    if (!in.Has(kDropHeightKey.key)) in.Fail("release_vertical_speed_m_s", "only with drop_height_m");
+    ic.release_vertical_speed_m_s = io::ReadNumber(in, kReleaseVerticalSpeedKey);
   }
   if (in.Has("horizontal_velocity_m_s")) {
     const std::vector<double> v = FixedList(in, "horizontal_velocity_m_s", 2);
@@ -242,7 +239,7 @@ void ReadSimulation(const io::YamlFields& sim, lander::LanderRunOptions& options
     if (sim.Has("pad_spin_tolerance_factor"))
       sim.Fail("pad_spin_tolerance_factor", "needs the scaled tolerances: give rtol only, not atol");
   }
-  if (sim.Has("max_step_s")) options.integrator.max_step = sim.Positive("max_step_s");
+  if (sim.Has(kMaxStepKey.key)) options.integrator.max_step = io::ReadNumber(sim, kMaxStepKey);
   if (sim.Has("stiff")) options.integrator.stiff = sim.Bool("stiff");
   std::string why;
   if (!options.integrator.IsValid(&why)) sim.Fail("rtol", why);
@@ -288,7 +285,7 @@ std::vector<io::BlockDoc> LanderScenarioSchema() {
   return {io::MakeBlock("lander_scenario", read_by, io::DocsOf(LanderScenarioKeys(), {"source"})),
           io::MakeBlock("lander_scenario.ground", read_by, io::DocsOf(GroundKeys(), {"soils", "model"})),
           io::MakeBlock("lander_scenario.ground.patches", read_by, io::DocsOf(PatchKeys())),
-          io::MakeBlock("lander_scenario.ground.soil_field", read_by, io::PlainKeyDocs(SoilFieldKeys())),
+          io::MakeBlock("lander_scenario.ground.soil_field", read_by, io::DocsWith(SoilFieldKeys(), {kCellSizeKey, kHalfExtentKey})),
           io::MakeBlock("lander_scenario.initial", read_by, io::DocsOf(InitialKeys(), {kReleaseBodyComKey})),
           io::MakeBlock("lander_scenario.simulation", read_by, io::DocsOf(SimulationKeys())),
           io::MakeBlock("lander_scenario.paper", read_by, io::DocsOf(PaperKeys()))};
@@ -309,8 +306,7 @@ LanderScenario LoadLanderScenarioWithSetup(const std::string& path, std::optiona
   s.source = resolved ? io::PathFromOutput(f.String("source"), dir) : path;
   s.name = f.Name("name", fs::path(path).stem().string());
   s.description = f.StringOr("description", "");
-  s.gravity_m_s2 = f.Has("gravity_m_s2") ? io::ReadNumber(f, "gravity_m_s2", io::Sign::kPositive, &limits::kGravity_m_s2)
-                                         : rft::kEarthGravity_m_s2;
+  s.gravity_m_s2 = io::ReadNumberOr(f, kScenarioGravityKey, rft::kEarthGravity_m_s2);
   try {
     s.lander = resolved ? LoadLanderSpec(io::PathFromOutput(f.Child("lander").String("file"), dir))
                         : LoadLanderSpec(ResolveRelative(f, "landers", f.String("lander")));
@@ -359,8 +355,8 @@ LanderScenario LoadLanderScenarioWithSetup(const std::string& path, std::optiona
     const io::YamlFields p = f.Child("paper");
     p.RequireOnly(io::Keys(PaperKeys()));
     s.paper_ground_case = p.StringOr("ground_case", "");
-    if (p.Has("roll_pitch_within_deg"))
-      s.paper = LanderPaperCheck{p.Positive("roll_pitch_within_deg"), p.StringOr("source", ""),
+    if (p.Has(kRollPitchWithinKey.key))
+      s.paper = LanderPaperCheck{io::ReadNumber(p, kRollPitchWithinKey), p.StringOr("source", ""),
                                  p.Has("used_for_fit") && p.Bool("used_for_fit"), p.StringOr("fit_by", ""),
                                  ReadPaperReading(p)};
     const bool used = s.paper && s.paper->used_for_fit, by = p.Has("fit_by");

@@ -128,7 +128,7 @@ const io::KeyTable<PatchToWrite>& PatchKeys() {
          y << YAML::EndSeq;
        }},
       {"under_pad"},
-      {"half_width_m"},
+      {kPatchHalfWidthKey.key, {}, {}, io::DocOf(kPatchHalfWidthKey)},
   };
   return keys;
 }
@@ -180,10 +180,12 @@ const io::KeyTable<ResolvedToWrite>& InitialKeys() {
   const auto from_height = [](const W& w) { return w.s.initial.drop_height_m.has_value(); };
   static const io::KeyTable<W> keys = [&] {
     io::KeyTable<W> k{
-        {"drop_height_m", from_height, [](Y& y, const W& w) { y << *w.s.initial.drop_height_m; }},
-        {"release_vertical_speed_m_s", from_height, [](Y& y, const W& w) { y << w.s.initial.release_vertical_speed_m_s; }},
-        {"touchdown_speed_m_s", [](const W& w) { return w.s.initial.touchdown_speed_m_s.has_value(); },
-         [](Y& y, const W& w) { y << *w.s.initial.touchdown_speed_m_s; }},
+        {kDropHeightKey.key, from_height, [](Y& y, const W& w) { y << *w.s.initial.drop_height_m; },
+         io::DocOf(kDropHeightKey)},
+        {kReleaseVerticalSpeedKey.key, from_height,
+         [](Y& y, const W& w) { y << w.s.initial.release_vertical_speed_m_s; }, io::DocOf(kReleaseVerticalSpeedKey)},
+        {kTouchdownSpeedKey.key, [](const W& w) { return w.s.initial.touchdown_speed_m_s.has_value(); },
+         [](Y& y, const W& w) { y << *w.s.initial.touchdown_speed_m_s; }, io::DocOf(kTouchdownSpeedKey)},
         {"horizontal_velocity_m_s", io::Always<W>,
          [](Y& y, const W& w) {
            const Eigen::Vector2d& v = w.s.initial.horizontal_velocity_m_s;
@@ -216,8 +218,8 @@ const io::KeyTable<ResolvedToWrite>& SimulationKeys() {
     // Without `atol` the absolute tolerances are rtol times each state's scale (lander_simulation.h).
     k.push_back({"atol", [](const W& w) { return !w.s.options.scale_tolerances; },
                  [](Y& y, const W& w) { y << w.s.options.integrator.atol; }});
-    k.push_back({"max_step_s", [](const W& w) { return w.s.options.integrator.max_step != R{}.integrator.max_step; },
-                 [](Y& y, const W& w) { y << w.s.options.integrator.max_step; }});
+    k.push_back({kMaxStepKey.key, [](const W& w) { return w.s.options.integrator.max_step != R{}.integrator.max_step; },
+                 [](Y& y, const W& w) { y << w.s.options.integrator.max_step; }, io::DocOf(kMaxStepKey)});
     k.push_back({"stiff", io::Always<W>, [](Y& y, const W& w) { y << w.s.options.integrator.stiff; }});
     k.push_back({"soil_ramp", [](const W& w) { return w.s.options.soil_ramp != R{}.soil_ramp; },
                  [](Y& y, const W& w) { y << (w.s.options.soil_ramp == lander::SoilRamp::kElement ? "element" : "pad"); }});
@@ -238,7 +240,8 @@ const io::KeyTable<ResolvedToWrite>& PaperKeys() {
   static const io::KeyTable<W> keys{
       {"ground_case", [](const W& w) { return !w.s.paper_ground_case.empty(); },
        [](Y& y, const W& w) { y << w.s.paper_ground_case; }},
-      {"roll_pitch_within_deg", check, [](Y& y, const W& w) { y << w.s.paper->roll_pitch_within_deg; }},
+      {kRollPitchWithinKey.key, check, [](Y& y, const W& w) { y << w.s.paper->roll_pitch_within_deg; },
+       io::DocOf(kRollPitchWithinKey)},
       {"source", [](const W& w) { return w.s.paper && !w.s.paper->source.empty(); },
        [](Y& y, const W& w) { y << w.s.paper->source; }},
       {"used_for_fit", fitted, [](Y& y, const W&) { y << true; }},
@@ -259,7 +262,8 @@ const io::KeyTable<ResolvedToWrite>& LanderScenarioKeys() {
       {"name", io::Always<W>, [](Y& y, const W& w) { y << w.s.name; }},
       {"description", [](const W& w) { return !w.s.description.empty(); }, [](Y& y, const W& w) { y << w.s.description; }},
       {"source", io::Always<W>, [](Y& y, const W& w) { y << w.file(w.s.source); }},
-      {"gravity_m_s2", io::Always<W>, [](Y& y, const W& w) { y << w.s.gravity_m_s2; }},
+      {kScenarioGravityKey.key, io::Always<W>, [](Y& y, const W& w) { y << w.s.gravity_m_s2; },
+       io::DocOf(kScenarioGravityKey)},
       {"lander", io::Always<W>, [](Y& y, const W& w) { WriteLanderBlock(y, w.s.lander, w.file); }},
       {"ground", io::Always<W>, io::MapOf(GroundKeys)},
       {"initial", io::Always<W>, io::MapOf(InitialKeys)},

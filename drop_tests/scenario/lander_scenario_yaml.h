@@ -18,6 +18,7 @@
 #include "drop_tests/scenario/lander_scenario_types.h"
 #include "lander/multibody/lander_run.h"
 #include "rft/enum_names.h"
+#include "rft/gravity_constants.h"
 
 namespace touchdown::scenario::file_yaml {
 
@@ -45,6 +46,21 @@ const io::FieldTable<LanderGroundSpec>& GroundNumberFields();
 const io::FieldTable<LanderInitialSpec>& AttitudeNumberFields();
 const io::FieldTable<lander::LanderRunOptions>& RunNumberFields();
 inline constexpr const char* kReleaseBodyComKey = "release_body_com_m";
+// The scenario's numbers read on their own: the loader reads and the reference documents each
+// from its entry here.
+inline constexpr io::NumberKey kScenarioGravityKey{"gravity_m_s2", io::Sign::kPositive, &limits::kGravity_m_s2,
+                                                   nullptr, rft::kEarthGravity_m_s2};
+inline constexpr io::NumberKey kDropHeightKey{"drop_height_m", io::Sign::kNonNegative, &limits::kDropHeight_m,
+                                              "one of `drop_height_m`, `touchdown_speed_m_s`"};
+inline constexpr io::NumberKey kTouchdownSpeedKey{"touchdown_speed_m_s", io::Sign::kNonNegative, &limits::kSpeed_m_s,
+                                                  "one of `drop_height_m`, `touchdown_speed_m_s`"};
+inline constexpr io::NumberKey kReleaseVerticalSpeedKey{"release_vertical_speed_m_s", io::Sign::kAny,
+                                                        &limits::kAbsSpeed_m_s, nullptr, 0.0};
+inline constexpr io::NumberKey kMaxStepKey{"max_step_s", io::Sign::kPositive, nullptr, "no limit"};
+inline constexpr io::NumberKey kPatchHalfWidthKey{"half_width_m", io::Sign::kPositive, nullptr, "with `under_pad`"};
+inline constexpr io::NumberKey kRollPitchWithinKey{"roll_pitch_within_deg", io::Sign::kPositive, nullptr, "none"};
+inline constexpr io::NumberKey kCellSizeKey{"cell_size_m", io::Sign::kPositive};
+inline constexpr io::NumberKey kHalfExtentKey{"half_extent_m", io::Sign::kPositive};
 
 using FileName = std::function<std::string(const std::string&)>;
 

@@ -7,6 +7,7 @@
 
 #include "drop_tests/drop/drop_request.h"
 #include "drop_tests/formats/dataset_csv.h"
+#include "drop_tests/formats/field_table.h"
 #include "drop_tests/formats/yaml_fields.h"
 #include "rft/input_error.h"
 #include "rft/physical_limits.h"
@@ -114,6 +115,10 @@ const std::vector<std::string>& RecheckKeys() {
   static const std::vector<std::string> keys{"rtol", "tilt_margin_deg", "unsettled"};
   return keys;
 }
+// The follow-ups' angle margins (their own messages; the range documented from here).
+constexpr limits::Range kMargin_deg{"deg", 0.0, 90.0, false};
+const io::NumberKey kTiltMargin{"tilt_margin_deg", io::Sign::kAny, &kMargin_deg, nullptr, RecheckSettings{}.tilt_margin_deg};
+const io::NumberKey kScreenMargin{"screen_margin_deg", io::Sign::kAny, &kMargin_deg, nullptr, kDefaultJointRangeScreenDeg};
 const std::vector<std::string>& JointRangeKeys() {
   static const std::vector<std::string> keys{"samples", "screen_margin_deg"};
   return keys;
@@ -176,10 +181,10 @@ RecheckSettings ReadRecheck(const io::YamlFields& study, RecheckSettings r, doub
       f.Fail("rtol", "must be above 0 and below the study scenario's rtol " + io::FormatNumber(scenario_rtol) +
                          " (the reference is the tighter one), got " + io::FormatNumber(r.rtol));
   }
-  if (f.Has("tilt_margin_deg")) {
-    r.tilt_margin_deg = f.Number("tilt_margin_deg");
-    if (!(r.tilt_margin_deg >= 0.0 && r.tilt_margin_deg <= 90.0))
-      f.Fail("tilt_margin_deg", "must be from 0 to 90 deg, got " + io::FormatNumber(r.tilt_margin_deg));
+  if (f.Has(kTiltMargin.key)) {
+    r.tilt_margin_deg = f.Number(kTiltMargin.key);
+    if (!limits::Within(*kTiltMargin.range, r.tilt_margin_deg))
+      f.Fail(kTiltMargin.key, "must be from 0 to 90 deg, got " + io::FormatNumber(r.tilt_margin_deg));
   }
   return r;
 }
@@ -221,8 +226,8 @@ JointRangeSettings ReadJointRange(const io::YamlFields& study) {
     j.screen_margin_deg.reset();
     return j;
   }
-  const double m = f.Number("screen_margin_deg");
-  if (!(m >= 0.0 && m <= 90.0))
+  const double m = f.Number(kScreenMargin.key);
+  if (!limits::Within(*kScreenMargin.range, m))
     f.Fail("screen_margin_deg", "must be none or from 0 to 90 deg, got " + io::FormatNumber(m));
   j.screen_margin_deg = m;
   return j;
@@ -244,8 +249,8 @@ std::vector<io::BlockDoc> StudySchema() {
   const std::string read_by = "drop_tests/stability/study.cpp";
   return {io::MakeBlock("study", read_by, io::PlainKeyDocs(StudyKeys())),
           io::MakeBlock("study.map", read_by, io::PlainKeyDocs(MapKeys())),
-          io::MakeBlock("study.recheck", read_by, io::PlainKeyDocs(RecheckKeys())),
-          io::MakeBlock("study.joint_range_sensitivity", read_by, io::PlainKeyDocs(JointRangeKeys())),
+          io::MakeBlock("study.recheck", read_by, io::DocsWith(RecheckKeys(), {kTiltMargin})),
+          io::MakeBlock("study.joint_range_sensitivity", read_by, io::DocsWith(JointRangeKeys(), {kScreenMargin})),
           io::MakeBlock("study.soil_uncertainty.soil", "drop_tests/stability/soil_uncertainty_file.cpp",
                         io::PlainKeyDocs(SoilUncertaintyEntryKeys()))};
 }

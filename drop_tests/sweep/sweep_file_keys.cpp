@@ -79,8 +79,8 @@ const io::KeyTable<SweepPlan>& LanderBlockKeys() {
   using Y = YAML::Emitter;
   static const io::KeyTable<SweepPlan> keys{
       {"scenario", io::Always<SweepPlan>, [](Y& y, const SweepPlan& plan) { y << Absolute(plan.lander->source); }},
-      {"pad_patch_half_width_m", io::Always<SweepPlan>,
-       [](Y& y, const SweepPlan& plan) { y << plan.pad_patch_half_width_m; }},
+      {kPadPatchHalfWidthKey.key, io::Always<SweepPlan>,
+       [](Y& y, const SweepPlan& plan) { y << plan.pad_patch_half_width_m; }, io::DocOf(kPadPatchHalfWidthKey)},
   };
   return keys;
 }
@@ -142,10 +142,12 @@ const io::KeyTable<SweepPlan>& SweepKeys() {
        }},
       {"traces", io::Always<P>, [](Y& y, const P& plan) { y << TraceStorageName(plan.traces); }},
       {"trace_max_samples", single_pad, [](Y& y, const P& plan) { y << plan.trace_max_samples; }},
-      {"rest_duration_s", single_pad, [](Y& y, const P& plan) { y << plan.rig.rest_duration_s; }},
+      {kRestDurationKey.key, single_pad, [](Y& y, const P& plan) { y << plan.rig.rest_duration_s; },
+       io::DocOf(kRestDurationKey)},
       {"max_drop_evaluations", io::Always<P>,
        [](Y& y, const P& plan) { y << plan.rig.integrator.max_rhs_evaluations; }},
-      {"max_drop_wall_time_s", io::Always<P>, [](Y& y, const P& plan) { y << plan.rig.integrator.max_wall_time_s; }},
+      {kMaxDropWallTimeKey.key, io::Always<P>, [](Y& y, const P& plan) { y << plan.rig.integrator.max_wall_time_s; },
+       io::DocOf(kMaxDropWallTimeKey)},
       {"simulation", [](const P& plan) { return plan.free_drop_model == drop::FreeDropModel::kFast; },
        [](Y& y, const P& plan) {
          io::WriteMap(y, SimulationBlockKeys(), plan, YAML::Flow);

@@ -15,6 +15,13 @@ struct RandomToWrite {
   const SweepRandom& r;
 };
 
+// The plan's numbers read on their own (each with its further check in the loader).
+inline constexpr io::NumberKey kRestDurationKey{"rest_duration_s", io::Sign::kNonNegative, nullptr, nullptr, 0.0};
+inline constexpr io::NumberKey kMaxDropWallTimeKey{"max_drop_wall_time_s", io::Sign::kNonNegative, nullptr,
+                                                   "0 (no limit)"};
+inline constexpr io::NumberKey kPadPatchHalfWidthKey{"pad_patch_half_width_m", io::Sign::kPositive, nullptr,
+                                                     "the scenario's `under_pad` patches', else 0.08"};
+
 const io::KeyTable<SweepPlan>& SweepKeys();                // the top level
 const io::KeyTable<SweepPlan>& LanderBlockKeys();          // `lander`
 const io::KeyTable<SweepPlan>& SimulationBlockKeys();      // `simulation`

@@ -12,6 +12,7 @@
 #include "drop_tests/formats/dataset_csv.h"
 #include "drop_tests/formats/output_path.h"
 #include "drop_tests/util/splitmix.h"
+#include "drop_tests/formats/field_table.h"
 #include "drop_tests/formats/yaml_fields.h"
 #include "drop_tests/model/contact_model.h"
 #include "drop_tests/scenario/lander_scenario_file.h"
@@ -178,7 +179,7 @@ void ReadLanderBlock(const io::YamlFields& f, const std::string& base, SweepPlan
     if (const auto* square = std::get_if<scenario::UnderPadSquare>(&patch.area))
       plan.pad_patch_half_width_m = square->half_width_m;
   if (l.Has("pad_patch_half_width_m")) {
-    plan.pad_patch_half_width_m = l.Positive("pad_patch_half_width_m");
+    plan.pad_patch_half_width_m = io::ReadNumber(l, kPadPatchHalfWidthKey);
     if (plan.pad_patch_half_width_m > 1.0)
       l.Fail("pad_patch_half_width_m", "must be at most 1 m, got " + io::FormatNumber(plan.pad_patch_half_width_m));
   }
@@ -196,11 +197,11 @@ void ReadRunOptions(const io::YamlFields& f, SweepPlan& plan) {
   else f.Fail("traces", "must be " + NameChoices(kTraceStorageNames) + ", got '" + traces + "'");
   if (f.Has("trace_max_samples")) plan.trace_max_samples = f.PositiveInt("trace_max_samples");
   if (plan.trace_max_samples < 3) f.Fail("trace_max_samples", "must be at least 3");
-  plan.rig.rest_duration_s = f.Has("rest_duration_s") ? f.NonNegative("rest_duration_s") : 0.0;
+  plan.rig.rest_duration_s = io::ReadNumberOr(f, kRestDurationKey, kRestDurationKey.default_value);
   if (plan.rig.rest_duration_s > limits::kMaxRigRestDuration_s)
     f.Fail("rest_duration_s", "must be at most " + io::FormatNumber(limits::kMaxRigRestDuration_s) + " s");
   plan.rig.integrator.max_wall_time_s =
-      f.Has("max_drop_wall_time_s") ? f.NonNegative("max_drop_wall_time_s") : kDefaultMaxDropWallTimeS;
+      io::ReadNumberOr(f, kMaxDropWallTimeKey, kDefaultMaxDropWallTimeS);
   if (!std::isfinite(plan.rig.integrator.max_wall_time_s))
     f.Fail("max_drop_wall_time_s", "must be a finite number of seconds (0: no limit)");
   plan.rig.integrator.max_rhs_evaluations = kDefaultMaxDropEvaluations;

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "drop_tests/formats/field_table.h"
 #include "drop_tests/formats/yaml_fields.h"
 #include "drop_tests/scenario/campaign.h"
 #include "drop_tests/scenario/lander_scenario_file.h"
@@ -22,6 +23,9 @@ namespace touchdown::targets {
 
 namespace {
 // A targets file's keys, block by block (docs/calibration_targets.md; docs/reference.md).
+// A scenario's numbers (a rig drop's, a campaign row's).
+const io::NumberKey kScenarioSpeed{"speed_m_s", io::Sign::kPositive};
+const io::NumberKey kScenarioGravity{"gravity_m_s2", io::Sign::kPositive, nullptr, nullptr, rft::kEarthGravity_m_s2};
 const std::vector<std::string>& TargetsKeys() {
   static const std::vector<std::string> keys{"schema_version", "type", "name", "description", "parameters", "targets", "fit", "provenance"};
   return keys;
@@ -302,8 +306,8 @@ class ScenarioReader {
     run.pad = Pad(pad_file);
     run.soil = io::LoadSoil(soil_file);
     drop::DropRow row;
-    row.impact_speed_m_s = d.Positive("speed_m_s");
-    row.gravity_m_s2 = d.PositiveOr("gravity_m_s2", rft::kEarthGravity_m_s2);
+    row.impact_speed_m_s = io::ReadNumber(d, kScenarioSpeed);
+    row.gravity_m_s2 = io::ReadNumberOr(d, kScenarioGravity, rft::kEarthGravity_m_s2);
     run.conditions = drop::DropConditionsFor(row, {}, "", d.file() + ": " + d.prefix());
     run.label = "drop " + run.pad->name + " on " + run.soil.name + " at " + Number(row.impact_speed_m_s) + " m/s, g " +
                 Number(row.gravity_m_s2);
@@ -324,7 +328,7 @@ class ScenarioReader {
       }
     }
     const std::string pad = c.String("pad"), soil = c.String("soil");
-    const double speed = c.Positive("speed_m_s");
+    const double speed = io::ReadNumber(c, kScenarioSpeed);
     for (size_t i = 0; i < campaign->cases.size(); ++i) {
       const scenario::CampaignCase& k = campaign->cases[i];
       if (k.pad->name != pad || k.soil.name != soil || std::abs(k.conditions.impact_speed_m_s - speed) > 1e-12) continue;
@@ -442,8 +446,8 @@ std::vector<io::BlockDoc> TargetsFileSchema() {
           io::MakeBlock("targets.parameters.prior", read_by, io::PlainKeyDocs(PriorKeys())),
           io::MakeBlock("targets.targets", read_by, io::PlainKeyDocs(TargetKeys())),
           io::MakeBlock("targets.targets.ratio", read_by, io::PlainKeyDocs(RatioKeys())),
-          io::MakeBlock("targets.targets.drop", read_by, io::PlainKeyDocs(DropKeys())),
-          io::MakeBlock("targets.targets.campaign", read_by, io::PlainKeyDocs(CampaignRowKeys())),
+          io::MakeBlock("targets.targets.drop", read_by, io::DocsWith(DropKeys(), {kScenarioSpeed, kScenarioGravity})),
+          io::MakeBlock("targets.targets.campaign", read_by, io::DocsWith(CampaignRowKeys(), {kScenarioSpeed})),
           io::MakeBlock("targets.fit", read_by, fit)};
 }
 

@@ -7,6 +7,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "drop_tests/formats/field_table.h"
 #include "drop_tests/formats/yaml_fields.h"
 #include "drop_tests/validation/katsuragi_durian.h"
 #include "drop_tests/validation/shallow_impact_depth.h"
@@ -85,11 +86,33 @@ constexpr limits::Range kKOverMUncertainty_per_s2{"1/s^2", 0.0, 1e8, false};
 constexpr limits::Range kCoefficient{"(dimensionless)", 0.0, 1e3, true};  // a prefactor, a friction coefficient
 constexpr limits::Range kExponent{"(dimensionless)", -100.0, 100.0, false};
 
-double InRange(const io::YamlFields& f, const std::string& key, const limits::Range& range) {
-  const double v = f.Number(key);
-  limits::Require(range, v, f.file(), f.Path(key));
-  return v;
-}
+// A source's numbers: each within its range (file units), read and documented from one entry.
+const io::NumberKey kSourceGravity{"gravity_m_s2", io::Sign::kAny, &limits::kGravity_m_s2};
+const io::NumberKey kD1{"d1_mm", io::Sign::kAny, &kLength_mm};
+const io::NumberKey kD1Uncertainty{"d1_uncertainty_mm", io::Sign::kAny, &kUncertainty_mm};
+const io::NumberKey kKOverM{"k_over_m_per_s2", io::Sign::kAny, &kKOverM_per_s2};
+const io::NumberKey kKOverMUncertainty{"k_over_m_uncertainty_per_s2", io::Sign::kAny, &kKOverMUncertainty_per_s2};
+const io::NumberKey kPrefactor{"prefactor", io::Sign::kAny, &kCoefficient};
+const io::NumberKey kFrictionCoefficient{"friction_coefficient", io::Sign::kAny, &kCoefficient};
+const io::NumberKey kPointSpeed{"impact_speed_m_s", io::Sign::kAny, &limits::kSpeed_m_s,
+                                "one of `impact_speed_m_s`, `drop_height_mm`"};
+const io::NumberKey kPointDropHeight{"drop_height_mm", io::Sign::kAny, &kDropHeight_mm,
+                                     "one of `impact_speed_m_s`, `drop_height_mm`"};
+const io::NumberKey kPointDepth{"depth_mm", io::Sign::kAny, &kLength_mm, "with `final_depth`"};
+const io::NumberKey kPointStopTime{"stop_time_ms", io::Sign::kAny, &kStopTime_ms, "with `stop_time`"};
+const io::NumberKey kPointDepthUncertainty{"uncertainty_mm", io::Sign::kAny, &kUncertainty_mm, "none"};
+const io::NumberKey kPointTimeUncertainty{"uncertainty_ms", io::Sign::kAny, &kUncertainty_ms, "none"};
+const io::NumberKey kTrendExponent{"exponent", io::Sign::kAny, &kExponent, "one of `exponent`, `direction`"};
+const io::NumberKey kTrendTolerance{"tolerance", io::Sign::kAny, &kCoefficient, "with `exponent`"};
+const io::NumberKey kTrendGravity{"at_gravity_m_s2", io::Sign::kAny, &limits::kGravity_m_s2, "the source's"};
+const io::NumberKey kTrendSpeed{"at_impact_speed_m_s", io::Sign::kAny, &limits::kSpeed_m_s,
+                                "*required* (unless the trend varies the speed)"};
+// A measured range's ends, each within its range.
+const io::NumberKey kBearingPressure{"pressure_N_cm2", io::Sign::kAny, &kPressure_N_cm2};
+const io::NumberKey kBearingDepth{"depth_mm", io::Sign::kAny, &kLength_mm};
+const io::NumberKey kBearingDiameter{"diameter_mm", io::Sign::kAny, &limits::kPadSize_mm};
+
+double InRange(const io::YamlFields& f, const io::NumberKey& key) { return io::ReadNumber(f, key); }
 
 Quantity ReadQuantity(const io::YamlFields& f) {
   const std::string q = f.String("quantity");
@@ -127,10 +150,10 @@ auto LoadNamed(const io::YamlFields& f, const std::string& key, Load load) {
 KatsuragiDurianLaw ReadKatsuragiDurianLaw(const io::YamlFields& f) {
   f.RequireOnly(KatsuragiDurianKeys());
   KatsuragiDurianLaw law;
-  law.d1_m = InRange(f, "d1_mm", kLength_mm) * units::kMm;
-  law.d1_uncertainty_m = InRange(f, "d1_uncertainty_mm", kUncertainty_mm) * units::kMm;
-  law.k_over_m_s2 = InRange(f, "k_over_m_per_s2", kKOverM_per_s2);
-  law.k_over_m_uncertainty_s2 = InRange(f, "k_over_m_uncertainty_per_s2", kKOverMUncertainty_per_s2);
+  law.d1_m = InRange(f, kD1) * units::kMm;
+  law.d1_uncertainty_m = InRange(f, kD1Uncertainty) * units::kMm;
+  law.k_over_m_s2 = InRange(f, kKOverM);
+  law.k_over_m_uncertainty_s2 = InRange(f, kKOverMUncertainty);
   if (law.d1_uncertainty_m >= law.d1_m) f.Fail("d1_uncertainty_mm", "must be below d1_mm");
   if (law.k_over_m_uncertainty_s2 >= law.k_over_m_s2) f.Fail("k_over_m_uncertainty_per_s2", "must be below k_over_m_per_s2");
   law.how = ReadProvenance(f);
@@ -146,8 +169,8 @@ ShallowImpactLaw ReadShallowImpactLaw(const io::YamlFields& f, const ValidationS
     f.Fail("kind", "shallow_impact needs a sphere: a spherical_cap pad whose radius is its sphere_radius");
   if (!(s.soil.bulk_density_kg_m3 > 0.0)) f.Fail("kind", "shallow_impact needs the soil's bulk_density_kg_m3 (rho_g)");
   ShallowImpactLaw law;
-  law.prefactor = InRange(f, "prefactor", kCoefficient);
-  law.friction_coefficient = InRange(f, "friction_coefficient", kCoefficient);
+  law.prefactor = InRange(f, kPrefactor);
+  law.friction_coefficient = InRange(f, kFrictionCoefficient);
   law.how = ReadProvenance(f);
   law.where = f.String("where");
   return law;
@@ -176,8 +199,8 @@ DepthWithUncertainty LawDepth(const ValidationSource& s, const MeasuredPoint& p)
 double ReadImpactSpeed(const io::YamlFields& f, double gravity_m_s2, std::optional<double>& drop_height_m) {
   if (f.Has("impact_speed_m_s") == f.Has("drop_height_mm"))
     f.Fail("impact_speed_m_s", "give exactly one of impact_speed_m_s and drop_height_mm");
-  if (f.Has("impact_speed_m_s")) return InRange(f, "impact_speed_m_s", limits::kSpeed_m_s);
-  drop_height_m = InRange(f, "drop_height_mm", kDropHeight_mm) * units::kMm;
+  if (f.Has(kPointSpeed.key)) return InRange(f, kPointSpeed);
+  drop_height_m = InRange(f, kPointDropHeight) * units::kMm;
   return pad::TouchdownSpeed(0.0, gravity_m_s2, *drop_height_m);
 }
 
@@ -188,14 +211,15 @@ MeasuredPoint ReadPoint(const io::YamlFields& f, const ValidationSource& s) {
   p.impact_speed_m_s = ReadImpactSpeed(f, s.gravity_m_s2, p.drop_height_m);
   p.quantity = ReadQuantity(f);
   const bool from_law = f.Has("from_law") && f.Bool("from_law");
-  const char* value_key = p.quantity == Quantity::kFinalDepth ? "depth_mm" : "stop_time_ms";
-  const char* uncertainty_key = p.quantity == Quantity::kFinalDepth ? "uncertainty_mm" : "uncertainty_ms";
+  const bool depth = p.quantity == Quantity::kFinalDepth;
+  const io::NumberKey& value = depth ? kPointDepth : kPointStopTime;
+  const io::NumberKey& uncertainty = depth ? kPointDepthUncertainty : kPointTimeUncertainty;
   if (from_law) {
     if (!s.law && !s.shallow_impact_law) f.Fail("from_law", "the source has no measured_law");
     if (s.shallow_impact_law && !p.drop_height_m)
       f.Fail("impact_speed_m_s", "the shallow_impact law is for drops from rest: give drop_height_mm");
     if (p.quantity != Quantity::kFinalDepth) f.Fail("from_law", "the law gives final_depth only");
-    if (f.Has(value_key)) f.Fail(value_key, "give a value or from_law: true, not both");
+    if (f.Has(value.key)) f.Fail(value.key, "give a value or from_law: true, not both");
     // The law's depth at this point is a number the run will simulate towards: it must exist and
     // lie within the depths any value may (a law whose bed barely resists gives none, or 1e9 m).
     DepthWithUncertainty d;
@@ -209,9 +233,8 @@ MeasuredPoint ReadPoint(const io::YamlFields& f, const ValidationSource& s) {
     p.value = d.depth_m;
     p.uncertainty = d.half_range_m;
   } else {
-    const bool depth = p.quantity == Quantity::kFinalDepth;
-    p.value = InRange(f, value_key, depth ? kLength_mm : kStopTime_ms) * (depth ? units::kMm : units::kMs);
-    if (f.Has(uncertainty_key)) p.uncertainty = InRange(f, uncertainty_key, depth ? kUncertainty_mm : kUncertainty_ms) * (depth ? units::kMm : units::kMs);
+    p.value = InRange(f, value) * (depth ? units::kMm : units::kMs);
+    if (f.Has(uncertainty.key)) p.uncertainty = InRange(f, uncertainty) * (depth ? units::kMm : units::kMs);
   }
   p.how = ReadProvenance(f);
   if (from_law != (p.how == Provenance::kDerivedFromMeasuredLaw))
@@ -238,8 +261,8 @@ void ReadTrendLaw(const io::YamlFields& f, MeasuredTrend& t) {
     else f.Fail("direction", "must be increasing or decreasing, got '" + d + "'");
     return;
   }
-  t.exponent = InRange(f, "exponent", kExponent);
-  t.tolerance = InRange(f, "tolerance", kCoefficient);
+  t.exponent = InRange(f, kTrendExponent);
+  t.tolerance = InRange(f, kTrendTolerance);
   const std::string from = f.String("tolerance_source");
   if (from != "stated" && from != "assumed") f.Fail("tolerance_source", "must be stated or assumed, got '" + from + "'");
   t.tolerance_assumed = from == "assumed";
@@ -262,12 +285,12 @@ MeasuredTrend ReadTrend(const io::YamlFields& f, const ValidationSource& s) {
                                                                                : limits::kDensity_kg_m3;
   for (const double v : t.values)
     if (!limits::Within(values_range, v)) f.Fail("values", limits::Describe(values_range, v));
-  t.at_gravity_m_s2 = f.Has("at_gravity_m_s2") ? InRange(f, "at_gravity_m_s2", limits::kGravity_m_s2) : s.gravity_m_s2;
+  t.at_gravity_m_s2 = f.Has(kTrendGravity.key) ? InRange(f, kTrendGravity) : s.gravity_m_s2;
   const bool varies_speed = t.vary == Variable::kImpactSpeed || t.vary == Variable::kTotalDropDistance;
   if (varies_speed) {
     if (f.Has("at_impact_speed_m_s")) f.Fail("at_impact_speed_m_s", "the trend varies the impact speed");
   } else {
-    t.at_impact_speed_m_s = InRange(f, "at_impact_speed_m_s", limits::kSpeed_m_s);
+    t.at_impact_speed_m_s = InRange(f, kTrendSpeed);
   }
   if (t.vary == Variable::kGravity && f.Has("at_gravity_m_s2")) f.Fail("at_gravity_m_s2", "the trend varies gravity");
   if (t.vary == Variable::kProjectileDensity && s.pad.file.shape != io::PadShape::kSphericalCap)
@@ -280,7 +303,9 @@ MeasuredTrend ReadTrend(const io::YamlFields& f, const ValidationSource& s) {
 
 // A measured range: one value, or [low, high] with low < high, each within `range` (the file's
 // units); SI by `to_si`.
-Range ReadRange(const io::YamlFields& f, const std::string& key, const limits::Range& range, double to_si) {
+Range ReadRange(const io::YamlFields& f, const io::NumberKey& number, double to_si) {
+  const std::string key = number.key;
+  const limits::Range& range = *number.range;
   const std::vector<double> v = f.NumberList(key, /*allow_zero=*/false);
   if (v.empty() || v.size() > 2 || (v.size() == 2 && !(v[0] < v[1])))
     f.Fail(key, "must be [value] or [low, high] with low < high");
@@ -295,9 +320,9 @@ MeasuredBearing ReadBearing(const io::YamlFields& f, const ValidationSource& s) 
   if (s.pad.file.shape != io::PadShape::kFlat) f.Fail("id", "a static bearing needs a flat pad (profile shape: flat)");
   MeasuredBearing b;
   b.id = f.Name("id");
-  b.pressure_Pa = ReadRange(f, "pressure_N_cm2", kPressure_N_cm2, 1e4);
-  b.depth_m = ReadRange(f, "depth_mm", kLength_mm, units::kMm);
-  b.diameter_m = ReadRange(f, "diameter_mm", limits::kPadSize_mm, units::kMm);
+  b.pressure_Pa = ReadRange(f, kBearingPressure, 1e4);
+  b.depth_m = ReadRange(f, kBearingDepth, units::kMm);
+  b.diameter_m = ReadRange(f, kBearingDiameter, units::kMm);
   b.how = ReadProvenance(f);
   if (b.how == Provenance::kDerivedFromMeasuredLaw) f.Fail("how", "a static bearing is quoted or read off a figure");
   b.where = f.String("where");
@@ -352,14 +377,20 @@ void CheckIds(const io::YamlFields& f, const ValidationSource& s) {
 
 std::vector<io::BlockDoc> ValidationSourceSchema() {
   const std::string read_by = "drop_tests/validation/validation_source.cpp";
-  return {io::MakeBlock("validation_source", read_by, io::PlainKeyDocs(SourceKeys())),
+  return {io::MakeBlock("validation_source", read_by, io::DocsWith(SourceKeys(), {kSourceGravity})),
           io::MakeBlock("validation_source.projectile", read_by, io::PlainKeyDocs(ProjectileKeys())),
           io::MakeBlock("validation_source.medium", read_by, io::PlainKeyDocs(MediumKeys())),
-          io::MakeBlock("validation_source.measured_law.katsuragi_durian", read_by, io::PlainKeyDocs(KatsuragiDurianKeys())),
-          io::MakeBlock("validation_source.measured_law.shallow_impact", read_by, io::PlainKeyDocs(ShallowImpactKeys())),
-          io::MakeBlock("validation_source.points", read_by, io::PlainKeyDocs(PointKeys())),
-          io::MakeBlock("validation_source.trends", read_by, io::PlainKeyDocs(TrendKeys())),
-          io::MakeBlock("validation_source.static_bearing", read_by, io::PlainKeyDocs(BearingKeys())),
+          io::MakeBlock("validation_source.measured_law.katsuragi_durian", read_by,
+                        io::DocsWith(KatsuragiDurianKeys(), {kD1, kD1Uncertainty, kKOverM, kKOverMUncertainty})),
+          io::MakeBlock("validation_source.measured_law.shallow_impact", read_by,
+                        io::DocsWith(ShallowImpactKeys(), {kPrefactor, kFrictionCoefficient})),
+          io::MakeBlock("validation_source.points", read_by,
+                        io::DocsWith(PointKeys(), {kPointSpeed, kPointDropHeight, kPointDepth, kPointStopTime,
+                                                   kPointDepthUncertainty, kPointTimeUncertainty})),
+          io::MakeBlock("validation_source.trends", read_by,
+                        io::DocsWith(TrendKeys(), {kTrendExponent, kTrendTolerance, kTrendGravity, kTrendSpeed})),
+          io::MakeBlock("validation_source.static_bearing", read_by,
+                        io::DocsWith(BearingKeys(), {kBearingPressure, kBearingDepth, kBearingDiameter})),
           io::MakeBlock("validation_model", read_by, io::PlainKeyDocs(ValidationModelKeys()))};
 }
 
@@ -382,7 +413,7 @@ ValidationSource LoadValidationSource(const std::string& path, SourceFileCache* 
   if (!s.pad.is_axisymmetric()) projectile.Fail("pad", "must be an axisymmetric pad (the rig drop)");
   s.projectile = projectile.String("description");
   ReadMedium(f.Child("medium"), s, cache);
-  s.gravity_m_s2 = InRange(f, "gravity_m_s2", limits::kGravity_m_s2);
+  s.gravity_m_s2 = InRange(f, kSourceGravity);
   if (f.Has("low_gravity")) s.low_gravity = f.Bool("low_gravity");
   if (f.Has("measured_law")) ReadLaw(f.Child("measured_law"), s);
   if (f.Has("points"))
