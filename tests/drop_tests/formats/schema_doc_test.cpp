@@ -77,6 +77,29 @@ TEST(DocsOf, AKeyTableGivesItsNumberFieldsDocsAndOnlyTheUnitOfItsOtherKeys) {
   EXPECT_EQ(docs[1].default_value, "*required*");
 }
 
+TEST(RangeText, APositiveSignOpensTheLowEndOnlyWhereTheRangeStartsAtZeroOrBelow) {
+  const limits::Range from_zero{"kg", 0.0, 10.0, false}, from_tiny{"kg", 1e-6, 10.0, false};
+  EXPECT_EQ(RangeText(Sign::kPositive, &from_zero), "(0, 10]");
+  EXPECT_EQ(RangeText(Sign::kPositive, &from_tiny), "[1e-06, 10]");  // 1e-6 itself is accepted
+  EXPECT_EQ(RangeText(Sign::kNonNegative, &from_zero), "[0, 10]");
+  EXPECT_EQ(RangeText(Sign::kNonNegative, nullptr), ">= 0");
+}
+
+TEST(NumberKey, ItsDocSaysItsRangeAndDefaultAndDocsWithReplacesOnlyItsKey) {
+  const NumberKey gravity{"gravity_m_s2", Sign::kPositive, nullptr, nullptr, 9.81};
+  const NumberKey speed{"speed_m_s", Sign::kPositive};
+  const NumberKey mass{"mass_kg", Sign::kPositive, &kLength, "the pad's"};
+  EXPECT_EQ(DocOf(gravity).default_value, "9.81");
+  EXPECT_EQ(DocOf(speed).default_value, "*required*");
+  EXPECT_EQ(DocOf(mass).default_value, "the pad's");
+  const std::vector<KeyDoc> docs = DocsWith({"pad", "speed_m_s", "gravity_m_s2"}, {gravity, speed});
+  ASSERT_EQ(docs.size(), 3u);
+  EXPECT_EQ(docs[0].range, "");
+  EXPECT_EQ(docs[1].range, "> 0");
+  EXPECT_EQ(docs[2].unit, "m/s^2");
+  EXPECT_EQ(docs[2].default_value, "9.81");
+}
+
 TEST(MakeBlock, KeysWithoutASuffixTakeTheUnitOfTheBlocksKey) {
   const BlockDoc block = MakeBlock("pad.inertia_kg_m2", "here.cpp", PlainKeyDocs({"ixx", "offset_mm"}));
   EXPECT_EQ(block.keys[0].unit, "kg m^2");
