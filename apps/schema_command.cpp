@@ -34,15 +34,19 @@ std::vector<io::BlockDoc> AllBlocks() {
     for (io::BlockDoc& block : schema()) all.push_back(std::move(block));
   return all;
 }
+// The file types, as `touchdown schema FILE_TYPE` takes them (a block's id starts with its type).
+constexpr const char* kFileTypes =
+    "pad, soil, model, campaign, lander_scenario, lander, sweep, study, targets, synth, import, validation_source, "
+    "validation_model";
 }  // namespace
 
 void AddSchemaCommand(CLI::App& app) {
   auto file_type = std::make_shared<std::string>();
   auto json = std::make_shared<bool>(false);
-  CLI::App* cmd = app.add_subcommand(
-      "schema", "Print the keys an input file takes (unit, range, default), block by block, from the loaders' own tables");
-  cmd->add_option("file_type", *file_type,
-                  "pad, soil, model, campaign, lander_scenario, lander, sweep, study, targets, synth, import, validation_source or validation_model (default: every file type)");
+  CLI::App* cmd = app.add_subcommand("schema",
+                                     "Print the keys an input file takes (unit, range, default), block by block, "
+                                     "from the loaders' own tables");
+  cmd->add_option("file_type", *file_type, std::string("one of ") + kFileTypes + " (default: every file type)");
   cmd->add_flag("--json", *json, "as JSON (id, read_by, keys with unit, range and default)");
   cmd->callback([file_type, json] {
     std::vector<io::BlockDoc> blocks;
@@ -50,9 +54,7 @@ void AddSchemaCommand(CLI::App& app) {
       if (file_type->empty() || block.id == *file_type || block.id.rfind(*file_type + ".", 0) == 0)
         blocks.push_back(std::move(block));
     if (blocks.empty())
-      throw MakeInputError("schema", "file_type",
-                           "unknown file type '" + *file_type +
-                               "' (pad, soil, model, campaign, lander_scenario, lander, sweep, study, targets, synth, import, validation_source, validation_model)");
+      throw MakeInputError("schema", "file_type", "unknown file type '" + *file_type + "' (" + kFileTypes + ")");
     if (*json)
       std::cout << io::SchemaJson(blocks).dump(1) << "\n";
     else

@@ -81,14 +81,17 @@ const FieldTable<PadFileFields>* ProfileFields(PadShape shape) {
   };
   static const std::map<PadShape, FieldTable<P>> tables{
       {PadShape::kFlat, with({})},
-      {PadShape::kChamfer, with({{"chamfer_mm", &P::chamfer_mm, 1.0, Sign::kPositive, false, false, nullptr, "*required* (chamfer)"}})},
+      {PadShape::kChamfer,
+       with({{"chamfer_mm", &P::chamfer_mm, 1.0, Sign::kPositive, false, false, nullptr, "*required* (chamfer)"}})},
       // u = a0 (exp(a1 x) - 1): give a0 directly, or the rim height u(r) that fixes it.
-      {PadShape::kExponential, with({{"a0_mm", &P::a0_mm, 1.0, Sign::kPositive, true, true, nullptr, kA0OrRimHeight},
-                            {"rim_height_mm", &P::rim_height_mm, 1.0, Sign::kPositive, true, true, nullptr, kA0OrRimHeight},
-                            {"a1_per_mm", &P::a1_per_mm, 1.0, Sign::kPositive, false, false, nullptr, "*required* (exponential)"}})},
-      {PadShape::kSphericalCap, with({{"sphere_radius_mm", &P::sphere_radius_mm, 1.0, Sign::kPositive, false, false, nullptr,
-                                     "*required* (spherical_cap)"}})},
-      {PadShape::kCone, with({{"half_angle_deg", &P::half_angle_deg, 1.0, Sign::kPositive, false, false, nullptr, "*required* (cone)"}})},
+      {PadShape::kExponential,
+       with({{"a0_mm", &P::a0_mm, 1.0, Sign::kPositive, true, true, nullptr, kA0OrRimHeight},
+             {"rim_height_mm", &P::rim_height_mm, 1.0, Sign::kPositive, true, true, nullptr, kA0OrRimHeight},
+             {"a1_per_mm", &P::a1_per_mm, 1.0, Sign::kPositive, false, false, nullptr, "*required* (exponential)"}})},
+      {PadShape::kSphericalCap, with({{"sphere_radius_mm", &P::sphere_radius_mm, 1.0, Sign::kPositive, false, false,
+                                       nullptr, "*required* (spherical_cap)"}})},
+      {PadShape::kCone,
+       with({{"half_angle_deg", &P::half_angle_deg, 1.0, Sign::kPositive, false, false, nullptr, "*required* (cone)"}})},
       {PadShape::kTable, with({})},
   };
   const auto it = tables.find(shape);

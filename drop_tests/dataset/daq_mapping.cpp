@@ -41,30 +41,13 @@ const io::NumberKey kDaqThreshold{"threshold_N", io::Sign::kPositive, nullptr, "
 const io::NumberKey kDaqDropSpeed{"impact_speed_m_s", io::Sign::kAny, &limits::kSpeed_m_s};
 const io::NumberKey kDaqDropMass{"pad_mass_kg", io::Sign::kAny, &limits::kMass_kg};
 const io::NumberKey kDaqDropGravity{"gravity_m_s2", io::Sign::kAny, &limits::kGravity_m_s2};
-const std::vector<std::string>& MappingKeys() {
-  static const std::vector<std::string> keys{"schema_version", "type", "name", "description", "daq", "channels", "touchdown", "drops"};
-  return keys;
-}
-const std::vector<std::string>& DaqKeys() {
-  static const std::vector<std::string> keys{"delimiter", "comment", "decimal", "time"};
-  return keys;
-}
-const std::vector<std::string>& TimeKeys() {
-  static const std::vector<std::string> keys{"column", "unit", "sample_rate_hz"};
-  return keys;
-}
-const std::vector<std::string>& ChannelsKeys() {
-  static const std::vector<std::string> keys{"force", "displacement", "acceleration"};
-  return keys;
-}
-const std::vector<std::string>& ChannelKeys() {
-  static const std::vector<std::string> keys{"column", "gain", "offset", "filter", "zero"};
-  return keys;
-}
-const std::vector<std::string>& TouchdownKeys() {
-  static const std::vector<std::string> keys{"channel", "threshold_N"};
-  return keys;
-}
+const std::vector<std::string> kMappingKeys{"schema_version", "type", "name", "description", "daq", "channels",
+                                            "touchdown", "drops"};
+const std::vector<std::string> kDaqKeys{"delimiter", "comment", "decimal", "time"};
+const std::vector<std::string> kTimeKeys{"column", "unit", "sample_rate_hz"};
+const std::vector<std::string> kChannelsKeys{"force", "displacement", "acceleration"};
+const std::vector<std::string> kChannelKeys{"column", "gain", "offset", "filter", "zero"};
+const std::vector<std::string> kTouchdownKeys{"channel", "threshold_N"};
 
 constexpr double kMaxDaqSampleRate_Hz = 1e7;
 
@@ -76,7 +59,7 @@ char OneCharacter(const io::YamlFields& f, const std::string& key, const std::st
 
 DaqChannel LoadChannel(const io::YamlFields& channels, const std::string& key, ChannelZero default_zero) {
   const io::YamlFields f = channels.Child(key);
-  f.RequireOnly(ChannelKeys());
+  f.RequireOnly(kChannelKeys);
   DaqChannel c;
   c.field = f.prefix();
   c.column = f.String("column");
@@ -103,7 +86,7 @@ DaqChannel LoadChannel(const io::YamlFields& channels, const std::string& key, C
 
 void LoadTime(const io::YamlFields& daq, DaqMapping& m) {
   const io::YamlFields f = daq.Child("time");
-  f.RequireOnly(TimeKeys());
+  f.RequireOnly(kTimeKeys);
   if (f.Has("column") == f.Has("sample_rate_hz"))
     throw MakeInputError(f.file(), f.prefix(), "give either {column: NAME, unit: s|ms|us} or {sample_rate_hz: RATE}");
   if (f.Has("sample_rate_hz")) {
@@ -123,7 +106,7 @@ void LoadTime(const io::YamlFields& daq, DaqMapping& m) {
 
 void LoadDaq(const io::YamlFields& root, DaqMapping& m) {
   const io::YamlFields f = root.Child("daq");
-  f.RequireOnly(DaqKeys());
+  f.RequireOnly(kDaqKeys);
   m.text.delimiter = OneCharacter(f, "delimiter", ",");
   m.text.decimal = OneCharacter(f, "decimal", ".");
   m.text.comment = f.StringOr("comment", "#");
@@ -210,18 +193,18 @@ DaqDropEntry LoadDropEntry(const io::YamlFields& f, DaqMapping& m) {
 
 std::vector<io::BlockDoc> DaqMappingSchema() {
   const std::string read_by = "drop_tests/dataset/daq_mapping.cpp";
-  return {io::MakeBlock("import", read_by, io::PlainKeyDocs(MappingKeys())),
-          io::MakeBlock("import.daq", read_by, io::PlainKeyDocs(DaqKeys())),
-          io::MakeBlock("import.daq.time", read_by, io::DocsWith(TimeKeys(), {kDaqSampleRate})),
-          io::MakeBlock("import.channels", read_by, io::PlainKeyDocs(ChannelsKeys())),
-          io::MakeBlock("import.channels.channel", read_by, io::PlainKeyDocs(ChannelKeys())),
-          io::MakeBlock("import.touchdown", read_by, io::DocsWith(TouchdownKeys(), {kDaqThreshold})),
+  return {io::MakeBlock("import", read_by, io::PlainKeyDocs(kMappingKeys)),
+          io::MakeBlock("import.daq", read_by, io::PlainKeyDocs(kDaqKeys)),
+          io::MakeBlock("import.daq.time", read_by, io::DocsWith(kTimeKeys, {kDaqSampleRate})),
+          io::MakeBlock("import.channels", read_by, io::PlainKeyDocs(kChannelsKeys)),
+          io::MakeBlock("import.channels.channel", read_by, io::PlainKeyDocs(kChannelKeys)),
+          io::MakeBlock("import.touchdown", read_by, io::DocsWith(kTouchdownKeys, {kDaqThreshold})),
           io::MakeBlock("import.drops", read_by, io::DocsWith(kDaqDropKeys, {kDaqDropSpeed, kDaqDropMass, kDaqDropGravity}))};
 }
 
 DaqMapping LoadDaqMapping(const std::string& path) {
   const io::YamlFields root = io::YamlFields::LoadFile(path);
-  root.RequireOnly(MappingKeys());
+  root.RequireOnly(kMappingKeys);
   root.RequireSchemaVersion(1);
   if (const std::string type = root.String("type"); type != "import")
     root.Fail("type", "must be 'import' for a mapping of raw drop files, got '" + type + "'");
@@ -232,7 +215,7 @@ DaqMapping LoadDaqMapping(const std::string& path) {
   LoadDaq(root, m);
 
   const io::YamlFields channels = root.Child("channels");
-  channels.RequireOnly(ChannelsKeys());
+  channels.RequireOnly(kChannelsKeys);
   m.force = LoadChannel(channels, "force", ChannelZero::kPreTrigger);
   if (channels.Has("displacement") == channels.Has("acceleration"))
     throw MakeInputError(path, "channels", "give one of displacement or acceleration (the penetration comes from one of them)");
@@ -244,7 +227,7 @@ DaqMapping LoadDaqMapping(const std::string& path) {
 
   if (root.Has("touchdown")) {
     const io::YamlFields f = root.Child("touchdown");
-    f.RequireOnly(TouchdownKeys());
+    f.RequireOnly(kTouchdownKeys);
     if (const std::string channel = f.StringOr("channel", "force"); channel != "force")
       f.Fail("channel", "must be force (touchdown is found on the force), got '" + channel + "'");
     if (f.Has(kDaqThreshold.key)) m.threshold_N = io::ReadNumber(f, kDaqThreshold);

@@ -78,17 +78,11 @@ const io::NumberKey kSynthSampleRate{"sample_rate_hz", io::Sign::kPositive, null
 const io::NumberKey kSynthRestDuration{"rest_duration_s", io::Sign::kNonNegative, nullptr, nullptr, SynthSpec{}.rest_duration_s};
 const io::NumberKey kSynthMass{"mass_kg", io::Sign::kPositive, nullptr, "the pad's `mass_kg`"};
 const io::NumberKey kSynthGravity{"gravity_m_s2", io::Sign::kPositive, nullptr, nullptr, rft::kEarthGravity_m_s2};
-const std::vector<std::string>& SynthKeys() {
-  static const std::vector<std::string> keys{
-      "schema_version", "type", "name", "description", "seed", "sample_rate_hz", "rest_duration_s", "trials",
-      "drops", "true_zeta_N_cm3", "noise", "hidden_effect", "sensor_sampling", "provenance"};
-  return keys;
-}
-const std::vector<std::string>& SynthDropKeys() {
-  static const std::vector<std::string> keys{"pads", "soils", "atmospheres", "impact_speeds_m_s", "mass_kg",
-                                             "gravity_m_s2"};
-  return keys;
-}
+const std::vector<std::string> kSynthKeys{"schema_version", "type", "name", "description", "seed", "sample_rate_hz",
+                                          "rest_duration_s", "trials", "drops", "true_zeta_N_cm3", "noise",
+                                          "hidden_effect", "sensor_sampling", "provenance"};
+const std::vector<std::string> kSynthDropKeys{"pads", "soils", "atmospheres", "impact_speeds_m_s", "mass_kg",
+                                              "gravity_m_s2"};
 const io::FieldTable<SynthNoise>& NoiseFields() {
   using N = SynthNoise;
   static const io::FieldTable<N> fields{
@@ -105,15 +99,15 @@ const io::FieldTable<SynthNoise>& NoiseFields() {
 
 std::vector<io::BlockDoc> SynthSpecSchema() {
   const std::string read_by = "drop_tests/dataset/synth.cpp";
-  return {io::MakeBlock("synth", read_by, io::DocsWith(SynthKeys(), {kSynthSampleRate, kSynthRestDuration})),
-          io::MakeBlock("synth.drops", read_by, io::DocsWith(SynthDropKeys(), {kSynthMass, kSynthGravity})),
+  return {io::MakeBlock("synth", read_by, io::DocsWith(kSynthKeys, {kSynthSampleRate, kSynthRestDuration})),
+          io::MakeBlock("synth.drops", read_by, io::DocsWith(kSynthDropKeys, {kSynthMass, kSynthGravity})),
           io::MakeBlock("synth.noise", read_by, io::DocsOf(NoiseFields()))};
 }
 
 SynthSpec LoadSynthSpec(const std::string& path) {
   const io::YamlFields f = io::YamlFields::LoadFile(path);
   f.RequireSchemaVersion(1);
-  f.RequireOnly(SynthKeys());
+  f.RequireOnly(kSynthKeys);
   if (f.String("type") != "synth") f.Fail("type", "must be 'synth', got '" + f.String("type") + "'");
   SynthSpec s;
   s.source = path;
@@ -149,7 +143,7 @@ SynthSpec LoadSynthSpec(const std::string& path) {
   int group = -1;
   for (const io::YamlFields& g : f.List("drops")) {
     ++group;
-    g.RequireOnly(SynthDropKeys());
+    g.RequireOnly(kSynthDropKeys);
     const std::vector<std::string> pads = StringList(g, "pads"), soils = StringList(g, "soils");
     std::vector<rft::Atmosphere> atmospheres;
     for (const std::string& a : g.Has("atmospheres") ? StringList(g, "atmospheres") : std::vector<std::string>{"vacuum"}) {

@@ -326,10 +326,8 @@ const io::NumberKey kEntryMass{"mass_kg", io::Sign::kPositive, nullptr, "the pad
 const io::NumberKey kEntryZeta{"zeta_N_cm3", io::Sign::kPositive, nullptr, "the soil's"};
 
 // A scenario's `drops` entry's keys: a pad and a soil by name or path, and its list of speeds.
-const std::vector<std::string>& DropEntryKeys() {
-  static const std::vector<std::string> keys{"pad", "soil", "impact_speeds_m_s", "mass_kg", "zeta_N_cm3", "gravity_m_s2"};
-  return keys;
-}
+const std::vector<std::string> kDropEntryKeys{"pad", "soil", "impact_speeds_m_s", "mass_kg", "zeta_N_cm3",
+                                              "gravity_m_s2"};
 
 // A scenario's `drops`: each entry a pad and a soil by name or path, and its list of speeds.
 void ReadDropEntries(const io::YamlFields& f, CampaignScenario& s) {
@@ -338,7 +336,7 @@ void ReadDropEntries(const io::YamlFields& f, CampaignScenario& s) {
   SoilCache soils;
   std::set<std::string> ids;
   for (const io::YamlFields& entry : f.List("drops")) {
-    entry.RequireOnly(DropEntryKeys());
+    entry.RequireOnly(kDropEntryKeys);
     const std::shared_ptr<const io::PadSpec>& pad = Cached(pads, entry.String("pad"), entry, "pad", LoadSharedPad);
     const rft::SoilParameters& soil = Cached(soils, entry.String("soil"), entry, "soil", io::LoadSoil);
     const std::string soil_source = io::ResolveCatalogFile("soils", entry.String("soil"));
@@ -394,7 +392,8 @@ std::vector<io::BlockDoc> CampaignSchema() {
     for (const io::NumberKey& n : {kCampaignGravity, kReferenceSpeed})
       if (k.key == n.key) k = io::DocOf(n);
   return {io::MakeBlock("campaign", read_by, top),
-          io::MakeBlock("campaign.drops", read_by, io::DocsWith(DropEntryKeys(), {kEntryMass, kEntryZeta, kEntryGravity})),
+          io::MakeBlock("campaign.drops", read_by,
+                        io::DocsWith(kDropEntryKeys, {kEntryMass, kEntryZeta, kEntryGravity})),
           io::MakeBlock("campaign.paper_checks", read_by, io::DocsOf(CheckKeys())),
           io::MakeBlock("campaign.paper_checks.numerator", read_by, io::DocsOf(PadSoilKeys())),
           io::MakeBlock("campaign.paper_checks.paper", read_by, io::DocsOf(PaperFigureFields()))};

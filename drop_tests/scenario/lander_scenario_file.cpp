@@ -73,12 +73,9 @@ LanderPatchSpec ReadPatch(const io::YamlFields& p, const SoilCheck& check_soil) 
 
 // `ground.soil_field` (soil_field.h): soils checked like any patch's, probabilities summing to 1,
 // at most 400 cells a side.
-const std::vector<std::string>& SoilFieldKeys() {
-  static const std::vector<std::string> keys{"soils", "probabilities", "cell_size_m", "half_extent_m", "seed"};
-  return keys;
-}
+const std::vector<std::string> kSoilFieldKeys{"soils", "probabilities", "cell_size_m", "half_extent_m", "seed"};
 SoilFieldSpec ReadSoilField(const io::YamlFields& f, const SoilCheck& check_soil) {
-  f.RequireOnly(SoilFieldKeys());
+  f.RequireOnly(kSoilFieldKeys);
   SoilFieldSpec field;
   const YAML::Node soils = f.node()["soils"];
   if (!soils || !soils.IsSequence() || soils.size() < 1 || soils.size() > 8)
@@ -285,7 +282,8 @@ std::vector<io::BlockDoc> LanderScenarioSchema() {
   return {io::MakeBlock("lander_scenario", read_by, io::DocsOf(LanderScenarioKeys(), {"source"})),
           io::MakeBlock("lander_scenario.ground", read_by, io::DocsOf(GroundKeys(), {"soils", "model"})),
           io::MakeBlock("lander_scenario.ground.patches", read_by, io::DocsOf(PatchKeys())),
-          io::MakeBlock("lander_scenario.ground.soil_field", read_by, io::DocsWith(SoilFieldKeys(), {kCellSizeKey, kHalfExtentKey})),
+          io::MakeBlock("lander_scenario.ground.soil_field", read_by,
+                        io::DocsWith(kSoilFieldKeys, {kCellSizeKey, kHalfExtentKey})),
           io::MakeBlock("lander_scenario.initial", read_by, io::DocsOf(InitialKeys(), {kReleaseBodyComKey})),
           io::MakeBlock("lander_scenario.simulation", read_by, io::DocsOf(SimulationKeys())),
           io::MakeBlock("lander_scenario.paper", read_by, io::DocsOf(PaperKeys()))};

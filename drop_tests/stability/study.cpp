@@ -102,31 +102,21 @@ int64_t ReadMaxDrawnLandings(const io::YamlFields& map) {
 
 // The `study` block's keys, and its blocks' (soil_uncertainty's are its file's, soil_pairing's
 // `samples`).
-const std::vector<std::string>& StudyKeys() {
-  static const std::vector<std::string> keys{"map", "worst_cases", "max_tip_over_cases", "recheck",
-                                             "joint_range_sensitivity", "soil_uncertainty", "soil_pairing"};
-  return keys;
-}
-const std::vector<std::string>& MapKeys() {
-  static const std::vector<std::string> keys{"x", "y", "bins", "contours", "max_drawn_landings"};
-  return keys;
-}
-const std::vector<std::string>& RecheckKeys() {
-  static const std::vector<std::string> keys{"rtol", "tilt_margin_deg", "unsettled"};
-  return keys;
-}
+const std::vector<std::string> kStudyKeys{"map", "worst_cases", "max_tip_over_cases", "recheck",
+                                          "joint_range_sensitivity", "soil_uncertainty", "soil_pairing"};
+const std::vector<std::string> kMapKeys{"x", "y", "bins", "contours", "max_drawn_landings"};
+const std::vector<std::string> kRecheckKeys{"rtol", "tilt_margin_deg", "unsettled"};
 // The follow-ups' angle margins (their own messages; the range documented from here).
 constexpr limits::Range kMargin_deg{"deg", 0.0, 90.0, false};
-const io::NumberKey kTiltMargin{"tilt_margin_deg", io::Sign::kAny, &kMargin_deg, nullptr, RecheckSettings{}.tilt_margin_deg};
-const io::NumberKey kScreenMargin{"screen_margin_deg", io::Sign::kAny, &kMargin_deg, nullptr, kDefaultJointRangeScreenDeg};
-const std::vector<std::string>& JointRangeKeys() {
-  static const std::vector<std::string> keys{"samples", "screen_margin_deg"};
-  return keys;
-}
+const io::NumberKey kTiltMargin{"tilt_margin_deg", io::Sign::kAny, &kMargin_deg, nullptr,
+                                RecheckSettings{}.tilt_margin_deg};
+const io::NumberKey kScreenMargin{"screen_margin_deg", io::Sign::kAny, &kMargin_deg, nullptr,
+                                  kDefaultJointRangeScreenDeg};
+const std::vector<std::string> kJointRangeKeys{"samples", "screen_margin_deg"};
 
 StudyMap ReadMap(const io::YamlFields& study, const sweep::SweepPlan& plan) {
   const io::YamlFields map = study.Child("map");
-  map.RequireOnly(MapKeys());
+  map.RequireOnly(kMapKeys);
   int bins[2] = {10, 10};
   if (map.Has("bins")) {
     const YAML::Node n = map.node()["bins"];
@@ -173,7 +163,7 @@ RecheckSettings ReadRecheck(const io::YamlFields& study, RecheckSettings r, doub
     return r;
   }
   const io::YamlFields f = study.Child("recheck");
-  f.RequireOnly(RecheckKeys());
+  f.RequireOnly(kRecheckKeys);
   if (f.Has("unsettled")) r.unsettled = f.Bool("unsettled");
   if (f.Has("rtol")) {
     r.rtol = f.Number("rtol");
@@ -217,7 +207,7 @@ JointRangeSettings ReadJointRange(const io::YamlFields& study) {
   const std::string key = "joint_range_sensitivity";
   if (!study.Has(key)) return j;
   std::optional<int64_t> samples;
-  j.enabled = ReadFollowUpSamples(study, key, samples, JointRangeKeys());
+  j.enabled = ReadFollowUpSamples(study, key, samples, kJointRangeKeys);
   j.samples = samples.value_or(j.samples);
   if (!j.enabled) return j;
   const io::YamlFields f = study.Child(key);
@@ -247,10 +237,10 @@ SoilPairingSettings ReadSoilPairing(const io::YamlFields& study) {
 
 std::vector<io::BlockDoc> StudySchema() {
   const std::string read_by = "drop_tests/stability/study.cpp";
-  return {io::MakeBlock("study", read_by, io::PlainKeyDocs(StudyKeys())),
-          io::MakeBlock("study.map", read_by, io::PlainKeyDocs(MapKeys())),
-          io::MakeBlock("study.recheck", read_by, io::DocsWith(RecheckKeys(), {kTiltMargin})),
-          io::MakeBlock("study.joint_range_sensitivity", read_by, io::DocsWith(JointRangeKeys(), {kScreenMargin})),
+  return {io::MakeBlock("study", read_by, io::PlainKeyDocs(kStudyKeys)),
+          io::MakeBlock("study.map", read_by, io::PlainKeyDocs(kMapKeys)),
+          io::MakeBlock("study.recheck", read_by, io::DocsWith(kRecheckKeys, {kTiltMargin})),
+          io::MakeBlock("study.joint_range_sensitivity", read_by, io::DocsWith(kJointRangeKeys, {kScreenMargin})),
           io::MakeBlock("study.soil_uncertainty.soil", "drop_tests/stability/soil_uncertainty_file.cpp",
                         io::PlainKeyDocs(SoilUncertaintyEntryKeys()))};
 }
@@ -278,7 +268,7 @@ Study LoadStudy(const std::string& path, const std::string& model_override, std:
   if (!(study.recheck.rtol < ScenarioRtol(study.plan))) study.recheck.rtol = ScenarioRtol(study.plan) / 100.0;
   if (f.Has("study")) {
     const io::YamlFields s = f.Child("study");
-    s.RequireOnly(StudyKeys());
+    s.RequireOnly(kStudyKeys);
     if (s.Has("map")) study.map = ReadMap(s, study.plan);
     study.worst_cases = ReadCount(s, "worst_cases", study.worst_cases);
     study.max_tip_over_cases = ReadCount(s, "max_tip_over_cases", study.max_tip_over_cases);

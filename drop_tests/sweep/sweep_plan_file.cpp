@@ -276,10 +276,7 @@ void ReadFixed(const io::YamlFields& block, ParamClaims& claims, Loader& loader,
 }
 
 // A grid axis given as a range.
-const std::vector<std::string>& GridRangeKeys() {
-  static const std::vector<std::string> keys{"from", "to", "count"};
-  return keys;
-}
+const std::vector<std::string> kGridRangeKeys{"from", "to", "count"};
 
 // Grid axes: a list of values or {from, to, count}; the first-listed axis varies slowest.
 void ReadGrid(const io::YamlFields& block, ParamClaims& claims, Loader& loader, SweepPlan& plan) {
@@ -289,7 +286,7 @@ void ReadGrid(const io::YamlFields& block, ParamClaims& claims, Loader& loader, 
     SweepAxis axis{p, {}};
     if (item.second.IsMap() && !IsName(p)) {
       const io::YamlFields range = block.Child(key);
-      range.RequireOnly(GridRangeKeys());
+      range.RequireOnly(kGridRangeKeys);
       const double from = range.Number("from"), to = range.Number("to");
       const int count = range.PositiveInt("count");
       if (count < 2 && from != to) range.Fail("count", "must be at least 2 when from != to");
@@ -403,7 +400,7 @@ std::vector<io::BlockDoc> SweepPlanSchema() {
   return {io::MakeBlock("sweep", read_by, io::DocsOf(SweepKeys())),
           io::MakeBlock("sweep.lander", read_by, io::DocsOf(LanderBlockKeys())),
           io::MakeBlock("sweep.simulation", read_by, io::DocsOf(SimulationBlockKeys())),
-          io::MakeBlock("sweep.grid.range", read_by, io::PlainKeyDocs(GridRangeKeys())),
+          io::MakeBlock("sweep.grid.range", read_by, io::PlainKeyDocs(kGridRangeKeys)),
           io::MakeBlock("sweep.random.draw", read_by, io::DocsOf(RandomSpecKeys()))};
 }
 

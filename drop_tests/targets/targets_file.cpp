@@ -26,39 +26,17 @@ namespace {
 // A scenario's numbers (a rig drop's, a campaign row's).
 const io::NumberKey kScenarioSpeed{"speed_m_s", io::Sign::kPositive};
 const io::NumberKey kScenarioGravity{"gravity_m_s2", io::Sign::kPositive, nullptr, nullptr, rft::kEarthGravity_m_s2};
-const std::vector<std::string>& TargetsKeys() {
-  static const std::vector<std::string> keys{"schema_version", "type", "name", "description", "parameters", "targets", "fit", "provenance"};
-  return keys;
-}
-const std::vector<std::string>& ParameterKeys() {
-  static const std::vector<std::string> keys{"name", "soil", "pad", "lander", "field", "lower", "upper", "start", "source", "prior"};
-  return keys;
-}
-const std::vector<std::string>& PriorKeys() {
-  static const std::vector<std::string> keys{"value", "sd", "source"};
-  return keys;
-}
-const std::vector<std::string>& TargetKeys() {
-  static const std::vector<std::string> keys{"name", "drop", "campaign", "lander", "quantity", "pad", "ratio", "value", "at_most", "at_least",
-                                             "uncertainty", "use", "source"};
-  return keys;
-}
-const std::vector<std::string>& RatioKeys() {
-  static const std::vector<std::string> keys{"numerator", "denominator"};
-  return keys;
-}
-const std::vector<std::string>& DropKeys() {
-  static const std::vector<std::string> keys{"pad", "soil", "speed_m_s", "gravity_m_s2"};
-  return keys;
-}
-const std::vector<std::string>& CampaignRowKeys() {
-  static const std::vector<std::string> keys{"file", "pad", "soil", "speed_m_s"};
-  return keys;
-}
-const std::vector<std::string>& FitKeys() {
-  static const std::vector<std::string> keys{"relative_step", "max_iterations", "confidence"};
-  return keys;
-}
+const std::vector<std::string> kTargetsKeys{"schema_version", "type", "name", "description", "parameters", "targets",
+                                            "fit", "provenance"};
+const std::vector<std::string> kParameterKeys{"name", "soil", "pad", "lander", "field", "lower", "upper", "start",
+                                              "source", "prior"};
+const std::vector<std::string> kPriorKeys{"value", "sd", "source"};
+const std::vector<std::string> kTargetKeys{"name", "drop", "campaign", "lander", "quantity", "pad", "ratio", "value",
+                                           "at_most", "at_least", "uncertainty", "use", "source"};
+const std::vector<std::string> kRatioKeys{"numerator", "denominator"};
+const std::vector<std::string> kDropKeys{"pad", "soil", "speed_m_s", "gravity_m_s2"};
+const std::vector<std::string> kCampaignRowKeys{"file", "pad", "soil", "speed_m_s"};
+const std::vector<std::string> kFitKeys{"relative_step", "max_iterations", "confidence"};
 struct QuantityEntry {
   Quantity quantity;
   const char* name;
@@ -145,7 +123,7 @@ void ReadBounds(const io::YamlFields& p, Parameter& out) {
 }
 
 ParameterPrior ReadPrior(const io::YamlFields& m, const Parameter& p) {
-  m.RequireOnly(PriorKeys());
+  m.RequireOnly(kPriorKeys);
   ParameterPrior out{m.Number("value"), m.Number("sd"), m.String("source")};
   if (out.value < p.lower || out.value > p.upper)
     m.Fail("value", "must lie within [lower, upper] = [" + Number(p.lower) + ", " + Number(p.upper) + "], got " +
@@ -155,7 +133,7 @@ ParameterPrior ReadPrior(const io::YamlFields& m, const Parameter& p) {
 }
 
 Parameter ReadParameter(const io::YamlFields& p) {
-  p.RequireOnly(ParameterKeys());
+  p.RequireOnly(kParameterKeys);
   Parameter out;
   out.name = p.Name("name");
   out.source = p.String("source");
@@ -298,7 +276,7 @@ class ScenarioReader {
   }
 
   size_t Drop(const io::YamlFields& d) {
-    d.RequireOnly(DropKeys());
+    d.RequireOnly(kDropKeys);
     ScenarioRun run;
     run.kind = ScenarioRun::Kind::kDrop;
     const std::string pad_file = Canonical(ResolveNear(d, "pads", "pad"));
@@ -317,7 +295,7 @@ class ScenarioReader {
   }
 
   size_t CampaignRow(const io::YamlFields& c) {
-    c.RequireOnly(CampaignRowKeys());
+    c.RequireOnly(kCampaignRowKeys);
     const std::string file = Canonical(ResolveNear(c, "scenarios", "file"));
     auto& campaign = campaigns_[file];
     if (!campaign) {
@@ -364,7 +342,7 @@ class ScenarioReader {
 };
 
 Target ReadTarget(const io::YamlFields& t, ScenarioReader& reader) {
-  t.RequireOnly(TargetKeys());
+  t.RequireOnly(kTargetKeys);
   Target out;
   out.name = t.Name("name");
   out.source = t.String("source");
@@ -372,7 +350,7 @@ Target ReadTarget(const io::YamlFields& t, ScenarioReader& reader) {
     for (const char* k : {"drop", "campaign", "lander", "quantity", "pad"})
       if (t.Has(k)) t.Fail(k, "a ratio target gives its scenarios in ratio.numerator and ratio.denominator");
     const io::YamlFields r = t.Child("ratio");
-    r.RequireOnly(RatioKeys());
+    r.RequireOnly(kRatioKeys);
     out.measure = reader.ReadMeasure(r.Child("numerator"));
     out.denominator = reader.ReadMeasure(r.Child("denominator"));
   } else {
@@ -404,7 +382,7 @@ Target ReadTarget(const io::YamlFields& t, ScenarioReader& reader) {
 }
 
 void ReadSettings(const io::YamlFields& f, FitSettings& s) {
-  f.RequireOnly(FitKeys());
+  f.RequireOnly(kFitKeys);
   if (f.Has("relative_step")) s.relative_step = f.Positive("relative_step");
   if (s.relative_step > 0.1) f.Fail("relative_step", "must be at most 0.1, got " + Number(s.relative_step));
   if (f.Has("max_iterations")) s.max_iterations = f.PositiveInt("max_iterations");
@@ -437,24 +415,24 @@ std::vector<io::BlockDoc> TargetsFileSchema() {
   const std::string read_by = "drop_tests/targets/targets_file.cpp";
   // The fit's settings take FitSettings' defaults.
   const FitSettings defaults;
-  std::vector<io::KeyDoc> fit = io::PlainKeyDocs(FitKeys());
+  std::vector<io::KeyDoc> fit = io::PlainKeyDocs(kFitKeys);
   fit[0].default_value = Number(defaults.relative_step);
   fit[1].default_value = std::to_string(defaults.max_iterations);
   fit[2].default_value = Number(defaults.confidence);
-  return {io::MakeBlock("targets", read_by, io::PlainKeyDocs(TargetsKeys())),
-          io::MakeBlock("targets.parameters", read_by, io::PlainKeyDocs(ParameterKeys())),
-          io::MakeBlock("targets.parameters.prior", read_by, io::PlainKeyDocs(PriorKeys())),
-          io::MakeBlock("targets.targets", read_by, io::PlainKeyDocs(TargetKeys())),
-          io::MakeBlock("targets.targets.ratio", read_by, io::PlainKeyDocs(RatioKeys())),
-          io::MakeBlock("targets.targets.drop", read_by, io::DocsWith(DropKeys(), {kScenarioSpeed, kScenarioGravity})),
-          io::MakeBlock("targets.targets.campaign", read_by, io::DocsWith(CampaignRowKeys(), {kScenarioSpeed})),
+  return {io::MakeBlock("targets", read_by, io::PlainKeyDocs(kTargetsKeys)),
+          io::MakeBlock("targets.parameters", read_by, io::PlainKeyDocs(kParameterKeys)),
+          io::MakeBlock("targets.parameters.prior", read_by, io::PlainKeyDocs(kPriorKeys)),
+          io::MakeBlock("targets.targets", read_by, io::PlainKeyDocs(kTargetKeys)),
+          io::MakeBlock("targets.targets.ratio", read_by, io::PlainKeyDocs(kRatioKeys)),
+          io::MakeBlock("targets.targets.drop", read_by, io::DocsWith(kDropKeys, {kScenarioSpeed, kScenarioGravity})),
+          io::MakeBlock("targets.targets.campaign", read_by, io::DocsWith(kCampaignRowKeys, {kScenarioSpeed})),
           io::MakeBlock("targets.fit", read_by, fit)};
 }
 
 TargetsFile LoadTargetsFile(const std::string& path) {
   const io::YamlFields f = io::YamlFields::LoadFile(path);
   f.RequireSchemaVersion(1);
-  f.RequireOnly(TargetsKeys());
+  f.RequireOnly(kTargetsKeys);
   if (f.String("type") != "targets") f.Fail("type", "must be 'targets', got '" + f.String("type") + "'");
   TargetsFile out;
   out.source = path;

@@ -29,46 +29,23 @@ const char* ProvenanceName(Provenance p) { return NameIn(kProvenanceNames, p); }
 namespace {
 // A validation source's keys, block by block, and a validation model file's (docs/validation.md;
 // docs/reference.md).
-const std::vector<std::string>& SourceKeys() {
-  static const std::vector<std::string> keys{"schema_version", "type", "id", "citation", "read_at", "projectile", "medium", "gravity_m_s2",
-                                             "low_gravity", "measured_law", "points", "trends", "static_bearing", "provenance"};
-  return keys;
-}
-const std::vector<std::string>& ProjectileKeys() {
-  static const std::vector<std::string> keys{"pad", "description"};
-  return keys;
-}
-const std::vector<std::string>& MediumKeys() {
-  static const std::vector<std::string> keys{"soil", "description", "zeta_route", "calibrated_on"};
-  return keys;
-}
-const std::vector<std::string>& KatsuragiDurianKeys() {
-  static const std::vector<std::string> keys{"kind", "d1_mm", "d1_uncertainty_mm", "k_over_m_per_s2", "k_over_m_uncertainty_per_s2",
-                                             "how", "where"};
-  return keys;
-}
-const std::vector<std::string>& ShallowImpactKeys() {
-  static const std::vector<std::string> keys{"kind", "prefactor", "friction_coefficient", "how", "where"};
-  return keys;
-}
-const std::vector<std::string>& PointKeys() {
-  static const std::vector<std::string> keys{"id", "impact_speed_m_s", "drop_height_mm", "quantity", "depth_mm", "stop_time_ms",
-                                             "uncertainty_mm", "uncertainty_ms", "from_law", "how", "where"};
-  return keys;
-}
-const std::vector<std::string>& TrendKeys() {
-  static const std::vector<std::string> keys{"id", "quantity", "vary", "values", "at_impact_speed_m_s", "at_gravity_m_s2", "exponent",
-                                             "tolerance", "tolerance_source", "tolerance_note", "direction", "how", "where"};
-  return keys;
-}
-const std::vector<std::string>& BearingKeys() {
-  static const std::vector<std::string> keys{"id", "pressure_N_cm2", "depth_mm", "diameter_mm", "how", "where"};
-  return keys;
-}
-const std::vector<std::string>& ValidationModelKeys() {
-  static const std::vector<std::string> keys{"schema_version", "type", "inertial_drag_lambda", "source", "provenance"};
-  return keys;
-}
+const std::vector<std::string> kSourceKeys{"schema_version", "type", "id", "citation", "read_at", "projectile",
+                                           "medium", "gravity_m_s2", "low_gravity", "measured_law", "points",
+                                           "trends", "static_bearing", "provenance"};
+const std::vector<std::string> kProjectileKeys{"pad", "description"};
+const std::vector<std::string> kMediumKeys{"soil", "description", "zeta_route", "calibrated_on"};
+const std::vector<std::string> kKatsuragiDurianKeys{"kind", "d1_mm", "d1_uncertainty_mm", "k_over_m_per_s2",
+                                                    "k_over_m_uncertainty_per_s2", "how", "where"};
+const std::vector<std::string> kShallowImpactKeys{"kind", "prefactor", "friction_coefficient", "how", "where"};
+const std::vector<std::string> kPointKeys{"id", "impact_speed_m_s", "drop_height_mm", "quantity", "depth_mm",
+                                          "stop_time_ms", "uncertainty_mm", "uncertainty_ms", "from_law", "how",
+                                          "where"};
+const std::vector<std::string> kTrendKeys{"id", "quantity", "vary", "values", "at_impact_speed_m_s",
+                                          "at_gravity_m_s2", "exponent", "tolerance", "tolerance_source",
+                                          "tolerance_note", "direction", "how", "where"};
+const std::vector<std::string> kBearingKeys{"id", "pressure_N_cm2", "depth_mm", "diameter_mm", "how", "where"};
+const std::vector<std::string> kValidationModelKeys{"schema_version", "type", "inertial_drag_lambda", "source",
+                                                    "provenance"};
 
 // Every number a source gives is range-checked at load, as a scenario's is (rft/physical_limits.h
 // where a bound exists there), in the file's own units: a measured depth of 1e9 mm would otherwise
@@ -148,7 +125,7 @@ auto LoadNamed(const io::YamlFields& f, const std::string& key, Load load) {
 }
 
 KatsuragiDurianLaw ReadKatsuragiDurianLaw(const io::YamlFields& f) {
-  f.RequireOnly(KatsuragiDurianKeys());
+  f.RequireOnly(kKatsuragiDurianKeys);
   KatsuragiDurianLaw law;
   law.d1_m = InRange(f, kD1) * units::kMm;
   law.d1_uncertainty_m = InRange(f, kD1Uncertainty) * units::kMm;
@@ -164,7 +141,7 @@ KatsuragiDurianLaw ReadKatsuragiDurianLaw(const io::YamlFields& f) {
 // The law needs a sphere: its density and diameter come from the pad (a spherical_cap of the
 // sphere's own radius, the sphere's lower hemisphere).
 ShallowImpactLaw ReadShallowImpactLaw(const io::YamlFields& f, const ValidationSource& s) {
-  f.RequireOnly(ShallowImpactKeys());
+  f.RequireOnly(kShallowImpactKeys);
   if (s.pad.file.shape != io::PadShape::kSphericalCap || s.pad.file.sphere_radius_mm != s.pad.file.radius_mm)
     f.Fail("kind", "shallow_impact needs a sphere: a spherical_cap pad whose radius is its sphere_radius");
   if (!(s.soil.bulk_density_kg_m3 > 0.0)) f.Fail("kind", "shallow_impact needs the soil's bulk_density_kg_m3 (rho_g)");
@@ -205,7 +182,7 @@ double ReadImpactSpeed(const io::YamlFields& f, double gravity_m_s2, std::option
 }
 
 MeasuredPoint ReadPoint(const io::YamlFields& f, const ValidationSource& s) {
-  f.RequireOnly(PointKeys());
+  f.RequireOnly(kPointKeys);
   MeasuredPoint p;
   p.id = f.Name("id");
   p.impact_speed_m_s = ReadImpactSpeed(f, s.gravity_m_s2, p.drop_height_m);
@@ -270,7 +247,7 @@ void ReadTrendLaw(const io::YamlFields& f, MeasuredTrend& t) {
 }
 
 MeasuredTrend ReadTrend(const io::YamlFields& f, const ValidationSource& s) {
-  f.RequireOnly(TrendKeys());
+  f.RequireOnly(kTrendKeys);
   MeasuredTrend t;
   t.id = f.Name("id");
   t.quantity = ReadQuantity(f);
@@ -316,7 +293,7 @@ Range ReadRange(const io::YamlFields& f, const io::NumberKey& number, double to_
 
 // The bearing area is the source's flat pad made at each bearing diameter (io::FlatPadWithRadius).
 MeasuredBearing ReadBearing(const io::YamlFields& f, const ValidationSource& s) {
-  f.RequireOnly(BearingKeys());
+  f.RequireOnly(kBearingKeys);
   if (s.pad.file.shape != io::PadShape::kFlat) f.Fail("id", "a static bearing needs a flat pad (profile shape: flat)");
   MeasuredBearing b;
   b.id = f.Name("id");
@@ -339,7 +316,7 @@ T Cached(std::map<std::string, T>* cache, const std::string& path, Load load) {
 }
 
 void ReadMedium(const io::YamlFields& m, ValidationSource& s, SourceFileCache* cache) {
-  m.RequireOnly(MediumKeys());
+  m.RequireOnly(kMediumKeys);
   s.soil = LoadNamed(m, "soil", [cache](const std::string& p) {
     return Cached(cache ? &cache->soils : nullptr, p, [](const std::string& q) { return io::LoadSoil(q); });
   });
@@ -377,27 +354,27 @@ void CheckIds(const io::YamlFields& f, const ValidationSource& s) {
 
 std::vector<io::BlockDoc> ValidationSourceSchema() {
   const std::string read_by = "drop_tests/validation/validation_source.cpp";
-  return {io::MakeBlock("validation_source", read_by, io::DocsWith(SourceKeys(), {kSourceGravity})),
-          io::MakeBlock("validation_source.projectile", read_by, io::PlainKeyDocs(ProjectileKeys())),
-          io::MakeBlock("validation_source.medium", read_by, io::PlainKeyDocs(MediumKeys())),
+  return {io::MakeBlock("validation_source", read_by, io::DocsWith(kSourceKeys, {kSourceGravity})),
+          io::MakeBlock("validation_source.projectile", read_by, io::PlainKeyDocs(kProjectileKeys)),
+          io::MakeBlock("validation_source.medium", read_by, io::PlainKeyDocs(kMediumKeys)),
           io::MakeBlock("validation_source.measured_law.katsuragi_durian", read_by,
-                        io::DocsWith(KatsuragiDurianKeys(), {kD1, kD1Uncertainty, kKOverM, kKOverMUncertainty})),
+                        io::DocsWith(kKatsuragiDurianKeys, {kD1, kD1Uncertainty, kKOverM, kKOverMUncertainty})),
           io::MakeBlock("validation_source.measured_law.shallow_impact", read_by,
-                        io::DocsWith(ShallowImpactKeys(), {kPrefactor, kFrictionCoefficient})),
+                        io::DocsWith(kShallowImpactKeys, {kPrefactor, kFrictionCoefficient})),
           io::MakeBlock("validation_source.points", read_by,
-                        io::DocsWith(PointKeys(), {kPointSpeed, kPointDropHeight, kPointDepth, kPointStopTime,
+                        io::DocsWith(kPointKeys, {kPointSpeed, kPointDropHeight, kPointDepth, kPointStopTime,
                                                    kPointDepthUncertainty, kPointTimeUncertainty})),
           io::MakeBlock("validation_source.trends", read_by,
-                        io::DocsWith(TrendKeys(), {kTrendExponent, kTrendTolerance, kTrendGravity, kTrendSpeed})),
+                        io::DocsWith(kTrendKeys, {kTrendExponent, kTrendTolerance, kTrendGravity, kTrendSpeed})),
           io::MakeBlock("validation_source.static_bearing", read_by,
-                        io::DocsWith(BearingKeys(), {kBearingPressure, kBearingDepth, kBearingDiameter})),
-          io::MakeBlock("validation_model", read_by, io::PlainKeyDocs(ValidationModelKeys()))};
+                        io::DocsWith(kBearingKeys, {kBearingPressure, kBearingDepth, kBearingDiameter})),
+          io::MakeBlock("validation_model", read_by, io::PlainKeyDocs(kValidationModelKeys))};
 }
 
 ValidationSource LoadValidationSource(const std::string& path, SourceFileCache* cache) {
   const io::YamlFields f = io::YamlFields::LoadFile(path);
   f.RequireSchemaVersion(1);
-  f.RequireOnly(SourceKeys());
+  f.RequireOnly(kSourceKeys);
   if (f.String("type") != "validation_source") f.Fail("type", "must be validation_source, got '" + f.String("type") + "'");
   ValidationSource s;
   s.file = path;
@@ -406,7 +383,7 @@ ValidationSource LoadValidationSource(const std::string& path, SourceFileCache* 
   s.citation = f.String("citation");
   s.read_at = f.String("read_at");
   const io::YamlFields projectile = f.Child("projectile");
-  projectile.RequireOnly(ProjectileKeys());
+  projectile.RequireOnly(kProjectileKeys);
   s.pad = LoadNamed(projectile, "pad", [cache](const std::string& p) {
     return Cached(cache ? &cache->pads : nullptr, p, [](const std::string& q) { return io::LoadPad(q); });
   });
@@ -429,7 +406,7 @@ ValidationSource LoadValidationSource(const std::string& path, SourceFileCache* 
 DynamicRftModel LoadDynamicRftModel(const std::string& path) {
   const io::YamlFields f = io::YamlFields::LoadFile(path);
   f.RequireSchemaVersion(1);
-  f.RequireOnly(ValidationModelKeys());
+  f.RequireOnly(kValidationModelKeys);
   if (f.String("type") != "validation_model") f.Fail("type", "must be validation_model, got '" + f.String("type") + "'");
   DynamicRftModel m;
   m.lambda = f.Positive("inertial_drag_lambda");
