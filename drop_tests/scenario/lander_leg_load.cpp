@@ -1,6 +1,8 @@
 #include "drop_tests/scenario/lander_leg_load.h"
 
 #include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
 
 namespace touchdown::scenario {
 
@@ -14,6 +16,25 @@ double LegAxialForce(const LanderSpec& lander, const lander::LanderSample& s, in
                                    .toRotationMatrix();
   const Eigen::Vector3d axis_W = R_WB * (spec.joint_B - spec.hip_B).normalized();
   return -s.pad_force_W[leg].dot(axis_W);
+}
+
+std::array<LegLoadSummary, lander::kNumLegs> LegLoadSummaries(const LanderSpec& lander,
+                                                              const std::vector<lander::LanderSample>& trace) {
+  std::array<LegLoadSummary, lander::kNumLegs> legs;
+  for (int i = 0; i < lander::kNumLegs; ++i) {
+    const std::optional<lander::ShockAbsorber>& absorber = lander.legs[i].absorber;
+    double peak = 0.0, stroke = 0.0;
+    for (const lander::LanderSample& s : trace) {
+      peak = std::max(peak, LegAxialForce(lander, s, i));
+      stroke = std::max(stroke, std::abs(s.stroke_m[i]));
+    }
+    legs[i].peak_axial_force_N = peak;
+    if (!absorber) continue;
+    legs[i].max_stroke_m = stroke;
+    if (absorber->kind == lander::ShockAbsorber::Kind::kCrushable)
+      legs[i].stroke_left_m = std::max(absorber->stroke_limit_m - stroke, 0.0);
+  }
+  return legs;
 }
 
 }  // namespace touchdown::scenario

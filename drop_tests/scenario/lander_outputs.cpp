@@ -6,11 +6,13 @@
 #include <nlohmann/json.hpp>
 
 #include "drop_tests/formats/output_path.h"
+#include "drop_tests/scenario/lander_leg_load.h"
 #include "drop_tests/scenario/lander_plots.h"
 #include "drop_tests/scenario/lander_scenario_file.h"
 #include "drop_tests/scenario/lander_setup.h"
 #include "drop_tests/scenario/lander_trace_columns.h"
 #include "drop_tests/scenario/lander_vtk.h"
+#include "lander/multibody/static_stability.h"
 #include "rft/units.h"
 
 namespace touchdown::scenario {
@@ -61,6 +63,27 @@ nlohmann::json LanderSummaryJson(const LanderRun& run) {
       {"solver_steps", r.solver.steps},
       {"rhs_evaluations", r.solver.rhs_evaluations},
   };
+  // Per leg, pads in order: what an inspection of the gear reads after the landing.
+  nlohmann::json legs = nlohmann::json::array();
+  const std::array<LegLoadSummary, lander::kNumLegs> loads = LegLoadSummaries(run.scenario.lander, r.trace);
+  for (int i = 0; i < lander::kNumLegs; ++i) {
+    nlohmann::json leg{{"pad", i + 1}, {"peak_axial_force_N", loads[i].peak_axial_force_N}};
+    if (loads[i].max_stroke_m) leg["max_stroke_m"] = *loads[i].max_stroke_m;
+    if (loads[i].stroke_left_m) leg["stroke_left_m"] = *loads[i].stroke_left_m;
+    legs.push_back(leg);
+  }
+  j["legs"] = legs;
+  // The support polygon's edges at the end (joint centres, pads clockwise): over each, the static
+  // tip-over angle (the rotation about the edge that brings the centre of mass above it, from the
+  // attitude and sinkage the landing left; negative once outside) and the energy barrier to it.
+  nlohmann::json edges = nlohmann::json::array();
+  const lander::StateLayout layout(run.setup.model, lander::HasJanosiShear(run.setup.terrain));
+  if (r.final_state.size() == layout.size)
+    for (const lander::EdgeTipping& e : lander::EdgeTippings(run.setup.model, layout, r.final_state))
+      edges.push_back({{"pads", {e.from_leg + 1, e.to_leg + 1}},
+                       {"static_tip_angle_deg", e.tip_angle_rad / kDeg},
+                       {"barrier_J", e.barrier_J}});
+  j["support_edges_at_end"] = edges;
   if (r.rest_time_s) {
     j["rest_time_since_release_s"] = *r.rest_time_s;
     if (r.first_touchdown_s) j["time_to_rest_s"] = *r.rest_time_s - *r.first_touchdown_s;

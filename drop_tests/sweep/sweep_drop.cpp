@@ -137,18 +137,16 @@ void ApplyGroundAndMotion(scenario::LanderScenario& sc, const SweepDropParams& p
     if (p.Given(rates[k])) sc.initial.angular_rate_B[k] = p.angular_rate_rad_s[k];
 }
 
-// Over the trace: the peak axial leg load (compression positive: an absorber's force, or a rigid
-// leg's pad force along the leg axis, hip to joint) and the largest absorber stroke (NaN if no
-// leg has an absorber).
+// Over the trace: the peak axial leg load of any leg (compression positive: an absorber's force, or
+// a rigid leg's pad force along the leg axis, hip to joint) and the largest absorber stroke (NaN if
+// no leg has an absorber).
 void RecordLegLoads(const scenario::LanderSpec& lander, const lander::LanderRunResult& l, DropRecord& r) {
   bool any_absorber = false;
-  for (const scenario::LanderLegSpec& leg : lander.legs) any_absorber = any_absorber || leg.absorber.has_value();
   double peak = 0.0, stroke = 0.0;
-  for (const lander::LanderSample& s : l.trace)
-    for (int i = 0; i < lander::kNumLegs; ++i) {
-      peak = std::max(peak, scenario::LegAxialForce(lander, s, i));
-      stroke = std::max(stroke, std::abs(s.stroke_m[i]));
-    }
+  for (const scenario::LegLoadSummary& leg : scenario::LegLoadSummaries(lander, l.trace)) {
+    peak = std::max(peak, leg.peak_axial_force_N);
+    if (leg.max_stroke_m) any_absorber = true, stroke = std::max(stroke, *leg.max_stroke_m);
+  }
   r.peak_leg_force_N = peak;
   r.max_stroke_m = any_absorber ? stroke : std::nan("");
 }
