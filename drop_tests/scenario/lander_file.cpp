@@ -45,6 +45,7 @@ const io::FieldTable<LanderLegLayout>& LegNumberFields() {
       {"joint_radius_mm", &L::joint_radius_m, kMm, io::Sign::kPositive, false, false, &limits::kLanderSize_mm},
       {"hip_radius_mm", &L::hip_radius_m, kMm, io::Sign::kNonNegative, false, false, &limits::kLanderSize_mm},
       {"hip_height_mm", &L::hip_height_m, kMm, io::Sign::kPositive, false, false, &limits::kLanderSize_mm},
+      {"load_limit_N", &L::load_limit_N, 1.0, io::Sign::kPositive, true, true, &limits::kForce_N, "none"},
   };
   return fields;
 }
@@ -93,6 +94,7 @@ std::optional<lander::LegPlacementError> PlaceLegs(LanderSpec& s) {
     s.legs[i].hip_B = p.hip_B[i];
     s.legs[i].absorber = s.layout.absorber;
     s.legs[i].cone = s.layout.cone;
+    s.legs[i].load_limit_N = s.layout.load_limit_N;
   }
   return std::nullopt;
 }

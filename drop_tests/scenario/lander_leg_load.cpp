@@ -25,8 +25,10 @@ std::array<LegLoadSummary, lander::kNumLegs> LegLoadSummaries(const LanderSpec& 
     const std::optional<lander::ShockAbsorber>& absorber = lander.legs[i].absorber;
     double peak = 0.0, stroke = 0.0;
     for (const lander::LanderSample& s : trace) {
-      peak = std::max(peak, LegAxialForce(lander, s, i));
+      const double load = LegAxialForce(lander, s, i);
+      peak = std::max(peak, load);
       stroke = std::max(stroke, std::abs(s.stroke_m[i]));
+      if (!legs[i].over_limit_s && std::abs(load) > lander.legs[i].load_limit_N) legs[i].over_limit_s = s.t_s;
     }
     legs[i].peak_axial_force_N = peak;
     if (!absorber) continue;

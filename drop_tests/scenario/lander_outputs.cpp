@@ -70,6 +70,11 @@ nlohmann::json LanderSummaryJson(const LanderRun& run) {
     nlohmann::json leg{{"pad", i + 1}, {"peak_axial_force_N", loads[i].peak_axial_force_N}};
     if (loads[i].max_stroke_m) leg["max_stroke_m"] = *loads[i].max_stroke_m;
     if (loads[i].stroke_left_m) leg["stroke_left_m"] = *loads[i].stroke_left_m;
+    if (std::isfinite(run.scenario.lander.legs[i].load_limit_N)) {
+      leg["load_limit_N"] = run.scenario.lander.legs[i].load_limit_N;
+      leg["over_limit"] = loads[i].over_limit_s.has_value();
+      if (loads[i].over_limit_s) leg["over_limit_time_s"] = *loads[i].over_limit_s;
+    }
     legs.push_back(leg);
   }
   j["legs"] = legs;

@@ -8,6 +8,7 @@
 // builds and runs, lander_outputs.h reports. Schema: docs/lander_dynamics.md.
 #include <array>
 #include <map>
+#include <limits>
 #include <optional>
 #include <string>
 #include <variant>
@@ -28,6 +29,10 @@ struct LanderLegSpec {
   Eigen::Vector3d joint_B = Eigen::Vector3d::Zero();
   std::optional<lander::ShockAbsorber> absorber;
   std::optional<lander::ConeLimit> cone;
+  // The axial load (compression or tension) past which the leg fails, buckling or breaking: a limit
+  // the lander's summary checks each leg's load against. The dynamics do not change at it (the
+  // landing runs on as if the leg held). Infinite: no limit stated.
+  double load_limit_N = std::numeric_limits<double>::infinity();
 };
 
 // The legs as the lander file gives them, before the pad places the joints (LanderSpecWithPad).
@@ -35,6 +40,7 @@ struct LanderLegLayout {
   double joint_radius_m = 0.0, hip_radius_m = 0.0, hip_height_m = 0.0;  // heights above the pad bottoms
   std::optional<lander::ShockAbsorber> absorber;
   std::optional<lander::ConeLimit> cone;
+  double load_limit_N = std::numeric_limits<double>::infinity();  // every leg's (LanderLegSpec)
 };
 
 struct LanderSpec {

@@ -304,6 +304,7 @@ void WriteLanderBlock(YAML::Emitter& y, const LanderSpec& l, const FileName& fil
       y << YAML::Key << "absorber" << YAML::Value;
       WriteAbsorber(y, *leg.absorber);
     }
+    if (std::isfinite(leg.load_limit_N)) y << YAML::Key << "load_limit_N" << YAML::Value << leg.load_limit_N;
     if (leg.cone) {
       y << YAML::Key << "cone_limit" << YAML::Value << YAML::BeginMap;
       io::WriteFields(y, ConeFields(), *leg.cone);

@@ -125,5 +125,30 @@ TEST(LanderSupportEdges, LevelSymmetricStanceTipsAtTheClosedFormOverEveryEdge) {
   }
 }
 
+// A leg's stated load limit: the summary says whether and when its load passed it (case A's rigid
+// legs peak at about 101 N each), and a resolved copy of the scenario carries the limit.
+TEST(LanderLoadLimit, TheSummarySaysWhetherAndWhenEachLegPassedItsLimit) {
+  for (const double limit : {90.0, 120.0}) {
+    LanderScenario scenario = test::CoarseScenario("lander_case_A");
+    for (LanderLegSpec& leg : scenario.lander.legs) leg.load_limit_N = limit;
+    const LanderRun run = RunLanderScenario(scenario);
+    const nlohmann::json legs = LanderSummaryJson(run)["legs"];
+    for (int i = 0; i < lander::kNumLegs; ++i) {
+      double first = NAN;
+      for (const lander::LanderSample& s : run.result.trace)
+        if (std::isnan(first) && std::abs(LegAxialForce(scenario.lander, s, i)) > limit) first = s.t_s;
+      EXPECT_EQ(legs[i]["load_limit_N"].get<double>(), limit);
+      EXPECT_EQ(legs[i]["over_limit"].get<bool>(), !std::isnan(first)) << limit;
+      EXPECT_EQ(legs[i]["over_limit"].get<bool>(), legs[i]["peak_axial_force_N"].get<double>() > limit);
+      if (!std::isnan(first)) EXPECT_EQ(legs[i]["over_limit_time_s"].get<double>(), first);
+      else EXPECT_FALSE(legs[i].contains("over_limit_time_s"));
+    }
+  }
+  // Without a limit the summary states none.
+  const nlohmann::json legs = LanderSummaryJson(RunLanderScenario(test::CoarseScenario("lander_case_A")))["legs"];
+  EXPECT_FALSE(legs[0].contains("load_limit_N"));
+  EXPECT_FALSE(legs[0].contains("over_limit"));
+}
+
 }  // namespace
 }  // namespace touchdown::scenario

@@ -101,6 +101,9 @@ TEST(LanderRanges, LanderMagnitudes) {
                 "legs.absorber.stiffness_N_m", "and at most 1e+12 N/m");
   ExpectRefused(LanderError("legs.absorber", "{kind: spring_damper, stiffness_N_m: 1e4, damping_N_s_m: 1e300}"),
                 "legs.absorber.damping_N_s_m", "between 0 and 1e+10 N s/m");
+  ExpectRefused(LanderError("legs.load_limit_N", "-5"), "legs.load_limit_N", "N");
+  ExpectRefused(LanderError("legs.load_limit_N", "1e12"), "legs.load_limit_N", "N");
+  EXPECT_EQ(LanderError("legs.load_limit_N", "2500"), "") << "a limit in range loads";
 }
 
 // Legs that cannot be placed on the lander's pad (lander/multibody/leg_placement.h) are refused

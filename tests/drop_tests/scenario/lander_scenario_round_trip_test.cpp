@@ -43,6 +43,7 @@ void ExpectSameScenario(const LanderScenario& a, const LanderScenario& b) {
     EXPECT_EQ(a.lander.legs[i].hip_B, b.lander.legs[i].hip_B);
     EXPECT_EQ(a.lander.legs[i].absorber.has_value(), b.lander.legs[i].absorber.has_value());
     EXPECT_EQ(a.lander.legs[i].cone.has_value(), b.lander.legs[i].cone.has_value());
+    EXPECT_EQ(a.lander.legs[i].load_limit_N, b.lander.legs[i].load_limit_N);
   }
   EXPECT_EQ(a.ground.height_m, b.ground.height_m);
   EXPECT_EQ(a.ground.slope_rad, b.ground.slope_rad);
