@@ -95,6 +95,26 @@ double MapCoordinate(const Study& study, const MapAxis& axis, int64_t index) {
 
 bool Tipped(const DropRecord& r) { return r.tipped_over == 1.0; }
 
+std::optional<LegLoadLimitCount> CountOverLegLoadLimit(const Study& study, const std::vector<DropRecord>& records) {
+  if (!study.plan.lander) return std::nullopt;
+  // Every leg carries the lander file's one limit (legs.load_limit_N); none: infinite.
+  const double limit = study.plan.lander->lander.legs[0].load_limit_N;
+  if (!std::isfinite(limit)) return std::nullopt;
+  LegLoadLimitCount c;
+  c.load_limit_N = limit;
+  int64_t landings = 0;
+  for (const DropRecord& r : records) {
+    if (!r.ok) continue;
+    ++landings;
+    const bool over = r.peak_leg_force_N > limit;
+    c.over_limit += over;
+    c.tipped_or_over_limit += over || Tipped(r);
+  }
+  c.over_limit_interval = ClopperPearson(c.over_limit, landings);
+  c.tipped_or_over_limit_interval = ClopperPearson(c.tipped_or_over_limit, landings);
+  return c;
+}
+
 bool StayedUp(const DropRecord& r) { return r.ok && !Tipped(r); }
 
 bool MarginAgreesWithOutcome(const DropRecord& r) {
@@ -126,6 +146,7 @@ StudySummary Summarise(const Study& study, const std::vector<DropRecord>& record
   }
   s.tip_over_probability = s.landings > 0 ? static_cast<double>(s.tipped) / s.landings : std::nan("");
   s.interval = ClopperPearson(s.tipped, s.landings);
+  s.leg_load_limit = CountOverLegLoadLimit(study, records);
   for (const StudyMetric& m : StudyMetrics()) {
     std::vector<double> v;
     for (const DropRecord* r : ok)
@@ -316,6 +337,22 @@ nlohmann::json SummaryJson(const Study& study, const StudySummary& s) {
       {"landings_checked", s.margin_checked},
       {"disagreements", s.margin_disagreements},
       {"disagreeing_landings", s.margin_disagreeing}};
+  if (s.leg_load_limit && s.landings > 0) {
+    const LegLoadLimitCount& c = *s.leg_load_limit;
+    const double n = static_cast<double>(s.landings);
+    summary["leg_load_limit"] = {
+        {"load_limit_N", c.load_limit_N},
+        {"landings_over_limit", c.over_limit},
+        {"over_limit_probability", c.over_limit / n},
+        {"over_limit_probability_interval_95", {c.over_limit_interval.low, c.over_limit_interval.high}},
+        {"tipped_or_over_limit_probability", c.tipped_or_over_limit / n},
+        {"tipped_or_over_limit_probability_interval_95",
+         {c.tipped_or_over_limit_interval.low, c.tipped_or_over_limit_interval.high}},
+        {"meaning",
+         "landings whose peak axial leg load (compression, the largest of any leg over the trace's samples; a peak "
+         "between samples is not seen) passed the lander file's legs.load_limit_N, and those that tipped over or "
+         "passed it; a check only: each landing ran on as if its legs held"}};
+  }
   if (s.recheck) summary["recheck"] = RecheckJson(*s.recheck);
   if (s.joint_range) summary["joint_range_sensitivity"] = JointRangeJson(*s.joint_range);
   if (study.soil_uncertainty) {

@@ -43,6 +43,15 @@ struct MapCell {
 // A pad whose axis is more than this from the body's z axis has turned beyond edge-on [deg].
 inline constexpr double kEdgeOnSwingDeg = 90.0;
 
+// Landings whose peak axial leg load (sweep::DropRecord::peak_leg_force_N: compression, the largest
+// of any leg over the trace's samples) passed the lander's stated limit: a check, the landing itself
+// ran on as if every leg held.
+struct LegLoadLimitCount {
+  double load_limit_N = 0.0;
+  int64_t over_limit = 0, tipped_or_over_limit = 0;
+  BinomialInterval over_limit_interval, tipped_or_over_limit_interval;  // 95 %, Clopper-Pearson
+};
+
 struct StudySummary {
   int64_t planned = 0;   // landings in the plan
   int64_t landings = 0;  // completed (the statistics are over these)
@@ -67,6 +76,9 @@ struct StudySummary {
   // The follow-ups (study_followups.h) the records above include; absent: not run.
   std::optional<RecheckReport> recheck;
   std::optional<JointRangeReport> joint_range;
+  // A lander whose file states legs.load_limit_N: the landings whose peak leg load passed it, and
+  // those that tipped over or passed it, each with its 95 % interval (Clopper-Pearson).
+  std::optional<LegLoadLimitCount> leg_load_limit;
   // A study with soil_uncertainty: the variance split and P(tip) at the soil's interval ends.
   std::optional<SoilSplit> soil_split;
   // ... and its landings paired with the same ones at the soils' best values (soil_pairing.h).
@@ -78,6 +90,10 @@ double MapCoordinate(const Study& study, const MapAxis& axis, int64_t index);
 
 // Whether a landing tipped over (sweep::DropRecord::tipped_over is 1).
 bool Tipped(const sweep::DropRecord& r);
+
+// The landings over the lander's stated leg load limit (LegLoadLimitCount); none without a limit or
+// for a sweep that is not a lander's.
+std::optional<LegLoadLimitCount> CountOverLegLoadLimit(const Study& study, const std::vector<sweep::DropRecord>& records);
 // Whether a landing completed without tipping over: the landings percentiles, exceedance curves
 // and histograms describe.
 bool StayedUp(const sweep::DropRecord& r);

@@ -55,6 +55,31 @@ std::vector<sweep::DropRecord> HandMadeRecords() {
 
 struct StudySummaryTest : testing_scratch::ScratchDirTest {};
 
+// A lander file's leg load limit: landings whose peak leg load passed it are counted, alone and with
+// the tip-overs, each with its exact interval; without a limit the summary has no such entry.
+TEST_F(StudySummaryTest, LegLoadLimitCountsLandingsOverItAndTheirUnionWithTipOvers) {
+  Study study = LoadStudy(Write("study.yaml", SummaryStudyText()));
+  std::vector<sweep::DropRecord> records = HandMadeRecords();
+  for (sweep::DropRecord& r : records) r.peak_leg_force_N = 100.0 * r.index;  // over 450 N: 5, 6, 8, 9 (7 failed)
+  EXPECT_FALSE(Summarise(study, records).leg_load_limit.has_value());
+  EXPECT_FALSE(SummaryJson(study, Summarise(study, records)).contains("leg_load_limit"));
+  for (scenario::LanderLegSpec& leg : study.plan.lander->lander.legs) leg.load_limit_N = 450.0;
+  const StudySummary s = Summarise(study, records);
+  ASSERT_TRUE(s.leg_load_limit.has_value());
+  EXPECT_EQ(s.leg_load_limit->over_limit, 4);
+  EXPECT_EQ(s.leg_load_limit->tipped_or_over_limit, 5);  // tipped 3, 6, 9: adds 3
+  const BinomialInterval over = ClopperPearson(4, 9), either = ClopperPearson(5, 9);
+  const nlohmann::json j = SummaryJson(study, s)["leg_load_limit"];
+  EXPECT_EQ(j["load_limit_N"].get<double>(), 450.0);
+  EXPECT_EQ(j["landings_over_limit"].get<int64_t>(), 4);
+  EXPECT_DOUBLE_EQ(j["over_limit_probability"].get<double>(), 4.0 / 9.0);
+  EXPECT_EQ(j["over_limit_probability_interval_95"][0].get<double>(), over.low);
+  EXPECT_EQ(j["over_limit_probability_interval_95"][1].get<double>(), over.high);
+  EXPECT_DOUBLE_EQ(j["tipped_or_over_limit_probability"].get<double>(), 5.0 / 9.0);
+  EXPECT_EQ(j["tipped_or_over_limit_probability_interval_95"][0].get<double>(), either.low);
+  EXPECT_EQ(j["tipped_or_over_limit_probability_interval_95"][1].get<double>(), either.high);
+}
+
 TEST_F(StudySummaryTest, CountsProbabilityAndPercentilesOfHandMadeRecords) {
   const Study study = LoadStudy(Write("study.yaml", SummaryStudyText()));
   const StudySummary s = Summarise(study, HandMadeRecords());
