@@ -82,7 +82,7 @@ nlohmann::json LanderSummaryJson(const LanderRun& run) {
   // tip-over angle (the rotation about the edge that brings the centre of mass above it, from the
   // attitude and sinkage the landing left; negative once outside) and the energy barrier to it.
   nlohmann::json edges = nlohmann::json::array();
-  const lander::StateLayout layout(run.setup.model, lander::HasJanosiShear(run.setup.terrain));
+  const lander::StateLayout layout = lander::RunStateLayout(run.setup.model, run.setup.terrain);
   if (r.final_state.size() == layout.size)
     for (const lander::EdgeTipping& e : lander::EdgeTippings(run.setup.model, layout, r.final_state))
       edges.push_back({{"pads", {e.from_leg + 1, e.to_leg + 1}},

@@ -169,7 +169,7 @@ LanderRun RunLanderScenario(const LanderScenario& scenario, lander::LanderSetup 
   } catch (const integ::IntegrationFailure& e) {
     throw integ::IntegrationFailure(which + e.what());
   }
-  const lander::StateLayout L(run.setup.model);
+  const lander::StateLayout L = lander::RunStateLayout(run.setup.model, run.setup.terrain);
   const lander::LanderPose pose = lander::ComputePose(run.setup.model, L, run.result.final_state);
   for (int i = 0; i < lander::kNumLegs; ++i) {
     const Eigen::Vector3d& p = pose.pads[i].p_WJ;

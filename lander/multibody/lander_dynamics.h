@@ -164,6 +164,12 @@ struct GivenSoil {
 // the pad's next touchdown (j does not grow in the air, so that is the reset at lift-off).
 bool HasJanosiShear(const rft::Terrain& terrain);
 
+// The state layout a landing of `model` on `terrain` runs with (the shear states when a soil has
+// them): the one the hybrid run integrates, for anything that reads its states afterwards.
+inline StateLayout RunStateLayout(const LanderModel& model, const rft::Terrain& terrain) {
+  return StateLayout(model, HasJanosiShear(terrain));
+}
+
 // Pose and velocities of all bodies from y.
 LanderPose ComputePose(const LanderModel& model, const StateLayout& layout, const Eigen::Ref<const Eigen::VectorXd>& y);
 

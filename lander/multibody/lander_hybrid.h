@@ -21,7 +21,7 @@ class LanderHybrid {
  public:
   LanderHybrid(const LanderModel& model, const rft::Terrain& terrain, const LanderRunOptions& options,
                LanderRunResult& result)
-      : model_(model), L_(model, HasJanosiShear(terrain)), terrain_(terrain), options_(options), result_(result) {
+      : model_(model), L_(RunStateLayout(model, terrain)), terrain_(terrain), options_(options), result_(result) {
     for (int i = 0; i < kNumLegs; ++i) modes_.stroke[i] = StrokeMode::kLocked;
     data_.evaluation.u_dot = Eigen::VectorXd::Zero(L_.nu);
     last_rhs_y_ = Eigen::VectorXd::Zero(L_.size);
