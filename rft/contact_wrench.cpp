@@ -565,6 +565,10 @@ ContactWrench ContactWrenchImpl(const SurfaceElements& elements, const PadKinema
 ContactWrench ComputeContactWrench(const SurfaceElements& elements, const PadKinematics& kinematics,
                                    const GroundSurface& ground, const StressLaw3D& law,
                                    const PadLevelTerms& pad_terms) {
+  // A surface that is a plane without being a PlaneGround (a flat height field) is summed as that
+  // plane: the exact path, bit for bit the level ground's.
+  if (const PlaneGround* plane = ground.ExactPlane(); plane != nullptr && plane != &ground)
+    return ComputeContactWrench(elements, kinematics, *plane, law, pad_terms);
   const bool compaction = pad_terms.has_compaction();
   const bool footprint = pad_terms.has_added_mass();
   const bool power = pad_terms.has_power_depth();

@@ -30,7 +30,7 @@ void FormFixedPoseIntegrals(const SurfaceElements& elements, const Eigen::Matrix
   PadKinematics k;
   k.R_WB = R_WB;
   k.p_WB = p_WB;
-  const auto* plane = dynamic_cast<const PlaneGround*>(&ground);
+  const auto* plane = ground.ExactPlane();
   const bool cull = elements.HasBounds() && plane != nullptr;
   out->classes = elements.HasBounds() && elements.class_normal_B.cols() > 0;
   PlaneDepthInB depth;

@@ -8,7 +8,7 @@ namespace touchdown::rft {
 double DeepestVertexDepth(const Eigen::Matrix3Xd& vertices_B, const Eigen::Matrix3d& R_WB,
                           const Eigen::Vector3d& p_WB, const GroundSurface& ground) {
   double deepest = -std::numeric_limits<double>::infinity();
-  if (const auto* plane = dynamic_cast<const PlaneGround*>(&ground)) {
+  if (const auto* plane = ground.ExactPlane()) {
     // depth(p_W) = h0 + sx x + sy y - z = h0 + g_W . p_W, with p_W = p_WB + R_WB p_B.
     const Eigen::Vector3d g_W(plane->slope_x(), plane->slope_y(), -1.0);
     const double depth0 = plane->height_at_origin_m() + g_W.dot(p_WB);

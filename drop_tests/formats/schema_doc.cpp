@@ -11,9 +11,10 @@ namespace touchdown::io {
 namespace {
 // Key suffixes and the units they name, the longest of a family first ("_m_s2" before "_m_s"
 // before "_s"), so the first that ends a key is its unit.
-constexpr std::array<std::pair<std::string_view, std::string_view>, 31> kSuffixUnits{{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 32> kSuffixUnits{{
     {"_kN_m_n1", "kN/m^(n+1)"}, {"_kN_m_n2", "kN/m^(n+2)"}, {"_N_m_s_rad", "N m s/rad"},
     {"_N_m_rad", "N m/rad"},    {"_N_s_m3", "N s/m^3"},     {"_N_s_m", "N s/m"},
+    {"_per_m2", "1/m^2"},
     {"_N_cm3", "N/cm^3"},       {"_N_cm2", "N/cm^2"},       {"_kg_m3", "kg/m^3"},
     {"_kg_m2", "kg m^2"},       {"_m_s2", "m/s^2"},         {"_deg_s", "deg/s"},
     {"_rad_s", "rad/s"},        {"_mm_s", "mm/s"},          {"_m_s", "m/s"},

@@ -108,6 +108,47 @@ SoilFieldSpec ReadSoilField(const io::YamlFields& f, const SoilCheck& check_soil
   return field;
 }
 
+// `ground.terrain` (lander_terrain.h): the raster's path relative to the scenario's folder (or
+// $TOUCHDOWN_DATA_DIR/...), an optional window [x_min, y_min, x_max, y_max] and origin [x, y] in the
+// raster's coordinates.
+TerrainFileSpec ReadTerrain(const io::YamlFields& t) {
+  t.RequireOnly(kTerrainKeys);
+  TerrainFileSpec terrain;
+  terrain.file = io::PathFromOutput(t.String("file"), fs::path(t.file()).parent_path().string());
+  if (t.Has("window_m")) {
+    const std::vector<double> w = FixedList(t, "window_m", 4);
+    if (!(w[0] < w[2] && w[1] < w[3]))
+      t.Fail("window_m", "must be [x_min, y_min, x_max, y_max] with x_min < x_max and y_min < y_max");
+    terrain.window = io::RasterWindow{w[0], w[1], w[2], w[3]};
+  }
+  if (t.Has("origin_m")) {
+    const std::vector<double> o = FixedList(t, "origin_m", 2);
+    terrain.origin_m = Eigen::Vector2d(o[0], o[1]);
+  }
+  return terrain;
+}
+
+// `ground.craters` (lander_terrain.h, rft/crater_population.h): the grid's size only without a
+// terrain file (with one, the craters go onto its grid); at most 5001 nodes a side.
+CraterFieldSpec ReadCraters(const io::YamlFields& c, bool on_terrain) {
+  c.RequireOnly(io::FieldKeys(CraterFields()));
+  CraterFieldSpec craters;
+  io::ReadFields(c, CraterFields(), craters);
+  if (!(craters.seed <= 9.0e15 && craters.seed == std::floor(craters.seed)))
+    c.Fail("seed", "must be a whole number from 0 to 9e15");
+  if (!(craters.min_diameter_m < craters.max_diameter_m))
+    c.Fail("max_diameter_m", "must be above min_diameter_m (" + io::FormatNumber(craters.min_diameter_m) + " m)");
+  if (!(craters.degradation_min <= craters.degradation_max && craters.degradation_max < 1.0))
+    c.Fail("degradation_max", "must satisfy degradation_min <= degradation_max < 1");
+  for (const char* key : {"cell_size_m", "half_extent_m"}) {
+    if (on_terrain && c.Has(key)) c.Fail(key, "only without a terrain file (the craters go onto its grid)");
+    if (!on_terrain && !c.Has(key)) c.Fail(key, "missing (the craters' grid without a terrain file)");
+  }
+  if (!on_terrain && !(craters.half_extent_m / craters.cell_size_m <= 2500.0))
+    c.Fail("half_extent_m", "makes more than 5001 nodes a side (half_extent_m / cell_size_m at most 2500)");
+  return craters;
+}
+
 // The ground: plane or slope, the 3D law, the default soil and the soil patches (every soil
 // loaded and checked against the law at `gravity_m_s2`).
 // A resolved copy's ground also has its `soils` and `model` (checked and read by the caller).
@@ -152,6 +193,22 @@ LanderGroundSpec ReadGround(const io::YamlFields& g, double gravity_m_s2, bool r
     }
   }
   if (g.Has("soil_field")) ground.soil_field = ReadSoilField(g.Child("soil_field"), check_soil);
+  // The height field, built once here for every landing of the scenario (lander_terrain.h).
+  LanderHeightField& field = ground.height_field;
+  if (g.Has("terrain")) field.terrain = ReadTerrain(g.Child("terrain"));
+  if (g.Has("craters")) field.craters = ReadCraters(g.Child("craters"), field.terrain.has_value());
+  if (field.terrain && (ground.slope_rad != 0.0 || ground.downhill_azimuth_rad != 0.0))
+    g.Fail(ground.slope_rad != 0.0 ? "slope_deg" : "downhill_azimuth_deg",
+           "only without a terrain file (the terrain gives the slopes)");
+  if (field.has_height_field()) {
+    const double t = std::tan(ground.slope_rad), az = ground.downhill_azimuth_rad;
+    field.built_for = {ground.height_m, -t * std::cos(az), -t * std::sin(az)};
+    try {
+      field.surface = BuildHeightField(field, field.built_for[0], field.built_for[1], field.built_for[2], g.file());
+    } catch (const InputError& e) {
+      g.Fail(field.terrain ? "terrain" : "craters", e.what());
+    }
+  }
   return ground;
 }
 
@@ -284,6 +341,8 @@ std::vector<io::BlockDoc> LanderScenarioSchema() {
           io::MakeBlock("lander_scenario.ground.patches", read_by, io::DocsOf(PatchKeys())),
           io::MakeBlock("lander_scenario.ground.soil_field", read_by,
                         io::DocsWith(kSoilFieldKeys, {kCellSizeKey, kHalfExtentKey})),
+          io::MakeBlock("lander_scenario.ground.terrain", read_by, io::PlainKeyDocs(kTerrainKeys)),
+          io::MakeBlock("lander_scenario.ground.craters", read_by, io::DocsOf(CraterFields())),
           io::MakeBlock("lander_scenario.initial", read_by, io::DocsOf(InitialKeys(), {kReleaseBodyComKey})),
           io::MakeBlock("lander_scenario.simulation", read_by, io::DocsOf(SimulationKeys())),
           io::MakeBlock("lander_scenario.paper", read_by, io::DocsOf(PaperKeys()))};

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "drop_tests/scenario/soil_field.h"
+#include "drop_tests/scenario/lander_terrain.h"
 #include "drop_tests/catalog/catalog.h"
 #include "drop_tests/model/model_file.h"
 #include "drop_tests/scenario/paper_reading.h"
@@ -76,6 +77,7 @@ struct LanderGroundSpec {
   std::string default_soil;
   std::vector<LanderPatchSpec> patches;
   std::optional<SoilFieldSpec> soil_field;  // a random patch field, after the patches (soil_field.h)
+  LanderHeightField height_field;  // a terrain raster and/or craters instead of the plane (lander_terrain.h)
   // Every soil the ground names (the default, the patches', the field's), by its reference, as
   // loaded and checked against `law` when the scenario was read: a setup takes them from here
   // instead of reading the files again. Empty for a ground built in memory (then read from files).

@@ -90,6 +90,23 @@ const io::FieldTable<LanderGroundSpec>& GroundNumberFields() {
   return fields;
 }
 
+const io::FieldTable<CraterFieldSpec>& CraterFields() {
+  using C = CraterFieldSpec;
+  using io::Sign;
+  static const io::FieldTable<C> fields{
+      {"cumulative_per_m2", &C::cumulative_per_m2, 1.0, Sign::kNonNegative, false},
+      {"exponent", &C::exponent, 1.0, Sign::kPositive},
+      {"min_diameter_m", &C::min_diameter_m, 1.0, Sign::kPositive, false},
+      {"max_diameter_m", &C::max_diameter_m, 1.0, Sign::kPositive, false},
+      {"degradation_min", &C::degradation_min, 1.0, Sign::kNonNegative},
+      {"degradation_max", &C::degradation_max, 1.0, Sign::kNonNegative},
+      {"cell_size_m", &C::cell_size_m, 1.0, Sign::kPositive, true, true, nullptr, "without `terrain`: *required*"},
+      {"half_extent_m", &C::half_extent_m, 1.0, Sign::kPositive, true, true, nullptr, "without `terrain`: *required*"},
+      {"seed", &C::seed, 1.0, Sign::kNonNegative, false},
+  };
+  return fields;
+}
+
 const io::FieldTable<LanderInitialSpec>& AttitudeNumberFields() {
   using I = LanderInitialSpec;
   static const io::FieldTable<I> fields{
@@ -169,6 +186,24 @@ const io::KeyTable<ResolvedToWrite>& GroundKeys() {
                  [](Y& y, const W& w) { y << w.file(w.s.model->source); }});
     k.push_back({"patches", io::Always<W>, [](Y& y, const W& w) { WritePatches(y, w.setup.terrain); }});
     k.push_back({"soil_field"});
+    k.push_back({"terrain", [](const W& w) { return w.s.ground.height_field.terrain.has_value(); },
+                 [](Y& y, const W& w) {
+                   const TerrainFileSpec& t = *w.s.ground.height_field.terrain;
+                   y << YAML::BeginMap << YAML::Key << "file" << YAML::Value << w.file(t.file);
+                   if (t.window)
+                     y << YAML::Key << "window_m" << YAML::Value << YAML::Flow << YAML::BeginSeq << t.window->x_min_m
+                       << t.window->y_min_m << t.window->x_max_m << t.window->y_max_m << YAML::EndSeq;
+                   if (t.origin_m)
+                     y << YAML::Key << "origin_m" << YAML::Value << YAML::Flow << YAML::BeginSeq << t.origin_m->x()
+                       << t.origin_m->y() << YAML::EndSeq;
+                   y << YAML::EndMap;
+                 }});
+    k.push_back({"craters", [](const W& w) { return w.s.ground.height_field.craters.has_value(); },
+                 [](Y& y, const W& w) {
+                   y << YAML::BeginMap;
+                   io::WriteFields(y, CraterFields(), *w.s.ground.height_field.craters);
+                   y << YAML::EndMap;
+                 }});
     return k;
   }();
   return keys;

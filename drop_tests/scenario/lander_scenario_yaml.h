@@ -45,6 +45,9 @@ void WriteAbsorber(YAML::Emitter& y, const lander::ShockAbsorber& a);
 const io::FieldTable<LanderGroundSpec>& GroundNumberFields();
 const io::FieldTable<LanderInitialSpec>& AttitudeNumberFields();
 const io::FieldTable<lander::LanderRunOptions>& RunNumberFields();
+// ground.craters (lander_terrain.h) and ground.terrain's keys (`file`, `window_m`, `origin_m`).
+const io::FieldTable<CraterFieldSpec>& CraterFields();
+inline const std::vector<std::string> kTerrainKeys{"file", "window_m", "origin_m"};
 inline constexpr const char* kReleaseBodyComKey = "release_body_com_m";
 // The scenario's numbers read on their own: the loader reads and the reference documents each
 // from its entry here.

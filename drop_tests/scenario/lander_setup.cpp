@@ -70,9 +70,10 @@ lander::LanderSetup ResolveLander(const LanderScenario& sc, const LanderSoilCata
   out.options = sc.options;
   const lander::LanderModel& m = out.model;
 
-  // Ground: z = h0 - tan(slope) (x cos(az) + y sin(az)).
+  // Ground: z = h0 - tan(slope) (x cos(az) + y sin(az)), or the scenario's height field.
   const double t = std::tan(sc.ground.slope_rad), az = sc.ground.downhill_azimuth_rad;
-  out.terrain.surface = std::make_shared<rft::PlaneGround>(sc.ground.height_m, -t * std::cos(az), -t * std::sin(az));
+  out.terrain.surface =
+      GroundSurfaceOf(sc.ground.height_field, sc.ground.height_m, -t * std::cos(az), -t * std::sin(az), sc.source);
   std::vector<std::string> soil_names{sc.ground.default_soil};
   auto soil_index = [&](const std::string& name) {
     for (size_t k = 0; k < soil_names.size(); ++k)
@@ -114,6 +115,12 @@ lander::LanderSetup ResolveLander(const LanderScenario& sc, const LanderSoilCata
   }
   s.v_WB_W = Eigen::Vector3d(ic.horizontal_velocity_m_s.x(), ic.horizontal_velocity_m_s.y(), -vz_down);
   s.p_WB.z() = lander::BodyHeightForClearance(m, out.terrain, s, clearance);
+  if (sc.ground.height_field.has_height_field()) {  // every pad starts over the field, a pad's width inside
+    std::vector<Eigen::Vector2d> joints_W;
+    for (int i = 0; i < lander::kNumLegs; ++i) joints_W.push_back((s.p_WB + R_WB * m.legs[i].joint_B).head<2>());
+    const double pad_reach = m.legs[0].pad->vertices_B.topRows<2>().colwise().norm().maxCoeff();
+    RequireOnHeightField(sc.ground.height_field, *out.terrain.surface, joints_W, pad_reach, sc.source);
+  }
 
   for (const LanderPatchSpec& p : sc.ground.patches) {
     rft::SoilPatch patch{p.name, {}, soil_index(p.soil)};

@@ -58,7 +58,7 @@ ContactSensitivity PadSensitivity(const LanderModel& model, const rft::Terrain& 
                                   const rft::ContactWrench& w0, const SensitivitySteps& h, bool attitude,
                                   long* contacts) {
   const rft::SoilContactModel& contact = terrain.soils[terrain.SoilAt(f.p_WJ.x(), f.p_WJ.y())].contact;
-  const auto* plane = dynamic_cast<const rft::PlaneGround*>(terrain.surface.get());
+  const auto* plane = terrain.surface->ExactPlane();
   ContactSensitivity D = ContactSensitivity::Zero();
   for (int k = 0; k < 12; ++k) {
     if (k / 3 == 1 && !attitude) continue;

@@ -28,7 +28,7 @@ FreePadDynamics::FreePadDynamics(const geom::PadBody& body, const rft::Terrain& 
       I_inv_(body.inertia_com_B.inverse()),
       radius_(BodyRadius(body)) {
   for (const rft::TerrainSoil& soil : terrain.soils) shear_state_ |= soil.contact.has_janosi_shear();
-  if (const auto* plane = dynamic_cast<const rft::PlaneGround*>(&ground_)) {
+  if (const auto* plane = ground_.ExactPlane()) {
     depth_only_ = true;
     g_W_ = Eigen::Vector3d(plane->slope_x(), plane->slope_y(), -1.0);
   }

@@ -567,6 +567,16 @@ void AddMessageCases(std::vector<Case>& c) {
   c.push_back({"lander YAML", "patch polygon with no area (corners on a line)", "lander flat_polygon.yaml --out out_u21",
                {{"flat_polygon.yaml", Lander(ground + "ground: {soil: fjs1_lp, patches: [{soil: fjs1_cp, "
                                                       "polygon_m: [[0, 0], [1, 1], [2, 2]]}]}\n")}}});
+  const std::string asc_header = "ncols 3\nnrows 3\nxllcorner 0\nyllcorner 0\ncellsize 0.1\n";
+  c.push_back({"terrain raster", "a row one value short", "lander short_row.yaml --out out_t1",
+               {{"short_row.yaml", Lander(ground + "ground: {soil: fjs1_lp, terrain: {file: short_row.asc}}\n")},
+                {"short_row.asc", asc_header + "0 0 0\n0 0\n0 0 0\n"}}});
+  c.push_back({"terrain raster", "NODATA inside the window", "lander nodata.yaml --out out_t2",
+               {{"nodata.yaml", Lander(ground + "ground: {soil: fjs1_lp, terrain: {file: nodata.asc}}\n")},
+                {"nodata.asc", asc_header + "NODATA_value -9999\n0 0 0\n0 -9999 0\n0 0 0\n"}}});
+  c.push_back({"terrain raster", "the pads start outside a 20 cm raster", "lander small_site.yaml --out out_t3",
+               {{"small_site.yaml", Lander(ground + "ground: {soil: fjs1_lp, terrain: {file: small_site.asc}}\n")},
+                {"small_site.asc", asc_header + "0 0 0\n0 0 0\n0 0 0\n"}}});
   c.push_back({"mesh", "two separate boxes (two shells)", "force --pad two_shells.yaml --soil fjs1_lp --depth 0.002",
                {{"two_shells.yaml", MeshPad("two_shells.off")}, {"two_shells.off", TwoSeparateBoxesOff()}}});
   c.push_back({"sweep results", "merge the same shard twice", "merge out_w9 ./out_w9 --out out_u23"});

@@ -9,6 +9,7 @@
 
 #include "rft/contact_wrench.h"
 #include "rft/dynamic_term.h"
+#include "rft/height_field_ground.h"
 #include "rft/li2013_3d.h"
 #include "tests/rft/pad_meshes.h"
 
@@ -49,12 +50,17 @@ TEST(RftContactWrench, DoesNotAllocate) {
   class Bumpy final : public GroundSurface {
     double Height(double x, double y) const override { return 0.002 * x * y; }
   } bumpy;
+  HeightGrid grid{.x0_m = -0.2, .y0_m = -0.2, .cell_m = 0.04, .nx = 11, .ny = 11, .heights_m = {}};
+  for (int j = 0; j < grid.ny; ++j)
+    for (int i = 0; i < grid.nx; ++i) grid.heights_m.push_back(0.001 * ((i * 7 + j * 3) % 5));
+  const HeightFieldGround field(grid);
   PadKinematics k;
   k.R_WB = testing::RotX(0.2);
   k.p_WB = Eigen::Vector3d(0, 0, -0.008);
   k.v_WB_W = Eigen::Vector3d(0.3, 0.1, -1.0);
   for (const GroundSurface* ground :
-       {static_cast<const GroundSurface*>(&plane), static_cast<const GroundSurface*>(&bumpy)})
+       {static_cast<const GroundSurface*>(&plane), static_cast<const GroundSurface*>(&bumpy),
+        static_cast<const GroundSurface*>(&field)})
     for (double spin : {0.0, 2.0}) {
       k.w_WB_W = Eigen::Vector3d(0, 0, spin);
       allocations = 0;
