@@ -22,7 +22,7 @@ struct DiagnoseArgs {
   double min_step_explained = gap::DiagnoseOptions{}.min_step_explained;
   std::vector<std::string> fit_on;
   bool no_pairs = false, law_candidate = false, no_drop_nuisances = false, floor_from_base = false,
-       count_stop_samples = false, search_within_floor = false;
+       count_stop_samples = false, search_within_floor = false, no_refit_drops = false;
   std::string rig_offsets = "every";
 };
 }  // namespace
@@ -59,6 +59,10 @@ void AddDiagnoseCommand(CLI::App& app) {
   cmd->add_flag("--no-drop-nuisances", args->no_drop_nuisances,
                 "fit every drop at its nominal strength, speed and touchdown time (the workflow before per-drop "
                 "scatter was modelled; docs/model_gap.md)");
+  cmd->add_flag("--no-refit-drops", args->no_refit_drops,
+                "keep each training drop's nuisances where the joint fit left them, as the release before (by "
+                "default each is fitted again alone from a fresh scan of its touchdown time after every full fit; "
+                "docs/model_gap.md)");
   cmd->add_flag("--floor-from-base", args->floor_from_base,
                 "read the replicates' floor from the base model's residuals alone, as the release before (by "
                 "default it is read from each fully fitted candidate's too and the lowest kept; docs/model_gap.md)");
@@ -77,6 +81,7 @@ void AddDiagnoseCommand(CLI::App& app) {
     o.rig_offsets = gap::ParseRigOffsets(args->rig_offsets, "command line", "--rig-offsets");
     o.stop_within_floor = !args->search_within_floor;
     o.drop_nuisances = !args->no_drop_nuisances;
+    o.refit_drops = !args->no_refit_drops;
     o.floor_from_best_model = !args->floor_from_base;
     o.skip_stop_samples = !args->count_stop_samples;
     o.threads = io::ThreadsFor(args->threads);

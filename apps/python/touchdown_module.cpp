@@ -386,7 +386,7 @@ std::string Diagnose(const std::string& measured, const std::string& model, cons
                      const std::string& base, const std::string& sensor_sampling,
                      const std::vector<std::string>& fit_on, bool drop_nuisances, bool floor_from_base,
                      bool count_stop_samples, bool search_within_floor, const std::string& rig_offsets,
-                     py::object progress_arg) {
+                     bool refit_drops, py::object progress_arg) {
   const int threads = ThreadsArgument(threads_arg, "touchdown.diagnose");
   const auto fail = [](const std::string& field, const std::string& allowed, const std::string& value) {
     throw MakeInputError("touchdown.diagnose", field, "must be " + allowed + ", got '" + value + "'");
@@ -410,6 +410,7 @@ std::string Diagnose(const std::string& measured, const std::string& model, cons
     o.base = diagnose_base;
     o.sensor_sampling = sampling;  // nullopt: auto
     o.drop_nuisances = drop_nuisances;
+    o.refit_drops = refit_drops;
     o.floor_from_best_model = !floor_from_base;
     o.skip_stop_samples = !count_stop_samples;
     o.stop_within_floor = !search_within_floor;
@@ -530,7 +531,8 @@ PYBIND11_MODULE(_touchdown, m) {
         py::arg("pairs"), py::arg("min_step_explained"), py::arg("law_candidate"), py::arg("base"),
         py::arg("sensor_sampling"), py::arg("fit_on"), py::arg("drop_nuisances") = true,
         py::arg("floor_from_base") = false, py::arg("count_stop_samples") = false,
-        py::arg("search_within_floor") = false, py::arg("rig_offsets") = "every", py::arg("progress") = py::none());
+        py::arg("search_within_floor") = false, py::arg("rig_offsets") = "every", py::arg("refit_drops") = true,
+        py::arg("progress") = py::none());
   m.def("calibrate_targets", &python::CalibrateTargets, py::arg("targets"), py::arg("out"), py::arg("report"),
         py::arg("threads"), py::arg("evaluate_only"), py::arg("progress") = py::none());
   m.def("validate", &python::Validate, py::arg("sources"), py::arg("out"));

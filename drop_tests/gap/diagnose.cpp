@@ -374,6 +374,7 @@ Diagnosis RunDiagnosis(const dataset::Dataset& ds, const DiagnoseOptions& o) {
   // 1: the sensor (inferred, or as given) and the drops' nuisances: their spreads from the base's
   // fit under that sensor, within the conditions the drops repeat.
   d.problem.drop_nuisances = o.drop_nuisances;
+  d.problem.refit_drop_nuisances = o.refit_drops;
   if (!(o.drop_nuisances && TrainingReplicateDf(d.problem) >= kMinNuisanceDf)) CountStopSamples(d.problem);
   FitResult first;
   if (o.sensor_sampling) {

@@ -101,6 +101,9 @@ struct DiagnoseOptions {
   std::optional<pad::SensorSampling> sensor_sampling;
   // Per-drop nuisances (diagnose_fit.h: strength, speed, touchdown time) in every fit.
   bool drop_nuisances = true;
+  // Each training drop's nuisances fitted again alone after every full fit (FitProblem::
+  // refit_drop_nuisances); false (--no-refit-drops): the joint descent's, as the release before.
+  bool refit_drops = true;
   // The replicates' floor read from the best-fitting candidate's residuals too, the lowest kept
   // (gap_floor.h LowerFloorByCandidates); false (--floor-from-base): from the base's alone.
   bool floor_from_best_model = true;

@@ -122,6 +122,11 @@ struct FitProblem {
   // (normalised units) that weighs their penalties.
   bool drop_nuisances = false;
   bool stop_samples_skipped = false;  // MakeFitProblem's skip_stop_samples (FitDrop::ForceCounted)
+  // After each full fit, every training drop's nuisances fitted again alone from a fresh scan of
+  // its trigger time (the model held, as a held-out drop's), kept where that lowers the drop's
+  // cost, and the fit resumed (twice at most): a drop whose joint descent settled a sample or a
+  // load cell's period off in time is a local minimum the joint fit cannot leave.
+  bool refit_drop_nuisances = true;
   NuisanceSpreads spreads;
   double residual_sigma = 0.01;
   // Levenberg-Marquardt's iterations per fit at most (a screening fit may take fewer).

@@ -156,15 +156,18 @@ def test_diagnose_floor_from_base_equals_the_command_line(tmp_path):
     # `count_stop_samples` is --count-stop-samples: every sample in the force residual; and
     # `search_within_floor` is --search-within-floor (accepted by both; one term here, so no search);
     # `rig_offsets="candidate"` is --rig-offsets candidate: the common offsets leave the base and
-    # are a candidate of their own.
+    # are a candidate of their own; `refit_drops=False` is --no-refit-drops: the training drops'
+    # nuisances as the joint fit left them.
     spec = tmp_path / "synth.yaml"
     spec.write_text(SYNTH_SPEC.replace("impact_speeds_m_s: [1.0]", "impact_speeds_m_s: [0.7, 1.0, 1.5]")
                     .replace("trials: 1", "trials: 2"))
     run_touchdown("synth", spec, "--out", tmp_path / "measured")
     run_touchdown("diagnose", tmp_path / "measured", "--out", tmp_path / "cli", "--no-pairs", "--threads", "2",
-                  "--floor-from-base", "--count-stop-samples", "--search-within-floor", "--rig-offsets", "candidate")
+                  "--floor-from-base", "--count-stop-samples", "--search-within-floor", "--rig-offsets", "candidate",
+                  "--no-refit-drops")
     py = touchdown.diagnose(tmp_path / "measured", tmp_path / "py", pairs=False, threads=2, floor_from_base=True,
-                            count_stop_samples=True, search_within_floor=True, rig_offsets="candidate")
+                            count_stop_samples=True, search_within_floor=True, rig_offsets="candidate",
+                            refit_drops=False)
     assert _without_seconds(py) == _without_seconds(_json(tmp_path / "cli" / "diagnosis.json"))
     assert py["floor"]["source"] == "replicates (pure error)"
     assert py["floor"]["read_from_model"] == "base"

@@ -159,12 +159,13 @@ def validate(*, sources=None, out=None):
 
 def diagnose(measured, out, *, model=None, threads=0, pairs=True, min_step_explained=0.5, law_candidate=False,
              base="rft", sensor_sampling="auto", fit_on=(), drop_nuisances=True, floor_from_base=False,
-             count_stop_samples=False, search_within_floor=False, rig_offsets="every", progress=True):
+             count_stop_samples=False, search_within_floor=False, rig_offsets="every", refit_drops=True,
+             progress=True):
     """`touchdown diagnose MEASURED --out OUT [--model M] [--threads N] [--no-pairs]
     [--min-step-explained X] [--law-candidate] [--base rft|bekker] [--sensor-sampling
     auto|instantaneous|period_mean] [--fit-on ID,...] [--no-drop-nuisances] [--floor-from-base]
-    [--count-stop-samples] [--search-within-floor] [--rig-offsets every|candidate]`: the model-gap
-    workflow into the new directory OUT
+    [--count-stop-samples] [--search-within-floor] [--rig-offsets every|candidate] [--no-refit-drops]`:
+    the model-gap workflow into the new directory OUT
     (docs/model_gap.md); returns diagnosis.json as a dict (the command prints a part of it).
     `pairs=False` is `--no-pairs`: forward selection stops after the first term. `fit_on` (drop
     ids) is `--fit-on`: every model is fitted on those drops and predicts the others.
@@ -173,6 +174,7 @@ def diagnose(measured, out, *, model=None, threads=0, pairs=True, min_step_expla
     `count_stop_samples=True` is `--count-stop-samples`: the two samples either side of each stop counted.
     `search_within_floor=True` is `--search-within-floor`: terms added after a model within the floor.
     `rig_offsets="candidate"` is `--rig-offsets candidate`: the record's common offsets a candidate term.
+    `refit_drops=False` is `--no-refit-drops`: the training drops' nuisances as the joint fit left them.
     `progress` counts the candidate models fitted (see sweep); Ctrl-C abandons the fit, writing nothing."""
     with _progress_reporter(progress, "diagnose", "fits") as report:
         return json.loads(_touchdown.diagnose(measured=_path_text(measured), model=_path_text(model),
@@ -184,7 +186,8 @@ def diagnose(measured, out, *, model=None, threads=0, pairs=True, min_step_expla
                                               floor_from_base=bool(floor_from_base),
                                               count_stop_samples=bool(count_stop_samples),
                                               search_within_floor=bool(search_within_floor),
-                                              rig_offsets=rig_offsets, progress=report))
+                                              rig_offsets=rig_offsets, refit_drops=bool(refit_drops),
+                                              progress=report))
 
 
 def trade(plan, out, *, model=None, threads=0, progress=True):
